@@ -1,0 +1,193 @@
+# refray - a plain GNU Makefile.  `make` builds build/refray and
+# build/librefray.a; `make check` installs missing packages, builds and runs
+# every test; `make demo` installs, builds and renders scenes/demo.scene.
+#
+# Knobs (command line or config.mk):
+#   PNG=0 EXR=0     build without libpng / OpenEXR (PFM and PPM output only)
+#   SANITIZE=1      -fsanitize=address,undefined (own build directory)
+#   VALGRIND=1      run the test suite under valgrind memcheck
+#   V=1             show full commands
+#   PREFIX, DESTDIR for `make install`
+
+-include config.mk
+
+PREFIX    ?= /usr/local
+PNG       ?= 1
+EXR       ?= 1
+SANITIZE  ?= 0
+VALGRIND  ?= 0
+V         ?= 0
+
+# Each non-default configuration builds into its own directory so objects of
+# different flag sets never mix.
+VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)
+BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
+GEN     := $(BUILD)/gen
+
+CC      ?= cc
+CFLAGS  ?= -O2 -g
+WARN    := -std=c99 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
+           -Wmissing-prototypes -Wwrite-strings -Werror
+# flex and bison output is not ours: it gets C99 without -pedantic/-Werror
+# and with the warnings their skeletons are known to trip switched off.
+GEN_WARN := -std=c99 -Wall -Wno-unused-function -Wno-unused-parameter \
+            -Wno-sign-compare -Wno-unused-but-set-variable
+CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -Iinclude -I$(GEN) -MMD -MP
+LDLIBS  += -lm
+
+ifeq ($(SANITIZE),1)
+CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+LDFLAGS += -fsanitize=address,undefined
+endif
+
+# pkg-config is read lazily (=, not :=): on a fresh machine the packages are
+# installed by `deps` in the same command, after this file was parsed.
+ifeq ($(PNG),1)
+CPPFLAGS += -DREFRAY_HAVE_PNG=1
+PNG_CFLAGS = $(shell pkg-config --cflags libpng)
+PNG_LIBS   = $(shell pkg-config --libs libpng)
+endif
+ifeq ($(EXR),1)
+CPPFLAGS += -DREFRAY_HAVE_EXR=1
+# OpenEXR's headers do not pass -pedantic -Werror: include them as system headers.
+EXR_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags OpenEXR))
+EXR_LIBS   = -lOpenEXRCore
+endif
+CHECK_CFLAGS = $(shell pkg-config --cflags check)
+CHECK_LIBS   = $(shell pkg-config --libs check)
+
+ifeq ($(V),1)
+Q :=
+else
+Q := @
+endif
+
+DRIVER_SRCS := src/main.c $(wildcard src/cli*.c)
+OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image_png.c) $(if $(filter 1,$(EXR)),,src/image_exr.c)
+LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*.c src/oracle/*.c))
+TEST_SRCS   := $(wildcard tests/*.c)
+GEN_SRCS    := $(GEN)/scene.tab.c $(GEN)/scene.lex.c
+GEN_HDRS    := $(GEN)/scene.tab.h $(GEN)/scene.lex.h
+
+LIB_OBJS    := $(LIB_SRCS:%.c=$(BUILD)/obj/%.o) $(GEN_SRCS:$(GEN)/%.c=$(BUILD)/obj/gen/%.o)
+DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
+TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
+
+REFRAY   := $(BUILD)/refray
+LIBRARY  := $(BUILD)/librefray.a
+TESTBIN  := $(BUILD)/check_refray
+ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
+
+DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
+        $(if $(filter 1,$(EXR)),libopenexr-dev)
+
+.PHONY: all deps check test demo clean install uninstall solo
+.DEFAULT_GOAL := all
+
+all: $(REFRAY) $(LIBRARY)
+
+# Installs only what is missing; as root with apt-get, otherwise with sudo.
+deps:
+	$(Q)missing=""; for p in $(DEBS); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
+	    || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "deps: installing$$missing"; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; \
+	fi
+
+# `make check` and `make demo` each work alone on a fresh machine: packages
+# first, then a recursive make that reads pkg-config afresh.
+check: deps
+	$(Q)$(MAKE) --no-print-directory test
+
+demo: deps
+	$(Q)$(MAKE) --no-print-directory all
+	$(REFRAY) render scenes/demo.scene -o demo.png
+
+# Leak kinds are listed in a variable: a literal comma would split $(if ...).
+LEAK_KINDS := definite,indirect,possible
+VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
+                --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
+                --trace-children=yes)
+TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
+
+test: $(TESTBIN) $(REFRAY)
+	$(Q)REFRAY_BIN=$(REFRAY) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) $(VALGRIND_CMD) $(TESTBIN)
+
+$(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
+
+$(LIBRARY): $(LIB_OBJS)
+	@echo "  AR      $@"
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+$(TESTBIN): $(TEST_OBJS) $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(TEST_OBJS) $(LIBRARY) $(ALL_LIBS) $(CHECK_LIBS)
+
+$(GEN)/scene.tab.c $(GEN)/scene.tab.h: grammar/scene.y
+	@mkdir -p $(GEN)
+	@echo "  BISON   $<"
+	$(Q)bison -Werror --defines=$(GEN)/scene.tab.h -o $(GEN)/scene.tab.c $<
+
+$(GEN)/scene.lex.c $(GEN)/scene.lex.h: grammar/scene.l
+	@mkdir -p $(GEN)
+	@echo "  FLEX    $<"
+	$(Q)flex --header-file=$(GEN)/scene.lex.h -o $(GEN)/scene.lex.c $<
+
+# The test runner lists every `Suite *suite_NAME(void)` of tests/*.c, so a
+# new test file needs no edit anywhere else.
+$(GEN)/suites.h: $(TEST_SRCS)
+	@mkdir -p $(GEN)
+	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(TEST_SRCS) | LC_ALL=C sort > $@.tmp && mv $@.tmp $@
+
+$(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) -c -o $@ $<
+
+$(BUILD)/obj/src/image_png.o: CFLAGS += $(PNG_CFLAGS)
+$(BUILD)/obj/src/image_exr.o: CFLAGS += $(EXR_CFLAGS)
+# A suite file exports only suite_NAME(), declared by the runner itself.
+$(BUILD)/obj/tests/%.o: CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
+$(BUILD)/obj/tests/main.o: $(GEN)/suites.h
+
+$(BUILD)/obj/%.o: %.c | $(if $(wildcard grammar/scene.y),$(GEN_HDRS))
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CPPFLAGS) $(WARN) $(CFLAGS) -c -o $@ $<
+
+# Development aid: a runner built from a subset of the sources, so one module
+# can be tested while others are half written.  Use a BUILD of your own:
+#   make solo BUILD=build/dev-shade SOLO_SRCS="src/shade.c" SOLO_TESTS="tests/check_shade.c"
+SOLO_OBJS = $(SOLO_SRCS:%.c=$(BUILD)/obj/%.o) $(SOLO_TESTS:%.c=$(BUILD)/obj/%.o)
+solo: $(SOLO_OBJS) $(BUILD)/obj/solo_main.o
+	$(Q)$(CC) $(LDFLAGS) -o $(BUILD)/solo $^ $(ALL_LIBS) $(CHECK_LIBS)
+	$(Q)CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) $(VALGRIND_CMD) $(BUILD)/solo
+
+$(BUILD)/obj/solo_main.o: tests/main.c FORCE
+	@mkdir -p $(GEN)
+	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(SOLO_TESTS) > $(GEN)/solo_suites.h
+	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
+
+.PHONY: FORCE
+FORCE:
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
+	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
+	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/librefray.a
+	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/lib/librefray.a \
+	      $(DESTDIR)$(PREFIX)/include/refray.h
+
+clean:
+	rm -rf build demo.png
+
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj/*/*/*.d)

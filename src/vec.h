@@ -1,0 +1,85 @@
+/*
+ * vec.h - 3-vectors in double precision, used for points, directions and
+ * RGB colours alike.  Everything here is a pure static inline function so
+ * that the hot paths of the tracer inline it; nothing here allocates or
+ * touches global state.
+ *
+ * Colours reuse vec3 with x,y,z read as r,g,b (see rgb below) because the
+ * shading formulas are the same channel-wise products and sums.
+ */
+#ifndef REFRAY_VEC_H
+#define REFRAY_VEC_H
+
+#include <math.h>
+
+typedef struct vec3 {
+    double x, y, z;
+} vec3;
+
+/* An RGB triple of linear radiometric values; x=r, y=g, z=b. */
+typedef vec3 rgb;
+
+static inline vec3 vec_make(double x, double y, double z)
+{
+    vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+static inline vec3 vec_splat(double s) { return vec_make(s, s, s); }
+static inline vec3 vec_add(vec3 a, vec3 b) { return vec_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 vec_sub(vec3 a, vec3 b) { return vec_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
+static inline vec3 vec_scale(vec3 a, double s) { return vec_make(a.x * s, a.y * s, a.z * s); }
+
+/* Channel-wise product: a colour filtered by a coefficient. */
+static inline vec3 vec_mul(vec3 a, vec3 b) { return vec_make(a.x * b.x, a.y * b.y, a.z * b.z); }
+
+/* a + b*s, the accumulation step of every shading sum. */
+static inline vec3 vec_madd(vec3 a, vec3 b, double s)
+{
+    return vec_make(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
+}
+
+static inline double vec_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+static inline vec3 vec_cross(vec3 a, vec3 b)
+{
+    return vec_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
+static inline double vec_length2(vec3 a) { return vec_dot(a, a); }
+
+/* hypot-style length: no overflow for components near DBL_MAX/2 and no
+ * underflow to 0 for denormal components, which plain sqrt(dot) suffers. */
+static inline double vec_length(vec3 a)
+{
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (m == 0.0 || !isfinite(m))
+        return m;
+    /* Divide rather than multiply by 1/m: 1/m overflows for denormal m. */
+    a = vec_make(a.x / m, a.y / m, a.z / m);
+    return m * sqrt(vec_dot(a, a));
+}
+
+/* Unit vector along a; returns the zero vector for a zero input so that a
+ * caller that validated its input never sees NaN from here. */
+static inline vec3 vec_normalize(vec3 a)
+{
+    double len = vec_length(a);
+    return len > 0.0 ? vec_make(a.x / len, a.y / len, a.z / len) : vec_make(0.0, 0.0, 0.0);
+}
+
+static inline double vec_max_component(vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+static inline double vec_min_component(vec3 a) { return fmin(a.x, fmin(a.y, a.z)); }
+
+static inline vec3 vec_min(vec3 a, vec3 b) { return vec_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static inline vec3 vec_max(vec3 a, vec3 b) { return vec_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+
+static inline int vec_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+static inline double vec_component(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
+
+#endif

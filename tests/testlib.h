@@ -1,0 +1,38 @@
+/*
+ * testlib.h - helpers shared by the Check suites.
+ */
+#ifndef REFRAY_TESTLIB_H
+#define REFRAY_TESTLIB_H
+
+#include <check.h>
+#include <math.h>
+#include "vec.h"
+
+/* |got - want| <= tol, with the values in the failure message. */
+#define ck_assert_near(got, want, tol)                                                      \
+    do {                                                                                    \
+        double ck_got_ = (got), ck_want_ = (want), ck_tol_ = (tol);                         \
+        ck_assert_msg(fabs(ck_got_ - ck_want_) <= ck_tol_,                                   \
+                      "%s = %.17g, expected %.17g (tolerance %.3g)", #got, ck_got_, ck_want_, \
+                      ck_tol_);                                                             \
+    } while (0)
+
+/* Relative closeness: |got - want| <= rel * max(|want|, tiny). */
+#define ck_assert_rel(got, want, rel)                                                       \
+    do {                                                                                    \
+        double ck_g_ = (got), ck_w_ = (want), ck_r_ = (rel);                                \
+        double ck_s_ = fabs(ck_w_) > 1e-300 ? fabs(ck_w_) : 1e-300;                         \
+        ck_assert_msg(fabs(ck_g_ - ck_w_) <= ck_r_ * ck_s_,                                   \
+                      "%s = %.17g, expected %.17g (relative tolerance %.3g)", #got, ck_g_,   \
+                      ck_w_, ck_r_);                                                        \
+    } while (0)
+
+#define ck_assert_vec_near(got, want, tol)                                                  \
+    do {                                                                                    \
+        vec3 ck_gv_ = (got), ck_wv_ = (want);                                               \
+        ck_assert_near(ck_gv_.x, ck_wv_.x, tol);                                            \
+        ck_assert_near(ck_gv_.y, ck_wv_.y, tol);                                            \
+        ck_assert_near(ck_gv_.z, ck_wv_.z, tol);                                            \
+    } while (0)
+
+#endif
