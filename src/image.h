@@ -1,0 +1,183 @@
+/*
+ * image.h - the linear RGB frame buffer and its files: PNG, OpenEXR, PFM,
+ * PPM, chosen by the file name's extension.
+ *
+ * Contract of the writers (the model decisions, "Output"):
+ *   - EXR and PFM store the linear values as they are, > 1 included
+ *     (HDR); negative values are kept too.  No exposure, no tone curve.
+ *   - PNG and PPM store display codes: exposure (v * 2^stops), then clamp
+ *     to [0,1] or Reinhard v/(1+v), then sRGB encoding unless linear_png,
+ *     then round-half-up quantisation (tonemap.h).  Negative values
+ *     therefore become 0.
+ *   - No written pixel is ever NaN or infinite: a non-finite input value
+ *     is written as 0 and counted (the tracer guarantees finiteness; this
+ *     is a second line of defence), and a finite value too large for the
+ *     file's number type (half: 65504, float: FLT_MAX) is written as the
+ *     largest finite value of that type, with its sign, and counted.
+ *   - img_write is atomic: the data goes to "<path>.tmp.XXXXXX" (mkstemp,
+ *     same directory), is flushed, fsync'ed and closed with every result
+ *     checked, and only then renamed onto path.  On any error the
+ *     temporary file is removed and nothing at path is created or changed.
+ *     The new file gets the mode of the file it replaces, or 0666 less the
+ *     umask for a new one.
+ *
+ * Status codes are 0 or a sysexits(3)-style value the CLI can exit with,
+ * and every failing call leaves a one-line message in err (err may be NULL;
+ * a message longer than errlen is cut).
+ */
+#ifndef REFRAY_IMAGE_H
+#define REFRAY_IMAGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+enum {
+    IMG_OK = 0,
+    IMG_EUSAGE = 64,    /* unknown extension, format compiled out, bad options */
+    IMG_EDATA = 65,     /* a file being read is malformed or unsupported */
+    IMG_ENOINPUT = 66,  /* a file being read cannot be opened */
+    IMG_ESOFTWARE = 70, /* the caller passed an invalid image */
+    IMG_EOSERR = 71,    /* out of memory */
+    IMG_EIO = 74        /* the operating system refused a read or write */
+};
+
+/* Readers refuse headers that claim more pixels than this (a corrupt or
+ * hostile header must not make us allocate gigabytes). */
+#define IMG_MAX_PIXELS (1L << 28)
+
+/* Linear RGB, row-major from the top row, 3 doubles per pixel. */
+typedef struct rf_image {
+    int width, height;
+    double *rgb;
+} rf_image;
+
+/* Allocates a width x height image of zeros.  Returns 0, IMG_ESOFTWARE for
+ * a size < 1 or too large to address, IMG_EOSERR when out of memory; on
+ * failure *img is {0, 0, NULL}. */
+int img_create(rf_image *img, int width, int height);
+
+/* Frees the pixels and resets *img to {0, 0, NULL}; NULL and an already
+ * freed image are fine. */
+void img_free(rf_image *img);
+
+/* The 3 channels of pixel (x, y), y = 0 the top row. */
+static inline double *img_pixel(const rf_image *img, int x, int y)
+{
+    return img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
+}
+
+enum { IMG_TONE_CLAMP = 0, IMG_TONE_REINHARD = 1 };
+
+/* What a write had to change so that the file holds only finite values. */
+typedef struct img_write_stats {
+    size_t nonfinite; /* NaN or infinite values written as 0 */
+    size_t clamped;   /* finite values beyond the number type's range, clamped */
+} img_write_stats;
+
+typedef struct img_write_opts {
+    double exposure_stops;  /* PNG/PPM only: v * 2^stops before the tone step */
+    int tone;               /* PNG/PPM only: IMG_TONE_CLAMP (default) or IMG_TONE_REINHARD */
+    int linear_png;         /* PNG/PPM: 1 = store linear codes (PNG says gAMA 1.0), no sRGB */
+    int png_bits;           /* 8 (default) or 16; PPM is always 8 */
+    int exr_float;          /* 1 = EXR channels as 32-bit float, 0 = half (default) */
+    img_write_stats *stats; /* optional out: filled by every write that gets to the pixels */
+} img_write_opts;
+
+/* exposure 0, clamp, sRGB, 8-bit PNG, half EXR, no stats. */
+img_write_opts img_write_opts_default(void);
+
+typedef enum img_format {
+    IMG_FORMAT_UNKNOWN = 0,
+    IMG_FORMAT_PNG,
+    IMG_FORMAT_EXR,
+    IMG_FORMAT_PFM,
+    IMG_FORMAT_PPM
+} img_format;
+
+/* The format named by path's extension (.png .exr .pfm .ppm, any case), or
+ * IMG_FORMAT_UNKNOWN. */
+img_format img_format_from_path(const char *path);
+
+/* 1 if this build can write and read fmt (PNG needs PNG=1, EXR needs EXR=1). */
+int img_format_available(img_format fmt);
+
+/* Writes img to path, format by extension, atomically (see the top).
+ * o may be NULL for the defaults.  Returns 0; IMG_EUSAGE for an unknown
+ * extension, a format this build lacks or bad options; IMG_ESOFTWARE for an
+ * invalid image; IMG_EIO when the file cannot be created, written or
+ * renamed; IMG_EOSERR when out of memory. */
+int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+              size_t errlen);
+
+/* The same encoding to an open stream, which is flushed but not closed;
+ * the caller owns atomicity.  EXR needs a seekable stream.  Returns as
+ * img_write; err holds the reason without a file name. */
+int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+                     char *err, size_t errlen);
+
+/* Reads path (format by extension) into *out, which the caller frees with
+ * img_free.  Values are returned as stored, non-finite ones included:
+ *   .exr  the R, G and B channels of the first part (scanline files),
+ *         half/float/uint converted to double;
+ *   .pfm  PF (RGB) or Pf (grey, copied to R, G, B), either byte order;
+ *   .png  any bit depth and colour type, alpha discarded, codes made
+ *         linear: an sRGB chunk, or no colour information at all, means
+ *         the sRGB curve; a gAMA of 1.0 means linear; another gAMA g means
+ *         code^(1/g) (the PNG specification's rule);
+ *   .ppm  binary P6, maxval up to 65535, decoded as sRGB (PPM cannot say
+ *         otherwise; a PPM written with linear_png reads back wrong).
+ * Returns 0; IMG_EUSAGE for an unknown or compiled-out format;
+ * IMG_ENOINPUT when path cannot be opened; IMG_EDATA for a malformed or
+ * unsupported file; IMG_EIO for a read error; IMG_EOSERR when out of
+ * memory.  On failure *out is {0, 0, NULL}. */
+int img_read(const char *path, rf_image *out, char *err, size_t errlen);
+
+/* ---- Pure conversions shared by the writers (exported for the tests) ---- */
+
+/* IEEE 754 binary16 bits of v, rounded to nearest with ties to even,
+ * straight from double (going through float would round twice).  Never
+ * returns an infinity or NaN code: a v that would round to infinity
+ * (|v| >= 65520) becomes +-65504 and sets *clamped to 1 (else 0); NaN
+ * becomes +0 (*clamped 0).  clamped may be NULL. */
+uint16_t img_half_from_double(double v, int *clamped);
+
+/* v as float, rounded to nearest, with the same clamping rule at FLT_MAX
+ * (|v| >= FLT_MAX + half an ulp would round to infinity). */
+float img_float_from_double(double v, int *clamped);
+
+/* The PNG/PPM display value of linear v in [0, 1], before quantisation:
+ * exposure, tone step, clamp, then sRGB encoding unless o->linear_png.
+ * NaN gives 0. */
+double img_display_value(double v, const img_write_opts *o);
+
+/* ---- The format back ends, called by image.c only ---- */
+
+/* A finite v unchanged; NaN/Inf become 0 and are counted in st. */
+double img_sanitize(double v, img_write_stats *st);
+
+/* Formats a message into err (if any) and returns code; for back ends. */
+int img_error(char *err, size_t errlen, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* Each writer encodes a valid image (checked by the caller) to fp and
+ * checks its own writes; the caller flushes.  Each reader fills *out or
+ * leaves it empty.  Both return the codes of img_write / img_read, with a
+ * reason in err that does not name the file. */
+int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+                  char *err, size_t errlen);
+int img_png_read(FILE *fp, rf_image *out, char *err, size_t errlen);
+int img_exr_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+                  char *err, size_t errlen);
+int img_exr_read(FILE *fp, rf_image *out, char *err, size_t errlen);
+int img_pfm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+                  char *err, size_t errlen);
+int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen);
+int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+                  char *err, size_t errlen);
+int img_ppm_read(FILE *fp, rf_image *out, char *err, size_t errlen);
+
+#endif
