@@ -37,10 +37,11 @@ rgb shade_ambient(rgb kd, rgb ia);
  */
 rgb shade_falloff(rgb power, double d, double d0, rf_falloff falloff);
 
-/* Power of one of `samples` >= 1 point sources of a distributed light: E/samples. */
+/* [SHADE-SAMPLE-1] Power of one of `samples` >= 1 point sources of a
+ * distributed light (slides 3, 5): E/samples. */
 rgb shade_sample_power(rgb power, int samples);
 
-/* N turned toward v: n when n.v >= 0, else -n (surfaces are lit on the side seen). */
+/* [SHADE-FACE-1] N turned toward v: n when n.v >= 0, else -n (surfaces are lit on the side seen). */
 vec3 shade_face_forward(vec3 n, vec3 v);
 
 /* [SHADE-LAMBERT-1,2] max(0, N.L) clamped to [0, 1]: exactly 0 at and below

@@ -126,7 +126,7 @@ END_TEST
 
 /* ---- shade_sample_power ------------------------------------------------- */
 
-/* E/samples: (3,6,9)/3 = (1,2,3); 1 sample keeps E; the samples add back
+/* [SHADE-SAMPLE-1] E/samples: (3,6,9)/3 = (1,2,3); 1 sample keeps E; the samples add back
  * to E (to rounding: 7 is not a power of two). */
 START_TEST(test_shade_sample_power_splits_evenly)
 {
@@ -141,12 +141,13 @@ END_TEST
 
 /* ---- shade_face_forward ------------------------------------------------- */
 
+/* [SHADE-FACE-1] */
 START_TEST(test_shade_face_forward_turns_toward_viewer)
 {
     vec3 n = vec_make(0.36, -0.48, 0.8);
     ck_assert(vec_same_bits(shade_face_forward(n, vec_make(0, 0, 1)), n));
     ck_assert(vec_same_bits(shade_face_forward(n, vec_make(0, 0, -1)), vec_neg(n)));
-    /* edge-on (n.v = 0 exactly: 0.36*0.8 - 0.48*0.6 ... use an exact one) */
+    /* edge-on, n.v = 0 exactly: n is kept */
     vec3 e = vec_make(0, 0, 1);
     ck_assert(vec_same_bits(shade_face_forward(e, vec_make(1, 0, 0)), e));
 }
@@ -669,7 +670,7 @@ START_TEST(test_shade_refract_accurate_near_grazing)
 }
 END_TEST
 
-/* Extreme but finite indices give finite unit results, never NaN. */
+/* [SHADE-SNELL-4] Extreme but finite indices give finite unit results, never NaN. */
 START_TEST(test_shade_refract_extreme_indices_stay_finite)
 {
     /* 1e200^2 overflows and 1e-200^2 underflows: only a scaled evaluation
