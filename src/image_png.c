@@ -23,11 +23,13 @@
 /* What libpng's error callback leaves for us before it longjmps. */
 typedef struct png_failure {
     char msg[200];
+    int saved_errno; /* errno when libpng gave up: why its fwrite failed */
 } png_failure;
 
 static void on_png_error(png_structp png, png_const_charp msg)
 {
     png_failure *f = png_get_error_ptr(png);
+    f->saved_errno = errno;
     snprintf(f->msg, sizeof f->msg, "%s", msg);
     png_longjmp(png, 1);
 }
@@ -91,7 +93,7 @@ static int encode_png(FILE *fp, const rf_image *img, const img_write_opts *o,
 int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
-    png_failure f = {""};
+    png_failure f = {"", 0};
     size_t rowbytes;
     unsigned char *px = pack_codes(img, o, st, &rowbytes);
     if (!px)
@@ -100,9 +102,9 @@ int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_wr
     free(px);
     if (!failed)
         return IMG_OK;
-    /* libpng's stdio writer says only "Write Error"; errno says why. */
+    /* libpng's stdio writer says only "Write Error"; errno said why. */
     if (ferror(fp))
-        return img_error(err, errlen, IMG_EIO, "write error: %s", strerror(errno));
+        return img_error(err, errlen, IMG_EIO, "write error: %s", strerror(f.saved_errno));
     return img_error(err, errlen, IMG_EIO, "PNG encoder: %s", f.msg);
 }
 
@@ -216,12 +218,12 @@ static void unpack_linear(const png_decoded *d, rf_image *out)
 
 int img_png_read(FILE *fp, rf_image *out, char *err, size_t errlen)
 {
-    png_failure f = {""};
+    png_failure f = {"", 0};
     png_decoded d;
     memset(&d, 0, sizeof d);
     int rc = IMG_OK;
     if (decode_png(fp, &d, &f) != 0)
-        rc = ferror(fp) ? img_error(err, errlen, IMG_EIO, "read error: %s", strerror(errno))
+        rc = ferror(fp) ? img_error(err, errlen, IMG_EIO, "read error: %s", strerror(f.saved_errno))
                         : img_error(err, errlen, IMG_EDATA, "PNG decoder: %s", f.msg);
     if (rc == IMG_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != IMG_OK)
         rc = img_error(err, errlen, rc, "out of memory");
