@@ -164,7 +164,9 @@ $(BUILD)/obj/%.o: %.c | $(if $(wildcard grammar/scene.y),$(GEN_HDRS))
 # Development aid: a runner built from a subset of the sources, so one module
 # can be tested while others are half written.  Use a BUILD of your own:
 #   make solo BUILD=build/dev-shade SOLO_SRCS="src/shade.c" SOLO_TESTS="tests/check_shade.c"
-SOLO_OBJS = $(SOLO_SRCS:%.c=$(BUILD)/obj/%.o) $(SOLO_TESTS:%.c=$(BUILD)/obj/%.o)
+# (add SOLO_PARSER=1 to link the generated scanner and parser)
+SOLO_OBJS = $(SOLO_SRCS:%.c=$(BUILD)/obj/%.o) $(SOLO_TESTS:%.c=$(BUILD)/obj/%.o) \
+            $(if $(SOLO_PARSER),$(GEN_SRCS:$(GEN)/%.c=$(BUILD)/obj/gen/%.o))
 solo: $(SOLO_OBJS) $(BUILD)/obj/solo_main.o
 	$(Q)$(CC) $(LDFLAGS) -o $(BUILD)/solo $^ $(ALL_LIBS) $(CHECK_LIBS)
 	$(Q)CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) $(VALGRIND_CMD) $(BUILD)/solo

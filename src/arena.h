@@ -1,0 +1,23 @@
+/*
+ * arena.h - a bump allocator for everything one parse builds (syntax nodes,
+ * strings).  Freed in one call, so error recovery in the parser cannot leak.
+ */
+#ifndef REFRAY_ARENA_H
+#define REFRAY_ARENA_H
+
+#include <stddef.h>
+
+typedef struct arena_block arena_block;
+
+typedef struct arena {
+    arena_block *head;
+} arena;
+
+void arena_init(arena *a);
+void arena_free(arena *a);
+/* Zeroed memory aligned for any object; NULL when out of memory. */
+void *arena_alloc(arena *a, size_t size);
+/* A NUL-terminated copy of text[0..len); NULL when out of memory. */
+char *arena_strndup(arena *a, const char *text, size_t len);
+
+#endif

@@ -1,0 +1,40 @@
+/*
+ * cli.h - the refray command-line driver: `refray COMMAND [ARGS]`.
+ * Each command lives in its own cli_<command>.c and returns an exit code
+ * (sysexits values, see scene.h); only main.c calls exit.
+ */
+#ifndef REFRAY_CLI_H
+#define REFRAY_CLI_H
+
+#include "scene.h"
+
+#define REFRAY_VERSION "0.1.0"
+
+int cli_main(int argc, char **argv);
+
+int cli_check(int argc, char **argv);
+int cli_render(int argc, char **argv);
+
+/* Options every scene-reading command accepts: the input limits and
+ * whether warnings are shown.  Returns the number of argv entries consumed
+ * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
+typedef struct cli_scene_opts {
+    rf_limits limits;
+    int warnings;
+} cli_scene_opts;
+
+void cli_scene_opts_init(cli_scene_opts *o);
+int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
+
+/* Parses a whole number option value in [lo, hi]; prints the usage error. */
+int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
+int cli_parse_double(const char *option, const char *text, double *out);
+
+/* Prints "refray: error: ..." for command-line mistakes, returns 64. */
+int cli_usage_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+#endif
