@@ -740,6 +740,7 @@ START_TEST(test_img_write_read_exr_half)
     img.rgb[6] = 1e6;    /* clamped to 65504 */
     img.rgb[7] = -7e4;   /* clamped to -65504 */
     img.rgb[8] = 1e-5;   /* a half subnormal */
+    img.rgb[9] = 1.0 / 3; /* 1.0101...b * 2^-2: mantissa 341.33 -> 341, code 0x3555 */
     o.stats = &st;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "h.exr");
@@ -750,6 +751,7 @@ START_TEST(test_img_write_read_exr_half)
     for (int i = 0; i < 6; i++)
         ck_assert(back.rgb[i] == exact[i]);
     ck_assert(back.rgb[6] == 65504.0 && back.rgb[7] == -65504.0);
+    ck_assert(back.rgb[9] == half_value(0x3555)); /* stored as half, not float */
     for (int i = 8; i < 16 * 20 * 3; i++)
         ck_assert_near(back.rgb[i], img.rgb[i], half_half_ulp(img.rgb[i]));
     img_free(&back);
