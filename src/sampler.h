@@ -1,0 +1,36 @@
+/*
+ * sampler.h - counter-based random numbers: a value is a pure function of
+ * its key (pixel, camera sample, light, light sample, ray path), so a render
+ * is bit-identical every time and needs no generator state.
+ *
+ * The mixer is the SplitMix64 finaliser (Steele, Lea, Flood, "Fast
+ * splittable pseudorandom number generators", OOPSLA 2014), a bijection on
+ * 64-bit words with good avalanche; keys are combined by mixing each word in
+ * turn.
+ */
+#ifndef REFRAY_SAMPLER_H
+#define REFRAY_SAMPLER_H
+
+#include <stdint.h>
+
+static inline uint64_t sampler_mix(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* A key extended by one more counter. */
+static inline uint64_t sampler_key(uint64_t key, uint64_t counter)
+{
+    return sampler_mix(key ^ sampler_mix(counter));
+}
+
+/* A double in [0, 1): the top 53 bits of the mixed key. */
+static inline double sampler_uniform(uint64_t key)
+{
+    return (double)(sampler_mix(key) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+#endif
