@@ -234,10 +234,15 @@ term_ns
 static void scn_error(const SCN_LTYPE *location, yyscan_t scanner, parse_ctx *ctx, const char *message)
 {
     (void)scanner;
-    /* Bison calls this only for its own failures ("memory exhausted" when
-     * the parse stack would pass YYMAXDEPTH): deep nesting, not a typo. */
-    if (strstr(message, "exhausted"))
+    /* Bison calls this only for its own failures.  "memory exhausted" after
+     * an action ran out of memory is reported by the loader; otherwise it
+     * means the parse stack would pass YYMAXDEPTH: deep nesting, not a typo. */
+    if (ctx->out_of_memory)
+        return;
+    if (strstr(message, "exhausted")) {
         message = "nesting too deep (more than 10000 open brackets or operators)";
+        ctx->too_deep = 1;
+    }
     parse_report_syntax(ctx, *location, message);
 }
 

@@ -12,7 +12,13 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-enum { SUGGEST_MAX = 64 };
+/* Nested operators, calls and vectors an expression may hold.  Evaluation
+ * recurses once per level, so the bound keeps a generated `1+1+...+1` of a
+ * million terms from overflowing the C stack; no hand-written expression
+ * comes near it. */
+enum { SUGGEST_MAX = 64, EVAL_MAX_DEPTH = 1000 };
+
+static int eval_at(const env *e, diag *d, const ast *node, value *out, int depth);
 
 void env_init(env *e)
 {
@@ -114,7 +120,7 @@ static int eval_name(const env *e, diag *d, const ast *node, value *out)
     return 0;
 }
 
-static int eval_vector(const env *e, diag *d, const ast *node, value *out)
+static int eval_vector(const env *e, diag *d, const ast *node, value *out, int depth)
 {
     if (node->count != 3) {
         diag_report(d, DIAG_ERROR, node->span, "a vector has 3 components, this one has %d", node->count);
@@ -124,7 +130,7 @@ static int eval_vector(const env *e, diag *d, const ast *node, value *out)
     int i = 0;
     for (const ast *k = node->first; k; k = k->next, i++) {
         value v;
-        if (!eval_expr(e, d, k, &v))
+        if (!eval_at(e, d, k, &v, depth + 1))
             return 0;
         if (v.kind != VAL_NUMBER) {
             diag_report(d, DIAG_ERROR, k->span, "a vector component must be a number, not a %s",
@@ -137,9 +143,9 @@ static int eval_vector(const env *e, diag *d, const ast *node, value *out)
     return 1;
 }
 
-static int eval_negate(const env *e, diag *d, const ast *node, value *out)
+static int eval_negate(const env *e, diag *d, const ast *node, value *out, int depth)
 {
-    if (!eval_expr(e, d, node->first, out))
+    if (!eval_at(e, d, node->first, out, depth + 1))
         return 0;
     if (out->kind == VAL_STRING) {
         diag_report(d, DIAG_ERROR, node->head, "cannot negate a string");
@@ -203,10 +209,10 @@ static int binary_vectors(diag *d, const ast *node, const value *a, const value 
     return 0;
 }
 
-static int eval_binary(const env *e, diag *d, const ast *node, value *out)
+static int eval_binary(const env *e, diag *d, const ast *node, value *out, int depth)
 {
     value a, b;
-    if (!eval_expr(e, d, node->first, &a) || !eval_expr(e, d, node->first->next, &b))
+    if (!eval_at(e, d, node->first, &a, depth + 1) || !eval_at(e, d, node->first->next, &b, depth + 1))
         return 0;
     if (a.kind == VAL_STRING || b.kind == VAL_STRING) {
         diag_report(d, DIAG_ERROR, node->head, "cannot apply '%c' to a string", node->op);
@@ -306,7 +312,7 @@ static int call_number_fn(diag *d, int fn, const value *args, value *out, src_sp
     return 1;
 }
 
-static int eval_call(const env *e, diag *d, const ast *node, value *out)
+static int eval_call(const env *e, diag *d, const ast *node, value *out, int depth)
 {
     if (node->keyword < 0) {
         const char *names[KEYWORD_COUNT];
@@ -328,7 +334,7 @@ static int eval_call(const env *e, diag *d, const ast *node, value *out)
     value args[2];
     int i = 0;
     for (const ast *k = node->first; k; k = k->next)
-        if (!eval_expr(e, d, k, &args[i++]))
+        if (!eval_at(e, d, k, &args[i++], depth + 1))
             return 0;
     int vector_fn = fn == KW_DOT || fn == KW_CROSS || fn == KW_NORMALIZE || fn == KW_LENGTH;
     if (!(vector_fn ? call_vector_fn : call_number_fn)(d, fn, args, out, node->span))
@@ -336,8 +342,13 @@ static int eval_call(const env *e, diag *d, const ast *node, value *out)
     return finite_or_report(d, out, node->span, "the result");
 }
 
-int eval_expr(const env *e, diag *d, const ast *node, value *out)
+static int eval_at(const env *e, diag *d, const ast *node, value *out, int depth)
 {
+    if (depth > EVAL_MAX_DEPTH) {
+        diag_report(d, DIAG_ERROR, node->span, "expression nested too deep (more than %d operators, calls or "
+                    "vectors inside each other)", EVAL_MAX_DEPTH);
+        return 0;
+    }
     switch (node->kind) {
     case AST_NUMBER:
         *out = number_value(node->number, node->span);
@@ -354,15 +365,20 @@ int eval_expr(const env *e, diag *d, const ast *node, value *out)
     case AST_NAME:
         return eval_name(e, d, node, out);
     case AST_VECTOR:
-        return eval_vector(e, d, node, out);
+        return eval_vector(e, d, node, out, depth);
     case AST_NEGATE:
-        return eval_negate(e, d, node, out);
+        return eval_negate(e, d, node, out, depth);
     case AST_BINARY:
-        return eval_binary(e, d, node, out);
+        return eval_binary(e, d, node, out, depth);
     case AST_CALL:
-        return eval_call(e, d, node, out);
+        return eval_call(e, d, node, out, depth);
     default:
         diag_report(d, DIAG_ERROR, node->span, "expected a value here");
         return 0;
     }
+}
+
+int eval_expr(const env *e, diag *d, const ast *node, value *out)
+{
+    return eval_at(e, d, node, out, 0);
 }

@@ -61,6 +61,9 @@ int props_require(loader *L, const props *p, keyword_id kw);
 /* The span of a property's first value (or of the block when absent). */
 src_span props_value_span(const props *p, keyword_id kw);
 int props_value_at(loader *L, const ast *node, value_kind kind, value *out);
+/* v / |v| computed without overflow or underflow (v is first divided by its
+ * largest component); 0 when v is zero or not finite. */
+int loader_unit(vec3 v, vec3 *out);
 
 /* lower_blocks.c */
 int lower_image(loader *L, const ast *block);

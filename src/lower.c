@@ -165,8 +165,8 @@ static int lower_include(loader *L, const ast *node)
     int file = -1, ok = 0;
     char *real = realpath(path, NULL);
     if (real && on_include_stack(L, real))
-        diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' includes itself (an include cycle)", node->text);
-    else if (L->include_depth >= L->limits->max_include_depth)
+        diag_report(&L->diag, DIAG_ERROR, node->head, "include cycle: '%s' is already being read", node->text);
+    else if (L->include_depth > L->limits->max_include_depth) /* the root file is not an include */
         diag_report(&L->diag, DIAG_ERROR, node->head, "includes nested more than %ld deep (--max-include-depth)",
                     L->limits->max_include_depth);
     else if (read_include(L, node, path, &file))

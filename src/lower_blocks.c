@@ -3,6 +3,7 @@
  * properties, apply the documented defaults (spec/language.md), check ranges
  * at the offending value, and append to the scene.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,12 +47,11 @@ static int direction(loader *L, const props *p, keyword_id kw, vec3 fallback, ve
 {
     if (!props_vector(L, p, kw, fallback, out))
         return 0;
-    if (vec_length(*out) == 0) {
+    if (!loader_unit(*out, out)) {
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must not be a zero-length vector",
                     keyword_name(kw));
         return 0;
     }
-    *out = vec_normalize(*out);
     return 1;
 }
 
@@ -112,17 +112,20 @@ static int camera_kind(loader *L, const props *p, rf_camera *cam)
     return 1;
 }
 
-/* forward = look_at - eye; right = forward x up; true_up = right x forward. */
+/* forward = look_at - eye; right = forward x up; true_up = right x forward.
+ * When look_at - eye overflows, half of each gives the same direction. */
 static int camera_basis(loader *L, const props *p, rf_camera *cam)
 {
-    vec3 view = vec_sub(cam->look_at, cam->eye);
-    if (vec_length(view) == 0 || !vec_is_finite(view)) {
+    vec3 view = vec_sub(cam->look_at, cam->eye), up;
+    if (!vec_is_finite(view))
+        view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
+    if (!loader_unit(view, &cam->forward)) {
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_LOOK_AT] ? KW_LOOK_AT : KW_EYE),
                     "look_at must differ from eye (the view direction has zero length)");
         return 0;
     }
-    cam->forward = vec_normalize(view);
-    vec3 side = vec_cross(cam->forward, vec_normalize(cam->up));
+    loader_unit(cam->up, &up);
+    vec3 side = vec_cross(cam->forward, up);
     if (vec_length(side) < 1e-9) {
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP),
                     "up is parallel to the view direction (look_at - eye)");
@@ -210,17 +213,25 @@ static int rectangle_light(loader *L, const props *p, rf_light *light)
         !props_value_at(L, prop->first->next, VAL_VECTOR, &u) ||
         !props_value_at(L, prop->first->next->next, VAL_VECTOR, &v))
         return 0;
-    vec3 area = vec_cross(u.vector, v.vector);
-    if (!(vec_length(area) > 0) || !vec_is_finite(area)) {
+    /* The normal from the edges' directions: their cross product itself
+     * could overflow for long edges. */
+    vec3 du, dv, far = vec_add(vec_add(corner.vector, u.vector), v.vector);
+    if (!loader_unit(u.vector, &du) || !loader_unit(v.vector, &dv) ||
+        !(vec_length(vec_cross(du, dv)) > 4 * DBL_EPSILON) || !loader_unit(vec_cross(du, dv), &light->normal)) {
         diag_report(&L->diag, DIAG_ERROR, src_span_join(u.span, v.span),
                     "the rectangle's edges are parallel or zero: it has no area");
+        return 0;
+    }
+    if (!vec_is_finite(far) || !vec_is_finite(vec_add(corner.vector, u.vector)) ||
+        !vec_is_finite(vec_add(corner.vector, v.vector))) {
+        diag_report(&L->diag, DIAG_ERROR, src_span_join(corner.span, v.span),
+                    "the rectangle reaches beyond the largest number (about 1.8e308)");
         return 0;
     }
     light->kind = LIGHT_RECTANGLE;
     light->position = corner.vector;
     light->edge_u = u.vector;
     light->edge_v = v.vector;
-    light->normal = vec_normalize(area);
     return 1;
 }
 
@@ -232,7 +243,7 @@ static int disk_light(loader *L, const props *p, rf_light *light)
         !props_value_at(L, prop->first->next, VAL_VECTOR, &normal) ||
         !props_value_at(L, prop->first->next->next, VAL_NUMBER, &radius))
         return 0;
-    if (vec_length(normal.vector) == 0) {
+    if (!loader_unit(normal.vector, &light->normal)) {
         diag_report(&L->diag, DIAG_ERROR, normal.span, "the disk's normal must not be a zero-length vector");
         return 0;
     }
@@ -240,7 +251,6 @@ static int disk_light(loader *L, const props *p, rf_light *light)
         return 0;
     light->kind = LIGHT_DISK;
     light->position = center.vector;
-    light->normal = vec_normalize(normal.vector);
     light->radius = radius.number;
     return 1;
 }

@@ -79,12 +79,19 @@ static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, 
 {
     if (!props_vector(L, p, kw, fallback, out))
         return 0;
-    if (vec_length(*out) > 0) {
-        *out = vec_normalize(*out);
+    if (loader_unit(*out, out))
         return 1;
-    }
     diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must not be a zero-length vector", keyword_name(kw));
     return 0;
+}
+
+/* A normal taken through the inverse transpose, made unit.  When that is
+ * impossible the raw result (zero or not finite) is kept, and in_range
+ * refuses the primitive. */
+static vec3 transformed_normal(const xform *to_local, vec3 n)
+{
+    vec3 raw = xform_normal(to_local, n), unit;
+    return loader_unit(raw, &unit) ? unit : raw;
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
@@ -115,7 +122,7 @@ static void place_disk(rf_prim *prim, const xform *w, const xform *l)
         return;
     if (xform_is_similarity(w, &s)) {
         prim->u.disk.center = xform_point(w, prim->u.disk.center);
-        prim->u.disk.normal = vec_normalize(xform_normal(l, prim->u.disk.normal));
+        prim->u.disk.normal = transformed_normal(l, prim->u.disk.normal);
         prim->u.disk.radius *= s;
     } else {
         keep_frame(prim, w, l);
@@ -139,12 +146,15 @@ static void place_box(rf_prim *prim, const xform *w, const xform *l)
     prim->u.box.hi = vec_max(a, b);
 }
 
-/* A triangle has no area when its edges are parallel to rounding error. */
+/* A triangle has no area when its edges are parallel to rounding error:
+ * the sine of the angle between them is at most 4 epsilon (computed on the
+ * edges' directions, so the size of the triangle does not matter). */
 static int degenerate(vec3 a, vec3 b, vec3 c)
 {
-    vec3 e1 = vec_sub(b, a), e2 = vec_sub(c, a);
-    double area = vec_length(vec_cross(e1, e2));
-    return !(area > 4 * DBL_EPSILON * vec_length(e1) * vec_length(e2)) || !isfinite(area);
+    vec3 e1, e2;
+    if (!loader_unit(vec_sub(b, a), &e1) || !loader_unit(vec_sub(c, a), &e2))
+        return 1;
+    return !(vec_length(vec_cross(e1, e2)) > 4 * DBL_EPSILON);
 }
 
 /* Vertices in world space; a mirroring transform would turn the winding
@@ -154,7 +164,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
         if (prim->u.triangle.has_normals)
-            prim->u.triangle.n[i] = vec_normalize(xform_normal(l, prim->u.triangle.n[i]));
+            prim->u.triangle.n[i] = transformed_normal(l, prim->u.triangle.n[i]);
     }
     if (determinant(w) < 0) {
         vec3 t = prim->u.triangle.p[1];
@@ -221,10 +231,61 @@ static int triangle(loader *L, const props *p, rf_prim *prim)
     return 1;
 }
 
+static int is_unit(vec3 n)
+{
+    return vec_is_finite(n) && fabs(vec_length(n) - 1) < 1e-9;
+}
+
+static int xform_finite(const xform *a)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(a->m[i][j]))
+                return 0;
+    return 1;
+}
+
+static int triangle_in_range(const rf_prim *prim)
+{
+    const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
+    int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
+             vec_is_finite(vec_sub(q[1], q[0])) && vec_is_finite(vec_sub(q[2], q[0])) &&
+             vec_is_finite(vec_sub(q[2], q[1]));
+    return ok && (!prim->u.triangle.has_normals || (is_unit(n[0]) && is_unit(n[1]) && is_unit(n[2])));
+}
+
+/* Placement can push a finite shape past the largest double, or leave a
+ * normal that cannot be made unit: the scene keeps no such number. */
+static int in_range(const rf_prim *prim)
+{
+    int ok = 1;
+    switch (prim->kind) {
+    case PRIM_SPHERE: ok = vec_is_finite(prim->u.sphere.center) && isfinite(prim->u.sphere.radius); break;
+    case PRIM_PLANE: ok = vec_is_finite(prim->u.plane.point) && is_unit(prim->u.plane.normal); break;
+    case PRIM_TRIANGLE: ok = triangle_in_range(prim); break;
+    case PRIM_DISK:
+        ok = vec_is_finite(prim->u.disk.center) && is_unit(prim->u.disk.normal) && isfinite(prim->u.disk.radius);
+        break;
+    case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
+    }
+    return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
+}
+
+static int check_range(loader *L, const rf_prim *prim, src_span at)
+{
+    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
+    if (in_range(prim))
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, at,
+                "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
+                kinds[prim->kind]);
+    return 0;
+}
+
 static int check_triangle(loader *L, const rf_prim *prim, src_span at)
 {
     const vec3 *q = prim->u.triangle.p;
-    if (!degenerate(q[0], q[1], q[2]) && vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]))
+    if (!degenerate(q[0], q[1], q[2]))
         return 1;
     diag_report(&L->diag, DIAG_ERROR, at, "degenerate triangle: its corners are on one line (no area)");
     return 0;
@@ -268,12 +329,10 @@ static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, 
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = obj->positions[t->v[i]];
         if (normals) {
-            vec3 n = obj->normals[t->vn[i]];
-            if (!(vec_length(n) > 0)) {
+            if (!loader_unit(obj->normals[t->vn[i]], &prim->u.triangle.n[i])) {
                 diag_report(&L->diag, DIAG_ERROR, t->where, "vertex normal of zero length");
                 return 0;
             }
-            prim->u.triangle.n[i] = vec_normalize(n);
         }
     }
     prim->u.triangle.has_normals = normals;
@@ -291,7 +350,7 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const 
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;
         place_triangle(&prim, w, l);
-        if (check_triangle(L, &prim, prim.where))
+        if (check_range(L, &prim, prim.where) && check_triangle(L, &prim, prim.where))
             ok = emit(L, &prim) != NULL;
     }
     mesh->count = L->scene->prim_count - mesh->first_prim;
@@ -333,7 +392,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
     case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
-        prim->u.plane.normal = vec_normalize(xform_normal(l, prim->u.plane.normal));
+        prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);
         break;
     }
 }
@@ -367,6 +426,8 @@ int lower_primitive(loader *L, const ast *block)
     if (!ok)
         return 0;
     place(&prim, &w, &l);
+    if (!check_range(L, &prim, prim.where))
+        return 0;
     if (prim.kind == PRIM_TRIANGLE && !check_triangle(L, &prim, props_value_span(&p, KW_VERTICES)))
         return 0;
     return emit(L, &prim) != NULL;

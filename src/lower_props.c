@@ -235,3 +235,12 @@ int props_string(loader *L, const props *p, keyword_id kw, const char **out, src
     *out = v.text;
     return 1;
 }
+
+int loader_unit(vec3 v, vec3 *out)
+{
+    double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    if (!(m > 0) || !isfinite(m))
+        return 0;
+    *out = vec_normalize(vec_make(v.x / m, v.y / m, v.z / m));
+    return 1;
+}

@@ -26,9 +26,9 @@ ast *parse_file(arena *a, diag *d, const source_set *sources, int file)
     if (buffer)
         scn__delete_buffer(buffer, scanner);
     scn_lex_destroy(scanner);
-    if (status == 2 || ctx.out_of_memory)
+    if ((status == 2 && !ctx.too_deep) || ctx.out_of_memory)
         return NULL;
-    if (!ctx.root)
+    if (!ctx.root || ctx.too_deep)
         ctx.root = ast_new(a, AST_BLOCK, src_span_none());
     return ctx.root;
 }

@@ -21,15 +21,18 @@ typedef struct parse_ctx {
     size_t offset;            /* scanner position, bytes */
     ast *root;                /* statement list being built */
     int out_of_memory;
+    int too_deep;             /* the parse stopped at the nesting limit (reported) */
     const char *scan_message; /* what was wrong with the last BAD_* token */
     int bracket_depth;        /* open '{' '[' '(' not yet closed */
+    char pending_close;       /* a closer scanned but not yet applied, or 0 */
     src_span brackets[PARSE_MAX_BRACKETS]; /* where the innermost ones opened */
 } parse_ctx;
 
 /*
  * Parses sources->files[file].  Syntax errors are reported through d (with
  * recovery, so one run reports several); the returned statement list holds
- * whatever parsed.  Returns NULL only when memory ran out.
+ * whatever parsed (nothing, when the nesting limit stopped the parse).
+ * Returns NULL only when memory ran out.
  */
 ast *parse_file(arena *a, diag *d, const source_set *sources, int file);
 

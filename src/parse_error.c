@@ -79,7 +79,7 @@ static void describe_expected(const expect_set *set, char *buf, size_t size)
         add_item(buf, size, &items, "an operator");
     if (expects(set, TC_LET, 0))
         add_item(buf, size, &items, "a statement");
-    else if (expects(set, TC_KEYWORD, 0))
+    else if (expects(set, TC_KEYWORD, 0) && (value || !expects(set, TC_NAME, 0)))
         add_item(buf, size, &items, "a property");
     if (!value && expects(set, TC_NAME, 0))
         add_item(buf, size, &items, "a name");
@@ -218,20 +218,23 @@ static void bracket_note(const parse_ctx *ctx, const expect_set *set, char *buf,
     snprintf(buf + used, size - used, " (to close '%c' at line %d)", c, line);
 }
 
+/* The scanner's word on a BAD_* token, with the offending text or byte:
+ * a control byte is shown in hex, never written raw into the message. */
 static void bad_token(const parse_ctx *ctx, src_span at, token_desc found, char *buf, size_t size)
 {
     char text[SHOWN_TEXT_MAX + 8];
     token_text(ctx, at, text, sizeof text);
-    const char *why = ctx->scan_message ? ctx->scan_message : "invalid token";
+    const char *why = ctx->scan_message;
     unsigned char byte = (unsigned char)file_of(ctx)->text[at.begin];
-    if (found.cls == TC_BAD_CHAR && strcmp(why, "invalid character") == 0)
-        snprintf(buf, size, "invalid character '%c'", byte);
+    int printable = byte >= 0x20 && byte < 0x7f;
+    if (found.cls == TC_BAD_NUMBER)
+        snprintf(buf, size, "malformed number '%s'%s%s", text, why ? ": " : "", why ? why : "");
+    else if (found.cls == TC_BAD_CHAR && why && strcmp(why, "invalid character") == 0)
+        snprintf(buf, size, printable ? "invalid character '%c'" : "invalid character 0x%02X", byte);
     else if (found.cls == TC_BAD_CHAR && byte >= 0x80)
         snprintf(buf, size, "%s: 0x%02X", why, byte);
-    else if (found.cls == TC_BAD_NUMBER)
-        snprintf(buf, size, "%s '%s'", why, text);
     else
-        snprintf(buf, size, "%s", why);
+        snprintf(buf, size, "%s", why ? why : "invalid token");
 }
 
 void parse_error_report(parse_ctx *ctx, src_span at, token_desc found,
