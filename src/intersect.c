@@ -34,7 +34,22 @@ static vec3 vec_with(vec3 v, int axis, double value)
     return v;
 }
 
-static double max_abs(vec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z))); }
+/* Plain comparisons rather than fmax: these run per ray and fmax is a
+ * library call on x86-64; the inputs are never NaN. */
+static double max_abs(vec3 v)
+{
+    double x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
+    double m = x > y ? x : y;
+    return m > z ? m : z;
+}
+
+/* |v|: sqrt of the dot product when that neither overflowed nor lost
+ * precision to underflow, else vec_length's scaled form. */
+static double length_fast(vec3 v)
+{
+    double d = vec_dot(v, v);
+    return d >= DBL_MIN && d <= DBL_MAX ? sqrt(d) : vec_length(v);
+}
 
 /*
  * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
@@ -49,7 +64,7 @@ static double max_abs(vec3 v) { return fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)
  *   - q = -(b + sign(b) sqrt(disc)) has no cancellation, and the roots are
  *     c/q and q/a (the product of the roots is c/a).
  * Writes the roots in increasing order; returns their number (1 when the
- * discriminant is exactly 0: a graze).
+ * discriminant is exactly 0, |l| = R: a graze).
  */
 static int sphere_roots(vec3 f, vec3 d, double radius, double t[2])
 {
@@ -57,20 +72,23 @@ static int sphere_roots(vec3 f, vec3 d, double radius, double t[2])
     if (!(a > 0.0))
         return 0;
     double b = vec_dot(f, d);
-    double ll = vec_length(vec_madd(f, d, -b / a));
-    double disc = a * ((radius - ll) * (radius + ll));
-    if (!(disc >= 0.0))
+    double ll = length_fast(vec_madd(f, d, -b / a));
+    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
+     * underflows to -0 for a sphere below about 1e-154 and would pass for a
+     * graze.  The square root is taken factor by factor for the same reason. */
+    if (!(ll <= radius))
         return 0;
-    if (disc == 0.0) {
+    double root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
+    if (root == 0.0) {
         t[0] = -b / a;
         return 1;
     }
-    double lf = vec_length(f);
+    double lf = length_fast(f);
     double c = (lf - radius) * (lf + radius);
-    double q = -(b + copysign(sqrt(disc), b));
+    double q = -(b + copysign(root, b));
     double t0 = c / q, t1 = q / a;
-    t[0] = fmin(t0, t1);
-    t[1] = fmax(t0, t1);
+    t[0] = t0 < t1 ? t0 : t1;
+    t[1] = t0 < t1 ? t1 : t0;
     return 2;
 }
 

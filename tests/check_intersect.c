@@ -166,6 +166,25 @@ START_TEST(test_isect_sphere_tangent_is_one_hit)
 }
 END_TEST
 
+START_TEST(test_isect_sphere_tiny_radius_miss)
+{
+    /* R = 2^-540 at (2^-538, 0, 0); a ray down the y axis passes 4 R from
+     * the centre.  The quarter discriminant (R - 4R)(R + 4R) = -15 R^2 is
+     * below the smallest denormal: computed as one product it is -0, which
+     * would read as a graze.  At ordinary scale the same geometry misses
+     * too, and a ray through the centre hits at t = 1.5 - R. */
+    double rad = ldexp(1.0, -540);
+    ray r = make_ray(vec_make(0, 1.5, 0), vec_make(0, -1, 0));
+    hit h;
+    ck_assert(!isect_sphere(vec_make(4 * rad, 0, 0), rad, &r, &h));
+    r = make_ray(vec_make(0, 1.5, 0), vec_make(0, -1, 0));
+    ck_assert(!isect_sphere(vec_make(1, 0, 0), 0.25, &r, &h));
+    r = make_ray(vec_make(4 * rad, 1.5, 0), vec_make(0, -1, 0));
+    ck_assert(isect_sphere(vec_make(4 * rad, 0, 0), rad, &r, &h));
+    ck_assert_near(h.t, 1.5, 0.0); /* 1.5 - 2^-540 rounds to 1.5 */
+}
+END_TEST
+
 START_TEST(test_isect_sphere_from_inside_hits_far_side)
 {
     /* From the centre of R = 3 along -y: t = 3, outward normal = dir. */
@@ -971,6 +990,7 @@ Suite *suite_intersect(void)
     tcase_add_test(sphere, test_isect_sphere_non_unit_direction);
     tcase_add_test(sphere, test_isect_sphere_miss_leaves_ray_and_hit);
     tcase_add_test(sphere, test_isect_sphere_tangent_is_one_hit);
+    tcase_add_test(sphere, test_isect_sphere_tiny_radius_miss);
     tcase_add_test(sphere, test_isect_sphere_from_inside_hits_far_side);
     tcase_add_test(sphere, test_isect_sphere_ray_starting_on_surface);
     tcase_add_test(sphere, test_isect_sphere_respects_tmin_tmax);

@@ -1,0 +1,607 @@
+/* Tests of src/bvh.c.  The reference for every query is brute force:
+ * isect_prim over all primitives in index order (which also defines the
+ * tie rule: the lowest index among equal t). */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testlib.h"
+#include "bvh.h"
+#include "xform.h"
+
+/* Counter-based generator: splitmix64's finaliser of seed and counter. */
+typedef struct rng {
+    uint64_t seed, counter;
+} rng;
+
+static double rng_uniform(rng *g)
+{
+    uint64_t z = g->seed * 0x9E3779B97F4A7C15u + (g->counter++ + 1) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    z ^= z >> 31;
+    return (double)(z >> 11) * 0x1p-53;
+}
+
+static double rng_range(rng *g, double lo, double hi) { return lo + (hi - lo) * rng_uniform(g); }
+
+static vec3 rng_box(rng *g, double lo, double hi)
+{
+    double x = rng_range(g, lo, hi), y = rng_range(g, lo, hi);
+    return vec_make(x, y, rng_range(g, lo, hi));
+}
+
+static vec3 rng_unit(rng *g)
+{
+    for (;;) {
+        vec3 v = rng_box(g, -1, 1);
+        double l2 = vec_length2(v);
+        if (l2 > 0.01 && l2 <= 1.0)
+            return vec_normalize(v);
+    }
+}
+
+static rf_prim prim_blank(rf_prim_kind kind)
+{
+    rf_prim p;
+    memset(&p, 0, sizeof p);
+    p.kind = kind;
+    p.mesh = -1;
+    p.to_world = p.to_local = xform_identity();
+    return p;
+}
+
+static rf_prim prim_sphere(vec3 c, double radius)
+{
+    rf_prim p = prim_blank(PRIM_SPHERE);
+    p.u.sphere.center = c;
+    p.u.sphere.radius = radius;
+    return p;
+}
+
+/* One random primitive near c of size about s; kind chosen by k. */
+static rf_prim random_prim(rng *g, int k, vec3 c, double s)
+{
+    rf_prim p;
+    switch (k % 7) {
+    case 0:
+    case 1:
+        return prim_sphere(c, s * rng_range(g, 0.2, 1));
+    case 2:
+    case 3:
+        p = prim_blank(PRIM_TRIANGLE);
+        for (int i = 0; i < 3; i++)
+            p.u.triangle.p[i] = vec_add(c, vec_scale(rng_unit(g), s));
+        return p;
+    case 4:
+        p = prim_blank(PRIM_BOX);
+        p.u.box.lo = c;
+        p.u.box.hi = vec_add(c, rng_box(g, 0.1 * s, s));
+        return p;
+    case 5:
+        p = prim_blank(PRIM_DISK);
+        p.u.disk.center = c;
+        p.u.disk.normal = rng_unit(g);
+        p.u.disk.radius = s * rng_range(g, 0.2, 1);
+        return p;
+    default: {
+        /* An ellipsoid or a turned box in a local frame. */
+        p = rng_uniform(g) < 0.5 ? prim_sphere(vec_make(0, 0, 0), 1) : prim_blank(PRIM_BOX);
+        if (p.kind == PRIM_BOX) {
+            p.u.box.lo = vec_make(-1, -1, -1);
+            p.u.box.hi = vec_make(1, 1, 1);
+        }
+        xform sc = xform_scale(vec_scale(rng_box(g, 0.2, 1), s));
+        xform rot = xform_rotate_xyz(rng_box(g, 0, 360)), mv = xform_translate(c);
+        xform rs = xform_compose(&rot, &sc);
+        p.has_xform = 1;
+        p.to_world = xform_compose(&mv, &rs);
+        ck_assert(xform_invert(&p.to_world, &p.to_local));
+        return p;
+    }
+    }
+}
+
+/* count primitives in [0,10]^3 plus two planes at the end. */
+static rf_prim *random_scene(uint64_t seed, int count, int planes)
+{
+    rng g = {seed, 0};
+    rf_prim *prims = calloc((size_t)count + 2, sizeof *prims);
+    ck_assert_ptr_nonnull(prims);
+    for (int i = 0; i < count; i++)
+        prims[i] = random_prim(&g, (int)(rng_uniform(&g) * 7), rng_box(&g, 0, 10), 0.6);
+    /* Every tenth is a copy of a recent one: exact ties in t, which must go
+     * to the lower index whatever order the tree visits them in. */
+    for (int i = 9; i < count; i += 10)
+        prims[i] = prims[i - 1 - (i / 10) % 5];
+    for (int i = 0; i < planes; i++) {
+        prims[count + i] = prim_blank(PRIM_PLANE);
+        prims[count + i].u.plane.point = vec_make(0, i == 0 ? -1 : 11, 0);
+        prims[count + i].u.plane.normal = vec_normalize(vec_make(0.1 * i, 1, 0.05));
+    }
+    return prims;
+}
+
+/* Rays of several sorts: general, axis-parallel, starting on a box face or
+ * inside things, with narrowed intervals. */
+static ray random_ray(rng *g, const rf_prim *prims, int count, int i)
+{
+    ray r;
+    r.origin = rng_box(g, -2, 12);
+    r.dir = rng_unit(g);
+    r.tmin = 0.0;
+    r.tmax = HUGE_VAL;
+    if (i % 5 == 1) {
+        int axis = (int)(rng_uniform(g) * 3);
+        r.dir = vec_make(axis == 0, axis == 1, axis == 2);
+        if (rng_uniform(g) < 0.5)
+            r.dir = vec_neg(r.dir);
+    }
+    if (i % 7 == 2 && count > 0) {
+        const rf_prim *p = &prims[(int)(rng_uniform(g) * count)];
+        vec3 lo, hi;
+        if (isect_prim_bounds(p, &lo, &hi))
+            r.origin = vec_make(lo.x, r.origin.y, hi.z); /* on two slab planes of its box */
+    }
+    if (i % 13 == 4 && count > 0) {
+        /* Aimed at a vertex, a box corner or a sphere's extreme point: hits
+         * that lie exactly on the primitive's bounding box. */
+        const rf_prim *p = &prims[(int)(rng_uniform(g) * count)];
+        vec3 aim = r.origin;
+        if (p->kind == PRIM_TRIANGLE)
+            aim = p->u.triangle.p[(int)(rng_uniform(g) * 3)];
+        else if (p->kind == PRIM_BOX && !p->has_xform)
+            aim = p->u.box.hi;
+        else if (p->kind == PRIM_SPHERE && !p->has_xform)
+            aim = vec_add(p->u.sphere.center, vec_make(0, p->u.sphere.radius, 0));
+        if (vec_length2(vec_sub(aim, r.origin)) > 0)
+            r.dir = vec_normalize(vec_sub(aim, r.origin));
+    }
+    if (i % 11 == 3) {
+        r.tmin = rng_range(g, 0, 5);
+        r.tmax = r.tmin + rng_range(g, 0, 8);
+    }
+    return r;
+}
+
+static int brute_nearest(const rf_prim *prims, int count, ray *r, hit *h)
+{
+    int found = 0;
+    for (int i = 0; i < count; i++) {
+        if (isect_prim(&prims[i], r, h)) {
+            h->prim = i;
+            found = 1;
+        }
+    }
+    return found;
+}
+
+/* Returns how many of the rays hit something. */
+static int check_nearest_agrees(const bvh *b, const rf_prim *prims, int count, uint64_t seed,
+                                int rays)
+{
+    rng g = {seed, 0};
+    int hits = 0;
+    for (int i = 0; i < rays; i++) {
+        ray r = random_ray(&g, prims, count, i), rb = r;
+        hit h, hb;
+        int f = bvh_intersect(b, prims, &r, &h);
+        int fb = brute_nearest(prims, count, &rb, &hb);
+        ck_assert_int_eq(f, fb);
+        if (!f)
+            continue;
+        hits++;
+        ck_assert_int_eq(h.prim, hb.prim);
+        ck_assert_msg(h.t == hb.t, "ray %d: t %.17g vs %.17g", i, h.t, hb.t);
+        ck_assert(r.tmax == rb.tmax);
+        ck_assert(memcmp(&h.point, &hb.point, sizeof h.point) == 0);
+        ck_assert_int_eq(h.entering, hb.entering);
+    }
+    return hits;
+}
+
+typedef struct crossing {
+    int prim;
+    double t;
+} crossing;
+
+typedef struct crossing_list {
+    crossing c[256];
+    int n;
+} crossing_list;
+
+static int collect(void *ctx, const hit *h)
+{
+    crossing_list *l = ctx;
+    ck_assert_int_lt(l->n, 256);
+    l->c[l->n].prim = h->prim;
+    l->c[l->n++].t = h->t;
+    return 0;
+}
+
+static int compare_crossings(const void *pa, const void *pb)
+{
+    const crossing *a = pa, *b = pb;
+    if (a->prim != b->prim)
+        return a->prim < b->prim ? -1 : 1;
+    return (a->t > b->t) - (a->t < b->t);
+}
+
+static void brute_all(const rf_prim *prims, int count, const ray *r, crossing_list *l)
+{
+    for (int i = 0; i < count; i++) {
+        hit out[2];
+        int n = isect_prim_all(&prims[i], r, out);
+        for (int k = 0; k < n; k++) {
+            out[k].prim = i;
+            collect(l, &out[k]);
+        }
+    }
+}
+
+START_TEST(test_bvh_intersect_matches_brute_force)
+{
+    static const int sizes[] = {1, 2, 3, 7, 40, 500, 3000};
+    for (int s = 0; s < 7; s++) {
+        int n = sizes[s];
+        rf_prim *prims = random_scene(100 + (uint64_t)s, n, 2);
+        bvh b;
+        ck_assert(bvh_build(&b, prims, n + 2));
+        ck_assert_int_eq(b.unbounded_count, 2);
+        int hits = check_nearest_agrees(&b, prims, n + 2, 200 + (uint64_t)s, 3000);
+        /* The planes alone catch some rays; the rest must be tested too. */
+        ck_assert_msg(hits > 600, "too few hits (%d) for the test to mean much", hits);
+        bvh_free(&b);
+        free(prims);
+    }
+}
+END_TEST
+
+START_TEST(test_bvh_visit_matches_brute_force)
+{
+    int n = 2000;
+    rf_prim *prims = random_scene(300, n, 2);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n + 2));
+    rng g = {301, 0};
+    long total = 0, solids_twice = 0;
+    for (int i = 0; i < 3000; i++) {
+        ray r = random_ray(&g, prims, n + 2, i);
+        crossing_list got = {{{0, 0}}, 0}, want = {{{0, 0}}, 0};
+        ck_assert_int_eq(bvh_visit(&b, prims, &r, collect, &got), 0);
+        brute_all(prims, n + 2, &r, &want);
+        ck_assert_int_eq(got.n, want.n);
+        qsort(got.c, (size_t)got.n, sizeof got.c[0], compare_crossings);
+        qsort(want.c, (size_t)want.n, sizeof want.c[0], compare_crossings);
+        for (int k = 0; k < got.n; k++) {
+            ck_assert_int_eq(got.c[k].prim, want.c[k].prim);
+            ck_assert(got.c[k].t == want.c[k].t);
+            solids_twice += k > 0 && got.c[k].prim == got.c[k - 1].prim;
+        }
+        total += got.n;
+    }
+    ck_assert_msg(total > 3000, "only %ld crossings", total);
+    ck_assert_msg(solids_twice > 100, "solids crossed twice only %ld times", solids_twice);
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
+static int stop_with_seven(void *ctx, const hit *h)
+{
+    int *calls = ctx;
+    (*calls)++;
+    ck_assert_int_ge(h->prim, 0);
+    return 7;
+}
+
+START_TEST(test_bvh_visit_stops_early)
+{
+    /* Ten spheres on the x axis, all on the ray: the first call stops it. */
+    rf_prim prims[10];
+    for (int i = 0; i < 10; i++)
+        prims[i] = prim_sphere(vec_make(3 * i, 0, 0), 1);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, 10));
+    ray r = {{-5, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL};
+    int calls = 0;
+    ck_assert_int_eq(bvh_visit(&b, prims, &r, stop_with_seven, &calls), 7);
+    ck_assert_int_eq(calls, 1);
+    crossing_list all = {{{0, 0}}, 0};
+    ck_assert_int_eq(bvh_visit(&b, prims, &r, collect, &all), 0);
+    ck_assert_int_eq(all.n, 20); /* entry and exit of each */
+    /* Sphere i spans x in [3i-1, 3i+1], t in [3i+4, 3i+6].  tmax 11 keeps
+     * 4, 6, 7, 9 and 10: five crossings. */
+    r.tmax = 11.0;
+    crossing_list part = {{{0, 0}}, 0};
+    ck_assert_int_eq(bvh_visit(&b, prims, &r, collect, &part), 0);
+    ck_assert_int_eq(part.n, 5);
+    bvh_free(&b);
+}
+END_TEST
+
+/* e_axis scaled by s. */
+static vec3 axis_vec(int axis, double s) { return vec_make(axis == 0 ? s : 0, axis == 1 ? s : 0, axis == 2 ? s : 0); }
+
+START_TEST(test_bvh_parallel_ray_in_flat_box_plane)
+{
+    /* A box flat along one axis (lo = hi = 0 there: a closed face, so a ray
+     * lying in it hits, see intersect.h) beside a sphere.  A ray in that
+     * plane, parallel to it, has its origin on the node's slab planes and a
+     * zero direction component: 0 * inf = NaN in the slab test, whichever
+     * axis it is on, must not cull the node.  Signed zeros flip the
+     * infinities: both signs are tried. */
+    for (int flat = 0; flat < 3; flat++) {
+        for (int k = 1; k < 3; k++) {
+            int along = (flat + k) % 3, third = 3 - flat - along;
+            rf_prim prims[2];
+            prims[0] = prim_sphere(vec_make(5, 5, 5), 1);
+            prims[1] = prim_blank(PRIM_BOX);
+            prims[1].u.box.lo = vec_make(0, 0, 0);
+            prims[1].u.box.hi = vec_sub(vec_make(1, 1, 1), axis_vec(flat, 1));
+            bvh b;
+            ck_assert(bvh_build(&b, prims, 2));
+            for (int sign = 0; sign < 2; sign++) {
+                /* From 1 before the box (or 2 past it going back), mid-way
+                 * across the third axis: t = 1 either way. */
+                vec3 o = vec_add(axis_vec(along, sign ? 2.0 : -1.0), axis_vec(third, 0.5));
+                double z = sign ? -0.0 : 0.0, u = sign ? -1.0 : 1.0;
+                vec3 d = vec_make(along == 0 ? u : z, along == 1 ? u : z, along == 2 ? u : z);
+                ray r = {o, d, 0.0, HUGE_VAL}, rb = r;
+                hit h, hb;
+                ck_assert(brute_nearest(prims, 2, &rb, &hb));
+                ck_assert_int_eq(hb.prim, 1);
+                ck_assert_near(hb.t, 1.0, 0.0);
+                ck_assert_msg(bvh_intersect(&b, prims, &r, &h), "flat %d along %d sign %d", flat,
+                              along, sign);
+                ck_assert_int_eq(h.prim, 1);
+                ck_assert_near(h.t, 1.0, 0.0);
+            }
+            bvh_free(&b);
+        }
+    }
+}
+END_TEST
+
+START_TEST(test_bvh_empty_scene)
+{
+    bvh b;
+    ck_assert(bvh_build(&b, NULL, 0));
+    ck_assert_int_eq(b.node_count, 0);
+    ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
+    hit h;
+    ck_assert(!bvh_intersect(&b, NULL, &r, &h));
+    int calls = 0;
+    ck_assert_int_eq(bvh_visit(&b, NULL, &r, stop_with_seven, &calls), 0);
+    ck_assert_int_eq(calls, 0);
+    bvh_free(&b);
+    bvh_free(&b); /* freeing twice is harmless: the struct is zeroed */
+}
+END_TEST
+
+START_TEST(test_bvh_one_prim_and_planes_only)
+{
+    /* One sphere: a one-node tree; the hit carries prim 0. */
+    rf_prim s = prim_sphere(vec_make(0, 0, 5), 1);
+    bvh b;
+    ck_assert(bvh_build(&b, &s, 1));
+    ck_assert_int_eq(b.node_count, 1);
+    ck_assert_int_eq(b.leaf_count, 1);
+    ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
+    hit h;
+    ck_assert(bvh_intersect(&b, &s, &r, &h));
+    ck_assert_int_eq(h.prim, 0);
+    ck_assert_near(h.t, 4.0, 0.0);
+    ck_assert_near(r.tmax, 4.0, 0.0);
+    bvh_free(&b);
+    /* Only planes: no tree, the list finds the nearer (prim 1 at t = 2). */
+    rf_prim planes[2] = {prim_blank(PRIM_PLANE), prim_blank(PRIM_PLANE)};
+    planes[0].u.plane.point = vec_make(0, 0, 7);
+    planes[0].u.plane.normal = vec_make(0, 0, -1);
+    planes[1].u.plane.point = vec_make(0, 0, 2);
+    planes[1].u.plane.normal = vec_make(0, 0, 1);
+    ck_assert(bvh_build(&b, planes, 2));
+    ck_assert_int_eq(b.node_count, 0);
+    ck_assert_int_eq(b.unbounded_count, 2);
+    r = (ray){{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
+    ck_assert(bvh_intersect(&b, planes, &r, &h));
+    ck_assert_int_eq(h.prim, 1);
+    ck_assert_near(h.t, 2.0, 0.0);
+    bvh_free(&b);
+}
+END_TEST
+
+static int count_crossings(void *ctx, const hit *h)
+{
+    ck_assert(h->t == 5.5 || h->t == 6.5);
+    (*(long *)ctx)++;
+    return 0;
+}
+
+START_TEST(test_bvh_identical_prims_tie_to_lowest_index)
+{
+    /* 5000 copies of one sphere: the centroids coincide, so every split is
+     * an object median; the tree stays shallow and the nearest hit is the
+     * copy with the lowest index, as brute force gives. */
+    int n = 5000;
+    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    ck_assert_ptr_nonnull(prims);
+    for (int i = 0; i < n; i++)
+        prims[i] = prim_sphere(vec_make(1, 2, 3), 0.5);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n));
+    ck_assert_int_le(b.depth, 14); /* ceil(log2(5000 / 4)) + 1 = 12 */
+    ray r = {{1, 2, -3}, {0, 0, 1}, 0.0, HUGE_VAL};
+    hit h;
+    ck_assert(bvh_intersect(&b, prims, &r, &h));
+    ck_assert_int_eq(h.prim, 0);
+    ck_assert_near(h.t, 5.5, 0.0);
+    /* Every one of them is crossed twice, at 5.5 and 6.5. */
+    long crossings = 0;
+    ray rr = {{1, 2, -3}, {0, 0, 1}, 0.0, HUGE_VAL};
+    ck_assert_int_eq(bvh_visit(&b, prims, &rr, count_crossings, &crossings), 0);
+    ck_assert_int_eq(crossings, 2 * n);
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
+START_TEST(test_bvh_deterministic_and_well_formed)
+{
+    int n = 3000;
+    rf_prim *prims = random_scene(400, n, 2);
+    bvh a, b;
+    ck_assert(bvh_build(&a, prims, n + 2));
+    ck_assert(bvh_build(&b, prims, n + 2));
+    ck_assert_int_eq(a.node_count, b.node_count);
+    ck_assert(memcmp(a.nodes, b.nodes, (size_t)a.node_count * sizeof *a.nodes) == 0);
+    ck_assert(memcmp(a.items, b.items, (size_t)a.item_count * sizeof *a.items) == 0);
+    /* Every primitive appears once, in a leaf or in the unbounded list. */
+    int *seen = calloc((size_t)n + 2, sizeof *seen);
+    ck_assert_ptr_nonnull(seen);
+    ck_assert_int_eq(a.item_count + a.unbounded_count, n + 2);
+    for (int i = 0; i < a.item_count; i++)
+        seen[a.items[i]]++;
+    for (int i = 0; i < a.unbounded_count; i++)
+        seen[a.unbounded[i]]++;
+    for (int i = 0; i < n + 2; i++)
+        ck_assert_int_eq(seen[i], 1);
+    /* Leaves cover the items exactly; inner boxes hold their children;
+     * every primitive's box is inside its leaf's. */
+    int leaf_items = 0, leaves = 0;
+    for (int k = 0; k < a.node_count; k++) {
+        const bvh_node *nd = &a.nodes[k];
+        if (nd->count > 0) {
+            leaves++;
+            leaf_items += nd->count;
+            for (int i = nd->first; i < nd->first + nd->count; i++) {
+                vec3 lo, hi;
+                ck_assert(isect_prim_bounds(&prims[a.items[i]], &lo, &hi));
+                ck_assert(lo.x >= nd->lo.x && lo.y >= nd->lo.y && lo.z >= nd->lo.z);
+                ck_assert(hi.x <= nd->hi.x && hi.y <= nd->hi.y && hi.z <= nd->hi.z);
+            }
+            continue;
+        }
+        const bvh_node *kids[2] = {&a.nodes[nd->first], &a.nodes[nd->first + 1]};
+        ck_assert_int_gt(nd->first, k);
+        for (int c = 0; c < 2; c++) {
+            ck_assert(kids[c]->lo.x >= nd->lo.x && kids[c]->lo.y >= nd->lo.y && kids[c]->lo.z >= nd->lo.z);
+            ck_assert(kids[c]->hi.x <= nd->hi.x && kids[c]->hi.y <= nd->hi.y && kids[c]->hi.z <= nd->hi.z);
+        }
+    }
+    ck_assert_int_eq(leaf_items, a.item_count);
+    ck_assert_int_eq(leaves, a.leaf_count);
+    ck_assert_int_eq(a.node_count, 2 * a.leaf_count - 1);
+    free(seen);
+    bvh_free(&a);
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
+START_TEST(test_bvh_skewed_distribution_depth_bounded)
+{
+    /* 600 spheres at x = 1.5^-k, radius a tenth of that: each SAH split
+     * peels off only the few outermost, so SAH alone builds a tree over 100
+     * deep; past BVH_MEDIAN_DEPTH median splits take over and the depth
+     * stays within BVH_MAX_DEPTH (the build asserts it, traversal relies on
+     * it).  The smallest is 1e-106, well inside double's normal range. */
+    int n = 600;
+    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    ck_assert_ptr_nonnull(prims);
+    for (int i = 0; i < n; i++)
+        prims[i] = prim_sphere(vec_make(pow(1.5, -i), 0, 0), 0.1 * pow(1.5, -i));
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n));
+    ck_assert_int_gt(b.depth, BVH_MEDIAN_DEPTH);
+    ck_assert_int_le(b.depth, BVH_MAX_DEPTH);
+    check_nearest_agrees(&b, prims, n, 501, 500);
+    /* Down the axis from the right the biggest sphere is first: x = 1.1. */
+    ray r = {{5, 0, 0}, {-1, 0, 0}, 0.0, HUGE_VAL};
+    hit h;
+    ck_assert(bvh_intersect(&b, prims, &r, &h));
+    ck_assert_int_eq(h.prim, 0);
+    ck_assert_near(h.t, 5 - 1.1, 1e-15);
+    /* From the left every sphere below 1e-16 is met at t = 1 exactly (in
+     * double): a tie the lowest such index must win, as in brute force. */
+    r = (ray){{-1, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL};
+    ray rb = r;
+    hit hb;
+    ck_assert(bvh_intersect(&b, prims, &r, &h));
+    ck_assert(brute_nearest(prims, n, &rb, &hb));
+    ck_assert_near(h.t, 1.0, 0.0);
+    ck_assert_int_eq(h.prim, hb.prim);
+    ck_assert_int_lt(h.prim, 100); /* 1.5^-100 = 2.5e-18 */
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
+START_TEST(test_bvh_grid_100k_visits_few_nodes)
+{
+    /* A 100 x 100 x 10 grid of unit-spaced spheres (100 000).  A ray down
+     * a grid row from outside stops at the first sphere: the traversal
+     * must test a tiny fraction of the nodes and primitives. */
+    int nx = 100, ny = 100, nz = 10, n = nx * ny * nz;
+    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    ck_assert_ptr_nonnull(prims);
+    for (int z = 0; z < nz; z++)
+        for (int y = 0; y < ny; y++)
+            for (int x = 0; x < nx; x++)
+                prims[(z * ny + y) * nx + x] = prim_sphere(vec_make(x, y, z), 0.3);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n));
+    ck_assert_int_le(b.depth, 40);
+    bvh_stats st = {0, 0};
+    ray r = {{-10, 37, 4}, {1, 0, 0}, 0.0, HUGE_VAL};
+    hit h;
+    ck_assert(bvh_intersect_stats(&b, prims, &r, &h, &st));
+    ck_assert_int_eq(h.prim, (4 * ny + 37) * nx + 0);
+    ck_assert_near(h.t, 9.7, 1e-14);
+    /* The ray is parallel to two axes: a slab test that turned -inf * pad
+     * into NaN would keep every box in the row (thousands of nodes). */
+    ck_assert_msg(st.nodes_visited < 100, "visited %ld nodes", st.nodes_visited);
+    ck_assert_msg(st.prims_tested < 10, "tested %ld prims", st.prims_tested);
+    /* A diagonal ray slipping between two layers through the whole grid
+     * (z half-way between them) passes near a couple of hundred spheres
+     * without hitting any: a few hundred nodes, not a fraction of 2e5. */
+    bvh_stats miss = {0, 0};
+    ray m = {{-1, 0.5, 4.5}, vec_normalize(vec_make(1, 1, 0)), 0.0, HUGE_VAL};
+    ck_assert(!bvh_intersect_stats(&b, prims, &m, &h, &miss));
+    ck_assert_msg(miss.nodes_visited < 1000, "visited %ld nodes", miss.nodes_visited);
+    /* Camera-like rays from above one side into the grid: on average a
+     * few dozen nodes, about log2 of the node count plus the boxes the ray
+     * grazes on its way down. */
+    rng g = {602, 0};
+    bvh_stats cam = {0, 0};
+    int rays = 2000;
+    for (int i = 0; i < rays; i++) {
+        vec3 eye = vec_make(50.1, -30, 40), aim = vec_make(rng_range(&g, 0, 99), rng_range(&g, 0, 99), 5);
+        ray c = {eye, vec_normalize(vec_sub(aim, eye)), 0.0, HUGE_VAL};
+        bvh_intersect_stats(&b, prims, &c, &h, &cam);
+    }
+    ck_assert_msg(cam.nodes_visited < 100L * rays, "%ld nodes per ray", cam.nodes_visited / rays);
+    ck_assert_msg(cam.prims_tested < 10L * rays, "%ld prims per ray", cam.prims_tested / rays);
+    check_nearest_agrees(&b, prims, n, 601, 30);
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
+Suite *suite_bvh(void)
+{
+    Suite *s = suite_create("bvh");
+    TCase *tc = tcase_create("bvh");
+    tcase_set_timeout(tc, 30);
+    tcase_add_test(tc, test_bvh_intersect_matches_brute_force);
+    tcase_add_test(tc, test_bvh_visit_matches_brute_force);
+    tcase_add_test(tc, test_bvh_visit_stops_early);
+    tcase_add_test(tc, test_bvh_parallel_ray_in_flat_box_plane);
+    tcase_add_test(tc, test_bvh_empty_scene);
+    tcase_add_test(tc, test_bvh_one_prim_and_planes_only);
+    tcase_add_test(tc, test_bvh_identical_prims_tie_to_lowest_index);
+    tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
+    tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
+    tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
+    suite_add_tcase(s, tc);
+    return s;
+}
