@@ -261,6 +261,7 @@ int loader_lower_file(loader *L, int file)
         loader_oom(L);
     else if (L->diag.errors == errors)
         ok = lower_statements(L, tree);
-    free(stack[--L->include_depth]);
+    /* Nested includes may have moved the stack: not `stack` here. */
+    free(L->include_stack[--L->include_depth]);
     return ok;
 }
