@@ -81,7 +81,7 @@ ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev)
 
-.PHONY: all deps check test demo clean install uninstall solo
+.PHONY: all deps check test demo bench clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -109,6 +109,19 @@ demo: deps
 
 # Leak kinds are listed in a variable: a literal comma would split $(if ...).
 LEAK_KINDS := definite,indirect,possible
+BENCH := $(BUILD)/bench
+BENCH_SCENES ?= scenes/bench/grid1k.scene scenes/bench/grid10k.scene scenes/bench/grid100k.scene scenes/demo.scene
+BENCH_RUNS ?= 5
+BENCH_WIDTH ?= 320
+
+# Figures, not tests: rays per second and how they fall with scene size.
+bench: $(BENCH)
+	$(BENCH) -r $(BENCH_RUNS) -w $(BENCH_WIDTH) $(BENCH_SCENES)
+
+$(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
                 --trace-children=yes)
