@@ -44,6 +44,16 @@ static int report_misspelt_extra(loader *L, const ast *block, const ast *extra, 
     return 1;
 }
 
+/* `rectangle c u -v` reads as the two values c and u - v: when values are
+ * missing and one of them is a sum or difference, say so. */
+static const char *sign_hint(const ast *prop)
+{
+    for (const ast *k = prop->first; k; k = k->next)
+        if (k->kind == AST_BINARY && (k->op == '+' || k->op == '-'))
+            return " (`a -b` is a subtraction; write `a (-b)` for two values)";
+    return "";
+}
+
 static int check_arity(loader *L, const ast *block, const ast *prop, const block_schema *schema)
 {
     int arity = keyword_get((keyword_id)prop->keyword)->arity;
@@ -58,8 +68,9 @@ static int check_arity(loader *L, const ast *block, const ast *prop, const block
         diag_report(&L->diag, DIAG_ERROR, extra->span, "'%s' takes %d value%s, got %d",
                     keyword_name((keyword_id)prop->keyword), arity, arity == 1 ? "" : "s", prop->count);
     } else {
-        diag_report(&L->diag, DIAG_ERROR, prop->span, "'%s' takes %d value%s, got %d",
-                    keyword_name((keyword_id)prop->keyword), arity, arity == 1 ? "" : "s", prop->count);
+        diag_report(&L->diag, DIAG_ERROR, prop->span, "'%s' takes %d value%s, got %d%s",
+                    keyword_name((keyword_id)prop->keyword), arity, arity == 1 ? "" : "s", prop->count,
+                    sign_hint(prop));
     }
     return 0;
 }
