@@ -169,6 +169,14 @@ $(BUILD)/obj/src/image_exr.o: CFLAGS += $(EXR_CFLAGS)
 $(BUILD)/obj/tests/%.o: CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h
 
+# The oracle registry lists every `const oracle_family oracle_NAME =` of
+# src/oracle/*.c, so a new family needs no edit anywhere else.
+ORACLE_SRCS := $(wildcard src/oracle/*.c)
+$(GEN)/oracle_list.h: $(ORACLE_SRCS)
+	@mkdir -p $(GEN)
+	$(Q)sed -n 's/^const oracle_family oracle_\([a-z0-9_]*\) =.*/ORACLE_FAMILY(\1)/p' $(ORACLE_SRCS) | LC_ALL=C sort > $@.tmp && mv $@.tmp $@
+$(BUILD)/obj/src/oracle/oracle.o: $(GEN)/oracle_list.h
+
 $(BUILD)/obj/%.o: %.c | $(if $(wildcard grammar/scene.y),$(GEN_HDRS))
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"

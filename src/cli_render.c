@@ -42,6 +42,7 @@ static const char render_help[] =
     "  --width W --height H  override the image size\n"
     "  --samples K           K x K camera rays per pixel\n"
     "  --max-depth D         trace depth (1: camera rays only)\n"
+    "  --light-samples N     N point sources for every distributed light\n"
     "  --exposure STOPS      PNG/PPM: multiply by 2^STOPS before mapping\n"
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
@@ -113,6 +114,8 @@ static int render_option(render_args *a, int argc, char **argv, int *i)
         return int_option(argc, argv, i, lim->max_height, &a->render.height);
     if (strcmp(opt, "--samples") == 0)
         return int_option(argc, argv, i, lim->max_samples, &a->render.samples);
+    if (strcmp(opt, "--light-samples") == 0)
+        return int_option(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
     if (strcmp(opt, "--max-depth") == 0)
         return int_option(argc, argv, i, lim->max_depth, &a->render.max_depth);
     if (strcmp(opt, "--stats") == 0)

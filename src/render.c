@@ -74,7 +74,7 @@ int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, 
     stats->height = opts && opts->height > 0 ? opts->height : scene->image.height;
     stats->samples = opts && opts->samples > 0 ? opts->samples : scene->image.samples;
     double start = render_clock();
-    if (!tracer_init(&t, scene, opts ? opts->max_depth : 0))
+    if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0))
         return REFRAY_EXIT_SOFTWARE;
     stats->max_depth = t.max_depth;
     stats->build_seconds = render_clock() - start;

@@ -13,6 +13,7 @@ typedef struct render_opts {
     int width, height;    /* 0: the scene's */
     int samples;          /* k of the k x k grid; 0: the scene's */
     int max_depth;        /* 0: the scene's */
+    int light_samples;    /* > 0: samples of every distributed light; 0: each light's own */
     /* Called after every row; a non-zero return stops the render (SIGINT). */
     int (*progress)(void *ctx, int rows_done, int rows_total);
     void *progress_ctx;

@@ -40,7 +40,7 @@ int trace_solid_id(const rf_scene *s, int prim)
     return -1;
 }
 
-int tracer_init(tracer *t, const rf_scene *s, int max_depth)
+int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
 {
     memset(t, 0, sizeof *t);
     t->scene = s;
@@ -56,8 +56,9 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth)
     }
     for (int i = 0; i < s->light_count; i++) {
         const rf_light *light = &s->lights[i];
+        t->lights[i].samples = light_samples > 0 ? light_samples : light->samples;
         if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
-            t->lights[i].grid = light_grid_for(light->samples);
+            t->lights[i].grid = light_grid_for(t->lights[i].samples);
         if (light->kind == LIGHT_DISK)
             light_frame(light->normal, &t->lights[i].t1, &t->lights[i].t2);
     }
@@ -142,9 +143,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
 {
     const rf_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
-    rgb power = shade_sample_power(light->power, light->samples);
+    rgb power = shade_sample_power(light->power, setup->samples);
     uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
-    for (int j = 0; j < light->samples; j++) {
+    for (int j = 0; j < setup->samples; j++) {
         double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
         double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
         double a, b;

@@ -32,6 +32,7 @@ typedef struct trace_stats {
 
 /* Per-light data computed once: the stratification and a disk's frame. */
 typedef struct light_setup {
+    int samples;        /* point sources this render uses for the light */
     light_grid grid;
     vec3 t1, t2;
 } light_setup;
@@ -54,9 +55,10 @@ typedef struct medium_stack {
     double ior[MEDIUM_MAX];
 } medium_stack;
 
-/* Builds the acceleration structure; max_depth <= 0 takes the scene's.
- * Returns 0 when out of memory. */
-int tracer_init(tracer *t, const rf_scene *s, int max_depth);
+/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+ * light_samples > 0 gives every distributed light that many samples instead
+ * of its own (for convergence sweeps).  Returns 0 when out of memory. */
+int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the

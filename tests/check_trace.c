@@ -26,7 +26,7 @@ static rgb pixel(const rf_scene *s, int i, int j, trace_stats *st)
     tracer t;
     trace_stats local;
     memset(&local, 0, sizeof local);
-    ck_assert(tracer_init(&t, s, 0));
+    ck_assert(tracer_init(&t, s, 0, 0));
     rgb c = render_pixel(&t, s->image.width, s->image.height, s->image.samples, i, j, st ? st : &local);
     tracer_free(&t);
     return c;
