@@ -37,6 +37,7 @@ static void print_features(const rf_features *f)
 static void print_summary(const char *path, const rf_scene *s)
 {
     static const char *kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
+    static const char *plural[] = {"spheres", "planes", "triangles", "disks", "boxes"};
     int counts[5], mesh_triangles = 0;
     count_kinds(s, counts);
     for (int i = 0; i < s->mesh_count; i++)
@@ -45,7 +46,7 @@ static void print_summary(const char *path, const rf_scene *s)
     int listed = 0;
     for (int k = 0; k < 5; k++)
         if (counts[k])
-            printf("%s%d %s%s", listed++ ? ", " : "", counts[k], kinds[k], counts[k] == 1 ? "" : "s");
+            printf("%s%d %s", listed++ ? ", " : "", counts[k], counts[k] == 1 ? kinds[k] : plural[k]);
     if (s->mesh_count)
         printf("%s%d mesh%s of %d triangles", listed++ ? ", " : "", s->mesh_count, s->mesh_count == 1 ? "" : "es",
                mesh_triangles);
