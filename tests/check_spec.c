@@ -1,0 +1,188 @@
+/* Keeps spec/language.md complete: every reserved word of the scanner's
+ * table appears in it backquoted, every property of every block appears in
+ * that block's section (`### \`name\``), every [LANG-...] ID a test cites
+ * is defined there, and every ID defined there is cited by some test.
+ * Tests run from the repository root. */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testlib.h"
+#include "keywords.h"
+#include "schema.h"
+
+#define SPEC "spec/language.md"
+#define TESTS "tests"
+
+/* The whole of path, NUL-terminated; fails the test when unreadable. */
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s (tests run from the repository root)", path);
+    ck_assert_int_eq(fseek(f, 0, SEEK_END), 0);
+    long size = ftell(f);
+    ck_assert_int_ge(size, 0);
+    rewind(f);
+    char *text = malloc((size_t)size + 1);
+    ck_assert_ptr_nonnull(text);
+    ck_assert_uint_eq(fread(text, 1, (size_t)size, f), (size_t)size);
+    text[size] = '\0';
+    fclose(f);
+    return text;
+}
+
+static int has_backquoted(const char *text, size_t len, const char *word)
+{
+    char quoted[80];
+    int n = snprintf(quoted, sizeof quoted, "`%s`", word);
+    for (size_t i = 0; n > 0 && i + (size_t)n <= len; i++)
+        if (memcmp(text + i, quoted, (size_t)n) == 0)
+            return 1;
+    return 0;
+}
+
+/* The section under the heading "### `block`", up to the next heading. */
+static const char *section(const char *spec, const char *block, size_t *len)
+{
+    char heading[80];
+    snprintf(heading, sizeof heading, "\n### `%s`\n", block);
+    const char *start = strstr(spec, heading);
+    if (!start)
+        return NULL;
+    start += strlen(heading);
+    const char *end = start;
+    while (*end && !(end[0] == '\n' && end[1] == '#'))
+        end++;
+    *len = (size_t)(end - start);
+    return start;
+}
+
+START_TEST(test_spec_lists_every_keyword)
+{
+    char *spec = read_text(SPEC);
+    size_t len = strlen(spec);
+    for (int i = 0; i < KEYWORD_COUNT; i++) {
+        const char *word = keyword_get((keyword_id)i)->name;
+        ck_assert_msg(has_backquoted(spec, len, word), "%s does not mention `%s`", SPEC, word);
+    }
+    free(spec);
+}
+END_TEST
+
+START_TEST(test_spec_lists_every_property_of_every_block)
+{
+    char *spec = read_text(SPEC);
+    int blocks = 0;
+    for (int i = 0; i < KEYWORD_COUNT; i++) {
+        const block_schema *schema = schema_of((keyword_id)i);
+        if (!schema)
+            continue;
+        blocks++;
+        const char *block = keyword_name((keyword_id)i);
+        size_t len;
+        const char *body = section(spec, block, &len);
+        ck_assert_msg(body != NULL, "%s has no section \"### `%s`\"", SPEC, block);
+        for (int k = 0; k < schema->prop_count; k++) {
+            const char *prop = keyword_name(schema->props[k]);
+            ck_assert_msg(has_backquoted(body, len, prop), "the section of `%s` in %s does not mention `%s`", block,
+                          SPEC, prop);
+        }
+    }
+    /* image camera ambient 3 lights material 6 primitives */
+    ck_assert_int_eq(blocks, 13);
+    free(spec);
+}
+END_TEST
+
+/* The helpers themselves: a word must be whole and backquoted. */
+START_TEST(test_spec_helpers)
+{
+    static const char text[] = "intro\n### `sphere`\nthe `radius` and n\n### `plane`\n`normal`\n";
+    size_t len;
+    const char *body = section(text, "sphere", &len);
+    ck_assert_ptr_nonnull(body);
+    ck_assert(has_backquoted(body, len, "radius"));
+    ck_assert(!has_backquoted(body, len, "n"));
+    ck_assert(!has_backquoted(body, len, "normal"));
+    ck_assert(!has_backquoted(body, len, "radiu"));
+    ck_assert_ptr_null(section(text, "box", &len));
+}
+END_TEST
+
+typedef struct id_list {
+    char ids[256][48];
+    int count;
+} id_list;
+
+static int id_listed(const id_list *l, const char *id)
+{
+    for (int i = 0; i < l->count; i++)
+        if (strcmp(l->ids[i], id) == 0)
+            return 1;
+    return 0;
+}
+
+/* Adds every "[LANG-...]" of text to l (once each). */
+static void collect_ids(const char *text, id_list *l)
+{
+    for (const char *p = strstr(text, "[LANG-"); p; p = strstr(p + 1, "[LANG-")) {
+        size_t n = strspn(p + 1, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-");
+        if (p[1 + n] != ']' || n + 1 >= sizeof l->ids[0])
+            continue;
+        char id[48];
+        memcpy(id, p + 1, n);
+        id[n] = '\0';
+        if (!id_listed(l, id) && l->count < 256)
+            strcpy(l->ids[l->count++], id);
+    }
+}
+
+/* The IDs cited by the test sources tests/check_*.c. */
+static void cited_ids(id_list *l)
+{
+    DIR *dir = opendir(TESTS);
+    ck_assert_ptr_nonnull(dir);
+    l->count = 0;
+    for (struct dirent *e = readdir(dir); e; e = readdir(dir)) {
+        size_t n = strlen(e->d_name);
+        if (strncmp(e->d_name, "check_", 6) != 0 || n < 3 || strcmp(e->d_name + n - 2, ".c") != 0 ||
+            strcmp(e->d_name, "check_spec.c") == 0)
+            continue;
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s", TESTS, e->d_name);
+        char *text = read_text(path);
+        collect_ids(text, l);
+        free(text);
+    }
+    closedir(dir);
+}
+
+START_TEST(test_spec_defines_every_cited_id)
+{
+    id_list cited, defined;
+    char *spec = read_text(SPEC);
+    cited_ids(&cited);
+    defined.count = 0;
+    collect_ids(spec, &defined);
+    ck_assert_int_ge(cited.count, 40);
+    for (int i = 0; i < cited.count; i++)
+        ck_assert_msg(id_listed(&defined, cited.ids[i]), "a test cites [%s], which %s does not define",
+                      cited.ids[i], SPEC);
+    for (int i = 0; i < defined.count; i++)
+        ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", SPEC,
+                      defined.ids[i]);
+    free(spec);
+}
+END_TEST
+
+Suite *suite_spec(void)
+{
+    Suite *s = suite_create("spec");
+    TCase *tc = tcase_create("spec");
+    tcase_add_test(tc, test_spec_lists_every_keyword);
+    tcase_add_test(tc, test_spec_lists_every_property_of_every_block);
+    tcase_add_test(tc, test_spec_helpers);
+    tcase_add_test(tc, test_spec_defines_every_cited_id);
+    suite_add_tcase(s, tc);
+    return s;
+}
