@@ -81,7 +81,7 @@ ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev)
 
-.PHONY: all deps check test demo bench clean install uninstall solo
+.PHONY: all deps check test demo bench fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -121,6 +121,34 @@ bench: $(BENCH)
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+# Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
+# `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
+# instrumentation in build/fuzz, seeds the corpus from the scenes and the
+# bad-input corpus, and runs.  Crashes are written to build/fuzz/ as
+# crash-*; each one becomes a file under tests/fuzz-regressions/.
+FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 1
+FUZZ_DIR := build/fuzz
+FUZZ_DEBS := clang libclang-rt-14-dev
+
+fuzz:
+	$(Q)$(MAKE) --no-print-directory deps
+	$(Q)missing=""; for p in $(FUZZ_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
+	  grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then apt-get install -y -qq $$missing >/dev/null; fi
+	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
+	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
+
+fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
+	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
+	$(Q)mkdir -p $(BUILD)/corpus
+	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
+	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/keywords.c; \
+	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
+	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
+	cd $(BUILD) && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
+	  -dict=scene.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus
 
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
@@ -163,10 +191,12 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) -c -o $@ $<
 
-$(BUILD)/obj/src/image_png.o: CFLAGS += $(PNG_CFLAGS)
-$(BUILD)/obj/src/image_exr.o: CFLAGS += $(EXR_CFLAGS)
+# Per-object flags go to OBJ_CFLAGS, not CFLAGS, so that a CFLAGS given on
+# the command line (the fuzz build) does not drop them.
+$(BUILD)/obj/src/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
+$(BUILD)/obj/src/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
-$(BUILD)/obj/tests/%.o: CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
+$(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h
 
 # The oracle registry lists every `const oracle_family oracle_NAME =` of
@@ -180,7 +210,7 @@ $(BUILD)/obj/src/oracle/oracle.o: $(GEN)/oracle_list.h
 $(BUILD)/obj/%.o: %.c | $(if $(wildcard grammar/scene.y),$(GEN_HDRS))
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
-	$(Q)$(CC) $(CPPFLAGS) $(WARN) $(CFLAGS) -c -o $@ $<
+	$(Q)$(CC) $(CPPFLAGS) $(WARN) $(CFLAGS) $(OBJ_CFLAGS) -c -o $@ $<
 
 # Development aid: a runner built from a subset of the sources, so one module
 # can be tested while others are half written.  Use a BUILD of your own:

@@ -99,7 +99,10 @@ static int lower_for(loader *L, const ast *node)
 {
     double from, to;
     long count;
-    if (!loop_bound(L, node->first, &from) | !loop_bound(L, node->first->next, &to))
+    /* Both bounds are checked, so both errors are reported. */
+    int ok = loop_bound(L, node->first, &from);
+    ok &= loop_bound(L, node->first->next, &to);
+    if (!ok)
         return 0;
     const binding *old = env_find(&L->env, node->text);
     if (old || strcmp(node->text, "pi") == 0) {
@@ -121,7 +124,7 @@ static int lower_for(loader *L, const ast *node)
             return 0;
         }
         /* An error in the body would repeat on every pass: report it once. */
-        int ok = lower_statements(L, body);
+        ok = lower_statements(L, body);
         env_restore(&L->env, mark);
         if (!ok)
             return 0;

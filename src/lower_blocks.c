@@ -74,7 +74,8 @@ int lower_image(loader *L, const ast *block)
     rf_image_spec *im = &L->scene->image;
     const rf_limits *lim = L->limits;
     long w, h, k, depth;
-    if (!first_block(L, block, &L->image_where) | !props_collect(L, block, &p))
+    int first = first_block(L, block, &L->image_where);
+    if (!props_collect(L, block, &p) || !first)
         return 0;
     int ok = props_int(L, &p, KW_WIDTH, im->width, 1, lim->max_width, "--max-width", &w);
     ok &= props_int(L, &p, KW_HEIGHT, im->height, 1, lim->max_height, "--max-height", &h);
@@ -140,7 +141,8 @@ int lower_camera(loader *L, const ast *block)
 {
     props p;
     rf_camera *cam = &L->scene->camera;
-    if (!first_block(L, block, &L->camera_where) | !props_collect(L, block, &p))
+    int first = first_block(L, block, &L->camera_where);
+    if (!props_collect(L, block, &p) || !first)
         return 0;
     cam->where = block->head;
     if (!camera_kind(L, &p, cam))

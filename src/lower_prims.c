@@ -179,32 +179,39 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
 static int sphere(loader *L, const props *p, rf_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
-    return props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center) &
-           positive(L, p, KW_RADIUS, 1, &prim->u.sphere.radius);
+    int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
+    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.sphere.radius);
+    return ok;
 }
 
 static int plane(loader *L, const props *p, rf_prim *prim)
 {
     prim->kind = PRIM_PLANE;
-    return props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point) &
-           unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.plane.normal);
+    int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
+    ok &= unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.plane.normal);
+    return ok;
 }
 
 static int disk(loader *L, const props *p, rf_prim *prim)
 {
     prim->kind = PRIM_DISK;
-    return props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center) &
-           unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.disk.normal) &
-           positive(L, p, KW_RADIUS, 1, &prim->u.disk.radius);
+    int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
+    ok &= unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.disk.normal);
+    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.disk.radius);
+    return ok;
 }
 
 static int box(loader *L, const props *p, rf_prim *prim)
 {
     vec3 a, b;
     prim->kind = PRIM_BOX;
-    if (!props_require(L, p, KW_FROM) | !props_require(L, p, KW_TO))
+    int ok = props_require(L, p, KW_FROM);
+    ok &= props_require(L, p, KW_TO);
+    if (!ok)
         return 0;
-    if (!props_vector(L, p, KW_FROM, vec_splat(0), &a) | !props_vector(L, p, KW_TO, vec_splat(0), &b))
+    ok = props_vector(L, p, KW_FROM, vec_splat(0), &a);
+    ok &= props_vector(L, p, KW_TO, vec_splat(0), &b);
+    if (!ok)
         return 0;
     if (a.x == b.x || a.y == b.y || a.z == b.z) {
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_TO),

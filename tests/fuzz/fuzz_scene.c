@@ -1,0 +1,37 @@
+/*
+ * fuzz_scene.c - libFuzzer harness over the whole front end: scan, parse,
+ * evaluate, lower, validate, and print every diagnostic (the caret printer
+ * is part of what hostile input reaches).  `make fuzz FUZZ_SECONDS=N`.
+ *
+ * Limits are lowered so that a legal but huge scene (a loop of a million
+ * spheres) costs milliseconds, not seconds: the fuzzer looks for crashes,
+ * leaks and undefined behaviour, and a slow input would only hide them.
+ */
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "scene.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    rf_limits limits = scene_default_limits();
+    limits.max_loop_iterations = 2000;
+    limits.max_primitives = 2000;
+    limits.max_mesh_triangles = 2000;
+    limits.max_errors = 8;
+    limits.max_include_depth = 4;
+    limits.max_file_bytes = 1 << 16;
+    FILE *sink = fopen("/dev/null", "w");
+    int status;
+    rf_scene *s = scene_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
+    if (s && status != REFRAY_EXIT_OK)
+        __builtin_trap(); /* a scene comes back only when it is valid */
+    if (!s && status == REFRAY_EXIT_OK)
+        __builtin_trap();
+    scene_free(s);
+    if (sink)
+        fclose(sink);
+    return 0;
+}
