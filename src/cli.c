@@ -24,7 +24,7 @@ static const char usage_text[] =
     "  --max-width N, --max-height N, --max-pixels N, --max-samples N,\n"
     "  --max-light-samples N, --max-depth-limit N, --max-loop N,\n"
     "  --max-include-depth N, --max-file-size BYTES, --max-mesh-triangles N,\n"
-    "  --max-primitives N, --max-errors N\n"
+    "  --max-primitives N, --max-errors N, --max-ray-tree N\n"
     "                             raise or lower the input limits\n"
     "\n"
     "  refray --help | -h         this text\n"
@@ -95,6 +95,7 @@ static const limit_flag limit_flags[] = {
     LIMIT("--max-mesh-triangles", max_mesh_triangles),
     LIMIT("--max-primitives", max_primitives),
     LIMIT("--max-errors", max_errors),
+    LIMIT("--max-ray-tree", max_ray_tree),
 };
 
 /* The hard ceiling of every limit: far beyond any real scene, and low

@@ -224,10 +224,17 @@ static int render_and_write(render_args *a, const rf_scene *scene)
     img_write_stats written = {0, 0};
     progress_state p = {!a->quiet && isatty(2), render_clock()};
     a->render.progress = progress;
+    a->render.max_tree_rays = a->scene.limits.max_ray_tree;
     a->render.progress_ctx = &p;
     signal(SIGINT, on_interrupt);
     int status = render_image(scene, &a->render, &img, &stats);
     signal(SIGINT, SIG_DFL);
+    if (status == REFRAY_EXIT_DATAERR) {
+        fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
+                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
+                stats.overflow_x, stats.overflow_y, a->render.max_tree_rays);
+        return status;
+    }
     if (status == REFRAY_EXIT_INTERRUPTED) {
         fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
         return status;

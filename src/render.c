@@ -29,6 +29,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
             double x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
             ray r = camera_ray(&t->scene->camera, width, height, x, y);
             st->camera_rays++;
+            st->tree_rays = 0;
             rgb c = trace_ray(t, &r, 1, &outside, sampler_key(pixel_key, (uint64_t)(b * k + a)), st);
             sum = vec_add(sum, c);
         }
@@ -56,6 +57,11 @@ static int trace_rows(const tracer *t, const render_opts *opts, rf_image *out, r
             px[0] = c.x;
             px[1] = c.y;
             px[2] = c.z;
+            if (stats->trace.tree_overflow) {
+                stats->overflow_x = i;
+                stats->overflow_y = j;
+                return REFRAY_EXIT_DATAERR;
+            }
         }
         if (opts && opts->progress && opts->progress(opts->progress_ctx, j + 1, out->height))
             return REFRAY_EXIT_INTERRUPTED;
@@ -76,6 +82,7 @@ int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, 
     double start = render_clock();
     if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0))
         return REFRAY_EXIT_SOFTWARE;
+    t.max_tree_rays = opts ? opts->max_tree_rays : 0;
     stats->max_depth = t.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&t, stats);

@@ -22,6 +22,7 @@ rf_limits scene_default_limits(void)
     l.max_mesh_triangles = 10L * 1000 * 1000;
     l.max_primitives = 20L * 1000 * 1000;
     l.max_errors = 20;
+    l.max_ray_tree = 1000000;
     return l;
 }
 

@@ -157,6 +157,7 @@ typedef struct rf_limits {
     long max_mesh_triangles;   /* per mesh */
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
+    long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
 } rf_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */

@@ -257,11 +257,23 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }
 
+/* Both branches of a glass surface recurse, so a ray tree can grow as
+ * 2^max_depth: past the budget the tree stops growing and the render is
+ * declared void (the caller reports it), never silently wrong or endless. */
+static int over_budget(const tracer *t, trace_stats *st)
+{
+    if (t->max_tree_rays > 0 && ++st->tree_rays > t->max_tree_rays)
+        st->tree_overflow = 1;
+    return st->tree_overflow;
+}
+
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
 {
     ray nearest = *r;
     hit h;
     rgb c = t->scene->image.background;
+    if (over_budget(t, st))
+        return c;
     if (bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh))
         c = shade(t, &nearest, &h, depth, media, key, st);
     if (!vec_is_finite(c)) {

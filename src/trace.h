@@ -26,6 +26,8 @@ typedef struct trace_stats {
     long light_samples;       /* point-source evaluations, distributed samples each */
     long lights_on_surface;   /* samples skipped: the light sits on the shaded point */
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
+    long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
+    int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
     long medium_overflow;     /* glass nested deeper than the medium stack holds */
     bvh_stats bvh;
 } trace_stats;
@@ -42,6 +44,7 @@ typedef struct tracer {
     bvh accel;
     light_setup *lights;
     int max_depth;
+    long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (rf_features), so their work is left out. */
     int shadows, specular, reflection, refraction;

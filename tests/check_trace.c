@@ -285,6 +285,29 @@ START_TEST(test_render_image_stops_when_asked)
 }
 END_TEST
 
+START_TEST(test_render_image_refuses_an_exploding_ray_tree)
+{
+    /* Glass that is both a full mirror and fully clear (Ks 1, t 1) inside a
+     * mirror box doubles its rays at every bounce: 2^1000 rays at depth
+     * 1000.  The budget stops it at once and voids the render. */
+    rf_scene *s = load("image { width 2 height 2 max_depth 1000 }\n"
+                       "camera { eye [0, 0, 5] fov 10 }\n"
+                       "material g { Kd 0 Ks 1 t 1 ior 1.5 }\n"
+                       "sphere { radius 1 material g }\n"
+                       "box { from [-10, -10, -10] to [10, 10, 10] material { Kd 0 Ks 1 } }\n");
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.max_tree_rays = 10000;
+    rf_image img = {0, 0, NULL};
+    render_stats st;
+    ck_assert_int_eq(render_image(s, &o, &img, &st), REFRAY_EXIT_DATAERR);
+    ck_assert_ptr_null(img.rgb);
+    ck_assert(st.trace.tree_overflow);
+    ck_assert(st.trace.tree_rays <= 10001);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_trace(void)
 {
     Suite *s = suite_create("trace");
@@ -310,6 +333,7 @@ Suite *suite_trace(void)
     tcase_add_test(whole, test_trace_renders_are_bit_identical);
     tcase_add_test(whole, test_trace_diffuse_scene_skips_passes);
     tcase_add_test(whole, test_render_image_stops_when_asked);
+    tcase_add_test(whole, test_render_image_refuses_an_exploding_ray_tree);
     suite_add_tcase(s, whole);
     return s;
 }
