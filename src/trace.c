@@ -262,6 +262,8 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
  * declared void (the caller reports it), never silently wrong or endless. */
 static int over_budget(const tracer *t, trace_stats *st)
 {
+    if (st->tree_overflow)
+        return 1;
     if (t->max_tree_rays > 0 && ++st->tree_rays > t->max_tree_rays)
         st->tree_overflow = 1;
     return st->tree_overflow;
