@@ -442,6 +442,43 @@ START_TEST(test_scan_bracket_stack)
 }
 END_TEST
 
+/* Tokens far longer than flex's 16 kB buffer: a comment, a name, a string,
+ * a number, and 20 kB of blanks between a function word and its '('. */
+START_TEST(test_scan_long_tokens)
+{
+    enum { LONG = 100000 };
+    char *text = malloc(LONG + 64);
+    ck_assert_ptr_nonnull(text);
+    static const struct {
+        char first, fill;
+        int token;
+    } cases[] = {{'#', 'x', 0}, {'a', 'b', NAME}, {'"', 's', BAD_STRING}, {'1', '2', NUMBER}};
+    for (int i = 0; i < 4; i++) {
+        lex_run run;
+        text[0] = cases[i].first;
+        memset(text + 1, cases[i].fill, LONG - 1);
+        lex_bytes(&run, text, LONG);
+        ck_assert_int_eq(run.count, cases[i].token ? 1 : 0);
+        if (cases[i].token) {
+            ck_assert_int_eq(run.tokens[0].token, cases[i].token);
+            ck_assert_uint_eq(run.tokens[0].loc.end, LONG);
+        }
+        lex_done(&run);
+    }
+    memcpy(text, "sqrt", 4);
+    memset(text + 4, ' ', 20000);
+    memcpy(text + 20004, "(2)", 4);
+    lex_run run;
+    lex(&run, text);
+    ck_assert_int_eq(run.count, 4);
+    ck_assert_int_eq(run.tokens[0].token, FUNC);
+    ck_assert_int_eq(run.tokens[1].token, '(');
+    ck_assert_uint_eq(run.tokens[1].loc.begin, 20004);
+    lex_done(&run);
+    free(text);
+}
+END_TEST
+
 Suite *suite_lexer(void)
 {
     Suite *s = suite_create("lexer");
@@ -463,6 +500,7 @@ Suite *suite_lexer(void)
     tcase_add_test(tc, test_scan_locations_and_columns);
     tcase_add_test(tc, test_scan_end_location);
     tcase_add_test(tc, test_scan_bracket_stack);
+    tcase_add_test(tc, test_scan_long_tokens);
     suite_add_tcase(s, tc);
     return s;
 }
