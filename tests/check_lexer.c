@@ -306,6 +306,22 @@ START_TEST(test_scan_bad_bytes)
 }
 END_TEST
 
+/* [LANG-LEX-BYTES-2] a UTF-8 byte-order mark is skipped at the very start
+ * of a file and refused anywhere else. */
+START_TEST(test_scan_byte_order_mark)
+{
+    lex_run run;
+    lex(&run, "\xEF\xBB\xBFsphere \xEF\xBB\xBF");
+    ck_assert_int_eq(run.count, 2);
+    ck_assert_int_eq(run.tokens[0].token, KEYWORD);
+    ck_assert_uint_eq(run.tokens[0].loc.begin, 3);
+    ck_assert_int_eq(run.tokens[1].token, BAD_CHAR);
+    ck_assert_uint_eq(run.tokens[1].loc.begin, 10);
+    ck_assert_str_eq(run.tokens[1].message, "non-ASCII byte outside a string or comment (names and numbers are ASCII)");
+    lex_done(&run);
+}
+END_TEST
+
 /* [LANG-LEX-BLANK-1] space, tab, form feed and vertical tab separate tokens. */
 START_TEST(test_scan_blanks)
 {
@@ -494,6 +510,7 @@ Suite *suite_lexer(void)
     tcase_add_test(tc, test_scan_line_endings);
     tcase_add_test(tc, test_scan_bad_bytes);
     tcase_add_test(tc, test_scan_blanks);
+    tcase_add_test(tc, test_scan_byte_order_mark);
     tcase_add_test(tc, test_scan_keywords_versus_names);
     tcase_add_test(tc, test_scan_every_keyword);
     tcase_add_test(tc, test_scan_punctuation);
