@@ -26,6 +26,7 @@ static void on_interrupt(int sig)
 typedef struct render_args {
     cli_scene_opts scene;
     const char *input, *output;
+    const char *format;   /* --format, for -o - (standard output) */
     render_opts render;
     img_write_opts image;
     int stats, quiet;
@@ -38,7 +39,9 @@ static const char render_help[] =
     "  .pfm  linear portable float map      .ppm  8-bit sRGB, no library needed\n"
     "  .png  8-bit sRGB (--bit-depth 16, --linear for linear codes)\n"
     "options:\n"
-    "  -o, --output OUT      where to write (atomically: nothing is left on failure)\n"
+    "  -o, --output OUT      where to write (atomically: nothing is left on failure);\n"
+    "                        '-' writes to standard output (needs --format)\n"
+    "  --format FMT          png, exr, pfm or ppm: the format for -o -\n"
     "  --width W --height H  override the image size\n"
     "  --samples K           K x K camera rays per pixel\n"
     "  --max-depth D         trace depth (1: camera rays only)\n"
@@ -108,6 +111,8 @@ static int render_option(render_args *a, int argc, char **argv, int *i)
     const rf_limits *lim = &a->scene.limits;
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
         return take_value(argc, argv, i, &a->output);
+    if (strcmp(opt, "--format") == 0)
+        return take_value(argc, argv, i, &a->format);
     if (strcmp(opt, "--width") == 0)
         return int_option(argc, argv, i, lim->max_width, &a->render.width);
     if (strcmp(opt, "--height") == 0)
@@ -158,9 +163,32 @@ static int parse_args(render_args *a, int argc, char **argv)
     return 0;
 }
 
-/* Fails before the render, not after it, when OUT cannot be written. */
-static int check_output(const char *path)
+/* The format of standard output, from --format. */
+static img_format stdout_format(const char *name)
 {
+    char probe[16];
+    if (!name || strlen(name) > 4)
+        return IMG_FORMAT_UNKNOWN;
+    snprintf(probe, sizeof probe, "x.%s", name);
+    return img_format_from_path(probe);
+}
+
+/* Fails before the render, not after it, when OUT cannot be written. */
+static int check_output(const render_args *a)
+{
+    const char *path = a->output;
+    if (strcmp(path, "-") == 0) {
+        img_format f = stdout_format(a->format);
+        if (f == IMG_FORMAT_UNKNOWN)
+            return cli_usage_error("render: -o - needs --format png, exr, pfm or ppm");
+        if (!img_format_available(f))
+            return cli_usage_error("render: this refray was built without support for --format %s", a->format);
+        if (isatty(1))
+            return cli_usage_error("render: refusing to write an image to a terminal");
+        return 0;
+    }
+    if (a->format)
+        return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
     img_format fmt = img_format_from_path(path);
     if (fmt == IMG_FORMAT_UNKNOWN)
         return cli_usage_error("render: '%s' has no known image extension (.png .exr .pfm .ppm)", path);
@@ -245,7 +273,14 @@ static int render_and_write(render_args *a, const rf_scene *scene)
     }
     char err[512];
     a->image.stats = &written;
-    int wstatus = img_write(a->output, &img, &a->image, err, sizeof err);
+    int wstatus;
+    if (strcmp(a->output, "-") == 0) {
+        wstatus = img_write_stream(stdout, stdout_format(a->format), &img, &a->image, err, sizeof err);
+        if (wstatus == 0 && fflush(stdout) != 0)
+            wstatus = IMG_EIO;
+    } else {
+        wstatus = img_write(a->output, &img, &a->image, err, sizeof err);
+    }
     img_free(&img);
     if (wstatus != 0) {
         fprintf(stderr, "refray: error: %s\n", err);
@@ -265,7 +300,7 @@ int cli_render(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? REFRAY_EXIT_OK : status;
-    if ((status = check_output(a.output)) != 0)
+    if ((status = check_output(&a)) != 0)
         return status;
     rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)

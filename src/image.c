@@ -352,6 +352,11 @@ static int fill_temp(int fd, const char *path, img_format fmt, const rf_image *i
 static int write_atomically(const char *path, img_format fmt, const rf_image *img,
                             const img_write_opts *o, char *why, size_t len)
 {
+    /* The rename would replace a device, a FIFO or a directory entry that
+     * is not a plain file (as root even /dev/full): refuse instead. */
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
+        return img_error(why, len, IMG_EIO, "it exists and is not a regular file");
     static const char suffix[] = ".tmp.XXXXXX";
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
