@@ -235,7 +235,7 @@ START_TEST(test_faults_awkward_bytes_are_located_errors)
     } cases[] = {
         {"nul.scene", "sphere { radius 1 }\n\0\n", 22, "nul.scene:2:1: error: NUL byte in the scene text"},
         {"utf8.scene", "sphere { \xc3\x28 }\n", 14, "utf8.scene:1:10: error: non-ASCII byte"},
-        {"crlf.scene", "sphere {\r\n radius -1 }\r\n", 25, "crlf.scene:2:9: error: radius must be > 0, got -1"},
+        {"crlf.scene", "sphere {\r\n radius -1 }\r\n", 24, "crlf.scene:2:9: error: radius must be > 0, got -1"},
         {"huge.scene", "sphere { radius 1e400 }\n", 24, "huge.scene:1:17: error: number out of range"},
     };
     make_work_dir();
