@@ -95,6 +95,24 @@ static int loop_count(loader *L, const ast *node, double from, double to, long *
     return 1;
 }
 
+/* One pass of a loop body with the variable bound to x.  An error in the
+ * body would repeat on every pass, so the loop stops at the first one, and
+ * a note says which pass it was (unless the error limit hid the error). */
+static int loop_pass(loader *L, const ast *node, double x)
+{
+    int mark = L->env.count, errors = L->diag.errors;
+    value v = {VAL_NUMBER, x, {0, 0, 0}, NULL, node->head};
+    if (!env_bind(&L->env, node->text, v, node->head)) {
+        loader_oom(L);
+        return 0;
+    }
+    int ok = lower_statements(L, node->first->next->next);
+    env_restore(&L->env, mark);
+    if (!ok && L->diag.errors > errors && !diag_too_many(&L->diag))
+        diag_report(&L->diag, DIAG_NOTE, node->head, "in the pass where %s = %.17g", node->text, x);
+    return ok;
+}
+
 static int lower_for(loader *L, const ast *node)
 {
     double from, to;
@@ -115,20 +133,9 @@ static int lower_for(loader *L, const ast *node)
     if (!loop_count(L, node, from, to, &count))
         return 0;
     L->loop_iterations += count;
-    const ast *body = node->first->next->next;
-    for (long i = 0; i < count; i++) {
-        int mark = L->env.count;
-        value v = {VAL_NUMBER, from + (double)i, {0, 0, 0}, NULL, node->head};
-        if (!env_bind(&L->env, node->text, v, node->head)) {
-            loader_oom(L);
+    for (long i = 0; i < count; i++)
+        if (!loop_pass(L, node, from + (double)i))
             return 0;
-        }
-        /* An error in the body would repeat on every pass: report it once. */
-        ok = lower_statements(L, body);
-        env_restore(&L->env, mark);
-        if (!ok)
-            return 0;
-    }
     return 1;
 }
 
