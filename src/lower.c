@@ -139,10 +139,10 @@ static int lower_for(loader *L, const ast *node)
     return 1;
 }
 
-static int on_include_stack(const loader *L, const char *real)
+static int on_include_stack(const loader *L, const char *resolved)
 {
     for (int i = 0; i < L->include_depth; i++)
-        if (strcmp(L->include_stack[i], real) == 0)
+        if (strcmp(L->include_stack[i], resolved) == 0)
             return 1;
     return 0;
 }
@@ -173,15 +173,15 @@ static int lower_include(loader *L, const ast *node)
         return 0;
     }
     int file = -1, ok = 0;
-    char *real = realpath(path, NULL);
-    if (real && on_include_stack(L, real))
+    char *resolved = realpath(path, NULL);
+    if (resolved && on_include_stack(L, resolved))
         diag_report(&L->diag, DIAG_ERROR, node->head, "include cycle: '%s' is already being read", node->text);
     else if (L->include_depth > L->limits->max_include_depth) /* the root file is not an include */
         diag_report(&L->diag, DIAG_ERROR, node->head, "includes nested more than %ld deep (--max-include-depth)",
                     L->limits->max_include_depth);
     else if (read_include(L, node, path, &file))
         ok = loader_lower_file(L, file);
-    free(real);
+    free(resolved);
     free(path);
     return ok;
 }
@@ -250,20 +250,20 @@ int lower_statements(loader *L, const ast *list)
 int loader_lower_file(loader *L, int file)
 {
     const char *path = L->scene->sources.files[file]->path;
-    char *real = realpath(path, NULL);
-    if (!real) {
-        real = malloc(strlen(path) + 1);
-        if (real)
-            strcpy(real, path);
+    char *resolved = realpath(path, NULL);
+    if (!resolved) {
+        resolved = malloc(strlen(path) + 1);
+        if (resolved)
+            strcpy(resolved, path);
     }
-    char **stack = real ? realloc(L->include_stack, (size_t)(L->include_depth + 1) * sizeof *stack) : NULL;
+    char **stack = resolved ? realloc(L->include_stack, (size_t)(L->include_depth + 1) * sizeof *stack) : NULL;
     if (!stack) {
-        free(real);
+        free(resolved);
         loader_oom(L);
         return 0;
     }
     L->include_stack = stack;
-    stack[L->include_depth++] = real;
+    stack[L->include_depth++] = resolved;
     int errors = L->diag.errors;
     ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
     int ok = 0;
