@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "cli_verify.h"
 
 static const char usage_text[] =
     "usage: refray COMMAND [OPTIONS] [FILE...]\n"
@@ -18,6 +19,9 @@ static const char usage_text[] =
     "commands:\n"
     "  check FILE...        parse and validate scenes, print a one-line summary each\n"
     "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension)\n"
+    "  verify SCENE...      render analytic scenes and compare with their exact images\n"
+    "  oracle SCENE -o OUT  write the exact image of an analytic scene (.exr .pfm)\n"
+    "  compare A B          compare image A with the reference B, --diff MAP for a map\n"
     "\n"
     "options of every command that reads scenes:\n"
     "  -W, --no-warnings          do not print warnings\n"
@@ -139,5 +143,11 @@ int cli_main(int argc, char **argv)
         return cli_check(argc - 1, argv + 1);
     if (strcmp(cmd, "render") == 0)
         return cli_render(argc - 1, argv + 1);
+    if (strcmp(cmd, "verify") == 0)
+        return cli_verify(argc - 1, argv + 1);
+    if (strcmp(cmd, "oracle") == 0)
+        return cli_oracle(argc - 1, argv + 1);
+    if (strcmp(cmd, "compare") == 0)
+        return cli_compare(argc - 1, argv + 1);
     return cli_usage_error("unknown command '%s'", cmd);
 }

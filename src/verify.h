@@ -224,7 +224,7 @@ int verify_mask_write(const char *path, const unsigned char *mask, int width, in
                       size_t errlen);
 
 /*
- * Reads a mask of width x height from path (.pgm: P5 or P2, any maxval;
+ * Reads a mask of width x height from path (.pgm: binary P5, maxval <= 255;
  * others through img_read): a pixel is excluded when any of its values is
  * above half the range.  *mask is malloc'd.  Returns 0, or an IMG_ code
  * with the reason in err (IMG_EDATA for a size other than width x height).

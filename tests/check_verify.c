@@ -1,0 +1,644 @@
+/*
+ * check_verify.c - verify.h: a render checked against its exact image, the
+ * sweeps and their orders, the JSON and TSV, and `refray verify` / `refray
+ * oracle` run as child processes for their exit codes ($REFRAY_BIN, set by
+ * `make test`, else build/refray; run from the repository root).
+ *
+ * The scene is the `ambient` family's: one sphere under ambient light, seen
+ * by an orthographic camera.  Every covered sample is Kd * Ia = [0.8, 0.5,
+ * 0.25] * [0.5, 0.6, 0.7] = [0.4, 0.3, 0.175], the rest the background.
+ */
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "testlib.h"
+#include "verify.h"
+
+enum { OUT_MAX = 65536 };
+
+#define AMBIENT_BODY                                                              \
+    "image { width 32 height 24 samples 2 background [0.1, 0.2, 0.3] }\n"        \
+    "camera { orthographic width 4 eye [0, 0, 5] look_at [0, 0, 0] up [0, 1, 0] }\n" \
+    "ambient { color [0.5, 0.6, 0.7] }\n"                                       \
+    "material m { Kd [0.8, 0.5, 0.25] }\n"                                      \
+    "sphere { center [0, 0, 0] radius 1 material m }\n"
+
+/* Loads text and gives it the oracle name `family` (NULL: none).  The name
+ * is set here rather than with an `oracle` statement so that any family
+ * name can be used, keywords included. */
+static rf_scene *load_scene(const char *text, const char *family)
+{
+    int status;
+    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "the test scene does not load (status %d)", status);
+    free(s->oracle);
+    s->oracle = family ? strdup(family) : NULL;
+    return s;
+}
+
+/* [VERIFY-EXIT-1] the ambient scene passes at 1e-9 relative; the camera
+ * rays are all the rays: 32 x 24 pixels x 2 x 2 = 3072, no light, no
+ * secondary ray (t = 0, Ks = 0). */
+START_TEST(test_verify_scene_ambient_passes)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "ambient.scene", NULL, &r), 0);
+    ck_assert_int_eq(r.verdict, VERIFY_PASS);
+    ck_assert_str_eq(r.scene, "ambient.scene");
+    ck_assert_str_eq(r.family, "ambient");
+    ck_assert_int_eq(r.metrics.over, 0);
+    ck_assert_int_eq(r.metrics.compared + r.metrics.excluded, 32 * 24);
+    ck_assert_msg(r.metrics.excluded <= 32 * 24 / 20, "%ld excluded", r.metrics.excluded);
+    ck_assert_near(r.tolerance, 1e-9, 0);
+    ck_assert_msg(r.metrics.max_abs <= 1e-9 * 0.4, "max abs %g", r.metrics.max_abs);
+    ck_assert_int_eq(r.rays, 3072);
+    ck_assert_int_eq(r.width, 32);
+    ck_assert_int_eq(r.samples, 2);
+    ck_assert(r.render_seconds >= 0 && r.oracle_seconds >= 0);
+    ck_assert(!r.sampled);
+    scene_free(s);
+}
+END_TEST
+
+/* Overrides reach both the render and the exact image. */
+START_TEST(test_verify_scene_overrides)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    verify_opts o = {16, 12, 3, 1, 0};
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "a", &o, &r), 0);
+    ck_assert_int_eq(r.verdict, VERIFY_PASS);
+    ck_assert_int_eq(r.metrics.compared + r.metrics.excluded, 16 * 12);
+    ck_assert_int_eq(r.rays, 16 * 12 * 9);
+    ck_assert_int_eq(r.samples, 3);
+    ck_assert_int_eq(r.max_depth, 1);
+    scene_free(s);
+}
+END_TEST
+
+/* An exact image off by 1e-6 at the centre pixel (covered: 0.4 in red,
+ * 2.5e-6 relative) fails there and only there. */
+START_TEST(test_verify_render_compare_detects_an_error)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    oracle_view v = verify_view(s, NULL);
+    verify_exact e;
+    verify_result r;
+    memset(&r, 0, sizeof r);
+    ck_assert_int_eq(verify_exact_build(oracle_find("ambient"), &v, &e), 0);
+    ck_assert_near(img_pixel(&e.image, 16, 12)[0], 0.4, 1e-15);
+    img_pixel(&e.image, 16, 12)[0] += 1e-6;
+    ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
+    ck_assert_int_eq(r.metrics.over, 1);
+    ck_assert_int_eq(r.metrics.worst_x, 16);
+    ck_assert_int_eq(r.metrics.worst_y, 12);
+    ck_assert_near(r.metrics.max_abs, 1e-6, 1e-15);
+    ck_assert_msg(strstr(r.reason, "1 pixel over") != NULL, "reason: %s", r.reason);
+    verify_exact_free(&e);
+    scene_free(s);
+}
+END_TEST
+
+/* A scene with a light is outside the ambient family: refused with the
+ * family's own reason, status 1. */
+START_TEST(test_verify_family_refused)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient");
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
+    ck_assert_str_eq(r.reason, "ambient: the scene must have no lights (it has 1)");
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_verify_family_unknown_and_missing)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "no_such_family");
+    oracle_view v = verify_view(s, NULL);
+    char why[512];
+    int status;
+    ck_assert_ptr_null(verify_family(s, &v, &status, why, sizeof why));
+    ck_assert_int_eq(status, REFRAY_EXIT_FAIL);
+    ck_assert_msg(strstr(why, "no oracle family is called 'no_such_family' (known: ") && strstr(why, "ambient"),
+                  "why: %s", why);
+    free(s->oracle);
+    s->oracle = NULL;
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "plain.scene", NULL, &r), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(r.verdict, VERIFY_ERROR);
+    ck_assert_msg(strstr(r.reason, "no `oracle NAME` statement") != NULL, "reason: %s", r.reason);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_verify_sweep_parse)
+{
+    verify_sweep sw;
+    char why[256];
+    ck_assert_int_eq(verify_sweep_parse("samples=1,2,4,1024", 4096, &sw, why, sizeof why), 1);
+    ck_assert_int_eq(sw.kind, VERIFY_SWEEP_LIGHT);
+    ck_assert_int_eq(sw.count, 4);
+    ck_assert_int_eq(sw.values[3], 1024);
+    ck_assert_near(verify_sweep_n(&sw, 3), 1024, 0);
+    ck_assert_int_eq(verify_sweep_parse("pixel-samples=1,3", 16, &sw, why, sizeof why), 1);
+    ck_assert_int_eq(sw.kind, VERIFY_SWEEP_PIXEL);
+    ck_assert_near(verify_sweep_n(&sw, 1), 9, 0); /* k x k camera rays */
+    const char *bad[] = {"samples", "samples=", "samples=0", "samples=1,,2", "samples=1,2,", "samples=2x",
+                         "samples=5000", "light=1,2", "pixel-samples=17"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        ck_assert_msg(verify_sweep_parse(bad[i], i == 8 ? 16 : 4096, &sw, why, sizeof why) == 0, "%s accepted",
+                      bad[i]);
+}
+END_TEST
+
+/* A deterministic scene's error is round-off at every k: the steps pass and
+ * the order is marked not meaningful [VERIFY-FIT-2]. */
+START_TEST(test_verify_sweep_run_deterministic)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    verify_sweep sw;
+    char why[256];
+    verify_result steps[3];
+    int ran;
+    ck_assert(verify_sweep_parse("pixel-samples=1,2,3", 16, &sw, why, sizeof why));
+    ck_assert_int_eq(verify_sweep_run(s, "a", NULL, &sw, steps, &ran), 0);
+    ck_assert_int_eq(ran, 3);
+    for (int i = 0; i < 3; i++) {
+        ck_assert_int_eq(steps[i].verdict, VERIFY_PASS);
+        ck_assert_int_eq(steps[i].samples, i + 1);
+        ck_assert_int_eq(steps[i].rays, 32 * 24 * (i + 1) * (i + 1));
+    }
+    verify_order vn, vt;
+    verify_sweep_orders(&sw, steps, ran, &vn, &vt);
+    ck_assert_int_eq(vn.meaningful, 0);
+    ck_assert_int_eq(vt.meaningful, 0);
+    ck_assert_msg(strstr(vn.note, "round-off") != NULL, "note: %s", vn.note);
+    scene_free(s);
+}
+END_TEST
+
+/* Steps with RMS = 0.3 / N and seconds = 0.01 N: order -1 against both. */
+START_TEST(test_verify_sweep_orders_power_law)
+{
+    verify_sweep sw = {VERIFY_SWEEP_LIGHT, {1, 2, 4, 8, 16}, 5};
+    verify_result steps[5];
+    memset(steps, 0, sizeof steps);
+    for (int i = 0; i < 5; i++) {
+        steps[i].verdict = VERIFY_PASS;
+        steps[i].metrics.peak = 1;
+        steps[i].metrics.rms = 0.3 / sw.values[i];
+        steps[i].render_seconds = 0.01 * sw.values[i];
+    }
+    verify_order vn, vt;
+    verify_sweep_orders(&sw, steps, 5, &vn, &vt);
+    ck_assert_int_eq(vn.meaningful, 1);
+    ck_assert_near(vn.line.slope, -1, 1e-12);
+    ck_assert_near(vt.line.slope, -1, 1e-12);
+    ck_assert_int_eq(vn.line.points, 5);
+    /* Two steps at round-off leave 3: still an order. */
+    steps[3].metrics.rms = steps[4].metrics.rms = 1e-17;
+    verify_sweep_orders(&sw, steps, 5, &vn, &vt);
+    ck_assert_int_eq(vn.meaningful, 1);
+    ck_assert_int_eq(vn.line.points, 3);
+    steps[2].metrics.rms = 1e-17;
+    verify_sweep_orders(&sw, steps, 5, &vn, &vt);
+    ck_assert_int_eq(vn.meaningful, 0);
+    ck_assert_msg(strstr(vn.note, "only 2 steps") != NULL, "note: %s", vn.note);
+}
+END_TEST
+
+/* ---- JSON and TSV ---- */
+
+/* A minimal JSON checker (RFC 8259 grammar, no semantics): returns the
+ * position after one value, or NULL on a syntax error. */
+static const char *json_value(const char *p);
+
+static const char *json_ws(const char *p)
+{
+    while (*p == ' ' || *p == '\n' || *p == '\t' || *p == '\r')
+        p++;
+    return p;
+}
+
+static const char *json_string(const char *p)
+{
+    if (*p++ != '"')
+        return NULL;
+    for (; *p != '"'; p++) {
+        if ((unsigned char)*p < 0x20)
+            return NULL;
+        if (*p == '\\') {
+            p++;
+            if (*p == 'u') {
+                for (int i = 1; i <= 4; i++)
+                    if (!strchr("0123456789abcdefABCDEF", p[i]) || !p[i])
+                        return NULL;
+                p += 4;
+            } else if (!*p || !strchr("\"\\/bfnrt", *p)) {
+                return NULL;
+            }
+        }
+    }
+    return p + 1;
+}
+
+static const char *json_number(const char *p)
+{
+    const char *start = p;
+    p += *p == '-';
+    if (*p == '0')
+        p++;
+    else if (*p >= '1' && *p <= '9')
+        while (*p >= '0' && *p <= '9')
+            p++;
+    else
+        return NULL;
+    if (*p == '.') {
+        if (!(*++p >= '0' && *p <= '9'))
+            return NULL;
+        while (*p >= '0' && *p <= '9')
+            p++;
+    }
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        p += *p == '+' || *p == '-';
+        if (!(*p >= '0' && *p <= '9'))
+            return NULL;
+        while (*p >= '0' && *p <= '9')
+            p++;
+    }
+    return p > start ? p : NULL;
+}
+
+/* Members or elements up to the closing bracket. */
+static const char *json_items(const char *p, char close, int members)
+{
+    p = json_ws(p);
+    if (*p == close)
+        return p + 1;
+    for (;;) {
+        if (members) {
+            p = json_string(json_ws(p));
+            if (!p || *(p = json_ws(p)) != ':')
+                return NULL;
+            p++;
+        }
+        p = json_value(p);
+        if (!p)
+            return NULL;
+        p = json_ws(p);
+        if (*p == close)
+            return p + 1;
+        if (*p++ != ',')
+            return NULL;
+    }
+}
+
+static const char *json_value(const char *p)
+{
+    p = json_ws(p);
+    if (*p == '{')
+        return json_items(p + 1, '}', 1);
+    if (*p == '[')
+        return json_items(p + 1, ']', 0);
+    if (*p == '"')
+        return json_string(p);
+    if (strncmp(p, "true", 4) == 0 || strncmp(p, "null", 4) == 0)
+        return p + 4;
+    if (strncmp(p, "false", 5) == 0)
+        return p + 5;
+    return json_number(p);
+}
+
+/* 1 when text is exactly one JSON value (white space around allowed). */
+static int json_valid(const char *text)
+{
+    const char *end = json_value(text);
+    return end && *json_ws(end) == '\0';
+}
+
+START_TEST(test_json_checker_itself)
+{
+    ck_assert(json_valid("[{\"a\": [1, -2.5e-3, true, null], \"b\": \"\\u00e9\\n\"}]"));
+    ck_assert(!json_valid("[1, 2,]"));
+    ck_assert(!json_valid("{\"a\" 1}"));
+    ck_assert(!json_valid("[inf]"));
+    ck_assert(!json_valid("\"tab\there\""));
+    ck_assert(!json_valid("01"));
+}
+END_TEST
+
+/* What fp held once closed, as a malloc'd string. */
+typedef struct membuf {
+    char *text;
+    size_t size;
+    FILE *fp;
+} membuf;
+
+static void mem_open(membuf *m)
+{
+    m->text = NULL;
+    m->size = 0;
+    m->fp = open_memstream(&m->text, &m->size);
+    ck_assert_ptr_nonnull(m->fp);
+}
+
+static const char *mem_close(membuf *m)
+{
+    ck_assert_int_eq(fclose(m->fp), 0);
+    return m->text;
+}
+
+START_TEST(test_verify_json_string_escapes)
+{
+    membuf m;
+    mem_open(&m);
+    verify_json_string(m.fp, "a\"b\\c\nd\te\x01\x1f" "f/\xc3\xa9");
+    ck_assert_str_eq(mem_close(&m), "\"a\\\"b\\\\c\\nd\\te\\u0001\\u001ff/\xc3\xa9\"");
+    free(m.text);
+}
+END_TEST
+
+START_TEST(test_verify_json_number)
+{
+    membuf m;
+    mem_open(&m);
+    verify_json_number(m.fp, 0.1);
+    fputc(' ', m.fp);
+    verify_json_number(m.fp, HUGE_VAL);
+    fputc(' ', m.fp);
+    verify_json_number(m.fp, NAN);
+    fputc(' ', m.fp);
+    verify_json_number(m.fp, -0.375);
+    fputc(' ', m.fp);
+    verify_json_number(m.fp, 1e21);
+    ck_assert_str_eq(mem_close(&m), "0.10000000000000001 null null -0.375 1e+21");
+    free(m.text);
+}
+END_TEST
+
+/* The exact text for a tiny case (binary fractions print exactly). */
+START_TEST(test_verify_json_metrics_exact_text)
+{
+    image_metrics im = {0.5, 0.25, 1, HUGE_VAL, 2, 3, 4, 1, 1, 2};
+    membuf m;
+    mem_open(&m);
+    verify_json_metrics(m.fp, &im, 0.125);
+    ck_assert_str_eq(mem_close(&m), "\"compared\": 4, \"excluded\": 1, \"max_abs\": 0.5, \"rms\": 0.25, "
+                                    "\"max_rel\": 1, \"psnr\": null, \"peak\": 2, \"over\": 3, "
+                                    "\"tolerance\": 0.125, \"worst\": [1, 2]");
+    free(m.text);
+}
+END_TEST
+
+/* A pass, a refusal and an error, with awkward characters in the names,
+ * make a well-formed array of three objects. */
+START_TEST(test_verify_json_results_well_formed)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    verify_result r[3];
+    verify_scene(s, "dir/\"quoted\"\tname.scene", NULL, &r[0]);
+    free(s->oracle);
+    s->oracle = strdup("nope\\family");
+    verify_scene(s, "b.scene", NULL, &r[1]);
+    memset(&r[2], 0, sizeof r[2]);
+    verify_result_error(&r[2], "missing\n.scene", REFRAY_EXIT_NOINPUT, "cannot read");
+    membuf m;
+    mem_open(&m);
+    verify_json_results(m.fp, r, 3);
+    const char *text = mem_close(&m);
+    ck_assert_msg(json_valid(text), "not JSON:\n%s", text);
+    ck_assert(text[0] == '[');
+    ck_assert_msg(strstr(text, "\"verdict\": \"pass\"") && strstr(text, "\"verdict\": \"refused\"") &&
+                      strstr(text, "\"verdict\": \"error\"") && strstr(text, "\"status\": 66"),
+                  "%s", text);
+    ck_assert_msg(strstr(text, "\"psnr\": null") != NULL, "an exact match has no finite PSNR: %s", text);
+    free(m.text);
+    scene_free(s);
+}
+END_TEST
+
+static int count_char(const char *s, char c, const char *end)
+{
+    int n = 0;
+    for (; s < end; s++)
+        n += *s == c;
+    return n;
+}
+
+/* [VERIFY-TSV-1] 21 columns in the header and in each step's row, then
+ * one "# fit" line against N and one against seconds (12 fields); the sweep
+ * in JSON is well formed. */
+START_TEST(test_verify_tsv_and_json_sweep)
+{
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    verify_sweep sw;
+    char why[256];
+    verify_result steps[2];
+    int ran;
+    ck_assert(verify_sweep_parse("samples=1,4", 64, &sw, why, sizeof why));
+    ck_assert_int_eq(verify_sweep_run(s, "a.scene", NULL, &sw, steps, &ran), 0);
+    verify_order vn, vt;
+    verify_sweep_orders(&sw, steps, ran, &vn, &vt);
+    membuf m;
+    mem_open(&m);
+    verify_tsv_header(m.fp);
+    verify_tsv_sweep(m.fp, &sw, steps, ran, &vn, &vt);
+    const char *text = mem_close(&m);
+    const char *line = text;
+    int lines = 0, fits = 0;
+    for (const char *nl; (nl = strchr(line, '\n')); line = nl + 1, lines++) {
+        int fields = count_char(line, '\t', nl) + 1;
+        int fit = strncmp(line, "# fit\t", 6) == 0;
+        fits += fit;
+        ck_assert_msg(fields == (fit ? 12 : 21), "line %d has %d fields: %.*s", lines + 1, fields, (int)(nl - line),
+                      line);
+    }
+    ck_assert_int_eq(lines, 5);
+    ck_assert_int_eq(fits, 2);
+    ck_assert(strncmp(text, "scene\tfamily\tsweep\tvalue\tn\t", 26) == 0);
+    ck_assert_msg(strstr(text, "a.scene\tambient\tsamples\t4\t4\t4\t2\t32\t24\t768\t") != NULL, "%s", text);
+    free(m.text);
+    mem_open(&m);
+    verify_json_sweep(m.fp, &sw, steps, ran, &vn, &vt);
+    text = mem_close(&m);
+    ck_assert_msg(json_valid(text), "not JSON:\n%s", text);
+    ck_assert(strstr(text, "\"meaningful\": false") != NULL);
+    free(m.text);
+    scene_free(s);
+}
+END_TEST
+
+/* ---- The command line ---- */
+
+static const char *refray_bin(void)
+{
+    const char *bin = getenv("REFRAY_BIN");
+    if (!bin || !*bin)
+        bin = "build/refray";
+    ck_assert_msg(access(bin, X_OK) == 0, "no refray binary at %s (set REFRAY_BIN)", bin);
+    return bin;
+}
+
+/* Runs refray with args (NULL-terminated), stdout into out, stderr to
+ * /dev/null.  Returns the exit code, -1 when it did not exit normally. */
+static int run_refray(const char *const *args, char *out)
+{
+    const char *bin = refray_bin();
+    char *argv[24];
+    int n = 0;
+    argv[n++] = (char *)bin;
+    while (args[n - 1] && n < 23) {
+        argv[n] = (char *)args[n - 1];
+        n++;
+    }
+    argv[n] = NULL;
+    int po[2];
+    ck_assert_int_eq(pipe(po), 0);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        dup2(po[1], 1);
+        if (null >= 0)
+            dup2(null, 2);
+        close(po[0]);
+        execv(bin, argv);
+        _exit(127);
+    }
+    close(po[1]);
+    size_t used = 0;
+    ssize_t got;
+    while ((got = read(po[0], out + used, OUT_MAX - 1 - used)) > 0)
+        used += (size_t)got;
+    out[used] = '\0';
+    close(po[0]);
+    int status;
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+typedef struct scene_files {
+    char dir[64], plain[128], unknown[128], missing[128];
+} scene_files;
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "w");
+    ck_assert_ptr_nonnull(fp);
+    fputs(text, fp);
+    ck_assert_int_eq(fclose(fp), 0);
+}
+
+static void make_scenes(scene_files *f)
+{
+    snprintf(f->dir, sizeof f->dir, "/tmp/refray-verify-XXXXXX");
+    ck_assert_ptr_nonnull(mkdtemp(f->dir));
+    snprintf(f->plain, sizeof f->plain, "%s/plain.scene", f->dir);
+    snprintf(f->unknown, sizeof f->unknown, "%s/unknown.scene", f->dir);
+    snprintf(f->missing, sizeof f->missing, "%s/missing.scene", f->dir);
+    write_text(f->plain, AMBIENT_BODY);
+    write_text(f->unknown, "oracle no_such_family\n" AMBIENT_BODY);
+}
+
+static void remove_scenes(const scene_files *f)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", f->dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+
+/* [VERIFY-EXIT-1] 65 without `oracle`, 1 for an unknown family, 66 for a
+ * missing scene, and the largest of them for several. */
+START_TEST(test_cli_verify_exit_codes)
+{
+    scene_files f;
+    char out[OUT_MAX];
+    make_scenes(&f);
+    const char *plain[] = {"verify", f.plain, NULL};
+    ck_assert_int_eq(run_refray(plain, out), 65);
+    ck_assert_msg(strstr(out, "ERROR") && strstr(out, "no `oracle NAME` statement"), "%s", out);
+    const char *unknown[] = {"verify", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(unknown, out), 1);
+    ck_assert_msg(strstr(out, "REFUSED") && strstr(out, "no oracle family is called 'no_such_family'"), "%s", out);
+    const char *missing[] = {"verify", f.missing, NULL};
+    ck_assert_int_eq(run_refray(missing, out), 66);
+    const char *all[] = {"verify", "--json", f.unknown, f.missing, f.plain, NULL};
+    ck_assert_int_eq(run_refray(all, out), 66);
+    ck_assert_msg(json_valid(out), "not JSON:\n%s", out);
+    const char *two[] = {"verify", f.unknown, f.plain, NULL};
+    ck_assert_int_eq(run_refray(two, out), 65);
+    remove_scenes(&f);
+}
+END_TEST
+
+START_TEST(test_cli_verify_usage_errors)
+{
+    scene_files f;
+    char out[OUT_MAX];
+    make_scenes(&f);
+    const char *none[] = {"verify", NULL};
+    ck_assert_int_eq(run_refray(none, out), 64);
+    const char *tsv[] = {"verify", "--tsv", "x.tsv", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(tsv, out), 64);
+    const char *sweep[] = {"verify", "--sweep", "samples=0", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(sweep, out), 64);
+    const char *both[] = {"verify", "--sweep", "samples=1,2", "--light-samples", "4", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(both, out), 64);
+    const char *opt[] = {"verify", "--frobnicate", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(opt, out), 64);
+    remove_scenes(&f);
+}
+END_TEST
+
+START_TEST(test_cli_oracle_exit_codes)
+{
+    scene_files f;
+    char out[OUT_MAX], exr[160];
+    make_scenes(&f);
+    snprintf(exr, sizeof exr, "%s/exact.pfm", f.dir);
+    const char *plain[] = {"oracle", f.plain, "-o", exr, NULL};
+    ck_assert_int_eq(run_refray(plain, out), 65);
+    ck_assert_int_eq(access(exr, F_OK), -1);
+    const char *unknown[] = {"oracle", f.unknown, "-o", exr, NULL};
+    ck_assert_int_eq(run_refray(unknown, out), 65);
+    const char *missing[] = {"oracle", f.missing, "-o", exr, NULL};
+    ck_assert_int_eq(run_refray(missing, out), 66);
+    const char *no_out[] = {"oracle", f.unknown, NULL};
+    ck_assert_int_eq(run_refray(no_out, out), 64);
+    const char *bad_ext[] = {"oracle", f.unknown, "-o", "x.jpg", NULL};
+    ck_assert_int_eq(run_refray(bad_ext, out), 64);
+    remove_scenes(&f);
+}
+END_TEST
+
+Suite *suite_verify(void)
+{
+    Suite *s = suite_create("verify");
+    TCase *tc = tcase_create("verify");
+    tcase_add_test(tc, test_verify_scene_ambient_passes);
+    tcase_add_test(tc, test_verify_scene_overrides);
+    tcase_add_test(tc, test_verify_render_compare_detects_an_error);
+    tcase_add_test(tc, test_verify_family_refused);
+    tcase_add_test(tc, test_verify_family_unknown_and_missing);
+    tcase_add_test(tc, test_verify_sweep_parse);
+    tcase_add_test(tc, test_verify_sweep_run_deterministic);
+    tcase_add_test(tc, test_verify_sweep_orders_power_law);
+    tcase_add_test(tc, test_json_checker_itself);
+    tcase_add_test(tc, test_verify_json_string_escapes);
+    tcase_add_test(tc, test_verify_json_number);
+    tcase_add_test(tc, test_verify_json_metrics_exact_text);
+    tcase_add_test(tc, test_verify_json_results_well_formed);
+    tcase_add_test(tc, test_verify_tsv_and_json_sweep);
+    tcase_add_test(tc, test_cli_verify_exit_codes);
+    tcase_add_test(tc, test_cli_verify_usage_errors);
+    tcase_add_test(tc, test_cli_oracle_exit_codes);
+    suite_add_tcase(s, tc);
+    return s;
+}
