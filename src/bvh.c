@@ -42,7 +42,7 @@ typedef struct build_item {
 } build_item;
 
 typedef struct sort_key {
-    double key;
+    real key;
     int index;     /* primitive index: the tie-break that makes the order unique */
     int position;  /* where the item was before sorting */
 } sort_key;
@@ -70,7 +70,7 @@ static vec3 vmax(vec3 a, vec3 b)
     return vec_make(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
 }
 
-static double half_area(vec3 lo, vec3 hi)
+static real half_area(vec3 lo, vec3 hi)
 {
     vec3 e = vec_sub(hi, lo);
     if (!(e.x >= 0.0 && e.y >= 0.0 && e.z >= 0.0))
@@ -78,7 +78,7 @@ static double half_area(vec3 lo, vec3 hi)
     return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-static double pad(double lo, double hi)
+static real pad(real lo, real hi)
 {
     return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
 }
@@ -114,22 +114,22 @@ static void range_bounds(const build_ctx *ctx, int begin, int end, vec3 bounds[2
 /* The binning of one axis: bin = floor((c - lo) * scale), clamped. */
 typedef struct binning {
     int axis;
-    double lo, scale;
+    real lo, scale;
 } binning;
 
 static int bin_of(const binning *bn, vec3 c)
 {
-    double x = (vec_component(c, bn->axis) - bn->lo) * bn->scale;
+    real x = (vec_component(c, bn->axis) - bn->lo) * bn->scale;
     int k = x > 0.0 ? (int)x : 0;
     return k < BINS ? k : BINS - 1;
 }
 
 /* The best plane on one axis: cost (area-weighted counts, not yet divided
  * by the node's area) and the number of bins on its left. */
-static double sah_axis(const build_ctx *ctx, int begin, int end, const binning *bn, int *split)
+static real sah_axis(const build_ctx *ctx, int begin, int end, const binning *bn, int *split)
 {
     bin bins[BINS];
-    double right_area[BINS];
+    real right_area[BINS];
     int right_count[BINS];
     for (int k = 0; k < BINS; k++) {
         bins[k].lo = vec_splat(INFINITY);
@@ -152,7 +152,7 @@ static double sah_axis(const build_ctx *ctx, int begin, int end, const binning *
         right_area[k] = half_area(lo, hi);
         right_count[k] = count;
     }
-    double best = INFINITY;
+    real best = INFINITY;
     lo = vec_splat(INFINITY);
     hi = vec_splat(-INFINITY);
     count = 0;
@@ -162,7 +162,7 @@ static double sah_axis(const build_ctx *ctx, int begin, int end, const binning *
         count += bins[k].count;
         if (count == 0 || right_count[k + 1] == 0)
             continue;
-        double cost = half_area(lo, hi) * count + right_area[k + 1] * right_count[k + 1];
+        real cost = half_area(lo, hi) * count + right_area[k + 1] * right_count[k + 1];
         if (cost < best) {
             best = cost;
             *split = k + 1;
@@ -226,17 +226,17 @@ static int choose_split(const build_ctx *ctx, int begin, int end, int depth, con
                         const vec3 cent[2])
 {
     int n = end - begin, best_split = 0;
-    double best = INFINITY;
+    real best = INFINITY;
     binning best_bn = {0, 0.0, 0.0};
     if (n <= 1)
         return -1;
     for (int axis = 0; axis < 3 && depth < BVH_MEDIAN_DEPTH; axis++) {
-        double lo = vec_component(cent[0], axis), extent = vec_component(cent[1], axis) - lo;
+        real lo = vec_component(cent[0], axis), extent = vec_component(cent[1], axis) - lo;
         binning bn = {axis, lo, BINS / extent};
         int split = 0;
         if (!(extent > 0.0) || !isfinite(bn.scale))
             continue;
-        double cost = sah_axis(ctx, begin, end, &bn, &split);
+        real cost = sah_axis(ctx, begin, end, &bn, &split);
         if (cost < best) {
             best = cost;
             best_bn = bn;
@@ -245,8 +245,8 @@ static int choose_split(const build_ctx *ctx, int begin, int end, int depth, con
     }
     if (best == INFINITY)
         return n <= MAX_LEAF ? -1 : median_split(ctx, begin, end, widest_axis(cent[0], cent[1]));
-    double area = half_area(bounds[0], bounds[1]);
-    double split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
+    real area = half_area(bounds[0], bounds[1]);
+    real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
     if (n <= MAX_LEAF && !(split_cost < n))
         return -1;
     return partition_bins(ctx, begin, end, &best_bn, best_split);
@@ -356,7 +356,7 @@ typedef struct slab_ray {
     int neg[3];
 } slab_ray;
 
-static double inverse(double d) { return d != 0.0 ? 1.0 / d : copysign(INFINITY, d); }
+static real inverse(real d) { return d != 0.0 ? 1.0 / d : copysign(INFINITY, d); }
 
 static slab_ray slab_make(const ray *r)
 {
@@ -370,9 +370,9 @@ static slab_ray slab_make(const ray *r)
 }
 
 /* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
-static void slab(double lo, double hi, double o, double inv, int neg, double *tn, double *tf)
+static void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
 {
-    double t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
+    real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
     /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
      * (a box wholly to one side of a parallel ray) that would be NaN and
      * the box would never be culled. */
@@ -385,9 +385,9 @@ static void slab(double lo, double hi, double o, double inv, int neg, double *tn
 
 /* Whether the ray meets the node's box within [tmin, tmax]; *enter is the
  * entry distance. */
-static int node_hit(const bvh_node *nd, const slab_ray *s, double tmin, double tmax, double *enter)
+static int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
 {
-    double tn = tmin, tf = tmax;
+    real tn = tmin, tf = tmax;
     slab(nd->lo.x, nd->hi.x, s->o.x, s->inv.x, s->neg[0], &tn, &tf);
     slab(nd->lo.y, nd->hi.y, s->o.y, s->inv.y, s->neg[1], &tn, &tf);
     slab(nd->lo.z, nd->hi.z, s->o.z, s->inv.z, s->neg[2], &tn, &tf);
@@ -422,7 +422,7 @@ static void nearest_test(nearest *ns, const rf_prim *prims, int index)
 
 typedef struct stack_entry {
     int node;
-    double enter;
+    real enter;
 } stack_entry;
 
 /* Among the children of an inner node that the ray meets, goes to the
@@ -431,7 +431,7 @@ static int descend(const bvh *b, int node, const slab_ray *s, nearest *ns, stack
                    int *sp)
 {
     int a = b->nodes[node].first, c = a + 1;
-    double ta, tc;
+    real ta, tc;
     int ha = node_hit(&b->nodes[a], s, ns->rr.tmin, ns->rr.tmax, &ta);
     int hc = node_hit(&b->nodes[c], s, ns->rr.tmin, ns->rr.tmax, &tc);
     if (ns->stats)
@@ -450,7 +450,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
-    double enter;
+    real enter;
     slab_ray s = slab_make(&ns->rr);
     if (ns->stats)
         ns->stats->nodes_visited++;
@@ -523,7 +523,7 @@ static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
     stack[sp++] = 0;
     while (sp > 0) {
         const bvh_node *nd = &b->nodes[stack[--sp]];
-        double enter;
+        real enter;
         if (stats)
             stats->nodes_visited++;
         if (!node_hit(nd, &s, r->tmin, r->tmax, &enter))

@@ -1,27 +1,22 @@
 /*
  * camera.c - see camera.h.
  */
-#include <math.h>
 #include "camera.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-ray camera_ray(const rf_camera *cam, int width, int height, double x, double y)
+ray camera_ray(const rf_camera *cam, int width, int height, real x, real y)
 {
-    double aspect = (double)height / (double)width;
-    double sx = 2.0 * x / width - 1.0;   /* -1 at the left edge, +1 at the right */
-    double sy = 1.0 - 2.0 * y / height;  /* +1 at the top, -1 at the bottom */
+    real aspect = (real)height / (real)width;
+    real sx = 2.0 * x / width - 1.0;   /* -1 at the left edge, +1 at the right */
+    real sy = 1.0 - 2.0 * y / height;  /* +1 at the top, -1 at the bottom */
     ray r;
     r.tmin = 0.0;
     r.tmax = HUGE_VAL;
     if (cam->kind == CAMERA_ORTHOGRAPHIC) {
-        double half = 0.5 * cam->width;
+        real half = 0.5 * cam->width;
         r.origin = vec_add(cam->eye, vec_add(vec_scale(cam->right, sx * half), vec_scale(cam->true_up, sy * half * aspect)));
         r.dir = cam->forward;
     } else {
-        double half = tan(0.5 * cam->fov * (M_PI / 180.0));
+        real half = tan(0.5 * cam->fov * (REAL_PI / 180));
         vec3 d = vec_add(cam->forward, vec_add(vec_scale(cam->right, sx * half), vec_scale(cam->true_up, sy * half * aspect)));
         r.origin = cam->eye;
         r.dir = vec_normalize(d);

@@ -11,7 +11,7 @@
 #include "intersect.h"
 #include "xform.h"
 
-static void hit_set(hit *h, double t, vec3 p, vec3 n, vec3 dir)
+static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
 {
     h->t = t;
     h->point = p;
@@ -21,9 +21,9 @@ static void hit_set(hit *h, double t, vec3 p, vec3 n, vec3 dir)
     h->entering = vec_dot(dir, n) < 0.0;
 }
 
-static int in_interval(const ray *r, double t) { return t > r->tmin && t < r->tmax; }
+static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
 
-static vec3 vec_with(vec3 v, int axis, double value)
+static vec3 vec_with(vec3 v, int axis, real value)
 {
     if (axis == 0)
         v.x = value;
@@ -36,19 +36,19 @@ static vec3 vec_with(vec3 v, int axis, double value)
 
 /* Plain comparisons rather than fmax: these run per ray and fmax is a
  * library call on x86-64; the inputs are never NaN. */
-static double max_abs(vec3 v)
+static real max_abs(vec3 v)
 {
-    double x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
-    double m = x > y ? x : y;
+    real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
+    real m = x > y ? x : y;
     return m > z ? m : z;
 }
 
 /* |v|: sqrt of the dot product when that neither overflowed nor lost
  * precision to underflow, else vec_length's scaled form. */
-static double length_fast(vec3 v)
+static real length_fast(vec3 v)
 {
-    double d = vec_dot(v, v);
-    return d >= DBL_MIN && d <= DBL_MAX ? sqrt(d) : vec_length(v);
+    real d = vec_dot(v, v);
+    return d >= REAL_MIN && d <= REAL_MAX ? sqrt(d) : vec_length(v);
 }
 
 /*
@@ -66,27 +66,27 @@ static double length_fast(vec3 v)
  * Writes the roots in increasing order; returns their number (1 when the
  * discriminant is exactly 0, |l| = R: a graze).
  */
-static int sphere_roots(vec3 f, vec3 d, double radius, double t[2])
+static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
 {
-    double a = vec_dot(d, d);
+    real a = vec_dot(d, d);
     if (!(a > 0.0))
         return 0;
-    double b = vec_dot(f, d);
-    double ll = length_fast(vec_madd(f, d, -b / a));
+    real b = vec_dot(f, d);
+    real ll = length_fast(vec_madd(f, d, -b / a));
     /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
      * underflows to -0 for a sphere below about 1e-154 and would pass for a
      * graze.  The square root is taken factor by factor for the same reason. */
     if (!(ll <= radius))
         return 0;
-    double root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
+    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
     if (root == 0.0) {
         t[0] = -b / a;
         return 1;
     }
-    double lf = length_fast(f);
-    double c = (lf - radius) * (lf + radius);
-    double q = -(b + copysign(root, b));
-    double t0 = c / q, t1 = q / a;
+    real lf = length_fast(f);
+    real c = (lf - radius) * (lf + radius);
+    real q = -(b + copysign(root, b));
+    real t0 = c / q, t1 = q / a;
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;
@@ -100,17 +100,17 @@ static int sphere_roots(vec3 f, vec3 d, double radius, double t[2])
  * new solve nearest to the crossing (the lower one for the entry, the
  * upper one for the exit).  Returns the refined t and sets *point.
  */
-static double sphere_refine(vec3 center, double radius, const ray *r, double t, int upper,
+static real sphere_refine(vec3 center, real radius, const ray *r, real t, int upper,
                             vec3 *point)
 {
     vec3 o2 = ray_at(r, t);
-    double t2[2];
+    real t2[2];
     int n = sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
     if (n == 0) {
         *point = o2;
         return t;
     }
-    double step = upper ? t2[n - 1] : t2[0];
+    real step = upper ? t2[n - 1] : t2[0];
     *point = vec_madd(o2, r->dir, step);
     return t + step;
 }
@@ -118,22 +118,22 @@ static double sphere_refine(vec3 center, double radius, const ray *r, double t, 
 /* Whether a root, before refinement, could still land in (tmin, tmax).  The
  * refinement moves t by the rounding error of o + t d over |d|, a few ulps
  * of |o|/|d| + |t|; the slack is 1e-9 of that, a million times wider. */
-static int sphere_root_possible(const ray *r, double t)
+static int sphere_root_possible(const ray *r, real t)
 {
-    double slack = 1e-9 * (fabs(t) + max_abs(r->origin) / max_abs(r->dir));
+    real slack = 1e-9 * (fabs(t) + max_abs(r->origin) / max_abs(r->dir));
     return t + slack > r->tmin && t - slack < r->tmax;
 }
 
-static int sphere_hits(vec3 center, double radius, const ray *r, hit *out, int max)
+static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max)
 {
     vec3 f = vec_sub(r->origin, center);
-    double t[2];
+    real t[2];
     int roots = sphere_roots(f, r->dir, radius, t), found = 0;
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
     for (int i = 0; i < roots && found < max; i++) {
-        double ti = t[i];
+        real ti = t[i];
         vec3 p;
         if (refine) {
             if (!sphere_root_possible(r, ti))
@@ -154,9 +154,9 @@ static int sphere_hits(vec3 center, double radius, const ray *r, hit *out, int m
  * The point is projected back onto the plane, so its error is relative to
  * |p| and |p0|, not to the ray origin (a camera far away).
  */
-static int plane_point(vec3 p0, vec3 n, const ray *r, double *t, vec3 *p)
+static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
 {
-    double dn = vec_dot(n, r->dir);
+    real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
         return 0;
     *t = vec_dot(n, vec_sub(p0, r->origin)) / dn;
@@ -169,7 +169,7 @@ static int plane_point(vec3 p0, vec3 n, const ray *r, double *t, vec3 *p)
 
 static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out)
 {
-    double t;
+    real t;
     vec3 p;
     if (!plane_point(p0, n, r, &t, &p))
         return 0;
@@ -178,9 +178,9 @@ static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out)
 }
 
 /* Disk: the plane hit, kept when within the radius (boundary included). */
-static int disk_hits(vec3 center, vec3 n, double radius, const ray *r, hit *out)
+static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
 {
-    double t;
+    real t;
     vec3 p;
     if (!plane_point(center, n, r, &t, &p))
         return 0;
@@ -198,22 +198,22 @@ static int disk_hits(vec3 center, vec3 n, double radius, const ray *r, hit *out)
  * non-zero one is divided by, never multiplied by an infinite inverse.
  * Ties between axes go to the lower axis.
  */
-static int box_slabs(vec3 lo, vec3 hi, const ray *r, double tt[2], int axis[2])
+static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
 {
     tt[0] = -INFINITY;
     tt[1] = INFINITY;
     axis[0] = axis[1] = -1;
     for (int k = 0; k < 3; k++) {
-        double o = vec_component(r->origin, k), d = vec_component(r->dir, k);
-        double l = vec_component(lo, k), h = vec_component(hi, k);
+        real o = vec_component(r->origin, k), d = vec_component(r->dir, k);
+        real l = vec_component(lo, k), h = vec_component(hi, k);
         if (d == 0.0) {
             if (o < l || o > h)
                 return 0;
             continue;
         }
-        double t0 = (l - o) / d, t1 = (h - o) / d;
+        real t0 = (l - o) / d, t1 = (h - o) / d;
         if (t0 > t1) {
-            double s = t0;
+            real s = t0;
             t0 = t1;
             t1 = s;
         }
@@ -231,7 +231,7 @@ static int box_slabs(vec3 lo, vec3 hi, const ray *r, double tt[2], int axis[2])
 
 /* The hit on the face of axis k crossed at t: entry (exit 0) or exit
  * (exit 1).  The point's k coordinate is set to the face exactly. */
-static void box_face_hit(vec3 lo, vec3 hi, const ray *r, double t, int k, int exit, hit *h)
+static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit, hit *h)
 {
     int positive = (vec_component(r->dir, k) > 0.0) == exit; /* the hi face */
     vec3 p = vec_with(ray_at(r, t), k, vec_component(positive ? hi : lo, k));
@@ -241,7 +241,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, double t, int k, int ex
 
 static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max)
 {
-    double tt[2];
+    real tt[2];
     int axis[2], found = 0;
     if (!box_slabs(lo, hi, r, tt, axis))
         return 0;
@@ -254,7 +254,7 @@ static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max)
 
 static int max_abs_axis(vec3 d)
 {
-    double x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
+    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
     return x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
 }
 
@@ -270,18 +270,18 @@ static int max_abs_axis(vec3 d)
  * e(Q,P) = -e(P,Q) exactly in floating point, so two triangles sharing an
  * edge see opposite signs there: no ray slips between them (a 0 counts as
  * inside for both).  The paper's fallback for a 0 edge function in single
- * precision is to recompute it in double; here everything is double already.
+ * precision is to recompute it in double; here the working type is double or wider.
  * This relies on no fused multiply-add contraction, which GCC leaves off in
  * ISO C mode (-std=c99).
  */
 typedef struct tri_bary {
-    double t, b[3];
+    real t, b[3];
 } tri_bary;
 
 static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    double dz = vec_component(r->dir, kz);
+    real dz = vec_component(r->dir, kz);
     if (dz < 0.0) {
         int s = kx;
         kx = ky;
@@ -289,22 +289,22 @@ static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
     }
     if (dz == 0.0)
         return 0;
-    double sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
-    double px[3], py[3], pz[3];
+    real sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
+    real px[3], py[3], pz[3];
     for (int i = 0; i < 3; i++) {
         vec3 a = vec_sub(v[i], r->origin);
         pz[i] = vec_component(a, kz);
         px[i] = vec_component(a, kx) - sx * pz[i];
         py[i] = vec_component(a, ky) - sy * pz[i];
     }
-    double e[3];
+    real e[3];
     for (int i = 0; i < 3; i++) {
         int p = (i + 1) % 3, q = (i + 2) % 3;
         e[i] = px[q] * py[p] - py[q] * px[p];
     }
     if ((e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0) && (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0))
         return 0;
-    double det = e[0] + e[1] + e[2];
+    real det = e[0] + e[1] + e[2];
     if (det == 0.0)
         return 0;
     /* t = (sum of e_i times the vertex's z distance) / det, z scaled by 1/dz. */
@@ -398,7 +398,7 @@ static int nearest(int found, ray *r, const hit *h)
     return found;
 }
 
-int isect_sphere(vec3 center, double radius, ray *r, hit *h)
+int isect_sphere(vec3 center, real radius, ray *r, hit *h)
 {
     return nearest(sphere_hits(center, radius, r, h, 1), r, h);
 }
@@ -413,7 +413,7 @@ int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h)
     return nearest(triangle_hits(p, normals, r, h), r, h);
 }
 
-int isect_disk(vec3 center, vec3 normal, double radius, ray *r, hit *h)
+int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)
 {
     return nearest(disk_hits(center, normal, radius, r, h), r, h);
 }
@@ -435,7 +435,7 @@ static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
         break;
     case PRIM_DISK: {
         vec3 n = vec_normalize(p->u.disk.normal);
-        double rad = p->u.disk.radius;
+        real rad = p->u.disk.radius;
         c = p->u.disk.center;
         e = vec_make(rad * sqrt(fmax(0.0, 1.0 - n.x * n.x)), rad * sqrt(fmax(0.0, 1.0 - n.y * n.y)),
                      rad * sqrt(fmax(0.0, 1.0 - n.z * n.z)));
@@ -480,7 +480,7 @@ int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
-static double local_magnitude(const rf_prim *p)
+static real local_magnitude(const rf_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -500,12 +500,12 @@ static double local_magnitude(const rf_prim *p)
 
 /* For a local frame: |L x + T|_max <= |L|_inf |x|_max + |T|_max, with
  * |L|_inf the largest row sum of absolute values. */
-double isect_prim_magnitude(const rf_prim *p)
+real isect_prim_magnitude(const rf_prim *p)
 {
-    double m = local_magnitude(p);
+    real m = local_magnitude(p);
     if (!p->has_xform)
         return m;
-    double norm = 0.0, shift = 0.0;
+    real norm = 0.0, shift = 0.0;
     for (int i = 0; i < 3; i++) {
         const double *row = p->to_world.m[i];
         norm = fmax(norm, fabs(row[0]) + fabs(row[1]) + fabs(row[2]));
@@ -516,13 +516,13 @@ double isect_prim_magnitude(const rf_prim *p)
 
 /* The origin moved off the surface to the side of toward: +n when
  * toward . n >= 0, else -n. */
-static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, double magnitude)
+static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real magnitude)
 {
-    double offset = SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
+    real offset = SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
     return vec_madd(point, normal, vec_dot(toward, normal) >= 0.0 ? offset : -offset);
 }
 
-static ray spawn(vec3 point, vec3 normal, vec3 dir, double magnitude)
+static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude)
 {
     ray r;
     r.origin = spawn_origin(point, normal, dir, magnitude);
@@ -532,12 +532,12 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, double magnitude)
     return r;
 }
 
-static ray spawn_to(vec3 point, vec3 normal, vec3 target, double magnitude)
+static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
 {
     ray r;
     r.origin = spawn_origin(point, normal, vec_sub(target, point), magnitude);
     vec3 to = vec_sub(target, r.origin);
-    double dist = vec_length(to);
+    real dist = vec_length(to);
     r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
     r.tmin = 0.0;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);

@@ -39,11 +39,11 @@
 #include "ray.h"
 #include "scene.h"
 
-int isect_sphere(vec3 center, double radius, ray *r, hit *h);
+int isect_sphere(vec3 center, real radius, ray *r, hit *h);
 int isect_plane(vec3 point, vec3 normal, ray *r, hit *h);
 /* p: the three vertices; normals: three unit vertex normals or NULL. */
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h);
-int isect_disk(vec3 center, vec3 normal, double radius, ray *r, hit *h);
+int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h);
 int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
@@ -64,11 +64,11 @@ int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi);
 /* The largest coordinate magnitude a hit point of p is computed from (its
  * vertices, centre plus radius, plane point...): the hit point's rounding
  * error is relative to this, not to the point itself. */
-double isect_prim_magnitude(const rf_prim *p);
+real isect_prim_magnitude(const rf_prim *p);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
- * Self-Intersection", Ray Tracing Gems I, ch. 6, done in double): the origin
+ * Self-Intersection", Ray Tracing Gems I, ch. 6, in the working precision): the origin
  * is pushed off the surface along the geometric normal, to the side the ray
  * goes, by SPAWN_REL * m + SPAWN_ABS where m is the largest coordinate
  * magnitude involved; then tmin = 0 and no epsilon is needed anywhere else.

@@ -46,9 +46,9 @@ void light_concentric(double s, double t, double *x, double *y)
 
 void light_frame(vec3 n, vec3 *t1, vec3 *t2)
 {
-    double sign = copysign(1.0, n.z);
-    double a = -1.0 / (sign + n.z);
-    double b = n.x * n.y * a;
+    real sign = copysign((real)1, n.z);
+    real a = -1 / (sign + n.z);
+    real b = n.x * n.y * a;
     *t1 = vec_make(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
     *t2 = vec_make(b, sign + n.y * n.y * a, -n.y);
 }
@@ -58,6 +58,6 @@ vec3 light_point(const rf_light *light, vec3 t1, vec3 t2, double s, double t)
     if (light->kind == LIGHT_RECTANGLE)
         return vec_add(light->position, vec_add(vec_scale(light->edge_u, s), vec_scale(light->edge_v, t)));
     double x, y;
-    light_concentric(s, t, &x, &y);
+    light_concentric(s, t, &x, &y);   /* the sample's place on the unit disk: model data, in double */
     return vec_add(light->position, vec_add(vec_scale(t1, x * light->radius), vec_scale(t2, y * light->radius)));
 }

@@ -11,11 +11,11 @@
 typedef struct ray {
     vec3 origin;
     vec3 dir;          /* unit length for rays the tracer makes */
-    double tmin, tmax; /* open interval of accepted hits */
+    real tmin, tmax;   /* open interval of accepted hits */
 } ray;
 
 typedef struct hit {
-    double t;          /* ray parameter of the hit */
+    real t;            /* ray parameter of the hit */
     vec3 point;        /* origin + t*dir, as computed by the primitive */
     vec3 normal;       /* geometric unit normal: outward for solids (sphere,
                           box), the declared side for sheets (plane, disk,
@@ -25,6 +25,6 @@ typedef struct hit {
     int entering;      /* 1 when dir . normal < 0 (the ray meets the front side) */
 } hit;
 
-static inline vec3 ray_at(const ray *r, double t) { return vec_madd(r->origin, r->dir, t); }
+static inline vec3 ray_at(const ray *r, real t) { return vec_madd(r->origin, r->dir, t); }
 
 #endif

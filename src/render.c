@@ -26,7 +26,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
     rgb sum = vec_splat(0);
     for (int b = 0; b < k; b++) {
         for (int a = 0; a < k; a++) {
-            double x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
+            real x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
             ray r = camera_ray(&t->scene->camera, width, height, x, y);
             st->camera_rays++;
             st->tree_rays = 0;
@@ -34,7 +34,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
             sum = vec_add(sum, c);
         }
     }
-    return vec_scale(sum, 1.0 / ((double)k * k));
+    return vec_scale(sum, 1.0 / ((real)k * k));
 }
 
 static void record_setup(const tracer *t, render_stats *stats)

@@ -26,8 +26,8 @@ typedef struct render_stats {
     int shadows, specular, reflection, refraction; /* passes that ran (1) or were left out (0) */
     int width, height, samples, max_depth;
     int overflow_x, overflow_y;  /* the pixel whose ray tree passed the budget */
-    double seconds;        /* wall time of the traversal and tracing */
-    double build_seconds;  /* of the acceleration structure */
+    double seconds;      /* wall time of the traversal and tracing */
+    double build_seconds; /* of the acceleration structure */
 } render_stats;
 
 /*

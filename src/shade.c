@@ -25,9 +25,9 @@ static rgb clamp_finite(rgb c)
     return vec_min(c, vec_splat(DBL_MAX));
 }
 
-rgb shade_falloff(rgb power, double d, double d0, rf_falloff falloff)
+rgb shade_falloff(rgb power, real d, real d0, rf_falloff falloff)
 {
-    double s = d + d0;
+    real s = d + d0;
     if (falloff == FALLOFF_NONE)
         return power;
     /* Defensive: the validator (d0 >= 0) and the tracer (hits leave the
@@ -55,9 +55,9 @@ vec3 shade_face_forward(vec3 n, vec3 v)
 
 /* `c > 0` is false for NaN too, so a degenerate L (the zero vector that
  * vec_normalize returns for a light at the point) contributes nothing. */
-double shade_lambert(vec3 n, vec3 l)
+real shade_lambert(vec3 n, vec3 l)
 {
-    double c = vec_dot(n, l);
+    real c = vec_dot(n, l);
     if (!(c > 0.0))
         return 0.0;
     return c < 1.0 ? c : 1.0;
@@ -81,10 +81,10 @@ vec3 shade_mirror(vec3 d, vec3 n)
     return vec_madd(d, n, -2.0 * vec_dot(n, d));
 }
 
-double shade_phong_lobe(vec3 v, vec3 r, double shininess)
+real shade_phong_lobe(vec3 v, vec3 r, real shininess)
 {
     assert(shininess >= 0.0);
-    double c = vec_dot(v, r);
+    real c = vec_dot(v, r);
     if (!(c > 0.0))
         return 0.0;
     /* A cosine cannot exceed 1; V.R = 1 + ulp from rounding would make the
@@ -93,11 +93,11 @@ double shade_phong_lobe(vec3 v, vec3 r, double shininess)
         return 1.0;
     /* pow, not exp(n log c): exp/log lose ~n*ulp relative for large n.
      * Subnormal results (c^n < 2.2e-308) are invisible and slow: flush. */
-    double p = pow(c, shininess);
+    real p = pow(c, shininess);
     return p >= DBL_MIN ? p : 0.0;
 }
 
-rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, double shininess)
+rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, real shininess)
 {
     if (!(vec_dot(n, l) > 0.0))
         return vec_splat(0.0);
@@ -105,7 +105,7 @@ rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, double shinine
     return vec_scale(vec_mul(ks, intensity), shade_phong_lobe(v, r, shininess));
 }
 
-shade_terms shade_direct(rgb kd, rgb ks, double shininess, rgb intensity, vec3 n, vec3 l,
+shade_terms shade_direct(rgb kd, rgb ks, real shininess, rgb intensity, vec3 n, vec3 l,
                          vec3 v)
 {
     shade_terms s;
@@ -115,18 +115,18 @@ shade_terms shade_direct(rgb kd, rgb ks, double shininess, rgb intensity, vec3 n
 }
 
 /* Error-free product (fma rounds once): a*b == result + *err exactly. */
-static double two_prod(double a, double b, double *err)
+static real two_prod(real a, real b, real *err)
 {
-    double p = a * b;
+    real p = a * b;
     *err = fma(a, b, -p);
     return p;
 }
 
 /* Error-free sum (Knuth's TwoSum, no ordering needed): a+b == result + *err. */
-static double two_sum(double a, double b, double *err)
+static real two_sum(real a, real b, real *err)
 {
-    double s = a + b;
-    double bb = s - a;
+    real s = a + b;
+    real bb = s - a;
     *err = (a - (s - bb)) + (b - bb);
     return s;
 }
@@ -134,7 +134,7 @@ static double two_sum(double a, double b, double *err)
 /* Scales n1, n2 by one power of two so that the larger lies in [0.5, 1):
  * exact, so it changes no sign or ratio, and the squares below cannot
  * overflow for any finite index. */
-static void scale_indices(double n1, double n2, double *s1, double *s2)
+static void scale_indices(real n1, real n2, real *s1, real *s2)
 {
     int e;
     (void)frexp(fmax(n1, n2), &e);
@@ -152,25 +152,25 @@ static void scale_indices(double n1, double n2, double *s1, double *s2)
  * 2^-52 for the textbook 1 - eta^2 (1 - c^2).  This makes the sign exact
  * for every c a whole ulp away from the critical cosine.
  */
-static double refract_discriminant(double n1, double n2, double c)
+static real refract_discriminant(real n1, real n2, real c)
 {
-    double e_p, e_pp, e_a, e_b, e_1, e_2;
-    double p = two_prod(n1, c, &e_p);      /* n1 c  = p + e_p */
-    double pp = two_prod(p, p, &e_pp);     /* p^2   = pp + e_pp */
-    double a = two_prod(n1, n1, &e_a);     /* n1^2  = a + e_a */
-    double b = two_prod(n2, n2, &e_b);     /* n2^2  = b + e_b */
-    double h = two_sum(pp, -a, &e_1);
+    real e_p, e_pp, e_a, e_b, e_1, e_2;
+    real p = two_prod(n1, c, &e_p);      /* n1 c  = p + e_p */
+    real pp = two_prod(p, p, &e_pp);     /* p^2   = pp + e_pp */
+    real a = two_prod(n1, n1, &e_a);     /* n1^2  = a + e_a */
+    real b = two_prod(n2, n2, &e_b);     /* n2^2  = b + e_b */
+    real h = two_sum(pp, -a, &e_1);
     h = two_sum(h, b, &e_2);
     /* (p + e_p)^2 = p^2 + 2 p e_p + e_p^2 */
-    double tail = e_pp + 2.0 * p * e_p + e_p * e_p - e_a + e_b + e_1 + e_2;
+    real tail = e_pp + 2.0 * p * e_p + e_p * e_p - e_a + e_b + e_1 + e_2;
     return h + tail;
 }
 
 /* cos th1 = -N.D, clamped: a hair outside [0, 1] from rounding is grazing
  * or normal incidence, not an error. */
-static double incidence_cos(vec3 d, vec3 n)
+static real incidence_cos(vec3 d, vec3 n)
 {
-    double c = -vec_dot(n, d);
+    real c = -vec_dot(n, d);
     return c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
 }
 
@@ -184,7 +184,7 @@ static double incidence_cos(vec3 d, vec3 n)
  * grazing incidence (sin th1 -> 1), where eta d + (eta c - cos th2) n
  * cancels.
  */
-int shade_refract(vec3 d, vec3 n, double n1, double n2, vec3 *t)
+int shade_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
 {
     assert(n1 > 0.0 && n2 > 0.0 && isfinite(n1) && isfinite(n2));
     /* Equal indices: no boundary at all.  The general formula would return
@@ -194,15 +194,15 @@ int shade_refract(vec3 d, vec3 n, double n1, double n2, vec3 *t)
         *t = d;
         return 1;
     }
-    double s1, s2;
+    real s1, s2;
     scale_indices(n1, n2, &s1, &s2);
-    double c = incidence_cos(d, n);
-    double k = refract_discriminant(s1, s2, c);
+    real c = incidence_cos(d, n);
+    real k = refract_discriminant(s1, s2, c);
     if (!(k >= 0.0)) {
         *t = shade_mirror(d, n);
         return 0;
     }
-    double cos_t = fmin(sqrt(k) / s2, 1.0);
+    real cos_t = fmin(sqrt(k) / s2, 1.0);
     vec3 along = vec_madd(d, n, c);
     *t = vec_normalize(vec_madd(vec_scale(along, n1 / n2), n, -cos_t));
     return 1;
@@ -211,19 +211,19 @@ int shade_refract(vec3 d, vec3 n, double n1, double n2, vec3 *t)
 /*
  * sqrt((n1 - n2)(n1 + n2)) / n1 is within a few ulps of the critical cosine
  * (each factor has one rounding; n1 - n2 is exact when n2 >= n1/2); the two
- * loops then step to the least double whose discriminant is >= 0, using the
+ * loops then step to the least value whose discriminant is >= 0, using the
  * same test as shade_refract, so the two agree to the bit.  The discriminant
  * increases with c, and the estimate is a few ulps off: the loops run a few
  * times.
  */
-double shade_critical_angle_cos(double n1, double n2)
+real shade_critical_angle_cos(real n1, real n2)
 {
     assert(n1 > 0.0 && n2 > 0.0 && isfinite(n1) && isfinite(n2));
     if (n1 <= n2)
         return 0.0;
-    double s1, s2;
+    real s1, s2;
     scale_indices(n1, n2, &s1, &s2);
-    double c = fmin(sqrt((s1 - s2) * (s1 + s2)) / s1, 1.0);
+    real c = fmin(sqrt((s1 - s2) * (s1 + s2)) / s1, 1.0);
     while (c < 1.0 && !(refract_discriminant(s1, s2, c) >= 0.0))
         c = nextafter(c, 2.0);
     while (c > 0.0 && refract_discriminant(s1, s2, nextafter(c, 0.0)) >= 0.0)
@@ -233,26 +233,26 @@ double shade_critical_angle_cos(double n1, double n2)
 
 /* Two products rather than front + t (back - front): the endpoints are then
  * exact (1 * front + 0 * back, 0 * front + 1 * back). */
-rgb shade_transmit_blend(rgb front, rgb back, double t)
+rgb shade_transmit_blend(rgb front, rgb back, real t)
 {
     assert(t >= 0.0 && t <= 1.0);
     return vec_add(vec_scale(front, 1.0 - t), vec_scale(back, t));
 }
 
-rgb shade_local(rgb body, rgb highlight, double t)
+rgb shade_local(rgb body, rgb highlight, real t)
 {
     assert(t >= 0.0 && t <= 1.0);
     return vec_madd(highlight, body, 1.0 - t);
 }
 
-rgb shade_combine(rgb body, rgb highlight, rgb ks, double t, rgb mirrored, rgb transmitted)
+rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
 {
     rgb c = shade_local(body, highlight, t);
     c = vec_add(c, vec_mul(ks, mirrored));
     return vec_madd(c, transmitted, t);
 }
 
-double shade_shadow_transmission(double carried, double t_occluder)
+real shade_shadow_transmission(real carried, real t_occluder)
 {
     assert(carried >= 0.0 && carried <= 1.0);
     assert(t_occluder >= 0.0 && t_occluder <= 1.0);

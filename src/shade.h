@@ -35,7 +35,7 @@ rgb shade_ambient(rgb kd, rgb ia);
  * > 0 (or is NaN) the power is returned unchanged, and a result too large for
  * a double is clamped to DBL_MAX, so the result is never Inf or NaN.
  */
-rgb shade_falloff(rgb power, double d, double d0, rf_falloff falloff);
+rgb shade_falloff(rgb power, real d, real d0, rf_falloff falloff);
 
 /* [SHADE-SAMPLE-1] Power of one of `samples` >= 1 point sources of a
  * distributed light (slides 3, 5): E/samples. */
@@ -46,7 +46,7 @@ vec3 shade_face_forward(vec3 n, vec3 v);
 
 /* [SHADE-LAMBERT-1,2] max(0, N.L) clamped to [0, 1]: exactly 0 at and below
  * the horizon (slide 13).  A NaN dot product gives 0. */
-double shade_lambert(vec3 n, vec3 l);
+real shade_lambert(vec3 n, vec3 l);
 
 /* [SHADE-DIFFUSE-1] Kd * I * max(0, N.L) (slides 17-19, k_d not slide 19's k_s). */
 rgb shade_diffuse(rgb kd, rgb intensity, vec3 n, vec3 l);
@@ -65,11 +65,11 @@ vec3 shade_mirror(vec3 d, vec3 n);
  * front and 0 behind); V.R >= 1 (rounding) gives exactly 1; results below
  * DBL_MIN are flushed to 0, so no subnormal leaves here.  shininess >= 0.
  */
-double shade_phong_lobe(vec3 v, vec3 r, double shininess);
+real shade_phong_lobe(vec3 v, vec3 r, real shininess);
 
 /* [SHADE-SPEC-1] Ks * I * lobe(V, R) with R = shade_reflect_about(l, n);
  * exactly 0 when N.L <= 0 (slide 47). */
-rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, double shininess);
+rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, real shininess);
 
 /*
  * [SHADE-DIRECT-1] One light's term of the comprehensive formula (slides
@@ -77,7 +77,7 @@ rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, double shinine
  * highlight = shade_specular.  `intensity` is what reaches the point: the
  * falloff times the shadow transmission S.  Both parts are 0 when N.L <= 0.
  */
-shade_terms shade_direct(rgb kd, rgb ks, double shininess, rgb intensity, vec3 n, vec3 l,
+shade_terms shade_direct(rgb kd, rgb ks, real shininess, rgb intensity, vec3 n, vec3 l,
                          vec3 v);
 
 /*
@@ -87,26 +87,26 @@ shade_terms shade_direct(rgb kd, rgb ks, double shininess, rgb intensity, vec3 n
  * side, n2 on the far side, both > 0 and finite.  Returns 1 and the unit
  * transmitted direction in *t; returns 0 on total internal reflection and
  * puts the mirror direction shade_mirror(d, n) in *t.  The TIR decision is
- * the sign of (n1 cos th1)^2 - (n1^2 - n2^2) evaluated in double-double, so
+ * the sign of (n1 cos th1)^2 - (n1^2 - n2^2) evaluated in twice the working precision (double-double), so
  * cos th1 >= shade_critical_angle_cos(n1, n2) refracts and anything smaller
  * reflects, to the last bit.  n1 == n2 returns 1 with *t = d bit for bit.
  */
-int shade_refract(vec3 d, vec3 n, double n1, double n2, vec3 *t);
+int shade_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t);
 
 /*
- * [SHADE-CRIT-1] The critical cosine rounded up: the least double c in
+ * [SHADE-CRIT-1] The critical cosine rounded up: the least real c (the working type) in
  * [0, 1] for which shade_refract refracts a ray with cos th1 = c.  0 when
  * n1 <= n2 (no total internal reflection is possible).
  */
-double shade_critical_angle_cos(double n1, double n2);
+real shade_critical_angle_cos(real n1, real n2);
 
 /* [SHADE-BLEND-1] (1 - t) * front + t * back (slide 37 with t = transparency:
  * 0 opaque, 1 clear).  Exactly front at t = 0 and exactly back at t = 1. */
-rgb shade_transmit_blend(rgb front, rgb back, double t);
+rgb shade_transmit_blend(rgb front, rgb back, real t);
 
 /* [SHADE-LOCAL-1] The local colour (1 - t) * body + highlight: what a hit
  * shows without secondary rays, and what is kept past max_depth. */
-rgb shade_local(rgb body, rgb highlight, double t);
+rgb shade_local(rgb body, rgb highlight, real t);
 
 /*
  * [SHADE-HIT-1] The whole per-hit colour of the model:
@@ -116,11 +116,11 @@ rgb shade_local(rgb body, rgb highlight, double t);
  * internal reflection).  Pass zero for a ray not traced (past max_depth,
  * Ks = 0, t = 0): the result is then exactly shade_local.
  */
-rgb shade_combine(rgb body, rgb highlight, rgb ks, double t, rgb mirrored, rgb transmitted);
+rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted);
 
 /* [SHADE-SHADOW-1] Shadow transmission product rule (slide 47): what is left
  * of `carried` after crossing one more surface of transparency t_occluder in
  * [0, 1].  Start from 1; an opaque crossing gives 0 and the rest stays 0. */
-double shade_shadow_transmission(double carried, double t_occluder);
+real shade_shadow_transmission(real carried, real t_occluder);
 
 #endif

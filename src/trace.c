@@ -74,7 +74,7 @@ void tracer_free(tracer *t)
 
 typedef struct shadow_walk {
     const rf_scene *scene;
-    double carried;
+    real carried;
 } shadow_walk;
 
 /* Slide 47: every surface on the way lets through its t (opaque: 0). */
@@ -87,7 +87,7 @@ static int shadow_crossing(void *ctx, const hit *h)
 }
 
 /* The fraction of a light that reaches the surface along r. */
-static double shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
+static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
 {
     shadow_walk w = {t->scene, 1.0};
     st->shadow_rays++;
@@ -105,7 +105,7 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
                        direct_sum *sum, trace_stats *st)
 {
     vec3 l;
-    double d = HUGE_VAL;
+    real d = HUGE_VAL;
     st->light_samples++;
     if (light->kind == LIGHT_DISTANT) {
         l = vec_neg(light->direction);
@@ -123,7 +123,7 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit(s->prim, s->h, l) : ray_spawn_hit_to(s->prim, s->h, pos);
-        double through = shadow_transmission(t, &r, st);
+        real through = shadow_transmission(t, &r, st);
         if (through == 0)
             return;
         intensity = vec_scale(intensity, through);
@@ -148,7 +148,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     for (int j = 0; j < setup->samples; j++) {
         double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
         double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
-        double a, b;
+        double a, b;   /* the sample's place in the light's unit square: model data, double */
         light_cell_point(setup->grid, j, u1, u2, &a, &b);
         add_source(t, s, light, light_point(light, setup->t1, setup->t2, a, b), power, sum, st);
     }
@@ -167,12 +167,12 @@ static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, 
     return sum;
 }
 
-static double top_ior(const medium_stack *media)
+static real top_ior(const medium_stack *media)
 {
     return media->count > 0 ? media->ior[media->count - 1] : 1.0;
 }
 
-static void media_push(medium_stack *media, int solid, double ior, trace_stats *st)
+static void media_push(medium_stack *media, int solid, real ior, trace_stats *st)
 {
     if (media->count == MEDIUM_MAX) {
         st->medium_overflow++;
@@ -208,7 +208,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
         return trace_ray(t, &r, depth + 1, media, key, st);
     }
     medium_stack next = *media;
-    double n1, n2;
+    real n1, n2;
     if (s->h->entering) {
         n1 = top_ior(media);
         n2 = s->m->ior;

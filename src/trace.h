@@ -55,7 +55,7 @@ enum { MEDIUM_MAX = 16 };
 typedef struct medium_stack {
     int count;
     int solid[MEDIUM_MAX];    /* solid_id of each enclosing solid */
-    double ior[MEDIUM_MAX];
+    real ior[MEDIUM_MAX];
 } medium_stack;
 
 /* Builds the acceleration structure.  max_depth <= 0 takes the scene's;

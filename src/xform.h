@@ -2,6 +2,10 @@
  * xform.h - affine transforms of primitives (translate, rotate, scale in the
  * order written).  A transform is stored with its inverse so that a ray can
  * be taken into a primitive's local frame without a matrix inversion per ray.
+ *
+ * The matrix is scene data, made once by the loader: it stays double in the
+ * long double build (the front end passes double pointers into it), while
+ * applying it to points and vectors is done in `real` (vec.h).
  */
 #ifndef REFRAY_XFORM_H
 #define REFRAY_XFORM_H

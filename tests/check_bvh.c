@@ -191,7 +191,7 @@ static int check_nearest_agrees(const bvh *b, const rf_prim *prims, int count, u
             continue;
         hits++;
         ck_assert_int_eq(h.prim, hb.prim);
-        ck_assert_msg(h.t == hb.t, "ray %d: t %.17g vs %.17g", i, h.t, hb.t);
+        ck_assert_msg(h.t == hb.t, "ray %d: t %.17g vs %.17g", i, (double)h.t, (double)hb.t);
         ck_assert(r.tmax == rb.tmax);
         ck_assert(memcmp(&h.point, &hb.point, sizeof h.point) == 0);
         ck_assert_int_eq(h.entering, hb.entering);

@@ -858,7 +858,7 @@ START_TEST(test_ray_spawn_sphere_no_self_hit)
             ray refl = ray_spawn_hit(&sp, &h, reflect(r.dir, h.normal));
             hit h2;
             ck_assert_msg(!isect_prim(&sp, &refl, &h2), "scale %g: reflected ray re-hit at t=%g",
-                          s, h2.t);
+                          s, (double)h2.t);
             vec3 u = transmit(h.normal, &g);
             ray in = ray_spawn_hit(&sp, &h, u);
             ck_assert(isect_prim(&sp, &in, &h2));
@@ -897,10 +897,10 @@ START_TEST(test_ray_spawn_sheets_no_self_hit)
                     continue;
                 ray refl = ray_spawn_hit(sheets[k], &h, reflect(r.dir, h.normal));
                 ck_assert_msg(!isect_prim(sheets[k], &refl, &h2), "scale %g kind %d: t=%g", s, k,
-                              h2.t);
+                              (double)h2.t);
                 ray through = ray_spawn_hit(sheets[k], &h, r.dir);
                 ck_assert_msg(!isect_prim(sheets[k], &through, &h2), "scale %g kind %d: t=%g", s,
-                              k, h2.t);
+                              k, (double)h2.t);
             }
         }
     }
@@ -926,7 +926,7 @@ START_TEST(test_ray_spawn_hit_large_geometry_near_origin)
             hit h, h2;
             ck_assert(isect_prim(prims[k], &r, &h));
             ray refl = ray_spawn_hit(prims[k], &h, reflect(r.dir, h.normal));
-            ck_assert_msg(!isect_prim(prims[k], &refl, &h2), "kind %d: t=%g", k, h2.t);
+            ck_assert_msg(!isect_prim(prims[k], &refl, &h2), "kind %d: t=%g", k, (double)h2.t);
         }
     }
 }
@@ -953,7 +953,7 @@ START_TEST(test_ray_spawn_ellipsoid_and_box)
             ck_assert(isect_prim(prims[k], &r, &h));
             ck_assert_int_eq(h.entering, 1);
             ray refl = ray_spawn_hit(prims[k], &h, reflect(r.dir, h.normal));
-            ck_assert_msg(!isect_prim(prims[k], &refl, &h2), "kind %d: t=%g", k, h2.t);
+            ck_assert_msg(!isect_prim(prims[k], &refl, &h2), "kind %d: t=%g", k, (double)h2.t);
             ray in = ray_spawn_hit(prims[k], &h, transmit(h.normal, &g));
             ck_assert(isect_prim(prims[k], &in, &h2));
             ck_assert_int_eq(h2.entering, 0);
@@ -961,7 +961,7 @@ START_TEST(test_ray_spawn_ellipsoid_and_box)
              * is far thicker than 1 at any inward angle used, and a box ray
              * cannot leave through the face it came in by. */
             if (k == 0)
-                ck_assert_msg(h2.t > 1.0, "inner ray stopped at t=%g", h2.t);
+                ck_assert_msg(h2.t > 1.0, "inner ray stopped at t=%g", (double)h2.t);
             else
                 ck_assert(vec_dot(h2.normal, h.normal) < 0.999);
         }
