@@ -19,6 +19,7 @@ static const char usage_text[] =
     "commands:\n"
     "  check FILE...        parse and validate scenes, print a one-line summary each\n"
     "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension)\n"
+    "  export SCENE --to pov  write POV-Ray SDL of the scene (-o OUT.pov, else stdout)\n"
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
     "  oracle SCENE -o OUT  write the exact image of an analytic scene (.exr .pfm)\n"
     "  compare A B          compare image A with the reference B, --diff MAP for a map\n"
@@ -126,6 +127,9 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
+/* In cli_export.c. */
+int cli_export(int argc, char **argv);
+
 int cli_main(int argc, char **argv)
 {
     if (argc < 2)
@@ -143,6 +147,8 @@ int cli_main(int argc, char **argv)
         return cli_check(argc - 1, argv + 1);
     if (strcmp(cmd, "render") == 0)
         return cli_render(argc - 1, argv + 1);
+    if (strcmp(cmd, "export") == 0)
+        return cli_export(argc - 1, argv + 1);
     if (strcmp(cmd, "verify") == 0)
         return cli_verify(argc - 1, argv + 1);
     if (strcmp(cmd, "oracle") == 0)

@@ -1,0 +1,82 @@
+/*
+ * export_pov.h - a refray scene as POV-Ray 3.7 SDL (`refray export --to
+ * pov`), so that POV-Ray can be checked against refray's oracle
+ * (spec/crosscheck.md has the mapping, construct by construct).
+ *
+ * What maps exactly: the camera (perspective and orthographic; POV-Ray is
+ * left-handed, so every point and direction has its z negated, a mirror
+ * that keeps the picture), the image size and k x k pixel grid (rendered at
+ * k times the size and box-filtered back), ambient, Lambert and Phong terms
+ * (phong Ks, phong_size n is Ks (V.R)^n), mirror reflection, the (1 - t)
+ * body weight and t-weighted transmission (transmit t), refraction into
+ * solids (interior ior), tinted unbent shadows, point and distant lights
+ * with falloff none, `linear` with d0 > 0 (POV-Ray's fading
+ * 2/(1 + d/d0) times E/(2 d0) is E/(d + d0)), max_depth as max_trace_level.
+ * What is approximated is written as a comment in the SDL and returned in
+ * pov_notes; what cannot be approximated usefully is refused.
+ */
+#ifndef REFRAY_EXPORT_POV_H
+#define REFRAY_EXPORT_POV_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "scene.h"
+
+enum { POV_NOTE_MAX = 24, POV_NOTE_LEN = 320 };
+
+/* What an export could not map exactly. */
+typedef struct pov_notes {
+    int refused;                           /* 1: the scene cannot be exported */
+    char reason[POV_NOTE_LEN];             /* why, when refused */
+    int count;                             /* approximations found (may pass POV_NOTE_MAX) */
+    char text[POV_NOTE_MAX][POV_NOTE_LEN]; /* the first POV_NOTE_MAX of them, one line each */
+} pov_notes;
+
+typedef struct pov_opts {
+    /* 0 (default): each distributed light becomes its `samples` point
+     * sources at the centres of its cells, which is the seed's model with
+     * refray's jitter left out.  1: one POV-Ray area_light per light, which
+     * averages visibility apart from shading (approximate in penumbrae). */
+    int area_lights;
+    const char *source;  /* the scene's path for the header comment, or NULL */
+} pov_opts;
+
+/* The largest max_trace_level POV-Ray 3.7 accepts (it clamps to it). */
+#define POV_MAX_TRACE_LEVEL 256
+
+/* Fade distances that stand in for d0 = 0, relative to the scene's size:
+ * E/(d + D) and E/(d^2 + D^2) differ from E/d and E/d^2 by about D/d and
+ * (D/d)^2 relative. */
+#define POV_LINEAR_FADE 1e-9
+#define POV_SQUARE_FADE 1e-5
+
+/*
+ * Finds what cannot be mapped: fills notes (cleared first) and returns 1
+ * when s can be exported, 0 when it is refused (the reason in notes).
+ */
+int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes);
+
+/*
+ * Writes s as SDL to fp: a header comment that names the povray options
+ * the render needs (`// pov-args:` and `// pov-downsample:` lines, read by
+ * tests/crosscheck.sh) and lists the approximations, then the scene.
+ * Returns 0; REFRAY_EXIT_DATAERR when refused (nothing written); or
+ * REFRAY_EXIT_IOERR when a write to fp failed.  notes as pov_export_check.
+ */
+int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *notes);
+
+/*
+ * The same into path, atomically: a temporary "<path>.tmp.XXXXXX" in the
+ * same directory is written, flushed, synced and renamed onto path; on any
+ * failure it is removed and path is left as it was.  Returns as
+ * pov_export_write, with a one-line reason in err for an I/O error.
+ */
+int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
+                    size_t errlen);
+
+/* The size POV-Ray must render: k times the scene's image for a k x k
+ * pixel grid (whose sub-pixel centres are then POV-Ray's pixel centres).
+ * Returns k. */
+int pov_render_size(const rf_scene *s, int *width, int *height);
+
+#endif

@@ -1,0 +1,566 @@
+/*
+ * check_export.c - the POV-Ray SDL writer (src/export_pov.c) and
+ * `refray export` (src/cli_export.c).
+ *
+ * Expected SDL text is derived by hand from the mapping in
+ * spec/crosscheck.md: z negated (POV-Ray is left-handed), light colours
+ * from E and the falloff, finish values from Kd, Ks, n, t.  Scene numbers
+ * are chosen so that every expected value is a short exact decimal.
+ * The command-line tests run $REFRAY_BIN (set by `make test`), else
+ * build/refray.
+ */
+#include <dirent.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "export_pov.h"
+#include "testlib.h"
+
+static const char scene_a[] =
+    "image  { width 64 height 48 max_depth 4 background [0.125, 0.25, 0.5] }\n"
+    "camera { perspective eye [1, 2, 6] look_at [0, 0.5, 0] up [0, 1, 0] fov 50 }\n"
+    "ambient { color 0.25 }\n"
+    "point_light { position [3, 5, 4] power 2 falloff none }\n"
+    "point_light { position [0, 4, 0] power 8 d0 2 falloff linear }\n"
+    "distant_light { direction [0, -1, 0] power 0.5 }\n"
+    "material paint { Kd [0.25, 0.5, 0.75] Ks 0.5 n 20 }\n"
+    "material glass { Kd 0 Ks 0.25 n 100 t 0.75 ior 1.5 }\n"
+    "material clear { Kd 0 t 1 }\n"
+    "plane { point [0, 0, 0] normal [0, 1, 0] material paint }\n"
+    "sphere { center [0, 1, -2] radius 1 material glass }\n"
+    "disk { center [0, 2, 0] normal [0, 1, 0] radius 1 material glass }\n"
+    "sphere { center [2, 1, 0] radius 0.5 material clear }\n"
+    "box { from [-1, 0, -1] to [1, 1, 1] rotate [0, 90, 0] translate [3, 0, 4] material paint }\n";
+
+static const char scene_ortho[] =
+    "image  { width 64 height 48 samples 3 max_depth 1 }\n"
+    "camera { orthographic eye [0, 0, 5] look_at [0, 0, 0] up [0, 1, 0] width 4 }\n"
+    "point_light { position [0, 0, 5] power 1 falloff none }\n"
+    "sphere { center [0, 0, 0] radius 1 }\n";
+
+static const char scene_refused[] =
+    "point_light { position [0, 3, 0] power 1 d0 1 falloff inverse_square }\n"
+    "sphere { center [0, 0, 0] radius 1 }\n";
+
+static const char scene_approx[] =
+    "image { max_depth 1 }\n"
+    "point_light { position [0, 3, 0] power 1 d0 0 falloff linear }\n"
+    "material gold { Kd 0.25 Ks [0.25, 0.5, 0.75] n 10 }\n"
+    "sphere { center [0, 0, 0] radius 1 material gold }\n";
+
+static const char scene_rect[] =
+    "image { max_depth 1 }\n"
+    "distributed_light { rectangle [-1, 4, -1] [2, 0, 0] [0, 0, 2] power 4 samples 4 falloff none }\n"
+    "sphere { center [0, 0, 0] radius 1 }\n";
+
+/* Loads text (diagnostics, warnings included, thrown away). */
+static rf_scene *load(const char *text)
+{
+    int status;
+    FILE *null = fopen("/dev/null", "w");
+    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
+    if (null)
+        fclose(null);
+    ck_assert_msg(s != NULL, "scene did not load (status %d)", status);
+    return s;
+}
+
+/* The SDL of text, malloc'd; *rc the return of pov_export_write. */
+static char *export_text(const char *text, const pov_opts *o, pov_notes *notes, int *rc)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    rf_scene *s = load(text);
+    FILE *fp = open_memstream(&buf, &len);
+    ck_assert_ptr_nonnull(fp);
+    *rc = pov_export_write(s, o, fp, notes);
+    fclose(fp);
+    scene_free(s);
+    return buf;
+}
+
+static char *export_default(const char *text, pov_notes *notes)
+{
+    pov_opts o = {0, "t.scene"};
+    int rc;
+    char *sdl = export_text(text, &o, notes, &rc);
+    ck_assert_int_eq(rc, 0);
+    return sdl;
+}
+
+#define ck_assert_has(sdl, want) \
+    ck_assert_msg(strstr((sdl), (want)) != NULL, "SDL lacks \"%s\":\n%s", (want), (sdl))
+
+static int count_of(const char *text, const char *needle)
+{
+    int n = 0;
+    for (const char *p = strstr(text, needle); p; p = strstr(p + 1, needle))
+        n++;
+    return n;
+}
+
+/* [XCHK-MAP-CAMERA-1] z negated; right carries the aspect 64/48; angle is
+ * the horizontal fov; sky is up as written. */
+START_TEST(test_pov_export_write_camera)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "  perspective\n  location <1, 2, -6>\n");
+    ck_assert_has(sdl, "  right <1.3333333333333333, 0, 0>\n  up <0, 1, 0>\n  sky <0, 1, 0>\n");
+    ck_assert_has(sdl, "  angle 50\n  look_at <0, 0.5, 0>\n}");
+    free(sdl);
+}
+END_TEST
+
+/* Orthographic: right and up are the view's extent, 4 by 4 * 48/64 = 3;
+ * no angle.  samples 3: POV-Ray renders 3 x 64 by 3 x 48 and the header
+ * says to average 3 x 3 blocks. */
+START_TEST(test_pov_export_write_orthographic)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_ortho, &n);
+    ck_assert_has(sdl, "  orthographic\n  location <0, 0, -5>\n  right <4, 0, 0>\n  up <0, 3, 0>\n");
+    ck_assert_msg(strstr(sdl, "angle") == NULL, "an orthographic camera got an angle:\n%s", sdl);
+    ck_assert_has(sdl, "// pov-args: +W192 +H144 -A\n// pov-downsample: 3\n");
+    free(sdl);
+}
+END_TEST
+
+START_TEST(test_pov_render_size)
+{
+    rf_scene *s = load(scene_ortho);
+    int w, h;
+    ck_assert_int_eq(pov_render_size(s, &w, &h), 3);
+    ck_assert_int_eq(w, 192);
+    ck_assert_int_eq(h, 144);
+    scene_free(s);
+}
+END_TEST
+
+/* [XCHK-MAP-GLOBAL-1] */
+START_TEST(test_pov_export_write_globals)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "#version 3.7;");
+    ck_assert_has(sdl, "  assumed_gamma 1.0\n  ambient_light rgb <0.25, 0.25, 0.25>\n");
+    ck_assert_has(sdl, "  max_trace_level 4\n  adc_bailout 0\n");
+    ck_assert_has(sdl, "background { rgb <0.125, 0.25, 0.5> }");
+    free(sdl);
+}
+END_TEST
+
+/* [XCHK-MAP-FADE-1] falloff none: colour E.  linear, E 8, d0 2: colour
+ * E/(2 d0) = 2 with fade_distance 2, fade_power 1, since
+ * 2 * 2/(1 + d/2) = 8/(d + 2).  Distant: a parallel light. */
+START_TEST(test_pov_export_write_lights)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "light_source { <3, 5, -4> color rgb <2, 2, 2> }");
+    ck_assert_has(sdl, "light_source { <0, 4, 0> color rgb <2, 2, 2> fade_distance 2 fade_power 1 }");
+    ck_assert_has(sdl, " color rgb <0.5, 0.5, 0.5> parallel point_at <");
+    ck_assert_int_eq(count_of(sdl, "light_source {"), 3);
+    free(sdl);
+}
+END_TEST
+
+/* A distant light travelling down (0, -1, 0) sits above the scene, and
+ * point_at is one unit further along the direction. */
+START_TEST(test_pov_export_write_distant_direction)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    const char *p = strstr(sdl, " parallel point_at <");
+    ck_assert_ptr_nonnull(p);
+    const char *start = p;
+    while (start > sdl && strncmp(start, "light_source { <", 16) != 0)
+        start--;
+    double fx, fy, fz, tx, ty, tz;
+    ck_assert_int_eq(sscanf(start, "light_source { <%lf, %lf, %lf>", &fx, &fy, &fz), 3);
+    ck_assert_int_eq(sscanf(p, " parallel point_at <%lf, %lf, %lf>", &tx, &ty, &tz), 3);
+    ck_assert_near(tx - fx, 0, 1e-9);
+    ck_assert_near(ty - fy, -1, 1e-9);
+    ck_assert_near(tz - fz, 0, 1e-9);
+    ck_assert(fy > 100);
+    free(sdl);
+}
+END_TEST
+
+/* [XCHK-MAP-FINISH-1] pigment Kd with transmit t; ambient 1 and diffuse 1
+ * replace POV-Ray's 0.1 and 0.6; phong Ks, phong_size n, reflection Ks. */
+START_TEST(test_pov_export_write_finish)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "pigment { rgbt <0.25, 0.5, 0.75, 0> }\n  finish { ambient 1 diffuse 1 phong 0.5 "
+                       "phong_size 20 reflection { rgb <0.5, 0.5, 0.5> } }");
+    ck_assert_has(sdl, "pigment { rgbt <0, 0, 0, 0.75> }\n  finish { ambient 1 diffuse 1 phong 0.25 "
+                       "phong_size 100 reflection { rgb <0.25, 0.25, 0.25> } }");
+    ck_assert_has(sdl, "pigment { rgbt <0, 0, 0, 1> }\n  finish { ambient 1 diffuse 1 }");
+    free(sdl);
+}
+END_TEST
+
+/* [XCHK-MAP-SHADOW-1] The glass sphere is a solid and gets the ior; the
+ * glass disk is a sheet and must not (POV-Ray would bend rays at it); the
+ * clear sphere casts no shadow. */
+START_TEST(test_pov_export_write_interior)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "sphere {\n  <0, 1, 2>, 1\n  texture { RF_T1 }\n  interior { ior 1.5 }\n}");
+    ck_assert_has(sdl, "disc {\n  <0, 2, 0>, <0, 1, 0>, 1\n  texture { RF_T1 }\n}");
+    ck_assert_has(sdl, "sphere {\n  <2, 1, 0>, 0.5\n  texture { RF_T2 }\n  no_shadow\n}");
+    ck_assert_int_eq(count_of(sdl, "interior"), 1);
+    ck_assert_int_eq(count_of(sdl, "no_shadow"), 1);
+    free(sdl);
+}
+END_TEST
+
+/* A box turned 90 degrees about y keeps its local corners (z negated) and
+ * gets POV-Ray's matrix of F M F, F = diag(1, 1, -1).  By hand: refray's
+ * turn takes x to -z and z to x, M = [[0,0,1],[0,1,0],[-1,0,0]]; F M F =
+ * [[0,0,-1],[0,1,0],[1,0,0]]; POV-Ray lists it by columns (x' = a00 x +
+ * a10 y + a20 z + a30): <0,0,1, 0,1,0, -1,0,0>, then F (3, 0, 4). */
+START_TEST(test_pov_export_write_matrix)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_a, &n);
+    ck_assert_has(sdl, "box {\n  <-1, 0, 1>, <1, 1, -1>\n  texture { RF_T0 }\n"
+                       "  matrix <0, 0, 1, 0, 1, 0, -1, 0, 0, 3, 0, -4>\n}");
+    ck_assert_has(sdl, "plane {\n  <0, 1, 0>, 0\n");
+    free(sdl);
+}
+END_TEST
+
+/* A triangle keeps its corners in order, z negated. */
+START_TEST(test_pov_export_write_triangle)
+{
+    pov_notes n;
+    char *sdl = export_default("triangle { vertices [0, 0, 1] [1, 0, 2] [0, 1, 3] }\n", &n);
+    ck_assert_has(sdl, "triangle {\n  <0, 0, -1>, <1, 0, -2>, <0, 1, -3>\n  texture { RF_T0 }\n}");
+    free(sdl);
+}
+END_TEST
+
+/* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
+ * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
+ * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
+START_TEST(test_pov_export_check_notes)
+{
+    rf_scene *s = load(scene_a);
+    pov_opts o = {0, NULL};
+    pov_notes n;
+    ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
+    ck_assert_int_eq(n.refused, 0);
+    ck_assert_int_eq(n.count, 2);
+    ck_assert_msg(strstr(n.text[0], "material glass") && strstr(n.text[0], "trace level"), "%s", n.text[0]);
+    ck_assert_msg(strstr(n.text[1], "material clear") && strstr(n.text[1], "trace level"), "%s", n.text[1]);
+    scene_free(s);
+}
+END_TEST
+
+/* linear with d0 0 is approximated (fade_distance stands in for d0), a
+ * non-grey Ks gives phong its mean (0.25 + 0.5 + 0.75)/3 = 0.5 and keeps
+ * the colour for the mirror ray; both listed, in the header too. */
+START_TEST(test_pov_export_write_approximations)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_approx, &n);
+    ck_assert_int_eq(n.count, 2);
+    ck_assert_msg(strstr(n.text[0], "linear falloff with d0 0") && strstr(n.text[0], "fade_distance"), "%s",
+                  n.text[0]);
+    ck_assert_msg(strstr(n.text[1], "not grey") && strstr(n.text[1], "mean 0.5"), "%s", n.text[1]);
+    ck_assert_has(sdl, "// approximations: 2");
+    ck_assert_has(sdl, "phong 0.5 phong_size 10 reflection { rgb <0.25, 0.5, 0.75> }");
+    ck_assert_has(sdl, "fade_power 1 }");
+    free(sdl);
+}
+END_TEST
+
+/* inverse_square with d0 > 0 cannot be matched: refused with the reason,
+ * and nothing written. */
+START_TEST(test_pov_export_write_refused)
+{
+    pov_opts o = {0, NULL};
+    pov_notes n;
+    int rc;
+    char *sdl = export_text(scene_refused, &o, &n, &rc);
+    ck_assert_int_eq(rc, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(n.refused, 1);
+    ck_assert_msg(strstr(n.reason, "point_light at t.scene:1") && strstr(n.reason, "inverse_square") &&
+                      strstr(n.reason, "d0 1"), "%s", n.reason);
+    ck_assert_str_eq(sdl, "");
+    free(sdl);
+}
+END_TEST
+
+/* [XCHK-MAP-AREA-1] 4 samples: a 2 x 2 grid; the cell centres of the
+ * rectangle from (-1, 4, -1) with edges (2,0,0), (0,0,2) are x, z in
+ * {-0.5, 0.5}; each source has 4/4 = 1. */
+START_TEST(test_pov_export_write_distributed_points)
+{
+    pov_notes n;
+    char *sdl = export_default(scene_rect, &n);
+    ck_assert_int_eq(count_of(sdl, "light_source {"), 4);
+    ck_assert_has(sdl, "light_source { <-0.5, 4, 0.5> color rgb <1, 1, 1> }");
+    ck_assert_has(sdl, "light_source { <0.5, 4, 0.5> color rgb <1, 1, 1> }");
+    ck_assert_has(sdl, "light_source { <-0.5, 4, -0.5> color rgb <1, 1, 1> }");
+    ck_assert_has(sdl, "light_source { <0.5, 4, -0.5> color rgb <1, 1, 1> }");
+    ck_assert_int_eq(n.count, 1);
+    free(sdl);
+}
+END_TEST
+
+/* --area-lights: centre (0, 4, 0); POV-Ray's grid includes its ends, so
+ * the axes shrink by (n-1)/n = 1/2 to (1,0,0) and (0,0,2)/2, z negated. */
+START_TEST(test_pov_export_write_area_light)
+{
+    pov_opts o = {1, NULL};
+    pov_notes n;
+    int rc;
+    char *sdl = export_text(scene_rect, &o, &n, &rc);
+    ck_assert_int_eq(rc, 0);
+    ck_assert_has(sdl, "light_source { <0, 4, 0> color rgb <4, 4, 4>\n  area_light <1, 0, 0>, <0, 0, -1>, 2, 2 "
+                       "adaptive 2 area_illumination on }");
+    ck_assert_msg(strstr(n.text[0], "area_light") && strstr(n.text[0], "penumbrae"), "%s", n.text[0]);
+    free(sdl);
+}
+END_TEST
+
+/* ---- The file: atomic, or nothing ---- */
+
+static char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *buf = malloc(1 << 20);
+    size_t n = fread(buf, 1, (1 << 20) - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static int dir_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    struct dirent *e;
+    ck_assert_ptr_nonnull(d);
+    while ((e = readdir(d)) != NULL)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
+}
+
+static void remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char path[512];
+    while (d && (e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+    }
+    if (d)
+        closedir(d);
+    rmdir(dir);
+}
+
+/* The file holds what the stream gets, replaces an older file whole, and
+ * no temporary file is left beside it. */
+START_TEST(test_pov_export_file_atomic)
+{
+    char dir[] = "/tmp/refray-export-XXXXXX", path[256], err[256];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/out.pov", dir);
+    FILE *old = fopen(path, "w");
+    fputs("old contents\n", old);
+    fclose(old);
+    rf_scene *s = load(scene_a);
+    pov_opts o = {0, "t.scene"};
+    pov_notes n;
+    ck_assert_int_eq(pov_export_file(s, &o, path, &n, err, sizeof err), 0);
+    scene_free(s);
+    pov_notes n2;
+    char *want = export_default(scene_a, &n2), *got = read_file(path);
+    ck_assert_ptr_nonnull(got);
+    ck_assert_str_eq(got, want);
+    ck_assert_int_eq(dir_entries(dir), 1);
+    free(want);
+    free(got);
+    remove_dir(dir);
+}
+END_TEST
+
+/* A refused scene and an unwritable place create nothing. */
+START_TEST(test_pov_export_file_failures)
+{
+    char dir[] = "/tmp/refray-export-XXXXXX", path[256], err[256];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    pov_opts o = {0, NULL};
+    pov_notes n;
+    rf_scene *bad = load(scene_refused), *good = load(scene_a);
+    snprintf(path, sizeof path, "%s/refused.pov", dir);
+    ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(access(path, F_OK), -1);
+    snprintf(path, sizeof path, "%s/missing/out.pov", dir);
+    ck_assert_int_eq(pov_export_file(good, &o, path, &n, err, sizeof err), REFRAY_EXIT_IOERR);
+    ck_assert_msg(strstr(err, "cannot write") && strstr(err, "missing/out.pov"), "%s", err);
+    ck_assert_int_eq(dir_entries(dir), 0);
+    scene_free(bad);
+    scene_free(good);
+    remove_dir(dir);
+}
+END_TEST
+
+/* ---- `refray export` ---- */
+
+typedef struct run_result {
+    int code;
+    char out[4096];   /* the start of stdout */
+    char err[4096];   /* the start of stderr */
+} run_result;
+
+static void read_all(int fd, char *buf, size_t size)
+{
+    size_t used = 0;
+    ssize_t got;
+    char sink[4096];
+    while (used + 1 < size && (got = read(fd, buf + used, size - 1 - used)) > 0)
+        used += (size_t)got;
+    buf[used] = '\0';
+    while (read(fd, sink, sizeof sink) > 0)
+        ;
+}
+
+/* Runs refray with argv (NULL-terminated, argv[0] ignored).  stderr goes
+ * to a file so that a full stdout pipe cannot block the child. */
+static void run_refray(const char *const argv[], run_result *r)
+{
+    const char *bin = getenv("REFRAY_BIN");
+    if (!bin || !*bin)
+        bin = "build/refray";
+    ck_assert_msg(access(bin, X_OK) == 0, "no refray binary at %s (set REFRAY_BIN)", bin);
+    FILE *errf = tmpfile();
+    int fds[2];
+    ck_assert_ptr_nonnull(errf);
+    ck_assert_int_eq(pipe(fds), 0);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        dup2(fds[1], 1);
+        dup2(fileno(errf), 2);
+        close(fds[0]);
+        close(fds[1]);
+        execv(bin, (char *const *)argv);
+        _exit(127);
+    }
+    close(fds[1]);
+    read_all(fds[0], r->out, sizeof r->out);
+    close(fds[0]);
+    int status;
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    r->code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    rewind(errf);
+    read_all(fileno(errf), r->err, sizeof r->err);
+    fclose(errf);
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+/* Without -o the SDL goes to stdout and the notes to stderr. */
+START_TEST(test_cli_export_stdout)
+{
+    char dir[] = "/tmp/refray-export-XXXXXX", scene[256];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(scene, sizeof scene, "%s/a.scene", dir);
+    write_text(scene, scene_approx);
+    const char *argv[] = {"refray", "export", scene, "--to", "pov", NULL};
+    run_result r;
+    run_refray(argv, &r);
+    ck_assert_int_eq(r.code, 0);
+    ck_assert_msg(strncmp(r.out, "// POV-Ray 3.7 scene written by `refray export --to pov`", 55) == 0, "%s",
+                  r.out);
+    ck_assert_msg(strncmp(r.err, "refray: approximation: point_light at ", 38) == 0, "%s", r.err);
+    ck_assert_int_eq(count_of(r.err, "refray: approximation: "), 2);
+    remove_dir(dir);
+}
+END_TEST
+
+/* -o writes the file and nothing to stdout; a refused scene exits 65
+ * with the reason and writes nothing; a wrong target is a usage error. */
+START_TEST(test_cli_export_file_and_refusal)
+{
+    char dir[] = "/tmp/refray-export-XXXXXX", scene[256], bad[256], out[256], out2[256];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(scene, sizeof scene, "%s/a.scene", dir);
+    snprintf(bad, sizeof bad, "%s/bad.scene", dir);
+    snprintf(out, sizeof out, "%s/a.pov", dir);
+    snprintf(out2, sizeof out2, "%s/bad.pov", dir);
+    write_text(scene, scene_ortho);
+    write_text(bad, scene_refused);
+    run_result r;
+    const char *argv1[] = {"refray", "export", scene, "--to", "pov", "-o", out, NULL};
+    run_refray(argv1, &r);
+    ck_assert_int_eq(r.code, 0);
+    ck_assert_str_eq(r.out, "");
+    char *sdl = read_file(out);
+    ck_assert_ptr_nonnull(sdl);
+    ck_assert_has(sdl, "  orthographic\n");
+    free(sdl);
+    const char *argv2[] = {"refray", "export", bad, "--to", "pov", "-o", out2, NULL};
+    run_refray(argv2, &r);
+    ck_assert_int_eq(r.code, REFRAY_EXIT_DATAERR);
+    ck_assert_msg(strstr(r.err, "refray: error: cannot export '") && strstr(r.err, "inverse_square"), "%s",
+                  r.err);
+    ck_assert_int_eq(access(out2, F_OK), -1);
+    const char *argv3[] = {"refray", "export", scene, "--to", "mitsuba", NULL};
+    run_refray(argv3, &r);
+    ck_assert_int_eq(r.code, REFRAY_EXIT_USAGE);
+    ck_assert_msg(strstr(r.err, "unknown target 'mitsuba'") != NULL, "%s", r.err);
+    remove_dir(dir);
+}
+END_TEST
+
+Suite *suite_export(void)
+{
+    Suite *s = suite_create("export");
+    TCase *sdl = tcase_create("sdl");
+    tcase_add_test(sdl, test_pov_export_write_camera);
+    tcase_add_test(sdl, test_pov_export_write_orthographic);
+    tcase_add_test(sdl, test_pov_render_size);
+    tcase_add_test(sdl, test_pov_export_write_globals);
+    tcase_add_test(sdl, test_pov_export_write_lights);
+    tcase_add_test(sdl, test_pov_export_write_distant_direction);
+    tcase_add_test(sdl, test_pov_export_write_finish);
+    tcase_add_test(sdl, test_pov_export_write_interior);
+    tcase_add_test(sdl, test_pov_export_write_matrix);
+    tcase_add_test(sdl, test_pov_export_write_triangle);
+    tcase_add_test(sdl, test_pov_export_check_notes);
+    tcase_add_test(sdl, test_pov_export_write_approximations);
+    tcase_add_test(sdl, test_pov_export_write_refused);
+    tcase_add_test(sdl, test_pov_export_write_distributed_points);
+    tcase_add_test(sdl, test_pov_export_write_area_light);
+    suite_add_tcase(s, sdl);
+    TCase *file = tcase_create("file");
+    tcase_add_test(file, test_pov_export_file_atomic);
+    tcase_add_test(file, test_pov_export_file_failures);
+    tcase_add_test(file, test_cli_export_stdout);
+    tcase_add_test(file, test_cli_export_file_and_refusal);
+    suite_add_tcase(s, file);
+    return s;
+}
