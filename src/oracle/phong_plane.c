@@ -1,0 +1,60 @@
+/*
+ * phong_plane.c - family `phong_plane`: the Phong highlight on a plane
+ * (spec/analytic/phong_plane.md, [ORACLE-PHONG-PLANE-1],
+ * [ORACLE-PHONG-PLANE-2]).
+ *
+ * The hit point comes from the line/plane formula; with N turned toward the
+ * viewer, V = -D and, per light, I = falloff(E, d, d0), cos = N.L and
+ * V.R = 2 cos (N.V) - L.V (R never formed):
+ *   Kd (Ia + sum I cos) + Ks sum I max(0, V.R)^n  [+ Ks * background]
+ * the last term when max_depth > 1: a lone plane's mirror ray leaves it and
+ * meets nothing (slide 48).  V.R = 1 exactly where the eye sees the mirror
+ * image of the light: for an orthographic camera along -N the foot of the
+ * light, for a perspective eye the crossing of the eye -> mirror-light line
+ * with the plane (oracle_mirror_point, oracle_mirror_point_ortho); there the
+ * highlight is Ks*I.
+ *
+ * Assumptions: one plane with t = 0 (any Kd, Ks, n); point or distant
+ * lights, point lights off the plane; any camera whose eye is off the
+ * plane.  Ambiguous: the horizon, and |V.R| near 0 when n < 1.
+ */
+#include "oracle.h"
+#include "oracle_util.h"
+
+#define FAMILY "phong_plane"
+
+static int accepts(const oracle_view *v, char *why, size_t n)
+{
+    const rf_scene *s = v->scene;
+    if (s->prim_count != 1 || s->prims[0].kind != PRIM_PLANE)
+        return oracle_refuse(why, n, FAMILY ": the scene must be one plane");
+    if (oracle_material(s, 0)->t != 0)
+        return oracle_refuse(why, n, FAMILY ": the plane's material must be opaque (t = 0)");
+    return oracle_accept_lights(s, FAMILY, why, n) && oracle_accept_off_plane(s, &s->prims[0], FAMILY, why, n);
+}
+
+static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
+{
+    const rf_scene *s = v->scene;
+    const rf_material *m = oracle_material(s, 0);
+    vec3 p, normal, toward;
+    int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
+    if (seen < 0)
+        return ORACLE_AMBIGUOUS;
+    if (seen == 0) {
+        *out = s->image.background;
+        return ORACLE_EXACT;
+    }
+    oracle_shading sh;
+    if (oracle_shade_direct(s, m, p, normal, toward, NULL, NULL, &sh) != ORACLE_EXACT)
+        return ORACLE_AMBIGUOUS;
+    *out = vec_add(sh.body, sh.highlight);
+    if (v->max_depth > 1)
+        *out = vec_add(*out, vec_mul(m->ks, s->image.background));
+    return ORACLE_EXACT;
+}
+
+const oracle_family oracle_phong_plane = {
+    "phong_plane", "Phong highlight on a plane: Ks I max(0, V.R)^n, peak at the light's mirror point (slides 24-28)",
+    0, accepts, radiance, oracle_tolerance_exact,
+};

@@ -1,0 +1,53 @@
+/*
+ * plane_point.c - family `plane_point`: a matte plane under point lights
+ * with the falloffs linear, inverse_square and none
+ * (spec/analytic/plane_point.md, [ORACLE-PLANE-POINT-1]).
+ *
+ * The view ray o + s D meets the plane (p0, N) at s = N.(p0 - o)/(N.D), a
+ * line/plane formula; with d = |light - P| and cos(theta) = N.(light - P)/d
+ * (N turned toward the viewer) the value is
+ *   Kd (Ia + sum falloff(E, d, d0) max(0, cos theta))           (slides 15-18)
+ * falloff: E/(d+d0), E/(d+d0)^2 or E.  A lone plane shadows nothing.
+ *
+ * Assumptions: one plane with Ks = 0 and t = 0; point or distant lights,
+ * point lights off the plane; any camera whose eye is off the plane.
+ * Ambiguous: view rays within ORACLE_COS_MARGIN of the plane's direction
+ * (the horizon) and, for an orthographic camera, an image plane crossing
+ * the plane.
+ */
+#include "oracle.h"
+#include "oracle_util.h"
+
+#define FAMILY "plane_point"
+
+static int accepts(const oracle_view *v, char *why, size_t n)
+{
+    const rf_scene *s = v->scene;
+    if (s->prim_count != 1 || s->prims[0].kind != PRIM_PLANE)
+        return oracle_refuse(why, n, FAMILY ": the scene must be one plane");
+    return oracle_accept_matte(oracle_material(s, 0), FAMILY, "plane's material", why, n) &&
+           oracle_accept_lights(s, FAMILY, why, n) && oracle_accept_off_plane(s, &s->prims[0], FAMILY, why, n);
+}
+
+static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
+{
+    const rf_scene *s = v->scene;
+    vec3 p, normal, toward;
+    int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
+    if (seen < 0)
+        return ORACLE_AMBIGUOUS;
+    if (seen == 0) {
+        *out = s->image.background;
+        return ORACLE_EXACT;
+    }
+    oracle_shading sh;
+    if (oracle_shade_direct(s, oracle_material(s, 0), p, normal, toward, NULL, NULL, &sh) != ORACLE_EXACT)
+        return ORACLE_AMBIGUOUS;
+    *out = sh.body;
+    return ORACLE_EXACT;
+}
+
+const oracle_family oracle_plane_point = {
+    "plane_point", "plane under a point light: Kd (Ia + falloff(E, d) cos theta) (slides 15-18)", 0,
+    accepts, radiance, oracle_tolerance_exact,
+};
