@@ -8,6 +8,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <string.h>
 #include "quadrature.h"
 
 static const double xgk[8] = {
@@ -90,6 +91,7 @@ double quad_breaks(quad_fn f, void *ctx, const double *breaks, int n, double abs
 {
     piece p[QUAD_MAX_INTERVALS];
     int count = 0;
+    memset(&p[0], 0, sizeof p[0]); /* an empty range reads no piece; say so to the compiler */
     if (n > QUAD_MAX_BREAKS)
         n = QUAD_MAX_BREAKS;
     for (int i = 0; i + 1 < n; i++)
