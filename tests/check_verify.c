@@ -4,7 +4,7 @@
  * oracle` run as child processes for their exit codes ($REFRAY_BIN, set by
  * `make test`, else build/refray; run from the repository root).
  *
- * The scene is the `ambient` family's: one sphere under ambient light, seen
+ * The scene is the `ambient_only` family's: one sphere under ambient light, seen
  * by an orthographic camera.  Every covered sample is Kd * Ia = [0.8, 0.5,
  * 0.25] * [0.5, 0.6, 0.7] = [0.4, 0.3, 0.175], the rest the background.
  */
@@ -44,12 +44,12 @@ static rf_scene *load_scene(const char *text, const char *family)
  * secondary ray (t = 0, Ks = 0). */
 START_TEST(test_verify_scene_ambient_passes)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "ambient.scene", NULL, &r), 0);
     ck_assert_int_eq(r.verdict, VERIFY_PASS);
     ck_assert_str_eq(r.scene, "ambient.scene");
-    ck_assert_str_eq(r.family, "ambient");
+    ck_assert_str_eq(r.family, "ambient_only");
     ck_assert_int_eq(r.metrics.over, 0);
     ck_assert_int_eq(r.metrics.compared + r.metrics.excluded, 32 * 24);
     ck_assert_msg(r.metrics.excluded <= 32 * 24 / 20, "%ld excluded", r.metrics.excluded);
@@ -67,7 +67,7 @@ END_TEST
 /* Overrides reach both the render and the exact image. */
 START_TEST(test_verify_scene_overrides)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_opts o = {16, 12, 3, 1, 0};
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "a", &o, &r), 0);
@@ -84,12 +84,12 @@ END_TEST
  * 2.5e-6 relative) fails there and only there. */
 START_TEST(test_verify_render_compare_detects_an_error)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     oracle_view v = verify_view(s, NULL);
     verify_exact e;
     verify_result r;
     memset(&r, 0, sizeof r);
-    ck_assert_int_eq(verify_exact_build(oracle_find("ambient"), &v, &e), 0);
+    ck_assert_int_eq(verify_exact_build(oracle_find("ambient_only"), &v, &e), 0);
     ck_assert_near(img_pixel(&e.image, 16, 12)[0], 0.4, 1e-15);
     img_pixel(&e.image, 16, 12)[0] += 1e-6;
     ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), REFRAY_EXIT_FAIL);
@@ -104,15 +104,15 @@ START_TEST(test_verify_render_compare_detects_an_error)
 }
 END_TEST
 
-/* A scene with a light is outside the ambient family: refused with the
+/* A scene with a light is outside the ambient_only family: refused with the
  * family's own reason, status 1. */
 START_TEST(test_verify_family_refused)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient_only");
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), REFRAY_EXIT_FAIL);
     ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
-    ck_assert_str_eq(r.reason, "ambient: the scene must have no lights (it has 1)");
+    ck_assert_str_eq(r.reason, "ambient_only: the scene must have no lights (it has 1)");
     scene_free(s);
 }
 END_TEST
@@ -125,7 +125,7 @@ START_TEST(test_verify_family_unknown_and_missing)
     int status;
     ck_assert_ptr_null(verify_family(s, &v, &status, why, sizeof why));
     ck_assert_int_eq(status, REFRAY_EXIT_FAIL);
-    ck_assert_msg(strstr(why, "no oracle family is called 'no_such_family' (known: ") && strstr(why, "ambient"),
+    ck_assert_msg(strstr(why, "no oracle family is called 'no_such_family' (known: ") && strstr(why, "ambient_only"),
                   "why: %s", why);
     free(s->oracle);
     s->oracle = NULL;
@@ -161,7 +161,7 @@ END_TEST
  * the order is marked not meaningful [VERIFY-FIT-2]. */
 START_TEST(test_verify_sweep_run_deterministic)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_sweep sw;
     char why[256];
     verify_result steps[3];
@@ -401,7 +401,7 @@ END_TEST
  * make a well-formed array of three objects. */
 START_TEST(test_verify_json_results_well_formed)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_result r[3];
     verify_scene(s, "dir/\"quoted\"\tname.scene", NULL, &r[0]);
     free(s->oracle);
@@ -437,7 +437,7 @@ static int count_char(const char *s, char c, const char *end)
  * in JSON is well formed. */
 START_TEST(test_verify_tsv_and_json_sweep)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient");
+    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_sweep sw;
     char why[256];
     verify_result steps[2];
@@ -463,7 +463,7 @@ START_TEST(test_verify_tsv_and_json_sweep)
     ck_assert_int_eq(lines, 5);
     ck_assert_int_eq(fits, 2);
     ck_assert(strncmp(text, "scene\tfamily\tsweep\tvalue\tn\t", 26) == 0);
-    ck_assert_msg(strstr(text, "a.scene\tambient\tsamples\t4\t4\t4\t2\t32\t24\t768\t") != NULL, "%s", text);
+    ck_assert_msg(strstr(text, "a.scene\tambient_only\tsamples\t4\t4\t4\t2\t32\t24\t768\t") != NULL, "%s", text);
     free(m.text);
     mem_open(&m);
     verify_json_sweep(m.fp, &sw, steps, ran, &vn, &vt);
@@ -525,7 +525,7 @@ static int run_refray(const char *const *args, char *out)
 }
 
 typedef struct scene_files {
-    char dir[64], plain[128], unknown[128], missing[128];
+    char dir[64], plain[128], unknown[128], missing[128], good[128];
 } scene_files;
 
 static void write_text(const char *path, const char *text)
@@ -544,7 +544,9 @@ static void make_scenes(scene_files *f)
     snprintf(f->unknown, sizeof f->unknown, "%s/unknown.scene", f->dir);
     snprintf(f->missing, sizeof f->missing, "%s/missing.scene", f->dir);
     write_text(f->plain, AMBIENT_BODY);
+    snprintf(f->good, sizeof f->good, "%s/good.scene", f->dir);
     write_text(f->unknown, "oracle no_such_family\n" AMBIENT_BODY);
+    write_text(f->good, "oracle ambient_only\n" AMBIENT_BODY);
 }
 
 static void remove_scenes(const scene_files *f)
@@ -574,6 +576,61 @@ START_TEST(test_cli_verify_exit_codes)
     ck_assert_msg(json_valid(out), "not JSON:\n%s", out);
     const char *two[] = {"verify", f.unknown, f.plain, NULL};
     ck_assert_int_eq(run_refray(two, out), 65);
+    remove_scenes(&f);
+}
+END_TEST
+
+/* A scene the family accepts passes: exit 0, a "pass" row; with --json
+ * a one-element array; a sweep writes its TSV. */
+START_TEST(test_cli_verify_passes)
+{
+    scene_files f;
+    char out[OUT_MAX], tsv[160];
+    make_scenes(&f);
+    const char *good[] = {"verify", f.good, NULL};
+    ck_assert_int_eq(run_refray(good, out), 0);
+    ck_assert_msg(strstr(out, "ambient_only") && strstr(out, "  pass\n") && strstr(out, "1 passed"), "%s", out);
+    const char *json[] = {"verify", "--json", "--samples", "1", f.good, NULL};
+    ck_assert_int_eq(run_refray(json, out), 0);
+    ck_assert_msg(json_valid(out) && strstr(out, "\"verdict\": \"pass\"") && strstr(out, "\"rays\": 768"), "%s",
+                  out);
+    snprintf(tsv, sizeof tsv, "%s/sweep.tsv", f.dir);
+    const char *sweep[] = {"verify", "--sweep", "pixel-samples=1,2", "--tsv", tsv, f.good, NULL};
+    ck_assert_int_eq(run_refray(sweep, out), 0);
+    ck_assert_msg(strstr(out, "not meaningful") != NULL, "%s", out);
+    ck_assert_int_eq(access(tsv, R_OK), 0);
+    const char *mixed[] = {"verify", f.good, f.unknown, NULL};
+    ck_assert_int_eq(run_refray(mixed, out), 1);
+    remove_scenes(&f);
+}
+END_TEST
+
+/* The exact image written by `refray oracle` matches a render of the
+ * scene to float precision (PFM stores floats: 2^-24 relative), and the
+ * mask has the image's size. */
+START_TEST(test_cli_oracle_writes_the_exact_image)
+{
+    scene_files f;
+    char out[OUT_MAX], exact[160], mask[160], render[160], err[256];
+    make_scenes(&f);
+    snprintf(exact, sizeof exact, "%s/exact.pfm", f.dir);
+    snprintf(mask, sizeof mask, "%s/mask.pgm", f.dir);
+    snprintf(render, sizeof render, "%s/render.pfm", f.dir);
+    const char *oracle[] = {"oracle", f.good, "-o", exact, "--mask", mask, NULL};
+    ck_assert_int_eq(run_refray(oracle, out), 0);
+    ck_assert_msg(strstr(out, "family ambient_only, 32x24") && strstr(out, "pixels excluded"), "%s", out);
+    unsigned char *m;
+    ck_assert_int_eq(verify_mask_read(mask, 32, 24, &m, err, sizeof err), 0);
+    free(m);
+    const char *draw[] = {"render", f.good, "-o", render, "-q", NULL};
+    ck_assert_int_eq(run_refray(draw, out), 0);
+    const char *cmp[] = {"compare", render, exact, "--mask", mask, "--tolerance", "1e-7", NULL};
+    ck_assert_int_eq(run_refray(cmp, out), 0);
+    rf_image img;
+    ck_assert_int_eq(img_read(exact, &img, err, sizeof err), 0);
+    ck_assert_near(img_pixel(&img, 16, 12)[0], 0.4, 1e-7); /* Kd * Ia, red */
+    ck_assert_near(img_pixel(&img, 0, 0)[2], 0.3, 1e-7);   /* the background */
+    img_free(&img);
     remove_scenes(&f);
 }
 END_TEST
@@ -637,6 +694,8 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_json_results_well_formed);
     tcase_add_test(tc, test_verify_tsv_and_json_sweep);
     tcase_add_test(tc, test_cli_verify_exit_codes);
+    tcase_add_test(tc, test_cli_verify_passes);
+    tcase_add_test(tc, test_cli_oracle_writes_the_exact_image);
     tcase_add_test(tc, test_cli_verify_usage_errors);
     tcase_add_test(tc, test_cli_oracle_exit_codes);
     suite_add_tcase(s, tc);
