@@ -307,10 +307,13 @@ static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
     real det = e[0] + e[1] + e[2];
     if (det == 0.0)
         return 0;
-    /* t = (sum of e_i times the vertex's z distance) / det, z scaled by 1/dz. */
-    out->t = (e[0] * pz[0] + e[1] * pz[1] + e[2] * pz[2]) / (det * dz);
+    /* t = the barycentric mean of the vertices' z distances, over dz.  The
+     * paper's sum of e_i pz_i before dividing by det is a product of three
+     * coordinates: it overflows for a triangle at 2^342 (and underflows at
+     * 2^-342) where the weights b_i = e_i / det, free of scale, do not. */
     for (int i = 0; i < 3; i++)
         out->b[i] = e[i] / det;
+    out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;
     return 1;
 }
 

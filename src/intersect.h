@@ -28,10 +28,12 @@
  *     touched, or a flat box) it is one hit with the entry face's normal;
  *   - triangle: watertight (Woop, Benthin, Wald 2013): a ray through a
  *     shared edge or vertex of a mesh hits at least one of its triangles.
- * Numeric domain: hit/miss decisions multiply coordinates together, so they
- * are exact in sign only while such products stay normal doubles: keep
+ * Numeric domain: hit/miss decisions multiply two coordinates together, so
+ * they are exact in sign only while such products stay normal doubles: keep
  * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
- * is guarded against underflow).  Nothing here checks it.
+ * is guarded against underflow).  No computation multiplies three, so a
+ * scene scaled by a power of two within that range renders bit for bit the
+ * same (tests/test_stability.c, scale_*.scene).  Nothing here checks it.
  */
 #ifndef REFRAY_INTERSECT_H
 #define REFRAY_INTERSECT_H

@@ -116,32 +116,61 @@ static double row_length(const xform *a, int i)
     return vec_length(vec_make(a->m[i][0], a->m[i][1], a->m[i][2]));
 }
 
+/* The power of two e with the row's largest entry in [1, 2) after scaling by
+ * 2^-e (0 for a zero row): an exact scaling that keeps the products below
+ * from overflowing or underflowing whatever the transform's scale. */
+static int row_exponent(const xform *a, int i)
+{
+    double m = fmax(fabs(a->m[i][0]), fmax(fabs(a->m[i][1]), fabs(a->m[i][2])));
+    int e = 0;
+    if (m > 0.0)
+        (void)frexp(m, &e);
+    return e - 1;
+}
+
+/* m = D^-1 a's linear part, row i divided by 2^e[i] (row_exponent). */
+static void scale_rows(const xform *a, xform *m, int e[3])
+{
+    *m = *a;
+    for (int i = 0; i < 3; i++) {
+        e[i] = row_exponent(a, i);
+        for (int j = 0; j < 3; j++)
+            m->m[i][j] = ldexp(a->m[i][j], -e[i]);
+    }
+}
+
 /*
- * The inverse of p' = L p + T is p = L^-1 p' - L^-1 T.  L^-1 is the
- * adjugate over the determinant: entry (j,i) is the cofactor of (i,j),
- * which with cyclic indices is a 2x2 determinant and needs no sign.
- * Returns 0 (and leaves *inverse alone) when L is singular: det is 0 or not
- * finite, the rows are dependent to rounding (SINGULAR_RATIO), or an entry of
- * the inverse overflows.
+ * The inverse of p' = L p + T is p = L^-1 p' - L^-1 T.  Write L = D M with
+ * D = diag(2^e_i) scaling row i of L to M's row (largest entry in [1, 2)):
+ * then L^-1 = M^-1 D^-1, and M^-1 is the adjugate of M over det M: entry
+ * (j,i) is the cofactor of (i,j), which with cyclic indices is a 2x2
+ * determinant and needs no sign.  The scaling is exact, so the result is the
+ * plain adjugate formula's to the bit whenever that one neither overflows nor
+ * underflows, and it also inverts `scale 2^400` or `scale 1e-300`, whose
+ * determinant alone is out of range.  Returns 0 (and leaves *inverse alone)
+ * when L is singular: det M is 0, the rows are dependent to rounding
+ * (SINGULAR_RATIO), or an entry of the inverse overflows.
  */
 int xform_invert(const xform *a, xform *inverse)
 {
-    xform r;
+    xform r, m;
     double cof[3][3];
+    int e[3];
+    scale_rows(a, &m, e);
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
         for (int j = 0; j < 3; j++) {
             int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            cof[i][j] = a->m[i1][j1] * a->m[i2][j2] - a->m[i1][j2] * a->m[i2][j1];
+            cof[i][j] = m.m[i1][j1] * m.m[i2][j2] - m.m[i1][j2] * m.m[i2][j1];
         }
     }
-    double det = a->m[0][0] * cof[0][0] + a->m[0][1] * cof[0][1] + a->m[0][2] * cof[0][2];
-    double bound = row_length(a, 0) * row_length(a, 1) * row_length(a, 2);
+    double det = m.m[0][0] * cof[0][0] + m.m[0][1] * cof[0][1] + m.m[0][2] * cof[0][2];
+    double bound = row_length(&m, 0) * row_length(&m, 1) * row_length(&m, 2);
     if (det == 0.0 || !isfinite(det) || !(fabs(det) > SINGULAR_RATIO * bound))
         return 0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            r.m[i][j] = cof[j][i] / det;
+            r.m[i][j] = ldexp(cof[j][i] / det, -e[j]);
     for (int i = 0; i < 3; i++) {
         r.m[i][3] = -(r.m[i][0] * a->m[0][3] + r.m[i][1] * a->m[1][3] + r.m[i][2] * a->m[2][3]);
         for (int j = 0; j < 4; j++)
@@ -195,10 +224,19 @@ int xform_is_identity(const xform *a)
  */
 int xform_is_similarity(const xform *a, double *scale)
 {
+    /* Work on M = L / 2^e with e the largest row exponent (exact): L^T L
+     * would overflow or underflow for a scale beyond 2^+-511, M^T M never. */
+    xform m;
+    int e[3];
+    scale_rows(a, &m, e);
+    int top = e[0] > e[1] ? (e[0] > e[2] ? e[0] : e[2]) : (e[1] > e[2] ? e[1] : e[2]);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            m.m[i][j] = ldexp(a->m[i][j], -top);
     double g[3][3], s2 = 0.0;
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) {
-            g[i][j] = a->m[0][i] * a->m[0][j] + a->m[1][i] * a->m[1][j] + a->m[2][i] * a->m[2][j];
+            g[i][j] = m.m[0][i] * m.m[0][j] + m.m[1][i] * m.m[1][j] + m.m[2][i] * m.m[2][j];
         }
         s2 += g[i][i] / 3.0;
     }
@@ -208,12 +246,12 @@ int xform_is_similarity(const xform *a, double *scale)
         for (int j = 0; j < 3; j++)
             if (!(fabs(g[i][j] - (i == j ? s2 : 0.0)) <= SIMILARITY_TOL * s2))
                 return 0;
-    double det = a->m[0][0] * (a->m[1][1] * a->m[2][2] - a->m[1][2] * a->m[2][1])
-               - a->m[0][1] * (a->m[1][0] * a->m[2][2] - a->m[1][2] * a->m[2][0])
-               + a->m[0][2] * (a->m[1][0] * a->m[2][1] - a->m[1][1] * a->m[2][0]);
+    double det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1])
+               - m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0])
+               + m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
     if (!(det > 0.0))
         return 0;
     if (scale)
-        *scale = sqrt(s2);
+        *scale = ldexp(sqrt(s2), top);
     return 1;
 }

@@ -99,6 +99,28 @@ START_TEST(test_xform_invert_refuses_singular)
 }
 END_TEST
 
+/* A uniform scale 2^k with a turn: the determinant s^3 (2^+-1200) is out of
+ * range, the inverse is not.  The inverse of the scaled transform is the
+ * unscaled inverse times 2^-k to the bit (powers of two are exact), and the
+ * scaled transform is a similarity with scale exactly 2^k. */
+START_TEST(test_xform_invert_huge_and_tiny_scales)
+{
+    static const int ks[] = {400, -400, 1000, -1000};
+    xform r = xform_rotate_xyz(vec_make(17, -40, 123)), unscaled;
+    ck_assert(xform_invert(&r, &unscaled));
+    for (int i = 0; i < 4; i++) {
+        xform s = xform_scale(vec_splat(ldexp(1.0, ks[i]))), a = xform_compose(&s, &r), inv;
+        ck_assert_msg(xform_invert(&a, &inv), "scale 2^%d refused", ks[i]);
+        for (int row = 0; row < 3; row++)
+            for (int col = 0; col < 3; col++)
+                ck_assert(inv.m[row][col] == ldexp(unscaled.m[row][col], -ks[i]));
+        double scale = 0;
+        ck_assert(xform_is_similarity(&a, &scale));
+        ck_assert(scale == ldexp(1.0, ks[i]));
+    }
+}
+END_TEST
+
 START_TEST(test_xform_normal_stays_perpendicular)
 {
     xform a = general_xform(), inv;
@@ -197,6 +219,7 @@ Suite *suite_xform(void)
     tcase_add_test(tc, test_xform_invert_round_trip);
     tcase_add_test(tc, test_xform_invert_by_hand);
     tcase_add_test(tc, test_xform_invert_refuses_singular);
+    tcase_add_test(tc, test_xform_invert_huge_and_tiny_scales);
     tcase_add_test(tc, test_xform_normal_stays_perpendicular);
     tcase_add_test(tc, test_xform_rotate_xyz_right_angles_exact);
     tcase_add_test(tc, test_xform_rotate_xyz_order_and_general_angle);
