@@ -81,7 +81,7 @@ ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev)
 
-.PHONY: all deps check test demo bench fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -119,6 +119,22 @@ bench: $(BENCH)
 	$(BENCH) -r $(BENCH_RUNS) -w $(BENCH_WIDTH) $(BENCH_SCENES)
 
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+# POV-Ray checked by refray's oracle (spec/crosscheck.md): installs povray
+# when missing, exports, renders and measures every analytic scene, and
+# prints the table (also in $(BUILD)/crosscheck/table.md).
+# CROSSCHECK_UPDATE=1 writes the table into spec/crosscheck.md.
+POVCHECK := $(BUILD)/povcheck
+CROSSCHECK_SCENES ?= $(sort $(wildcard scenes/analytic/*.scene))
+CROSSCHECK_UPDATE ?= 0
+
+crosscheck: $(REFRAY) $(POVCHECK)
+	$(Q)REFRAY=$(REFRAY) POVCHECK=$(POVCHECK) OUT=$(BUILD)/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
+	  sh tests/crosscheck.sh $(CROSSCHECK_SCENES)
+
+$(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
 

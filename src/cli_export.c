@@ -30,6 +30,11 @@ static const char export_help[] =
     "  -o, --output OUT    write OUT atomically (default: stdout)\n"
     "  --area-lights       distributed lights as POV-Ray area_light (approximate)\n"
     "                      instead of their samples as point lights (the default)\n"
+    "  --plain-sheets      keep ior 1 on surfaces that pass rays straight on (POV-Ray\n"
+    "                      then does not count those passes as trace levels)\n"
+    "  --scale S           multiply every light, the ambient light and the background\n"
+    "                      by S > 0, and so the image (a power of two keeps it exact;\n"
+    "                      lets a picture brighter than 1 fit a 16-bit file)\n"
     "and -W and the input limits of `refray --help`.\n";
 
 static int take_value(int argc, char **argv, int *i, const char **value)
@@ -52,6 +57,18 @@ static int export_option(export_args *a, int argc, char **argv, int *i)
         return take_value(argc, argv, i, &a->format);
     if (strcmp(opt, "--area-lights") == 0)
         return a->pov.area_lights = 1;
+    if (strcmp(opt, "--plain-sheets") == 0)
+        return a->pov.plain_sheets = 1;
+    if (strcmp(opt, "--scale") == 0) {
+        const char *v;
+        if (!take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->pov.scale))
+            return 0;
+        if (!(a->pov.scale > 0)) {
+            cli_usage_error("--scale takes a number > 0, not '%s'", v);
+            return 0;
+        }
+        return 1;
+    }
     return -1;
 }
 

@@ -277,7 +277,18 @@ static int tir_differs(const rf_material *m)
            fabs(m->ks.z + m->t - 1) > 1e-12;
 }
 
-static void check_material(const rf_scene *s, int index, pov_notes *n)
+/* [XCHK-MAP-LEVEL-1] A transparent surface with the same ior on both sides
+ * (a sheet, or a solid of ior 1) passes the ray straight on.  refray counts
+ * that as a level of depth; POV-Ray does not when the two iors are equal
+ * (it continues the ray), so by default each such surface gets its own ior
+ * a few float steps above 1 (POV-Ray keeps iors in single precision). */
+static int passes_straight(const rf_scene *s, const rf_prim *p)
+{
+    const rf_material *m = &s->materials[p->material];
+    return s->image.max_depth > 1 && m->t > 0 && (!is_solid(p) || m->ior == 1);
+}
+
+static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_notes *n)
 {
     const rf_material *m = &s->materials[index];
     int solid, sheet, deep = s->image.max_depth > 1;
@@ -294,10 +305,14 @@ static void check_material(const rf_scene *s, int index, pov_notes *n)
     if (deep && solid && m->t > 0 && m->ior != 1 && tir_differs(m))
         add_note(n, "%s: on total internal reflection POV-Ray adds the mirror ray with weight 1, refray "
                  "with Ks + t (they agree only where Ks + t = 1)", name);
-    if (deep && m->t > 0 && (sheet || m->ior == 1))
+    if (deep && m->t > 0 && (sheet || m->ior == 1) && o->plain_sheets)
         add_note(n, "%s: POV-Ray passes a ray straight through a surface with the same ior on both sides "
                  "without counting a trace level, refray counts one (they differ only where max_depth cuts "
                  "such a path)", name);
+    else if (deep && m->t > 0 && (sheet || m->ior == 1))
+        add_note(n, "%s: its surfaces get iors 1 + j 2^-22 (j <= %d, one per surface) so that POV-Ray counts a "
+                 "straight pass as a trace level as refray does; rays then bend by up to j 2.4e-7 tan(incidence)",
+                 name, POV_NUDGE_CYCLE);
 }
 
 /* [XCHK-MAP-MESH-2] POV-Ray turns a mirror ray that a vertex normal sends
@@ -325,7 +340,7 @@ int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes)
     for (int i = 0; i < s->light_count; i++)
         check_light(s, &s->lights[i], radius, o, notes);
     for (int i = 0; i < s->material_count; i++)
-        check_material(s, i, notes);
+        check_material(s, i, o, notes);
     for (int i = 0; i < s->mesh_count; i++)
         check_mesh(s, &s->meshes[i], notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
@@ -385,7 +400,14 @@ static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const p
                 "Output_Alpha=off\n", w, h);
     if (k > 1)
         fprintf(fp, "// then average each %dx%d block of pixels: refray's %dx%d grid per pixel.\n", k, k, k, k);
-    fprintf(fp, "// pov-args: +W%d +H%d -A\n// pov-downsample: %d\n", w, h, k);
+    if (o->scale > 0 && o->scale != 1) {
+        fputs("// then divide it by ", fp);
+        put_num(fp, o->scale);
+        fputs(": every light, the ambient light and the background are scaled by it.\n", fp);
+    }
+    fprintf(fp, "// pov-args: +W%d +H%d -A\n// pov-downsample: %d\n// pov-scale: ", w, h, k);
+    put_num(fp, o->scale > 0 ? o->scale : 1);
+    fputc('\n', fp);
     fprintf(fp, "// approximations: %d%s\n", n->count, n->count ? " (see spec/crosscheck.md)" : "");
     for (int i = 0; i < n->count && i < POV_NOTE_MAX; i++) {
         fputs("//   - ", fp);
@@ -399,13 +421,13 @@ static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const p
 
 /* [XCHK-MAP-GLOBAL-1] Linear working space, the ambient light, the depth,
  * and no adaptive cut-off of weak rays. */
-static void write_globals(FILE *fp, const rf_scene *s)
+static void write_globals(FILE *fp, const rf_scene *s, double scale)
 {
     int depth = s->image.max_depth < POV_MAX_TRACE_LEVEL ? s->image.max_depth : POV_MAX_TRACE_LEVEL;
     fputs("global_settings {\n  assumed_gamma 1.0\n  ambient_light rgb ", fp);
-    put_vec(fp, s->ambient);
+    put_vec(fp, vec_scale(s->ambient, scale));
     fprintf(fp, "\n  max_trace_level %d\n  adc_bailout 0\n}\n\nbackground { rgb ", depth);
-    put_vec(fp, s->image.background);
+    put_vec(fp, vec_scale(s->image.background, scale));
     fputs(" }\n\n", fp);
 }
 
@@ -458,13 +480,13 @@ static void write_point_source(FILE *fp, vec3 pos, rgb power, const fade *f)
 /* [XCHK-MAP-DISTANT-1] A parallel light: POV-Ray shades with the fixed
  * direction and tests shadows up to the plane through its location, which
  * is put far behind everything (1000 scene radii) so no occluder is cut. */
-static void write_distant(FILE *fp, const rf_light *l, vec3 centre, double radius)
+static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre, double radius)
 {
     vec3 from = vec_sub(centre, vec_scale(l->direction, 1000.0 * radius));
     fputs("light_source { ", fp);
     put_vec(fp, to_pov(from));
     fputs(" color rgb ", fp);
-    put_vec(fp, l->power);
+    put_vec(fp, vec_scale(l->power, scale));
     fputs(" parallel point_at ", fp);
     put_vec(fp, to_pov(vec_add(from, l->direction)));
     fputs(" }\n", fp);
@@ -528,15 +550,17 @@ static void write_area(FILE *fp, const rf_light *l, const fade *f)
 
 static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 centre, double radius)
 {
+    double scale = o->scale > 0 ? o->scale : 1.0;
     for (int i = 0; i < s->light_count; i++) {
         const rf_light *l = &s->lights[i];
         fade f;
         light_fade(l, radius, &f);
+        f.colour *= scale;
         fprintf(fp, "// %s %d\n", light_word(l->kind), i + 1);
         if (l->kind == LIGHT_POINT)
             write_point_source(fp, l->position, l->power, &f);
         else if (l->kind == LIGHT_DISTANT)
-            write_distant(fp, l, centre, radius);
+            write_distant(fp, l, scale, centre, radius);
         else if (o->area_lights)
             write_area(fp, l, &f);
         else
@@ -577,7 +601,7 @@ static void write_texture(FILE *fp, int index, const rf_material *m)
  * triangle) passes rays straight on, as POV-Ray does with ior 1 (a POV-Ray
  * plane is a half-space and would bend them).  A clear surface (t = 1)
  * lets all light through, which no_shadow says without tracing it. */
-static void write_material_ref(FILE *fp, const rf_scene *s, const rf_prim *p)
+static void write_material_ref(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
 {
     const rf_material *m = &s->materials[p->material];
     fprintf(fp, "  texture { RF_T%d }\n", p->material);
@@ -585,6 +609,10 @@ static void write_material_ref(FILE *fp, const rf_scene *s, const rf_prim *p)
         fputs("  interior { ior ", fp);
         put_num(fp, m->ior);
         fputs(" }\n", fp);
+    } else if (passes_straight(s, p) && !o->plain_sheets) {
+        fputs("  interior { ior ", fp);
+        put_num(fp, 1.0 + (1 + (*nudged)++ % POV_NUDGE_CYCLE) * POV_NUDGE);
+        fputs(" }  // not 1: see [XCHK-MAP-LEVEL-1]\n", fp);
     }
     if (m->t >= 1)
         fputs("  no_shadow\n", fp);
@@ -652,10 +680,10 @@ static void write_shape(FILE *fp, const rf_prim *p)
     fputc('\n', fp);
 }
 
-static void write_prim(FILE *fp, const rf_scene *s, const rf_prim *p)
+static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
 {
     write_shape(fp, p);
-    write_material_ref(fp, s, p);
+    write_material_ref(fp, s, o, p, nudged);
     if (p->has_xform)
         write_matrix(fp, &p->to_world);
     fputs("}\n", fp);
@@ -675,7 +703,7 @@ static void triangle_normals(const rf_prim *p, vec3 n[3])
  * sharing: the corners are written as refray holds them), with its vertex
  * normals if any triangle has them, and an inside_vector so that POV-Ray
  * treats it as a solid for refraction, as refray does. */
-static void write_mesh(FILE *fp, const rf_scene *s, const rf_mesh *m)
+static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_mesh *m, int *nudged)
 {
     const rf_prim *tri = &s->prims[m->first_prim];
     int smooth = 0;
@@ -703,12 +731,13 @@ static void write_mesh(FILE *fp, const rf_scene *s, const rf_mesh *m)
     for (int i = 0; i < m->count; i++)
         fprintf(fp, ",\n    <%d, %d, %d>", 3 * i, 3 * i + 1, 3 * i + 2);
     fputs(" }\n  inside_vector <0, 0, 1>\n", fp);
-    write_material_ref(fp, s, tri);
+    write_material_ref(fp, s, o, tri, nudged);
     fputs("}\n", fp);
 }
 
-static void write_geometry(FILE *fp, const rf_scene *s)
+static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
 {
+    int nudged = 0;
     for (int i = 0; i < s->material_count; i++)
         write_texture(fp, i, &s->materials[i]);
     fputc('\n', fp);
@@ -716,10 +745,10 @@ static void write_geometry(FILE *fp, const rf_scene *s)
         const rf_prim *p = &s->prims[i];
         if (p->kind == PRIM_TRIANGLE && p->mesh >= 0) {
             if (s->meshes[p->mesh].first_prim == i)
-                write_mesh(fp, s, &s->meshes[p->mesh]);
+                write_mesh(fp, s, o, &s->meshes[p->mesh], &nudged);
             continue;
         }
-        write_prim(fp, s, p);
+        write_prim(fp, s, o, p, &nudged);
     }
 }
 
@@ -730,10 +759,10 @@ int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *
     if (!pov_export_check(s, o, notes))
         return REFRAY_EXIT_DATAERR;
     write_header(fp, s, o, notes);
-    write_globals(fp, s);
+    write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
     write_camera(fp, s);
     write_lights(fp, s, o, centre, radius);
-    write_geometry(fp, s);
+    write_geometry(fp, s, o);
     return fflush(fp) != 0 || ferror(fp) ? REFRAY_EXIT_IOERR : 0;
 }
 

@@ -39,6 +39,16 @@ typedef struct pov_opts {
      * averages visibility apart from shading (approximate in penumbrae). */
     int area_lights;
     const char *source;  /* the scene's path for the header comment, or NULL */
+    /* > 0: every light, the ambient light and the background are
+     * multiplied by scale, and so is the whole image (it is linear in
+     * them jointly); a power of two keeps every value exact.  It lets an
+     * image brighter than 1 fit a 16-bit file.  0 means 1. */
+    double scale;
+    /* 1: surfaces that pass rays straight on keep ior 1, so POV-Ray does
+     * not count those passes as trace levels (spec/crosscheck.md,
+     * [XCHK-MAP-LEVEL-1]); 0 (default): each gets its own ior
+     * 1 + j POV_NUDGE, which POV-Ray counts as refray does. */
+    int plain_sheets;
 } pov_opts;
 
 /* The largest max_trace_level POV-Ray 3.7 accepts (it clamps to it). */
@@ -50,6 +60,13 @@ typedef struct pov_opts {
 #define POV_LINEAR_FADE 1e-9
 #define POV_SQUARE_FADE 1e-5
 
+/* The step between the iors of straight-passing surfaces: 2^-22, two
+ * float steps at 1 (POV-Ray keeps iors as floats and continues a ray
+ * unbent and uncounted when the ratio is within 1e-10 of 1).  The j-th such
+ * surface gets 1 + (1 + j mod POV_NUDGE_CYCLE) POV_NUDGE. */
+#define POV_NUDGE (1.0 / 4194304.0)
+#define POV_NUDGE_CYCLE 1024
+
 /*
  * Finds what cannot be mapped: fills notes (cleared first) and returns 1
  * when s can be exported, 0 when it is refused (the reason in notes).
@@ -58,7 +75,8 @@ int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes);
 
 /*
  * Writes s as SDL to fp: a header comment that names the povray options
- * the render needs (`// pov-args:` and `// pov-downsample:` lines, read by
+ * the render needs and how to read the image back (`// pov-args:`,
+ * `// pov-downsample:` and `// pov-scale:` lines, read by
  * tests/crosscheck.sh) and lists the approximations, then the scene.
  * Returns 0; REFRAY_EXIT_DATAERR when refused (nothing written); or
  * REFRAY_EXIT_IOERR when a write to fp failed.  notes as pov_export_check.

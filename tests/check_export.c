@@ -84,7 +84,7 @@ static char *export_text(const char *text, const pov_opts *o, pov_notes *notes, 
 
 static char *export_default(const char *text, pov_notes *notes)
 {
-    pov_opts o = {0, "t.scene"};
+    pov_opts o = {0, "t.scene", 0, 0};
     int rc;
     char *sdl = export_text(text, &o, notes, &rc);
     ck_assert_int_eq(rc, 0);
@@ -206,17 +206,54 @@ START_TEST(test_pov_export_write_finish)
 END_TEST
 
 /* [XCHK-MAP-SHADOW-1] The glass sphere is a solid and gets the ior; the
- * glass disk is a sheet and must not (POV-Ray would bend rays at it); the
- * clear sphere casts no shadow. */
+ * glass disk is a sheet and must not bend rays; the clear sphere casts no
+ * shadow.  [XCHK-MAP-LEVEL-1] The disk and the clear sphere (ior 1) pass
+ * rays straight on: by default the first gets ior 1 + 2^-22 =
+ * 1.0000002384185791, the second 1 + 2 * 2^-22 = 1.0000004768371582. */
 START_TEST(test_pov_export_write_interior)
 {
     pov_notes n;
     char *sdl = export_default(scene_a, &n);
     ck_assert_has(sdl, "sphere {\n  <0, 1, 2>, 1\n  texture { RF_T1 }\n  interior { ior 1.5 }\n}");
+    ck_assert_has(sdl, "disc {\n  <0, 2, 0>, <0, 1, 0>, 1\n  texture { RF_T1 }\n  interior { ior 1.0000002384185791 }");
+    ck_assert_has(sdl, "sphere {\n  <2, 1, 0>, 0.5\n  texture { RF_T2 }\n  interior { ior 1.0000004768371582 }");
+    ck_assert_int_eq(count_of(sdl, "interior"), 3);
+    ck_assert_int_eq(count_of(sdl, "no_shadow"), 1);
+    free(sdl);
+}
+END_TEST
+
+/* plain_sheets: the disk and the clear sphere keep POV-Ray's ior 1. */
+START_TEST(test_pov_export_write_plain_sheets)
+{
+    pov_opts o = {0, NULL, 0, 1};
+    pov_notes n;
+    int rc;
+    char *sdl = export_text(scene_a, &o, &n, &rc);
+    ck_assert_int_eq(rc, 0);
     ck_assert_has(sdl, "disc {\n  <0, 2, 0>, <0, 1, 0>, 1\n  texture { RF_T1 }\n}");
     ck_assert_has(sdl, "sphere {\n  <2, 1, 0>, 0.5\n  texture { RF_T2 }\n  no_shadow\n}");
     ck_assert_int_eq(count_of(sdl, "interior"), 1);
-    ck_assert_int_eq(count_of(sdl, "no_shadow"), 1);
+    ck_assert_msg(strstr(n.text[0], "without counting a trace level") != NULL, "%s", n.text[0]);
+    free(sdl);
+}
+END_TEST
+
+/* scale 0.25: ambient, background and every light times 0.25, and the
+ * header says so. */
+START_TEST(test_pov_export_write_scale)
+{
+    pov_opts o = {0, NULL, 0.25, 0};
+    pov_notes n;
+    int rc;
+    char *sdl = export_text(scene_a, &o, &n, &rc);
+    ck_assert_int_eq(rc, 0);
+    ck_assert_has(sdl, "// pov-scale: 0.25\n");
+    ck_assert_has(sdl, "ambient_light rgb <0.0625, 0.0625, 0.0625>");
+    ck_assert_has(sdl, "background { rgb <0.03125, 0.0625, 0.125> }");
+    ck_assert_has(sdl, "light_source { <3, 5, -4> color rgb <0.5, 0.5, 0.5> }");
+    ck_assert_has(sdl, "color rgb <0.5, 0.5, 0.5> fade_distance 2 fade_power 1 }");
+    ck_assert_has(sdl, " color rgb <0.125, 0.125, 0.125> parallel point_at <");
     free(sdl);
 }
 END_TEST
@@ -253,7 +290,7 @@ END_TEST
 START_TEST(test_pov_export_check_notes)
 {
     rf_scene *s = load(scene_a);
-    pov_opts o = {0, NULL};
+    pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
     ck_assert_int_eq(n.refused, 0);
@@ -286,7 +323,7 @@ END_TEST
  * and nothing written. */
 START_TEST(test_pov_export_write_refused)
 {
-    pov_opts o = {0, NULL};
+    pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_refused, &o, &n, &rc);
@@ -320,7 +357,7 @@ END_TEST
  * the axes shrink by (n-1)/n = 1/2 to (1,0,0) and (0,0,2)/2, z negated. */
 START_TEST(test_pov_export_write_area_light)
 {
-    pov_opts o = {1, NULL};
+    pov_opts o = {1, NULL, 0, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_rect, &o, &n, &rc);
@@ -385,7 +422,7 @@ START_TEST(test_pov_export_file_atomic)
     fputs("old contents\n", old);
     fclose(old);
     rf_scene *s = load(scene_a);
-    pov_opts o = {0, "t.scene"};
+    pov_opts o = {0, "t.scene", 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_file(s, &o, path, &n, err, sizeof err), 0);
     scene_free(s);
@@ -405,7 +442,7 @@ START_TEST(test_pov_export_file_failures)
 {
     char dir[] = "/tmp/refray-export-XXXXXX", path[256], err[256];
     ck_assert_ptr_nonnull(mkdtemp(dir));
-    pov_opts o = {0, NULL};
+    pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
     rf_scene *bad = load(scene_refused), *good = load(scene_a);
     snprintf(path, sizeof path, "%s/refused.pov", dir);
@@ -548,6 +585,8 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_distant_direction);
     tcase_add_test(sdl, test_pov_export_write_finish);
     tcase_add_test(sdl, test_pov_export_write_interior);
+    tcase_add_test(sdl, test_pov_export_write_plain_sheets);
+    tcase_add_test(sdl, test_pov_export_write_scale);
     tcase_add_test(sdl, test_pov_export_write_matrix);
     tcase_add_test(sdl, test_pov_export_write_triangle);
     tcase_add_test(sdl, test_pov_export_check_notes);
