@@ -81,7 +81,7 @@ ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev)
 
-.PHONY: all deps check test demo bench crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -117,6 +117,17 @@ BENCH_WIDTH ?= 320
 # Figures, not tests: rays per second and how they fall with scene size.
 bench: $(BENCH)
 	$(BENCH) -r $(BENCH_RUNS) -w $(BENCH_WIDTH) $(BENCH_SCENES)
+
+# Figures, not tests: error against light samples and run time over the
+# analytic suite (tests/report.sh, spec/verify.md): PNG and SVG plots, TSVs
+# and summary.md under build/report/.  Installs gnuplot-nox if missing.
+REPORT_DIR := build/report
+report: deps
+	$(Q)command -v gnuplot >/dev/null 2>&1 || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "report: installing gnuplot-nox"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq gnuplot-nox >/dev/null; }
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)sh tests/report.sh $(REFRAY) $(REPORT_DIR) scenes/analytic/*.scene
 
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"

@@ -23,6 +23,7 @@ static const char verify_help[] =
     "  --sweep pixel-samples=K,K,... at each K x K camera grid; report error and\n"
     "                         time per step and the order fitted in log-log\n"
     "  --tsv FILE             with --sweep: every step as a TSV row (spec/verify.md)\n"
+    "  --runs R               render R times, report the median time (default 1)\n"
     "and -W and the input limits of `refray --help`.\n"
     "table: pixels, excluded (ambiguous pixels, not compared), max abs, RMS and\n"
     "max rel error, PSNR (dB, peak = the exact image's largest value), over (pixels\n"
@@ -109,6 +110,8 @@ static int verify_option(verify_args *a, int argc, char **argv, int *i)
         return take_value(argc, argv, i, &a->sweep_text);
     if (strcmp(opt, "--tsv") == 0)
         return take_value(argc, argv, i, &a->tsv_path);
+    if (strcmp(opt, "--runs") == 0)
+        return int_value(argc, argv, i, VERIFY_RUNS_MAX, &a->view.runs);
     return cli_view_option(&a->view, &a->scene.limits, 1, argc, argv, i);
 }
 
@@ -172,10 +175,22 @@ static int name_width(const verify_args *a)
     return w > 48 ? 48 : w;
 }
 
+/* The longest family name, so the family column never runs over. */
+static int family_width(void)
+{
+    int count, w = 6;
+    const oracle_family *const *all = oracle_families(&count);
+    for (int i = 0; i < count; i++) {
+        int n = (int)strlen(all[i]->name);
+        w = n > w ? n : w;
+    }
+    return w;
+}
+
 static void print_header(int w)
 {
-    printf("%-*s  %-16s %7s %6s %10s %10s %10s %8s %6s %9s %9s %9s %12s  %s\n", w, "scene", "family", "pixels",
-           "excl", "max abs", "RMS", "max rel", "PSNR dB", "over", "tolerance", "render s", "oracle s", "rays",
+    printf("%-*s  %-*s %7s %6s %10s %10s %10s %8s %6s %9s %9s %9s %12s  %s\n", w, "scene", family_width(), "family",
+           "pixels", "excl", "max abs", "RMS", "max rel", "PSNR dB", "over", "tolerance", "render s", "oracle s", "rays",
            "verdict");
 }
 
@@ -190,7 +205,7 @@ static void print_psnr(double psnr)
 static void print_row(const verify_result *r, int w)
 {
     static const char *const verdicts[] = {"pass", "FAIL", "REFUSED", "ERROR"};
-    printf("%-*s  %-16s", w, r->scene, r->family[0] ? r->family : "-");
+    printf("%-*s  %-*s", w, r->scene, family_width(), r->family[0] ? r->family : "-");
     if (r->verdict == VERIFY_PASS || r->verdict == VERIFY_FAIL) {
         const image_metrics *m = &r->metrics;
         printf(" %7ld %6ld %10.3e %10.3e %10.3e", (long)r->width * r->height, m->excluded, m->max_abs, m->rms,

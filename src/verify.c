@@ -124,6 +124,36 @@ static void judge(verify_result *r)
     r->status = REFRAY_EXIT_FAIL;
 }
 
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Renders runs times (the image is the same every time: the samples are a
+ * pure function of the pixel), keeps the first image and the median time. */
+static int timed_render(const rf_scene *s, const render_opts *ro, int runs, rf_image *img, render_stats *st,
+                        double *seconds)
+{
+    double times[VERIFY_RUNS_MAX];
+    runs = runs < 1 ? 1 : runs > VERIFY_RUNS_MAX ? VERIFY_RUNS_MAX : runs;
+    for (int i = 0; i < runs; i++) {
+        rf_image again = {0, 0, NULL};
+        render_stats st_again;
+        double start = render_clock();
+        int status = render_image(s, ro, i == 0 ? img : &again, i == 0 ? st : &st_again);
+        times[i] = render_clock() - start;
+        img_free(&again);
+        if (status != REFRAY_EXIT_OK) {
+            img_free(img);
+            return status;
+        }
+    }
+    qsort(times, (size_t)runs, sizeof times[0], by_value);
+    *seconds = runs % 2 ? times[runs / 2] : 0.5 * (times[runs / 2 - 1] + times[runs / 2]);
+    return REFRAY_EXIT_OK;
+}
+
 int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r)
 {
     render_opts ro;
@@ -136,12 +166,11 @@ int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_
     rf_image img = {0, 0, NULL};
     render_stats st;
     memset(&st, 0, sizeof st);
-    double start = render_clock();
-    int status = render_image(s, &ro, &img, &st);
-    r->render_seconds = render_clock() - start;
+    int status = timed_render(s, &ro, o ? o->runs : 1, &img, &st, &r->render_seconds);
     r->oracle_seconds = e->seconds;
     if (status != REFRAY_EXIT_OK) {
-        verify_result_error(r, r->scene, status, "out of memory while rendering");
+        verify_result_error(r, r->scene, status, status == REFRAY_EXIT_SOFTWARE ? "out of memory while rendering"
+                                                                                : "the render was stopped");
         return status;
     }
     r->rays = rays_of(&st.trace);
@@ -465,6 +494,8 @@ void verify_json_result(FILE *fp, const verify_result *r)
     else
         verify_json_string(fp, r->reason);
     if (r->verdict == VERIFY_PASS || r->verdict == VERIFY_FAIL) {
+        json_key(fp, "sampled", 0);
+        fputs(r->sampled ? "true" : "false", fp);
         json_long(fp, "width", r->width);
         json_long(fp, "height", r->height);
         json_long(fp, "samples", r->samples);

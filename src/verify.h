@@ -31,7 +31,11 @@ typedef struct verify_opts {
     int samples;        /* k of the k x k camera grid */
     int max_depth;
     int light_samples;  /* samples of every distributed light */
+    int runs;           /* renders timed, the median reported; 0 or 1: one */
 } verify_opts;
+
+/* Most renders --runs may ask for. */
+enum { VERIFY_RUNS_MAX = 99 };
 
 typedef enum verify_verdict {
     VERIFY_PASS,        /* every compared pixel within the tolerance */
@@ -52,7 +56,8 @@ typedef struct verify_result {
     int sampled;              /* the family converges with the light samples */
     image_metrics metrics;    /* valid when verdict is PASS or FAIL */
     double tolerance;         /* relative, the family's for this render */
-    double render_seconds;    /* wall time of render_image, BVH build included */
+    double render_seconds;    /* wall time of render_image, BVH build included
+                                 (the median of opts.runs renders) */
     double oracle_seconds;    /* wall time of oracle_image */
     long rays;                /* every ray traced: camera, shadow, reflected, refracted */
 } verify_result;
