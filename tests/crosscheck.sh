@@ -70,6 +70,11 @@ scale_for() {
         printf "%.17g\n", 2 ^ -m }'
 }
 
+# Seconds in 3 significant digits.
+secs() {
+    awk -v x="$1" 'BEGIN { if (x == "") print "-"; else printf "%.3g", x }'
+}
+
 # Renders $OUT/$1.pov (POV-Ray reads and writes only in its current
 # directory and /tmp under Debian's povray.conf: run it inside $OUT).
 # Sets pov_image, pov_wall, pov_trace and pov_ok.
@@ -102,46 +107,62 @@ read_values() {
     done
 }
 
-# One scene: a table row into $rows, its notes into $notes_md.
+# Exports, renders and measures one variant of a scene: $1 the scene, $2
+# the label in the table, $3 the file stem, then the extra export options.
+# Adds a row to $rows and the notes to $notes_md; uses ex_* and rf_*.
+pov_row() {
+    scene=$1
+    label=$2
+    stem=$3
+    shift 3
+    if ! "$REFRAY" export "$scene" --to pov --scale "$scale" "$@" -o "$OUT/$stem.pov" -W 2>"$OUT/$stem.notes"
+    then
+        reason=$(sed -n 's/^refray: error: //p' "$OUT/$stem.notes" | head -n 1)
+        printf '| %s | %s | refused by the export | | | | | %s | %s | %s | %s %s | %s/%s |\n' "$label" \
+            "$(num "$ex_peak")" "$(num "$rf_max_abs")" "$(num "$rf_rms")" "$(num "$rf_max_rel")" \
+            "$(secs "$rf_seconds")" "${rf_verdict:-}" "$ex_excluded" "$ex_pixels" >>"$rows"
+        printf '\n### %s\n\nRefused by `refray export`: %s\n' "$label" "$reason" >>"$notes_md"
+        return
+    fi
+    render_pov "$stem"
+    k=$(sed -n 's,^// pov-downsample: ,,p' "$OUT/$stem.pov")
+    pv_max_abs="" pv_rms="" pv_max_rel="" pv_max_rel_bright=""
+    if [ "$pov_ok" = 0 ]; then
+        pov=$("$POVCHECK" compare "$scene" "$OUT/$pov_image" "$k" "$scale" 2>"$OUT/$stem.compare.err") &&
+            read_values pv "$pov"
+    fi
+    peak="$(num "$ex_peak")"
+    [ "$pov_ok" = 0 ] || peak="$peak; POV-Ray failed ($OUT/$stem.pov.log)"
+    printf '| %s | %s | %s | %s | %s | %s | %s (%s) | %s | %s | %s | %s %s | %s/%s |\n' \
+        "$label" "$peak" "$(num "$pv_max_abs")" "$(num "$pv_rms")" "$(num "$pv_max_rel")" \
+        "$(num "$pv_max_rel_bright")" "$pov_wall" "${pov_trace:--}" "$(num "$rf_max_abs")" \
+        "$(num "$rf_rms")" "$(num "$rf_max_rel")" "$(secs "$rf_seconds")" "${rf_verdict:-}" \
+        "$ex_excluded" "$ex_pixels" >>"$rows"
+    printf '\n### %s\n\n' "$label" >>"$notes_md"
+    if grep -q '^refray: approximation: ' "$OUT/$stem.notes"; then
+        sed -n 's/^refray: approximation: \(.*\)/- \1/p' "$OUT/$stem.notes" >>"$notes_md"
+    else
+        echo "- nothing: the export is exact for this scene" >>"$notes_md"
+    fi
+}
+
+# One scene: its exact image and refray's check, then POV-Ray's rows: the
+# default export, and for distributed lights also POV-Ray's own area_light.
 check_scene() {
     scene=$1
     name=$(basename "$scene" .scene)
     exact=$("$POVCHECK" exact "$scene" 2>"$OUT/$name.exact.err") || {
-        printf '| %s | no exact image | | | | | | | | | |\n' "$name" >>"$rows"
+        printf '| %s | no exact image | | | | | | | | | | |\n' "$name" >>"$rows"
         printf '\n### %s\n\nNo exact image: %s\n' "$name" "$(head -n 1 "$OUT/$name.exact.err")" >>"$notes_md"
         return
     }
     read_values ex "$exact"
     scale=$(scale_for "$ex_peak")
-    if ! "$REFRAY" export "$scene" --to pov --scale "$scale" -o "$OUT/$name.pov" -W 2>"$OUT/$name.notes"; then
-        reason=$(sed -n 's/^refray: error: //p' "$OUT/$name.notes" | head -n 1)
-        printf '| %s | refused by the export | | | | | | | | | |\n' "$name" >>"$rows"
-        printf '\n### %s\n\nRefused by `refray export`: %s\n' "$name" "$reason" >>"$notes_md"
-        return
-    fi
-    render_pov "$name"
-    k=$(sed -n 's,^// pov-downsample: ,,p' "$OUT/$name.pov")
-    pov=""
-    if [ "$pov_ok" = 0 ]; then
-        pov=$("$POVCHECK" compare "$scene" "$OUT/$pov_image" "$k" "$scale" 2>"$OUT/$name.compare.err")
-    fi
-    ref=$("$POVCHECK" refray "$scene" 2>"$OUT/$name.refray.err")
-    pv_max_abs="" pv_rms="" pv_max_rel="" pv_max_rel_bright="" rf_max_abs="" rf_rms="" rf_max_rel=""
-    rf_seconds="" rf_verdict="" pv_excluded="$ex_excluded"
-    [ -n "$pov" ] && read_values pv "$pov"
-    [ -n "$ref" ] && read_values rf "$ref"
-    file="$(num "$ex_peak")"
-    [ "$pov_ok" = 0 ] || file="$file; POV-Ray failed ($OUT/$name.pov.log)"
-    printf '| %s | %s | %s | %s | %s | %s | %s (%s) | %s | %s | %s | %s %s | %s/%s |\n' \
-        "$name" "$file" "$(num "$pv_max_abs")" "$(num "$pv_rms")" "$(num "$pv_max_rel")" \
-        "$(num "$pv_max_rel_bright")" "$pov_wall" "${pov_trace:--}" "$(num "$rf_max_abs")" \
-        "$(num "$rf_rms")" "$(num "$rf_max_rel")" "${rf_seconds:--}" "${rf_verdict:-}" \
-        "$pv_excluded" "$ex_pixels" >>"$rows"
-    printf '\n### %s\n\n' "$name" >>"$notes_md"
-    if grep -q '^refray: approximation: ' "$OUT/$name.notes"; then
-        sed -n 's/^refray: approximation: \(.*\)/- \1/p' "$OUT/$name.notes" >>"$notes_md"
-    else
-        echo "- nothing: the export is exact for this scene" >>"$notes_md"
+    rf_max_abs="" rf_rms="" rf_max_rel="" rf_seconds="" rf_verdict=""
+    ref=$("$POVCHECK" refray "$scene" 2>"$OUT/$name.refray.err") && read_values rf "$ref"
+    pov_row "$scene" "$name" "$name"
+    if grep -q '^distributed_light' "$scene"; then
+        pov_row "$scene" "$name (area_light)" "$name.area" --area-lights
     fi
 }
 
