@@ -87,7 +87,8 @@ int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *
  * The same into path, atomically: a temporary "<path>.tmp.XXXXXX" in the
  * same directory is written, flushed, synced and renamed onto path; on any
  * failure it is removed and path is left as it was.  Returns as
- * pov_export_write, with a one-line reason in err for an I/O error.
+ * pov_export_write, with a one-line reason in err (errlen bytes; err may be
+ * NULL only when errlen is 0) for an I/O error.
  */
 int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen);

@@ -121,7 +121,7 @@ pov_row() {
         printf '| %s | %s | refused by the export | | | | | %s | %s | %s | %s %s | %s/%s |\n' "$label" \
             "$(num "$ex_peak")" "$(num "$rf_max_abs")" "$(num "$rf_rms")" "$(num "$rf_max_rel")" \
             "$(secs "$rf_seconds")" "${rf_verdict:-}" "$ex_excluded" "$ex_pixels" >>"$rows"
-        printf '\n### %s\n\nRefused by `refray export`: %s\n' "$label" "$reason" >>"$notes_md"
+        printf '\n#### %s\n\nRefused by `refray export`: %s\n' "$label" "$reason" >>"$notes_md"
         return
     fi
     render_pov "$stem"
@@ -138,7 +138,7 @@ pov_row() {
         "$(num "$pv_max_rel_bright")" "$pov_wall" "${pov_trace:--}" "$(num "$rf_max_abs")" \
         "$(num "$rf_rms")" "$(num "$rf_max_rel")" "$(secs "$rf_seconds")" "${rf_verdict:-}" \
         "$ex_excluded" "$ex_pixels" >>"$rows"
-    printf '\n### %s\n\n' "$label" >>"$notes_md"
+    printf '\n#### %s\n\n' "$label" >>"$notes_md"
     if grep -q '^refray: approximation: ' "$OUT/$stem.notes"; then
         sed -n 's/^refray: approximation: \(.*\)/- \1/p' "$OUT/$stem.notes" >>"$notes_md"
     else
@@ -153,7 +153,7 @@ check_scene() {
     name=$(basename "$scene" .scene)
     exact=$("$POVCHECK" exact "$scene" 2>"$OUT/$name.exact.err") || {
         printf '| %s | no exact image | | | | | | | | | | |\n' "$name" >>"$rows"
-        printf '\n### %s\n\nNo exact image: %s\n' "$name" "$(head -n 1 "$OUT/$name.exact.err")" >>"$notes_md"
+        printf '\n#### %s\n\nNo exact image: %s\n' "$name" "$(head -n 1 "$OUT/$name.exact.err")" >>"$notes_md"
         return
     }
     read_values ex "$exact"
@@ -203,7 +203,7 @@ table=$OUT/table.md
     echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
     cat "$rows"
     echo
-    echo "#### What the export could not match, per scene"
+    echo "### What the export could not match, per scene"
     cat "$notes_md"
 } >"$table"
 cat "$table"
