@@ -266,8 +266,6 @@ START_TEST(test_scene_load_validation_errors)
          "t.scene:1:21: error: degenerate triangle: its corners are on one line (no area)"},
         {"triangle { vertices [1, 0, 0] [1, 0, 0] [0, 1, 0] }",
          "t.scene:1:21: error: degenerate triangle: its corners are on one line (no area)"},
-        {"triangle { vertices [0, 0, 0] [1, 0, 0] [0, 1, 0]  scale [1, 1, 1e-300] scale [1, 1e-300, 1] }",
-         "t.scene:1:73: error: these transforms cannot be undone (the matrix is singular)"},
         /* radius <= 0 */
         {"sphere { radius 0 }", "t.scene:1:17: error: radius must be > 0, got 0"},
         {"disk { radius -2 }", "t.scene:1:15: error: radius must be > 0, got -2"},
