@@ -111,7 +111,7 @@ static void slab_trace(const slab_setup *g, oracle_ray r, slab_path *p)
     p->a = vec_madd(r.origin, r.dir, (z - g->top) / p->cos_theta);
     p->critical = n < 1 && fabs(p->sin_theta - n) <= OPTICS_MARGIN * n;
     p->tir = p->sin_theta > n;
-    if (p->tir)
+    if (p->tir || p->critical)
         return;
     p->sin_t = p->sin_theta / n;
     p->cos_t = sqrt((1 - p->sin_t) * (1 + p->sin_t));
@@ -182,10 +182,11 @@ static int accepts_view(const oracle_view *v, const slab_setup *g, char *why, si
         if (!(height(g, r.origin) > g->top) || !(-vec_dot(r.dir, g->up) > 0))
             return oracle_refuse(why, n, "glass_slab: the camera must be above the slab, looking down at it");
         slab_trace(g, r, &p);
-        if (!within_faces(g, p.a) || (!p.tir && !within_faces(g, p.b)))
+        int through = !p.tir && !p.critical;
+        if (!within_faces(g, p.a) || (through && !within_faces(g, p.b)))
             return oracle_refuse(why, n, "glass_slab: some camera ray does not cross the top and bottom faces "
                                          "(make the slab wider)");
-        for (int i = 0; i < s->light_count && !p.tir; i++)
+        for (int i = 0; i < s->light_count && through; i++)
             if (light_above(g, &s->lights[i]) && !within_faces(g, bottom_crossing(g, &s->lights[i], p.f)))
                 return oracle_refuse(why, n, "glass_slab: light %d reaches the visible floor past the slab's "
                                              "bottom face (make the slab wider)", i + 1);

@@ -100,6 +100,9 @@ static int accepts(const oracle_view *v, char *why, size_t n)
         if (dz == 0 || (sign && (dz > 0) != (sign > 0)))
             return oracle_refuse(why, n, "snell_window: the view must not contain directions parallel to the faces");
         sign = dz > 0 ? 1 : -1;
+    }
+    for (int c = 0; c < 4; c++) {
+        oracle_ray r = optics_corner_ray(v, c);
         optics_bounce b;
         optics_slab_hit(&w.slab, r.origin, r.dir, v->max_depth - 1, &b);
         if (!inside_box(w.box, b.point, across))
