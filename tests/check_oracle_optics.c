@@ -87,7 +87,7 @@ static rgb exact_at(const rf_scene *s, double x, double y)
 
 START_TEST(test_optics_geometric_sum)
 {
-    /* 1 + 1/2 + 1/4 + 1/8 = 1.875; q = 1: m terms of 1; q = 0: only q^0;
+    /* [ORACLE-MIRRORS-4] 1 + 1/2 + 1/4 + 1/8 = 1.875; q = 1: m terms of 1; q = 0: only q^0;
      * (1 - 0.3^6)/0.7 = 0.999271/0.7. */
     ck_assert_rel(optics_geometric_sum(0.5, 4), 1.875, 1e-15);
     ck_assert_double_eq(optics_geometric_sum(1, 7), 7);
@@ -111,7 +111,7 @@ END_TEST
 
 START_TEST(test_optics_slab_hit)
 {
-    /* Walls y = 0 and y = 2, from (0, 1, 0) along (0.6, 0.8, 0): step by
+    /* [ORACLE-MIRRORS-1] Walls y = 0 and y = 2, from (0, 1, 0) along (0.6, 0.8, 0): step by
      * step, the first hit is 1 up (path 1/0.8 = 1.25, x = 0.75) on the top
      * wall, then each crossing of the slab is 2 high (path 2.5, x + 1.5),
      * alternating walls, the vertical direction flipping each time. */
@@ -142,7 +142,7 @@ END_TEST
 
 START_TEST(test_optics_slab_shift)
 {
-    /* sin theta 0.6, cos 0.8, n 1.2: sin theta_t = 0.5, cos = sqrt3/2.
+    /* [ORACLE-SLAB-2] sin theta 0.6, cos 0.8, n 1.2: sin theta_t = 0.5, cos = sqrt3/2.
      * Along the floor the refracted ray falls short by
      * h (tan theta - tan theta_t) = 0.75 - 1/sqrt3, and the perpendicular
      * distance of two parallel lines is that times cos theta. */
@@ -180,7 +180,7 @@ static void ball_by_vectors(double y, double radius, double n, double *ez, doubl
 
 START_TEST(test_optics_ball_trace)
 {
-    /* n = sqrt3, y = R sqrt3/2: i = 60, sin r = 1/2 so r = 30, deviation
+    /* [ORACLE-BALL-1, ORACLE-BALL-2] n = sqrt3, y = R sqrt3/2: i = 60, sin r = 1/2 so r = 30, deviation
      * 2(60 - 30) = 60 degrees; the exit's polar angle 2r - i = 0: the ray
      * leaves on the axis at (R, 0), which is where it crosses it. */
     optics_ball_path p;
@@ -213,7 +213,7 @@ END_TEST
 
 START_TEST(test_optics_ball_paraxial_focus)
 {
-    /* EFL = nR / (2(n - 1)): n 1.5, R 2 gives 3; n 2 (the focus on the
+    /* [ORACLE-BALL-3] EFL = nR / (2(n - 1)): n 1.5, R 2 gives 3; n 2 (the focus on the
      * back surface) gives R. */
     ck_assert_rel(optics_ball_paraxial_focus(2, 1.5), 3, 1e-15);
     ck_assert_rel(optics_ball_paraxial_focus(1, 2), 1, 1e-15);
@@ -238,7 +238,7 @@ END_TEST
 
 START_TEST(test_optics_critical_sin)
 {
-    /* Glass to air: sin theta_c = 1/1.5, theta_c = 41.81 degrees; air to
+    /* [ORACLE-SNELL-1] Glass to air: sin theta_c = 1/1.5, theta_c = 41.81 degrees; air to
      * glass: no total internal reflection (1). */
     ck_assert_rel(optics_critical_sin(1.5, 1), 2.0 / 3, 1e-15);
     ck_assert_near(asin(optics_critical_sin(1.5, 1)) * 180 / acos(-1.0), 41.8103, 1e-4);
@@ -249,7 +249,7 @@ END_TEST
 
 START_TEST(test_optics_light_terms)
 {
-    /* A light at (0, 3, 4) over the origin, N = +y: d = 5, N.L = 3/5;
+    /* [ORACLE-MIRRORS-2] A light at (0, 3, 4) over the origin, N = +y: d = 5, N.L = 3/5;
      * linear, E 10, d0 1: I = 10/6; Kd 0.5: body = 0.5 * 10/6 * 0.6 = 0.5.
      * V = (0, 0.6, -0.8) is L mirrored about N, so V.R = 1:
      * highlight = Ks I = 0.25 * 10/6. */
@@ -310,7 +310,7 @@ END_TEST
 
 START_TEST(test_parallel_mirrors_closed_series)
 {
-    /* One material Kd 0.1, Ks 0.5, Ia 0.5, D 4: 0.05 (1 + 1/2 + 1/4 + 1/8). */
+    /* [ORACLE-MIRRORS-4] One material Kd 0.1, Ks 0.5, Ia 0.5, D 4: 0.05 (1 + 1/2 + 1/4 + 1/8). */
     rf_scene *s = load_text(MIRRORS("4", "[1, 0, 0]", "ambient { color 0.5 }\n"
                                     "plane { material { Kd 0.1 Ks 0.5 } }\n"
                                     "plane { point [0, 2, 0] material { Kd 0.1 Ks 0.5 } }\n"));
@@ -335,7 +335,7 @@ END_TEST
 
 START_TEST(test_parallel_mirrors_lit_straight_down)
 {
-    /* An orthographic ray straight down through (0, ., 0), light at
+    /* [ORACLE-MIRRORS-2, ORACLE-MIRRORS-3] An orthographic ray straight down through (0, ., 0), light at
      * (0, 1, 0): every hit is 1 from the light, N.L = 1 and V = R, so the
      * local colour is Kd E/1 + Ks E/1 = 0.1*2 + 0.5*2 = 1.2 (Ia 0), and
      * with D 3 the series is 1.2 (1 + 0.5 + 0.25) = 2.1. */
@@ -373,7 +373,7 @@ static double mirrors_by_steps(vec3 o, vec3 d, vec3 p, double e, double kd, doub
 
 START_TEST(test_parallel_mirrors_lit_oblique)
 {
-    /* The forward ray of the 1 x 1 camera, along (3, -1, 0.5), against the
+    /* [ORACLE-MIRRORS-1, ORACLE-MIRRORS-2] The forward ray of the 1 x 1 camera, along (3, -1, 0.5), against the
      * step-by-step route; the light off the ray's plane. */
     rf_scene *s = load_text(MIRRORS("6", "[3, 0, 0.5]", "point_light { position [4, 1.3, 1] power 2 d0 0 }\n"
                                     "plane { material { Kd 0.2 Ks 0.6 n 5 } }\n"
@@ -387,7 +387,7 @@ END_TEST
 
 START_TEST(test_parallel_mirrors_horizon_is_ambiguous)
 {
-    /* The forward ray parallel to the walls escapes: ambiguous. */
+    /* [ORACLE-MIRRORS margins] The forward ray parallel to the walls escapes: ambiguous. */
     rgb c;
     rf_scene *s = load_text(MIRRORS("4", "[1, 1, 0]", "plane { material { Ks 0.5 } }\n"
                                     "plane { point [0, 2, 0] material { Ks 0.5 } }\n"));
@@ -407,7 +407,7 @@ END_TEST
 
 START_TEST(test_glass_slab_shift_seen)
 {
-    /* n 1.2: sin theta_t = 0.5; the floor point seen moves back along x by
+    /* [ORACLE-SLAB-2, ORACLE-SLAB-3] n 1.2: sin theta_t = 0.5; the floor point seen moves back along x by
      * h (tan theta - tan theta_t) = 0.75 - 1/sqrt3 (h = 1).  A light at
      * (0, 0.5, 0), E 1, d0 0, linear: with a = 0.75 - 1/sqrt3 the floor is
      * Kd (1/d)(0.5/d) = 0.8 * 0.5 / (a^2 + 0.25), times t^2 = 0.81. */
@@ -424,7 +424,7 @@ END_TEST
 
 START_TEST(test_glass_slab_light_above)
 {
-    /* A distant light straight down, E 1: the floor receives it through
+    /* [ORACLE-SLAB-3] A distant light straight down, E 1: the floor receives it through
      * both faces (S = t^2 = 0.81), N.L = 1: floor = 0.8 * 0.81, seen with
      * weight t^2: 0.81 * 0.8 * 0.81 (with n 1.2 as above). */
     rf_scene *s = load_text(SLAB("3", "1.2", "distant_light { direction [0, -1, 0] power 1 }\n"));
@@ -435,7 +435,7 @@ END_TEST
 
 START_TEST(test_glass_slab_total_reflection)
 {
-    /* ior 0.5 < sin theta 0.6: total reflection at the top face, the
+    /* [ORACLE-SLAB-4] ior 0.5 < sin theta 0.6: total reflection at the top face, the
      * mirror ray goes up to the background: t bg = 0.9 * 0.4.  ior 0.6 =
      * sin theta is the critical angle: ambiguous. */
     rgb c;
@@ -457,7 +457,7 @@ END_TEST
 
 START_TEST(test_snell_window_closed_series)
 {
-    /* Kd 0.3, t 0.7, Ia 0.5, ior 1.5, D 6: L = (1 - t) Kd Ia = 0.045.
+    /* [ORACLE-SNELL-3] Kd 0.3, t 0.7, Ia 0.5, ior 1.5, D 6: L = (1 - t) Kd Ia = 0.045.
      * At 30 degrees from the faces' normal (sin 0.5 < 2/3) the ray leaves:
      * L + t bg = 0.045 + 0.35; at 44 degrees (sin 0.6947 > 2/3) it is
      * totally reflected every time: L (1 - 0.7^6) / 0.3 = 0.045 * 0.882351
@@ -468,7 +468,8 @@ START_TEST(test_snell_window_closed_series)
     rf_scene *s = load_text(text);
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.395), 1e-15);
     scene_free(s);
-    snprintf(text, sizeof text, WINDOW("6", "[0.6946583704589973, 0.7193398003386512, 0]", "ambient { color 0.5 }\n", "%s"), glass);
+    snprintf(text, sizeof text,
+             WINDOW("6", "[0.6946583704589973, 0.7193398003386512, 0]", "ambient { color 0.5 }\n", "%s"), glass);
     s = load_text(text);
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.045 * 0.882351 / 0.3), 1e-15);
     scene_free(s);
@@ -477,7 +478,7 @@ END_TEST
 
 START_TEST(test_snell_window_critical_angle_is_ambiguous)
 {
-    /* sin theta = 2/3 exactly in the scene (look_at (2/3, sqrt5/3, 0)):
+    /* [ORACLE-SNELL-1] sin theta = 2/3 exactly in the scene (look_at (2/3, sqrt5/3, 0)):
      * within the 1e-9 margin of the critical angle. */
     rgb c;
     rf_scene *s = load_text(WINDOW("4", "[0.6666666666666666, 0.7453559924999299, 0]", "", "Kd 0.3 t 0.7 ior 1.5"));
@@ -488,7 +489,7 @@ END_TEST
 
 START_TEST(test_snell_window_lit)
 {
-    /* Straight up, light at (0, -0.5, 0), linear E 1, d0 0; Kd 0.2, Ks 0.1,
+    /* [ORACLE-SNELL-2, ORACLE-SNELL-3] Straight up, light at (0, -0.5, 0), linear E 1, d0 0; Kd 0.2, Ks 0.1,
      * n 5, t 0.6, Ia 0, bg 0.5, D 3.  Hits at the top (d 1.5, I 2/3), the
      * bottom (d 0.5, I 2), the top; N.L = 1 and V = R each time, so the
      * local colour is (1 - t) Kd I + Ks I: 0.12, 0.36, 0.12.  Inside the
@@ -512,7 +513,7 @@ END_TEST
 
 START_TEST(test_ball_lens_sixty_degrees)
 {
-    /* n = sqrt3, y = sqrt3/2: the ray leaves at (1, 0) on the axis turned
+    /* [ORACLE-BALL-2, ORACLE-BALL-4] n = sqrt3, y = sqrt3/2: the ray leaves at (1, 0) on the axis turned
      * 60 degrees, and meets the screen, 2 from the centre along the view,
      * at y_s = -(2 - 1) tan 60 = -sqrt3: world (-sqrt3, 0, -2).
      * A light at (-sqrt3, 0, -1.5): d 0.5, N.L 1, linear E 1: the screen is
@@ -533,7 +534,7 @@ END_TEST
 
 START_TEST(test_ball_lens_turns_back_and_depth)
 {
-    /* n = sqrt3 turns the rays past 90 degrees for y > 0.9836 (i - r = 45
+    /* [ORACLE-BALL-4] n = sqrt3 turns the rays past 90 degrees for y > 0.9836 (i - r = 45
      * degrees): y = 0.995 sees t^2 bg = 0.64 * 0.25.  Below depth 3 the
      * ball's own colour, 0 with Kd 0 and Ks 0, is all. */
     rf_scene *s = load_text(BALL("3", "ior 1.7320508075688772", "ambient { color 1 }\n"));
@@ -557,7 +558,7 @@ END_TEST
 
 START_TEST(test_ball_lens_focus_seen_by_the_tracer)
 {
-    /* The screen at the paraxial focus EFL = nR/(2(n-1)) = 1.5 (n 1.5):
+    /* [ORACLE-BALL-3] The screen at the paraxial focus EFL = nR/(2(n-1)) = 1.5 (n 1.5):
      * rays near the axis all land near the axis point, y_s = O(y^3), so
      * the tracer's pixels near the centre show the screen's colour at the
      * axis point.  A light on the axis 0.4 in front of the screen, E 1,
@@ -659,10 +660,11 @@ END_TEST
 
 START_TEST(test_parallel_mirrors_far_from_origin)
 {
-    /* The mirror scene moved 5000 away: the tracer's spawn offsets grow to
-     * 2^-42 * 5000 = 1.1e-9 of the 2-unit gap, slips along the walls pass
-     * the tolerance at many pixels (measured: 456 pixels over 1e-9 without
-     * the exclusion).  The sensitive pixels are excluded, the rest pass. */
+    /* [ORACLE-MIRRORS margins] The mirror scene moved 5000 away: the
+     * tracer's spawn offsets grow to 2^-42 * 5000 = 1.1e-9 of the 2-unit
+     * gap, and the slips along the walls pass the tolerance at many pixels
+     * (measured without the exclusion: 254 pixels over 1e-9, up to 2.0e-9).
+     * The sensitive pixels are excluded, the rest pass. */
     rf_scene *s = load_text("oracle parallel_mirrors\n"
                             "image { width 96 height 72 max_depth 6 }\n"
                             "camera { eye [5000, 5001, 5000] look_at [5000, 5000.95, 4997] fov 70 }\n"
@@ -681,12 +683,13 @@ END_TEST
 
 START_TEST(test_ball_lens_rim_sensitivity)
 {
-    /* A strip across the rim of a unit ball (n 1.5) with no ambient: near
-     * y = 0.99837 the exit rays turn through 90 degrees; the tracer's exit
-     * angle (its entry point moved in by the spawn offset, amplified by
-     * n cos r / cos i) moves far screen points by more than 1e-9 (measured
-     * 2e-7 there without the exclusion).  Those are excluded; the rest,
-     * the background beyond included, pass. */
+    /* [ORACLE-BALL margins] A strip across the rim of a unit ball (n 1.5)
+     * with no ambient: near y = 0.99837 the exit rays turn through 90
+     * degrees; the tracer's exit angle (its entry point moved in by the
+     * spawn offset, amplified by n cos r / cos i) moves far screen points by
+     * more than 1e-9 (measured without the exclusion: 22 pixels over, up to
+     * 6.3e-8).  Those are excluded; the rest, the background beyond
+     * included, pass. */
     rf_scene *s = load_text("oracle ball_lens\n"
                             "image { width 2000 height 1 max_depth 3 background [0.1, 0.2, 0.4] }\n"
                             "camera { orthographic eye [0.99, 0, 6] look_at [0.99, 0, 0] width 0.02 }\n"
