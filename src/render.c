@@ -11,6 +11,7 @@
 #include "camera.h"
 #include "render.h"
 #include "sampler.h"
+#include "shade.h"
 
 double render_clock(void)
 {
@@ -21,17 +22,19 @@ double render_clock(void)
 
 rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, trace_stats *st)
 {
-    static const medium_stack outside = {0, {0}, {0}};
     uint64_t pixel_key = sampler_key((uint64_t)j * (uint64_t)width + (uint64_t)i, 0x5eed);
     rgb sum = vec_splat(0);
     for (int b = 0; b < k; b++) {
         for (int a = 0; a < k; a++) {
             real x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
             ray r = camera_ray(&t->scene->camera, width, height, x, y);
+            medium_stack media = t->eye_media;
+            if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
+                trace_media_at(t, r.origin, &media, st);
             st->camera_rays++;
             st->tree_rays = 0;
-            rgb c = trace_ray(t, &r, 1, &outside, sampler_key(pixel_key, (uint64_t)(b * k + a)), st);
-            sum = vec_add(sum, c);
+            rgb c = trace_ray(t, &r, 1, &media, sampler_key(pixel_key, (uint64_t)(b * k + a)), st);
+            sum = shade_saturate(vec_add(sum, c));
         }
     }
     return vec_scale(sum, 1.0 / ((real)k * k));

@@ -81,19 +81,46 @@ vec3 shade_mirror(vec3 d, vec3 n)
     return vec_madd(d, n, -2.0 * vec_dot(n, d));
 }
 
+/*
+ * The lobe is cos^n of the angle between v and r.  For a large n every ulp
+ * of the cosine is n ulps of the lobe, and the plain dot product V.R carries
+ * the rounding of the unit vectors' lengths (|V| = 1 +- eps moves V.R by
+ * eps), which has nothing to do with the angle: with n = 1e6 that alone is
+ * a relative error of 1e-10.  So for angles below 41 degrees (h < 1/4) the
+ * cosine is formed from h = 1 - cos = |V - R|^2 / (2 |V| |R|), in which the lengths
+ * cancel to second order and V - R is exact (Sterbenz) for nearby vectors,
+ * and kept as a sum c_hi + c_lo = 1 - h held exactly; then
+ *   (c_hi + c_lo)^n = c_hi^n (1 + c_lo/c_hi)^n = pow(c_hi, n) exp(n c_lo/c_hi)
+ * to first order in c_lo/c_hi < 2^-52.  pow of a double that is exactly the
+ * cosine (V = R: c_hi = 1, c_lo = 0) stays exact.  Measured in
+ * spec/numerics.md ("Phong lobe").
+ */
+static void lobe_cosine(vec3 v, vec3 r, real c, real *c_hi, real *c_lo)
+{
+    vec3 d = vec_sub(v, r);
+    real h = vec_dot(d, d) / (2 * sqrt(vec_dot(v, v) * vec_dot(r, r)));
+    if (h < 0.25) {
+        *c_hi = 1 - h;
+        *c_lo = (1 - *c_hi) - h;   /* exact: 1 - c_hi is (Sterbenz) */
+    } else {
+        *c_hi = c;                 /* far from the peak V.R is as good */
+        *c_lo = 0;
+    }
+}
+
 real shade_phong_lobe(vec3 v, vec3 r, real shininess)
 {
     assert(shininess >= 0.0);
-    real c = vec_dot(v, r);
+    real c = vec_dot(v, r), c_hi, c_lo;
     if (!(c > 0.0))
         return 0.0;
-    /* A cosine cannot exceed 1; V.R = 1 + ulp from rounding would make the
-     * lobe grow past its peak for large exponents. */
-    if (c >= 1.0)
+    if (shininess == 0)
         return 1.0;
-    /* pow, not exp(n log c): exp/log lose ~n*ulp relative for large n.
-     * Subnormal results (c^n < 2.2e-308) are invisible and slow: flush. */
-    real p = pow(c, shininess);
+    lobe_cosine(v, r, c, &c_hi, &c_lo);
+    /* Subnormal results (below 2.2e-308) are invisible and slow: flush. */
+    real p = pow(c_hi, shininess);
+    if (c_lo != 0)
+        p *= exp(shininess * (c_lo / c_hi));
     return p >= DBL_MIN ? p : 0.0;
 }
 
@@ -239,17 +266,25 @@ rgb shade_transmit_blend(rgb front, rgb back, real t)
     return vec_add(vec_scale(front, 1.0 - t), vec_scale(back, t));
 }
 
+/* Comparisons, not fmin: fmin(NaN, x) is x, and a NaN must stay visible. */
+static real saturate1(real x) { return x > DBL_MAX ? DBL_MAX : x; }
+
+rgb shade_saturate(rgb c)
+{
+    return vec_make(saturate1(c.x), saturate1(c.y), saturate1(c.z));
+}
+
 rgb shade_local(rgb body, rgb highlight, real t)
 {
     assert(t >= 0.0 && t <= 1.0);
-    return vec_madd(highlight, body, 1.0 - t);
+    return shade_saturate(vec_madd(highlight, body, 1.0 - t));
 }
 
 rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
 {
     rgb c = shade_local(body, highlight, t);
     c = vec_add(c, vec_mul(ks, mirrored));
-    return vec_madd(c, transmitted, t);
+    return shade_saturate(vec_madd(c, transmitted, t));
 }
 
 real shade_shadow_transmission(real carried, real t_occluder)

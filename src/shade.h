@@ -114,9 +114,16 @@ rgb shade_local(rgb body, rgb highlight, real t);
  * where mirrored is the colour traced along the mirror ray and transmitted
  * the colour along the refracted ray (or along the mirror ray on total
  * internal reflection).  Pass zero for a ray not traced (past max_depth,
- * Ks = 0, t = 0): the result is then exactly shade_local.
+ * Ks = 0, t = 0): the result is then exactly shade_local.  Saturated
+ * ([SHADE-SAT-1]): four terms of up to DBL_MAX each cannot overflow to Inf.
  */
 rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted);
+
+/* [SHADE-SAT-1] Saturation: a channel above DBL_MAX (that is, +Inf from a
+ * sum of large finite terms) becomes DBL_MAX; NaN is kept, so the tracer's
+ * non-finite counter still sees it.  shade_local and shade_combine
+ * saturate their result; the tracer saturates its own sums with this. */
+rgb shade_saturate(rgb c);
 
 /* [SHADE-SHADOW-1] Shadow transmission product rule (slide 47): what is left
  * of `carried` after crossing one more surface of transparency t_occluder in

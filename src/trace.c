@@ -20,6 +20,7 @@
 #include "sampler.h"
 #include "shade.h"
 #include "trace.h"
+#include "xform.h"
 
 /* What shade() knows about the point it shades. */
 typedef struct surface {
@@ -61,6 +62,11 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
             t->lights[i].grid = light_grid_for(t->lights[i].samples);
         if (light->kind == LIGHT_DISK)
             light_frame(light->normal, &t->lights[i].t1, &t->lights[i].t2);
+    }
+    if (s->camera.kind == CAMERA_PERSPECTIVE) {
+        trace_stats none;
+        memset(&none, 0, sizeof none);
+        trace_media_at(t, s->camera.eye, &t->eye_media, &none);
     }
     return 1;
 }
@@ -130,10 +136,10 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
     }
     if (t->specular) {
         shade_terms terms = shade_direct(s->m->kd, s->m->ks, s->m->n, intensity, s->n, l, s->v);
-        sum->body = vec_add(sum->body, terms.body);
-        sum->highlight = vec_add(sum->highlight, terms.highlight);
+        sum->body = shade_saturate(vec_add(sum->body, terms.body));
+        sum->highlight = shade_saturate(vec_add(sum->highlight, terms.highlight));
     } else {
-        sum->body = vec_add(sum->body, shade_diffuse(s->m->kd, intensity, s->n, l));
+        sum->body = shade_saturate(vec_add(sum->body, shade_diffuse(s->m->kd, intensity, s->n, l)));
     }
 }
 
@@ -195,38 +201,132 @@ static void media_remove(medium_stack *media, int solid)
     }
 }
 
-/* The transmitted ray: straight through a sheet, bent by Snell's law into
- * or out of a solid, or mirrored on total internal reflection. */
+static int media_find(const medium_stack *media, int solid)
+{
+    for (int i = media->count - 1; i >= 0; i--)
+        if (media->solid[i] == solid)
+            return i;
+    return -1;
+}
+
+/*
+ * One interface: the surface hit and every other surface crossed within the
+ * spawn offset of it.  Two glass boxes sharing a face are two coincident
+ * surfaces; the transmitted ray is spawned past both at once, so leaving
+ * one and entering the other must be one boundary n1 -> n2, not
+ * n1 -> air -> n2 with the second crossing never seen (spec/numerics.md,
+ * "Coincident surfaces").
+ */
+enum { INTERFACE_MAX = 8 };
+typedef struct interface {
+    const hit *self;     /* the hit being shaded: h[0] */
+    real reach;          /* a crossing whose point is this close belongs to it */
+    int count;
+    hit h[INTERFACE_MAX];
+    const rf_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
+    const hit *spawn_hit;
+} interface;
+
+static real max_abs_diff(vec3 a, vec3 b)
+{
+    vec3 d = vec_sub(a, b);
+    return fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+}
+
+static int gather_crossing(void *ctx, const hit *h)
+{
+    interface *f = ctx;
+    if (h->prim == f->self->prim && h->entering == f->self->entering)
+        return 0;
+    if (f->count < INTERFACE_MAX && max_abs_diff(h->point, f->self->point) <= f->reach)
+        f->h[f->count++] = *h;
+    return 0;
+}
+
+/* Fills f with the hit and the crossings of the incoming ray within reach:
+ * twice the spawn offset, the distance a spawned ray jumps. */
+static void interface_gather(const tracer *t, const surface *s, const ray *in, interface *f, trace_stats *st)
+{
+    real m = fmax(isect_prim_magnitude(s->prim), fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y),
+                                                                               fabs(s->h->point.z))));
+    ray r = *in;
+    f->self = s->h;
+    f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
+    f->count = 1;
+    f->h[0] = *s->h;
+    /* The crossings' t may differ from the hit's by the rounding of t itself,
+     * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
+    r.tmax = s->h->t + f->reach + 0x1p-40 * fabs(s->h->t);
+    bvh_visit_stats(&t->accel, t->scene->prims, &r, gather_crossing, f, &st->bvh);
+    f->spawn_prim = s->prim;
+    f->spawn_hit = s->h;
+    for (int k = 1; k < f->count; k++) {
+        const rf_prim *p = &t->scene->prims[f->h[k].prim];
+        if (isect_prim_magnitude(p) > isect_prim_magnitude(f->spawn_prim)) {
+            f->spawn_prim = p;
+            f->spawn_hit = &f->h[k];
+        }
+    }
+}
+
+/* Crossing the interface: every solid left comes off the stack, then every
+ * solid entered goes on (once).  Returns the number of solids crossed and
+ * sets *through to the product of the t of the surfaces crossed besides the
+ * hit itself (whose t the caller applies). */
+static int interface_cross(const tracer *t, const interface *f, medium_stack *next, real *through,
+                           trace_stats *st)
+{
+    const rf_scene *sc = t->scene;
+    int solids = 0;
+    *through = 1;
+    for (int k = 1; k < f->count; k++)
+        *through = shade_shadow_transmission(*through, sc->materials[sc->prims[f->h[k].prim].material].t);
+    for (int k = 0; k < f->count; k++) {
+        int solid = trace_solid_id(sc, f->h[k].prim);
+        solids += solid >= 0;
+        if (solid >= 0 && !f->h[k].entering)
+            media_remove(next, solid);
+    }
+    for (int k = 0; k < f->count; k++) {
+        int solid = trace_solid_id(sc, f->h[k].prim);
+        if (solid >= 0 && f->h[k].entering && media_find(next, solid) < 0)
+            media_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
+    }
+    return solids;
+}
+
+/*
+ * The transmitted ray: straight on through a sheet, bent by Snell's law
+ * where the interface changes the medium (n1 the medium before, the top of
+ * the stack; n2 the one after), or mirrored on total internal reflection.
+ * A solid left that the stack does not hold (its overflow) keeps its own
+ * ior as n1.
+ */
 static rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
                        uint64_t key, trace_stats *st)
 {
-    int solid = trace_solid_id(t->scene, s->h->prim);
-    ray r;
-    if (solid < 0) {
-        st->refraction_rays++;
-        r = ray_spawn_hit(s->prim, s->h, in->dir);
-        return trace_ray(t, &r, depth + 1, media, key, st);
-    }
+    interface f;
     medium_stack next = *media;
-    real n1, n2;
-    if (s->h->entering) {
-        n1 = top_ior(media);
-        n2 = s->m->ior;
-        media_push(&next, solid, s->m->ior, st);
-    } else {
-        n1 = s->m->ior;
-        media_remove(&next, solid);
-        n2 = top_ior(&next);
+    real through;
+    interface_gather(t, s, in, &f, st);
+    int solids = interface_cross(t, &f, &next, &through, st);
+    if (through == 0)
+        return vec_splat(0);
+    ray r;
+    vec3 dir = in->dir;
+    int refracts = 1;
+    if (solids > 0) {
+        int solid = trace_solid_id(t->scene, s->h->prim);
+        real n1 = solid >= 0 && !s->h->entering && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
+        refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
     }
-    vec3 dir;
-    if (shade_refract(in->dir, s->n, n1, n2, &dir)) {
+    r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    if (refracts) {
         st->refraction_rays++;
-        r = ray_spawn_hit(s->prim, s->h, dir);
-        return trace_ray(t, &r, depth + 1, &next, key, st);
+        return vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
     }
     st->tir_rays++;
-    r = ray_spawn_hit(s->prim, s->h, dir);
-    return trace_ray(t, &r, depth + 1, media, key, st);
+    return vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
 }
 
 static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
@@ -255,6 +355,84 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
             through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
+}
+
+/* ---- where a ray starts: the media around a point ---------------------- */
+
+/* Solids the probe ray crosses: count and nearest crossing of each. */
+enum { PROBE_MAX = 64 };
+typedef struct probe {
+    const rf_scene *scene;
+    int count;
+    int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
+    real first[PROBE_MAX];
+} probe;
+
+static int probe_crossing(void *ctx, const hit *h)
+{
+    probe *pr = ctx;
+    int solid = trace_solid_id(pr->scene, h->prim), k = 0;
+    if (solid < 0 || !(pr->scene->materials[pr->scene->prims[h->prim].material].t > 0))
+        return 0;
+    while (k < pr->count && pr->solid[k] != solid)
+        k++;
+    if (k == pr->count) {
+        if (k == PROBE_MAX)
+            return 0;
+        pr->count++;
+        pr->solid[k] = solid;
+        pr->prim[k] = h->prim;
+        pr->crossings[k] = 0;
+        pr->first[k] = h->t;
+    }
+    pr->crossings[k]++;
+    if (h->t < pr->first[k])
+        pr->first[k] = h->t;
+    return 0;
+}
+
+/* Strictly inside a sphere or box (in its own frame); for a mesh, an odd
+ * number of crossings of the probe. */
+static int contains(const rf_prim *p, vec3 point, int crossings)
+{
+    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
+    if (p->kind == PRIM_SPHERE)
+        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
+    if (p->kind == PRIM_BOX)
+        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
+               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    return crossings % 2 == 1;
+}
+
+void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st)
+{
+    probe pr;
+    out->count = 0;
+    if (!t->refraction)
+        return;
+    pr.scene = t->scene;
+    pr.count = 0;
+    /* A direction along no axis and no simple diagonal, so the probe does
+     * not run along the faces and edges of boxes and axis-aligned meshes. */
+    ray r;
+    r.origin = point;
+    r.dir = vec_normalize(vec_make(0.2971, 0.5309, 0.7936));
+    r.tmin = 0;
+    r.tmax = HUGE_VAL;
+    bvh_visit_stats(&t->accel, t->scene->prims, &r, probe_crossing, &pr, &st->bvh);
+    /* Outermost first: the solid the probe leaves last goes on first. */
+    for (;;) {
+        int best = -1;
+        for (int k = 0; k < pr.count; k++)
+            if (pr.crossings[k] >= 0 && contains(&t->scene->prims[pr.prim[k]], point, pr.crossings[k]) &&
+                (best < 0 || pr.first[k] > pr.first[best]))
+                best = k;
+        if (best < 0)
+            return;
+        const rf_prim *p = &t->scene->prims[pr.prim[best]];
+        media_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
+        pr.crossings[best] = -1;
+    }
 }
 
 /* Both branches of a glass surface recurse, so a ray tree can grow as

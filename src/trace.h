@@ -39,6 +39,14 @@ typedef struct light_setup {
     vec3 t1, t2;
 } light_setup;
 
+/* The transparent solids a ray is inside, innermost last (nested glass). */
+enum { MEDIUM_MAX = 16 };
+typedef struct medium_stack {
+    int count;
+    int solid[MEDIUM_MAX];    /* solid_id of each enclosing solid */
+    real ior[MEDIUM_MAX];
+} medium_stack;
+
 typedef struct tracer {
     const rf_scene *scene;
     bvh accel;
@@ -48,15 +56,9 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (rf_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
-/* The transparent solids a ray is inside, innermost last (nested glass). */
-enum { MEDIUM_MAX = 16 };
-typedef struct medium_stack {
-    int count;
-    int solid[MEDIUM_MAX];    /* solid_id of each enclosing solid */
-    real ior[MEDIUM_MAX];
-} medium_stack;
 
 /* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
  * light_samples > 0 gives every distributed light that many samples instead
@@ -68,6 +70,14 @@ void tracer_free(tracer *t);
  * jitter of every light sample below this ray. */
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,
               trace_stats *st);
+
+/* The medium stack of a ray that starts at point: the transparent solids
+ * containing it, outermost first (a camera inside glass).  A sphere or box
+ * contains the point when it is strictly inside (exact test in its frame); a
+ * mesh when a probe ray from the point crosses it an odd number of times.
+ * Nesting order: the solid the probe leaves first is the innermost.  Empty
+ * when the tracer has no refraction pass. */
+void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
 
 /* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
  * for a sheet (plane, disk, lone triangle), which has no inside. */

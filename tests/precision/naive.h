@@ -1,0 +1,99 @@
+/*
+ * naive.h - the textbook methods refray does NOT use, kept to show where
+ * they fail: the "before" of every robust method in spec/numerics.md.  Used
+ * by tests/test_stability.c (which asserts that each fails on its stress
+ * case) and by tests/precision/precision.c (which measures by how much).
+ * Never linked into the renderer.
+ */
+#ifndef REFRAY_NAIVE_H
+#define REFRAY_NAIVE_H
+
+#include "ray.h"
+
+/* Ray/sphere by the quadratic formula as printed in most textbooks:
+ * a t^2 + b t + c = 0 with b = 2 f.d, c = f.f - R^2, disc = b^2 - 4ac,
+ * t = (-b -+ sqrt(disc)) / 2a.  Returns 1 and the nearest t in
+ * (tmin, tmax).  Fails for a small sphere far away (b^2 and 4ac agree in
+ * every digit) and loses the near root of a huge sphere close up. */
+static inline int naive_sphere(vec3 center, real radius, const ray *r, real *t)
+{
+    vec3 f = vec_sub(r->origin, center);
+    real a = vec_dot(r->dir, r->dir), b = 2 * vec_dot(f, r->dir);
+    real c = vec_dot(f, f) - radius * radius;
+    real disc = b * b - 4 * a * c;
+    if (disc < 0)
+        return 0;
+    real sq = sqrt(disc), t0 = (-b - sq) / (2 * a), t1 = (-b + sq) / (2 * a);
+    if (t0 > r->tmin && t0 < r->tmax) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > r->tmin && t1 < r->tmax) {
+        *t = t1;
+        return 1;
+    }
+    return 0;
+}
+
+/* Moller and Trumbore, "Fast, Minimum Storage Ray/Triangle Intersection"
+ * (1997), in double: barycentrics u, v from two different cross products,
+ * tested against [0, 1] with rounding of their own, so two triangles that
+ * share an edge can both reject a ray through it. */
+static inline int naive_triangle(const vec3 p[3], const ray *r, real *t)
+{
+    vec3 e1 = vec_sub(p[1], p[0]), e2 = vec_sub(p[2], p[0]);
+    vec3 pv = vec_cross(r->dir, e2);
+    real det = vec_dot(e1, pv);
+    if (det == 0)
+        return 0;
+    real inv = 1 / det;
+    vec3 s = vec_sub(r->origin, p[0]);
+    real u = vec_dot(s, pv) * inv;
+    if (u < 0 || u > 1)
+        return 0;
+    vec3 q = vec_cross(s, e1);
+    real v = vec_dot(r->dir, q) * inv;
+    if (v < 0 || u + v > 1)
+        return 0;
+    real tt = vec_dot(e2, q) * inv;
+    if (!(tt > r->tmin && tt < r->tmax))
+        return 0;
+    *t = tt;
+    return 1;
+}
+
+/* A secondary ray pushed off the surface by a fixed distance eps along the
+ * normal, to the side dir goes: too far at small scales (it jumps thin
+ * gaps), too short at large ones (the hit point's own error is larger). */
+static inline ray naive_spawn(vec3 point, vec3 normal, vec3 dir, real eps)
+{
+    ray r;
+    r.origin = vec_madd(point, normal, vec_dot(dir, normal) >= 0 ? eps : -eps);
+    r.dir = dir;
+    r.tmin = 0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
+/* The Phong lobe as exp(n log c): the exponent n log c carries the relative
+ * error of log c, multiplied by |n log c| in the result (up to 745 ulps). */
+static inline real naive_phong_lobe(real c, real n)
+{
+    return c > 0 ? exp(n * log(c)) : 0;
+}
+
+/* Snell's law as in most textbooks: k = 1 - eta^2 (1 - c^2), total internal
+ * reflection when k < 0, t = eta d + (eta c - sqrt k) n.  Near the critical
+ * angle k is the difference of two numbers equal to about 16 digits: the
+ * refract-or-reflect decision is wrong for cosines a few ulps from it. */
+static inline int naive_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
+{
+    real c = -vec_dot(n, d), eta = n1 / n2;
+    real k = 1 - eta * eta * (1 - c * c);
+    if (k < 0)
+        return 0;
+    *t = vec_madd(vec_scale(d, eta), n, eta * c - sqrt(k));
+    return 1;
+}
+
+#endif

@@ -1,0 +1,879 @@
+/*
+ * The stiff-case suite (issue 5, spec/numerics.md): every scene of
+ * scenes/stress/ renders with no non-finite value, and each one's own
+ * property holds, against a closed form worked out here in long double by a
+ * route of its own (geometric sphere test, Snell's law by angles, geometric
+ * series), or as bit-for-bit equality with a reference scene.
+ *
+ * Where a robust method of the tracer was earned by a case, the naive method
+ * it replaced is written here (never in the renderer) and the test shows it
+ * failing on that same case: the "before" of spec/numerics.md.
+ */
+#include <dirent.h>
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testlib.h"
+#include "camera.h"
+#include "intersect.h"
+#include "render.h"
+#include "scene.h"
+#include "shade.h"
+#include "trace.h"
+#include "precision/naive.h"
+
+#define STRESS_DIR "scenes/stress"
+
+typedef long double ld;
+
+/* ---- loading and rendering ---------------------------------------------- */
+
+static rf_scene *load_stress(const char *name)
+{
+    char path[256];
+    int status;
+    snprintf(path, sizeof path, "%s/%s.scene", STRESS_DIR, name);
+    rf_scene *s = scene_load(path, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
+    return s;
+}
+
+/* Renders with the scene's own settings; asserts the run-time guard saw
+ * nothing non-finite and every stored value is finite. */
+static void render_checked(const rf_scene *s, rf_image *img, render_stats *st)
+{
+    ck_assert_int_eq(render_image(s, NULL, img, st), REFRAY_EXIT_OK);
+    ck_assert_msg(st->trace.nonfinite == 0, "%ld non-finite values traced", st->trace.nonfinite);
+    for (long i = 0; i < 3L * img->width * img->height; i++)
+        ck_assert_msg(isfinite(img->rgb[i]), "value %ld is %g", i, img->rgb[i]);
+}
+
+static rf_image render_stress(const char *name, render_stats *st)
+{
+    render_stats local;
+    rf_image img;
+    rf_scene *s = load_stress(name);
+    render_checked(s, &img, st ? st : &local);
+    scene_free(s);
+    return img;
+}
+
+/* ---- long double vectors for the closed forms ---------------------------- */
+
+typedef struct lvec {
+    ld x, y, z;
+} lvec;
+
+static lvec lv(ld x, ld y, ld z)
+{
+    lvec v = {x, y, z};
+    return v;
+}
+
+static lvec lv_of(vec3 v) { return lv(v.x, v.y, v.z); }
+static lvec lv_add(lvec a, lvec b) { return lv(a.x + b.x, a.y + b.y, a.z + b.z); }
+static lvec lv_sub(lvec a, lvec b) { return lv(a.x - b.x, a.y - b.y, a.z - b.z); }
+static lvec lv_scale(lvec a, ld s) { return lv(a.x * s, a.y * s, a.z * s); }
+static ld lv_dot(lvec a, lvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static ld lv_len(lvec a) { return sqrtl(lv_dot(a, a)); }
+static lvec lv_unit(lvec a) { return lv_scale(a, 1 / lv_len(a)); }
+
+static lvec lv_cross(lvec a, lvec b)
+{
+    return lv(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
+/* The camera ray through the centre of pixel (i, j), from the camera as
+ * written (eye, look_at, up, fov or width) and the definitions of
+ * notes/model.md, not from camera.c. */
+static void exact_camera_ray(const rf_scene *s, int i, int j, lvec *o, lvec *d)
+{
+    const rf_camera *c = &s->camera;
+    int w = s->image.width, h = s->image.height;
+    lvec eye = lv_of(c->eye);
+    lvec f = lv_unit(lv_sub(lv_of(c->look_at), eye));
+    lvec r = lv_unit(lv_cross(f, lv_of(c->up)));
+    lvec u = lv_cross(r, f);
+    ld sx = 2 * (i + 0.5L) / w - 1, sy = 1 - 2 * (j + 0.5L) / h, aspect = (ld)h / w;
+    if (c->kind == CAMERA_ORTHOGRAPHIC) {
+        ld half = c->width / 2.0L;
+        *o = lv_add(eye, lv_add(lv_scale(r, sx * half), lv_scale(u, sy * half * aspect)));
+        *d = f;
+    } else {
+        ld half = tanl(c->fov / 2.0L * (3.14159265358979323846264338327950288L / 180));
+        *o = eye;
+        *d = lv_unit(lv_add(f, lv_add(lv_scale(r, sx * half), lv_scale(u, sy * half * aspect))));
+    }
+}
+
+/*
+ * Geometric ray/sphere test (unit d): the closest approach of the line to
+ * the centre is at t_ca = (c - o).d, at distance |l|; the chord's half
+ * length is sqrt(R^2 - |l|^2).  Returns 1 with the nearest t > 0 and the
+ * unit normal; *margin is R - |l| relative to R (how far from the
+ * silhouette, for skipping pixels no precision can decide).
+ */
+static int exact_sphere(lvec c, ld radius, lvec o, lvec d, lvec *n, ld *margin)
+{
+    lvec f = lv_sub(c, o);
+    ld tca = lv_dot(f, d);
+    ld l = lv_len(lv_sub(f, lv_scale(d, tca)));
+    *margin = (radius - l) / radius;
+    if (l > radius)
+        return 0;
+    ld half = sqrtl((radius - l) * (radius + l));
+    ld t = tca - half > 0 ? tca - half : tca + half;
+    if (!(t > 0))
+        return 0;
+    *n = lv_scale(lv_sub(lv_add(o, lv_scale(d, t)), c), 1 / radius);
+    return 1;
+}
+
+/* Kd*Ia + sum over distant lights of Kd*E*max(0, N.L), N facing the viewer:
+ * the model (notes/model.md) for a diffuse surface that nothing shadows.
+ * Grey values: channel x. */
+static ld exact_lambert(const rf_scene *s, const rf_material *m, lvec n, lvec d)
+{
+    if (lv_dot(n, d) > 0)
+        n = lv_scale(n, -1);
+    ld v = (ld)m->kd.x * s->ambient.x;
+    for (int k = 0; k < s->light_count; k++) {
+        const rf_light *light = &s->lights[k];
+        ck_assert_int_eq(light->kind, LIGHT_DISTANT);
+        ld nl = -lv_dot(n, lv_unit(lv_of(light->direction)));
+        if (nl > 0)
+            v += (ld)m->kd.x * light->power.x * nl;
+    }
+    return v;
+}
+
+typedef struct sphere_check {
+    int hits, misses, skipped;  /* pixels: hit, background, too close to the silhouette */
+    ld worst_rel;               /* largest relative error of a hit pixel */
+} sphere_check;
+
+/*
+ * Compares every pixel of the render of a scene whose prims[0] is a diffuse
+ * sphere (lit by distant lights, nothing else visible) with the closed
+ * form: hit or background, then the Lambert value.  Pixels within `edge`
+ * (relative) of the silhouette are skipped: there the answer depends on the
+ * last bit of the camera ray.
+ */
+static sphere_check check_sphere_scene(const char *name, ld edge, ld tol)
+{
+    sphere_check out = {0, 0, 0, 0};
+    render_stats st;
+    rf_image img;
+    rf_scene *s = load_stress(name);
+    const rf_prim *p = &s->prims[0];
+    ck_assert(p->kind == PRIM_SPHERE && !p->has_xform);
+    render_checked(s, &img, &st);
+    for (int j = 0; j < img.height; j++) {
+        for (int i = 0; i < img.width; i++) {
+            lvec o, d, n;
+            ld margin;
+            exact_camera_ray(s, i, j, &o, &d);
+            int hits = exact_sphere(lv_of(p->u.sphere.center), p->u.sphere.radius, o, d, &n, &margin);
+            double got = img_pixel(&img, i, j)[0];
+            if (fabsl(margin) < edge) {
+                out.skipped++;
+                continue;
+            }
+            if (!hits) {
+                ck_assert_msg(got == s->image.background.x, "%s (%d,%d): %.17g, expected the background",
+                              name, i, j, got);
+                out.misses++;
+                continue;
+            }
+            ld want = exact_lambert(s, &s->materials[p->material], n, d);
+            ld rel = fabsl(got - want) / want;
+            ck_assert_msg(rel <= tol, "%s (%d,%d): %.17g, expected %.17Lg (relative error %.3Lg > %.3Lg)", name,
+                          i, j, got, want, rel, tol);
+            if (rel > out.worst_rel)
+                out.worst_rel = rel;
+            out.hits++;
+        }
+    }
+    img_free(&img);
+    scene_free(s);
+    return out;
+}
+
+/* ---- the cases --------------------------------------------------------- */
+
+START_TEST(test_stress_tiny_sphere_far)
+{
+    sphere_check c = check_sphere_scene("tiny_sphere_far", 1e-6L, 1e-9L);
+    ck_assert_int_gt(c.hits, 100);
+    ck_assert_int_gt(c.misses, 20);
+}
+END_TEST
+
+START_TEST(test_stress_huge_sphere_near)
+{
+    sphere_check c = check_sphere_scene("huge_sphere_near", 1e-9L, 1e-9L);
+    ck_assert_int_eq(c.hits, 256);
+}
+END_TEST
+
+START_TEST(test_stress_sphere_1e6_far)
+{
+    sphere_check c = check_sphere_scene("sphere_1e6_far", 1e-9L, 1e-9L);
+    ck_assert_int_gt(c.hits, 50);
+    ck_assert_int_gt(c.misses, 50);
+}
+END_TEST
+
+START_TEST(test_stress_ortho_far_sphere)
+{
+    sphere_check c = check_sphere_scene("ortho_far_sphere", 1e-9L, 1e-12L);
+    ck_assert_int_gt(c.hits, 400);
+}
+END_TEST
+
+START_TEST(test_stress_terminator)
+{
+    sphere_check c = check_sphere_scene("terminator", 1e-9L, 1e-12L);
+    ck_assert_int_gt(c.hits, 300);
+}
+END_TEST
+
+START_TEST(test_stress_acne_scales)
+{
+    static const char *const names[] = {"acne_scale_1e-6", "acne_scale_1", "acne_scale_1e6"};
+    for (int k = 0; k < 3; k++) {
+        sphere_check c = check_sphere_scene(names[k], 1e-9L, 1e-9L);
+        ck_assert_int_gt(c.hits, 50);
+    }
+    sphere_check c = check_sphere_scene("acne_offset_1e8", 1e-6L, 1e-6L);
+    ck_assert_int_gt(c.hits, 50);
+}
+END_TEST
+
+/* The pixel (0, 0) of a render, channel c. */
+static double pixel0(const rf_image *img, int c) { return img_pixel(img, 0, 0)[c]; }
+
+/* ---- shading at the limits --------------------------------------------- */
+
+/* The view direction V = -forward of a loaded camera, in long double. */
+static lvec exact_view(const rf_scene *s)
+{
+    return lv_unit(lv_sub(lv_of(s->camera.eye), lv_of(s->camera.look_at)));
+}
+
+/* Kd*Ia + Kd*E*(N.L) + Ks*E*max(0, V.R)^n for prims[0] (a plane) lit by the
+ * one distant light, N, L, V normalised in long double from the scene. */
+static ld exact_phong(const rf_scene *s)
+{
+    const rf_material *m = &s->materials[s->prims[0].material];
+    lvec n = lv_unit(lv_of(s->prims[0].u.plane.normal));
+    lvec l = lv_scale(lv_unit(lv_of(s->lights[0].direction)), -1);
+    lvec v = exact_view(s);
+    ld nl = lv_dot(n, l);
+    lvec r = lv_sub(lv_scale(n, 2 * nl), l);
+    ld vr = lv_dot(v, r);
+    ld lobe = vr > 0 ? powl(vr, m->n) : 0;
+    return (ld)m->kd.x * s->ambient.x + (ld)m->kd.x * s->lights[0].power.x * nl +
+           (ld)m->ks.x * s->lights[0].power.x * lobe;
+}
+
+START_TEST(test_stress_phong_exponent_0_and_1e6_peak)
+{
+    /* n = 0: Kd*Ia + Kd*E*2/sqrt5 + Ks*E*1 (V.R = 2/sqrt5 > 0, so the lobe is 1). */
+    rf_image img = render_stress("phong_n0", NULL);
+    ck_assert_rel(pixel0(&img, 0), 0.25 * 0.1 + 0.25 * 2 / sqrt(5.0) + 0.5, 1e-15);
+    img_free(&img);
+    /* n = 1e6 at V = R: the lobe is exactly 1 (spec [SHADE-PHONG-1]). */
+    img = render_stress("phong_n1e6_peak", NULL);
+    ck_assert(pixel0(&img, 0) == 0.25 * 0.1 + 0.25 + 0.5);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_phong_exponent_1e6_off_peak)
+{
+    rf_scene *s = load_stress("phong_n1e6_off");
+    ld want = exact_phong(s);
+    rf_image img;
+    render_stats st;
+    render_checked(s, &img, &st);
+    /* [NUM-PHONG-1] pow of the plain dot product V.R gave 6.2e-11 here: the
+     * rounding of |V| and |R| times n = 1e6 (spec/numerics.md). */
+    ld rel = fabsl(pixel0(&img, 0) - want) / want;
+    ck_assert_msg(rel <= 1e-13L, "relative error %.3Lg", rel);
+    img_free(&img);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_critical_angle_both_sides)
+{
+    static const char *const names[] = {"critical_below", "critical_above"};
+    ld theta_c = asinl(1 / 1.5L);
+    for (int k = 0; k < 2; k++) {
+        rf_scene *s = load_stress(names[k]);
+        /* The scene really is within 1e-12 rad of the critical angle, on
+         * the side its name says: angle between the view and the face
+         * normal +y, from the loaded camera. */
+        ld theta = acosl(-exact_view(s).y), off = theta - theta_c;
+        ck_assert_msg(k == 0 ? off < -0.9e-12L && off > -1.1e-12L : off > 0.9e-12L && off < 1.1e-12L,
+                      "%s: %.3Lg rad from the critical angle", names[k], off);
+        rf_image img;
+        render_stats st;
+        render_checked(s, &img, &st);
+        ck_assert_msg(pixel0(&img, 0) == (k == 0 ? 0.5 : 0.0), "%s: %.17g", names[k], pixel0(&img, 0));
+        ck_assert_int_eq(st.trace.tir_rays > 0, k == 1);
+        img_free(&img);
+        scene_free(s);
+    }
+}
+END_TEST
+
+static void assert_images_equal(const rf_image *a, const rf_image *b, double rel, const char *what)
+{
+    ck_assert_int_eq(a->width, b->width);
+    ck_assert_int_eq(a->height, b->height);
+    for (long i = 0; i < 3L * a->width * a->height; i++) {
+        double x = a->rgb[i], y = b->rgb[i];
+        ck_assert_msg(rel == 0 ? x == y : fabs(x - y) <= rel * fmax(fabs(x), fabs(y)),
+                      "%s: value %ld (pixel %ld, %ld): %.17g vs %.17g", what, i, i / 3 % a->width,
+                      i / 3 / a->width, x, y);
+    }
+}
+
+static void assert_renders_equal(const char *name, const char *ref, double rel)
+{
+    rf_image a = render_stress(name, NULL), b = render_stress(ref, NULL);
+    assert_images_equal(&a, &b, rel, name);
+    img_free(&a);
+    img_free(&b);
+}
+
+START_TEST(test_stress_ior_one_is_bit_exact)
+{
+    /* [NUM-IOR1-1] Glass of ior 1 changes nothing, to the bit. */
+    assert_renders_equal("ior_one", "ior_one_ref", 0);
+}
+END_TEST
+
+START_TEST(test_stress_ior_extreme)
+{
+    static const char *const names[] = {"ior_extreme_high", "ior_extreme_low"};
+    for (int k = 0; k < 2; k++) {
+        rf_image img = render_stress(names[k], NULL);
+        /* Centre pixel (4, 4): on the axis, straight through: t^2 * 0.4. */
+        ck_assert_msg(img_pixel(&img, 4, 4)[0] == 0.5 * (0.5 * 0.4), "%s: %.17g", names[k],
+                      img_pixel(&img, 4, 4)[0]);
+        img_free(&img);
+    }
+}
+END_TEST
+
+START_TEST(test_stress_light_on_and_near_the_surface)
+{
+    render_stats st;
+    rf_image img = render_stress("light_on_surface", &st);
+    ck_assert_int_eq(st.trace.lights_on_surface, 1);
+    ck_assert(pixel0(&img, 0) == 0.5 * 0.1);
+    img_free(&img);
+    /* Two lights of 1/(1e-300)^2 each: clamped, summed, saturated. */
+    img = render_stress("light_near_surface", &st);
+    ck_assert(pixel0(&img, 0) == DBL_MAX);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_mirror_box_depth_1000)
+{
+    render_stats st;
+    rf_image img = render_stress("mirror_box_1000", &st);
+    /* Each of the 1000 hits adds its ambient Kd*Ia = 0.5 * 0.002, weighted by
+     * Ks^k for the k mirror bounces before it: a geometric series. */
+    static const ld ks[3] = {1, 0.9L, 0.5L};
+    for (int c = 0; c < 3; c++) {
+        ld want = ks[c] == 1 ? 1000 * 0.001L : 0.001L * (1 - powl(ks[c], 1000)) / (1 - ks[c]);
+        ck_assert_msg(fabsl(pixel0(&img, c) - want) <= 1e-13L * want, "channel %d: %.17g vs %.17Lg", c,
+                      pixel0(&img, c), want);
+    }
+    ck_assert_int_eq(st.trace.reflection_rays, 999);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_camera_and_light_inside_sphere)
+{
+    rf_image img = render_stress("camera_light_inside_sphere", NULL);
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++)
+            ck_assert_rel(img_pixel(&img, i, j)[0], 0.6 * 0.1 + 0.6 * 4 / 2.0, 1e-14);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_light_inside_box)
+{
+    rf_image img = render_stress("light_inside_box", NULL);
+    int box = 0, floor = 0;
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            double v = img_pixel(&img, i, j)[0];
+            box += v == 0.6 * 0.1;
+            floor += v == 0.4 * 0.1;
+            ck_assert_msg(v == 0.6 * 0.1 || v == 0.4 * 0.1 || v == 0.5, "(%d,%d) = %.17g: lit", i, j, v);
+        }
+    ck_assert_int_gt(box, 10);
+    ck_assert_int_gt(floor, 10);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_light_inside_glass)
+{
+    rf_image img = render_stress("light_inside_glass", NULL);
+    ck_assert_rel(pixel0(&img, 0), 0.8 * 0.1 + 0.8 * 1 / 2.0 * 0.5, 1e-13);
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_view_along_the_normal)
+{
+    rf_image img = render_stress("view_along_normal", NULL);
+    ck_assert_rel(pixel0(&img, 0), 0.2 * 0.1 + 0.7 * 2 / 10.0 + 0.7 * 1 + 0.5 * 0.3, 1e-12);
+    img_free(&img);
+}
+END_TEST
+
+/* ---- glass that touches and nests --------------------------------------- */
+
+START_TEST(test_stress_touching_glass_is_one_interface)
+{
+    assert_renders_equal("touching_glass_pair", "touching_glass_single", 1e-9);
+}
+END_TEST
+
+START_TEST(test_stress_touching_glass_camera_inside)
+{
+    rf_image img = render_stress("touching_glass_camera_inside", NULL);
+    ck_assert_msg(pixel0(&img, 0) == 1 && pixel0(&img, 1) == 0 && pixel0(&img, 2) == 0, "[%g, %g, %g]",
+                  pixel0(&img, 0), pixel0(&img, 1), pixel0(&img, 2));
+    img_free(&img);
+}
+END_TEST
+
+START_TEST(test_stress_nested_glass_index_matched)
+{
+    assert_renders_equal("nested_glass_matched", "nested_glass_outer", 1e-9);
+}
+END_TEST
+
+/* ---- scale ----------------------------------------------------------- */
+
+START_TEST(test_stress_scale_invariance)
+{
+    /* [NUM-SCALE-1] Power-of-two scales 2^400 and 2^-400: bit for bit. */
+    assert_renders_equal("scale_2p400", "scale_1", 0);
+    assert_renders_equal("scale_2m400", "scale_1", 0);
+}
+END_TEST
+
+START_TEST(test_stress_denormal_coordinates)
+{
+    assert_renders_equal("denormal_coordinates", "scale_1", 1e-12);
+}
+END_TEST
+
+/* ---- coplanar surfaces ------------------------------------------------ */
+
+START_TEST(test_stress_coplanar_disk_on_plane)
+{
+    rf_scene *s = load_stress("coplanar_disk_on_plane");
+    const rf_prim *disk = &s->prims[0];
+    ck_assert(disk->kind == PRIM_DISK);
+    rf_image img;
+    render_stats st;
+    render_checked(s, &img, &st);
+    lvec n = lv_of(disk->u.disk.normal), c = lv_of(disk->u.disk.center);
+    int on_disk = 0, on_plane = 0;
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            lvec o, d;
+            exact_camera_ray(s, i, j, &o, &d);
+            /* The plane through the disk's centre (the two are one plane to
+             * rounding); distance of the hit from the centre vs the radius. */
+            ld t = lv_dot(n, lv_sub(c, o)) / lv_dot(n, d);
+            ld r = lv_len(lv_sub(lv_add(o, lv_scale(d, t)), c)) / disk->u.disk.radius;
+            if (fabsl(r - 1) < 1e-9L)
+                continue;
+            double got = img_pixel(&img, i, j)[0];
+            int want_disk = r < 1;
+            ck_assert_msg(want_disk ? got > 0.5 : got < 0.5, "(%d,%d): %s expected, red %.17g", i, j,
+                          want_disk ? "disk" : "plane", got);
+            on_disk += want_disk;
+            on_plane += !want_disk;
+        }
+    ck_assert_int_gt(on_disk, 20);
+    ck_assert_int_gt(on_plane, 20);
+    img_free(&img);
+    scene_free(s);
+}
+END_TEST
+
+/* ---- robust methods and their naive "before" ----------------------------- */
+
+/* What the textbook quadratic does on the camera rays of a scene whose
+ * prims[0] is a sphere: pixels it gets wrong (hit or miss, or a Lambert
+ * value off by more than tol), and the worst distance of its hit points
+ * from the sphere relative to the radius; *robust_off is the same distance
+ * for isect_sphere. */
+typedef struct naive_report {
+    int wrong;
+    ld naive_off, robust_off;
+} naive_report;
+
+static ld off_surface(const rf_prim *p, vec3 point)
+{
+    return fabsl(lv_len(lv_sub(lv_of(point), lv_of(p->u.sphere.center))) - p->u.sphere.radius) /
+           p->u.sphere.radius;
+}
+
+static naive_report naive_sphere_report(const char *name, ld tol)
+{
+    naive_report out = {0, 0, 0};
+    rf_scene *s = load_stress(name);
+    const rf_prim *p = &s->prims[0];
+    const rf_material *m = &s->materials[p->material];
+    for (int j = 0; j < s->image.height; j++)
+        for (int i = 0; i < s->image.width; i++) {
+            lvec o, d, n;
+            ld margin;
+            exact_camera_ray(s, i, j, &o, &d);
+            int want = exact_sphere(lv_of(p->u.sphere.center), p->u.sphere.radius, o, d, &n, &margin);
+            if (fabsl(margin) < 1e-6L)
+                continue;
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5), rr = r;
+            real t;
+            hit h;
+            int got = naive_sphere(p->u.sphere.center, p->u.sphere.radius, &r, &t);
+            if (got != want) {
+                out.wrong++;
+                continue;
+            }
+            if (!got || !isect_prim(p, &rr, &h))
+                continue;
+            vec3 at = ray_at(&r, t), nn = vec_normalize(vec_sub(at, p->u.sphere.center));
+            ld exact = exact_lambert(s, m, n, d), naive = exact_lambert(s, m, lv_of(nn), d);
+            out.wrong += fabsl(naive - exact) > tol * exact;
+            out.naive_off = fmaxl(out.naive_off, off_surface(p, at));
+            out.robust_off = fmaxl(out.robust_off, off_surface(p, h.point));
+        }
+    scene_free(s);
+    return out;
+}
+
+START_TEST(test_stress_naive_sphere_fails_where_refray_holds)
+{
+    /* [NUM-SPHERE-1] The same pixels the robust test gets right to 1e-9:
+     * the textbook formula misses or misshades many of them
+     * (tiny_sphere_far), and puts its hit points far off the surface
+     * (hundreds of times the robust test's distance) where one root is lost
+     * to cancellation (huge_sphere_near) or the discriminant to rounding
+     * (ortho_far_sphere); spec/numerics.md has the figures. */
+    naive_report tiny = naive_sphere_report("tiny_sphere_far", 1e-9L);
+    ck_assert_int_gt(tiny.wrong, 20);
+    static const char *const far_near[] = {"huge_sphere_near", "ortho_far_sphere"};
+    for (int k = 0; k < 2; k++) {
+        naive_report r = naive_sphere_report(far_near[k], 1e-9L);
+        ck_assert_msg(r.robust_off < 1e-15L && r.naive_off > 100 * r.robust_off, "%s: off the surface %.3Lg vs %.3Lg",
+                      far_near[k], r.naive_off, r.robust_off);
+    }
+}
+END_TEST
+
+START_TEST(test_stress_concentric_gap_does_not_leak)
+{
+    rf_scene *s = load_stress("concentric_gap");
+    rf_image img;
+    render_stats st;
+    render_checked(s, &img, &st);
+    int inner = 0;
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            double v = img_pixel(&img, i, j)[0];
+            ck_assert_msg(v == 0.8 * 0.1 || v == 0.5 * 0.1, "(%d,%d) = %.17g: light leaked in", i, j, v);
+            inner += v == 0.8 * 0.1;
+        }
+    ck_assert_int_gt(inner, 50);
+    /* [NUM-SPAWN-1] The before: a shadow ray pushed off the inner sphere by
+     * a fixed 1e-4 starts beyond the outer one (gap 4e-5): every shadow ray
+     * leaks. */
+    int leaks = 0, tried = 0;
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            ray r = camera_ray(&s->camera, img.width, img.height, i + 0.5, j + 0.5);
+            hit h;
+            if (!bvh_intersect(&t.accel, s->prims, &r, &h) || h.prim != 0)
+                continue;
+            vec3 to = vec_normalize(vec_sub(s->lights[0].position, h.point));
+            ray shadow = naive_spawn(h.point, h.normal, to, 1e-4);
+            hit h2;
+            tried++;
+            leaks += !bvh_intersect(&t.accel, s->prims, &shadow, &h2);
+        }
+    tracer_free(&t);
+    ck_assert_int_eq(leaks, tried);
+    img_free(&img);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_naive_spawn_self_hits_far_from_origin)
+{
+    /* [NUM-SPAWN-1] The other side: a fixed 1e-9 is below the error of a
+     * hit point 1.7e8 from the origin (about 1e-8): shadow rays re-hit their
+     * own sphere.  refray's offset (2^-42 of the magnitude) passes the same
+     * case (test_stress_acne_scales). */
+    rf_scene *s = load_stress("acne_offset_1e8");
+    const rf_prim *p = &s->prims[0];
+    vec3 l = vec_neg(s->lights[0].direction);
+    int self = 0, tried = 0;
+    for (int j = 0; j < s->image.height; j++)
+        for (int i = 0; i < s->image.width; i++) {
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            hit h, h2;
+            if (!isect_prim(p, &r, &h) || !(vec_dot(h.normal, l) > 0))
+                continue;
+            ray naive = naive_spawn(h.point, h.normal, l, 1e-9), robust = ray_spawn_hit(p, &h, l);
+            tried++;
+            self += isect_prim(p, &naive, &h2);
+            ck_assert(!isect_prim(p, &robust, &h2));
+        }
+    ck_assert_int_gt(tried, 20);
+    ck_assert_int_gt(self, tried / 10);
+    scene_free(s);
+}
+END_TEST
+
+/* ---- watertight and thin triangles --------------------------------------- */
+
+typedef struct sweep {
+    long rays, misses, naive_misses;
+} sweep;
+
+/* One ray through the scene's acceleration structure; with count_naive,
+ * the same ray against every triangle by Moller-Trumbore too. */
+static void sweep_ray(const tracer *t, const rf_scene *s, ray r, sweep *w, int count_naive)
+{
+    hit h;
+    ray copy = r;
+    w->rays++;
+    w->misses += !bvh_intersect(&t->accel, s->prims, &copy, &h);
+    if (!count_naive)
+        return;
+    int any = 0;
+    for (int k = 0; k < s->prim_count && !any; k++) {
+        real tt;
+        any = s->prims[k].kind == PRIM_TRIANGLE && naive_triangle(s->prims[k].u.triangle.p, &r, &tt);
+    }
+    w->naive_misses += !any;
+}
+
+static ray ray_through(vec3 point, vec3 from)
+{
+    ray r;
+    r.origin = from;
+    r.dir = vec_normalize(vec_sub(point, from));
+    r.tmin = 0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
+/* Rays through point: from the centre outward, and from three places
+ * outside, 3 units away in directions that lean off the radial one. */
+static void sweep_point(const tracer *t, const rf_scene *s, vec3 centre, vec3 point, sweep *w)
+{
+    static const double lean[3][3] = {{0.31, -0.17, 0.05}, {-0.23, 0.11, 0.29}, {0.07, 0.37, -0.19}};
+    vec3 out = vec_normalize(vec_sub(point, centre));
+    sweep_ray(t, s, ray_through(point, centre), w, 1);
+    for (int k = 0; k < 3; k++) {
+        vec3 away = vec_normalize(vec_add(out, vec_make(lean[k][0], lean[k][1], lean[k][2])));
+        sweep_ray(t, s, ray_through(point, vec_madd(point, away, 3)), w, 1);
+    }
+}
+
+START_TEST(test_stress_watertight_mesh)
+{
+    /* [NUM-WATERTIGHT-1] Every edge of the closed icosphere at five points
+     * (its midpoint and four others) and every vertex, each from inside and
+     * from three directions outside: no ray slips through. */
+    rf_scene *s = load_stress("watertight_mesh");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    vec3 centre = vec_make(0.5, 0.25, 0.125);
+    static const double at[] = {0.5, 0.1, 0.3337, 0.71, 0.9};
+    sweep w = {0, 0, 0};
+    for (int k = 0; k < s->prim_count; k++) {
+        const vec3 *p = s->prims[k].u.triangle.p;
+        for (int e = 0; e < 3; e++) {
+            sweep_point(&t, s, centre, p[e], &w);
+            for (int a = 0; a < 5; a++)
+                sweep_point(&t, s, centre, vec_add(p[e], vec_scale(vec_sub(p[(e + 1) % 3], p[e]), at[a])), &w);
+        }
+    }
+    ck_assert_int_eq(s->prim_count, 1280);
+    ck_assert_int_eq(w.misses, 0);
+    /* The before: Moller-Trumbore lets some of the same rays through. */
+    ck_assert_int_gt(w.naive_misses, 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_thin_triangles)
+{
+    rf_scene *s = load_stress("thin_triangles");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    sweep w = {0, 0, 0};
+    /* The strip's diagonal (0,0,0)-(1,1e-8,0) and the fan's 63 inner spokes
+     * and apex (the fan is moved by -0.5 in y), each ray straight down and
+     * leaning. */
+    for (int k = 0; k <= 1000; k++) {
+        double f = k / 1000.0;
+        vec3 p = vec_make(f, f * 1e-8, 0);
+        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0);
+        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0.3, -0.2, 1))), &w, 0);
+    }
+    for (int spoke = 1; spoke < 64; spoke++)
+        for (int k = 0; k <= 64; k++) {
+            double f = k / 64.0, a = spoke * 1e-8;
+            vec3 p = vec_make(f * cos(a), f * sin(a) - 0.5, 0);
+            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0);
+            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(-0.1, 0.4, 1))), &w, 0);
+        }
+    ck_assert_int_eq(w.misses, 0);
+    /* The geometric normal of a sliver is still exactly +-z. */
+    for (int k = 0; k < s->prim_count; k++) {
+        ray r = ray_through(vec_make(0.9, 0.7e-8, 0), vec_make(0.9, 0.7e-8, 1));
+        hit h;
+        if (isect_prim(&s->prims[k], &r, &h))
+            ck_assert(h.normal.x == 0 && h.normal.y == 0 && fabs(h.normal.z) == 1);
+    }
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_surface_starts_no_self_hit)
+{
+    rf_scene *s = load_stress("surface_starts");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    int hits = 0;
+    for (int j = 0; j < s->image.height; j++)
+        for (int i = 0; i < s->image.width; i++) {
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            hit h;
+            if (!bvh_intersect(&t.accel, s->prims, &r, &h))
+                continue;
+            const rf_prim *p = &s->prims[h.prim];
+            ray out[3] = {ray_spawn_hit(p, &h, shade_mirror(r.dir, h.normal)), ray_spawn_hit(p, &h, r.dir),
+                          ray_spawn_hit_to(p, &h, s->lights[0].position)};
+            hits++;
+            for (int k = 0; k < 3; k++) {
+                hit h2;
+                ck_assert_msg(!isect_prim(p, &out[k], &h2) || h2.t > 1e-6, "pixel (%d,%d) kind %d ray %d: self-hit at %g",
+                              i, j, p->kind, k, (double)h2.t);
+            }
+        }
+    ck_assert_int_gt(hits, 400);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_camera_inside_nested_glass)
+{
+    rf_image img = render_stress("camera_inside_nested_glass", NULL);
+    ck_assert_msg(pixel0(&img, 0) == 1 && pixel0(&img, 1) == 0 && pixel0(&img, 2) == 0, "[%g, %g, %g]",
+                  pixel0(&img, 0), pixel0(&img, 1), pixel0(&img, 2));
+    img_free(&img);
+}
+END_TEST
+
+/* ---- every scene ------------------------------------------------------- */
+
+static int is_scene(const struct dirent *e)
+{
+    size_t n = strlen(e->d_name);
+    return n > 6 && strcmp(e->d_name + n - 6, ".scene") == 0;
+}
+
+/* [NUM-FINITE-1] Every stress scene renders with the non-finite counter at 0
+ * and every pixel finite. */
+START_TEST(test_stress_every_scene_is_finite)
+{
+    struct dirent **list;
+    int n = scandir(STRESS_DIR, &list, is_scene, alphasort);
+    ck_assert_int_ge(n, 30);
+    for (int i = 0; i < n; i++) {
+        char name[256];
+        snprintf(name, sizeof name, "%.*s", (int)(strlen(list[i]->d_name) - 6), list[i]->d_name);
+        rf_image img = render_stress(name, NULL);
+        img_free(&img);
+        free(list[i]);
+    }
+    free(list);
+}
+END_TEST
+
+Suite *suite_stability(void)
+{
+    Suite *s = suite_create("stability");
+    TCase *scale = tcase_create("scales and silhouettes");
+    tcase_add_test(scale, test_stress_tiny_sphere_far);
+    tcase_add_test(scale, test_stress_huge_sphere_near);
+    tcase_add_test(scale, test_stress_sphere_1e6_far);
+    tcase_add_test(scale, test_stress_ortho_far_sphere);
+    tcase_add_test(scale, test_stress_terminator);
+    tcase_add_test(scale, test_stress_acne_scales);
+    tcase_add_test(scale, test_stress_scale_invariance);
+    tcase_add_test(scale, test_stress_denormal_coordinates);
+    suite_add_tcase(s, scale);
+    TCase *shading = tcase_create("shading at the limits");
+    tcase_add_test(shading, test_stress_phong_exponent_0_and_1e6_peak);
+    tcase_add_test(shading, test_stress_phong_exponent_1e6_off_peak);
+    tcase_add_test(shading, test_stress_light_on_and_near_the_surface);
+    tcase_add_test(shading, test_stress_view_along_the_normal);
+    tcase_add_test(shading, test_stress_camera_and_light_inside_sphere);
+    tcase_add_test(shading, test_stress_light_inside_box);
+    tcase_add_test(shading, test_stress_light_inside_glass);
+    tcase_add_test(shading, test_stress_coplanar_disk_on_plane);
+    suite_add_tcase(s, shading);
+    TCase *glass = tcase_create("glass and mirrors");
+    tcase_add_test(glass, test_stress_critical_angle_both_sides);
+    tcase_add_test(glass, test_stress_ior_one_is_bit_exact);
+    tcase_add_test(glass, test_stress_ior_extreme);
+    tcase_add_test(glass, test_stress_mirror_box_depth_1000);
+    tcase_add_test(glass, test_stress_touching_glass_is_one_interface);
+    tcase_add_test(glass, test_stress_touching_glass_camera_inside);
+    tcase_add_test(glass, test_stress_nested_glass_index_matched);
+    tcase_add_test(glass, test_stress_camera_inside_nested_glass);
+    suite_add_tcase(s, glass);
+    TCase *robust = tcase_create("robust methods");
+    tcase_set_timeout(robust, 10);
+    tcase_add_test(robust, test_stress_naive_sphere_fails_where_refray_holds);
+    tcase_add_test(robust, test_stress_concentric_gap_does_not_leak);
+    tcase_add_test(robust, test_stress_naive_spawn_self_hits_far_from_origin);
+    tcase_add_test(robust, test_stress_watertight_mesh);
+    tcase_add_test(robust, test_stress_thin_triangles);
+    tcase_add_test(robust, test_stress_surface_starts_no_self_hit);
+    suite_add_tcase(s, robust);
+    TCase *all = tcase_create("every scene");
+    tcase_set_timeout(all, 20);
+    tcase_add_test(all, test_stress_every_scene_is_finite);
+    suite_add_tcase(s, all);
+    return s;
+}
