@@ -1,8 +1,9 @@
 /*
  * snell_window.c - family `snell_window` (spec/analytic/snell_window.md,
  * [ORACLE-SNELL]): the camera inside a large glass box (index n > 1,
- * transparency t) looks at one pair of its faces.  Camera rays start with
- * an empty medium stack, so at a face they go from n to 1: a ray at
+ * transparency t) looks at one pair of its faces.  At a face met from
+ * inside the tracer goes from n to 1 (the box leaves the medium stack,
+ * leaving air, whether or not the camera ray started with it): a ray at
  * incidence theta leaves when sin theta < 1/n (weight t, it sees the
  * background) and is totally reflected beyond the critical angle
  * theta_c = asin(1/n) (weight t, on to the opposite face, where the angle
