@@ -2,7 +2,7 @@
  * Tests of the local-shading and shadow families of the analytic oracle
  * (src/oracle/{ambient, lambert_sphere, plane_point, phong_plane,
  * phong_sphere, sphere_shadow, transparent_shadow, stacked_sheets}.c and
- * oracle_util.c; spec/analytic/<family>.md):
+ * oracle_util.c; spec/analytic.md, one section per family):
  *   1. the helpers and each closed form against numbers worked out by hand
  *      in the comments (3-4-5 triangles and the like), at world points
  *      placed in the image with oracle_image_point;

@@ -1,7 +1,7 @@
 /*
  * Tests of the mirror and refraction families of the analytic oracle
  * (src/oracle/{parallel_mirrors, glass_slab, snell_window, ball_lens}.c and
- * optics_util.c; spec/analytic/<family>.md):
+ * optics_util.c; spec/analytic.md, one section per family):
  *   1. the helpers against numbers worked out by hand in the comments
  *      (3-4-5 triangles, angles of 30 and 60 degrees) and against a second
  *      route (plain summation, step-by-step reflection, a 2-D vector trace

@@ -1,6 +1,6 @@
 /*
  * ambient_only.c - family `ambient_only`: a sphere lit by ambient light
- * alone (spec/analytic/ambient_only.md, [ORACLE-AMBIENT-1]).  Every sample
+ * alone (spec/analytic.md (section `ambient_only`), [ORACLE-AMBIENT-1]).  Every sample
  * point whose ray meets the sphere shows Kd * Ia of its material (slide
  * 11); the rest show the background.  (Not `ambient`: a reserved word,
  * which `oracle NAME` cannot take.)

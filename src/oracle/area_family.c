@@ -1,5 +1,5 @@
 /*
- * area_family.c - see area_family.h and spec/analytic/area_lights.md.
+ * area_family.c - see area_family.h and spec/analytic.md (section `area_lights`).
  *
  * A sample point's ray meets the floor's plane at t = (p0 - o).n / (D.n) and
  * the occluder's plane likewise; the occluder is hit when that point lies

@@ -3,7 +3,7 @@
  * disk_occluded) share: reading and checking their scenes, the geometry of
  * a camera ray's hit solved directly, the exact light at the hit
  * (area_light.h), and the tolerance of a sampled render
- * (spec/analytic/area_lights.md, "Tolerance").
+ * (spec/analytic.md (section `area_lights`), "Tolerance").
  *
  * The scenes: one Lambert floor (a plane, Ks = 0, t = 0), one distributed
  * light parallel to it, and for disk_occluded one opaque Lambert disk

@@ -1,5 +1,5 @@
 /*
- * area_light.c - see area_light.h and spec/analytic/area_lights.md.
+ * area_light.c - see area_light.h and spec/analytic.md (section `area_lights`).
  *
  * Antiderivatives of the falloffs g (section "Radial integral"):
  *   none            g = 1             G = s

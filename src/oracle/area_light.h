@@ -1,6 +1,6 @@
 /*
  * area_light.h - the exact light a distributed (area) light sends to a point
- * of a Lambert receiver parallel to it (spec/analytic/area_lights.md).
+ * of a Lambert receiver parallel to it (spec/analytic.md (section `area_lights`)).
  *
  * The tracer's distributed light is `samples` isotropic point sources of
  * power E/samples spread uniformly over the light, each with the light's

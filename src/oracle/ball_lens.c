@@ -1,5 +1,5 @@
 /*
- * ball_lens.c - family `ball_lens` (spec/analytic/ball_lens.md,
+ * ball_lens.c - family `ball_lens` (spec/analytic.md (section `ball_lens`),
  * [ORACLE-BALL]): a clear glass sphere (radius R, index n > 1,
  * transparency t, Kd 0, Ks 0) in front of a screen (a plane perpendicular
  * to the view), seen by an orthographic camera looking along the axis, the

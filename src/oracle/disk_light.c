@@ -1,5 +1,5 @@
 /*
- * disk_light.c - family `disk_light` (spec/analytic/area_lights.md, [ORACLE-DISK]):
+ * disk_light.c - family `disk_light` (spec/analytic.md (section `area_lights`), [ORACLE-DISK]):
  * a distributed disk light parallel to a Lambert floor.  On the axis the
  * light is closed for every falloff, E/A 2 pi h (G(sqrt(h^2+a^2)) - G(h))
  * (linear: E/A 2 pi h ln((sqrt(h^2+a^2)+d0)/(h+d0)); inverse_square, d0 = 0:

@@ -1,5 +1,5 @@
 /*
- * disk_occluded.c - family `disk_occluded` (spec/analytic/area_lights.md,
+ * disk_occluded.c - family `disk_occluded` (spec/analytic.md (section `area_lights`),
  * [ORACLE-OCCLUDED]): a distributed disk light, an opaque Lambert disk
  * parallel to it between it and a Lambert floor.  From a floor point the
  * occluder hides the central projection of itself onto the light's plane, a

@@ -1,5 +1,5 @@
 /*
- * glass_slab.c - family `glass_slab` (spec/analytic/glass_slab.md,
+ * glass_slab.c - family `glass_slab` (spec/analytic.md (section `glass_slab`),
  * [ORACLE-SLAB]): a clear plane-parallel slab (an axis-aligned box of
  * thickness h, index n, transparency t, Ks 0) over a lit floor, seen by an
  * orthographic camera at incidence theta.  A ray entering the top face

@@ -1,7 +1,7 @@
 /*
  * lambert_sphere.c - family `lambert_sphere`: a matte sphere under distant
  * (and point) lights seen by an orthographic camera
- * (spec/analytic/lambert_sphere.md, [ORACLE-LAMBERT-SPHERE-1]).
+ * (spec/analytic.md (section `lambert_sphere`), [ORACLE-LAMBERT-SPHERE-1]).
  *
  * In the camera frame the view ray through a screen point is a line at
  * distance off from the centre; it enters the sphere at depth

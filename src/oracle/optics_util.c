@@ -1,7 +1,8 @@
 /*
  * optics_util.c - see optics_util.h.  The derivations are in
- * spec/analytic/parallel_mirrors.md (unfolding), glass_slab.md (the shift),
- * snell_window.md (the critical angle) and ball_lens.md (the ball's path).
+ * spec/analytic.md, sections `parallel_mirrors` (unfolding), `glass_slab`
+ * (the shift), `snell_window` (the critical angle) and `ball_lens` (the
+ * ball's path).
  */
 #include <float.h>
 #include <math.h>

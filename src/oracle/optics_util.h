@@ -1,7 +1,7 @@
 /*
  * optics_util.h - closed forms shared by the mirror and refraction families
  * of the analytic oracle (parallel_mirrors, glass_slab, snell_window,
- * ball_lens; spec/analytic/<family>.md derives each formula).
+ * ball_lens; spec/analytic.md, one section per family derives each formula).
  *
  * Nothing here calls the tracer's modules (trace.c, shade.c, intersect.c,
  * camera.c): the local shading below is written again from spec/shading.md

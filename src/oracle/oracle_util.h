@@ -1,10 +1,10 @@
 /*
  * oracle_util.h - what the local-shading and shadow families share
  * (ambient, lambert_sphere, plane_point, phong_plane, phong_sphere,
- * sphere_shadow, transparent_shadow, stacked_sheets; spec/analytic/<family>.md).
+ * sphere_shadow, transparent_shadow, stacked_sheets; spec/analytic.md, one section per family).
  *
- * Everything here is written from the model's definition (spec/shading.md,
- * /work/notes/model.md) and from plain geometry, never from the tracer's
+ * Everything here is written from the model's definition (spec/shading.md)
+ * and from plain geometry, never from the tracer's
  * code: lines are met by planes and spheres through the distance of a line
  * from a point, the Phong lobe through V.R = 2(N.L)(N.V) - L.V without
  * forming R, the falloffs from their formulas.  Nothing here keeps state.

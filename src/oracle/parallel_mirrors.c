@@ -1,6 +1,6 @@
 /*
- * parallel_mirrors.c - family `parallel_mirrors` (spec/analytic/
- * parallel_mirrors.md, [ORACLE-MIRRORS]): two parallel opaque planes facing
+ * parallel_mirrors.c - family `parallel_mirrors` (spec/analytic.md, section
+ * parallel_mirrors, [ORACLE-MIRRORS]): two parallel opaque planes facing
  * each other, the camera between them.  Every camera ray not parallel to
  * the planes bounces between them forever; the tracer follows it for
  * max_depth D hits, so the pixel is the series

@@ -1,6 +1,6 @@
 /*
  * phong_plane.c - family `phong_plane`: the Phong highlight on a plane
- * (spec/analytic/phong_plane.md, [ORACLE-PHONG-PLANE-1],
+ * (spec/analytic.md (section `phong_plane`), [ORACLE-PHONG-PLANE-1],
  * [ORACLE-PHONG-PLANE-2]).
  *
  * The hit point comes from the line/plane formula; with N turned toward the

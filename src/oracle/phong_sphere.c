@@ -1,6 +1,6 @@
 /*
  * phong_sphere.c - family `phong_sphere`: the Phong highlight on a sphere
- * seen by an orthographic camera (spec/analytic/phong_sphere.md,
+ * seen by an orthographic camera (spec/analytic.md (section `phong_sphere`),
  * [ORACLE-PHONG-SPHERE-1], [ORACLE-PHONG-SPHERE-2]).
  *
  * V = -F is the same for every pixel.  The visible normal N is solved as in

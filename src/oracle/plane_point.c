@@ -1,7 +1,7 @@
 /*
  * plane_point.c - family `plane_point`: a matte plane under point lights
  * with the falloffs linear, inverse_square and none
- * (spec/analytic/plane_point.md, [ORACLE-PLANE-POINT-1]).
+ * (spec/analytic.md (section `plane_point`), [ORACLE-PLANE-POINT-1]).
  *
  * The view ray o + s D meets the plane (p0, N) at s = N.(p0 - o)/(N.D), a
  * line/plane formula; with d = |light - P| and cos(theta) = N.(light - P)/d

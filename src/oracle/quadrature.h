@@ -1,7 +1,7 @@
 /*
  * quadrature.h - adaptive Gauss-Kronrod quadrature in double, with an error
  * estimate, for the 1-D integrals the oracle's area-light families reduce to
- * (spec/analytic/area_lights.md).
+ * (spec/analytic.md (section `area_lights`)).
  *
  * The rule is the 7-point Gauss / 15-point Kronrod pair (Kronrod 1965; the
  * node and weight values are those tabulated with QUADPACK, Piessens et al.

@@ -1,5 +1,5 @@
 /*
- * rect_light.c - family `rect_light` (spec/analytic/area_lights.md, [ORACLE-RECT]):
+ * rect_light.c - family `rect_light` (spec/analytic.md (section `area_lights`), [ORACLE-RECT]):
  * a distributed rectangle (or parallelogram) light parallel to a Lambert
  * floor.  The converged light at a floor point is (E/A) times the integral
  * over the light of falloff(d) N.L: for inverse_square with d0 = 0 the solid

@@ -1,5 +1,5 @@
 /*
- * snell_window.c - family `snell_window` (spec/analytic/snell_window.md,
+ * snell_window.c - family `snell_window` (spec/analytic.md (section `snell_window`),
  * [ORACLE-SNELL]): the camera inside a large glass box (index n > 1,
  * transparency t) looks at one pair of its faces.  At a face met from
  * inside the tracer goes from n to 1 (the box leaves the medium stack,

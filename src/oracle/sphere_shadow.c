@@ -1,6 +1,6 @@
 /*
  * sphere_shadow.c - family `sphere_shadow`: an opaque sphere's shadow on a
- * plane from point and distant lights (spec/analytic/sphere_shadow.md,
+ * plane from point and distant lights (spec/analytic.md (section `sphere_shadow`),
  * [ORACLE-SPHERE-SHADOW-1], [ORACLE-SPHERE-SHADOW-2]).
  *
  * A plane point P is lit by a light exactly when the path from P to the

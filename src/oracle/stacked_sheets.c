@@ -1,6 +1,6 @@
 /*
  * stacked_sheets.c - family `stacked_sheets`: parallel transparent sheets
- * (planes and disks) over an opaque floor (spec/analytic/stacked_sheets.md,
+ * (planes and disks) over an opaque floor (spec/analytic.md (section `stacked_sheets`),
  * [ORACLE-STACKED-SHEETS-1], [ORACLE-STACKED-SHEETS-2]).
  *
  * Every surface is parallel, so each is a height h along the common normal

@@ -1,7 +1,7 @@
 /*
  * transparent_shadow.c - family `transparent_shadow`: the shadow of a
  * transparent sphere (t > 0, ior 1) on a plane, and the sphere itself
- * (spec/analytic/transparent_shadow.md, [ORACLE-TRANSPARENT-SHADOW-1],
+ * (spec/analytic.md (section `transparent_shadow`), [ORACLE-TRANSPARENT-SHADOW-1],
  * [ORACLE-TRANSPARENT-SHADOW-2]).
  *
  * Shadow (slide 47): the path from a plane point to a light passes the
