@@ -395,15 +395,67 @@ static int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax,
     return tn <= tf;
 }
 
-/* The running nearest hit.  Once something is found, rr.tmax is one ulp
- * above it, so a later primitive at exactly the same t is still seen and
- * the lower index can win the tie (see bvh.h). */
+/*
+ * The running nearest hit, with coplanar ties.  Two surfaces in one plane
+ * (a disk lying on a plane, a box standing on the floor) give hits whose t
+ * differ by an ulp or two of rounding, and "the smaller t" is then noise:
+ * z-fighting.  So every hit within the tie window of the nearest t so far
+ * is kept, and the lowest primitive index among them wins:
+ *   window(t) = TIE_REL (|t| + |origin|),
+ * 64 ulps of the larger of the distance and the origin's magnitude, the
+ * size of t's own rounding.  The candidates are pruned as the nearest t
+ * falls, so the winner does not depend on the order of the tests; rr.tmax
+ * stays at the window's far end so that no candidate is culled.  When more
+ * than TIE_MAX surfaces tie, a second pass over the now known window finds
+ * the lowest index among all of them.
+ */
+#define TIE_REL 0x1p-46
+enum { TIE_MAX = 8 };
+
 typedef struct nearest {
     ray rr;
-    hit best;
-    int found;
+    hit cand[TIE_MAX];  /* the hits within the window of t_near */
+    int count;
+    int overflow;       /* more than TIE_MAX candidates at once */
+    int fixed;          /* second pass: rr.tmax is the final window's end */
+    real t_near;        /* the least t found; in the second pass the window's end */
+    real slack;         /* TIE_REL * |origin| */
     bvh_stats *stats;
 } nearest;
+
+static real tie_limit(const nearest *ns)
+{
+    real limit = ns->t_near + (TIE_REL * fabs(ns->t_near) + ns->slack);
+    return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
+}
+
+/* Adds h to the candidates and drops those now beyond the window.  In the
+ * second pass only the lowest index counts. */
+static void nearest_add(nearest *ns, const hit *h)
+{
+    if (ns->fixed) {
+        if (ns->count == 0 || h->prim < ns->cand[0].prim)
+            ns->cand[0] = *h;
+        ns->count = 1;
+        ns->rr.tmax = ns->t_near;   /* the window's end, set by the caller */
+        return;
+    }
+    if (ns->count == 0 || h->t < ns->t_near)
+        ns->t_near = h->t;
+    real limit = tie_limit(ns);
+    int kept = 0;
+    for (int i = 0; i < ns->count; i++)
+        if (ns->cand[i].t <= limit)
+            ns->cand[kept++] = ns->cand[i];
+    if (h->t <= limit) {
+        if (kept < TIE_MAX)
+            ns->cand[kept++] = *h;
+        else
+            ns->overflow = 1;
+    }
+    ns->count = kept;
+    ns->rr.tmax = limit;
+}
 
 static void nearest_test(nearest *ns, const rf_prim *prims, int index)
 {
@@ -412,12 +464,18 @@ static void nearest_test(nearest *ns, const rf_prim *prims, int index)
         ns->stats->prims_tested++;
     if (!isect_prim(&prims[index], &ns->rr, &h))
         return;
-    if (!ns->found || h.t < ns->best.t || index < ns->best.prim) {
-        ns->best = h;
-        ns->best.prim = index;
-        ns->found = 1;
-    }
-    ns->rr.tmax = nextafter(ns->best.t, INFINITY);
+    h.prim = index;
+    nearest_add(ns, &h);
+}
+
+/* The lowest-index candidate: the nearest hit (see above). */
+static const hit *nearest_winner(const nearest *ns)
+{
+    const hit *best = &ns->cand[0];
+    for (int i = 1; i < ns->count; i++)
+        if (ns->cand[i].prim < best->prim)
+            best = &ns->cand[i];
+    return best;
 }
 
 typedef struct stack_entry {
@@ -475,20 +533,34 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
     }
 }
 
+static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
+{
+    for (int i = 0; i < b->unbounded_count; i++)
+        nearest_test(ns, prims, b->unbounded[i]);
+    if (b->node_count > 0)
+        traverse_nearest(b, prims, ns);
+}
+
 int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats)
 {
     nearest ns;
     ns.rr = *r;
-    ns.found = 0;
+    ns.count = ns.overflow = ns.fixed = 0;
+    ns.t_near = r->tmax;
+    ns.slack = TIE_REL * fmax(fabs(r->origin.x), fmax(fabs(r->origin.y), fabs(r->origin.z)));
     ns.stats = stats;
-    for (int i = 0; i < b->unbounded_count; i++)
-        nearest_test(&ns, prims, b->unbounded[i]);
-    if (b->node_count > 0)
-        traverse_nearest(b, prims, &ns);
-    if (!ns.found)
+    nearest_pass(b, prims, &ns);
+    if (ns.overflow) {
+        ns.rr = *r;
+        ns.rr.tmax = ns.t_near = tie_limit(&ns);
+        ns.count = 0;
+        ns.fixed = 1;
+        nearest_pass(b, prims, &ns);
+    }
+    if (ns.count == 0)
         return 0;
-    *h = ns.best;
-    r->tmax = ns.best.t;
+    *h = *nearest_winner(&ns);
+    r->tmax = h->t;
     return 1;
 }
 

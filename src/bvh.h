@@ -9,8 +9,11 @@
  * The tree holds indices into the prims array it was built from; the same
  * array must be passed to every query and must not change.  Building is
  * deterministic (same prims, same tree) and the nearest hit does not depend
- * on the tree's shape: among equal t the lowest primitive index wins, which
- * is what testing all primitives in order with a shrinking tmax gives.
+ * on the tree's shape: among the hits within a tie window of the least t
+ * (2^-46 (|t| + |origin|), a few dozen ulps: coplanar surfaces) the lowest
+ * primitive index wins, so a disk lying on a plane shows whichever was
+ * declared first, never a noise of both (spec/numerics.md, "Coplanar
+ * surfaces").
  * Queries allocate nothing and keep no state, so threads may share a tree.
  */
 #ifndef REFRAY_BVH_H
@@ -54,9 +57,9 @@ typedef struct bvh_stats {
 int bvh_build(bvh *b, const rf_prim *prims, int count);
 void bvh_free(bvh *b);
 
-/* The nearest hit in (r->tmin, r->tmax): like isect_prim over every
- * primitive (shrinks r->tmax, fills *h including h->prim), returns 1 on a
- * hit.  On a miss *r and *h are unchanged. */
+/* The nearest hit in (r->tmin, r->tmax), ties resolved as above: shrinks
+ * r->tmax to its t, fills *h including h->prim, returns 1 on a hit.  On a
+ * miss *r and *h are unchanged. */
 int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h);
 /* The same, adding to *stats when it is not NULL. */
 int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats);
