@@ -254,9 +254,7 @@ static int render_and_write(render_args *a, const rf_scene *scene)
     a->render.progress = progress;
     a->render.max_tree_rays = a->scene.limits.max_ray_tree;
     a->render.progress_ctx = &p;
-    signal(SIGINT, on_interrupt);
-    int status = render_image(scene, &a->render, &img, &stats);
-    signal(SIGINT, SIG_DFL);
+    int status = interrupted ? REFRAY_EXIT_INTERRUPTED : render_image(scene, &a->render, &img, &stats);
     if (status == REFRAY_EXIT_DATAERR) {
         fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
                 "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
@@ -302,9 +300,12 @@ int cli_render(int argc, char **argv)
         return status < 0 ? REFRAY_EXIT_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
+    /* From here on SIGINT means "stop, write nothing, exit 130", while the
+     * scene loads as well as while it renders. */
+    signal(SIGINT, on_interrupt);
     rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
-        return status;
+        return interrupted ? REFRAY_EXIT_INTERRUPTED : status;
     if ((double)(a.render.width ? a.render.width : scene->image.width) *
             (a.render.height ? a.render.height : scene->image.height) > (double)a.scene.limits.max_pixels) {
         scene_free(scene);
@@ -312,5 +313,6 @@ int cli_render(int argc, char **argv)
     }
     status = render_and_write(&a, scene);
     scene_free(scene);
+    signal(SIGINT, SIG_DFL);
     return status;
 }
