@@ -381,8 +381,14 @@ static int sweep_all(const verify_args *a, verify_result *steps)
     return status > worst ? status : worst;
 }
 
+/* In cli_stability.c: `verify --stability SCENE` is the stability tool. */
+int cli_stability(int argc, char **argv);
+
 int cli_verify(int argc, char **argv)
 {
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], "--stability") == 0)
+            return cli_stability(argc, argv);
     verify_args a;
     memset(&a, 0, sizeof a);
     cli_scene_opts_init(&a.scene);

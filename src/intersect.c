@@ -517,20 +517,40 @@ real isect_prim_magnitude(const rf_prim *p)
     return norm * m + shift;
 }
 
-/* The origin moved off the surface to the side of toward: +n when
- * toward . n >= 0, else -n. */
-static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real magnitude)
+/* How far a secondary ray is pushed off a surface: SPAWN_REL of the
+ * magnitude its point's rounding is relative to, plus the floor. */
+static real spawn_offset(vec3 point, real magnitude)
 {
-    real offset = SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
+    return SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
+}
+
+/* The origin moved off the surface by offset to the side of toward: +n
+ * when toward . n >= 0, else -n. */
+static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
+{
     return vec_madd(point, normal, vec_dot(toward, normal) >= 0.0 ? offset : -offset);
 }
 
-static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude)
+/* A shadow ray's tmin: the offset again, along the ray.  A surface closer
+ * than that to the point left is one with it: at a concave edge (a floor
+ * meeting a wall) the rounded point lies behind the other surface as often
+ * as in front, and light must not be stopped by it (spec/numerics.md,
+ * "Concave corners").  Mirror and refracted rays keep tmin = 0: inside a
+ * closed mirror box one that leaves a face next to an edge must still meet
+ * the adjacent face, 1e-14 away. */
+static real shadow_tmin(real offset, vec3 dir)
+{
+    real len = vec_length(dir);
+    return len > 0 ? offset / len : 0;
+}
+
+static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
 {
     ray r;
-    r.origin = spawn_origin(point, normal, dir, magnitude);
+    real offset = spawn_offset(point, magnitude);
+    r.origin = spawn_origin(point, normal, dir, offset);
     r.dir = dir;
-    r.tmin = 0.0;
+    r.tmin = shadow ? shadow_tmin(offset, dir) : 0;
     r.tmax = HUGE_VAL;
     return r;
 }
@@ -538,18 +558,19 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude)
 static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
 {
     ray r;
-    r.origin = spawn_origin(point, normal, vec_sub(target, point), magnitude);
+    real offset = spawn_offset(point, magnitude);
+    r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
     vec3 to = vec_sub(target, r.origin);
     real dist = vec_length(to);
     r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
-    r.tmin = 0.0;
+    r.tmin = offset;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);
     return r;
 }
 
 ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir)
 {
-    return spawn(point, geometric_normal, dir, 0.0);
+    return spawn(point, geometric_normal, dir, 0.0, 0);
 }
 
 ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target)
@@ -557,9 +578,35 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target)
     return spawn_to(point, geometric_normal, target, 0.0);
 }
 
+/* A ray that goes into an axis-aligned box starts strictly inside it, by
+ * the offset, on every axis.  A hit next to an edge has its other
+ * coordinates on, or an ulp beyond, the adjacent face; a mirror ray from
+ * there that heads out through that face meets it at t <= 0 and leaves a
+ * closed mirror box (spec/numerics.md, "Box edges").  Boxes thinner than
+ * twice the offset are left alone. */
+static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
+{
+    vec3 lo = p->u.box.lo, hi = p->u.box.hi;
+    for (int k = 0; k < 3; k++) {
+        real o = vec_component(origin, k), a = vec_component(lo, k) + offset, b = vec_component(hi, k) - offset;
+        if (a < b)
+            origin = vec_with(origin, k, o < a ? a : o > b ? b : o);
+    }
+    return origin;
+}
+
 ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
 {
-    return spawn(h->point, h->normal, dir, isect_prim_magnitude(p));
+    real m = isect_prim_magnitude(p);
+    ray r = spawn(h->point, h->normal, dir, m, 0);
+    if (p->kind == PRIM_BOX && !p->has_xform && vec_dot(dir, h->normal) < 0)
+        r.origin = keep_inside(p, r.origin, spawn_offset(h->point, m));
+    return r;
+}
+
+ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
+{
+    return spawn(h->point, h->normal, dir, isect_prim_magnitude(p), 1);
 }
 
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)

@@ -72,8 +72,12 @@ real isect_prim_magnitude(const rf_prim *p);
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
  * Self-Intersection", Ray Tracing Gems I, ch. 6, in the working precision): the origin
  * is pushed off the surface along the geometric normal, to the side the ray
- * goes, by SPAWN_REL * m + SPAWN_ABS where m is the largest coordinate
- * magnitude involved; then tmin = 0 and no epsilon is needed anywhere else.
+ * goes, by the offset SPAWN_REL * m + SPAWN_ABS where m is the largest
+ * coordinate magnitude involved.  Mirror and refracted rays then start at
+ * tmin = 0; shadow rays at tmin = that same offset along the ray, so that a
+ * surface within the offset of the point (the other side of a concave edge,
+ * which the rounded point may lie just behind) does not shadow it.  No
+ * epsilon is needed anywhere else.
  */
 #define SPAWN_REL (1024.0 * 2.220446049250313e-16) /* 2^-42: 1024 ulps of m */
 #define SPAWN_ABS 1e-300                           /* only matters at |p| ~ 0 */
@@ -86,9 +90,9 @@ real isect_prim_magnitude(const rf_prim *p);
  * tmin = 0, tmax = HUGE_VAL. */
 ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir);
 
-/* A shadow ray from point toward target: unit dir, tmin = 0, tmax =
- * distance * (1 - SPAWN_SHADOW_SHRINK).  A target at the origin itself gives
- * tmax = 0 (an empty interval). */
+/* A shadow ray from point toward target: unit dir, tmin = the offset, tmax =
+ * distance * (1 - SPAWN_SHADOW_SHRINK).  A target within the offset gives an
+ * empty interval: nothing can stand between. */
 ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
 
 /* The same for a hit on p, with m = max(|h->point|, isect_prim_magnitude(p)):
@@ -96,5 +100,8 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
  * origin has an error relative to its vertices or centre, not to the point). */
 ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
+/* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
+ * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
+ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
 
 #endif

@@ -128,7 +128,8 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit(s->prim, s->h, l) : ray_spawn_hit_to(s->prim, s->h, pos);
+        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
+                                             : ray_spawn_hit_to(s->prim, s->h, pos);
         real through = shadow_transmission(t, &r, st);
         if (through == 0)
             return;

@@ -969,6 +969,34 @@ START_TEST(test_ray_spawn_ellipsoid_and_box)
 }
 END_TEST
 
+/* Shadow rays start at tmin = the offset (a surface within it, such as the
+ * other side of a concave edge, does not shadow); mirror rays at 0.  A ray
+ * spawned into an axis-aligned box from a hit next to its edge starts
+ * strictly inside on every axis (by the offset). */
+START_TEST(test_ray_spawn_hit_shadow_and_box_edges)
+{
+    rf_prim bx = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
+    hit h;
+    /* From inside, straight at the edge x = -1, y = 1: the slab tie goes to
+     * x (the lower axis), so the hit is on the face x = -1 with y = 1. */
+    ray r = make_ray(vec_make(0, 0, 0.25), vec_normalize(vec_make(-1, 1, 0)));
+    ck_assert(isect_prim(&bx, &r, &h));
+    ck_assert(h.point.x == -1 && h.point.y == 1);
+    vec3 m = reflect(r.dir, h.normal);
+    ray mr = ray_spawn_hit(&bx, &h, m), sr = ray_spawn_hit_shadow(&bx, &h, m);
+    real off = SPAWN_REL * 1 + SPAWN_ABS;   /* magnitude 1 */
+    ck_assert(mr.tmin == 0.0);
+    ck_assert_near(sr.tmin, off, 1e-3 * off);
+    /* Inside by the offset on x (the hit face) and on y (the edge). */
+    ck_assert_near(mr.origin.x, -1 + off, 4 * DBL_EPSILON);
+    ck_assert_near(mr.origin.y, 1 - off, 4 * DBL_EPSILON);
+    /* So the mirror ray, heading out through y = 1, still meets it. */
+    hit h2;
+    ck_assert(isect_prim(&bx, &mr, &h2));
+    ck_assert(h2.normal.y == 1);
+}
+END_TEST
+
 START_TEST(test_isect_prim_magnitude)
 {
     rf_prim s = prim_sphere(vec_make(1, -7, 3), 2);
@@ -1033,6 +1061,7 @@ Suite *suite_intersect(void)
     tcase_add_test(spawn, test_ray_spawn_sheets_no_self_hit);
     tcase_add_test(spawn, test_ray_spawn_hit_large_geometry_near_origin);
     tcase_add_test(spawn, test_ray_spawn_ellipsoid_and_box);
+    tcase_add_test(spawn, test_ray_spawn_hit_shadow_and_box_edges);
     suite_add_tcase(s, spawn);
     return s;
 }

@@ -14,12 +14,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include "testlib.h"
 #include "camera.h"
 #include "intersect.h"
 #include "render.h"
 #include "scene.h"
 #include "shade.h"
+#include "stability.h"
 #include "trace.h"
 #include "precision/naive.h"
 
@@ -820,6 +823,82 @@ START_TEST(test_stress_surface_starts_no_self_hit)
 }
 END_TEST
 
+START_TEST(test_stress_concave_corner_is_lit)
+{
+    /* [NUM-SPAWN-2] Rays through 2000 points of the edge where the floor
+     * (y = 0) meets the wall (x = -1).  Each is lit as the surface it hits
+     * is at the exact edge point: Kd Ia + Kd E/(d + d0) (N.L). */
+    rf_scene *s = load_stress("concave_corner");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    const rf_light *light = &s->lights[0];
+    int shadowed = 0;
+    for (int k = 0; k < 2000; k++) {
+        vec3 edge = vec_make(-1, 0, -2 + 4 * (k + 0.5) / 2000);
+        ray r;
+        r.origin = s->camera.eye;
+        r.dir = vec_normalize(vec_sub(edge, r.origin));
+        r.tmin = 0;
+        r.tmax = HUGE_VAL;
+        ray probe = r;
+        hit h;
+        ck_assert(bvh_intersect(&t.accel, s->prims, &probe, &h));
+        trace_stats st;
+        memset(&st, 0, sizeof st);
+        rgb c = trace_ray(&t, &r, 1, &t.eye_media, 0, &st);
+        const rf_prim *p = &s->prims[h.prim];
+        ld kd = s->materials[p->material].kd.x;
+        lvec to = lv_sub(lv_of(light->position), lv_of(edge));
+        ld d = lv_len(to), nl = lv_dot(lv_of(p->u.plane.normal), to) / d;
+        ld want = kd * s->ambient.x + kd * light->power.x / (d + light->d0) * nl;
+        shadowed += fabsl(c.x - want) > 1e-9L * want;
+    }
+    ck_assert_int_eq(shadowed, 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_stress_mirror_box_edges_keep_the_light)
+{
+    /* [NUM-BOX-1] Rays from inside the closed mirror box aimed exactly at
+     * its edges and corners (where two or three faces meet): each must
+     * bounce all 1000 times, red = 1000 Kd Ia = 1.  A mirror ray leaving a
+     * face next to an edge used to start on, or an ulp beyond, the adjacent
+     * face and escape: 38 of 3072 pixels of a 64 x 48 render of the box lost
+     * their light (found by `refray verify --stability`). */
+    rf_scene *s = load_stress("mirror_box_1000");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    static const double origins[3][3] = {{0, 0, 0}, {0.3, -0.2, 0.1}, {-0.7, 0.55, -0.35}};
+    int rays = 0, lost = 0;
+    for (int o = 0; o < 3; o++)
+        for (int k = 0; k < 27; k++) {
+            int a = k % 3 - 1, b = k / 3 % 3 - 1, c = k / 9 - 1;
+            if ((a != 0) + (b != 0) + (c != 0) < 2)
+                continue;   /* edges (two of x, y, z at +-1) and corners (three) */
+            for (int q = 0; q < 5; q++) {
+                double f = -0.8 + 0.4 * q;
+                vec3 target = vec_make(a ? a : f, b ? b : f, c ? c : f);
+                ray r;
+                r.origin = vec_make(origins[o][0], origins[o][1], origins[o][2]);
+                r.dir = vec_normalize(vec_sub(target, r.origin));
+                r.tmin = 0;
+                r.tmax = HUGE_VAL;
+                trace_stats st;
+                memset(&st, 0, sizeof st);
+                rgb col = trace_ray(&t, &r, 1, &t.eye_media, 0, &st);
+                rays++;
+                lost += !(fabs(col.x - 1.0) <= 1e-12);
+            }
+        }
+    ck_assert_int_gt(rays, 250);
+    ck_assert_int_eq(lost, 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_stress_camera_inside_nested_glass)
 {
     rf_image img = render_stress("camera_inside_nested_glass", NULL);
@@ -878,6 +957,116 @@ START_TEST(test_precision_befores_are_worse)
     measure b = {0, "-", 0, 0};
     find_measure("before: textbook refract")->run(20000, 31, &b);
     ck_assert_int_gt(b.wrong, 0);
+}
+END_TEST
+
+/* ---- the stability tool (src/stability.c) ------------------------------- */
+
+START_TEST(test_stability_raw_round_trip_is_lossless)
+{
+    /* [NUM-STAB-1] Every long double survives the raw dump bit for bit:
+     * thirds, the neighbours of 1, the extremes, -0 and subnormals. */
+    stab_image a = {3, 2, NULL, 1, 7}, b;
+    long double v[18] = {1.0L / 3, -0.0L, 0, DBL_MAX, 0x1p-1074, LDBL_MAX, LDBL_MIN, nextafterl(0, 1),
+                         nextafterl(1, 2), nextafterl(1, 0), 1e-300L / 3, -2.5L, 0.1L, 0.1, 1e308L * 10,
+                         3.14159265358979323846264338327950288L, 1, 1e-4940L};
+    a.rgb = v;
+    FILE *f = tmpfile();
+    ck_assert_ptr_nonnull(f);
+    ck_assert_int_eq(stability_write_raw(f, &a), 0);
+    rewind(f);
+    char err[128];
+    ck_assert_int_eq(stability_read_raw(f, &b, err, sizeof err), 0);
+    fclose(f);
+    ck_assert_int_eq(b.width, 3);
+    ck_assert_int_eq(b.height, 2);
+    ck_assert_int_eq(b.long_double, 1);
+    ck_assert_int_eq(b.nonfinite, 7);
+    for (int i = 0; i < 18; i++)
+        ck_assert_msg(v[i] == b.rgb[i] && signbit(v[i]) == signbit(b.rgb[i]), "value %d: %La became %La", i, v[i],
+                      b.rgb[i]);
+    stability_free(&b);
+    /* Malformed and truncated dumps are refused with a message. */
+    static const char *const bad[] = {"", "refray-raw 2 1 1 double 0\n0 0 0\n", "refray-raw 1 1 1 float 0\n0 0 0\n",
+                                      "refray-raw 1 2 1 double 0\n0x1p+0 0 0\n", "refray-raw 1 1 1 double 0\n1 zz 0\n"};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        f = tmpfile();
+        fputs(bad[k], f);
+        rewind(f);
+        ck_assert_int_eq(stability_read_raw(f, &b, err, sizeof err), -1);
+        ck_assert(err[0] != '\0');
+        fclose(f);
+    }
+}
+END_TEST
+
+START_TEST(test_stability_compare_reports_where_and_how_much)
+{
+    long double x[18], y[18];
+    for (int i = 0; i < 18; i++)
+        x[i] = y[i] = 0.25L + i;
+    y[3 * 5 + 1] *= 1 + 2e-6L;     /* pixel (2, 1), green: 2e-6 relative */
+    y[0] *= 1 + 1e-13L;            /* pixel (0, 0), red: 1e-13 */
+    y[3 * 1 + 2] = x[3 * 1 + 2] = 0; /* pixel (1, 0), blue: 0 and 0, identical */
+    stab_image a = {3, 2, x, 0, 0}, b = {3, 2, y, 1, 0};
+    stab_report r;
+    rf_image map;
+    ck_assert_int_eq(stability_compare(&a, &b, 1e-9L, &r, &map), 0);
+    ck_assert_int_eq(r.pixels, 6);
+    ck_assert_int_eq(r.beyond, 1);
+    ck_assert_int_eq(r.rel_x, 2);
+    ck_assert_int_eq(r.rel_y, 1);
+    ck_assert(fabsl(r.max_rel - 2e-6L / (1 + 2e-6L)) < 1e-15L);
+    ck_assert_int_eq(r.band[0], 4);
+    ck_assert_int_eq(r.band[2], 1);   /* 1e-13: 1e-15 .. 1e-12 */
+    ck_assert_int_eq(r.band[5], 1);   /* 1e-6 and more */
+    /* The map: (17 + log10 rel) / 17, 0 where identical. */
+    ck_assert_near(img_pixel(&map, 2, 1)[1], (17 + log10(2e-6 / (1 + 2e-6))) / 17, 1e-12);
+    ck_assert(img_pixel(&map, 1, 0)[2] == 0);
+    img_free(&map);
+    stab_image c = {2, 3, x, 0, 0};
+    ck_assert_int_eq(stability_compare(&a, &c, 1e-9L, &r, NULL), -1);
+}
+END_TEST
+
+START_TEST(test_stability_render_is_render_image)
+{
+    /* In this build stability_render's pixels are render_image's, exactly
+     * (the same render_pixel, only not rounded to double on the way). */
+    rf_scene *s = load_stress("touching_glass_pair");
+    stab_image si;
+    ck_assert_int_eq(stability_render(s, NULL, &si), REFRAY_EXIT_OK);
+    ck_assert_str_eq(stability_real_name(), sizeof(real) == sizeof(double) ? "double" : "long-double");
+    rf_image img;
+    render_stats st;
+    render_checked(s, &img, &st);
+    for (long i = 0; i < 3L * img.width * img.height; i++)
+        ck_assert((double)si.rgb[i] == img.rgb[i]);
+    stability_free(&si);
+    img_free(&img);
+    scene_free(s);
+}
+END_TEST
+
+/* End to end through the command, when the long double twin has been built
+ * next to the refray under test (make refray-ld): a stable scene passes, and
+ * the huge-coordinates scene (outside the documented domain) is reported
+ * unstable with exit status 1. */
+START_TEST(test_stability_command_end_to_end)
+{
+    const char *bin = getenv("REFRAY_BIN");
+    char twin[512], cmd[1200];
+    if (!bin)
+        return;
+    snprintf(twin, sizeof twin, "%.*s/refray-ld", (int)(strrchr(bin, '/') ? strrchr(bin, '/') - bin : 1),
+             strrchr(bin, '/') ? bin : ".");
+    if (access(twin, X_OK) != 0)
+        return;
+    snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/ortho_far_sphere.scene >/dev/null 2>&1", bin);
+    ck_assert_int_eq(system(cmd), 0);
+    snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/huge_coordinates.scene >/dev/null 2>&1", bin);
+    int status = system(cmd);
+    ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 1);
 }
 END_TEST
 
@@ -948,7 +1137,16 @@ Suite *suite_stability(void)
     tcase_add_test(robust, test_stress_watertight_mesh);
     tcase_add_test(robust, test_stress_thin_triangles);
     tcase_add_test(robust, test_stress_surface_starts_no_self_hit);
+    tcase_add_test(robust, test_stress_concave_corner_is_lit);
+    tcase_add_test(robust, test_stress_mirror_box_edges_keep_the_light);
     suite_add_tcase(s, robust);
+    TCase *tool = tcase_create("stability tool");
+    tcase_set_timeout(tool, 20);
+    tcase_add_test(tool, test_stability_raw_round_trip_is_lossless);
+    tcase_add_test(tool, test_stability_compare_reports_where_and_how_much);
+    tcase_add_test(tool, test_stability_render_is_render_image);
+    tcase_add_test(tool, test_stability_command_end_to_end);
+    suite_add_tcase(s, tool);
     TCase *precision = tcase_create("precision");
     tcase_set_timeout(precision, 20);
     tcase_add_test(precision, test_precision_bounds);
