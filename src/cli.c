@@ -127,8 +127,6 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-/* In cli_export.c. */
-int cli_export(int argc, char **argv);
 
 int cli_main(int argc, char **argv)
 {

@@ -14,6 +14,7 @@ int cli_main(int argc, char **argv);
 
 int cli_check(int argc, char **argv);
 int cli_render(int argc, char **argv);
+int cli_export(int argc, char **argv);
 
 /* Options every scene-reading command accepts: the input limits and
  * whether warnings are shown.  Returns the number of argv entries consumed

@@ -9,10 +9,6 @@
 #include "cli.h"
 #include "export_pov.h"
 
-/* Declared here, not in cli.h (not this command's file); cli.c declares
- * it the same way. */
-int cli_export(int argc, char **argv);
-
 typedef struct export_args {
     cli_scene_opts scene;
     const char *input, *output, *format;

@@ -300,8 +300,8 @@ static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_
     snprintf(name, sizeof name, "material %.40s (%.250s)", m->name ? m->name : "inline", at);
     if (!is_grey(m->ks) && s->light_count > 0)
         add_note(n, "%s: Ks [%g, %g, %g] is not grey and POV-Ray's phong is one number: the highlight uses "
-                 "their mean %g (the mirror ray keeps the colour)", name, m->ks.x, m->ks.y, m->ks.z,
-                 (m->ks.x + m->ks.y + m->ks.z) / 3);
+                 "their mean %g (the mirror ray keeps the colour)", name, (double)m->ks.x, (double)m->ks.y,
+                 (double)m->ks.z, (double)(m->ks.x + m->ks.y + m->ks.z) / 3);
     if (deep && solid && m->t > 0 && m->ior != 1 && tir_differs(m))
         add_note(n, "%s: on total internal reflection POV-Ray adds the mirror ray with weight 1, refray "
                  "with Ks + t (they agree only where Ks + t = 1)", name);

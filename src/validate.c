@@ -30,7 +30,7 @@ static void warn_energy(loader *L)
         if (vec_max_component(sum) > 1 && material_used_by_scene(L, i))
             diag_report(&L->diag, DIAG_WARNING, m->where,
                         "Kd + Ks = %g exceeds 1: this surface reflects more light than it receives",
-                        vec_max_component(sum));
+                        (double)vec_max_component(sum));
     }
 }
 

@@ -1,6 +1,6 @@
 /*
  * Tests of the area-light families of the analytic oracle (rect_light,
- * disk_light, disk_occluded; spec/analytic/area_lights.md) and of their
+ * disk_light, disk_occluded; spec/analytic.md (section `area_lights`)) and of their
  * numerical helpers (quadrature.c, elliptic.c, area_light.c).
  *
  * Expected values come from other routes: hand formulas, DLMF's tabulated
@@ -683,7 +683,7 @@ static double convergence_slope(const char *path, int width, int height)
 START_TEST(test_area_convergence_slope_smooth)
 {
     /* A smooth integrand under stratified jitter: RMS ~ N^-1 (measured
-     * -0.99 on 80 x 60; spec/analytic/area_lights.md). */
+     * -0.99 on 80 x 60; spec/analytic.md (section `area_lights`)). */
     double slope = convergence_slope("scenes/analytic/rect_light.scene", 32, 24);
     ck_assert_msg(slope > -1.3 && slope < -0.8, "slope %.3f", slope);
     slope = convergence_slope("scenes/analytic/disk_light_linear.scene", 32, 24);

@@ -853,6 +853,21 @@ START_TEST(test_shade_shadow_transmission_is_a_product)
 }
 END_TEST
 
+/* [SHADE-SAT-1] A channel that overflowed to +Inf comes back as DBL_MAX;
+ * finite values pass unchanged, bit for bit; NaN stays NaN so the tracer's
+ * non-finite counter still sees it. */
+START_TEST(test_shade_saturate_caps_infinity_keeps_nan)
+{
+    double big = DBL_MAX;
+    rgb c = shade_saturate(vec_make(big + big, 0.25, -3.0));
+    ck_assert(c.x == DBL_MAX);
+    ck_assert(c.y == 0.25 && c.z == -3.0);
+    c = shade_saturate(vec_make(NAN, 1.0, DBL_MAX));
+    ck_assert(isnan(c.x));
+    ck_assert(c.z == DBL_MAX);
+}
+END_TEST
+
 Suite *suite_shade(void)
 {
     Suite *s = suite_create("shade");
@@ -892,6 +907,7 @@ Suite *suite_shade(void)
         {"shade_local", {test_shade_local_keeps_highlight_whole}},
         {"shade_combine", {test_shade_combine_known_value, test_shade_combine_routes_agree}},
         {"shade_shadow_transmission", {test_shade_shadow_transmission_is_a_product}},
+        {"shade_saturate", {test_shade_saturate_caps_infinity_keeps_nan}},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         TCase *tc = tcase_create(cases[i].name);

@@ -96,7 +96,7 @@ static lvec lv_cross(lvec a, lvec b)
 
 /* The camera ray through the centre of pixel (i, j), from the camera as
  * written (eye, look_at, up, fov or width) and the definitions of
- * notes/model.md, not from camera.c. */
+ * spec/shading.md, not from camera.c. */
 static void exact_camera_ray(const rf_scene *s, int i, int j, lvec *o, lvec *d)
 {
     const rf_camera *c = &s->camera;
@@ -141,7 +141,7 @@ static int exact_sphere(lvec c, ld radius, lvec o, lvec d, lvec *n, ld *margin)
 }
 
 /* Kd*Ia + sum over distant lights of Kd*E*max(0, N.L), N facing the viewer:
- * the model (notes/model.md) for a diffuse surface that nothing shadows.
+ * the model (spec/shading.md) for a diffuse surface that nothing shadows.
  * Grey values: channel x. */
 static ld exact_lambert(const rf_scene *s, const rf_material *m, lvec n, lvec d)
 {
