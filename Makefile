@@ -65,7 +65,8 @@ EXR_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags OpenEXR))
 EXR_LIBS   = -lOpenEXRCore
 endif
 CHECK_CFLAGS = $(shell pkg-config --cflags check)
-CHECK_LIBS   = $(shell pkg-config --libs check)
+# The tests compute some references in __float128 (libquadmath, part of gcc).
+CHECK_LIBS   = $(shell pkg-config --libs check) -lquadmath
 
 ifeq ($(V),1)
 Q :=

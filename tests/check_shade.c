@@ -2,14 +2,19 @@
  * Tests of src/shade.c, one TCase per function.  Statement IDs refer to
  * spec/shading.md.  Expected values are derived by hand (derivation in the
  * comment above each number) or by a route the code does not take: sines
- * from cross products of returned vectors, long double or exact rational
+ * from cross products of returned vectors, __float128 or exact rational
  * references for the critical angle.
  */
 #include <float.h>
 #include <math.h>
 #include "testlib.h"
+#include <quadmath.h>
 #include "shade.h"
 
+
+/* References are computed in __float128: software arithmetic, the same under
+ * valgrind (which runs x87 long double at double precision). */
+typedef __float128 quad;
 static const double pi = 3.14159265358979323846;
 
 static double rad(double deg) { return deg * (pi / 180.0); }
@@ -573,22 +578,28 @@ static vec3 incoming_with_cos(double c)
     return vec_make(sqrt(1.0 - c * c), -c, 0);
 }
 
-/* Sign of the discriminant (n1 c)^2 - (n1 - n2)(n1 + n2), in long double.
+/* Sign of the discriminant (n1 c)^2 - (n1 - n2)(n1 + n2), in __float128.
  * n1 - n2 and n1 + n2 are exact there (54 bits at most), each product of
- * doubles is rounded once to 64 bits: both sides carry a relative error of
- * about 2^-62, far below the relative margin 2 * 2^-54 that one double ulp
+ * doubles is rounded once to 113 bits: both sides carry a relative error of
+ * about 2^-112, far below the relative margin 2 * 2^-54 that one double ulp
  * of c gives.  (Not n1^2 - n2^2: for n1 = 1 + 1e-12 that difference loses
  * everything to the rounding of n1^2.) */
 static int ld_refracts(double n1, double n2, double c)
 {
-    long double a = (long double)n1 * c;
-    long double b = ((long double)n1 - n2) * ((long double)n1 + n2);
+    /* Both sides are of degree 2 in (n1, n2): scaling them by the same power
+     * of two is exact and keeps the __float128 arithmetic near 1 (valgrind
+     * mishandles its extreme exponents). */
+    int e = ilogb(n1);
+    n1 = ldexp(n1, -e);
+    n2 = ldexp(n2, -e);
+    quad a = (quad)n1 * c;
+    quad b = ((quad)n1 - n2) * ((quad)n1 + n2);
     return a * a > b;
 }
 
 /* [SHADE-SNELL-2] [SHADE-CRIT-1] The critical cosine splits refraction from
  * TIR to the last bit.  The reference c* = sqrt((n1 - n2)(n1 + n2))/n1 is
- * computed in long double and rounded to the nearest double; the doubles
+ * computed in __float128 and rounded to the nearest double; the doubles
  * one ulp on either side are checked to lie strictly on either side of the
  * true critical cosine (ld_refracts), then cos th1 one ulp above c* must
  * refract (angle just below critical) and one ulp below must reflect. */
@@ -599,12 +610,11 @@ START_TEST(test_shade_refract_critical_split_is_exact)
         {1.5, 1.33}, {1.0 + 1e-12, 1.0}, {4.0, 1.0}, {1e6, 1.0}, {1.25, 1.0},
         {1.09398, 1.0}, {1.12839, 1.0}, {1e200, 3e199}, {1e-200, 3e-201},
     };
-    ck_assert_msg(LDBL_MANT_DIG >= 64, "this test needs an extended long double");
     vec3 n = vec_make(0, 1, 0), t;
     for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
         double n1 = pairs[p].n1, n2 = pairs[p].n2;
-        long double ln1 = n1, ln2 = n2;
-        double cc = (double)(sqrtl((ln1 - ln2) * (ln1 + ln2)) / ln1);
+        quad ln1 = ldexp(n1, -ilogb(n1)), ln2 = ldexp(n2, -ilogb(n1));
+        double cc = (double)(sqrtq((ln1 - ln2) * (ln1 + ln2)) / ln1);
         double above = nextafter(cc, 2.0), below = nextafter(cc, 0.0);
         ck_assert(ld_refracts(n1, n2, above) && !ld_refracts(n1, n2, below));
         ck_assert_msg(shade_refract(incoming_with_cos(above), n, n1, n2, &t) == 1,
@@ -621,7 +631,7 @@ END_TEST
  * the root, i.e. ~1e-8 in a cos th2 of ~1e-8.  Pairs with a rational
  * critical cosine p/q give an exact reference:
  *   n2^2 cos^2 th2 = n1^2 (c^2 - (p/q)^2) = (n1/q)^2 (q c - p)(q c + p),
- * where q c has at most 57 bits, so q c - p is exact in long double.
+ * where q c has at most 57 bits, so q c - p is exact in __float128.
  *   n1 = 1.25, n2 = 1: sin th_c = 0.8, cos th_c = 3/5;
  *   n1 = 5, n2 = 3: cos th_c = 4/5;  n1 = 13, n2 = 12: cos th_c = 5/13. */
 START_TEST(test_shade_refract_accurate_near_critical)
@@ -633,14 +643,14 @@ START_TEST(test_shade_refract_accurate_near_critical)
     vec3 n = vec_make(0, 1, 0);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double c = nextafter(cases[i].p / cases[i].q, 0.0);
-        while ((long double)cases[i].q * c - cases[i].p <= 0)
+        while ((quad)cases[i].q * c - cases[i].p <= 0)
             c = nextafter(c, 2.0);
         for (int step = 0, k = 0; k < (int)(sizeof ulps / sizeof ulps[0]); k++) {
             for (; step < ulps[k] - 1; step++)
                 c = nextafter(c, 2.0);
-            long double qc = (long double)cases[i].q * c;
-            long double k2 = (qc - cases[i].p) * (qc + cases[i].p);
-            double want = (double)(sqrtl(k2) * cases[i].n1 / cases[i].q / cases[i].n2);
+            quad qc = (quad)cases[i].q * c;
+            quad k2 = (qc - cases[i].p) * (qc + cases[i].p);
+            double want = (double)(sqrtq(k2) * cases[i].n1 / cases[i].q / cases[i].n2);
             vec3 t;
             ck_assert_int_eq(shade_refract(incoming_with_cos(c), n, cases[i].n1, cases[i].n2, &t), 1);
             ck_assert_rel(-t.y, want, 1e-13);
@@ -701,8 +711,8 @@ END_TEST
  *   13 -> 5: 12/13 below double(12/13), likewise. */
 START_TEST(test_shade_critical_angle_cos_rational_cases)
 {
-    ck_assert((long double)5 * 0.6 - 3 < 0 && (long double)5 * 0.8 - 4 > 0);
-    ck_assert((long double)13 * (5.0 / 13) - 5 > 0 && (long double)13 * (12.0 / 13) - 12 > 0);
+    ck_assert((quad)5 * 0.6 - 3 < 0 && (quad)5 * 0.8 - 4 > 0);
+    ck_assert((quad)13 * (5.0 / 13) - 5 > 0 && (quad)13 * (12.0 / 13) - 12 > 0);
     ck_assert(shade_critical_angle_cos(1.25, 1.0) == nextafter(0.6, 1.0));
     ck_assert(shade_critical_angle_cos(5.0, 3.0) == 0.8);
     ck_assert(shade_critical_angle_cos(13.0, 12.0) == 5.0 / 13);
@@ -721,7 +731,7 @@ START_TEST(test_shade_critical_angle_cos_zero_without_tir)
 }
 END_TEST
 
-/* [SHADE-CRIT-1] Against the long double reference (rounded to nearest, so
+/* [SHADE-CRIT-1] Against the __float128 reference (rounded to nearest, so
  * the function's rounded-up value is it or the next double), and agreeing
  * with shade_refract at the returned value and one ulp below; the
  * textbook sin th_c = n2/n1 is reproduced from the returned cosine. */
@@ -737,8 +747,8 @@ START_TEST(test_shade_critical_angle_cos_matches_refract)
     vec3 n = vec_make(0, 1, 0), t;
     for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
         double n1 = pairs[p].n1, n2 = pairs[p].n2;
-        long double ln1 = n1, ln2 = n2;
-        double ref = (double)(sqrtl((ln1 - ln2) * (ln1 + ln2)) / ln1);
+        quad ln1 = ldexp(n1, -ilogb(n1)), ln2 = ldexp(n2, -ilogb(n1));
+        double ref = (double)(sqrtq((ln1 - ln2) * (ln1 + ln2)) / ln1);
         double cc = shade_critical_angle_cos(n1, n2);
         ck_assert_msg(cc == ref || cc == nextafter(ref, 2.0), "n1=%g n2=%g: %.17g vs %.17g", n1,
                       n2, cc, ref);

@@ -25,17 +25,20 @@
 #include "stability.h"
 #include "trace.h"
 #include "precision/naive.h"
+#include <quadmath.h>
 
-#define REF long double
-#define REF_SQRT sqrtl
-#define REF_POW powl
-#define REF_FABS fabsl
-#define REF_EPSILON LDBL_EPSILON
+/* The reference precision is __float128: done in software, so it is the same
+ * under valgrind, which computes x87 long double in double precision. */
+#define REF __float128
+#define REF_SQRT sqrtq
+#define REF_POW powq
+#define REF_FABS fabsq
+#define REF_EPSILON ((__float128)0x1p-112)
 #include "precision/measure.h"
 
 #define STRESS_DIR "scenes/stress"
 
-typedef long double ld;
+typedef __float128 ld;
 
 /* ---- loading and rendering ---------------------------------------------- */
 
@@ -55,7 +58,7 @@ static void render_checked(const rf_scene *s, rf_image *img, render_stats *st)
 {
     ck_assert_int_eq(render_image(s, NULL, img, st), REFRAY_EXIT_OK);
     ck_assert_msg(st->trace.nonfinite == 0, "%ld non-finite values traced", st->trace.nonfinite);
-    for (long i = 0; i < 3L * img->width * img->height; i++)
+    for (long i = 0; i < 3 * img->width * img->height; i++)
         ck_assert_msg(isfinite(img->rgb[i]), "value %ld is %g", i, img->rgb[i]);
 }
 
@@ -86,7 +89,7 @@ static lvec lv_add(lvec a, lvec b) { return lv(a.x + b.x, a.y + b.y, a.z + b.z);
 static lvec lv_sub(lvec a, lvec b) { return lv(a.x - b.x, a.y - b.y, a.z - b.z); }
 static lvec lv_scale(lvec a, ld s) { return lv(a.x * s, a.y * s, a.z * s); }
 static ld lv_dot(lvec a, lvec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lv_len(lvec a) { return sqrtl(lv_dot(a, a)); }
+static ld lv_len(lvec a) { return sqrtq(lv_dot(a, a)); }
 static lvec lv_unit(lvec a) { return lv_scale(a, 1 / lv_len(a)); }
 
 static lvec lv_cross(lvec a, lvec b)
@@ -105,13 +108,13 @@ static void exact_camera_ray(const rf_scene *s, int i, int j, lvec *o, lvec *d)
     lvec f = lv_unit(lv_sub(lv_of(c->look_at), eye));
     lvec r = lv_unit(lv_cross(f, lv_of(c->up)));
     lvec u = lv_cross(r, f);
-    ld sx = 2 * (i + 0.5L) / w - 1, sy = 1 - 2 * (j + 0.5L) / h, aspect = (ld)h / w;
+    ld sx = 2 * (i + 0.5) / w - 1, sy = 1 - 2 * (j + 0.5) / h, aspect = (ld)h / w;
     if (c->kind == CAMERA_ORTHOGRAPHIC) {
-        ld half = c->width / 2.0L;
+        ld half = c->width / 2.0;
         *o = lv_add(eye, lv_add(lv_scale(r, sx * half), lv_scale(u, sy * half * aspect)));
         *d = f;
     } else {
-        ld half = tanl(c->fov / 2.0L * (3.14159265358979323846264338327950288L / 180));
+        ld half = tanq((ld)c->fov / 2 * (acosq(-1) / 180));
         *o = eye;
         *d = lv_unit(lv_add(f, lv_add(lv_scale(r, sx * half), lv_scale(u, sy * half * aspect))));
     }
@@ -132,7 +135,7 @@ static int exact_sphere(lvec c, ld radius, lvec o, lvec d, lvec *n, ld *margin)
     *margin = (radius - l) / radius;
     if (l > radius)
         return 0;
-    ld half = sqrtl((radius - l) * (radius + l));
+    ld half = sqrtq((radius - l) * (radius + l));
     ld t = tca - half > 0 ? tca - half : tca + half;
     if (!(t > 0))
         return 0;
@@ -186,7 +189,7 @@ static sphere_check check_sphere_scene(const char *name, ld edge, ld tol)
             exact_camera_ray(s, i, j, &o, &d);
             int hits = exact_sphere(lv_of(p->u.sphere.center), p->u.sphere.radius, o, d, &n, &margin);
             double got = img_pixel(&img, i, j)[0];
-            if (fabsl(margin) < edge) {
+            if (fabsq(margin) < edge) {
                 out.skipped++;
                 continue;
             }
@@ -197,9 +200,9 @@ static sphere_check check_sphere_scene(const char *name, ld edge, ld tol)
                 continue;
             }
             ld want = exact_lambert(s, &s->materials[p->material], n, d);
-            ld rel = fabsl(got - want) / want;
-            ck_assert_msg(rel <= tol, "%s (%d,%d): %.17g, expected %.17Lg (relative error %.3Lg > %.3Lg)", name,
-                          i, j, got, want, rel, tol);
+            ld rel = fabsq(got - want) / want;
+            ck_assert_msg(rel <= tol, "%s (%d,%d): %.17g, expected %.17g (relative error %.3g > %.3g)", name,
+                          i, j, got, (double)want, (double)rel, (double)tol);
             if (rel > out.worst_rel)
                 out.worst_rel = rel;
             out.hits++;
@@ -214,7 +217,7 @@ static sphere_check check_sphere_scene(const char *name, ld edge, ld tol)
 
 START_TEST(test_stress_tiny_sphere_far)
 {
-    sphere_check c = check_sphere_scene("tiny_sphere_far", 1e-6L, 1e-9L);
+    sphere_check c = check_sphere_scene("tiny_sphere_far", 1e-6, 1e-9);
     ck_assert_int_gt(c.hits, 100);
     ck_assert_int_gt(c.misses, 20);
 }
@@ -222,14 +225,14 @@ END_TEST
 
 START_TEST(test_stress_huge_sphere_near)
 {
-    sphere_check c = check_sphere_scene("huge_sphere_near", 1e-9L, 1e-9L);
+    sphere_check c = check_sphere_scene("huge_sphere_near", 1e-9, 1e-9);
     ck_assert_int_eq(c.hits, 256);
 }
 END_TEST
 
 START_TEST(test_stress_sphere_1e6_far)
 {
-    sphere_check c = check_sphere_scene("sphere_1e6_far", 1e-9L, 1e-9L);
+    sphere_check c = check_sphere_scene("sphere_1e6_far", 1e-9, 1e-9);
     ck_assert_int_gt(c.hits, 50);
     ck_assert_int_gt(c.misses, 50);
 }
@@ -237,14 +240,14 @@ END_TEST
 
 START_TEST(test_stress_ortho_far_sphere)
 {
-    sphere_check c = check_sphere_scene("ortho_far_sphere", 1e-9L, 1e-12L);
+    sphere_check c = check_sphere_scene("ortho_far_sphere", 1e-9, 1e-12);
     ck_assert_int_gt(c.hits, 400);
 }
 END_TEST
 
 START_TEST(test_stress_terminator)
 {
-    sphere_check c = check_sphere_scene("terminator", 1e-9L, 1e-12L);
+    sphere_check c = check_sphere_scene("terminator", 1e-9, 1e-12);
     ck_assert_int_gt(c.hits, 300);
 }
 END_TEST
@@ -253,10 +256,10 @@ START_TEST(test_stress_acne_scales)
 {
     static const char *const names[] = {"acne_scale_1e-6", "acne_scale_1", "acne_scale_1e6"};
     for (int k = 0; k < 3; k++) {
-        sphere_check c = check_sphere_scene(names[k], 1e-9L, 1e-9L);
+        sphere_check c = check_sphere_scene(names[k], 1e-9, 1e-9);
         ck_assert_int_gt(c.hits, 50);
     }
-    sphere_check c = check_sphere_scene("acne_offset_1e8", 1e-6L, 1e-6L);
+    sphere_check c = check_sphere_scene("acne_offset_1e8", 1e-6, 1e-6);
     ck_assert_int_gt(c.hits, 50);
 }
 END_TEST
@@ -283,7 +286,7 @@ static ld exact_phong(const rf_scene *s)
     ld nl = lv_dot(n, l);
     lvec r = lv_sub(lv_scale(n, 2 * nl), l);
     ld vr = lv_dot(v, r);
-    ld lobe = vr > 0 ? powl(vr, m->n) : 0;
+    ld lobe = vr > 0 ? powq(vr, m->n) : 0;
     return (ld)m->kd.x * s->ambient.x + (ld)m->kd.x * s->lights[0].power.x * nl +
            (ld)m->ks.x * s->lights[0].power.x * lobe;
 }
@@ -310,8 +313,8 @@ START_TEST(test_stress_phong_exponent_1e6_off_peak)
     render_checked(s, &img, &st);
     /* [NUM-PHONG-1] pow of the plain dot product V.R gave 6.2e-11 here: the
      * rounding of |V| and |R| times n = 1e6 (spec/numerics.md). */
-    ld rel = fabsl(pixel0(&img, 0) - want) / want;
-    ck_assert_msg(rel <= 1e-13L, "relative error %.3Lg", rel);
+    ld rel = fabsq(pixel0(&img, 0) - want) / want;
+    ck_assert_msg(rel <= 1e-13, "relative error %.3g", (double)rel);
     img_free(&img);
     scene_free(s);
 }
@@ -321,15 +324,15 @@ START_TEST(test_stress_critical_angle_both_sides)
 {
     /* [NUM-SNELL-1] 1e-12 rad on either side of the critical angle. */
     static const char *const names[] = {"critical_below", "critical_above"};
-    ld theta_c = asinl(1 / 1.5L);
+    ld theta_c = asinq(1 / (ld)1.5);
     for (int k = 0; k < 2; k++) {
         rf_scene *s = load_stress(names[k]);
         /* The scene really is within 1e-12 rad of the critical angle, on
          * the side its name says: angle between the view and the face
          * normal +y, from the loaded camera. */
-        ld theta = acosl(-exact_view(s).y), off = theta - theta_c;
-        ck_assert_msg(k == 0 ? off < -0.9e-12L && off > -1.1e-12L : off > 0.9e-12L && off < 1.1e-12L,
-                      "%s: %.3Lg rad from the critical angle", names[k], off);
+        ld theta = acosq(-exact_view(s).y), off = theta - theta_c;
+        ck_assert_msg(k == 0 ? off < -0.9e-12 && off > -1.1e-12 : off > 0.9e-12 && off < 1.1e-12,
+                      "%s: %.3g rad from the critical angle", names[k], (double)off);
         rf_image img;
         render_stats st;
         render_checked(s, &img, &st);
@@ -345,7 +348,7 @@ static void assert_images_equal(const rf_image *a, const rf_image *b, double rel
 {
     ck_assert_int_eq(a->width, b->width);
     ck_assert_int_eq(a->height, b->height);
-    for (long i = 0; i < 3L * a->width * a->height; i++) {
+    for (long i = 0; i < 3 * a->width * a->height; i++) {
         double x = a->rgb[i], y = b->rgb[i];
         ck_assert_msg(rel == 0 ? x == y : fabs(x - y) <= rel * fmax(fabs(x), fabs(y)),
                       "%s: value %ld (pixel %ld, %ld): %.17g vs %.17g", what, i, i / 3 % a->width,
@@ -401,11 +404,11 @@ START_TEST(test_stress_mirror_box_depth_1000)
     rf_image img = render_stress("mirror_box_1000", &st);
     /* Each of the 1000 hits adds its ambient Kd*Ia = 0.5 * 0.002, weighted by
      * Ks^k for the k mirror bounces before it: a geometric series. */
-    static const ld ks[3] = {1, 0.9L, 0.5L};
+    static const ld ks[3] = {1, 0.9, 0.5};
     for (int c = 0; c < 3; c++) {
-        ld want = ks[c] == 1 ? 1000 * 0.001L : 0.001L * (1 - powl(ks[c], 1000)) / (1 - ks[c]);
-        ck_assert_msg(fabsl(pixel0(&img, c) - want) <= 1e-13L * want, "channel %d: %.17g vs %.17Lg", c,
-                      pixel0(&img, c), want);
+        ld want = ks[c] == 1 ? 1000 * 0.001 : 0.001 * (1 - powq(ks[c], 1000)) / (1 - ks[c]);
+        ck_assert_msg(fabsq(pixel0(&img, c) - want) <= 1e-13 * want, "channel %d: %.17g vs %.17g", c,
+                      pixel0(&img, c), (double)want);
     }
     ck_assert_int_eq(st.trace.reflection_rays, 999);
     img_free(&img);
@@ -518,7 +521,7 @@ START_TEST(test_stress_coplanar_disk_on_plane)
              * rounding); distance of the hit from the centre vs the radius. */
             ld t = lv_dot(n, lv_sub(c, o)) / lv_dot(n, d);
             ld r = lv_len(lv_sub(lv_add(o, lv_scale(d, t)), c)) / disk->u.disk.radius;
-            if (fabsl(r - 1) < 1e-9L)
+            if (fabsq(r - 1) < 1e-9)
                 continue;
             double got = img_pixel(&img, i, j)[0];
             int want_disk = r < 1;
@@ -567,7 +570,7 @@ typedef struct naive_report {
 
 static ld off_surface(const rf_prim *p, vec3 point)
 {
-    return fabsl(lv_len(lv_sub(lv_of(point), lv_of(p->u.sphere.center))) - p->u.sphere.radius) /
+    return fabsq(lv_len(lv_sub(lv_of(point), lv_of(p->u.sphere.center))) - p->u.sphere.radius) /
            p->u.sphere.radius;
 }
 
@@ -583,7 +586,7 @@ static naive_report naive_sphere_report(const char *name, ld tol)
             ld margin;
             exact_camera_ray(s, i, j, &o, &d);
             int want = exact_sphere(lv_of(p->u.sphere.center), p->u.sphere.radius, o, d, &n, &margin);
-            if (fabsl(margin) < 1e-6L)
+            if (fabsq(margin) < 1e-6)
                 continue;
             ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5), rr = r;
             real t;
@@ -597,9 +600,9 @@ static naive_report naive_sphere_report(const char *name, ld tol)
                 continue;
             vec3 at = ray_at(&r, t), nn = vec_normalize(vec_sub(at, p->u.sphere.center));
             ld exact = exact_lambert(s, m, n, d), naive = exact_lambert(s, m, lv_of(nn), d);
-            out.wrong += fabsl(naive - exact) > tol * exact;
-            out.naive_off = fmaxl(out.naive_off, off_surface(p, at));
-            out.robust_off = fmaxl(out.robust_off, off_surface(p, h.point));
+            out.wrong += fabsq(naive - exact) > tol * exact;
+            out.naive_off = fmaxq(out.naive_off, off_surface(p, at));
+            out.robust_off = fmaxq(out.robust_off, off_surface(p, h.point));
         }
     scene_free(s);
     return out;
@@ -613,13 +616,13 @@ START_TEST(test_stress_naive_sphere_fails_where_refray_holds)
      * (hundreds of times the robust test's distance) where one root is lost
      * to cancellation (huge_sphere_near) or the discriminant to rounding
      * (ortho_far_sphere); spec/numerics.md has the figures. */
-    naive_report tiny = naive_sphere_report("tiny_sphere_far", 1e-9L);
+    naive_report tiny = naive_sphere_report("tiny_sphere_far", 1e-9);
     ck_assert_int_gt(tiny.wrong, 20);
     static const char *const far_near[] = {"huge_sphere_near", "ortho_far_sphere"};
     for (int k = 0; k < 2; k++) {
-        naive_report r = naive_sphere_report(far_near[k], 1e-9L);
-        ck_assert_msg(r.robust_off < 1e-15L && r.naive_off > 100 * r.robust_off, "%s: off the surface %.3Lg vs %.3Lg",
-                      far_near[k], r.naive_off, r.robust_off);
+        naive_report r = naive_sphere_report(far_near[k], 1e-9);
+        ck_assert_msg(r.robust_off < 1e-15 && r.naive_off > 100 * r.robust_off, "%s: off the surface %.3g vs %.3g",
+                      far_near[k], (double)r.naive_off, (double)r.robust_off);
     }
 }
 END_TEST
@@ -856,7 +859,7 @@ START_TEST(test_stress_concave_corner_is_lit)
         lvec to = lv_sub(lv_of(light->position), lv_of(edge));
         ld d = lv_len(to), nl = lv_dot(lv_of(p->u.plane.normal), to) / d;
         ld want = kd * s->ambient.x + kd * light->power.x / (d + light->d0) * nl;
-        shadowed += fabsl(c.x - want) > 1e-9L * want;
+        shadowed += fabsq(c.x - want) > 1e-9 * want;
     }
     ck_assert_int_eq(shadowed, 0);
     tracer_free(&t);
