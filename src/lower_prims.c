@@ -400,6 +400,12 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
         prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);
+        /* Any point of the plane names it; the one nearest the origin keeps
+         * the hit point's rounding, and so the offset of rays leaving the
+         * plane, relative to the plane's distance from the origin rather
+         * than to how far along the plane the scene wrote its point. */
+        prim->u.plane.point = vec_scale(prim->u.plane.normal,
+                                        vec_dot(prim->u.plane.normal, prim->u.plane.point));
         break;
     }
 }

@@ -438,9 +438,10 @@ START_TEST(test_scene_load_baking_rules)
     ck_assert_near(p[5].u.disk.radius, 1, 1e-15);
     ck_assert_int_eq(p[6].has_xform, 1);
     /* Point (0,1,0) -> (0,1,0); normal through the inverse transpose
-     * diag(1/2, 1, 1): (0.5, 1, 0) / sqrt(1.25). */
+     * diag(1/2, 1, 1): (0.5, 1, 0) / sqrt(1.25).  The plane is then stored
+     * by its point nearest the origin, (n.p) n = (0.5, 1, 0) / 1.25. */
     ck_assert_int_eq(p[7].has_xform, 0);
-    ck_assert_vec_near(p[7].u.plane.point, vec_make(0, 1, 0), 0);
+    ck_assert_vec_near(p[7].u.plane.point, vec_make(0.4, 0.8, 0), 1e-15);
     ck_assert_vec_near(p[7].u.plane.normal, vec_make(0.5 / sqrt(1.25), 1 / sqrt(1.25), 0), 1e-15);
     /* (0,1,0) about z by 90: (-1, 0, 0). */
     ck_assert_vec_near(p[8].u.plane.normal, vec_make(-1, 0, 0), 1e-15);
