@@ -214,7 +214,7 @@ VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --l
                 --trace-children=yes)
 TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
 
-test: $(TESTBIN) $(REFRAY)
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
 	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
 

@@ -1057,20 +1057,19 @@ START_TEST(test_stability_render_is_render_image)
 }
 END_TEST
 
-/* End to end through the command, when the long double twin has been built
- * next to the refray under test (make refray-ld): a stable scene passes, and
- * the huge-coordinates scene (outside the documented domain) is reported
- * unstable with exit status 1. */
+/* End to end through the command with the long double twin that `make
+ * test` builds next to the refray under test (make refray-ld): a stable
+ * scene passes, and the huge-coordinates scene (outside the documented
+ * domain) is reported unstable with exit status 1.  A missing twin fails. */
 START_TEST(test_stability_command_end_to_end)
 {
     const char *bin = getenv("REFRAY_BIN");
     char twin[512], cmd[1200];
-    if (!bin)
-        return;
+    if (!bin || !*bin)
+        bin = "build/refray";
     snprintf(twin, sizeof twin, "%.*s/refray-ld", (int)(strrchr(bin, '/') ? strrchr(bin, '/') - bin : 1),
              strrchr(bin, '/') ? bin : ".");
-    if (access(twin, X_OK) != 0)
-        return;
+    ck_assert_msg(access(twin, X_OK) == 0, "%s is missing: build it with make refray-ld", twin);
     snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/ortho_far_sphere.scene >/dev/null 2>&1", bin);
     ck_assert_int_eq(system(cmd), 0);
     snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/huge_coordinates.scene >/dev/null 2>&1", bin);
@@ -1154,7 +1153,14 @@ Suite *suite_stability(void)
     tcase_add_test(tool, test_stability_raw_round_trip_is_lossless);
     tcase_add_test(tool, test_stability_compare_reports_where_and_how_much);
     tcase_add_test(tool, test_stability_render_is_render_image);
-    tcase_add_test(tool, test_stability_command_end_to_end);
+    /* valgrind computes x87 long double in double precision, so the twin
+     * cannot be told from refray there: under VALGRIND=1 the case is left
+     * out (and said to be), not passed. */
+    const char *vg = getenv("REFRAY_TEST_VALGRIND");
+    if (vg && strcmp(vg, "1") == 0)
+        fprintf(stderr, "test_stability: under valgrind the long double end-to-end case is left out\n");
+    else
+        tcase_add_test(tool, test_stability_command_end_to_end);
     suite_add_tcase(s, tool);
     TCase *precision = tcase_create("precision");
     tcase_set_timeout(precision, 20);
