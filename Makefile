@@ -290,15 +290,19 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 .PHONY: FORCE
 FORCE:
 
+# The public header and every header it reaches (found by the compiler
+# itself) go to $(PREFIX)/include/refray/.
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/refray
 	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
 	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/librefray.a
-	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
+	install -m 644 $$($(CC) -Isrc -Iinclude -MM -MT x include/refray.h | sed 's/^x://; s/\\$$//' | \
+	  tr ' ' '\n' | sort -u) \
+	  $(DESTDIR)$(PREFIX)/include/refray/
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/lib/librefray.a \
-	      $(DESTDIR)$(PREFIX)/include/refray.h
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/lib/librefray.a
+	rm -rf $(DESTDIR)$(PREFIX)/include/refray
 
 clean:
 	rm -rf build demo.png
