@@ -75,6 +75,58 @@ int cli_parse_double(const char *option, const char *text, double *out)
     return 1;
 }
 
+int cli_take_value(int argc, char **argv, int *i, const char **value)
+{
+    if (*i + 1 >= argc) {
+        cli_usage_error("%s needs a value", argv[*i]);
+        return 0;
+    }
+    *value = argv[++*i];
+    return 1;
+}
+
+int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
+{
+    const char *v;
+    long x;
+    if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(argv[*i - 1], v, 1, hi, &x))
+        return 0;
+    *out = (int)x;
+    return 1;
+}
+
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args)
+{
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(help, stdout);
+            return -1;
+        }
+        int used = cli_scene_opt(scene, argc, argv, i);
+        if (used < 0)
+            return REFRAY_EXIT_USAGE;
+        if (used > 0) {
+            i += used - 1;
+            continue;
+        }
+        if (argv[i][0] != '-' || !argv[i][1]) {
+            if (*input)
+                return cli_usage_error("%s: one scene at a time ('%s' and '%s')", command, *input, argv[i]);
+            *input = argv[i];
+            continue;
+        }
+        int r = option(args, argc, argv, &i);
+        if (r == 0)
+            return REFRAY_EXIT_USAGE;
+        if (r < 0)
+            return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
+    }
+    if (!*input)
+        return cli_usage_error("%s: no scene given", command);
+    return 0;
+}
+
 void cli_scene_opts_init(cli_scene_opts *o)
 {
     o->limits = scene_default_limits();

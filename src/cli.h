@@ -27,6 +27,26 @@ typedef struct cli_scene_opts {
 void cli_scene_opts_init(cli_scene_opts *o);
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
 
+/* The value after option argv[*i] (advancing *i); 0 with the usage error
+ * printed when it is missing. */
+int cli_take_value(int argc, char **argv, int *i, const char **value);
+
+/* A whole-number option value in [1, hi] into *out; 0 after the usage error. */
+int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
+
+/* One command's own options: 1 consumed (with its value), 0 an error
+ * already reported, -1 not one of its options. */
+typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
+
+/*
+ * The argument loop of a command that reads one scene: --help (prints help,
+ * returns -1), the shared scene options, one SCENE into *input, and the
+ * command's own options through option.  Returns 0 to go on, -1 after help,
+ * or REFRAY_EXIT_USAGE after the error was printed.
+ */
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args);
+
 /* Parses a whole number option value in [lo, hi]; prints the usage error. */
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
 int cli_parse_double(const char *option, const char *text, double *out);

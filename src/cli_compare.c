@@ -36,31 +36,21 @@ typedef struct compare_args {
     int has_tolerance, grey, json;
 } compare_args;
 
-static int take_value(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
 /* 1: consumed, 0: error (reported), -1: not a compare option. */
 static int compare_option(compare_args *a, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i], *v;
     if (strcmp(opt, "--diff") == 0)
-        return take_value(argc, argv, i, &a->diff);
+        return cli_take_value(argc, argv, i, &a->diff);
     if (strcmp(opt, "--mask") == 0)
-        return take_value(argc, argv, i, &a->mask);
+        return cli_take_value(argc, argv, i, &a->mask);
     if (strcmp(opt, "--grey") == 0 || strcmp(opt, "--gray") == 0)
         return a->grey = 1;
     if (strcmp(opt, "--json") == 0)
         return a->json = 1;
     if (strcmp(opt, "--tolerance") != 0)
         return -1;
-    if (!take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->tolerance))
+    if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->tolerance))
         return 0;
     if (a->tolerance < 0) {
         cli_usage_error("--tolerance must be >= 0, not '%s'", v);

@@ -33,31 +33,22 @@ static const char export_help[] =
     "                      lets a picture brighter than 1 fit a 16-bit file)\n"
     "and -W and the input limits of `refray --help`.\n";
 
-static int take_value(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
 /* 1: consumed, 0: error (reported), -1: not an export option. */
-static int export_option(export_args *a, int argc, char **argv, int *i)
+static int export_option(void *args, int argc, char **argv, int *i)
 {
+    export_args *a = args;
     const char *opt = argv[*i];
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
-        return take_value(argc, argv, i, &a->output);
+        return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--to") == 0)
-        return take_value(argc, argv, i, &a->format);
+        return cli_take_value(argc, argv, i, &a->format);
     if (strcmp(opt, "--area-lights") == 0)
         return a->pov.area_lights = 1;
     if (strcmp(opt, "--plain-sheets") == 0)
         return a->pov.plain_sheets = 1;
     if (strcmp(opt, "--scale") == 0) {
         const char *v;
-        if (!take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->pov.scale))
+        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->pov.scale))
             return 0;
         if (!(a->pov.scale > 0)) {
             cli_usage_error("--scale takes a number > 0, not '%s'", v);
@@ -71,32 +62,9 @@ static int export_option(export_args *a, int argc, char **argv, int *i)
 /* 0: go on; -1: help printed; else the usage exit code. */
 static int parse_args(export_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(export_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return REFRAY_EXIT_USAGE;
-        if (used > 0) {
-            i += used - 1;
-            continue;
-        }
-        if (argv[i][0] != '-' || !argv[i][1]) {
-            if (a->input)
-                return cli_usage_error("export: one scene at a time ('%s' and '%s')", a->input, argv[i]);
-            a->input = argv[i];
-            continue;
-        }
-        int r = export_option(a, argc, argv, &i);
-        if (r == 0)
-            return REFRAY_EXIT_USAGE;
-        if (r < 0)
-            return cli_usage_error("export: unknown option '%s'", argv[i]);
-    }
-    if (!a->input)
-        return cli_usage_error("export: no scene given");
+    int status = cli_parse_one_scene("export", export_help, argc, argv, &a->scene, &a->input, export_option, a);
+    if (status != 0)
+        return status;
     if (!a->format)
         return cli_usage_error("export: no target given (--to pov)");
     if (strcmp(a->format, "pov") != 0)

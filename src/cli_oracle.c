@@ -32,55 +32,24 @@ typedef struct oracle_args {
     const char *input, *output, *mask;
 } oracle_args;
 
-static int take_value(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
 /* 1: consumed, 0: error (reported), -1: not an oracle option. */
-static int oracle_option(oracle_args *a, int argc, char **argv, int *i)
+static int oracle_option(void *args, int argc, char **argv, int *i)
 {
+    oracle_args *a = args;
     const char *opt = argv[*i];
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
-        return take_value(argc, argv, i, &a->output);
+        return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--mask") == 0)
-        return take_value(argc, argv, i, &a->mask);
+        return cli_take_value(argc, argv, i, &a->mask);
     return cli_view_option(&a->view, &a->scene.limits, 0, argc, argv, i);
 }
 
+/* 0: go on; -1: help printed; else the usage exit code. */
 static int parse_args(oracle_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(oracle_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return REFRAY_EXIT_USAGE;
-        if (used > 0) {
-            i += used - 1;
-            continue;
-        }
-        if (argv[i][0] != '-' || !argv[i][1]) {
-            if (a->input)
-                return cli_usage_error("oracle: one scene at a time ('%s' and '%s')", a->input, argv[i]);
-            a->input = argv[i];
-            continue;
-        }
-        int r = oracle_option(a, argc, argv, &i);
-        if (r == 0)
-            return REFRAY_EXIT_USAGE;
-        if (r < 0)
-            return cli_usage_error("oracle: unknown option '%s'", argv[i]);
-    }
-    if (!a->input)
-        return cli_usage_error("oracle: no scene given");
+    int status = cli_parse_one_scene("oracle", oracle_help, argc, argv, &a->scene, &a->input, oracle_option, a);
+    if (status != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("oracle: no output given (-o EXACT)");
     return 0;

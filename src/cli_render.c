@@ -52,26 +52,6 @@ static const char render_help[] =
     "  -q, --quiet           no progress bar\n"
     "and -W and the input limits of `refray --help`.\n";
 
-static int take_value(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
-static int int_option(int argc, char **argv, int *i, long hi, int *out)
-{
-    const char *v;
-    long x;
-    if (!take_value(argc, argv, i, &v) || !cli_parse_long(argv[*i - 1], v, 1, hi, &x))
-        return 0;
-    *out = (int)x;
-    return 1;
-}
-
 static int image_option(render_args *a, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i], *v;
@@ -80,10 +60,10 @@ static int image_option(render_args *a, int argc, char **argv, int *i)
     else if (strcmp(opt, "--exr-float") == 0)
         a->image.exr_float = 1;
     else if (strcmp(opt, "--exposure") == 0)
-        return take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->image.exposure_stops);
+        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->image.exposure_stops);
     else if (strcmp(opt, "--bit-depth") == 0) {
         long bits;
-        if (!take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
+        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
             return 0;
         if (bits != 8 && bits != 16) {
             cli_usage_error("--bit-depth is 8 or 16");
@@ -91,7 +71,7 @@ static int image_option(render_args *a, int argc, char **argv, int *i)
         }
         a->image.png_bits = (int)bits;
     } else if (strcmp(opt, "--tone") == 0) {
-        if (!take_value(argc, argv, i, &v))
+        if (!cli_take_value(argc, argv, i, &v))
             return 0;
         if (strcmp(v, "clamp") != 0 && strcmp(v, "reinhard") != 0) {
             cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
@@ -105,24 +85,25 @@ static int image_option(render_args *a, int argc, char **argv, int *i)
 }
 
 /* 1: consumed, 0: error (reported), -1: not a render option. */
-static int render_option(render_args *a, int argc, char **argv, int *i)
+static int render_option(void *args, int argc, char **argv, int *i)
 {
+    render_args *a = args;
     const char *opt = argv[*i];
     const rf_limits *lim = &a->scene.limits;
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
-        return take_value(argc, argv, i, &a->output);
+        return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--format") == 0)
-        return take_value(argc, argv, i, &a->format);
+        return cli_take_value(argc, argv, i, &a->format);
     if (strcmp(opt, "--width") == 0)
-        return int_option(argc, argv, i, lim->max_width, &a->render.width);
+        return cli_int_value(argc, argv, i, lim->max_width, &a->render.width);
     if (strcmp(opt, "--height") == 0)
-        return int_option(argc, argv, i, lim->max_height, &a->render.height);
+        return cli_int_value(argc, argv, i, lim->max_height, &a->render.height);
     if (strcmp(opt, "--samples") == 0)
-        return int_option(argc, argv, i, lim->max_samples, &a->render.samples);
+        return cli_int_value(argc, argv, i, lim->max_samples, &a->render.samples);
     if (strcmp(opt, "--light-samples") == 0)
-        return int_option(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return int_option(argc, argv, i, lim->max_depth, &a->render.max_depth);
+        return cli_int_value(argc, argv, i, lim->max_depth, &a->render.max_depth);
     if (strcmp(opt, "--stats") == 0)
         return a->stats = 1;
     if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
@@ -130,34 +111,12 @@ static int render_option(render_args *a, int argc, char **argv, int *i)
     return image_option(a, argc, argv, i);
 }
 
+/* 0: go on; -1: help printed; else the usage exit code. */
 static int parse_args(render_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(render_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return REFRAY_EXIT_USAGE;
-        if (used > 0) {
-            i += used - 1;
-            continue;
-        }
-        if (argv[i][0] != '-' || !argv[i][1]) {
-            if (a->input)
-                return cli_usage_error("render: one scene at a time ('%s' and '%s')", a->input, argv[i]);
-            a->input = argv[i];
-            continue;
-        }
-        int r = render_option(a, argc, argv, &i);
-        if (r == 0)
-            return REFRAY_EXIT_USAGE;
-        if (r < 0)
-            return cli_usage_error("render: unknown option '%s'", argv[i]);
-    }
-    if (!a->input)
-        return cli_usage_error("render: no scene given");
+    int status = cli_parse_one_scene("render", render_help, argc, argv, &a->scene, &a->input, render_option, a);
+    if (status != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("render: no output given (-o OUT)");
     return 0;

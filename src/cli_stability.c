@@ -56,82 +56,41 @@ typedef struct stab_args {
     char **argv;
 } stab_args;
 
-static int take(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
-static int int_value(int argc, char **argv, int *i, long hi, int *out)
-{
-    const char *v;
-    long x;
-    if (!take(argc, argv, i, &v) || !cli_parse_long(argv[*i - 1], v, 1, hi, &x))
-        return 0;
-    *out = (int)x;
-    return 1;
-}
-
 /* 1: consumed, 0: error (reported), -1: not an option of this command. */
-static int stab_option(stab_args *a, int argc, char **argv, int *i)
+static int stab_option(void *args, int argc, char **argv, int *i)
 {
+    stab_args *a = args;
     const char *opt = argv[*i], *v;
     const rf_limits *lim = &a->scene.limits;
     if (strcmp(opt, "--width") == 0)
-        return int_value(argc, argv, i, lim->max_width, &a->render.width);
+        return cli_int_value(argc, argv, i, lim->max_width, &a->render.width);
     if (strcmp(opt, "--height") == 0)
-        return int_value(argc, argv, i, lim->max_height, &a->render.height);
+        return cli_int_value(argc, argv, i, lim->max_height, &a->render.height);
     if (strcmp(opt, "--samples") == 0)
-        return int_value(argc, argv, i, lim->max_samples, &a->render.samples);
+        return cli_int_value(argc, argv, i, lim->max_samples, &a->render.samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return int_value(argc, argv, i, lim->max_depth, &a->render.max_depth);
+        return cli_int_value(argc, argv, i, lim->max_depth, &a->render.max_depth);
     if (strcmp(opt, "--light-samples") == 0)
-        return int_value(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
     if (strcmp(opt, "--threshold") == 0)
-        return take(argc, argv, i, &v) && cli_parse_double(opt, v, &a->threshold);
+        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->threshold);
     if (strcmp(opt, "--map") == 0)
-        return take(argc, argv, i, &a->map);
+        return cli_take_value(argc, argv, i, &a->map);
     if (strcmp(opt, "--ld") == 0)
-        return take(argc, argv, i, &a->ld);
+        return cli_take_value(argc, argv, i, &a->ld);
     if (strcmp(opt, "--raw-dump") == 0)
-        return take(argc, argv, i, &a->raw_dump);
+        return cli_take_value(argc, argv, i, &a->raw_dump);
     if (strcmp(opt, "--stability") == 0 || strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
         return 1;
     return -1;
 }
 
+/* 0: go on; -1: help printed; else the usage exit code. */
 static int parse_args(stab_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(stability_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return REFRAY_EXIT_USAGE;
-        if (used > 0) {
-            i += used - 1;
-            continue;
-        }
-        if (argv[i][0] != '-' || !argv[i][1]) {
-            if (a->input)
-                return cli_usage_error("stability: one scene at a time ('%s' and '%s')", a->input, argv[i]);
-            a->input = argv[i];
-            continue;
-        }
-        int r = stab_option(a, argc, argv, &i);
-        if (r == 0)
-            return REFRAY_EXIT_USAGE;
-        if (r < 0)
-            return cli_usage_error("stability: unknown option '%s'", argv[i]);
-    }
-    if (!a->input)
-        return cli_usage_error("stability: no scene given");
+    int status = cli_parse_one_scene("stability", stability_help, argc, argv, &a->scene, &a->input, stab_option, a);
+    if (status != 0)
+        return status;
     if (!(a->threshold > 0))
         return cli_usage_error("stability: --threshold must be > 0");
     return 0;

@@ -43,39 +43,20 @@ typedef struct verify_args {
     int path_count;
 } verify_args;
 
-static int take_value(int argc, char **argv, int *i, const char **value)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return 0;
-    }
-    *value = argv[++*i];
-    return 1;
-}
-
-static int int_value(int argc, char **argv, int *i, long hi, int *out)
-{
-    const char *v;
-    long x;
-    if (!take_value(argc, argv, i, &v) || !cli_parse_long(argv[*i - 1], v, 1, hi, &x))
-        return 0;
-    *out = (int)x;
-    return 1;
-}
 
 int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
     if (strcmp(opt, "--width") == 0)
-        return int_value(argc, argv, i, lim->max_width, &o->width);
+        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
     if (strcmp(opt, "--height") == 0)
-        return int_value(argc, argv, i, lim->max_height, &o->height);
+        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
     if (strcmp(opt, "--samples") == 0)
-        return int_value(argc, argv, i, lim->max_samples, &o->samples);
+        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
     if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
     return -1;
 }
 
@@ -107,11 +88,11 @@ static int verify_option(verify_args *a, int argc, char **argv, int *i)
     if (strcmp(opt, "--json") == 0)
         return a->json = 1;
     if (strcmp(opt, "--sweep") == 0)
-        return take_value(argc, argv, i, &a->sweep_text);
+        return cli_take_value(argc, argv, i, &a->sweep_text);
     if (strcmp(opt, "--tsv") == 0)
-        return take_value(argc, argv, i, &a->tsv_path);
+        return cli_take_value(argc, argv, i, &a->tsv_path);
     if (strcmp(opt, "--runs") == 0)
-        return int_value(argc, argv, i, VERIFY_RUNS_MAX, &a->view.runs);
+        return cli_int_value(argc, argv, i, VERIFY_RUNS_MAX, &a->view.runs);
     return cli_view_option(&a->view, &a->scene.limits, 1, argc, argv, i);
 }
 
