@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "oracle_testlib.h"
 #include "metrics.h"
 #include "render.h"
 #include "scene.h"
@@ -449,21 +450,6 @@ END_TEST
 
 /* ---- the families through scenes ---- */
 
-static rf_scene *load_text(const char *text)
-{
-    rf_limits lim = scene_default_limits();
-    int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), &lim, NULL, 0, &status);
-    ck_assert_msg(s != NULL, "scene did not load: %s", text);
-    return s;
-}
-
-static oracle_view view_of(const rf_scene *s)
-{
-    oracle_view v = {s, s->image.width, s->image.height, s->image.samples, s->image.max_depth};
-    return v;
-}
-
 #define DOWN_ORTHO "image { width 1 height 1 samples 1 max_depth 1 }\n"                              \
                    "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, -1] width 0.001 }\n"
 #define OCCLUDED_LIGHTS "ambient { color 0.1 }\n"                                                         \
@@ -584,15 +570,6 @@ static const char *const scenes[] = {
     "scenes/analytic/disk_light.scene",    "scenes/analytic/disk_light_linear.scene",
     "scenes/analytic/disk_occluded.scene", "scenes/analytic/disk_occluded_under.scene",
 };
-
-static rf_scene *load_file(const char *path)
-{
-    rf_limits lim = scene_default_limits();
-    int status;
-    rf_scene *s = scene_load(path, &lim, NULL, 0, &status);
-    ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
-    return s;
-}
 
 /* t statistic of the green channel's relative errors: the stratified
  * estimate is unbiased and the pixels' jitters are independent, so |t|

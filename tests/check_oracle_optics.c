@@ -21,51 +21,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "oracle_testlib.h"
 #include "metrics.h"
 #include "oracle/oracle.h"
 #include "oracle/optics_util.h"
 #include "render.h"
 #include "scene.h"
-
-static rf_scene *load_text(const char *text)
-{
-    int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
-    ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
-    return s;
-}
-
-static rf_scene *load_file(const char *path)
-{
-    int status;
-    rf_scene *s = scene_load(path, NULL, stderr, 0, &status);
-    ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
-    return s;
-}
-
-static oracle_view view_of(const rf_scene *s)
-{
-    oracle_view v = {s, s->image.width, s->image.height, s->image.samples, s->image.max_depth};
-    return v;
-}
-
-/* The scene's family, which must accept it. */
-static const oracle_family *family_of(const rf_scene *s)
-{
-    char why[256] = "";
-    ck_assert_ptr_nonnull(s->oracle);
-    const oracle_family *f = oracle_find(s->oracle);
-    ck_assert_msg(f != NULL, "no family '%s'", s->oracle);
-    oracle_view v = view_of(s);
-    ck_assert_msg(f->accepts(&v, why, sizeof why), "%s refused: %s", s->oracle, why);
-    return f;
-}
-
-static oracle_status radiance_at(const rf_scene *s, double x, double y, rgb *out)
-{
-    oracle_view v = view_of(s);
-    return family_of(s)->radiance(&v, x, y, out);
-}
 
 /* The exact value at image point (x, y), which must not be ambiguous. */
 static rgb exact_at(const rf_scene *s, double x, double y)
