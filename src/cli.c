@@ -95,6 +95,22 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
     return 1;
 }
 
+int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    if (strcmp(opt, "--width") == 0)
+        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+    if (strcmp(opt, "--height") == 0)
+        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+    if (strcmp(opt, "--samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+    if (strcmp(opt, "--light-samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+    if (strcmp(opt, "--max-depth") == 0)
+        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+    return -1;
+}
+
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                         const char **input, cli_option_fn option, void *args)
 {

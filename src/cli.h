@@ -6,6 +6,7 @@
 #ifndef REFRAY_CLI_H
 #define REFRAY_CLI_H
 
+#include "render.h"
 #include "scene.h"
 
 #define REFRAY_VERSION "0.1.0"
@@ -33,6 +34,10 @@ int cli_take_value(int argc, char **argv, int *i, const char **value);
 
 /* A whole-number option value in [1, hi] into *out; 0 after the usage error. */
 int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
+
+/* The options that size a render (--width --height --samples --max-depth
+ * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
+int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i);
 
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */

@@ -89,21 +89,13 @@ static int render_option(void *args, int argc, char **argv, int *i)
 {
     render_args *a = args;
     const char *opt = argv[*i];
-    const rf_limits *lim = &a->scene.limits;
+    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    if (sized >= 0)
+        return sized;
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
         return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--format") == 0)
         return cli_take_value(argc, argv, i, &a->format);
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &a->render.width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &a->render.height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &a->render.samples);
-    if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &a->render.max_depth);
     if (strcmp(opt, "--stats") == 0)
         return a->stats = 1;
     if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)

@@ -61,17 +61,9 @@ static int stab_option(void *args, int argc, char **argv, int *i)
 {
     stab_args *a = args;
     const char *opt = argv[*i], *v;
-    const rf_limits *lim = &a->scene.limits;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &a->render.width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &a->render.height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &a->render.samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &a->render.max_depth);
-    if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &a->render.light_samples);
+    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    if (sized >= 0)
+        return sized;
     if (strcmp(opt, "--threshold") == 0)
         return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->threshold);
     if (strcmp(opt, "--map") == 0)

@@ -762,15 +762,7 @@ enum { REFUSAL_COUNT = sizeof refusals / sizeof refusals[0] };
 
 START_TEST(test_oracle_optics_refuses_with_reason)
 {
-    const refusal *rf = &refusals[_i];
-    rf_scene *s = load_text(rf->text);
-    const oracle_family *f = oracle_find(rf->family);
-    char why[256] = "";
-    ck_assert_ptr_nonnull(f);
-    oracle_view v = view_of(s);
-    ck_assert_int_eq(f->accepts(&v, why, sizeof why), 0);
-    ck_assert_str_eq(why, rf->why);
-    scene_free(s);
+    assert_refused(refusals[_i].family, refusals[_i].text, refusals[_i].why);
 }
 END_TEST
 

@@ -52,4 +52,17 @@ static inline oracle_status radiance_at(const rf_scene *s, double x, double y, r
     return family_of(s)->radiance(&v, x, y, out);
 }
 
+/* A scene the family must refuse, with exactly this reason. */
+static inline void assert_refused(const char *family, const char *text, const char *reason)
+{
+    rf_scene *s = load_text(text);
+    const oracle_family *f = oracle_find(family);
+    char why[256] = "";
+    ck_assert_ptr_nonnull(f);
+    oracle_view v = view_of(s);
+    ck_assert_int_eq(f->accepts(&v, why, sizeof why), 0);
+    ck_assert_str_eq(why, reason);
+    scene_free(s);
+}
+
 #endif
