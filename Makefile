@@ -39,8 +39,8 @@ GEN_WARN := -std=c99 -Wall -Wno-unused-function -Wno-unused-parameter \
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -Iinclude -I$(GEN) -MMD -MP
 LDLIBS  += -lm
 
-# The long double build (src/vec.h): -Wno-error=format until every printf of
-# a vec3 component casts it to double (src/validate.c, src/export_pov.c).
+# The long double build (src/base/vec.h): -Wno-error=format until every printf of
+# a vec3 component casts it to double (src/scene/validate.c, src/export/export_pov.c).
 ifeq ($(LONG_DOUBLE),1)
 CPPFLAGS += -DREFRAY_LONG_DOUBLE
 CFLAGS  += -Wno-error=format
@@ -74,9 +74,9 @@ else
 Q := @
 endif
 
-DRIVER_SRCS := src/main.c $(wildcard src/cli*.c)
-OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image_png.c) $(if $(filter 1,$(EXR)),,src/image_exr.c)
-LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*.c src/oracle/*.c))
+DRIVER_SRCS := $(wildcard src/cli/*.c)
+OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c)
+LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*/*.c))
 TEST_SRCS   := $(wildcard tests/*.c)
 GEN_SRCS    := $(GEN)/scene.tab.c $(GEN)/scene.lex.c
 GEN_HDRS    := $(GEN)/scene.tab.h $(GEN)/scene.lex.h
@@ -203,7 +203,7 @@ fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
 	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
 	$(Q)mkdir -p $(BUILD)/corpus
 	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
-	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/keywords.c; \
+	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
 	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
 	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
 	cd $(BUILD) && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
@@ -253,8 +253,8 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 
 # Per-object flags go to OBJ_CFLAGS, not CFLAGS, so that a CFLAGS given on
 # the command line (the fuzz build) does not drop them.
-$(BUILD)/obj/src/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
-$(BUILD)/obj/src/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
+$(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
+$(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h
@@ -274,7 +274,7 @@ $(BUILD)/obj/%.o: %.c | $(if $(wildcard grammar/scene.y),$(GEN_HDRS))
 
 # Development aid: a runner built from a subset of the sources, so one module
 # can be tested while others are half written.  Use a BUILD of your own:
-#   make solo BUILD=build/dev-shade SOLO_SRCS="src/shade.c" SOLO_TESTS="tests/check_shade.c"
+#   make solo BUILD=build/dev-shade SOLO_SRCS="src/render/shade.c" SOLO_TESTS="tests/check_shade.c"
 # (add SOLO_PARSER=1 to link the generated scanner and parser)
 SOLO_OBJS = $(SOLO_SRCS:%.c=$(BUILD)/obj/%.o) $(SOLO_TESTS:%.c=$(BUILD)/obj/%.o) \
             $(if $(SOLO_PARSER),$(GEN_SRCS:$(GEN)/%.c=$(BUILD)/obj/gen/%.o))

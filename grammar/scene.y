@@ -14,9 +14,9 @@
  */
 
 %code requires {
-#include "ast.h"
-#include "parse.h"
-#include "source.h"
+#include "lang/ast.h"
+#include "lang/parse.h"
+#include "base/source.h"
 #ifndef YY_TYPEDEF_YY_SCANNER_T
 #define YY_TYPEDEF_YY_SCANNER_T
 typedef void *yyscan_t;
@@ -45,8 +45,8 @@ int scn_lex(SCN_STYPE *value, SCN_LTYPE *location, yyscan_t scanner);
 %code {
 #include <stdio.h>
 #include <string.h>
-#include "keywords.h"
-#include "parse_error.h"
+#include "lang/keywords.h"
+#include "lang/parse_error.h"
 
 static void scn_error(const SCN_LTYPE *location, yyscan_t scanner, parse_ctx *ctx, const char *message);
 

@@ -16,10 +16,10 @@
 #ifndef REFRAY_REFRAY_H
 #define REFRAY_REFRAY_H
 
-#include "scene.h"
-#include "render.h"
-#include "image.h"
-#include "metrics.h"
+#include "scene/scene.h"
+#include "render/render.h"
+#include "image/image.h"
+#include "image/metrics.h"
 
 #define REFRAY_API_VERSION 1
 

@@ -21,7 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #define BAD_DIR "tests/bad"
 

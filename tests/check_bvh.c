@@ -1,12 +1,12 @@
-/* Tests of src/bvh.c.  The reference for every query is brute force:
+/* Tests of src/render/bvh.c.  The reference for every query is brute force:
  * isect_prim over all primitives, each alone, then bvh.h's tie rule: the
  * lowest index among the hits within 2^-46 (|t| + |origin|) of the least t. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "bvh.h"
-#include "xform.h"
+#include "render/bvh.h"
+#include "base/xform.h"
 
 /* Counter-based generator: splitmix64's finaliser of seed and counter. */
 typedef struct rng {

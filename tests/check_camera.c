@@ -5,8 +5,8 @@
 #include <math.h>
 #include <string.h>
 #include "testlib.h"
-#include "camera.h"
-#include "scene.h"
+#include "render/camera.h"
+#include "scene/scene.h"
 
 static rf_camera camera(rf_camera_kind kind, double fov, double width)
 {

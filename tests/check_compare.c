@@ -21,7 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "verify.h"
+#include "verify/verify.h"
 
 enum { W = 4, H = 3, OUT_MAX = 16384 };
 

@@ -1,4 +1,4 @@
-/* Tests of diagnostics (src/diag.c) and source positions (src/source.c):
+/* Tests of diagnostics (src/base/diag.c) and source positions (src/base/source.c):
  * the GCC form, the excerpt and caret, tabs, long lines, control bytes,
  * include chains, the error limit and switched-off warnings.  Expected
  * output is written out in full.  IDs: spec/language.md. */
@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "diag.h"
-#include "scene.h"
+#include "base/diag.h"
+#include "scene/scene.h"
 
 typedef struct capture {
     source_set sources;

@@ -1,4 +1,4 @@
-/* Tests of constant expressions (src/eval.c): every built-in function with
+/* Tests of constant expressions (src/lang/eval.c): every built-in function with
  * a value worked out by hand, vector arithmetic, and every error with its
  * exact message and column.  Expressions are parsed as `let x = EXPR`, so a
  * column is 9 plus the offset inside EXPR.  IDs: spec/language.md. */
@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "eval.h"
-#include "parse.h"
+#include "lang/eval.h"
+#include "lang/parse.h"
 
 #define PI 3.14159265358979323846
 

@@ -1,6 +1,6 @@
 /*
- * check_export.c - the POV-Ray SDL writer (src/export_pov.c) and
- * `refray export` (src/cli_export.c).
+ * check_export.c - the POV-Ray SDL writer (src/export/export_pov.c) and
+ * `refray export` (src/cli/cli_export.c).
  *
  * Expected SDL text is derived by hand from the mapping in
  * spec/crosscheck.md: z negated (POV-Ray is left-handed), light colours
@@ -16,7 +16,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include "export_pov.h"
+#include "export/export_pov.h"
 #include "testlib.h"
 
 static const char scene_a[] =

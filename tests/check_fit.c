@@ -4,7 +4,7 @@
  * sqrt(SSE/(n-2)/Sxx), r2 = 1 - SSE/Syy ([VERIFY-FIT-1]).
  */
 #include "testlib.h"
-#include "fit.h"
+#include "verify/fit.h"
 
 /* x = 0,1,2,3; y = 0,-1.1,-1.9,-3: xbar 1.5, ybar -1.5, dx = -1.5,-.5,.5,1.5,
  * dy = 1.5,.4,-.4,-1.5; Sxx = 5, Sxy = -4.9, Syy = 4.82; slope -0.98,

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #define REGRESSIONS "tests/fuzz-regressions"
 

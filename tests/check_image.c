@@ -23,7 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "image.h"
+#include "image/image.h"
 
 #ifndef REFRAY_HAVE_PNG
 #define REFRAY_HAVE_PNG 0

@@ -1,12 +1,12 @@
-/* Tests of `include` and `for` (src/lower.c) and of reading scene files
- * (src/scene.c scene_load, src/fileio.c).  Include trees are fixtures
+/* Tests of `include` and `for` (src/scene/lower.c) and of reading scene files
+ * (src/scene/scene.c scene_load, src/base/fileio.c).  Include trees are fixtures
  * under tests/scenes/include/; the tests run from the repository root.
  * IDs are those of spec/language.md. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #define INC "tests/scenes/include/"
 

@@ -1,12 +1,12 @@
-/* Tests of src/intersect.c.  Every expected t, point and normal is worked
+/* Tests of src/render/intersect.c.  Every expected t, point and normal is worked
  * out by hand in the comment next to it, or checked by a different route
  * (distance to the surface, a known chord length). */
 #include <float.h>
 #include <stdint.h>
 #include <string.h>
 #include "testlib.h"
-#include "intersect.h"
-#include "xform.h"
+#include "render/intersect.h"
+#include "base/xform.h"
 
 /* Counter-based generator: the value is a hash (splitmix64's finaliser) of
  * seed and counter, so a test draws the same numbers however it runs. */

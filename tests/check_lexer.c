@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "keywords.h"
-#include "parse.h"
+#include "lang/keywords.h"
+#include "lang/parse.h"
 #include "scene.tab.h"
 #include "scene.lex.h"
 

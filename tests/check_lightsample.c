@@ -3,7 +3,7 @@
  */
 #include <math.h>
 #include "testlib.h"
-#include "lightsample.h"
+#include "render/lightsample.h"
 
 START_TEST(test_light_grid_for_is_the_squarest_factorisation)
 {

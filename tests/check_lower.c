@@ -1,5 +1,5 @@
-/* Tests of lowering and validation (src/lower*.c, src/validate.c,
- * src/scene.c): every default of spec/language.md read back from a loaded
+/* Tests of lowering and validation (src/lower*.c, src/scene/validate.c,
+ * src/scene/scene.c): every default of spec/language.md read back from a loaded
  * scene, every validation error with its location, transforms in written
  * order, the baking rules, the feature record, the warnings and meshes
  * read through `mesh`.  Expected numbers are worked out by hand in the
@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 typedef struct loaded {
     rf_scene *scene;

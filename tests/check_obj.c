@@ -1,4 +1,4 @@
-/* Tests of src/obj.c: the OBJ reader behind the `mesh` statement.  Every
+/* Tests of src/lang/obj.c: the OBJ reader behind the `mesh` statement.  Every
  * input is an in-memory file "m.obj" included from a one-line scene
  * "s.scene", and diagnostics go to a memory stream so their exact text is
  * checked.  Expected indices, columns and messages are worked out by hand
@@ -8,9 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "diag.h"
-#include "obj.h"
-#include "source.h"
+#include "base/diag.h"
+#include "lang/obj.h"
+#include "base/source.h"
 
 typedef struct run {
     source_set set;

@@ -15,9 +15,9 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle_testlib.h"
-#include "metrics.h"
-#include "render.h"
-#include "scene.h"
+#include "image/metrics.h"
+#include "render/render.h"
+#include "scene/scene.h"
 #include "oracle/area_family.h"
 #include "oracle/area_light.h"
 #include "oracle/elliptic.h"

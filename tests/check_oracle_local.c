@@ -19,12 +19,12 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle_testlib.h"
-#include "metrics.h"
+#include "image/metrics.h"
 #include "oracle/oracle.h"
 #include "oracle/oracle_geom.h"
 #include "oracle/oracle_util.h"
-#include "render.h"
-#include "scene.h"
+#include "render/render.h"
+#include "scene/scene.h"
 
 /* Loads text as a scene of the given family (the `oracle` statement is
  * prepended). */

@@ -22,11 +22,11 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle_testlib.h"
-#include "metrics.h"
+#include "image/metrics.h"
 #include "oracle/oracle.h"
 #include "oracle/optics_util.h"
-#include "render.h"
-#include "scene.h"
+#include "render/render.h"
+#include "scene/scene.h"
 
 /* The exact value at image point (x, y), which must not be ambiguous. */
 static rgb exact_at(const rf_scene *s, double x, double y)

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "keywords.h"
-#include "parse.h"
+#include "lang/keywords.h"
+#include "lang/parse.h"
 
 typedef struct parsed {
     arena arena;

@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <string.h>
 #include "testlib.h"
-#include "render.h"
-#include "sampler.h"
-#include "scene.h"
+#include "render/render.h"
+#include "base/sampler.h"
+#include "scene/scene.h"
 
 enum { SCENES = 150, TEXT_MAX = 16384 };
 

@@ -1,5 +1,5 @@
 /*
- * Tests of src/shade.c, one TCase per function.  Statement IDs refer to
+ * Tests of src/render/shade.c, one TCase per function.  Statement IDs refer to
  * spec/shading.md.  Expected values are derived by hand (derivation in the
  * comment above each number) or by a route the code does not take: sines
  * from cross products of returned vectors, __float128 or exact rational
@@ -9,7 +9,7 @@
 #include <math.h>
 #include "testlib.h"
 #include <quadmath.h>
-#include "shade.h"
+#include "render/shade.h"
 
 
 /* References are computed in __float128: software arithmetic, the same under

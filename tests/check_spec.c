@@ -8,8 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
-#include "keywords.h"
-#include "schema.h"
+#include "lang/keywords.h"
+#include "lang/schema.h"
 
 #define SPEC "spec/language.md"
 #define TESTS "tests"

@@ -1,8 +1,8 @@
-/* Tests of "did you mean" (src/suggest.c): the edit distance on hand
+/* Tests of "did you mean" (src/base/suggest.c): the edit distance on hand
  * examples and the closeness thresholds of [LANG-DIAG-SUGGEST-1]. */
 #include <string.h>
 #include "testlib.h"
-#include "suggest.h"
+#include "base/suggest.h"
 
 static int distance(const char *a, const char *b)
 {

@@ -1,8 +1,8 @@
-/* Tests of src/tonemap.c: the scalar display mapping.  Expected values are
+/* Tests of src/image/tonemap.c: the scalar display mapping.  Expected values are
  * derived by hand or by a different formula (exp2/log instead of pow). */
 #include <float.h>
 #include "testlib.h"
-#include "tonemap.h"
+#include "image/tonemap.h"
 
 START_TEST(test_tonemap_exposure)
 {

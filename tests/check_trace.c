@@ -8,9 +8,9 @@
 #include <stdio.h>
 #include <string.h>
 #include "testlib.h"
-#include "render.h"
-#include "scene.h"
-#include "trace.h"
+#include "render/render.h"
+#include "scene/scene.h"
+#include "render/trace.h"
 
 static rf_scene *load(const char *text)
 {

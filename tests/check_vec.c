@@ -1,7 +1,7 @@
-/* Tests of src/vec.h: the identities every other module leans on. */
+/* Tests of src/base/vec.h: the identities every other module leans on. */
 #include <float.h>
 #include "testlib.h"
-#include "vec.h"
+#include "base/vec.h"
 
 START_TEST(test_vec_cross_is_orthogonal_and_right_handed)
 {

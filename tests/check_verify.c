@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "verify.h"
+#include "verify/verify.h"
 
 enum { OUT_MAX = 65536 };
 

@@ -1,9 +1,9 @@
-/* Tests of src/xform.c: composition order, inversion, normals, exact right
+/* Tests of src/base/xform.c: composition order, inversion, normals, exact right
  * angles and the similarity test.  Expected values are worked out by hand
  * in the comments. */
 #include <float.h>
 #include "testlib.h"
-#include "xform.h"
+#include "base/xform.h"
 
 static int xform_equal(const xform *a, const xform *b, double tol)
 {

@@ -10,7 +10,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle/oracle.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 static inline rf_scene *load_text(const char *text)
 {

@@ -17,13 +17,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "camera.h"
-#include "intersect.h"
-#include "render.h"
-#include "scene.h"
-#include "shade.h"
-#include "stability.h"
-#include "trace.h"
+#include "render/camera.h"
+#include "render/intersect.h"
+#include "render/render.h"
+#include "scene/scene.h"
+#include "render/shade.h"
+#include "verify/stability.h"
+#include "render/trace.h"
 #include "precision/naive.h"
 #include <quadmath.h>
 
@@ -969,7 +969,7 @@ START_TEST(test_precision_befores_are_worse)
 }
 END_TEST
 
-/* ---- the stability tool (src/stability.c) ------------------------------- */
+/* ---- the stability tool (src/verify/stability.c) ------------------------------- */
 
 START_TEST(test_stability_raw_round_trip_is_lossless)
 {

@@ -6,7 +6,7 @@
 
 #include <check.h>
 #include <math.h>
-#include "vec.h"
+#include "base/vec.h"
 
 /* |got - want| <= tol, with the values in the failure message. */
 #define ck_assert_near(got, want, tol)                                                      \

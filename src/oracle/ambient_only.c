@@ -13,9 +13,9 @@
  * the far crossing along + half lies ahead of the origin.
  */
 #include <math.h>
-#include "oracle.h"
-#include "oracle_geom.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {

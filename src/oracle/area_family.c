@@ -12,9 +12,9 @@
  */
 #include <math.h>
 #include <string.h>
-#include "area_family.h"
-#include "area_light.h"
-#include "oracle_geom.h"
+#include "oracle/area_family.h"
+#include "oracle/area_light.h"
+#include "oracle/oracle_geom.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -12,7 +12,7 @@
 #ifndef REFRAY_AREA_FAMILY_H
 #define REFRAY_AREA_FAMILY_H
 
-#include "oracle.h"
+#include "oracle/oracle.h"
 
 typedef struct area_setup {
     const char *family;         /* for messages */

@@ -15,9 +15,9 @@
  * circle c + r(cos t, sin t) it is (r^2 + r c.(cos t, sin t)) dt.
  */
 #include <math.h>
-#include "area_light.h"
-#include "elliptic.h"
-#include "quadrature.h"
+#include "oracle/area_light.h"
+#include "oracle/elliptic.h"
+#include "oracle/quadrature.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -23,7 +23,7 @@
 #ifndef REFRAY_AREA_LIGHT_H
 #define REFRAY_AREA_LIGHT_H
 
-#include "scene.h"
+#include "scene/scene.h"
 
 typedef struct area_kernel {
     double h;              /* distance from the receiver to the light's plane, > 0 */

@@ -23,8 +23,8 @@
  * near parallel to the screen amplify again by 1/cos(delta).
  */
 #include <math.h>
-#include "optics_util.h"
-#include "oracle_geom.h"
+#include "oracle/optics_util.h"
+#include "oracle/oracle_geom.h"
 
 #define BALL_GRAZING 1e-5
 

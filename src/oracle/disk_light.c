@@ -8,7 +8,7 @@
  * integrals (Paxton 1959); the other falloffs have no closed form and use
  * the contour integral around the rim, by adaptive Gauss-Kronrod.
  */
-#include "area_family.h"
+#include "oracle/area_family.h"
 
 static const area_kind kind = {"disk_light", LIGHT_DISK, 0};
 

@@ -9,7 +9,7 @@
  * The occluder's top is lit by the whole light (nothing lies between); its
  * underside sees no light (N.L < 0), only ambient.
  */
-#include "area_family.h"
+#include "oracle/area_family.h"
 
 static const area_kind kind = {"disk_occluded", LIGHT_DISK, 1};
 

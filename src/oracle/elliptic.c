@@ -12,7 +12,7 @@
  */
 #include <float.h>
 #include <math.h>
-#include "elliptic.h"
+#include "oracle/elliptic.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -26,8 +26,8 @@
  * offsets make them slip (slab_colour).
  */
 #include <math.h>
-#include "optics_util.h"
-#include "oracle_geom.h"
+#include "oracle/optics_util.h"
+#include "oracle/oracle_geom.h"
 
 typedef struct slab_setup {
     const rf_prim *box, *floor;

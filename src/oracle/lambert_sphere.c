@@ -17,8 +17,8 @@
  * Ambiguous: the silhouette (ORACLE_EDGE_MARGIN radii) and the terminator
  * (|N.L| <= ORACLE_COS_MARGIN).
  */
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "lambert_sphere"
 

@@ -6,9 +6,9 @@
  */
 #include <float.h>
 #include <math.h>
-#include "optics_util.h"
-#include "oracle_geom.h"
-#include "intersect.h"
+#include "oracle/optics_util.h"
+#include "oracle/oracle_geom.h"
+#include "render/intersect.h"
 
 double optics_geometric_sum(double q, int m)
 {

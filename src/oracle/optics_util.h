@@ -10,8 +10,8 @@
 #ifndef REFRAY_OPTICS_UTIL_H
 #define REFRAY_OPTICS_UTIL_H
 
-#include "oracle.h"
-#include "oracle_geom.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_geom.h"
 
 /* The relative margin (of the value compared) inside which a sample point
  * is called ambiguous: a critical angle, a silhouette, a lobe's edge. */

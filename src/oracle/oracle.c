@@ -7,8 +7,8 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include "oracle.h"
-#include "oracle_families.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_families.h"
 
 static const oracle_family *const families[] = {
 #define ORACLE_FAMILY(name) &oracle_##name,

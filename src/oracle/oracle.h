@@ -13,8 +13,8 @@
 #define REFRAY_ORACLE_H
 
 #include <stddef.h>
-#include "image.h"
-#include "scene.h"
+#include "image/image.h"
+#include "scene/scene.h"
 
 /* What a family says of one image point. */
 typedef enum oracle_status {

@@ -5,7 +5,7 @@
 #ifndef REFRAY_ORACLE_FAMILIES_H
 #define REFRAY_ORACLE_FAMILIES_H
 
-#include "oracle.h"
+#include "oracle/oracle.h"
 
 #define ORACLE_FAMILY(name) extern const oracle_family oracle_##name;
 #include "oracle_list.h"

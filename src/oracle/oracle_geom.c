@@ -9,7 +9,7 @@
  * (sy*width/2 * H/W) up and keeps forward.
  */
 #include <math.h>
-#include "oracle_geom.h"
+#include "oracle/oracle_geom.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -6,7 +6,7 @@
 #ifndef REFRAY_ORACLE_GEOM_H
 #define REFRAY_ORACLE_GEOM_H
 
-#include "oracle.h"
+#include "oracle/oracle.h"
 
 typedef struct oracle_ray {
     vec3 origin;

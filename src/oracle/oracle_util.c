@@ -2,8 +2,8 @@
  * oracle_util.c - see oracle_util.h.
  */
 #include <math.h>
-#include "oracle_geom.h"
-#include "oracle_util.h"
+#include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -25,8 +25,8 @@
 #ifndef REFRAY_ORACLE_UTIL_H
 #define REFRAY_ORACLE_UTIL_H
 
-#include "oracle.h"
-#include "oracle_geom.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_geom.h"
 
 #define ORACLE_EXACT_TOLERANCE 1e-9
 #define ORACLE_EDGE_MARGIN 1e-6

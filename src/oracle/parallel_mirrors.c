@@ -25,8 +25,8 @@
  * into a long slip).
  */
 #include <math.h>
-#include "optics_util.h"
-#include "oracle_geom.h"
+#include "oracle/optics_util.h"
+#include "oracle/oracle_geom.h"
 
 /* The two walls as a slab whose lo wall (wall 0) is the first plane: the
  * axis is the first plane's normal, turned toward the second plane. */

@@ -18,8 +18,8 @@
  * lights, point lights off the plane; any camera whose eye is off the
  * plane.  Ambiguous: the horizon, and |V.R| near 0 when n < 1.
  */
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "phong_plane"
 

@@ -17,8 +17,8 @@
  * point and distant lights, point lights outside the sphere.  Ambiguous:
  * the silhouette, the terminator, and |V.R| near 0 when n < 1.
  */
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "phong_sphere"
 

@@ -15,8 +15,8 @@
  * (the horizon) and, for an orthographic camera, an image plane crossing
  * the plane.
  */
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "plane_point"
 

@@ -9,7 +9,7 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
-#include "quadrature.h"
+#include "oracle/quadrature.h"
 
 static const double xgk[8] = {
     0.991455371120812639206854697526329, 0.949107912342758524526189684047851,

@@ -9,7 +9,7 @@
  * along the four edges, by adaptive Gauss-Kronrod (no elementary closed form:
  * for linear falloff the edge integral is a Clausen-type function).
  */
-#include "area_family.h"
+#include "oracle/area_family.h"
 
 static const area_kind kind = {"rect_light", LIGHT_RECTANGLE, 0};
 

@@ -26,8 +26,8 @@
  * offsets.
  */
 #include <math.h>
-#include "optics_util.h"
-#include "oracle_geom.h"
+#include "oracle/optics_util.h"
+#include "oracle/oracle_geom.h"
 
 /* The box, its material and the pair of faces the camera looks at. */
 typedef struct window_setup {

@@ -18,8 +18,8 @@
  * shadow boundary, the terminator, the horizon.
  */
 #include <math.h>
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "sphere_shadow"
 

@@ -24,9 +24,9 @@
  * ORACLE_EDGE_MARGIN radii of a disk's rim; the horizon.
  */
 #include <math.h>
-#include "oracle.h"
-#include "oracle_geom.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "stacked_sheets"
 #define STACK_MAX 32

@@ -20,8 +20,8 @@
  * Ambiguous: as sphere_shadow, plus the terminators at P1 and P2.
  */
 #include <math.h>
-#include "oracle.h"
-#include "oracle_util.h"
+#include "oracle/oracle.h"
+#include "oracle/oracle_util.h"
 
 #define FAMILY "transparent_shadow"
 

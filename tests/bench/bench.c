@@ -11,8 +11,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "render.h"
-#include "scene.h"
+#include "render/render.h"
+#include "scene/scene.h"
 
 static int by_value(const void *a, const void *b)
 {

@@ -20,9 +20,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "image.h"
-#include "metrics.h"
-#include "verify.h"
+#include "image/image.h"
+#include "image/metrics.h"
+#include "verify/verify.h"
 
 static rf_scene *load(const char *path, int *status)
 {

@@ -1,5 +1,5 @@
 /*
- * measure.h - the precision of every formula of src/shade.c and of each
+ * measure.h - the precision of every formula of src/render/shade.c and of each
  * intersection routine, measured against a reference computed in a wider
  * type REF over random and extreme inputs (spec/numerics.md, "Precision
  * per function").
@@ -29,8 +29,8 @@
 #include <float.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "intersect.h"
-#include "shade.h"
+#include "render/intersect.h"
+#include "render/shade.h"
 #include "naive.h"
 
 typedef struct measure {

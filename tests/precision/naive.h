@@ -8,7 +8,7 @@
 #ifndef REFRAY_NAIVE_H
 #define REFRAY_NAIVE_H
 
-#include "ray.h"
+#include "render/ray.h"
 
 /* Ray/sphere by the quadratic formula as printed in most textbooks:
  * a t^2 + b t + c = 0 with b = 2 f.d, c = f.f - R^2, disc = b^2 - 4ac,

@@ -1,5 +1,5 @@
 /*
- * precision.c - `make precision`: every formula of src/shade.c and each
+ * precision.c - `make precision`: every formula of src/render/shade.c and each
  * intersection routine evaluated in double against a __float128 reference
  * over random and extreme inputs (tests/precision/measure.h), then the
  * robust methods against their naive versions on the stress scenes
@@ -14,10 +14,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "bvh.h"
-#include "camera.h"
-#include "scene.h"
-#include "trace.h"
+#include "render/bvh.h"
+#include "render/camera.h"
+#include "scene/scene.h"
+#include "render/trace.h"
 
 __extension__ typedef __float128 quad;
 #define REF quad

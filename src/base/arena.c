@@ -1,0 +1,72 @@
+/*
+ * arena.c - chained blocks; a request larger than a block gets its own.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "base/arena.h"
+
+enum { BLOCK_BYTES = 16384 };
+
+/* C99 has no max_align_t: a union of the widest scalar types stands in. */
+typedef union arena_align {
+    long double ld;
+    long long ll;
+    void *p;
+    double d;
+} arena_align;
+
+struct arena_block {
+    arena_block *next;
+    size_t used, size;
+    arena_align data[]; /* flexible array of the strictest alignment */
+};
+
+void arena_init(arena *a)
+{
+    a->head = NULL;
+}
+
+void arena_free(arena *a)
+{
+    while (a->head) {
+        arena_block *next = a->head->next;
+        free(a->head);
+        a->head = next;
+    }
+}
+
+static size_t round_up(size_t n)
+{
+    size_t align = sizeof(arena_align);
+    return (n + align - 1) / align * align;
+}
+
+void *arena_alloc(arena *a, size_t size)
+{
+    size = round_up(size ? size : 1);
+    arena_block *b = a->head;
+    if (!b || b->size - b->used < size) {
+        size_t cap = size > BLOCK_BYTES ? size : BLOCK_BYTES;
+        b = malloc(sizeof *b + cap);
+        if (!b)
+            return NULL;
+        b->used = 0;
+        b->size = cap;
+        b->next = a->head;
+        a->head = b;
+    }
+    void *p = (char *)b->data + b->used;
+    b->used += size;
+    memset(p, 0, size);
+    return p;
+}
+
+char *arena_strndup(arena *a, const char *text, size_t len)
+{
+    char *s = arena_alloc(a, len + 1);
+    if (s) {
+        memcpy(s, text, len);
+        s[len] = '\0';
+    }
+    return s;
+}

@@ -1,0 +1,278 @@
+/*
+ * cli_stability.c - `refray stability SCENE` (also reached as `refray
+ * verify --stability SCENE`): render SCENE here in double and in the long
+ * double twin refray-ld, compare the two images, report where and by how
+ * much they differ (spec/numerics.md, "The stability tool").
+ *
+ * The twin is found by --ld PATH, else $REFRAY_LD, else as refray-ld next
+ * to this program (`make refray-ld` puts it there).  It is run as
+ *   refray-ld verify --stability --raw-dump TMP [the same options] SCENE
+ * and hands its image back through TMP, a raw dump (stability.h).
+ */
+#include <errno.h>
+#include <limits.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "cli/cli.h"
+#include "image/image.h"
+#include "verify/stability.h"
+
+extern char **environ;
+
+/* The command's entry; cli.c (refray stability) and cli_verify.c (refray
+ * verify --stability) declare it where they call it, as cli.c does for
+ * cli_export, since cli.h is not this file's. */
+int cli_stability(int argc, char **argv);
+
+static const char stability_help[] =
+    "usage: refray stability SCENE [OPTIONS]\n"
+    "       refray verify --stability SCENE [OPTIONS]\n"
+    "Renders SCENE in double and in long double (the twin program refray-ld,\n"
+    "built by `make refray-ld`) and reports how much the two pictures differ:\n"
+    "the largest absolute and relative difference and where, and how many\n"
+    "pixels differ by how much.  Exit status 0 when no pixel differs by more\n"
+    "than the threshold, 1 when some does.\n"
+    "options:\n"
+    "  --threshold REL       relative difference that counts as unstable (1e-9)\n"
+    "  --map OUT             write the differences as an image: per pixel and\n"
+    "                        channel (17 + log10 rel) / 17, 0 where identical\n"
+    "                        (linear; .pfm or .exr keep it exactly)\n"
+    "  --ld PATH             the long double program (default: $REFRAY_LD, or\n"
+    "                        refray-ld next to this program)\n"
+    "  --width W --height H --samples K --max-depth D --light-samples N\n"
+    "                        as for `refray render`\n"
+    "and -W and the input limits of `refray --help`.\n";
+
+typedef struct stab_args {
+    cli_scene_opts scene;
+    render_opts render;
+    const char *input, *map, *ld, *raw_dump;
+    double threshold;
+    int argc;
+    char **argv;
+} stab_args;
+
+/* 1: consumed, 0: error (reported), -1: not an option of this command. */
+static int stab_option(void *args, int argc, char **argv, int *i)
+{
+    stab_args *a = args;
+    const char *opt = argv[*i], *v;
+    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    if (sized >= 0)
+        return sized;
+    if (strcmp(opt, "--threshold") == 0)
+        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->threshold);
+    if (strcmp(opt, "--map") == 0)
+        return cli_take_value(argc, argv, i, &a->map);
+    if (strcmp(opt, "--ld") == 0)
+        return cli_take_value(argc, argv, i, &a->ld);
+    if (strcmp(opt, "--raw-dump") == 0)
+        return cli_take_value(argc, argv, i, &a->raw_dump);
+    if (strcmp(opt, "--stability") == 0 || strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
+        return 1;
+    return -1;
+}
+
+/* 0: go on; -1: help printed; else the usage exit code. */
+static int parse_args(stab_args *a, int argc, char **argv)
+{
+    int status = cli_parse_one_scene("stability", stability_help, argc, argv, &a->scene, &a->input, stab_option, a);
+    if (status != 0)
+        return status;
+    if (!(a->threshold > 0))
+        return cli_usage_error("stability: --threshold must be > 0");
+    return 0;
+}
+
+/* The twin's path into buf: --ld, $REFRAY_LD, or refray-ld beside us. */
+static int find_twin(const stab_args *a, char *buf, size_t len)
+{
+    const char *env = getenv("REFRAY_LD");
+    if (a->ld || (env && *env)) {
+        snprintf(buf, len, "%s", a->ld ? a->ld : env);
+        return 0;
+    }
+    ssize_t n = readlink("/proc/self/exe", buf, len - 1);
+    if (n <= 0)
+        return -1;
+    buf[n] = '\0';
+    char *slash = strrchr(buf, '/');
+    size_t dir = slash ? (size_t)(slash - buf) + 1 : 0;
+    if (dir + sizeof "refray-ld" > len)
+        return -1;
+    memcpy(buf + dir, "refray-ld", sizeof "refray-ld");
+    return 0;
+}
+
+/* The twin's argv: verify --stability --raw-dump TMP, then ours without
+ * the options only this side uses. */
+static char **twin_argv(const stab_args *a, const char *twin, const char *tmp)
+{
+    char **v = calloc((size_t)a->argc + 6, sizeof *v);
+    int n = 0;
+    if (!v)
+        return NULL;
+    v[n++] = (char *)twin;
+    v[n++] = (char *)"verify";
+    v[n++] = (char *)"--stability";
+    v[n++] = (char *)"--raw-dump";
+    v[n++] = (char *)tmp;
+    for (int i = 1; i < a->argc; i++) {
+        const char *s = a->argv[i];
+        if (strcmp(s, "--map") == 0 || strcmp(s, "--ld") == 0 || strcmp(s, "--threshold") == 0) {
+            i++;
+            continue;
+        }
+        if (strcmp(s, "--stability") != 0)
+            v[n++] = a->argv[i];
+    }
+    v[n++] = (char *)"-W";
+    return v;
+}
+
+/* Runs the twin; its image comes back through a temporary file. */
+static int run_twin(const stab_args *a, stab_image *out)
+{
+    char twin[PATH_MAX], tmp[] = "/tmp/refray-stability-XXXXXX", err[128];
+    if (find_twin(a, twin, sizeof twin) != 0 || access(twin, X_OK) != 0) {
+        fprintf(stderr, "refray: error: the long double program '%s' is missing; build it with `make refray-ld`, "
+                "or name it with --ld\n", twin);
+        return REFRAY_EXIT_SOFTWARE;
+    }
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        fprintf(stderr, "refray: error: cannot create a temporary file: %s\n", strerror(errno));
+        return REFRAY_EXIT_IOERR;
+    }
+    close(fd);
+    char **argv = twin_argv(a, twin, tmp);
+    pid_t pid;
+    int wstatus = 0, status = REFRAY_EXIT_SOFTWARE;
+    if (argv && posix_spawn(&pid, twin, NULL, NULL, argv, environ) == 0 && waitpid(pid, &wstatus, 0) == pid) {
+        if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0) {
+            FILE *f = fopen(tmp, "r");
+            status = f && stability_read_raw(f, out, err, sizeof err) == 0 ? REFRAY_EXIT_OK : REFRAY_EXIT_SOFTWARE;
+            if (status != REFRAY_EXIT_OK)
+                fprintf(stderr, "refray: error: reading the long double image: %s\n", f ? err : strerror(errno));
+            if (f)
+                fclose(f);
+        } else {
+            fprintf(stderr, "refray: error: the long double program failed (%s %d)\n",
+                    WIFEXITED(wstatus) ? "exit status" : "signal",
+                    WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : WTERMSIG(wstatus));
+            status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) != 0 ? WEXITSTATUS(wstatus) : REFRAY_EXIT_SOFTWARE;
+        }
+    } else {
+        fprintf(stderr, "refray: error: cannot run '%s'\n", twin);
+    }
+    free(argv);
+    unlink(tmp);
+    return status;
+}
+
+/* The private half: render in this build's precision, dump raw. */
+static int dump_raw(const stab_args *a, const rf_scene *scene)
+{
+    stab_image img;
+    int status = stability_render(scene, &a->render, &img);
+    if (status != REFRAY_EXIT_OK)
+        return status;
+    FILE *f = fopen(a->raw_dump, "w");
+    int bad = !f || stability_write_raw(f, &img) != 0;
+    if (f && fclose(f) != 0)
+        bad = 1;
+    stability_free(&img);
+    if (bad) {
+        fprintf(stderr, "refray: error: cannot write '%s': %s\n", a->raw_dump, strerror(errno));
+        return REFRAY_EXIT_IOERR;
+    }
+    return REFRAY_EXIT_OK;
+}
+
+static void print_report(const stab_args *a, const stab_image *d, const stab_image *ld, const stab_report *r)
+{
+    static const char *const bands[STAB_BANDS] = {"identical", "below 1e-15", "1e-15 .. 1e-12",
+                                                  "1e-12 .. 1e-9", "1e-9 .. 1e-6", "1e-6 and more"};
+    printf("stability: %s, %dx%d pixels, double against long double (%d-bit significand)\n", a->input, d->width,
+           d->height, LDBL_MANT_DIG);
+    if (r->rel_x < 0)
+        printf("  the two images are identical\n");
+    else
+        printf("  largest difference: %.3Lg absolute at (%d, %d); %.3Lg relative at (%d, %d)\n", r->max_abs,
+               r->abs_x, r->abs_y, r->max_rel, r->rel_x, r->rel_y);
+    printf("  pixels by their largest relative difference:\n");
+    for (int b = 0; b < STAB_BANDS; b++)
+        printf("    %-16s %ld\n", bands[b], r->band[b]);
+    printf("  pixels beyond %g: %ld of %ld: %s\n", a->threshold, r->beyond, r->pixels,
+           r->beyond ? "UNSTABLE" : "stable");
+    printf("  non-finite values: %ld in double, %ld in long double\n", d->nonfinite, ld->nonfinite);
+}
+
+static int write_map(const char *path, const rf_image *map)
+{
+    img_write_opts o = img_write_opts_default();
+    char err[512];
+    o.linear_png = 1;
+    if (img_write(path, map, &o, err, sizeof err) != 0) {
+        fprintf(stderr, "refray: error: %s\n", err);
+        return REFRAY_EXIT_IOERR;
+    }
+    return REFRAY_EXIT_OK;
+}
+
+static int compare(const stab_args *a, const rf_scene *scene)
+{
+    stab_image d, ld;
+    stab_report r;
+    rf_image map = {0, 0, NULL};
+    int status = stability_render(scene, &a->render, &d);
+    if (status != REFRAY_EXIT_OK)
+        return status;
+    if ((status = run_twin(a, &ld)) != REFRAY_EXIT_OK) {
+        stability_free(&d);
+        return status;
+    }
+    if (stability_compare(&d, &ld, a->threshold, &r, a->map ? &map : NULL) != 0) {
+        fprintf(stderr, "refray: error: the two renders differ in size, or out of memory\n");
+        status = REFRAY_EXIT_SOFTWARE;
+    } else {
+        print_report(a, &d, &ld, &r);
+        status = a->map ? write_map(a->map, &map) : REFRAY_EXIT_OK;
+        if (status == REFRAY_EXIT_OK && (r.beyond > 0 || d.nonfinite > 0 || ld.nonfinite > 0))
+            status = REFRAY_EXIT_FAIL;
+    }
+    if (a->map)
+        img_free(&map);
+    stability_free(&d);
+    stability_free(&ld);
+    return status;
+}
+
+int cli_stability(int argc, char **argv)
+{
+    stab_args a;
+    memset(&a, 0, sizeof a);
+    cli_scene_opts_init(&a.scene);
+    a.threshold = 1e-9;
+    a.argc = argc;
+    a.argv = argv;
+    int status = parse_args(&a, argc, argv);
+    if (status != 0)
+        return status < 0 ? REFRAY_EXIT_OK : status;
+    a.render.max_tree_rays = a.scene.limits.max_ray_tree;
+    if (!a.raw_dump && sizeof(real) > sizeof(double))
+        return cli_usage_error("stability: this is the long double program; run refray, the double one");
+    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    if (!scene)
+        return status;
+    status = a.raw_dump ? dump_raw(&a, scene) : compare(&a, scene);
+    if (status == REFRAY_EXIT_DATAERR)
+        fprintf(stderr, "refray: error: a ray tree passed --max-ray-tree %ld; nothing compared\n",
+                a.scene.limits.max_ray_tree);
+    scene_free(scene);
+    return status;
+}

@@ -1,0 +1,843 @@
+/*
+ * export_pov.c - see export_pov.h; the mapping and its reasons are in
+ * spec/crosscheck.md ([XCHK-MAP-*]).
+ *
+ * Invariants: every point and direction goes through to_pov (z negated:
+ * refray is right-handed, POV-Ray left-handed; the mirror maps refray's
+ * right = forward x up onto POV-Ray's sky x direction, so the picture is
+ * the same, not mirrored); every number is printed with 17 significant
+ * digits, which POV-Ray's parser reads back as the same double; nothing is
+ * written before pov_export_check has passed.
+ *
+ * POV-Ray 3.7 facts the mapping rests on (its source, backend/render/
+ * trace.cpp, and renders made here):
+ *   - a surface's ambient and diffuse terms are scaled by its opacity,
+ *     1 - transmit for filter 0, and the transmitted ray by transmit: the
+ *     seed's (1 - t) body and t * trace(refracted);
+ *   - phong p, phong_size n adds p * light * (R_eye . L)^n when that
+ *     cosine is > 0 and the light is in front (N.L > 0): Ks (V.R)^n, not
+ *     scaled by the opacity; reflection { rgb K } adds K * trace(mirror);
+ *   - a light fades by 2 / (1 + (d / fade_distance)^fade_power) when both
+ *     are set, else not at all;
+ *   - a camera ray is trace level 1 and a secondary ray of level L is
+ *     traced only while L <= max_trace_level (else black): refray's depth.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "export/export_pov.h"
+#include "render/lightsample.h"
+
+/* ---- Notes ---- */
+
+static void add_note(pov_notes *n, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void add_note(pov_notes *n, const char *fmt, ...)
+{
+    va_list ap;
+    if (n->count < POV_NOTE_MAX) {
+        va_start(ap, fmt);
+        vsnprintf(n->text[n->count], POV_NOTE_LEN, fmt, ap);
+        va_end(ap);
+    }
+    n->count++;
+}
+
+static void refuse(pov_notes *n, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* Keeps the first reason: the user fixes one thing at a time. */
+static void refuse(pov_notes *n, const char *fmt, ...)
+{
+    va_list ap;
+    if (n->refused)
+        return;
+    n->refused = 1;
+    va_start(ap, fmt);
+    vsnprintf(n->reason, POV_NOTE_LEN, fmt, ap);
+    va_end(ap);
+}
+
+/* "file:line" of a span, for notes; "?" when it points nowhere. */
+static void where(const rf_scene *s, src_span sp, char *buf, size_t size)
+{
+    if (sp.file < 0 || sp.file >= s->sources.count) {
+        snprintf(buf, size, "?");
+        return;
+    }
+    const source_file *f = s->sources.files[sp.file];
+    int line, col;
+    source_line_col(f, sp.begin, &line, &col);
+    snprintf(buf, size, "%.200s:%d", f->path, line);
+}
+
+/* ---- The scene's size, for the stand-ins of d0 = 0 and distant lights ---- */
+
+typedef struct extent {
+    vec3 lo, hi;
+    int any;
+} extent;
+
+static void extent_add(extent *e, vec3 p)
+{
+    e->lo = e->any ? vec_min(e->lo, p) : p;
+    e->hi = e->any ? vec_max(e->hi, p) : p;
+    e->any = 1;
+}
+
+/* The 8 corners of the local box lo..hi, taken to the world. */
+static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
+{
+    for (int i = 0; i < 8; i++) {
+        vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+        extent_add(e, p->has_xform ? xform_point(&p->to_world, c) : c);
+    }
+}
+
+/* Planes are unbounded and left out: they need no distance. */
+static void extent_add_prim(extent *e, const rf_prim *p)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE: {
+        vec3 r = vec_splat(p->u.sphere.radius);
+        extent_add_box(e, p, vec_sub(p->u.sphere.center, r), vec_add(p->u.sphere.center, r));
+        break;
+    }
+    case PRIM_DISK: {
+        vec3 r = vec_splat(p->u.disk.radius);
+        extent_add_box(e, p, vec_sub(p->u.disk.center, r), vec_add(p->u.disk.center, r));
+        break;
+    }
+    case PRIM_BOX:
+        extent_add_box(e, p, p->u.box.lo, p->u.box.hi);
+        break;
+    case PRIM_TRIANGLE:
+        for (int i = 0; i < 3; i++)
+            extent_add(e, p->u.triangle.p[i]);
+        break;
+    case PRIM_PLANE:
+        break;
+    }
+}
+
+/* Centre and radius (at least 1) of a ball holding the camera, the lights
+ * and every bounded primitive. */
+static double scene_radius(const rf_scene *s, vec3 *centre)
+{
+    extent e = {vec_splat(0), vec_splat(0), 0};
+    extent_add(&e, s->camera.eye);
+    for (int i = 0; i < s->prim_count; i++)
+        extent_add_prim(&e, &s->prims[i]);
+    for (int i = 0; i < s->light_count; i++) {
+        const rf_light *l = &s->lights[i];
+        if (l->kind == LIGHT_DISTANT)
+            continue;
+        extent_add(&e, l->position);
+        if (l->kind == LIGHT_RECTANGLE)
+            extent_add(&e, vec_add(l->position, vec_add(l->edge_u, l->edge_v)));
+    }
+    *centre = vec_scale(vec_add(e.lo, e.hi), 0.5);
+    return fmax(1.0, 0.5 * vec_length(vec_sub(e.hi, e.lo)));
+}
+
+/* ---- Falloff as POV-Ray fading ---- */
+
+/* A light's falloff as colour * 2 / (1 + (d / distance)^power). */
+typedef struct fade {
+    double colour;     /* factor on E */
+    double distance;   /* fade_distance; 0: no fading written */
+    double power;      /* fade_power */
+    int exact;
+} fade;
+
+/*
+ * [XCHK-MAP-FADE-1] linear, d0 > 0: with D = d0 and p = 1,
+ * 2/(1 + d/d0) * E/(2 d0) = E/(d + d0) exactly.  linear, d0 = 0: D small,
+ * E/(d + D), off by D/(d + D) relative.  inverse_square, d0 = 0: p = 2,
+ * 2/(1 + (d/D)^2) * E/(2 D^2) = E/(d^2 + D^2), off by about (D/d)^2.
+ * inverse_square with d0 > 0 has no match: 1 + (d/D)^p has no term
+ * linear in d, (d + d0)^2 = d^2 + 2 d d0 + d0^2 has.  Returns 0 then.
+ */
+static int light_fade(const rf_light *l, double radius, fade *f)
+{
+    f->colour = 1.0;
+    f->distance = 0.0;
+    f->power = 0.0;
+    f->exact = 1;
+    if (l->kind == LIGHT_DISTANT || l->falloff == FALLOFF_NONE)
+        return 1;
+    if (l->falloff == FALLOFF_LINEAR) {
+        f->distance = l->d0 > 0 ? l->d0 : fmax(POV_LINEAR_FADE * radius, POV_LINEAR_FADE);
+        f->power = 1.0;
+        f->colour = 1.0 / (2.0 * f->distance);
+        f->exact = l->d0 > 0;
+        return 1;
+    }
+    if (l->d0 > 0)
+        return 0;
+    f->distance = fmax(POV_SQUARE_FADE * radius, POV_SQUARE_FADE);
+    f->power = 2.0;
+    f->colour = 1.0 / (2.0 * f->distance * f->distance);
+    f->exact = 0;
+    return 1;
+}
+
+/* ---- Checks ---- */
+
+static const char *light_word(rf_light_kind k)
+{
+    return k == LIGHT_POINT ? "point_light" : k == LIGHT_DISTANT ? "distant_light" : "distributed_light";
+}
+
+static int is_pow2(int n)
+{
+    return n > 0 && (n & (n - 1)) == 0;
+}
+
+/* [XCHK-MAP-AREA-1] the sampling of a distributed light. */
+static void check_sampling(const rf_light *l, const char *at, const pov_opts *o, pov_notes *n)
+{
+    light_grid g = light_grid_for(l->samples);
+    if (!o->area_lights) {
+        add_note(n, "distributed_light at %s: its %d point sources sit at the centres of their %dx%d cells; "
+                 "refray jitters each within its cell (the two agree as samples grow, not sample for sample)",
+                 at, l->samples, g.rows, g.cols);
+        return;
+    }
+    add_note(n, "distributed_light at %s as a POV-Ray area_light: visibility is averaged apart from shading "
+             "(exact where the light is wholly seen or wholly hidden, not in penumbrae)%s", at,
+             l->kind == LIGHT_DISK ? "; `circular` maps the square to the disk radially, not by the concentric "
+                                     "map, and not area-preserving" : "");
+    if (l->kind == LIGHT_RECTANGLE && (!is_pow2(g.rows) || !is_pow2(g.cols)))
+        add_note(n, "distributed_light at %s: a %dx%d grid is not a power of two per axis, so POV-Ray's "
+                 "recursive visibility average weights its sources unevenly", at, g.rows, g.cols);
+}
+
+static void check_light(const rf_scene *s, const rf_light *l, double radius, const pov_opts *o, pov_notes *n)
+{
+    char at[256];
+    fade f;
+    where(s, l->where, at, sizeof at);
+    if (!light_fade(l, radius, &f)) {
+        refuse(n, "%s at %s: inverse_square falloff with d0 %g > 0 has no POV-Ray equivalent (POV-Ray fades by "
+               "2/(1 + (d/D)^p), which has no term linear in d as (d + d0)^2 has); use d0 0, or falloff "
+               "linear or none", light_word(l->kind), at, l->d0);
+        return;
+    }
+    if (!f.exact)
+        add_note(n, "%s at %s: %s falloff with d0 0 written as fade_distance %.3g fade_power %g (light "
+                 "E/(d%s + D%s), relative error about %s at distance d)", light_word(l->kind), at,
+                 l->falloff == FALLOFF_LINEAR ? "linear" : "inverse_square", f.distance, f.power,
+                 f.power == 2 ? "^2" : "", f.power == 2 ? "^2" : "", f.power == 2 ? "(D/d)^2" : "D/d");
+    if (l->kind == LIGHT_RECTANGLE || l->kind == LIGHT_DISK)
+        check_sampling(l, at, o, n);
+}
+
+static int is_solid(const rf_prim *p)
+{
+    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
+}
+
+static int is_grey(rgb c)
+{
+    return c.x == c.y && c.y == c.z;
+}
+
+/* How the primitives use a material: as a solid, as a sheet. */
+static void material_use(const rf_scene *s, int m, int *solid, int *sheet)
+{
+    *solid = *sheet = 0;
+    for (int i = 0; i < s->prim_count; i++) {
+        if (s->prims[i].material != m)
+            continue;
+        if (is_solid(&s->prims[i]))
+            *solid = 1;
+        else
+            *sheet = 1;
+    }
+}
+
+/* [XCHK-MAP-TIR-1] On total internal reflection POV-Ray adds the mirror
+ * ray once, unweighted (and skips the Ks mirror ray); refray adds it with
+ * weight Ks + t.  They agree where Ks + t = 1. */
+static int tir_differs(const rf_material *m)
+{
+    return fabs(m->ks.x + m->t - 1) > 1e-12 || fabs(m->ks.y + m->t - 1) > 1e-12 ||
+           fabs(m->ks.z + m->t - 1) > 1e-12;
+}
+
+/* [XCHK-MAP-LEVEL-1] A transparent surface with the same ior on both sides
+ * (a sheet, or a solid of ior 1) passes the ray straight on.  refray counts
+ * that as a level of depth; POV-Ray does not when the two iors are equal
+ * (it continues the ray), so by default each such surface gets its own ior
+ * a few float steps above 1 (POV-Ray keeps iors in single precision). */
+static int passes_straight(const rf_scene *s, const rf_prim *p)
+{
+    const rf_material *m = &s->materials[p->material];
+    return s->image.max_depth > 1 && m->t > 0 && (!is_solid(p) || m->ior == 1);
+}
+
+static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_notes *n)
+{
+    const rf_material *m = &s->materials[index];
+    int solid, sheet, deep = s->image.max_depth > 1;
+    char at[256], name[320];
+    material_use(s, index, &solid, &sheet);
+    if (!solid && !sheet)
+        return;
+    where(s, m->where, at, sizeof at);
+    snprintf(name, sizeof name, "material %.40s (%.250s)", m->name ? m->name : "inline", at);
+    if (!is_grey(m->ks) && s->light_count > 0)
+        add_note(n, "%s: Ks [%g, %g, %g] is not grey and POV-Ray's phong is one number: the highlight uses "
+                 "their mean %g (the mirror ray keeps the colour)", name, (double)m->ks.x, (double)m->ks.y,
+                 (double)m->ks.z, (double)(m->ks.x + m->ks.y + m->ks.z) / 3);
+    if (deep && solid && m->t > 0 && m->ior != 1 && tir_differs(m))
+        add_note(n, "%s: on total internal reflection POV-Ray adds the mirror ray with weight 1, refray "
+                 "with Ks + t (they agree only where Ks + t = 1)", name);
+    if (deep && m->t > 0 && (sheet || m->ior == 1) && o->plain_sheets)
+        add_note(n, "%s: POV-Ray passes a ray straight through a surface with the same ior on both sides "
+                 "without counting a trace level, refray counts one (they differ only where max_depth cuts "
+                 "such a path)", name);
+    else if (deep && m->t > 0 && (sheet || m->ior == 1))
+        add_note(n, "%s: its surfaces get iors 1 + j 2^-22 (j <= %d, one per surface) so that POV-Ray counts a "
+                 "straight pass as a trace level as refray does; rays then bend by up to j 2.4e-7 tan(incidence)",
+                 name, POV_NUDGE_CYCLE);
+}
+
+/* [XCHK-MAP-MESH-2] POV-Ray turns a mirror ray that a vertex normal sends
+ * into the surface back out (reflecting it about the geometric normal);
+ * refray traces the mirror ray as it is. */
+static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
+{
+    const rf_prim *tri = &s->prims[m->first_prim];
+    int smooth = 0;
+    char at[256];
+    for (int i = 0; i < m->count; i++)
+        smooth |= tri[i].u.triangle.has_normals;
+    if (!smooth || s->image.max_depth < 2 || vec_max_component(s->materials[tri->material].ks) <= 0)
+        return;
+    where(s, m->where, at, sizeof at);
+    add_note(n, "mesh at %s has vertex normals and Ks > 0: where a vertex normal sends the mirror ray into the "
+             "surface POV-Ray reflects it out again about the geometric normal, refray traces it as it is", at);
+}
+
+int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes)
+{
+    vec3 centre;
+    double radius = scene_radius(s, &centre);
+    memset(notes, 0, sizeof *notes);
+    for (int i = 0; i < s->light_count; i++)
+        check_light(s, &s->lights[i], radius, o, notes);
+    for (int i = 0; i < s->material_count; i++)
+        check_material(s, i, o, notes);
+    for (int i = 0; i < s->mesh_count; i++)
+        check_mesh(s, &s->meshes[i], notes);
+    if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
+        add_note(notes, "max_depth %d is over POV-Ray's limit: max_trace_level %d (they differ only for paths "
+                 "deeper than that)", s->image.max_depth, POV_MAX_TRACE_LEVEL);
+    return !notes->refused;
+}
+
+/* ---- Writing ---- */
+
+static vec3 to_pov(vec3 v)
+{
+    return vec_make(v.x, v.y, -v.z);
+}
+
+static void put_num(FILE *fp, double x)
+{
+    fprintf(fp, "%.17g", x == 0 ? 0.0 : x);
+}
+
+static void put_vec(FILE *fp, vec3 v)
+{
+    fputc('<', fp);
+    put_num(fp, v.x);
+    fputs(", ", fp);
+    put_num(fp, v.y);
+    fputs(", ", fp);
+    put_num(fp, v.z);
+    fputc('>', fp);
+}
+
+/* A comment line: control bytes (a newline in a path) would end it early. */
+static void put_comment_text(FILE *fp, const char *text)
+{
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++)
+        fputc(*c < 0x20 || *c == 0x7f ? '?' : *c, fp);
+}
+
+int pov_render_size(const rf_scene *s, int *width, int *height)
+{
+    int k = s->image.samples;
+    *width = s->image.width * k;
+    *height = s->image.height * k;
+    return k;
+}
+
+static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const pov_notes *n)
+{
+    int w, h, k = pov_render_size(s, &w, &h);
+    fputs("// POV-Ray 3.7 scene written by `refray export --to pov`", fp);
+    if (o->source) {
+        fputs(" from ", fp);
+        put_comment_text(fp, o->source);
+    }
+    fprintf(fp, "\n// Render it linear, unfiltered, on one thread:\n"
+                "//   povray +I<this file> +O<out>.png +W%d +H%d -A -D +WT1 +FN16 File_Gamma=1.0 "
+                "Output_Alpha=off\n", w, h);
+    if (k > 1)
+        fprintf(fp, "// then average each %dx%d block of pixels: refray's %dx%d grid per pixel.\n", k, k, k, k);
+    if (o->scale > 0 && o->scale != 1) {
+        fputs("// then divide it by ", fp);
+        put_num(fp, o->scale);
+        fputs(": every light, the ambient light and the background are scaled by it.\n", fp);
+    }
+    fprintf(fp, "// pov-args: +W%d +H%d -A\n// pov-downsample: %d\n// pov-scale: ", w, h, k);
+    put_num(fp, o->scale > 0 ? o->scale : 1);
+    fputc('\n', fp);
+    fprintf(fp, "// approximations: %d%s\n", n->count, n->count ? " (see spec/crosscheck.md)" : "");
+    for (int i = 0; i < n->count && i < POV_NOTE_MAX; i++) {
+        fputs("//   - ", fp);
+        put_comment_text(fp, n->text[i]);
+        fputc('\n', fp);
+    }
+    if (n->count > POV_NOTE_MAX)
+        fprintf(fp, "//   - ... and %d more\n", n->count - POV_NOTE_MAX);
+    fputs("#version 3.7;\n\n", fp);
+}
+
+/* [XCHK-MAP-GLOBAL-1] Linear working space, the ambient light, the depth,
+ * and no adaptive cut-off of weak rays. */
+static void write_globals(FILE *fp, const rf_scene *s, double scale)
+{
+    int depth = s->image.max_depth < POV_MAX_TRACE_LEVEL ? s->image.max_depth : POV_MAX_TRACE_LEVEL;
+    fputs("global_settings {\n  assumed_gamma 1.0\n  ambient_light rgb ", fp);
+    put_vec(fp, vec_scale(s->ambient, scale));
+    fprintf(fp, "\n  max_trace_level %d\n  adc_bailout 0\n}\n\nbackground { rgb ", depth);
+    put_vec(fp, vec_scale(s->image.background, scale));
+    fputs(" }\n\n", fp);
+}
+
+/* [XCHK-MAP-CAMERA-1] right and up carry the image's aspect; `angle` is
+ * the horizontal field of view (POV-Ray sizes the direction from right);
+ * an orthographic camera's right and up are the view's extent.  sky is
+ * refray's up as written; look_at comes last, as it re-aims the others. */
+static void write_camera(FILE *fp, const rf_scene *s)
+{
+    const rf_camera *c = &s->camera;
+    double aspect = (double)s->image.width / (double)s->image.height;
+    int ortho = c->kind == CAMERA_ORTHOGRAPHIC;
+    fprintf(fp, "camera {\n  %s\n  location ", ortho ? "orthographic" : "perspective");
+    put_vec(fp, to_pov(c->eye));
+    fputs("\n  right ", fp);
+    put_vec(fp, vec_make(ortho ? c->width : aspect, 0, 0));
+    fputs("\n  up ", fp);
+    put_vec(fp, vec_make(0, ortho ? c->width / aspect : 1.0, 0));
+    fputs("\n  sky ", fp);
+    put_vec(fp, to_pov(c->up));
+    if (!ortho) {
+        fputs("\n  angle ", fp);
+        put_num(fp, c->fov);
+    }
+    fputs("\n  look_at ", fp);
+    put_vec(fp, to_pov(c->look_at));
+    fputs("\n}\n\n", fp);
+}
+
+static void write_fade(FILE *fp, const fade *f)
+{
+    if (f->distance <= 0)
+        return;
+    fputs(" fade_distance ", fp);
+    put_num(fp, f->distance);
+    fputs(" fade_power ", fp);
+    put_num(fp, f->power);
+}
+
+static void write_point_source(FILE *fp, vec3 pos, rgb power, const fade *f)
+{
+    fputs("light_source { ", fp);
+    put_vec(fp, to_pov(pos));
+    fputs(" color rgb ", fp);
+    put_vec(fp, vec_scale(power, f->colour));
+    write_fade(fp, f);
+    fputs(" }\n", fp);
+}
+
+/* [XCHK-MAP-DISTANT-1] A parallel light: POV-Ray shades with the fixed
+ * direction and tests shadows up to the plane through its location, which
+ * is put far behind everything (1000 scene radii) so no occluder is cut. */
+static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre, double radius)
+{
+    vec3 from = vec_sub(centre, vec_scale(l->direction, 1000.0 * radius));
+    fputs("light_source { ", fp);
+    put_vec(fp, to_pov(from));
+    fputs(" color rgb ", fp);
+    put_vec(fp, vec_scale(l->power, scale));
+    fputs(" parallel point_at ", fp);
+    put_vec(fp, to_pov(vec_add(from, l->direction)));
+    fputs(" }\n", fp);
+}
+
+/* [XCHK-MAP-AREA-1] Default: the light's samples as point sources of
+ * E/samples at the centres of its cells, where refray puts them before
+ * jitter (lightsample.h). */
+static void write_distributed_points(FILE *fp, const rf_light *l, const fade *f)
+{
+    light_grid g = light_grid_for(l->samples);
+    vec3 t1 = vec_splat(0), t2 = vec_splat(0);
+    rgb power = vec_scale(l->power, 1.0 / l->samples);
+    if (l->kind == LIGHT_DISK)
+        light_frame(l->normal, &t1, &t2);
+    for (int j = 0; j < l->samples; j++) {
+        double a, b;
+        light_cell_point(g, j, 0.5, 0.5, &a, &b);
+        write_point_source(fp, light_point(l, t1, t2, a, b), power, f);
+    }
+}
+
+static int ceil_log2(int n)
+{
+    int k = 0;
+    while ((1 << k) < n)
+        k++;
+    return k;
+}
+
+/* With --area-lights: POV-Ray's grid runs from edge to edge of its axes,
+ * so the axes are shrunk by (n - 1)/n to put the points at the cells'
+ * centres; area_illumination shades each point (not only the centre);
+ * adaptive as deep as the grid so every point's visibility is traced. */
+static void write_area(FILE *fp, const rf_light *l, const fade *f)
+{
+    light_grid g = light_grid_for(l->samples);
+    vec3 u = l->edge_u, v = l->edge_v, centre = l->position;
+    if (l->kind == LIGHT_DISK) {
+        light_frame(l->normal, &u, &v);
+        u = vec_scale(u, 2 * l->radius);
+        v = vec_scale(v, 2 * l->radius);
+    } else {
+        centre = vec_add(centre, vec_scale(vec_add(u, v), 0.5));
+    }
+    vec3 a1 = g.cols > 1 ? vec_scale(u, (g.cols - 1.0) / g.cols) : u;
+    vec3 a2 = g.rows > 1 ? vec_scale(v, (g.rows - 1.0) / g.rows) : v;
+    fputs("light_source { ", fp);
+    put_vec(fp, to_pov(centre));
+    fputs(" color rgb ", fp);
+    put_vec(fp, vec_scale(l->power, f->colour));
+    fputs("\n  area_light ", fp);
+    put_vec(fp, to_pov(a1));
+    fputs(", ", fp);
+    put_vec(fp, to_pov(a2));
+    fprintf(fp, ", %d, %d adaptive %d area_illumination on%s", g.cols, g.rows,
+            ceil_log2(g.cols > g.rows ? g.cols : g.rows) + 1, l->kind == LIGHT_DISK ? " circular" : "");
+    write_fade(fp, f);
+    fputs(" }\n", fp);
+}
+
+static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 centre, double radius)
+{
+    double scale = o->scale > 0 ? o->scale : 1.0;
+    for (int i = 0; i < s->light_count; i++) {
+        const rf_light *l = &s->lights[i];
+        fade f;
+        light_fade(l, radius, &f);
+        f.colour *= scale;
+        fprintf(fp, "// %s %d\n", light_word(l->kind), i + 1);
+        if (l->kind == LIGHT_POINT)
+            write_point_source(fp, l->position, l->power, &f);
+        else if (l->kind == LIGHT_DISTANT)
+            write_distant(fp, l, scale, centre, radius);
+        else if (o->area_lights)
+            write_area(fp, l, &f);
+        else
+            write_distributed_points(fp, l, &f);
+    }
+    fputs("\n", fp);
+}
+
+/* [XCHK-MAP-FINISH-1] pigment Kd with transmit t (opacity 1 - t scales
+ * ambient and diffuse; t weights the transmitted ray and the shadows);
+ * ambient 1 and diffuse 1 in place of POV-Ray's 0.1 and 0.6, so that the
+ * terms are Kd Ia and Kd E cos; phong and reflection from Ks. */
+static void write_texture(FILE *fp, int index, const rf_material *m)
+{
+    double phong = is_grey(m->ks) ? m->ks.x : (m->ks.x + m->ks.y + m->ks.z) / 3;
+    fprintf(fp, "#declare RF_T%d = texture {  // %s\n  pigment { rgbt <", index, m->name ? m->name : "inline");
+    put_num(fp, m->kd.x);
+    fputs(", ", fp);
+    put_num(fp, m->kd.y);
+    fputs(", ", fp);
+    put_num(fp, m->kd.z);
+    fputs(", ", fp);
+    put_num(fp, m->t);
+    fputs("> }\n  finish { ambient 1 diffuse 1", fp);
+    if (phong > 0) {
+        fputs(" phong ", fp);
+        put_num(fp, phong);
+        fputs(" phong_size ", fp);
+        put_num(fp, m->n);
+        fputs(" reflection { rgb ", fp);
+        put_vec(fp, m->ks);
+        fputs(" }", fp);
+    }
+    fputs(" }\n}\n", fp);
+}
+
+/* [XCHK-MAP-SHADOW-1] Only solids get an ior: a sheet (plane, disk, lone
+ * triangle) passes rays straight on, as POV-Ray does with ior 1 (a POV-Ray
+ * plane is a half-space and would bend them).  A clear surface (t = 1)
+ * lets all light through, which no_shadow says without tracing it. */
+static void write_material_ref(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+{
+    const rf_material *m = &s->materials[p->material];
+    fprintf(fp, "  texture { RF_T%d }\n", p->material);
+    if (is_solid(p) && m->t > 0 && m->ior != 1) {
+        fputs("  interior { ior ", fp);
+        put_num(fp, m->ior);
+        fputs(" }\n", fp);
+    } else if (passes_straight(s, p) && !o->plain_sheets) {
+        fputs("  interior { ior ", fp);
+        put_num(fp, 1.0 + (1 + (*nudged)++ % POV_NUDGE_CYCLE) * POV_NUDGE);
+        fputs(" }  // not 1: see [XCHK-MAP-LEVEL-1]\n", fp);
+    }
+    if (m->t >= 1)
+        fputs("  no_shadow\n", fp);
+}
+
+/* POV-Ray's matrix <a00, ..., a32> maps x' = a00 x + a10 y + a20 z + a30:
+ * the transpose of refray's row-major linear part, then the translation.
+ * In POV-Ray's frame the transform is F M F with F = diag(1, 1, -1). */
+static void write_matrix(FILE *fp, const xform *x)
+{
+    static const double f[3] = {1, 1, -1};
+    fputs("  matrix <", fp);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 3; j++) {
+            double a = i < 3 ? f[j] * x->m[j][i] * f[i] : f[j] * x->m[j][3];
+            put_num(fp, a);
+            if (i < 3 || j < 2)
+                fputs(", ", fp);
+        }
+    fputs(">\n", fp);
+}
+
+static void write_shape(FILE *fp, const rf_prim *p)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        fputs("sphere {\n  ", fp);
+        put_vec(fp, to_pov(p->u.sphere.center));
+        fputs(", ", fp);
+        put_num(fp, p->u.sphere.radius);
+        break;
+    case PRIM_PLANE:
+        fputs("plane {\n  ", fp);
+        put_vec(fp, to_pov(p->u.plane.normal));
+        fputs(", ", fp);
+        put_num(fp, vec_dot(p->u.plane.normal, p->u.plane.point));
+        break;
+    case PRIM_DISK:
+        fputs("disc {\n  ", fp);
+        put_vec(fp, to_pov(p->u.disk.center));
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.disk.normal));
+        fputs(", ", fp);
+        put_num(fp, p->u.disk.radius);
+        break;
+    case PRIM_BOX:
+        /* z negated swaps which corner is low; POV-Ray takes either order. */
+        fputs("box {\n  ", fp);
+        put_vec(fp, to_pov(p->u.box.lo));
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.box.hi));
+        break;
+    case PRIM_TRIANGLE:
+        fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);
+        for (int i = 0; i < 3; i++) {
+            put_vec(fp, to_pov(p->u.triangle.p[i]));
+            if (p->u.triangle.has_normals) {
+                fputs(", ", fp);
+                put_vec(fp, to_pov(p->u.triangle.n[i]));
+            }
+            fputs(i < 2 ? ", " : "", fp);
+        }
+        break;
+    }
+    fputc('\n', fp);
+}
+
+static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+{
+    write_shape(fp, p);
+    write_material_ref(fp, s, o, p, nudged);
+    if (p->has_xform)
+        write_matrix(fp, &p->to_world);
+    fputs("}\n", fp);
+}
+
+/* A triangle's vertex normals, or its geometric normal at all three
+ * corners when it has none (a flat face of a smooth mesh). */
+static void triangle_normals(const rf_prim *p, vec3 n[3])
+{
+    vec3 g = vec_normalize(vec_cross(vec_sub(p->u.triangle.p[1], p->u.triangle.p[0]),
+                                     vec_sub(p->u.triangle.p[2], p->u.triangle.p[0])));
+    for (int i = 0; i < 3; i++)
+        n[i] = p->u.triangle.has_normals ? p->u.triangle.n[i] : g;
+}
+
+/* [XCHK-MAP-MESH-1] A mesh as mesh2, three vertices per triangle (no
+ * sharing: the corners are written as refray holds them), with its vertex
+ * normals if any triangle has them, and an inside_vector so that POV-Ray
+ * treats it as a solid for refraction, as refray does. */
+static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_mesh *m, int *nudged)
+{
+    const rf_prim *tri = &s->prims[m->first_prim];
+    int smooth = 0;
+    for (int i = 0; i < m->count; i++)
+        smooth |= tri[i].u.triangle.has_normals;
+    fprintf(fp, "mesh2 {\n  vertex_vectors { %d", 3 * m->count);
+    for (int i = 0; i < 3 * m->count; i++) {
+        fputs(",\n    ", fp);
+        put_vec(fp, to_pov(tri[i / 3].u.triangle.p[i % 3]));
+    }
+    fputs(" }\n", fp);
+    if (smooth) {
+        fprintf(fp, "  normal_vectors { %d", 3 * m->count);
+        for (int i = 0; i < m->count; i++) {
+            vec3 n[3];
+            triangle_normals(&tri[i], n);
+            for (int j = 0; j < 3; j++) {
+                fputs(",\n    ", fp);
+                put_vec(fp, to_pov(n[j]));
+            }
+        }
+        fputs(" }\n", fp);
+    }
+    fprintf(fp, "  face_indices { %d", m->count);
+    for (int i = 0; i < m->count; i++)
+        fprintf(fp, ",\n    <%d, %d, %d>", 3 * i, 3 * i + 1, 3 * i + 2);
+    fputs(" }\n  inside_vector <0, 0, 1>\n", fp);
+    write_material_ref(fp, s, o, tri, nudged);
+    fputs("}\n", fp);
+}
+
+static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
+{
+    int nudged = 0;
+    for (int i = 0; i < s->material_count; i++)
+        write_texture(fp, i, &s->materials[i]);
+    fputc('\n', fp);
+    for (int i = 0; i < s->prim_count; i++) {
+        const rf_prim *p = &s->prims[i];
+        if (p->kind == PRIM_TRIANGLE && p->mesh >= 0) {
+            if (s->meshes[p->mesh].first_prim == i)
+                write_mesh(fp, s, o, &s->meshes[p->mesh], &nudged);
+            continue;
+        }
+        write_prim(fp, s, o, p, &nudged);
+    }
+}
+
+int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *notes)
+{
+    vec3 centre;
+    double radius = scene_radius(s, &centre);
+    if (!pov_export_check(s, o, notes))
+        return REFRAY_EXIT_DATAERR;
+    write_header(fp, s, o, notes);
+    write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
+    write_camera(fp, s);
+    write_lights(fp, s, o, centre, radius);
+    write_geometry(fp, s, o);
+    return fflush(fp) != 0 || ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+}
+
+/* ---- The atomic file ---- */
+
+/* mkstemp makes 0600; give the file the mode a plain fopen would have:
+ * an existing file's, else 0666 less the umask (read from /proc, since
+ * asking umask(2) means changing it for the whole process). */
+static void set_mode(int fd, const char *path)
+{
+    struct stat sb;
+    unsigned mask = 022;
+    char line[128];
+    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        fchmod(fd, sb.st_mode & 07777);
+        return;
+    }
+    FILE *f = fopen("/proc/self/status", "r");
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "Umask: %o", &mask) == 1)
+            break;
+    if (f)
+        fclose(f);
+    fchmod(fd, (mode_t)(0666 & ~mask));
+}
+
+/* Writes into the open temporary fd and closes it; 0 or the exit code. */
+static int fill_temp(int fd, const char *path, const rf_scene *s, const pov_opts *o, pov_notes *notes)
+{
+    set_mode(fd, path);
+    FILE *fp = fdopen(fd, "w");
+    if (!fp) {
+        close(fd);
+        return REFRAY_EXIT_IOERR;
+    }
+    int rc = pov_export_write(s, o, fp, notes);
+    if (rc == 0 && fsync(fileno(fp)) != 0)
+        rc = REFRAY_EXIT_IOERR;
+    if (fclose(fp) != 0 && rc == 0)
+        rc = REFRAY_EXIT_IOERR;
+    return rc;
+}
+
+int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
+                    size_t errlen)
+{
+    static const char suffix[] = ".tmp.XXXXXX";
+    struct stat sb;
+    if (err && errlen)
+        err[0] = '\0';
+    if (!pov_export_check(s, o, notes))
+        return REFRAY_EXIT_DATAERR;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        snprintf(err, errlen, "cannot write '%s': it exists and is not a regular file", path);
+        return REFRAY_EXIT_IOERR;
+    }
+    size_t n = strlen(path) + sizeof suffix;
+    char *tmp = malloc(n);
+    if (!tmp) {
+        snprintf(err, errlen, "out of memory");
+        return REFRAY_EXIT_SOFTWARE;
+    }
+    snprintf(tmp, n, "%s%s", path, suffix);
+    int fd = mkstemp(tmp), rc = REFRAY_EXIT_IOERR;
+    if (fd < 0)
+        snprintf(err, errlen, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
+    else if ((rc = fill_temp(fd, path, s, o, notes)) != 0)
+        snprintf(err, errlen, "cannot write '%s': write error: %s", path, strerror(errno));
+    else if (rename(tmp, path) != 0) {
+        snprintf(err, errlen, "cannot write '%s': cannot rename the temporary file into place: %s", path,
+                 strerror(errno));
+        rc = REFRAY_EXIT_IOERR;
+    }
+    if (fd >= 0 && rc != 0)
+        unlink(tmp);
+    free(tmp);
+    return rc;
+}

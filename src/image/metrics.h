@@ -1,0 +1,35 @@
+/*
+ * metrics.h - how far one image is from another (verify, compare).
+ *
+ * For a test image A against a reference B, over the pixels not excluded:
+ *   max abs   max over channels |A - B|
+ *   rms       sqrt(mean over channels (A - B)^2)
+ *   max rel   max over channels |A - B| / |B|, over channels with |B| > floor
+ *   psnr      20 log10(peak / rms), peak = the largest value of B (1 if B <= 1
+ *             everywhere is not assumed: HDR references have peaks above 1)
+ *   over      pixels where some channel has |A - B| > tol * max(|B|, floor)
+ * floor = 1e-12 * peak keeps near-black channels from dividing by zero.
+ */
+#ifndef REFRAY_METRICS_H
+#define REFRAY_METRICS_H
+
+#include "image/image.h"
+
+typedef struct image_metrics {
+    double max_abs;
+    double rms;
+    double max_rel;
+    double psnr;           /* +inf when the images are equal */
+    double peak;           /* largest reference value */
+    long over;             /* pixels over the tolerance */
+    long compared;         /* pixels compared */
+    long excluded;         /* pixels skipped by the mask */
+    int worst_x, worst_y;  /* pixel of max_abs */
+} image_metrics;
+
+/* a and b must have the same size.  excluded: width*height bytes, non-zero
+ * to skip a pixel, or NULL.  tol: the relative tolerance for `over`. */
+void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+                     image_metrics *m);
+
+#endif

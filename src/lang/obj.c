@@ -1,0 +1,586 @@
+/*
+ * obj.c - the Wavefront OBJ reader (see obj.h for the accepted language).
+ *
+ * The input may be hostile: any bytes, any length.  Invariants:
+ * - Every read of text is at an offset < len, checked right there; the
+ *   NUL-terminator is never relied on, and NUL bytes inside are refused
+ *   before anything else, so no byte of a token can be NUL.
+ * - Tokens are spans into the text, so every message points at the exact
+ *   bytes; numbers are parsed from a bounded copy of their token.
+ * - Arrays grow by doubling with their limit and size_t overflow checked
+ *   first; triangles never get room beyond max_triangles.
+ * - One error per statement: after it the rest of the logical line is
+ *   skipped and parsing goes on with the next, so one run reports many
+ *   independent mistakes (up to the diag's limit).
+ */
+#include <assert.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "lang/obj.h"
+
+enum {
+    NUMBER_MAX = 255,  /* longest number token accepted */
+    SHOWN_MAX = 40,    /* bytes of a token quoted in a message */
+    WARNED_MAX = 8     /* distinct unknown statements warned about */
+};
+
+/* Indices saturate here while being read: far beyond any count (<= INT_MAX),
+ * so a saturated index is out of range whatever the count. */
+#define INDEX_SATURATED (1LL << 40)
+
+typedef struct corner {
+    int v;             /* 0-based position index */
+    int vn;            /* 0-based normal index, -1: none */
+} corner;
+
+typedef struct shown {
+    char s[SHOWN_MAX + 4];
+} shown;
+
+typedef struct parser {
+    const char *text;
+    size_t len;
+    size_t pos;                  /* next byte to read */
+    int file;                    /* for spans */
+    diag *d;
+    obj_mesh *mesh;
+    long max_triangles;          /* clamped to [0, INT_MAX] */
+    int position_cap, normal_cap, triangle_cap;
+    int texcoord_count;          /* vt statements seen: t indices are checked against it */
+    corner *corners;             /* the face being read */
+    int corner_cap;
+    src_span warned[WARNED_MAX]; /* keywords of the unknown statements warned about */
+    int warned_count;
+    int stop;                    /* a limit was hit or memory ran out: give up */
+} parser;
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+
+static int is_eol(char c)
+{
+    return c == '\n' || c == '\r';
+}
+
+/* Length of the line terminator at i: 2 for CRLF, 1 for LF or a lone CR, else 0. */
+static size_t eol_length(const parser *p, size_t i)
+{
+    if (i >= p->len || !is_eol(p->text[i]))
+        return 0;
+    return p->text[i] == '\r' && i + 1 < p->len && p->text[i + 1] == '\n' ? 2 : 1;
+}
+
+/* A continuation is a backslash followed by nothing but blanks up to a line
+ * terminator (or the end of the text).  Returns the offset just past it, or 0
+ * when i holds no continuation (0 cannot be past anything). */
+static size_t continuation_end(const parser *p, size_t i)
+{
+    if (i >= p->len || p->text[i] != '\\')
+        return 0;
+    size_t j = i + 1;
+    while (j < p->len && is_blank(p->text[j]))
+        j++;
+    if (j == p->len)
+        return j;
+    size_t n = eol_length(p, j);
+    return n ? j + n : 0;
+}
+
+/* Skips blanks and continuations, which together separate tokens. */
+static void skip_blank(parser *p)
+{
+    for (;;) {
+        size_t next;
+        if (p->pos < p->len && is_blank(p->text[p->pos]))
+            p->pos++;
+        else if ((next = continuation_end(p, p->pos)) != 0)
+            p->pos = next;
+        else
+            return;
+    }
+}
+
+/* The end of a logical line: end of text, a line terminator, or a comment. */
+static int at_line_end(const parser *p)
+{
+    return p->pos >= p->len || is_eol(p->text[p->pos]) || p->text[p->pos] == '#';
+}
+
+static int is_token_byte(const parser *p, size_t i)
+{
+    char c = p->text[i];
+    return !is_blank(c) && !is_eol(c) && c != '#' && !continuation_end(p, i);
+}
+
+/* Reads the next token of the logical line into *tok; returns 0 at its end. */
+static int next_token(parser *p, src_span *tok)
+{
+    skip_blank(p);
+    if (at_line_end(p))
+        return 0;
+    tok->file = p->file;
+    tok->begin = p->pos;
+    while (p->pos < p->len && is_token_byte(p, p->pos))
+        p->pos++;
+    tok->end = p->pos;
+    return 1;
+}
+
+/* Moves past the rest of the logical line: tokens, a comment, the terminator. */
+static void skip_line(parser *p)
+{
+    src_span tok;
+    while (next_token(p, &tok))
+        continue;
+    while (p->pos < p->len && !is_eol(p->text[p->pos]))
+        p->pos++;
+    p->pos += eol_length(p, p->pos);
+}
+
+static int token_is(const parser *p, src_span tok, const char *word)
+{
+    size_t n = strlen(word);
+    return tok.end - tok.begin == n && memcmp(p->text + tok.begin, word, n) == 0;
+}
+
+/* A token fit for quoting in a message: at most SHOWN_MAX bytes, control
+ * bytes as '?', and "..." when cut.  Returned by value into a caller's
+ * variable (a function result must not be read after the call in C99). */
+static shown show(const parser *p, src_span tok)
+{
+    shown out;
+    size_t n = tok.end - tok.begin, k = 0;
+    for (; k < n && k < SHOWN_MAX; k++) {
+        unsigned char c = (unsigned char)p->text[tok.begin + k];
+        out.s[k] = c < 0x20 || c == 0x7f ? '?' : (char)c;
+    }
+    if (k < n) {
+        memcpy(out.s + k, "...", 3);
+        k += 3;
+    }
+    out.s[k] = '\0';
+    return out;
+}
+
+static src_span span_at(const parser *p, size_t offset)
+{
+    src_span s;
+    s.file = p->file;
+    s.begin = s.end = offset;
+    return s;
+}
+
+static int is_number_byte(char c)
+{
+    return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
+}
+
+/* Parses tok as a finite decimal number into *out; reports and returns 0 if
+ * it is not one.  Only digits, signs, '.' and exponent letters pass the first
+ * check, which keeps strtod's "inf", "nan" and hexadecimal forms (no OBJ
+ * writer emits them) out; strtod must then consume the whole token. */
+static int read_number(parser *p, src_span tok, double *out)
+{
+    size_t n = tok.end - tok.begin;
+    const char *s = p->text + tok.begin;
+    shown q = show(p, tok);
+    if (n > NUMBER_MAX) {
+        diag_report(p->d, DIAG_ERROR, tok, "number '%s' is too long (more than %d characters)",
+                    q.s, NUMBER_MAX);
+        return 0;
+    }
+    char buf[NUMBER_MAX + 1], *end = buf;
+    size_t i = 0;
+    while (i < n && is_number_byte(s[i]))
+        i++;
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+    double v = i == n ? strtod(buf, &end) : 0.0;
+    if (i < n || end != buf + n) {
+        diag_report(p->d, DIAG_ERROR, tok, "malformed number '%s'", q.s);
+        return 0;
+    }
+    if (!isfinite(v)) {
+        diag_report(p->d, DIAG_ERROR, tok, "number '%s' is not finite", q.s);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+/* index: '-'? digit+.  Saturates at INDEX_SATURATED instead of overflowing. */
+static int read_index(parser *p, src_span tok, long long *out)
+{
+    size_t i = tok.begin;
+    int negative = i < tok.end && p->text[i] == '-';
+    long long k = 0;
+    i += (size_t)negative;
+    if (i == tok.end)
+        k = -1;
+    for (; i < tok.end && k >= 0; i++) {
+        char c = p->text[i];
+        if (c < '0' || c > '9')
+            k = -1;
+        else if (k < INDEX_SATURATED)
+            k = k * 10 + (c - '0');
+    }
+    if (k < 0) {
+        shown q = show(p, tok);
+        diag_report(p->d, DIAG_ERROR, tok, "malformed index '%s'", q.s);
+        return 0;
+    }
+    *out = negative ? -k : k;
+    return 1;
+}
+
+/* Resolves the OBJ index in tok against the `count` items (named `what`)
+ * defined so far: k >= 1 is the k-th, -k the k-th counted back from the
+ * last.  Stores the 0-based index; reports and returns 0 when the index is 0
+ * or names an item that does not exist yet (forward references, which the
+ * format allows in theory but no writer uses, are refused). */
+static int resolve_index(parser *p, src_span tok, int count, const char *what, int *out)
+{
+    long long k;
+    if (!read_index(p, tok, &k))
+        return 0;
+    shown q = show(p, tok);
+    if (k == 0) {
+        diag_report(p->d, DIAG_ERROR, tok,
+                    "index 0 is invalid: OBJ indices start at 1 (or count back from -1)");
+        return 0;
+    }
+    if (k > count) {
+        diag_report(p->d, DIAG_ERROR, tok, "index %s refers to a %s not yet defined (%d so far)",
+                    q.s, what, count);
+        return 0;
+    }
+    if (k < -(long long)count) {
+        diag_report(p->d, DIAG_ERROR, tok, "index %s reaches before the first %s (%d so far)",
+                    q.s, what, count);
+        return 0;
+    }
+    *out = k > 0 ? (int)(k - 1) : (int)(count + k);
+    return 1;
+}
+
+/* Returns array grown to hold at least `need` elements of `size` bytes (its
+ * capacity *cap doubling, capped at limit), or NULL when need exceeds limit,
+ * the byte count would overflow, or realloc fails; array stays valid then. */
+static void *grow(void *array, int *cap, long need, size_t size, long limit)
+{
+    if (need <= *cap)
+        return array;
+    if (need > limit)
+        return NULL;
+    long n = *cap > 0 ? *cap : 16;
+    while (n < need)
+        n = n > limit / 2 ? limit : 2 * n;
+    if ((size_t)n > SIZE_MAX / size)
+        return NULL;
+    void *grown = realloc(array, (size_t)n * size);
+    if (grown)
+        *cap = (int)n;
+    return grown;
+}
+
+static void out_of_memory(parser *p, src_span where)
+{
+    diag_report(p->d, DIAG_ERROR, where, "out of memory reading OBJ file");
+    p->stop = 1;
+}
+
+/* Appends v to *array (count *count, capacity *cap); reports and returns 0
+ * when the count would pass INT_MAX or memory runs out. */
+static int append_vec(parser *p, vec3 **array, int *count, int *cap, vec3 v, src_span where)
+{
+    if (*count == INT_MAX) {
+        diag_report(p->d, DIAG_ERROR, where, "too many vertices in OBJ file (limit %d)", INT_MAX);
+        p->stop = 1;
+        return 0;
+    }
+    vec3 *a = grow(*array, cap, (long)*count + 1, sizeof *a, INT_MAX);
+    if (!a) {
+        out_of_memory(p, where);
+        return 0;
+    }
+    *array = a;
+    a[(*count)++] = v;
+    return 1;
+}
+
+/* Reads x y z into *v.  When tokens run out, reports at the end of the last
+ * one read ("'v' needs 3 coordinates, got 2"). */
+static int read_coords(parser *p, src_span kw, vec3 *v)
+{
+    double c[3];
+    src_span tok = kw;
+    for (int i = 0; i < 3; i++) {
+        size_t last_end = tok.end;
+        if (!next_token(p, &tok)) {
+            shown q = show(p, kw);
+            diag_report(p->d, DIAG_ERROR, span_at(p, last_end), "'%s' needs 3 coordinates, got %d",
+                        q.s, i);
+            return 0;
+        }
+        if (!read_number(p, tok, &c[i]))
+            return 0;
+    }
+    *v = vec_make(c[0], c[1], c[2]);
+    return 1;
+}
+
+/* v x y z [w]: w, and the r g b colours some writers append, are dropped
+ * once known to be numbers. */
+static void parse_vertex(parser *p, src_span kw)
+{
+    vec3 v;
+    src_span tok;
+    double ignored;
+    if (!read_coords(p, kw, &v))
+        return;
+    while (next_token(p, &tok))
+        if (!read_number(p, tok, &ignored))
+            return;
+    append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->position_cap, v, kw);
+}
+
+/* vn x y z */
+static void parse_normal(parser *p, src_span kw)
+{
+    vec3 n;
+    src_span tok;
+    if (!read_coords(p, kw, &n))
+        return;
+    if (next_token(p, &tok)) {
+        shown q = show(p, tok);
+        diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
+        return;
+    }
+    append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->normal_cap, n, kw);
+}
+
+/* Splits tok at '/' into field[0..2]; returns the number of fields, or 4
+ * when there are more than three. */
+static int split_fields(const parser *p, src_span tok, src_span field[3])
+{
+    int n = 0;
+    field[0] = tok;
+    for (size_t i = tok.begin; i < tok.end; i++) {
+        if (p->text[i] != '/')
+            continue;
+        if (n == 2)
+            return 4;
+        field[n].end = i;
+        field[++n] = tok;
+        field[n].begin = i + 1;
+    }
+    return n + 1;
+}
+
+static int is_empty(src_span s)
+{
+    return s.begin == s.end;
+}
+
+/* corner: i | i/t | i//n | i/t/n.  Resolves the position and normal indices
+ * into *c and range-checks the texture one. */
+static int parse_corner(parser *p, src_span tok, corner *c, int *has_normal)
+{
+    src_span field[3];
+    int n = split_fields(p, tok, field), ignored;
+    int well_formed = n <= 3 && !is_empty(field[0]) && (n != 2 || !is_empty(field[1]))
+                      && (n != 3 || !is_empty(field[2]));
+    if (!well_formed) {
+        shown q = show(p, tok);
+        diag_report(p->d, DIAG_ERROR, tok,
+                    "malformed face vertex '%s' (expected i, i/t, i//n or i/t/n)", q.s);
+        return 0;
+    }
+    if (!resolve_index(p, field[0], p->mesh->position_count, "vertex", &c->v))
+        return 0;
+    if (n >= 2 && !is_empty(field[1])
+        && !resolve_index(p, field[1], p->texcoord_count, "texture coordinate", &ignored))
+        return 0;
+    c->vn = -1;
+    *has_normal = n == 3;
+    return n < 3 || resolve_index(p, field[2], p->mesh->normal_count, "normal", &c->vn);
+}
+
+/* Cuts the n corners read into the fan (c0, ck, ck+1), refusing it when the
+ * mesh would pass max_triangles (checked before any room is made). */
+static void emit_fan(parser *p, int n, src_span where)
+{
+    obj_mesh *m = p->mesh;
+    long add = n - 2;
+    if (add > p->max_triangles - m->triangle_count) {
+        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
+                    p->max_triangles);
+        p->stop = 1;
+        return;
+    }
+    obj_triangle *t = grow(m->triangles, &p->triangle_cap, m->triangle_count + add, sizeof *t,
+                           p->max_triangles);
+    if (!t) {
+        out_of_memory(p, where);
+        return;
+    }
+    m->triangles = t;
+    for (int k = 1; k + 1 < n; k++) {
+        const corner *c[3] = {&p->corners[0], &p->corners[k], &p->corners[k + 1]};
+        obj_triangle *tri = &t[m->triangle_count++];
+        for (int i = 0; i < 3; i++) {
+            tri->v[i] = c[i]->v;
+            tri->vn[i] = c[i]->vn;
+        }
+        tri->where = where;
+    }
+}
+
+/* Reads one corner token as the face's n-th; 0 after reporting a problem. */
+static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
+{
+    corner c;
+    int has_normal;
+    if (!parse_corner(p, tok, &c, &has_normal))
+        return 0;
+    if (n == 0)
+        *first_has_normal = has_normal;
+    if (has_normal != *first_has_normal) {
+        shown q = show(p, tok);
+        diag_report(p->d, DIAG_ERROR, tok,
+                    "face vertex '%s' %s a normal index but the face's first vertex %s", q.s,
+                    has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
+        return 0;
+    }
+    corner *all = grow(p->corners, &p->corner_cap, (long)n + 1, sizeof *all, INT_MAX);
+    if (!all) {
+        out_of_memory(p, tok);
+        return 0;
+    }
+    p->corners = all;
+    all[n] = c;
+    return 1;
+}
+
+/* f corner corner corner ... */
+static void parse_face(parser *p, src_span kw)
+{
+    src_span tok, where = kw;
+    int n = 0, first_has_normal = 0;
+    while (next_token(p, &tok)) {
+        if (n == INT_MAX || !add_corner(p, tok, n, &first_has_normal))
+            return;
+        n++;
+        where.end = tok.end;
+    }
+    if (n < 3) {
+        diag_report(p->d, DIAG_ERROR, where, "face has %d vertices, needs at least 3", n);
+        return;
+    }
+    emit_fan(p, n, where);
+}
+
+/* Warns once per kind of unknown statement, for the first WARNED_MAX kinds;
+ * the last of those says that later ones go unreported, so a garbage file
+ * cannot flood the output with warnings. */
+static void warn_unknown(parser *p, src_span kw)
+{
+    size_t n = kw.end - kw.begin;
+    for (int i = 0; i < p->warned_count; i++) {
+        src_span w = p->warned[i];
+        if (w.end - w.begin == n && memcmp(p->text + w.begin, p->text + kw.begin, n) == 0)
+            return;
+    }
+    if (p->warned_count == WARNED_MAX)
+        return;
+    p->warned[p->warned_count++] = kw;
+    shown q = show(p, kw);
+    diag_report(p->d, DIAG_WARNING, kw, "unknown OBJ statement '%s' ignored%s", q.s,
+                p->warned_count == WARNED_MAX ? " (further unknown statements are not reported)"
+                                              : "");
+}
+
+/* Statements common in OBJ files that carry nothing a mesh of positions and
+ * normals needs: ignored without a word. */
+static const char *const quiet_keywords[] = {"o", "g", "s", "usemtl", "mtllib"};
+
+static void parse_statement(parser *p, src_span kw)
+{
+    if (token_is(p, kw, "v"))
+        parse_vertex(p, kw);
+    else if (token_is(p, kw, "vn"))
+        parse_normal(p, kw);
+    else if (token_is(p, kw, "f"))
+        parse_face(p, kw);
+    else if (token_is(p, kw, "vt"))
+        p->texcoord_count += p->texcoord_count < INT_MAX;
+    else {
+        for (size_t i = 0; i < sizeof quiet_keywords / sizeof quiet_keywords[0]; i++)
+            if (token_is(p, kw, quiet_keywords[i]))
+                return;
+        warn_unknown(p, kw);
+    }
+}
+
+/* Refuses a NUL byte anywhere: it has no place in a text format and would
+ * cut C strings short. */
+static int check_no_nul(parser *p)
+{
+    const char *nul = memchr(p->text, '\0', p->len);
+    if (!nul)
+        return 1;
+    src_span s = span_at(p, (size_t)(nul - p->text));
+    s.end++;
+    diag_report(p->d, DIAG_ERROR, s, "NUL byte in OBJ file");
+    return 0;
+}
+
+static void parse_file(parser *p)
+{
+    if (p->len >= 3 && memcmp(p->text, "\xEF\xBB\xBF", 3) == 0)
+        p->pos = 3;
+    while (p->pos < p->len && !p->stop && !diag_too_many(p->d)) {
+        src_span kw;
+        if (next_token(p, &kw))
+            parse_statement(p, kw);
+        skip_line(p);
+    }
+}
+
+int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, obj_mesh *out)
+{
+    assert(sources && file >= 0 && file < sources->count);
+    const source_file *f = sources->files[file];
+    int errors_before = d->errors;
+    parser p;
+    memset(&p, 0, sizeof p);
+    memset(out, 0, sizeof *out);
+    p.text = f->text;
+    p.len = f->len;
+    p.file = file;
+    p.d = d;
+    p.mesh = out;
+    p.max_triangles = max_triangles < 0 ? 0 : max_triangles > INT_MAX ? INT_MAX : max_triangles;
+    if (check_no_nul(&p))
+        parse_file(&p);
+    if (d->errors == errors_before && out->triangle_count == 0)
+        diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
+    free(p.corners);
+    if (d->errors == errors_before)
+        return 1;
+    obj_free(out);
+    return 0;
+}
+
+void obj_free(obj_mesh *mesh)
+{
+    free(mesh->positions);
+    free(mesh->normals);
+    free(mesh->triangles);
+    memset(mesh, 0, sizeof *mesh);
+}

@@ -1,0 +1,615 @@
+/*
+ * intersect.c - ray/primitive intersection.
+ *
+ * Each shape has one routine `SHAPE_hits(..., const ray *r, hit *out, int max)`
+ * that writes up to max accepted hits (t in (tmin, tmax)) in increasing t
+ * and returns how many.  The nearest-hit entry points call it with max 1,
+ * the all-crossings one with max 2, so both always agree on every t.
+ * Nothing here allocates or keeps state.
+ */
+#include <float.h>
+#include "render/intersect.h"
+#include "base/xform.h"
+
+static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
+{
+    h->t = t;
+    h->point = p;
+    h->normal = n;
+    h->shading_normal = n;
+    h->prim = -1;
+    h->entering = vec_dot(dir, n) < 0.0;
+}
+
+static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
+
+static vec3 vec_with(vec3 v, int axis, real value)
+{
+    if (axis == 0)
+        v.x = value;
+    else if (axis == 1)
+        v.y = value;
+    else
+        v.z = value;
+    return v;
+}
+
+/* Plain comparisons rather than fmax: these run per ray and fmax is a
+ * library call on x86-64; the inputs are never NaN. */
+static real max_abs(vec3 v)
+{
+    real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
+    real m = x > y ? x : y;
+    return m > z ? m : z;
+}
+
+/* |v|: sqrt of the dot product when that neither overflowed nor lost
+ * precision to underflow, else vec_length's scaled form. */
+static real length_fast(vec3 v)
+{
+    real d = vec_dot(v, v);
+    return d >= REAL_MIN && d <= REAL_MAX ? sqrt(d) : vec_length(v);
+}
+
+/*
+ * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
+ * a = d.d, b = f.d, c = f.f - R^2.  Following Haines, Guenther and
+ * Akenine-Moller, "Precision Improvements for Ray/Sphere Intersection"
+ * (Ray Tracing Gems I, ch. 7):
+ *   - the quarter discriminant b^2 - a c equals a (R^2 - |l|^2) with
+ *     l = f - (b/a) d the vector from the centre to the line's nearest
+ *     point; |l| is computed directly, so the small difference is not lost
+ *     between two huge squares (a small sphere seen from far away);
+ *   - c is formed as (|f| - R)(|f| + R), exact to rounding near the surface;
+ *   - q = -(b + sign(b) sqrt(disc)) has no cancellation, and the roots are
+ *     c/q and q/a (the product of the roots is c/a).
+ * Writes the roots in increasing order; returns their number (1 when the
+ * discriminant is exactly 0, |l| = R: a graze).
+ */
+static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
+{
+    real a = vec_dot(d, d);
+    if (!(a > 0.0))
+        return 0;
+    real b = vec_dot(f, d);
+    real ll = length_fast(vec_madd(f, d, -b / a));
+    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
+     * underflows to -0 for a sphere below about 1e-154 and would pass for a
+     * graze.  The square root is taken factor by factor for the same reason. */
+    if (!(ll <= radius))
+        return 0;
+    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
+    if (root == 0.0) {
+        t[0] = -b / a;
+        return 1;
+    }
+    real lf = length_fast(f);
+    real c = (lf - radius) * (lf + radius);
+    real q = -(b + copysign(root, b));
+    real t0 = c / q, t1 = q / a;
+    t[0] = t0 < t1 ? t0 : t1;
+    t[1] = t0 < t1 ? t1 : t0;
+    return 2;
+}
+
+/*
+ * The point o + t d has an absolute error of about eps |o| + eps |t d|,
+ * which for a small sphere far from the origin is huge relative to its
+ * radius.  One Newton-like restart fixes it: solve again from o' = o + t d,
+ * which lies within that error of the surface, and step by the root of the
+ * new solve nearest to the crossing (the lower one for the entry, the
+ * upper one for the exit).  Returns the refined t and sets *point.
+ */
+static real sphere_refine(vec3 center, real radius, const ray *r, real t, int upper,
+                            vec3 *point)
+{
+    vec3 o2 = ray_at(r, t);
+    real t2[2];
+    int n = sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
+    if (n == 0) {
+        *point = o2;
+        return t;
+    }
+    real step = upper ? t2[n - 1] : t2[0];
+    *point = vec_madd(o2, r->dir, step);
+    return t + step;
+}
+
+/* Whether a root, before refinement, could still land in (tmin, tmax).  The
+ * refinement moves t by the rounding error of o + t d over |d|, a few ulps
+ * of |o|/|d| + |t|; the slack is 1e-9 of that, a million times wider. */
+static int sphere_root_possible(const ray *r, real t)
+{
+    real slack = 1e-9 * (fabs(t) + max_abs(r->origin) / max_abs(r->dir));
+    return t + slack > r->tmin && t - slack < r->tmax;
+}
+
+static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max)
+{
+    vec3 f = vec_sub(r->origin, center);
+    real t[2];
+    int roots = sphere_roots(f, r->dir, radius, t), found = 0;
+    /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
+     * already as exact as the centre's own coordinates allow. */
+    int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
+    for (int i = 0; i < roots && found < max; i++) {
+        real ti = t[i];
+        vec3 p;
+        if (refine) {
+            if (!sphere_root_possible(r, ti))
+                continue;
+            ti = sphere_refine(center, radius, r, ti, i == 1, &p);
+        } else {
+            p = ray_at(r, ti);
+        }
+        if (!in_interval(r, ti))
+            continue;
+        hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
+    }
+    return found;
+}
+
+/*
+ * Plane n . (x - p0) = 0: t = n . (p0 - o) / (n . d); parallel rays miss.
+ * The point is projected back onto the plane, so its error is relative to
+ * |p| and |p0|, not to the ray origin (a camera far away).
+ */
+static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
+{
+    real dn = vec_dot(n, r->dir);
+    if (dn == 0.0)
+        return 0;
+    *t = vec_dot(n, vec_sub(p0, r->origin)) / dn;
+    if (!in_interval(r, *t))
+        return 0;
+    vec3 x = ray_at(r, *t);
+    *p = vec_madd(x, n, -vec_dot(n, vec_sub(x, p0)) / vec_dot(n, n));
+    return 1;
+}
+
+static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out)
+{
+    real t;
+    vec3 p;
+    if (!plane_point(p0, n, r, &t, &p))
+        return 0;
+    hit_set(out, t, p, vec_normalize(n), r->dir);
+    return 1;
+}
+
+/* Disk: the plane hit, kept when within the radius (boundary included). */
+static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
+{
+    real t;
+    vec3 p;
+    if (!plane_point(center, n, r, &t, &p))
+        return 0;
+    if (!(vec_length2(vec_sub(p, center)) <= radius * radius))
+        return 0;
+    hit_set(out, t, p, vec_normalize(n), r->dir);
+    return 1;
+}
+
+/*
+ * Box: the slab method.  Per axis the ray is inside the closed slab
+ * [lo, hi] for t between (lo - o)/d and (hi - o)/d.  A zero direction
+ * component is handled apart (inside the slab for all t, or never), so
+ * there is no 0 * inf = NaN when the origin lies on a slab plane; a
+ * non-zero one is divided by, never multiplied by an infinite inverse.
+ * Ties between axes go to the lower axis.
+ */
+static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
+{
+    tt[0] = -INFINITY;
+    tt[1] = INFINITY;
+    axis[0] = axis[1] = -1;
+    for (int k = 0; k < 3; k++) {
+        real o = vec_component(r->origin, k), d = vec_component(r->dir, k);
+        real l = vec_component(lo, k), h = vec_component(hi, k);
+        if (d == 0.0) {
+            if (o < l || o > h)
+                return 0;
+            continue;
+        }
+        real t0 = (l - o) / d, t1 = (h - o) / d;
+        if (t0 > t1) {
+            real s = t0;
+            t0 = t1;
+            t1 = s;
+        }
+        if (t0 > tt[0]) {
+            tt[0] = t0;
+            axis[0] = k;
+        }
+        if (t1 < tt[1]) {
+            tt[1] = t1;
+            axis[1] = k;
+        }
+    }
+    return axis[0] >= 0 && tt[0] <= tt[1];
+}
+
+/* The hit on the face of axis k crossed at t: entry (exit 0) or exit
+ * (exit 1).  The point's k coordinate is set to the face exactly. */
+static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit, hit *h)
+{
+    int positive = (vec_component(r->dir, k) > 0.0) == exit; /* the hi face */
+    vec3 p = vec_with(ray_at(r, t), k, vec_component(positive ? hi : lo, k));
+    vec3 n = vec_with(vec_make(0.0, 0.0, 0.0), k, positive ? 1.0 : -1.0);
+    hit_set(h, t, p, n, r->dir);
+}
+
+static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max)
+{
+    real tt[2];
+    int axis[2], found = 0;
+    if (!box_slabs(lo, hi, r, tt, axis))
+        return 0;
+    int crossings = tt[0] == tt[1] ? 1 : 2;
+    for (int i = 0; i < crossings && found < max; i++)
+        if (in_interval(r, tt[i]))
+            box_face_hit(lo, hi, r, tt[i], axis[i], i, &out[found++]);
+    return found;
+}
+
+static int max_abs_axis(vec3 d)
+{
+    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
+    return x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
+}
+
+/*
+ * Triangle: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
+ * JCGT 2(1), 2013.  Translate the vertices to the ray origin, permute the
+ * axes so that the largest direction component is z (swapping x and y when
+ * it is negative, to keep the winding), and shear so the ray becomes +z.
+ * The 2D edge functions at the origin are then
+ *   U = e(B,C), V = e(C,A), W = e(A,B),  e(P,Q) = Qx Py - Qy Px,
+ * the barycentric weights of A, B, C times their sum det.  The sheared
+ * coordinates of a vertex depend only on the vertex and the ray, and
+ * e(Q,P) = -e(P,Q) exactly in floating point, so two triangles sharing an
+ * edge see opposite signs there: no ray slips between them (a 0 counts as
+ * inside for both).  The paper's fallback for a 0 edge function in single
+ * precision is to recompute it in double; here the working type is double or wider.
+ * This relies on no fused multiply-add contraction, which GCC leaves off in
+ * ISO C mode (-std=c99).
+ */
+typedef struct tri_bary {
+    real t, b[3];
+} tri_bary;
+
+static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
+{
+    int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    real dz = vec_component(r->dir, kz);
+    if (dz < 0.0) {
+        int s = kx;
+        kx = ky;
+        ky = s;
+    }
+    if (dz == 0.0)
+        return 0;
+    real sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
+    real px[3], py[3], pz[3];
+    for (int i = 0; i < 3; i++) {
+        vec3 a = vec_sub(v[i], r->origin);
+        pz[i] = vec_component(a, kz);
+        px[i] = vec_component(a, kx) - sx * pz[i];
+        py[i] = vec_component(a, ky) - sy * pz[i];
+    }
+    real e[3];
+    for (int i = 0; i < 3; i++) {
+        int p = (i + 1) % 3, q = (i + 2) % 3;
+        e[i] = px[q] * py[p] - py[q] * px[p];
+    }
+    if ((e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0) && (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0))
+        return 0;
+    real det = e[0] + e[1] + e[2];
+    if (det == 0.0)
+        return 0;
+    /* t = the barycentric mean of the vertices' z distances, over dz.  The
+     * paper's sum of e_i pz_i before dividing by det is a product of three
+     * coordinates: it overflows for a triangle at 2^342 (and underflows at
+     * 2^-342) where the weights b_i = e_i / det, free of scale, do not. */
+    for (int i = 0; i < 3; i++)
+        out->b[i] = e[i] / det;
+    out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;
+    return 1;
+}
+
+static int triangle_hits(const vec3 v[3], const vec3 *normals, const ray *r, hit *out)
+{
+    tri_bary s;
+    if (!triangle_solve(v, r, &s) || !in_interval(r, s.t))
+        return 0;
+    /* The barycentric point lies in the triangle's plane to rounding of the
+     * vertices, which o + t d (error relative to the origin) does not. */
+    vec3 p = vec_scale(v[0], s.b[0]);
+    p = vec_madd(p, v[1], s.b[1]);
+    p = vec_madd(p, v[2], s.b[2]);
+    vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
+    hit_set(out, s.t, p, n, r->dir);
+    if (normals) {
+        vec3 sn = vec_scale(normals[0], s.b[0]);
+        sn = vec_madd(sn, normals[1], s.b[1]);
+        sn = vec_madd(sn, normals[2], s.b[2]);
+        sn = vec_normalize(sn);
+        /* Opposite vertex normals can cancel; keep the geometric one then. */
+        out->shading_normal = vec_length2(sn) > 0.0 ? sn : n;
+    }
+    return 1;
+}
+
+static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, max);
+    case PRIM_PLANE:
+        return plane_hits(p->u.plane.point, p->u.plane.normal, r, out);
+    case PRIM_TRIANGLE:
+        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL,
+                             r, out);
+    case PRIM_DISK:
+        return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
+    case PRIM_BOX:
+        return box_hits(p->u.box.lo, p->u.box.hi, r, out, max);
+    }
+    return 0;
+}
+
+/*
+ * A primitive with a local frame: the ray goes in through to_local (its
+ * direction is not renormalised, so t is the same in both frames), points
+ * come back through to_world and normals through the inverse transpose.
+ * entering is kept from the local frame: d . n has the same sign in both,
+ * since (L^-1 d) . n_local = d . (L^-T n_local).
+ */
+static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
+{
+    if (!p->has_xform)
+        return local_hits(p, r, out, max);
+    ray local = *r;
+    local.origin = xform_point(&p->to_local, r->origin);
+    local.dir = xform_vector(&p->to_local, r->dir);
+    int n = local_hits(p, &local, out, max);
+    for (int i = 0; i < n; i++) {
+        out[i].point = xform_point(&p->to_world, out[i].point);
+        out[i].normal = vec_normalize(xform_normal(&p->to_local, out[i].normal));
+        out[i].shading_normal = vec_normalize(xform_normal(&p->to_local, out[i].shading_normal));
+    }
+    return n;
+}
+
+int isect_prim(const rf_prim *p, ray *r, hit *h)
+{
+    if (!prim_hits(p, r, h, 1))
+        return 0;
+    r->tmax = h->t;
+    return 1;
+}
+
+int isect_prim_all(const rf_prim *p, const ray *r, hit out[2])
+{
+    return prim_hits(p, r, out, 2);
+}
+
+static int nearest(int found, ray *r, const hit *h)
+{
+    if (found)
+        r->tmax = h->t;
+    return found;
+}
+
+int isect_sphere(vec3 center, real radius, ray *r, hit *h)
+{
+    return nearest(sphere_hits(center, radius, r, h, 1), r, h);
+}
+
+int isect_plane(vec3 point, vec3 normal, ray *r, hit *h)
+{
+    return nearest(plane_hits(point, normal, r, h), r, h);
+}
+
+int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h)
+{
+    return nearest(triangle_hits(p, normals, r, h), r, h);
+}
+
+int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)
+{
+    return nearest(disk_hits(center, normal, radius, r, h), r, h);
+}
+
+int isect_box(vec3 lo, vec3 hi, ray *r, hit *h)
+{
+    return nearest(box_hits(lo, hi, r, h, 1), r, h);
+}
+
+/* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
+ * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
+static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+{
+    vec3 c, e;
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        c = p->u.sphere.center;
+        e = vec_splat(p->u.sphere.radius);
+        break;
+    case PRIM_DISK: {
+        vec3 n = vec_normalize(p->u.disk.normal);
+        real rad = p->u.disk.radius;
+        c = p->u.disk.center;
+        e = vec_make(rad * sqrt(fmax(0.0, 1.0 - n.x * n.x)), rad * sqrt(fmax(0.0, 1.0 - n.y * n.y)),
+                     rad * sqrt(fmax(0.0, 1.0 - n.z * n.z)));
+        break;
+    }
+    case PRIM_TRIANGLE:
+        *lo = vec_min(p->u.triangle.p[0], vec_min(p->u.triangle.p[1], p->u.triangle.p[2]));
+        *hi = vec_max(p->u.triangle.p[0], vec_max(p->u.triangle.p[1], p->u.triangle.p[2]));
+        return 1;
+    case PRIM_BOX:
+        *lo = p->u.box.lo;
+        *hi = p->u.box.hi;
+        return 1;
+    default:
+        return 0;
+    }
+    *lo = vec_sub(c, e);
+    *hi = vec_add(c, e);
+    return 1;
+}
+
+int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+{
+    vec3 l, h;
+    if (!local_bounds(p, &l, &h))
+        return 0;
+    if (p->has_xform) {
+        vec3 wl = vec_splat(INFINITY), wh = vec_splat(-INFINITY);
+        for (int i = 0; i < 8; i++) {
+            vec3 corner = vec_make(i & 1 ? h.x : l.x, i & 2 ? h.y : l.y, i & 4 ? h.z : l.z);
+            vec3 w = xform_point(&p->to_world, corner);
+            wl = vec_min(wl, w);
+            wh = vec_max(wh, w);
+        }
+        l = wl;
+        h = wh;
+    }
+    if (!vec_is_finite(l) || !vec_is_finite(h))
+        return 0;
+    *lo = l;
+    *hi = h;
+    return 1;
+}
+
+static real local_magnitude(const rf_prim *p)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        return max_abs(p->u.sphere.center) + p->u.sphere.radius;
+    case PRIM_PLANE:
+        return max_abs(p->u.plane.point);
+    case PRIM_TRIANGLE:
+        return fmax(max_abs(p->u.triangle.p[0]),
+                    fmax(max_abs(p->u.triangle.p[1]), max_abs(p->u.triangle.p[2])));
+    case PRIM_DISK:
+        return max_abs(p->u.disk.center) + p->u.disk.radius;
+    case PRIM_BOX:
+        return fmax(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+    }
+    return 0.0;
+}
+
+/* For a local frame: |L x + T|_max <= |L|_inf |x|_max + |T|_max, with
+ * |L|_inf the largest row sum of absolute values. */
+real isect_prim_magnitude(const rf_prim *p)
+{
+    real m = local_magnitude(p);
+    if (!p->has_xform)
+        return m;
+    real norm = 0.0, shift = 0.0;
+    for (int i = 0; i < 3; i++) {
+        const double *row = p->to_world.m[i];
+        norm = fmax(norm, fabs(row[0]) + fabs(row[1]) + fabs(row[2]));
+        shift = fmax(shift, fabs(row[3]));
+    }
+    return norm * m + shift;
+}
+
+/* How far a secondary ray is pushed off a surface: SPAWN_REL of the
+ * magnitude its point's rounding is relative to, plus the floor. */
+static real spawn_offset(vec3 point, real magnitude)
+{
+    return SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
+}
+
+/* The origin moved off the surface by offset to the side of toward: +n
+ * when toward . n >= 0, else -n. */
+static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
+{
+    return vec_madd(point, normal, vec_dot(toward, normal) >= 0.0 ? offset : -offset);
+}
+
+/* A shadow ray's tmin: the offset again, along the ray.  A surface closer
+ * than that to the point left is one with it: at a concave edge (a floor
+ * meeting a wall) the rounded point lies behind the other surface as often
+ * as in front, and light must not be stopped by it (spec/numerics.md,
+ * "Concave corners").  Mirror and refracted rays keep tmin = 0: inside a
+ * closed mirror box one that leaves a face next to an edge must still meet
+ * the adjacent face, 1e-14 away. */
+static real shadow_tmin(real offset, vec3 dir)
+{
+    real len = vec_length(dir);
+    return len > 0 ? offset / len : 0;
+}
+
+static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
+{
+    ray r;
+    real offset = spawn_offset(point, magnitude);
+    r.origin = spawn_origin(point, normal, dir, offset);
+    r.dir = dir;
+    r.tmin = shadow ? shadow_tmin(offset, dir) : 0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
+static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
+{
+    ray r;
+    real offset = spawn_offset(point, magnitude);
+    r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
+    vec3 to = vec_sub(target, r.origin);
+    real dist = vec_length(to);
+    r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
+    r.tmin = offset;
+    r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);
+    return r;
+}
+
+ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir)
+{
+    return spawn(point, geometric_normal, dir, 0.0, 0);
+}
+
+ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target)
+{
+    return spawn_to(point, geometric_normal, target, 0.0);
+}
+
+/* A ray that goes into an axis-aligned box starts strictly inside it, by
+ * the offset, on every axis.  A hit next to an edge has its other
+ * coordinates on, or an ulp beyond, the adjacent face; a mirror ray from
+ * there that heads out through that face meets it at t <= 0 and leaves a
+ * closed mirror box (spec/numerics.md, "Box edges").  Boxes thinner than
+ * twice the offset are left alone. */
+static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
+{
+    vec3 lo = p->u.box.lo, hi = p->u.box.hi;
+    for (int k = 0; k < 3; k++) {
+        real o = vec_component(origin, k), a = vec_component(lo, k) + offset, b = vec_component(hi, k) - offset;
+        if (a < b)
+            origin = vec_with(origin, k, o < a ? a : o > b ? b : o);
+    }
+    return origin;
+}
+
+ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
+{
+    real m = isect_prim_magnitude(p);
+    ray r = spawn(h->point, h->normal, dir, m, 0);
+    if (p->kind == PRIM_BOX && !p->has_xform && vec_dot(dir, h->normal) < 0)
+        r.origin = keep_inside(p, r.origin, spawn_offset(h->point, m));
+    return r;
+}
+
+ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
+{
+    return spawn(h->point, h->normal, dir, isect_prim_magnitude(p), 1);
+}
+
+ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)
+{
+    return spawn_to(h->point, h->normal, target, isect_prim_magnitude(p));
+}

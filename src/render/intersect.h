@@ -1,0 +1,107 @@
+/*
+ * intersect.h - ray/primitive intersection and the rays that leave a surface.
+ *
+ * Contract of every isect_* routine (SQLite-style: what it returns, what it
+ * touches):
+ *   - a hit is accepted only for t in the open interval (r->tmin, r->tmax);
+ *   - on a hit it sets r->tmax = t, fills *h and returns 1; on a miss it
+ *     returns 0 and touches neither *r nor *h;
+ *   - h->normal is the unit geometric normal oriented as ray.h says (outward
+ *     for sphere and box, the declared side for plane, disk and triangle),
+ *     h->shading_normal the unit interpolated vertex normal of a triangle
+ *     with normals, else a copy of h->normal; h->entering = dir . normal < 0;
+ *   - h->prim is set to -1: the caller that knows the index (the BVH) sets it.
+ * r->dir need not be unit length (rays taken into a local frame are not); a
+ * zero direction never hits.  Sheets (plane, disk, triangle) are two-sided.
+ *
+ * Edge cases, as defined here and tested in tests/check_intersect.c:
+ *   - sphere: a ray whose line touches the sphere with discriminant exactly
+ *     0 is one hit (a graze), reported once, with entering computed as usual
+ *     (dir . normal is about 0 there);
+ *   - a ray starting inside a sphere or box hits the far side (entering 0);
+ *   - a ray starting exactly on a surface does not hit it at t = 0 (the
+ *     interval is open) but does hit the far side of a solid it goes into;
+ *   - plane and disk: a ray parallel to the plane misses, even in the plane;
+ *     the disk includes its boundary circle (|p - c| <= radius);
+ *   - box: faces are closed (a ray along a face plane hits, as does one
+ *     through an edge); when entry and exit coincide (an edge or corner
+ *     touched, or a flat box) it is one hit with the entry face's normal;
+ *   - triangle: watertight (Woop, Benthin, Wald 2013): a ray through a
+ *     shared edge or vertex of a mesh hits at least one of its triangles.
+ * Numeric domain: hit/miss decisions multiply two coordinates together, so
+ * they are exact in sign only while such products stay normal doubles: keep
+ * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
+ * is guarded against underflow).  No computation multiplies three, so a
+ * scene scaled by a power of two within that range renders bit for bit the
+ * same (tests/test_stability.c, scale_*.scene).  Nothing here checks it.
+ */
+#ifndef REFRAY_INTERSECT_H
+#define REFRAY_INTERSECT_H
+
+#include "render/ray.h"
+#include "scene/scene.h"
+
+int isect_sphere(vec3 center, real radius, ray *r, hit *h);
+int isect_plane(vec3 point, vec3 normal, ray *r, hit *h);
+/* p: the three vertices; normals: three unit vertex normals or NULL. */
+int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h);
+int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h);
+int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
+
+/* The nearest hit of one primitive, dispatching on p->kind and taking the
+ * ray into the local frame when p->has_xform (t is preserved; point and
+ * normals are mapped back to the world). */
+int isect_prim(const rf_prim *p, ray *r, hit *h);
+
+/* Every crossing of the surface in (r->tmin, r->tmax), in increasing t:
+ * 0, 1 or 2 (a solid crossed through: entry and exit).  r is not changed;
+ * each out[i].prim is -1. */
+int isect_prim_all(const rf_prim *p, const ray *r, hit out[2]);
+
+/* World-space axis-aligned bounds of a bounded primitive (a transformed one:
+ * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
+ * bounds are not finite (such a primitive must be tested unconditionally). */
+int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi);
+
+/* The largest coordinate magnitude a hit point of p is computed from (its
+ * vertices, centre plus radius, plane point...): the hit point's rounding
+ * error is relative to this, not to the point itself. */
+real isect_prim_magnitude(const rf_prim *p);
+
+/*
+ * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
+ * Self-Intersection", Ray Tracing Gems I, ch. 6, in the working precision): the origin
+ * is pushed off the surface along the geometric normal, to the side the ray
+ * goes, by the offset SPAWN_REL * m + SPAWN_ABS where m is the largest
+ * coordinate magnitude involved.  Mirror and refracted rays then start at
+ * tmin = 0; shadow rays at tmin = that same offset along the ray, so that a
+ * surface within the offset of the point (the other side of a concave edge,
+ * which the rounded point may lie just behind) does not shadow it.  No
+ * epsilon is needed anywhere else.
+ */
+#define SPAWN_REL (1024.0 * 2.220446049250313e-16) /* 2^-42: 1024 ulps of m */
+#define SPAWN_ABS 1e-300                           /* only matters at |p| ~ 0 */
+/* Shadow rays stop this fraction short of their target, so a light placed
+ * on a surface is not shadowed by that surface. */
+#define SPAWN_SHADOW_SHRINK 1e-9
+
+/* A ray from point in direction dir (copied, not normalised), m = max |point_i|:
+ * right when the point's error is relative to its own magnitude.
+ * tmin = 0, tmax = HUGE_VAL. */
+ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir);
+
+/* A shadow ray from point toward target: unit dir, tmin = the offset, tmax =
+ * distance * (1 - SPAWN_SHADOW_SHRINK).  A target within the offset gives an
+ * empty interval: nothing can stand between. */
+ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
+
+/* The same for a hit on p, with m = max(|h->point|, isect_prim_magnitude(p)):
+ * what the tracer should use (a big triangle or sphere hit near the world
+ * origin has an error relative to its vertices or centre, not to the point). */
+ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
+ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
+/* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
+ * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
+ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
+
+#endif

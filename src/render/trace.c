@@ -1,0 +1,465 @@
+/*
+ * trace.c - trace() and shade() of the seed's pseudocode (slides 45-48),
+ * step for step; every formula is a function of shade.c.
+ *
+ *   trace(ray, depth):  nearest hit -> shade(), else the background    (46)
+ *   shade():  color = Kd*Ia                                            (47, 11)
+ *             for each light (each sample of a distributed one):
+ *               if N.L > 0: scale diffuse and specular by what the
+ *               surfaces on the way let through, add them              (47)
+ *             if depth < max_depth:
+ *               + Ks * trace(mirror ray)                               (48)
+ *               + t * trace(refracted ray), or on total internal
+ *                 reflection t * trace(mirror ray)                     (48, 36)
+ *   with the body colour weighted by (1 - t) (slide 37, t = transparency).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "render/intersect.h"
+#include "base/sampler.h"
+#include "render/shade.h"
+#include "render/trace.h"
+#include "base/xform.h"
+
+/* What shade() knows about the point it shades. */
+typedef struct surface {
+    const rf_material *m;
+    const rf_prim *prim;
+    const hit *h;
+    vec3 v;          /* unit, toward where the ray came from */
+    vec3 n;          /* shading normal turned toward v */
+} surface;
+
+int trace_solid_id(const rf_scene *s, int prim)
+{
+    const rf_prim *p = &s->prims[prim];
+    if (p->kind == PRIM_SPHERE || p->kind == PRIM_BOX)
+        return prim;
+    if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
+        return s->prim_count + p->mesh;
+    return -1;
+}
+
+int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
+{
+    memset(t, 0, sizeof *t);
+    t->scene = s;
+    t->max_depth = max_depth > 0 ? max_depth : s->image.max_depth;
+    t->shadows = s->features.shadows;
+    t->specular = s->features.specular;
+    t->reflection = s->features.reflection && t->max_depth > 1;
+    t->refraction = s->features.refraction && t->max_depth > 1;
+    t->lights = calloc((size_t)(s->light_count ? s->light_count : 1), sizeof *t->lights);
+    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count)) {
+        tracer_free(t);
+        return 0;
+    }
+    for (int i = 0; i < s->light_count; i++) {
+        const rf_light *light = &s->lights[i];
+        t->lights[i].samples = light_samples > 0 ? light_samples : light->samples;
+        if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
+            t->lights[i].grid = light_grid_for(t->lights[i].samples);
+        if (light->kind == LIGHT_DISK)
+            light_frame(light->normal, &t->lights[i].t1, &t->lights[i].t2);
+    }
+    if (s->camera.kind == CAMERA_PERSPECTIVE) {
+        trace_stats none;
+        memset(&none, 0, sizeof none);
+        trace_media_at(t, s->camera.eye, &t->eye_media, &none);
+    }
+    return 1;
+}
+
+void tracer_free(tracer *t)
+{
+    bvh_free(&t->accel);
+    free(t->lights);
+    t->lights = NULL;
+}
+
+typedef struct shadow_walk {
+    const rf_scene *scene;
+    real carried;
+} shadow_walk;
+
+/* Slide 47: every surface on the way lets through its t (opaque: 0). */
+static int shadow_crossing(void *ctx, const hit *h)
+{
+    shadow_walk *w = ctx;
+    const rf_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
+    w->carried = shade_shadow_transmission(w->carried, m->t);
+    return w->carried == 0;
+}
+
+/* The fraction of a light that reaches the surface along r. */
+static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
+{
+    shadow_walk w = {t->scene, 1.0};
+    st->shadow_rays++;
+    bvh_visit_stats(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    return w.carried;
+}
+
+typedef struct direct_sum {
+    rgb body;        /* diffuse, before the (1 - t) weight */
+    rgb highlight;
+} direct_sum;
+
+/* One point source at pos (distant: at infinity along -direction). */
+static void add_source(const tracer *t, const surface *s, const rf_light *light, vec3 pos, rgb power,
+                       direct_sum *sum, trace_stats *st)
+{
+    vec3 l;
+    real d = HUGE_VAL;
+    st->light_samples++;
+    if (light->kind == LIGHT_DISTANT) {
+        l = vec_neg(light->direction);
+    } else {
+        vec3 to = vec_sub(pos, s->h->point);
+        d = vec_length(to);
+        if (!(d > 0)) {
+            st->lights_on_surface++;
+            return;
+        }
+        l = vec_scale(to, 1.0 / d);
+    }
+    if (!(vec_dot(s->n, l) > 0))
+        return;
+    rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
+    if (t->shadows) {
+        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
+                                             : ray_spawn_hit_to(s->prim, s->h, pos);
+        real through = shadow_transmission(t, &r, st);
+        if (through == 0)
+            return;
+        intensity = vec_scale(intensity, through);
+    }
+    if (t->specular) {
+        shade_terms terms = shade_direct(s->m->kd, s->m->ks, s->m->n, intensity, s->n, l, s->v);
+        sum->body = shade_saturate(vec_add(sum->body, terms.body));
+        sum->highlight = shade_saturate(vec_add(sum->highlight, terms.highlight));
+    } else {
+        sum->body = shade_saturate(vec_add(sum->body, shade_diffuse(s->m->kd, intensity, s->n, l)));
+    }
+}
+
+/* The samples of a distributed light, each a point source of E/samples. */
+static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
+                            trace_stats *st)
+{
+    const rf_light *light = &t->scene->lights[index];
+    const light_setup *setup = &t->lights[index];
+    rgb power = shade_sample_power(light->power, setup->samples);
+    uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
+    for (int j = 0; j < setup->samples; j++) {
+        double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
+        double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
+        double a, b;   /* the sample's place in the light's unit square: model data, double */
+        light_cell_point(setup->grid, j, u1, u2, &a, &b);
+        add_source(t, s, light, light_point(light, setup->t1, setup->t2, a, b), power, sum, st);
+    }
+}
+
+static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
+{
+    direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
+    for (int i = 0; i < t->scene->light_count; i++) {
+        const rf_light *light = &t->scene->lights[i];
+        if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
+            add_source(t, s, light, light->position, light->power, &sum, st);
+        else
+            add_distributed(t, s, i, key, &sum, st);
+    }
+    return sum;
+}
+
+static real top_ior(const medium_stack *media)
+{
+    return media->count > 0 ? media->ior[media->count - 1] : 1.0;
+}
+
+static void media_push(medium_stack *media, int solid, real ior, trace_stats *st)
+{
+    if (media->count == MEDIUM_MAX) {
+        st->medium_overflow++;
+        return;
+    }
+    media->solid[media->count] = solid;
+    media->ior[media->count++] = ior;
+}
+
+/* Leaving a solid takes it off the stack wherever it is (solids may overlap). */
+static void media_remove(medium_stack *media, int solid)
+{
+    for (int i = media->count - 1; i >= 0; i--) {
+        if (media->solid[i] != solid)
+            continue;
+        memmove(&media->solid[i], &media->solid[i + 1], (size_t)(media->count - 1 - i) * sizeof media->solid[0]);
+        memmove(&media->ior[i], &media->ior[i + 1], (size_t)(media->count - 1 - i) * sizeof media->ior[0]);
+        media->count--;
+        return;
+    }
+}
+
+static int media_find(const medium_stack *media, int solid)
+{
+    for (int i = media->count - 1; i >= 0; i--)
+        if (media->solid[i] == solid)
+            return i;
+    return -1;
+}
+
+/*
+ * One interface: the surface hit and every other surface crossed within the
+ * spawn offset of it.  Two glass boxes sharing a face are two coincident
+ * surfaces; the transmitted ray is spawned past both at once, so leaving
+ * one and entering the other must be one boundary n1 -> n2, not
+ * n1 -> air -> n2 with the second crossing never seen (spec/numerics.md,
+ * "Coincident surfaces").
+ */
+enum { INTERFACE_MAX = 8 };
+typedef struct interface {
+    const hit *self;     /* the hit being shaded: h[0] */
+    real reach;          /* a crossing whose point is this close belongs to it */
+    int count;
+    hit h[INTERFACE_MAX];
+    const rf_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
+    const hit *spawn_hit;
+} interface;
+
+static real max_abs_diff(vec3 a, vec3 b)
+{
+    vec3 d = vec_sub(a, b);
+    return fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+}
+
+static int gather_crossing(void *ctx, const hit *h)
+{
+    interface *f = ctx;
+    if (h->prim == f->self->prim && h->entering == f->self->entering)
+        return 0;
+    if (f->count < INTERFACE_MAX && max_abs_diff(h->point, f->self->point) <= f->reach)
+        f->h[f->count++] = *h;
+    return 0;
+}
+
+/* Fills f with the hit and the crossings of the incoming ray within reach:
+ * twice the spawn offset, the distance a spawned ray jumps. */
+static void interface_gather(const tracer *t, const surface *s, const ray *in, interface *f, trace_stats *st)
+{
+    real m = fmax(isect_prim_magnitude(s->prim), fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y),
+                                                                               fabs(s->h->point.z))));
+    ray r = *in;
+    f->self = s->h;
+    f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
+    f->count = 1;
+    f->h[0] = *s->h;
+    /* The crossings' t may differ from the hit's by the rounding of t itself,
+     * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
+    r.tmax = s->h->t + f->reach + 0x1p-40 * fabs(s->h->t);
+    bvh_visit_stats(&t->accel, t->scene->prims, &r, gather_crossing, f, &st->bvh);
+    f->spawn_prim = s->prim;
+    f->spawn_hit = s->h;
+    for (int k = 1; k < f->count; k++) {
+        const rf_prim *p = &t->scene->prims[f->h[k].prim];
+        if (isect_prim_magnitude(p) > isect_prim_magnitude(f->spawn_prim)) {
+            f->spawn_prim = p;
+            f->spawn_hit = &f->h[k];
+        }
+    }
+}
+
+/* Crossing the interface: every solid left comes off the stack, then every
+ * solid entered goes on (once).  Returns the number of solids crossed and
+ * sets *through to the product of the t of the surfaces crossed besides the
+ * hit itself (whose t the caller applies). */
+static int interface_cross(const tracer *t, const interface *f, medium_stack *next, real *through,
+                           trace_stats *st)
+{
+    const rf_scene *sc = t->scene;
+    int solids = 0;
+    *through = 1;
+    for (int k = 1; k < f->count; k++)
+        *through = shade_shadow_transmission(*through, sc->materials[sc->prims[f->h[k].prim].material].t);
+    for (int k = 0; k < f->count; k++) {
+        int solid = trace_solid_id(sc, f->h[k].prim);
+        solids += solid >= 0;
+        if (solid >= 0 && !f->h[k].entering)
+            media_remove(next, solid);
+    }
+    for (int k = 0; k < f->count; k++) {
+        int solid = trace_solid_id(sc, f->h[k].prim);
+        if (solid >= 0 && f->h[k].entering && media_find(next, solid) < 0)
+            media_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
+    }
+    return solids;
+}
+
+/*
+ * The transmitted ray: straight on through a sheet, bent by Snell's law
+ * where the interface changes the medium (n1 the medium before, the top of
+ * the stack; n2 the one after), or mirrored on total internal reflection.
+ * A solid left that the stack does not hold (its overflow) keeps its own
+ * ior as n1.
+ */
+static rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
+                       uint64_t key, trace_stats *st)
+{
+    interface f;
+    medium_stack next = *media;
+    real through;
+    interface_gather(t, s, in, &f, st);
+    int solids = interface_cross(t, &f, &next, &through, st);
+    if (through == 0)
+        return vec_splat(0);
+    ray r;
+    vec3 dir = in->dir;
+    int refracts = 1;
+    if (solids > 0) {
+        int solid = trace_solid_id(t->scene, s->h->prim);
+        real n1 = solid >= 0 && !s->h->entering && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
+        refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
+    }
+    r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    if (refracts) {
+        st->refraction_rays++;
+        return vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
+    }
+    st->tir_rays++;
+    return vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
+}
+
+static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
+                    uint64_t key, trace_stats *st)
+{
+    ray r = ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
+    st->reflection_rays++;
+    return trace_ray(t, &r, depth + 1, media, key, st);
+}
+
+static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const medium_stack *media, uint64_t key,
+                 trace_stats *st)
+{
+    surface s;
+    s.prim = &t->scene->prims[h->prim];
+    s.m = &t->scene->materials[s.prim->material];
+    s.h = h;
+    s.v = vec_neg(in->dir);
+    s.n = shade_face_forward(h->shading_normal, s.v);
+    direct_sum sum = direct_light(t, &s, key, st);
+    rgb mirror = vec_splat(0), through = vec_splat(0);
+    if (depth < t->max_depth) {
+        if (t->reflection && vec_max_component(s.m->ks) > 0)
+            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, 1), st);
+        if (t->refraction && s.m->t > 0)
+            through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
+    }
+    return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
+}
+
+/* ---- where a ray starts: the media around a point ---------------------- */
+
+/* Solids the probe ray crosses: count and nearest crossing of each. */
+enum { PROBE_MAX = 64 };
+typedef struct probe {
+    const rf_scene *scene;
+    int count;
+    int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
+    real first[PROBE_MAX];
+} probe;
+
+static int probe_crossing(void *ctx, const hit *h)
+{
+    probe *pr = ctx;
+    int solid = trace_solid_id(pr->scene, h->prim), k = 0;
+    if (solid < 0 || !(pr->scene->materials[pr->scene->prims[h->prim].material].t > 0))
+        return 0;
+    while (k < pr->count && pr->solid[k] != solid)
+        k++;
+    if (k == pr->count) {
+        if (k == PROBE_MAX)
+            return 0;
+        pr->count++;
+        pr->solid[k] = solid;
+        pr->prim[k] = h->prim;
+        pr->crossings[k] = 0;
+        pr->first[k] = h->t;
+    }
+    pr->crossings[k]++;
+    if (h->t < pr->first[k])
+        pr->first[k] = h->t;
+    return 0;
+}
+
+/* Strictly inside a sphere or box (in its own frame); for a mesh, an odd
+ * number of crossings of the probe. */
+static int contains(const rf_prim *p, vec3 point, int crossings)
+{
+    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
+    if (p->kind == PRIM_SPHERE)
+        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
+    if (p->kind == PRIM_BOX)
+        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
+               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    return crossings % 2 == 1;
+}
+
+void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st)
+{
+    probe pr;
+    out->count = 0;
+    if (!t->refraction)
+        return;
+    pr.scene = t->scene;
+    pr.count = 0;
+    /* A direction along no axis and no simple diagonal, so the probe does
+     * not run along the faces and edges of boxes and axis-aligned meshes. */
+    ray r;
+    r.origin = point;
+    r.dir = vec_normalize(vec_make(0.2971, 0.5309, 0.7936));
+    r.tmin = 0;
+    r.tmax = HUGE_VAL;
+    bvh_visit_stats(&t->accel, t->scene->prims, &r, probe_crossing, &pr, &st->bvh);
+    /* Outermost first: the solid the probe leaves last goes on first. */
+    for (;;) {
+        int best = -1;
+        for (int k = 0; k < pr.count; k++)
+            if (pr.crossings[k] >= 0 && contains(&t->scene->prims[pr.prim[k]], point, pr.crossings[k]) &&
+                (best < 0 || pr.first[k] > pr.first[best]))
+                best = k;
+        if (best < 0)
+            return;
+        const rf_prim *p = &t->scene->prims[pr.prim[best]];
+        media_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
+        pr.crossings[best] = -1;
+    }
+}
+
+/* Both branches of a glass surface recurse, so a ray tree can grow as
+ * 2^max_depth: past the budget the tree stops growing and the render is
+ * declared void (the caller reports it), never silently wrong or endless. */
+static int over_budget(const tracer *t, trace_stats *st)
+{
+    if (st->tree_overflow)
+        return 1;
+    if (t->max_tree_rays > 0 && ++st->tree_rays > t->max_tree_rays)
+        st->tree_overflow = 1;
+    return st->tree_overflow;
+}
+
+rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
+{
+    ray nearest = *r;
+    hit h;
+    rgb c = t->scene->image.background;
+    if (over_budget(t, st))
+        return c;
+    if (bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh))
+        c = shade(t, &nearest, &h, depth, media, key, st);
+    if (!vec_is_finite(c)) {
+        st->nonfinite++;
+        c = vec_splat(0);
+    }
+    return c;
+}

@@ -1,0 +1,86 @@
+/*
+ * trace.h - the recursive ray tracer of the seed's pseudocode (slides 45-48):
+ * trace(ray, depth) finds the nearest hit or the background; shade() adds
+ * ambient, every light through its shadow rays, and the mirror and
+ * transmitted rays while depth < max_depth.  spec/shading.md holds the
+ * formulas; the choices where the seed is ambiguous are there too.
+ *
+ * A tracer is built once per scene and then only read, so any number of
+ * traces may share it; the counters live in a trace_stats the caller owns.
+ */
+#ifndef REFRAY_TRACE_H
+#define REFRAY_TRACE_H
+
+#include <stdint.h>
+#include "render/bvh.h"
+#include "render/lightsample.h"
+#include "render/ray.h"
+#include "scene/scene.h"
+
+typedef struct trace_stats {
+    long camera_rays;
+    long shadow_rays;
+    long reflection_rays;
+    long refraction_rays;     /* transmitted rays, straight through sheets included */
+    long tir_rays;            /* mirror rays taken on total internal reflection */
+    long light_samples;       /* point-source evaluations, distributed samples each */
+    long lights_on_surface;   /* samples skipped: the light sits on the shaded point */
+    long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
+    long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
+    int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
+    long medium_overflow;     /* glass nested deeper than the medium stack holds */
+    bvh_stats bvh;
+} trace_stats;
+
+/* Per-light data computed once: the stratification and a disk's frame. */
+typedef struct light_setup {
+    int samples;        /* point sources this render uses for the light */
+    light_grid grid;
+    vec3 t1, t2;
+} light_setup;
+
+/* The transparent solids a ray is inside, innermost last (nested glass). */
+enum { MEDIUM_MAX = 16 };
+typedef struct medium_stack {
+    int count;
+    int solid[MEDIUM_MAX];    /* solid_id of each enclosing solid */
+    real ior[MEDIUM_MAX];
+} medium_stack;
+
+typedef struct tracer {
+    const rf_scene *scene;
+    bvh accel;
+    light_setup *lights;
+    int max_depth;
+    long max_tree_rays;       /* 0: no limit */
+    /* The passes that run: off when the scene's features say nothing in the
+     * scene could use them (rf_features), so their work is left out. */
+    int shadows, specular, reflection, refraction;
+    medium_stack eye_media;   /* what a perspective camera's eye is inside */
+} tracer;
+
+
+/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+ * light_samples > 0 gives every distributed light that many samples instead
+ * of its own (for convergence sweeps).  Returns 0 when out of memory. */
+int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
+void tracer_free(tracer *t);
+
+/* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
+ * jitter of every light sample below this ray. */
+rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,
+              trace_stats *st);
+
+/* The medium stack of a ray that starts at point: the transparent solids
+ * containing it, outermost first (a camera inside glass).  A sphere or box
+ * contains the point when it is strictly inside (exact test in its frame); a
+ * mesh when a probe ray from the point crosses it an odd number of times.
+ * Nesting order: the solid the probe leaves first is the innermost.  Empty
+ * when the tracer has no refraction pass. */
+void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
+
+/* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
+ * for a sheet (plane, disk, lone triangle), which has no inside. */
+int trace_solid_id(const rf_scene *s, int prim);
+
+#endif

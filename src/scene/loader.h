@@ -1,0 +1,89 @@
+/*
+ * loader.h - state of one scene load, shared by the lowering passes
+ * (lower.c statements, lower_props.c property reading, lower_blocks.c
+ * camera/image/lights/materials, lower_prims.c primitives, validate.c).
+ * Internal to the library: nothing here is public API.
+ */
+#ifndef REFRAY_LOADER_H
+#define REFRAY_LOADER_H
+
+#include "base/arena.h"
+#include "lang/ast.h"
+#include "base/diag.h"
+#include "lang/eval.h"
+#include "lang/keywords.h"
+#include "scene/scene.h"
+#include "lang/schema.h"
+
+typedef struct loader {
+    rf_scene *scene;            /* being filled; owns the sources */
+    const rf_limits *limits;
+    diag diag;
+    arena arena;                /* syntax trees of every file read */
+    env env;                    /* constants in scope */
+    char **include_stack;       /* real paths of the files being lowered, outermost first */
+    int include_depth;
+    long loop_iterations;       /* over the whole load */
+    int *material_uses;         /* per scene material: how many primitives use it */
+    int material_cap, prim_cap, light_cap, mesh_cap;
+    src_span image_where;       /* first `image` block (file -1: none yet) */
+    src_span camera_where;
+    int default_material;       /* index of the implicit material, -1 until needed */
+    int out_of_memory;
+} loader;
+
+/* The values of one block's properties, by keyword; transforms in order. */
+enum { PROPS_MAX_XFORMS = 64 };
+typedef struct props {
+    const ast *block;                   /* the block itself, for "needs 'x'" errors */
+    const ast *by_keyword[KEYWORD_COUNT];
+    const ast *xforms[PROPS_MAX_XFORMS];
+    int xform_count;
+} props;
+
+/* lower.c */
+int lower_statements(loader *L, const ast *list);
+/* Parses sources.files[file] and lowers it in the current scope. */
+int loader_lower_file(loader *L, int file);
+void loader_oom(loader *L);
+
+/* lower_props.c: each returns 1 when the value is usable (given or
+ * defaulted), 0 after reporting an error. */
+int props_collect(loader *L, const ast *block, props *out);
+int props_number(loader *L, const props *p, keyword_id kw, double fallback, double *out);
+int props_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out);
+int props_color(loader *L, const props *p, keyword_id kw, rgb fallback, rgb *out);
+int props_int(loader *L, const props *p, keyword_id kw, long fallback, long lo, long hi, const char *limit_flag,
+              long *out);
+int props_name(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
+int props_string(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
+int props_require(loader *L, const props *p, keyword_id kw);
+/* The span of a property's first value (or of the block when absent). */
+src_span props_value_span(const props *p, keyword_id kw);
+int props_value_at(loader *L, const ast *node, value_kind kind, value *out);
+/* v / |v| computed without overflow or underflow (v is first divided by its
+ * largest component); 0 when v is zero or not finite. */
+int loader_unit(vec3 v, vec3 *out);
+
+/* lower_blocks.c */
+int lower_image(loader *L, const ast *block);
+int lower_camera(loader *L, const ast *block);
+int lower_ambient(loader *L, const ast *block);
+int lower_light(loader *L, const ast *block);
+int lower_material_def(loader *L, const ast *block);
+/* The material a primitive names or defines inline (index), or -1 on error. */
+int lower_material_ref(loader *L, const props *p);
+
+/* lower_prims.c */
+int lower_primitive(loader *L, const ast *block);
+
+/* validate.c: whole-scene checks after lowering, and the feature record. */
+int validate_scene(loader *L);
+
+/* scene.c: growable arrays of the scene being built; NULL when full or out of memory. */
+rf_prim *loader_add_prim(loader *L, src_span where);
+rf_light *loader_add_light(loader *L);
+rf_material *loader_add_material(loader *L);
+rf_mesh *loader_add_mesh(loader *L);
+
+#endif

@@ -1,0 +1,277 @@
+/*
+ * lower.c - walks the statements of a scene in order: constants, loops,
+ * includes and blocks.  Constants are bound when their `let` is reached, so
+ * a name can be used only after it is defined; the same holds for materials.
+ */
+/* realpath is an XSI function: it needs more than _POSIX_C_SOURCE. */
+#define _XOPEN_SOURCE 700
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "base/fileio.h"
+#include "scene/loader.h"
+#include "lang/parse.h"
+#include "base/suggest.h"
+
+void loader_oom(loader *L)
+{
+    if (!L->out_of_memory)
+        diag_report(&L->diag, DIAG_ERROR, src_span_none(), "out of memory");
+    L->out_of_memory = 1;
+}
+
+static int stop(const loader *L)
+{
+    return L->out_of_memory || diag_too_many(&L->diag);
+}
+
+static void note_first(loader *L, src_span first)
+{
+    diag_report(&L->diag, DIAG_NOTE, first, "first defined here");
+}
+
+static int lower_let(loader *L, const ast *node)
+{
+    if (node->keyword >= 0) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is a reserved word and cannot name a constant",
+                    node->text);
+        return 0;
+    }
+    if (strcmp(node->text, "pi") == 0) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "'pi' is built in and cannot be redefined");
+        return 0;
+    }
+    const binding *old = env_find(&L->env, node->text);
+    if (old) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is already defined", node->text);
+        note_first(L, old->where);
+        return 0;
+    }
+    value v;
+    if (!eval_expr(&L->env, &L->diag, node->first, &v))
+        return 0;
+    if (!env_bind(&L->env, node->text, v, node->head)) {
+        loader_oom(L);
+        return 0;
+    }
+    return 1;
+}
+
+static int loop_bound(loader *L, const ast *node, double *out)
+{
+    value v;
+    if (!eval_expr(&L->env, &L->diag, node, &v))
+        return 0;
+    if (v.kind != VAL_NUMBER || v.number != floor(v.number)) {
+        diag_report(&L->diag, DIAG_ERROR, node->span, "a loop bound must be a whole number");
+        return 0;
+    }
+    *out = v.number;
+    return 1;
+}
+
+/* The loop's iteration count is checked against the limits before the
+ * first iteration runs, so `0 .. 1e12` is refused at once. */
+static int loop_count(loader *L, const ast *node, double from, double to, long *count)
+{
+    double n = to >= from ? to - from + 1 : 0;
+    long max = L->limits->max_loop_iterations;
+    src_span range = src_span_join(node->first->span, node->first->next->span);
+    if (n > (double)max) {
+        diag_report(&L->diag, DIAG_ERROR, range, "this loop would run %.17g times, over the limit of %ld (--max-loop)",
+                    n, max);
+        return 0;
+    }
+    if ((double)L->loop_iterations + n > (double)max) {
+        diag_report(&L->diag, DIAG_ERROR, range,
+                    "this loop would bring the iterations of the scene to %.17g, over the limit of %ld (--max-loop)",
+                    (double)L->loop_iterations + n, max);
+        return 0;
+    }
+    if (n == 0)
+        diag_report(&L->diag, DIAG_WARNING, node->first->span, "this loop runs 0 times (%.17g > %.17g)", from, to);
+    *count = (long)n;
+    return 1;
+}
+
+/* One pass of a loop body with the variable bound to x.  An error in the
+ * body would repeat on every pass, so the loop stops at the first one, and
+ * a note says which pass it was (unless the error limit hid the error). */
+static int loop_pass(loader *L, const ast *node, double x)
+{
+    int mark = L->env.count, errors = L->diag.errors;
+    value v = {VAL_NUMBER, x, {0, 0, 0}, NULL, node->head};
+    if (!env_bind(&L->env, node->text, v, node->head)) {
+        loader_oom(L);
+        return 0;
+    }
+    int ok = lower_statements(L, node->first->next->next);
+    env_restore(&L->env, mark);
+    if (!ok && L->diag.errors > errors && !diag_too_many(&L->diag))
+        diag_report(&L->diag, DIAG_NOTE, node->head, "in the pass where %s = %.17g", node->text, x);
+    return ok;
+}
+
+static int lower_for(loader *L, const ast *node)
+{
+    double from, to;
+    long count;
+    /* Both bounds are checked, so both errors are reported. */
+    int ok = loop_bound(L, node->first, &from);
+    ok &= loop_bound(L, node->first->next, &to);
+    if (!ok)
+        return 0;
+    const binding *old = env_find(&L->env, node->text);
+    if (old || strcmp(node->text, "pi") == 0) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "loop variable '%s' hides a constant of the same name",
+                    node->text);
+        if (old)
+            note_first(L, old->where);
+        return 0;
+    }
+    if (!loop_count(L, node, from, to, &count))
+        return 0;
+    L->loop_iterations += count;
+    for (long i = 0; i < count; i++)
+        if (!loop_pass(L, node, from + (double)i))
+            return 0;
+    return 1;
+}
+
+static int on_include_stack(const loader *L, const char *resolved)
+{
+    for (int i = 0; i < L->include_depth; i++)
+        if (strcmp(L->include_stack[i], resolved) == 0)
+            return 1;
+    return 0;
+}
+
+static int read_include(loader *L, const ast *node, const char *path, int *file)
+{
+    char why[512], *text = NULL;
+    size_t len = 0;
+    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
+    if (status != 0) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "%s", why);
+        return 0;
+    }
+    *file = source_set_add(&L->scene->sources, path, text, len, node->span);
+    free(text);
+    if (*file < 0)
+        loader_oom(L);
+    return *file >= 0;
+}
+
+static int lower_include(loader *L, const ast *node)
+{
+    const source_file *from = L->scene->sources.files[node->span.file];
+    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, node->text) : NULL;
+    free(dir);
+    if (!path) {
+        loader_oom(L);
+        return 0;
+    }
+    int file = -1, ok = 0;
+    char *resolved = realpath(path, NULL);
+    if (resolved && on_include_stack(L, resolved))
+        diag_report(&L->diag, DIAG_ERROR, node->head, "include cycle: '%s' is already being read", node->text);
+    else if (L->include_depth > L->limits->max_include_depth) /* the root file is not an include */
+        diag_report(&L->diag, DIAG_ERROR, node->head, "includes nested more than %ld deep (--max-include-depth)",
+                    L->limits->max_include_depth);
+    else if (read_include(L, node, path, &file))
+        ok = loader_lower_file(L, file);
+    free(resolved);
+    free(path);
+    return ok;
+}
+
+static int lower_oracle(loader *L, const ast *node)
+{
+    rf_scene *s = L->scene;
+    if (s->oracle) {
+        diag_report(&L->diag, DIAG_ERROR, node->head, "a scene names one oracle; '%s' is already named", s->oracle);
+        return 0;
+    }
+    s->oracle = malloc(strlen(node->text) + 1);
+    if (!s->oracle) {
+        loader_oom(L);
+        return 0;
+    }
+    strcpy(s->oracle, node->text);
+    s->oracle_where = node->head;
+    return 1;
+}
+
+static int lower_block(loader *L, const ast *node)
+{
+    switch (node->keyword) {
+    case KW_MATERIAL: return lower_material_def(L, node);
+    case KW_IMAGE: return lower_image(L, node);
+    case KW_CAMERA: return lower_camera(L, node);
+    case KW_AMBIENT: return lower_ambient(L, node);
+    case KW_POINT_LIGHT:
+    case KW_DISTANT_LIGHT:
+    case KW_DISTRIBUTED_LIGHT: return lower_light(L, node);
+    case KW_SPHERE:
+    case KW_PLANE:
+    case KW_TRIANGLE:
+    case KW_DISK:
+    case KW_BOX:
+    case KW_MESH: return lower_primitive(L, node);
+    default:
+        diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is a property, not a statement",
+                    keyword_name((keyword_id)node->keyword));
+        return 0;
+    }
+}
+
+static int lower_statement(loader *L, const ast *node)
+{
+    switch (node->kind) {
+    case AST_LET: return lower_let(L, node);
+    case AST_FOR: return lower_for(L, node);
+    case AST_INCLUDE: return lower_include(L, node);
+    case AST_ORACLE: return lower_oracle(L, node);
+    default: return lower_block(L, node);
+    }
+}
+
+/* Lowers every statement (to report as many errors as the limit allows);
+ * returns 1 when all of them were valid. */
+int lower_statements(loader *L, const ast *list)
+{
+    int ok = 1;
+    for (const ast *node = list->first; node && !stop(L); node = node->next)
+        ok &= lower_statement(L, node);
+    return ok && !stop(L);
+}
+
+int loader_lower_file(loader *L, int file)
+{
+    const char *path = L->scene->sources.files[file]->path;
+    char *resolved = realpath(path, NULL);
+    if (!resolved) {
+        resolved = malloc(strlen(path) + 1);
+        if (resolved)
+            strcpy(resolved, path);
+    }
+    char **stack = resolved ? realloc(L->include_stack, (size_t)(L->include_depth + 1) * sizeof *stack) : NULL;
+    if (!stack) {
+        free(resolved);
+        loader_oom(L);
+        return 0;
+    }
+    L->include_stack = stack;
+    stack[L->include_depth++] = resolved;
+    int errors = L->diag.errors;
+    ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
+    int ok = 0;
+    if (!tree)
+        loader_oom(L);
+    else if (L->diag.errors == errors)
+        ok = lower_statements(L, tree);
+    /* Nested includes may have moved the stack: not `stack` here. */
+    free(L->include_stack[--L->include_depth]);
+    return ok;
+}

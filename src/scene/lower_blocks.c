@@ -1,0 +1,426 @@
+/*
+ * lower_blocks.c - image, camera, ambient, lights and materials: read the
+ * properties, apply the documented defaults (spec/language.md), check ranges
+ * at the offending value, and append to the scene.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scene/loader.h"
+#include "base/suggest.h"
+
+/* Reports unless lo <= x <= hi (lo_open/hi_open make an end exclusive). */
+static int in_range(loader *L, src_span at, const char *what, double x, double lo, int lo_open, double hi,
+                    int hi_open)
+{
+    int ok = (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
+    if (ok)
+        return 1;
+    if (isinf(hi))
+        diag_report(&L->diag, DIAG_ERROR, at, "%s must be %s %g, got %.17g", what, lo_open ? ">" : ">=", lo, x);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "%s must be in %c%g, %g%c, got %.17g", what, lo_open ? '(' : '[',
+                    lo, hi, hi_open ? ')' : ']', x);
+    return 0;
+}
+
+static int color_in_range(loader *L, src_span at, const char *what, rgb c, double lo, double hi)
+{
+    const char *channel[3] = {"red", "green", "blue"};
+    double v[3] = {c.x, c.y, c.z};
+    for (int i = 0; i < 3; i++) {
+        if (v[i] < lo || v[i] > hi) {
+            if (isinf(hi))
+                diag_report(&L->diag, DIAG_ERROR, at, "%s must be >= %g, got %.17g (%s)", what, lo, v[i], channel[i]);
+            else
+                diag_report(&L->diag, DIAG_ERROR, at, "%s must be in [%g, %g], got %.17g (%s)", what, lo, hi, v[i],
+                            channel[i]);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* A direction or normal: any non-zero length, returned normalised. */
+static int direction(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
+{
+    if (!props_vector(L, p, kw, fallback, out))
+        return 0;
+    if (!loader_unit(*out, out)) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must not be a zero-length vector",
+                    keyword_name(kw));
+        return 0;
+    }
+    return 1;
+}
+
+static int first_block(loader *L, const ast *block, src_span *seen)
+{
+    if (seen->file < 0) {
+        *seen = block->head;
+        return 1;
+    }
+    int line, col;
+    source_line_col(L->scene->sources.files[seen->file], seen->begin, &line, &col);
+    diag_report(&L->diag, DIAG_ERROR, block->head, "a second '%s' block (the first is at line %d)",
+                keyword_name((keyword_id)block->keyword), line);
+    return 0;
+}
+
+int lower_image(loader *L, const ast *block)
+{
+    props p;
+    rf_image_spec *im = &L->scene->image;
+    const rf_limits *lim = L->limits;
+    long w, h, k, depth;
+    int first = first_block(L, block, &L->image_where);
+    if (!props_collect(L, block, &p) || !first)
+        return 0;
+    int ok = props_int(L, &p, KW_WIDTH, im->width, 1, lim->max_width, "--max-width", &w);
+    ok &= props_int(L, &p, KW_HEIGHT, im->height, 1, lim->max_height, "--max-height", &h);
+    ok &= props_int(L, &p, KW_SAMPLES, im->samples, 1, lim->max_samples, "--max-samples", &k);
+    ok &= props_int(L, &p, KW_MAX_DEPTH, im->max_depth, 1, lim->max_depth, "--max-depth-limit", &depth);
+    ok &= props_color(L, &p, KW_BACKGROUND, im->background, &im->background) &&
+          color_in_range(L, props_value_span(&p, KW_BACKGROUND), "background", im->background, 0, HUGE_VAL);
+    if (ok && (double)w * (double)h > (double)lim->max_pixels) {
+        diag_report(&L->diag, DIAG_ERROR, block->head, "%ld x %ld pixels is over the limit of %ld (--max-pixels)",
+                    w, h, lim->max_pixels);
+        ok = 0;
+    }
+    im->width = (int)w;
+    im->height = (int)h;
+    im->samples = (int)k;
+    im->max_depth = (int)depth;
+    return ok;
+}
+
+static int camera_kind(loader *L, const props *p, rf_camera *cam)
+{
+    const ast *persp = p->by_keyword[KW_PERSPECTIVE], *ortho = p->by_keyword[KW_ORTHOGRAPHIC];
+    if (persp && ortho) {
+        diag_report(&L->diag, DIAG_ERROR, ortho->head, "a camera is either perspective or orthographic, not both");
+        return 0;
+    }
+    cam->kind = ortho ? CAMERA_ORTHOGRAPHIC : CAMERA_PERSPECTIVE;
+    const ast *wrong = ortho ? p->by_keyword[KW_FOV] : p->by_keyword[KW_WIDTH];
+    if (wrong) {
+        diag_report(&L->diag, DIAG_ERROR, wrong->head, "'%s' applies to %s cameras; this one is %s",
+                    keyword_name((keyword_id)wrong->keyword), ortho ? "perspective" : "orthographic",
+                    ortho ? "orthographic" : "perspective");
+        return 0;
+    }
+    return 1;
+}
+
+/* forward = look_at - eye; right = forward x up; true_up = right x forward.
+ * When look_at - eye overflows, half of each gives the same direction. */
+static int camera_basis(loader *L, const props *p, rf_camera *cam)
+{
+    vec3 view = vec_sub(cam->look_at, cam->eye), up;
+    if (!vec_is_finite(view))
+        view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
+    if (!loader_unit(view, &cam->forward)) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_LOOK_AT] ? KW_LOOK_AT : KW_EYE),
+                    "look_at must differ from eye (the view direction has zero length)");
+        return 0;
+    }
+    loader_unit(cam->up, &up);
+    vec3 side = vec_cross(cam->forward, up);
+    if (vec_length(side) < 1e-9) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP),
+                    "up is parallel to the view direction (look_at - eye)");
+        return 0;
+    }
+    cam->right = vec_normalize(side);
+    cam->true_up = vec_normalize(vec_cross(cam->right, cam->forward));
+    return 1;
+}
+
+int lower_camera(loader *L, const ast *block)
+{
+    props p;
+    rf_camera *cam = &L->scene->camera;
+    int first = first_block(L, block, &L->camera_where);
+    if (!props_collect(L, block, &p) || !first)
+        return 0;
+    cam->where = block->head;
+    if (!camera_kind(L, &p, cam))
+        return 0;
+    int ok = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
+    ok &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
+    ok &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
+    if (ok && vec_length(cam->up) == 0) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(&p, KW_UP), "up must not be a zero-length vector");
+        ok = 0;
+    }
+    ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov) &&
+          in_range(L, props_value_span(&p, KW_FOV), "fov", cam->fov, 0, 1, 180, 1);
+    ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width) &&
+          in_range(L, props_value_span(&p, KW_WIDTH), "width", cam->width, 0, 1, HUGE_VAL, 0);
+    return ok && camera_basis(L, &p, cam);
+}
+
+int lower_ambient(loader *L, const ast *block)
+{
+    props p;
+    rgb color;
+    if (!props_collect(L, block, &p) || !props_require(L, &p, KW_COLOR) ||
+        !props_color(L, &p, KW_COLOR, vec_splat(0), &color) ||
+        !color_in_range(L, props_value_span(&p, KW_COLOR), "ambient color", color, 0, HUGE_VAL))
+        return 0;
+    L->scene->ambient = vec_add(L->scene->ambient, color);
+    return 1;
+}
+
+static int falloff(loader *L, const props *p, rf_falloff *out)
+{
+    static const char *const names[] = {"linear", "inverse_square", "none"};
+    const char *name;
+    src_span at;
+    *out = FALLOFF_LINEAR;
+    if (!props_name(L, p, KW_FALLOFF, &name, &at))
+        return 0;
+    if (!name)
+        return 1;
+    for (int i = 0; i < 3; i++) {
+        if (strcmp(name, names[i]) == 0) {
+            *out = (rf_falloff)i;
+            return 1;
+        }
+    }
+    const char *hint = suggest_nearest(name, strlen(name), names, 3);
+    diag_report(&L->diag, DIAG_ERROR, at, "unknown falloff '%s'; %s%s%s", name, hint ? "did you mean '" : "",
+                hint ? hint : "it is linear, inverse_square or none", hint ? "'?" : "");
+    return 0;
+}
+
+/* power and, for lights that have a distance, d0 and falloff. */
+static int light_common(loader *L, const props *p, rf_light *light)
+{
+    int ok = props_color(L, p, KW_POWER, vec_splat(1), &light->power) &&
+             color_in_range(L, props_value_span(p, KW_POWER), "power", light->power, 0, HUGE_VAL);
+    if (light->kind == LIGHT_DISTANT)
+        return ok;
+    ok &= props_number(L, p, KW_D0, 0, &light->d0) &&
+          in_range(L, props_value_span(p, KW_D0), "d0", light->d0, 0, 0, HUGE_VAL, 0);
+    return ok & falloff(L, p, &light->falloff);
+}
+
+static int rectangle_light(loader *L, const props *p, rf_light *light)
+{
+    const ast *prop = p->by_keyword[KW_RECTANGLE];
+    value corner, u, v;
+    if (!props_value_at(L, prop->first, VAL_VECTOR, &corner) ||
+        !props_value_at(L, prop->first->next, VAL_VECTOR, &u) ||
+        !props_value_at(L, prop->first->next->next, VAL_VECTOR, &v))
+        return 0;
+    /* The normal from the edges' directions: their cross product itself
+     * could overflow for long edges. */
+    vec3 du, dv, far = vec_add(vec_add(corner.vector, u.vector), v.vector);
+    if (!loader_unit(u.vector, &du) || !loader_unit(v.vector, &dv) ||
+        !(vec_length(vec_cross(du, dv)) > 4 * DBL_EPSILON) || !loader_unit(vec_cross(du, dv), &light->normal)) {
+        diag_report(&L->diag, DIAG_ERROR, src_span_join(u.span, v.span),
+                    "the rectangle's edges are parallel or zero: it has no area");
+        return 0;
+    }
+    if (!vec_is_finite(far) || !vec_is_finite(vec_add(corner.vector, u.vector)) ||
+        !vec_is_finite(vec_add(corner.vector, v.vector))) {
+        diag_report(&L->diag, DIAG_ERROR, src_span_join(corner.span, v.span),
+                    "the rectangle reaches beyond the largest number (about 1.8e308)");
+        return 0;
+    }
+    light->kind = LIGHT_RECTANGLE;
+    light->position = corner.vector;
+    light->edge_u = u.vector;
+    light->edge_v = v.vector;
+    return 1;
+}
+
+static int disk_light(loader *L, const props *p, rf_light *light)
+{
+    const ast *prop = p->by_keyword[KW_DISK];
+    value center, normal, radius;
+    if (!props_value_at(L, prop->first, VAL_VECTOR, &center) ||
+        !props_value_at(L, prop->first->next, VAL_VECTOR, &normal) ||
+        !props_value_at(L, prop->first->next->next, VAL_NUMBER, &radius))
+        return 0;
+    if (!loader_unit(normal.vector, &light->normal)) {
+        diag_report(&L->diag, DIAG_ERROR, normal.span, "the disk's normal must not be a zero-length vector");
+        return 0;
+    }
+    if (!in_range(L, radius.span, "radius", radius.number, 0, 1, HUGE_VAL, 0))
+        return 0;
+    light->kind = LIGHT_DISK;
+    light->position = center.vector;
+    light->radius = radius.number;
+    return 1;
+}
+
+static int distributed_shape(loader *L, const props *p, rf_light *light)
+{
+    const ast *rect = p->by_keyword[KW_RECTANGLE], *disk = p->by_keyword[KW_DISK];
+    if (rect && disk) {
+        diag_report(&L->diag, DIAG_ERROR, disk->head, "a distributed light is a rectangle or a disk, not both");
+        return 0;
+    }
+    if (!rect && !disk) {
+        diag_report(&L->diag, DIAG_ERROR, p->block->head, "distributed_light needs 'rectangle' or 'disk'");
+        return 0;
+    }
+    long samples;
+    int ok = props_int(L, p, KW_SAMPLES, 16, 1, L->limits->max_light_samples, "--max-light-samples", &samples);
+    light->samples = (int)samples;
+    return ok & (rect ? rectangle_light(L, p, light) : disk_light(L, p, light));
+}
+
+int lower_light(loader *L, const ast *block)
+{
+    props p;
+    rf_light light;
+    memset(&light, 0, sizeof light);
+    light.where = block->head;
+    if (!props_collect(L, block, &p))
+        return 0;
+    int ok = 1;
+    switch (block->keyword) {
+    case KW_POINT_LIGHT:
+        light.kind = LIGHT_POINT;
+        ok = props_require(L, &p, KW_POSITION) && props_vector(L, &p, KW_POSITION, light.position, &light.position);
+        break;
+    case KW_DISTANT_LIGHT:
+        light.kind = LIGHT_DISTANT;
+        light.falloff = FALLOFF_NONE;
+        ok = props_require(L, &p, KW_DIRECTION) && direction(L, &p, KW_DIRECTION, light.direction, &light.direction);
+        break;
+    default:
+        ok = distributed_shape(L, &p, &light);
+    }
+    ok &= light_common(L, &p, &light);
+    rf_light *slot = ok ? loader_add_light(L) : NULL;
+    if (slot)
+        *slot = light;
+    return slot != NULL;
+}
+
+/* Material properties; the defaults are those of spec/language.md. */
+static int material_props(loader *L, const ast *block, rf_material *m)
+{
+    props p;
+    if (!props_collect(L, block, &p))
+        return 0;
+    int ok = props_color(L, &p, KW_KD, vec_splat(0.8), &m->kd) &&
+             color_in_range(L, props_value_span(&p, KW_KD), "Kd", m->kd, 0, 1);
+    ok &= props_color(L, &p, KW_KS, vec_splat(0), &m->ks) &&
+          color_in_range(L, props_value_span(&p, KW_KS), "Ks", m->ks, 0, 1);
+    ok &= props_number(L, &p, KW_N, 1, &m->n) && in_range(L, props_value_span(&p, KW_N), "n", m->n, 0, 0, HUGE_VAL, 0);
+    ok &= props_number(L, &p, KW_T, 0, &m->t) && in_range(L, props_value_span(&p, KW_T), "t", m->t, 0, 0, 1, 0);
+    ok &= props_number(L, &p, KW_IOR, 1, &m->ior) &&
+          in_range(L, props_value_span(&p, KW_IOR), "ior", m->ior, 0, 1, HUGE_VAL, 0);
+    m->where = block->head;
+    return ok;
+}
+
+static int find_material(const rf_scene *s, const char *name)
+{
+    for (int i = 0; i < s->material_count; i++)
+        if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+static char *copy_name(loader *L, const char *name)
+{
+    char *copy = malloc(strlen(name) + 1);
+    if (!copy)
+        loader_oom(L);
+    else
+        strcpy(copy, name);
+    return copy;
+}
+
+int lower_material_def(loader *L, const ast *block)
+{
+    int previous = find_material(L->scene, block->text);
+    if (previous >= 0) {
+        int line, col;
+        src_span first = L->scene->materials[previous].where;
+        source_line_col(L->scene->sources.files[first.file], first.begin, &line, &col);
+        diag_report(&L->diag, DIAG_ERROR, block->head, "material '%s' is already defined (at line %d)",
+                    block->text, line);
+        return 0;
+    }
+    rf_material m;
+    memset(&m, 0, sizeof m);
+    if (!material_props(L, block, &m))
+        return 0;
+    m.where = block->head;
+    rf_material *slot = loader_add_material(L);
+    if (!slot || !(m.name = copy_name(L, block->text)))
+        return 0;
+    *slot = m;
+    return 1;
+}
+
+static int default_material(loader *L)
+{
+    if (L->default_material >= 0)
+        return L->default_material;
+    rf_material *m = loader_add_material(L);
+    if (!m)
+        return -1;
+    memset(m, 0, sizeof *m);
+    m->kd = vec_splat(0.8);
+    m->n = 1;
+    m->ior = 1;
+    m->where = src_span_none();
+    L->default_material = L->scene->material_count - 1;
+    return L->default_material;
+}
+
+static int named_material(loader *L, const char *name, src_span at)
+{
+    int index = find_material(L->scene, name);
+    if (index >= 0)
+        return index;
+    const char *names[256];
+    int count = 0;
+    for (int i = 0; i < L->scene->material_count && count < 256; i++)
+        if (L->scene->materials[i].name)
+            names[count++] = L->scene->materials[i].name;
+    const char *hint = suggest_nearest(name, strlen(name), names, count);
+    if (hint)
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s'?", name, hint);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s' (define it with `material %s { ... }` before use)",
+                    name, name);
+    return -1;
+}
+
+int lower_material_ref(loader *L, const props *p)
+{
+    const ast *prop = p->by_keyword[KW_MATERIAL];
+    int index;
+    if (!prop) {
+        index = default_material(L);
+    } else if (prop->first->kind == AST_BLOCK) {
+        rf_material m;
+        memset(&m, 0, sizeof m);
+        if (!material_props(L, prop->first, &m))
+            return -1;
+        rf_material *slot = loader_add_material(L);
+        if (!slot)
+            return -1;
+        *slot = m;
+        index = L->scene->material_count - 1;
+    } else {
+        const char *name;
+        src_span at;
+        if (!props_name(L, p, KW_MATERIAL, &name, &at))
+            return -1;
+        index = named_material(L, name, at);
+    }
+    if (index >= 0)
+        L->material_uses[index]++;
+    return index;
+}

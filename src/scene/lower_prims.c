@@ -1,0 +1,447 @@
+/*
+ * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements.
+ *
+ * Transforms are applied in the order written.  They are baked into the
+ * shape's parameters whenever the transformed shape is the same kind of
+ * shape (see rf_prim in scene.h); otherwise the primitive keeps its local
+ * parameters and the matrix pair, and is intersected in its own frame.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "base/fileio.h"
+#include "scene/loader.h"
+#include "lang/obj.h"
+
+static int one_transform(loader *L, const ast *prop, xform *out)
+{
+    value v;
+    if (!eval_expr(&L->env, &L->diag, prop->first, &v))
+        return 0;
+    if (v.kind == VAL_NUMBER && prop->keyword == KW_SCALE)
+        v.vector = vec_splat(v.number);
+    else if (v.kind != VAL_VECTOR) {
+        diag_report(&L->diag, DIAG_ERROR, v.span, "%s takes a vector%s", keyword_name((keyword_id)prop->keyword),
+                    prop->keyword == KW_SCALE ? " or a number" : "");
+        return 0;
+    }
+    if (prop->keyword == KW_TRANSLATE) {
+        *out = xform_translate(v.vector);
+    } else if (prop->keyword == KW_ROTATE) {
+        *out = xform_rotate_xyz(v.vector);
+    } else {
+        if (v.vector.x == 0 || v.vector.y == 0 || v.vector.z == 0) {
+            diag_report(&L->diag, DIAG_ERROR, v.span, "scale must not be zero along any axis (it would flatten the shape)");
+            return 0;
+        }
+        *out = xform_scale(v.vector);
+    }
+    return 1;
+}
+
+/* The product of the transforms, first written applied first. */
+static int transforms(loader *L, const props *p, xform *to_world, xform *to_local)
+{
+    *to_world = xform_identity();
+    for (int i = 0; i < p->xform_count; i++) {
+        xform step;
+        if (!one_transform(L, p->xforms[i], &step))
+            return 0;
+        *to_world = xform_compose(&step, to_world);
+    }
+    if (!xform_invert(to_world, to_local)) {
+        diag_report(&L->diag, DIAG_ERROR, p->xforms[p->xform_count - 1]->head,
+                    "these transforms cannot be undone (the matrix is singular)");
+        return 0;
+    }
+    return 1;
+}
+
+static double determinant(const xform *a)
+{
+    const double(*m)[4] = a->m;
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+static int positive(loader *L, const props *p, keyword_id kw, double fallback, double *out)
+{
+    if (!props_number(L, p, kw, fallback, out))
+        return 0;
+    if (*out > 0)
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must be > 0, got %.17g", keyword_name(kw), *out);
+    return 0;
+}
+
+static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
+{
+    if (!props_vector(L, p, kw, fallback, out))
+        return 0;
+    if (loader_unit(*out, out))
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must not be a zero-length vector", keyword_name(kw));
+    return 0;
+}
+
+/* A normal taken through the inverse transpose, made unit.  When that is
+ * impossible the raw result (zero or not finite) is kept, and in_range
+ * refuses the primitive. */
+static vec3 transformed_normal(const xform *to_local, vec3 n)
+{
+    vec3 raw = xform_normal(to_local, n), unit;
+    return loader_unit(raw, &unit) ? unit : raw;
+}
+
+/* Keeps the local frame when the shape cannot absorb the transform. */
+static void keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+{
+    prim->has_xform = 1;
+    prim->to_world = *to_world;
+    prim->to_local = *to_local;
+}
+
+static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
+{
+    double s;
+    if (xform_is_identity(w))
+        return;
+    if (xform_is_similarity(w, &s)) {
+        prim->u.sphere.center = xform_point(w, prim->u.sphere.center);
+        prim->u.sphere.radius *= s;
+    } else {
+        keep_frame(prim, w, l);
+    }
+}
+
+static void place_disk(rf_prim *prim, const xform *w, const xform *l)
+{
+    double s;
+    if (xform_is_identity(w))
+        return;
+    if (xform_is_similarity(w, &s)) {
+        prim->u.disk.center = xform_point(w, prim->u.disk.center);
+        prim->u.disk.normal = transformed_normal(l, prim->u.disk.normal);
+        prim->u.disk.radius *= s;
+    } else {
+        keep_frame(prim, w, l);
+    }
+}
+
+static int is_axis_aligned(const xform *w)
+{
+    return w->m[0][1] == 0 && w->m[0][2] == 0 && w->m[1][0] == 0 && w->m[1][2] == 0 && w->m[2][0] == 0 &&
+           w->m[2][1] == 0;
+}
+
+static void place_box(rf_prim *prim, const xform *w, const xform *l)
+{
+    if (!is_axis_aligned(w)) {
+        keep_frame(prim, w, l);
+        return;
+    }
+    vec3 a = xform_point(w, prim->u.box.lo), b = xform_point(w, prim->u.box.hi);
+    prim->u.box.lo = vec_min(a, b);
+    prim->u.box.hi = vec_max(a, b);
+}
+
+/* A triangle has no area when its edges are parallel to rounding error:
+ * the sine of the angle between them is at most 4 epsilon (computed on the
+ * edges' directions, so the size of the triangle does not matter). */
+static int degenerate(vec3 a, vec3 b, vec3 c)
+{
+    vec3 e1, e2;
+    if (!loader_unit(vec_sub(b, a), &e1) || !loader_unit(vec_sub(c, a), &e2))
+        return 1;
+    return !(vec_length(vec_cross(e1, e2)) > 4 * DBL_EPSILON);
+}
+
+/* Vertices in world space; a mirroring transform would turn the winding
+ * (and so the normal) inside out, so two corners are swapped back. */
+static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
+{
+    for (int i = 0; i < 3; i++) {
+        prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
+        if (prim->u.triangle.has_normals)
+            prim->u.triangle.n[i] = transformed_normal(l, prim->u.triangle.n[i]);
+    }
+    if (determinant(w) < 0) {
+        vec3 t = prim->u.triangle.p[1];
+        prim->u.triangle.p[1] = prim->u.triangle.p[2];
+        prim->u.triangle.p[2] = t;
+        t = prim->u.triangle.n[1];
+        prim->u.triangle.n[1] = prim->u.triangle.n[2];
+        prim->u.triangle.n[2] = t;
+    }
+}
+
+static int sphere(loader *L, const props *p, rf_prim *prim)
+{
+    prim->kind = PRIM_SPHERE;
+    int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
+    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.sphere.radius);
+    return ok;
+}
+
+static int plane(loader *L, const props *p, rf_prim *prim)
+{
+    prim->kind = PRIM_PLANE;
+    int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
+    ok &= unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.plane.normal);
+    return ok;
+}
+
+static int disk(loader *L, const props *p, rf_prim *prim)
+{
+    prim->kind = PRIM_DISK;
+    int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
+    ok &= unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.disk.normal);
+    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.disk.radius);
+    return ok;
+}
+
+static int box(loader *L, const props *p, rf_prim *prim)
+{
+    vec3 a, b;
+    prim->kind = PRIM_BOX;
+    int ok = props_require(L, p, KW_FROM);
+    ok &= props_require(L, p, KW_TO);
+    if (!ok)
+        return 0;
+    ok = props_vector(L, p, KW_FROM, vec_splat(0), &a);
+    ok &= props_vector(L, p, KW_TO, vec_splat(0), &b);
+    if (!ok)
+        return 0;
+    if (a.x == b.x || a.y == b.y || a.z == b.z) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_TO),
+                    "the box is flat: from and to must differ along every axis");
+        return 0;
+    }
+    prim->u.box.lo = vec_min(a, b);
+    prim->u.box.hi = vec_max(a, b);
+    return 1;
+}
+
+static int triangle(loader *L, const props *p, rf_prim *prim)
+{
+    prim->kind = PRIM_TRIANGLE;
+    if (!props_require(L, p, KW_VERTICES))
+        return 0;
+    const ast *v = p->by_keyword[KW_VERTICES]->first;
+    for (int i = 0; i < 3; i++, v = v->next) {
+        value corner;
+        if (!props_value_at(L, v, VAL_VECTOR, &corner))
+            return 0;
+        prim->u.triangle.p[i] = corner.vector;
+    }
+    return 1;
+}
+
+static int is_unit(vec3 n)
+{
+    return vec_is_finite(n) && fabs(vec_length(n) - 1) < 1e-9;
+}
+
+static int xform_finite(const xform *a)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(a->m[i][j]))
+                return 0;
+    return 1;
+}
+
+static int triangle_in_range(const rf_prim *prim)
+{
+    const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
+    int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
+             vec_is_finite(vec_sub(q[1], q[0])) && vec_is_finite(vec_sub(q[2], q[0])) &&
+             vec_is_finite(vec_sub(q[2], q[1]));
+    return ok && (!prim->u.triangle.has_normals || (is_unit(n[0]) && is_unit(n[1]) && is_unit(n[2])));
+}
+
+/* Placement can push a finite shape past the largest double, or leave a
+ * normal that cannot be made unit: the scene keeps no such number. */
+static int in_range(const rf_prim *prim)
+{
+    int ok = 1;
+    switch (prim->kind) {
+    case PRIM_SPHERE: ok = vec_is_finite(prim->u.sphere.center) && isfinite(prim->u.sphere.radius); break;
+    case PRIM_PLANE: ok = vec_is_finite(prim->u.plane.point) && is_unit(prim->u.plane.normal); break;
+    case PRIM_TRIANGLE: ok = triangle_in_range(prim); break;
+    case PRIM_DISK:
+        ok = vec_is_finite(prim->u.disk.center) && is_unit(prim->u.disk.normal) && isfinite(prim->u.disk.radius);
+        break;
+    case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
+    }
+    return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
+}
+
+static int check_range(loader *L, const rf_prim *prim, src_span at)
+{
+    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
+    if (in_range(prim))
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, at,
+                "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
+                kinds[prim->kind]);
+    return 0;
+}
+
+static int check_triangle(loader *L, const rf_prim *prim, src_span at)
+{
+    const vec3 *q = prim->u.triangle.p;
+    if (!degenerate(q[0], q[1], q[2]))
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, at, "degenerate triangle: its corners are on one line (no area)");
+    return 0;
+}
+
+static rf_prim *emit(loader *L, const rf_prim *prim)
+{
+    rf_prim *slot = loader_add_prim(L, prim->where);
+    if (slot)
+        *slot = *prim;
+    return slot;
+}
+
+/* Reads the OBJ file into the load's sources, so its errors point into it. */
+static int read_obj(loader *L, const char *name, src_span at, int *file)
+{
+    const source_file *from = L->scene->sources.files[at.file];
+    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
+    char why[512];
+    size_t len = 0;
+    free(dir);
+    if (!path) {
+        loader_oom(L);
+        return 0;
+    }
+    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
+    if (status == 0)
+        *file = source_set_add(&L->scene->sources, path, text, len, at);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
+    free(path);
+    free(text);
+    if (status == 0 && *file < 0)
+        loader_oom(L);
+    return status == 0 && *file >= 0;
+}
+
+static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
+{
+    int normals = t->vn[0] >= 0;
+    for (int i = 0; i < 3; i++) {
+        prim->u.triangle.p[i] = obj->positions[t->v[i]];
+        if (normals) {
+            if (!loader_unit(obj->normals[t->vn[i]], &prim->u.triangle.n[i])) {
+                diag_report(&L->diag, DIAG_ERROR, t->where, "vertex normal of zero length");
+                return 0;
+            }
+        }
+    }
+    prim->u.triangle.has_normals = normals;
+    prim->where = t->where;
+    return 1;
+}
+
+static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const xform *w, const xform *l)
+{
+    rf_mesh *mesh = &L->scene->meshes[proto->mesh];
+    mesh->first_prim = L->scene->prim_count;
+    int ok = 1;
+    for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
+        rf_prim prim = *proto;
+        if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
+            continue;
+        place_triangle(&prim, w, l);
+        if (check_range(L, &prim, prim.where) && check_triangle(L, &prim, prim.where))
+            ok = emit(L, &prim) != NULL;
+    }
+    mesh->count = L->scene->prim_count - mesh->first_prim;
+    return ok;
+}
+
+static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
+{
+    const char *name;
+    src_span at;
+    int file;
+    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !read_obj(L, name, at, &file))
+        return 0;
+    obj_mesh obj;
+    int errors = L->diag.errors;
+    if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
+        return 0;
+    rf_mesh *m = loader_add_mesh(L);
+    int ok = m != NULL;
+    if (m) {
+        m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
+        if (m->path)
+            strcpy(m->path, L->scene->sources.files[file]->path);
+        m->where = at;
+        proto->kind = PRIM_TRIANGLE;
+        proto->mesh = L->scene->mesh_count - 1;
+        ok = m->path && mesh_triangles(L, &obj, proto, w, l);
+    }
+    obj_free(&obj);
+    return ok && L->diag.errors == errors;
+}
+
+static void place(rf_prim *prim, const xform *w, const xform *l)
+{
+    switch (prim->kind) {
+    case PRIM_SPHERE: place_sphere(prim, w, l); break;
+    case PRIM_DISK: place_disk(prim, w, l); break;
+    case PRIM_BOX: place_box(prim, w, l); break;
+    case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
+    case PRIM_PLANE:
+        prim->u.plane.point = xform_point(w, prim->u.plane.point);
+        prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);
+        /* Any point of the plane names it; the one nearest the origin keeps
+         * the hit point's rounding, and so the offset of rays leaving the
+         * plane, relative to the plane's distance from the origin rather
+         * than to how far along the plane the scene wrote its point. */
+        prim->u.plane.point = vec_scale(prim->u.plane.normal,
+                                        vec_dot(prim->u.plane.normal, prim->u.plane.point));
+        break;
+    }
+}
+
+int lower_primitive(loader *L, const ast *block)
+{
+    props p;
+    rf_prim prim;
+    xform w, l;
+    memset(&prim, 0, sizeof prim);
+    prim.mesh = -1;
+    prim.where = block->head;
+    if (!props_collect(L, block, &p))
+        return 0;
+    /* Shape, then material, then transforms: the order they are usually
+     * written in, so the first error reported is the first in the text. */
+    int ok = 1;
+    switch (block->keyword) {
+    case KW_SPHERE: ok = sphere(L, &p, &prim); break;
+    case KW_PLANE: ok = plane(L, &p, &prim); break;
+    case KW_DISK: ok = disk(L, &p, &prim); break;
+    case KW_BOX: ok = box(L, &p, &prim); break;
+    case KW_TRIANGLE: ok = triangle(L, &p, &prim); break;
+    default: break;
+    }
+    prim.material = lower_material_ref(L, &p);
+    ok &= prim.material >= 0;
+    ok &= transforms(L, &p, &w, &l);
+    if (block->keyword == KW_MESH)
+        return ok && mesh(L, &p, &prim, &w, &l);
+    if (!ok)
+        return 0;
+    place(&prim, &w, &l);
+    if (!check_range(L, &prim, prim.where))
+        return 0;
+    if (prim.kind == PRIM_TRIANGLE && !check_triangle(L, &prim, props_value_span(&p, KW_VERTICES)))
+        return 0;
+    return emit(L, &prim) != NULL;
+}

@@ -1,0 +1,239 @@
+/*
+ * verify.h - a render checked against its exact image (spec/verify.md).
+ *
+ * The library side of `refray verify`, `refray oracle` and `refray
+ * compare`: the scene's family found and asked whether it accepts the
+ * scene, the exact image built at the tracer's sample points, the render
+ * timed and compared, sweeps over the light or pixel samples with the
+ * convergence order fitted, and the JSON, error-map and mask files.  The
+ * command-line driver only parses options and prints.
+ *
+ * Status codes are the exit codes of scene.h: 0 pass, 1 a check failed (an
+ * error over the tolerance, a refused scene, an unknown family), 65 a bad
+ * scene (no `oracle` statement included), 66 a missing file, 70 out of
+ * memory.  A run over many scenes exits with the largest code it met
+ * ([VERIFY-EXIT-1]): 70 > 66 > 65 > 1 > 0.
+ */
+#ifndef REFRAY_VERIFY_H
+#define REFRAY_VERIFY_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "verify/fit.h"
+#include "image/image.h"
+#include "image/metrics.h"
+#include "oracle/oracle.h"
+#include "scene/scene.h"
+
+/* Overrides of the scene's image settings; 0 keeps the scene's own. */
+typedef struct verify_opts {
+    int width, height;
+    int samples;        /* k of the k x k camera grid */
+    int max_depth;
+    int light_samples;  /* samples of every distributed light */
+    int runs;           /* renders timed, the median reported; 0 or 1: one */
+} verify_opts;
+
+/* Most renders --runs may ask for. */
+enum { VERIFY_RUNS_MAX = 99 };
+
+typedef enum verify_verdict {
+    VERIFY_PASS,        /* every compared pixel within the tolerance */
+    VERIFY_FAIL,        /* some pixel over it, or no pixel left to compare */
+    VERIFY_REFUSED,     /* unknown family, or the family refused the scene */
+    VERIFY_ERROR        /* the scene could not be loaded, has no oracle, out of memory */
+} verify_verdict;
+
+/* One render compared with its exact image. */
+typedef struct verify_result {
+    char scene[512];          /* the path as given (cut if longer) */
+    char family[64];          /* the scene's `oracle` name, "" when none */
+    verify_verdict verdict;
+    int status;               /* this scene's exit code (see the top) */
+    char reason[512];         /* why, for REFUSED, ERROR and a FAIL with no pixels */
+    int width, height, samples, max_depth;
+    int light_samples;        /* the override, 0 for each light's own */
+    int sampled;              /* the family converges with the light samples */
+    image_metrics metrics;    /* valid when verdict is PASS or FAIL */
+    double tolerance;         /* relative, the family's for this render */
+    double render_seconds;    /* wall time of render_image, BVH build included
+                                 (the median of opts.runs renders) */
+    double oracle_seconds;    /* wall time of oracle_image */
+    long rays;                /* every ray traced: camera, shadow, reflected, refracted */
+} verify_result;
+
+/* An exact image and its excluded pixels. */
+typedef struct verify_exact {
+    const oracle_family *family;
+    oracle_view view;
+    rf_image image;
+    unsigned char *excluded;  /* width*height flags */
+    long excluded_count;
+    double seconds;
+} verify_exact;
+
+/* The view a render with options o makes of s (the overrides applied). */
+oracle_view verify_view(const rf_scene *s, const verify_opts *o);
+
+/*
+ * The family of s, if it accepts view v.  Returns it, or NULL with the
+ * reason in why and *status 65 (no `oracle` statement) or 1 (no family of
+ * that name, or the family refused the scene: its own reason).
+ */
+const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int *status, char *why,
+                                   size_t why_size);
+
+/* Builds (and times) the exact image of f for v into e.  Returns 0 or 70
+ * (out of memory; e is then empty).  Free e with verify_exact_free. */
+int verify_exact_build(const oracle_family *f, const oracle_view *v, verify_exact *e);
+void verify_exact_free(verify_exact *e);
+
+/*
+ * Renders s with options o, compares the render with e (built for the same
+ * view) at the family's tolerance for o->light_samples, and fills r's
+ * metrics, timings, rays and verdict.  r->scene is left as it is.
+ * Returns r->status.
+ */
+int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r);
+
+/*
+ * The whole check of one loaded scene: family, exact image, render,
+ * comparison.  path names the scene in r.  Returns r->status.
+ */
+int verify_scene(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r);
+
+/* r for a scene that could not be loaded or checked: verdict ERROR. */
+void verify_result_error(verify_result *r, const char *path, int status, const char *reason);
+
+/* ---- Sweeps: error against cost ---- */
+
+typedef enum verify_sweep_kind {
+    VERIFY_SWEEP_LIGHT,   /* samples=...: light samples per distributed light */
+    VERIFY_SWEEP_PIXEL    /* pixel-samples=...: k of the k x k camera grid */
+} verify_sweep_kind;
+
+/* Largest number of steps a sweep takes. */
+enum { VERIFY_SWEEP_MAX = 64 };
+
+typedef struct verify_sweep {
+    verify_sweep_kind kind;
+    int values[VERIFY_SWEEP_MAX];
+    int count;
+} verify_sweep;
+
+/*
+ * Parses "samples=1,2,4" or "pixel-samples=1,2,3" into sw (values are
+ * whole numbers from 1 to max, at most VERIFY_SWEEP_MAX of them).  Returns
+ * 1, or 0 with the reason in why.
+ */
+int verify_sweep_parse(const char *text, int max, verify_sweep *sw, char *why, size_t why_size);
+
+/* "samples" or "pixel-samples". */
+const char *verify_sweep_name(verify_sweep_kind kind);
+
+/* The cost N of a step: the light samples, or k*k camera rays per pixel. */
+double verify_sweep_n(const verify_sweep *sw, int step);
+
+/*
+ * Runs every step of sw on s: steps[i] is the check of s with o and the
+ * swept setting replaced by sw->values[i] (the exact image is built once
+ * for a light sweep, once per k for a pixel sweep).  Returns the largest
+ * status of the steps; steps past a failed exact image (70) or a refused
+ * scene are not run (steps[0] then holds the reason and *ran is 1).
+ */
+int verify_sweep_run(const rf_scene *s, const char *path, const verify_opts *o, const verify_sweep *sw,
+                     verify_result *steps, int *ran);
+
+/* A convergence order, with whether it means anything. */
+typedef struct verify_order {
+    fit_line line;
+    int meaningful;      /* 0: the note says why the slope is not an order */
+    char note[160];
+} verify_order;
+
+/*
+ * The orders of a sweep: RMS error against N (verify_sweep_n) and against
+ * render seconds, fitted in log-log ([VERIFY-FIT-1]).  Steps whose RMS is at
+ * the round-off floor (<= VERIFY_ROUNDOFF x the reference's peak) are left
+ * out; with fewer than 3 steps left the slope is marked not meaningful
+ * ([VERIFY-FIT-2]): a deterministic scene's error is round-off at every N,
+ * and a slope through round-off would be noise.
+ */
+#define VERIFY_ROUNDOFF 1e-10
+void verify_sweep_orders(const verify_sweep *sw, const verify_result *steps, int count, verify_order *vs_n,
+                         verify_order *vs_time);
+
+/* The order stratified light sampling should show, as text for reports. */
+const char *verify_expected_order(const verify_result *r, const verify_sweep *sw);
+
+/* ---- Output ---- */
+
+/* s as a JSON string, quotes included: ", \ and control bytes escaped
+ * (\n, \t, ... or \u00XX); other bytes (UTF-8 included) as they are. */
+void verify_json_string(FILE *fp, const char *s);
+
+/* v as a JSON number with 17 significant digits; null when not finite
+ * (JSON has no infinity: an exact match has PSNR +inf, written null). */
+void verify_json_number(FILE *fp, double v);
+
+/* The metrics of a comparison as JSON object members (no braces), e.g.
+ * "max_abs": 0.1, "rms": ..., "over": 1 ... */
+void verify_json_metrics(FILE *fp, const image_metrics *m, double tolerance);
+
+/* One result as a JSON object. */
+void verify_json_result(FILE *fp, const verify_result *r);
+
+/* Results as a JSON array, one object per line, and a final newline. */
+void verify_json_results(FILE *fp, const verify_result *r, int count);
+
+/* A sweep of one scene as a JSON object: steps and both orders. */
+void verify_json_sweep(FILE *fp, const verify_sweep *sw, const verify_result *steps, int count,
+                       const verify_order *vs_n, const verify_order *vs_time);
+
+/* The TSV header line of sweeps (spec/verify.md, [VERIFY-TSV-1]). */
+void verify_tsv_header(FILE *fp);
+
+/* One TSV row per step, then one "# fit" comment line per order. */
+void verify_tsv_sweep(FILE *fp, const verify_sweep *sw, const verify_result *steps, int count,
+                      const verify_order *vs_n, const verify_order *vs_time);
+
+/* ---- Error maps and masks ---- */
+
+enum { VERIFY_MAP_COLOUR = 0, VERIFY_MAP_GREY = 1 };
+
+/*
+ * The error map of a against b: e = max over channels |a - b| / max_abs,
+ * (max_abs over the pixels not excluded; e = 0 everywhere when it is 0),
+ * shown as a grey level or on the false-colour scale black - purple - red -
+ * orange - yellow - white ([VERIFY-MAP-1]); excluded pixels (mask non-zero,
+ * mask may be NULL) are teal.  The colours are display (sRGB-encoded)
+ * values; out holds them made linear, so that an 8-bit PNG written with the
+ * default options stores exactly these display colours.  Returns 0 or
+ * IMG_EOSERR / IMG_ESOFTWARE (sizes differ).
+ */
+int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *mask, int style, rf_image *out);
+
+/* The display colour of e in [0, 1] on the scale of style. */
+rgb verify_map_colour(double e, int style);
+
+/* |a - b| per channel (excluded pixels 0): the raw error, for EXR/PFM maps. */
+int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *mask, rf_image *out);
+
+/*
+ * Writes a width x height mask (non-zero = excluded) to path: .pgm as a
+ * binary 8-bit PGM (P5; 255 excluded, 0 compared), atomically; any image
+ * extension through img_write (white excluded, black compared).  Returns
+ * 0 or an IMG_ code with the reason in err.
+ */
+int verify_mask_write(const char *path, const unsigned char *mask, int width, int height, char *err,
+                      size_t errlen);
+
+/*
+ * Reads a mask of width x height from path (.pgm: binary P5, maxval <= 255;
+ * others through img_read): a pixel is excluded when any of its values is
+ * above half the range.  *mask is malloc'd.  Returns 0, or an IMG_ code
+ * with the reason in err (IMG_EDATA for a size other than width x height).
+ */
+int verify_mask_read(const char *path, int width, int height, unsigned char **mask, char *err, size_t errlen);
+
+#endif
