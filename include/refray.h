@@ -18,7 +18,7 @@
 
 #include "scene/scene.h"
 #include "render/render.h"
-#include "image/image.h"
+#include "image/image_file.h"
 #include "image/metrics.h"
 
 #define REFRAY_API_VERSION 1

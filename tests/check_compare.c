@@ -20,6 +20,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "image/image_file.h"
 #include "testlib.h"
 #include "verify/verify.h"
 

@@ -23,7 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "image/image.h"
+#include "image/image_file.h"
 
 #ifndef REFRAY_HAVE_PNG
 #define REFRAY_HAVE_PNG 0

@@ -1,66 +1,12 @@
 /*
- * cli.h - the refray command-line driver: `refray COMMAND [ARGS]`.
- * Each command lives in its own cli_<command>.c and returns an exit code
- * (sysexits values, see scene.h); only main.c calls exit.
+ * cli.h - the refray program: command dispatch, help and version.
  */
 #ifndef REFRAY_CLI_H
 #define REFRAY_CLI_H
 
-#include "render/render.h"
-#include "scene/scene.h"
-
 #define REFRAY_VERSION "0.1.0"
 
+/* Runs the command argv[1] and returns the process's exit code. */
 int cli_main(int argc, char **argv);
-
-int cli_check(int argc, char **argv);
-int cli_render(int argc, char **argv);
-int cli_export(int argc, char **argv);
-
-/* Options every scene-reading command accepts: the input limits and
- * whether warnings are shown.  Returns the number of argv entries consumed
- * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
-typedef struct cli_scene_opts {
-    rf_limits limits;
-    int warnings;
-} cli_scene_opts;
-
-void cli_scene_opts_init(cli_scene_opts *o);
-int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
-
-/* The value after option argv[*i] (advancing *i); 0 with the usage error
- * printed when it is missing. */
-int cli_take_value(int argc, char **argv, int *i, const char **value);
-
-/* A whole-number option value in [1, hi] into *out; 0 after the usage error. */
-int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
-
-/* The options that size a render (--width --height --samples --max-depth
- * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
-int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i);
-
-/* One command's own options: 1 consumed (with its value), 0 an error
- * already reported, -1 not one of its options. */
-typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
-
-/*
- * The argument loop of a command that reads one scene: --help (prints help,
- * returns -1), the shared scene options, one SCENE into *input, and the
- * command's own options through option.  Returns 0 to go on, -1 after help,
- * or REFRAY_EXIT_USAGE after the error was printed.
- */
-int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
-                        const char **input, cli_option_fn option, void *args);
-
-/* Parses a whole number option value in [lo, hi]; prints the usage error. */
-int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
-int cli_parse_double(const char *option, const char *text, double *out);
-
-/* Prints "refray: error: ..." for command-line mistakes, returns 64. */
-int cli_usage_error(const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 1, 2)))
-#endif
-    ;
 
 #endif

@@ -5,7 +5,8 @@
  */
 #include <stdio.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 
 static const char check_help[] =
     "usage: refray check [OPTIONS] FILE...\n"

@@ -7,7 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli_verify.h"
+#include "image/image_file.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 
 static const char compare_help[] =
     "usage: refray compare A B [OPTIONS]\n"

@@ -6,7 +6,8 @@
  */
 #include <stdio.h>
 #include <string.h>
-#include "cli/cli.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 #include "export/export_pov.h"
 
 typedef struct export_args {

@@ -7,7 +7,9 @@
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
-#include "cli/cli_verify.h"
+#include "image/image_file.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 
 static const char oracle_help[] =
     "usage: refray oracle SCENE -o EXACT [OPTIONS]\n"

@@ -10,9 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "cli/cli.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 #include "base/fileio.h"
-#include "image/image.h"
+#include "image/image_file.h"
 #include "render/render.h"
 
 static volatile sig_atomic_t interrupted;

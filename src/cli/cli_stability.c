@@ -17,8 +17,9 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include "cli/cli.h"
-#include "image/image.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "image/image_file.h"
 #include "verify/stability.h"
 
 extern char **environ;

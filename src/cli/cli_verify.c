@@ -7,7 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/cli_verify.h"
+#include "cli/cli_args.h"
+#include "cli/commands.h"
 
 static const char verify_help[] =
     "usage: refray verify [OPTIONS] SCENE...\n"
@@ -43,43 +44,6 @@ typedef struct verify_args {
     int path_count;
 } verify_args;
 
-
-int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i)
-{
-    const char *opt = argv[*i];
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
-    if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
-    return -1;
-}
-
-int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size)
-{
-    if ((double)v->width * v->height <= (double)lim->max_pixels)
-        return 1;
-    snprintf(why, why_size, "the image would be %dx%d, over --max-pixels %ld", v->width, v->height,
-             lim->max_pixels);
-    return 0;
-}
-
-int cli_image_status(int img_status)
-{
-    switch (img_status) {
-    case IMG_OK: return REFRAY_EXIT_OK;
-    case IMG_EUSAGE: return REFRAY_EXIT_USAGE;
-    case IMG_EDATA: return REFRAY_EXIT_DATAERR;
-    case IMG_ENOINPUT: return REFRAY_EXIT_NOINPUT;
-    case IMG_EIO: return REFRAY_EXIT_IOERR;
-    default: return REFRAY_EXIT_SOFTWARE;
-    }
-}
 
 /* 1: consumed, 0: error (reported), -1: not a verify option. */
 static int verify_option(verify_args *a, int argc, char **argv, int *i)
@@ -363,8 +327,6 @@ static int sweep_all(const verify_args *a, verify_result *steps)
 }
 
 /* In cli_stability.c: `verify --stability SCENE` is the stability tool. */
-int cli_stability(int argc, char **argv);
-
 int cli_verify(int argc, char **argv)
 {
     for (int i = 1; i < argc; i++)

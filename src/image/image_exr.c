@@ -20,7 +20,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 #include <openexr.h>
-#include "image/image.h"
+#include "image/codec.h"
 
 /* The user data of both stream directions. */
 typedef struct exr_stream {

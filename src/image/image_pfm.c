@@ -22,7 +22,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "image/image.h"
+#include "image/codec.h"
 #include "image/tonemap.h"
 
 static int write_failed(char *err, size_t errlen)

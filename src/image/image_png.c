@@ -17,7 +17,7 @@
 #include <png.h>
 #include <stdlib.h>
 #include <string.h>
-#include "image/image.h"
+#include "image/codec.h"
 #include "image/tonemap.h"
 
 /* What libpng's error callback leaves for us before it longjmps. */

@@ -45,7 +45,6 @@ typedef struct props {
 int lower_statements(loader *L, const ast *list);
 /* Parses sources.files[file] and lowers it in the current scope. */
 int loader_lower_file(loader *L, int file);
-void loader_oom(loader *L);
 
 /* lower_props.c: each returns 1 when the value is usable (given or
  * defaulted), 0 after reporting an error. */
@@ -80,7 +79,13 @@ int lower_primitive(loader *L, const ast *block);
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 
-/* scene.c: growable arrays of the scene being built; NULL when full or out of memory. */
+/* loader.c: the load's state; an out-of-memory error is reported once. */
+void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings);
+void loader_free(loader *L);
+void loader_oom(loader *L);
+/* The defaults of spec/language.md for what a scene does not say. */
+void loader_scene_defaults(rf_scene *s);
+/* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
 rf_prim *loader_add_prim(loader *L, src_span where);
 rf_light *loader_add_light(loader *L);
 rf_material *loader_add_material(loader *L);

@@ -14,13 +14,6 @@
 #include "lang/parse.h"
 #include "base/suggest.h"
 
-void loader_oom(loader *L)
-{
-    if (!L->out_of_memory)
-        diag_report(&L->diag, DIAG_ERROR, src_span_none(), "out of memory");
-    L->out_of_memory = 1;
-}
-
 static int stop(const loader *L)
 {
     return L->out_of_memory || diag_too_many(&L->diag);

@@ -1,11 +1,8 @@
 /*
- * scene.c - loading a scene: read, parse, lower, validate; and freeing it.
+ * scene.c - the scene model's defaults and its release.
  */
-#include <limits.h>
 #include <stdlib.h>
-#include <string.h>
-#include "base/fileio.h"
-#include "scene/loader.h"
+#include "scene/scene.h"
 
 rf_limits scene_default_limits(void)
 {
@@ -26,115 +23,6 @@ rf_limits scene_default_limits(void)
     return l;
 }
 
-/* The defaults of spec/language.md for what a scene does not say. */
-static void scene_defaults(rf_scene *s)
-{
-    s->image.width = 640;
-    s->image.height = 480;
-    s->image.samples = 1;
-    s->image.max_depth = 5;
-    s->image.background = vec_splat(0);
-    s->camera.kind = CAMERA_PERSPECTIVE;
-    s->camera.eye = vec_make(0, 0, 5);
-    s->camera.look_at = vec_make(0, 0, 0);
-    s->camera.up = vec_make(0, 1, 0);
-    s->camera.fov = 60;
-    s->camera.width = 2;
-    s->camera.forward = vec_make(0, 0, -1);
-    s->camera.right = vec_make(1, 0, 0);
-    s->camera.true_up = vec_make(0, 1, 0);
-    s->camera.where = src_span_none();
-    s->oracle_where = src_span_none();
-    source_set_init(&s->sources);
-}
-
-/* Doubles *cap until count + 1 fits; refuses past limit.  0 on failure. */
-static int grow(void **items, int *cap, int count, size_t size, long limit)
-{
-    if (count < *cap)
-        return 1;
-    if (count >= limit || count >= INT_MAX / 2)
-        return 0;
-    int next = *cap ? 2 * *cap : 16;
-    void *grown = realloc(*items, (size_t)next * size);
-    if (!grown)
-        return 0;
-    *items = grown;
-    *cap = next;
-    return 1;
-}
-
-rf_prim *loader_add_prim(loader *L, src_span where)
-{
-    rf_scene *s = L->scene;
-    if (s->prim_count >= L->limits->max_primitives) {
-        if (s->prim_count == L->limits->max_primitives)
-            diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
-                        L->limits->max_primitives);
-        s->prim_count++;
-        return NULL;
-    }
-    void *items = s->prims;
-    if (!grow(&items, &L->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
-        loader_oom(L);
-        return NULL;
-    }
-    s->prims = items;
-    return &s->prims[s->prim_count++];
-}
-
-rf_light *loader_add_light(loader *L)
-{
-    rf_scene *s = L->scene;
-    void *items = s->lights;
-    if (!grow(&items, &L->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
-        loader_oom(L);
-        return NULL;
-    }
-    s->lights = items;
-    return &s->lights[s->light_count++];
-}
-
-rf_material *loader_add_material(loader *L)
-{
-    rf_scene *s = L->scene;
-    void *items = s->materials;
-    int cap = L->material_cap;
-    if (!grow(&items, &cap, s->material_count, sizeof *s->materials, INT_MAX)) {
-        loader_oom(L);
-        return NULL;
-    }
-    s->materials = items;
-    if (cap != L->material_cap) {
-        int *uses = realloc(L->material_uses, (size_t)cap * sizeof *uses);
-        if (!uses) {
-            L->material_cap = cap;
-            loader_oom(L);
-            return NULL;
-        }
-        L->material_uses = uses;
-        L->material_cap = cap;
-    }
-    L->material_uses[s->material_count] = 0;
-    rf_material *m = &s->materials[s->material_count++];
-    memset(m, 0, sizeof *m);
-    return m;
-}
-
-rf_mesh *loader_add_mesh(loader *L)
-{
-    rf_scene *s = L->scene;
-    void *items = s->meshes;
-    if (!grow(&items, &L->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
-        loader_oom(L);
-        return NULL;
-    }
-    s->meshes = items;
-    rf_mesh *m = &s->meshes[s->mesh_count++];
-    memset(m, 0, sizeof *m);
-    return m;
-}
-
 void scene_free(rf_scene *s)
 {
     if (!s)
@@ -152,68 +40,3 @@ void scene_free(rf_scene *s)
     free(s);
 }
 
-static void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings)
-{
-    memset(L, 0, sizeof *L);
-    L->scene = s;
-    L->limits = limits;
-    diag_init(&L->diag, &s->sources, diag_out);
-    L->diag.max_errors = (int)limits->max_errors;
-    L->diag.warnings_enabled = warnings;
-    arena_init(&L->arena);
-    env_init(&L->env);
-    L->image_where = src_span_none();
-    L->camera_where = src_span_none();
-    L->default_material = -1;
-}
-
-static void loader_free(loader *L)
-{
-    arena_free(&L->arena);
-    env_free(&L->env);
-    free(L->include_stack);
-    free(L->material_uses);
-}
-
-rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
-                          int warnings, int *status)
-{
-    rf_limits fallback = scene_default_limits();
-    rf_scene *s = calloc(1, sizeof *s);
-    loader L;
-    if (!s) {
-        *status = REFRAY_EXIT_SOFTWARE;
-        return NULL;
-    }
-    scene_defaults(s);
-    loader_init(&L, s, limits ? limits : &fallback, diag_out, warnings);
-    int file = source_set_add(&s->sources, path, text, len, src_span_none());
-    int ok = file >= 0 && loader_lower_file(&L, file) && validate_scene(&L);
-    if (file < 0)
-        loader_oom(&L);
-    *status = ok ? REFRAY_EXIT_OK : L.out_of_memory ? REFRAY_EXIT_SOFTWARE : REFRAY_EXIT_DATAERR;
-    loader_free(&L);
-    if (!ok) {
-        scene_free(s);
-        return NULL;
-    }
-    return s;
-}
-
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out, int warnings, int *status)
-{
-    rf_limits fallback = scene_default_limits();
-    char why[512], *text = NULL;
-    size_t len = 0;
-    if (!limits)
-        limits = &fallback;
-    *status = file_read_all(path, limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (*status != 0) {
-        if (diag_out)
-            fprintf(diag_out, "refray: error: %s\n", why);
-        return NULL;
-    }
-    rf_scene *s = scene_load_text(path, text, len, limits, diag_out, warnings, status);
-    free(text);
-    return s;
-}

@@ -20,7 +20,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "verify/fit.h"
-#include "image/image.h"
+#include "image/image_file.h"
 #include "image/metrics.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"

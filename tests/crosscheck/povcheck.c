@@ -20,7 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "image/image.h"
+#include "image/image_file.h"
 #include "image/metrics.h"
 #include "verify/verify.h"
 

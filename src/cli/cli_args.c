@@ -1,0 +1,204 @@
+/*
+ * cli_args.c - the options and argument loops the commands share, and the
+ * mapping of image statuses to exit codes.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli/cli_args.h"
+
+int cli_usage_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("refray: error: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputs("\n(see refray --help)\n", stderr);
+    return REFRAY_EXIT_USAGE;
+}
+
+int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    double x = strtod(text, &end);
+    if (end == text || *end || errno || x != floor(x) || x < (double)lo || x > (double)hi) {
+        cli_usage_error("%s takes a whole number from %ld to %ld, not '%s'", option, lo, hi, text);
+        return 0;
+    }
+    *out = (long)x;
+    return 1;
+}
+
+int cli_parse_double(const char *option, const char *text, double *out)
+{
+    char *end;
+    errno = 0;
+    *out = strtod(text, &end);
+    if (end == text || *end || errno || !isfinite(*out)) {
+        cli_usage_error("%s takes a number, not '%s'", option, text);
+        return 0;
+    }
+    return 1;
+}
+
+int cli_take_value(int argc, char **argv, int *i, const char **value)
+{
+    if (*i + 1 >= argc) {
+        cli_usage_error("%s needs a value", argv[*i]);
+        return 0;
+    }
+    *value = argv[++*i];
+    return 1;
+}
+
+int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
+{
+    const char *v;
+    long x;
+    if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(argv[*i - 1], v, 1, hi, &x))
+        return 0;
+    *out = (int)x;
+    return 1;
+}
+
+int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    if (strcmp(opt, "--width") == 0)
+        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+    if (strcmp(opt, "--height") == 0)
+        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+    if (strcmp(opt, "--samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+    if (strcmp(opt, "--light-samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+    if (strcmp(opt, "--max-depth") == 0)
+        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+    return -1;
+}
+
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args)
+{
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(help, stdout);
+            return -1;
+        }
+        int used = cli_scene_opt(scene, argc, argv, i);
+        if (used < 0)
+            return REFRAY_EXIT_USAGE;
+        if (used > 0) {
+            i += used - 1;
+            continue;
+        }
+        if (argv[i][0] != '-' || !argv[i][1]) {
+            if (*input)
+                return cli_usage_error("%s: one scene at a time ('%s' and '%s')", command, *input, argv[i]);
+            *input = argv[i];
+            continue;
+        }
+        int r = option(args, argc, argv, &i);
+        if (r == 0)
+            return REFRAY_EXIT_USAGE;
+        if (r < 0)
+            return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
+    }
+    if (!*input)
+        return cli_usage_error("%s: no scene given", command);
+    return 0;
+}
+
+void cli_scene_opts_init(cli_scene_opts *o)
+{
+    o->limits = scene_default_limits();
+    o->warnings = 1;
+}
+
+typedef struct limit_flag {
+    const char *name;
+    size_t offset;
+} limit_flag;
+
+#define LIMIT(flag, field) {flag, offsetof(rf_limits, field)}
+static const limit_flag limit_flags[] = {
+    LIMIT("--max-width", max_width),
+    LIMIT("--max-height", max_height),
+    LIMIT("--max-pixels", max_pixels),
+    LIMIT("--max-samples", max_samples),
+    LIMIT("--max-light-samples", max_light_samples),
+    LIMIT("--max-depth-limit", max_depth),
+    LIMIT("--max-loop", max_loop_iterations),
+    LIMIT("--max-include-depth", max_include_depth),
+    LIMIT("--max-file-size", max_file_bytes),
+    LIMIT("--max-mesh-triangles", max_mesh_triangles),
+    LIMIT("--max-primitives", max_primitives),
+    LIMIT("--max-errors", max_errors),
+    LIMIT("--max-ray-tree", max_ray_tree),
+};
+
+/* The hard ceiling of every limit: far beyond any real scene, and low
+ * enough that the products computed from them cannot overflow. */
+enum { LIMIT_CEILING = 1000000000 };
+
+int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
+{
+    if (strcmp(argv[i], "-W") == 0 || strcmp(argv[i], "--no-warnings") == 0) {
+        o->warnings = 0;
+        return 1;
+    }
+    for (size_t k = 0; k < sizeof limit_flags / sizeof limit_flags[0]; k++) {
+        if (strcmp(argv[i], limit_flags[k].name) != 0)
+            continue;
+        long *field = (long *)((char *)&o->limits + limit_flags[k].offset);
+        if (i + 1 >= argc) {
+            cli_usage_error("%s needs a value", argv[i]);
+            return -1;
+        }
+        long lo = strcmp(argv[i], "--max-errors") == 0 ? 1 : 0;
+        return cli_parse_long(argv[i], argv[i + 1], lo, LIMIT_CEILING, field) ? 2 : -1;
+    }
+    return 0;
+}
+
+int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    if (strcmp(opt, "--width") == 0)
+        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+    if (strcmp(opt, "--height") == 0)
+        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+    if (strcmp(opt, "--samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+    if (strcmp(opt, "--max-depth") == 0)
+        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+    if (allow_light && strcmp(opt, "--light-samples") == 0)
+        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+    return -1;
+}
+
+int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size)
+{
+    if ((double)v->width * v->height <= (double)lim->max_pixels)
+        return 1;
+    snprintf(why, why_size, "the image would be %dx%d, over --max-pixels %ld", v->width, v->height,
+             lim->max_pixels);
+    return 0;
+}
+
+int cli_image_status(int img_status)
+{
+    switch (img_status) {
+    case IMG_OK: return REFRAY_EXIT_OK;
+    case IMG_EUSAGE: return REFRAY_EXIT_USAGE;
+    case IMG_EDATA: return REFRAY_EXIT_DATAERR;
+    case IMG_ENOINPUT: return REFRAY_EXIT_NOINPUT;
+    case IMG_EIO: return REFRAY_EXIT_IOERR;
+    default: return REFRAY_EXIT_SOFTWARE;
+    }
+}

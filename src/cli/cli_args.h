@@ -1,0 +1,77 @@
+/*
+ * cli_args.h - what the commands share: the scene-reading options, the
+ * argument loop of one-scene commands, number parsing, the render and view
+ * size options, and image statuses as exit codes.
+ */
+#ifndef REFRAY_CLI_ARGS_H
+#define REFRAY_CLI_ARGS_H
+
+#include <stddef.h>
+#include "render/render.h"
+#include "scene/scene.h"
+#include "verify/verify.h"
+
+/* Options every scene-reading command accepts: the input limits and
+ * whether warnings are shown.  Returns the number of argv entries consumed
+ * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
+typedef struct cli_scene_opts {
+    rf_limits limits;
+    int warnings;
+} cli_scene_opts;
+
+void cli_scene_opts_init(cli_scene_opts *o);
+int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
+
+/* The value after option argv[*i] (advancing *i); 0 with the usage error
+ * printed when it is missing. */
+int cli_take_value(int argc, char **argv, int *i, const char **value);
+
+/* A whole-number option value in [1, hi] into *out; 0 after the usage error. */
+int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
+
+/* The options that size a render (--width --height --samples --max-depth
+ * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
+int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i);
+
+/* One command's own options: 1 consumed (with its value), 0 an error
+ * already reported, -1 not one of its options. */
+typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
+
+/*
+ * The argument loop of a command that reads one scene: --help (prints help,
+ * returns -1), the shared scene options, one SCENE into *input, and the
+ * command's own options through option.  Returns 0 to go on, -1 after help,
+ * or REFRAY_EXIT_USAGE after the error was printed.
+ */
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args);
+
+/* Parses a whole number option value in [lo, hi]; prints the usage error. */
+int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
+int cli_parse_double(const char *option, const char *text, double *out);
+
+/* Prints "refray: error: ..." for command-line mistakes, returns 64. */
+int cli_usage_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/*
+ * The view options verify and oracle share: --width, --height, --samples,
+ * --max-depth and --light-samples (light only when allow_light), bounded
+ * by the input limits lim.  Returns 1 when argv[*i] was one of them (its
+ * value consumed, *i moved onto it), 0 after printing a usage error, -1
+ * when argv[*i] is not one of them.
+ */
+int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i);
+
+/* 1 when view v (the scene's size with the overrides) is within
+ * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
+ * checked by the loader, so only an override can exceed it. */
+int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size);
+
+/* Maps an image-library status to the exit code the commands use. */
+int cli_image_status(int img_status);
+
+#endif

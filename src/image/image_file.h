@@ -1,0 +1,57 @@
+/*
+ * image_file.h - image files: PNG, OpenEXR, PFM, PPM, chosen by the file
+ * name's extension (the writers' contract: image.h).
+ */
+#ifndef REFRAY_IMAGE_FILE_H
+#define REFRAY_IMAGE_FILE_H
+
+#include <stdio.h>
+#include "image/image.h"
+
+typedef enum img_format {
+    IMG_FORMAT_UNKNOWN = 0,
+    IMG_FORMAT_PNG,
+    IMG_FORMAT_EXR,
+    IMG_FORMAT_PFM,
+    IMG_FORMAT_PPM
+} img_format;
+
+/* The format named by path's extension (.png .exr .pfm .ppm, any case), or
+ * IMG_FORMAT_UNKNOWN. */
+img_format img_format_from_path(const char *path);
+
+/* 1 if this build can write and read fmt (PNG needs PNG=1, EXR needs EXR=1). */
+int img_format_available(img_format fmt);
+
+/* Writes img to path, format by extension, atomically (see the top).
+ * o may be NULL for the defaults.  Returns 0; IMG_EUSAGE for an unknown
+ * extension, a format this build lacks or bad options; IMG_ESOFTWARE for an
+ * invalid image; IMG_EIO when the file cannot be created, written or
+ * renamed; IMG_EOSERR when out of memory. */
+int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+              size_t errlen);
+
+/* The same encoding to an open stream, which is flushed but not closed;
+ * the caller owns atomicity.  EXR needs a seekable stream.  Returns as
+ * img_write; err holds the reason without a file name. */
+int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+                     char *err, size_t errlen);
+
+/* Reads path (format by extension) into *out, which the caller frees with
+ * img_free.  Values are returned as stored, non-finite ones included:
+ *   .exr  the R, G and B channels of the first part (scanline files),
+ *         half/float/uint converted to double;
+ *   .pfm  PF (RGB) or Pf (grey, copied to R, G, B), either byte order;
+ *   .png  any bit depth and colour type, alpha discarded, codes made
+ *         linear: an sRGB chunk, or no colour information at all, means
+ *         the sRGB curve; a gAMA of 1.0 means linear; another gAMA g means
+ *         code^(1/g) (the PNG specification's rule);
+ *   .ppm  binary P6, maxval up to 65535, decoded as sRGB (PPM cannot say
+ *         otherwise; a PPM written with linear_png reads back wrong).
+ * Returns 0; IMG_EUSAGE for an unknown or compiled-out format;
+ * IMG_ENOINPUT when path cannot be opened; IMG_EDATA for a malformed or
+ * unsupported file; IMG_EIO for a read error; IMG_EOSERR when out of
+ * memory.  On failure *out is {0, 0, NULL}. */
+int img_read(const char *path, rf_image *out, char *err, size_t errlen);
+
+#endif
