@@ -4,6 +4,7 @@
 #
 # Knobs (command line or config.mk):
 #   PNG=0 EXR=0     build without libpng / OpenEXR (PFM and PPM output only)
+#   JSON=0          build without jansson (no JSON scenes, kit manifests)
 #   SANITIZE=1      -fsanitize=address,undefined (own build directory)
 #   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
 #                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
@@ -17,6 +18,7 @@
 PREFIX    ?= /usr/local
 PNG       ?= 1
 EXR       ?= 1
+JSON      ?= 1
 SANITIZE  ?= 0
 LONG_DOUBLE ?= 0
 VALGRIND  ?= 0
@@ -24,7 +26,7 @@ V         ?= 0
 
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)
+VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
@@ -64,6 +66,11 @@ CPPFLAGS += -DREFRAY_HAVE_EXR=1
 EXR_CFLAGS = $(patsubst -I%,-isystem %,$(shell pkg-config --cflags OpenEXR))
 EXR_LIBS   = -lOpenEXRCore
 endif
+ifeq ($(JSON),1)
+CPPFLAGS += -DREFRAY_HAVE_JSON=1
+JSON_CFLAGS = $(shell pkg-config --cflags jansson)
+JSON_LIBS   = $(shell pkg-config --libs jansson)
+endif
 CHECK_CFLAGS = $(shell pkg-config --cflags check)
 # The tests compute some references in __float128 (libquadmath, part of gcc).
 CHECK_LIBS   = $(shell pkg-config --libs check) -lquadmath
@@ -88,10 +95,10 @@ TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
 REFRAY   := $(BUILD)/refray
 LIBRARY  := $(BUILD)/librefray.a
 TESTBIN  := $(BUILD)/check_refray
-ALL_LIBS  = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
+ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
-        $(if $(filter 1,$(EXR)),libopenexr-dev)
+        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
 
 .PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
