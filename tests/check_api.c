@@ -17,10 +17,10 @@ START_TEST(test_api_load_render_compare)
         "distant_light { direction [0, -1, 0] power 2 }\n"
         "plane { material { Kd 0.5 } }\n";
     int status;
-    rf_scene *s = scene_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
+    scene_model *s = scene_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
     ck_assert_ptr_nonnull(s);
     ck_assert_int_eq(status, REFRAY_EXIT_OK);
-    rf_image img, want;
+    img_buf img, want;
     ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
     ck_assert_int_eq(img_create(&want, 2, 2), 0);
     for (int i = 0; i < 12; i++)

@@ -97,7 +97,7 @@ static void check_library(const char *path, const char *want)
     int status;
     FILE *f = open_memstream(&out, &size);
     ck_assert_ptr_nonnull(f);
-    rf_scene *s = scene_load(path, NULL, f, 1, &status);
+    scene_model *s = scene_load(path, NULL, f, 1, &status);
     fclose(f);
     first_line_of(out, line, sizeof line);
     free(out);

@@ -273,7 +273,7 @@ START_TEST(test_scene_load_error_limit)
     size_t size;
     int status;
     FILE *f = open_memstream(&out, &size);
-    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, f, 1, &status);
+    scene_model *s = scene_load_text("t.scene", text, strlen(text), NULL, f, 1, &status);
     fclose(f);
     ck_assert_ptr_null(s);
     ck_assert_int_eq(status, REFRAY_EXIT_DATAERR);

@@ -57,11 +57,11 @@ static const char scene_rect[] =
     "sphere { center [0, 0, 0] radius 1 }\n";
 
 /* Loads text (diagnostics, warnings included, thrown away). */
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
     FILE *null = fopen("/dev/null", "w");
-    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
+    scene_model *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
     if (null)
         fclose(null);
     ck_assert_msg(s != NULL, "scene did not load (status %d)", status);
@@ -73,7 +73,7 @@ static char *export_text(const char *text, const pov_opts *o, pov_notes *notes, 
 {
     char *buf = NULL;
     size_t len = 0;
-    rf_scene *s = load(text);
+    scene_model *s = load(text);
     FILE *fp = open_memstream(&buf, &len);
     ck_assert_ptr_nonnull(fp);
     *rc = pov_export_write(s, o, fp, notes);
@@ -131,7 +131,7 @@ END_TEST
 
 START_TEST(test_pov_render_size)
 {
-    rf_scene *s = load(scene_ortho);
+    scene_model *s = load(scene_ortho);
     int w, h;
     ck_assert_int_eq(pov_render_size(s, &w, &h), 3);
     ck_assert_int_eq(w, 192);
@@ -289,7 +289,7 @@ END_TEST
  * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
 START_TEST(test_pov_export_check_notes)
 {
-    rf_scene *s = load(scene_a);
+    scene_model *s = load(scene_a);
     pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
@@ -421,7 +421,7 @@ START_TEST(test_pov_export_file_atomic)
     FILE *old = fopen(path, "w");
     fputs("old contents\n", old);
     fclose(old);
-    rf_scene *s = load(scene_a);
+    scene_model *s = load(scene_a);
     pov_opts o = {0, "t.scene", 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_file(s, &o, path, &n, err, sizeof err), 0);
@@ -444,7 +444,7 @@ START_TEST(test_pov_export_file_failures)
     ck_assert_ptr_nonnull(mkdtemp(dir));
     pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
-    rf_scene *bad = load(scene_refused), *good = load(scene_a);
+    scene_model *bad = load(scene_refused), *good = load(scene_a);
     snprintf(path, sizeof path, "%s/refused.pov", dir);
     ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), REFRAY_EXIT_DATAERR);
     ck_assert_int_eq(access(path, F_OK), -1);

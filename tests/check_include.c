@@ -11,13 +11,13 @@
 #define INC "tests/scenes/include/"
 
 typedef struct loaded {
-    rf_scene *scene;
+    scene_model *scene;
     int status;
     char *messages;
     size_t size;
 } loaded;
 
-static void load_file(loaded *l, const char *path, const rf_limits *limits)
+static void load_file(loaded *l, const char *path, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
@@ -25,7 +25,7 @@ static void load_file(loaded *l, const char *path, const rf_limits *limits)
     fclose(out);
 }
 
-static void load_text(loaded *l, const char *text, const rf_limits *limits)
+static void load_text(loaded *l, const char *text, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
@@ -54,7 +54,7 @@ START_TEST(test_scene_load_include_relative_paths)
     loaded l;
     load_file(&l, INC "main.scene", NULL);
     ck_assert_msg(l.scene != NULL, "%s", l.messages);
-    const rf_scene *s = l.scene;
+    const scene_model *s = l.scene;
     ck_assert_int_eq(s->light_count, 1);
     ck_assert_vec_near(s->lights[0].position, vec_make(0, 10, 0), 0);
     /* r = 2 comes from parts/more.scene, found next to parts/lamps.scene. */
@@ -115,7 +115,7 @@ END_TEST
 START_TEST(test_scene_load_include_depth)
 {
     /* chain.scene -> c1 -> c2 -> c3: three levels of include. */
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     loaded l;
     lim.max_include_depth = 3;
     load_file(&l, INC "chain.scene", &lim);
@@ -166,7 +166,7 @@ START_TEST(test_scene_load_file_errors)
     ck_assert_int_eq(l.status, REFRAY_EXIT_NOINPUT);
     ck_assert_str_eq(first_line(&l), "refray: error: '" INC "parts' is a directory, not a file");
     loaded_done(&l);
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_file_bytes = 10;
     load_file(&l, INC "main.scene", &lim);
     ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
@@ -255,7 +255,7 @@ END_TEST
  * and over the whole load; an error in the body is never reached then. */
 START_TEST(test_lower_for_iteration_cap)
 {
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_loop_iterations = 10;
     loaded l;
     load_text(&l, "for i in 1 .. 11 { sphere { radius -1 } }", &lim);
@@ -295,7 +295,7 @@ START_TEST(test_lower_for_nested)
     ck_assert_vec_near(l.scene->prims[11].u.sphere.center, vec_make(2, 3, 0), 0);
     loaded_done(&l);
     /* 3 outer + 3 x 4 inner = 15 iterations. */
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_loop_iterations = 15;
     load_text(&l, "for i in 0 .. 2 { for j in 0 .. 3 { sphere {} } }", &lim);
     ck_assert_ptr_nonnull(l.scene);

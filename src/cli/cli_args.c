@@ -66,7 +66,7 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
     return 1;
 }
 
-int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i)
+int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
     if (strcmp(opt, "--width") == 0)
@@ -125,7 +125,7 @@ typedef struct limit_flag {
     size_t offset;
 } limit_flag;
 
-#define LIMIT(flag, field) {flag, offsetof(rf_limits, field)}
+#define LIMIT(flag, field) {flag, offsetof(scene_limits, field)}
 static const limit_flag limit_flags[] = {
     LIMIT("--max-width", max_width),
     LIMIT("--max-height", max_height),
@@ -166,7 +166,7 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i)
+int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
     if (strcmp(opt, "--width") == 0)
@@ -182,7 +182,7 @@ int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int a
     return -1;
 }
 
-int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size)
+int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size)
 {
     if ((double)v->width * v->height <= (double)lim->max_pixels)
         return 1;

@@ -15,7 +15,7 @@
  * whether warnings are shown.  Returns the number of argv entries consumed
  * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
 typedef struct cli_scene_opts {
-    rf_limits limits;
+    scene_limits limits;
     int warnings;
 } cli_scene_opts;
 
@@ -31,7 +31,7 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
  * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
-int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i);
+int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
 
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */
@@ -64,12 +64,12 @@ int cli_usage_error(const char *fmt, ...)
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */
-int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i);
+int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i);
 
 /* 1 when view v (the scene's size with the overrides) is within
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
  * checked by the loader, so only an override can exceed it. */
-int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size);
+int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size);
 
 /* Maps an image-library status to the exit code the commands use. */
 int cli_image_status(int img_status);

@@ -15,7 +15,7 @@ static const char check_help[] =
     "  FILE: ok: P primitives, L lights, M materials; uses: FEATURES\n"
     "Options: -W (no warnings) and the input limits of `refray --help`.\n";
 
-static void count_kinds(const rf_scene *s, int counts[5])
+static void count_kinds(const scene_model *s, int counts[5])
 {
     memset(counts, 0, 5 * sizeof counts[0]);
     for (int i = 0; i < s->prim_count; i++)
@@ -23,7 +23,7 @@ static void count_kinds(const rf_scene *s, int counts[5])
             counts[s->prims[i].kind]++;
 }
 
-static void print_features(const rf_features *f)
+static void print_features(const scene_features *f)
 {
     const char *names[] = {"shadows", "specular", "reflection", "refraction", "sampled-lights", "meshes"};
     int on[] = {f->shadows, f->specular, f->reflection, f->refraction, f->sampled_lights, f->meshes};
@@ -35,7 +35,7 @@ static void print_features(const rf_features *f)
         printf("none");
 }
 
-static void print_summary(const char *path, const rf_scene *s)
+static void print_summary(const char *path, const scene_model *s)
 {
     static const char *kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     static const char *plural[] = {"spheres", "planes", "triangles", "disks", "boxes"};
@@ -86,7 +86,7 @@ int cli_check(int argc, char **argv)
             continue;
         }
         int status;
-        rf_scene *s = scene_load(argv[i], &opts.limits, stderr, opts.warnings, &status);
+        scene_model *s = scene_load(argv[i], &opts.limits, stderr, opts.warnings, &status);
         if (s)
             print_summary(argv[i], s);
         scene_free(s);

@@ -87,7 +87,7 @@ static int parse_args(compare_args *a, int argc, char **argv)
     return 0;
 }
 
-static int read_image(const char *path, rf_image *img)
+static int read_image(const char *path, img_buf *img)
 {
     char err[512];
     int status = img_read(path, img, err, sizeof err);
@@ -96,7 +96,7 @@ static int read_image(const char *path, rf_image *img)
     return cli_image_status(status);
 }
 
-static void print_text(const compare_args *a, const rf_image *img, const image_metrics *m)
+static void print_text(const compare_args *a, const img_buf *img, const image_metrics *m)
 {
     printf("A:        %s\nB:        %s (reference)\n", a->a, a->b);
     printf("size:     %dx%d: %ld pixels compared, %ld excluded\n", img->width, img->height, m->compared,
@@ -126,9 +126,9 @@ static void print_json(const compare_args *a, const image_metrics *m)
     fputs("}\n", stdout);
 }
 
-static int write_map(const compare_args *a, const rf_image *x, const rf_image *ref, const unsigned char *mask)
+static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref, const unsigned char *mask)
 {
-    rf_image map;
+    img_buf map;
     img_format fmt = img_format_from_path(a->diff);
     int raw = fmt == IMG_FORMAT_EXR || fmt == IMG_FORMAT_PFM;
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
@@ -145,7 +145,7 @@ static int write_map(const compare_args *a, const rf_image *x, const rf_image *r
 }
 
 /* Compares the two loaded images; returns the exit code. */
-static int compare_images(const compare_args *a, const rf_image *x, const rf_image *ref)
+static int compare_images(const compare_args *a, const img_buf *x, const img_buf *ref)
 {
     if (x->width != ref->width || x->height != ref->height) {
         fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
@@ -179,7 +179,7 @@ int cli_compare(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? REFRAY_EXIT_OK : status;
-    rf_image x = {0, 0, NULL}, ref = {0, 0, NULL};
+    img_buf x = {0, 0, NULL}, ref = {0, 0, NULL};
     status = read_image(a.a, &x);
     if (status == REFRAY_EXIT_OK)
         status = read_image(a.b, &ref);

@@ -81,7 +81,7 @@ static void print_notes(const char *input, const pov_notes *n)
         fprintf(stderr, "refray: approximation: ... and %d more in '%s'\n", n->count - POV_NOTE_MAX, input);
 }
 
-static int export_scene(export_args *a, const rf_scene *scene)
+static int export_scene(export_args *a, const scene_model *scene)
 {
     pov_notes notes;
     char err[600];
@@ -111,7 +111,7 @@ int cli_export(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? REFRAY_EXIT_OK : status;
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = export_scene(&a, scene);

@@ -105,7 +105,7 @@ static int write_files(const oracle_args *a, const verify_exact *e)
     return REFRAY_EXIT_OK;
 }
 
-static int exact_of(const oracle_args *a, const rf_scene *s)
+static int exact_of(const oracle_args *a, const scene_model *s)
 {
     oracle_view v = verify_view(s, &a->view);
     char why[512];
@@ -137,7 +137,7 @@ int cli_oracle(int argc, char **argv)
         return status < 0 ? REFRAY_EXIT_OK : status;
     if ((status = check_formats(&a)) != 0)
         return status;
-    rf_scene *s = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *s = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!s)
         return status;
     status = exact_of(&a, s);

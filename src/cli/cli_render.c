@@ -197,9 +197,9 @@ static void print_stats(const render_stats *s, const img_write_stats *w)
             w->nonfinite, t->medium_overflow);
 }
 
-static int render_and_write(render_args *a, const rf_scene *scene)
+static int render_and_write(render_args *a, const scene_model *scene)
 {
-    rf_image img = {0, 0, NULL};
+    img_buf img = {0, 0, NULL};
     render_stats stats;
     img_write_stats written = {0, 0};
     progress_state p = {!a->quiet && isatty(2), render_clock()};
@@ -255,7 +255,7 @@ int cli_render(int argc, char **argv)
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
      * scene loads as well as while it renders. */
     signal(SIGINT, on_interrupt);
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return interrupted ? REFRAY_EXIT_INTERRUPTED : status;
     if ((double)(a.render.width ? a.render.width : scene->image.width) *

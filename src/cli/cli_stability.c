@@ -176,7 +176,7 @@ static int run_twin(const stab_args *a, stab_image *out)
 }
 
 /* The private half: render in this build's precision, dump raw. */
-static int dump_raw(const stab_args *a, const rf_scene *scene)
+static int dump_raw(const stab_args *a, const scene_model *scene)
 {
     stab_image img;
     int status = stability_render(scene, &a->render, &img);
@@ -213,7 +213,7 @@ static void print_report(const stab_args *a, const stab_image *d, const stab_ima
     printf("  non-finite values: %ld in double, %ld in long double\n", d->nonfinite, ld->nonfinite);
 }
 
-static int write_map(const char *path, const rf_image *map)
+static int write_map(const char *path, const img_buf *map)
 {
     img_write_opts o = img_write_opts_default();
     char err[512];
@@ -225,11 +225,11 @@ static int write_map(const char *path, const rf_image *map)
     return REFRAY_EXIT_OK;
 }
 
-static int compare(const stab_args *a, const rf_scene *scene)
+static int compare(const stab_args *a, const scene_model *scene)
 {
     stab_image d, ld;
     stab_report r;
-    rf_image map = {0, 0, NULL};
+    img_buf map = {0, 0, NULL};
     int status = stability_render(scene, &a->render, &d);
     if (status != REFRAY_EXIT_OK)
         return status;
@@ -267,7 +267,7 @@ int cli_stability(int argc, char **argv)
     a.render.max_tree_rays = a.scene.limits.max_ray_tree;
     if (!a.raw_dump && sizeof(real) > sizeof(double))
         return cli_usage_error("stability: this is the long double program; run refray, the double one");
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = a.raw_dump ? dump_raw(&a, scene) : compare(&a, scene);

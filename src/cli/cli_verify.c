@@ -190,11 +190,11 @@ static const char *load_reason(int status)
 }
 
 /* Loads path; NULL with r filled as an error when it cannot be used. */
-static rf_scene *load(const verify_args *a, const char *path, verify_result *r)
+static scene_model *load(const verify_args *a, const char *path, verify_result *r)
 {
     int status;
     memset(r, 0, sizeof *r);
-    rf_scene *s = scene_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
+    scene_model *s = scene_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
     if (!s) {
         verify_result_error(r, path, status, load_reason(status));
         return NULL;
@@ -215,7 +215,7 @@ static int verify_all(const verify_args *a, verify_result *results)
     if (!a->json)
         print_header(w);
     for (int i = 0; i < a->path_count; i++) {
-        rf_scene *s = load(a, a->paths[i], &results[i]);
+        scene_model *s = load(a, a->paths[i], &results[i]);
         if (s) {
             verify_scene(s, a->paths[i], &a->view, &results[i]);
             scene_free(s);
@@ -271,7 +271,7 @@ static void print_sweep(const verify_sweep *sw, const verify_result *steps, int 
 static int sweep_one(const verify_args *a, const char *path, verify_result *steps, FILE *tsv, int *first_json)
 {
     int ran = 0, status;
-    rf_scene *s = load(a, path, &steps[0]);
+    scene_model *s = load(a, path, &steps[0]);
     if (s) {
         status = verify_sweep_run(s, path, &a->view, &a->sweep, steps, &ran);
         scene_free(s);

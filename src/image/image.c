@@ -22,7 +22,7 @@ int img_error(char *err, size_t errlen, int code, const char *fmt, ...)
     return code;
 }
 
-int img_create(rf_image *img, int width, int height)
+int img_create(img_buf *img, int width, int height)
 {
     img->width = img->height = 0;
     img->rgb = NULL;
@@ -36,7 +36,7 @@ int img_create(rf_image *img, int width, int height)
     return IMG_OK;
 }
 
-void img_free(rf_image *img)
+void img_free(img_buf *img)
 {
     if (!img)
         return;

@@ -48,22 +48,22 @@ enum {
 #define IMG_MAX_PIXELS (1L << 28)
 
 /* Linear RGB, row-major from the top row, 3 doubles per pixel. */
-typedef struct rf_image {
+typedef struct img_buf {
     int width, height;
     double *rgb;
-} rf_image;
+} img_buf;
 
 /* Allocates a width x height image of zeros.  Returns 0, IMG_ESOFTWARE for
  * a size < 1 or too large to address, IMG_EOSERR when out of memory; on
  * failure *img is {0, 0, NULL}. */
-int img_create(rf_image *img, int width, int height);
+int img_create(img_buf *img, int width, int height);
 
 /* Frees the pixels and resets *img to {0, 0, NULL}; NULL and an already
  * freed image are fine. */
-void img_free(rf_image *img);
+void img_free(img_buf *img);
 
 /* The 3 channels of pixel (x, y), y = 0 the top row. */
-static inline double *img_pixel(const rf_image *img, int x, int y)
+static inline double *img_pixel(const img_buf *img, int x, int y)
 {
     return img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
 }

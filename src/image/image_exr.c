@@ -95,7 +95,7 @@ static void store_value(exr_planes *pl, int c, size_t i, double v, img_write_sta
     st->clamped += (size_t)clamped;
 }
 
-static int fill_planes(exr_planes *pl, const rf_image *img, int use_float, img_write_stats *st)
+static int fill_planes(exr_planes *pl, const img_buf *img, int use_float, img_write_stats *st)
 {
     size_t n = (size_t)img->width * (size_t)img->height;
     pl->elem = use_float ? 4 : 2;
@@ -132,7 +132,7 @@ static void aim_encoder(exr_encode_pipeline_t *enc, const exr_planes *pl, int wi
     }
 }
 
-static exr_result_t write_chunks(exr_context_t ctx, int part, const rf_image *img,
+static exr_result_t write_chunks(exr_context_t ctx, int part, const img_buf *img,
                                  const exr_planes *pl)
 {
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
@@ -159,7 +159,7 @@ static exr_result_t write_chunks(exr_context_t ctx, int part, const rf_image *im
 }
 
 /* Part, required attributes, channels, header. */
-static exr_result_t define_part(exr_context_t ctx, const rf_image *img, int ptype, int *part)
+static exr_result_t define_part(exr_context_t ctx, const img_buf *img, int ptype, int *part)
 {
     static const char *const names[3] = {"R", "G", "B"};
     exr_result_t rv = exr_add_part(ctx, "rgb", EXR_STORAGE_SCANLINE, part);
@@ -174,7 +174,7 @@ static exr_result_t define_part(exr_context_t ctx, const rf_image *img, int ptyp
     return rv;
 }
 
-static exr_result_t encode_exr(exr_stream *s, const rf_image *img, const exr_planes *pl)
+static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_planes *pl)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
@@ -192,7 +192,7 @@ static exr_result_t encode_exr(exr_stream *s, const rf_image *img, const exr_pla
     return rv != EXR_ERR_SUCCESS ? rv : fin;
 }
 
-int img_exr_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_exr_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     exr_stream s = {fp, 0, 0, ""};
@@ -323,7 +323,7 @@ static int check_layout(exr_const_context_t ctx, exr_target *t, char *err, size_
     return IMG_OK;
 }
 
-static void copy_planes(const exr_target *t, rf_image *out)
+static void copy_planes(const exr_target *t, img_buf *out)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < n; i++)
@@ -332,7 +332,7 @@ static void copy_planes(const exr_target *t, rf_image *out)
 }
 
 /* Decodes the first part into *out once the context is open. */
-static int decode_exr(exr_const_context_t ctx, exr_stream *s, rf_image *out, char *err,
+static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char *err,
                       size_t errlen)
 {
     exr_target t = {{NULL, NULL, NULL}, 0, 0, 0};
@@ -354,7 +354,7 @@ static int decode_exr(exr_const_context_t ctx, exr_stream *s, rf_image *out, cha
     return rc;
 }
 
-int img_exr_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_exr_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     exr_stream s = {fp, 0, 0, ""};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;

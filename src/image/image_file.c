@@ -107,7 +107,7 @@ static int check_format(const char *path, img_format fmt, int writing, char *why
                      writing ? "write .ppm instead" : "cannot read .png files");
 }
 
-static int check_image(const rf_image *img, char *why, size_t len)
+static int check_image(const img_buf *img, char *why, size_t len)
 {
     if (!img || !img->rgb || img->width < 1 || img->height < 1)
         return img_error(why, len, IMG_ESOFTWARE, "invalid image (%dx%d%s)", img ? img->width : 0,
@@ -127,7 +127,7 @@ static int check_opts(const img_write_opts *o, char *why, size_t len)
 }
 
 /* Every check that can fail before a byte is written. */
-static int check_write(const char *path, img_format fmt, const rf_image *img,
+static int check_write(const char *path, img_format fmt, const img_buf *img,
                        const img_write_opts *o, char *why, size_t len)
 {
     int rc = check_format(path, fmt, 1, why, len);
@@ -138,7 +138,7 @@ static int check_write(const char *path, img_format fmt, const rf_image *img,
     return rc;
 }
 
-static int encode(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+static int encode(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                   img_write_stats *st, char *why, size_t len)
 {
     switch (fmt) {
@@ -156,7 +156,7 @@ static int encode(FILE *fp, img_format fmt, const rf_image *img, const img_write
 
 /* The stream checks are here, not only in the back ends, because stdio
  * buffers: a full disk usually shows only when the buffer is flushed. */
-int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                      char *err, size_t errlen)
 {
     img_write_opts defaults = img_write_opts_default();
@@ -208,7 +208,7 @@ static int set_final_mode(int fd, const char *path, char *why, size_t len)
 
 /* Encodes into the open temporary file fd and closes it, checking the
  * flush, the fsync and the close. */
-static int fill_temp(int fd, const char *path, img_format fmt, const rf_image *img,
+static int fill_temp(int fd, const char *path, img_format fmt, const img_buf *img,
                      const img_write_opts *o, char *why, size_t len)
 {
     int rc = set_final_mode(fd, path, why, len);
@@ -227,7 +227,7 @@ static int fill_temp(int fd, const char *path, img_format fmt, const rf_image *i
     return rc;
 }
 
-static int write_atomically(const char *path, img_format fmt, const rf_image *img,
+static int write_atomically(const char *path, img_format fmt, const img_buf *img,
                             const img_write_opts *o, char *why, size_t len)
 {
     /* The rename would replace a device, a FIFO or a directory entry that
@@ -256,7 +256,7 @@ static int write_atomically(const char *path, img_format fmt, const rf_image *im
     return rc;
 }
 
-int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+int img_write(const char *path, const img_buf *img, const img_write_opts *o, char *err,
               size_t errlen)
 {
     char why[REASON_MAX];
@@ -274,7 +274,7 @@ int img_write(const char *path, const rf_image *img, const img_write_opts *o, ch
 
 /* ---- Reading ---- */
 
-static int decode(FILE *fp, img_format fmt, rf_image *out, char *why, size_t len)
+static int decode(FILE *fp, img_format fmt, img_buf *out, char *why, size_t len)
 {
     switch (fmt) {
 #if REFRAY_HAVE_PNG
@@ -289,7 +289,7 @@ static int decode(FILE *fp, img_format fmt, rf_image *out, char *why, size_t len
     }
 }
 
-int img_read(const char *path, rf_image *out, char *err, size_t errlen)
+int img_read(const char *path, img_buf *out, char *err, size_t errlen)
 {
     char why[REASON_MAX];
     FILE *fp = NULL;

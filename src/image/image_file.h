@@ -28,13 +28,13 @@ int img_format_available(img_format fmt);
  * extension, a format this build lacks or bad options; IMG_ESOFTWARE for an
  * invalid image; IMG_EIO when the file cannot be created, written or
  * renamed; IMG_EOSERR when out of memory. */
-int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+int img_write(const char *path, const img_buf *img, const img_write_opts *o, char *err,
               size_t errlen);
 
 /* The same encoding to an open stream, which is flushed but not closed;
  * the caller owns atomicity.  EXR needs a seekable stream.  Returns as
  * img_write; err holds the reason without a file name. */
-int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                      char *err, size_t errlen);
 
 /* Reads path (format by extension) into *out, which the caller frees with
@@ -52,6 +52,6 @@ int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_wr
  * IMG_ENOINPUT when path cannot be opened; IMG_EDATA for a malformed or
  * unsupported file; IMG_EIO for a read error; IMG_EOSERR when out of
  * memory.  On failure *out is {0, 0, NULL}. */
-int img_read(const char *path, rf_image *out, char *err, size_t errlen);
+int img_read(const char *path, img_buf *out, char *err, size_t errlen);
 
 #endif

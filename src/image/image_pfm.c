@@ -112,7 +112,7 @@ static uint32_t get32(const unsigned char *p, int little)
 }
 
 /* Image row y as little-endian floats, sanitised and range-clamped. */
-static void pack_float_row(unsigned char *out, const rf_image *img, int y, img_write_stats *st)
+static void pack_float_row(unsigned char *out, const img_buf *img, int y, img_write_stats *st)
 {
     const double *p = img_pixel(img, 0, y);
     for (size_t i = 0; i < 3 * (size_t)img->width; i++) {
@@ -125,7 +125,7 @@ static void pack_float_row(unsigned char *out, const rf_image *img, int y, img_w
     }
 }
 
-int img_pfm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     (void)o; /* PFM stores linear values: no display options apply */
@@ -157,7 +157,7 @@ static int read_pfm_scale(FILE *fp, int *little, char *err, size_t errlen)
 }
 
 /* Reads the file row that is image row y; nch floats per pixel. */
-static int read_pfm_row(FILE *fp, rf_image *out, int y, int nch, int little, unsigned char *buf,
+static int read_pfm_row(FILE *fp, img_buf *out, int y, int nch, int little, unsigned char *buf,
                         char *err, size_t errlen)
 {
     size_t rowlen = 4 * (size_t)nch * (size_t)out->width;
@@ -174,7 +174,7 @@ static int read_pfm_row(FILE *fp, rf_image *out, int y, int nch, int little, uns
     return IMG_OK;
 }
 
-int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_pfm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     char magic[4];
     int w = 0, h = 0, little = 1;
@@ -197,7 +197,7 @@ int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
 
 /* ---- PPM ---- */
 
-int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_ppm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     size_t rowlen = 3 * (size_t)img->width;
@@ -219,7 +219,7 @@ int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_wr
 }
 
 /* Reads image row y of samples of nb bytes each (1 or 2, big-endian). */
-static int read_ppm_row(FILE *fp, rf_image *out, int y, long maxval, unsigned char *buf,
+static int read_ppm_row(FILE *fp, img_buf *out, int y, long maxval, unsigned char *buf,
                         char *err, size_t errlen)
 {
     size_t nb = maxval < 256 ? 1 : 2, n = 3 * (size_t)out->width;
@@ -235,7 +235,7 @@ static int read_ppm_row(FILE *fp, rf_image *out, int y, long maxval, unsigned ch
     return IMG_OK;
 }
 
-int img_ppm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_ppm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     char magic[4], m[16];
     int w = 0, h = 0;

@@ -44,7 +44,7 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 
 /* The display codes of the whole image, PNG byte order (16-bit samples
  * big-endian); rowbytes receives the length of one row. */
-static unsigned char *pack_codes(const rf_image *img, const img_write_opts *o, img_write_stats *st,
+static unsigned char *pack_codes(const img_buf *img, const img_write_opts *o, img_write_stats *st,
                                  size_t *rowbytes)
 {
     size_t nb = o->png_bits == 16 ? 2 : 1, n = 3 * (size_t)img->width * (size_t)img->height;
@@ -60,7 +60,7 @@ static unsigned char *pack_codes(const rf_image *img, const img_write_opts *o, i
     return px;
 }
 
-static int encode_png(FILE *fp, const rf_image *img, const img_write_opts *o,
+static int encode_png(FILE *fp, const img_buf *img, const img_write_opts *o,
                       const unsigned char *px, size_t rowbytes, png_failure *f)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, f, on_png_error, on_png_warning);
@@ -90,7 +90,7 @@ static int encode_png(FILE *fp, const rf_image *img, const img_write_opts *o,
     return 0;
 }
 
-int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_png_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     png_failure f = {"", 0};
@@ -206,7 +206,7 @@ static double code_to_linear(unsigned code, unsigned maxcode, const png_decoded 
     }
 }
 
-static void unpack_linear(const png_decoded *d, rf_image *out)
+static void unpack_linear(const png_decoded *d, img_buf *out)
 {
     size_t n = 3 * (size_t)d->width * d->height;
     unsigned maxcode = d->bits == 16 ? 65535u : 255u;
@@ -216,7 +216,7 @@ static void unpack_linear(const png_decoded *d, rf_image *out)
     }
 }
 
-int img_png_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_png_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     png_failure f = {"", 0};
     png_decoded d;

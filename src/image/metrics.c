@@ -4,7 +4,7 @@
 #include <math.h>
 #include "image/metrics.h"
 
-static double peak_of(const rf_image *b, const unsigned char *excluded)
+static double peak_of(const img_buf *b, const unsigned char *excluded)
 {
     double peak = 0;
     size_t n = (size_t)b->width * (size_t)b->height;
@@ -14,7 +14,7 @@ static double peak_of(const rf_image *b, const unsigned char *excluded)
     return peak;
 }
 
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
                      image_metrics *m)
 {
     size_t n = (size_t)b->width * (size_t)b->height;

@@ -29,7 +29,7 @@ typedef struct image_metrics {
 
 /* a and b must have the same size.  excluded: width*height bytes, non-zero
  * to skip a pixel, or NULL.  tol: the relative tolerance for `over`. */
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
                      image_metrics *m);
 
 #endif

@@ -52,7 +52,7 @@ static int exact_pixel(const oracle_family *f, const oracle_view *v, int i, int 
     return 1;
 }
 
-int oracle_image(const oracle_family *f, const oracle_view *v, rf_image *out, unsigned char *excluded,
+int oracle_image(const oracle_family *f, const oracle_view *v, img_buf *out, unsigned char *excluded,
                  long *excluded_count)
 {
     if (img_create(out, v->width, v->height) != 0)

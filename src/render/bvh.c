@@ -84,7 +84,7 @@ static real pad(real lo, real hi)
 }
 
 /* The padded box of primitive p; 0 when it has no finite bounds. */
-static int item_of(const rf_prim *p, int index, build_item *out)
+static int item_of(const scene_prim *p, int index, build_item *out)
 {
     vec3 lo, hi;
     if (!isect_prim_bounds(p, &lo, &hi))
@@ -295,7 +295,7 @@ static void *alloc_array(size_t count, size_t size)
 }
 
 /* Sorts primitives into build items (bounded) and b->unbounded. */
-static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
+static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
 {
     int bounded = 0;
     for (int i = 0; i < count; i++) {
@@ -326,7 +326,7 @@ static int build_tree(build_ctx *ctx, int count)
     return 1;
 }
 
-int bvh_build(bvh *b, const rf_prim *prims, int count)
+int bvh_build(bvh *b, const scene_prim *prims, int count)
 {
     build_ctx ctx = {b, NULL, NULL, NULL};
     int ok = 0;
@@ -457,7 +457,7 @@ static void nearest_add(nearest *ns, const hit *h)
     ns->rr.tmax = limit;
 }
 
-static void nearest_test(nearest *ns, const rf_prim *prims, int index)
+static void nearest_test(nearest *ns, const scene_prim *prims, int index)
 {
     hit h;
     if (ns->stats)
@@ -504,7 +504,7 @@ static int descend(const bvh *b, int node, const slab_ray *s, nearest *ns, stack
     return ha ? a : hc ? c : -1;
 }
 
-static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
+static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
@@ -533,7 +533,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
     }
 }
 
-static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
+static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     for (int i = 0; i < b->unbounded_count; i++)
         nearest_test(ns, prims, b->unbounded[i]);
@@ -541,7 +541,7 @@ static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats)
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
 {
     nearest ns;
     ns.rr = *r;
@@ -564,12 +564,12 @@ int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_
     return 1;
 }
 
-int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h)
+int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
 {
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_prim(const rf_prim *prims, int index, const ray *r,
+static int visit_prim(const scene_prim *prims, int index, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     hit out[2];
@@ -587,7 +587,7 @@ static int visit_prim(const rf_prim *prims, int index, const ray *r,
 
 /* Depth-first over every node the ray meets; the stack holds at most one
  * pending sibling per level plus the node being expanded. */
-static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
+static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
                         int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     int stack[BVH_MAX_DEPTH + 1], sp = 0;
@@ -615,7 +615,7 @@ static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
     return 0;
 }
 
-int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
@@ -626,7 +626,7 @@ int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
     return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
 }
 
-int bvh_visit(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx)
 {
     return bvh_visit_stats(b, prims, r, fn, ctx, NULL);

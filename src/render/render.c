@@ -51,7 +51,7 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->refraction = t->refraction;
 }
 
-static int trace_rows(const tracer *t, const render_opts *opts, rf_image *out, render_stats *stats)
+static int trace_rows(const tracer *t, const render_opts *opts, img_buf *out, render_stats *stats)
 {
     for (int j = 0; j < out->height; j++) {
         for (int i = 0; i < out->width; i++) {
@@ -72,7 +72,7 @@ static int trace_rows(const tracer *t, const render_opts *opts, rf_image *out, r
     return REFRAY_EXIT_OK;
 }
 
-int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, render_stats *stats)
+int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats)
 {
     render_stats local;
     tracer t;

@@ -37,7 +37,7 @@ typedef struct render_stats {
  * then says where), or REFRAY_EXIT_SOFTWARE when out of memory; out is
  * freed on every failure.
  */
-int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, render_stats *stats);
+int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats);
 
 /* The colour of one pixel (i, j) with a k x k grid: what render_image
  * stores, exposed for tests and for the oracle's comparisons. */

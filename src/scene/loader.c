@@ -15,7 +15,7 @@ void loader_oom(loader *L)
 }
 
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s)
+void loader_scene_defaults(scene_model *s)
 {
     s->image.width = 640;
     s->image.height = 480;
@@ -52,9 +52,9 @@ static int grow(void **items, int *cap, int count, size_t size, long limit)
     return 1;
 }
 
-rf_prim *loader_add_prim(loader *L, src_span where)
+scene_prim *loader_add_prim(loader *L, src_span where)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->prim_count >= L->limits->max_primitives) {
         if (s->prim_count == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
@@ -71,9 +71,9 @@ rf_prim *loader_add_prim(loader *L, src_span where)
     return &s->prims[s->prim_count++];
 }
 
-rf_light *loader_add_light(loader *L)
+scene_light *loader_add_light(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->lights;
     if (!grow(&items, &L->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
         loader_oom(L);
@@ -83,9 +83,9 @@ rf_light *loader_add_light(loader *L)
     return &s->lights[s->light_count++];
 }
 
-rf_material *loader_add_material(loader *L)
+scene_material *loader_add_material(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->materials;
     int cap = L->material_cap;
     if (!grow(&items, &cap, s->material_count, sizeof *s->materials, INT_MAX)) {
@@ -104,26 +104,26 @@ rf_material *loader_add_material(loader *L)
         L->material_cap = cap;
     }
     L->material_uses[s->material_count] = 0;
-    rf_material *m = &s->materials[s->material_count++];
+    scene_material *m = &s->materials[s->material_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-rf_mesh *loader_add_mesh(loader *L)
+scene_mesh *loader_add_mesh(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->meshes;
     if (!grow(&items, &L->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
     s->meshes = items;
-    rf_mesh *m = &s->meshes[s->mesh_count++];
+    scene_mesh *m = &s->meshes[s->mesh_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings)
+void loader_init(loader *L, scene_model *s, const scene_limits *limits, FILE *diag_out, int warnings)
 {
     memset(L, 0, sizeof *L);
     L->scene = s;

@@ -16,8 +16,8 @@
 #include "lang/schema.h"
 
 typedef struct loader {
-    rf_scene *scene;            /* being filled; owns the sources */
-    const rf_limits *limits;
+    scene_model *scene;            /* being filled; owns the sources */
+    const scene_limits *limits;
     diag diag;
     arena arena;                /* syntax trees of every file read */
     env env;                    /* constants in scope */
@@ -80,15 +80,15 @@ int lower_primitive(loader *L, const ast *block);
 int validate_scene(loader *L);
 
 /* loader.c: the load's state; an out-of-memory error is reported once. */
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings);
+void loader_init(loader *L, scene_model *s, const scene_limits *limits, FILE *diag_out, int warnings);
 void loader_free(loader *L);
 void loader_oom(loader *L);
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s);
+void loader_scene_defaults(scene_model *s);
 /* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
-rf_prim *loader_add_prim(loader *L, src_span where);
-rf_light *loader_add_light(loader *L);
-rf_material *loader_add_material(loader *L);
-rf_mesh *loader_add_mesh(loader *L);
+scene_prim *loader_add_prim(loader *L, src_span where);
+scene_light *loader_add_light(loader *L);
+scene_material *loader_add_material(loader *L);
+scene_mesh *loader_add_mesh(loader *L);
 
 #endif

@@ -181,7 +181,7 @@ static int lower_include(loader *L, const ast *node)
 
 static int lower_oracle(loader *L, const ast *node)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->oracle) {
         diag_report(&L->diag, DIAG_ERROR, node->head, "a scene names one oracle; '%s' is already named", s->oracle);
         return 0;

@@ -3,7 +3,7 @@
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
- * shape (see rf_prim in scene.h); otherwise the primitive keeps its local
+ * shape (see scene_prim in scene.h); otherwise the primitive keeps its local
  * parameters and the matrix pair, and is intersected in its own frame.
  */
 #include <float.h>
@@ -95,14 +95,14 @@ static vec3 transformed_normal(const xform *to_local, vec3 n)
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-static void keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+static void keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
 {
     prim->has_xform = 1;
     prim->to_world = *to_world;
     prim->to_local = *to_local;
 }
 
-static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
+static void place_sphere(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -115,7 +115,7 @@ static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static void place_disk(rf_prim *prim, const xform *w, const xform *l)
+static void place_disk(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -135,7 +135,7 @@ static int is_axis_aligned(const xform *w)
            w->m[2][1] == 0;
 }
 
-static void place_box(rf_prim *prim, const xform *w, const xform *l)
+static void place_box(scene_prim *prim, const xform *w, const xform *l)
 {
     if (!is_axis_aligned(w)) {
         keep_frame(prim, w, l);
@@ -159,7 +159,7 @@ static int degenerate(vec3 a, vec3 b, vec3 c)
 
 /* Vertices in world space; a mirroring transform would turn the winding
  * (and so the normal) inside out, so two corners are swapped back. */
-static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
+static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
 {
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
@@ -176,7 +176,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static int sphere(loader *L, const props *p, rf_prim *prim)
+static int sphere(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
@@ -184,7 +184,7 @@ static int sphere(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int plane(loader *L, const props *p, rf_prim *prim)
+static int plane(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_PLANE;
     int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
@@ -192,7 +192,7 @@ static int plane(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int disk(loader *L, const props *p, rf_prim *prim)
+static int disk(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_DISK;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
@@ -201,7 +201,7 @@ static int disk(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int box(loader *L, const props *p, rf_prim *prim)
+static int box(loader *L, const props *p, scene_prim *prim)
 {
     vec3 a, b;
     prim->kind = PRIM_BOX;
@@ -223,7 +223,7 @@ static int box(loader *L, const props *p, rf_prim *prim)
     return 1;
 }
 
-static int triangle(loader *L, const props *p, rf_prim *prim)
+static int triangle(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_TRIANGLE;
     if (!props_require(L, p, KW_VERTICES))
@@ -252,7 +252,7 @@ static int xform_finite(const xform *a)
     return 1;
 }
 
-static int triangle_in_range(const rf_prim *prim)
+static int triangle_in_range(const scene_prim *prim)
 {
     const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
     int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
@@ -263,7 +263,7 @@ static int triangle_in_range(const rf_prim *prim)
 
 /* Placement can push a finite shape past the largest double, or leave a
  * normal that cannot be made unit: the scene keeps no such number. */
-static int in_range(const rf_prim *prim)
+static int in_range(const scene_prim *prim)
 {
     int ok = 1;
     switch (prim->kind) {
@@ -278,7 +278,7 @@ static int in_range(const rf_prim *prim)
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
 
-static int check_range(loader *L, const rf_prim *prim, src_span at)
+static int check_range(loader *L, const scene_prim *prim, src_span at)
 {
     static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     if (in_range(prim))
@@ -289,7 +289,7 @@ static int check_range(loader *L, const rf_prim *prim, src_span at)
     return 0;
 }
 
-static int check_triangle(loader *L, const rf_prim *prim, src_span at)
+static int check_triangle(loader *L, const scene_prim *prim, src_span at)
 {
     const vec3 *q = prim->u.triangle.p;
     if (!degenerate(q[0], q[1], q[2]))
@@ -298,9 +298,9 @@ static int check_triangle(loader *L, const rf_prim *prim, src_span at)
     return 0;
 }
 
-static rf_prim *emit(loader *L, const rf_prim *prim)
+static scene_prim *emit(loader *L, const scene_prim *prim)
 {
-    rf_prim *slot = loader_add_prim(L, prim->where);
+    scene_prim *slot = loader_add_prim(L, prim->where);
     if (slot)
         *slot = *prim;
     return slot;
@@ -330,7 +330,7 @@ static int read_obj(loader *L, const char *name, src_span at, int *file)
     return status == 0 && *file >= 0;
 }
 
-static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
+static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
 {
     int normals = t->vn[0] >= 0;
     for (int i = 0; i < 3; i++) {
@@ -347,13 +347,13 @@ static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, 
     return 1;
 }
 
-static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const xform *w, const xform *l)
+static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, const xform *w, const xform *l)
 {
-    rf_mesh *mesh = &L->scene->meshes[proto->mesh];
+    scene_mesh *mesh = &L->scene->meshes[proto->mesh];
     mesh->first_prim = L->scene->prim_count;
     int ok = 1;
     for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
-        rf_prim prim = *proto;
+        scene_prim prim = *proto;
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;
         place_triangle(&prim, w, l);
@@ -364,7 +364,7 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const 
     return ok;
 }
 
-static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
+static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
@@ -375,7 +375,7 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     int errors = L->diag.errors;
     if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
         return 0;
-    rf_mesh *m = loader_add_mesh(L);
+    scene_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
         m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
@@ -390,7 +390,7 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     return ok && L->diag.errors == errors;
 }
 
-static void place(rf_prim *prim, const xform *w, const xform *l)
+static void place(scene_prim *prim, const xform *w, const xform *l)
 {
     switch (prim->kind) {
     case PRIM_SPHERE: place_sphere(prim, w, l); break;
@@ -413,7 +413,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
 int lower_primitive(loader *L, const ast *block)
 {
     props p;
-    rf_prim prim;
+    scene_prim prim;
     xform w, l;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;

@@ -4,9 +4,9 @@
 #include <stdlib.h>
 #include "scene/scene.h"
 
-rf_limits scene_default_limits(void)
+scene_limits scene_default_limits(void)
 {
-    rf_limits l;
+    scene_limits l;
     l.max_width = 16384;
     l.max_height = 16384;
     l.max_pixels = 64L * 1024 * 1024;
@@ -23,7 +23,7 @@ rf_limits scene_default_limits(void)
     return l;
 }
 
-void scene_free(rf_scene *s)
+void scene_free(scene_model *s)
 {
     if (!s)
         return;

@@ -19,7 +19,7 @@
 #include "base/source.h"
 #include "base/status.h"
 
-typedef struct rf_material {
+typedef struct scene_material {
     rgb kd;            /* diffuse reflectivity K_d per channel, [0,1] (slide 11) */
     rgb ks;            /* specular coefficient K_s: highlight and mirror weight, [0,1] */
     double n;          /* Phong shininess exponent, >= 0 */
@@ -27,18 +27,18 @@ typedef struct rf_material {
     double ior;        /* index of refraction of the material's inside, > 0 */
     char *name;        /* NULL for an inline material */
     src_span where;
-} rf_material;
+} scene_material;
 
-typedef enum rf_prim_kind {
+typedef enum scene_prim_kind {
     PRIM_SPHERE,
     PRIM_PLANE,
     PRIM_TRIANGLE,     /* a `triangle` statement or one triangle of a mesh */
     PRIM_DISK,
     PRIM_BOX
-} rf_prim_kind;
+} scene_prim_kind;
 
-typedef struct rf_prim {
-    rf_prim_kind kind;
+typedef struct scene_prim {
+    scene_prim_kind kind;
     int material;          /* index into scene.materials */
     int mesh;              /* index into scene.meshes for mesh triangles, else -1 */
     union {
@@ -60,33 +60,33 @@ typedef struct rf_prim {
     xform to_world;
     xform to_local;
     src_span where;
-} rf_prim;
+} scene_prim;
 
-typedef struct rf_mesh {
+typedef struct scene_mesh {
     char *path;            /* the OBJ file as resolved */
     int first_prim;        /* its triangles are prims[first_prim .. first_prim+count-1] */
     int count;
     src_span where;
-} rf_mesh;
+} scene_mesh;
 
-typedef enum rf_falloff {
+typedef enum scene_falloff {
     FALLOFF_LINEAR,        /* E / (d + d0), the seed's choice (slide 16); the default */
     FALLOFF_INVERSE_SQUARE,/* E / (d + d0)^2 (slide 15 with the d0 guard) */
     FALLOFF_NONE           /* E */
-} rf_falloff;
+} scene_falloff;
 
-typedef enum rf_light_kind {
+typedef enum scene_light_kind {
     LIGHT_POINT,
     LIGHT_DISTANT,
     LIGHT_RECTANGLE,       /* distributed light over a parallelogram */
     LIGHT_DISK             /* distributed light over a disk */
-} rf_light_kind;
+} scene_light_kind;
 
-typedef struct rf_light {
-    rf_light_kind kind;
+typedef struct scene_light {
+    scene_light_kind kind;
     rgb power;             /* E_p; for distributed lights the total over all samples */
     double d0;             /* falloff offset, >= 0 */
-    rf_falloff falloff;    /* distant lights: always FALLOFF_NONE */
+    scene_falloff falloff;    /* distant lights: always FALLOFF_NONE */
     vec3 position;         /* point: the position; rectangle: a corner; disk: the centre */
     vec3 direction;        /* distant: unit direction the light travels */
     vec3 edge_u, edge_v;   /* rectangle: the two edges from the corner */
@@ -94,59 +94,59 @@ typedef struct rf_light {
     double radius;         /* disk: radius, > 0 */
     int samples;           /* distributed: number of point sources, >= 1 */
     src_span where;
-} rf_light;
+} scene_light;
 
-typedef enum rf_camera_kind {
+typedef enum scene_camera_kind {
     CAMERA_PERSPECTIVE,
     CAMERA_ORTHOGRAPHIC
-} rf_camera_kind;
+} scene_camera_kind;
 
-typedef struct rf_camera {
-    rf_camera_kind kind;
+typedef struct scene_camera {
+    scene_camera_kind kind;
     vec3 eye, look_at, up;  /* as written (up need not be orthogonal to the view) */
     double fov;             /* perspective: horizontal field of view in degrees, (0,180) */
     double width;           /* orthographic: horizontal extent of the view in scene units */
     vec3 forward, right, true_up; /* orthonormal basis derived at load time */
     src_span where;
-} rf_camera;
+} scene_camera;
 
-typedef struct rf_image_spec {
+typedef struct scene_image_spec {
     int width, height;     /* pixels */
     int samples;           /* k: a k x k grid of camera rays per pixel */
     int max_depth;         /* trace depth; 1 means camera rays only (slide 48) */
     rgb background;
-} rf_image_spec;
+} scene_image_spec;
 
 /* What the scene uses, so the tracer can leave out whole passes. */
-typedef struct rf_features {
+typedef struct scene_features {
     int shadows;           /* some primitive can occlude some light from some surface */
     int specular;          /* some material has Ks > 0: highlights */
     int reflection;        /* some material has Ks > 0: mirror rays */
     int refraction;        /* some material has t > 0 */
     int sampled_lights;    /* some distributed light */
     int meshes;            /* some mesh */
-} rf_features;
+} scene_features;
 
-typedef struct rf_scene {
-    rf_image_spec image;
-    rf_camera camera;
+typedef struct scene_model {
+    scene_image_spec image;
+    scene_camera camera;
     rgb ambient;               /* sum of all ambient blocks, I_a */
-    rf_material *materials;
+    scene_material *materials;
     int material_count;
-    rf_prim *prims;            /* bounded primitives and planes, mesh triangles included */
+    scene_prim *prims;            /* bounded primitives and planes, mesh triangles included */
     int prim_count;
-    rf_mesh *meshes;
+    scene_mesh *meshes;
     int mesh_count;
-    rf_light *lights;          /* point, distant and distributed lights (not ambient) */
+    scene_light *lights;          /* point, distant and distributed lights (not ambient) */
     int light_count;
-    rf_features features;
+    scene_features features;
     char *oracle;              /* `oracle NAME`, or NULL */
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
-} rf_scene;
+} scene_model;
 
 /* Limits on what an input may ask for, enforced before allocation. */
-typedef struct rf_limits {
+typedef struct scene_limits {
     long max_width, max_height;
     long max_pixels;
     long max_samples;          /* k of the k x k pixel grid */
@@ -159,10 +159,10 @@ typedef struct rf_limits {
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
     long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
-} rf_limits;
+} scene_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
-rf_limits scene_default_limits(void);
+scene_limits scene_default_limits(void);
 
 /*
  * Reads, parses, evaluates and validates a scene file.  Diagnostics go to
@@ -170,14 +170,14 @@ rf_limits scene_default_limits(void);
  * NULL with *status set to one of the exit codes below; on success *status
  * is REFRAY_EXIT_OK.  Never returns a partially valid scene.
  */
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out,
+scene_model *scene_load(const char *path, const scene_limits *limits, FILE *diag_out,
                      int warnings, int *status);
 
 /* The same from text in memory (path is used for messages and includes). */
-rf_scene *scene_load_text(const char *path, const char *text, size_t len,
-                          const rf_limits *limits, FILE *diag_out, int warnings, int *status);
+scene_model *scene_load_text(const char *path, const char *text, size_t len,
+                          const scene_limits *limits, FILE *diag_out, int warnings, int *status);
 
-void scene_free(rf_scene *scene);
+void scene_free(scene_model *scene);
 
 
 #endif

@@ -5,11 +5,11 @@
 #include "base/fileio.h"
 #include "scene/loader.h"
 
-rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
+scene_model *scene_load_text(const char *path, const char *text, size_t len, const scene_limits *limits, FILE *diag_out,
                           int warnings, int *status)
 {
-    rf_limits fallback = scene_default_limits();
-    rf_scene *s = calloc(1, sizeof *s);
+    scene_limits fallback = scene_default_limits();
+    scene_model *s = calloc(1, sizeof *s);
     loader L;
     if (!s) {
         *status = REFRAY_EXIT_SOFTWARE;
@@ -30,9 +30,9 @@ rf_scene *scene_load_text(const char *path, const char *text, size_t len, const 
     return s;
 }
 
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out, int warnings, int *status)
+scene_model *scene_load(const char *path, const scene_limits *limits, FILE *diag_out, int warnings, int *status)
 {
-    rf_limits fallback = scene_default_limits();
+    scene_limits fallback = scene_default_limits();
     char why[512], *text = NULL;
     size_t len = 0;
     if (!limits)
@@ -43,7 +43,7 @@ rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out, 
             fprintf(diag_out, "refray: error: %s\n", why);
         return NULL;
     }
-    rf_scene *s = scene_load_text(path, text, len, limits, diag_out, warnings, status);
+    scene_model *s = scene_load_text(path, text, len, limits, diag_out, warnings, status);
     free(text);
     return s;
 }

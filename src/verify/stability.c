@@ -53,7 +53,7 @@ static int render_rows(const tracer *t, int k, stab_image *out, trace_stats *st)
     return REFRAY_EXIT_OK;
 }
 
-int stability_render(const rf_scene *scene, const render_opts *opts, stab_image *out)
+int stability_render(const scene_model *scene, const render_opts *opts, stab_image *out)
 {
     tracer t;
     trace_stats st;
@@ -184,7 +184,7 @@ static void note_pixel(stab_report *r, const long double *pa, const long double 
 }
 
 int stability_compare(const stab_image *a, const stab_image *b, long double threshold, stab_report *r,
-                      rf_image *map)
+                      img_buf *map)
 {
     memset(r, 0, sizeof *r);
     r->abs_x = r->abs_y = r->rel_x = r->rel_y = -1;

@@ -18,7 +18,7 @@ static void copy_text(char *dst, size_t size, const char *src)
     snprintf(dst, size, "%s", src ? src : "");
 }
 
-oracle_view verify_view(const rf_scene *s, const verify_opts *o)
+oracle_view verify_view(const scene_model *s, const verify_opts *o)
 {
     oracle_view v;
     v.scene = s;
@@ -42,7 +42,7 @@ static void family_names(char *out, size_t size)
     }
 }
 
-const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int *status, char *why,
+const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
                                    size_t why_size)
 {
     if (!s->oracle) {
@@ -132,13 +132,13 @@ static int by_value(const void *a, const void *b)
 
 /* Renders runs times (the image is the same every time: the samples are a
  * pure function of the pixel), keeps the first image and the median time. */
-static int timed_render(const rf_scene *s, const render_opts *ro, int runs, rf_image *img, render_stats *st,
+static int timed_render(const scene_model *s, const render_opts *ro, int runs, img_buf *img, render_stats *st,
                         double *seconds)
 {
     double times[VERIFY_RUNS_MAX];
     runs = runs < 1 ? 1 : runs > VERIFY_RUNS_MAX ? VERIFY_RUNS_MAX : runs;
     for (int i = 0; i < runs; i++) {
-        rf_image again = {0, 0, NULL};
+        img_buf again = {0, 0, NULL};
         render_stats st_again;
         double start = render_clock();
         int status = render_image(s, ro, i == 0 ? img : &again, i == 0 ? st : &st_again);
@@ -154,7 +154,7 @@ static int timed_render(const rf_scene *s, const render_opts *ro, int runs, rf_i
     return REFRAY_EXIT_OK;
 }
 
-int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r)
+int verify_render_compare(const scene_model *s, const verify_opts *o, const verify_exact *e, verify_result *r)
 {
     render_opts ro;
     memset(&ro, 0, sizeof ro);
@@ -163,7 +163,7 @@ int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_
     ro.samples = e->view.samples;
     ro.max_depth = e->view.max_depth;
     ro.light_samples = o ? o->light_samples : 0;
-    rf_image img = {0, 0, NULL};
+    img_buf img = {0, 0, NULL};
     render_stats st;
     memset(&st, 0, sizeof st);
     int status = timed_render(s, &ro, o ? o->runs : 1, &img, &st, &r->render_seconds);
@@ -183,7 +183,7 @@ int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_
 
 /* Fills r's identity and view, finds the family.  Returns r->status
  * (0 when the scene can be checked, with *f set). */
-static int prepare(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r,
+static int prepare(const scene_model *s, const char *path, const verify_opts *o, verify_result *r,
                    const oracle_family **f)
 {
     memset(r, 0, sizeof *r);
@@ -206,7 +206,7 @@ static int prepare(const rf_scene *s, const char *path, const verify_opts *o, ve
     return REFRAY_EXIT_OK;
 }
 
-int verify_scene(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r)
+int verify_scene(const scene_model *s, const char *path, const verify_opts *o, verify_result *r)
 {
     const oracle_family *f;
     if (prepare(s, path, o, r, &f) != REFRAY_EXIT_OK)
@@ -295,7 +295,7 @@ static int worse(int a, int b)
     return a > b ? a : b;
 }
 
-int verify_sweep_run(const rf_scene *s, const char *path, const verify_opts *o, const verify_sweep *sw,
+int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *o, const verify_sweep *sw,
                      verify_result *steps, int *ran)
 {
     verify_exact e;
@@ -652,7 +652,7 @@ static int excluded_at(const unsigned char *mask, size_t p)
 }
 
 /* max over channels |a - b| at pixel p. */
-static double pixel_error(const rf_image *a, const rf_image *b, size_t p)
+static double pixel_error(const img_buf *a, const img_buf *b, size_t p)
 {
     double e = 0;
     for (int c = 0; c < 3; c++)
@@ -660,12 +660,12 @@ static double pixel_error(const rf_image *a, const rf_image *b, size_t p)
     return e;
 }
 
-static int same_size(const rf_image *a, const rf_image *b)
+static int same_size(const img_buf *a, const img_buf *b)
 {
     return a->width == b->width && a->height == b->height && a->rgb && b->rgb;
 }
 
-int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *mask, rf_image *out)
+int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mask, img_buf *out)
 {
     if (!same_size(a, b))
         return IMG_ESOFTWARE;
@@ -677,7 +677,7 @@ int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *m
     return status;
 }
 
-int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *mask, int style, rf_image *out)
+int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mask, int style, img_buf *out)
 {
     if (!same_size(a, b))
         return IMG_ESOFTWARE;
@@ -752,7 +752,7 @@ int verify_mask_write(const char *path, const unsigned char *mask, int width, in
 {
     if (has_extension(path, "pgm"))
         return pgm_write(path, mask, width, height, err, errlen);
-    rf_image img;
+    img_buf img;
     int status = img_create(&img, width, height);
     if (status != IMG_OK)
         return img_error(err, errlen, status, "cannot make a %dx%d mask", width, height);
@@ -806,7 +806,7 @@ static int pgm_read(FILE *fp, int width, int height, unsigned char *mask, char *
 static int mask_from_image(const char *path, int width, int height, unsigned char *mask, char *err,
                            size_t errlen)
 {
-    rf_image img;
+    img_buf img;
     int status = img_read(path, &img, err, errlen);
     if (status != IMG_OK)
         return status;

@@ -66,21 +66,21 @@ typedef struct verify_result {
 typedef struct verify_exact {
     const oracle_family *family;
     oracle_view view;
-    rf_image image;
+    img_buf image;
     unsigned char *excluded;  /* width*height flags */
     long excluded_count;
     double seconds;
 } verify_exact;
 
 /* The view a render with options o makes of s (the overrides applied). */
-oracle_view verify_view(const rf_scene *s, const verify_opts *o);
+oracle_view verify_view(const scene_model *s, const verify_opts *o);
 
 /*
  * The family of s, if it accepts view v.  Returns it, or NULL with the
  * reason in why and *status 65 (no `oracle` statement) or 1 (no family of
  * that name, or the family refused the scene: its own reason).
  */
-const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int *status, char *why,
+const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
                                    size_t why_size);
 
 /* Builds (and times) the exact image of f for v into e.  Returns 0 or 70
@@ -94,13 +94,13 @@ void verify_exact_free(verify_exact *e);
  * metrics, timings, rays and verdict.  r->scene is left as it is.
  * Returns r->status.
  */
-int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r);
+int verify_render_compare(const scene_model *s, const verify_opts *o, const verify_exact *e, verify_result *r);
 
 /*
  * The whole check of one loaded scene: family, exact image, render,
  * comparison.  path names the scene in r.  Returns r->status.
  */
-int verify_scene(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r);
+int verify_scene(const scene_model *s, const char *path, const verify_opts *o, verify_result *r);
 
 /* r for a scene that could not be loaded or checked: verdict ERROR. */
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason);
@@ -141,7 +141,7 @@ double verify_sweep_n(const verify_sweep *sw, int step);
  * status of the steps; steps past a failed exact image (70) or a refused
  * scene are not run (steps[0] then holds the reason and *ran is 1).
  */
-int verify_sweep_run(const rf_scene *s, const char *path, const verify_opts *o, const verify_sweep *sw,
+int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *o, const verify_sweep *sw,
                      verify_result *steps, int *ran);
 
 /* A convergence order, with whether it means anything. */
@@ -211,13 +211,13 @@ enum { VERIFY_MAP_COLOUR = 0, VERIFY_MAP_GREY = 1 };
  * default options stores exactly these display colours.  Returns 0 or
  * IMG_EOSERR / IMG_ESOFTWARE (sizes differ).
  */
-int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *mask, int style, rf_image *out);
+int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mask, int style, img_buf *out);
 
 /* The display colour of e in [0, 1] on the scale of style. */
 rgb verify_map_colour(double e, int style);
 
 /* |a - b| per channel (excluded pixels 0): the raw error, for EXR/PFM maps. */
-int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *mask, rf_image *out);
+int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mask, img_buf *out);
 
 /*
  * Writes a width x height mask (non-zero = excluded) to path: .pgm as a

@@ -24,14 +24,14 @@
 #include "image/metrics.h"
 #include "verify/verify.h"
 
-static rf_scene *load(const char *path, int *status)
+static scene_model *load(const char *path, int *status)
 {
-    rf_limits limits = scene_default_limits();
+    scene_limits limits = scene_default_limits();
     return scene_load(path, &limits, stderr, 0, status);
 }
 
 /* The exact image of the scene as written; 0 or an exit code. */
-static int exact_of(const rf_scene *s, verify_exact *e)
+static int exact_of(const scene_model *s, verify_exact *e)
 {
     verify_opts none;
     char why[512];
@@ -47,7 +47,7 @@ static int exact_of(const rf_scene *s, verify_exact *e)
 }
 
 /* Averages k x k blocks of in into out (the scene's size). */
-static int downsample(const rf_image *in, int k, rf_image *out)
+static int downsample(const img_buf *in, int k, img_buf *out)
 {
     if (k < 1 || in->width % k || in->height % k || img_create(out, in->width / k, in->height / k))
         return 0;
@@ -66,7 +66,7 @@ static int downsample(const rf_image *in, int k, rf_image *out)
 /* max |a - b| / |b| over the channels whose exact value is above 1% of the
  * peak: the relative error a 16-bit file can show (its step is 1.5e-5 of
  * full scale, so near-black channels give any relative error at all). */
-static double max_rel_bright(const rf_image *a, const rf_image *b, const unsigned char *excluded, double peak)
+static double max_rel_bright(const img_buf *a, const img_buf *b, const unsigned char *excluded, double peak)
 {
     double worst = 0;
     for (int y = 0; y < b->height; y++)
@@ -86,7 +86,7 @@ static int cmd_exact(const char *path)
 {
     int status;
     verify_exact e;
-    rf_scene *s = load(path, &status);
+    scene_model *s = load(path, &status);
     if (!s)
         return status;
     status = exact_of(s, &e);
@@ -104,7 +104,7 @@ static int cmd_exact(const char *path)
 
 static int compare_image(const verify_exact *e, const char *image, int k, double scale)
 {
-    rf_image raw, img;
+    img_buf raw, img;
     image_metrics m;
     char err[512];
     if (img_read(image, &raw, err, sizeof err) != 0) {
@@ -132,7 +132,7 @@ static int cmd_compare(const char *path, const char *image, int k, double scale)
 {
     int status;
     verify_exact e;
-    rf_scene *s = load(path, &status);
+    scene_model *s = load(path, &status);
     if (!s)
         return status;
     status = exact_of(s, &e);
@@ -154,7 +154,7 @@ static int cmd_refray(const char *path)
     int status;
     verify_opts none;
     verify_result r;
-    rf_scene *s = load(path, &status);
+    scene_model *s = load(path, &status);
     if (!s)
         return status;
     memset(&none, 0, sizeof none);
