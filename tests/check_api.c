@@ -19,9 +19,9 @@ START_TEST(test_api_load_render_compare)
     int status;
     scene_model *s = scene_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
     ck_assert_ptr_nonnull(s);
-    ck_assert_int_eq(status, REFRAY_EXIT_OK);
+    ck_assert_int_eq(status, STATUS_OK);
     img_buf img, want;
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, NULL), STATUS_OK);
     ck_assert_int_eq(img_create(&want, 2, 2), 0);
     for (int i = 0; i < 12; i++)
         want.rgb[i] = 1.1;

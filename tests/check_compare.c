@@ -153,7 +153,7 @@ START_TEST(test_verify_abs_diff_raw)
     img_free(&d);
     img_buf small;
     ck_assert_int_eq(img_create(&small, 2, 2), 0);
-    ck_assert_int_eq(verify_abs_diff(&a, &small, NULL, &d), IMG_ESOFTWARE);
+    ck_assert_int_eq(verify_abs_diff(&a, &small, NULL, &d), STATUS_INTERNAL);
     img_free(&small);
     img_free(&a);
     img_free(&b);
@@ -223,7 +223,7 @@ START_TEST(test_verify_mask_read_round_trip)
         ck_assert_int_eq(verify_mask_read(path, W, H, &back, err, sizeof err), 0);
         ck_assert(memcmp(back, mask, sizeof mask) == 0);
         free(back);
-        ck_assert_int_eq(verify_mask_read(path, W + 1, H, &back, err, sizeof err), IMG_EDATA);
+        ck_assert_int_eq(verify_mask_read(path, W + 1, H, &back, err, sizeof err), STATUS_DATA);
         ck_assert_ptr_null(back);
         ck_assert_msg(strstr(err, "4x3") != NULL, "message: %s", err);
     }

@@ -276,7 +276,7 @@ START_TEST(test_scene_load_error_limit)
     scene_model *s = scene_load_text("t.scene", text, strlen(text), NULL, f, 1, &status);
     fclose(f);
     ck_assert_ptr_null(s);
-    ck_assert_int_eq(status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(status, STATUS_DATA);
     int errors = 0;
     for (const char *p = strstr(out, ": error: "); p; p = strstr(p + 1, ": error: "))
         errors++;

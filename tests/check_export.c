@@ -327,7 +327,7 @@ START_TEST(test_pov_export_write_refused)
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_refused, &o, &n, &rc);
-    ck_assert_int_eq(rc, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(rc, STATUS_DATA);
     ck_assert_int_eq(n.refused, 1);
     ck_assert_msg(strstr(n.reason, "point_light at t.scene:1") && strstr(n.reason, "inverse_square") &&
                       strstr(n.reason, "d0 1"), "%s", n.reason);
@@ -446,10 +446,10 @@ START_TEST(test_pov_export_file_failures)
     pov_notes n;
     scene_model *bad = load(scene_refused), *good = load(scene_a);
     snprintf(path, sizeof path, "%s/refused.pov", dir);
-    ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), STATUS_DATA);
     ck_assert_int_eq(access(path, F_OK), -1);
     snprintf(path, sizeof path, "%s/missing/out.pov", dir);
-    ck_assert_int_eq(pov_export_file(good, &o, path, &n, err, sizeof err), REFRAY_EXIT_IOERR);
+    ck_assert_int_eq(pov_export_file(good, &o, path, &n, err, sizeof err), STATUS_IO);
     ck_assert_msg(strstr(err, "cannot write") && strstr(err, "missing/out.pov"), "%s", err);
     ck_assert_int_eq(dir_entries(dir), 0);
     scene_free(bad);
@@ -561,13 +561,13 @@ START_TEST(test_cli_export_file_and_refusal)
     free(sdl);
     const char *argv2[] = {"refray", "export", bad, "--to", "pov", "-o", out2, NULL};
     run_refray(argv2, &r);
-    ck_assert_int_eq(r.code, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(r.code, 65);
     ck_assert_msg(strstr(r.err, "refray: error: cannot export '") && strstr(r.err, "inverse_square"), "%s",
                   r.err);
     ck_assert_int_eq(access(out2, F_OK), -1);
     const char *argv3[] = {"refray", "export", scene, "--to", "mitsuba", NULL};
     run_refray(argv3, &r);
-    ck_assert_int_eq(r.code, REFRAY_EXIT_USAGE);
+    ck_assert_int_eq(r.code, 64);
     ck_assert_msg(strstr(r.err, "unknown target 'mitsuba'") != NULL, "%s", r.err);
     remove_dir(dir);
 }

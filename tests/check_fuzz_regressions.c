@@ -34,8 +34,8 @@ START_TEST(test_fuzz_regressions_load_to_a_verdict)
         int status;
         scene_model *s = scene_load(path, NULL, sink, 1, &status);
         fclose(sink);
-        ck_assert_msg(status == REFRAY_EXIT_OK || status == REFRAY_EXIT_DATAERR, "%s: status %d", path, status);
-        ck_assert_msg((s != NULL) == (status == REFRAY_EXIT_OK), "%s: scene and status disagree", path);
+        ck_assert_msg(status == STATUS_OK || status == STATUS_DATA, "%s: status %d", path, status);
+        ck_assert_msg((s != NULL) == (status == STATUS_OK), "%s: scene and status disagree", path);
         scene_free(s);
         files++;
     }

@@ -258,10 +258,10 @@ END_TEST
 START_TEST(test_img_create_and_free)
 {
     img_buf img;
-    ck_assert_int_eq(img_create(&img, 0, 3), IMG_ESOFTWARE);
+    ck_assert_int_eq(img_create(&img, 0, 3), STATUS_INTERNAL);
     ck_assert_ptr_null(img.rgb);
-    ck_assert_int_eq(img_create(&img, 4, -1), IMG_ESOFTWARE);
-    ck_assert_int_eq(img_create(&img, 2, 3), IMG_OK);
+    ck_assert_int_eq(img_create(&img, 4, -1), STATUS_INTERNAL);
+    ck_assert_int_eq(img_create(&img, 2, 3), STATUS_OK);
     ck_assert_int_eq(img.width, 2);
     ck_assert_int_eq(img.height, 3);
     for (int i = 0; i < 18; i++)
@@ -402,15 +402,15 @@ START_TEST(test_img_read_pfm_variants)
     img_free(&img);
     static const unsigned char truncated[] = "PF\n2 2\n-1.0\n\0\0\x80\x3F";
     put_file(path, truncated, sizeof truncated - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
     ck_assert_ptr_null(img.rgb);
     put_file(path, "P6\n1 1\n255\n\0\0\0", sizeof "P6\n1 1\n255\n\0\0\0" - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n-3 2\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n100000 100000\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "too large") != NULL, "%s", err);
     tmpdir_remove(&d);
 }
@@ -491,7 +491,7 @@ START_TEST(test_img_read_ppm_16bit)
     img_free(&img);
     static const unsigned char over[] = "P6 1 1 200\n\xC9\0\0";
     put_file(path, over, sizeof over - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     tmpdir_remove(&d);
 }
 END_TEST
@@ -656,7 +656,7 @@ START_TEST(test_img_read_png_gamma_rules)
         img_free(&back);
     }
     put_str(path, "\x89PNG\r\n\x1A\nnonsense");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "PNG") != NULL, "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -672,11 +672,11 @@ START_TEST(test_img_write_png_compiled_out)
     img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "x.png");
-    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "this refray was built without libpng (PNG=0); write .ppm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x89PNG\r\n\x1A\n");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without libpng (PNG=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -768,7 +768,7 @@ START_TEST(test_img_read_exr_rejects_garbage)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "bad.exr");
     put_str(path, "\x76\x2f\x31\x01 this is not an image");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strncmp(err, "cannot read '", 13) == 0, "%s", err);
     ck_assert_ptr_null(img.rgb);
     tmpdir_remove(&d);
@@ -784,11 +784,11 @@ START_TEST(test_img_write_exr_compiled_out)
     img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "x.exr");
-    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "this refray was built without OpenEXR (EXR=0); write .pfm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x76\x2f\x31\x01");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without OpenEXR (EXR=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -817,12 +817,12 @@ START_TEST(test_img_write_unknown_extension_is_usage_error)
     char path[256], err[256] = "";
     img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "a.jpg"), &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "a.jpg"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.jpg'") && strstr(err, ".pfm .ppm"), "%s", err);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "no file extension"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
-    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.tiff'"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -837,16 +837,16 @@ START_TEST(test_img_write_rejects_bad_arguments)
     img_write_opts o = img_write_opts_default();
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "a.pfm");
-    ck_assert_int_eq(img_write(path, &none, NULL, err, sizeof err), IMG_ESOFTWARE);
+    ck_assert_int_eq(img_write(path, &none, NULL, err, sizeof err), STATUS_INTERNAL);
     o.png_bits = 12;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "8 or 16"), "%s", err);
     o = img_write_opts_default();
     o.tone = 7;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     o = img_write_opts_default();
     o.exposure_stops = NAN;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     ck_assert_int_eq(count_entries(d.path), 0);
     img_free(&img);
     tmpdir_remove(&d);
@@ -857,7 +857,7 @@ START_TEST(test_img_read_missing_file)
 {
     char err[256];
     img_buf img;
-    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), IMG_ENOINPUT);
+    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), STATUS_NO_INPUT);
     ck_assert_msg(strstr(err, "/nonexistent-refray-dir/none.pfm") && strstr(err, strerror(ENOENT)), "%s", err);
 }
 END_TEST
@@ -871,7 +871,7 @@ START_TEST(test_img_write_into_missing_directory)
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         char name[32];
         snprintf(name, sizeof name, "missing/out%s", built_exts[i]);
-        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, strerror(ENOENT)) && strstr(err, path), "%s", err);
     }
     ck_assert_int_eq(count_entries(d.path), 0);
@@ -890,7 +890,7 @@ START_TEST(test_img_write_name_too_long)
     memset(name, 'n', 246);
     strcpy(name + 246, ".pfm");
     tmpdir_make(&d);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
     ck_assert_msg(strstr(err, strerror(ENAMETOOLONG)), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     img_free(&img);
@@ -912,7 +912,7 @@ START_TEST(test_img_write_rename_failure_cleans_up)
         char name[32];
         snprintf(name, sizeof name, "dir%s", built_exts[i]);
         ck_assert_int_eq(mkdir(in_dir(path, sizeof path, &d, name), 0755), 0);
-        ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, "not a regular file"), "%s", err);
         ck_assert_int_eq(count_entries(d.path), i + 1);
         ck_assert(stat(path, &sb) == 0 && S_ISDIR(sb.st_mode));
@@ -945,7 +945,7 @@ START_TEST(test_img_write_failing_stream_keeps_old_file)
         ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &low), 0);
         int rc = img_write(path, &img, NULL, err, sizeof err);
         ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &old), 0);
-        ck_assert_msg(rc == IMG_EIO, "%s: rc %d, %s", name, rc, err);
+        ck_assert_msg(rc == STATUS_IO, "%s: rc %d, %s", name, rc, err);
         ck_assert_msg(strstr(err, strerror(EFBIG)), "%s: %s", name, err);
         size_t n;
         unsigned char *b = slurp(path, &n);
@@ -970,7 +970,7 @@ START_TEST(test_img_write_stream_to_full_device)
         err[0] = '\0';
         int rc = img_write_stream(f, img_format_from_path(built_exts[i]), &img, NULL, err, sizeof err);
         fclose(f);
-        ck_assert_msg(rc == IMG_EIO, "%s: rc %d", built_exts[i], rc);
+        ck_assert_msg(rc == STATUS_IO, "%s: rc %d", built_exts[i], rc);
         ck_assert_msg(strstr(err, strerror(ENOSPC)), "%s: %s", built_exts[i], err);
     }
     img_free(&img);
@@ -1016,7 +1016,7 @@ START_TEST(test_img_write_into_read_only_directory)
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         char name[32];
         snprintf(name, sizeof name, "ro%s", built_exts[i]);
-        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, strerror(EACCES)), "%s", err);
     }
     ck_assert_int_eq(count_entries(d.path), 0);

@@ -88,7 +88,7 @@ START_TEST(test_scene_load_include_error_location)
     loaded l;
     load_file(&l, INC "with_error.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(l.messages, INC "parts/bad.scene:2:17: error: radius must be > 0, got -1\n"
                                  "    2 | sphere { radius -1 }\n"
                                  "      |                 ^~\n"
@@ -104,7 +104,7 @@ START_TEST(test_scene_load_include_cycle)
     loaded l;
     load_file(&l, INC "cycle_a.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "cycle_b.scene:1:9: error: include cycle: 'cycle_a.scene' is already being read");
     loaded_done(&l);
 }
@@ -141,11 +141,11 @@ START_TEST(test_scene_load_include_directory_and_missing)
 {
     loaded l;
     load_file(&l, INC "directory.scene", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "directory.scene:2:9: error: '" INC "parts' is a directory, not a file");
     loaded_done(&l);
     load_file(&l, INC "missing.scene", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "missing.scene:2:9: error: cannot open '" INC
                                      "parts/nowhere.scene': No such file or directory");
     loaded_done(&l);
@@ -159,17 +159,17 @@ START_TEST(test_scene_load_file_errors)
     loaded l;
     load_file(&l, INC "no_such.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_NOINPUT);
+    ck_assert_int_eq(l.status, STATUS_NO_INPUT);
     ck_assert_str_eq(first_line(&l), "refray: error: cannot open '" INC "no_such.scene': No such file or directory");
     loaded_done(&l);
     load_file(&l, INC "parts", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_NOINPUT);
+    ck_assert_int_eq(l.status, STATUS_NO_INPUT);
     ck_assert_str_eq(first_line(&l), "refray: error: '" INC "parts' is a directory, not a file");
     loaded_done(&l);
     scene_limits lim = scene_default_limits();
     lim.max_file_bytes = 10;
     load_file(&l, INC "main.scene", &lim);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_ptr_nonnull(strstr(first_line(&l), "bytes, over the limit of 10 (--max-file-size)"));
     loaded_done(&l);
     /* The limit holds for included files too. */
@@ -180,7 +180,7 @@ START_TEST(test_scene_load_file_errors)
     /* big_include.scene is 26 bytes, parts/big.scene 110. */
     lim.max_file_bytes = 109;
     load_file(&l, INC "big_include.scene", &lim);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "big_include.scene:1:9: error: '" INC "parts/big.scene' is 110 bytes, over "
                                      "the limit of 109 (--max-file-size)");
     loaded_done(&l);

@@ -49,7 +49,7 @@ static scene_model *load_ok(loaded *l, const char *text)
 {
     load(l, text);
     ck_assert_msg(l->scene != NULL, "%s: %s", text, l->messages);
-    ck_assert_int_eq(l->status, REFRAY_EXIT_OK);
+    ck_assert_int_eq(l->status, STATUS_OK);
     return l->scene;
 }
 
@@ -311,7 +311,7 @@ START_TEST(test_scene_load_validation_errors)
         loaded l;
         load(&l, cases[i].text);
         ck_assert_msg(l.scene == NULL, "%s loaded", cases[i].text);
-        ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+        ck_assert_int_eq(l.status, STATUS_DATA);
         ck_assert_str_eq(first_line(&l), cases[i].message);
         loaded_done(&l);
     }
@@ -515,7 +515,7 @@ START_TEST(test_scene_load_warnings)
         loaded l;
         load(&l, cases[i].text);
         ck_assert_msg(l.scene != NULL, "%s: %s", cases[i].text, l.messages);
-        ck_assert_int_eq(l.status, REFRAY_EXIT_OK);
+        ck_assert_int_eq(l.status, STATUS_OK);
         ck_assert_str_eq(first_line(&l), cases[i].message);
         loaded_done(&l);
         /* Switched off, nothing is printed. */
@@ -659,7 +659,7 @@ START_TEST(test_scene_load_mesh_errors)
     ck_assert_str_eq(first_line(&l),
                      "tests/scenes/mesh.scene:1:13: error: cannot open 'tests/scenes/../obj/none.obj': "
                      "No such file or directory");
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     loaded_done(&l);
     load(&l, "mesh {}");
     ck_assert_str_eq(first_line(&l), "t.scene:1:1: error: mesh needs 'file'");

@@ -601,10 +601,10 @@ START_TEST(test_area_scenes_meet_their_tolerance)
     char why[200];
     ck_assert_msg(f->accepts(&v, why, sizeof why), "%s: %s", path, why);
     img_buf got, want;
-    ck_assert_int_eq(render_image(s, NULL, &got, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &got, NULL), STATUS_OK);
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     long excluded_count = 0;
-    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, &excluded_count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, &excluded_count), STATUS_OK);
     double tol = f->tolerance(&v, 0);
     image_metrics m;
     metrics_compare(&got, &want, excluded, tol, &m);
@@ -630,7 +630,7 @@ static double convergence_slope(const char *path, int width, int height)
     oracle_view v = {s, width, height, s->image.samples, s->image.max_depth};
     img_buf want;
     unsigned char *excluded = calloc((size_t)width * (size_t)height, 1);
-    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, NULL), STATUS_OK);
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     int count = 0;
     for (int n = 1; n <= 1024; n *= 4) {
@@ -640,7 +640,7 @@ static double convergence_slope(const char *path, int width, int height)
         o.height = height;
         o.light_samples = n;
         img_buf got;
-        ck_assert_int_eq(render_image(s, &o, &got, NULL), REFRAY_EXIT_OK);
+        ck_assert_int_eq(render_image(s, &o, &got, NULL), STATUS_OK);
         image_metrics m;
         metrics_compare(&got, &want, excluded, 1, &m);
         double x = log((double)n), y = log(m.rms);

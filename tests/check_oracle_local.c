@@ -562,8 +562,8 @@ START_TEST(test_oracle_image_matches_render)
     long count = -1;
     image_metrics m;
     ck_assert_ptr_nonnull(excluded);
-    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), REFRAY_EXIT_OK);
-    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, &count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), STATUS_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, &count), STATUS_OK);
     metrics_compare(&traced, &exact, excluded, f->tolerance(&v, 0), &m);
     report(sc, &m, count);
     ck_assert_msg(m.over == 0, "%s: %ld pixels over %g; max rel %.3e, worst pixel (%d, %d)", sc->path, m.over,
@@ -608,7 +608,7 @@ static void highlight_peak(const char *path, int keep_falloff, int *bi, int *bj)
         s->lights[k].falloff = FALLOFF_NONE;
     s->ambient = vec_splat(0);
     s->image.background = vec_splat(0);
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, NULL), STATUS_OK);
     brightest(&img, bi, bj);
     img_free(&img);
     scene_free(s);
@@ -617,7 +617,7 @@ static void highlight_peak(const char *path, int keep_falloff, int *bi, int *bj)
 static double traced_pixel(const scene_model *s, int i, int j)
 {
     img_buf img;
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, NULL), STATUS_OK);
     double value = img_pixel(&img, i, j)[0];
     img_free(&img);
     return value;

@@ -588,8 +588,8 @@ static void compare_scene(const scene_model *s, const char *name, image_metrics 
     img_buf traced, exact;
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     ck_assert_ptr_nonnull(excluded);
-    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), REFRAY_EXIT_OK);
-    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), STATUS_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, count), STATUS_OK);
     ck_assert_double_eq(f->tolerance(&v, 0), 1e-9);
     metrics_compare(&traced, &exact, excluded, f->tolerance(&v, 0), m);
     *range = spread(&exact, excluded);

@@ -279,7 +279,7 @@ START_TEST(test_render_image_stops_when_asked)
     memset(&o, 0, sizeof o);
     o.progress = stop_after_two_rows;
     img_buf img = {0, 0, NULL};
-    ck_assert_int_eq(render_image(s, &o, &img, NULL), REFRAY_EXIT_INTERRUPTED);
+    ck_assert_int_eq(render_image(s, &o, &img, NULL), STATUS_CANCELLED);
     ck_assert_ptr_null(img.rgb);
     scene_free(s);
 }
@@ -300,7 +300,7 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
     o.max_tree_rays = 10000;
     img_buf img = {0, 0, NULL};
     render_stats st;
-    ck_assert_int_eq(render_image(s, &o, &img, &st), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(render_image(s, &o, &img, &st), STATUS_DATA);
     ck_assert_ptr_null(img.rgb);
     ck_assert(st.trace.tree_overflow);
     ck_assert(st.trace.tree_rays <= 10001);

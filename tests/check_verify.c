@@ -93,7 +93,7 @@ START_TEST(test_verify_render_compare_detects_an_error)
     ck_assert_int_eq(verify_exact_build(oracle_find("ambient_only"), &v, &e), 0);
     ck_assert_near(img_pixel(&e.image, 16, 12)[0], 0.4, 1e-15);
     img_pixel(&e.image, 16, 12)[0] += 1e-6;
-    ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), STATUS_FAIL);
     ck_assert_int_eq(r.verdict, VERIFY_FAIL);
     ck_assert_int_eq(r.metrics.over, 1);
     ck_assert_int_eq(r.metrics.worst_x, 16);
@@ -111,7 +111,7 @@ START_TEST(test_verify_family_refused)
 {
     scene_model *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient_only");
     verify_result r;
-    ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), STATUS_FAIL);
     ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
     ck_assert_str_eq(r.reason, "ambient_only: the scene must have no lights (it has 1)");
     scene_free(s);
@@ -125,13 +125,13 @@ START_TEST(test_verify_family_unknown_and_missing)
     char why[512];
     int status;
     ck_assert_ptr_null(verify_family(s, &v, &status, why, sizeof why));
-    ck_assert_int_eq(status, REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(status, STATUS_FAIL);
     ck_assert_msg(strstr(why, "no oracle family is called 'no_such_family' (known: ") && strstr(why, "ambient_only"),
                   "why: %s", why);
     free(s->oracle);
     s->oracle = NULL;
     verify_result r;
-    ck_assert_int_eq(verify_scene(s, "plain.scene", NULL, &r), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(verify_scene(s, "plain.scene", NULL, &r), STATUS_DATA);
     ck_assert_int_eq(r.verdict, VERIFY_ERROR);
     ck_assert_msg(strstr(r.reason, "no `oracle NAME` statement") != NULL, "reason: %s", r.reason);
     scene_free(s);
@@ -409,7 +409,7 @@ START_TEST(test_verify_json_results_well_formed)
     s->oracle = strdup("nope\\family");
     verify_scene(s, "b.scene", NULL, &r[1]);
     memset(&r[2], 0, sizeof r[2]);
-    verify_result_error(&r[2], "missing\n.scene", REFRAY_EXIT_NOINPUT, "cannot read");
+    verify_result_error(&r[2], "missing\n.scene", STATUS_NO_INPUT, "cannot read");
     membuf m;
     mem_open(&m);
     verify_json_results(m.fp, r, 3);

@@ -56,7 +56,7 @@ static scene_model *load_stress(const char *name)
  * nothing non-finite and every stored value is finite. */
 static void render_checked(const scene_model *s, img_buf *img, render_stats *st)
 {
-    ck_assert_int_eq(render_image(s, NULL, img, st), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, img, st), STATUS_OK);
     ck_assert_msg(st->trace.nonfinite == 0, "%ld non-finite values traced", st->trace.nonfinite);
     for (long i = 0; i < 3 * img->width * img->height; i++)
         ck_assert_msg(isfinite(img->rgb[i]), "value %ld is %g", i, img->rgb[i]);
@@ -1044,7 +1044,7 @@ START_TEST(test_stability_render_is_render_image)
      * (the same render_pixel, only not rounded to double on the way). */
     scene_model *s = load_stress("touching_glass_pair");
     stab_image si;
-    ck_assert_int_eq(stability_render(s, NULL, &si), REFRAY_EXIT_OK);
+    ck_assert_int_eq(stability_render(s, NULL, &si), STATUS_OK);
     ck_assert_str_eq(stability_real_name(), sizeof(real) == sizeof(double) ? "double" : "long-double");
     img_buf img;
     render_stats st;

@@ -13,7 +13,7 @@
 static int open_error(const char *path, char *why, size_t why_size)
 {
     snprintf(why, why_size, "cannot open '%s': %s", path, strerror(errno));
-    return REFRAY_EXIT_NOINPUT;
+    return STATUS_NO_INPUT;
 }
 
 static int read_stream(FILE *f, const char *path, size_t size, char **text, size_t *len, char *why,
@@ -22,14 +22,14 @@ static int read_stream(FILE *f, const char *path, size_t size, char **text, size
     char *buf = malloc(size + 1);
     if (!buf) {
         snprintf(why, why_size, "out of memory reading '%s'", path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     size_t got = fread(buf, 1, size, f);
     /* A file that grew since fstat is read only up to its checked size. */
     if (got != size || ferror(f)) {
         snprintf(why, why_size, "error reading '%s': %s", path, ferror(f) ? strerror(errno) : "file shrank");
         free(buf);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     buf[size] = '\0';
     *text = buf;
@@ -44,16 +44,16 @@ int file_read_all(const char *path, long max_bytes, char **text, size_t *len, ch
         return open_error(path, why, why_size);
     if (S_ISDIR(st.st_mode)) {
         snprintf(why, why_size, "'%s' is a directory, not a file", path);
-        return REFRAY_EXIT_NOINPUT;
+        return STATUS_NO_INPUT;
     }
     if (!S_ISREG(st.st_mode)) {
         snprintf(why, why_size, "'%s' is not a regular file", path);
-        return REFRAY_EXIT_NOINPUT;
+        return STATUS_NO_INPUT;
     }
     if (max_bytes >= 0 && st.st_size > max_bytes) {
         snprintf(why, why_size, "'%s' is %lld bytes, over the limit of %ld (--max-file-size)", path,
                  (long long)st.st_size, max_bytes);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     FILE *f = fopen(path, "rb");
     if (!f)

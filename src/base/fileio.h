@@ -9,9 +9,9 @@
 
 /*
  * Reads path into a malloc'd, NUL-terminated buffer.  Returns 0 on success;
- * otherwise REFRAY_EXIT_NOINPUT (missing, unreadable, a directory, not a
- * regular file), REFRAY_EXIT_DATAERR (larger than max_bytes) or
- * REFRAY_EXIT_IOERR (a read failed), with a one-line reason in why.
+ * otherwise STATUS_NO_INPUT (missing, unreadable, a directory, not a
+ * regular file), STATUS_DATA (larger than max_bytes) or
+ * STATUS_IO (a read failed), with a one-line reason in why.
  */
 int file_read_all(const char *path, long max_bytes, char **text, size_t *len, char *why, size_t why_size);
 

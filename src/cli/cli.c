@@ -46,11 +46,11 @@ int cli_main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage_text, stdout);
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     }
     if (strcmp(cmd, "--version") == 0) {
         printf("refray %s\n", REFRAY_VERSION);
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     }
     if (strcmp(cmd, "check") == 0)
         return cli_check(argc - 1, argv + 1);

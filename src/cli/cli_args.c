@@ -18,7 +18,7 @@ int cli_usage_error(const char *fmt, ...)
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputs("\n(see refray --help)\n", stderr);
-    return REFRAY_EXIT_USAGE;
+    return STATUS_USAGE;
 }
 
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out)
@@ -92,7 +92,7 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         }
         int used = cli_scene_opt(scene, argc, argv, i);
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used > 0) {
             i += used - 1;
             continue;
@@ -105,7 +105,7 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         }
         int r = option(args, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
     }
@@ -191,14 +191,3 @@ int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size
     return 0;
 }
 
-int cli_image_status(int img_status)
-{
-    switch (img_status) {
-    case IMG_OK: return REFRAY_EXIT_OK;
-    case IMG_EUSAGE: return REFRAY_EXIT_USAGE;
-    case IMG_EDATA: return REFRAY_EXIT_DATAERR;
-    case IMG_ENOINPUT: return REFRAY_EXIT_NOINPUT;
-    case IMG_EIO: return REFRAY_EXIT_IOERR;
-    default: return REFRAY_EXIT_SOFTWARE;
-    }
-}

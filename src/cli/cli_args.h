@@ -41,7 +41,7 @@ typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
  * The argument loop of a command that reads one scene: --help (prints help,
  * returns -1), the shared scene options, one SCENE into *input, and the
  * command's own options through option.  Returns 0 to go on, -1 after help,
- * or REFRAY_EXIT_USAGE after the error was printed.
+ * or STATUS_USAGE after the error was printed.
  */
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                         const char **input, cli_option_fn option, void *args);
@@ -70,8 +70,5 @@ int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, in
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
  * checked by the loader, so only an override can exceed it. */
 int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size);
-
-/* Maps an image-library status to the exit code the commands use. */
-int cli_image_status(int img_status);
 
 #endif

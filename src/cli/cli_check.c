@@ -63,15 +63,15 @@ int cli_check(int argc, char **argv)
 {
     cli_scene_opts opts;
     cli_scene_opts_init(&opts);
-    int files = 0, worst = REFRAY_EXIT_OK;
+    int files = 0, worst = STATUS_OK;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             fputs(check_help, stdout);
-            return REFRAY_EXIT_OK;
+            return STATUS_OK;
         }
         int used = argv[i][0] == '-' && argv[i][1] ? cli_scene_opt(&opts, argc, argv, i) : 0;
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used == 0 && argv[i][0] == '-' && argv[i][1])
             return cli_usage_error("check: unknown option '%s'", argv[i]);
         i += used > 0 ? used - 1 : 0;
@@ -90,8 +90,7 @@ int cli_check(int argc, char **argv)
         if (s)
             print_summary(argv[i], s);
         scene_free(s);
-        if (status > worst)
-            worst = status;
+        worst = status_worse(worst, status);
     }
     fflush(stdout);
     return worst;

@@ -76,7 +76,7 @@ static int parse_args(compare_args *a, int argc, char **argv)
         }
         int r = compare_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("compare: unknown option '%s'", argv[i]);
     }
@@ -91,9 +91,9 @@ static int read_image(const char *path, img_buf *img)
 {
     char err[512];
     int status = img_read(path, img, err, sizeof err);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
 static void print_text(const compare_args *a, const img_buf *img, const image_metrics *m)
@@ -133,15 +133,15 @@ static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref
     int raw = fmt == IMG_FORMAT_EXR || fmt == IMG_FORMAT_PFM;
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
     char err[512] = "out of memory making the error map";
-    if (status == IMG_OK) {
+    if (status == STATUS_OK) {
         img_write_opts wo = img_write_opts_default();
         wo.exr_float = 1;
         status = img_write(a->diff, &map, &wo, err, sizeof err);
         img_free(&map);
     }
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
 /* Compares the two loaded images; returns the exit code. */
@@ -150,26 +150,26 @@ static int compare_images(const compare_args *a, const img_buf *x, const img_buf
     if (x->width != ref->width || x->height != ref->height) {
         fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
                 x->height, a->b, ref->width, ref->height);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     unsigned char *mask = NULL;
     char err[512];
-    int status = a->mask ? verify_mask_read(a->mask, ref->width, ref->height, &mask, err, sizeof err) : IMG_OK;
-    if (status != IMG_OK) {
+    int status = a->mask ? verify_mask_read(a->mask, ref->width, ref->height, &mask, err, sizeof err) : STATUS_OK;
+    if (status != STATUS_OK) {
         fprintf(stderr, "refray: error: %s: %s\n", a->mask, err);
-        return cli_image_status(status);
+        return status;
     }
     image_metrics m;
     metrics_compare(x, ref, mask, a->has_tolerance ? a->tolerance : 0, &m);
-    status = a->diff ? write_map(a, x, ref, mask) : REFRAY_EXIT_OK;
+    status = a->diff ? write_map(a, x, ref, mask) : STATUS_OK;
     free(mask);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
     if (a->json)
         print_json(a, &m);
     else
         print_text(a, x, &m);
-    return a->has_tolerance && m.over > 0 ? REFRAY_EXIT_FAIL : REFRAY_EXIT_OK;
+    return a->has_tolerance && m.over > 0 ? STATUS_FAIL : STATUS_OK;
 }
 
 int cli_compare(int argc, char **argv)
@@ -178,12 +178,12 @@ int cli_compare(int argc, char **argv)
     memset(&a, 0, sizeof a);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     img_buf x = {0, 0, NULL}, ref = {0, 0, NULL};
     status = read_image(a.a, &x);
-    if (status == REFRAY_EXIT_OK)
+    if (status == STATUS_OK)
         status = read_image(a.b, &ref);
-    if (status == REFRAY_EXIT_OK)
+    if (status == STATUS_OK)
         status = compare_images(&a, &x, &ref);
     img_free(&x);
     img_free(&ref);

@@ -91,7 +91,7 @@ static int export_scene(export_args *a, const scene_model *scene)
         status = pov_export_file(scene, &a->pov, a->output, &notes, err, sizeof err);
     else
         status = pov_export_write(scene, &a->pov, stdout, &notes);
-    if (status == REFRAY_EXIT_DATAERR) {
+    if (status == STATUS_DATA) {
         fprintf(stderr, "refray: error: cannot export '%s' to POV-Ray: %s\n", a->input, notes.reason);
         return status;
     }
@@ -100,7 +100,7 @@ static int export_scene(export_args *a, const scene_model *scene)
         return status;
     }
     print_notes(a->input, &notes);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_export(int argc, char **argv)
@@ -110,7 +110,7 @@ int cli_export(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;

@@ -153,7 +153,7 @@ static int check_output(const render_args *a)
         fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
                 dir ? "directory missing or not writable" : "out of memory");
     free(dir);
-    return ok ? 0 : REFRAY_EXIT_IOERR;
+    return ok ? 0 : STATUS_IO;
 }
 
 typedef struct progress_state {
@@ -206,18 +206,18 @@ static int render_and_write(render_args *a, const scene_model *scene)
     a->render.progress = progress;
     a->render.max_tree_rays = a->scene.limits.max_ray_tree;
     a->render.progress_ctx = &p;
-    int status = interrupted ? REFRAY_EXIT_INTERRUPTED : render_image(scene, &a->render, &img, &stats);
-    if (status == REFRAY_EXIT_DATAERR) {
+    int status = interrupted ? STATUS_CANCELLED : render_image(scene, &a->render, &img, &stats);
+    if (status == STATUS_DATA) {
         fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
                 "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
                 stats.overflow_x, stats.overflow_y, a->render.max_tree_rays);
         return status;
     }
-    if (status == REFRAY_EXIT_INTERRUPTED) {
+    if (status == STATUS_CANCELLED) {
         fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
         return status;
     }
-    if (status != REFRAY_EXIT_OK) {
+    if (status != STATUS_OK) {
         fprintf(stderr, "refray: error: out of memory rendering '%s'\n", a->input);
         return status;
     }
@@ -227,18 +227,18 @@ static int render_and_write(render_args *a, const scene_model *scene)
     if (strcmp(a->output, "-") == 0) {
         wstatus = img_write_stream(stdout, stdout_format(a->format), &img, &a->image, err, sizeof err);
         if (wstatus == 0 && fflush(stdout) != 0)
-            wstatus = IMG_EIO;
+            wstatus = STATUS_IO;
     } else {
         wstatus = img_write(a->output, &img, &a->image, err, sizeof err);
     }
     img_free(&img);
     if (wstatus != 0) {
         fprintf(stderr, "refray: error: %s\n", err);
-        return wstatus == IMG_EUSAGE ? REFRAY_EXIT_USAGE : REFRAY_EXIT_IOERR;
+        return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
     }
     if (a->stats)
         print_stats(&stats, &written);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_render(int argc, char **argv)
@@ -249,7 +249,7 @@ int cli_render(int argc, char **argv)
     a.image = img_write_opts_default();
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
@@ -257,7 +257,7 @@ int cli_render(int argc, char **argv)
     signal(SIGINT, on_interrupt);
     scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
-        return interrupted ? REFRAY_EXIT_INTERRUPTED : status;
+        return interrupted ? STATUS_CANCELLED : status;
     if ((double)(a.render.width ? a.render.width : scene->image.width) *
             (a.render.height ? a.render.height : scene->image.height) > (double)a.scene.limits.max_pixels) {
         scene_free(scene);

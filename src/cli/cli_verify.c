@@ -90,7 +90,7 @@ static int parse_args(verify_args *a, int argc, char **argv)
         }
         int used = cli_scene_opt(&a->scene, argc, argv, i);
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used > 0) {
             i += used - 1;
             continue;
@@ -101,7 +101,7 @@ static int parse_args(verify_args *a, int argc, char **argv)
         }
         int r = verify_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("verify: unknown option '%s'", argv[i]);
     }
@@ -182,9 +182,9 @@ static void print_totals(const verify_result *r, int count)
 
 static const char *load_reason(int status)
 {
-    if (status == REFRAY_EXIT_NOINPUT)
+    if (status == STATUS_NO_INPUT)
         return "cannot read the scene (see the message above)";
-    if (status == REFRAY_EXIT_SOFTWARE)
+    if (status == STATUS_NO_MEMORY)
         return "out of memory loading the scene";
     return "not a valid scene (see the diagnostics above)";
 }
@@ -202,7 +202,7 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
     oracle_view v = verify_view(s, &a->view);
     char why[256];
     if (!cli_view_fits(&v, &a->scene.limits, why, sizeof why)) {
-        verify_result_error(r, path, REFRAY_EXIT_USAGE, why);
+        verify_result_error(r, path, STATUS_USAGE, why);
         scene_free(s);
         return NULL;
     }
@@ -211,7 +211,7 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
 
 static int verify_all(const verify_args *a, verify_result *results)
 {
-    int worst = REFRAY_EXIT_OK, w = name_width(a);
+    int worst = STATUS_OK, w = name_width(a);
     if (!a->json)
         print_header(w);
     for (int i = 0; i < a->path_count; i++) {
@@ -220,7 +220,7 @@ static int verify_all(const verify_args *a, verify_result *results)
             verify_scene(s, a->paths[i], &a->view, &results[i]);
             scene_free(s);
         }
-        worst = results[i].status > worst ? results[i].status : worst;
+        worst = status_worse(worst, results[i].status);
         if (!a->json) {
             print_row(&results[i], w);
             fflush(stdout);
@@ -297,13 +297,13 @@ static int sweep_one(const verify_args *a, const char *path, verify_result *step
 static int close_tsv(FILE *tsv, const char *path)
 {
     if (!tsv)
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     int bad = ferror(tsv);
     bad |= fclose(tsv) != 0;
     if (!bad)
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     fprintf(stderr, "refray: error: could not write '%s'\n", path);
-    return REFRAY_EXIT_IOERR;
+    return STATUS_IO;
 }
 
 static int sweep_all(const verify_args *a, verify_result *steps)
@@ -311,19 +311,19 @@ static int sweep_all(const verify_args *a, verify_result *steps)
     FILE *tsv = NULL;
     if (a->tsv_path && !(tsv = fopen(a->tsv_path, "w"))) {
         fprintf(stderr, "refray: error: cannot write '%s'\n", a->tsv_path);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     if (tsv)
         verify_tsv_header(tsv);
-    int worst = REFRAY_EXIT_OK, first_json = 1;
+    int worst = STATUS_OK, first_json = 1;
     for (int i = 0; i < a->path_count; i++) {
         int status = sweep_one(a, a->paths[i], steps, tsv, &first_json);
-        worst = status > worst ? status : worst;
+        worst = status_worse(worst, status);
     }
     if (a->json)
         fputs(first_json ? "[]\n" : "]\n", stdout);
     int status = close_tsv(tsv, a->tsv_path);
-    return status > worst ? status : worst;
+    return status_worse(worst, status);
 }
 
 /* In cli_stability.c: `verify --stability SCENE` is the stability tool. */
@@ -337,11 +337,11 @@ int cli_verify(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     a.paths = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *a.paths);
     verify_result *results = malloc((size_t)(argc > VERIFY_SWEEP_MAX ? argc : VERIFY_SWEEP_MAX) * sizeof *results);
-    int status = a.paths && results ? parse_args(&a, argc, argv) : REFRAY_EXIT_SOFTWARE;
-    if (status == REFRAY_EXIT_SOFTWARE)
+    int status = a.paths && results ? parse_args(&a, argc, argv) : STATUS_NO_MEMORY;
+    if (status == STATUS_NO_MEMORY)
         fputs("refray: error: out of memory\n", stderr);
     else if (status < 0)
-        status = REFRAY_EXIT_OK;
+        status = STATUS_OK;
     else if (status == 0)
         status = a.sweep_text ? sweep_all(&a, results) : verify_all(&a, results);
     free(results);

@@ -757,13 +757,13 @@ int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_note
     vec3 centre;
     double radius = scene_radius(s, &centre);
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     write_header(fp, s, o, notes);
     write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
     write_camera(fp, s);
     write_lights(fp, s, o, centre, radius);
     write_geometry(fp, s, o);
-    return fflush(fp) != 0 || ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return fflush(fp) != 0 || ferror(fp) ? STATUS_IO : 0;
 }
 
 /* ---- The atomic file ---- */
@@ -796,13 +796,13 @@ static int fill_temp(int fd, const char *path, const scene_model *s, const pov_o
     FILE *fp = fdopen(fd, "w");
     if (!fp) {
         close(fd);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     int rc = pov_export_write(s, o, fp, notes);
     if (rc == 0 && fsync(fileno(fp)) != 0)
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     if (fclose(fp) != 0 && rc == 0)
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     return rc;
 }
 
@@ -814,19 +814,19 @@ int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, p
     if (err && errlen)
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(err, errlen, "cannot write '%s': it exists and is not a regular file", path);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
     if (!tmp) {
         snprintf(err, errlen, "out of memory");
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     snprintf(tmp, n, "%s%s", path, suffix);
-    int fd = mkstemp(tmp), rc = REFRAY_EXIT_IOERR;
+    int fd = mkstemp(tmp), rc = STATUS_IO;
     if (fd < 0)
         snprintf(err, errlen, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
     else if ((rc = fill_temp(fd, path, s, o, notes)) != 0)
@@ -834,7 +834,7 @@ int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, p
     else if (rename(tmp, path) != 0) {
         snprintf(err, errlen, "cannot write '%s': cannot rename the temporary file into place: %s", path,
                  strerror(errno));
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     }
     if (fd >= 0 && rc != 0)
         unlink(tmp);

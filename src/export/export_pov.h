@@ -78,8 +78,8 @@ int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes);
  * the render needs and how to read the image back (`// pov-args:`,
  * `// pov-downsample:` and `// pov-scale:` lines, read by
  * tests/crosscheck.sh) and lists the approximations, then the scene.
- * Returns 0; REFRAY_EXIT_DATAERR when refused (nothing written); or
- * REFRAY_EXIT_IOERR when a write to fp failed.  notes as pov_export_check.
+ * Returns 0; STATUS_DATA when refused (nothing written); or
+ * STATUS_IO when a write to fp failed.  notes as pov_export_check.
  */
 int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes);
 

@@ -27,13 +27,13 @@ int img_create(img_buf *img, int width, int height)
     img->width = img->height = 0;
     img->rgb = NULL;
     if (width < 1 || height < 1 || (size_t)width > SIZE_MAX / 3 / sizeof(double) / (size_t)height)
-        return IMG_ESOFTWARE;
+        return STATUS_INTERNAL;
     img->rgb = calloc((size_t)width * (size_t)height * 3, sizeof(double));
     if (!img->rgb)
-        return IMG_EOSERR;
+        return STATUS_NO_MEMORY;
     img->width = width;
     img->height = height;
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 void img_free(img_buf *img)

@@ -97,15 +97,15 @@ int img_png_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_wri
     size_t rowbytes;
     unsigned char *px = pack_codes(img, o, st, &rowbytes);
     if (!px)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     int failed = encode_png(fp, img, o, px, rowbytes, &f);
     free(px);
     if (!failed)
-        return IMG_OK;
+        return STATUS_OK;
     /* libpng's stdio writer says only "Write Error"; errno said why. */
     if (ferror(fp))
-        return img_error(err, errlen, IMG_EIO, "write error: %s", strerror(f.saved_errno));
-    return img_error(err, errlen, IMG_EIO, "PNG encoder: %s", f.msg);
+        return img_error(err, errlen, STATUS_IO, "write error: %s", strerror(f.saved_errno));
+    return img_error(err, errlen, STATUS_IO, "PNG encoder: %s", f.msg);
 }
 
 /* ---- Reading ---- */
@@ -221,13 +221,13 @@ int img_png_read(FILE *fp, img_buf *out, char *err, size_t errlen)
     png_failure f = {"", 0};
     png_decoded d;
     memset(&d, 0, sizeof d);
-    int rc = IMG_OK;
+    int rc = STATUS_OK;
     if (decode_png(fp, &d, &f) != 0)
-        rc = ferror(fp) ? img_error(err, errlen, IMG_EIO, "read error: %s", strerror(f.saved_errno))
-                        : img_error(err, errlen, IMG_EDATA, "PNG decoder: %s", f.msg);
-    if (rc == IMG_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != IMG_OK)
+        rc = ferror(fp) ? img_error(err, errlen, STATUS_IO, "read error: %s", strerror(f.saved_errno))
+                        : img_error(err, errlen, STATUS_DATA, "PNG decoder: %s", f.msg);
+    if (rc == STATUS_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != STATUS_OK)
         rc = img_error(err, errlen, rc, "out of memory");
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         unpack_linear(&d, out);
     free(d.px);
     free(d.rows);

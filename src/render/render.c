@@ -63,13 +63,13 @@ static int trace_rows(const tracer *t, const render_opts *opts, img_buf *out, re
             if (stats->trace.tree_overflow) {
                 stats->overflow_x = i;
                 stats->overflow_y = j;
-                return REFRAY_EXIT_DATAERR;
+                return STATUS_DATA;
             }
         }
         if (opts && opts->progress && opts->progress(opts->progress_ctx, j + 1, out->height))
-            return REFRAY_EXIT_INTERRUPTED;
+            return STATUS_CANCELLED;
     }
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats)
@@ -84,20 +84,20 @@ int render_image(const scene_model *scene, const render_opts *opts, img_buf *out
     stats->samples = opts && opts->samples > 0 ? opts->samples : scene->image.samples;
     double start = render_clock();
     if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0))
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     t.max_tree_rays = opts ? opts->max_tree_rays : 0;
     stats->max_depth = t.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&t, stats);
     if (img_create(out, stats->width, stats->height) != 0) {
         tracer_free(&t);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     start = render_clock();
     int status = trace_rows(&t, opts, out, stats);
     stats->seconds = render_clock() - start;
     tracer_free(&t);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         img_free(out);
     return status;
 }

@@ -32,9 +32,9 @@ typedef struct render_stats {
 
 /*
  * Renders scene into out (created here; free it with img_free).  Returns
- * REFRAY_EXIT_OK, REFRAY_EXIT_INTERRUPTED when progress asked to stop,
- * REFRAY_EXIT_DATAERR when a ray tree passed max_tree_rays (stats->trace
- * then says where), or REFRAY_EXIT_SOFTWARE when out of memory; out is
+ * STATUS_OK, STATUS_CANCELLED when progress asked to stop,
+ * STATUS_DATA when a ray tree passed max_tree_rays (stats->trace
+ * then says where), or STATUS_NO_MEMORY when out of memory; out is
  * freed on every failure.
  */
 int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats);

@@ -167,8 +167,8 @@ scene_limits scene_default_limits(void);
 /*
  * Reads, parses, evaluates and validates a scene file.  Diagnostics go to
  * diag_out (with warnings when warnings is non-zero).  Returns the scene, or
- * NULL with *status set to one of the exit codes below; on success *status
- * is REFRAY_EXIT_OK.  Never returns a partially valid scene.
+ * NULL with *status set to a status of base/status.h; on success *status
+ * is STATUS_OK.  Never returns a partially valid scene.
  */
 scene_model *scene_load(const char *path, const scene_limits *limits, FILE *diag_out,
                      int warnings, int *status);

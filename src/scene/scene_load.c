@@ -12,7 +12,7 @@ scene_model *scene_load_text(const char *path, const char *text, size_t len, con
     scene_model *s = calloc(1, sizeof *s);
     loader L;
     if (!s) {
-        *status = REFRAY_EXIT_SOFTWARE;
+        *status = STATUS_NO_MEMORY;
         return NULL;
     }
     loader_scene_defaults(s);
@@ -21,7 +21,7 @@ scene_model *scene_load_text(const char *path, const char *text, size_t len, con
     int ok = file >= 0 && loader_lower_file(&L, file) && validate_scene(&L);
     if (file < 0)
         loader_oom(&L);
-    *status = ok ? REFRAY_EXIT_OK : L.out_of_memory ? REFRAY_EXIT_SOFTWARE : REFRAY_EXIT_DATAERR;
+    *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     loader_free(&L);
     if (!ok) {
         scene_free(s);

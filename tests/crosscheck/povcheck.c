@@ -109,14 +109,14 @@ static int compare_image(const verify_exact *e, const char *image, int k, double
     char err[512];
     if (img_read(image, &raw, err, sizeof err) != 0) {
         fprintf(stderr, "povcheck: %s\n", err);
-        return REFRAY_EXIT_NOINPUT;
+        return STATUS_NO_INPUT;
     }
     int ok = downsample(&raw, k, &img) && img.width == e->image.width && img.height == e->image.height;
     img_free(&raw);
     if (!ok) {
         fprintf(stderr, "povcheck: %s is not %d times %dx%d\n", image, k, e->image.width, e->image.height);
         img_free(&img);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     for (size_t i = 0; i < 3 * (size_t)img.width * img.height; i++)
         img.rgb[i] /= scale;
@@ -163,7 +163,7 @@ static int cmd_refray(const char *path)
     scene_free(s);
     if (r.verdict != VERIFY_PASS && r.verdict != VERIFY_FAIL) {
         fprintf(stderr, "povcheck: %s\n", r.reason);
-        return r.status ? r.status : REFRAY_EXIT_FAIL;
+        return r.status ? r.status : STATUS_FAIL;
     }
     printf("max_abs=%.6g rms=%.6g max_rel=%.6g seconds=%.6g tolerance=%.3g verdict=%s rays=%ld\n",
            r.metrics.max_abs, r.metrics.rms, r.metrics.max_rel, r.render_seconds, r.tolerance,
@@ -180,5 +180,5 @@ int main(int argc, char **argv)
     if (argc == 3 && strcmp(argv[1], "refray") == 0)
         return cmd_refray(argv[2]);
     fputs("usage: povcheck exact SCENE | compare SCENE IMAGE K SCALE | refray SCENE\n", stderr);
-    return REFRAY_EXIT_USAGE;
+    return STATUS_USAGE;
 }

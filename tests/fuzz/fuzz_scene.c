@@ -26,9 +26,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FILE *sink = fopen("/dev/null", "w");
     int status;
     scene_model *s = scene_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
-    if (s && status != REFRAY_EXIT_OK)
+    if (s && status != STATUS_OK)
         __builtin_trap(); /* a scene comes back only when it is valid */
-    if (!s && status == REFRAY_EXIT_OK)
+    if (!s && status == STATUS_OK)
         __builtin_trap();
     scene_free(s);
     if (sink)
