@@ -7,6 +7,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "refray.h"
+#include "io/scene_file.h"
 
 START_TEST(test_api_load_render_compare)
 {
@@ -17,7 +18,7 @@ START_TEST(test_api_load_render_compare)
         "distant_light { direction [0, -1, 0] power 2 }\n"
         "plane { material { Kd 0.5 } }\n";
     int status;
-    scene_model *s = scene_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
+    scene_model *s = scene_file_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
     ck_assert_ptr_nonnull(s);
     ck_assert_int_eq(status, STATUS_OK);
     img_buf img, want;

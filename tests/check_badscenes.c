@@ -21,6 +21,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define BAD_DIR "tests/bad"
@@ -97,7 +98,7 @@ static void check_library(const char *path, const char *want)
     int status;
     FILE *f = open_memstream(&out, &size);
     ck_assert_ptr_nonnull(f);
-    scene_model *s = scene_load(path, NULL, f, 1, &status);
+    scene_model *s = scene_file_load(path, NULL, f, 1, &status);
     fclose(f);
     first_line_of(out, line, sizeof line);
     free(out);

@@ -258,7 +258,7 @@ START_TEST(test_bvh_intersect_matches_brute_force)
         int n = sizes[s];
         scene_prim *prims = random_scene(100 + (uint64_t)s, n, 2);
         bvh b;
-        ck_assert(bvh_build(&b, prims, n + 2));
+        ck_assert(bvh_build(&b, prims, n + 2, NULL));
         ck_assert_int_eq(b.unbounded_count, 2);
         int hits = check_nearest_agrees(&b, prims, n + 2, 200 + (uint64_t)s, 3000);
         /* The planes alone catch some rays; the rest must be tested too. */
@@ -274,7 +274,7 @@ START_TEST(test_bvh_visit_matches_brute_force)
     int n = 2000;
     scene_prim *prims = random_scene(300, n, 2);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n + 2));
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
     rng g = {301, 0};
     long total = 0, solids_twice = 0;
     for (int i = 0; i < 3000; i++) {
@@ -314,7 +314,7 @@ START_TEST(test_bvh_visit_stops_early)
     for (int i = 0; i < 10; i++)
         prims[i] = prim_sphere(vec_make(3 * i, 0, 0), 1);
     bvh b;
-    ck_assert(bvh_build(&b, prims, 10));
+    ck_assert(bvh_build(&b, prims, 10, NULL));
     ray r = {{-5, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL};
     int calls = 0;
     ck_assert_int_eq(bvh_visit(&b, prims, &r, stop_with_seven, &calls), 7);
@@ -352,7 +352,7 @@ START_TEST(test_bvh_parallel_ray_in_flat_box_plane)
             prims[1].u.box.lo = vec_make(0, 0, 0);
             prims[1].u.box.hi = vec_sub(vec_make(1, 1, 1), axis_vec(flat, 1));
             bvh b;
-            ck_assert(bvh_build(&b, prims, 2));
+            ck_assert(bvh_build(&b, prims, 2, NULL));
             for (int sign = 0; sign < 2; sign++) {
                 /* From 1 before the box (or 2 past it going back), mid-way
                  * across the third axis: t = 1 either way. */
@@ -378,7 +378,7 @@ END_TEST
 START_TEST(test_bvh_empty_scene)
 {
     bvh b;
-    ck_assert(bvh_build(&b, NULL, 0));
+    ck_assert(bvh_build(&b, NULL, 0, NULL));
     ck_assert_int_eq(b.node_count, 0);
     ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
     hit h;
@@ -396,7 +396,7 @@ START_TEST(test_bvh_one_prim_and_planes_only)
     /* One sphere: a one-node tree; the hit carries prim 0. */
     scene_prim s = prim_sphere(vec_make(0, 0, 5), 1);
     bvh b;
-    ck_assert(bvh_build(&b, &s, 1));
+    ck_assert(bvh_build(&b, &s, 1, NULL));
     ck_assert_int_eq(b.node_count, 1);
     ck_assert_int_eq(b.leaf_count, 1);
     ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
@@ -412,7 +412,7 @@ START_TEST(test_bvh_one_prim_and_planes_only)
     planes[0].u.plane.normal = vec_make(0, 0, -1);
     planes[1].u.plane.point = vec_make(0, 0, 2);
     planes[1].u.plane.normal = vec_make(0, 0, 1);
-    ck_assert(bvh_build(&b, planes, 2));
+    ck_assert(bvh_build(&b, planes, 2, NULL));
     ck_assert_int_eq(b.node_count, 0);
     ck_assert_int_eq(b.unbounded_count, 2);
     r = (ray){{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
@@ -441,7 +441,7 @@ START_TEST(test_bvh_identical_prims_tie_to_lowest_index)
     for (int i = 0; i < n; i++)
         prims[i] = prim_sphere(vec_make(1, 2, 3), 0.5);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_le(b.depth, 14); /* ceil(log2(5000 / 4)) + 1 = 12 */
     ray r = {{1, 2, -3}, {0, 0, 1}, 0.0, HUGE_VAL};
     hit h;
@@ -463,8 +463,8 @@ START_TEST(test_bvh_deterministic_and_well_formed)
     int n = 3000;
     scene_prim *prims = random_scene(400, n, 2);
     bvh a, b;
-    ck_assert(bvh_build(&a, prims, n + 2));
-    ck_assert(bvh_build(&b, prims, n + 2));
+    ck_assert(bvh_build(&a, prims, n + 2, NULL));
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
     ck_assert_int_eq(a.node_count, b.node_count);
     ck_assert(memcmp(a.nodes, b.nodes, (size_t)a.node_count * sizeof *a.nodes) == 0);
     ck_assert(memcmp(a.items, b.items, (size_t)a.item_count * sizeof *a.items) == 0);
@@ -524,7 +524,7 @@ START_TEST(test_bvh_skewed_distribution_depth_bounded)
     for (int i = 0; i < n; i++)
         prims[i] = prim_sphere(vec_make(pow(1.5, -i), 0, 0), 0.1 * pow(1.5, -i));
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_gt(b.depth, BVH_MEDIAN_DEPTH);
     ck_assert_int_le(b.depth, BVH_MAX_DEPTH);
     check_nearest_agrees(&b, prims, n, 501, 500);
@@ -563,7 +563,7 @@ START_TEST(test_bvh_grid_100k_visits_few_nodes)
             for (int x = 0; x < nx; x++)
                 prims[(z * ny + y) * nx + x] = prim_sphere(vec_make(x, y, z), 0.3);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_le(b.depth, 40);
     bvh_stats st = {0, 0};
     ray r = {{-10, 37, 4}, {1, 0, 0}, 0.0, HUGE_VAL};

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "export/export_pov.h"
 #include "testlib.h"
 
@@ -61,7 +62,7 @@ static scene_model *load(const char *text)
 {
     int status;
     FILE *null = fopen("/dev/null", "w");
-    scene_model *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
+    scene_model *s = scene_file_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
     if (null)
         fclose(null);
     ck_assert_msg(s != NULL, "scene did not load (status %d)", status);

@@ -833,7 +833,7 @@ START_TEST(test_img_write_rejects_bad_arguments)
 {
     tmpdir d;
     char path[256], err[256];
-    img_buf img = make_image(2, 2, 0.0, 1.0), none = {0, 0, NULL};
+    img_buf img = make_image(2, 2, 0.0, 1.0), none = {0};
     img_write_opts o = img_write_opts_default();
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "a.pfm");

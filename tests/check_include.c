@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define INC "tests/scenes/include/"
@@ -21,7 +22,7 @@ static void load_file(loaded *l, const char *path, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load(path, limits, out, 1, &l->status);
+    l->scene = scene_file_load(path, limits, out, 1, &l->status);
     fclose(out);
 }
 
@@ -29,7 +30,7 @@ static void load_text(loaded *l, const char *text, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load_text("t.scene", text, strlen(text), limits, out, 1, &l->status);
+    l->scene = scene_file_load_text("t.scene", text, strlen(text), limits, out, 1, &l->status);
     fclose(out);
 }
 

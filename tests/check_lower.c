@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 typedef struct loaded {
@@ -21,7 +22,7 @@ static void load_as(loaded *l, const char *path, const char *text, const scene_l
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load_text(path, text, strlen(text), limits, out, warnings, &l->status);
+    l->scene = scene_file_load_text(path, text, strlen(text), limits, out, warnings, &l->status);
     fclose(out);
 }
 

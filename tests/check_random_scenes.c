@@ -15,6 +15,7 @@
 #include "testlib.h"
 #include "render/render.h"
 #include "base/sampler.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 enum { SCENES = 150, TEXT_MAX = 16384 };
@@ -209,7 +210,7 @@ START_TEST(test_random_valid_scenes_render_finite)
     static gen g; /* 16 kB of text: off the stack of the forked test */
     generate(&g, _i);
     int status;
-    scene_model *s = scene_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", _i, status, g.text);
     img_buf img;
     render_stats st;

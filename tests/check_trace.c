@@ -9,13 +9,14 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/render.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 #include "render/trace.h"
 
 static scene_model *load(const char *text)
 {
     int status;
-    scene_model *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
@@ -278,7 +279,7 @@ START_TEST(test_render_image_stops_when_asked)
     render_opts o;
     memset(&o, 0, sizeof o);
     o.progress = stop_after_two_rows;
-    img_buf img = {0, 0, NULL};
+    img_buf img = {0};
     ck_assert_int_eq(render_image(s, &o, &img, NULL), STATUS_CANCELLED);
     ck_assert_ptr_null(img.rgb);
     scene_free(s);
@@ -298,7 +299,7 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
     render_opts o;
     memset(&o, 0, sizeof o);
     o.max_tree_rays = 10000;
-    img_buf img = {0, 0, NULL};
+    img_buf img = {0};
     render_stats st;
     ck_assert_int_eq(render_image(s, &o, &img, &st), STATUS_DATA);
     ck_assert_ptr_null(img.rgb);

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "image/image_file.h"
 #include "testlib.h"
 #include "verify/verify.h"
@@ -33,7 +34,7 @@ enum { OUT_MAX = 65536 };
 static scene_model *load_scene(const char *text, const char *family)
 {
     int status;
-    scene_model *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "the test scene does not load (status %d)", status);
     free(s->oracle);
     s->oracle = family ? strdup(family) : NULL;

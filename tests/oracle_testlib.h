@@ -10,12 +10,13 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle/oracle.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 static inline scene_model *load_text(const char *text)
 {
     int status;
-    scene_model *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
@@ -23,7 +24,7 @@ static inline scene_model *load_text(const char *text)
 static inline scene_model *load_file(const char *path)
 {
     int status;
-    scene_model *s = scene_load(path, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
     return s;
 }

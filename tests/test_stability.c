@@ -20,6 +20,7 @@
 #include "render/camera.h"
 #include "render/intersect.h"
 #include "render/render.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 #include "render/shade.h"
 #include "verify/stability.h"
@@ -47,7 +48,7 @@ static scene_model *load_stress(const char *name)
     char path[256];
     int status;
     snprintf(path, sizeof path, "%s/%s.scene", STRESS_DIR, name);
-    scene_model *s = scene_load(path, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
     return s;
 }

@@ -5,6 +5,7 @@
  */
 #include <stdio.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 
@@ -86,7 +87,7 @@ int cli_check(int argc, char **argv)
             continue;
         }
         int status;
-        scene_model *s = scene_load(argv[i], &opts.limits, stderr, opts.warnings, &status);
+        scene_model *s = scene_file_load(argv[i], &opts.limits, stderr, opts.warnings, &status);
         if (s)
             print_summary(argv[i], s);
         scene_free(s);

@@ -179,7 +179,7 @@ int cli_compare(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? STATUS_OK : status;
-    img_buf x = {0, 0, NULL}, ref = {0, 0, NULL};
+    img_buf x = {0}, ref = {0};
     status = read_image(a.a, &x);
     if (status == STATUS_OK)
         status = read_image(a.b, &ref);

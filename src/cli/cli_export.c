@@ -6,6 +6,7 @@
  */
 #include <stdio.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "export/export_pov.h"
@@ -111,7 +112,7 @@ int cli_export(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? STATUS_OK : status;
-    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = export_scene(&a, scene);

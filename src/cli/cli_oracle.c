@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
+#include "io/scene_file.h"
 #include "image/image_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -137,7 +138,7 @@ int cli_oracle(int argc, char **argv)
         return status < 0 ? STATUS_OK : status;
     if ((status = check_formats(&a)) != 0)
         return status;
-    scene_model *s = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *s = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!s)
         return status;
     status = exact_of(&a, s);

@@ -10,9 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "base/fileio.h"
+#include "io/fileio.h"
 #include "image/image_file.h"
 #include "render/render.h"
 
@@ -147,12 +148,12 @@ static int check_output(const render_args *a)
     if (!img_format_available(fmt))
         return cli_usage_error("render: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
                                path);
-    char *dir = file_dirname(path);
+    char *dir = file_dirname(NULL, path);
     int ok = dir && access(dir, W_OK) == 0;
     if (!ok)
         fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
                 dir ? "directory missing or not writable" : "out of memory");
-    free(dir);
+    mem_free_string(NULL, dir);
     return ok ? 0 : STATUS_IO;
 }
 
@@ -199,7 +200,7 @@ static void print_stats(const render_stats *s, const img_write_stats *w)
 
 static int render_and_write(render_args *a, const scene_model *scene)
 {
-    img_buf img = {0, 0, NULL};
+    img_buf img = {0};
     render_stats stats;
     img_write_stats written = {0, 0};
     progress_state p = {!a->quiet && isatty(2), render_clock()};
@@ -255,7 +256,7 @@ int cli_render(int argc, char **argv)
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
      * scene loads as well as while it renders. */
     signal(SIGINT, on_interrupt);
-    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return interrupted ? STATUS_CANCELLED : status;
     if ((double)(a.render.width ? a.render.width : scene->image.width) *

@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "image/image_file.h"
@@ -229,7 +230,7 @@ static int compare(const stab_args *a, const scene_model *scene)
 {
     stab_image d, ld;
     stab_report r;
-    img_buf map = {0, 0, NULL};
+    img_buf map = {0};
     int status = stability_render(scene, &a->render, &d);
     if (status != STATUS_OK)
         return status;
@@ -267,7 +268,7 @@ int cli_stability(int argc, char **argv)
     a.render.max_tree_rays = a.scene.limits.max_ray_tree;
     if (!a.raw_dump && sizeof(real) > sizeof(double))
         return cli_usage_error("stability: this is the long double program; run refray, the double one");
-    scene_model *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = a.raw_dump ? dump_raw(&a, scene) : compare(&a, scene);

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 
@@ -194,7 +195,7 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
 {
     int status;
     memset(r, 0, sizeof *r);
-    scene_model *s = scene_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
+    scene_model *s = scene_file_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
     if (!s) {
         verify_result_error(r, path, status, load_reason(status));
         return NULL;

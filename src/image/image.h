@@ -35,6 +35,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "base/mem.h"
 #include "base/status.h"
 
 /* Readers refuse headers that claim more pixels than this (a corrupt or
@@ -45,14 +46,17 @@
 typedef struct img_buf {
     int width, height;
     double *rgb;
+    mem mem;           /* where rgb lives; zeroed: the C library */
 } img_buf;
 
 /* Allocates a width x height image of zeros.  Returns 0, STATUS_INTERNAL for
  * a size < 1 or too large to address, STATUS_NO_MEMORY when out of memory; on
- * failure *img is {0, 0, NULL}. */
+ * failure *img is empty (no pixels). */
 int img_create(img_buf *img, int width, int height);
+/* The same with the pixels from the allocator m (NULL: the C library). */
+int img_create_mem(img_buf *img, int width, int height, const mem *m);
 
-/* Frees the pixels and resets *img to {0, 0, NULL}; NULL and an already
+/* Frees the pixels and resets *img to empty (no pixels); NULL and an already
  * freed image are fine. */
 void img_free(img_buf *img);
 

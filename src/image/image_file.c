@@ -293,8 +293,7 @@ int img_read(const char *path, img_buf *out, char *err, size_t errlen)
 {
     char why[REASON_MAX];
     FILE *fp = NULL;
-    out->width = out->height = 0;
-    out->rgb = NULL;
+    memset(out, 0, sizeof *out);
     img_format fmt = img_format_from_path(path);
     int rc = check_format(path, fmt, 0, why, sizeof why);
     if (rc == STATUS_OK && !(fp = fopen(path, "rb")))

@@ -51,7 +51,7 @@ int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_wri
  * Returns 0; STATUS_USAGE for an unknown or compiled-out format;
  * STATUS_NO_INPUT when path cannot be opened; STATUS_DATA for a malformed or
  * unsupported file; STATUS_IO for a read error; STATUS_NO_MEMORY when out of
- * memory.  On failure *out is {0, 0, NULL}. */
+ * memory.  On failure *out is empty (no pixels). */
 int img_read(const char *path, img_buf *out, char *err, size_t errlen);
 
 #endif

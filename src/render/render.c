@@ -89,7 +89,7 @@ int render_image(const scene_model *scene, const render_opts *opts, img_buf *out
     stats->max_depth = t.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&t, stats);
-    if (img_create(out, stats->width, stats->height) != 0) {
+    if (img_create_mem(out, stats->width, stats->height, &scene->mem) != 0) {
         tracer_free(&t);
         return STATUS_NO_MEMORY;
     }

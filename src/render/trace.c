@@ -50,8 +50,8 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     t->specular = s->features.specular;
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
-    t->lights = calloc((size_t)(s->light_count ? s->light_count : 1), sizeof *t->lights);
-    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count)) {
+    t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
+    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
         tracer_free(t);
         return 0;
     }
@@ -74,7 +74,8 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
-    free(t->lights);
+    if (t->scene)
+        mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
     t->lights = NULL;
 }
 

@@ -60,7 +60,8 @@ typedef struct tracer {
 } tracer;
 
 
-/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+/* Builds the acceleration structure, in memory from the scene's allocator.
+ * max_depth <= 0 takes the scene's;
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);

@@ -331,11 +331,9 @@ static int find_material(const scene_model *s, const char *name)
 
 static char *copy_name(loader *L, const char *name)
 {
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = mem_strdup(L->mem, name);
     if (!copy)
         loader_oom(L);
-    else
-        strcpy(copy, name);
     return copy;
 }
 

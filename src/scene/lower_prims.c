@@ -10,7 +10,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/obj.h"
 
@@ -309,25 +308,11 @@ static scene_prim *emit(loader *L, const scene_prim *prim)
 /* Reads the OBJ file into the load's sources, so its errors point into it. */
 static int read_obj(loader *L, const char *name, src_span at, int *file)
 {
-    const source_file *from = L->scene->sources.files[at.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
     char why[512];
-    size_t len = 0;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
-        return 0;
-    }
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0)
-        *file = source_set_add(&L->scene->sources, path, text, len, at);
-    else
+    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
+    if (*file < 0 && !L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    free(path);
-    free(text);
-    if (status == 0 && *file < 0)
-        loader_oom(L);
-    return status == 0 && *file >= 0;
+    return *file >= 0;
 }
 
 static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
@@ -373,18 +358,21 @@ static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, co
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
-    if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
+    int parsed = obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj);
+    if (parsed < 0)
+        L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
+    if (parsed <= 0)
         return 0;
     scene_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
-        m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
-        if (m->path)
-            strcpy(m->path, L->scene->sources.files[file]->path);
+        m->path = mem_strdup(L->mem, L->scene->sources.files[file]->path);
         m->where = at;
         proto->kind = PRIM_TRIANGLE;
         proto->mesh = L->scene->mesh_count - 1;
         ok = m->path && mesh_triangles(L, &obj, proto, w, l);
+        if (!m->path)
+            loader_oom(L);
     }
     obj_free(&obj);
     return ok && L->diag.errors == errors;

@@ -1,7 +1,7 @@
 /*
  * scene.c - the scene model's defaults and its release.
  */
-#include <stdlib.h>
+#include <string.h>
 #include "scene/scene.h"
 
 scene_limits scene_default_limits(void)
@@ -27,16 +27,24 @@ void scene_free(scene_model *s)
 {
     if (!s)
         return;
+    mem m = s->mem;
     for (int i = 0; i < s->material_count; i++)
-        free(s->materials[i].name);
+        mem_free_string(&m, s->materials[i].name);
     for (int i = 0; i < s->mesh_count; i++)
-        free(s->meshes[i].path);
-    free(s->materials);
-    free(s->prims);
-    free(s->meshes);
-    free(s->lights);
-    free(s->oracle);
+        mem_free_string(&m, s->meshes[i].path);
+    mem_free(&m, s->materials, (size_t)s->material_cap * sizeof *s->materials);
+    mem_free(&m, s->prims, (size_t)s->prim_cap * sizeof *s->prims);
+    mem_free(&m, s->meshes, (size_t)s->mesh_cap * sizeof *s->meshes);
+    mem_free(&m, s->lights, (size_t)s->light_cap * sizeof *s->lights);
+    mem_free_string(&m, s->oracle);
     source_set_free(&s->sources);
-    free(s);
+    mem_free(&m, s, sizeof *s);
 }
 
+
+void scene_load_opts_init(scene_load_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->limits = scene_default_limits();
+    o->warnings = 1;
+}

@@ -7,13 +7,17 @@
  *   - 0 <= Kd, Ks, t <= 1 channel-wise; n >= 0; ior > 0;
  *   - every primitive's material index is valid; triangles are not degenerate;
  *   - the camera basis is orthonormal and the image has at least one pixel.
- * The scene owns all its memory; scene_free releases it in one call.
+ * The scene owns all its memory, taken from the allocator it was loaded
+ * with (kept in scene.mem); scene_free releases it in one call.  Loading
+ * reads no file itself: the text comes from the caller and every `include`
+ * and `mesh` file from the caller's resolver (io/load.h reads files).
  */
 #ifndef REFRAY_SCENE_H
 #define REFRAY_SCENE_H
 
 #include <stddef.h>
-#include <stdio.h>
+#include "base/diag.h"
+#include "base/mem.h"
 #include "base/vec.h"
 #include "base/xform.h"
 #include "base/source.h"
@@ -132,17 +136,18 @@ typedef struct scene_model {
     scene_camera camera;
     rgb ambient;               /* sum of all ambient blocks, I_a */
     scene_material *materials;
-    int material_count;
+    int material_count, material_cap; /* cap: entries allocated */
     scene_prim *prims;            /* bounded primitives and planes, mesh triangles included */
-    int prim_count;
+    int prim_count, prim_cap;
     scene_mesh *meshes;
-    int mesh_count;
+    int mesh_count, mesh_cap;
     scene_light *lights;          /* point, distant and distributed lights (not ambient) */
-    int light_count;
+    int light_count, light_cap;
     scene_features features;
     char *oracle;              /* `oracle NAME`, or NULL */
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
+    mem mem;                   /* the allocator everything above came from */
 } scene_model;
 
 /* Limits on what an input may ask for, enforced before allocation. */
@@ -164,18 +169,49 @@ typedef struct scene_limits {
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
 scene_limits scene_default_limits(void);
 
-/*
- * Reads, parses, evaluates and validates a scene file.  Diagnostics go to
- * diag_out (with warnings when warnings is non-zero).  Returns the scene, or
- * NULL with *status set to a status of base/status.h; on success *status
- * is STATUS_OK.  Never returns a partially valid scene.
- */
-scene_model *scene_load(const char *path, const scene_limits *limits, FILE *diag_out,
-                     int warnings, int *status);
+/* A file's text as the loader receives it. */
+typedef struct scene_source {
+    const char *path;      /* the name it goes by: in messages, and as `from` for what it includes */
+    const char *identity;  /* the same file under any name (include cycles); NULL: path */
+    const char *text;
+    size_t len;
+} scene_source;
 
-/* The same from text in memory (path is used for messages and includes). */
-scene_model *scene_load_text(const char *path, const char *text, size_t len,
-                          const scene_limits *limits, FILE *diag_out, int warnings, int *status);
+/*
+ * Where `include` and `mesh` files come from.  fetch is asked for the file
+ * `name` as written in a statement of the file `from` (its scene_source
+ * path) and fills *out, returning STATUS_OK; or it returns another status
+ * with a one-line reason in why (reported as an error at the statement;
+ * STATUS_NO_MEMORY ends the load as out of memory).  The loader copies the
+ * text and names, then calls release (when not NULL) with the same *out.
+ * The resolver enforces its own limits (io/load.c: --max-file-size).
+ */
+typedef struct scene_resolver {
+    int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,
+                 size_t why_size);
+    void (*release)(void *user, scene_source *src);
+    void *user;
+} scene_resolver;
+
+typedef struct scene_load_opts {
+    scene_limits limits;
+    int warnings;              /* 0: warnings are counted, not delivered */
+    diag_sink sink;            /* receives every diagnostic; NULL: none delivered */
+    void *sink_user;
+    scene_resolver resolver;   /* fetch NULL: `include` and `mesh` are errors */
+    mem mem;                   /* zeroed: the C library's allocator */
+} scene_load_opts;
+
+/* The default limits, warnings on, no sink, no resolver, the C library. */
+void scene_load_opts_init(scene_load_opts *o);
+
+/*
+ * Parses, evaluates and validates the scene in root.  Returns the scene,
+ * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY);
+ * on success *status is STATUS_OK.  Never returns a partially valid scene,
+ * and frees everything it allocated when it fails.
+ */
+scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status);
 
 void scene_free(scene_model *scene);
 

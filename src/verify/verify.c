@@ -138,7 +138,7 @@ static int timed_render(const scene_model *s, const render_opts *ro, int runs, i
     double times[VERIFY_RUNS_MAX];
     runs = runs < 1 ? 1 : runs > VERIFY_RUNS_MAX ? VERIFY_RUNS_MAX : runs;
     for (int i = 0; i < runs; i++) {
-        img_buf again = {0, 0, NULL};
+        img_buf again = {0};
         render_stats st_again;
         double start = render_clock();
         int status = render_image(s, ro, i == 0 ? img : &again, i == 0 ? st : &st_again);
@@ -163,7 +163,7 @@ int verify_render_compare(const scene_model *s, const verify_opts *o, const veri
     ro.samples = e->view.samples;
     ro.max_depth = e->view.max_depth;
     ro.light_samples = o ? o->light_samples : 0;
-    img_buf img = {0, 0, NULL};
+    img_buf img = {0};
     render_stats st;
     memset(&st, 0, sizeof st);
     int status = timed_render(s, &ro, o ? o->runs : 1, &img, &st, &r->render_seconds);

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render/render.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 static int by_value(const void *a, const void *b)
@@ -67,7 +68,7 @@ int main(int argc, char **argv)
            "ns/ray");
     for (int i = first; i < argc; i++) {
         int status;
-        scene_model *s = scene_load(argv[i], NULL, stderr, 0, &status);
+        scene_model *s = scene_file_load(argv[i], NULL, stderr, 0, &status);
         double median, build;
         long rays;
         if (!s || !measure(s, runs, width, &median, &rays, &build)) {

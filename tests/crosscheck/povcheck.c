@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "image/image_file.h"
 #include "image/metrics.h"
 #include "verify/verify.h"
@@ -27,7 +28,7 @@
 static scene_model *load(const char *path, int *status)
 {
     scene_limits limits = scene_default_limits();
-    return scene_load(path, &limits, stderr, 0, status);
+    return scene_file_load(path, &limits, stderr, 0, status);
 }
 
 /* The exact image of the scene as written; 0 or an exit code. */

@@ -10,6 +10,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -25,7 +26,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     limits.max_file_bytes = 1 << 16;
     FILE *sink = fopen("/dev/null", "w");
     int status;
-    scene_model *s = scene_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
+    scene_model *s = scene_file_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
     if (s && status != STATUS_OK)
         __builtin_trap(); /* a scene comes back only when it is valid */
     if (!s && status == STATUS_OK)

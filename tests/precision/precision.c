@@ -16,6 +16,7 @@
 #include <string.h>
 #include "render/bvh.h"
 #include "render/camera.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 #include "render/trace.h"
 
@@ -54,7 +55,7 @@ static scene_model *load(const char *name)
     char path[256];
     int status;
     snprintf(path, sizeof path, "scenes/stress/%s.scene", name);
-    scene_model *s = scene_load(path, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
     if (!s) {
         fprintf(stderr, "precision: cannot load %s (run from the repository root)\n", path);
         exit(2);
