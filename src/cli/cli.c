@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "refray.h"
 #include "cli/cli.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -49,7 +50,7 @@ int cli_main(int argc, char **argv)
         return STATUS_OK;
     }
     if (strcmp(cmd, "--version") == 0) {
-        printf("refray %s\n", REFRAY_VERSION);
+        printf("refray %s\n", rf_version());
         return STATUS_OK;
     }
     if (strcmp(cmd, "check") == 0)

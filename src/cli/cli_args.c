@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "api/convert.h"
 #include "cli/cli_args.h"
 
 int cli_usage_error(const char *fmt, ...)
@@ -118,6 +119,17 @@ void cli_scene_opts_init(cli_scene_opts *o)
 {
     o->limits = scene_default_limits();
     o->warnings = 1;
+}
+
+rf_load_options cli_load_options(const cli_scene_opts *o)
+{
+    rf_load_options lo;
+    rf_load_options_init(&lo);
+    lo.limits = api_limits_out(&o->limits);
+    lo.warnings = o->warnings;
+    lo.diagnostic = rf_diagnostic_print;
+    lo.diagnostic_user = stderr;
+    return lo;
 }
 
 typedef struct limit_flag {

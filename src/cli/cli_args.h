@@ -7,6 +7,7 @@
 #define REFRAY_CLI_ARGS_H
 
 #include <stddef.h>
+#include "refray.h"
 #include "render/render.h"
 #include "scene/scene.h"
 #include "verify/verify.h"
@@ -20,6 +21,10 @@ typedef struct cli_scene_opts {
 } cli_scene_opts;
 
 void cli_scene_opts_init(cli_scene_opts *o);
+
+/* The public API's load options for o: its limits and warnings, the
+ * diagnostics printed to stderr, files from the file system. */
+rf_load_options cli_load_options(const cli_scene_opts *o);
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
 
 /* The value after option argv[*i] (advancing *i); 0 with the usage error
