@@ -1,6 +1,7 @@
-# refray - a plain GNU Makefile.  `make` builds build/refray and
-# build/librefray.a; `make check` installs missing packages, builds and runs
-# every test; `make demo` installs, builds and renders scenes/demo.scene.
+# refray - a plain GNU Makefile.  `make` builds build/refray and the
+# library a host links (build/lib: librefray.a, librefray.so, refray.pc);
+# `make check` installs missing packages, builds and runs every test;
+# `make demo` installs, builds and renders scenes/demo.scene.
 #
 # Knobs (command line or config.mk):
 #   PNG=0 EXR=0     build without libpng / OpenEXR (PFM and PPM output only)
@@ -93,17 +94,35 @@ DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
 TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
 
 REFRAY   := $(BUILD)/refray
-LIBRARY  := $(BUILD)/librefray.a
+# The program and the tests link the internal archive (every symbol); a
+# host links the public library, which exports rf_ symbols only.
+LIBRARY  := $(BUILD)/librefray-internal.a
 TESTBIN  := $(BUILD)/check_refray
+
+# The public library (see its rules below).
+RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' include/refray.h)
+RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
+LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
+PUBLIC_LAYERS := base image lang scene render io api
+PUBLIC_OBJS := $(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS))) $(BUILD)/obj/gen/%,$(LIB_OBJS))
+PUBLIC_A    := $(BUILD)/lib/librefray.a
+PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
+PUBLIC_LIBS := $(PUBLIC_A) $(PUBLIC_SO)
+$(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
+
+# Objects depend on the flags they are compiled with: a build directory
+# made with other flags (say, before the library's -fPIC) is rebuilt.
+FLAGS_STAMP := $(BUILD)/obj/flags
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
 
-.PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
-all: $(REFRAY) $(LIBRARY)
+all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
 
 # Installs only what is missing; as root with apt-get, otherwise with sudo.
 deps:
@@ -224,14 +243,67 @@ TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
 	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
+	$(Q)$(MAKE) --no-print-directory embed
+
+# The library as a host sees it: installed into $(STAGE), the two examples
+# of tests/embed built with pkg-config against it and run, and the symbols
+# of the installed libraries and of the core's objects checked.
+STAGE        := $(BUILD)/stage
+STAGE_PREFIX := $(abspath $(STAGE))$(PREFIX)
+EMBED_FLAGS  := $(filter -m32 -fsanitize=%,$(CFLAGS) $(LDFLAGS))
+CORE_OBJS    := $(filter $(BUILD)/obj/src/base/% $(BUILD)/obj/src/lang/% $(BUILD)/obj/src/scene/% \
+                  $(BUILD)/obj/src/render/% $(BUILD)/obj/gen/%,$(LIB_OBJS))
+embed: all
+	$(Q)rm -rf $(STAGE) && $(MAKE) --no-print-directory install DESTDIR=$(abspath $(STAGE)) >/dev/null
+	$(Q)CC="$(CC)" EXTRA="$(EMBED_FLAGS)" PKG_CONFIG_PATH="$(STAGE_PREFIX)/lib/pkgconfig$(if $(PKG_CONFIG_PATH),:$(PKG_CONFIG_PATH))" \
+	  LIBDIR=$(STAGE_PREFIX)/lib OUT=$(BUILD)/embed IMAGE_EXT=$(if $(filter 1,$(PNG)),png,pfm) sh tests/embed/run.sh
+	$(Q)CC="$(CC) $(EMBED_FLAGS)" DATA_CHECK=$(if $(filter 1,$(SANITIZE)),0,1) sh tests/check_symbols.sh $(STAGE_PREFIX)/lib $(RF_ABI) $(CORE_OBJS)
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
 
+$(FLAGS_STAMP): FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
+$(LIB_OBJS) $(DRIVER_OBJS) $(TEST_OBJS): $(FLAGS_STAMP)
+
 $(LIBRARY): $(LIB_OBJS)
 	@echo "  AR      $@"
 	$(Q)rm -f $@ && ar rcs $@ $^
+
+# The public library.  Library objects are compiled position-independent
+# with every symbol hidden but those marked RF_API (include/refray.h).  The
+# shared library exports those alone (and says so again in its version
+# script); the static one is the public layers' objects linked into one
+# relocatable object whose hidden symbols are then made local, so that it
+# too defines no global symbol but rf_ ones (tests/check_symbols.sh).
+
+$(PUBLIC_A): $(PUBLIC_OBJS)
+	@mkdir -p $(dir $@)
+	@echo "  AR      $@"
+	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -r -nostdlib -o $(BUILD)/lib/refray.o $^
+	$(Q)objcopy --localize-hidden $(BUILD)/lib/refray.o
+	$(Q)rm -f $@ && ar rcs $@ $(BUILD)/lib/refray.o
+
+$(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
+	@mkdir -p $(dir $@)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -shared -Wl,-soname,librefray.so.$(RF_ABI) \
+	  -Wl,--version-script=src/api/librefray.map -o $@ $(PUBLIC_OBJS) $(ALL_LIBS)
+	$(Q)ln -sf librefray.so.$(RF_VERSION) $(BUILD)/lib/librefray.so.$(RF_ABI)
+	$(Q)ln -sf librefray.so.$(RF_ABI) $(BUILD)/lib/librefray.so
+
+# refray.pc: relocatable (prefix found from the file's own place), with the
+# build's optional libraries as private dependencies.  An optional library
+# with a pkg-config module adds it to PC_REQUIRES_PRIVATE, one without
+# adds its flags to PC_LIBS_PRIVATE.
+PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng) $(if $(filter 1,$(JSON)),jansson)
+PC_LIBS_PRIVATE     := $(EXR_LIBS) $(LDLIBS)
+$(BUILD)/refray.pc: src/api/refray.pc.in include/refray.h Makefile
+	@mkdir -p $(dir $@)
+	$(Q)sed -e 's|@VERSION@|$(RF_VERSION)|' -e 's|@REQUIRES_PRIVATE@|$(strip $(PC_REQUIRES_PRIVATE))|' \
+	  -e 's|@LIBS_PRIVATE@|$(strip $(PC_LIBS_PRIVATE))|' $< > $@
 
 $(TESTBIN): $(TEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
@@ -256,7 +328,7 @@ $(GEN)/suites.h: $(TEST_SRCS)
 $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
-	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) -c -o $@ $<
+	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) $(OBJ_CFLAGS) -c -o $@ $<
 
 # Per-object flags go to OBJ_CFLAGS, not CFLAGS, so that a CFLAGS given on
 # the command line (the fuzz build) does not drop them.
@@ -297,19 +369,21 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 .PHONY: FORCE
 FORCE:
 
-# The public header and every header it reaches (found by the compiler
-# itself) go to $(PREFIX)/include/refray/.
+# The public header alone, both libraries and refray.pc (in lib/pkgconfig).
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/refray
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
-	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/librefray.a
-	install -m 644 $$($(CC) -Isrc -Iinclude -MM -MT x include/refray.h | sed 's/^x://; s/\\$$//' | \
-	  tr ' ' '\n' | sort -u) \
-	  $(DESTDIR)$(PREFIX)/include/refray/
+	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
+	install -m 644 $(PUBLIC_A) $(DESTDIR)$(PREFIX)/lib/librefray.a
+	install -m 755 $(PUBLIC_SO) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_VERSION)
+	ln -sf librefray.so.$(RF_VERSION) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_ABI)
+	ln -sf librefray.so.$(RF_ABI) $(DESTDIR)$(PREFIX)/lib/librefray.so
+	install -m 644 $(BUILD)/refray.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/lib/librefray.a
-	rm -rf $(DESTDIR)$(PREFIX)/include/refray
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/include/refray.h \
+	  $(DESTDIR)$(PREFIX)/lib/librefray.a $(DESTDIR)$(PREFIX)/lib/librefray.so* \
+	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 clean:
 	rm -rf build demo.png
