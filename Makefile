@@ -10,6 +10,9 @@
 #   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
 #                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
 #                   for `refray stability`, spec/numerics.md)
+#   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
+#                   make deps installs); implies EXR=0 (see below)
+#   CC=clang        clang instead of gcc (make deps installs it)
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
@@ -22,17 +25,33 @@ EXR       ?= 1
 JSON      ?= 1
 SANITIZE  ?= 0
 LONG_DOUBLE ?= 0
+M32       ?= 0
 VALGRIND  ?= 0
 V         ?= 0
 
+# The 32-bit build.  Debian's i386 OpenEXR development package cannot be
+# installed next to the amd64 one (installing it removes the other), so a
+# 32-bit build goes without EXR; libpng, jansson and Check have i386
+# packages that coexist.  pkg-config then reads the i386 modules only.
+ifeq ($(M32),1)
+override EXR := 0
+export PKG_CONFIG_LIBDIR := /usr/lib/i386-linux-gnu/pkgconfig:/usr/share/pkgconfig
+endif
+
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
+VARIANT := $(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
+# Doubles in SSE2 registers, not in the x87's 80-bit ones, so that double
+# arithmetic rounds as it does on x86-64 (the tests compare bits).
+ifeq ($(M32),1)
+override CFLAGS += -m32 -msse2 -mfpmath=sse
+override LDFLAGS += -m32
+endif
 WARN    := -std=c99 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes -Wwrite-strings -Werror
 # flex and bison output is not ours: it gets C99 without -pedantic/-Werror
@@ -74,7 +93,12 @@ JSON_LIBS   = $(shell pkg-config --libs jansson)
 endif
 CHECK_CFLAGS = $(shell pkg-config --cflags check)
 # The tests compute some references in __float128 (libquadmath, part of gcc).
+# clang has the type but not gcc's quadmath.h: it is found after clang's
+# own headers in gcc's.
 CHECK_LIBS   = $(shell pkg-config --libs check) -lquadmath
+ifneq ($(findstring clang,$(CC)),)
+CHECK_CFLAGS += -idirafter $(shell gcc -print-file-name=include)
+endif
 
 ifeq ($(V),1)
 Q :=
@@ -117,7 +141,11 @@ FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
-        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
+        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev) \
+        $(if $(findstring clang,$(CC)),clang)
+ifeq ($(M32),1)
+DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
+endif
 
 .PHONY: all deps check test embed demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
@@ -126,6 +154,8 @@ all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
 
 # Installs only what is missing; as root with apt-get, otherwise with sudo.
 deps:
+	$(Q)if [ "$(M32)" = 1 ] && ! dpkg --print-foreign-architectures | grep -qx i386; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; $$SUDO dpkg --add-architecture i386; fi
 	$(Q)missing=""; for p in $(DEBS); do \
 	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
 	    || missing="$$missing $$p"; done; \
@@ -238,7 +268,8 @@ fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
                 --trace-children=yes)
-TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
+# The 32-bit build runs the heaviest cases about 2.5 times slower.
+TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$(if $(filter 1,$(M32)),4,1)))
 
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
 	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
@@ -277,13 +308,18 @@ $(LIBRARY): $(LIB_OBJS)
 # shared library exports those alone (and says so again in its version
 # script); the static one is the public layers' objects linked into one
 # relocatable object whose hidden symbols are then made local, so that it
-# too defines no global symbol but rf_ ones (tests/check_symbols.sh).
+# too defines no global symbol but rf_ ones (tests/check_symbols.sh).  The
+# exception: i386 code finds its own address through the compiler's
+# __x86.get_pc_thunk.* functions, hidden and in COMDAT groups that every
+# object of a program shares; made local, the linker would discard them.
 
 $(PUBLIC_A): $(PUBLIC_OBJS)
 	@mkdir -p $(dir $@)
 	@echo "  AR      $@"
 	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -r -nostdlib -o $(BUILD)/lib/refray.o $^
 	$(Q)objcopy --localize-hidden $(BUILD)/lib/refray.o
+	$(Q)objcopy $$(nm $(BUILD)/lib/refray.o | awk '$$3 ~ /^__x86\.get_pc_thunk\./ { print "--globalize-symbol=" $$3 }' | \
+	  sort -u) $(BUILD)/lib/refray.o
 	$(Q)rm -f $@ && ar rcs $@ $(BUILD)/lib/refray.o
 
 $(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
