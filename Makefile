@@ -147,7 +147,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed memory arena-min demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -196,6 +196,23 @@ report: deps
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq gnuplot-nox >/dev/null; }
 	$(Q)$(MAKE) --no-print-directory $(REFRAY)
 	$(Q)sh tests/report.sh $(REFRAY) $(REPORT_DIR) scenes/analytic/*.scene
+
+# Figures, not tests (spec/embedding.md): the bytes the library allocates
+# per sphere, mesh triangle and light sample, and for MEMORY_SCENES, counted
+# through the allocator hook; and the smallest fixed arena that renders
+# ARENA_SCENE (tests/embed/render_string.c's arena, found by bisection).
+MEMORY := $(BUILD)/memory
+MEMORY_SCENES ?= scenes/demo.scene scenes/bench/grid100k.scene
+ARENA_SCENE ?= scenes/demo.scene
+memory: $(MEMORY)
+	$(MEMORY) $(MEMORY_SCENES)
+
+$(MEMORY): $(BUILD)/obj/tests/bench/memory.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+arena-min: embed
+	$(Q)sh tests/bench/arena_min.sh $(BUILD)/embed/render_string-static $(ARENA_SCENE)
 
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"

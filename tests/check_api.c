@@ -364,7 +364,9 @@ START_TEST(test_api_fixed_arena)
 }
 END_TEST
 
-/* A counting allocator sees every byte returned. */
+/* [EMBED-MEM-3] A counting allocator sees every byte returned; rendering
+ * a region allocates nothing (everything a render needs is made with the
+ * renderer). */
 START_TEST(test_api_counting_allocator)
 {
     memcheck c;
@@ -382,6 +384,15 @@ START_TEST(test_api_counting_allocator)
     ro.height = 6;
     ck_assert_int_eq(rf_render_image(s, &ro, &img, NULL), RF_OK);
     rf_image_free(img);
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_OK);
+    long calls = c.calls;
+    size_t live = c.live;
+    float px[8 * 6 * 3];
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 8, 6, px, 24), RF_OK);
+    ck_assert_int_eq(c.calls, calls);
+    ck_assert_uint_eq(c.live, live);
+    rf_renderer_free(r);
     rf_scene_free(s);
     ck_assert_int_gt(c.calls, 20);
     ck_assert_int_eq(c.bad_sizes, 0);
