@@ -3,7 +3,7 @@
  * every allocation of a load and a render goes through the mem it was
  * given, every release names the size that was allocated, nothing is left
  * when the scene is freed, and a failure at any allocation ends the load
- * or the render cleanly with STATUS_NO_MEMORY ([EMBED-MEM-1..3]).
+ * or the render cleanly with STATUS_NO_MEMORY ([EMBED-MEM-1], [EMBED-MEM-2]).
  */
 #include <stdio.h>
 #include <string.h>

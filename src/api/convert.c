@@ -1,6 +1,7 @@
 /*
  * convert.c - the public API's types and the library's own (convert.h).
  */
+#include <stddef.h>
 #include <string.h>
 #include "api/convert.h"
 
@@ -28,41 +29,32 @@ mem api_mem(const rf_allocator *a)
     return mem_pick(&m);
 }
 
+/* The limits, field by field: the public struct and the library's hold
+ * the same longs under the same names. */
+#define LIMIT(field) {offsetof(rf_limits, field), offsetof(scene_limits, field)}
+static const struct {
+    size_t pub, lib;
+} limit_fields[] = {
+    LIMIT(max_width), LIMIT(max_height), LIMIT(max_pixels), LIMIT(max_samples), LIMIT(max_light_samples),
+    LIMIT(max_depth), LIMIT(max_loop_iterations), LIMIT(max_include_depth), LIMIT(max_file_bytes),
+    LIMIT(max_mesh_triangles), LIMIT(max_primitives), LIMIT(max_errors), LIMIT(max_ray_tree),
+};
+typedef char all_limits[sizeof limit_fields / sizeof limit_fields[0] * sizeof(long) == sizeof(scene_limits) &&
+                                sizeof(rf_limits) == sizeof(scene_limits) ? 1 : -1];
+
 scene_limits api_limits_in(const rf_limits *l)
 {
     scene_limits s;
-    s.max_width = l->max_width;
-    s.max_height = l->max_height;
-    s.max_pixels = l->max_pixels;
-    s.max_samples = l->max_samples;
-    s.max_light_samples = l->max_light_samples;
-    s.max_depth = l->max_depth;
-    s.max_loop_iterations = l->max_loop_iterations;
-    s.max_include_depth = l->max_include_depth;
-    s.max_file_bytes = l->max_file_bytes;
-    s.max_mesh_triangles = l->max_mesh_triangles;
-    s.max_primitives = l->max_primitives;
-    s.max_errors = l->max_errors;
-    s.max_ray_tree = l->max_ray_tree;
+    for (size_t i = 0; i < sizeof limit_fields / sizeof limit_fields[0]; i++)
+        memcpy((char *)&s + limit_fields[i].lib, (const char *)l + limit_fields[i].pub, sizeof(long));
     return s;
 }
 
 rf_limits api_limits_out(const scene_limits *s)
 {
     rf_limits l;
-    l.max_width = s->max_width;
-    l.max_height = s->max_height;
-    l.max_pixels = s->max_pixels;
-    l.max_samples = s->max_samples;
-    l.max_light_samples = s->max_light_samples;
-    l.max_depth = s->max_depth;
-    l.max_loop_iterations = s->max_loop_iterations;
-    l.max_include_depth = s->max_include_depth;
-    l.max_file_bytes = s->max_file_bytes;
-    l.max_mesh_triangles = s->max_mesh_triangles;
-    l.max_primitives = s->max_primitives;
-    l.max_errors = s->max_errors;
-    l.max_ray_tree = s->max_ray_tree;
+    for (size_t i = 0; i < sizeof limit_fields / sizeof limit_fields[0]; i++)
+        memcpy((char *)&l + limit_fields[i].pub, (const char *)s + limit_fields[i].lib, sizeof(long));
     return l;
 }
 

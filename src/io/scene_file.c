@@ -64,6 +64,20 @@ static void report(const scene_load_opts *o, const char *message)
         o->sink(o->sink_user, &r);
 }
 
+/* Loads the root text under path (its identity: its real path). */
+static scene_model *load_root(const char *path, const char *text, size_t len, const scene_load_opts *o,
+                              const mem *m, int *status)
+{
+    scene_source root = {path, identity_of(m, path), text, len};
+    scene_model *s = NULL;
+    if (root.identity)
+        s = scene_load_source(&root, o, status);
+    else
+        *status = STATUS_NO_MEMORY;
+    mem_free_string(m, (char *)root.identity);
+    return s;
+}
+
 scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status)
 {
     scene_load_opts opts;
@@ -81,13 +95,7 @@ scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, in
         report(&opts, why);
         return NULL;
     }
-    scene_source root = {path, identity_of(&files.mem, path), text, len};
-    scene_model *s = NULL;
-    if (root.identity)
-        s = scene_load_source(&root, &opts, status);
-    else
-        *status = STATUS_NO_MEMORY;
-    mem_free_string(&files.mem, (char *)root.identity);
+    scene_model *s = load_root(path, text, len, &opts, &files.mem, status);
     mem_free(&files.mem, text, len + 1);
     return s;
 }
@@ -117,12 +125,5 @@ scene_model *scene_file_load_text(const char *path, const char *text, size_t len
     short_opts(&o, limits, diag_out, warnings);
     scene_file_reader files = {o.limits.max_file_bytes, mem_pick(&o.mem)};
     o.resolver = scene_file_resolver(&files);
-    scene_source root = {path, identity_of(&files.mem, path), text, len};
-    scene_model *s = NULL;
-    if (root.identity)
-        s = scene_load_source(&root, &o, status);
-    else
-        *status = STATUS_NO_MEMORY;
-    mem_free_string(&files.mem, (char *)root.identity);
-    return s;
+    return load_root(path, text, len, &o, &files.mem, status);
 }

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/embed/run.sh - the embedding examples built against an installed
+# tests/embed/run.sh - [EMBED-EXAMPLE-1] the embedding examples built against an installed
 # refray (make install DESTDIR=...) with pkg-config alone, and run: each
 # linked with the shared library and again with the static one.
 #
