@@ -17,10 +17,13 @@
  *   - No global state: handles are independent, so different threads may
  *     load and render different scenes at once.  One handle must not be
  *     used by two threads at the same time, except that any number of
- *     renderers may share one (const) scene.
+ *     renderers may share one (const) scene; they allocate from the
+ *     scene's allocator when they are made and freed, so with threads that
+ *     allocator must be thread-safe (malloc is).
  *   - Numbers are double in this interface whatever the library was built
- *     with; pixels handed to you are float (rf_render_region) or double
- *     (rf_image), linear RGB, never NaN or infinite.
+ *     with; pixels handed to you are float (rf_render_region; a value
+ *     beyond FLT_MAX is FLT_MAX) or double (rf_image), linear RGB, never
+ *     NaN or infinite.
  *   - Nothing touches the file system unless you call a function that names
  *     a path (rf_scene_load_file, rf_image_write) or your own resolver does.
  *   - Nothing is printed: diagnostics go to the callback you give

@@ -6,6 +6,7 @@
  * above of power 2 is 0.5 * 0.2 + 0.5 * 2 * 1 = 1.1 everywhere
  * (spec/shading.md).  IDs: spec/embedding.md.
  */
+#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,6 +94,26 @@ START_TEST(test_api_regions_tile_the_image)
     ck_assert_int_eq(rf_render_region(r, 0, 3, 5, 8, tiled + 3 * 36, 36), RF_OK);
     ck_assert_int_eq(rf_render_region(r, 5, 3, 12, 8, tiled + 3 * 36 + 15, 36), RF_OK);
     ck_assert_int_eq(memcmp(whole, tiled, sizeof whole), 0);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* A radiance beyond the float range arrives as FLT_MAX, not infinity:
+ * 0.5 * 1e300 under a distant light straight above. */
+START_TEST(test_api_region_float_saturates)
+{
+    static const char text[] = "image { width 2 height 1 }\n"
+                               "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                               "distant_light { direction [0, -1, 0] power 1e300 }\n"
+                               "plane { material { Kd 0.5 } }\n";
+    rf_scene *s = load(text, NULL);
+    rf_renderer *r;
+    float px[6];
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 2, 1, px, 6), RF_OK);
+    for (int i = 0; i < 6; i++)
+        ck_assert_float_eq(px[i], FLT_MAX);
     rf_renderer_free(r);
     rf_scene_free(s);
 }
@@ -448,6 +469,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_version_and_status);
     tcase_add_test(tc, test_api_render_region);
     tcase_add_test(tc, test_api_regions_tile_the_image);
+    tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);

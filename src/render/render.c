@@ -76,13 +76,20 @@ void renderer_free(renderer *r)
     tracer_free(&r->tracer);
 }
 
+/* v as float; beyond FLT_MAX (a radiance can reach DBL_MAX) the largest
+ * float, so a float target never holds an infinity. */
+static float to_float(real v)
+{
+    return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v;
+}
+
 static void store(const render_target *target, int x, int y, rgb c)
 {
     size_t at = (size_t)(y - target->y0) * target->stride + 3 * (size_t)(x - target->x0);
     if (target->f32) {
-        target->f32[at] = (float)c.x;
-        target->f32[at + 1] = (float)c.y;
-        target->f32[at + 2] = (float)c.z;
+        target->f32[at] = to_float(c.x);
+        target->f32[at + 1] = to_float(c.y);
+        target->f32[at + 2] = to_float(c.z);
     } else {
         target->f64[at] = (double)c.x;
         target->f64[at + 1] = (double)c.y;
