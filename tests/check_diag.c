@@ -1,7 +1,8 @@
-/* Tests of diagnostics (src/base/diag.c) and source positions (src/base/source.c):
- * the GCC form, the excerpt and caret, tabs, long lines, control bytes,
- * include chains, the error limit and switched-off warnings.  Expected
- * output is written out in full.  IDs: spec/language.md. */
+/* Tests of diagnostics (src/base/diag.c, printed by src/io/diag_print.c) and
+ * source positions (src/base/source.c): the GCC form, the excerpt and caret,
+ * tabs, long lines, control bytes, include chains, the error limit and
+ * switched-off warnings.  Expected output is written out in full.  IDs:
+ * spec/language.md. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

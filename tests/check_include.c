@@ -1,5 +1,5 @@
 /* Tests of `include` and `for` (src/scene/lower.c) and of reading scene files
- * (src/scene/scene.c scene_load, src/base/fileio.c).  Include trees are fixtures
+ * (src/io/scene_file.c, src/io/fileio.c, src/scene/lower.c).  Include trees are fixtures
  * under tests/scenes/include/; the tests run from the repository root.
  * IDs are those of spec/language.md. */
 #include <stdio.h>

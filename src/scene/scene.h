@@ -1,7 +1,7 @@
 /*
  * scene.h - the flat, validated scene that the tracer and the oracle read.
  *
- * Invariants once scene_load has returned a scene (checked by the lowering
+ * Invariants once scene_load_source has returned a scene (checked by the lowering
  * pass, relied on everywhere else):
  *   - every double is finite; every direction and normal has unit length;
  *   - 0 <= Kd, Ks, t <= 1 channel-wise; n >= 0; ior > 0;
