@@ -281,8 +281,14 @@ START_TEST(test_scene_load_validation_errors)
         {"material m { n -1 }", "t.scene:1:16: error: n must be >= 0, got -1"},
         {"sphere { material { ior -1 } }", "t.scene:1:25: error: ior must be > 0, got -1"},
         /* unknown material, defined before use */
-        {"sphere { material glass }\nmaterial glass {}",
+        {"sphere { material glass }",
          "t.scene:1:19: error: unknown material 'glass' (define it with `material glass { ... }` before use)"},
+        {"sphere { material glass }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glass': it is defined only later, at line 2 (define a material "
+         "before its first use)"},
+        /* [LANG-DIAG-STUMBLE-1] a close name defined further down */
+        {"sphere { material glas }\nfor i in 0 .. 1 { }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glas'; did you mean 'glass' (defined at line 3)?"},
         {"material glass {}\nsphere { material glas }",
          "t.scene:2:19: error: unknown material 'glas'; did you mean 'glass'?"},
         /* duplicate names */
@@ -555,8 +561,8 @@ START_TEST(test_scene_load_names)
     load(&l, "sphere { radius r }\nlet r = 1");
     ck_assert_str_eq(first_line(&l), "t.scene:1:17: error: unknown constant 'r'");
     loaded_done(&l);
-    load(&l, "let radius = 1");
-    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'radius' is a reserved word and cannot name a constant");
+    load(&l, "let sphere = 1");
+    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'sphere' is a reserved word and cannot name a constant");
     loaded_done(&l);
     load(&l, "let pi = 3");
     ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'pi' is built in and cannot be redefined");

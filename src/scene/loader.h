@@ -29,6 +29,7 @@ typedef struct loader {
     src_span image_where;       /* first `image` block (file -1: none yet) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
+    const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
 } loader;
 

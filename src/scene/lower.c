@@ -260,10 +260,13 @@ int loader_lower_file(loader *L, int file)
     int errors = L->diag.errors;
     ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
     int ok = 0;
+    const ast *includer = L->tree;
+    L->tree = tree;
     if (!tree)
         loader_oom(L);
     else if (L->diag.errors == errors)
         ok = lower_statements(L, tree);
+    L->tree = includer;
     /* Nested includes may have moved the stack: not `stack` here. */
     free(L->include_stack[--L->include_depth]);
     return ok;

@@ -319,8 +319,8 @@ static int read_obj(loader *L, const char *name, src_span at, int *file)
         return 0;
     }
     int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0)
-        *file = source_set_add(&L->scene->sources, path, text, len, at);
+    if (status == 0 && (*file = source_set_add(&L->scene->sources, path, text, len, at)) >= 0)
+        L->scene->sources.files[*file]->is_mesh = 1;
     else
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
     free(path);
@@ -364,12 +364,23 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const 
     return ok;
 }
 
+/* `file a` with no constant a: a file name without its quotes. */
+static int unquoted_file(loader *L, const props *p)
+{
+    const ast *v = p->by_keyword[KW_FILE] ? p->by_keyword[KW_FILE]->first : NULL;
+    if (!v || v->kind != AST_NAME || env_find(&L->env, v->text))
+        return 0;
+    diag_report(&L->diag, DIAG_ERROR, v->span, "file names are strings: write \"%s\"", v->text);
+    return 1;
+}
+
 static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
     int file;
-    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !read_obj(L, name, at, &file))
+    if (!props_require(L, p, KW_FILE) || unquoted_file(L, p) || !props_string(L, p, KW_FILE, &name, &at) ||
+        !read_obj(L, name, at, &file))
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
