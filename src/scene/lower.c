@@ -211,6 +211,9 @@ static int lower_block(loader *L, const ast *node)
     case KW_TRIANGLE:
     case KW_DISK:
     case KW_BOX:
+    case KW_CYLINDER:
+    case KW_CONE:
+    case KW_TORUS:
     case KW_MESH: return lower_primitive(L, node);
     default:
         diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is a property, not a statement",
