@@ -136,9 +136,9 @@ static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
 static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 *p, vec3 *n)
 {
     vec3 x = ray_at(r, t);
-    real tt = t, d;
+    real tt = t, d, dl = vec_length(r->dir);
     vec3 nn;
-    for (int i = 0; i < 6 && torus_distance(tr, x, &d, &nn); i++) {
+    for (int i = 0; i < 8 && torus_distance(tr, x, &d, &nn); i++) {
         real slope = vec_dot(nn, r->dir);
         if (slope == 0)
             break;
@@ -147,7 +147,9 @@ static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3
             break;
         x = vec_madd(x, r->dir, step);
         tt += step;
-        if (fabs(step) <= 4 * REAL_EPSILON * fabs(tt))
+        /* Done when the move is below the rounding of the point itself. */
+        vec3 ax = vec_make(fabs(x.x), fabs(x.y), fabs(x.z));
+        if (fabs(step) * dl <= REAL_EPSILON * (vec_max_component(ax) + tr->major))
             break;
     }
     if (!torus_distance(tr, x, &d, n))
@@ -184,6 +186,11 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
     real dl = vec_length(r->dir), tm = 0.5 * (tb[0] + tb[1]), half = 0.5 * (tb[1] - tb[0]) * dl / scale;
     vec3 e = vec_scale(r->dir, 1.0 / dl), p0 = vec_scale(vec_madd(f, r->dir, tm), 1.0 / scale);
     torus_quartic(&tr, scale, p0, e, c);
+    /* The torus touches its bounding sphere along the outer equator: a ray
+     * entering there has a root at the chord's very end, which rounding may
+     * put just outside.  Outside the sphere the quartic is positive (no
+     * point of the torus is there), so a margin adds no root. */
+    half += 0x1p-20;
     int n = poly_roots(c, DEGREE, -half, half, u), found = 0;
     hit h[ROOTS_MAX];
     for (int i = 0; i < n; i++) {
