@@ -703,6 +703,58 @@ START_TEST(test_scene_load_huge_but_finite)
 }
 END_TEST
 
+/* [LANG-CYLINDER-1] [LANG-CONE-1] [LANG-TORUS-1]: defaults, open, and
+ * [LANG-XFORM-BAKE-1] baking under a similarity (rotate 90 about x takes
+ * y to z and z to -y; scale 2; translate): the ends or the centre moved,
+ * the axis turned, the radii doubled.  A non-uniform scale keeps the frame. */
+START_TEST(test_scene_load_quadrics)
+{
+    loaded l;
+    const rf_scene *s = load_ok(&l,
+        "cylinder { }\n"
+        "cone { open }\n"
+        "torus { }\n"
+        "cylinder { from [0, 0, 0] to [0, 0, 1] radius 1 rotate [90, 0, 0] scale 2 translate [1, 0, 0] }\n"
+        "cone { radii 0.5 0.25 rotate [90, 0, 0] scale 2 }\n"
+        "torus { center [0, 1, 0] major 2 minor 0.5 rotate [90, 0, 0] scale 2 }\n"
+        "torus { scale [1, 2, 1] }\n"
+        "let radius = 3\nlet minor = 0.1\ncylinder { radius radius open }\ntorus { minor minor }\n");
+    const rf_prim *p = s->prims;
+    ck_assert_int_eq(s->prim_count, 9);
+    ck_assert_int_eq(p[0].kind, PRIM_CYLINDER);
+    ck_assert_vec_near(p[0].u.cylinder.from, vec_make(0, 0, 0), 0);
+    ck_assert_vec_near(p[0].u.cylinder.to, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[0].u.cylinder.radius, 1, 0);
+    ck_assert_int_eq(p[0].u.cylinder.open, 0);
+    ck_assert_int_eq(p[1].kind, PRIM_CONE);
+    ck_assert_near(p[1].u.cone.radius[0], 1, 0);
+    ck_assert_near(p[1].u.cone.radius[1], 0, 0);
+    ck_assert_int_eq(p[1].u.cone.open, 1);
+    ck_assert_int_eq(p[2].kind, PRIM_TORUS);
+    ck_assert_vec_near(p[2].u.torus.axis, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[2].u.torus.major, 1, 0);
+    ck_assert_near(p[2].u.torus.minor, 0.25, 0);
+    ck_assert_int_eq(p[3].has_xform, 0);
+    ck_assert_vec_near(p[3].u.cylinder.from, vec_make(1, 0, 0), 1e-15);
+    ck_assert_vec_near(p[3].u.cylinder.to, vec_make(1, -2, 0), 1e-15);
+    ck_assert_near(p[3].u.cylinder.radius, 2, 1e-15);
+    ck_assert_int_eq(p[4].has_xform, 0);
+    ck_assert_vec_near(p[4].u.cone.to, vec_make(0, 0, 2), 1e-15);
+    ck_assert_near(p[4].u.cone.radius[0], 1, 1e-15);
+    ck_assert_near(p[4].u.cone.radius[1], 0.5, 1e-15);
+    ck_assert_int_eq(p[5].has_xform, 0);
+    ck_assert_vec_near(p[5].u.torus.center, vec_make(0, 0, 2), 1e-15);
+    ck_assert_vec_near(p[5].u.torus.axis, vec_make(0, 0, 1), 1e-15);
+    ck_assert_near(p[5].u.torus.major, 4, 1e-15);
+    ck_assert_near(p[5].u.torus.minor, 1, 1e-15);
+    ck_assert_int_eq(p[6].has_xform, 1);
+    ck_assert_near(p[7].u.cylinder.radius, 3, 0);
+    ck_assert_int_eq(p[7].u.cylinder.open, 1);
+    ck_assert_near(p[8].u.torus.minor, 0.1, 0);
+    loaded_done(&l);
+}
+END_TEST
+
 Suite *suite_lower(void)
 {
     Suite *s = suite_create("lower");
@@ -725,6 +777,7 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh);
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
+    tcase_add_test(tc, test_scene_load_quadrics);
     suite_add_tcase(s, tc);
     return s;
 }
