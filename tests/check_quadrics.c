@@ -8,6 +8,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/intersect.h"
+#include "render/trace.h"
 #include "scene/scene.h"
 #include "base/xform.h"
 
@@ -323,6 +324,116 @@ START_TEST(test_quadric_spawn_no_self_hit)
 }
 END_TEST
 
+static rf_scene *load(const char *text)
+{
+    int status;
+    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
+    return s;
+}
+
+/* The radiance along one ray through the scene, as the renderer traces a
+ * camera ray (starting in air). */
+static rgb trace_one(const rf_scene *s, vec3 o, vec3 d, trace_stats *st)
+{
+    tracer t;
+    medium_stack air;
+    memset(&air, 0, sizeof air);
+    memset(st, 0, sizeof *st);
+    ck_assert(tracer_init(&t, s, 0, 0));
+    ray r = make_ray(o, d);
+    rgb c = trace_ray(&t, &r, 1, &air, 0, st);
+    tracer_free(&t);
+    return c;
+}
+
+/* [SHADE-SHADOW-1] Shadows through a clear torus (t = 0.5, ior 1): a
+ * plane point under the tube sees the light through 2 surfaces (0.5^2 of
+ * Kd E = 0.5: 0.125), one under the hole or beyond the ring all of it
+ * (0.5); a wall point behind the ring seen along its plane, through 4
+ * (0.5^4 of 0.5). */
+START_TEST(test_torus_transparent_shadow)
+{
+    rf_scene *s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
+                       "torus { center [0, 1, 0] axis [0, 1, 0] major 1 minor 0.25 material clear }\n"
+                       "plane { normal [0, 1, 0] material { Kd 0.5 } }\n"
+                       "distant_light { direction [0, -1, 0] }\n");
+    trace_stats st;
+    static const double x[] = {1, 1.24, 0, 1.3, -0.8};
+    static const double want[] = {0.125, 0.125, 0.5, 0.5, 0.125};
+    for (int i = 0; i < 5; i++) {
+        rgb c = trace_one(s, vec_make(x[i], 0.1, 0.01), vec_make(0, -1, 0), &st);
+        ck_assert_msg(fabs(c.x - want[i]) < 1e-12, "x = %g: %.17g, expected %g", x[i], c.x, want[i]);
+    }
+    scene_free(s);
+    s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
+             "torus { axis [0, 1, 0] major 1 minor 0.25 material clear }\n"
+             "plane { point [-5, 0, 0] normal [1, 0, 0] material { Kd 0.5 } }\n"
+             "point_light { position [5, 0, 0] falloff none }\n");
+    rgb c = trace_one(s, vec_make(-4.9, 0, 0), vec_make(-1, 0, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.5 * 0.0625) < 1e-12, "%.17g", c.x);
+    scene_free(s);
+}
+END_TEST
+
+/* [LANG-FEATURES-1] A torus shadows itself: from the centre, the inner
+ * wall at x = 1.5 faces a light coming from -x (N.L = 1), but the far side
+ * of the ring stands in the way: only the ambient Kd Ia = 0.5 * 0.2 is
+ * left.  Lit from above, the top of the tube is not shadowed. */
+START_TEST(test_torus_shadows_itself)
+{
+    rf_scene *s = load("ambient { color 0.2 }\n"
+                       "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
+                       "distant_light { direction [1, 0, 0] }\n");
+    ck_assert(s->features.shadows);
+    trace_stats st;
+    rgb c = trace_one(s, vec_make(0, 0, 0), vec_make(1, 0, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.1) < 1e-15, "%.17g", c.x);
+    ck_assert_int_eq(st.shadow_rays, 1);
+    scene_free(s);
+    /* Lit from above, a point on the tube's top (N = +y): Kd (Ia + E). */
+    s = load("ambient { color 0.2 }\n"
+             "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
+             "distant_light { direction [0, -1, 0] }\n");
+    c = trace_one(s, vec_make(2, 5, 0), vec_make(0, -1, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.6) < 1e-15, "%.17g", c.x);
+    scene_free(s);
+}
+END_TEST
+
+/* [SHADE-REFRACT-1] Glass cylinders and tori are solids: a ray down the
+ * axis of a glass cylinder meets both caps at normal incidence and passes
+ * straight through (two refracted rays, the background times t^2); a point
+ * inside the cylinder or inside the torus's tube starts in its glass; one
+ * in the torus's hole or inside an open cylinder does not. */
+START_TEST(test_quadric_glass)
+{
+    rf_scene *s = load("image { background 1 max_depth 5 }\n"
+                       "cylinder { from [0, 0, 0] to [0, 0, -2] radius 1 material { Kd 0 t 0.8 ior 1.5 } }\n"
+                       "torus { center [5, 0, 0] axis [0, 0, 1] major 2 minor 0.5 material { Kd 0 t 1 ior 1.3 } }\n"
+                       "cylinder { from [20, 0, 0] to [20, 0, 5] open material { Kd 0 t 1 ior 1.7 } }\n");
+    trace_stats st;
+    rgb c = trace_one(s, vec_make(0.3, 0.2, 5), vec_make(0, 0, -1), &st);
+    ck_assert_msg(fabs(c.x - 0.64) < 1e-12, "%.17g", c.x);
+    ck_assert_int_eq(st.refraction_rays, 2);
+    tracer t;
+    medium_stack m;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    trace_media_at(&t, vec_make(0.2, 0.1, -1), &m, &st);
+    ck_assert_int_eq(m.count, 1);
+    ck_assert_near(m.ior[0], 1.5, 0);
+    trace_media_at(&t, vec_make(5 + 2.1, 0, 0.2), &m, &st);
+    ck_assert_int_eq(m.count, 1);
+    ck_assert_near(m.ior[0], 1.3, 0);
+    trace_media_at(&t, vec_make(5, 0, 0), &m, &st);
+    ck_assert_int_eq(m.count, 0);
+    trace_media_at(&t, vec_make(20, 0.5, 1), &m, &st);
+    ck_assert_int_eq(m.count, 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -336,6 +447,9 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_quadric_bounds_and_magnitude);
     tcase_add_test(tc, test_quadric_contains);
     tcase_add_test(tc, test_quadric_spawn_no_self_hit);
+    tcase_add_test(tc, test_torus_transparent_shadow);
+    tcase_add_test(tc, test_torus_shadows_itself);
+    tcase_add_test(tc, test_quadric_glass);
     suite_add_tcase(s, tc);
     return s;
 }
