@@ -703,6 +703,21 @@ START_TEST(test_scene_load_huge_but_finite)
 }
 END_TEST
 
+/* [LANG-CAMERA-2] Every mistake of a camera is reported, in one run: the
+ * kind and a value out of range, then look_at at the eye and a zero up. */
+START_TEST(test_scene_load_camera_reports_everything)
+{
+    loaded l;
+    load(&l, "camera { perspective orthographic fov 400 eye [1, 1, 1] look_at [1, 1, 1] up [0, 0, 0] }\nsphere {}");
+    ck_assert_ptr_null(l.scene);
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:22: error: a camera is either perspective or orthographic"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:39: error: fov must be in (0, 180), got 400"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: look_at must differ from eye"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: up must not be a zero-length vector"));
+    loaded_done(&l);
+}
+END_TEST
+
 /* [LANG-CYLINDER-1] [LANG-CONE-1] [LANG-TORUS-1]: defaults, open, and
  * [LANG-XFORM-BAKE-1] baking under a similarity (rotate 90 about x takes
  * y to z and z to -y; scale 2; translate): the ends or the centre moved,
@@ -778,6 +793,7 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
     tcase_add_test(tc, test_scene_load_quadrics);
+    tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);
     return s;
 }

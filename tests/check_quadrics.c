@@ -401,7 +401,7 @@ START_TEST(test_torus_shadows_itself)
 }
 END_TEST
 
-/* [SHADE-REFRACT-1] Glass cylinders and tori are solids: a ray down the
+/* [NUM-GLASS-2] [SHADE-SNELL-1] Glass cylinders and tori are solids: a ray down the
  * axis of a glass cylinder meets both caps at normal incidence and passes
  * straight through (two refracted rays, the background times t^2); a point
  * inside the cylinder or inside the torus's tube starts in its glass; one
