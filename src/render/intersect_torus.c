@@ -5,8 +5,9 @@
  * rho = |q - z a| (the distance from the axis), the distance from the
  * circle is D = sqrt((rho - R)^2 + z^2) and the surface is D = r.
  *
- * Squaring twice gives the quartic of the literature (e.g. Graphics Gems
- * II, "Intersecting a ray with a torus"):
+ * Squaring twice gives the quartic of the literature (P. Hanrahan in
+ * Glassner, ed., "An Introduction to Ray Tracing", 1989; J. M. Cychosz,
+ * "Intersecting a Ray with an Elliptical Torus", Graphics Gems II, 1991):
  *     (|q|^2 + R^2 - r^2)^2 - 4 R^2 rho^2 = (D^2 - r^2)((rho + R)^2 + z^2 - r^2),
  * whose second factor is positive for a ring torus (r < R), so the quartic
  * and D - r have the same sign.  Along the line q(s) = p0 + s e (e unit)
