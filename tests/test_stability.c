@@ -1113,6 +1113,8 @@ START_TEST(test_precision_befores_are_worse)
         {"before: phong pow(V.R, n)", "shade_phong_lobe", 50},
         {"before: phong exp(n log V.R)", "shade_phong_lobe", 50},
         {"before: textbook sphere point", "isect_sphere point", 1e6},
+        {"before: textbook cylinder point", "isect_cylinder point", 1e6},
+        {"before: unshifted torus quartic point", "isect_torus point", 1e6},
     };
     for (size_t k = 0; k < sizeof pairs / sizeof pairs[0]; k++) {
         measure b = {0, "-", 0, 0}, a = {0, "-", 0, 0};
