@@ -329,6 +329,53 @@ START_TEST(test_conform_usage_errors)
 }
 END_TEST
 
+/* The over count of `refray compare --manifest` for image against the
+ * suite kit's plane_point_linear. */
+static long compare_over(const char *kit, const char *image)
+{
+    char mf[300];
+    cli_run *r = malloc(sizeof *r);
+    const char *args[] = {"compare", image, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), "--scene",
+                          "plane_point_linear", "--json", NULL};
+    cli_refray(r, args);
+    const char *p = strstr(r->out, "\"over\": ");
+    ck_assert_msg(p != NULL, "compare: %s %s", r->out, r->err);
+    long over = strtol(p + 8, NULL, 10);
+    free(r);
+    return over;
+}
+
+/* [KIT-RULE-1] The rule is enough to check without refray: the kit's
+ * stand-alone Python checker (the worked example of spec/conformance.md)
+ * counts the same pixels over as compare, on a picture 3e-4 too bright in
+ * its top half.  Runs where python3 is installed. */
+START_TEST(test_kit_check_py_agrees)
+{
+    if (access("/usr/bin/python3", X_OK) != 0) {
+        fputs("check_conform: no /usr/bin/python3, tests/conform/kit_check.py not run\n", stderr);
+        return;
+    }
+    char kit[128], src[300], img[300], cmd[1024], err[256];
+    rf_image e;
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
+    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    for (int i = 0; i < 3 * e.width * e.height / 2; i++)
+        e.rgb[i] *= 1 + 3e-4;
+    ck_assert_int_eq(img_write(cli_path(img, sizeof img, kit_root, "bright.pfm"), &e, NULL, err, sizeof err), 0);
+    long over = compare_over(kit, img);
+    ck_assert_int_gt(over, 0);
+    snprintf(cmd, sizeof cmd, "python3 tests/conform/kit_check.py '%s' plane_point_linear '%s' | "
+             "grep -qx 'plane_point_linear: %ld of 6912 pixels over'", kit, img, over);
+    ck_assert_msg(system(cmd) == 0, "kit_check.py does not count %ld pixels over", over);
+    snprintf(cmd, sizeof cmd, "python3 tests/conform/kit_check.py '%s' plane_point_linear '%s' >/dev/null", kit,
+             src);
+    ck_assert_int_eq(system(cmd), 0);
+    img_free(&e);
+}
+END_TEST
+
 #else
 
 /* conform reads the kit's manifest: a build without jansson says so. */
@@ -402,6 +449,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_missing_input);
     tcase_add_test(tc, test_conform_reports);
     tcase_add_test(tc, test_conform_usage_errors);
+    tcase_add_test(tc, test_kit_check_py_agrees);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif
