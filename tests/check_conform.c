@@ -23,22 +23,12 @@ static int kit_status = -1;
 
 static void kit_setup(void)
 {
-    if (!REFRAY_HAVE_JSON)
-        return; /* no manifests: the suite checks that refray says so */
-    snprintf(kit_root, sizeof kit_root, "/tmp/refray-conform-XXXXXX");
-    if (!mkdtemp(kit_root))
-        return;
-    char dir[128];
-    snprintf(dir, sizeof dir, "%s/kit", kit_root);
-    kit_status = cli_make_kit(dir);
+    kit_status = cli_kit_setup(kit_root, sizeof kit_root);
 }
 
 static void kit_teardown(void)
 {
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", kit_root);
-    if (kit_root[0] && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", kit_root);
+    cli_kit_teardown(kit_root);
 }
 
 /* Valgrind runs refray and the shell under it: more time there. */

@@ -23,22 +23,12 @@ static int kit_status = -1;
 
 static void kit_setup(void)
 {
-    if (!REFRAY_HAVE_JSON)
-        return; /* no manifests: the suite checks that refray says so */
-    snprintf(kit_dir, sizeof kit_dir, "/tmp/refray-kit-XXXXXX");
-    if (!mkdtemp(kit_dir))
-        return;
-    char dir[128];
-    snprintf(dir, sizeof dir, "%s/kit", kit_dir);
-    kit_status = cli_make_kit(dir);
+    kit_status = cli_kit_setup(kit_dir, sizeof kit_dir);
 }
 
 static void kit_teardown(void)
 {
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", kit_dir);
-    if (kit_dir[0] && system(cmd) != 0)
-        fprintf(stderr, "could not remove %s\n", kit_dir);
+    cli_kit_teardown(kit_dir);
 }
 
 #if REFRAY_HAVE_JSON

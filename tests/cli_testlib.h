@@ -112,15 +112,33 @@ static const char *const cli_kit_scenes[] = {
 };
 enum { CLI_KIT_SCENES = 3 };
 
-/* Builds that kit in dir with `refray kit -q -o dir SCENES`; returns the exit code. */
-static inline int cli_make_kit(const char *dir)
+/*
+ * Builds that kit with `refray kit -q -o ROOT/kit SCENES` in a new
+ * directory ROOT under /tmp (its path into root), for a suite's unchecked
+ * fixture.  Returns refray's exit code, -1 when there is no directory or
+ * the build has no JSON (no kit can be made; the suites check that).
+ */
+static inline int cli_kit_setup(char *root, size_t size)
 {
     static cli_run r;
+    char dir[300];
+    snprintf(root, size, "/tmp/refray-kit-XXXXXX");
+    if (!REFRAY_HAVE_JSON || !mkdtemp(root))
+        return -1;
+    snprintf(dir, sizeof dir, "%s/kit", root);
     const char *args[] = {"kit", "-q", "-o", dir, cli_kit_scenes[0], cli_kit_scenes[1], cli_kit_scenes[2], NULL};
     cli_refray(&r, args);
     if (r.code != 0)
         fprintf(stderr, "refray kit: %s", r.err);
     return r.code;
+}
+
+static inline void cli_kit_teardown(const char *root)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", root);
+    if (strncmp(root, "/tmp/refray-kit-", 16) == 0 && !strstr(root, "XXXXXX") && system(cmd) != 0)
+        fprintf(stderr, "could not remove %s\n", root);
 }
 
 #endif

@@ -61,31 +61,6 @@ typedef struct compare_kit {
     char *exact;                    /* B when not given (malloc'd) */
 } compare_kit;
 
-/* --downsample K and --scale S, each a number or 'manifest'. */
-static int adjust_option(compare_args *a, int argc, char **argv, int *i)
-{
-    const char *opt = argv[*i], *v;
-    long k;
-    if (!cli_take_value(argc, argv, i, &v))
-        return 0;
-    int per_scene = strcmp(v, "manifest") == 0;
-    if (strcmp(opt, "--downsample") == 0) {
-        if (!per_scene && !cli_parse_long(opt, v, 1, 64, &k))
-            return 0;
-        a->adjust.downsample = per_scene ? CONFORM_FROM_MANIFEST : (int)k;
-        return 1;
-    }
-    if (per_scene) {
-        a->adjust.scale = CONFORM_FROM_MANIFEST;
-        return 1;
-    }
-    if (!cli_parse_double(opt, v, &a->adjust.scale) || !(a->adjust.scale > 0)) {
-        cli_usage_error("--scale takes a number > 0 or 'manifest', not '%s'", v);
-        return 0;
-    }
-    return 1;
-}
-
 /* 1: consumed, 0: error (reported), -1: not a compare option. */
 static int compare_option(compare_args *a, int argc, char **argv, int *i)
 {
@@ -103,7 +78,7 @@ static int compare_option(compare_args *a, int argc, char **argv, int *i)
     if (strcmp(opt, "--scene") == 0)
         return cli_take_value(argc, argv, i, &a->scene);
     if (strcmp(opt, "--downsample") == 0 || strcmp(opt, "--scale") == 0)
-        return adjust_option(a, argc, argv, i);
+        return cli_adjust_option(&a->adjust, argc, argv, i);
     if (strcmp(opt, "--tolerance") != 0)
         return -1;
     if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->tolerance))

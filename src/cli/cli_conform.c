@@ -65,29 +65,6 @@ typedef struct conform_args {
     int only_count;
 } conform_args;
 
-/* --downsample K|manifest, --scale S|manifest; 1 ok, 0 error reported. */
-static int adjust_value(conform_args *a, int argc, char **argv, int *i)
-{
-    const char *opt = argv[*i], *v;
-    long k;
-    if (!cli_take_value(argc, argv, i, &v))
-        return 0;
-    int per_scene = strcmp(v, "manifest") == 0;
-    if (strcmp(opt, "--downsample") == 0) {
-        if (!per_scene && !cli_parse_long(opt, v, 1, 64, &k))
-            return 0;
-        a->adjust.downsample = per_scene ? CONFORM_FROM_MANIFEST : (int)k;
-        return 1;
-    }
-    if (!per_scene && (!cli_parse_double(opt, v, &a->adjust.scale) || !(a->adjust.scale > 0))) {
-        cli_usage_error("--scale takes a number > 0 or 'manifest', not '%s'", v);
-        return 0;
-    }
-    if (per_scene)
-        a->adjust.scale = CONFORM_FROM_MANIFEST;
-    return 1;
-}
-
 /* --only takes the arguments up to the next option, each NAME or NAME,NAME. */
 static int only_value(conform_args *a, int argc, char **argv, int *i)
 {
@@ -117,7 +94,7 @@ static int conform_option(conform_args *a, int argc, char **argv, int *i)
     if (strcmp(opt, "--markdown") == 0)
         return cli_take_value(argc, argv, i, &a->markdown);
     if (strcmp(opt, "--downsample") == 0 || strcmp(opt, "--scale") == 0)
-        return adjust_value(a, argc, argv, i);
+        return cli_adjust_option(&a->adjust, argc, argv, i);
     if (strcmp(opt, "--only") == 0)
         return only_value(a, argc, argv, i);
     if (strcmp(opt, "--json") == 0)
