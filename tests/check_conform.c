@@ -1,7 +1,7 @@
 /*
  * check_conform.c - `refray conform` against fake renderers
  * (the scripts in tests/conform/fake/) that crash, hang, exit non-zero, write nothing,
- * garbage, the wrong size or NaN, and that are right (a copy of the exact
+ * garbage, a FIFO, the wrong size or NaN, and that are right (a copy of the exact
  * image; refray itself; a picture rendered twice as large and four times
  * as bright, taken back by --downsample and --scale); each with its verdict
  * and exit code, the reports, the command-line errors, and the expansion
@@ -109,6 +109,17 @@ START_TEST(test_conform_garbage)
     cli_run *r = malloc(sizeof *r);
     conform(r, fake(cmd, sizeof cmd, "garbage"), NULL, NULL);
     expect(r, 1, "unreadable", "not a PFM file");
+    free(r);
+}
+END_TEST
+
+/* A FIFO at {out} would block a reader for ever: it is refused unread. */
+START_TEST(test_conform_fifo)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "fifo"), NULL, NULL);
+    expect(r, 1, "unreadable", "not a regular file");
     free(r);
 }
 END_TEST
@@ -429,6 +440,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_hang);
     tcase_add_test(tc, test_conform_garbage);
     tcase_add_test(tc, test_conform_wrong_size);
+    tcase_add_test(tc, test_conform_fifo);
     tcase_add_test(tc, test_conform_nothing);
     tcase_add_test(tc, test_conform_nonzero_exit);
     tcase_add_test(tc, test_conform_nan);

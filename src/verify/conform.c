@@ -201,6 +201,11 @@ static int read_picture(const char *out_path, const manifest_scene *s, rf_image 
         set(r, CONFORM_NO_OUTPUT, "the renderer exited 0 but wrote nothing at {out}");
         return -1;
     }
+    /* A FIFO would block the read for ever, a device never end. */
+    if (!S_ISREG(sb.st_mode)) {
+        set(r, CONFORM_UNREADABLE, "{out} is not a regular file");
+        return -1;
+    }
     rf_image raw;
     int status = img_read(out_path, &raw, err, sizeof err);
     if (status != IMG_OK) {

@@ -288,8 +288,10 @@ static int empty_dir(const char *dir)
 static int replaceable(const char *dir, char *why, size_t why_size)
 {
     struct stat sb;
-    if (stat(dir, &sb) != 0)
+    if (stat(dir, &sb) != 0) {
+        snprintf(why, why_size, "cannot use '%s': %s", dir, strerror(errno));
         return errno == ENOENT;
+    }
     char *manifest_path = path_of(dir, "manifest", ".json");
     int kit = manifest_path && access(manifest_path, F_OK) == 0;
     free(manifest_path);
