@@ -8,6 +8,7 @@
 #ifndef REFRAY_CLI_TESTLIB_H
 #define REFRAY_CLI_TESTLIB_H
 
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -95,6 +96,19 @@ static inline const char *cli_path(char *out, size_t size, const char *dir, cons
     out[n] = '/';
     memcpy(out + n + 1, name, m + 1);
     return out;
+}
+
+/* The entries of directory dir, "." and ".." left out; -1 if unreadable. */
+static inline int cli_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d)
+        return -1;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
 }
 
 static inline int cli_exists(const char *path)
