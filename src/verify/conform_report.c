@@ -181,7 +181,9 @@ static void junit_case(FILE *fp, const conform_result *r)
         fputs("/>\n", fp);
         return;
     }
-    fputs(">\n      <failure type=\"", fp);
+    /* JUnit's "error" is the harness's own trouble, a "failure" the tested thing's. */
+    const char *tag = r->outcome == CONFORM_ERROR ? "error" : "failure";
+    fprintf(fp, ">\n      <%s type=\"", tag);
     xml(fp, conform_outcome_name(r->outcome));
     fputs("\" message=\"", fp);
     xml(fp, conform_short_reason(r, reason, sizeof reason));
@@ -190,7 +192,7 @@ static void junit_case(FILE *fp, const conform_result *r)
     if (r->compared)
         fprintf(fp, "\nmax abs %.6g, RMS %.6g, max rel %.6g", r->metrics.max_abs, r->metrics.rms,
                 r->metrics.max_rel);
-    fputs("</failure>\n", fp);
+    fprintf(fp, "</%s>\n", tag);
     if (show_stderr(r)) {
         fputs("      <system-err>", fp);
         xml(fp, r->stderr_tail);
@@ -201,12 +203,15 @@ static void junit_case(FILE *fp, const conform_result *r)
 
 int conform_junit_write(FILE *fp, const conform_report *rep)
 {
-    int failed = rep->count - conform_passed(rep);
+    int errors = 0;
+    for (int i = 0; i < rep->count; i++)
+        errors += rep->results[i].outcome == CONFORM_ERROR;
+    int failed = rep->count - conform_passed(rep) - errors;
     fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", fp);
-    fprintf(fp, "<testsuites name=\"refray conform\" tests=\"%d\" failures=\"%d\" errors=\"0\" time=\"%.3f\">\n",
-            rep->count, failed, rep->seconds);
-    fprintf(fp, "  <testsuite name=\"refray conform\" tests=\"%d\" failures=\"%d\" errors=\"0\" skipped=\"0\" "
-            "time=\"%.3f\">\n", rep->count, failed, rep->seconds);
+    fprintf(fp, "<testsuites name=\"refray conform\" tests=\"%d\" failures=\"%d\" errors=\"%d\" time=\"%.3f\">\n",
+            rep->count, failed, errors, rep->seconds);
+    fprintf(fp, "  <testsuite name=\"refray conform\" tests=\"%d\" failures=\"%d\" errors=\"%d\" skipped=\"0\" "
+            "time=\"%.3f\">\n", rep->count, failed, errors, rep->seconds);
     fputs("    <properties>\n      <property name=\"kit\" value=\"", fp);
     xml(fp, rep->kit_dir);
     fputs("\"/>\n      <property name=\"command\" value=\"", fp);
