@@ -310,8 +310,11 @@ START_TEST(test_conform_usage_errors)
     const char *timeout[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--timeout", "-1", NULL};
     const char *both[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--json", "--tap", NULL};
     const char *format[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--format", "tiff", NULL};
-    const char *const *usage[] = {no_cmd, no_out, unknown, timeout, both, format};
-    for (int i = 0; i < 6; i++) {
+    /* More names than arguments: the list must not overrun (ASan watches). */
+    const char *many[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", "x {out}", "--only",
+                          "disk_light,a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t,u,v,w,x,y,z", NULL};
+    const char *const *usage[] = {no_cmd, no_out, unknown, timeout, both, format, many};
+    for (int i = 0; i < 7; i++) {
         cli_refray(r, usage[i]);
         ck_assert_msg(r->code == 64, "case %d: exit %d, stderr %s", i, r->code, r->err);
     }

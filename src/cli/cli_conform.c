@@ -74,9 +74,10 @@ static int only_value(conform_args *a, int argc, char **argv, int *i)
         for (char *name = strtok(list, ","); name; name = strtok(NULL, ","))
             a->only[a->only_count++] = name;
     }
-    if (a->only_count == start)
-        return cli_usage_error("--only needs at least one scene name"), 0;
-    return 1;
+    if (a->only_count > start)
+        return 1;
+    cli_usage_error("--only needs at least one scene name");
+    return 0;
 }
 
 /* 1 consumed, 0 error reported, -1 not an option of conform. */
@@ -107,9 +108,10 @@ static int conform_option(conform_args *a, int argc, char **argv, int *i)
         return -1;
     if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->timeout))
         return 0;
-    if (!(a->timeout > 0) || a->timeout > 1e6)
-        return cli_usage_error("--timeout takes seconds, more than 0 and at most 1e6, not '%s'", v), 0;
-    return 1;
+    if (a->timeout > 0 && a->timeout <= 1e6)
+        return 1;
+    cli_usage_error("--timeout takes seconds, more than 0 and at most 1e6, not '%s'", v);
+    return 0;
 }
 
 /* The format's extension, checked against this build. */
@@ -320,7 +322,12 @@ int cli_conform(int argc, char **argv)
     a.timeout = 60;
     a.adjust.downsample = 1;
     a.adjust.scale = 1;
-    a.only = calloc((size_t)argc + 1, sizeof *a.only);
+    /* --only's names: at most one per argument and comma. */
+    size_t names = (size_t)argc + 1;
+    for (int i = 0; i < argc; i++)
+        for (const char *p = argv[i]; *p; p++)
+            names += *p == ',';
+    a.only = calloc(names, sizeof *a.only);
     if (!a.only)
         return REFRAY_EXIT_SOFTWARE;
     int status = parse_args(&a, argc, argv);

@@ -127,7 +127,10 @@ static json_t *text(const char *s)
 {
     size_t n = strlen(s);
     char *clean = malloc(n + 1);
-    json_t *v = clean ? (text_clean(s, n, clean, n + 1), json_string(clean)) : NULL;
+    if (!clean)
+        return NULL;
+    text_clean(s, n, clean, n + 1);
+    json_t *v = json_string(clean);
     free(clean);
     return v;
 }
@@ -156,7 +159,7 @@ static json_t *comparison_json(writer *w)
                     "pixel, skipping the pixels the mask marks (255); a channel c fails when |OUT_c - EXACT_c| > "
                     "relative * |EXACT_c| + absolute (a NaN or infinity fails); the scene passes when no channel "
                     "of a compared pixel fails and at least one pixel is compared"));
-    put(w, o, "relative", json_string("1e-4 (MANIFEST_REL_DETERMINISTIC) for deterministic families; for "
+    put(w, o, "relative", json_string("1e-4 for deterministic families; for "
                                       "sampled families (distributed lights) the family's own bound at the "
                                       "scene's light samples, at least 1e-4"));
     put(w, o, "absolute", json_string("one step of a 16-bit PNG written at the scene's png16_scale: "
