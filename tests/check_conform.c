@@ -139,7 +139,7 @@ START_TEST(test_conform_nothing)
     char cmd[512];
     cli_run *r = malloc(sizeof *r);
     conform(r, fake(cmd, sizeof cmd, "nothing"), NULL, NULL);
-    expect(r, 1, "no_output", "wrote nothing");
+    expect(r, 1, "no_output", "wrote nothing at {out} (its directory holds: elsewhere.pfm)");
     free(r);
 }
 END_TEST

@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 #include "base/fileio.h"
 #include "base/suggest.h"
@@ -234,13 +233,6 @@ static int write_reports(const conform_args *a, const conform_report *rep)
     return 0;
 }
 
-static double wall_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* Runs the scenes, streaming the table or TAP; returns how many ran. */
 static int run_all(const conform_args *a, const conform_run *run, const manifest_scene **scenes, int count,
                    conform_result *results)
@@ -292,10 +284,13 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
     const char *tmp = getenv("TMPDIR");
     conform_run run = {kit_dir, a->cmd, a->format, a->adjust, a->timeout, a->keep,
                        tmp && tmp[0] == '/' ? tmp : "/tmp", &stop_requested};
-    double start = wall_now();
+    double start = render_clock();
     int ran = status == 0 ? run_all(a, &run, scenes, count, results) : 0;
-    conform_report rep = {kit_dir, a->cmd, results, ran, wall_now() - start};
-    if (status == 0 && stop_requested) {
+    conform_report rep = {kit_dir, a->cmd, results, ran, render_clock() - start};
+    if (status == 0 && count == 0) {
+        fprintf(stderr, "refray: error: conform: the kit has no scenes: nothing was checked\n");
+        status = REFRAY_EXIT_FAIL;
+    } else if (status == 0 && stop_requested) {
         fprintf(stderr, "refray: conform: stopped after %d of %d scenes; no report written\n", ran, count);
         status = REFRAY_EXIT_INTERRUPTED;
     } else if (status == 0) {

@@ -4,6 +4,7 @@
  * directory it runs in (run/), where {out} points; it is removed after
  * the scene unless kept.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -192,13 +193,39 @@ static int read_exact(const char *kit_dir, const manifest_scene *s, rf_image *ex
     return -1;
 }
 
+/* Up to 6 names of what the renderer left beside {out}, for the reason
+ * when {out} is not there (an extension added, another name chosen). */
+static void left_beside(const char *out_path, char *buf, size_t size)
+{
+    char *dir = file_dirname(out_path);
+    DIR *d = dir ? opendir(dir) : NULL;
+    struct dirent *e;
+    size_t used = 0;
+    int shown = 0;
+    buf[0] = '\0';
+    while (d && (e = readdir(d)) != NULL && used + 1 < size) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        int n = snprintf(buf + used, size - used, "%s%s", shown ? ", " : "", shown < 6 ? e->d_name : "...");
+        used += n > 0 ? (size_t)n : 0;
+        if (++shown > 6)
+            break;
+    }
+    if (d)
+        closedir(d);
+    free(dir);
+}
+
 /* Reads the picture and brings it to the exact image's size and units. */
 static int read_picture(const char *out_path, const manifest_scene *s, rf_image *img, conform_result *r)
 {
     char err[600];
     struct stat sb;
     if (stat(out_path, &sb) != 0) {
-        set(r, CONFORM_NO_OUTPUT, "the renderer exited 0 but wrote nothing at {out}");
+        char beside[200];
+        left_beside(out_path, beside, sizeof beside);
+        set(r, CONFORM_NO_OUTPUT, "the renderer exited 0 but wrote nothing at {out}%s%s%s", beside[0] ? " (its "
+            "directory holds: " : "", beside, beside[0] ? ")" : "");
         return -1;
     }
     /* A FIFO would block the read for ever, a device never end. */
