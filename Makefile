@@ -184,6 +184,7 @@ KIT_SCENES  ?= $(sort $(wildcard scenes/analytic/*.scene))
 
 kit: $(REFRAY)
 	$(Q)$(REFRAY) kit -q -o $(KIT_DIR) $(KIT_SCENES)
+	$(Q)cp tests/conform/kit_check.c $(KIT_DIR)/kit_check.c
 	$(Q)tar -C $(dir $(KIT_DIR)) --sort=name --mtime=@0 --owner=0 --group=0 --numeric-owner \
 	  --transform 's,^kit,refray-kit-$(VERSION),' -cf - kit | gzip -n -9 > $(KIT_TARBALL).tmp && \
 	  mv $(KIT_TARBALL).tmp $(KIT_TARBALL)
@@ -235,9 +236,17 @@ VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --l
                 --trace-children=yes)
 TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
 
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
-	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+# The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
+# needs no library, built here only to be tested against `refray compare`.
+KIT_CHECK := $(BUILD)/kit_check
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
+	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
+
+$(KIT_CHECK): tests/conform/kit_check.c
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"

@@ -58,7 +58,9 @@ static const char *const readme_head[] = {
     "one step of a 16-bit PNG at the scene's scale, 1 / (65535 png16_scale).  Report max |OUT -\n"
     "EXACT|, the RMS over all compared channels and the largest |OUT - EXACT| / |EXACT| to see how\n"
     "close you are.  Sampled scenes (`sampled` true) converge as `expected_order` says when your\n"
-    "renderer takes more light samples.\n"
+    "renderer takes more light samples.  The same rule as one C99 file without any library (PFM\n"
+    "and PGM only): `kit_check.c` in the tarball of `make kit`, or tests/conform/kit_check.c in the\n"
+    "refray sources.\n"
     "\n",
     "## Checking with refray\n"
     "\n"
