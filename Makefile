@@ -128,7 +128,11 @@ RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' incl
 RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
 LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
 PUBLIC_LAYERS := base image lang scene render io api
-PUBLIC_OBJS := $(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS))) $(BUILD)/obj/gen/%,$(LIB_OBJS))
+# The io layer's process runner and file writer serve `refray kit` and
+# `refray conform` only: a host's library neither starts processes nor
+# removes directories.
+PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o
+PUBLIC_OBJS := $(filter-out $(PUBLIC_OMIT),$(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS)))                  $(BUILD)/obj/gen/%,$(LIB_OBJS)))
 PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
 PUBLIC_LIBS := $(PUBLIC_A) $(PUBLIC_SO)
@@ -139,6 +143,8 @@ $(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
 FLAGS_STAMP := $(BUILD)/obj/flags
 FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
+# The public library needs no jansson (only the kit's manifests use it).
+PUBLIC_LINK_LIBS = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev) \
@@ -147,7 +153,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -238,21 +244,35 @@ $(REFRAY_LD): FORCE
 	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
 	$(Q)cp $(BUILD)/ld/refray $@
 
-# POV-Ray checked by refray's oracle (spec/crosscheck.md): installs povray
-# when missing, exports, renders and measures every analytic scene, and
-# prints the table (also in $(BUILD)/crosscheck/table.md).
-# CROSSCHECK_UPDATE=1 writes the table into spec/crosscheck.md.
-POVCHECK := $(BUILD)/povcheck
-CROSSCHECK_SCENES ?= $(sort $(wildcard scenes/analytic/*.scene))
-CROSSCHECK_UPDATE ?= 0
+# The conformance kit (spec/conformance.md): every analytic scene with its
+# exact image, mask, .scene and .pov (and .json), one manifest.json and a
+# README.md, in build/kit/ and as build/refray-kit-VERSION.tar.gz (its top
+# directory refray-kit-VERSION/; the archive is the same bytes for the same
+# kit).  KIT_SCENES=... for fewer scenes.
+KIT_DIR     := build/kit
+KIT_TARBALL  = build/refray-kit-$(RF_VERSION).tar.gz
+KIT_SCENES  ?= $(sort $(wildcard scenes/analytic/*.scene))
 
-crosscheck: $(REFRAY) $(POVCHECK)
-	$(Q)REFRAY=$(REFRAY) POVCHECK=$(POVCHECK) OUT=$(BUILD)/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
-	  sh tests/crosscheck.sh $(CROSSCHECK_SCENES)
+kit: $(REFRAY)
+	$(Q)$(REFRAY) kit -q -o $(KIT_DIR) $(KIT_SCENES)
+	$(Q)cp tests/conform/kit_check.c $(KIT_DIR)/kit_check.c
+	$(Q)tar -C $(dir $(KIT_DIR)) --sort=name --mtime=@0 --owner=0 --group=0 --numeric-owner \
+	  --transform 's,^kit,refray-kit-$(RF_VERSION),' -cf - kit | gzip -n -9 > $(KIT_TARBALL).tmp && \
+	  mv $(KIT_TARBALL).tmp $(KIT_TARBALL)
+	@echo "kit: $(KIT_DIR)/ and $(KIT_TARBALL)"
 
-$(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
-	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+# Other renderers measured by the oracle through the kit (spec/crosscheck.md,
+# tests/crosscheck.sh): installs POV-Ray (Debian povray) when missing, builds
+# the kit, runs `refray conform` with each renderer's command line, prints
+# the tables and writes them into spec/crosscheck.md (CROSSCHECK_UPDATE=0:
+# print only); every file of the run is kept in build/crosscheck/.
+# CROSSCHECK_ONLY="NAME ..." runs only those scenes.
+CROSSCHECK_UPDATE ?= 1
+CROSSCHECK_ONLY ?=
+
+crosscheck: kit
+	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
+	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
 
 # Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
 # `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
@@ -288,8 +308,11 @@ VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --l
 # The 32-bit build runs the heaviest cases about 2.5 times slower.
 TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$(if $(filter 1,$(M32)),4,1)))
 
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
-	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+# The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
+# needs no library, built here only to be tested against `refray compare`.
+KIT_CHECK := $(BUILD)/kit_check
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
+	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
 	$(Q)$(MAKE) --no-print-directory embed
 
@@ -306,6 +329,11 @@ embed: all
 	$(Q)CC="$(CC)" EXTRA="$(EMBED_FLAGS)" PKG_CONFIG_PATH="$(STAGE_PREFIX)/lib/pkgconfig$(if $(PKG_CONFIG_PATH),:$(PKG_CONFIG_PATH))" \
 	  LIBDIR=$(STAGE_PREFIX)/lib OUT=$(BUILD)/embed IMAGE_EXT=$(if $(filter 1,$(PNG)),png,pfm) sh tests/embed/run.sh
 	$(Q)CC="$(CC) $(EMBED_FLAGS)" DATA_CHECK=$(if $(filter 1,$(SANITIZE)),0,1) sh tests/check_symbols.sh $(STAGE_PREFIX)/lib $(RF_ABI) $(CORE_OBJS)
+
+$(KIT_CHECK): tests/conform/kit_check.c
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
@@ -343,7 +371,7 @@ $(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
 	@mkdir -p $(dir $@)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -shared -Wl,-soname,librefray.so.$(RF_ABI) \
-	  -Wl,--version-script=src/api/librefray.map -o $@ $(PUBLIC_OBJS) $(ALL_LIBS)
+	  -Wl,--version-script=src/api/librefray.map -o $@ $(PUBLIC_OBJS) $(PUBLIC_LINK_LIBS)
 	$(Q)ln -sf librefray.so.$(RF_VERSION) $(BUILD)/lib/librefray.so.$(RF_ABI)
 	$(Q)ln -sf librefray.so.$(RF_ABI) $(BUILD)/lib/librefray.so
 
@@ -351,7 +379,7 @@ $(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
 # build's optional libraries as private dependencies.  An optional library
 # with a pkg-config module adds it to PC_REQUIRES_PRIVATE, one without
 # adds its flags to PC_LIBS_PRIVATE.
-PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng) $(if $(filter 1,$(JSON)),jansson)
+PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng)
 PC_LIBS_PRIVATE     := $(EXR_LIBS) $(LDLIBS)
 $(BUILD)/refray.pc: src/api/refray.pc.in include/refray.h Makefile
 	@mkdir -p $(dir $@)
@@ -387,6 +415,7 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 # the command line (the fuzz build) does not drop them.
 $(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
 $(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
+$(BUILD)/obj/src/verify/manifest.o $(BUILD)/obj/src/verify/conform_report.o: OBJ_CFLAGS += $(JSON_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h

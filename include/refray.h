@@ -117,7 +117,8 @@ typedef enum rf_severity {
 /* One message about the scene.  Its pointers are valid during the
  * callback only.  A message that refers to a file that was included is
  * followed by one note "included from here" per include, outermost last
- * (those notes have no source_line). */
+ * ("in the mesh read here" for an OBJ file read by a mesh; those notes have
+ * no source_line). */
 typedef struct rf_diagnostic {
     rf_severity severity;
     const char *file;            /* the file's name; NULL: no location */
@@ -235,7 +236,7 @@ typedef struct rf_scene_info {
     int samples;            /* k of the k x k camera rays per pixel */
     int max_depth;
     int primitives;         /* every primitive, mesh triangles included */
-    int spheres, planes, triangles, disks, boxes; /* outside meshes */
+    int spheres, planes, triangles, disks, boxes, cylinders, cones, tori; /* outside meshes */
     int meshes, mesh_triangles;
     int lights;             /* point, distant and distributed (not ambient) */
     int materials;

@@ -323,6 +323,32 @@ START_TEST(test_api_scene_info)
 }
 END_TEST
 
+/* [EMBED-API-5] Every kind of primitive is counted, cylinders, cones and
+ * tori too (counted by hand from the text: 1, 2 and 3 of them, 1 sphere). */
+START_TEST(test_api_scene_info_quadrics)
+{
+    static const char text[] =
+        "sphere { center [0, 0, -9] }\n"
+        "cylinder { from [0, 0, -5] to [0, 1, -5] radius 0.5 }\n"
+        "cone { from [1, 0, -5] to [1, 1, -5] radii 0.5 0 }\n"
+        "cone { from [2, 0, -5] to [2, 1, -5] radii 0.5 0.2 }\n"
+        "torus { center [0, 0, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
+        "torus { center [0, 2, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
+        "torus { center [0, 4, -6] axis [1, 0, 0] major 1 minor 0.2 }\n";
+    rf_scene *s;
+    ck_assert_int_eq(rf_scene_load_memory("q.scene", text, strlen(text), NULL, &s), RF_OK);
+    rf_scene_info i;
+    rf_scene_get_info(s, &i);
+    ck_assert_int_eq(i.primitives, 7);
+    ck_assert_int_eq(i.spheres, 1);
+    ck_assert_int_eq(i.cylinders, 1);
+    ck_assert_int_eq(i.cones, 2);
+    ck_assert_int_eq(i.tori, 3);
+    ck_assert_int_eq(i.planes + i.triangles + i.disks + i.boxes + i.meshes, 0);
+    rf_scene_free(s);
+}
+END_TEST
+
 /* A bump allocator over a fixed buffer, as an embedding host would write
  * one: no header, sized releases ignored except for the last block. */
 typedef struct bump {
@@ -475,6 +501,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_diagnostics_and_resolver);
     tcase_add_test(tc, test_api_diagnostic_print);
     tcase_add_test(tc, test_api_scene_info);
+    tcase_add_test(tc, test_api_scene_info_quadrics);
     tcase_add_test(tc, test_api_fixed_arena);
     tcase_add_test(tc, test_api_counting_allocator);
     tcase_add_test(tc, test_api_image_write);

@@ -18,7 +18,7 @@
 
 /* The allowed order, lowest first: written here and nowhere else. */
 static const char *const LAYER_ORDER[] = {
-    "base", "image", "lang", "scene", "render", "oracle", "export", "verify", "io", "api", "cli", NULL
+    "base", "image", "lang", "scene", "render", "io", "oracle", "export", "verify", "api", "cli", NULL
 };
 
 static const char *const GENERATED[] = {"scene.tab.h", "scene.lex.h", "oracle_list.h", NULL};

@@ -122,10 +122,14 @@ static unsigned features(const scene_features *f)
            (f->sampled_lights ? RF_FEATURE_SAMPLED_LIGHTS : 0u) | (f->meshes ? RF_FEATURE_MESHES : 0u);
 }
 
+/* rf_scene_info counts every kind of primitive: a new kind needs a field. */
+typedef char every_kind[PRIM_KINDS == 8 ? 1 : -1];
+
 void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 {
     const scene_model *s = api_scene(scene);
-    int *kinds[] = {&info->spheres, &info->planes, &info->triangles, &info->disks, &info->boxes};
+    int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes, &info->triangles, &info->disks,
+                              &info->boxes,   &info->cylinders, &info->cones, &info->tori};
     memset(info, 0, sizeof *info);
     info->width = s->image.width;
     info->height = s->image.height;

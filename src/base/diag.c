@@ -45,15 +45,16 @@ static void emit(const diag *d, diag_level level, const source_file *f, size_t o
     d->sink(d->sink_user, &r);
 }
 
-/* One "included from here" note per include that led to f. */
+/* One note per file that read the next: an OBJ file is read by a mesh,
+ * a scene file by an include. */
 static void emit_include_chain(const diag *d, const source_file *f)
 {
     const source_set *set = d->sources;
-    src_span from = f->included_from;
-    while (from.file >= 0 && from.file < set->count) {
-        const source_file *parent = set->files[from.file];
-        emit(d, DIAG_NOTE, parent, from.begin, "included from here", 0, 0);
-        from = parent->included_from;
+    while (f->included_from.file >= 0 && f->included_from.file < set->count) {
+        const source_file *parent = set->files[f->included_from.file];
+        emit(d, DIAG_NOTE, parent, f->included_from.begin,
+             f->is_mesh ? "in the mesh read here" : "included from here", 0, 0);
+        f = parent;
     }
 }
 

@@ -46,7 +46,8 @@ void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_us
 /*
  * Counts one diagnostic and, unless it is over max_errors or a switched-off
  * warning, delivers it: the record itself, then for a file that was
- * included one "included from here" note per include (outermost last), and
+ * included one note per file that read the next, outermost last ("included
+ * from here"; "in the mesh read here" for an OBJ file read by a mesh), and
  * once the error limit is reached, a "too many errors (N), stopping" note
  * without location.  A span with file -1 gives a record without location.
  */

@@ -10,6 +10,7 @@
 #include "refray.h"
 #include "render/render.h"
 #include "scene/scene.h"
+#include "verify/conform.h"
 #include "verify/verify.h"
 
 /* Options every scene-reading command accepts: the input limits and
@@ -75,5 +76,9 @@ int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, in
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
  * checked by the loader, so only an override can exceed it. */
 int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size);
+
+/* --downsample K|manifest and --scale S|manifest (conform, compare) into
+ * a; 1 consumed, 0 error reported, -1 not one of them. */
+int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i);
 
 #endif

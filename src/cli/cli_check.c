@@ -32,14 +32,15 @@ static void print_features(unsigned features)
 
 static void print_summary(const char *path, const rf_scene *scene)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
-    static const char *const plural[] = {"spheres", "planes", "triangles", "disks", "boxes"};
+    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box", "cylinder", "cone", "torus"};
+    static const char *const plural[] = {"spheres", "planes", "triangles", "disks",
+                                         "boxes",   "cylinders", "cones", "tori"};
     rf_scene_info s;
     rf_scene_get_info(scene, &s);
-    int counts[5] = {s.spheres, s.planes, s.triangles, s.disks, s.boxes};
+    int counts[] = {s.spheres, s.planes, s.triangles, s.disks, s.boxes, s.cylinders, s.cones, s.tori};
     printf("%s: ok: %d primitive%s (", path, s.primitives, s.primitives == 1 ? "" : "s");
     int listed = 0;
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < (int)(sizeof counts / sizeof counts[0]); k++)
         if (counts[k])
             printf("%s%d %s", listed++ ? ", " : "", counts[k], counts[k] == 1 ? kinds[k] : plural[k]);
     if (s.meshes)

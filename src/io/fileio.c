@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "io/fileio.h"
 #include "base/status.h"
 
@@ -82,4 +83,12 @@ char *file_join(const mem *m, const char *dir, const char *rel)
     if (out)
         snprintf(out, n + 1, "%s%s%s", dir, sep, rel);
     return out;
+}
+
+char *file_absolute(const mem *m, const char *path)
+{
+    if (path[0] == '/')
+        return file_join(m, "/", path);
+    char cwd[4096];
+    return getcwd(cwd, sizeof cwd) ? file_join(m, cwd, path) : NULL;
 }

@@ -1,6 +1,7 @@
 /*
  * fileio.h - reading a whole input file with a size limit, and the one
- * place that maps the reasons a read fails to statuses and messages.
+ * place that maps the reasons a read fails to statuses and messages; file
+ * names joined and made absolute.  (Writing: io/filewrite.h.)
  */
 #ifndef REFRAY_FILEIO_H
 #define REFRAY_FILEIO_H
@@ -24,5 +25,10 @@ char *file_dirname(const mem *m, const char *path);
 
 /* dir + "/" + rel unless rel is absolute or dir is ".", a string from m. */
 char *file_join(const mem *m, const char *dir, const char *rel);
+
+/* path made absolute against the working directory (not resolved:
+ * "." and ".." parts and links stay), a string from m; NULL when out of
+ * memory or the working directory is unknown. */
+char *file_absolute(const mem *m, const char *path);
 
 #endif

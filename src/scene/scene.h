@@ -38,8 +38,13 @@ typedef enum scene_prim_kind {
     PRIM_PLANE,
     PRIM_TRIANGLE,     /* a `triangle` statement or one triangle of a mesh */
     PRIM_DISK,
-    PRIM_BOX
+    PRIM_BOX,
+    PRIM_CYLINDER,     /* closed (a solid) or open (a sheet, like a plane) */
+    PRIM_CONE,         /* the same, truncated or with an apex */
+    PRIM_TORUS         /* a ring torus: a solid */
 } scene_prim_kind;
+
+enum { PRIM_KINDS = PRIM_TORUS + 1 };
 
 typedef struct scene_prim {
     scene_prim_kind kind;
@@ -55,10 +60,18 @@ typedef struct scene_prim {
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
         struct { vec3 lo; vec3 hi; } box;
+        /* from != to; radius > 0; open: no end caps */
+        struct { vec3 from, to; double radius; int open; } cylinder;
+        /* radius[0] at from, radius[1] at to, both >= 0, not both 0 */
+        struct { vec3 from, to; double radius[2]; int open; } cone;
+        /* axis unit; 0 < minor < major: the tube of radius minor around
+         * the circle of radius major about center, normal to axis */
+        struct { vec3 center, axis; double major, minor; } torus;
     } u;
     /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles and planes always; spheres and
-     * disks under similarities; boxes under translate and axis scale).
+     * to the same kind of shape (triangles and planes always; spheres,
+     * disks, cylinders, cones and tori under similarities; boxes under
+     * translate and axis scale).
      * Otherwise the parameters are in the local frame and these are set. */
     int has_xform;
     xform to_world;
@@ -214,6 +227,22 @@ void scene_load_opts_init(scene_load_opts *o);
 scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status);
 
 void scene_free(scene_model *scene);
+
+/* Whether p is a closed solid on its own: a sphere, a box, a closed
+ * cylinder or cone, a torus (mesh triangles are solid only as a mesh). */
+int scene_prim_is_solid(const scene_prim *p);
+
+/* Whether point lies strictly inside the solid p (in p's own frame when it
+ * keeps one); 0 for anything that is not a solid on its own. */
+int scene_prim_contains(const scene_prim *p, vec3 point);
+
+/* Whether p can shadow itself where N.L > 0: a torus, an open cylinder or
+ * cone (convex solids and flat sheets cannot). */
+int scene_prim_self_shadows(const scene_prim *p);
+
+/* The block word of a primitive kind ("sphere", ..., "torus"), and its plural. */
+const char *scene_prim_name(scene_prim_kind kind);
+const char *scene_prim_plural(scene_prim_kind kind);
 
 
 #endif
