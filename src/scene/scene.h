@@ -10,7 +10,7 @@
  * The scene owns all its memory, taken from the allocator it was loaded
  * with (kept in scene.mem); scene_free releases it in one call.  Loading
  * reads no file itself: the text comes from the caller and every `include`
- * and `mesh` file from the caller's resolver (io/load.h reads files).
+ * and `mesh` file from the caller's resolver (io/scene_file.h reads files).
  */
 #ifndef REFRAY_SCENE_H
 #define REFRAY_SCENE_H
@@ -197,7 +197,7 @@ typedef struct scene_source {
  * with a one-line reason in why (reported as an error at the statement;
  * STATUS_NO_MEMORY ends the load as out of memory).  The loader copies the
  * text and names, then calls release (when not NULL) with the same *out.
- * The resolver enforces its own limits (io/load.c: --max-file-size).
+ * The resolver enforces its own limits (io/scene_file.c: --max-file-size).
  */
 typedef struct scene_resolver {
     int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,
