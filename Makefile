@@ -8,8 +8,9 @@
 #   JSON=0          build without jansson (no JSON scenes, kit manifests)
 #   SANITIZE=1      -fsanitize=address,undefined (own build directory)
 #   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
-#                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
-#                   for `refray stability`, spec/numerics.md)
+#                   `make` copies that refray to $(BUILD)/refray-ld for
+#                   `refray stability`, spec/numerics.md, and `make install`
+#                   installs it as $(PREFIX)/libexec/refray/refray-ld)
 #   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
 #                   make deps installs); implies EXR=0 (see below)
 #   CC=clang        clang instead of gcc (make deps installs it)
@@ -118,6 +119,7 @@ DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
 TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
 
 REFRAY   := $(BUILD)/refray
+REFRAY_LD := $(BUILD)/refray-ld
 # The program and the tests link the internal archive (every symbol); a
 # host links the public library, which exports rf_ symbols only.
 LIBRARY  := $(BUILD)/librefray-internal.a
@@ -156,7 +158,7 @@ endif
 .PHONY: all deps check test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
-all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
+all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
 
 # Installs only what is missing; as root with apt-get, otherwise with sudo.
 deps:
@@ -237,8 +239,9 @@ $(PRECISION): $(BUILD)/obj/tests/precision/precision.o $(LIBRARY)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS) -lquadmath
 
 # The long double twin of refray for `refray stability` (spec/numerics.md),
-# built by a recursive make in its own directory and copied next to refray.
-REFRAY_LD := $(BUILD)/refray-ld
+# built by a recursive make in its own directory and copied next to refray;
+# part of `all` and of `make install`, so `refray verify --stability`
+# works after a plain `make` and after an install.
 refray-ld: $(REFRAY_LD)
 $(REFRAY_LD): FORCE
 	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
@@ -453,8 +456,10 @@ FORCE:
 
 # The public header alone, both libraries and refray.pc (in lib/pkgconfig).
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include \
+	  $(DESTDIR)$(PREFIX)/libexec/refray
 	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
+	install -m 755 $(REFRAY_LD) $(DESTDIR)$(PREFIX)/libexec/refray/refray-ld
 	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
 	install -m 644 $(PUBLIC_A) $(DESTDIR)$(PREFIX)/lib/librefray.a
 	install -m 755 $(PUBLIC_SO) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_VERSION)
@@ -463,7 +468,7 @@ install: all
 	install -m 644 $(BUILD)/refray.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/include/refray.h \
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/libexec/refray/refray-ld $(DESTDIR)$(PREFIX)/include/refray.h \
 	  $(DESTDIR)$(PREFIX)/lib/librefray.a $(DESTDIR)$(PREFIX)/lib/librefray.so* \
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 

@@ -97,7 +97,9 @@ RF_API const char *rf_status_string(rf_status status);
  *   - release(user, p, size): frees p; size is exactly the size p was last
  *     allocated or resized to, so a fixed arena or a counter needs no
  *     header of its own.
- * Image files (libpng, OpenEXR) allocate with the C library's allocator.
+ * Image files: the pixel planes of an EXR, and the whole file when it goes
+ * to a stream that cannot seek, come from the image's allocator; libpng
+ * and OpenEXR themselves allocate with the C library's.
  */
 typedef struct rf_allocator {
     void *(*alloc)(void *user, size_t size);
@@ -192,6 +194,12 @@ typedef struct rf_load_options {
     rf_resolver resolver;         /* for rf_scene_load_memory; fetch NULL: the
                                      scene may not include files or load meshes */
     const rf_allocator *allocator; /* NULL: the C library (copied by the load) */
+    /* Asked every few hundred steps of the load (tokens, statements, loop
+     * passes, OBJ lines, triangles), so that a stop takes effect within a
+     * fraction of a second; non-zero stops the load with RF_ERR_CANCELLED.
+     * NULL: never asked. */
+    int (*cancel)(void *user);
+    void *cancel_user;
 } rf_load_options;
 
 /* The default limits, warnings on, no callback, no resolver, malloc. */
@@ -203,7 +211,7 @@ typedef struct rf_scene rf_scene;
  * Loads the scene text[0..size) (no NUL needed), called name in messages,
  * with o (NULL: the defaults).  Reads no file: include and mesh files come
  * from o->resolver only.  Returns RF_OK with *out set, or RF_ERR_DATA (the
- * reasons went to o->diagnostic) or RF_ERR_NO_MEMORY.
+ * reasons went to o->diagnostic), RF_ERR_CANCELLED or RF_ERR_NO_MEMORY.
  */
 RF_API rf_status rf_scene_load_memory(const char *name, const char *text, size_t size,
                                       const rf_load_options *o, rf_scene **out);
@@ -257,8 +265,11 @@ typedef struct rf_render_options {
                                refused with RF_ERR_DATA; 0: no limit */
     /* Called after each row of a region (rows_total: the region's rows). */
     void (*progress)(void *user, int rows_done, int rows_total);
-    /* Asked before the first row and after every row (after progress);
-     * non-zero stops with RF_ERR_CANCELLED. */
+    /* Asked before the first row, after every row (after progress), and
+     * every few hundred rays or light samples within a row and steps of
+     * the acceleration structure's build, so that a stop takes effect
+     * within a fraction of a second however long one pixel takes;
+     * non-zero stops with RF_ERR_CANCELLED (spec/reliability.md). */
     int (*cancel)(void *user);
     void *user;             /* for progress and cancel */
 } rf_render_options;
@@ -288,8 +299,8 @@ typedef struct rf_renderer rf_renderer;
 
 /* Prepares scene for rendering with o (NULL: the scene's settings): builds
  * the acceleration structure, in memory from the scene's allocator.  The
- * scene must outlive the renderer.  RF_OK, RF_ERR_USAGE (bad options) or
- * RF_ERR_NO_MEMORY. */
+ * scene must outlive the renderer.  RF_OK, RF_ERR_USAGE (bad options),
+ * RF_ERR_CANCELLED (o->cancel) or RF_ERR_NO_MEMORY. */
 RF_API rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out);
 
 /* The size of the image the renderer renders. */
@@ -302,8 +313,10 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
  * (in floats) is at least 3 * (x1 - x0).  A pixel's value does not depend
  * on the region it is rendered in.  Allocates nothing.  Returns RF_OK;
  * RF_ERR_USAGE for a region outside the image, empty, or a short stride;
- * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays (the
- * pixel: rf_renderer_stats).  After a failure the region is partly written.
+ * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays, or a
+ * ray was inside glass nested deeper than the tracer follows (16 solids;
+ * medium_overflows > 0 then), at the pixel of rf_renderer_stats.  After a
+ * failure the region is partly written.
  */
 RF_API rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *rgb,
                                   size_t row_stride);
@@ -359,6 +372,11 @@ typedef struct rf_write_options {
     int linear;             /* PNG/PPM: 1 = linear codes, no sRGB curve */
     int png_bits;           /* 8 or 16 */
     int exr_float;          /* 1 = 32-bit float channels, 0 = half */
+    /* Asked as rows are encoded and before the file is put in place:
+     * non-zero stops the write with RF_ERR_CANCELLED, and nothing is left
+     * at the path.  NULL: never asked. */
+    int (*cancel)(void *user);
+    void *user;
 } rf_write_options;
 
 /* exposure 0, clamp, sRGB, 8-bit PNG, half EXR. */
@@ -372,16 +390,22 @@ typedef struct rf_write_stats {
 
 /*
  * Writes img to path in the format of its extension, atomically: nothing
- * at path changes unless the whole file was written.  o may be NULL (the
- * defaults), stats may be NULL.  Returns RF_OK; RF_ERR_USAGE for an
- * unknown extension, a format this build lacks or bad options; RF_ERR_IO;
- * RF_ERR_NO_MEMORY; with a one-line reason in message (may be NULL).
+ * at path changes unless the whole file was written (it goes to a
+ * temporary ".refray-tmp-PID-XXXXXX" beside it first).  Refused with
+ * RF_ERR_IO before anything is written: a path that is a symbolic link or
+ * not a regular file, a read-only file, another user's file, a name too
+ * long for the file system (spec/reliability.md).  The new file gets the
+ * old one's permission bits without setuid, setgid and sticky, or 0666
+ * less the umask.  o may be NULL (the defaults), stats may be NULL.
+ * Returns RF_OK; RF_ERR_USAGE for an unknown extension, a format this
+ * build lacks or bad options; RF_ERR_IO; RF_ERR_NO_MEMORY;
+ * RF_ERR_CANCELLED; with a one-line reason in message (may be NULL).
  */
 RF_API rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_options *o,
                                 rf_write_stats *stats, char *message, size_t message_size);
 
-/* The same encoding to an open stream (flushed, not closed; EXR needs a
- * seekable one). */
+/* The same encoding to an open stream (flushed, not closed; an EXR for a
+ * stream that cannot seek, such as a pipe, is built in memory first). */
 RF_API rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt,
                                        const rf_write_options *o, rf_write_stats *stats, char *message,
                                        size_t message_size);

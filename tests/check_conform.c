@@ -16,7 +16,7 @@
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "cli_testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/conform.h"
 
 static char kit_root[64];
@@ -218,7 +218,7 @@ START_TEST(test_conform_downsample_and_scale)
     snprintf(kit, sizeof kit, "%s/kit", kit_root);
     ck_assert_int_eq(kit_status, 0);
     cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
-    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(src, NULL, &e, err, sizeof err), 0);
     ck_assert_int_eq(img_create(&b, 2 * e.width, 2 * e.height), 0);
     for (int y = 0; y < b.height; y++)
         for (int x = 0; x < b.width; x++)
@@ -365,7 +365,7 @@ START_TEST(test_kit_check_agrees)
     ck_assert_int_eq(kit_status, 0);
     cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
     cli_path(mask, sizeof mask, kit, "scenes/plane_point_linear/plane_point_linear.mask.pgm");
-    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(src, NULL, &e, err, sizeof err), 0);
     for (int i = 0; i < 3 * e.width * e.height / 2; i++)
         e.rgb[i] *= 1 + 3e-4;
     ck_assert_int_eq(img_write(cli_path(img, sizeof img, kit_root, "bright.pfm"), &e, NULL, err, sizeof err), 0);

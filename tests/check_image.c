@@ -23,7 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 
 #ifndef REFRAY_HAVE_PNG
 #define REFRAY_HAVE_PNG 0
@@ -342,7 +342,7 @@ START_TEST(test_img_write_read_pfm_bit_exact)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "b.PFM");
     ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), 0);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(back.width, 5);
     ck_assert_int_eq(back.height, 4);
     for (int i = 0; i < 60; i++)
@@ -370,7 +370,7 @@ START_TEST(test_img_write_pfm_counts_nonfinite_and_clamped)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.nonfinite, 2);
     ck_assert_uint_eq(st.clamped, 2);
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), 0);
     ck_assert(back.rgb[0] == 0.0 && back.rgb[1] == 0.0);
     ck_assert(back.rgb[2] == FLT_MAX && back.rgb[3] == -FLT_MAX);
     ck_assert(back.rgb[4] == (double)(float)img.rgb[4]);
@@ -392,7 +392,7 @@ START_TEST(test_img_read_pfm_variants)
     /* 1x2 big-endian grey: bottom 2.0 (0x40000000), top -0.5 (0xBF000000) */
     static const unsigned char grey_be[] = "Pf\n# made by hand\n1 2\n1.0\n\x40\0\0\0\xBF\0\0\0";
     put_file(path, grey_be, sizeof grey_be - 1);
-    ck_assert_msg(img_read(path, &img, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(img.width, 1);
     ck_assert_int_eq(img.height, 2);
     for (int c = 0; c < 3; c++) {
@@ -402,15 +402,15 @@ START_TEST(test_img_read_pfm_variants)
     img_free(&img);
     static const unsigned char truncated[] = "PF\n2 2\n-1.0\n\0\0\x80\x3F";
     put_file(path, truncated, sizeof truncated - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
     ck_assert_ptr_null(img.rgb);
     put_file(path, "P6\n1 1\n255\n\0\0\0", sizeof "P6\n1 1\n255\n\0\0\0" - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n-3 2\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n100000 100000\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "too large") != NULL, "%s", err);
     tmpdir_remove(&d);
 }
@@ -461,7 +461,7 @@ START_TEST(test_img_write_read_ppm)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.nonfinite, 1);
     ck_assert_uint_eq(st.clamped, 0);
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), 0);
     img.rgb[7] = 0.0;
     for (int i = 0; i < 45; i++)
         ck_assert_near(back.rgb[i], srgb_dec(expected_code(img.rgb[i], &o, 255) / 255.0), 1e-12);
@@ -481,7 +481,7 @@ START_TEST(test_img_read_ppm_16bit)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "w.ppm");
     put_file(path, ppm, sizeof ppm - 1);
-    ck_assert_msg(img_read(path, &img, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "%s", err);
     ck_assert_near(img.rgb[0], 1.0, 1e-15);
     ck_assert_near(img.rgb[1], 0.0, 0.0);
     ck_assert_near(img.rgb[2], srgb_dec(32768 / 65535.0), 1e-15);
@@ -491,7 +491,7 @@ START_TEST(test_img_read_ppm_16bit)
     img_free(&img);
     static const unsigned char over[] = "P6 1 1 200\n\xC9\0\0";
     put_file(path, over, sizeof over - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     tmpdir_remove(&d);
 }
 END_TEST
@@ -589,7 +589,7 @@ START_TEST(test_img_write_read_png_8bit)
     for (int lin = 0; lin < 2; lin++) {
         o.linear_png = lin;
         ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         ck_assert_int_eq(back.width, 7);
         ck_assert_int_eq(back.height, 5);
         for (int i = 0; i < 105; i++)
@@ -614,7 +614,7 @@ START_TEST(test_img_write_read_png_16bit)
     for (int lin = 0; lin < 2; lin++) {
         o.linear_png = lin;
         ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         for (int i = 0; i < 72; i++) {
             double got = code_of(back.rgb[i], !lin, 65535), exact = code_of(img.rgb[i], !lin, 65535);
             ck_assert_near(got, exact, 0.5 + 1e-6);
@@ -648,7 +648,7 @@ START_TEST(test_img_read_png_gamma_rules)
         patch_chunk4(g, variant == 0 ? "gAMA" : "gAMx", 50000);
         put_file(path, b, n);
         free(b);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         for (int i = 0; i < 18; i++) {
             double code = expected_code(img.rgb[i], &o, 255) / 255.0;
             ck_assert_near(back.rgb[i], variant == 0 ? code * code : srgb_dec(code), 1e-12);
@@ -656,7 +656,7 @@ START_TEST(test_img_read_png_gamma_rules)
         img_free(&back);
     }
     put_str(path, "\x89PNG\r\n\x1A\nnonsense");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "PNG") != NULL, "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -676,7 +676,7 @@ START_TEST(test_img_write_png_compiled_out)
     ck_assert_msg(strstr(err, "this refray was built without libpng (PNG=0); write .ppm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x89PNG\r\n\x1A\n");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without libpng (PNG=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -704,7 +704,7 @@ START_TEST(test_img_write_read_exr_float_exact)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.clamped, 1);
     ck_assert_uint_eq(st.nonfinite, 1);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(back.width, 9);
     ck_assert_int_eq(back.height, 37);
     ck_assert(back.rgb[0] == FLT_MAX);
@@ -747,7 +747,7 @@ START_TEST(test_img_write_read_exr_half)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.clamped, 2);
     ck_assert_uint_eq(st.nonfinite, 0);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     for (int i = 0; i < 6; i++)
         ck_assert(back.rgb[i] == exact[i]);
     ck_assert(back.rgb[6] == 65504.0 && back.rgb[7] == -65504.0);
@@ -768,7 +768,7 @@ START_TEST(test_img_read_exr_rejects_garbage)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "bad.exr");
     put_str(path, "\x76\x2f\x31\x01 this is not an image");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strncmp(err, "cannot read '", 13) == 0, "%s", err);
     ck_assert_ptr_null(img.rgb);
     tmpdir_remove(&d);
@@ -788,7 +788,7 @@ START_TEST(test_img_write_exr_compiled_out)
     ck_assert_msg(strstr(err, "this refray was built without OpenEXR (EXR=0); write .pfm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x76\x2f\x31\x01");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without OpenEXR (EXR=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -822,7 +822,7 @@ START_TEST(test_img_write_unknown_extension_is_usage_error)
     ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "no file extension"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
-    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.tiff'"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -857,7 +857,7 @@ START_TEST(test_img_read_missing_file)
 {
     char err[256];
     img_buf img;
-    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), STATUS_NO_INPUT);
+    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", NULL, &img, err, sizeof err), STATUS_NO_INPUT);
     ck_assert_msg(strstr(err, "/nonexistent-refray-dir/none.pfm") && strstr(err, strerror(ENOENT)), "%s", err);
 }
 END_TEST

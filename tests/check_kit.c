@@ -13,7 +13,7 @@
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "cli_testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"
 #include "io/scene_file.h"
@@ -136,7 +136,7 @@ static void measure(const char *dir, const manifest_scene *s, double *peak, long
     char path[512], err[512];
     img_buf img;
     unsigned char *mask;
-    ck_assert_int_eq(img_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
+    ck_assert_int_eq(img_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_EXACT_PFM]), NULL, &img, err,
                               sizeof err), 0);
     ck_assert_int_eq(verify_mask_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_MASK_PGM]), img.width,
                                       img.height, &mask, err, sizeof err), 0);
@@ -352,7 +352,7 @@ static void perturbed(const char *dir, const manifest_scene *s, double f, const 
 {
     char src[512], err[512];
     img_buf img;
-    ck_assert_int_eq(img_read(cli_path(src, sizeof src, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
+    ck_assert_int_eq(img_read(cli_path(src, sizeof src, dir, s->files[MANIFEST_FILE_EXACT_PFM]), NULL, &img, err,
                               sizeof err), 0);
     for (int i = 0; i < 3 * img.width * img.height; i++)
         img.rgb[i] *= 1 + f;

@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "io/scene_file.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "testlib.h"
 #include "verify/verify.h"
 
@@ -629,7 +629,7 @@ START_TEST(test_cli_oracle_writes_the_exact_image)
     const char *cmp[] = {"compare", render, exact, "--mask", mask, "--tolerance", "1e-7", NULL};
     ck_assert_int_eq(run_refray(cmp, out), 0);
     img_buf img;
-    ck_assert_int_eq(img_read(exact, &img, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(exact, NULL, &img, err, sizeof err), 0);
     ck_assert_near(img_pixel(&img, 16, 12)[0], 0.4, 1e-7); /* Kd * Ia, red */
     ck_assert_near(img_pixel(&img, 0, 0)[2], 0.3, 1e-7);   /* the background */
     img_free(&img);

@@ -3,7 +3,7 @@
  */
 #include <string.h>
 #include "api/convert.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 
 rf_status rf_image_create(int width, int height, const rf_allocator *allocator, rf_image **out)
 {
@@ -83,17 +83,20 @@ void rf_write_options_init(rf_write_options *o)
     o->exr_float = d.exr_float;
 }
 
-static img_write_opts write_opts(const rf_write_options *o, img_write_stats *st)
+static img_write_opts write_opts(const rf_write_options *o, img_write_stats *st, cancel_poll *cancel)
 {
     img_write_opts w = img_write_opts_default();
+    *cancel = cancel_poll_make(NULL, NULL);
     if (o) {
         w.exposure_stops = o->exposure_stops;
         w.tone = o->tone;
         w.linear_png = o->linear;
         w.png_bits = o->png_bits;
         w.exr_float = o->exr_float;
+        *cancel = cancel_poll_make(o->cancel, o->user);
     }
     w.stats = st;
+    w.cancel = cancel;
     return w;
 }
 
@@ -109,7 +112,8 @@ rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_o
                          char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    cancel_poll cancel;
+    img_write_opts w = write_opts(o, &st, &cancel);
     int status = img_write(path, &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);
@@ -119,7 +123,8 @@ rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt
                                 rf_write_stats *stats, char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    cancel_poll cancel;
+    img_write_opts w = write_opts(o, &st, &cancel);
     int status = img_write_stream(stream, format_in(fmt), &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);

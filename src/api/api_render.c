@@ -35,6 +35,8 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
         rf_render_options_init(&r->options);
     ro.progress = on_row;
     ro.progress_ctx = r;
+    ro.cancel = r->options.cancel;
+    ro.cancel_ctx = r->options.user;
     int status = renderer_init(&r->r, s, &ro);
     if (status != STATUS_OK) {
         mem_free(&s->mem, r, sizeof *r);

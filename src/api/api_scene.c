@@ -88,6 +88,8 @@ static void load_opts(const rf_load_options *o, scene_load_opts *out)
         out->resolver.user = (void *)&o->resolver;
     }
     out->mem = api_mem(o->allocator);
+    out->cancel = o->cancel;
+    out->cancel_user = o->cancel_user;
 }
 
 rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,

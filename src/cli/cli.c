@@ -10,6 +10,7 @@
 #include "refray.h"
 #include "cli/cli.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 
 static const char usage_text[] =
@@ -40,10 +41,13 @@ static const char usage_text[] =
     "  refray COMMAND --help      the options of one command\n"
     "\n"
     "exit codes: 0 ok, 1 a check failed, 64 usage, 65 bad scene, 66 missing input,\n"
-    "74 I/O error, 130 interrupted.  The language: spec/language.md.\n";
+    "70 out of memory, 74 I/O error, 128 + N stopped by signal N (130 SIGINT,\n"
+    "143 SIGTERM, 129 SIGHUP).  The language: spec/language.md;\n"
+    "limits, signals and output files: spec/reliability.md.\n";
 
 int cli_main(int argc, char **argv)
 {
+    cli_signal_install();
     if (argc < 2)
         return cli_usage_error("no command given");
     const char *cmd = argv[1];

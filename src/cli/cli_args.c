@@ -8,16 +8,36 @@
 #include <stdlib.h>
 #include <string.h>
 #include "api/convert.h"
+#include "base/text.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
+#include "io/diag_print.h"
+#include "io/scene_file.h"
+
+/* "refray: error: " and the message, escaped and cut (text_escape):
+ * arguments and file names are input too ([REL-ESCAPE-1]). */
+static void print_error(const char *fmt, va_list ap, const char *after)
+{
+    char text[4096], shown[1024];
+    vsnprintf(text, sizeof text, fmt, ap);
+    text_escape(text, strlen(text), shown, sizeof shown);
+    fprintf(stderr, "refray: error: %s\n%s", shown, after);
+}
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    print_error(fmt, ap, "");
+    va_end(ap);
+}
 
 int cli_usage_error(const char *fmt, ...)
 {
     va_list ap;
-    fputs("refray: error: ", stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    print_error(fmt, ap, "(see refray --help)\n");
     va_end(ap);
-    fputs("\n(see refray --help)\n", stderr);
     return STATUS_USAGE;
 }
 
@@ -128,7 +148,23 @@ rf_load_options cli_load_options(const cli_scene_opts *o)
     lo.warnings = o->warnings;
     lo.diagnostic = rf_diagnostic_print;
     lo.diagnostic_user = stderr;
+    lo.cancel = cli_signal_cancel;
     return lo;
+}
+
+scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *status)
+{
+    scene_load_opts lo;
+    scene_load_opts_init(&lo);
+    lo.limits = o->limits;
+    lo.warnings = o->warnings;
+    lo.sink = diag_print;
+    lo.sink_user = stderr;
+    lo.cancel = cli_signal_cancel;
+    scene_model *s = scene_file_load_with(path, &lo, status);
+    if (*status == STATUS_CANCELLED)
+        fputs("refray: interrupted\n", stderr);
+    return s;
 }
 
 typedef struct limit_flag {

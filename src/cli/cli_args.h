@@ -24,8 +24,15 @@ typedef struct cli_scene_opts {
 void cli_scene_opts_init(cli_scene_opts *o);
 
 /* The public API's load options for o: its limits and warnings, the
- * diagnostics printed to stderr, files from the file system. */
+ * diagnostics printed to stderr, files from the file system, stopped by
+ * a signal (cli_signal_cancel). */
 rf_load_options cli_load_options(const cli_scene_opts *o);
+
+/* Loads the scene file path the same way through the library's own
+ * interface (for the commands that need the scene model); NULL with
+ * *status on failure ("refray: interrupted" printed when a signal
+ * stopped it). */
+scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *status);
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
 
 /* The value after option argv[*i] (advancing *i); 0 with the usage error
@@ -55,6 +62,14 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
 /* Parses a whole number option value in [lo, hi]; prints the usage error. */
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
 int cli_parse_double(const char *option, const char *text, double *out);
+
+/* Prints "refray: error: MESSAGE" to stderr, the message escaped and cut
+ * (base/text.h: no input byte reaches the terminal raw). */
+void cli_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
 
 /* Prints "refray: error: ..." for command-line mistakes, returns 64. */
 int cli_usage_error(const char *fmt, ...)

@@ -11,8 +11,9 @@
 #include <string.h>
 #include "io/fileio.h"
 #include "image/adjust.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 #include "verify/conform.h"
 
@@ -125,9 +126,9 @@ static int parse_args(compare_args *a, int argc, char **argv)
 static int read_image(const char *path, img_buf *img)
 {
     char err[512];
-    int status = img_read(path, img, err, sizeof err);
+    int status = img_read(path, NULL, img, err, sizeof err);
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
     return status;
 }
 
@@ -182,13 +183,17 @@ static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
     char err[512] = "out of memory making the error map";
     if (status == STATUS_OK) {
+        cancel_poll cancel = cancel_poll_make(cli_signal_cancel, NULL);
         img_write_opts wo = img_write_opts_default();
         wo.exr_float = 1;
+        wo.cancel = &cancel;
+        cli_signal_cooperate(1);
         status = img_write(a->diff, &map, &wo, err, sizeof err);
+        cli_signal_cooperate(0);
         img_free(&map);
     }
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
     return status;
 }
 
@@ -201,7 +206,7 @@ static int read_mask(const compare_args *a, const compare_kit *kit, const img_bu
     const char *use = a->mask ? a->mask : path;
     int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : STATUS_OK;
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s: %s\n", use, err);
+        cli_error("%s: %s", use, err);
     free(path);
     return status;
 }
@@ -210,7 +215,7 @@ static int read_mask(const compare_args *a, const compare_kit *kit, const img_bu
 static int compare_images(const compare_args *a, const compare_kit *kit, const img_buf *x, const img_buf *ref)
 {
     if (x->width != ref->width || x->height != ref->height) {
-        fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
+        cli_error("the images differ in size: '%s' is %dx%d, '%s' is %dx%d", a->a, x->width,
                 x->height, a->b, ref->width, ref->height);
         return STATUS_DATA;
     }
@@ -244,8 +249,8 @@ static int adjust_image(const compare_args *a, const compare_kit *kit, const img
     if (k > 1) {
         img_buf small;
         if (x->width != k * ref->width || x->height != k * ref->height) {
-            fprintf(stderr, "refray: error: with --downsample %d, '%s' must be %dx%d (%d times '%s', %dx%d), "
-                    "not %dx%d\n", k, a->a, k * ref->width, k * ref->height, k, a->b, ref->width, ref->height,
+            cli_error("with --downsample %d, '%s' must be %dx%d (%d times '%s', %dx%d), "
+                    "not %dx%d", k, a->a, k * ref->width, k * ref->height, k, a->b, ref->width, ref->height,
                     x->width, x->height);
             return STATUS_DATA;
         }
@@ -297,7 +302,7 @@ static int load_kit(compare_args *a, compare_kit *kit)
     char why[1024];
     int status = manifest_read(a->manifest, &kit->m, why, sizeof why);
     if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: compare: %s\n", why);
+        cli_error("compare: %s", why);
         return status;
     }
     kit->dir = file_dirname(NULL, a->manifest);

@@ -1,28 +1,17 @@
 /*
  * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically,
- * through the public API (refray.h).
- *
- * One of refray's two pieces of global state lives here (the other is
- * cli_conform.c's stop flag): the SIGINT flag, as a volatile sig_atomic_t,
- * because a signal handler can reach nothing else.
- * The library never sees it; it is asked through the progress callback.
+ * through the public API (refray.h).  SIGINT, SIGTERM and SIGHUP stop the
+ * load, the render and the write within a fraction of a second, and
+ * nothing is written (cli_signal.h).
  */
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
-#include "io/fileio.h"
-
-static volatile sig_atomic_t interrupted;
-
-static void on_interrupt(int sig)
-{
-    (void)sig;
-    interrupted = 1;
-}
+#include "io/image_io.h"
 
 typedef struct render_args {
     cli_scene_opts scene;
@@ -125,7 +114,8 @@ static rf_format stdout_format(const char *name)
     return rf_format_from_path(probe);
 }
 
-/* Fails before the render, not after it, when OUT cannot be written. */
+/* Fails before the render, not after it, when OUT cannot be written:
+ * every check of the writer that needs no image ([REL-OUT-6]). */
 static int check_output(const render_args *a)
 {
     const char *path = a->output;
@@ -147,13 +137,11 @@ static int check_output(const render_args *a)
     if (!rf_format_available(fmt))
         return cli_usage_error("render: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
                                path);
-    char *dir = file_dirname(NULL, path);
-    int ok = dir && access(dir, W_OK) == 0;
-    if (!ok)
-        fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
-                dir ? "directory missing or not writable" : "out of memory");
-    mem_free_string(NULL, dir);
-    return ok ? 0 : STATUS_IO;
+    char err[1024];
+    int status = img_write_check(path, err, sizeof err);
+    if (status != STATUS_OK)
+        cli_error("%s", err);
+    return status;
 }
 
 typedef struct progress_state {
@@ -176,12 +164,6 @@ static void progress(void *ctx, int done, int total)
     }
 }
 
-static int cancel(void *ctx)
-{
-    (void)ctx;
-    return interrupted != 0;
-}
-
 static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
@@ -200,8 +182,7 @@ static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
             s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, s->node_visits, s->primitive_tests);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
-    fprintf(stderr, "  non-finite values: %ld traced, %zu written; medium stack overflows: %ld\n", s->nonfinite,
-            w->nonfinite, s->medium_overflows);
+    fprintf(stderr, "  non-finite values: %ld traced, %zu written\n", s->nonfinite, w->nonfinite);
 }
 
 static rf_render_options public_opts(const render_args *a, progress_state *p)
@@ -215,9 +196,42 @@ static rf_render_options public_opts(const render_args *a, progress_state *p)
     o.light_samples = a->render.light_samples;
     o.max_tree_rays = a->scene.limits.max_ray_tree;
     o.progress = progress;
-    o.cancel = cancel;
+    o.cancel = cli_signal_cancel;
     o.user = p;
     return o;
+}
+
+/* Why a render was refused: a ray tree over its budget, or glass nested
+ * deeper than the tracer follows ([REL-MEDIUM-1]). */
+static void report_void(const rf_render_stats *s, long max_tree_rays)
+{
+    if (s->medium_overflows > 0)
+        cli_error("a ray of pixel (%d, %d) is inside more than 16 nested transparent solids, more than "
+                  "refray follows; the image would be wrong there; nothing written",
+                  s->overflow_x, s->overflow_y);
+    else
+        cli_error("the rays of pixel (%d, %d) branch into more than %ld rays (--max-ray-tree); lower max_depth "
+                  "or raise the limit; nothing written", s->overflow_x, s->overflow_y, max_tree_rays);
+}
+
+static int write_image(render_args *a, const rf_image *img, rf_write_stats *written)
+{
+    char err[1024];
+    int status;
+    a->image.cancel = cli_signal_cancel;
+    if (strcmp(a->output, "-") == 0) {
+        status = (int)rf_image_write_stream(img, stdout, stdout_format(a->format), &a->image, written, err,
+                                            sizeof err);
+        if (status == STATUS_OK && fflush(stdout) != 0) {
+            status = STATUS_IO;
+            snprintf(err, sizeof err, "cannot write to standard output");
+        }
+    } else {
+        status = (int)rf_image_write(img, a->output, &a->image, written, err, sizeof err);
+    }
+    if (status != STATUS_OK && status != STATUS_CANCELLED)
+        cli_error("%s", err);
+    return status;
 }
 
 static int render_and_write(render_args *a, const rf_scene *scene)
@@ -227,39 +241,20 @@ static int render_and_write(render_args *a, const rf_scene *scene)
     rf_write_stats written = {0, 0};
     progress_state p = {!a->quiet && isatty(2), render_clock()};
     rf_render_options o = public_opts(a, &p);
-    int status = interrupted ? STATUS_CANCELLED : (int)rf_render_image(scene, &o, &img, &stats);
-    if (status == STATUS_DATA) {
-        fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
-                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
-                stats.overflow_x, stats.overflow_y, o.max_tree_rays);
-        return status;
+    int status = (int)rf_render_image(scene, &o, &img, &stats);
+    if (status == STATUS_DATA)
+        report_void(&stats, o.max_tree_rays);
+    else if (status == STATUS_NO_MEMORY)
+        cli_error("out of memory rendering '%s'", a->input);
+    if (status == STATUS_OK) {
+        status = write_image(a, img, &written);
+        rf_image_free(img);
     }
-    if (status == STATUS_CANCELLED) {
+    if (status == STATUS_CANCELLED)
         fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
-        return status;
-    }
-    if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: out of memory rendering '%s'\n", a->input);
-        return status;
-    }
-    char err[512];
-    int wstatus;
-    if (strcmp(a->output, "-") == 0) {
-        wstatus = (int)rf_image_write_stream(img, stdout, stdout_format(a->format), &a->image, &written, err,
-                                             sizeof err);
-        if (wstatus == 0 && fflush(stdout) != 0)
-            wstatus = STATUS_IO;
-    } else {
-        wstatus = (int)rf_image_write(img, a->output, &a->image, &written, err, sizeof err);
-    }
-    rf_image_free(img);
-    if (wstatus != 0) {
-        fprintf(stderr, "refray: error: %s\n", err);
-        return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
-    }
-    if (a->stats)
+    else if (status == STATUS_OK && a->stats)
         print_stats(&stats, &written);
-    return STATUS_OK;
+    return status;
 }
 
 int cli_render(int argc, char **argv)
@@ -273,14 +268,16 @@ int cli_render(int argc, char **argv)
         return status < 0 ? STATUS_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
-    /* From here on SIGINT means "stop, write nothing, exit 130", while the
-     * scene loads as well as while it renders. */
-    signal(SIGINT, on_interrupt);
+    /* From here on a signal means "stop, write nothing", while the scene
+     * loads as well as while it renders and while the file is written. */
+    cli_signal_cooperate(1);
     rf_load_options lo = cli_load_options(&a.scene);
     rf_scene *scene;
     status = (int)rf_scene_load_file(a.input, &lo, &scene);
+    if (status == STATUS_CANCELLED)
+        fputs("refray: interrupted; nothing written\n", stderr);
     if (!scene)
-        return interrupted ? STATUS_CANCELLED : status;
+        return status;
     rf_scene_info info;
     rf_scene_get_info(scene, &info);
     if ((double)(a.render.width ? a.render.width : info.width) * (a.render.height ? a.render.height : info.height) >
@@ -290,6 +287,5 @@ int cli_render(int argc, char **argv)
     }
     status = render_and_write(&a, scene);
     rf_scene_free(scene);
-    signal(SIGINT, SIG_DFL);
     return status;
 }

@@ -9,6 +9,8 @@
 #include <string.h>
 #include "io/scene_file.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
+#include "io/atomic.h"
 #include "cli/commands.h"
 
 static const char verify_help[] =
@@ -195,7 +197,7 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
 {
     int status;
     memset(r, 0, sizeof *r);
-    scene_model *s = scene_file_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
+    scene_model *s = cli_load_scene(&a->scene, path, &status);
     if (!s) {
         verify_result_error(r, path, status, load_reason(status));
         return NULL;
@@ -215,7 +217,7 @@ static int verify_all(const verify_args *a, verify_result *results)
     int worst = STATUS_OK, w = name_width(a);
     if (!a->json)
         print_header(w);
-    for (int i = 0; i < a->path_count; i++) {
+    for (int i = 0; i < a->path_count && !cli_signal_cancel(NULL); i++) {
         scene_model *s = load(a, a->paths[i], &results[i]);
         if (s) {
             verify_scene(s, a->paths[i], &a->view, &results[i]);
@@ -295,35 +297,40 @@ static int sweep_one(const verify_args *a, const char *path, verify_result *step
     return status;
 }
 
-static int close_tsv(FILE *tsv, const char *path)
-{
-    if (!tsv)
-        return STATUS_OK;
-    int bad = ferror(tsv);
-    bad |= fclose(tsv) != 0;
-    if (!bad)
-        return STATUS_OK;
-    fprintf(stderr, "refray: error: could not write '%s'\n", path);
-    return STATUS_IO;
-}
-
+/* The TSV goes through the atomic writer: it is at its path whole, or
+ * not at all (a missing scene, a bad one, a signal: nothing), as every
+ * output of every command ([REL-OUT-1]). */
 static int sweep_all(const verify_args *a, verify_result *steps)
 {
-    FILE *tsv = NULL;
-    if (a->tsv_path && !(tsv = fopen(a->tsv_path, "w"))) {
-        fprintf(stderr, "refray: error: cannot write '%s'\n", a->tsv_path);
+    file_out tsv;
+    char why[1024];
+    cancel_poll cancel = cancel_poll_make(cli_signal_cancel, NULL);
+    if (a->tsv_path && file_out_open(&tsv, a->tsv_path, &cancel, why, sizeof why) != STATUS_OK) {
+        cli_error("%s", why);
         return STATUS_IO;
     }
-    if (tsv)
-        verify_tsv_header(tsv);
+    if (a->tsv_path)
+        verify_tsv_header(tsv.fp);
     int worst = STATUS_OK, first_json = 1;
-    for (int i = 0; i < a->path_count; i++) {
-        int status = sweep_one(a, a->paths[i], steps, tsv, &first_json);
+    for (int i = 0; i < a->path_count && !cli_signal_cancel(NULL); i++) {
+        int status = sweep_one(a, a->paths[i], steps, a->tsv_path ? tsv.fp : NULL, &first_json);
         worst = status_worse(worst, status);
     }
+    if (cli_signal_cancel(NULL))
+        worst = STATUS_CANCELLED;
     if (a->json)
         fputs(first_json ? "[]\n" : "]\n", stdout);
-    int status = close_tsv(tsv, a->tsv_path);
+    if (!a->tsv_path)
+        return worst;
+    /* A check that failed (exit 1) is a result worth keeping; an error is not. */
+    if (worst != STATUS_OK && worst != STATUS_FAIL) {
+        file_out_abort(&tsv);
+        fprintf(stderr, "refray: '%s' not written\n", a->tsv_path);
+        return worst;
+    }
+    int status = file_out_commit(&tsv, why, sizeof why);
+    if (status != STATUS_OK && status != STATUS_CANCELLED)
+        cli_error("%s", why);
     return status_worse(worst, status);
 }
 
@@ -336,11 +343,13 @@ int cli_verify(int argc, char **argv)
     verify_args a;
     memset(&a, 0, sizeof a);
     cli_scene_opts_init(&a.scene);
+    cli_signal_cooperate(1);
+    a.view.cancel = cli_signal_cancel;
     a.paths = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *a.paths);
     verify_result *results = malloc((size_t)(argc > VERIFY_SWEEP_MAX ? argc : VERIFY_SWEEP_MAX) * sizeof *results);
     int status = a.paths && results ? parse_args(&a, argc, argv) : STATUS_NO_MEMORY;
     if (status == STATUS_NO_MEMORY)
-        fputs("refray: error: out of memory\n", stderr);
+        cli_error("out of memory");
     else if (status < 0)
         status = STATUS_OK;
     else if (status == 0)

@@ -11,7 +11,10 @@
  *
  * All I/O goes through our own stream callbacks on the caller's FILE: the
  * caller keeps the atomic temp-and-rename scheme and sees every failed
- * write (the library would otherwise open the file itself).
+ * write (the library would otherwise open the file itself).  The library
+ * writes the chunk offset table last, at the front: a stream that cannot
+ * seek (a pipe) gets the file built in memory first and then written in
+ * one go, so `render -o - --format exr` works.
  */
 #include <errno.h>
 #include <stdlib.h>
@@ -25,9 +28,13 @@
 /* The user data of both stream directions. */
 typedef struct exr_stream {
     FILE *fp;
-    off_t base;      /* writing: file offset of the EXR's first byte */
+    off_t base;      /* writing: file offset of the EXR's first byte; -1: into memory */
     int saved_errno; /* errno of the first failed I/O call, 0 if none */
     char msg[200];   /* first message of the library's error callback */
+    unsigned char *buf; /* writing into memory: the file so far, from mem */
+    size_t len, cap;
+    const mem *mem;
+    int out_of_memory;
 } exr_stream;
 
 /* The library reports errors through this callback (by default it prints
@@ -48,6 +55,8 @@ static void on_exr_error(exr_const_context_t ctxt, exr_result_t code, const char
 static int exr_failure(const exr_stream *s, exr_result_t rv, int code, const char *what, char *err,
                        size_t errlen)
 {
+    if (s->out_of_memory || rv == EXR_ERR_OUT_OF_MEMORY)
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     if (s->saved_errno)
         return img_error(err, errlen, STATUS_IO, "%s error: %s", what, strerror(s->saved_errno));
     if (s->msg[0])
@@ -57,6 +66,33 @@ static int exr_failure(const exr_stream *s, exr_result_t rv, int code, const cha
 
 /* ---- Writing ---- */
 
+/* pwrite-like into the memory image of the file. */
+static int64_t memory_write(exr_stream *s, const void *buf, uint64_t sz, uint64_t offset)
+{
+    if (offset > SIZE_MAX - sz) {
+        s->out_of_memory = 1;
+        return -1;
+    }
+    size_t end = (size_t)(offset + sz);
+    if (end > s->cap) {
+        size_t cap = s->cap ? s->cap : 1 << 16;
+        while (cap < end)
+            cap = cap > SIZE_MAX / 2 ? end : 2 * cap;
+        unsigned char *grown = mem_resize(s->mem, s->buf, s->cap, cap);
+        if (!grown) {
+            s->out_of_memory = 1;
+            return -1;
+        }
+        memset(grown + s->cap, 0, cap - s->cap);
+        s->buf = grown;
+        s->cap = cap;
+    }
+    memcpy(s->buf + offset, buf, sz);
+    if (end > s->len)
+        s->len = end;
+    return (int64_t)sz;
+}
+
 /* pwrite-like on the stream: the library writes the header and chunks in
  * order, then seeks back to fill the chunk offset table. */
 static int64_t stream_write(exr_const_context_t ctxt, void *ud, const void *buf, uint64_t sz,
@@ -65,6 +101,8 @@ static int64_t stream_write(exr_const_context_t ctxt, void *ud, const void *buf,
     exr_stream *s = ud;
     (void)ctxt;
     (void)error_cb;
+    if (s->base < 0)
+        return memory_write(s, buf, sz, offset);
     if (fseeko(s->fp, s->base + (off_t)offset, SEEK_SET) != 0 || fwrite(buf, 1, sz, s->fp) != sz) {
         if (!s->saved_errno)
             s->saved_errno = errno ? errno : EIO;
@@ -79,6 +117,7 @@ typedef struct exr_planes {
     unsigned char *plane[3];
     int elem;  /* 2 (half) or 4 (float) */
     int ptype; /* EXR_PIXEL_HALF or EXR_PIXEL_FLOAT */
+    size_t bytes; /* of each plane, from the image's allocator */
 } exr_planes;
 
 static void store_value(exr_planes *pl, int c, size_t i, double v, img_write_stats *st)
@@ -100,8 +139,9 @@ static int fill_planes(exr_planes *pl, const img_buf *img, int use_float, img_wr
     size_t n = (size_t)img->width * (size_t)img->height;
     pl->elem = use_float ? 4 : 2;
     pl->ptype = use_float ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
+    pl->bytes = n * (size_t)pl->elem;
     for (int c = 0; c < 3; c++)
-        pl->plane[c] = malloc(n * (size_t)pl->elem);
+        pl->plane[c] = mem_alloc(&img->mem, pl->bytes);
     if (!pl->plane[0] || !pl->plane[1] || !pl->plane[2])
         return -1;
     for (size_t i = 0; i < n; i++)
@@ -133,7 +173,7 @@ static void aim_encoder(exr_encode_pipeline_t *enc, const exr_planes *pl, int wi
 }
 
 static exr_result_t write_chunks(exr_context_t ctx, int part, const img_buf *img,
-                                 const exr_planes *pl)
+                                 const exr_planes *pl, const img_write_opts *o, int *cancelled)
 {
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
     int32_t lines = 0;
@@ -146,6 +186,8 @@ static exr_result_t write_chunks(exr_context_t ctx, int part, const img_buf *img
             rv = started ? exr_encoding_update(ctx, part, &ci, &enc)
                          : exr_encoding_initialize(ctx, part, &ci, &enc);
         if (rv != EXR_ERR_SUCCESS)
+            break;
+        if ((*cancelled = img_row_cancelled(o, img)) != 0)
             break;
         aim_encoder(&enc, pl, img->width, y);
         if (!started++)
@@ -174,7 +216,8 @@ static exr_result_t define_part(exr_context_t ctx, const img_buf *img, int ptype
     return rv;
 }
 
-static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_planes *pl)
+static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_planes *pl,
+                               const img_write_opts *o, int *cancelled)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
@@ -186,7 +229,7 @@ static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_plan
     if (rv == EXR_ERR_SUCCESS)
         rv = define_part(ctx, img, pl->ptype, &part);
     if (rv == EXR_ERR_SUCCESS)
-        rv = write_chunks(ctx, part, img, pl);
+        rv = write_chunks(ctx, part, img, pl, o, cancelled);
     /* exr_finish writes the chunk offset table, so its result counts. */
     exr_result_t fin = ctx ? exr_finish(&ctx) : EXR_ERR_SUCCESS;
     return rv != EXR_ERR_SUCCESS ? rv : fin;
@@ -195,21 +238,28 @@ static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_plan
 int img_exr_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
-    exr_stream s = {fp, 0, 0, ""};
-    exr_planes pl = {{NULL, NULL, NULL}, 0, 0};
-    int rc = STATUS_OK;
+    exr_stream s;
+    exr_planes pl = {{NULL, NULL, NULL}, 0, 0, 0};
+    int rc = STATUS_OK, cancelled = 0;
+    memset(&s, 0, sizeof s);
+    s.fp = fp;
+    s.mem = &img->mem;
+    /* A stream without a position (a pipe) gets the file from memory. */
     s.base = ftello(fp);
-    if (s.base < 0)
-        rc = img_error(err, errlen, STATUS_IO, "EXR needs a seekable file: %s", strerror(errno));
-    else if (fill_planes(&pl, img, o->exr_float, st) != 0)
+    if (fill_planes(&pl, img, o->exr_float, st) != 0)
         rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     else {
-        exr_result_t rv = encode_exr(&s, img, &pl);
-        if (rv != EXR_ERR_SUCCESS || s.saved_errno)
+        exr_result_t rv = encode_exr(&s, img, &pl, o, &cancelled);
+        if (cancelled)
+            rc = img_error(err, errlen, STATUS_CANCELLED, "interrupted");
+        else if (rv != EXR_ERR_SUCCESS || s.saved_errno || s.out_of_memory)
             rc = exr_failure(&s, rv, STATUS_IO, "write", err, errlen);
+        else if (s.base < 0 && fwrite(s.buf, 1, s.len, fp) != s.len)
+            rc = img_error(err, errlen, STATUS_IO, "write error: %s", strerror(errno));
     }
     for (int c = 0; c < 3; c++)
-        free(pl.plane[c]);
+        mem_free(&img->mem, pl.plane[c], pl.bytes);
+    mem_free(&img->mem, s.buf, s.cap);
     return rc;
 }
 
@@ -295,8 +345,9 @@ static exr_result_t read_chunks(exr_const_context_t ctx, const exr_target *t)
     return rv;
 }
 
-/* The first part must be a scanline image with full-resolution R, G, B. */
-static int check_layout(exr_const_context_t ctx, exr_target *t, char *err, size_t errlen)
+/* The first part must be a scanline image with full-resolution R, G, B,
+ * of a size o accepts. */
+static int check_layout(exr_const_context_t ctx, const img_read_opts *o, exr_target *t, char *err, size_t errlen)
 {
     exr_storage_t storage;
     exr_attr_box2i_t dw;
@@ -315,12 +366,12 @@ static int check_layout(exr_const_context_t ctx, exr_target *t, char *err, size_
     }
     if (found != 7)
         return img_error(err, errlen, STATUS_DATA, "the file has no R, G and B channels");
-    t->width = dw.max.x - dw.min.x + 1;
-    t->height = dw.max.y - dw.min.y + 1;
+    long width = (long)dw.max.x - dw.min.x + 1, height = (long)dw.max.y - dw.min.y + 1;
+    int rc = img_check_header(width, height, o, err, errlen);
+    t->width = (int)width;
+    t->height = (int)height;
     t->min_y = dw.min.y;
-    if (t->width < 1 || t->height < 1 || t->width > IMG_MAX_PIXELS / t->height)
-        return img_error(err, errlen, STATUS_DATA, "bad data window");
-    return STATUS_OK;
+    return rc;
 }
 
 static void copy_planes(const exr_target *t, img_buf *out)
@@ -332,11 +383,16 @@ static void copy_planes(const exr_target *t, img_buf *out)
 }
 
 /* Decodes the first part into *out once the context is open. */
-static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char *err,
+static int decode_exr(exr_const_context_t ctx, exr_stream *s, const img_read_opts *o, img_buf *out, char *err,
                       size_t errlen)
 {
     exr_target t = {{NULL, NULL, NULL}, 0, 0, 0};
-    int rc = check_layout(ctx, &t, err, errlen);
+    int rc = check_layout(ctx, o, &t, err, errlen);
+    if (rc == STATUS_OK && o->header_only) {
+        out->width = t.width;
+        out->height = t.height;
+        return STATUS_OK;
+    }
     for (int c = 0; rc == STATUS_OK && c < 3; c++)
         if (!(t.plane[c] = calloc((size_t)t.width * (size_t)t.height, sizeof(float))))
             rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
@@ -354,9 +410,11 @@ static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char
     return rc;
 }
 
-int img_exr_read(FILE *fp, img_buf *out, char *err, size_t errlen)
+int img_exr_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
-    exr_stream s = {fp, 0, 0, ""};
+    exr_stream s;
+    memset(&s, 0, sizeof s);
+    s.fp = fp;
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
     init.user_data = &s;
@@ -364,7 +422,7 @@ int img_exr_read(FILE *fp, img_buf *out, char *err, size_t errlen)
     init.size_fn = stream_size;
     init.error_handler_fn = on_exr_error;
     exr_result_t rv = exr_start_read(&ctx, "image.exr", &init);
-    int rc = rv == EXR_ERR_SUCCESS ? decode_exr(ctx, &s, out, err, errlen)
+    int rc = rv == EXR_ERR_SUCCESS ? decode_exr(ctx, &s, o, out, err, errlen)
                                    : exr_failure(&s, rv, STATUS_DATA, "read", err, errlen);
     if (ctx)
         exr_finish(&ctx);

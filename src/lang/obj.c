@@ -24,6 +24,7 @@
 enum {
     NUMBER_MAX = 255,  /* longest number token accepted */
     SHOWN_MAX = 40,    /* bytes of a token quoted in a message */
+    VERTEX_VALUES_MAX = 7, /* v x y z w, or v x y z r g b */
     WARNED_MAX = 8     /* distinct unknown statements warned about */
 };
 
@@ -336,7 +337,8 @@ static int read_coords(parser *p, src_span kw, vec3 *v)
 }
 
 /* v x y z [w]: w, and the r g b colours some writers append, are dropped
- * once known to be numbers. */
+ * once known to be numbers; more than VERTEX_VALUES_MAX numbers is no
+ * vertex any writer makes (a 30-million-value line must not pass). */
 static void parse_vertex(parser *p, src_span kw)
 {
     vec3 v;
@@ -344,9 +346,15 @@ static void parse_vertex(parser *p, src_span kw)
     double ignored;
     if (!read_coords(p, kw, &v))
         return;
-    while (next_token(p, &tok))
+    for (int n = 3; next_token(p, &tok); n++) {
+        if (n == VERTEX_VALUES_MAX) {
+            diag_report(p->d, DIAG_ERROR, tok, "'v' takes at most %d numbers (x y z, then w or r g b)",
+                        VERTEX_VALUES_MAX);
+            return;
+        }
         if (!read_number(p, tok, &ignored))
             return;
+    }
     append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->mesh->position_cap, v, kw);
 }
 
@@ -362,6 +370,10 @@ static void parse_normal(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
+    /* Checked here, so the error points at the normal, not at a face using
+     * it; the normal is still kept, so the faces' indices stay right. */
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        diag_report(p->d, DIAG_ERROR, kw, "vertex normal of zero length");
     append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->mesh->normal_cap, n, kw);
 }
 
@@ -419,7 +431,7 @@ static void emit_fan(parser *p, int n, src_span where)
     obj_mesh *m = p->mesh;
     long add = n - 2;
     if (add > p->max_triangles - m->triangle_count) {
-        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
+        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles (--max-mesh-triangles)",
                     p->max_triangles);
         p->stop = 1;
         return;
@@ -545,7 +557,7 @@ static void parse_file(parser *p)
 {
     if (p->len >= 3 && memcmp(p->text, "\xEF\xBB\xBF", 3) == 0)
         p->pos = 3;
-    while (p->pos < p->len && !p->stop && !diag_too_many(p->d)) {
+    while (p->pos < p->len && !p->stop && !diag_stop(p->d)) {
         src_span kw;
         if (next_token(p, &kw))
             parse_statement(p, kw);
@@ -573,7 +585,7 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     if (d->errors == errors_before && out->triangle_count == 0)
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
     mem_free(&out->mem, p.corners, (size_t)p.corner_cap * sizeof *p.corners);
-    if (d->errors == errors_before)
+    if (d->errors == errors_before && !cancel_stopped(d->cancel))
         return 1;
     obj_free(out);
     return p.out_of_memory ? -1 : 0;

@@ -52,6 +52,7 @@ typedef struct build_ctx {
     build_item *items;    /* the bounded primitives */
     build_item *spare;    /* as many again, for median splits */
     sort_key *keys;
+    cancel_poll *cancel;  /* asked once per node, a step per 64 items; NULL: never */
 } build_ctx;
 
 typedef struct bin {
@@ -260,12 +261,15 @@ static void build_node(const build_ctx *ctx, int node, int begin, int end, int d
 {
     bvh *b = ctx->b;
     vec3 bounds[2], cent[2];
+    /* A stopped build still ends as a valid tree: the rest become leaves
+     * (bvh_build_polled then throws it away). */
+    int stop = cancel_steps(ctx->cancel, 1 + (end - begin) / 64);
     range_bounds(ctx, begin, end, bounds, cent);
     b->nodes[node].lo = bounds[0];
     b->nodes[node].hi = bounds[1];
     if (depth > b->depth)
         b->depth = depth;
-    int mid = choose_split(ctx, begin, end, depth, bounds, cent);
+    int mid = stop ? -1 : choose_split(ctx, begin, end, depth, bounds, cent);
     if (mid < 0) {
         b->nodes[node].first = begin;
         b->nodes[node].count = end - begin;
@@ -337,7 +341,12 @@ static int build_tree(build_ctx *ctx, int count)
 
 int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
 {
-    build_ctx ctx = {b, NULL, NULL, NULL};
+    return bvh_build_polled(b, prims, count, m, NULL) == STATUS_OK;
+}
+
+int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, cancel_poll *cancel)
+{
+    build_ctx ctx = {b, NULL, NULL, NULL, cancel};
     int ok = 0;
     memset(b, 0, sizeof *b);
     b->mem = mem_pick(m);
@@ -356,9 +365,9 @@ int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
     mem_free(&b->mem, ctx.items, n * sizeof *ctx.items);
     mem_free(&b->mem, ctx.spare, n * sizeof *ctx.spare);
     mem_free(&b->mem, ctx.keys, n * sizeof *ctx.keys);
-    if (!ok)
+    if (!ok || cancel_stopped(cancel))
         bvh_free(b);
-    return ok;
+    return cancel_stopped(cancel) ? STATUS_CANCELLED : ok ? STATUS_OK : STATUS_NO_MEMORY;
 }
 
 /* A ray prepared for slab tests: 1/d with signed infinities for d = +-0. */

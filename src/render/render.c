@@ -33,6 +33,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
                 trace_media_at(t, r.origin, &media, st);
             st->camera_rays++;
             st->tree_rays = 0;
+            st->medium_overflow += t->eye_overflow;
             rgb c = trace_ray(t, &r, 1, &media, sampler_key(pixel_key, (uint64_t)(b * k + a)), st);
             sum = shade_saturate(vec_add(sum, c));
         }
@@ -62,8 +63,11 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     stats->height = o && o->height > 0 ? o->height : scene->image.height;
     stats->samples = o && o->samples > 0 ? o->samples : scene->image.samples;
     double start = render_clock();
-    if (!tracer_init(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0))
-        return STATUS_NO_MEMORY;
+    r->cancel = cancel_poll_make(o ? o->cancel : NULL, o ? o->cancel_ctx : NULL);
+    int status = tracer_build(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0, &r->cancel);
+    if (status != STATUS_OK)
+        return status;
+    stats->trace.cancel = &r->cancel;
     r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
@@ -104,15 +108,18 @@ int renderer_region(renderer *r, const render_target *target)
     int rows = target->y1 - target->y0, status = STATUS_OK;
     double start = render_clock();
     stats->trace.tree_overflow = 0;
+    stats->trace.cancel = &r->cancel;
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
-        for (int i = target->x0; i < target->x1; i++) {
+        for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
+            long media_lost = stats->trace.medium_overflow;
             rgb c = render_pixel(&r->tracer, stats->width, stats->height, stats->samples, i, j, &stats->trace);
             store(target, i, j, c);
-            if (stats->trace.tree_overflow) {
+            if (cancel_stopped(&r->cancel))
+                status = STATUS_CANCELLED;
+            else if (stats->trace.tree_overflow || stats->trace.medium_overflow > media_lost) {
                 stats->overflow_x = i;
                 stats->overflow_y = j;
                 status = STATUS_DATA;
-                break;
             }
         }
         if (status == STATUS_OK && opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))

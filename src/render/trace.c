@@ -43,6 +43,11 @@ int trace_solid_id(const scene_model *s, int prim)
 
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
+    return tracer_build(t, s, max_depth, light_samples, NULL) == STATUS_OK;
+}
+
+int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel)
+{
     memset(t, 0, sizeof *t);
     t->scene = s;
     t->max_depth = max_depth > 0 ? max_depth : s->image.max_depth;
@@ -51,9 +56,11 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
-    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
+    int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+                           : STATUS_NO_MEMORY;
+    if (status != STATUS_OK) {
         tracer_free(t);
-        return 0;
+        return status;
     }
     for (int i = 0; i < s->light_count; i++) {
         const scene_light *light = &s->lights[i];
@@ -67,8 +74,9 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
         trace_stats none;
         memset(&none, 0, sizeof none);
         trace_media_at(t, s->camera.eye, &t->eye_media, &none);
+        t->eye_overflow = none.medium_overflow;
     }
-    return 1;
+    return STATUS_OK;
 }
 
 void tracer_free(tracer *t)
@@ -153,7 +161,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
     uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
-    for (int j = 0; j < setup->samples; j++) {
+    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++) {
         double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
         double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
         double a, b;   /* the sample's place in the light's unit square: model data, double */
@@ -366,6 +374,7 @@ enum { PROBE_MAX = 64 };
 typedef struct probe {
     const scene_model *scene;
     int count;
+    int overflow;          /* a transparent solid past PROBE_MAX was crossed */
     int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
     real first[PROBE_MAX];
 } probe;
@@ -379,8 +388,10 @@ static int probe_crossing(void *ctx, const hit *h)
     while (k < pr->count && pr->solid[k] != solid)
         k++;
     if (k == pr->count) {
-        if (k == PROBE_MAX)
+        if (k == PROBE_MAX) {
+            pr->overflow = 1;
             return 0;
+        }
         pr->count++;
         pr->solid[k] = solid;
         pr->prim[k] = h->prim;
@@ -410,6 +421,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
         return;
     pr.scene = t->scene;
     pr.count = 0;
+    pr.overflow = 0;
     /* A direction along no axis and no simple diagonal, so the probe does
      * not run along the faces and edges of boxes and axis-aligned meshes. */
     ray r;
@@ -418,6 +430,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
     r.tmin = 0;
     r.tmax = HUGE_VAL;
     bvh_visit_stats(&t->accel, t->scene->prims, &r, probe_crossing, &pr, &st->bvh);
+    st->medium_overflow += pr.overflow;
     /* Outermost first: the solid the probe leaves last goes on first. */
     for (;;) {
         int best = -1;
@@ -450,7 +463,7 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     ray nearest = *r;
     hit h;
     rgb c = t->scene->image.background;
-    if (over_budget(t, st))
+    if (over_budget(t, st) || cancel_step(st->cancel))
         return c;
     if (bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh))
         c = shade(t, &nearest, &h, depth, media, key, st);

@@ -28,7 +28,10 @@ typedef struct trace_stats {
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
-    long medium_overflow;     /* glass nested deeper than the medium stack holds */
+    long medium_overflow;     /* glass nested deeper than the medium stack holds:
+                                 the render is void ([REL-MEDIUM-1]) */
+    cancel_poll *cancel;      /* asked once per ray and light sample; NULL: never.
+                                 Once stopped, rays return the background at once */
     bvh_stats bvh;
 } trace_stats;
 
@@ -39,7 +42,10 @@ typedef struct light_setup {
     vec3 t1, t2;
 } light_setup;
 
-/* The transparent solids a ray is inside, innermost last (nested glass). */
+/* The transparent solids a ray is inside, innermost last (nested glass).
+ * A ray inside more than MEDIUM_MAX of them at once cannot be traced right:
+ * it counts in trace_stats.medium_overflow, and the render refuses the
+ * image (spec/reliability.md, [REL-MEDIUM-1]). */
 enum { MEDIUM_MAX = 16 };
 typedef struct medium_stack {
     int count;
@@ -57,6 +63,7 @@ typedef struct tracer {
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
+    long eye_overflow;        /* eye_media lost solids (each camera ray counts them) */
 } tracer;
 
 
@@ -65,6 +72,9 @@ typedef struct tracer {
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
+/* The same, its BVH build counted into cancel (NULL: never stopped):
+ * STATUS_OK, STATUS_NO_MEMORY or STATUS_CANCELLED (then nothing to free). */
+int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel);
 void tracer_free(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the

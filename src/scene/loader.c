@@ -8,6 +8,11 @@
 #include <string.h>
 #include "scene/loader.h"
 
+int loader_stop(const loader *L)
+{
+    return L->out_of_memory || diag_stop(&L->diag);
+}
+
 void loader_oom(loader *L)
 {
     if (!L->out_of_memory)
@@ -194,6 +199,8 @@ void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
     diag_init(&L->diag, &s->sources, o->sink, o->sink_user);
     L->diag.max_errors = (int)o->limits.max_errors;
     L->diag.warnings_enabled = o->warnings;
+    L->cancel = cancel_poll_make(o->cancel, o->cancel_user);
+    L->diag.cancel = &L->cancel;
     arena_init(&L->arena, &s->mem);
     env_init(&L->env, &s->mem);
     L->image_where = src_span_none();

@@ -33,6 +33,7 @@ typedef struct loader {
     int default_material;       /* index of the implicit material, -1 until needed */
     const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
+    cancel_poll cancel;         /* the options' cancel, counted; diag.cancel points here */
 } loader;
 
 /* The values of one block's properties, by keyword; transforms in order. */
@@ -95,8 +96,12 @@ int lower_quadric_in_range(const scene_prim *prim);
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 
-/* loader.c: the load's state; an out-of-memory error is reported once. */
+/* loader.c: the load's state; an out-of-memory error is reported once.
+ * L must not move after loader_init (its diag points into it). */
 void loader_init(loader *L, scene_model *s, const scene_load_opts *o);
+/* Out of memory, too many errors, or cancelled: every pass stops.  Counts
+ * one step of the cancel poll. */
+int loader_stop(const loader *L);
 void loader_free(loader *L);
 /* Asks the resolver for `name`, written in the statement at `at`, and
  * adds it to the sources as included from `at`.  Returns the file's index,

@@ -10,11 +10,6 @@
 #include "lang/parse.h"
 #include "base/suggest.h"
 
-static int stop(const loader *L)
-{
-    return L->out_of_memory || diag_too_many(&L->diag);
-}
-
 static void note_first(loader *L, src_span first)
 {
     diag_report(&L->diag, DIAG_NOTE, first, "first defined here");
@@ -218,9 +213,9 @@ static int lower_statement(loader *L, const ast *node)
 int lower_statements(loader *L, const ast *list)
 {
     int ok = 1;
-    for (const ast *node = list->first; node && !stop(L); node = node->next)
+    for (const ast *node = list->first; node && !loader_stop(L); node = node->next)
         ok &= lower_statement(L, node);
-    return ok && !stop(L);
+    return ok && !loader_stop(L);
 }
 
 int loader_lower_file(loader *L, int file, char *identity)
@@ -243,7 +238,7 @@ int loader_lower_file(loader *L, int file, char *identity)
     int ok = 0;
     const ast *includer = L->tree;
     L->tree = tree;
-    if (!tree)
+    if (!tree && !cancel_stopped(&L->cancel))
         loader_oom(L);
     else if (L->diag.errors == errors)
         ok = lower_statements(L, tree);

@@ -343,7 +343,7 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, con
     scene_mesh *mesh = &L->scene->meshes[proto->mesh];
     mesh->first_prim = L->scene->prim_count;
     int ok = 1;
-    for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
+    for (int i = 0; i < obj->triangle_count && ok && !diag_stop(&L->diag); i++) {
         scene_prim prim = *proto;
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;

@@ -213,6 +213,11 @@ typedef struct scene_load_opts {
     void *sink_user;
     scene_resolver resolver;   /* fetch NULL: `include` and `mesh` are errors */
     mem mem;                   /* zeroed: the C library's allocator */
+    /* Asked every few hundred steps of the load (tokens, statements, loop
+     * passes, OBJ lines, triangles): non-zero stops it with
+     * STATUS_CANCELLED ([REL-CANCEL-1]).  NULL: never. */
+    int (*cancel)(void *user);
+    void *cancel_user;
 } scene_load_opts;
 
 /* The default limits, warnings on, no sink, no resolver, the C library. */
@@ -220,7 +225,8 @@ void scene_load_opts_init(scene_load_opts *o);
 
 /*
  * Parses, evaluates and validates the scene in root.  Returns the scene,
- * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY);
+ * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY,
+ * STATUS_CANCELLED when o->cancel said stop);
  * on success *status is STATUS_OK.  Never returns a partially valid scene,
  * and frees everything it allocated when it fails.
  */

@@ -23,10 +23,11 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
     loader_init(&L, s, o);
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
     char *identity = file >= 0 ? mem_strdup(&m, root->identity ? root->identity : root->path) : NULL;
-    int ok = identity && loader_lower_file(&L, file, identity) && validate_scene(&L);
+    int ok = identity && loader_lower_file(&L, file, identity) && validate_scene(&L) && !cancel_stopped(&L.cancel);
     if (!identity)
         loader_oom(&L);
-    *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
+    *status = ok ? STATUS_OK : cancel_stopped(&L.cancel) ? STATUS_CANCELLED
+              : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     if (ok)
         loader_trim(&L);
     loader_free(&L);

@@ -44,7 +44,7 @@ static void warn_buried_lights(loader *L)
         vec3 center = light->position;
         if (light->kind == LIGHT_RECTANGLE)
             center = vec_add(center, vec_scale(vec_add(light->edge_u, light->edge_v), 0.5));
-        for (int j = 0; j < s->prim_count; j++) {
+        for (int j = 0; j < s->prim_count && !cancel_step(&L->cancel); j++) {
             const scene_prim *prim = &s->prims[j];
             if (s->materials[prim->material].t == 0 && scene_prim_contains(prim, center)) {
                 diag_report(&L->diag, DIAG_WARNING, light->where,

@@ -19,7 +19,7 @@
 #include "io/filewrite.h"
 #include "io/scene_file.h"
 #include "export/export_pov.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/kit.h"
 #include "verify/verify.h"
 
@@ -324,8 +324,13 @@ static int fill_kit(const char *tmp, const char *const *scenes, int count, const
                     char *why, size_t why_size)
 {
     int status = 0;
-    for (int i = 0; status == 0 && i < count; i++)
+    for (int i = 0; status == 0 && i < count; i++) {
+        if (o->cancel && o->cancel(o->cancel_user)) {
+            snprintf(why, why_size, "interrupted");
+            return STATUS_CANCELLED;
+        }
         status = build_scene(tmp, scenes[i], o, &m->scenes[i], why, why_size);
+    }
     char *readme = status == 0 ? path_of(tmp, "README", ".md") : NULL;
     char *manifest_path = status == 0 ? path_of(tmp, "manifest", ".json") : NULL;
     if (status == 0 && (!readme || !manifest_path))

@@ -21,7 +21,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include "verify/fit.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "image/metrics.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"
@@ -33,6 +33,8 @@ typedef struct verify_opts {
     int max_depth;
     int light_samples;  /* samples of every distributed light */
     int runs;           /* renders timed, the median reported; 0 or 1: one */
+    int (*cancel)(void *user); /* stops a render (render_opts.cancel); NULL: never */
+    void *cancel_user;
 } verify_opts;
 
 /* Most renders --runs may ask for. */
