@@ -179,11 +179,13 @@ typedef struct rf_limits {
     long max_depth;
     long max_loop_iterations;     /* per loop, and in total over a load */
     long max_include_depth;
-    long max_file_bytes;          /* per file read by rf_scene_load_file */
+    long max_file_bytes;          /* per file read by rf_scene_load_file (the file
+                                     resolver; a resolver of yours bounds its own) */
     long max_mesh_triangles;      /* per mesh */
     long max_primitives;          /* in all, mesh triangles included */
     long max_errors;              /* errors delivered before the load gives up */
     long max_ray_tree;            /* rays below one camera ray */
+    long max_input_bytes;         /* of all the files one load reads, each counted once */
 } rf_limits;
 
 typedef struct rf_load_options {

@@ -76,7 +76,7 @@ static int load_and_render(const char *path, const char *text, const mem *m, int
     int status;
     scene_model *s;
     if (text) {
-        scene_source root = {path, NULL, text, strlen(text)};
+        scene_source root = {path, NULL, text, strlen(text), 0};
         s = scene_load_source(&root, &o, &status);
     } else {
         s = scene_file_load_with(path, &o, &status);

@@ -70,7 +70,7 @@ END_TEST
 START_TEST(test_verify_scene_overrides)
 {
     scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
-    verify_opts o = {16, 12, 3, 1, 0, 3}; /* three timed renders: rays of one */
+    verify_opts o = {16, 12, 3, 1, 0, 3, NULL, NULL}; /* three timed renders: rays of one */
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "a", &o, &r), 0);
     ck_assert_int_eq(r.verdict, VERIFY_PASS);

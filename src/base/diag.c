@@ -62,7 +62,9 @@ static void emit(const diag *d, diag_level level, const source_file *f, size_t o
 static void emit_include_chain(const diag *d, const source_file *f)
 {
     const source_set *set = d->sources;
-    while (f->included_from.file >= 0 && f->included_from.file < set->count) {
+    /* A chain longer than the files there are would be a loop: defensive. */
+    for (int steps = 0; steps < set->count && f->included_from.file >= 0 && f->included_from.file < set->count;
+         steps++) {
         const source_file *parent = set->files[f->included_from.file];
         emit(d, DIAG_NOTE, parent, f->included_from.begin,
              f->is_mesh ? "in the mesh read here" : "included from here", 0, 0);

@@ -187,6 +187,7 @@ static const limit_flag limit_flags[] = {
     LIMIT("--max-primitives", max_primitives),
     LIMIT("--max-errors", max_errors),
     LIMIT("--max-ray-tree", max_ray_tree),
+    LIMIT("--max-input-size", max_input_bytes),
 };
 
 /* The hard ceiling of every limit: far beyond any real scene, and low

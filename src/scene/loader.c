@@ -159,6 +159,70 @@ void loader_trim(loader *L)
     s->meshes = p;
 }
 
+static const char *file_identity(const void *loader_p, int i)
+{
+    return ((const loader *)loader_p)->files[i].identity;
+}
+
+int loader_add_file(loader *L, int file, const char *identity, size_t len)
+{
+    if (file >= L->files_cap) {
+        int cap = L->files_cap ? 2 * L->files_cap : 8;
+        while (cap <= file)
+            cap *= 2;
+        loader_file *files = mem_resize_array(L->mem, L->files, (size_t)L->files_cap, (size_t)cap, sizeof *files);
+        if (!files) {
+            loader_oom(L);
+            return 0;
+        }
+        memset(files + L->files_cap, 0, (size_t)(cap - L->files_cap) * sizeof *files);
+        L->files = files;
+        L->files_cap = cap;
+    }
+    if (!(L->files[file].identity = mem_strdup(L->mem, identity)) || !name_index_add(&L->file_names, file)) {
+        loader_oom(L);
+        return 0;
+    }
+    L->input_bytes += (long)len;
+    return 1;
+}
+
+/* The index of the file read before under identity, or -1.  It is moved
+ * to be included from at, so that messages name the include that read it
+ * this time, unless it is being lowered now (a cycle: its chain stays). */
+static int known_file(loader *L, const char *identity, src_span at)
+{
+    int file = name_index_find(&L->file_names, identity);
+    for (int i = 0; file >= 0 && i < L->include_depth; i++)
+        if (strcmp(L->include_stack[i], identity) == 0)
+            return file;
+    if (file >= 0)
+        L->scene->sources.files[file]->included_from = at;
+    return file;
+}
+
+/* A new file: counted against --max-input-size, then copied. */
+static int new_file(loader *L, const scene_source *src, const char *name, const char *identity, src_span at,
+                    char *why, size_t why_size)
+{
+    long max = L->limits->max_input_bytes;
+    if (src->known || !src->text) {
+        snprintf(why, why_size, "cannot read '%s': the resolver gave no text", name);
+        return -1;
+    }
+    if ((double)L->input_bytes + (double)src->len > (double)max) {
+        snprintf(why, why_size, "'%s' (%zu bytes) would bring the bytes this load reads to %.0f, over the limit of %ld "
+                 "(--max-input-size)", name, src->len, (double)L->input_bytes + (double)src->len, max);
+        return -1;
+    }
+    int file = source_set_add(&L->scene->sources, src->path ? src->path : name, src->text, src->len, at);
+    if (file < 0) {
+        loader_oom(L);
+        return -1;
+    }
+    return loader_add_file(L, file, identity, src->len) ? file : -1;
+}
+
 int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
 {
     const scene_resolver *r = L->resolver;
@@ -176,17 +240,22 @@ int loader_fetch(loader *L, const char *name, src_span at, char **identity, char
             loader_oom(L);
         return -1;
     }
-    int file = source_set_add(&L->scene->sources, src.path ? src.path : name, src.text, src.len, at);
-    if (identity && file >= 0) {
-        *identity = mem_strdup(L->mem, src.identity ? src.identity : L->scene->sources.files[file]->path);
-        if (!*identity)
-            file = -1;
+    const char *id = src.identity ? src.identity : src.path ? src.path : name;
+    int file = known_file(L, id, at);
+    if (file < 0)
+        file = new_file(L, &src, name, id, at, why, why_size);
+    if (identity && file >= 0 && !(*identity = mem_strdup(L->mem, id))) {
+        loader_oom(L);
+        file = -1;
     }
     if (r->release)
         r->release(r->user, &src);
-    if (file < 0)
-        loader_oom(L);
     return file;
+}
+
+static const char *material_name(const void *scene, int i)
+{
+    return ((const scene_model *)scene)->materials[i].name;
 }
 
 void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
@@ -203,6 +272,8 @@ void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
     L->diag.cancel = &L->cancel;
     arena_init(&L->arena, &s->mem);
     env_init(&L->env, &s->mem);
+    name_index_init(&L->material_names, material_name, s, &s->mem);
+    name_index_init(&L->file_names, file_identity, L, &s->mem);
     L->image_where = src_span_none();
     L->camera_where = src_span_none();
     L->default_material = -1;
@@ -212,6 +283,11 @@ void loader_free(loader *L)
 {
     arena_free(&L->arena);
     env_free(&L->env);
+    name_index_free(&L->material_names);
+    name_index_free(&L->file_names);
+    for (int i = 0; i < L->files_cap; i++)
+        mem_free_string(L->mem, L->files[i].identity);
+    mem_free(L->mem, L->files, (size_t)L->files_cap * sizeof *L->files);
     for (int i = 0; i < L->include_depth; i++)
         mem_free_string(L->mem, L->include_stack[i]);
     mem_free(L->mem, L->include_stack, (size_t)L->include_cap * sizeof *L->include_stack);

@@ -15,6 +15,13 @@
 #include "scene/scene.h"
 #include "lang/schema.h"
 
+/* What the load knows of one source file, by its index in the sources. */
+typedef struct loader_file {
+    char *identity;             /* the resolver's identity of it (freed with the loader) */
+    ast *tree;                  /* its statements once parsed (kept: parsed once per load) */
+    int parse_failed;           /* parsing it reported errors: it is not lowered again */
+} loader_file;
+
 typedef struct loader {
     scene_model *scene;            /* being filled; owns the sources */
     const scene_limits *limits;
@@ -23,8 +30,15 @@ typedef struct loader {
     diag diag;
     arena arena;                /* syntax trees of every file read */
     env env;                    /* constants in scope */
+    name_index material_names;  /* over scene->materials, by name (base/names.h) */
     char **include_stack;       /* identities of the files being lowered, outermost first */
     int include_depth, include_cap;
+    int nesting;                /* loops and includes open, over every file (LOADER_MAX_NESTING) */
+    loader_file *files;         /* per source file */
+    int files_cap;
+    name_index file_names;      /* over files[].identity */
+    long input_bytes;           /* of every file read, each once (--max-input-size) */
+    int too_deep;               /* the nesting limit was passed: no "in the pass" notes (one per level) */
     long loop_iterations;       /* over the whole load */
     int *material_uses;         /* per scene material: how many primitives use it */
     int uses_cap;               /* entries allocated in material_uses */
@@ -35,6 +49,13 @@ typedef struct loader {
     int out_of_memory;
     cancel_poll cancel;         /* the options' cancel, counted; diag.cancel points here */
 } loader;
+
+/* Loops and includes nest at most this deep in all, counted across files
+ * ([LANG-LIMIT-NEST-2]): lowering recurses once per level, so the bound
+ * keeps the C stack of a load small and known whatever the input (a few
+ * hundred bytes a level), where a bound per file let a chain of files
+ * each deep within its own limit overflow it. */
+enum { LOADER_MAX_NESTING = 256 };
 
 /* The values of one block's properties, by keyword; transforms in order. */
 enum { PROPS_MAX_XFORMS = 64 };
@@ -104,11 +125,16 @@ void loader_init(loader *L, scene_model *s, const scene_load_opts *o);
 int loader_stop(const loader *L);
 void loader_free(loader *L);
 /* Asks the resolver for `name`, written in the statement at `at`, and
- * adds it to the sources as included from `at`.  Returns the file's index,
- * with *identity a copy of its identity (free with mem_free_string) when
- * identity is not NULL; or -1 with the resolver's reason in why, not
- * reported, unless memory ran out (then reported, the flag set). */
+ * adds it to the sources as included from `at` (a file already read in
+ * this load is not copied again: its index is returned, its included_from
+ * moved to `at`).  Returns the file's index, with *identity a copy of its
+ * identity (free with mem_free_string) when identity is not NULL; or -1
+ * with the reason in why (the resolver's, or --max-input-size passed),
+ * not reported, unless memory ran out (then reported, the flag set). */
 int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size);
+/* Records file (just added to the sources) under identity for the rest of
+ * the load, its len bytes counted; 0 after reporting when out of memory. */
+int loader_add_file(loader *L, int file, const char *identity, size_t len);
 /* Shrinks the scene's arrays to their counts (the load is over). */
 void loader_trim(loader *L);
 void loader_oom(loader *L);

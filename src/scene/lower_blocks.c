@@ -328,12 +328,9 @@ static int material_props(loader *L, const ast *block, scene_material *m)
     return ok;
 }
 
-static int find_material(const scene_model *s, const char *name)
+static int find_material(loader *L, const char *name)
 {
-    for (int i = 0; i < s->material_count; i++)
-        if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
-            return i;
-    return -1;
+    return name_index_find(&L->material_names, name);
 }
 
 static char *copy_name(loader *L, const char *name)
@@ -346,7 +343,7 @@ static char *copy_name(loader *L, const char *name)
 
 int lower_material_def(loader *L, const ast *block)
 {
-    int previous = find_material(L->scene, block->text);
+    int previous = find_material(L, block->text);
     if (previous >= 0) {
         int line, col;
         src_span first = L->scene->materials[previous].where;
@@ -364,6 +361,10 @@ int lower_material_def(loader *L, const ast *block)
     if (!slot || !(m.name = copy_name(L, block->text)))
         return 0;
     *slot = m;
+    if (!name_index_add(&L->material_names, L->scene->material_count - 1)) {
+        loader_oom(L);
+        return 0;
+    }
     return 1;
 }
 
@@ -432,7 +433,7 @@ static int report_defined_later(loader *L, const char *name, src_span at)
 
 static int named_material(loader *L, const char *name, src_span at)
 {
-    int index = find_material(L->scene, name);
+    int index = find_material(L, name);
     if (index >= 0)
         return index;
     const char *names[256];

@@ -20,6 +20,7 @@ scene_limits scene_default_limits(void)
     l.max_primitives = 20L * 1000 * 1000;
     l.max_errors = 20;
     l.max_ray_tree = 1000000;
+    l.max_input_bytes = 256L * 1024 * 1024;
     return l;
 }
 

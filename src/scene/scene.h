@@ -177,6 +177,7 @@ typedef struct scene_limits {
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
     long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
+    long max_input_bytes;      /* of every file a load reads, each counted once */
 } scene_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
@@ -188,6 +189,8 @@ typedef struct scene_source {
     const char *identity;  /* the same file under any name (include cycles); NULL: path */
     const char *text;
     size_t len;
+    int known;             /* 1: the file this resolver delivered before under identity,
+                              not read again (text NULL); the load reuses its copy */
 } scene_source;
 
 /*
@@ -197,7 +200,11 @@ typedef struct scene_source {
  * with a one-line reason in why (reported as an error at the statement;
  * STATUS_NO_MEMORY ends the load as out of memory).  The loader copies the
  * text and names, then calls release (when not NULL) with the same *out.
- * The resolver enforces its own limits (io/scene_file.c: --max-file-size).
+ * A file is read once per load ([REL-INPUT-1]): the loader keeps one copy
+ * per identity, and a resolver may answer a file it gave before with its
+ * identity and `known` set instead of the text.  The resolver enforces its
+ * own limits (io/scene_file.c: --max-file-size); the loader bounds the
+ * bytes of all files together (--max-input-size).
  */
 typedef struct scene_resolver {
     int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,

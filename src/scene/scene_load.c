@@ -21,11 +21,18 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
     s->mem = m;
     loader_scene_defaults(s);
     loader_init(&L, s, o);
+    const char *root_id = root->identity ? root->identity : root->path;
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
-    char *identity = file >= 0 ? mem_strdup(&m, root->identity ? root->identity : root->path) : NULL;
-    int ok = identity && loader_lower_file(&L, file, identity) && validate_scene(&L) && !cancel_stopped(&L.cancel);
+    char *identity = file >= 0 && loader_add_file(&L, file, root_id, root->len) ? mem_strdup(&m, root_id) : NULL;
+    int ok = 0;
     if (!identity)
         loader_oom(&L);
+    else if (L.input_bytes > o->limits.max_input_bytes) {
+        diag_report(&L.diag, DIAG_ERROR, src_span_none(), "'%s' is %zu bytes, over the limit of %ld bytes a load reads "
+                    "(--max-input-size)", root->path, root->len, o->limits.max_input_bytes);
+        mem_free_string(&m, identity);
+    } else
+        ok = loader_lower_file(&L, file, identity) && validate_scene(&L) && !cancel_stopped(&L.cancel);
     *status = ok ? STATUS_OK : cancel_stopped(&L.cancel) ? STATUS_CANCELLED
               : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     if (ok)
