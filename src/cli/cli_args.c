@@ -41,6 +41,10 @@ int cli_usage_error(const char *fmt, ...)
     return STATUS_USAGE;
 }
 
+/* The hard ceiling of every limit: far beyond any real scene, and low
+ * enough that the products computed from them cannot overflow. */
+enum { LIMIT_CEILING = 1000000000 };
+
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out)
 {
     char *end;
@@ -86,20 +90,44 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
     return 1;
 }
 
+/* The sizing options take any value up to the ceiling here; they are
+ * checked against the limits once every option is read
+ * (cli_check_sizes), so that `--width 20000 --max-width 20000` and the
+ * reverse order mean the same ([REL-CLI-1]). */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
+    (void)lim;
     if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
     if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
     if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
     if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
     return -1;
+}
+
+/* One sizing option against its limit; 0 after the usage error. */
+static int within(const char *option, long value, long limit, const char *flag)
+{
+    if (value <= limit)
+        return 1;
+    cli_usage_error("%s %ld is over the limit of %ld (raise it with %s)", option, value, limit, flag);
+    return 0;
+}
+
+int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim)
+{
+    int ok = within("--width", width, lim->max_width, "--max-width") &&
+             within("--height", height, lim->max_height, "--max-height") &&
+             within("--samples", samples, lim->max_samples, "--max-samples") &&
+             within("--light-samples", light_samples, lim->max_light_samples, "--max-light-samples") &&
+             within("--max-depth", max_depth, lim->max_depth, "--max-depth-limit");
+    return ok ? 0 : STATUS_USAGE;
 }
 
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
@@ -190,9 +218,6 @@ static const limit_flag limit_flags[] = {
     LIMIT("--max-input-size", max_input_bytes),
 };
 
-/* The hard ceiling of every limit: far beyond any real scene, and low
- * enough that the products computed from them cannot overflow. */
-enum { LIMIT_CEILING = 1000000000 };
 
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 {
@@ -208,7 +233,9 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
             cli_usage_error("%s needs a value", argv[i]);
             return -1;
         }
-        long lo = strcmp(argv[i], "--max-errors") == 0 ? 1 : 0;
+        /* 0 errors or a ray budget of 0 would mean nothing can be shown or
+         * traced: refused ([REL-RAYTREE-2]). */
+        long lo = strcmp(argv[i], "--max-errors") == 0 || strcmp(argv[i], "--max-ray-tree") == 0 ? 1 : 0;
         return cli_parse_long(argv[i], argv[i + 1], lo, LIMIT_CEILING, field) ? 2 : -1;
     }
     return 0;
@@ -217,16 +244,17 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
+    (void)lim;
     if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
     if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
     if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
     if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
     return -1;
 }
 

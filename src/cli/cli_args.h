@@ -43,8 +43,13 @@ int cli_take_value(int argc, char **argv, int *i, const char **value);
 int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
- * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
+ * --light-samples) into o; 1 consumed, 0 error, -1 not one.  They are
+ * checked against lim only by cli_check_sizes, after every option. */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
+
+/* The sizing options given (0: not given) against the limits: 0, or
+ * STATUS_USAGE after the error naming the flag that raises the limit. */
+int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
 
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */
@@ -80,8 +85,8 @@ int cli_usage_error(const char *fmt, ...)
 
 /*
  * The view options verify and oracle share: --width, --height, --samples,
- * --max-depth and --light-samples (light only when allow_light), bounded
- * by the input limits lim.  Returns 1 when argv[*i] was one of them (its
+ * --max-depth and --light-samples (light only when allow_light), checked
+ * against the limits by cli_check_sizes.  Returns 1 when argv[*i] was one of them (its
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */

@@ -54,6 +54,10 @@ static int parse_args(oracle_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("oracle", oracle_help, argc, argv, &a->scene, &a->input, oracle_option, a);
     if (status != 0)
         return status;
+    const verify_opts *v = &a->view;
+    if ((status = cli_check_sizes(v->width, v->height, v->samples, v->light_samples, v->max_depth,
+                                  &a->scene.limits)) != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("oracle: no output given (-o EXACT)");
     return 0;

@@ -71,8 +71,10 @@ static int finish_args(verify_args *a)
         return cli_usage_error("verify: no scene given");
     if (a->tsv_path && !a->sweep_text)
         return cli_usage_error("verify: --tsv needs --sweep");
-    if (!a->sweep_text)
-        return 0;
+    const verify_opts *v = &a->view;
+    int status = cli_check_sizes(v->width, v->height, v->samples, v->light_samples, v->max_depth, &a->scene.limits);
+    if (status != 0 || !a->sweep_text)
+        return status;
     int pixel = strncmp(a->sweep_text, "pixel-", 6) == 0;
     if (pixel ? a->view.samples != 0 : a->view.light_samples != 0)
         return cli_usage_error("verify: --sweep %s and --%s both set the %s samples", a->sweep_text,

@@ -275,6 +275,7 @@ void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
     name_index_init(&L->material_names, material_name, s, &s->mem);
     name_index_init(&L->file_names, file_identity, L, &s->mem);
     L->image_where = src_span_none();
+    L->max_depth_where = src_span_none();
     L->camera_where = src_span_none();
     L->default_material = -1;
 }

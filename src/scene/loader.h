@@ -43,6 +43,7 @@ typedef struct loader {
     int *material_uses;         /* per scene material: how many primitives use it */
     int uses_cap;               /* entries allocated in material_uses */
     src_span image_where;       /* first `image` block (file -1: none yet) */
+    src_span max_depth_where;   /* its max_depth (or the block; file -1: none) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
     const ast *tree;            /* statements of the file being lowered (for "defined later") */

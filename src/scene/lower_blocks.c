@@ -92,6 +92,7 @@ int lower_image(loader *L, const ast *block)
     im->height = (int)h;
     im->samples = (int)k;
     im->max_depth = (int)depth;
+    L->max_depth_where = props_value_span(&p, KW_MAX_DEPTH);
     return ok;
 }
 

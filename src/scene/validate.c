@@ -56,6 +56,41 @@ static void warn_buried_lights(loader *L)
     }
 }
 
+/* The most rays one camera ray can branch into at the scene's max_depth:
+ * a hit on a material that both reflects (Ks > 0) and transmits (t > 0)
+ * spawns two rays, one that does either spawns one, so the tree holds at
+ * most sum over d < max_depth of b^d rays, b the largest branching of a
+ * material in use (the tracer's count, trace.c's over_budget).  When that
+ * passes --max-ray-tree the render may stop with an error: said at load,
+ * so `check` says it too ([REL-RAYTREE-1]).  Not an error: rays that
+ * leave the scene end their branch early. */
+static void warn_ray_tree(loader *L)
+{
+    const scene_model *s = L->scene;
+    long limit = L->limits->max_ray_tree;
+    int branching = 0, depth = s->image.max_depth;
+    for (int i = 0; i < s->material_count; i++) {
+        const scene_material *m = &s->materials[i];
+        int b = (vec_max_component(m->ks) > 0) + (m->t > 0);
+        if (material_used_by_scene(L, i) && b > branching)
+            branching = b;
+    }
+    if (limit <= 0 || depth <= 1 || branching == 0)
+        return;
+    /* 2^depth - 1 or depth rays; in double, as 2^1000 is. */
+    double rays = branching == 2 ? ldexp(1.0, depth) - 1 : (double)depth;
+    if (rays <= (double)limit)
+        return;
+    src_span at = L->max_depth_where.file >= 0 ? L->max_depth_where : L->image_where;
+    if (branching == 2)
+        diag_report(&L->diag, DIAG_WARNING, at, "with max_depth %d and a material that both reflects and transmits, "
+                    "one camera ray may branch into 2^%d - 1 rays, over --max-ray-tree %ld: the render stops at the "
+                    "first pixel that passes it", depth, depth, limit);
+    else
+        diag_report(&L->diag, DIAG_WARNING, at, "with max_depth %d one camera ray may be followed by %d rays, over "
+                    "--max-ray-tree %ld: the render stops at the first pixel that passes it", depth, depth, limit);
+}
+
 static void record_features(scene_model *s, const loader *L)
 {
     scene_features *f = &s->features;
@@ -88,6 +123,7 @@ int validate_scene(loader *L)
     warn_unused_materials(L);
     warn_energy(L);
     warn_buried_lights(L);
+    warn_ray_tree(L);
     record_features(s, L);
     return 1;
 }

@@ -465,6 +465,12 @@ void verify_json_metrics(FILE *fp, const image_metrics *m, double tolerance)
     json_num(fp, "tolerance", tolerance);
     json_key(fp, "worst", 0);
     fprintf(fp, "[%d, %d]", m->worst_x, m->worst_y);
+    json_long(fp, "nonfinite", m->nonfinite);
+    json_key(fp, "first_nonfinite", 0);
+    if (m->nonfinite)
+        fprintf(fp, "[%d, %d]", m->nonfinite_x, m->nonfinite_y);
+    else
+        fputs("null", fp);
 }
 
 static const char *verdict_name(verify_verdict v)
@@ -671,7 +677,9 @@ int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mas
     size_t n = (size_t)a->width * (size_t)a->height;
     for (size_t p = 0; status == STATUS_OK && p < n; p++)
         for (int c = 0; c < 3; c++)
-            out->rgb[3 * p + c] = excluded_at(mask, p) ? 0 : fabs(a->rgb[3 * p + c] - b->rgb[3 * p + c]);
+            out->rgb[3 * p + c] = excluded_at(mask, p) ? 0
+                                  : !metrics_pixel_finite(a, b, p) ? VERIFY_MAP_NONFINITE
+                                                                   : fabs(a->rgb[3 * p + c] - b->rgb[3 * p + c]);
     return status;
 }
 
@@ -685,11 +693,13 @@ int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mas
     size_t n = (size_t)a->width * (size_t)a->height;
     double max_abs = 0;
     for (size_t p = 0; p < n; p++)
-        if (!excluded_at(mask, p))
+        if (!excluded_at(mask, p) && metrics_pixel_finite(a, b, p))
             max_abs = fmax(max_abs, pixel_error(a, b, p));
     for (size_t p = 0; p < n; p++) {
-        rgb c = excluded_at(mask, p) ? vec_make(0, 0.5, 0.5)
-                                     : verify_map_colour(max_abs > 0 ? pixel_error(a, b, p) / max_abs : 0, style);
+        rgb c = excluded_at(mask, p)                ? vec_make(0, 0.5, 0.5)
+                : !metrics_pixel_finite(a, b, p) ? vec_make(0, 1, 0)
+                                                  : verify_map_colour(max_abs > 0 ? pixel_error(a, b, p) / max_abs : 0,
+                                                                      style);
         out->rgb[3 * p] = srgb_to_linear(c.x);
         out->rgb[3 * p + 1] = srgb_to_linear(c.y);
         out->rgb[3 * p + 2] = srgb_to_linear(c.z);
