@@ -186,6 +186,8 @@ typedef struct rf_limits {
     long max_errors;              /* errors delivered before the load gives up */
     long max_ray_tree;            /* rays below one camera ray */
     long max_input_bytes;         /* of all the files one load reads, each counted once */
+    long max_memory_mb;           /* MiB a scene is estimated to need, loaded and
+                                     rendered (spec/reliability.md) */
 } rf_limits;
 
 typedef struct rf_load_options {

@@ -388,13 +388,22 @@ END_TEST
 /* The exact text for a tiny case (binary fractions print exactly). */
 START_TEST(test_verify_json_metrics_exact_text)
 {
-    image_metrics im = {0.5, 0.25, 1, HUGE_VAL, 2, 3, 4, 1, 1, 2};
+    image_metrics im = {0.5, 0.25, 1, HUGE_VAL, 2, 3, 4, 1, 1, 2, 0, -1, -1};
     membuf m;
     mem_open(&m);
     verify_json_metrics(m.fp, &im, 0.125);
     ck_assert_str_eq(mem_close(&m), "\"compared\": 4, \"excluded\": 1, \"max_abs\": 0.5, \"rms\": 0.25, "
                                     "\"max_rel\": 1, \"psnr\": null, \"peak\": 2, \"over\": 3, "
-                                    "\"tolerance\": 0.125, \"worst\": [1, 2]");
+                                    "\"tolerance\": 0.125, \"worst\": [1, 2], \"nonfinite\": 0, "
+                                    "\"first_nonfinite\": null");
+    free(m.text);
+    /* [REL-NONFINITE-1] the count and the first position of non-finite pixels. */
+    im.nonfinite = 2;
+    im.nonfinite_x = 3;
+    im.nonfinite_y = 0;
+    mem_open(&m);
+    verify_json_metrics(m.fp, &im, 0.125);
+    ck_assert_msg(strstr(mem_close(&m), "\"nonfinite\": 2, \"first_nonfinite\": [3, 0]") != NULL, "%s", m.text);
     free(m.text);
 }
 END_TEST

@@ -216,6 +216,7 @@ static const limit_flag limit_flags[] = {
     LIMIT("--max-errors", max_errors),
     LIMIT("--max-ray-tree", max_ray_tree),
     LIMIT("--max-input-size", max_input_bytes),
+    LIMIT("--max-memory", max_memory_mb),
 };
 
 

@@ -284,10 +284,15 @@ int cli_render(int argc, char **argv)
         return status;
     rf_scene_info info;
     rf_scene_get_info(scene, &info);
-    if ((double)(a.render.width ? a.render.width : info.width) * (a.render.height ? a.render.height : info.height) >
-        (double)a.scene.limits.max_pixels) {
+    double pixels = (double)(a.render.width ? a.render.width : info.width) *
+                    (a.render.height ? a.render.height : info.height);
+    double need = scene_memory_estimate(info.primitives, pixels, 0);
+    if (pixels > (double)a.scene.limits.max_pixels || need > (double)a.scene.limits.max_memory_mb * 1048576.0) {
         rf_scene_free(scene);
-        return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
+        if (pixels > (double)a.scene.limits.max_pixels)
+            return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
+        return cli_usage_error("render: the render would need about %.0f MiB, over --max-memory %ld", need / 1048576.0,
+                               a.scene.limits.max_memory_mb);
     }
     status = render_and_write(&a, scene);
     rf_scene_free(scene);

@@ -4,6 +4,7 @@
  * every pass checks.
  */
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "scene/loader.h"
@@ -49,7 +50,8 @@ static int grow(const mem *m, void **items, int *cap, int count, size_t size, lo
         return 1;
     if (count >= limit || count >= INT_MAX / 2)
         return 0;
-    int next = *cap ? 2 * *cap : 16;
+    long want = *cap ? 2L * *cap : 16;
+    int next = (int)(want < limit ? want : limit);
     void *grown = mem_resize_array(m, *items, (size_t)*cap, (size_t)next, size);
     if (!grown)
         return 0;
@@ -58,9 +60,30 @@ static int grow(const mem *m, void **items, int *cap, int count, size_t size, lo
     return 1;
 }
 
+double loader_memory_extra(const loader *L)
+{
+    return (double)L->input_bytes + (double)L->arena.bytes;
+}
+
+/* The primitives that fit in --max-memory beside what the load holds
+ * already and the image (scene_memory_estimate), the array growing from
+ * its capacity now: while it grows, the old block and the new one are
+ * both held. */
+static long prims_within_memory(const loader *L)
+{
+    const scene_model *s = L->scene;
+    double budget = (double)L->limits->max_memory_mb * 1048576.0;
+    double left = budget - scene_memory_estimate(0, (double)s->image.width * s->image.height, loader_memory_extra(L));
+    double n = left / (double)SCENE_BYTES_PER_PRIM, growing = left / (double)sizeof(scene_prim) - s->prim_cap;
+    n = floor(n < growing ? n : growing);
+    return n <= 0 ? 0 : n < (double)LONG_MAX ? (long)n : LONG_MAX;
+}
+
 scene_prim *loader_add_prim(loader *L, src_span where)
 {
     scene_model *s = L->scene;
+    if (L->prims_refused)
+        return NULL;
     if (s->prim_count >= L->limits->max_primitives) {
         if (s->prim_count == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
@@ -68,8 +91,18 @@ scene_prim *loader_add_prim(loader *L, src_span where)
         s->prim_count++;
         return NULL;
     }
+    /* Checked when the array is about to grow: that is when memory goes. */
+    long fit = s->prim_count == s->prim_cap ? prims_within_memory(L) : LONG_MAX;
+    if (s->prim_count >= fit) {
+        diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives would need over --max-memory %ld MiB "
+                    "(about %zu bytes each, spec/reliability.md)", fit, L->limits->max_memory_mb,
+                    (size_t)SCENE_BYTES_PER_PRIM);
+        L->prims_refused = 1;
+        return NULL;
+    }
+    long limit = fit < L->limits->max_primitives ? fit : L->limits->max_primitives;
     void *items = s->prims;
-    if (!grow(L->mem, &items, &s->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
+    if (!grow(L->mem, &items, &s->prim_cap, s->prim_count, sizeof *s->prims, limit)) {
         loader_oom(L);
         return NULL;
     }

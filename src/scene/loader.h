@@ -38,6 +38,7 @@ typedef struct loader {
     int files_cap;
     name_index file_names;      /* over files[].identity */
     long input_bytes;           /* of every file read, each once (--max-input-size) */
+    int prims_refused;          /* --max-memory was passed: no more primitives, no more errors */
     int too_deep;               /* the nesting limit was passed: no "in the pass" notes (one per level) */
     long loop_iterations;       /* over the whole load */
     int *material_uses;         /* per scene material: how many primitives use it */
@@ -141,6 +142,9 @@ void loader_trim(loader *L);
 void loader_oom(loader *L);
 /* The defaults of spec/language.md for what a scene does not say. */
 void loader_scene_defaults(scene_model *s);
+/* The bytes the load holds beside its primitives (texts, syntax trees),
+ * for scene_memory_estimate. */
+double loader_memory_extra(const loader *L);
 /* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
 scene_prim *loader_add_prim(loader *L, src_span where);
 scene_light *loader_add_light(loader *L);

@@ -178,10 +178,26 @@ typedef struct scene_limits {
     long max_errors;           /* diagnostics printed before giving up */
     long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
     long max_input_bytes;      /* of every file a load reads, each counted once */
+    long max_memory_mb;        /* the estimate of scene_memory_estimate, in MiB */
 } scene_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
 scene_limits scene_default_limits(void);
+
+/*
+ * The bytes a scene of prims primitives and pixels pixels is estimated to
+ * hold at its peak, loaded and rendered, beyond extra (the texts and
+ * syntax trees of its load): SCENE_BYTES_PER_PRIM a primitive (the
+ * primitive, the acceleration structure and the growth of the arrays) and
+ * SCENE_BYTES_PER_PIXEL a pixel (the image in double and its encoding),
+ * and SCENE_BYTES_FIXED for the small tables of a load.
+ * Measured against real peaks in spec/reliability.md ([REL-MEMORY-1]);
+ * a load is refused past --max-memory before it allocates that much.
+ */
+#define SCENE_BYTES_PER_PRIM (sizeof(scene_prim) + 200)
+#define SCENE_BYTES_PER_PIXEL 40
+#define SCENE_BYTES_FIXED (256.0 * 1024)
+double scene_memory_estimate(double prims, double pixels, double extra);
 
 /* A file's text as the loader receives it. */
 typedef struct scene_source {

@@ -112,9 +112,26 @@ static void record_features(scene_model *s, const loader *L)
                                                                scene_prim_self_shadows(&s->prims[0])));
 }
 
+/* The whole scene against --max-memory, now that the image is known. */
+static int check_memory(loader *L)
+{
+    const scene_model *s = L->scene;
+    double need = scene_memory_estimate(s->prim_count, (double)s->image.width * s->image.height,
+                                        loader_memory_extra(L));
+    if (need <= (double)L->limits->max_memory_mb * 1048576.0)
+        return 1;
+    src_span at = L->image_where.file >= 0 ? L->image_where : src_span_none();
+    diag_report(&L->diag, DIAG_ERROR, at, "this scene would need about %.0f MiB to load and render (%d primitives, "
+                "%dx%d pixels), over --max-memory %ld MiB", need / 1048576.0, s->prim_count, s->image.width,
+                s->image.height, L->limits->max_memory_mb);
+    return 0;
+}
+
 int validate_scene(loader *L)
 {
     scene_model *s = L->scene;
+    if (!check_memory(L))
+        return 0;
     if (s->prim_count == 0) {
         src_span whole = {0, 0, 0};
         diag_report(&L->diag, DIAG_ERROR, whole, "the scene has no primitives: nothing to render");
