@@ -282,7 +282,10 @@ crosscheck: kit
 # instrumentation in build/fuzz, seeds the corpus from the scenes and the
 # bad-input corpus, and runs.  Crashes are written to build/fuzz/ as
 # crash-*; each one becomes a file under tests/fuzz-regressions/.
+# FUZZ_TARGET=image fuzzes the image readers instead (tests/fuzz/fuzz_image.c,
+# seeded with tiny images refray renders in each format).
 FUZZ_SECONDS ?= 60
+FUZZ_TARGET ?= scene
 FUZZ_JOBS ?= 1
 FUZZ_DIR := build/fuzz
 FUZZ_DEBS := clang libclang-rt-14-dev
@@ -295,8 +298,17 @@ fuzz:
 	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
 	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
 
-fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
-	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
+fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_$(FUZZ_TARGET).o $(if $(filter image,$(FUZZ_TARGET)),$(REFRAY))
+	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_$(FUZZ_TARGET) $(BUILD)/obj/tests/fuzz/fuzz_$(FUZZ_TARGET).o $(LIBRARY) $(ALL_LIBS)
+ifeq ($(FUZZ_TARGET),image)
+	$(Q)mkdir -p $(BUILD)/corpus-image
+	$(Q)n=0; for f in png exr pfm ppm; do \
+	  ASAN_OPTIONS=detect_leaks=0 $(REFRAY) render scenes/analytic/ambient_only.scene --width 4 --height 3 -q \
+	    -o $(BUILD)/seed.$$f 2>/dev/null && { printf "\\00$$n"; cat $(BUILD)/seed.$$f; } > $(BUILD)/corpus-image/seed-$$f; \
+	  n=$$((n + 1)); done
+	cd $(BUILD) && ./fuzz_image -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
+	  -max_len=65536 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus-image
+else
 	$(Q)mkdir -p $(BUILD)/corpus
 	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
 	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
@@ -304,6 +316,7 @@ fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
 	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
 	cd $(BUILD) && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
 	  -dict=scene.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus
+endif
 
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \

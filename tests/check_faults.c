@@ -841,8 +841,9 @@ END_TEST
 
 /* [REL-IMAGE-1] compare refuses images of different sizes on their
  * headers: a PFM header claiming 16384 x 16384 with no data against a
- * 1 x 1 image is "differ in size" at once (before: both decoded first, the
- * large one failing on its missing data). */
+ * 1 x 1 image is "differ in size" at once, and as a --mask "not the 1x1
+ * expected" (before: both decoded first, the large one failing on its
+ * missing data). */
 START_TEST(test_faults_compare_sizes_before_decoding)
 {
     char big[512], small[512];
@@ -859,6 +860,10 @@ START_TEST(test_faults_compare_sizes_before_decoding)
     r = run(NULL, defaults);
     ck_assert_int_eq(r.status, 65);
     ASSERT_ERR_HAS(r, "the image is 16384x16384, over --max-pixels 67108864");
+    const char *mask[] = {"compare", small, small, "--mask", big, NULL};
+    r = run(NULL, mask);
+    ck_assert_int_eq(r.status, 65);
+    ASSERT_ERR_HAS(r, "the image is 16384x16384, not the 1x1 expected");
     remove_work_dir();
 }
 END_TEST

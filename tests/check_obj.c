@@ -471,6 +471,15 @@ START_TEST(test_obj_parse_hostile_sizes)
                      "is too long (more than 255 characters)");
     run_free(&r);
     free(text);
+    /* [REL-INPUT-3] A 'v' of a million values is refused at the eighth
+     * (x y z and w or r g b make at most 7; before: accepted whole). */
+    text = repeat("v", " 0", 1000000, "\n");
+    run_parse(&r, text, 1000);
+    ck_assert_int_eq(r.ok, 0);
+    ck_assert_str_eq(first_line(&r, buf, sizeof buf),
+                     "m.obj:1:17: error: 'v' takes at most 7 numbers (x y z, then w or r g b)");
+    run_free(&r);
+    free(text);
     /* A 1 MB keyword of control bytes and 100000 continuations in a row. */
     text = repeat("", "\x01", 1000000, "\n");
     run_parse(&r, text, 1000);

@@ -68,12 +68,14 @@ int img_check_header(long width, long height, const img_read_opts *o, char *err,
     long max = o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS;
     if (width < 1 || height < 1 || width > INT_MAX || height > INT_MAX)
         return img_error(err, errlen, STATUS_DATA, "bad image size %ldx%ld in the header", width, height);
-    if ((double)width * (double)height > (double)max)
-        return img_error(err, errlen, STATUS_DATA, "the image is %ldx%ld, over --max-pixels %ld", width, height,
-                         max);
+    /* A size expected (a mask for a given image) is judged first: it is
+     * the telling reason, and it bounds the pixels by itself. */
     if (o && o->width > 0 && o->height > 0 && (width != o->width || height != o->height))
         return img_error(err, errlen, STATUS_DATA, "the image is %ldx%ld, not the %dx%d expected", width, height,
                          o->width, o->height);
+    if ((double)width * (double)height > (double)max)
+        return img_error(err, errlen, STATUS_DATA, "the image is %ldx%ld, over --max-pixels %ld", width, height,
+                         max);
     return STATUS_OK;
 }
 
