@@ -295,17 +295,19 @@ fuzz:
 	$(Q)missing=""; for p in $(FUZZ_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
 	  grep -q '^install ok installed' || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then apt-get install -y -qq $$missing >/dev/null; fi
+ifeq ($(FUZZ_TARGET),image)
+	$(Q)$(MAKE) --no-print-directory $(REFRAY) && mkdir -p $(FUZZ_DIR)/corpus-image
+	$(Q)n=0; for f in png exr pfm ppm; do \
+	  $(REFRAY) render scenes/analytic/ambient_only.scene --width 4 --height 3 -q -o $(FUZZ_DIR)/seed.$$f \
+	    2>/dev/null && { printf "\\00$$n"; cat $(FUZZ_DIR)/seed.$$f; } > $(FUZZ_DIR)/corpus-image/seed-$$f; \
+	  n=$$((n + 1)); done
+endif
 	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
 	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
 
-fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_$(FUZZ_TARGET).o $(if $(filter image,$(FUZZ_TARGET)),$(REFRAY))
+fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_$(FUZZ_TARGET).o
 	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_$(FUZZ_TARGET) $(BUILD)/obj/tests/fuzz/fuzz_$(FUZZ_TARGET).o $(LIBRARY) $(ALL_LIBS)
 ifeq ($(FUZZ_TARGET),image)
-	$(Q)mkdir -p $(BUILD)/corpus-image
-	$(Q)n=0; for f in png exr pfm ppm; do \
-	  ASAN_OPTIONS=detect_leaks=0 $(REFRAY) render scenes/analytic/ambient_only.scene --width 4 --height 3 -q \
-	    -o $(BUILD)/seed.$$f 2>/dev/null && { printf "\\00$$n"; cat $(BUILD)/seed.$$f; } > $(BUILD)/corpus-image/seed-$$f; \
-	  n=$$((n + 1)); done
 	cd $(BUILD) && ./fuzz_image -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
 	  -max_len=65536 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus-image
 else

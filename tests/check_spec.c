@@ -1,7 +1,8 @@
 /* Keeps spec/language.md complete: every reserved word of the scanner's
  * table appears in it backquoted, every property of every block appears in
  * that block's section (`### \`name\``), every [LANG-...] ID a test cites
- * is defined there, and every ID defined there is cited by some test.
+ * is defined there, and every ID defined there is cited by some test; the
+ * same for the [REL-...] IDs of spec/reliability.md.
  * Tests run from the repository root. */
 #include <dirent.h>
 #include <stdio.h>
@@ -122,10 +123,10 @@ static int id_listed(const id_list *l, const char *id)
     return 0;
 }
 
-/* Adds every "[LANG-...]" of text to l (once each). */
-static void collect_ids(const char *text, id_list *l)
+/* Adds every ID of text that starts with prefix ("[LANG-") to l (once each). */
+static void collect_ids(const char *text, const char *prefix, id_list *l)
 {
-    for (const char *p = strstr(text, "[LANG-"); p; p = strstr(p + 1, "[LANG-")) {
+    for (const char *p = strstr(text, prefix); p; p = strstr(p + 1, prefix)) {
         size_t n = strspn(p + 1, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-");
         if (p[1 + n] != ']' || n + 1 >= sizeof l->ids[0])
             continue;
@@ -137,8 +138,8 @@ static void collect_ids(const char *text, id_list *l)
     }
 }
 
-/* The IDs cited by the test sources tests/check_*.c. */
-static void cited_ids(id_list *l)
+/* The IDs of prefix cited by the test sources tests/check_*.c. */
+static void cited_ids(const char *prefix, id_list *l)
 {
     DIR *dir = opendir(TESTS);
     ck_assert_ptr_nonnull(dir);
@@ -151,25 +152,35 @@ static void cited_ids(id_list *l)
         char path[512];
         snprintf(path, sizeof path, "%s/%s", TESTS, e->d_name);
         char *text = read_text(path);
-        collect_ids(text, l);
+        collect_ids(text, prefix, l);
         free(text);
     }
     closedir(dir);
 }
 
+/* One spec file and the IDs it owns. */
+static const struct {
+    const char *spec, *prefix;
+    int at_least; /* cited IDs expected at the least (a broken scan finds 0) */
+} id_owners[] = {
+    {SPEC, "[LANG-", 40},
+    {"spec/reliability.md", "[REL-", 25},
+};
+
 START_TEST(test_spec_defines_every_cited_id)
 {
+    const char *spec_path = id_owners[_i].spec;
     id_list cited, defined;
-    char *spec = read_text(SPEC);
-    cited_ids(&cited);
+    char *spec = read_text(spec_path);
+    cited_ids(id_owners[_i].prefix, &cited);
     defined.count = 0;
-    collect_ids(spec, &defined);
-    ck_assert_int_ge(cited.count, 40);
+    collect_ids(spec, id_owners[_i].prefix, &defined);
+    ck_assert_int_ge(cited.count, id_owners[_i].at_least);
     for (int i = 0; i < cited.count; i++)
         ck_assert_msg(id_listed(&defined, cited.ids[i]), "a test cites [%s], which %s does not define",
-                      cited.ids[i], SPEC);
+                      cited.ids[i], spec_path);
     for (int i = 0; i < defined.count; i++)
-        ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", SPEC,
+        ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", spec_path,
                       defined.ids[i]);
     free(spec);
 }
@@ -182,7 +193,7 @@ Suite *suite_spec(void)
     tcase_add_test(tc, test_spec_lists_every_keyword);
     tcase_add_test(tc, test_spec_lists_every_property_of_every_block);
     tcase_add_test(tc, test_spec_helpers);
-    tcase_add_test(tc, test_spec_defines_every_cited_id);
+    tcase_add_loop_test(tc, test_spec_defines_every_cited_id, 0, (int)(sizeof id_owners / sizeof id_owners[0]));
     suite_add_tcase(s, tc);
     return s;
 }
