@@ -90,7 +90,7 @@ GEN_HDRS    := $(GEN)/scene.tab.h $(GEN)/scene.lex.h
 
 LIB_OBJS    := $(LIB_SRCS:%.c=$(BUILD)/obj/%.o) $(GEN_SRCS:$(GEN)/%.c=$(BUILD)/obj/gen/%.o)
 DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
-TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
+TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/difftest/gen.o
 
 REFRAY   := $(BUILD)/refray
 LIBRARY  := $(BUILD)/librefray.a

@@ -47,6 +47,8 @@ static const char render_help[] =
     "  --samples K           K x K camera rays per pixel\n"
     "  --max-depth D         trace depth (1: camera rays only)\n"
     "  --light-samples N     N point sources for every distributed light\n"
+    "  --no-shortcuts        run every pass and ray the scene could do without\n"
+    "                        (same image to the bit, more work: a check)\n"
     "  --exposure STOPS      PNG/PPM: multiply by 2^STOPS before mapping\n"
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
@@ -186,7 +188,8 @@ static void print_stats(const render_stats *s, const img_write_stats *w)
     fprintf(stderr, "  rays: %ld camera, %ld shadow, %ld reflection, %ld refraction, %ld total-internal-reflection; "
             "%ld in all\n", t->camera_rays, t->shadow_rays, t->reflection_rays, t->refraction_rays, t->tir_rays, rays);
     fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", t->light_samples, t->lights_on_surface);
-    fprintf(stderr, "  passes: shadows %s, specular %s, reflection %s, refraction %s\n",
+    fprintf(stderr, "  passes%s: shadows %s, specular %s, reflection %s, refraction %s\n",
+            s->no_shortcuts ? " (every shortcut off)" : "",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");

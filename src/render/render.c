@@ -49,6 +49,7 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->specular = t->specular;
     stats->reflection = t->reflection;
     stats->refraction = t->refraction;
+    stats->no_shortcuts = t->no_shortcuts;
 }
 
 static int trace_rows(const tracer *t, const render_opts *opts, rf_image *out, render_stats *stats)
@@ -86,6 +87,8 @@ int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, 
     if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0))
         return REFRAY_EXIT_SOFTWARE;
     t.max_tree_rays = opts ? opts->max_tree_rays : 0;
+    if (opts && opts->no_shortcuts)
+        tracer_no_shortcuts(&t);
     stats->max_depth = t.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&t, stats);

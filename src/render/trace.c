@@ -71,6 +71,18 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
     return 1;
 }
 
+void tracer_no_shortcuts(tracer *t)
+{
+    t->no_shortcuts = 1;
+    t->shadows = t->specular = t->reflection = t->refraction = 1;
+    t->accel.exhaustive = 1;
+    if (t->scene->camera.kind == CAMERA_PERSPECTIVE) {
+        trace_stats none;
+        memset(&none, 0, sizeof none);
+        trace_media_at(t, t->scene->camera.eye, &t->eye_media, &none);
+    }
+}
+
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
@@ -81,21 +93,24 @@ void tracer_free(tracer *t)
 typedef struct shadow_walk {
     const rf_scene *scene;
     real carried;
+    int walk_on;     /* no stop at 0: the shortcuts-off mode */
 } shadow_walk;
 
-/* Slide 47: every surface on the way lets through its t (opaque: 0). */
+/* Slide 47: every surface on the way lets through its t (opaque: 0).
+ * [SHADE-SHORTCUT-STOP-1] Once 0 is carried the product stays 0, so the
+ * walk stops there. */
 static int shadow_crossing(void *ctx, const hit *h)
 {
     shadow_walk *w = ctx;
     const rf_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
     w->carried = shade_shadow_transmission(w->carried, m->t);
-    return w->carried == 0;
+    return w->carried == 0 && !w->walk_on;
 }
 
 /* The fraction of a light that reaches the surface along r. */
 static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
 {
-    shadow_walk w = {t->scene, 1.0};
+    shadow_walk w = {t->scene, 1.0, t->no_shortcuts};
     st->shadow_rays++;
     bvh_visit_stats(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
     return w.carried;
@@ -124,14 +139,15 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
         }
         l = vec_scale(to, 1.0 / d);
     }
-    if (!(vec_dot(s->n, l) > 0))
+    /* [SHADE-SHORTCUT-GATE-1] Where N.L <= 0 both terms are 0: no shadow ray. */
+    if (!(vec_dot(s->n, l) > 0) && !t->no_shortcuts)
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
                                              : ray_spawn_hit_to(s->prim, s->h, pos);
         real through = shadow_transmission(t, &r, st);
-        if (through == 0)
+        if (through == 0 && !t->no_shortcuts)
             return;
         intensity = vec_scale(intensity, through);
     }
@@ -311,7 +327,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     real through;
     interface_gather(t, s, in, &f, st);
     int solids = interface_cross(t, &f, &next, &through, st);
-    if (through == 0)
+    if (through == 0 && !t->no_shortcuts)
         return vec_splat(0);
     ray r;
     vec3 dir = in->dir;
@@ -349,10 +365,11 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.n = shade_face_forward(h->shading_normal, s.v);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
+    /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
-        if (t->reflection && vec_max_component(s.m->ks) > 0)
+        if (t->reflection && (vec_max_component(s.m->ks) > 0 || t->no_shortcuts))
             mirror = mirrored(t, &s, in, depth, media, sampler_key(key, 1), st);
-        if (t->refraction && s.m->t > 0)
+        if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
             through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);

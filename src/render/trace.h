@@ -56,6 +56,7 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (rf_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
@@ -65,6 +66,15 @@ typedef struct tracer {
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
 int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
+
+/* Turns off every shortcut that leaves out work a scene does not need
+ * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
+ * mirror and transmitted rays while depth < max_depth, every light gets its
+ * shadow ray, no walk stops early, the BVH culls nothing.  The image is the
+ * same to the bit ([SHADE-SHORTCUT-OFF-1]); only the work and the counts in
+ * trace_stats grow (and with them the ray-tree budget's count).  Call it
+ * after tracer_init, before tracing. */
+void tracer_no_shortcuts(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */

@@ -70,6 +70,11 @@ static void warn_buried_lights(loader *L)
     }
 }
 
+static int is_flat(const rf_prim *p)
+{
+    return p->kind == PRIM_PLANE || p->kind == PRIM_DISK || p->kind == PRIM_TRIANGLE;
+}
+
 static void record_features(rf_scene *s, const loader *L)
 {
     rf_features *f = &s->features;
@@ -84,9 +89,11 @@ static void record_features(rf_scene *s, const loader *L)
     for (int i = 0; i < s->light_count; i++)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
-    /* With N.L > 0 required, one convex or flat primitive never shadows
-     * itself; only a second primitive can stand in the way. */
-    f->shadows = s->light_count > 0 && s->prim_count >= 2;
+    /* [LANG-FEATURES-2] A ray that leaves a flat primitive never meets it
+     * again, so a lone plane, disk or triangle cannot shadow itself.  A lone
+     * sphere or box can: seen from inside (a camera in it, a ray refracted
+     * into it), the light reaches its inner wall only through the far wall. */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || !is_flat(&s->prims[0]));
 }
 
 int validate_scene(loader *L)

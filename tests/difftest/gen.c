@@ -1,0 +1,534 @@
+/*
+ * gen.c - see gen.h.  Every statement is one line; the objects sit in a
+ * box of a few units around the origin so that they shadow, reflect and
+ * contain one another, and the camera looks at that box from outside or
+ * from inside a solid.  Each primitive is written at its own origin and
+ * moved by `translate` (after `scale`, with mirroring, and `rotate`), so
+ * its bounding ball is known: the EXACT profile uses it to keep
+ * transparent solids apart (POV-Ray and refray differ where a ray leaves a
+ * solid that is not the last one it entered, spec/crosscheck.md).
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "base/sampler.h"
+#include "gen.h"
+
+enum { LINE_MAX_LEN = 1024, SOLID_MAX = 16 };
+
+typedef struct ball {
+    double c[3], r;
+    int clear;       /* t > 0 */
+} ball;
+
+typedef struct gen {
+    uint64_t key, counter;
+    dtgen_profile profile;
+    const char *obj_dir;
+    int depth;
+    char line[DTGEN_STMT_MAX][LINE_MAX_LEN];
+    int lines;
+    ball solid[SOLID_MAX];   /* the solids whose centre is inside them */
+    int solids;
+} gen;
+
+static double uniform(gen *g)
+{
+    return sampler_uniform(sampler_key(g->key, g->counter++));
+}
+
+static double range(gen *g, double lo, double hi)
+{
+    return lo + (hi - lo) * uniform(g);
+}
+
+static int pick(gen *g, int n)
+{
+    int k = (int)(uniform(g) * n);
+    return k < n ? k : n - 1;
+}
+
+static int chance(gen *g, double p)
+{
+    return uniform(g) < p;
+}
+
+static int exact(const gen *g)
+{
+    return g->profile == DTGEN_EXACT;
+}
+
+/* Appends to the statement being written (the last line). */
+static void put(gen *g, const char *fmt, ...)
+{
+    char *line = g->line[g->lines - 1];
+    size_t len = strlen(line);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line + len, LINE_MAX_LEN - len, fmt, ap);
+    va_end(ap);
+}
+
+/* Starts a statement; returns 0 when the scene is full. */
+static int begin(gen *g)
+{
+    if (g->lines == DTGEN_STMT_MAX)
+        return 0;
+    g->line[g->lines++][0] = '\0';
+    return 1;
+}
+
+static void put_vec(gen *g, const double v[3])
+{
+    put(g, "[%.17g, %.17g, %.17g]", v[0], v[1], v[2]);
+}
+
+static void random_point(gen *g, double half, double out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = range(g, -half, half);
+}
+
+/* A unit vector, uniform on the sphere. */
+static void random_direction(gen *g, double out[3])
+{
+    double len;
+    do {
+        random_point(g, 1, out);
+        len = sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+    } while (len < 0.1 || len > 1);
+    for (int i = 0; i < 3; i++)
+        out[i] /= len;
+}
+
+static void put_colour(gen *g, double lo, double hi)
+{
+    if (chance(g, 0.3))
+        put(g, "%.17g", range(g, lo, hi));
+    else
+        put(g, "[%.17g, %.17g, %.17g]", range(g, lo, hi), range(g, lo, hi), range(g, lo, hi));
+}
+
+/* ---- Materials ---- */
+
+/* What a primitive is, for its material. */
+typedef struct shape_use {
+    int solid;        /* sphere, box, mesh */
+    int normals;      /* a mesh with vertex normals */
+} shape_use;
+
+/* Chooses t first (placement depends on it). */
+static double choose_t(gen *g, const shape_use *u)
+{
+    if (exact(g)) {
+        /* Transparent sheets get nudged iors and meshes with normals a
+         * listed difference: both are approximations of the export. */
+        if (!u->solid || (u->normals && g->depth > 1))
+            return 0;
+        return chance(g, 0.35) ? range(g, 0.2, 0.95) : 0;
+    }
+    switch (pick(g, 5)) {
+    case 0: return 1;
+    case 1: return range(g, 0.05, 0.95);
+    default: return 0;
+    }
+}
+
+static void put_material(gen *g, const shape_use *u, double t)
+{
+    double ks = 0;
+    put(g, " material { Kd ");
+    put_colour(g, 0, 1);
+    if (exact(g)) {
+        /* Glass with Ks + t = 1: POV-Ray weights total internal reflection
+         * by 1, refray by Ks + t ([XCHK-MAP-TIR-1]). */
+        if (t > 0)
+            ks = 1 - t;
+        else if (!(u->normals && g->depth > 1) && chance(g, 0.5))
+            ks = range(g, 0.05, 0.8);
+        if (ks > 0)
+            put(g, " Ks %.17g n %.17g", ks, range(g, 1, 200));
+        if (t > 0)
+            put(g, " t %.17g ior %.17g", t, chance(g, 0.15) ? range(g, 0.7, 0.9) : range(g, 1.1, 2.0));
+    } else {
+        static const double n[] = {0, 1, 30, 1e4};
+        static const double ior[] = {1, 1.5, 0.7, 2.4};
+        if (chance(g, 0.5)) {
+            put(g, " Ks ");
+            put_colour(g, 0, 1);
+        }
+        put(g, " n %.17g t %.17g ior %.17g", n[pick(g, 4)], t, ior[pick(g, 4)]);
+    }
+    put(g, " }");
+}
+
+/* ---- Primitives ---- */
+
+/* scale (possibly mirroring), rotate, then translate to c.  Returns the
+ * largest |scale| (the factor on the bounding radius). */
+static double put_transforms(gen *g, const double c[3])
+{
+    double most = 1;
+    if (chance(g, 0.35)) {
+        double s[3];
+        int uniform_scale = chance(g, 0.4);
+        s[0] = range(g, 0.5, 1.5);
+        for (int i = 0; i < 3; i++) {
+            if (i > 0)
+                s[i] = uniform_scale ? s[0] : range(g, 0.5, 1.5);
+            most = fmax(most, s[i]);
+        }
+        for (int i = 0; i < 3; i++)
+            if (chance(g, 0.25))
+                s[i] = -s[i];
+        put(g, " scale ");
+        put_vec(g, s);
+    }
+    if (chance(g, 0.4)) {
+        double a[3];
+        random_point(g, 180, a);
+        put(g, " rotate ");
+        put_vec(g, a);
+    }
+    put(g, " translate ");
+    put_vec(g, c);
+    return most;
+}
+
+static int overlaps_clear(const gen *g, const double c[3], double r)
+{
+    for (int i = 0; i < g->solids; i++) {
+        const ball *b = &g->solid[i];
+        double d = sqrt((b->c[0] - c[0]) * (b->c[0] - c[0]) + (b->c[1] - c[1]) * (b->c[1] - c[1]) +
+                        (b->c[2] - c[2]) * (b->c[2] - c[2]));
+        if (b->clear && d < b->r + r)
+            return 1;
+    }
+    return 0;
+}
+
+/* Where a solid of bounding radius r goes: a point in the scene box; a
+ * transparent one (EXACT) apart from every other transparent one, or
+ * *t = 0 when no such place was found. */
+static void place_solid(gen *g, double r, double *t, double c[3])
+{
+    double half = exact(g) ? 2 : 1.5;
+    for (int tries = 0; tries < 20; tries++) {
+        random_point(g, half, c);
+        if (!exact(g) || !(*t > 0) || !overlaps_clear(g, c, r))
+            return;
+    }
+    *t = 0;
+}
+
+static void remember_solid(gen *g, const double c[3], double r, double t, int centred)
+{
+    if (g->solids == SOLID_MAX)
+        return;
+    ball *b = &g->solid[g->solids++];
+    memcpy(b->c, c, sizeof b->c);
+    b->r = r;
+    b->clear = t > 0;
+    if (!centred)
+        b->r = -r;   /* its centre may lie outside it: never used to put a camera in */
+}
+
+typedef struct mesh_file {
+    const char *name;
+    double radius;     /* of a ball about the OBJ's origin that holds it */
+    int normals, centred;
+} mesh_file;
+
+static const mesh_file meshes[] = {
+    {"tetrahedron", 1.0, 0, 0},
+    {"cube", 1.7320508075688772, 1, 1},
+    {"icosahedron_smooth", 1.9021130325903071, 1, 1},
+};
+
+static void put_solid(gen *g, int kind)
+{
+    shape_use u = {1, 0};
+    double c[3], local_r, t;
+    const mesh_file *m = NULL;
+    double half[3] = {range(g, 0.2, 1), range(g, 0.2, 1), range(g, 0.2, 1)};
+    double radius = range(g, 0.3, 1.2), size = range(g, 0.3, 0.8);
+    if (kind == 0) {
+        local_r = radius;
+    } else if (kind == 1) {
+        local_r = sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
+    } else {
+        m = &meshes[pick(g, 3)];
+        u.normals = m->normals;
+        local_r = m->radius * size;
+    }
+    t = choose_t(g, &u);
+    /* the bound before the transforms' scale, which is at most 1.5 */
+    place_solid(g, 1.5 * local_r, &t, c);
+    if (kind == 0)
+        put(g, "sphere { radius %.17g", radius);
+    else if (kind == 1)
+        put(g, "box { from [%.17g, %.17g, %.17g] to [%.17g, %.17g, %.17g]", -half[0], -half[1], -half[2], half[0],
+            half[1], half[2]);
+    else
+        put(g, "mesh { file \"%s/%s.obj\" scale %.17g", g->obj_dir, m->name, size);
+    put_material(g, &u, t);
+    double most = put_transforms(g, c);
+    put(g, " }");
+    remember_solid(g, c, local_r * most, t, m == NULL || m->centred);
+}
+
+static void put_sheet(gen *g, int kind)
+{
+    shape_use u = {0, 0};
+    double t = choose_t(g, &u), c[3], n[3];
+    random_point(g, exact(g) ? 2 : 1.5, c);
+    random_direction(g, n);
+    if (kind == 0) {
+        put(g, "disk { normal ");
+        put_vec(g, n);
+        put(g, " radius %.17g", range(g, 0.3, 1.5));
+    } else if (kind == 1) {
+        double a[3], b[3], d[3], ab[3], ad[3], cr[3];
+        do {
+            random_point(g, 1.2, a);
+            random_point(g, 1.2, b);
+            random_point(g, 1.2, d);
+            for (int i = 0; i < 3; i++) {
+                ab[i] = b[i] - a[i];
+                ad[i] = d[i] - a[i];
+            }
+            cr[0] = ab[1] * ad[2] - ab[2] * ad[1];
+            cr[1] = ab[2] * ad[0] - ab[0] * ad[2];
+            cr[2] = ab[0] * ad[1] - ab[1] * ad[0];
+        } while (sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]) < 0.2);
+        put(g, "triangle { vertices ");
+        put_vec(g, a);
+        put(g, " ");
+        put_vec(g, b);
+        put(g, " ");
+        put_vec(g, d);
+    } else {
+        /* a floor below the objects half the time, else any plane */
+        if (chance(g, 0.5)) {
+            n[0] = n[2] = 0;
+            n[1] = 1;
+            c[0] = c[2] = 0;
+            c[1] = range(g, -3, -1.5);
+        }
+        put(g, "plane { point ");
+        put_vec(g, c);
+        put(g, " normal ");
+        put_vec(g, n);
+        put_material(g, &u, t);
+        put(g, " }");
+        return;
+    }
+    put_material(g, &u, t);
+    put_transforms(g, c);
+    put(g, " }");
+}
+
+static void put_primitive(gen *g, int planes_left)
+{
+    int kind = pick(g, planes_left > 0 ? 7 : 6);
+    if (!begin(g))
+        return;
+    if (kind < 3)
+        put_solid(g, kind);                   /* sphere, box, mesh */
+    else if (kind == 3)
+        put_solid(g, 0);
+    else
+        put_sheet(g, kind - 4);               /* disk, triangle, plane */
+}
+
+/* ---- Lights ---- */
+
+/* The centre of a solid that holds it, or NULL. */
+static const double *inside_point(gen *g)
+{
+    int found[SOLID_MAX], n = 0;
+    for (int i = 0; i < g->solids; i++)
+        if (g->solid[i].r > 0)
+            found[n++] = i;
+    return n > 0 ? g->solid[found[pick(g, n)]].c : NULL;
+}
+
+static void put_point_light(gen *g)
+{
+    double p[3];
+    const double *in = chance(g, 0.1) ? inside_point(g) : NULL;
+    if (in)
+        memcpy(p, in, sizeof p);
+    else
+        random_point(g, 5, p);
+    put(g, "point_light { position ");
+    put_vec(g, p);
+    put(g, " power ");
+    int kind = pick(g, exact(g) ? 2 : 4);
+    put_colour(g, kind == 0 ? 0.5 : 3, kind == 0 ? 2 : 12);
+    if (kind == 0)
+        put(g, " falloff none }");
+    else if (kind == 1)
+        put(g, " d0 %.17g falloff linear }", range(g, 0.5, 5));
+    else if (kind == 2)
+        put(g, " falloff linear }");
+    else
+        put(g, " d0 %.17g falloff inverse_square }", chance(g, 0.5) ? 0 : range(g, 0.5, 2));
+}
+
+static void put_distant_light(gen *g)
+{
+    double d[3];
+    random_direction(g, d);
+    if (chance(g, 0.8))
+        d[1] = -fabs(d[1]);   /* mostly from above */
+    put(g, "distant_light { direction ");
+    put_vec(g, d);
+    put(g, " power ");
+    put_colour(g, 0.3, 1.5);
+    put(g, " }");
+}
+
+static void put_distributed_light(gen *g)
+{
+    double c[3], n[3];
+    random_point(g, 4, c);
+    random_direction(g, n);
+    if (chance(g, 0.5))
+        put(g, "distributed_light { rectangle [%.17g, %.17g, %.17g] [%.17g, 0, 0] [0, 0, %.17g]", c[0], c[1], c[2],
+            range(g, 0.2, 1), range(g, 0.2, 1));
+    else
+        put(g, "distributed_light { disk [%.17g, %.17g, %.17g] [%.17g, %.17g, %.17g] %.17g", c[0], c[1], c[2], n[0],
+            n[1], n[2], range(g, 0.1, 0.8));
+    put(g, " samples %d power %.17g falloff %s }", 1 + pick(g, 4), range(g, 2, 10),
+        chance(g, 0.5) ? "linear" : "none");
+}
+
+static void put_lights(gen *g)
+{
+    static const double weights[] = {0.1, 0.5, 0.3, 0.1};
+    double u = uniform(g);
+    int count = 0;
+    while (count < 3 && u > weights[count])
+        u -= weights[count++];
+    for (int i = 0; i < count && begin(g); i++) {
+        int kind = pick(g, exact(g) ? 2 : 3);
+        if (kind == 0)
+            put_point_light(g);
+        else if (kind == 1)
+            put_distant_light(g);
+        else
+            put_distributed_light(g);
+    }
+    if (chance(g, 0.4) && begin(g)) {
+        put(g, "ambient { color ");
+        put_colour(g, 0.05, 0.3);
+        put(g, " }");
+    }
+}
+
+/* ---- Image and camera ---- */
+
+static void put_image(gen *g)
+{
+    begin(g);
+    if (exact(g))
+        put(g, "image { width 64 height 48 samples %d max_depth %d background ", chance(g, 0.15) ? 2 : 1,
+            g->depth);
+    else
+        put(g, "image { width 8 height 6 samples %d max_depth %d background ", 1 + pick(g, 2), g->depth);
+    if (chance(g, 0.5))
+        put(g, "0 }");
+    else {
+        put_colour(g, 0, 0.4);
+        put(g, " }");
+    }
+}
+
+static void put_camera(gen *g)
+{
+    double eye[3], at[3], dir[3];
+    const double *in = chance(g, exact(g) ? 0.15 : 0.3) ? inside_point(g) : NULL;
+    int ortho = chance(g, 0.3);
+    begin(g);
+    if (in) {
+        memcpy(eye, in, sizeof eye);
+        random_direction(g, dir);
+        for (int i = 0; i < 3; i++)
+            at[i] = eye[i] + dir[i];
+    } else {
+        double dist = ortho ? range(g, 6, 10) : range(g, 4, 9);
+        random_point(g, 1, at);
+        random_direction(g, dir);
+        for (int i = 0; i < 3; i++)
+            eye[i] = at[i] + dist * dir[i];
+    }
+    put(g, "camera { %s eye ", ortho ? "orthographic" : "perspective");
+    put_vec(g, eye);
+    put(g, " look_at ");
+    put_vec(g, at);
+    put(g, fabs(dir[1]) > 0.95 ? " up [0, 0, 1]" : " up [0, 1, 0]");
+    if (ortho)
+        put(g, " width %.17g }", range(g, 3, 7));
+    else
+        put(g, " fov %.17g }", range(g, 30, 90));
+}
+
+/* ---- The scene ---- */
+
+static void assemble(const gen *g, dtgen_scene *out)
+{
+    out->len = 0;
+    out->count = 0;
+    for (int i = 0; i < g->lines; i++) {
+        int n = snprintf(out->text + out->len, sizeof out->text - out->len, "%s\n", g->line[i]);
+        if (n < 0 || out->len + (size_t)n >= sizeof out->text)
+            break;
+        out->start[out->count++] = out->len;
+        out->len += (size_t)n;
+    }
+    out->start[out->count] = out->len;
+}
+
+void dtgen_make(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const char *obj_dir)
+{
+    static gen g;   /* 40 kB of lines: not on the stack of a forked test */
+    memset(&g, 0, sizeof g);
+    g.key = sampler_key(0x64696666u, seed);
+    g.profile = profile;
+    g.obj_dir = obj_dir;
+    g.depth = 1 + pick(&g, exact(&g) ? 8 : 5);
+    /* image and camera first in the text, but the camera may sit in a
+     * solid: the primitives are drawn first, into lines 2.. */
+    g.lines = 2;
+    int prims = exact(&g) ? 1 + pick(&g, 6) : (chance(&g, 0.45) ? 1 : 2 + pick(&g, 3));
+    for (int i = 0, planes = 2; i < prims; i++) {
+        put_primitive(&g, planes);
+        if (strncmp(g.line[g.lines - 1], "plane", 5) == 0)
+            planes--;
+    }
+    put_lights(&g);
+    int lines = g.lines;
+    g.lines = 0;
+    put_image(&g);
+    put_camera(&g);
+    g.lines = lines;
+    assemble(&g, out);
+}
+
+size_t dtgen_subset(const dtgen_scene *s, const unsigned char *keep, char *buf, size_t size)
+{
+    size_t len = 0;
+    for (int i = 0; i < s->count; i++) {
+        size_t n = s->start[i + 1] - s->start[i];
+        if (i >= 2 && !keep[i])
+            continue;
+        if (len + n + 1 > size)
+            return 0;
+        memcpy(buf + len, s->text + s->start[i], n);
+        len += n;
+    }
+    buf[len] = '\0';
+    return len;
+}
