@@ -1,0 +1,182 @@
+/*
+ * export_pov_far.c - see export_pov_far.h.
+ *
+ * Camera rays are enumerated exactly as refray makes them (camera_ray at
+ * the centres of POV-Ray's pixels, which are refray's sub-pixel cells);
+ * POV-Ray's own rays differ from them by rounding only.  Occlusion is
+ * ignored throughout, so every reach is an upper bound of what a render
+ * can meet.
+ */
+#include <math.h>
+#include "export/export_pov.h"
+#include "export/export_pov_far.h"
+#include "render/camera.h"
+
+typedef struct extent {
+    vec3 lo, hi;
+    int any;
+} extent;
+
+static void extent_add(extent *e, vec3 p)
+{
+    e->lo = e->any ? vec_min(e->lo, p) : p;
+    e->hi = e->any ? vec_max(e->hi, p) : p;
+    e->any = 1;
+}
+
+/* The 8 corners of the local box lo..hi, taken to the world. */
+static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
+{
+    for (int i = 0; i < 8; i++) {
+        vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+        extent_add(e, p->has_xform ? xform_point(&p->to_world, c) : c);
+    }
+}
+
+/* Planes are unbounded and left out. */
+static void extent_add_prim(extent *e, const rf_prim *p)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE: {
+        vec3 r = vec_splat(p->u.sphere.radius);
+        extent_add_box(e, p, vec_sub(p->u.sphere.center, r), vec_add(p->u.sphere.center, r));
+        break;
+    }
+    case PRIM_DISK: {
+        vec3 r = vec_splat(p->u.disk.radius);
+        extent_add_box(e, p, vec_sub(p->u.disk.center, r), vec_add(p->u.disk.center, r));
+        break;
+    }
+    case PRIM_BOX:
+        extent_add_box(e, p, p->u.box.lo, p->u.box.hi);
+        break;
+    case PRIM_TRIANGLE:
+        for (int i = 0; i < 3; i++)
+            extent_add(e, p->u.triangle.p[i]);
+        break;
+    case PRIM_PLANE:
+        break;
+    }
+}
+
+pov_bounds pov_far_bounds(const rf_scene *s)
+{
+    extent e = {vec_splat(0), vec_splat(0), 0};
+    pov_bounds b;
+    extent_add(&e, s->camera.eye);
+    for (int i = 0; i < s->prim_count; i++)
+        extent_add_prim(&e, &s->prims[i]);
+    for (int i = 0; i < s->light_count; i++) {
+        const rf_light *l = &s->lights[i];
+        if (l->kind == LIGHT_DISTANT)
+            continue;
+        extent_add(&e, l->position);
+        if (l->kind == LIGHT_RECTANGLE)
+            extent_add(&e, vec_add(l->position, vec_add(l->edge_u, l->edge_v)));
+    }
+    b.centre = vec_scale(vec_add(e.lo, e.hi), 0.5);
+    b.radius = fmax(1.0, 0.5 * vec_length(vec_sub(e.hi, e.lo)));
+    return b;
+}
+
+/* How far a camera ray's origin can be from the eye: half the diagonal of
+ * an orthographic view, 0 for a perspective camera. */
+static double view_radius(const rf_scene *s)
+{
+    if (s->camera.kind != CAMERA_ORTHOGRAPHIC)
+        return 0;
+    double half = 0.5 * s->camera.width;
+    double aspect = (double)s->image.height / (double)s->image.width;
+    return half * sqrt(1 + aspect * aspect);
+}
+
+double pov_far_spread(const rf_scene *s, const pov_bounds *b)
+{
+    return vec_length(vec_sub(s->camera.eye, b->centre)) + view_radius(s) + b->radius;
+}
+
+double pov_far_distant_distance(const rf_scene *s, const pov_bounds *b, int trace_levels)
+{
+    return POV_MAX_DISTANCE * (trace_levels + 1) + pov_far_spread(s, b);
+}
+
+/* Distance along (o, d) to plane p, or 0 when it does not meet it ahead. */
+static double plane_distance(const rf_prim *p, vec3 o, vec3 d)
+{
+    double den = vec_dot(p->u.plane.normal, d);
+    if (den == 0)
+        return 0;
+    double t = vec_dot(p->u.plane.normal, vec_sub(p->u.plane.point, o)) / den;
+    return t > 0 && isfinite(t) ? t : 0;
+}
+
+/* Calls visit for the camera ray through the centre of every pixel of
+ * POV-Ray's render. */
+static void each_camera_ray(const rf_scene *s, void (*visit)(void *ctx, const ray *r), void *ctx)
+{
+    int width, height, k = pov_render_size(s, &width, &height);
+    for (int j = 0; j < height; j++)
+        for (int i = 0; i < width; i++) {
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, (i + 0.5) / k, (j + 0.5) / k);
+            visit(ctx, &r);
+        }
+}
+
+typedef struct camera_reach {
+    const rf_prim *plane;
+    double farthest;
+} camera_reach;
+
+static void reach_plane(void *ctx, const ray *r)
+{
+    camera_reach *c = ctx;
+    c->farthest = fmax(c->farthest, plane_distance(c->plane, r->origin, r->dir));
+}
+
+double pov_far_camera_reach(const rf_scene *s, const rf_prim *p)
+{
+    camera_reach c = {p, 0};
+    each_camera_ray(s, reach_plane, &c);
+    return c.farthest;
+}
+
+typedef struct shadow_reach {
+    const rf_scene *scene;
+    const rf_prim *w;
+    vec3 toward;         /* unit, toward the light */
+    double farthest;
+} shadow_reach;
+
+/* From every point where the camera ray meets another plane. */
+static void reach_from_planes(void *ctx, const ray *r)
+{
+    shadow_reach *c = ctx;
+    for (int i = 0; i < c->scene->prim_count; i++) {
+        const rf_prim *f = &c->scene->prims[i];
+        if (f->kind != PRIM_PLANE || f == c->w)
+            continue;
+        double t = plane_distance(f, r->origin, r->dir);
+        if (t > 0)
+            c->farthest = fmax(c->farthest, plane_distance(c->w, ray_at(r, t), c->toward));
+    }
+}
+
+/*
+ * From a point p within the ball (c, R), the shadow ray p + u L meets the
+ * plane N.x = N.q at u = N.(q - p) / N.L, ahead (u > 0) only where
+ * N.(q - p) has the sign of N.L, so with sigma that sign
+ *   u <= max(0, sigma N.(q - c) + R) / |N.L|
+ * for the points of bounded primitives; points on planes are taken from
+ * the camera rays one by one.
+ */
+double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_light *l, const rf_prim *w)
+{
+    shadow_reach c = {s, w, vec_neg(l->direction), 0};
+    double cos_w = vec_dot(w->u.plane.normal, c.toward);
+    if (cos_w == 0)
+        return 0;
+    double offset = vec_dot(w->u.plane.normal, vec_sub(w->u.plane.point, b->centre));
+    c.farthest = fmax(0, (cos_w > 0 ? offset : -offset) + b->radius) / fabs(cos_w);
+    each_camera_ray(s, reach_from_planes, &c);
+    return c.farthest;
+}
