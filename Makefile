@@ -100,7 +100,7 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
 
-.PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench precision refray-ld report crosscheck difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -141,10 +141,13 @@ bench: $(BENCH)
 # analytic suite (tests/report.sh, spec/verify.md): PNG and SVG plots, TSVs
 # and summary.md under build/report/.  Installs gnuplot-nox if missing.
 REPORT_DIR := build/report
+# $(call need_program,PROGRAM,DEBIAN_PACKAGE): installs the package when
+# PROGRAM is missing (as root with apt-get, otherwise with sudo).
+need_program = command -v $(1) >/dev/null 2>&1 || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "installing $(2)"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $(2) >/dev/null; }
 report: deps
-	$(Q)command -v gnuplot >/dev/null 2>&1 || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
-	  echo "report: installing gnuplot-nox"; $$SUDO apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq gnuplot-nox >/dev/null; }
+	$(Q)$(call need_program,gnuplot,gnuplot-nox)
 	$(Q)$(MAKE) --no-print-directory $(REFRAY)
 	$(Q)sh tests/report.sh $(REFRAY) $(REPORT_DIR) scenes/analytic/*.scene
 
@@ -187,6 +190,27 @@ crosscheck: $(REFRAY) $(POVCHECK)
 $(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+# Differential testing against POV-Ray 3.7 (spec/crosscheck.md, section 5):
+# N random scenes of seed SEED (tests/difftest/gen.c, only what the export
+# maps exactly) rendered by refray and by POV-Ray and compared pixel by
+# pixel; each scene with an interior disagreement is shrunk and written to
+# $(DIFFTEST_OUT), and the run fails.  Installs povray when missing.
+# `make difftest N=1000` is a long campaign; .ci/run runs a short one.
+DIFFTEST := $(BUILD)/difftest
+DIFFTEST_OBJS := $(addprefix $(BUILD)/obj/tests/difftest/,difftest.o run.o shrink.o gen.o)
+DIFFTEST_OUT ?= build/difftest
+N ?= 40
+SEED ?= 1
+
+difftest: deps
+	$(Q)$(call need_program,povray,povray)
+	$(Q)$(MAKE) --no-print-directory $(DIFFTEST)
+	$(DIFFTEST) -n $(N) --seed $(SEED) -o $(DIFFTEST_OUT) --obj-dir tests/obj
+
+$(DIFFTEST): $(DIFFTEST_OBJS) $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(DIFFTEST_OBJS) $(LIBRARY) $(ALL_LIBS)
 
 # Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
 # `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's

@@ -287,9 +287,12 @@ START_TEST(test_pov_export_write_triangle)
 }
 END_TEST
 
-/* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
- * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
- * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
+/* Three notes in scene_a: the glass disk (a transparent sheet) and the
+ * clear sphere (ior 1) pass rays straight on, which POV-Ray does not count
+ * as a trace level; and the glass sphere (centre 1 above the floor, radius
+ * 1) touches the floor ([XCHK-MAP-SHADOW-2]).  glass has Ks + t = 1: no
+ * total-internal-reflection note.  The clear sphere (centre 1 above the
+ * floor, radius 0.5) is 0.5 clear of it. */
 START_TEST(test_pov_export_check_notes)
 {
     rf_scene *s = load(scene_a);
@@ -297,9 +300,11 @@ START_TEST(test_pov_export_check_notes)
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
     ck_assert_int_eq(n.refused, 0);
-    ck_assert_int_eq(n.count, 2);
+    ck_assert_int_eq(n.count, 3);
     ck_assert_msg(strstr(n.text[0], "material glass") && strstr(n.text[0], "trace level"), "%s", n.text[0]);
     ck_assert_msg(strstr(n.text[1], "material clear") && strstr(n.text[1], "trace level"), "%s", n.text[1]);
+    ck_assert_msg(strstr(n.text[2], "transparent sphere at t.scene:11 cuts or comes within 1e-3 of the surface at "
+                                    "t.scene:10"), "%s", n.text[2]);
     scene_free(s);
 }
 END_TEST
@@ -344,14 +349,35 @@ END_TEST
 
 /* [XCHK-MAP-SHADOW-2] A transparent box or mesh under a light is listed
  * (shadow rays inside it leave through an adjacent face within 1e-3 of the
- * point near its edges); a transparent sphere, an opaque box, or no light,
- * not. */
+ * point near its edges); a transparent sphere alone, an opaque box, or no
+ * light, not.  A transparent sphere is listed when another surface cuts
+ * it or comes within 1e-3 of it, and not when it keeps more than 1e-3
+ * away or lies wholly inside without touching. */
 START_TEST(test_pov_export_check_shadow_tolerance)
 {
     static const char *const listed[] = {
         "point_light { position [0, 5, 0] }\nbox { from [0, 0, 0] to [1, 1, 1] material { t 0.5 ior 1.5 Ks 0.5 } }\n",
         "distant_light { direction [0, -1, 0] }\nmesh { file \"tests/obj/tetrahedron.obj\" material { t 0.5 "
         "ior 1.5 Ks 0.5 } }\n",
+    };
+    static const char *const near[] = {
+        /* a plane 1 + 1e-3 from the centre of a unit sphere; a sphere 2 away */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "plane { point [0, -1.001, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { center [2, 0, 0] }\n",
+        /* a box whose nearest corner is 0.52 from the centre: it cuts the surface */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "box { from [0.3, 0.3, 0.3] to [2, 2, 2] }\n",
+    };
+    static const char *const apart[] = {
+        /* 1 + 2e-3 from the plane; a sphere 2.01 away; a ball well inside */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "plane { point [0, -1.002, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { center [2.01, 0, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { radius 0.5 }\n",
     };
     static const char *const not_listed[] = {
         "point_light { position [0, 5, 0] }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n",
@@ -366,6 +392,10 @@ START_TEST(test_pov_export_check_shadow_tolerance)
     for (int i = 0; i < 3; i++) {
         notes_of(not_listed[i], &n);
         ck_assert_int_eq(notes_with(&n, "SHADOW_TOLERANCE", NULL), 0);
+        notes_of(near[i], &n);
+        ck_assert_msg(notes_with(&n, "transparent sphere", "within 1e-3") == 1, "scene %d: %d notes", i, n.count);
+        notes_of(apart[i], &n);
+        ck_assert_int_eq(n.count, 0);
     }
 }
 END_TEST

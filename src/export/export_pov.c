@@ -274,24 +274,34 @@ static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
 }
 
 /* [XCHK-MAP-SHADOW-2] POV-Ray does not count a shadow-ray crossing within
- * SHADOW_TOLERANCE (1e-3) of the shaded point.  Inside a transparent solid
- * with edges, a point next to an edge sends its shadow ray out through the
- * adjacent face that close: refray lets t through there, POV-Ray 1. */
-static void check_edges(const rf_scene *s, pov_notes *n)
+ * SHADOW_TOLERANCE (1e-3) of the shaded point or of the transparent
+ * crossing before it.  Inside a transparent solid with edges, a point next
+ * to an edge sends its shadow ray out through the adjacent face that
+ * close; and a shadow ray that leaves a transparent solid where another
+ * surface cuts or touches it passes that surface within 1e-3: refray
+ * counts those crossings, POV-Ray does not. */
+static void check_shadow_tolerance(const rf_scene *s, pov_notes *n)
 {
     if (s->light_count == 0)
         return;
     for (int i = 0; i < s->prim_count; i++) {
         const rf_prim *p = &s->prims[i];
-        int mesh = p->kind == PRIM_TRIANGLE && p->mesh >= 0;
-        char at[256];
-        if ((p->kind != PRIM_BOX && !mesh) || (mesh && s->meshes[p->mesh].first_prim != i) ||
-            !(s->materials[p->material].t > 0))
+        int mesh = p->kind == PRIM_TRIANGLE && p->mesh >= 0, other;
+        char at[256], at_other[256];
+        if (!(s->materials[p->material].t > 0) || (mesh && s->meshes[p->mesh].first_prim != i))
             continue;
         where(s, mesh ? s->meshes[p->mesh].where : p->where, at, sizeof at);
-        add_note(n, "transparent %s at %s has edges: POV-Ray ignores a shadow-ray crossing within 1e-3 of the "
-                 "shaded point (SHADOW_TOLERANCE), so inside it, next to an edge, the adjacent face does not "
-                 "shadow in POV-Ray and lets t through in refray", mesh ? "mesh" : "box", at);
+        if (p->kind == PRIM_BOX || mesh)
+            add_note(n, "transparent %s at %s has edges: POV-Ray ignores a shadow-ray crossing within 1e-3 of the "
+                     "shaded point (SHADOW_TOLERANCE), so inside it, next to an edge, the adjacent face does not "
+                     "shadow in POV-Ray and lets t through in refray", mesh ? "mesh" : "box", at);
+        else if (p->kind == PRIM_SPHERE && (other = pov_far_near_sphere(s, i, POV_SHADOW_TOLERANCE)) >= 0) {
+            const rf_prim *q = &s->prims[other];
+            where(s, q->mesh >= 0 ? s->meshes[q->mesh].where : q->where, at_other, sizeof at_other);
+            add_note(n, "transparent sphere at %s cuts or comes within 1e-3 of the surface at %s: POV-Ray ignores a "
+                     "shadow-ray crossing within 1e-3 of the one before it (SHADOW_TOLERANCE), so a shadow ray "
+                     "that leaves the sphere next to that surface passes it in POV-Ray", at, at_other);
+        }
     }
 }
 
@@ -337,7 +347,7 @@ int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes)
         check_material(s, i, o, notes);
     for (int i = 0; i < s->mesh_count; i++)
         check_mesh(s, &s->meshes[i], notes);
-    check_edges(s, notes);
+    check_shadow_tolerance(s, notes);
     check_far(s, notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
         add_note(notes, "max_depth %d is over POV-Ray's limit: max_trace_level %d (they differ only for paths "

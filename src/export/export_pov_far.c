@@ -11,6 +11,7 @@
 #include "export/export_pov.h"
 #include "export/export_pov_far.h"
 #include "render/camera.h"
+#include "render/intersect.h"
 
 typedef struct extent {
     vec3 lo, hi;
@@ -179,4 +180,70 @@ double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_lig
     c.farthest = fmax(0, (cos_w > 0 ? offset : -offset) + b->radius) / fabs(cos_w);
     each_camera_ray(s, reach_from_planes, &c);
     return c.farthest;
+}
+
+/* ---- Surfaces within a gap of a transparent sphere ---- */
+
+static int boxes_near(vec3 alo, vec3 ahi, vec3 blo, vec3 bhi, double gap)
+{
+    return alo.x - gap <= bhi.x && blo.x <= ahi.x + gap && alo.y - gap <= bhi.y && blo.y <= ahi.y + gap &&
+           alo.z - gap <= bhi.z && blo.z <= ahi.z + gap;
+}
+
+/* Whether plane p comes within gap of the box lo..hi. */
+static int plane_near_box(const rf_prim *p, vec3 lo, vec3 hi, double gap)
+{
+    vec3 n = p->u.plane.normal, mid = vec_scale(vec_add(lo, hi), 0.5), half = vec_scale(vec_sub(hi, lo), 0.5);
+    double reach = fabs(n.x) * half.x + fabs(n.y) * half.y + fabs(n.z) * half.z;
+    return fabs(vec_dot(n, vec_sub(mid, p->u.plane.point))) <= reach + gap;
+}
+
+/* Whether the surface of the ball (c, r) comes within gap of the box lo..hi:
+ * the box reaches the shell between r - gap and r + gap. */
+static int ball_near_box(vec3 c, double r, vec3 lo, vec3 hi, double gap)
+{
+    vec3 nearest = vec_max(lo, vec_min(hi, c));
+    vec3 far = vec_make(fabs(lo.x - c.x) > fabs(hi.x - c.x) ? lo.x : hi.x,
+                        fabs(lo.y - c.y) > fabs(hi.y - c.y) ? lo.y : hi.y,
+                        fabs(lo.z - c.z) > fabs(hi.z - c.z) ? lo.z : hi.z);
+    return vec_length(vec_sub(nearest, c)) <= r + gap && vec_length(vec_sub(far, c)) >= r - gap;
+}
+
+/* Whether the surface of sphere a (no transform: its own ball) comes within
+ * gap of primitive b; for other shapes their bounding boxes stand in, so
+ * the answer errs toward yes. */
+static int ball_near(const rf_prim *a, const rf_prim *b, double gap)
+{
+    vec3 c = a->u.sphere.center, lo, hi;
+    double r = a->u.sphere.radius;
+    if (b->kind == PRIM_PLANE)
+        return fabs(vec_dot(b->u.plane.normal, vec_sub(c, b->u.plane.point))) <= r + gap;
+    if (b->kind == PRIM_SPHERE && !b->has_xform) {
+        double d = vec_length(vec_sub(b->u.sphere.center, c));
+        return d <= r + b->u.sphere.radius + gap && d >= fabs(r - b->u.sphere.radius) - gap;
+    }
+    return isect_prim_bounds(b, &lo, &hi) && ball_near_box(c, r, lo, hi, gap);
+}
+
+int pov_far_near_sphere(const rf_scene *s, int sphere, double gap)
+{
+    const rf_prim *a = &s->prims[sphere];
+    vec3 alo, ahi, blo, bhi;
+    if (!isect_prim_bounds(a, &alo, &ahi))
+        return -1;
+    for (int i = 0; i < s->prim_count; i++) {
+        const rf_prim *b = &s->prims[i];
+        int near;
+        if (i == sphere)
+            continue;
+        if (!a->has_xform)
+            near = ball_near(a, b, gap);
+        else if (b->kind == PRIM_PLANE)
+            near = plane_near_box(b, alo, ahi, gap);
+        else
+            near = isect_prim_bounds(b, &blo, &bhi) && boxes_near(alo, ahi, blo, bhi, gap);
+        if (near)
+            return i;
+    }
+    return -1;
 }

@@ -50,4 +50,16 @@ double pov_far_camera_reach(const rf_scene *s, const rf_prim *p);
  * none can. */
 double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_light *l, const rf_prim *w);
 
+/* POV-Ray's SHADOW_TOLERANCE (backend/render/trace.cpp): a shadow-ray
+ * crossing this close to the shaded point, to the light, or to the
+ * transparent crossing before it is not counted. */
+#define POV_SHADOW_TOLERANCE 1e-3
+
+/* The first primitive other than sphere (an index into s->prims, a sphere)
+ * whose surface may come within gap of the sphere's (they cut or touch),
+ * or -1.  Exact against planes and untransformed spheres; against other
+ * shapes, and for an ellipsoid, their bounding boxes stand in, so it errs
+ * toward finding one. */
+int pov_far_near_sphere(const rf_scene *s, int sphere, double gap);
+
 #endif

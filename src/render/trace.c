@@ -90,6 +90,20 @@ void tracer_free(tracer *t)
     t->lights = NULL;
 }
 
+/* Folds v into st->path (FNV-1a over 64-bit words). */
+static void path_note(trace_stats *st, uint64_t v)
+{
+    st->path = (st->path ^ v) * 0x100000001b3u;
+}
+
+static uint64_t bits_of(real x)
+{
+    double d = (double)x;
+    uint64_t u;
+    memcpy(&u, &d, sizeof u);
+    return u;
+}
+
 typedef struct shadow_walk {
     const rf_scene *scene;
     real carried;
@@ -139,14 +153,17 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
         }
         l = vec_scale(to, 1.0 / d);
     }
+    int lit = vec_dot(s->n, l) > 0;
+    path_note(st, (uint64_t)lit + 1);
     /* [SHADE-SHORTCUT-GATE-1] Where N.L <= 0 both terms are 0: no shadow ray. */
-    if (!(vec_dot(s->n, l) > 0) && !t->no_shortcuts)
+    if (!lit && !t->no_shortcuts)
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
                                              : ray_spawn_hit_to(s->prim, s->h, pos);
         real through = shadow_transmission(t, &r, st);
+        path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
         intensity = vec_scale(intensity, through);
@@ -338,6 +355,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
         refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    path_note(st, (uint64_t)refracts + 3);
     if (refracts) {
         st->refraction_rays++;
         return vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
@@ -472,7 +490,11 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     rgb c = t->scene->image.background;
     if (over_budget(t, st))
         return c;
-    if (bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh))
+    int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
+    path_note(st, met ? (uint64_t)h.prim + 5 : 0);
+    if (met && t->scene->prims[h.prim].kind == PRIM_BOX)   /* which face: constant over it */
+        path_note(st, bits_of(h.normal.x) ^ bits_of(h.normal.y) << 1 ^ bits_of(h.normal.z) << 2);
+    if (met)
         c = shade(t, &nearest, &h, depth, media, key, st);
     if (!vec_is_finite(c)) {
         st->nonfinite++;

@@ -4,9 +4,11 @@
  * contain one another, and the camera looks at that box from outside or
  * from inside a solid.  Each primitive is written at its own origin and
  * moved by `translate` (after `scale`, with mirroring, and `rotate`), so
- * its bounding ball is known: the EXACT profile uses it to keep
- * transparent solids apart (POV-Ray and refray differ where a ray leaves a
- * solid that is not the last one it entered, spec/crosscheck.md).
+ * its bounding ball is known: the EXACT profile uses it to keep every
+ * transparent sphere apart from all other surfaces (which also keeps
+ * transparent solids from overlapping: POV-Ray and refray differ where a
+ * ray leaves a solid that is not the last one it entered, and where a
+ * shadow ray leaves glass next to another surface, spec/crosscheck.md).
  */
 #include <math.h>
 #include <stdarg.h>
@@ -15,11 +17,18 @@
 #include "base/sampler.h"
 #include "gen.h"
 
-enum { LINE_MAX_LEN = 1024, SOLID_MAX = 16 };
+enum { LINE_MAX_LEN = 1024, BALL_MAX = 16, PLANE_MAX = 2 };
 
+/* EXACT: transparent spheres stay this far from every other surface
+ * (POV-Ray's SHADOW_TOLERANCE where surfaces meet, [XCHK-MAP-SHADOW-2]). */
+#define CLEAR_GAP 0.05
+
+/* A bounding ball: every point of the primitive's bounding box (what the
+ * export tests for all but untransformed spheres) is within r of c. */
 typedef struct ball {
     double c[3], r;
-    int clear;       /* t > 0 */
+    int clear;       /* a transparent sphere */
+    int solid;       /* a solid whose centre is inside it: a place for the camera */
 } ball;
 
 typedef struct gen {
@@ -29,8 +38,10 @@ typedef struct gen {
     int depth;
     char line[DTGEN_STMT_MAX][LINE_MAX_LEN];
     int lines;
-    ball solid[SOLID_MAX];   /* the solids whose centre is inside them */
-    int solids;
+    ball balls[BALL_MAX];    /* the bounded primitives so far */
+    int nballs;
+    double plane_point[PLANE_MAX][3], plane_normal[PLANE_MAX][3];
+    int planes;
 } gen;
 
 static double uniform(gen *g)
@@ -115,6 +126,7 @@ static void put_colour(gen *g, double lo, double hi)
 /* What a primitive is, for its material. */
 typedef struct shape_use {
     int solid;        /* sphere, box, mesh */
+    int sphere;
     int normals;      /* a mesh with vertex normals */
 } shape_use;
 
@@ -122,9 +134,10 @@ typedef struct shape_use {
 static double choose_t(gen *g, const shape_use *u)
 {
     if (exact(g)) {
-        /* Transparent sheets get nudged iors and meshes with normals a
-         * listed difference: both are approximations of the export. */
-        if (!u->solid || (u->normals && g->depth > 1))
+        /* Transparent sheets get nudged iors, and transparent boxes and
+         * meshes meet POV-Ray's SHADOW_TOLERANCE at their edges: the
+         * export lists both as approximations. */
+        if (!u->sphere)
             return 0;
         return chance(g, 0.35) ? range(g, 0.2, 0.95) : 0;
     }
@@ -196,42 +209,55 @@ static double put_transforms(gen *g, const double c[3])
     return most;
 }
 
-static int overlaps_clear(const gen *g, const double c[3], double r)
+static double distance(const double a[3], const double b[3])
 {
-    for (int i = 0; i < g->solids; i++) {
-        const ball *b = &g->solid[i];
-        double d = sqrt((b->c[0] - c[0]) * (b->c[0] - c[0]) + (b->c[1] - c[1]) * (b->c[1] - c[1]) +
-                        (b->c[2] - c[2]) * (b->c[2] - c[2]));
-        if (b->clear && d < b->r + r)
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+static double plane_offset(const gen *g, int k, const double c[3])
+{
+    const double *q = g->plane_point[k], *n = g->plane_normal[k];
+    return fabs(n[0] * (c[0] - q[0]) + n[1] * (c[1] - q[1]) + n[2] * (c[2] - q[2]));
+}
+
+/* Whether a ball (c, r) would come near a transparent sphere, or, when it
+ * is one (clear), near anything (EXACT only). */
+static int too_near(const gen *g, const double c[3], double r, int clear)
+{
+    if (!exact(g))
+        return 0;
+    for (int i = 0; i < g->nballs; i++)
+        if ((clear || g->balls[i].clear) && distance(c, g->balls[i].c) < r + g->balls[i].r + CLEAR_GAP)
             return 1;
-    }
+    for (int k = 0; clear && k < g->planes; k++)
+        if (plane_offset(g, k, c) < r + CLEAR_GAP)
+            return 1;
     return 0;
 }
 
-/* Where a solid of bounding radius r goes: a point in the scene box; a
- * transparent one (EXACT) apart from every other transparent one, or
- * *t = 0 when no such place was found. */
-static void place_solid(gen *g, double r, double *t, double c[3])
+/* Where a primitive with bounding radius r goes: a point in the scene box
+ * that keeps it apart from the transparent spheres (*t = 0 when a
+ * transparent one finds no such place). */
+static void place(gen *g, double r, double *t, double c[3])
 {
     double half = exact(g) ? 2 : 1.5;
-    for (int tries = 0; tries < 20; tries++) {
+    for (int tries = 0; tries < 30; tries++) {
         random_point(g, half, c);
-        if (!exact(g) || !(*t > 0) || !overlaps_clear(g, c, r))
+        if (!too_near(g, c, r, *t > 0))
             return;
     }
     *t = 0;
 }
 
-static void remember_solid(gen *g, const double c[3], double r, double t, int centred)
+static void remember(gen *g, const double c[3], double r, int clear, int solid)
 {
-    if (g->solids == SOLID_MAX)
+    if (g->nballs == BALL_MAX)
         return;
-    ball *b = &g->solid[g->solids++];
+    ball *b = &g->balls[g->nballs++];
     memcpy(b->c, c, sizeof b->c);
     b->r = r;
-    b->clear = t > 0;
-    if (!centred)
-        b->r = -r;   /* its centre may lie outside it: never used to put a camera in */
+    b->clear = clear;
+    b->solid = solid;
 }
 
 typedef struct mesh_file {
@@ -248,11 +274,11 @@ static const mesh_file meshes[] = {
 
 static void put_solid(gen *g, int kind)
 {
-    shape_use u = {1, 0};
-    double c[3], local_r, t;
+    shape_use u = {1, kind == 0, 0};
+    double c[3], local_r, t, reach;
     const mesh_file *m = NULL;
-    double half[3] = {range(g, 0.2, 1), range(g, 0.2, 1), range(g, 0.2, 1)};
-    double radius = range(g, 0.3, 1.2), size = range(g, 0.3, 0.8);
+    double half[3] = {range(g, 0.3, 1.1), range(g, 0.3, 1.1), range(g, 0.3, 1.1)};
+    double radius = range(g, 0.4, 1.3), size = range(g, 0.4, 0.9);
     if (kind == 0) {
         local_r = radius;
     } else if (kind == 1) {
@@ -263,8 +289,13 @@ static void put_solid(gen *g, int kind)
         local_r = m->radius * size;
     }
     t = choose_t(g, &u);
-    /* the bound before the transforms' scale, which is at most 1.5 */
-    place_solid(g, 1.5 * local_r, &t, c);
+    /* A transparent sphere gets no scale, so the export tests its own
+     * ball; any other shape its bounding box, which lies within sqrt(3)
+     * of the ball scaled by at most 1.5. */
+    reach = kind == 0 && t > 0 ? local_r : 1.7320508075688772 * 1.5 * local_r;
+    place(g, reach, &t, c);
+    if (kind == 0 && !(t > 0))
+        reach = 1.7320508075688772 * 1.5 * local_r;
     if (kind == 0)
         put(g, "sphere { radius %.17g", radius);
     else if (kind == 1)
@@ -273,27 +304,80 @@ static void put_solid(gen *g, int kind)
     else
         put(g, "mesh { file \"%s/%s.obj\" scale %.17g", g->obj_dir, m->name, size);
     put_material(g, &u, t);
-    double most = put_transforms(g, c);
+    if (kind == 0 && t > 0 && exact(g))
+        put(g, " translate ");
+    if (kind == 0 && t > 0 && exact(g))
+        put_vec(g, c);
+    else
+        put_transforms(g, c);
     put(g, " }");
-    remember_solid(g, c, local_r * most, t, m == NULL || m->centred);
+    remember(g, c, reach, kind == 0 && t > 0, m == NULL || m->centred);
+}
+
+/* Whether the plane through q with normal n cuts or nears a transparent
+ * sphere (EXACT only). */
+static int plane_too_near(const gen *g, const double q[3], const double n[3])
+{
+    for (int i = 0; exact(g) && i < g->nballs; i++) {
+        const double *c = g->balls[i].c;
+        if (g->balls[i].clear &&
+            fabs(n[0] * (c[0] - q[0]) + n[1] * (c[1] - q[1]) + n[2] * (c[2] - q[2])) < g->balls[i].r + CLEAR_GAP)
+            return 1;
+    }
+    return 0;
+}
+
+/* A floor below the objects half the time, else any plane; apart from
+ * the transparent spheres. */
+static void put_plane(gen *g, const shape_use *u, double t)
+{
+    double q[3], n[3];
+    int tries = 0;
+    do {
+        random_point(g, 2, q);
+        random_direction(g, n);
+        if (chance(g, 0.5)) {
+            n[0] = n[2] = q[0] = q[2] = 0;
+            n[1] = 1;
+            q[1] = range(g, -3, -1.5);
+        }
+    } while (plane_too_near(g, q, n) && ++tries < 30);
+    if (g->planes < PLANE_MAX) {
+        memcpy(g->plane_point[g->planes], q, sizeof q);
+        memcpy(g->plane_normal[g->planes++], n, sizeof n);
+    }
+    put(g, "plane { point ");
+    put_vec(g, q);
+    put(g, " normal ");
+    put_vec(g, n);
+    put_material(g, u, t);
+    put(g, " }");
 }
 
 static void put_sheet(gen *g, int kind)
 {
-    shape_use u = {0, 0};
-    double t = choose_t(g, &u), c[3], n[3];
-    random_point(g, exact(g) ? 2 : 1.5, c);
+    shape_use u = {0, 0, 0};
+    double t = choose_t(g, &u), c[3], n[3], radius = range(g, 0.3, 1.5);
+    /* disk: radius; triangle: corners within sqrt(3) 0.8 of its origin;
+     * either scaled by at most 1.5, inside a box sqrt(3) wider */
+    double reach = 1.7320508075688772 * 1.5 * (kind == 0 ? radius : 1.3856406460551018);
+    if (kind == 2) {
+        put_plane(g, &u, t);
+        return;
+    }
+    place(g, reach, &t, c);
+    remember(g, c, reach, 0, 0);
     random_direction(g, n);
     if (kind == 0) {
         put(g, "disk { normal ");
         put_vec(g, n);
-        put(g, " radius %.17g", range(g, 0.3, 1.5));
-    } else if (kind == 1) {
+        put(g, " radius %.17g", radius);
+    } else {
         double a[3], b[3], d[3], ab[3], ad[3], cr[3];
         do {
-            random_point(g, 1.2, a);
-            random_point(g, 1.2, b);
-            random_point(g, 1.2, d);
+            random_point(g, 0.8, a);
+            random_point(g, 0.8, b);
+            random_point(g, 0.8, d);
             for (int i = 0; i < 3; i++) {
                 ab[i] = b[i] - a[i];
                 ad[i] = d[i] - a[i];
@@ -308,21 +392,6 @@ static void put_sheet(gen *g, int kind)
         put_vec(g, b);
         put(g, " ");
         put_vec(g, d);
-    } else {
-        /* a floor below the objects half the time, else any plane */
-        if (chance(g, 0.5)) {
-            n[0] = n[2] = 0;
-            n[1] = 1;
-            c[0] = c[2] = 0;
-            c[1] = range(g, -3, -1.5);
-        }
-        put(g, "plane { point ");
-        put_vec(g, c);
-        put(g, " normal ");
-        put_vec(g, n);
-        put_material(g, &u, t);
-        put(g, " }");
-        return;
     }
     put_material(g, &u, t);
     put_transforms(g, c);
@@ -347,11 +416,11 @@ static void put_primitive(gen *g, int planes_left)
 /* The centre of a solid that holds it, or NULL. */
 static const double *inside_point(gen *g)
 {
-    int found[SOLID_MAX], n = 0;
-    for (int i = 0; i < g->solids; i++)
-        if (g->solid[i].r > 0)
+    int found[BALL_MAX], n = 0;
+    for (int i = 0; i < g->nballs; i++)
+        if (g->balls[i].solid)
             found[n++] = i;
-    return n > 0 ? g->solid[found[pick(g, n)]].c : NULL;
+    return n > 0 ? g->balls[found[pick(g, n)]].c : NULL;
 }
 
 static void put_point_light(gen *g)
@@ -458,7 +527,7 @@ static void put_camera(gen *g)
         for (int i = 0; i < 3; i++)
             at[i] = eye[i] + dir[i];
     } else {
-        double dist = ortho ? range(g, 6, 10) : range(g, 4, 9);
+        double dist = ortho ? range(g, 5, 9) : range(g, 3, 7);
         random_point(g, 1, at);
         random_direction(g, dir);
         for (int i = 0; i < 3; i++)
@@ -470,9 +539,9 @@ static void put_camera(gen *g)
     put_vec(g, at);
     put(g, fabs(dir[1]) > 0.95 ? " up [0, 0, 1]" : " up [0, 1, 0]");
     if (ortho)
-        put(g, " width %.17g }", range(g, 3, 7));
+        put(g, " width %.17g }", range(g, 3, 6));
     else
-        put(g, " fov %.17g }", range(g, 30, 90));
+        put(g, " fov %.17g }", range(g, 35, 75));
 }
 
 /* ---- The scene ---- */
@@ -503,11 +572,8 @@ void dtgen_make(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const ch
      * solid: the primitives are drawn first, into lines 2.. */
     g.lines = 2;
     int prims = exact(&g) ? 1 + pick(&g, 6) : (chance(&g, 0.45) ? 1 : 2 + pick(&g, 3));
-    for (int i = 0, planes = 2; i < prims; i++) {
-        put_primitive(&g, planes);
-        if (strncmp(g.line[g.lines - 1], "plane", 5) == 0)
-            planes--;
-    }
+    for (int i = 0; i < prims; i++)
+        put_primitive(&g, PLANE_MAX - g.planes);
     put_lights(&g);
     int lines = g.lines;
     g.lines = 0;
