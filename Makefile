@@ -197,7 +197,7 @@ $(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
 # pixel; each scene with an interior disagreement is shrunk and written to
 # $(DIFFTEST_OUT), and the run fails.  Installs povray when missing.
 # `make difftest N=1000` is a long campaign; .ci/run runs a short one.
-DIFFTEST := $(BUILD)/difftest
+DIFFTEST := $(BUILD)/refray-difftest
 DIFFTEST_OBJS := $(addprefix $(BUILD)/obj/tests/difftest/,difftest.o run.o shrink.o gen.o)
 DIFFTEST_OUT ?= build/difftest
 N ?= 40
@@ -206,7 +206,7 @@ SEED ?= 1
 difftest: deps
 	$(Q)$(call need_program,povray,povray)
 	$(Q)$(MAKE) --no-print-directory $(DIFFTEST)
-	$(DIFFTEST) -n $(N) --seed $(SEED) -o $(DIFFTEST_OUT) --obj-dir tests/obj
+	$(DIFFTEST) -n $(N) --seed $(SEED) -o $(DIFFTEST_OUT) --obj-dir tests/obj --regress tests/difftest/regress
 
 $(DIFFTEST): $(DIFFTEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"

@@ -2,9 +2,16 @@
  * difftest.c - `make difftest`: random scenes rendered by refray and by
  * POV-Ray 3.7 and compared pixel by pixel (spec/crosscheck.md, section 5).
  *
- *   difftest [-n N] [--seed S] [--first K] [-o DIR] [--obj-dir DIR]
- *            [--povray PROG] [--tolerance STEPS] [--edge-radius PX]
- *            [--timeout SECONDS] [--keep]
+ *   refray-difftest [-n N] [--seed S] [--first K] [-o DIR] [--obj-dir DIR]
+ *                   [--povray PROG] [--tolerance STEPS] [--edge-radius PX]
+ *                   [--timeout SECONDS] [--keep]
+ *   refray-difftest --scene FILE [-o DIR] [the same options]
+ *
+ * --scene compares one scene file, approximations and all, and prints its
+ * verdict, the export's first note and the worst interior pixel.
+ * --regress DIR first compares every .scene file of DIR (the minimal
+ * scenes of past findings, tests/difftest/regress/): each must export
+ * exactly and have no interior disagreement.
  *
  * Scene i of seed S is tests/difftest/gen.c's DTGEN_EXACT scene of seed
  * S * 2^32 + i, for i = K .. K + N - 1, so a campaign and any one of its
@@ -17,6 +24,7 @@
  * Exit status: 0 when no scene has an interior disagreement and none
  * failed, 1 otherwise, 64 for bad usage.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -32,7 +40,7 @@ enum { PATH_LEN = 1024 };
 typedef struct options {
     long n, first;
     unsigned long seed;
-    const char *out, *obj_dir;
+    const char *out, *obj_dir, *scene, *regress;
     int keep;
     dt_config run;
 } options;
@@ -53,8 +61,10 @@ static const char *const discard_words[] = {
 
 static int usage(const char *why)
 {
-    fprintf(stderr, "difftest: %s\nusage: difftest [-n N] [--seed S] [--first K] [-o DIR] [--obj-dir DIR] "
-            "[--povray PROG] [--tolerance STEPS] [--edge-radius PX] [--timeout SECONDS] [--keep]\n", why);
+    fprintf(stderr, "difftest: %s\nusage: refray-difftest [-n N] [--seed S] [--first K] [-o DIR] [--obj-dir DIR] "
+            "[--povray PROG] [--tolerance STEPS] [--edge-radius PX] [--timeout SECONDS] [--keep]\n"
+            "       refray-difftest --scene FILE [-o DIR] [the same options]\n"
+            "       (--regress DIR: first every DIR/*.scene)\n", why);
     return 64;
 }
 
@@ -73,11 +83,15 @@ static int parse(options *o, int argc, char **argv)
     o->seed = 1;
     o->out = "build/difftest";
     o->obj_dir = "tests/obj";
+    o->scene = NULL;
+    o->regress = NULL;
     o->keep = 0;
     o->run.povray = "povray";
     o->run.tol_steps = 1;
     o->run.edge_radius = 0.125;
     o->run.timeout = 300;
+    o->run.approximations = 0;
+    o->run.diag = stderr;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         double v;
@@ -94,6 +108,10 @@ static int parse(options *o, int argc, char **argv)
             o->obj_dir = val;
         else if (strcmp(a, "--povray") == 0)
             o->run.povray = val;
+        else if (strcmp(a, "--scene") == 0)
+            o->scene = val;
+        else if (strcmp(a, "--regress") == 0)
+            o->regress = val;
         else if (!number(val, 0, 1e9, &v))
             return usage("a number option has a bad value");
         else if (strcmp(a, "-n") == 0)
@@ -148,7 +166,7 @@ static void clean_work(const options *o, const char *name)
     static const char *const ext[] = {"pov", "png", "log"};
     char path[PATH_LEN];
     for (int i = 0; i < 3; i++) {
-        snprintf(path, sizeof path, "%s/%s.%s", o->run.work_dir, name, ext[i]);
+        snprintf(path, sizeof path, "%.700s/%.250s.%s", o->run.work_dir, name, ext[i]);
         remove(path);
     }
 }
@@ -164,7 +182,7 @@ static const char *verdict_word(dt_verdict v)
 static void describe(char *buf, size_t size, const options *o, long i, const dt_result *r, const char *what)
 {
     snprintf(buf, size,
-             "# make difftest: %s; scene %ld of seed %lu (difftest --seed %lu --first %ld -n 1)\n"
+             "# make difftest: %s; scene %ld of seed %lu (refray-difftest --seed %lu --first %ld -n 1)\n"
              "# %d pixels: %d interior and %d edge pixels disagree; worst interior pixel (%d, %d) channel %d: "
              "refray %.9g, POV-Ray %.9g (export --scale %.17g)\n",
              what, i, o->seed, o->seed, i, r->pixels, r->interior, r->edge, r->worst_x, r->worst_y, r->worst_c,
@@ -273,6 +291,71 @@ static void one_scene(const options *o, long i, FILE *tsv, tally *t)
         clean_work(o, name);
 }
 
+/* Compares the scene file path (approximations too when the run's
+ * config allows them) and prints the verdict; 1 when it is a failure:
+ * an interior disagreement, a renderer failing, or a scene dropped. */
+static int one_file(const options *o, const char *path)
+{
+    static char text[1 << 20];
+    char name[PATH_LEN];
+    dt_result r;
+    FILE *f = fopen(path, "r");
+    size_t len = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    if (!f || ferror(f) || len == sizeof text - 1) {
+        fprintf(stderr, "difftest: cannot read %s (or it is over 1 MB)\n", path);
+        if (f)
+            fclose(f);
+        return 1;
+    }
+    fclose(f);
+    text[len] = '\0';
+    const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    snprintf(name, sizeof name, "one-%.200s", base);
+    dt_verdict v = dt_run(&o->run, name, text, &r);
+    printf("difftest: %s: %s: %d edge, %d interior pixels of %d; largest difference %.3g steps\n", path,
+           verdict_word(v), r.edge, r.interior, r.pixels, r.max_steps);
+    if (r.interior > 0)
+        printf("difftest: worst interior pixel (%d, %d) channel %d: refray %.9g, POV-Ray %.9g\n", r.worst_x,
+               r.worst_y, r.worst_c, r.refray_value, r.pov_value);
+    if (r.notes > 0 || v == DT_FAILED || v == DT_DISCARDED)
+        printf("difftest: %d approximations listed by the export; the first: %s\n", r.notes, r.why);
+    fflush(stdout);
+    if (!o->keep && v != DT_INTERIOR && v != DT_FAILED)
+        clean_work(o, name);
+    return v == DT_INTERIOR || v == DT_FAILED || v == DT_DISCARDED;
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* Every .scene file of o->regress, in name order; the number that failed. */
+static int regressions(const options *o)
+{
+    char *names[256], path[PATH_LEN];
+    int n = 0, failed = 0;
+    DIR *dir = opendir(o->regress);
+    if (!dir) {
+        fprintf(stderr, "difftest: cannot read the directory %s\n", o->regress);
+        return 1;
+    }
+    for (struct dirent *e = readdir(dir); e && n < 256; e = readdir(dir)) {
+        size_t len = strlen(e->d_name);
+        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0 && (names[n] = malloc(len + 1)) != NULL)
+            memcpy(names[n++], e->d_name, len + 1);
+    }
+    closedir(dir);
+    qsort(names, (size_t)n, sizeof names[0], by_name);
+    for (int i = 0; i < n; i++) {
+        snprintf(path, sizeof path, "%s/%s", o->regress, names[i]);
+        failed += one_file(o, path);
+        free(names[i]);
+    }
+    printf("difftest: %d regression scenes of %s, %d failed\n", n, o->regress, failed);
+    return failed;
+}
+
 int main(int argc, char **argv)
 {
     options o;
@@ -289,6 +372,16 @@ int main(int argc, char **argv)
         return 1;
     }
     o.obj_dir = objs;
+    if (o.scene) {
+        o.run.approximations = 1;
+        return one_file(&o, o.scene);
+    }
+    int regressed = o.regress ? regressions(&o) : 0;
+    /* The shrinking tries scenes that do not load (no primitive left): a
+     * generated scene that does not load is a failure, run again with
+     * --scene to see why. */
+    FILE *null = fopen("/dev/null", "w");
+    o.run.diag = null ? null : stderr;
     memset(&t, 0, sizeof t);
     t.steps = calloc((size_t)(o.n > 0 ? o.n : 1), sizeof *t.steps);
     snprintf(path, sizeof path, "%s/scenes.tsv", o.out);
@@ -304,7 +397,9 @@ int main(int argc, char **argv)
         one_scene(&o, i, tsv, &t);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     fclose(tsv);
+    if (null)
+        fclose(null);
     summarise(&o, &t, (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
     free(t.steps);
-    return t.verdicts[DT_INTERIOR] > 0 || t.verdicts[DT_FAILED] > 0;
+    return regressed > 0 || t.verdicts[DT_INTERIOR] > 0 || t.verdicts[DT_FAILED] > 0;
 }

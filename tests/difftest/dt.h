@@ -8,6 +8,7 @@
 #ifndef REFRAY_DIFFTEST_DT_H
 #define REFRAY_DIFFTEST_DT_H
 
+#include <stdio.h>
 #include "export/export_pov.h"
 #include "gen.h"
 
@@ -17,6 +18,8 @@ typedef struct dt_config {
     double tol_steps;       /* a difference above this many 16-bit steps disagrees */
     double edge_radius;     /* in pixels of POV-Ray's render: see dt_run */
     int timeout;            /* seconds for one POV-Ray render */
+    int approximations;     /* 1: compare a scene whose export lists approximations too */
+    FILE *diag;             /* where a scene's load diagnostics go */
 } dt_config;
 
 typedef enum dt_verdict {
@@ -29,7 +32,8 @@ typedef enum dt_verdict {
 
 typedef struct dt_result {
     dt_verdict verdict;
-    char why[POV_NOTE_LEN];   /* discarded: the first note; failed: the reason */
+    char why[POV_NOTE_LEN];   /* discarded (or compared anyway): the first note; failed: the reason */
+    int notes;                /* approximations the export lists */
     int pixels;
     int edge, interior;       /* disagreeing pixels of each kind */
     double worst_interior;    /* largest |refray - POV-Ray| over interior pixels, scene units */

@@ -255,15 +255,18 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
     memset(r, 0, sizeof *r);
     memset(&o, 0, sizeof o);
     snprintf(path, sizeof path, "%s/%s.scene", c->work_dir, name);
-    rf_scene *s = scene_load_text(path, text, strlen(text), NULL, stderr, 0, &status);
+    rf_scene *s = scene_load_text(path, text, strlen(text), NULL, c->diag, 0, &status);
     if (!s) {
         fail(r, "%.250s does not load", name);
         return r->verdict;
     }
     r->pixels = s->image.width * s->image.height;
-    if (!pov_export_check(s, &o, &notes) || notes.count > 0) {
-        r->verdict = DT_DISCARDED;
+    int exportable = pov_export_check(s, &o, &notes);
+    r->notes = notes.count;
+    if (!exportable || notes.count > 0)
         snprintf(r->why, sizeof r->why, "%s", notes.refused ? notes.reason : notes.text[0]);
+    if (!exportable || (notes.count > 0 && !c->approximations)) {
+        r->verdict = DT_DISCARDED;
     } else if (render_image(s, NULL, &ours, NULL) != REFRAY_EXIT_OK) {
         fail(r, "refray could not render %.250s", name);
     } else {
