@@ -192,8 +192,9 @@ $(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
 
 # Differential testing against POV-Ray 3.7 (spec/crosscheck.md, section 5):
-# N random scenes of seed SEED (tests/difftest/gen.c, only what the export
-# maps exactly) rendered by refray and by POV-Ray and compared pixel by
+# the minimal scenes of past findings (tests/difftest/regress/), then N
+# random scenes of seed SEED (tests/difftest/gen.c, only what the export
+# maps exactly), rendered by refray and by POV-Ray and compared pixel by
 # pixel; each scene with an interior disagreement is shrunk and written to
 # $(DIFFTEST_OUT), and the run fails.  Installs povray when missing.
 # `make difftest N=1000` is a long campaign; .ci/run runs a short one.
@@ -204,6 +205,7 @@ N ?= 40
 SEED ?= 1
 
 difftest: deps
+	$(if $(filter 0,$(PNG)),$(error make difftest reads POV-Ray's pictures as PNG: it needs PNG=1))
 	$(Q)$(call need_program,povray,povray)
 	$(Q)$(MAKE) --no-print-directory $(DIFFTEST)
 	$(DIFFTEST) -n $(N) --seed $(SEED) -o $(DIFFTEST_OUT) --obj-dir tests/obj --regress tests/difftest/regress
