@@ -176,9 +176,10 @@ static void check_light(const rf_scene *s, const rf_light *l, double radius, con
         check_sampling(l, at, o, n);
 }
 
+/* An open cylinder or cone is a sheet, as in refray ([XCHK-MAP-QUADRIC-1]). */
 static int is_solid(const rf_prim *p)
 {
-    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
+    return scene_prim_is_solid(p) || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
 }
 
 static int is_grey(rgb c)
@@ -291,16 +292,18 @@ static void check_shadow_tolerance(const rf_scene *s, pov_notes *n)
         if (!(s->materials[p->material].t > 0) || (mesh && s->meshes[p->mesh].first_prim != i))
             continue;
         where(s, mesh ? s->meshes[p->mesh].where : p->where, at, sizeof at);
-        if (p->kind == PRIM_BOX || mesh)
+        int edges = mesh || (scene_prim_is_solid(p) && p->kind != PRIM_SPHERE && p->kind != PRIM_TORUS);
+        const char *kind = mesh ? "mesh" : scene_prim_name(p->kind);
+        if (edges)
             add_note(n, "transparent %s at %s has edges: POV-Ray ignores a shadow-ray crossing within 1e-3 of the "
                      "shaded point (SHADOW_TOLERANCE), so inside it, next to an edge, the adjacent face does not "
-                     "shadow in POV-Ray and lets t through in refray", mesh ? "mesh" : "box", at);
-        else if (p->kind == PRIM_SPHERE && (other = pov_far_near_sphere(s, i, POV_SHADOW_TOLERANCE)) >= 0) {
+                     "shadow in POV-Ray and lets t through in refray", kind, at);
+        else if (scene_prim_is_solid(p) && (other = pov_far_near_solid(s, i, POV_SHADOW_TOLERANCE)) >= 0) {
             const rf_prim *q = &s->prims[other];
             where(s, q->mesh >= 0 ? s->meshes[q->mesh].where : q->where, at_other, sizeof at_other);
-            add_note(n, "transparent sphere at %s cuts or comes within 1e-3 of the surface at %s: POV-Ray ignores a "
+            add_note(n, "transparent %s at %s cuts or comes within 1e-3 of the surface at %s: POV-Ray ignores a "
                      "shadow-ray crossing within 1e-3 of the one before it (SHADOW_TOLERANCE), so a shadow ray "
-                     "that leaves the sphere next to that surface passes it in POV-Ray", at, at_other);
+                     "that leaves it next to that surface passes that surface in POV-Ray", kind, at, at_other);
         }
     }
 }
@@ -645,6 +648,30 @@ static void write_matrix(FILE *fp, const xform *x)
     fputs(">\n", fp);
 }
 
+/* [XCHK-MAP-QUADRIC-1] POV-Ray's torus lies about its y axis at the
+ * origin: a matrix takes y to the axis (in POV-Ray's frame) and the origin
+ * to the centre.  Any orthonormal frame with that image of y will do, the
+ * torus being the same under every turn about its axis and every mirror
+ * through it. */
+static void write_torus_placement(FILE *fp, const rf_prim *p)
+{
+    vec3 a = vec_normalize(to_pov(p->u.torus.axis)), c = to_pov(p->u.torus.center);
+    vec3 least = fabs(a.x) <= fabs(a.y) && fabs(a.x) <= fabs(a.z) ? vec_make(1, 0, 0)
+                 : fabs(a.y) <= fabs(a.z)                          ? vec_make(0, 1, 0)
+                                                                    : vec_make(0, 0, 1);
+    vec3 u = vec_normalize(vec_cross(a, least)), w = vec_cross(u, a);
+    const vec3 rows[4] = {u, a, w, c};
+    fputs("  sturm\n  matrix <", fp);
+    for (int i = 0; i < 4; i++) {
+        put_num(fp, rows[i].x);
+        fputs(", ", fp);
+        put_num(fp, rows[i].y);
+        fputs(", ", fp);
+        put_num(fp, rows[i].z);
+        fputs(i < 3 ? ", " : ">", fp);
+    }
+}
+
 static void write_shape(FILE *fp, const rf_prim *p)
 {
     switch (p->kind) {
@@ -674,6 +701,34 @@ static void write_shape(FILE *fp, const rf_prim *p)
         put_vec(fp, to_pov(p->u.box.lo));
         fputs(", ", fp);
         put_vec(fp, to_pov(p->u.box.hi));
+        break;
+    case PRIM_CYLINDER:
+        fputs("cylinder {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.from));
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cylinder.radius);
+        fputs(p->u.cylinder.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_CONE:
+        fputs("cone {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cone.from));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[0]);
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cone.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[1]);
+        fputs(p->u.cone.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_TORUS:
+        fputs("torus {\n  ", fp);
+        put_num(fp, p->u.torus.major);
+        fputs(", ", fp);
+        put_num(fp, p->u.torus.minor);
+        fputc('\n', fp);
+        write_torus_placement(fp, p);
         break;
     case PRIM_TRIANGLE:
         fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);

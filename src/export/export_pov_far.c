@@ -55,6 +55,20 @@ static void extent_add_prim(extent *e, const rf_prim *p)
         for (int i = 0; i < 3; i++)
             extent_add(e, p->u.triangle.p[i]);
         break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE: {
+        vec3 a = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
+        vec3 b = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
+        vec3 r = vec_splat(p->kind == PRIM_CONE ? fmax(p->u.cone.radius[0], p->u.cone.radius[1])
+                                                : p->u.cylinder.radius);
+        extent_add_box(e, p, vec_sub(vec_min(a, b), r), vec_add(vec_max(a, b), r));
+        break;
+    }
+    case PRIM_TORUS: {
+        vec3 r = vec_splat(p->u.torus.major + p->u.torus.minor);
+        extent_add_box(e, p, vec_sub(p->u.torus.center, r), vec_add(p->u.torus.center, r));
+        break;
+    }
     case PRIM_PLANE:
         break;
     }
@@ -182,7 +196,7 @@ double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_lig
     return c.farthest;
 }
 
-/* ---- Surfaces within a gap of a transparent sphere ---- */
+/* ---- Surfaces within a gap of a transparent solid ---- */
 
 static int boxes_near(vec3 alo, vec3 ahi, vec3 blo, vec3 bhi, double gap)
 {
@@ -225,18 +239,18 @@ static int ball_near(const rf_prim *a, const rf_prim *b, double gap)
     return isect_prim_bounds(b, &lo, &hi) && ball_near_box(c, r, lo, hi, gap);
 }
 
-int pov_far_near_sphere(const rf_scene *s, int sphere, double gap)
+int pov_far_near_solid(const rf_scene *s, int solid, double gap)
 {
-    const rf_prim *a = &s->prims[sphere];
+    const rf_prim *a = &s->prims[solid];
     vec3 alo, ahi, blo, bhi;
     if (!isect_prim_bounds(a, &alo, &ahi))
         return -1;
     for (int i = 0; i < s->prim_count; i++) {
         const rf_prim *b = &s->prims[i];
         int near;
-        if (i == sphere)
+        if (i == solid)
             continue;
-        if (!a->has_xform)
+        if (a->kind == PRIM_SPHERE && !a->has_xform)
             near = ball_near(a, b, gap);
         else if (b->kind == PRIM_PLANE)
             near = plane_near_box(b, alo, ahi, gap);

@@ -55,11 +55,10 @@ double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_lig
  * transparent crossing before it is not counted. */
 #define POV_SHADOW_TOLERANCE 1e-3
 
-/* The first primitive other than sphere (an index into s->prims, a sphere)
- * whose surface may come within gap of the sphere's (they cut or touch),
- * or -1.  Exact against planes and untransformed spheres; against other
- * shapes, and for an ellipsoid, their bounding boxes stand in, so it errs
- * toward finding one. */
-int pov_far_near_sphere(const rf_scene *s, int sphere, double gap);
+/* The first primitive other than solid (an index into s->prims) whose
+ * surface may come within gap of solid's (they cut or touch), or -1.  For
+ * an untransformed sphere exact against planes and untransformed spheres;
+ * otherwise bounding boxes stand in, so it errs toward finding one. */
+int pov_far_near_solid(const rf_scene *s, int solid, double gap);
 
 #endif

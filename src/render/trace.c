@@ -34,7 +34,7 @@ typedef struct surface {
 int trace_solid_id(const rf_scene *s, int prim)
 {
     const rf_prim *p = &s->prims[prim];
-    if (p->kind == PRIM_SPHERE || p->kind == PRIM_BOX)
+    if (scene_prim_is_solid(p))
         return prim;
     if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
         return s->prim_count + p->mesh;
@@ -102,6 +102,21 @@ static uint64_t bits_of(real x)
     uint64_t u;
     memcpy(&u, &d, sizeof u);
     return u;
+}
+
+/* Which piece of a primitive made of pieces a hit is on: a box's face (its
+ * normal, constant over it), a cylinder's or cone's cap or side (a cap's
+ * normal is the axis); 0 for the others. */
+static uint64_t piece_of(const rf_prim *p, const hit *h)
+{
+    if (p->kind == PRIM_BOX)
+        return bits_of(h->normal.x) ^ bits_of(h->normal.y) << 1 ^ bits_of(h->normal.z) << 2;
+    if (p->kind != PRIM_CYLINDER && p->kind != PRIM_CONE)
+        return 0;
+    vec3 a = p->kind == PRIM_CYLINDER ? vec_sub(p->u.cylinder.to, p->u.cylinder.from)
+                                      : vec_sub(p->u.cone.to, p->u.cone.from);
+    real c = vec_dot(h->normal, vec_normalize(p->has_xform ? xform_vector(&p->to_world, a) : a));
+    return c > 1 - 1e-9 ? 1 : c < -(1 - 1e-9) ? 2 : 3;
 }
 
 typedef struct shadow_walk {
@@ -427,16 +442,12 @@ static int probe_crossing(void *ctx, const hit *h)
     return 0;
 }
 
-/* Strictly inside a sphere or box (in its own frame); for a mesh, an odd
+/* Strictly inside a solid primitive (in its own frame); for a mesh, an odd
  * number of crossings of the probe. */
 static int contains(const rf_prim *p, vec3 point, int crossings)
 {
-    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
-    if (p->kind == PRIM_SPHERE)
-        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
-    if (p->kind == PRIM_BOX)
-        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
-               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    if (scene_prim_is_solid(p))
+        return scene_prim_contains(p, point);
     return crossings % 2 == 1;
 }
 
@@ -492,8 +503,8 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
         return c;
     int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
     path_note(st, met ? (uint64_t)h.prim + 5 : 0);
-    if (met && t->scene->prims[h.prim].kind == PRIM_BOX)   /* which face: constant over it */
-        path_note(st, bits_of(h.normal.x) ^ bits_of(h.normal.y) << 1 ^ bits_of(h.normal.z) << 2);
+    if (met)
+        path_note(st, piece_of(&t->scene->prims[h.prim], &h));
     if (met)
         c = shade(t, &nearest, &h, depth, media, key, st);
     if (!vec_is_finite(c)) {

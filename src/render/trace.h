@@ -29,11 +29,12 @@ typedef struct trace_stats {
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
     long medium_overflow;     /* glass nested deeper than the medium stack holds */
-    /* A hash of the ray tree's shape, in order: the primitive (and box
-     * face) each ray met, which side of each light the surface faced and
-     * what its shadow ray let through, refraction or total reflection.  Two
-     * nearby camera rays with the same hash met the same things (make
-     * difftest tells edge pixels by it); the image never depends on it. */
+    /* A hash of the ray tree's shape, in order: the primitive (and the face
+     * of a box, the cap or side of a cylinder or cone) each ray met, which
+     * side of each light the surface faced and what its shadow ray let
+     * through, refraction or total reflection.  Two nearby camera rays with
+     * the same hash met the same things (make difftest tells edge pixels by
+     * it); the image never depends on it. */
     uint64_t path;
     bvh_stats bvh;
 } trace_stats;

@@ -29,6 +29,7 @@ typedef struct loader {
     src_span image_where;       /* first `image` block (file -1: none yet) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
+    const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
 } loader;
 
@@ -75,6 +76,18 @@ int lower_material_ref(loader *L, const props *p);
 
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
+/* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
+void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local);
+/* A normal or axis n taken to the world by the inverse transpose, made unit
+ * (or left zero or non-finite when it cannot be, for the range check). */
+vec3 lower_transformed_normal(const xform *to_local, vec3 n);
+
+/* lower_quadrics.c: cylinder, cone and torus (block is KW_CYLINDER,
+ * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
+int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim);
+void lower_place_quadric(rf_prim *prim, const xform *to_world, const xform *to_local);
+/* 1 when every number of the placed shape is finite and in its domain. */
+int lower_quadric_in_range(const rf_prim *prim);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);

@@ -95,6 +95,8 @@ int lower_image(loader *L, const ast *block)
     return ok;
 }
 
+/* Perspective or orthographic, and no property of the other kind; both
+ * mistakes are reported when both are made. */
 static int camera_kind(loader *L, const props *p, rf_camera *cam)
 {
     const ast *persp = p->by_keyword[KW_PERSPECTIVE], *ortho = p->by_keyword[KW_ORTHOGRAPHIC];
@@ -114,17 +116,23 @@ static int camera_kind(loader *L, const props *p, rf_camera *cam)
 }
 
 /* forward = look_at - eye; right = forward x up; true_up = right x forward.
- * When look_at - eye overflows, half of each gives the same direction. */
+ * When look_at - eye overflows, half of each gives the same direction.
+ * A zero view and a zero up are both reported; parallel only when neither. */
 static int camera_basis(loader *L, const props *p, rf_camera *cam)
 {
     vec3 view = vec_sub(cam->look_at, cam->eye), up;
     if (!vec_is_finite(view))
         view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
-    if (!loader_unit(view, &cam->forward)) {
+    int ok = loader_unit(view, &cam->forward);
+    if (!ok)
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_LOOK_AT] ? KW_LOOK_AT : KW_EYE),
                     "look_at must differ from eye (the view direction has zero length)");
+    if (vec_length(cam->up) == 0) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP), "up must not be a zero-length vector");
         return 0;
     }
+    if (!ok)
+        return 0;
     loader_unit(cam->up, &up);
     vec3 side = vec_cross(cam->forward, up);
     if (vec_length(side) < 1e-9) {
@@ -137,28 +145,27 @@ static int camera_basis(loader *L, const props *p, rf_camera *cam)
     return 1;
 }
 
+/* Every property is checked even after an error, so one run reports all
+ * of a camera's mistakes ([LANG-CAMERA-2]).  A second camera is checked
+ * into a copy and reported, the first one kept. */
 int lower_camera(loader *L, const ast *block)
 {
     props p;
-    rf_camera *cam = &L->scene->camera;
+    rf_camera copy = L->scene->camera;
     int first = first_block(L, block, &L->camera_where);
-    if (!props_collect(L, block, &p) || !first)
-        return 0;
+    rf_camera *cam = first ? &L->scene->camera : &copy;
+    int ok = props_collect(L, block, &p) & first;
     cam->where = block->head;
-    if (!camera_kind(L, &p, cam))
-        return 0;
-    int ok = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
-    ok &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
-    ok &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
-    if (ok && vec_length(cam->up) == 0) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(&p, KW_UP), "up must not be a zero-length vector");
-        ok = 0;
-    }
+    ok &= camera_kind(L, &p, cam);
+    int placed = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
+    placed &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
+    placed &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
     ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov) &&
           in_range(L, props_value_span(&p, KW_FOV), "fov", cam->fov, 0, 1, 180, 1);
     ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width) &&
           in_range(L, props_value_span(&p, KW_WIDTH), "width", cam->width, 0, 1, HUGE_VAL, 0);
-    return ok && camera_basis(L, &p, cam);
+    int basis = placed && camera_basis(L, &p, cam);
+    return ok && basis;
 }
 
 int lower_ambient(loader *L, const ast *block)
@@ -378,6 +385,53 @@ static int default_material(loader *L)
     return L->default_material;
 }
 
+/* Named materials defined anywhere in the file being lowered after
+ * offset `after` (loop bodies included): names and the spans of their names. */
+enum { LATER_MAX = 256 };
+typedef struct later_materials {
+    const char *names[LATER_MAX];
+    src_span where[LATER_MAX];
+    int count;
+} later_materials;
+
+static void collect_later(const ast *list, size_t after, later_materials *out)
+{
+    for (const ast *node = list ? list->first : NULL; node && out->count < LATER_MAX; node = node->next) {
+        if (node->kind == AST_FOR)
+            collect_later(node->first->next->next, after, out);
+        else if (node->kind == AST_BLOCK && node->keyword == KW_MATERIAL && node->text && node->head.begin > after) {
+            out->names[out->count] = node->text;
+            out->where[out->count++] = node->head;
+        }
+    }
+}
+
+/* "did you mean" among the materials the file defines only further down:
+ * 1 when it reported. */
+static int report_defined_later(loader *L, const char *name, src_span at)
+{
+    later_materials later;
+    later.count = 0;
+    if (!L->tree)
+        return 0;
+    collect_later(L->tree, at.begin, &later);
+    const char *hint = suggest_nearest(name, strlen(name), later.names, later.count);
+    int k = 0;
+    while (hint && later.names[k] != hint)
+        k++;
+    if (!hint || later.where[k].file != at.file)
+        return 0;
+    int line, col;
+    source_line_col(L->scene->sources.files[at.file], later.where[k].begin, &line, &col);
+    if (strcmp(hint, name) == 0)
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s': it is defined only later, at line %d "
+                    "(define a material before its first use)", name, line);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s' (defined at line %d)?",
+                    name, hint, line);
+    return 1;
+}
+
 static int named_material(loader *L, const char *name, src_span at)
 {
     int index = find_material(L->scene, name);
@@ -391,7 +445,7 @@ static int named_material(loader *L, const char *name, src_span at)
     const char *hint = suggest_nearest(name, strlen(name), names, count);
     if (hint)
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s'?", name, hint);
-    else
+    else if (!report_defined_later(L, name, at))
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s' (define it with `material %s { ... }` before use)",
                     name, name);
     return -1;

@@ -272,46 +272,72 @@ static const mesh_file meshes[] = {
     {"icosahedron_smooth", 1.9021130325903071, 1, 1},
 };
 
+/* The kinds put_solid makes. */
+enum { SOLID_SPHERE, SOLID_BOX, SOLID_MESH, SOLID_CYLINDER, SOLID_CONE, SOLID_TORUS };
+
+/* A cylinder, cone or torus about the y axis at the origin (open now and
+ * then: a sheet); returns the radius of a ball about the origin that
+ * holds it. */
+static double put_quadric(gen *g, int kind, int open)
+{
+    double h = range(g, 0.3, 1), r = range(g, 0.3, 1), r1 = chance(g, 0.3) ? 0 : range(g, 0.1, 1);
+    if (kind == SOLID_CYLINDER)
+        put(g, "cylinder { from [0, %.17g, 0] to [0, %.17g, 0] radius %.17g%s", -h, h, r, open ? " open" : "");
+    else if (kind == SOLID_CONE)
+        put(g, "cone { from [0, %.17g, 0] to [0, %.17g, 0] radii %.17g %.17g%s", -h, h, r, r1, open ? " open" : "");
+    else
+        put(g, "torus { major %.17g minor %.17g", r + 0.3, r1 > 0 ? 0.9 * fmin(r1, r) : 0.5 * r);
+    if (kind == SOLID_TORUS)
+        return r + 0.3 + 0.9 * r;
+    return sqrt(h * h + r * r);
+}
+
 static void put_solid(gen *g, int kind)
 {
-    shape_use u = {1, kind == 0, 0};
-    double c[3], local_r, t, reach;
+    shape_use u = {1, kind == SOLID_SPHERE, 0};
+    double c[3], local_r = 0, t, reach;
     const mesh_file *m = NULL;
     double half[3] = {range(g, 0.3, 1.1), range(g, 0.3, 1.1), range(g, 0.3, 1.1)};
     double radius = range(g, 0.4, 1.3), size = range(g, 0.4, 0.9);
-    if (kind == 0) {
+    int open = (kind == SOLID_CYLINDER || kind == SOLID_CONE) && chance(g, 0.3);
+    u.solid = !open;
+    if (kind == SOLID_SPHERE) {
         local_r = radius;
-    } else if (kind == 1) {
+    } else if (kind == SOLID_BOX) {
         local_r = sqrt(half[0] * half[0] + half[1] * half[1] + half[2] * half[2]);
-    } else {
+    } else if (kind == SOLID_MESH) {
         m = &meshes[pick(g, 3)];
         u.normals = m->normals;
         local_r = m->radius * size;
     }
     t = choose_t(g, &u);
-    /* A transparent sphere gets no scale, so the export tests its own
-     * ball; any other shape its bounding box, which lies within sqrt(3)
-     * of the ball scaled by at most 1.5. */
-    reach = kind == 0 && t > 0 ? local_r : 1.7320508075688772 * 1.5 * local_r;
-    place(g, reach, &t, c);
-    if (kind == 0 && !(t > 0))
-        reach = 1.7320508075688772 * 1.5 * local_r;
-    if (kind == 0)
+    /* The shape's own words first, then its place, which needs its size:
+     * a transparent sphere gets no scale, so the export tests its own
+     * ball; any other shape its bounding box, which lies within sqrt(3) of
+     * the ball scaled by at most 1.5. */
+    if (kind == SOLID_SPHERE)
         put(g, "sphere { radius %.17g", radius);
-    else if (kind == 1)
+    else if (kind == SOLID_BOX)
         put(g, "box { from [%.17g, %.17g, %.17g] to [%.17g, %.17g, %.17g]", -half[0], -half[1], -half[2], half[0],
             half[1], half[2]);
-    else
+    else if (kind == SOLID_MESH)
         put(g, "mesh { file \"%s/%s.obj\" scale %.17g", g->obj_dir, m->name, size);
+    else
+        local_r = put_quadric(g, kind, open);
+    reach = kind == SOLID_SPHERE && t > 0 ? local_r : 1.7320508075688772 * 1.5 * local_r;
+    place(g, reach, &t, c);
+    if (kind == SOLID_SPHERE && !(t > 0))
+        reach = 1.7320508075688772 * 1.5 * local_r;
     put_material(g, &u, t);
-    if (kind == 0 && t > 0 && exact(g))
+    if (kind == SOLID_SPHERE && t > 0 && exact(g))
         put(g, " translate ");
-    if (kind == 0 && t > 0 && exact(g))
+    if (kind == SOLID_SPHERE && t > 0 && exact(g))
         put_vec(g, c);
     else
         put_transforms(g, c);
     put(g, " }");
-    remember(g, c, reach, kind == 0 && t > 0, m == NULL || m->centred);
+    remember(g, c, reach, kind == SOLID_SPHERE && t > 0,
+             !open && kind != SOLID_TORUS && (m == NULL || m->centred));
 }
 
 /* Whether the plane through q with normal n cuts or nears a transparent
@@ -400,15 +426,17 @@ static void put_sheet(gen *g, int kind)
 
 static void put_primitive(gen *g, int planes_left)
 {
-    int kind = pick(g, planes_left > 0 ? 7 : 6);
+    int kind = pick(g, planes_left > 0 ? 8 : 7);
     if (!begin(g))
         return;
     if (kind < 3)
         put_solid(g, kind);                   /* sphere, box, mesh */
     else if (kind == 3)
-        put_solid(g, 0);
+        put_solid(g, SOLID_SPHERE);
+    else if (kind == 4)
+        put_solid(g, SOLID_CYLINDER + pick(g, 3));
     else
-        put_sheet(g, kind - 4);               /* disk, triangle, plane */
+        put_sheet(g, kind - 5);               /* disk, triangle, plane */
 }
 
 /* ---- Lights ---- */

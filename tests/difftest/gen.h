@@ -3,12 +3,13 @@
  *
  * Two profiles share the generator:
  *   DTGEN_EXACT  what `refray export --to pov` maps exactly (spec/
- *                crosscheck.md): spheres, boxes, disks, triangles, planes,
- *                OBJ meshes with and without normals, transforms with
- *                mirroring, both cameras (also inside solids), point lights
- *                with falloff none or linear with d0 > 0, distant lights,
- *                ambient, grey Ks, glass solids with Ks + t = 1 that do not
- *                overlap; for `make difftest` (tests/difftest/difftest.c),
+ *                crosscheck.md): spheres, boxes, cylinders, cones and tori
+ *                (closed and open), disks, triangles, planes, OBJ meshes
+ *                with and without normals, transforms with mirroring, both
+ *                cameras (also inside solids), point lights with falloff
+ *                none or linear with d0 > 0, distant lights, ambient, grey
+ *                Ks, glass spheres with Ks + t = 1 apart from every other
+ *                surface; for `make difftest` (tests/difftest/difftest.c),
  *                which still drops any scene whose export lists an
  *                approximation.
  *   DTGEN_ANY    everything the language has, in small images, with lone
