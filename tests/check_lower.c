@@ -476,8 +476,8 @@ static rf_features features_of(const char *text)
 /* [LANG-FEATURES-1] [LANG-FEATURES-2] the record of what a scene uses. */
 START_TEST(test_scene_load_features)
 {
-    /* A lone flat primitive cannot shadow itself; a lone sphere or box can,
-     * seen from inside. */
+    /* A lone flat primitive cannot shadow itself; a lone solid can, seen
+     * from inside (a closed cylinder or cone too). */
     rf_features f = features_of("plane {} point_light { position [0, 5, 0] }");
     ck_assert_int_eq(f.shadows, 0);
     f = features_of("disk {} point_light { position [0, 5, 0] }");
@@ -487,6 +487,10 @@ START_TEST(test_scene_load_features)
     f = features_of("sphere {} point_light { position [0, 5, 0] }");
     ck_assert_int_eq(f.shadows, 1);
     f = features_of("box { from [0, 0, 0] to [1, 1, 1] } point_light { position [0, 5, 0] }");
+    ck_assert_int_eq(f.shadows, 1);
+    f = features_of("cylinder {} point_light { position [0, 5, 0] }");
+    ck_assert_int_eq(f.shadows, 1);
+    f = features_of("cone {} distant_light { direction [0, -1, 0] }");
     ck_assert_int_eq(f.shadows, 1);
     f = features_of("sphere {} sphere { center [3, 0, 0] }");
     ck_assert_int_eq(f.shadows, 0);     /* no light */
