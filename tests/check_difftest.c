@@ -9,14 +9,15 @@
 #include "testlib.h"
 #include "difftest/gen.h"
 #include "export/export_pov.h"
+#include "io/scene_file.h"
 #include "render/camera.h"
 #include "render/trace.h"
 #include "scene/scene.h"
 
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
@@ -70,7 +71,7 @@ START_TEST(test_dtgen_exact_scenes_export_exactly)
         pov_notes n;
         memset(&o, 0, sizeof o);
         dtgen_make(&g, (uint64_t)i, DTGEN_EXACT, "tests/obj");
-        rf_scene *s = scene_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
+        scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
         ck_assert_msg(s != NULL, "generated scene %d did not load:\n%s", i, g.text);
         exact += pov_export_check(s, &o, &n) && n.count == 0;
         scene_free(s);
@@ -96,11 +97,11 @@ static uint64_t path_at(const tracer *t, double x, double y)
  * the background (the floor is a disk) have four different ones. */
 START_TEST(test_trace_path_tells_what_rays_met)
 {
-    rf_scene *s = load("image { width 10 height 10 }\n"
-                       "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, -1] width 10 }\n"
-                       "distant_light { direction [-1, -1, 0] }\n"
-                       "sphere { center [0, 1, 0] radius 1 }\n"
-                       "disk { radius 4 }\n");
+    scene_model *s = load("image { width 10 height 10 }\n"
+                          "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, -1] width 10 }\n"
+                          "distant_light { direction [-1, -1, 0] }\n"
+                          "sphere { center [0, 1, 0] radius 1 }\n"
+                          "disk { radius 4 }\n");
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
     uint64_t sphere = path_at(&t, 5, 5), shade = path_at(&t, 3.6, 5), lit = path_at(&t, 7.5, 5),

@@ -11,8 +11,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "testlib.h"
+#include "cli_testlib.h"
 #include "difftest/gen.h"
+#include "io/scene_file.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
@@ -20,21 +21,21 @@
  * render (the sanitizer build pays for every fork). */
 enum { RANDOM_BATCHES = 8, RANDOM_BATCH = 50 };
 
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
 
 /* Renders s with the shortcuts on (no_shortcuts 0) or off (1). */
-static void render(const rf_scene *s, int no_shortcuts, rf_image *img, render_stats *st)
+static void render(const scene_model *s, int no_shortcuts, img_buf *img, render_stats *st)
 {
     render_opts o;
     memset(&o, 0, sizeof o);
     o.no_shortcuts = no_shortcuts;
-    ck_assert_int_eq(render_image(s, &o, img, st), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, &o, img, st), STATUS_OK);
 }
 
 /* [LANG-FEATURES-2] [SHADE-SHORTCUT-OFF-1] A camera at the centre of an
@@ -47,13 +48,13 @@ static void render(const rf_scene *s, int no_shortcuts, rf_image *img, render_st
  * a lone sphere out: the centre pixel was 0.5 = Kd E N.L, N.L = 1.) */
 START_TEST(test_shortcuts_camera_inside_opaque_sphere_is_dark)
 {
-    rf_scene *s = load("image { width 5 height 5 max_depth 1 }\n"
-                       "camera { perspective eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] fov 90 }\n"
-                       "point_light { position [0, 0, 5] power 1 falloff none }\n"
-                       "sphere { center [0, 0, 0] radius 2 material { Kd 0.5 } }\n");
+    scene_model *s = load("image { width 5 height 5 max_depth 1 }\n"
+                          "camera { perspective eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] fov 90 }\n"
+                          "point_light { position [0, 0, 5] power 1 falloff none }\n"
+                          "sphere { center [0, 0, 0] radius 2 material { Kd 0.5 } }\n");
     ck_assert_int_eq(s->features.shadows, 1);
     for (int off = 0; off <= 1; off++) {
-        rf_image img;
+        img_buf img;
         render_stats st;
         render(s, off, &img, &st);
         for (int i = 0; i < 3 * 25; i++)
@@ -91,12 +92,12 @@ END_TEST
  */
 START_TEST(test_shortcuts_lone_glass_sphere_shadows_itself)
 {
-    rf_scene *s = load("image { width 3 height 3 max_depth 2 background 0 }\n"
-                       "camera { orthographic eye [0, 3, 4] look_at [0, 0, 0] up [0, 1, 0] width 0.5 }\n"
-                       "distant_light { direction [0, -1, 0] power 1 }\n"
-                       "sphere { center [0, 0, 0] radius 1 material { Kd 0.5 Ks 0.5 n 10 t 0.5 ior 1.5 } }\n");
+    scene_model *s = load("image { width 3 height 3 max_depth 2 background 0 }\n"
+                          "camera { orthographic eye [0, 3, 4] look_at [0, 0, 0] up [0, 1, 0] width 0.5 }\n"
+                          "distant_light { direction [0, -1, 0] power 1 }\n"
+                          "sphere { center [0, 0, 0] radius 1 material { Kd 0.5 Ks 0.5 n 10 t 0.5 ior 1.5 } }\n");
     for (int off = 0; off <= 1; off++) {
-        rf_image img;
+        img_buf img;
         render(s, off, &img, NULL);
         const double *px = img_pixel(&img, 1, 1);
         for (int c = 0; c < 3; c++)
@@ -113,11 +114,11 @@ END_TEST
  * every primitive for every ray with them off. */
 START_TEST(test_shortcuts_off_does_all_the_work)
 {
-    rf_scene *s = load("image { width 4 height 4 max_depth 3 }\n"
-                       "camera { eye [0, 3, 5] look_at [0, 0, 0] }\n"
-                       "point_light { position [0, 5, 0] }\n"
-                       "plane { material { Kd 0.5 } }\n");
-    rf_image on, off;
+    scene_model *s = load("image { width 4 height 4 max_depth 3 }\n"
+                          "camera { eye [0, 3, 5] look_at [0, 0, 0] }\n"
+                          "point_light { position [0, 5, 0] }\n"
+                          "plane { material { Kd 0.5 } }\n");
+    img_buf on, off;
     render_stats st_on, st_off;
     render(s, 0, &on, &st_on);
     render(s, 1, &off, &st_off);
@@ -140,7 +141,7 @@ END_TEST
  * tests all 20, against a handful with culling. */
 START_TEST(test_shortcuts_bvh_exhaustive_tests_everything)
 {
-    rf_prim prims[20];
+    scene_prim prims[20];
     bvh b;
     memset(prims, 0, sizeof prims);
     for (int i = 0; i < 20; i++) {
@@ -149,7 +150,7 @@ START_TEST(test_shortcuts_bvh_exhaustive_tests_everything)
         prims[i].u.sphere.center = vec_make(3.0 * i, 0, 0);
         prims[i].u.sphere.radius = 1;
     }
-    ck_assert(bvh_build(&b, prims, 20));
+    ck_assert(bvh_build(&b, prims, 20, NULL));
     for (int exhaustive = 0; exhaustive <= 1; exhaustive++) {
         ray r = {vec_make(0, 0, 5), vec_make(0, 0, -1), 0, HUGE_VAL};
         hit h;
@@ -167,6 +168,48 @@ START_TEST(test_shortcuts_bvh_exhaustive_tests_everything)
 }
 END_TEST
 
+/* The bytes of the file at path into buf (size bytes); how many. */
+static size_t file_bytes(const char *path, char *buf, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    size_t n = fread(buf, 1, size, f);
+    fclose(f);
+    return n;
+}
+
+/* [SHADE-SHORTCUT-OFF-1] [EMBED-API-7] `refray render --no-shortcuts`
+ * reaches the tracer through the public API: on a lone plane under a
+ * point light the shadow pass, skipped with the shortcuts, runs (one
+ * shadow ray for each of the 8 x 6 x 2 x 2 camera rays, all of which meet
+ * the plane), and the file written is the same to the byte. */
+START_TEST(test_shortcuts_cli_no_shortcuts)
+{
+    char dir[64], on[128], off[128];
+    static char a[8192], b[8192];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "shortcuts");
+    cli_path(on, sizeof on, dir, "on.pfm");
+    cli_path(off, sizeof off, dir, "off.pfm");
+    const char *scene = "scenes/analytic/plane_point_inverse_square.scene";
+    const char *with[] = {"render", scene, "--width", "8", "--height", "6", "--stats", "-q", "-o", on, NULL};
+    cli_refray(&r, with);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    ck_assert_msg(strstr(r.err, "  passes: shadows skipped (nothing can occlude)"), "%s", r.err);
+    ck_assert_msg(strstr(r.err, " 0 shadow,"), "%s", r.err);
+    const char *without[] = {"render", scene, "--width", "8", "--height", "6", "--stats", "-q", "--no-shortcuts",
+                             "-o", off, NULL};
+    cli_refray(&r, without);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    ck_assert_msg(strstr(r.err, "  passes (every shortcut off): shadows on,"), "%s", r.err);
+    ck_assert_msg(strstr(r.err, " 192 shadow,"), "%s", r.err);
+    size_t na = file_bytes(on, a, sizeof a), nb = file_bytes(off, b, sizeof b);
+    ck_assert(na > 8 * 6 * 12 && na < sizeof a);
+    ck_assert(na == nb && memcmp(a, b, na) == 0);
+    cli_remove(dir);
+}
+END_TEST
+
 /* Scene index of the random generator, rendered both ways and compared;
  * the failing scene's text is printed. */
 static void check_random_scene(int index)
@@ -174,9 +217,9 @@ static void check_random_scene(int index)
     static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
     dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
     int status;
-    rf_scene *s = scene_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", index, status, g.text);
-    rf_image on, off;
+    img_buf on, off;
     render(s, 0, &on, NULL);
     render(s, 1, &off, NULL);
     size_t n = 3 * (size_t)on.width * (size_t)on.height;
@@ -208,6 +251,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_lone_glass_sphere_shadows_itself);
     tcase_add_test(tc, test_shortcuts_off_does_all_the_work);
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
+    tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     suite_add_tcase(s, tc);
     return s;

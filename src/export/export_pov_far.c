@@ -26,7 +26,7 @@ static void extent_add(extent *e, vec3 p)
 }
 
 /* The 8 corners of the local box lo..hi, taken to the world. */
-static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
+static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
 {
     for (int i = 0; i < 8; i++) {
         vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
@@ -35,7 +35,7 @@ static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
 }
 
 /* Planes are unbounded and left out. */
-static void extent_add_prim(extent *e, const rf_prim *p)
+static void extent_add_prim(extent *e, const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE: {
@@ -74,7 +74,7 @@ static void extent_add_prim(extent *e, const rf_prim *p)
     }
 }
 
-pov_bounds pov_far_bounds(const rf_scene *s)
+pov_bounds pov_far_bounds(const scene_model *s)
 {
     extent e = {vec_splat(0), vec_splat(0), 0};
     pov_bounds b;
@@ -82,7 +82,7 @@ pov_bounds pov_far_bounds(const rf_scene *s)
     for (int i = 0; i < s->prim_count; i++)
         extent_add_prim(&e, &s->prims[i]);
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_DISTANT)
             continue;
         extent_add(&e, l->position);
@@ -96,7 +96,7 @@ pov_bounds pov_far_bounds(const rf_scene *s)
 
 /* How far a camera ray's origin can be from the eye: half the diagonal of
  * an orthographic view, 0 for a perspective camera. */
-static double view_radius(const rf_scene *s)
+static double view_radius(const scene_model *s)
 {
     if (s->camera.kind != CAMERA_ORTHOGRAPHIC)
         return 0;
@@ -105,18 +105,18 @@ static double view_radius(const rf_scene *s)
     return half * sqrt(1 + aspect * aspect);
 }
 
-double pov_far_spread(const rf_scene *s, const pov_bounds *b)
+double pov_far_spread(const scene_model *s, const pov_bounds *b)
 {
     return vec_length(vec_sub(s->camera.eye, b->centre)) + view_radius(s) + b->radius;
 }
 
-double pov_far_distant_distance(const rf_scene *s, const pov_bounds *b, int trace_levels)
+double pov_far_distant_distance(const scene_model *s, const pov_bounds *b, int trace_levels)
 {
     return POV_MAX_DISTANCE * (trace_levels + 1) + pov_far_spread(s, b);
 }
 
 /* Distance along (o, d) to plane p, or 0 when it does not meet it ahead. */
-static double plane_distance(const rf_prim *p, vec3 o, vec3 d)
+static double plane_distance(const scene_prim *p, vec3 o, vec3 d)
 {
     double den = vec_dot(p->u.plane.normal, d);
     if (den == 0)
@@ -127,7 +127,7 @@ static double plane_distance(const rf_prim *p, vec3 o, vec3 d)
 
 /* Calls visit for the camera ray through the centre of every pixel of
  * POV-Ray's render. */
-static void each_camera_ray(const rf_scene *s, void (*visit)(void *ctx, const ray *r), void *ctx)
+static void each_camera_ray(const scene_model *s, void (*visit)(void *ctx, const ray *r), void *ctx)
 {
     int width, height, k = pov_render_size(s, &width, &height);
     for (int j = 0; j < height; j++)
@@ -138,7 +138,7 @@ static void each_camera_ray(const rf_scene *s, void (*visit)(void *ctx, const ra
 }
 
 typedef struct camera_reach {
-    const rf_prim *plane;
+    const scene_prim *plane;
     double farthest;
 } camera_reach;
 
@@ -148,7 +148,7 @@ static void reach_plane(void *ctx, const ray *r)
     c->farthest = fmax(c->farthest, plane_distance(c->plane, r->origin, r->dir));
 }
 
-double pov_far_camera_reach(const rf_scene *s, const rf_prim *p)
+double pov_far_camera_reach(const scene_model *s, const scene_prim *p)
 {
     camera_reach c = {p, 0};
     each_camera_ray(s, reach_plane, &c);
@@ -156,8 +156,8 @@ double pov_far_camera_reach(const rf_scene *s, const rf_prim *p)
 }
 
 typedef struct shadow_reach {
-    const rf_scene *scene;
-    const rf_prim *w;
+    const scene_model *scene;
+    const scene_prim *w;
     vec3 toward;         /* unit, toward the light */
     double farthest;
 } shadow_reach;
@@ -167,7 +167,7 @@ static void reach_from_planes(void *ctx, const ray *r)
 {
     shadow_reach *c = ctx;
     for (int i = 0; i < c->scene->prim_count; i++) {
-        const rf_prim *f = &c->scene->prims[i];
+        const scene_prim *f = &c->scene->prims[i];
         if (f->kind != PRIM_PLANE || f == c->w)
             continue;
         double t = plane_distance(f, r->origin, r->dir);
@@ -184,7 +184,7 @@ static void reach_from_planes(void *ctx, const ray *r)
  * for the points of bounded primitives; points on planes are taken from
  * the camera rays one by one.
  */
-double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_light *l, const rf_prim *w)
+double pov_far_shadow_reach(const scene_model *s, const pov_bounds *b, const scene_light *l, const scene_prim *w)
 {
     shadow_reach c = {s, w, vec_neg(l->direction), 0};
     double cos_w = vec_dot(w->u.plane.normal, c.toward);
@@ -205,7 +205,7 @@ static int boxes_near(vec3 alo, vec3 ahi, vec3 blo, vec3 bhi, double gap)
 }
 
 /* Whether plane p comes within gap of the box lo..hi. */
-static int plane_near_box(const rf_prim *p, vec3 lo, vec3 hi, double gap)
+static int plane_near_box(const scene_prim *p, vec3 lo, vec3 hi, double gap)
 {
     vec3 n = p->u.plane.normal, mid = vec_scale(vec_add(lo, hi), 0.5), half = vec_scale(vec_sub(hi, lo), 0.5);
     double reach = fabs(n.x) * half.x + fabs(n.y) * half.y + fabs(n.z) * half.z;
@@ -226,7 +226,7 @@ static int ball_near_box(vec3 c, double r, vec3 lo, vec3 hi, double gap)
 /* Whether the surface of sphere a (no transform: its own ball) comes within
  * gap of primitive b; for other shapes their bounding boxes stand in, so
  * the answer errs toward yes. */
-static int ball_near(const rf_prim *a, const rf_prim *b, double gap)
+static int ball_near(const scene_prim *a, const scene_prim *b, double gap)
 {
     vec3 c = a->u.sphere.center, lo, hi;
     double r = a->u.sphere.radius;
@@ -239,14 +239,14 @@ static int ball_near(const rf_prim *a, const rf_prim *b, double gap)
     return isect_prim_bounds(b, &lo, &hi) && ball_near_box(c, r, lo, hi, gap);
 }
 
-int pov_far_near_solid(const rf_scene *s, int solid, double gap)
+int pov_far_near_solid(const scene_model *s, int solid, double gap)
 {
-    const rf_prim *a = &s->prims[solid];
+    const scene_prim *a = &s->prims[solid];
     vec3 alo, ahi, blo, bhi;
     if (!isect_prim_bounds(a, &alo, &ahi))
         return -1;
     for (int i = 0; i < s->prim_count; i++) {
-        const rf_prim *b = &s->prims[i];
+        const scene_prim *b = &s->prims[i];
         int near;
         if (i == solid)
             continue;

@@ -26,29 +26,29 @@ typedef struct pov_bounds {
     double radius;        /* >= 1 */
 } pov_bounds;
 
-pov_bounds pov_far_bounds(const rf_scene *s);
+pov_bounds pov_far_bounds(const scene_model *s);
 
 /* The distance from any camera ray's origin across the ball: a ray that
  * leaves a point d from the origin meets a bounded primitive or a light
  * within d + pov_far_spread. */
-double pov_far_spread(const rf_scene *s, const pov_bounds *b);
+double pov_far_spread(const scene_model *s, const pov_bounds *b);
 
 /* How far behind the scene's centre a distant light goes: beyond every
  * point POV-Ray can shade by MAX_DISTANCE (each of at most max_trace_level
  * segments of a ray path is shorter than MAX_DISTANCE), so that only
  * MAX_DISTANCE itself, as for every other ray, limits its shadow rays. */
-double pov_far_distant_distance(const rf_scene *s, const pov_bounds *b, int trace_levels);
+double pov_far_distant_distance(const scene_model *s, const pov_bounds *b, int trace_levels);
 
 /* The farthest distance at which a camera ray (through the centre of a
  * pixel of POV-Ray's render, pov_render_size) meets plane p, whatever lies
  * in front; 0 when none does. */
-double pov_far_camera_reach(const rf_scene *s, const rf_prim *p);
+double pov_far_camera_reach(const scene_model *s, const scene_prim *p);
 
 /* An upper bound of the distance at which a shadow ray toward distant
  * light l meets plane w, from a point of a bounded primitive or a point of
  * another plane met by a camera ray (ignoring what lies in front); 0 when
  * none can. */
-double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_light *l, const rf_prim *w);
+double pov_far_shadow_reach(const scene_model *s, const pov_bounds *b, const scene_light *l, const scene_prim *w);
 
 /* POV-Ray's SHADOW_TOLERANCE (backend/render/trace.cpp): a shadow-ray
  * crossing this close to the shaded point, to the light, or to the
@@ -59,6 +59,6 @@ double pov_far_shadow_reach(const rf_scene *s, const pov_bounds *b, const rf_lig
  * surface may come within gap of solid's (they cut or touch), or -1.  For
  * an untransformed sphere exact against planes and untransformed spheres;
  * otherwise bounding boxes stand in, so it errs toward finding one. */
-int pov_far_near_solid(const rf_scene *s, int solid, double gap);
+int pov_far_near_solid(const scene_model *s, int solid, double gap);
 
 #endif

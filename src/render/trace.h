@@ -55,23 +55,24 @@ typedef struct medium_stack {
 } medium_stack;
 
 typedef struct tracer {
-    const rf_scene *scene;
+    const scene_model *scene;
     bvh accel;
     light_setup *lights;
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
-     * scene could use them (rf_features), so their work is left out. */
+     * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
 
-/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+/* Builds the acceleration structure, in memory from the scene's allocator.
+ * max_depth <= 0 takes the scene's;
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
-int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
+int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
 /* Turns off every shortcut that leaves out work a scene does not need
@@ -98,6 +99,6 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
 
 /* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
  * for a sheet (plane, disk, lone triangle), which has no inside. */
-int trace_solid_id(const rf_scene *s, int prim);
+int trace_solid_id(const scene_model *s, int prim);
 
 #endif

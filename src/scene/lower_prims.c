@@ -5,14 +5,13 @@
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
- * shape (see rf_prim in scene.h); otherwise the primitive keeps its local
+ * shape (see scene_prim in scene.h); otherwise the primitive keeps its local
  * parameters and the matrix pair, and is intersected in its own frame.
  */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/obj.h"
 
@@ -97,14 +96,14 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
 {
     prim->has_xform = 1;
     prim->to_world = *to_world;
     prim->to_local = *to_local;
 }
 
-static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
+static void place_sphere(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -117,7 +116,7 @@ static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static void place_disk(rf_prim *prim, const xform *w, const xform *l)
+static void place_disk(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -137,7 +136,7 @@ static int is_axis_aligned(const xform *w)
            w->m[2][1] == 0;
 }
 
-static void place_box(rf_prim *prim, const xform *w, const xform *l)
+static void place_box(scene_prim *prim, const xform *w, const xform *l)
 {
     if (!is_axis_aligned(w)) {
         lower_keep_frame(prim, w, l);
@@ -161,7 +160,7 @@ static int degenerate(vec3 a, vec3 b, vec3 c)
 
 /* Vertices in world space; a mirroring transform would turn the winding
  * (and so the normal) inside out, so two corners are swapped back. */
-static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
+static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
 {
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
@@ -178,7 +177,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static int sphere(loader *L, const props *p, rf_prim *prim)
+static int sphere(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
@@ -186,7 +185,7 @@ static int sphere(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int plane(loader *L, const props *p, rf_prim *prim)
+static int plane(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_PLANE;
     int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
@@ -194,7 +193,7 @@ static int plane(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int disk(loader *L, const props *p, rf_prim *prim)
+static int disk(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_DISK;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
@@ -203,7 +202,7 @@ static int disk(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int box(loader *L, const props *p, rf_prim *prim)
+static int box(loader *L, const props *p, scene_prim *prim)
 {
     vec3 a, b;
     prim->kind = PRIM_BOX;
@@ -225,7 +224,7 @@ static int box(loader *L, const props *p, rf_prim *prim)
     return 1;
 }
 
-static int triangle(loader *L, const props *p, rf_prim *prim)
+static int triangle(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_TRIANGLE;
     if (!props_require(L, p, KW_VERTICES))
@@ -254,7 +253,7 @@ static int xform_finite(const xform *a)
     return 1;
 }
 
-static int triangle_in_range(const rf_prim *prim)
+static int triangle_in_range(const scene_prim *prim)
 {
     const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
     int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
@@ -265,7 +264,7 @@ static int triangle_in_range(const rf_prim *prim)
 
 /* Placement can push a finite shape past the largest double, or leave a
  * normal that cannot be made unit: the scene keeps no such number. */
-static int in_range(const rf_prim *prim)
+static int in_range(const scene_prim *prim)
 {
     int ok = 1;
     switch (prim->kind) {
@@ -283,7 +282,7 @@ static int in_range(const rf_prim *prim)
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
 
-static int check_range(loader *L, const rf_prim *prim, src_span at)
+static int check_range(loader *L, const scene_prim *prim, src_span at)
 {
     if (in_range(prim))
         return 1;
@@ -293,7 +292,7 @@ static int check_range(loader *L, const rf_prim *prim, src_span at)
     return 0;
 }
 
-static int check_triangle(loader *L, const rf_prim *prim, src_span at)
+static int check_triangle(loader *L, const scene_prim *prim, src_span at)
 {
     const vec3 *q = prim->u.triangle.p;
     if (!degenerate(q[0], q[1], q[2]))
@@ -302,9 +301,9 @@ static int check_triangle(loader *L, const rf_prim *prim, src_span at)
     return 0;
 }
 
-static rf_prim *emit(loader *L, const rf_prim *prim)
+static scene_prim *emit(loader *L, const scene_prim *prim)
 {
-    rf_prim *slot = loader_add_prim(L, prim->where);
+    scene_prim *slot = loader_add_prim(L, prim->where);
     if (slot)
         *slot = *prim;
     return slot;
@@ -313,28 +312,16 @@ static rf_prim *emit(loader *L, const rf_prim *prim)
 /* Reads the OBJ file into the load's sources, so its errors point into it. */
 static int read_obj(loader *L, const char *name, src_span at, int *file)
 {
-    const source_file *from = L->scene->sources.files[at.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
     char why[512];
-    size_t len = 0;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
-        return 0;
-    }
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0 && (*file = source_set_add(&L->scene->sources, path, text, len, at)) >= 0)
+    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
+    if (*file >= 0)
         L->scene->sources.files[*file]->is_mesh = 1;
-    else
+    else if (!L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    free(path);
-    free(text);
-    if (status == 0 && *file < 0)
-        loader_oom(L);
-    return status == 0 && *file >= 0;
+    return *file >= 0;
 }
 
-static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
+static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
 {
     int normals = t->vn[0] >= 0;
     for (int i = 0; i < 3; i++) {
@@ -351,13 +338,13 @@ static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, 
     return 1;
 }
 
-static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const xform *w, const xform *l)
+static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, const xform *w, const xform *l)
 {
-    rf_mesh *mesh = &L->scene->meshes[proto->mesh];
+    scene_mesh *mesh = &L->scene->meshes[proto->mesh];
     mesh->first_prim = L->scene->prim_count;
     int ok = 1;
     for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
-        rf_prim prim = *proto;
+        scene_prim prim = *proto;
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;
         place_triangle(&prim, w, l);
@@ -378,7 +365,7 @@ static int unquoted_file(loader *L, const props *p)
     return 1;
 }
 
-static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
+static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
@@ -388,24 +375,27 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
-    if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
+    int parsed = obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj);
+    if (parsed < 0)
+        L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
+    if (parsed <= 0)
         return 0;
-    rf_mesh *m = loader_add_mesh(L);
+    scene_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
-        m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
-        if (m->path)
-            strcpy(m->path, L->scene->sources.files[file]->path);
+        m->path = mem_strdup(L->mem, L->scene->sources.files[file]->path);
         m->where = at;
         proto->kind = PRIM_TRIANGLE;
         proto->mesh = L->scene->mesh_count - 1;
         ok = m->path && mesh_triangles(L, &obj, proto, w, l);
+        if (!m->path)
+            loader_oom(L);
     }
     obj_free(&obj);
     return ok && L->diag.errors == errors;
 }
 
-static void place(rf_prim *prim, const xform *w, const xform *l)
+static void place(scene_prim *prim, const xform *w, const xform *l)
 {
     switch (prim->kind) {
     case PRIM_SPHERE: place_sphere(prim, w, l); break;
@@ -431,7 +421,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
 int lower_primitive(loader *L, const ast *block)
 {
     props p;
-    rf_prim prim;
+    scene_prim prim;
     xform w, l;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;

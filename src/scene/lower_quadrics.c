@@ -41,7 +41,7 @@ static int ends(loader *L, const props *p, vec3 *from, vec3 *to)
     return ok;
 }
 
-static int cylinder(loader *L, const props *p, rf_prim *prim)
+static int cylinder(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_CYLINDER;
     int ok = ends(L, p, &prim->u.cylinder.from, &prim->u.cylinder.to);
@@ -74,7 +74,7 @@ static int cone_radii(loader *L, const props *p, double radius[2])
     return 1;
 }
 
-static int cone(loader *L, const props *p, rf_prim *prim)
+static int cone(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_CONE;
     int ok = ends(L, p, &prim->u.cone.from, &prim->u.cone.to);
@@ -85,7 +85,7 @@ static int cone(loader *L, const props *p, rf_prim *prim)
 
 /* A ring torus: 0 < minor < major (a horn or spindle torus would cross
  * itself, and its inside would no longer be the tube's). */
-static int torus(loader *L, const props *p, rf_prim *prim)
+static int torus(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_TORUS;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.torus.center);
@@ -105,7 +105,7 @@ static int torus(loader *L, const props *p, rf_prim *prim)
     return ok & axis & radii;
 }
 
-int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim)
+int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim)
 {
     switch (block) {
     case KW_CYLINDER: return cylinder(L, p, prim);
@@ -114,7 +114,7 @@ int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim)
     }
 }
 
-void lower_place_quadric(rf_prim *prim, const xform *w, const xform *l)
+void lower_place_quadric(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -149,7 +149,7 @@ static int ends_in_range(vec3 from, vec3 to)
     return vec_is_finite(from) && vec_is_finite(to) && vec_is_finite(d) && vec_length(d) > 0;
 }
 
-int lower_quadric_in_range(const rf_prim *prim)
+int lower_quadric_in_range(const scene_prim *prim)
 {
     switch (prim->kind) {
     case PRIM_CYLINDER:

@@ -20,6 +20,7 @@
 #include <unistd.h>
 #include "dt.h"
 #include "image/image_file.h"
+#include "io/scene_file.h"
 #include "render/camera.h"
 #include "render/render.h"
 
@@ -44,7 +45,7 @@ static double scale_for(double peak)
     return s;
 }
 
-static double peak_of(const rf_image *img)
+static double peak_of(const img_buf *img)
 {
     double peak = 0;
     for (size_t i = 0; i < 3 * (size_t)img->width * img->height; i++)
@@ -56,18 +57,18 @@ static double peak_of(const rf_image *img)
  * pixels is one of refray's sub-samples, which can be brighter than their
  * average (a 16-bit file clips at 1).  Rendered once at k times the size,
  * one ray per pixel, at the same points up to rounding. */
-static double sample_peak(const rf_scene *s, const rf_image *ours)
+static double sample_peak(const scene_model *s, const img_buf *ours)
 {
     int k = s->image.samples;
     render_opts o;
-    rf_image fine;
+    img_buf fine;
     if (k == 1)
         return peak_of(ours);
     memset(&o, 0, sizeof o);
     o.width = k * s->image.width;
     o.height = k * s->image.height;
     o.samples = 1;
-    if (render_image(s, &o, &fine, NULL) != REFRAY_EXIT_OK)
+    if (render_image(s, &o, &fine, NULL) != STATUS_OK)
         return peak_of(ours) * k * k;
     double peak = peak_of(&fine);
     img_free(&fine);
@@ -120,10 +121,10 @@ static int run_povray(const dt_config *c, const char *name, int width, int heigh
 
 /* POV-Ray's picture, k x k blocks averaged, divided by scale, into out
  * (the scene's size).  Returns 0, or -1 with the reason in r. */
-static int read_pov(const dt_config *c, const char *name, int k, double scale, rf_image *out, dt_result *r)
+static int read_pov(const dt_config *c, const char *name, int k, double scale, img_buf *out, dt_result *r)
 {
     char path[PATH_LEN], err[512];
-    rf_image raw;
+    img_buf raw;
     snprintf(path, sizeof path, "%s/%s.png", c->work_dir, name);
     if (img_read(path, &raw, err, sizeof err) != 0) {
         fail(r, "cannot read POV-Ray's picture: %.250s", err);
@@ -151,7 +152,7 @@ static int read_pov(const dt_config *c, const char *name, int k, double scale, r
 static uint64_t path_at(const tracer *t, double x, double y)
 {
     trace_stats st;
-    const rf_scene *s = t->scene;
+    const scene_model *s = t->scene;
     memset(&st, 0, sizeof st);
     ray r = camera_ray(&s->camera, s->image.width, s->image.height, x, y);
     medium_stack media = t->eye_media;
@@ -181,7 +182,7 @@ static int is_edge(const tracer *t, int i, int j, double radius)
 }
 
 /* Compares pixel by pixel and sorts the disagreeing pixels. */
-static void compare(const dt_config *c, const rf_scene *s, const rf_image *ours, const rf_image *pov, dt_result *r)
+static void compare(const dt_config *c, const scene_model *s, const img_buf *ours, const img_buf *pov, dt_result *r)
 {
     tracer t;
     int have_tracer = tracer_init(&t, s, 0, 0);
@@ -220,12 +221,12 @@ static void compare(const dt_config *c, const rf_scene *s, const rf_image *ours,
 }
 
 /* Exports at r->scale, renders with POV-Ray and compares with ours. */
-static void against_pov(const dt_config *c, const char *name, const rf_scene *s, const rf_image *ours, dt_result *r)
+static void against_pov(const dt_config *c, const char *name, const scene_model *s, const img_buf *ours, dt_result *r)
 {
     char path[PATH_LEN], err[600];
     pov_opts o;
     pov_notes notes;
-    rf_image pov;
+    img_buf pov;
     int width, height, k = pov_render_size(s, &width, &height);
     memset(&o, 0, sizeof o);
     o.scale = r->scale;
@@ -251,11 +252,11 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
     int status;
     pov_opts o;
     pov_notes notes;
-    rf_image ours;
+    img_buf ours;
     memset(r, 0, sizeof *r);
     memset(&o, 0, sizeof o);
     snprintf(path, sizeof path, "%s/%s.scene", c->work_dir, name);
-    rf_scene *s = scene_load_text(path, text, strlen(text), NULL, c->diag, 0, &status);
+    scene_model *s = scene_file_load_text(path, text, strlen(text), NULL, c->diag, 0, &status);
     if (!s) {
         fail(r, "%.250s does not load", name);
         return r->verdict;
@@ -267,7 +268,7 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
         snprintf(r->why, sizeof r->why, "%s", notes.refused ? notes.reason : notes.text[0]);
     if (!exportable || (notes.count > 0 && !c->approximations)) {
         r->verdict = DT_DISCARDED;
-    } else if (render_image(s, NULL, &ours, NULL) != REFRAY_EXIT_OK) {
+    } else if (render_image(s, NULL, &ours, NULL) != STATUS_OK) {
         fail(r, "refray could not render %.250s", name);
     } else {
         r->scale = scale_for(sample_peak(s, &ours));
