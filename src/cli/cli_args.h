@@ -43,8 +43,9 @@ int cli_take_value(int argc, char **argv, int *i, const char **value);
 int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
- * --light-samples) into o; 1 consumed, 0 error, -1 not one.  They are
- * checked against lim only by cli_check_sizes, after every option. */
+ * --light-samples) and --no-shortcuts into o; 1 consumed, 0 error, -1 not
+ * one.  The sizes are checked against lim only by cli_check_sizes, after
+ * every option. */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
 
 /* The sizing options given (0: not given) against the limits: 0, or

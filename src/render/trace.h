@@ -32,6 +32,13 @@ typedef struct trace_stats {
                                  the render is void ([REL-MEDIUM-1]) */
     cancel_poll *cancel;      /* asked once per ray and light sample; NULL: never.
                                  Once stopped, rays return the background at once */
+    /* A hash of the ray tree's shape, in order: the primitive (and the face
+     * of a box, the cap or side of a cylinder or cone) each ray met, which
+     * side of each light the surface faced and what its shadow ray let
+     * through, refraction or total reflection.  Two nearby camera rays with
+     * the same hash met the same things (make difftest tells edge pixels by
+     * it); the image never depends on it. */
+    uint64_t path;
     bvh_stats bvh;
 } trace_stats;
 
@@ -62,6 +69,7 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
     long eye_overflow;        /* eye_media lost solids (each camera ray counts them) */
 } tracer;
@@ -76,6 +84,15 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
  * STATUS_OK, STATUS_NO_MEMORY or STATUS_CANCELLED (then nothing to free). */
 int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel);
 void tracer_free(tracer *t);
+
+/* Turns off every shortcut that leaves out work a scene does not need
+ * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
+ * mirror and transmitted rays while depth < max_depth, every light gets its
+ * shadow ray, no walk stops early, the BVH culls nothing.  The image is the
+ * same to the bit ([SHADE-SHORTCUT-OFF-1]); only the work and the counts in
+ * trace_stats grow (and with them the ray-tree budget's count).  Call it
+ * after tracer_init, before tracing. */
+void tracer_no_shortcuts(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */
