@@ -286,22 +286,30 @@ START_TEST(test_faults_negative_zero_is_a_number)
 }
 END_TEST
 
+/* `refray check` of a fresh one-line scene: head, a megabyte of fill,
+ * tail. */
+static run_result check_megabyte_line(const char *head, char fill, const char *tail)
+{
+    enum { LINE = 1 << 20 };
+    size_t h = strlen(head), t = strlen(tail);
+    char *text = malloc(h + LINE + t), path[512];
+    ck_assert_ptr_nonnull(text);
+    memcpy(text, head, h);
+    memset(text + h, fill, LINE);
+    memcpy(text + h + LINE, tail, t);
+    make_work_dir();
+    write_file("long.scene", text, h + LINE + t);
+    free(text);
+    path_in(path, sizeof path, "long.scene");
+    const char *args[] = {"check", path, NULL};
+    return run(NULL, args);
+}
+
 START_TEST(test_faults_megabyte_line_is_shown_as_a_window)
 {
     /* A 1 MB line with the error at its end: the message must come fast
      * and the excerpt must stay one screen wide. */
-    enum { LINE = 1 << 20 };
-    char *text = malloc(LINE + 64), path[512];
-    ck_assert_ptr_nonnull(text);
-    memcpy(text, "sphere { ", 9);
-    memset(text + 9, ' ', LINE);
-    memcpy(text + 9 + LINE, "radius -1 }\n", 12);
-    make_work_dir();
-    write_file("long.scene", text, 9 + LINE + 12);
-    free(text);
-    path_in(path, sizeof path, "long.scene");
-    const char *args[] = {"check", path, NULL};
-    run_result r = run(NULL, args);
+    run_result r = check_megabyte_line("sphere { ", ' ', "radius -1 }\n");
     ck_assert_int_eq(r.status, 65);
     ASSERT_ERR_HAS(r, "long.scene:1:1048593: error: radius must be > 0, got -1");
     ck_assert_msg(strlen(r.err) < 1000, "the excerpt is %zu bytes", strlen(r.err));
@@ -673,18 +681,7 @@ END_TEST
  * echoed whole). */
 START_TEST(test_faults_huge_name_is_cut)
 {
-    enum { LEN = 1 << 20 };
-    char *text = malloc(LEN + 64), path[512];
-    ck_assert_ptr_nonnull(text);
-    memcpy(text, "sphere { radius ", 16);
-    memset(text + 16, 'q', LEN);
-    memcpy(text + 16 + LEN, " }\n", 3);
-    make_work_dir();
-    write_file("n.scene", text, 16 + LEN + 3);
-    free(text);
-    path_in(path, sizeof path, "n.scene");
-    const char *args[] = {"check", path, NULL};
-    run_result r = run(NULL, args);
+    run_result r = check_megabyte_line("sphere { radius ", 'q', " }\n");
     ck_assert_int_eq(r.status, 65);
     ASSERT_ERR_HAS(r, "unknown constant 'qqq");
     ck_assert_msg(strlen(r.err) < 3000, "%zu bytes of messages", strlen(r.err));

@@ -177,6 +177,19 @@ static rf_allocator counting(counter *c)
     return a;
 }
 
+/* Writes dir/name: a comment line of n bytes after its '#', the path into
+ * path. */
+static void put_comment(const char *dir, const char *name, size_t n, char *path, size_t size)
+{
+    char *text = malloc(n + 2);
+    ck_assert_ptr_nonnull(text);
+    text[0] = '#';
+    memset(text + 1, 'x', n);
+    text[n + 1] = '\n';
+    put(dir, name, text, n + 2, path, size);
+    free(text);
+}
+
 /* [REL-INPUT-1] A 1 MB file included by every pass of a loop of 50 is read
  * and parsed once: the load holds about one copy (before, 50: every pass
  * kept its own text and tree). */
@@ -184,14 +197,8 @@ START_TEST(test_file_read_once_per_load)
 {
     char dir[64], path[128], big[128];
     enum { BIG = 1 << 20 };
-    char *text = malloc(BIG + 4);
-    ck_assert_ptr_nonnull(text);
-    text[0] = '#';
-    memset(text + 1, 'x', BIG);
-    text[BIG + 1] = '\n';
     scratch(dir, sizeof dir);
-    put(dir, "big.scene", text, BIG + 2, big, sizeof big);
-    free(text);
+    put_comment(dir, "big.scene", BIG, big, sizeof big);
     static const char scene[] = "for i in 1..50 { include \"big.scene\" }\nsphere { }\n";
     put(dir, "loop.scene", scene, sizeof scene - 1, path, sizeof path);
     counter c;
@@ -214,15 +221,9 @@ START_TEST(test_input_bytes_bounded_per_load)
 {
     char dir[64], path[128], a[128], b[128];
     enum { PART = 600 * 1000 };
-    char *text = malloc(PART + 4);
-    ck_assert_ptr_nonnull(text);
-    text[0] = '#';
-    memset(text + 1, 'y', PART);
-    text[PART + 1] = '\n';
     scratch(dir, sizeof dir);
-    put(dir, "a.scene", text, PART + 2, a, sizeof a);
-    put(dir, "b.scene", text, PART + 2, b, sizeof b);
-    free(text);
+    put_comment(dir, "a.scene", PART, a, sizeof a);
+    put_comment(dir, "b.scene", PART, b, sizeof b);
     static const char scene[] = "include \"a.scene\"\ninclude \"b.scene\"\nsphere { }\n";
     put(dir, "two.scene", scene, sizeof scene - 1, path, sizeof path);
     scene_limits lim = scene_default_limits();
