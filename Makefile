@@ -82,7 +82,9 @@ Q := @
 endif
 
 DRIVER_SRCS := $(wildcard src/cli/*.c)
-OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c)
+JSON_SRCS   := src/scene/json_read.c src/scene/load_json.c src/scene/load_json_mesh.c src/export/export_json.c
+OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c) \
+                 $(if $(filter 1,$(JSON)),,$(JSON_SRCS))
 LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*/*.c))
 TEST_SRCS   := $(wildcard tests/*.c)
 GEN_SRCS    := $(GEN)/scene.tab.c $(GEN)/scene.lex.c
@@ -262,6 +264,7 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 # the command line (the fuzz build) does not drop them.
 $(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
 $(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
+$(JSON_SRCS:%.c=$(BUILD)/obj/%.o): OBJ_CFLAGS += $(JSON_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h

@@ -23,6 +23,8 @@ void diag_init(diag *d, const source_set *sources, FILE *out)
     d->warnings = 0;
     d->max_errors = 20;
     d->warnings_enabled = 1;
+    d->subject = NULL;
+    d->subject_ctx = NULL;
 }
 
 int diag_too_many(const diag *d)
@@ -98,8 +100,11 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
         f = d->sources->files[span.file];
     int line = 0, col = 0;
     if (f) {
+        char subject[256];
         source_line_col(f, span.begin, &line, &col);
         fprintf(d->out, "%s:%d:%d: %s: ", f->path, line, col, level_name(level));
+        if (d->subject && d->subject(d->subject_ctx, span, subject, sizeof subject) > 0)
+            fprintf(d->out, "%s: ", subject);
     } else {
         fprintf(d->out, "refray: %s: ", level_name(level));
     }

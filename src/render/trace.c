@@ -144,6 +144,17 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
     }
 }
 
+vec3 trace_light_point(const tracer *t, int light, uint64_t key, int j)
+{
+    const light_setup *setup = &t->lights[light];
+    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)light);
+    double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
+    double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
+    double a, b;   /* the sample's place in the light's unit square: model data, double */
+    light_cell_point(setup->grid, j, u1, u2, &a, &b);
+    return light_point(&t->scene->lights[light], setup->t1, setup->t2, a, b);
+}
+
 /* The samples of a distributed light, each a point source of E/samples. */
 static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
@@ -151,14 +162,8 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const rf_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
-    uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
-    for (int j = 0; j < setup->samples; j++) {
-        double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
-        double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
-        double a, b;   /* the sample's place in the light's unit square: model data, double */
-        light_cell_point(setup->grid, j, u1, u2, &a, &b);
-        add_source(t, s, light, light_point(light, setup->t1, setup->t2, a, b), power, sum, st);
-    }
+    for (int j = 0; j < setup->samples; j++)
+        add_source(t, s, light, trace_light_point(t, index, key, j), power, sum, st);
 }
 
 static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
@@ -351,9 +356,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     rgb mirror = vec_splat(0), through = vec_splat(0);
     if (depth < t->max_depth) {
         if (t->reflection && vec_max_component(s.m->ks) > 0)
-            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, 1), st);
+            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), st);
         if (t->refraction && s.m->t > 0)
-            through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
+            through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }

@@ -66,6 +66,22 @@ typedef struct tracer {
 int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
+/*
+ * The keys of the light-sample jitter (spec/json.md, "Light samples"): a
+ * camera ray's key is render_sample_key's; a ray spawned at a hit takes
+ * sampler_key(key, TRACE_KEY_MIRROR) or sampler_key(key, TRACE_KEY_REFRACT)
+ * (the refracted or, on total internal reflection, mirrored transmitted
+ * ray); distributed light i at a hit of a ray with key k draws from
+ * sampler_key(k, TRACE_KEY_LIGHT + i).
+ */
+#define TRACE_KEY_MIRROR 1u
+#define TRACE_KEY_REFRACT 2u
+#define TRACE_KEY_LIGHT 0x100u
+
+/* Where sample j of distributed light `light` sits for a hit of a ray with
+ * key `key`: the point add_distributed shades with, bit for bit. */
+vec3 trace_light_point(const tracer *t, int light, uint64_t key, int j);
+
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,

@@ -5,6 +5,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/fileio.h"
 #include "scene/loader.h"
 
 void loader_oom(loader *L)
@@ -146,3 +147,37 @@ void loader_free(loader *L)
     free(L->material_uses);
 }
 
+
+/* Reads the OBJ file into the load's sources, so its errors point into it. */
+int loader_read_obj(loader *L, const char *name, src_span at, int *file)
+{
+    const source_file *from = L->scene->sources.files[at.file];
+    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
+    char why[512];
+    size_t len = 0;
+    free(dir);
+    if (!path) {
+        loader_oom(L);
+        return 0;
+    }
+    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
+    if (status == 0)
+        *file = source_set_add(&L->scene->sources, path, text, len, at);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
+    free(path);
+    free(text);
+    if (status == 0 && *file < 0)
+        loader_oom(L);
+    return status == 0 && *file >= 0;
+}
+
+char *loader_strdup(loader *L, const char *text)
+{
+    char *copy = malloc(strlen(text) + 1);
+    if (!copy)
+        loader_oom(L);
+    else
+        strcpy(copy, text);
+    return copy;
+}

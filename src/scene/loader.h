@@ -142,5 +142,17 @@ rf_prim *loader_add_prim(loader *L, src_span where);
 rf_light *loader_add_light(loader *L);
 rf_material *loader_add_material(loader *L);
 rf_mesh *loader_add_mesh(loader *L);
+/* A malloc'd copy of text, or NULL after reporting out of memory. */
+char *loader_strdup(loader *L, const char *text);
+/* Reads the OBJ file `name` (relative to the directory of the file that
+ * span `at` is in) into the load's sources, so its errors point into it;
+ * 1 with its index in *file, else 0 after reporting at `at`. */
+int loader_read_obj(loader *L, const char *name, src_span at, int *file);
+
+/* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
+ * (spec/json.md) into the scene, with the rules of check.c. */
+int loader_lower_json(loader *L, int file);
+/* Whether path names a JSON scene: it ends in ".json" (any case). */
+int loader_is_json(const char *path);
 
 #endif

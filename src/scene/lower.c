@@ -186,12 +186,9 @@ static int lower_oracle(loader *L, const ast *node)
         diag_report(&L->diag, DIAG_ERROR, node->head, "a scene names one oracle; '%s' is already named", s->oracle);
         return 0;
     }
-    s->oracle = malloc(strlen(node->text) + 1);
-    if (!s->oracle) {
-        loader_oom(L);
+    s->oracle = loader_strdup(L, node->text);
+    if (!s->oracle)
         return 0;
-    }
-    strcpy(s->oracle, node->text);
     s->oracle_where = node->head;
     return 1;
 }

@@ -287,16 +287,6 @@ static int find_material(const rf_scene *s, const char *name)
     return -1;
 }
 
-static char *copy_name(loader *L, const char *name)
-{
-    char *copy = malloc(strlen(name) + 1);
-    if (!copy)
-        loader_oom(L);
-    else
-        strcpy(copy, name);
-    return copy;
-}
-
 int lower_material_def(loader *L, const ast *block)
 {
     int previous = find_material(L->scene, block->text);
@@ -314,7 +304,7 @@ int lower_material_def(loader *L, const ast *block)
         return 0;
     m.where = block->head;
     rf_material *slot = loader_add_material(L);
-    if (!slot || !(m.name = copy_name(L, block->text)))
+    if (!slot || !(m.name = loader_strdup(L, block->text)))
         return 0;
     *slot = m;
     return 1;

@@ -215,30 +215,6 @@ static rf_prim *emit(loader *L, const rf_prim *prim)
     return slot;
 }
 
-/* Reads the OBJ file into the load's sources, so its errors point into it. */
-static int read_obj(loader *L, const char *name, src_span at, int *file)
-{
-    const source_file *from = L->scene->sources.files[at.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
-    char why[512];
-    size_t len = 0;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
-        return 0;
-    }
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0)
-        *file = source_set_add(&L->scene->sources, path, text, len, at);
-    else
-        diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    free(path);
-    free(text);
-    if (status == 0 && *file < 0)
-        loader_oom(L);
-    return status == 0 && *file >= 0;
-}
-
 static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
 {
     int normals = t->vn[0] >= 0;
@@ -279,7 +255,7 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     const char *name;
     src_span at;
     int file;
-    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !read_obj(L, name, at, &file))
+    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !loader_read_obj(L, name, at, &file))
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
@@ -288,9 +264,7 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     rf_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
-        m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
-        if (m->path)
-            strcpy(m->path, L->scene->sources.files[file]->path);
+        m->path = loader_strdup(L, L->scene->sources.files[file]->path);
         m->where = at;
         proto->kind = PRIM_TRIANGLE;
         proto->mesh = L->scene->mesh_count - 1;

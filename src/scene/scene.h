@@ -179,5 +179,15 @@ rf_scene *scene_load_text(const char *path, const char *text, size_t len,
 
 void scene_free(rf_scene *scene);
 
+/*
+ * JSON scenes (spec/json.md): scene_load and scene_load_text read a path
+ * ending in ".json" as one.  scene_json_available says whether this build
+ * has JSON support (JSON=1, jansson); without it such a path is refused
+ * with REFRAY_EXIT_USAGE.
+ */
+#define SCENE_JSON_FORMAT "refray-scene"
+#define SCENE_JSON_VERSION 1
+int scene_json_available(void);
+
 
 #endif

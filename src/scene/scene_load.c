@@ -1,14 +1,54 @@
 /*
  * scene_load.c - loading a scene: read, parse, lower, validate.
  */
+#include <ctype.h>
 #include <stdlib.h>
+#include <string.h>
 #include "base/fileio.h"
 #include "scene/loader.h"
+
+int scene_json_available(void)
+{
+#ifdef REFRAY_HAVE_JSON
+    return 1;
+#else
+    return 0;
+#endif
+}
+
+int loader_is_json(const char *path)
+{
+    static const char ext[] = ".json";
+    size_t n = strlen(path), k = sizeof ext - 1;
+    if (n < k)
+        return 0;
+    for (size_t i = 0; i < k; i++)
+        if (tolower((unsigned char)path[n - k + i]) != ext[i])
+            return 0;
+    return 1;
+}
+
+/* The root file in the language its name says. */
+static int lower_root(loader *L, int file)
+{
+#ifdef REFRAY_HAVE_JSON
+    if (loader_is_json(L->scene->sources.files[file]->path))
+        return loader_lower_json(L, file);
+#endif
+    return loader_lower_file(L, file);
+}
 
 rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
                           int warnings, int *status)
 {
     rf_limits fallback = scene_default_limits();
+    if (loader_is_json(path) && !scene_json_available()) {
+        if (diag_out)
+            fprintf(diag_out, "refray: error: '%s' is a JSON scene, and this refray was built without JSON support "
+                              "(JSON=0); rebuild it with JSON=1 (libjansson-dev)\n", path);
+        *status = REFRAY_EXIT_USAGE;
+        return NULL;
+    }
     rf_scene *s = calloc(1, sizeof *s);
     loader L;
     if (!s) {
@@ -18,7 +58,7 @@ rf_scene *scene_load_text(const char *path, const char *text, size_t len, const 
     loader_scene_defaults(s);
     loader_init(&L, s, limits ? limits : &fallback, diag_out, warnings);
     int file = source_set_add(&s->sources, path, text, len, src_span_none());
-    int ok = file >= 0 && loader_lower_file(&L, file) && validate_scene(&L);
+    int ok = file >= 0 && lower_root(&L, file) && validate_scene(&L);
     if (file < 0)
         loader_oom(&L);
     *status = ok ? REFRAY_EXIT_OK : L.out_of_memory ? REFRAY_EXIT_SOFTWARE : REFRAY_EXIT_DATAERR;
