@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "base/fileio.h"
 #include "base/status.h"
 
@@ -93,4 +94,73 @@ char *file_join(const char *dir, const char *rel)
     else
         sprintf(out, "%s%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/", rel);
     return out;
+}
+
+/* mkstemp makes 0600; give the file the mode a plain fopen would have:
+ * an existing file's, else 0666 less the umask (read from /proc, since
+ * asking umask(2) means changing it for the whole process). */
+static void set_mode(int fd, const char *path)
+{
+    struct stat sb;
+    unsigned mask = 022;
+    char line[128];
+    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        fchmod(fd, sb.st_mode & 07777);
+        return;
+    }
+    FILE *f = fopen("/proc/self/status", "r");
+    while (f && fgets(line, sizeof line, f))
+        if (sscanf(line, "Umask: %o", &mask) == 1)
+            break;
+    if (f)
+        fclose(f);
+    fchmod(fd, (mode_t)(0666 & ~mask));
+}
+
+/* Fills the open temporary fd through fill and closes it; 0 or the exit code. */
+static int fill_temp(int fd, const char *path, int (*fill)(FILE *fp, void *ctx), void *ctx)
+{
+    set_mode(fd, path);
+    FILE *fp = fdopen(fd, "w");
+    if (!fp) {
+        close(fd);
+        return REFRAY_EXIT_IOERR;
+    }
+    int rc = fill(fp, ctx);
+    if (rc == 0 && (fflush(fp) != 0 || fsync(fileno(fp)) != 0))
+        rc = REFRAY_EXIT_IOERR;
+    if (fclose(fp) != 0 && rc == 0)
+        rc = REFRAY_EXIT_IOERR;
+    return rc;
+}
+
+int file_write_atomic(const char *path, int (*fill)(FILE *fp, void *ctx), void *ctx, char *why, size_t why_size)
+{
+    static const char suffix[] = ".tmp.XXXXXX";
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        snprintf(why, why_size, "cannot write '%s': it exists and is not a regular file", path);
+        return REFRAY_EXIT_IOERR;
+    }
+    size_t n = strlen(path) + sizeof suffix;
+    char *tmp = malloc(n);
+    if (!tmp) {
+        snprintf(why, why_size, "out of memory");
+        return REFRAY_EXIT_SOFTWARE;
+    }
+    snprintf(tmp, n, "%s%s", path, suffix);
+    int fd = mkstemp(tmp), rc = REFRAY_EXIT_IOERR;
+    if (fd < 0)
+        snprintf(why, why_size, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
+    else if ((rc = fill_temp(fd, path, fill, ctx)) == REFRAY_EXIT_IOERR)
+        snprintf(why, why_size, "cannot write '%s': write error: %s", path, strerror(errno));
+    else if (rc == 0 && rename(tmp, path) != 0) {
+        snprintf(why, why_size, "cannot write '%s': cannot rename the temporary file into place: %s", path,
+                 strerror(errno));
+        rc = REFRAY_EXIT_IOERR;
+    }
+    if (fd >= 0 && rc != 0)
+        unlink(tmp);
+    free(tmp);
+    return rc;
 }

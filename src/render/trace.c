@@ -55,14 +55,8 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
         tracer_free(t);
         return 0;
     }
-    for (int i = 0; i < s->light_count; i++) {
-        const rf_light *light = &s->lights[i];
-        t->lights[i].samples = light_samples > 0 ? light_samples : light->samples;
-        if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
-            t->lights[i].grid = light_grid_for(t->lights[i].samples);
-        if (light->kind == LIGHT_DISK)
-            light_frame(light->normal, &t->lights[i].t1, &t->lights[i].t2);
-    }
+    for (int i = 0; i < s->light_count; i++)
+        t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
         memset(&none, 0, sizeof none);
@@ -144,15 +138,26 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
     }
 }
 
-vec3 trace_light_point(const tracer *t, int light, uint64_t key, int j)
+light_setup trace_light_setup(const rf_light *light, int samples)
 {
-    const light_setup *setup = &t->lights[light];
-    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)light);
+    light_setup setup;
+    memset(&setup, 0, sizeof setup);
+    setup.samples = samples;
+    if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
+        setup.grid = light_grid_for(samples);
+    if (light->kind == LIGHT_DISK)
+        light_frame(light->normal, &setup.t1, &setup.t2);
+    return setup;
+}
+
+vec3 trace_light_point(const rf_light *light, const light_setup *setup, int index, uint64_t key, int j)
+{
+    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
     double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
     double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
     double a, b;   /* the sample's place in the light's unit square: model data, double */
     light_cell_point(setup->grid, j, u1, u2, &a, &b);
-    return light_point(&t->scene->lights[light], setup->t1, setup->t2, a, b);
+    return light_point(light, setup->t1, setup->t2, a, b);
 }
 
 /* The samples of a distributed light, each a point source of E/samples. */
@@ -163,7 +168,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
     for (int j = 0; j < setup->samples; j++)
-        add_source(t, s, light, trace_light_point(t, index, key, j), power, sum, st);
+        add_source(t, s, light, trace_light_point(light, setup, index, key, j), power, sum, st);
 }
 
 static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)

@@ -78,9 +78,14 @@ void tracer_free(tracer *t);
 #define TRACE_KEY_REFRACT 2u
 #define TRACE_KEY_LIGHT 0x100u
 
-/* Where sample j of distributed light `light` sits for a hit of a ray with
- * key `key`: the point add_distributed shades with, bit for bit. */
-vec3 trace_light_point(const tracer *t, int light, uint64_t key, int j);
+/* A distributed light's stratification and (for a disk) frame for a
+ * render that gives it `samples` sources: tracer_init's per-light data. */
+light_setup trace_light_setup(const rf_light *light, int samples);
+
+/* Where sample j of the light at index `index` of the scene's lights sits
+ * for a hit of a ray with key `key`: the point the tracer shades with, bit
+ * for bit. */
+vec3 trace_light_point(const rf_light *light, const light_setup *setup, int index, uint64_t key, int j);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */
