@@ -35,7 +35,17 @@ static int lower_root(loader *L, int file)
     if (loader_is_json(L->scene->sources.files[file]->path))
         return loader_lower_json(L, file);
 #endif
-    return loader_lower_file(L, file);
+    if (!loader_lower_file(L, file))
+        return 0;
+    /* Without a camera block the default camera's basis is derived by the
+     * same rule as any other (a cross product leaves right.y = -0, not the
+     * +0 a written-out default would have), so a scene read back from its
+     * JSON export, which always derives it, has the same bits. */
+    if (L->camera_where.file >= 0)
+        return 1;
+    src_span none = src_span_none();
+    check_at at = check_at_fixed(&none);
+    return check_camera(L, &at, &L->scene->camera);
 }
 
 rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
