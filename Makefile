@@ -101,8 +101,9 @@ LIBRARY  := $(BUILD)/librefray.a
 TESTBIN  := $(BUILD)/check_refray
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
+# python3-jsonschema: the schema test of the JSON scene format (tests/json_schema.sh).
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
-        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
+        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema)
 
 .PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
@@ -225,9 +226,17 @@ VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --l
                 --trace-children=yes)
 TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
 
+# With JSON, the exports are checked against spec/scene.schema.json by a
+# validator in Python (tests/json_schema.sh), on the other core while the
+# suite runs; its report follows the suite's.
+SCHEMA_LOG := $(BUILD)/json-schema.log
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
-	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
-	  $(VALGRIND_CMD) $(TESTBIN)
+	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema \
+	  > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
+	REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
+	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
+	exit $$rc
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"

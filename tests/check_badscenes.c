@@ -3,7 +3,10 @@
  *   # expect: LINE:COL: error: MESSAGE
  *
  * the exact first diagnostic the file must produce, without the file name
- * (LINE counts the header itself).  When the first error is in a file the
+ * (LINE counts the header itself).  A JSON scene, tests/bad/NAME.json
+ * (spec/json.md, "Diagnostics"), cannot hold a comment: its expectation is
+ * the first line of tests/bad/NAME.expect, in the same form (LINE counts
+ * the lines of the .json); they are checked only in builds with JSON.  When the first error is in a file the
  * scene reads (an include, an OBJ mesh), the expectation names that file
  * relative to tests/bad/: `# expect: inc/cycle_b.scene:2:9: error: ...`.
  *
@@ -37,13 +40,22 @@ static int by_name(const void *a, const void *b)
     return strcmp((const char *)a, (const char *)b);
 }
 
-static int is_scene(const char *name)
+static int ends_with(const char *name, const char *ext)
 {
-    size_t n = strlen(name);
-    return n > 6 && strcmp(name + n - 6, ".scene") == 0 && name[0] != '.';
+    size_t n = strlen(name), k = strlen(ext);
+    return n > k && strcmp(name + n - k, ext) == 0;
 }
 
-/* The *.scene files of tests/bad, sorted; count -1 when the directory
+static int is_scene(const char *name)
+{
+#ifdef REFRAY_HAVE_JSON
+    if (ends_with(name, ".json") && name[0] != '.')
+        return 1;
+#endif
+    return ends_with(name, ".scene") && name[0] != '.';
+}
+
+/* The *.scene (and *.json) files of tests/bad, sorted; count -1 when the directory
  * cannot be read. */
 static void corpus_read(corpus *c)
 {
@@ -65,10 +77,15 @@ static void corpus_read(corpus *c)
 /* The header's expectation as a whole first line: FILE:LINE:COL: ... */
 static void expected_line(const char *path, char *want, size_t size)
 {
-    char header[LINE_MAX_LEN];
+    char header[LINE_MAX_LEN], sidecar[LINE_MAX_LEN];
     static const char tag[] = "# expect: ";
-    FILE *f = fopen(path, "rb");
-    ck_assert_msg(f != NULL, "cannot open %s", path);
+    const char *from = path;
+    if (ends_with(path, ".json")) {
+        snprintf(sidecar, sizeof sidecar, "%.*s.expect", (int)(strlen(path) - 5), path);
+        from = sidecar;
+    }
+    FILE *f = fopen(from, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", from);
     ck_assert_msg(fgets(header, sizeof header, f) != NULL, "%s is empty", path);
     fclose(f);
     header[strcspn(header, "\r\n")] = '\0';
