@@ -4,6 +4,7 @@
  */
 #include <stdio.h>
 #include "base/fileio.h"
+#include "export/export_json.h"
 #include "export/export_json_impl.h"
 
 #ifdef REFRAY_HAVE_JSON
