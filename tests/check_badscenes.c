@@ -6,7 +6,9 @@
  * (LINE counts the header itself).  A JSON scene, tests/bad/NAME.json
  * (spec/json.md, "Diagnostics"), cannot hold a comment: its expectation is
  * the first line of tests/bad/NAME.expect, in the same form (LINE counts
- * the lines of the .json); they are checked only in builds with JSON.  When the first error is in a file the
+ * the lines of the .json); they are checked only in builds with JSON
+ * (spec/json.md [JSON-DIAG-1] malformed JSON, [JSON-DIAG-2] a document
+ * that breaks the format).  When the first error is in a file the
  * scene reads (an include, an OBJ mesh), the expectation names that file
  * relative to tests/bad/: `# expect: inc/cycle_b.scene:2:9: error: ...`.
  *
