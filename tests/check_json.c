@@ -27,7 +27,7 @@
 
 #ifdef REFRAY_HAVE_JSON
 
-#include <jansson.h>
+#include "testjson.h"
 
 enum { MIN_SCENES = 70, MAX_SCENES = 256, NAME_MAX_LEN = 256 };
 
@@ -320,33 +320,11 @@ END_TEST
 static json_t *export_doc(const char *text)
 {
     int status;
-    size_t len;
-    json_error_t e;
     rf_scene *s = load_quiet("t.scene", text, strlen(text), &status);
     ck_assert_msg(s != NULL, "scene did not load (%d)", status);
-    export_json_opts o;
-    memset(&o, 0, sizeof o);
-    char *out = export_text(s, &o, &len);
-    json_t *doc = json_loadb(out, len, 0, &e);
-    ck_assert_msg(doc != NULL, "the export is not JSON: %d:%d: %s", e.line, e.column, e.text);
-    free(out);
+    json_t *doc = testjson_export(s);
     scene_free(s);
     return doc;
-}
-
-static double num(json_t *doc, const char *path)
-{
-    json_t *v = doc;
-    char key[64];
-    for (const char *p = path; *p;) {
-        size_t n = strcspn(p, "/");
-        snprintf(key, sizeof key, "%.*s", (int)n, p);
-        v = json_is_array(v) ? json_array_get(v, (size_t)atoi(key)) : json_object_get(v, key);
-        ck_assert_msg(v != NULL, "no %s in the export", path);
-        p += n + (p[n] == '/');
-    }
-    ck_assert_msg(json_is_number(v), "%s is not a number", path);
-    return json_number_value(v);
 }
 
 /* [JSON-DEFAULTS-1] What a scene leaves out is written out with the values
@@ -354,22 +332,22 @@ static double num(json_t *doc, const char *path)
 START_TEST(test_json_export_defaults_explicit)
 {
     json_t *doc = export_doc("sphere {}\n");
-    ck_assert_double_eq(num(doc, "image/width"), 640);
-    ck_assert_double_eq(num(doc, "image/height"), 480);
-    ck_assert_double_eq(num(doc, "image/samples"), 1);
-    ck_assert_double_eq(num(doc, "image/max_depth"), 5);
-    ck_assert_double_eq(num(doc, "image/background/1"), 0);
-    ck_assert_double_eq(num(doc, "camera/eye/2"), 5);
-    ck_assert_double_eq(num(doc, "camera/up/1"), 1);
-    ck_assert_double_eq(num(doc, "camera/fov"), 60);
-    ck_assert_double_eq(num(doc, "ambient/0"), 0);
-    ck_assert_double_eq(num(doc, "materials/0/Kd/2"), 0.8);
-    ck_assert_double_eq(num(doc, "materials/0/Ks/0"), 0);
-    ck_assert_double_eq(num(doc, "materials/0/n"), 1);
-    ck_assert_double_eq(num(doc, "materials/0/t"), 0);
-    ck_assert_double_eq(num(doc, "materials/0/ior"), 1);
-    ck_assert_double_eq(num(doc, "primitives/0/radius"), 1);
-    ck_assert_double_eq(num(doc, "primitives/0/material"), 0);
+    ck_assert_double_eq(testjson_num(doc, "image/width"), 640);
+    ck_assert_double_eq(testjson_num(doc, "image/height"), 480);
+    ck_assert_double_eq(testjson_num(doc, "image/samples"), 1);
+    ck_assert_double_eq(testjson_num(doc, "image/max_depth"), 5);
+    ck_assert_double_eq(testjson_num(doc, "image/background/1"), 0);
+    ck_assert_double_eq(testjson_num(doc, "camera/eye/2"), 5);
+    ck_assert_double_eq(testjson_num(doc, "camera/up/1"), 1);
+    ck_assert_double_eq(testjson_num(doc, "camera/fov"), 60);
+    ck_assert_double_eq(testjson_num(doc, "ambient/0"), 0);
+    ck_assert_double_eq(testjson_num(doc, "materials/0/Kd/2"), 0.8);
+    ck_assert_double_eq(testjson_num(doc, "materials/0/Ks/0"), 0);
+    ck_assert_double_eq(testjson_num(doc, "materials/0/n"), 1);
+    ck_assert_double_eq(testjson_num(doc, "materials/0/t"), 0);
+    ck_assert_double_eq(testjson_num(doc, "materials/0/ior"), 1);
+    ck_assert_double_eq(testjson_num(doc, "primitives/0/radius"), 1);
+    ck_assert_double_eq(testjson_num(doc, "primitives/0/material"), 0);
     ck_assert(json_is_null(json_object_get(json_array_get(json_object_get(doc, "primitives"), 0), "transform")));
     ck_assert(json_is_null(json_object_get(json_array_get(json_object_get(doc, "materials"), 0), "name")));
     ck_assert(json_is_null(json_object_get(doc, "oracle")));
@@ -389,17 +367,17 @@ START_TEST(test_json_export_lights_materials_transforms)
                              "box { from [0, 0, 0] to [1, 2, 3] rotate [0, 0, 90] material paint }\n");
     json_t *lights = json_object_get(doc, "lights"), *point = json_array_get(lights, 0);
     ck_assert_str_eq(json_string_value(json_object_get(point, "falloff")), "linear");
-    ck_assert_double_eq(num(doc, "lights/0/d0"), 0);
-    ck_assert_double_eq(num(doc, "lights/0/power/0"), 1);
-    ck_assert_double_eq(num(doc, "lights/1/samples"), 16);
-    ck_assert_double_eq(num(doc, "lights/1/sampling/grid/rows"), 4);
-    ck_assert_double_eq(num(doc, "lights/1/sampling/sample_power/1"), 1.0 / 16);
+    ck_assert_double_eq(testjson_num(doc, "lights/0/d0"), 0);
+    ck_assert_double_eq(testjson_num(doc, "lights/0/power/0"), 1);
+    ck_assert_double_eq(testjson_num(doc, "lights/1/samples"), 16);
+    ck_assert_double_eq(testjson_num(doc, "lights/1/sampling/grid/rows"), 4);
+    ck_assert_double_eq(testjson_num(doc, "lights/1/sampling/sample_power/1"), 1.0 / 16);
     ck_assert_str_eq(json_string_value(json_object_get(json_array_get(json_object_get(doc, "materials"), 0), "name")),
                      "paint");
-    ck_assert_near(num(doc, "primitives/0/transform/to_world/1/0"), 1, 1e-15);
-    ck_assert_near(num(doc, "primitives/0/transform/to_world/0/1"), -1, 1e-15);
-    ck_assert_double_eq(num(doc, "primitives/0/transform/to_world/3/3"), 1);
-    ck_assert_near(num(doc, "primitives/0/transform/to_local/0/1"), 1, 1e-15);
+    ck_assert_near(testjson_num(doc, "primitives/0/transform/to_world/1/0"), 1, 1e-15);
+    ck_assert_near(testjson_num(doc, "primitives/0/transform/to_world/0/1"), -1, 1e-15);
+    ck_assert_double_eq(testjson_num(doc, "primitives/0/transform/to_world/3/3"), 1);
+    ck_assert_near(testjson_num(doc, "primitives/0/transform/to_local/0/1"), 1, 1e-15);
     json_decref(doc);
 }
 END_TEST
@@ -447,7 +425,7 @@ START_TEST(test_json_export_top_level_members)
     }
     ck_assert_int_eq(i, sizeof want / sizeof want[0]);
     ck_assert_str_eq(json_string_value(json_object_get(json_object_get(doc, "format"), "name")), "refray-scene");
-    ck_assert_double_eq(num(doc, "format/version"), 1);
+    ck_assert_double_eq(testjson_num(doc, "format/version"), 1);
     ck_assert_str_eq(json_string_value(json_object_get(doc, "oracle")), "lambert_sphere");
     json_decref(doc);
 }
@@ -491,7 +469,8 @@ END_TEST
 START_TEST(test_cli_json_export_usage)
 {
     char err[512];
-    const char *scale[] = {"refray", "export", "scenes/analytic/rect_light.scene", "--to", "json", "--scale", "2", NULL};
+    const char *scale[] = {"refray", "export", "scenes/analytic/rect_light.scene", "--to", "json", "--scale", "2",
+                           NULL};
     ck_assert_int_eq(testrun_refray(scale, NULL, 0, err, sizeof err), 64);
     ck_assert_msg(strstr(err, "refray: error: export: --scale applies to --to pov"), "%s", err);
     const char *mesh[] = {"refray", "export", "scenes/mesh.scene", "--to", "pov", "--mesh-files", "m", NULL};

@@ -25,7 +25,7 @@
 
 #ifdef REFRAY_HAVE_JSON
 
-#include <jansson.h>
+#include "testjson.h"
 
 /* A tilted disk with a prime sample count (one row), a rectangle of 12
  * (3 x 4) and a disk facing -z (the other branch of the frame); 3 x 3
@@ -52,35 +52,15 @@ typedef struct rule {
     int shift1, shift2, shift3;
 } rule;
 
-static json_t *at(json_t *v, const char *path)
-{
-    char key[64];
-    for (const char *p = path; *p;) {
-        size_t n = strcspn(p, "/");
-        snprintf(key, sizeof key, "%.*s", (int)n, p);
-        v = json_is_array(v) ? json_array_get(v, (size_t)atoi(key)) : json_object_get(v, key);
-        ck_assert_msg(v != NULL, "no %s in the export", path);
-        p += n + (p[n] == '/');
-    }
-    return v;
-}
-
-static double num(json_t *v, const char *path)
-{
-    json_t *x = at(v, path);
-    ck_assert_msg(json_is_number(x), "%s is not a number", path);
-    return json_number_value(x);
-}
-
 static vec3 vec(json_t *v, const char *path)
 {
-    json_t *x = at(v, path);
-    return vec_make(num(x, "0"), num(x, "1"), num(x, "2"));
+    json_t *x = testjson_at(v, path);
+    return vec_make(testjson_num(x, "0"), testjson_num(x, "1"), testjson_num(x, "2"));
 }
 
 static uint64_t hex_or_int(json_t *c, const char *key)
 {
-    json_t *x = at(c, key);
+    json_t *x = testjson_at(c, key);
     if (json_is_integer(x))
         return (uint64_t)json_integer_value(x);
     ck_assert_msg(json_is_string(x), "%s is neither a number nor a hex string", key);
@@ -89,7 +69,7 @@ static uint64_t hex_or_int(json_t *c, const char *key)
 
 static rule read_rule(json_t *doc)
 {
-    json_t *c = at(doc, "conventions/light_samples/constants");
+    json_t *c = testjson_at(doc, "conventions/light_samples/constants");
     rule r;
     r.gamma = hex_or_int(c, "gamma");
     r.mul1 = hex_or_int(c, "mul1");
@@ -162,15 +142,15 @@ static void concentric(double s, double t, double *x, double *y)
 /* Sample j of light li (the JSON object l) at a hit of a ray with key K. */
 static vec3 sample_point(const rule *r, json_t *l, int li, uint64_t K, int j)
 {
-    int rows, cols, n = (int)num(l, "samples");
+    int rows, cols, n = (int)testjson_num(l, "samples");
     grid(n, &rows, &cols);
     uint64_t L = key(r, K, r->light + (uint64_t)li);
     double u1 = uniform(r, key(r, L, 2 * (uint64_t)j)), u2 = uniform(r, key(r, L, 2 * (uint64_t)j + 1));
     double s = (j % cols + u1) / cols, t = (j / cols + u2) / rows;
-    if (strcmp(json_string_value(at(l, "kind")), "rectangle") == 0)
+    if (strcmp(json_string_value(testjson_at(l, "kind")), "rectangle") == 0)
         return vec_add(vec(l, "corner"), vec_add(vec_scale(vec(l, "edge_u"), s), vec_scale(vec(l, "edge_v"), t)));
     vec3 t1, t2;
-    double x, y, radius = num(l, "radius");
+    double x, y, radius = testjson_num(l, "radius");
     frame(vec(l, "normal"), &t1, &t2);
     concentric(s, t, &x, &y);
     return vec_add(vec(l, "center"), vec_add(vec_scale(t1, x * radius), vec_scale(t2, y * radius)));
@@ -191,22 +171,6 @@ static rf_scene *load(const char *text)
     return s;
 }
 
-static json_t *export_doc(const rf_scene *s)
-{
-    char *buf = NULL, err[128];
-    size_t len;
-    json_error_t e;
-    export_json_opts o;
-    memset(&o, 0, sizeof o);
-    FILE *fp = open_memstream(&buf, &len);
-    ck_assert_int_eq(export_json_write(s, &o, fp, err, sizeof err), 0);
-    fclose(fp);
-    json_t *doc = json_loadb(buf, len, 0, &e);
-    ck_assert_msg(doc != NULL, "%s", e.text);
-    free(buf);
-    return doc;
-}
-
 static int same_bits(vec3 a, vec3 b)
 {
     return memcmp(&a, &b, sizeof a) == 0;
@@ -217,26 +181,26 @@ static int same_bits(vec3 a, vec3 b)
 START_TEST(test_json_light_sampling_block)
 {
     rf_scene *s = load(lights_scene);
-    json_t *doc = export_doc(s);
+    json_t *doc = testjson_export(s);
     rule r = read_rule(doc);
     static const int want_rows[] = {1, 3, 4}, want_cols[] = {7, 4, 4};
     for (int li = 0; li < 3; li++) {
-        json_t *l = json_array_get(at(doc, "lights"), (size_t)li);
+        json_t *l = json_array_get(testjson_at(doc, "lights"), (size_t)li);
         int rows, cols;
-        grid((int)num(l, "samples"), &rows, &cols);
+        grid((int)testjson_num(l, "samples"), &rows, &cols);
         ck_assert_int_eq(rows, want_rows[li]);
         ck_assert_int_eq(cols, want_cols[li]);
-        ck_assert_int_eq((int)num(l, "sampling/grid/rows"), rows);
-        ck_assert_int_eq((int)num(l, "sampling/grid/cols"), cols);
-        if (strcmp(json_string_value(at(l, "kind")), "disk") == 0) {
+        ck_assert_int_eq((int)testjson_num(l, "sampling/grid/rows"), rows);
+        ck_assert_int_eq((int)testjson_num(l, "sampling/grid/cols"), cols);
+        if (strcmp(json_string_value(testjson_at(l, "kind")), "disk") == 0) {
             vec3 t1, t2;
             frame(vec(l, "normal"), &t1, &t2);
             ck_assert(same_bits(t1, vec(l, "sampling/frame/t1")));
             ck_assert(same_bits(t2, vec(l, "sampling/frame/t2")));
         }
         uint64_t K = camera_key(&r, 7, 3, 0, 0, 0, 0);
-        ck_assert_uint_eq(K, strtoull(json_string_value(at(l, "sampling/example/key")), NULL, 16));
-        json_t *points = at(l, "sampling/example/points");
+        ck_assert_uint_eq(K, strtoull(json_string_value(testjson_at(l, "sampling/example/key")), NULL, 16));
+        json_t *points = testjson_at(l, "sampling/example/points");
         for (size_t j = 0; j < json_array_size(points); j++) {
             char path[32];
             snprintf(path, sizeof path, "%zu", j);
@@ -255,12 +219,12 @@ END_TEST
 START_TEST(test_json_light_samples_match_renderer)
 {
     rf_scene *s = load(lights_scene);
-    json_t *doc = export_doc(s);
+    json_t *doc = testjson_export(s);
     rule r = read_rule(doc);
     static const int pixels[][2] = {{0, 0}, {3, 2}, {6, 4}, {1, 4}};
     int w = s->image.width, k = s->image.samples, checked = 0;
     for (int li = 0; li < s->light_count; li++) {
-        json_t *l = json_array_get(at(doc, "lights"), (size_t)li);
+        json_t *l = json_array_get(testjson_at(doc, "lights"), (size_t)li);
         light_setup setup = trace_light_setup(&s->lights[li], s->lights[li].samples);
         for (size_t p = 0; p < sizeof pixels / sizeof pixels[0]; p++)
             for (int b = 0; b < k; b++)
@@ -299,11 +263,11 @@ static vec3 unit(vec3 v)
 /* The camera ray through image point (x, y), from the export. */
 static void export_ray(json_t *cam, int width, int height, double x, double y, vec3 *origin, vec3 *dir)
 {
-    double aspect = num(cam, "screen/aspect"), half = num(cam, "screen/half");
+    double aspect = testjson_num(cam, "screen/aspect"), half = testjson_num(cam, "screen/half");
     double sx = 2 * x / width - 1, sy = 1 - 2 * y / height;
     vec3 right = vec(cam, "basis/right"), up = vec(cam, "basis/up"), forward = vec(cam, "basis/forward");
     vec3 offset = vec_add(vec_scale(right, sx * half), vec_scale(up, sy * half * aspect));
-    if (strcmp(json_string_value(at(cam, "projection")), "orthographic") == 0) {
+    if (strcmp(json_string_value(testjson_at(cam, "projection")), "orthographic") == 0) {
         *origin = vec_add(vec(cam, "eye"), offset);
         *dir = forward;
     } else {
@@ -320,18 +284,18 @@ START_TEST(test_json_camera_rays_match_renderer)
     static const char *const scenes[] = {lights_scene, pixel_scene};
     for (int sc = 0; sc < 2; sc++) {
         rf_scene *s = load(scenes[sc]);
-        json_t *doc = export_doc(s), *cam = at(doc, "camera");
+        json_t *doc = testjson_export(s), *cam = testjson_at(doc, "camera");
         int w = s->image.width, h = s->image.height, k = s->image.samples;
-        ck_assert_int_eq((int)num(cam, "pixel_samples/k"), k);
-        json_t *offsets = at(cam, "pixel_samples/offsets");
+        ck_assert_int_eq((int)testjson_num(cam, "pixel_samples/k"), k);
+        json_t *offsets = testjson_at(cam, "pixel_samples/offsets");
         ck_assert_int_eq(json_array_size(offsets), k * k);
         for (int b = 0; b < k; b++)
             for (int a = 0; a < k; a++) {
                 char path[32];
                 snprintf(path, sizeof path, "%d/0", b * k + a);
-                ck_assert_double_eq(num(offsets, path), (a + 0.5) / k);
+                ck_assert_double_eq(testjson_num(offsets, path), (a + 0.5) / k);
                 snprintf(path, sizeof path, "%d/1", b * k + a);
-                ck_assert_double_eq(num(offsets, path), (b + 0.5) / k);
+                ck_assert_double_eq(testjson_num(offsets, path), (b + 0.5) / k);
                 for (int j = 0; j < h; j++)
                     for (int i = 0; i < w; i++) {
                         double x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
@@ -355,12 +319,12 @@ END_TEST
 START_TEST(test_json_pixel_from_export)
 {
     rf_scene *s = load(pixel_scene);
-    json_t *doc = export_doc(s), *cam = at(doc, "camera"), *l = at(doc, "lights/0");
+    json_t *doc = testjson_export(s), *cam = testjson_at(doc, "camera"), *l = testjson_at(doc, "lights/0");
     rule r = read_rule(doc);
     rf_image img;
     ck_assert_int_eq(render_image(s, NULL, &img, NULL), 0);
-    int w = s->image.width, h = s->image.height, k = s->image.samples, n = (int)num(l, "samples");
-    double e = num(l, "sampling/sample_power/0"), kd = num(doc, "materials/0/Kd/0");
+    int w = s->image.width, h = s->image.height, k = s->image.samples, n = (int)testjson_num(l, "samples");
+    double e = testjson_num(l, "sampling/sample_power/0"), kd = testjson_num(doc, "materials/0/Kd/0");
     for (int j = 0; j < h; j++)
         for (int i = 0; i < w; i++) {
             double sum = 0;

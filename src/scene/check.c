@@ -82,8 +82,8 @@ int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 
 {
     if (check_is_unit(v))
         return 1;
-    diag_report(&L->diag, DIAG_ERROR, check_span(at, field), "%s must be a unit vector (length 1 within 1e-9), got length %.17g",
-                what, (double)vec_length(v));
+    diag_report(&L->diag, DIAG_ERROR, check_span(at, field),
+                "%s must be a unit vector (length 1 within 1e-9), got length %.17g", what, (double)vec_length(v));
     return 0;
 }
 
@@ -124,7 +124,8 @@ static int camera_basis(loader *L, const check_at *at, rf_camera *cam)
     loader_unit(cam->up, &up);
     vec3 side = vec_cross(cam->forward, up);
     if (vec_length(side) < 1e-9) {
-        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_UP), "up is parallel to the view direction (look_at - eye)");
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_UP),
+                    "up is parallel to the view direction (look_at - eye)");
         return 0;
     }
     cam->right = vec_normalize(side);

@@ -256,7 +256,8 @@ int jread_enum(jreader *r, json_t *obj, const char *key, const char *const *name
     }
     const char *hint = suggest_nearest(name, strlen(name), names, count);
     if (hint)
-        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, key), "unknown %s '%s'; did you mean '%s'?", key, name, hint);
+        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, key), "unknown %s '%s'; did you mean '%s'?", key, name,
+                    hint);
     else
         diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, key), "unknown %s '%s'; it is %s", key, name, list);
     return 0;
@@ -272,8 +273,8 @@ int jread_value_index(jreader *r, json_t *val, int count, const char *what, int 
         return 0;
     }
     if (x < 0 || x >= count) {
-        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, NULL), "%s %.17g does not exist (there %s %d, numbered from 0)",
-                    what, x, count == 1 ? "is" : "are", count);
+        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, NULL),
+                    "%s %.17g does not exist (there %s %d, numbered from 0)", what, x, count == 1 ? "is" : "are", count);
         return 0;
     }
     *out = (int)x;

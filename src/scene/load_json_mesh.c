@@ -29,7 +29,8 @@ static int read_points(jreader *r, json_t *p, const char *key, int normals, vec3
     json_array_foreach(list, i, item) {
         jread_push_index(r, i);
         check_at at = jread_at(r);
-        ok = jread_value_vec3(r, item, &(*out)[i]) && (!normals || check_unit(r->L, &at, KW_NORMAL, "normal", (*out)[i]));
+        ok = jread_value_vec3(r, item, &(*out)[i]) &&
+             (!normals || check_unit(r->L, &at, KW_NORMAL, "normal", (*out)[i]));
         jread_pop(r);
         if (!ok)
             break;
