@@ -214,7 +214,7 @@ fuzz:
 fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
 	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
 	$(Q)mkdir -p $(BUILD)/corpus
-	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
+	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/bad/*.json tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
 	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
 	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
 	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict

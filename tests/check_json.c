@@ -410,6 +410,30 @@ START_TEST(test_json_export_numbers_round_trip)
 }
 END_TEST
 
+/* [JSON-NUMBER-1] Any JSON number is read as the double nearest it, an
+ * integer too large for 64 bits included; an integer-valued real is a
+ * whole number. */
+START_TEST(test_json_load_numbers_as_doubles)
+{
+    static const char text[] =
+        "{\"format\": {\"name\": \"refray-scene\", \"version\": 1.0}, \"oracle\": null,\n"
+        " \"image\": {\"width\": 8.0, \"height\": 6, \"samples\": 1, \"max_depth\": 1, \"background\": [0, 0, 0]},\n"
+        " \"camera\": {\"projection\": \"perspective\", \"eye\": [0, 0, 12345678901234567890123], \"look_at\": [0, 0, 0],\n"
+        "            \"up\": [0, 1, 0], \"fov\": 60},\n"
+        " \"ambient\": [0, 0, 0], \"lights\": [],\n"
+        " \"materials\": [{\"name\": null, \"Kd\": [1, 1, 1], \"Ks\": [0, 0, 0], \"n\": 1, \"t\": 0, \"ior\": 1}],\n"
+        " \"primitives\": [{\"kind\": \"sphere\", \"material\": 0, \"center\": [0, 0, 0], \"radius\": 1e-3,\n"
+        "                  \"transform\": null}]}\n";
+    int status;
+    rf_scene *s = load_quiet("n.json", text, strlen(text), &status);
+    ck_assert_msg(s != NULL, "did not load (%d)", status);
+    ck_assert_double_eq(s->camera.eye.z, strtod("12345678901234567890123", NULL));
+    ck_assert_double_eq(s->prims[0].u.sphere.radius, strtod("1e-3", NULL));
+    ck_assert_int_eq(s->image.width, 8);
+    scene_free(s);
+}
+END_TEST
+
 /* The document's top-level members, in the order spec/json.md lists. */
 START_TEST(test_json_export_top_level_members)
 {
@@ -524,6 +548,7 @@ Suite *suite_json(void)
     tcase_add_test(tc, test_json_export_defaults_explicit);
     tcase_add_test(tc, test_json_export_lights_materials_transforms);
     tcase_add_test(tc, test_json_export_numbers_round_trip);
+    tcase_add_test(tc, test_json_load_numbers_as_doubles);
     tcase_add_test(tc, test_json_export_top_level_members);
     tcase_add_test(tc, test_cli_json_export_render_check);
     tcase_add_test(tc, test_cli_json_export_usage);

@@ -10,8 +10,8 @@
 /* The byte offset where jansson's error lies.  jansson reports the offset
  * just past what it read, and names the token it stopped at ("near
  * 'tru'"): the token is taken back to its first byte when the text there
- * is that token; a number too large ("too big integer") is walked back to
- * its first digit. */
+ * is that token; without a token, the caret is walked back to the first
+ * character of a number that ends there. */
 static src_span syntax_span(int file, const source_file *f, const json_error_t *e)
 {
     size_t pos = e->position > 0 ? (size_t)e->position : 0, begin;
@@ -39,7 +39,10 @@ json_t *jread_parse(loader *L, int file)
 {
     const source_file *f = L->scene->sources.files[file];
     json_error_t e;
-    json_t *root = json_loadb(f->text, f->len, JSON_REJECT_DUPLICATES, &e);
+    /* Every number as a double (strtod of its text): JSON has one number
+     * type, and an integer too large for jansson's 64-bit integers is still
+     * a number. */
+    json_t *root = json_loadb(f->text, f->len, JSON_REJECT_DUPLICATES | JSON_DECODE_INT_AS_REAL, &e);
     if (root)
         return root;
     if (json_error_code(&e) == json_error_out_of_memory)
