@@ -1,11 +1,8 @@
 /*
  * lower_blocks.c - image, camera, ambient, lights and materials: read the
- * properties, apply the documented defaults (spec/language.md), check ranges
- * at the offending value, and append to the scene.
+ * properties, apply the documented defaults (spec/language.md), check them
+ * with the rules of check.c at the offending value, and append to the scene.
  */
-#include <float.h>
-#include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "scene/loader.h"
 #include "base/suggest.h"
