@@ -105,7 +105,7 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema)
 
-.PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -177,21 +177,36 @@ $(REFRAY_LD): FORCE
 	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
 	$(Q)cp $(BUILD)/ld/refray $@
 
-# POV-Ray checked by refray's oracle (spec/crosscheck.md): installs povray
-# when missing, exports, renders and measures every analytic scene, and
-# prints the table (also in $(BUILD)/crosscheck/table.md).
-# CROSSCHECK_UPDATE=1 writes the table into spec/crosscheck.md.
-POVCHECK := $(BUILD)/povcheck
-CROSSCHECK_SCENES ?= $(sort $(wildcard scenes/analytic/*.scene))
-CROSSCHECK_UPDATE ?= 0
+# The conformance kit (spec/conformance.md): every analytic scene with its
+# exact image, mask, .scene and .pov (and .json), one manifest.json and a
+# README.md, in build/kit/ and as build/refray-kit-VERSION.tar.gz (its top
+# directory refray-kit-VERSION/; the archive is the same bytes for the same
+# kit).  KIT_SCENES=... for fewer scenes.
+VERSION     = $(shell sed -n 's/^#define REFRAY_VERSION "\(.*\)"/\1/p' src/cli/cli.h)
+KIT_DIR     := build/kit
+KIT_TARBALL  = build/refray-kit-$(VERSION).tar.gz
+KIT_SCENES  ?= $(sort $(wildcard scenes/analytic/*.scene))
 
-crosscheck: $(REFRAY) $(POVCHECK)
-	$(Q)REFRAY=$(REFRAY) POVCHECK=$(POVCHECK) OUT=$(BUILD)/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
-	  sh tests/crosscheck.sh $(CROSSCHECK_SCENES)
+kit: $(REFRAY)
+	$(Q)$(REFRAY) kit -q -o $(KIT_DIR) $(KIT_SCENES)
+	$(Q)cp tests/conform/kit_check.c $(KIT_DIR)/kit_check.c
+	$(Q)tar -C $(dir $(KIT_DIR)) --sort=name --mtime=@0 --owner=0 --group=0 --numeric-owner \
+	  --transform 's,^kit,refray-kit-$(VERSION),' -cf - kit | gzip -n -9 > $(KIT_TARBALL).tmp && \
+	  mv $(KIT_TARBALL).tmp $(KIT_TARBALL)
+	@echo "kit: $(KIT_DIR)/ and $(KIT_TARBALL)"
 
-$(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
-	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+# Other renderers measured by the oracle through the kit (spec/crosscheck.md,
+# tests/crosscheck.sh): installs POV-Ray (Debian povray) when missing, builds
+# the kit, runs `refray conform` with each renderer's command line, prints
+# the tables and writes them into spec/crosscheck.md (CROSSCHECK_UPDATE=0:
+# print only); every file of the run is kept in build/crosscheck/.
+# CROSSCHECK_ONLY="NAME ..." runs only those scenes.
+CROSSCHECK_UPDATE ?= 1
+CROSSCHECK_ONLY ?=
+
+crosscheck: kit
+	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
+	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
 
 # Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
 # `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
@@ -226,17 +241,25 @@ VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --l
                 --trace-children=yes)
 TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
 
+# The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
+# needs no library, built here only to be tested against `refray compare`.
+KIT_CHECK := $(BUILD)/kit_check
 # With JSON, the exports are checked against spec/scene.schema.json by a
 # validator in Python (tests/json_schema.sh), on the other core while the
 # suite runs; its report follows the suite's.
 SCHEMA_LOG := $(BUILD)/json-schema.log
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
 	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema \
 	  > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
-	REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
 	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
 	exit $$rc
+
+$(KIT_CHECK): tests/conform/kit_check.c
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
@@ -276,6 +299,7 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 $(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
 $(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
 $(JSON_SRCS:%.c=$(BUILD)/obj/%.o): OBJ_CFLAGS += $(JSON_CFLAGS)
+$(BUILD)/obj/src/verify/manifest.o $(BUILD)/obj/src/verify/conform_report.o: OBJ_CFLAGS += $(JSON_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h

@@ -489,6 +489,27 @@ START_TEST(test_cli_json_export_render_check)
 }
 END_TEST
 
+/* [JSON-ROUNDTRIP-1] The kit's NAME.json (spec/conformance.md) is the
+ * export: it loads to the scene of the kit's NAME.scene. */
+START_TEST(test_cli_kit_writes_the_json_export)
+{
+    char dir[] = "/tmp/refray-json-XXXXXX", kit[256], json[320], scene[320];
+    int status;
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(kit, sizeof kit, "%s/kit", dir);
+    const char *argv[] = {"refray", "kit", "-q", "-o", kit, "scenes/analytic/disk_light.scene", NULL};
+    ck_assert_int_eq(testrun_refray(argv, NULL, 0, NULL, 0), 0);
+    snprintf(json, sizeof json, "%s/scenes/disk_light/disk_light.json", kit);
+    snprintf(scene, sizeof scene, "%s/scenes/disk_light/disk_light.scene", kit);
+    rf_scene *a = load_quiet(scene, NULL, 0, &status), *b = load_quiet(json, NULL, 0, &status);
+    ck_assert_msg(a && b, "the kit's scene or its JSON does not load (%d)", status);
+    same_scene(a, b, json);
+    scene_free(a);
+    scene_free(b);
+    remove_tree(dir);
+}
+END_TEST
+
 /* POV-Ray's options do not apply to JSON, nor --mesh-files to POV-Ray. */
 START_TEST(test_cli_json_export_usage)
 {
@@ -552,6 +573,7 @@ Suite *suite_json(void)
     tcase_add_test(tc, test_json_export_top_level_members);
     tcase_add_test(tc, test_cli_json_export_render_check);
     tcase_add_test(tc, test_cli_json_export_usage);
+    tcase_add_test(tc, test_cli_kit_writes_the_json_export);
 #else
     tcase_add_test(tc, test_json_refused_without_jansson);
 #endif

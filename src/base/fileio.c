@@ -2,7 +2,9 @@
  * fileio.c - see fileio.h.  Only regular files are read: a directory, a FIFO
  * or a device could block forever or never end, which an input must not.
  */
+#include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -96,48 +98,52 @@ char *file_join(const char *dir, const char *rel)
     return out;
 }
 
-/* mkstemp makes 0600; give the file the mode a plain fopen would have:
- * an existing file's, else 0666 less the umask (read from /proc, since
- * asking umask(2) means changing it for the whole process). */
-static void set_mode(int fd, const char *path)
+char *file_absolute(const char *path)
 {
-    struct stat sb;
+    if (path[0] == '/')
+        return file_join("/", path);
+    char cwd[4096];
+    return getcwd(cwd, sizeof cwd) ? file_join(cwd, path) : NULL;
+}
+
+/* ---- Writing ---- */
+
+/* Read where Linux publishes it: asking umask(2) means setting it, a
+ * process-wide change.  Elsewhere the common umask 022 is assumed. */
+unsigned file_new_mode(void)
+{
     unsigned mask = 022;
     char line[128];
-    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode)) {
-        fchmod(fd, sb.st_mode & 07777);
-        return;
-    }
     FILE *f = fopen("/proc/self/status", "r");
     while (f && fgets(line, sizeof line, f))
         if (sscanf(line, "Umask: %o", &mask) == 1)
             break;
     if (f)
         fclose(f);
-    fchmod(fd, (mode_t)(0666 & ~mask));
+    return 0666u & ~mask;
 }
 
-/* Fills the open temporary fd through fill and closes it; 0 or the exit code. */
-static int fill_temp(int fd, const char *path, int (*fill)(FILE *fp, void *ctx), void *ctx)
+/* Fills the open temporary fd through fill and closes it; 0 or the code. */
+static int fill_temp(int fd, file_fill_fn fill, void *ctx)
 {
-    set_mode(fd, path);
-    FILE *fp = fdopen(fd, "w");
+    FILE *fp = fchmod(fd, (mode_t)file_new_mode()) == 0 ? fdopen(fd, "wb") : NULL;
     if (!fp) {
         close(fd);
         return REFRAY_EXIT_IOERR;
     }
     int rc = fill(fp, ctx);
-    if (rc == 0 && (fflush(fp) != 0 || fsync(fileno(fp)) != 0))
+    if (rc == 0 && (fflush(fp) != 0 || ferror(fp) || fsync(fileno(fp)) != 0))
         rc = REFRAY_EXIT_IOERR;
     if (fclose(fp) != 0 && rc == 0)
         rc = REFRAY_EXIT_IOERR;
     return rc;
 }
 
-int file_write_atomic(const char *path, int (*fill)(FILE *fp, void *ctx), void *ctx, char *why, size_t why_size)
+int file_write_atomic(const char *path, file_fill_fn fill, void *ctx, char *why, size_t why_size)
 {
     static const char suffix[] = ".tmp.XXXXXX";
     struct stat sb;
+    /* rename would replace a directory entry that is not a plain file. */
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(why, why_size, "cannot write '%s': it exists and is not a regular file", path);
         return REFRAY_EXIT_IOERR;
@@ -145,22 +151,132 @@ int file_write_atomic(const char *path, int (*fill)(FILE *fp, void *ctx), void *
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
     if (!tmp) {
-        snprintf(why, why_size, "out of memory");
+        snprintf(why, why_size, "cannot write '%s': out of memory", path);
         return REFRAY_EXIT_SOFTWARE;
     }
     snprintf(tmp, n, "%s%s", path, suffix);
-    int fd = mkstemp(tmp), rc = REFRAY_EXIT_IOERR;
-    if (fd < 0)
+    int fd = mkstemp(tmp), rc;
+    if (fd < 0) {
         snprintf(why, why_size, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
-    else if ((rc = fill_temp(fd, path, fill, ctx)) == REFRAY_EXIT_IOERR)
-        snprintf(why, why_size, "cannot write '%s': write error: %s", path, strerror(errno));
-    else if (rc == 0 && rename(tmp, path) != 0) {
+        free(tmp);
+        return REFRAY_EXIT_IOERR;
+    }
+    errno = 0;
+    if ((rc = fill_temp(fd, fill, ctx)) != 0)
+        snprintf(why, why_size, "cannot write '%s': %s", path, errno ? strerror(errno) : "write error");
+    else if (rename(tmp, path) != 0) {
         snprintf(why, why_size, "cannot write '%s': cannot rename the temporary file into place: %s", path,
                  strerror(errno));
         rc = REFRAY_EXIT_IOERR;
     }
-    if (fd >= 0 && rc != 0)
+    if (rc != 0)
         unlink(tmp);
     free(tmp);
+    return rc;
+}
+
+typedef struct byte_span {
+    const void *data;
+    size_t len;
+} byte_span;
+
+static int fill_bytes(FILE *fp, void *ctx)
+{
+    const byte_span *b = ctx;
+    return b->len == 0 || fwrite(b->data, 1, b->len, fp) == b->len ? 0 : REFRAY_EXIT_IOERR;
+}
+
+int file_write_bytes(const char *path, const void *data, size_t len, char *why, size_t why_size)
+{
+    byte_span b;
+    b.data = data;
+    b.len = len;
+    return file_write_atomic(path, fill_bytes, &b, why, why_size);
+}
+
+/* ---- Directory trees ---- */
+
+int file_make_dirs(const char *path, char *why, size_t why_size)
+{
+    char *p = malloc(strlen(path) + 1);
+    if (!p) {
+        snprintf(why, why_size, "out of memory");
+        return REFRAY_EXIT_IOERR;
+    }
+    strcpy(p, path);
+    int rc = 0;
+    /* Each prefix ending before a '/', then the whole path. */
+    for (char *s = p + 1; rc == 0; s++) {
+        if (*s != '/' && *s != '\0')
+            continue;
+        char keep = *s;
+        *s = '\0';
+        struct stat sb;
+        if (mkdir(p, 0777) != 0 && !(errno == EEXIST && stat(p, &sb) == 0 && S_ISDIR(sb.st_mode))) {
+            snprintf(why, why_size, "cannot create the directory '%s': %s", p, strerror(errno));
+            rc = REFRAY_EXIT_IOERR;
+        }
+        *s = keep;
+        if (!keep)
+            break;
+    }
+    free(p);
+    return rc;
+}
+
+/* Empties the directory open as fd (closed here) and everything under it;
+ * the first failure is kept in why. */
+static int empty_dir(int fd, const char *path, char *why, size_t why_size)
+{
+    DIR *d = fdopendir(fd);
+    if (!d) {
+        snprintf(why, why_size, "cannot read the directory '%s': %s", path, strerror(errno));
+        close(fd);
+        return REFRAY_EXIT_IOERR;
+    }
+    int rc = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        const char *name = e->d_name;
+        if (strcmp(name, ".") == 0 || strcmp(name, "..") == 0)
+            continue;
+        struct stat sb;
+        if (fstatat(dirfd(d), name, &sb, AT_SYMLINK_NOFOLLOW) == 0 && S_ISDIR(sb.st_mode)) {
+            int sub = openat(dirfd(d), name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+            int r = sub < 0 ? REFRAY_EXIT_IOERR : empty_dir(sub, name, why, why_size);
+            if (r == 0 && unlinkat(dirfd(d), name, AT_REMOVEDIR) != 0)
+                r = REFRAY_EXIT_IOERR;
+            if (r != 0 && rc == 0) {
+                snprintf(why, why_size, "cannot remove the directory '%s' in '%s'", name, path);
+                rc = r;
+            }
+        } else if (unlinkat(dirfd(d), name, 0) != 0 && rc == 0) {
+            snprintf(why, why_size, "cannot remove '%s' in '%s': %s", name, path, strerror(errno));
+            rc = REFRAY_EXIT_IOERR;
+        }
+    }
+    closedir(d);
+    return rc;
+}
+
+int file_remove_tree(const char *path, char *why, size_t why_size)
+{
+    struct stat sb;
+    if (lstat(path, &sb) != 0 && errno == ENOENT)
+        return 0;
+    if (lstat(path, &sb) != 0 || (!S_ISDIR(sb.st_mode) && unlink(path) != 0)) {
+        snprintf(why, why_size, "cannot remove '%s': %s", path, strerror(errno));
+        return REFRAY_EXIT_IOERR;
+    }
+    if (!S_ISDIR(sb.st_mode))
+        return 0;
+    int fd = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    int rc = fd < 0 ? REFRAY_EXIT_IOERR : empty_dir(fd, path, why, why_size);
+    if (fd < 0)
+        snprintf(why, why_size, "cannot open the directory '%s': %s", path, strerror(errno));
+    if (rc == 0 && rmdir(path) != 0) {
+        snprintf(why, why_size, "cannot remove the directory '%s': %s", path, strerror(errno));
+        rc = REFRAY_EXIT_IOERR;
+    }
     return rc;
 }

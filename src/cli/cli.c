@@ -24,6 +24,8 @@ static const char usage_text[] =
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
     "  oracle SCENE -o OUT  write the exact image of an analytic scene (.exr .pfm)\n"
     "  compare A B          compare image A with the reference B, --diff MAP for a map\n"
+    "  kit -o DIR           write the conformance kit: scenes, exact images, manifest\n"
+    "  conform --cmd CMD    run another renderer over a kit and check every image\n"
     "\n"
     "options of every command that reads scenes:\n"
     "  -W, --no-warnings          do not print warnings\n"
@@ -88,5 +90,9 @@ int cli_main(int argc, char **argv)
         return cli_oracle(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)
         return cli_compare(argc - 1, argv + 1);
+    if (strcmp(cmd, "kit") == 0)
+        return cli_kit(argc - 1, argv + 1);
+    if (strcmp(cmd, "conform") == 0)
+        return cli_conform(argc - 1, argv + 1);
     return cli_usage_error("unknown command '%s'", cmd);
 }

@@ -191,6 +191,35 @@ int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t 
     return 0;
 }
 
+int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i], *v;
+    int downsample = strcmp(opt, "--downsample") == 0;
+    long k;
+    if (!downsample && strcmp(opt, "--scale") != 0)
+        return -1;
+    if (!cli_take_value(argc, argv, i, &v))
+        return 0;
+    if (strcmp(v, "manifest") == 0) {
+        if (downsample)
+            a->downsample = CONFORM_FROM_MANIFEST;
+        else
+            a->scale = CONFORM_FROM_MANIFEST;
+        return 1;
+    }
+    if (downsample) {
+        if (!cli_parse_long(opt, v, 1, 64, &k))
+            return 0;
+        a->downsample = (int)k;
+        return 1;
+    }
+    if (!cli_parse_double(opt, v, &a->scale) || !(a->scale > 0)) {
+        cli_usage_error("--scale takes a number > 0 or 'manifest', not '%s'", v);
+        return 0;
+    }
+    return 1;
+}
+
 int cli_image_status(int img_status)
 {
     switch (img_status) {

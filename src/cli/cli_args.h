@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include "render/render.h"
 #include "scene/scene.h"
+#include "verify/conform.h"
 #include "verify/verify.h"
 
 /* Options every scene-reading command accepts: the input limits and
@@ -70,6 +71,10 @@ int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int a
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
  * checked by the loader, so only an override can exceed it. */
 int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size);
+
+/* --downsample K|manifest and --scale S|manifest (conform, compare) into
+ * a; 1 consumed, 0 error reported, -1 not one of them. */
+int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i);
 
 /* Maps an image-library status to the exit code the commands use. */
 int cli_image_status(int img_status);

@@ -1,8 +1,9 @@
 /*
  * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically.
  *
- * The one piece of global state in refray lives here: the SIGINT flag, as a
- * volatile sig_atomic_t, because a signal handler can reach nothing else.
+ * One of refray's two pieces of global state lives here (the other is
+ * cli_conform.c's stop flag): the SIGINT flag, as a volatile sig_atomic_t,
+ * because a signal handler can reach nothing else.
  * The library never sees it; it is asked through the progress callback.
  */
 #include <signal.h>

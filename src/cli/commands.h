@@ -12,5 +12,7 @@ int cli_verify(int argc, char **argv);
 int cli_oracle(int argc, char **argv);
 int cli_compare(int argc, char **argv);
 int cli_stability(int argc, char **argv);
+int cli_kit(int argc, char **argv);
+int cli_conform(int argc, char **argv);
 
 #endif

@@ -6,10 +6,8 @@
  * apart and nothing is merged that the tracer would tell apart.  JSON=1
  * builds only.
  */
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "base/fileio.h"
 #include "base/sampler.h"
 #include "export/export_json_impl.h"
@@ -150,10 +148,7 @@ static int write_obj(const export_json_opts *o, int m, const indexed *x, char **
     int rc = REFRAY_EXIT_SOFTWARE;
     if (!dir || !path)
         snprintf(err, errlen, "out of memory");
-    else if (mkdir(dir, 0777) != 0 && errno != EEXIST) {
-        snprintf(err, errlen, "cannot create the mesh directory '%s': %s", dir, strerror(errno));
-        rc = REFRAY_EXIT_IOERR;
-    } else
+    else if ((rc = file_make_dirs(dir, err, errlen)) == 0)
         rc = file_write_atomic(path, fill_obj, (void *)x, err, errlen);
     free(dir);
     free(path);
