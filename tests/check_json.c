@@ -22,10 +22,10 @@
 #include <unistd.h>
 #include "export/export_json.h"
 #include "render/render.h"
+#include "cli_testlib.h"
 #include "testlib.h"
-#include "testrun.h"
 
-#ifdef REFRAY_HAVE_JSON
+#if REFRAY_HAVE_JSON
 
 #include "testjson.h"
 
@@ -264,34 +264,14 @@ START_TEST(test_json_roundtrip_scene)
 }
 END_TEST
 
-static void remove_tree(const char *dir)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    char path[512];
-    struct stat sb;
-    while (d && (e = readdir(d)) != NULL) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
-            remove_tree(path);
-        else
-            unlink(path);
-    }
-    if (d)
-        closedir(d);
-    rmdir(dir);
-}
-
 /* [JSON-MESH-1] With mesh files the meshes are OBJ files beside the JSON,
  * named after it, and the scene still comes back bit for bit. */
 START_TEST(test_json_roundtrip_mesh_files)
 {
     static const char *const scenes[] = {"scenes/mesh.scene", "scenes/stress/thin_triangles.scene",
                                          "scenes/stress/watertight_mesh.scene"};
-    char dir[] = "/tmp/refray-json-XXXXXX", json[256], obj[256];
-    ck_assert_ptr_nonnull(mkdtemp(dir));
+    char dir[256], json[320], obj[320];
+    cli_scratch(dir, sizeof dir, "json");
     for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
         int status;
         rf_scene *s = load_quiet(scenes[k], NULL, 0, &status);
@@ -312,7 +292,7 @@ START_TEST(test_json_roundtrip_mesh_files)
         scene_free(s);
         scene_free(back);
     }
-    remove_tree(dir);
+    cli_remove(dir);
 }
 END_TEST
 
@@ -455,37 +435,53 @@ START_TEST(test_json_export_top_level_members)
 }
 END_TEST
 
+/* The whole of a file (malloc'd, *len bytes). */
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    char *buf = NULL;
+    FILE *mem = open_memstream(&buf, len);
+    int c;
+    while ((c = fgetc(f)) != EOF)
+        fputc(c, mem);
+    fclose(f);
+    fclose(mem);
+    return buf;
+}
+
 /* [JSON-ROUNDTRIP-1] through the command line: export -o, then render the
  * .scene and the .json to PFM: the same bytes; check gives the same summary. */
 START_TEST(test_cli_json_export_render_check)
 {
-    char dir[] = "/tmp/refray-json-XXXXXX", json[256], a[256], b[256], out1[512], out2[512];
+    static cli_run r1, r2;
+    char dir[256], json[320], a[320], b[320];
     const char *scene = "scenes/analytic/rect_light.scene";
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    snprintf(json, sizeof json, "%s/rect.json", dir);
-    snprintf(a, sizeof a, "%s/a.pfm", dir);
-    snprintf(b, sizeof b, "%s/b.pfm", dir);
-    const char *exp[] = {"refray", "export", scene, "--to", "json", "-o", json, NULL};
-    ck_assert_int_eq(testrun_refray(exp, out1, sizeof out1, NULL, 0), 0);
-    ck_assert_str_eq(out1, "");
-    const char *ra[] = {"refray", "render", scene, "-o", a, NULL}, *rb[] = {"refray", "render", json, "-o", b, NULL};
-    ck_assert_int_eq(testrun_refray(ra, NULL, 0, NULL, 0), 0);
-    ck_assert_int_eq(testrun_refray(rb, NULL, 0, NULL, 0), 0);
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
-    ck_assert(fa && fb);
-    int ca, cb;
-    do {
-        ca = fgetc(fa);
-        cb = fgetc(fb);
-    } while (ca == cb && ca != EOF);
-    ck_assert_msg(ca == cb, "the PFM rendered from the JSON differs");
-    fclose(fa);
-    fclose(fb);
-    const char *c1[] = {"refray", "check", scene, NULL}, *c2[] = {"refray", "check", json, NULL};
-    ck_assert_int_eq(testrun_refray(c1, out1, sizeof out1, NULL, 0), 0);
-    ck_assert_int_eq(testrun_refray(c2, out2, sizeof out2, NULL, 0), 0);
-    ck_assert_str_eq(strchr(out1, ':'), strchr(out2, ':'));
-    remove_tree(dir);
+    cli_scratch(dir, sizeof dir, "json");
+    cli_path(json, sizeof json, dir, "rect.json");
+    cli_path(a, sizeof a, dir, "a.pfm");
+    cli_path(b, sizeof b, dir, "b.pfm");
+    const char *exp[] = {"export", scene, "--to", "json", "-o", json, NULL};
+    cli_refray(&r1, exp);
+    ck_assert_msg(r1.code == 0, "%s", r1.err);
+    ck_assert_str_eq(r1.out, "");
+    const char *ra[] = {"render", scene, "-o", a, NULL}, *rb[] = {"render", json, "-o", b, NULL};
+    cli_refray(&r1, ra);
+    cli_refray(&r2, rb);
+    ck_assert_int_eq(r1.code, 0);
+    ck_assert_int_eq(r2.code, 0);
+    size_t la, lb;
+    char *pa = slurp(a, &la), *pb = slurp(b, &lb);
+    ck_assert_msg(la == lb && memcmp(pa, pb, la) == 0, "the PFM rendered from the JSON differs");
+    free(pa);
+    free(pb);
+    const char *c1[] = {"check", scene, NULL}, *c2[] = {"check", json, NULL};
+    cli_refray(&r1, c1);
+    cli_refray(&r2, c2);
+    ck_assert_int_eq(r1.code, 0);
+    ck_assert_int_eq(r2.code, 0);
+    ck_assert_str_eq(strchr(r1.out, ':'), strchr(r2.out, ':'));
+    cli_remove(dir);
 }
 END_TEST
 
@@ -493,37 +489,41 @@ END_TEST
  * export: it loads to the scene of the kit's NAME.scene. */
 START_TEST(test_cli_kit_writes_the_json_export)
 {
-    char dir[] = "/tmp/refray-json-XXXXXX", kit[256], json[320], scene[320];
+    static cli_run r;
+    char dir[256], kit[320], json[400], scene[400];
     int status;
-    ck_assert_ptr_nonnull(mkdtemp(dir));
-    snprintf(kit, sizeof kit, "%s/kit", dir);
-    const char *argv[] = {"refray", "kit", "-q", "-o", kit, "scenes/analytic/disk_light.scene", NULL};
-    ck_assert_int_eq(testrun_refray(argv, NULL, 0, NULL, 0), 0);
-    snprintf(json, sizeof json, "%s/scenes/disk_light/disk_light.json", kit);
-    snprintf(scene, sizeof scene, "%s/scenes/disk_light/disk_light.scene", kit);
+    cli_scratch(dir, sizeof dir, "json");
+    cli_path(kit, sizeof kit, dir, "kit");
+    const char *args[] = {"kit", "-q", "-o", kit, "scenes/analytic/disk_light.scene", NULL};
+    cli_refray(&r, args);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    cli_path(json, sizeof json, kit, "scenes/disk_light/disk_light.json");
+    cli_path(scene, sizeof scene, kit, "scenes/disk_light/disk_light.scene");
     rf_scene *a = load_quiet(scene, NULL, 0, &status), *b = load_quiet(json, NULL, 0, &status);
     ck_assert_msg(a && b, "the kit's scene or its JSON does not load (%d)", status);
     same_scene(a, b, json);
     scene_free(a);
     scene_free(b);
-    remove_tree(dir);
+    cli_remove(dir);
 }
 END_TEST
 
 /* POV-Ray's options do not apply to JSON, nor --mesh-files to POV-Ray. */
 START_TEST(test_cli_json_export_usage)
 {
-    char err[512];
-    const char *scale[] = {"refray", "export", "scenes/analytic/rect_light.scene", "--to", "json", "--scale", "2",
-                           NULL};
-    ck_assert_int_eq(testrun_refray(scale, NULL, 0, err, sizeof err), 64);
-    ck_assert_msg(strstr(err, "refray: error: export: --scale applies to --to pov"), "%s", err);
-    const char *mesh[] = {"refray", "export", "scenes/mesh.scene", "--to", "pov", "--mesh-files", "m", NULL};
-    ck_assert_int_eq(testrun_refray(mesh, NULL, 0, err, sizeof err), 64);
-    ck_assert_msg(strstr(err, "refray: error: export: --mesh-files applies to --to json"), "%s", err);
-    const char *features[] = {"refray", "--features", NULL};
-    ck_assert_int_eq(testrun_refray(features, err, sizeof err, NULL, 0), 0);
-    ck_assert_msg(strstr(err, "json"), "--features: %s", err);
+    static cli_run r;
+    const char *scale[] = {"export", "scenes/analytic/rect_light.scene", "--to", "json", "--scale", "2", NULL};
+    cli_refray(&r, scale);
+    ck_assert_int_eq(r.code, 64);
+    ck_assert_msg(strstr(r.err, "refray: error: export: --scale applies to --to pov"), "%s", r.err);
+    const char *mesh[] = {"export", "scenes/mesh.scene", "--to", "pov", "--mesh-files", "m", NULL};
+    cli_refray(&r, mesh);
+    ck_assert_int_eq(r.code, 64);
+    ck_assert_msg(strstr(r.err, "refray: error: export: --mesh-files applies to --to json"), "%s", r.err);
+    const char *features[] = {"--features", NULL};
+    cli_refray(&r, features);
+    ck_assert_int_eq(r.code, 0);
+    ck_assert_msg(strstr(r.out, "json"), "--features: %s", r.out);
 }
 END_TEST
 
@@ -534,7 +534,7 @@ END_TEST
 START_TEST(test_json_refused_without_jansson)
 {
     static const char text[] = "{}";
-    char err[512], out[128];
+    static cli_run r;
     int status;
     FILE *msgs = tmpfile();
     rf_scene *s = scene_load_text("x.json", text, strlen(text), NULL, msgs, 1, &status);
@@ -542,15 +542,18 @@ START_TEST(test_json_refused_without_jansson)
     ck_assert_int_eq(status, REFRAY_EXIT_USAGE);
     ck_assert_int_eq(scene_json_available(), 0);
     fclose(msgs);
-    const char *exp[] = {"refray", "export", "scenes/analytic/rect_light.scene", "--to", "json", NULL};
-    ck_assert_int_eq(testrun_refray(exp, NULL, 0, err, sizeof err), 64);
-    ck_assert_msg(strstr(err, "without JSON support"), "%s", err);
-    const char *chk[] = {"refray", "check", "tests/bad/json-malformed.json", NULL};
-    ck_assert_int_eq(testrun_refray(chk, NULL, 0, err, sizeof err), 64);
-    ck_assert_msg(strstr(err, "is a JSON scene, and this refray was built without JSON support"), "%s", err);
-    const char *features[] = {"refray", "--features", NULL};
-    ck_assert_int_eq(testrun_refray(features, out, sizeof out, NULL, 0), 0);
-    ck_assert_msg(!strstr(out, "json"), "--features: %s", out);
+    const char *exp[] = {"export", "scenes/analytic/rect_light.scene", "--to", "json", NULL};
+    cli_refray(&r, exp);
+    ck_assert_int_eq(r.code, 64);
+    ck_assert_msg(strstr(r.err, "without JSON support"), "%s", r.err);
+    const char *chk[] = {"check", "tests/bad/json-malformed.json", NULL};
+    cli_refray(&r, chk);
+    ck_assert_int_eq(r.code, 64);
+    ck_assert_msg(strstr(r.err, "is a JSON scene, and this refray was built without JSON support"), "%s", r.err);
+    const char *features[] = {"--features", NULL};
+    cli_refray(&r, features);
+    ck_assert_int_eq(r.code, 0);
+    ck_assert_msg(!strstr(r.out, "json"), "--features: %s", r.out);
 }
 END_TEST
 
@@ -560,7 +563,7 @@ Suite *suite_json(void)
 {
     Suite *s = suite_create("json");
     TCase *tc = tcase_create("json");
-#ifdef REFRAY_HAVE_JSON
+#if REFRAY_HAVE_JSON
     scene_list l;
     scenes_read(&l);
     tcase_add_test(tc, test_json_roundtrip_scene_count);
