@@ -7,10 +7,12 @@
  *
  * Properties take their values by juxtaposition (`rectangle [0,4,0] [1,0,0]
  * [0,0,1]`).  To keep that unambiguous for an LALR(1) parser with no
- * conflicts, property names are reserved words, and a value after the first
- * may not begin with a sign: `a -b` is always the subtraction a - b.  The
- * second rule is why the expression grammar exists twice: expr, and expr_ns
- * ("no sign") that cannot start with unary + or -.
+ * conflicts, a property word comes as KEYWORD only where a property may
+ * start and as NAME everywhere else (the scanner decides, scene.l:
+ * `let width = 4`, `radius width / 2`), and a value after the first may not
+ * begin with a sign: `a -b` is always the subtraction a - b.  The second
+ * rule is why the expression grammar exists twice: expr, and expr_ns ("no
+ * sign") that cannot start with unary + or -.
  */
 
 %code requires {

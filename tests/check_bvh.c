@@ -242,7 +242,7 @@ static int compare_crossings(const void *pa, const void *pb)
 static void brute_all(const rf_prim *prims, int count, const ray *r, crossing_list *l)
 {
     for (int i = 0; i < count; i++) {
-        hit out[2];
+        hit out[ISECT_MAX_CROSSINGS];
         int n = isect_prim_all(&prims[i], r, out);
         for (int k = 0; k < n; k++) {
             out[k].prim = i;

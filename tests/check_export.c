@@ -284,6 +284,28 @@ START_TEST(test_pov_export_write_triangle)
 }
 END_TEST
 
+/* [XCHK-MAP-QUADRIC-1] POV-Ray's cylinder and cone take the end centres
+ * and radii as refray's (z negated), `open` as it is.  Its torus lies
+ * about y at the origin: a matrix takes y to the axis and the origin to
+ * the centre.  By hand for axis +z: in POV-Ray's frame a = (0, 0, -1); the
+ * axis with the least component is x, u = a x (1,0,0) = (0, -1, 0),
+ * w = u x a = (1, 0, 0); rows u, a, w, then the centre (1, 2, -3). */
+START_TEST(test_pov_export_write_quadrics)
+{
+    pov_notes n;
+    char *sdl = export_default("cylinder { from [0, 0, 1] to [0, 2, 1] radius 0.5 }\n"
+                               "cylinder { from [0, 0, 1] to [0, 2, 1] radius 0.5 open }\n"
+                               "cone { from [0, 0, 0] to [0, 2, 0] radii 1 0 open }\n"
+                               "torus { center [1, 2, 3] axis [0, 0, 1] major 2 minor 0.5 }\n", &n);
+    ck_assert_has(sdl, "cylinder {\n  <0, 0, -1>, <0, 2, -1>, 0.5\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "cylinder {\n  <0, 0, -1>, <0, 2, -1>, 0.5\n  open\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "cone {\n  <0, 0, 0>, 1, <0, 2, 0>, 0\n  open\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "torus {\n  2, 0.5\n  sturm\n  matrix <0, -1, 0, 0, 0, -1, 1, 0, 0, 1, 2, -3>\n"
+                       "  texture { RF_T0 }\n}");
+    free(sdl);
+}
+END_TEST
+
 /* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
  * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
  * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
@@ -589,6 +611,7 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_scale);
     tcase_add_test(sdl, test_pov_export_write_matrix);
     tcase_add_test(sdl, test_pov_export_write_triangle);
+    tcase_add_test(sdl, test_pov_export_write_quadrics);
     tcase_add_test(sdl, test_pov_export_check_notes);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);

@@ -150,7 +150,7 @@ START_TEST(test_isect_sphere_tangent_is_one_hit)
      * the graze at (0,1,0), t = 5, counts once. */
     rf_prim s = prim_sphere(vec_make(0, 0, 0), 1);
     ray r = make_ray(vec_make(-5, 1, 0), vec_make(1, 0, 0));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 1);
     ck_assert_near(out[0].t, 5.0, 0.0);
     ck_assert_vec_near(out[0].point, vec_make(0, 1, 0), 0.0);
@@ -195,7 +195,7 @@ START_TEST(test_isect_sphere_from_inside_hits_far_side)
     ck_assert_vec_near(h.normal, vec_make(0, -1, 0), 1e-15);
     ck_assert_int_eq(h.entering, 0);
     rf_prim s = prim_sphere(vec_make(1, 1, 1), 3);
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     r = make_ray(vec_make(1, 1, 1), vec_make(0, -1, 0));
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 1);
 }
@@ -238,7 +238,7 @@ START_TEST(test_isect_sphere_respects_tmin_tmax)
     r.tmin = 8.5;
     r.tmax = 10.0;
     ck_assert(!isect_prim(&s, &r, &h));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     r = make_ray(vec_make(0, 0, -9), vec_make(0, 0, 1));
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 2);
     ck_assert_near(out[0].t, 8.0, 0.0);
@@ -578,7 +578,7 @@ START_TEST(test_isect_box_hit_by_hand)
      * t = 4 (normal -x), leaves x = 1 at t = 6 (normal +x). */
     rf_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
     ray r = make_ray(vec_make(-5, 0.5, 0.5), vec_make(1, 0, 0));
-    hit h, out[2];
+    hit h, out[ISECT_MAX_CROSSINGS];
     ck_assert(isect_box(bx.u.box.lo, bx.u.box.hi, &r, &h));
     ck_assert_near(h.t, 4.0, 0.0);
     ck_assert_vec_near(h.point, vec_make(-1, 0.5, 0.5), 0.0);
@@ -655,7 +655,7 @@ START_TEST(test_isect_box_edge_touch_is_one_hit)
      * the x face) and out through x = y = 1 (t = 2 sqrt 2). */
     rf_prim bx = prim_box(vec_make(0, 0, 0), vec_make(1, 1, 1));
     vec3 dir = vec_normalize(vec_make(1, 1, 0));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     ray r = make_ray(vec_make(-1, 0, 0.5), dir);
     ck_assert_int_eq(isect_prim_all(&bx, &r, out), 1);
     ck_assert_near(out[0].t, sqrt(2.0), 1e-15);
@@ -693,7 +693,7 @@ START_TEST(test_isect_prim_ellipsoid)
      * (-sqrt3/4, 1/2, 0). */
     rf_prim e = prim_sphere(vec_make(0, 0, 0), 1);
     prim_set_xform(&e, xform_scale(vec_make(2, 1, 1)));
-    hit h, out[2];
+    hit h, out[ISECT_MAX_CROSSINGS];
     ray r = make_ray(vec_make(-10, 0, 0), vec_make(1, 0, 0));
     ck_assert(isect_prim(&e, &r, &h));
     ck_assert_near(h.t, 8.0, 1e-14);

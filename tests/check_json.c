@@ -131,6 +131,19 @@ static void same_prim(const rf_prim *a, const rf_prim *b, const char *name, int 
     case PRIM_PLANE: SAME_BITS(a->u.plane, b->u.plane, "plane", i); break;
     case PRIM_DISK: SAME_BITS(a->u.disk, b->u.disk, "disk", i); break;
     case PRIM_BOX: SAME_BITS(a->u.box, b->u.box, "box", i); break;
+    case PRIM_CYLINDER:
+        SAME_BITS(a->u.cylinder.from, b->u.cylinder.from, "cylinder from", i);
+        SAME_BITS(a->u.cylinder.to, b->u.cylinder.to, "cylinder to", i);
+        SAME_BITS(a->u.cylinder.radius, b->u.cylinder.radius, "cylinder radius", i);
+        ck_assert_int_eq(a->u.cylinder.open, b->u.cylinder.open);
+        break;
+    case PRIM_CONE:
+        SAME_BITS(a->u.cone.from, b->u.cone.from, "cone from", i);
+        SAME_BITS(a->u.cone.to, b->u.cone.to, "cone to", i);
+        SAME_BITS(a->u.cone.radius, b->u.cone.radius, "cone radii", i);
+        ck_assert_int_eq(a->u.cone.open, b->u.cone.open);
+        break;
+    case PRIM_TORUS: SAME_BITS(a->u.torus, b->u.torus, "torus", i); break;
     case PRIM_TRIANGLE:
         SAME_BITS(a->u.triangle.p, b->u.triangle.p, "triangle", i);
         ck_assert_int_eq(a->u.triangle.has_normals, b->u.triangle.has_normals);

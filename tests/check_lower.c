@@ -281,8 +281,14 @@ START_TEST(test_scene_load_validation_errors)
         {"material m { n -1 }", "t.scene:1:16: error: n must be >= 0, got -1"},
         {"sphere { material { ior -1 } }", "t.scene:1:25: error: ior must be > 0, got -1"},
         /* unknown material, defined before use */
-        {"sphere { material glass }\nmaterial glass {}",
+        {"sphere { material glass }",
          "t.scene:1:19: error: unknown material 'glass' (define it with `material glass { ... }` before use)"},
+        {"sphere { material glass }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glass': it is defined only later, at line 2 (define a material "
+         "before its first use)"},
+        /* [LANG-DIAG-STUMBLE-1] a close name defined further down */
+        {"sphere { material glas }\nfor i in 0 .. 1 { }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glas'; did you mean 'glass' (defined at line 3)?"},
         {"material glass {}\nsphere { material glas }",
          "t.scene:2:19: error: unknown material 'glas'; did you mean 'glass'?"},
         /* duplicate names */
@@ -555,8 +561,8 @@ START_TEST(test_scene_load_names)
     load(&l, "sphere { radius r }\nlet r = 1");
     ck_assert_str_eq(first_line(&l), "t.scene:1:17: error: unknown constant 'r'");
     loaded_done(&l);
-    load(&l, "let radius = 1");
-    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'radius' is a reserved word and cannot name a constant");
+    load(&l, "let sphere = 1");
+    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'sphere' is a reserved word and cannot name a constant");
     loaded_done(&l);
     load(&l, "let pi = 3");
     ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'pi' is built in and cannot be redefined");
@@ -697,6 +703,73 @@ START_TEST(test_scene_load_huge_but_finite)
 }
 END_TEST
 
+/* [LANG-CAMERA-2] Every mistake of a camera is reported, in one run: the
+ * kind and a value out of range, then look_at at the eye and a zero up. */
+START_TEST(test_scene_load_camera_reports_everything)
+{
+    loaded l;
+    load(&l, "camera { perspective orthographic fov 400 eye [1, 1, 1] look_at [1, 1, 1] up [0, 0, 0] }\nsphere {}");
+    ck_assert_ptr_null(l.scene);
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:22: error: a camera is either perspective or orthographic"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:39: error: fov must be in (0, 180), got 400"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: look_at must differ from eye"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: up must not be a zero-length vector"));
+    loaded_done(&l);
+}
+END_TEST
+
+/* [LANG-CYLINDER-1] [LANG-CONE-1] [LANG-TORUS-1]: defaults, open, and
+ * [LANG-XFORM-BAKE-1] baking under a similarity (rotate 90 about x takes
+ * y to z and z to -y; scale 2; translate): the ends or the centre moved,
+ * the axis turned, the radii doubled.  A non-uniform scale keeps the frame. */
+START_TEST(test_scene_load_quadrics)
+{
+    loaded l;
+    const rf_scene *s = load_ok(&l,
+        "cylinder { }\n"
+        "cone { open }\n"
+        "torus { }\n"
+        "cylinder { from [0, 0, 0] to [0, 0, 1] radius 1 rotate [90, 0, 0] scale 2 translate [1, 0, 0] }\n"
+        "cone { radii 0.5 0.25 rotate [90, 0, 0] scale 2 }\n"
+        "torus { center [0, 1, 0] major 2 minor 0.5 rotate [90, 0, 0] scale 2 }\n"
+        "torus { scale [1, 2, 1] }\n"
+        "let radius = 3\nlet minor = 0.1\ncylinder { radius radius open }\ntorus { minor minor }\n");
+    const rf_prim *p = s->prims;
+    ck_assert_int_eq(s->prim_count, 9);
+    ck_assert_int_eq(p[0].kind, PRIM_CYLINDER);
+    ck_assert_vec_near(p[0].u.cylinder.from, vec_make(0, 0, 0), 0);
+    ck_assert_vec_near(p[0].u.cylinder.to, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[0].u.cylinder.radius, 1, 0);
+    ck_assert_int_eq(p[0].u.cylinder.open, 0);
+    ck_assert_int_eq(p[1].kind, PRIM_CONE);
+    ck_assert_near(p[1].u.cone.radius[0], 1, 0);
+    ck_assert_near(p[1].u.cone.radius[1], 0, 0);
+    ck_assert_int_eq(p[1].u.cone.open, 1);
+    ck_assert_int_eq(p[2].kind, PRIM_TORUS);
+    ck_assert_vec_near(p[2].u.torus.axis, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[2].u.torus.major, 1, 0);
+    ck_assert_near(p[2].u.torus.minor, 0.25, 0);
+    ck_assert_int_eq(p[3].has_xform, 0);
+    ck_assert_vec_near(p[3].u.cylinder.from, vec_make(1, 0, 0), 1e-15);
+    ck_assert_vec_near(p[3].u.cylinder.to, vec_make(1, -2, 0), 1e-15);
+    ck_assert_near(p[3].u.cylinder.radius, 2, 1e-15);
+    ck_assert_int_eq(p[4].has_xform, 0);
+    ck_assert_vec_near(p[4].u.cone.to, vec_make(0, 0, 2), 1e-15);
+    ck_assert_near(p[4].u.cone.radius[0], 1, 1e-15);
+    ck_assert_near(p[4].u.cone.radius[1], 0.5, 1e-15);
+    ck_assert_int_eq(p[5].has_xform, 0);
+    ck_assert_vec_near(p[5].u.torus.center, vec_make(0, 0, 2), 1e-15);
+    ck_assert_vec_near(p[5].u.torus.axis, vec_make(0, 0, 1), 1e-15);
+    ck_assert_near(p[5].u.torus.major, 4, 1e-15);
+    ck_assert_near(p[5].u.torus.minor, 1, 1e-15);
+    ck_assert_int_eq(p[6].has_xform, 1);
+    ck_assert_near(p[7].u.cylinder.radius, 3, 0);
+    ck_assert_int_eq(p[7].u.cylinder.open, 1);
+    ck_assert_near(p[8].u.torus.minor, 0.1, 0);
+    loaded_done(&l);
+}
+END_TEST
+
 Suite *suite_lower(void)
 {
     Suite *s = suite_create("lower");
@@ -719,6 +792,8 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh);
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
+    tcase_add_test(tc, test_scene_load_quadrics);
+    tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);
     return s;
 }

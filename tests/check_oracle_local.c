@@ -526,6 +526,11 @@ static const scene_case scenes[] = {
     {"scenes/analytic/transparent_shadow_depth2.scene", "transparent_shadow", 10},
     {"scenes/analytic/stacked_sheets.scene", "stacked_sheets", 10},
     {"scenes/analytic/stacked_sheets_cut.scene", "stacked_sheets", 10},
+    {"scenes/analytic/lambert_cylinder.scene", "lambert_cylinder", 10},
+    {"scenes/analytic/lambert_cone.scene", "lambert_cone", 20},
+    {"scenes/analytic/lambert_cone_apex.scene", "lambert_cone", 10},
+    {"scenes/analytic/lambert_torus.scene", "lambert_torus", 20},
+    {"scenes/analytic/lambert_torus_edge.scene", "lambert_torus", 20},
 };
 
 enum { SCENE_COUNT = sizeof scenes / sizeof scenes[0] };
@@ -772,6 +777,23 @@ static const refusal refusals[] = {
     {"stacked_sheets", "camera { eye [0, 10, 1] look_at [0, 0, 0] }\n"
                        "plane { }\ndisk { center [0, 1, 0] }\ndisk { center [3, 1, 0] }\n",
      "stacked_sheets: primitives 2 and 3 lie at the same height"},
+    {"lambert_cylinder", FRONT_2 "cylinder { open }\n",
+     "lambert_cylinder: the cylinder must be closed (an open one shows, and shadows, its inside)"},
+    {"lambert_cylinder", "cylinder { }\n", "lambert_cylinder: the camera must be orthographic"},
+    {"lambert_cylinder", FRONT_2 "cylinder { }\nsphere { center [5, 0, 0] }\n",
+     "lambert_cylinder: the scene must be one cylinder"},
+    {"lambert_cylinder", FRONT_2 "point_light { position [0, 0.5, 0.5] }\ncylinder { }\n",
+     "lambert_cylinder: point light 1 is inside the ball around the cylinder"},
+    {"lambert_cylinder", FRONT_2 "cylinder { material { Ks 0.5 } }\n",
+     "lambert_cylinder: the material must have Ks = 0 and t = 0"},
+    {"lambert_cone", FRONT_2 "cone { radii 0.5 0.5 }\n",
+     "lambert_cone: the radii are equal: that is a cylinder (family lambert_cylinder)"},
+    {"lambert_cone", "camera { orthographic eye [0, 0, 0.9] }\ncone { }\n",
+     "lambert_cone: the cone must lie wholly in front of the camera's image plane"},
+    {"lambert_torus", FRONT_2 "point_light { position [5, 5, 5] }\ntorus { }\n",
+     "lambert_torus: light 1 is a point light (distant lights only)"},
+    {"lambert_torus", FRONT_2 "torus { scale [1, 2, 1] }\n",
+     "lambert_torus: primitive 1 keeps a transform (an ellipsoid, a mirrored or turned shape)"},
 };
 
 enum { REFUSAL_COUNT = sizeof refusals / sizeof refusals[0] };

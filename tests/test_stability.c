@@ -917,6 +917,165 @@ START_TEST(test_stress_camera_inside_nested_glass)
 }
 END_TEST
 
+/* ---- cylinders, cones and tori ---------------------------------------- */
+
+/* The REF reference of precision/measure_shapes.h (a quadratic solved in
+ * REF from the ray as given; the torus's quartic by a Sturm sequence) for
+ * prims[0] along an exact camera ray: 1 on a hit, with the outward normal;
+ * *margin how far the ray is from a graze or a rim, relative. */
+static int exact_shape(const rf_prim *p, lvec o, lvec d, lvec *n, ld *margin)
+{
+    qv qo = {o.x, o.y, o.z}, qd = {d.x, d.y, d.z}, normal = {0, 0, 0};
+    ld t, cosine;
+    int found;
+    ck_assert(!p->has_xform);
+    if (p->kind == PRIM_TORUS) {
+        qtorus tr = qtorus_of(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor);
+        found = qtorus_ref_q(&tr, qo, qd, 0, &t, margin, &cosine, &normal);
+    } else if (p->kind == PRIM_CONE) {
+        qcone c = qcone_of(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], p->u.cone.open);
+        found = qcone_ref_q(&c, qo, qd, 0, &t, margin, &cosine, &normal);
+    } else {
+        ck_assert_int_eq(p->kind, PRIM_CYLINDER);
+        qcone c = qcone_of(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius,
+                           p->u.cylinder.open);
+        found = qcone_ref_q(&c, qo, qd, 0, &t, margin, &cosine, &normal);
+    }
+    *n = lv(normal.x, normal.y, normal.z);
+    return found;
+}
+
+/* As check_sphere_scene, for a scene whose prims[0] is a cylinder, cone or
+ * torus that nothing shadows (lit by distant lights it cannot hide from
+ * itself; any other primitive out of view and out of the way). */
+static sphere_check check_shape_scene(const char *name, ld edge, ld tol)
+{
+    sphere_check out = {0, 0, 0, 0};
+    render_stats st;
+    rf_image img;
+    rf_scene *s = load_stress(name);
+    const rf_prim *p = &s->prims[0];
+    render_checked(s, &img, &st);
+    for (int j = 0; j < img.height; j++)
+        for (int i = 0; i < img.width; i++) {
+            lvec o, d, n;
+            ld margin;
+            exact_camera_ray(s, i, j, &o, &d);
+            int hits = exact_shape(p, o, d, &n, &margin);
+            double got = img_pixel(&img, i, j)[0];
+            if (fabsq(margin) < edge) {
+                out.skipped++;
+                continue;
+            }
+            if (!hits) {
+                ck_assert_msg(got == s->image.background.x, "%s (%d,%d): %.17g, expected the background", name,
+                              i, j, got);
+                out.misses++;
+                continue;
+            }
+            ld want = exact_lambert(s, &s->materials[p->material], n, d), rel = fabsq(got - want) / want;
+            ck_assert_msg(rel <= tol, "%s (%d,%d): %.17g, expected %.17g (relative error %.3g > %.3g)", name, i, j,
+                          got, (double)want, (double)rel, (double)tol);
+            out.worst_rel = rel > out.worst_rel ? rel : out.worst_rel;
+            out.hits++;
+        }
+    img_free(&img);
+    scene_free(s);
+    return out;
+}
+
+/* [NUM-QUADRIC-1] Rays 1e-4 rad from the side of a cylinder 1000 long:
+ * every cap and side pixel exact, no shadow ray caught by the side it
+ * leaves at that angle. */
+START_TEST(test_stress_cylinder_grazing)
+{
+    sphere_check c = check_shape_scene("cylinder_grazing", 1e-9, 1e-9);
+    ck_assert_int_gt(c.hits, 800);
+    ck_assert_int_gt(c.misses, 100);
+    ck_assert_int_lt(c.skipped, 40);
+}
+END_TEST
+
+/* [NUM-TORUS-1] The torus edge-on, from inside its hole, and thin and far:
+ * the exact silhouette and Lambert value at every pixel away from a graze. */
+START_TEST(test_stress_torus_edge_on_hole_far)
+{
+    sphere_check edge = check_shape_scene("torus_edge_on", 1e-9, 1e-9);
+    ck_assert_int_gt(edge.hits, 300);
+    ck_assert_int_gt(edge.misses, 300);
+    sphere_check hole = check_shape_scene("torus_hole", 1e-9, 1e-9);
+    ck_assert_int_gt(hole.hits, 300);
+    ck_assert_int_gt(hole.misses, 100);
+    /* 2.3e6 from the origin a point is known to ulp = 4.7e-10, so the
+     * normal of a tube of radius 1e-3 through it only to 4.7e-7: that is
+     * the tolerance of the shading there, and the hit points themselves
+     * are checked against the tube below. */
+    sphere_check far = check_shape_scene("torus_thin_far", 1e-9, 2e-6);
+    ck_assert_int_gt(far.hits, 300);
+    ck_assert_int_gt(far.misses, 200);
+    rf_scene *s = load_stress("torus_thin_far");
+    const rf_prim *p = &s->prims[0];
+    qtorus tr = qtorus_of(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor);
+    int hits = 0;
+    for (int j = 0; j < s->image.height; j++)
+        for (int i = 0; i < s->image.width; i++) {
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            hit h;
+            if (!isect_prim(p, &r, &h))
+                continue;
+            hits++;
+            ld off = fabsq(qtorus_distance(&tr, q_of(h.point), NULL) - tr.minor);
+            ck_assert_msg(off <= 2 * 0x1p-52 * 2.3e6, "(%d,%d): %.3g off the tube", i, j, (double)off);
+        }
+    ck_assert_int_gt(hits, 300);
+    scene_free(s);
+}
+END_TEST
+
+/* [NUM-QUADRIC-1] The patch around a cone's apex: every pixel exact. */
+START_TEST(test_stress_cone_apex)
+{
+    sphere_check c = check_shape_scene("cone_apex", 1e-9, 1e-9);
+    ck_assert_int_gt(c.hits, 32 * 32 - 8);
+}
+END_TEST
+
+/* [NUM-TORUS-1] The before: the quartic written about the ray's own origin
+ * (2.3e6 away) and solved in double misses or misshades pixels that
+ * refray's shifted, scaled and polished solve gets right to 1e-9 (the test
+ * above), and its hit points lie far off the tube. */
+START_TEST(test_stress_naive_torus_fails_where_refray_holds)
+{
+    rf_scene *s = load_stress("torus_thin_far");
+    const rf_prim *p = &s->prims[0];
+    int wrong = 0, tried = 0;
+    for (int j = 0; j < s->image.height; j++)
+        for (int i = 0; i < s->image.width; i++) {
+            lvec o, d, n;
+            ld margin;
+            exact_camera_ray(s, i, j, &o, &d);
+            int want = exact_shape(p, o, d, &n, &margin);
+            if (fabsq(margin) < 1e-6)
+                continue;
+            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            real t;
+            tried++;
+            int got = naive_torus(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &r, &t);
+            if (got != want) {
+                wrong++;
+                continue;
+            }
+            if (!got)
+                continue;
+            qtorus tr = qtorus_of(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor);
+            wrong += fabsq(qtorus_distance(&tr, q_of(ray_at(&r, t)), NULL) - tr.minor) > 1e-6 * tr.minor;
+        }
+    ck_assert_int_gt(tried, 500);
+    ck_assert_msg(wrong > tried / 10, "the unshifted quartic got %d of %d pixels wrong", wrong, tried);
+    scene_free(s);
+}
+END_TEST
+
 /* ---- precision per function -------------------------------------------- */
 
 /* [NUM-PREC-1] Every formula of shade.c and every hit test keeps its
@@ -954,6 +1113,8 @@ START_TEST(test_precision_befores_are_worse)
         {"before: phong pow(V.R, n)", "shade_phong_lobe", 50},
         {"before: phong exp(n log V.R)", "shade_phong_lobe", 50},
         {"before: textbook sphere point", "isect_sphere point", 1e6},
+        {"before: textbook cylinder point", "isect_cylinder point", 1e6},
+        {"before: unshifted torus quartic point", "isect_torus point", 1e6},
     };
     for (size_t k = 0; k < sizeof pairs / sizeof pairs[0]; k++) {
         measure b = {0, "-", 0, 0}, a = {0, "-", 0, 0};
@@ -1117,6 +1278,13 @@ Suite *suite_stability(void)
     tcase_add_test(scale, test_stress_scale_invariance);
     tcase_add_test(scale, test_stress_denormal_coordinates);
     suite_add_tcase(s, scale);
+    TCase *quadrics = tcase_create("cylinders, cones and tori");
+    tcase_set_timeout(quadrics, 20);
+    tcase_add_test(quadrics, test_stress_cylinder_grazing);
+    tcase_add_test(quadrics, test_stress_torus_edge_on_hole_far);
+    tcase_add_test(quadrics, test_stress_cone_apex);
+    tcase_add_test(quadrics, test_stress_naive_torus_fails_where_refray_holds);
+    suite_add_tcase(s, quadrics);
     TCase *shading = tcase_create("shading at the limits");
     tcase_add_test(shading, test_stress_phong_exponent_0_and_1e6_peak);
     tcase_add_test(shading, test_stress_phong_exponent_1e6_off_peak);

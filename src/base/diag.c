@@ -73,15 +73,17 @@ static void print_excerpt(FILE *out, const source_file *f, src_span span, int li
     fputc('\n', out);
 }
 
+/* One note per file that read the next: an OBJ file is read by a mesh,
+ * a scene file by an include. */
 static void print_include_chain(FILE *out, const source_set *set, const source_file *f)
 {
-    src_span from = f->included_from;
-    while (from.file >= 0 && from.file < set->count) {
-        const source_file *parent = set->files[from.file];
+    while (f->included_from.file >= 0 && f->included_from.file < set->count) {
+        const source_file *parent = set->files[f->included_from.file];
         int line, col;
-        source_line_col(parent, from.begin, &line, &col);
-        fprintf(out, "%s:%d:%d: note: included from here\n", parent->path, line, col);
-        from = parent->included_from;
+        source_line_col(parent, f->included_from.begin, &line, &col);
+        fprintf(out, "%s:%d:%d: note: %s\n", parent->path, line, col,
+                f->is_mesh ? "in the mesh read here" : "included from here");
+        f = parent;
     }
 }
 

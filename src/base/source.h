@@ -24,6 +24,7 @@ typedef struct source_file {
     size_t *line_start;    /* offset of each line's first byte */
     size_t line_count;
     src_span included_from;/* the include statement that read it; file -1 for the root */
+    int is_mesh;           /* read by a mesh (an OBJ file), not by an include */
 } source_file;
 
 typedef struct source_set {

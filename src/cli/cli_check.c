@@ -15,9 +15,9 @@ static const char check_help[] =
     "  FILE: ok: P primitives, L lights, M materials; uses: FEATURES\n"
     "Options: -W (no warnings) and the input limits of `refray --help`.\n";
 
-static void count_kinds(const rf_scene *s, int counts[5])
+static void count_kinds(const rf_scene *s, int counts[PRIM_KINDS])
 {
-    memset(counts, 0, 5 * sizeof counts[0]);
+    memset(counts, 0, PRIM_KINDS * sizeof counts[0]);
     for (int i = 0; i < s->prim_count; i++)
         if (s->prims[i].mesh < 0)
             counts[s->prims[i].kind]++;
@@ -37,17 +37,16 @@ static void print_features(const rf_features *f)
 
 static void print_summary(const char *path, const rf_scene *s)
 {
-    static const char *kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
-    static const char *plural[] = {"spheres", "planes", "triangles", "disks", "boxes"};
-    int counts[5], mesh_triangles = 0;
+    int counts[PRIM_KINDS], mesh_triangles = 0;
     count_kinds(s, counts);
     for (int i = 0; i < s->mesh_count; i++)
         mesh_triangles += s->meshes[i].count;
     printf("%s: ok: %d primitive%s (", path, s->prim_count, s->prim_count == 1 ? "" : "s");
     int listed = 0;
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < PRIM_KINDS; k++)
         if (counts[k])
-            printf("%s%d %s", listed++ ? ", " : "", counts[k], counts[k] == 1 ? kinds[k] : plural[k]);
+            printf("%s%d %s", listed++ ? ", " : "", counts[k],
+                   counts[k] == 1 ? scene_prim_name((rf_prim_kind)k) : scene_prim_plural((rf_prim_kind)k));
     if (s->mesh_count)
         printf("%s%d mesh%s of %d triangles", listed++ ? ", " : "", s->mesh_count, s->mesh_count == 1 ? "" : "es",
                mesh_triangles);

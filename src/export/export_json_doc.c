@@ -239,9 +239,8 @@ static json_t *transform(export_json_build *b, const rf_prim *p)
 
 static json_t *primitive(export_json_build *b, const rf_prim *p)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     json_t *out = json_object(), *corners;
-    set_text(b, out, "kind", kinds[p->kind]);
+    set_text(b, out, "kind", scene_prim_name(p->kind));
     set_int(b, out, "material", p->material);
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -266,6 +265,24 @@ static json_t *primitive(export_json_build *b, const rf_prim *p)
     case PRIM_BOX:
         set_vec(b, out, "from", p->u.box.lo);
         set_vec(b, out, "to", p->u.box.hi);
+        break;
+    case PRIM_CYLINDER:
+        set_vec(b, out, "from", p->u.cylinder.from);
+        set_vec(b, out, "to", p->u.cylinder.to);
+        set_real(b, out, "radius", p->u.cylinder.radius);
+        export_json_set(b, out, "open", json_boolean(p->u.cylinder.open));
+        break;
+    case PRIM_CONE:
+        set_vec(b, out, "from", p->u.cone.from);
+        set_vec(b, out, "to", p->u.cone.to);
+        export_json_set(b, out, "radii", json_pack("[ff]", p->u.cone.radius[0], p->u.cone.radius[1]));
+        export_json_set(b, out, "open", json_boolean(p->u.cone.open));
+        break;
+    case PRIM_TORUS:
+        set_vec(b, out, "center", p->u.torus.center);
+        set_vec(b, out, "axis", p->u.torus.axis);
+        set_real(b, out, "major", p->u.torus.major);
+        set_real(b, out, "minor", p->u.torus.minor);
         break;
     }
     export_json_set(b, out, "transform", transform(b, p));

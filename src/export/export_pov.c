@@ -124,6 +124,20 @@ static void extent_add_prim(extent *e, const rf_prim *p)
         for (int i = 0; i < 3; i++)
             extent_add(e, p->u.triangle.p[i]);
         break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE: {
+        vec3 a = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
+        vec3 b = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
+        vec3 r = vec_splat(p->kind == PRIM_CONE ? fmax(p->u.cone.radius[0], p->u.cone.radius[1])
+                                                : p->u.cylinder.radius);
+        extent_add_box(e, p, vec_sub(vec_min(a, b), r), vec_add(vec_max(a, b), r));
+        break;
+    }
+    case PRIM_TORUS: {
+        vec3 r = vec_splat(p->u.torus.major + p->u.torus.minor);
+        extent_add_box(e, p, vec_sub(p->u.torus.center, r), vec_add(p->u.torus.center, r));
+        break;
+    }
     case PRIM_PLANE:
         break;
     }
@@ -242,9 +256,10 @@ static void check_light(const rf_scene *s, const rf_light *l, double radius, con
         check_sampling(l, at, o, n);
 }
 
+/* An open cylinder or cone is a sheet, as in refray ([XCHK-MAP-QUADRIC-1]). */
 static int is_solid(const rf_prim *p)
 {
-    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
+    return scene_prim_is_solid(p) || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
 }
 
 static int is_grey(rgb c)
@@ -633,6 +648,30 @@ static void write_matrix(FILE *fp, const xform *x)
     fputs(">\n", fp);
 }
 
+/* [XCHK-MAP-QUADRIC-1] POV-Ray's torus lies about its y axis at the
+ * origin: a matrix takes y to the axis (in POV-Ray's frame) and the origin
+ * to the centre.  Any orthonormal frame with that image of y will do, the
+ * torus being the same under every turn about its axis and every mirror
+ * through it. */
+static void write_torus_placement(FILE *fp, const rf_prim *p)
+{
+    vec3 a = vec_normalize(to_pov(p->u.torus.axis)), c = to_pov(p->u.torus.center);
+    vec3 least = fabs(a.x) <= fabs(a.y) && fabs(a.x) <= fabs(a.z) ? vec_make(1, 0, 0)
+                 : fabs(a.y) <= fabs(a.z)                          ? vec_make(0, 1, 0)
+                                                                    : vec_make(0, 0, 1);
+    vec3 u = vec_normalize(vec_cross(a, least)), w = vec_cross(u, a);
+    const vec3 rows[4] = {u, a, w, c};
+    fputs("  sturm\n  matrix <", fp);
+    for (int i = 0; i < 4; i++) {
+        put_num(fp, rows[i].x);
+        fputs(", ", fp);
+        put_num(fp, rows[i].y);
+        fputs(", ", fp);
+        put_num(fp, rows[i].z);
+        fputs(i < 3 ? ", " : ">", fp);
+    }
+}
+
 static void write_shape(FILE *fp, const rf_prim *p)
 {
     switch (p->kind) {
@@ -662,6 +701,34 @@ static void write_shape(FILE *fp, const rf_prim *p)
         put_vec(fp, to_pov(p->u.box.lo));
         fputs(", ", fp);
         put_vec(fp, to_pov(p->u.box.hi));
+        break;
+    case PRIM_CYLINDER:
+        fputs("cylinder {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.from));
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cylinder.radius);
+        fputs(p->u.cylinder.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_CONE:
+        fputs("cone {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cone.from));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[0]);
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cone.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[1]);
+        fputs(p->u.cone.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_TORUS:
+        fputs("torus {\n  ", fp);
+        put_num(fp, p->u.torus.major);
+        fputs(", ", fp);
+        put_num(fp, p->u.torus.minor);
+        fputc('\n', fp);
+        write_torus_placement(fp, p);
         break;
     case PRIM_TRIANGLE:
         fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);

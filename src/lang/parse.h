@@ -12,6 +12,25 @@
 
 enum { PARSE_MAX_BRACKETS = 256 };
 
+/* What one bracket level holds, as far as the scanner must know to tell a
+ * property word used as a property from one used as a name
+ * ([LANG-LEX-WORD-3]): a property may start only in a block body, where
+ * the previous property has all its values and no operator waits for an
+ * operand. */
+typedef enum parse_level_kind {
+    LEVEL_STATEMENTS,         /* the file, or a loop body */
+    LEVEL_BLOCK,              /* the properties of a block, or of an inline material */
+    LEVEL_EXPR                /* inside [ ] or ( ) */
+} parse_level_kind;
+
+typedef struct parse_level {
+    parse_level_kind kind;
+    int arity;                /* values the current property takes */
+    int values;               /* values of it begun so far */
+    int mid;                  /* an operator or sign waits for its operand */
+    int ended;                /* the last token ended an operand */
+} parse_level;
+
 /* Shared by the scanner and the parser of one file. */
 typedef struct parse_ctx {
     arena *arena;
@@ -26,6 +45,9 @@ typedef struct parse_ctx {
     int bracket_depth;        /* open '{' '[' '(' not yet closed */
     char pending_close;       /* a closer scanned but not yet applied, or 0 */
     src_span brackets[PARSE_MAX_BRACKETS]; /* where the innermost ones opened */
+    parse_level level;        /* the innermost bracket level */
+    parse_level outer[PARSE_MAX_BRACKETS]; /* the level around each open bracket */
+    int last_token, token_before; /* the two tokens scanned last (0: none) */
 } parse_ctx;
 
 /*

@@ -572,7 +572,7 @@ int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h)
 static int visit_prim(const rf_prim *prims, int index, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     if (stats)
         stats->prims_tested++;
     int n = isect_prim_all(&prims[index], r, out);

@@ -9,6 +9,7 @@
  */
 #include <float.h>
 #include "render/intersect.h"
+#include "render/intersect_shapes.h"
 #include "base/xform.h"
 
 static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
@@ -19,6 +20,11 @@ static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
     h->shading_normal = n;
     h->prim = -1;
     h->entering = vec_dot(dir, n) < 0.0;
+}
+
+void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
+{
+    hit_set(h, t, p, n, dir);
 }
 
 static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
@@ -90,6 +96,11 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;
+}
+
+int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
+{
+    return sphere_roots(f, d, radius, t);
 }
 
 /*
@@ -354,6 +365,15 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
         return box_hits(p->u.box.lo, p->u.box.hi, r, out, max);
+    case PRIM_CYLINDER:
+        return isect_cylinder_hits(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.open,
+                                   r, out, max);
+    case PRIM_CONE:
+        return isect_cone_hits(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1],
+                               p->u.cone.open, r, out, max);
+    case PRIM_TORUS:
+        return isect_torus_hits(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor, r, out,
+                                max);
     }
     return 0;
 }
@@ -389,9 +409,9 @@ int isect_prim(const rf_prim *p, ray *r, hit *h)
     return 1;
 }
 
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[2])
+int isect_prim_all(const rf_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return prim_hits(p, r, out, 2);
+    return prim_hits(p, r, out, ISECT_MAX_CROSSINGS);
 }
 
 static int nearest(int found, ray *r, const hit *h)
@@ -426,6 +446,31 @@ int isect_box(vec3 lo, vec3 hi, ray *r, hit *h)
     return nearest(box_hits(lo, hi, r, h, 1), r, h);
 }
 
+int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h)
+{
+    return nearest(isect_cylinder_hits(from, to, radius, open, r, h, 1), r, h);
+}
+
+int isect_cone(vec3 from, vec3 to, real r0, real r1, int open, ray *r, hit *h)
+{
+    return nearest(isect_cone_hits(from, to, r0, r1, open, r, h, 1), r, h);
+}
+
+int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h)
+{
+    return nearest(isect_torus_hits(center, axis, major, minor, r, h, 1), r, h);
+}
+
+/* The box of the two end disks of a cylinder or cone, radii r0 and r1. */
+static void ends_bounds(vec3 from, vec3 to, real r0, real r1, vec3 *lo, vec3 *hi)
+{
+    vec3 a = vec_normalize(vec_sub(to, from)), e0, e1;
+    isect_disk_extent(a, r0, &e0);
+    isect_disk_extent(a, r1, &e1);
+    *lo = vec_min(vec_sub(from, e0), vec_sub(to, e1));
+    *hi = vec_max(vec_add(from, e0), vec_add(to, e1));
+}
+
 /* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
  * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
 static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
@@ -452,6 +497,16 @@ static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
         *lo = p->u.box.lo;
         *hi = p->u.box.hi;
         return 1;
+    case PRIM_CYLINDER:
+        ends_bounds(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius, lo, hi);
+        return 1;
+    case PRIM_CONE:
+        ends_bounds(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], lo, hi);
+        return 1;
+    case PRIM_TORUS:
+        c = p->u.torus.center;
+        isect_torus_extent(p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &e);
+        break;
     default:
         return 0;
     }
@@ -497,6 +552,13 @@ static real local_magnitude(const rf_prim *p)
         return max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
         return fmax(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+    case PRIM_CYLINDER:
+        return fmax(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
+    case PRIM_CONE:
+        return fmax(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
+               fmax(p->u.cone.radius[0], p->u.cone.radius[1]);
+    case PRIM_TORUS:
+        return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
     }
     return 0.0;
 }

@@ -7,12 +7,14 @@
  *   - on a hit it sets r->tmax = t, fills *h and returns 1; on a miss it
  *     returns 0 and touches neither *r nor *h;
  *   - h->normal is the unit geometric normal oriented as ray.h says (outward
- *     for sphere and box, the declared side for plane, disk and triangle),
+ *     for sphere, box, cylinder, cone and torus, open or closed; the
+ *     declared side for plane, disk and triangle),
  *     h->shading_normal the unit interpolated vertex normal of a triangle
  *     with normals, else a copy of h->normal; h->entering = dir . normal < 0;
  *   - h->prim is set to -1: the caller that knows the index (the BVH) sets it.
  * r->dir need not be unit length (rays taken into a local frame are not); a
- * zero direction never hits.  Sheets (plane, disk, triangle) are two-sided.
+ * zero direction never hits.  Sheets (plane, disk, triangle, and an open
+ * cylinder or cone) are two-sided.
  *
  * Edge cases, as defined here and tested in tests/check_intersect.c:
  *   - sphere: a ray whose line touches the sphere with discriminant exactly
@@ -27,7 +29,12 @@
  *     through an edge); when entry and exit coincide (an edge or corner
  *     touched, or a flat box) it is one hit with the entry face's normal;
  *   - triangle: watertight (Woop, Benthin, Wald 2013): a ray through a
- *     shared edge or vertex of a mesh hits at least one of its triangles.
+ *     shared edge or vertex of a mesh hits at least one of its triangles;
+ *   - closed cylinder and cone: like the box, one interval per ray (the
+ *     rim between side and cap leaves no gap); an open one has no caps
+ *     and keeps the side's crossings between the end planes (closed);
+ *   - torus: up to 4 crossings; a ray that only touches it (a double root
+ *     of its quartic) may be a hit or a miss, as a sphere's graze.
  * Numeric domain: hit/miss decisions multiply two coordinates together, so
  * they are exact in sign only while such products stay normal doubles: keep
  * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
@@ -47,6 +54,16 @@ int isect_plane(vec3 point, vec3 normal, ray *r, hit *h);
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h);
 int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h);
 int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
+/* A cylinder between the end centres from and to (from != to), radius > 0;
+ * open: no end caps. */
+int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h);
+/* A cone with radius r0 at from and r1 at to (both >= 0, not both 0). */
+int isect_cone(vec3 from, vec3 to, real r0, real r1, int open, ray *r, hit *h);
+/* A ring torus: unit axis, 0 < minor < major. */
+int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h);
+
+/* The most crossings one primitive has with a line: a torus's 4. */
+#define ISECT_MAX_CROSSINGS 4
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
  * ray into the local frame when p->has_xform (t is preserved; point and
@@ -54,9 +71,9 @@ int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
 int isect_prim(const rf_prim *p, ray *r, hit *h);
 
 /* Every crossing of the surface in (r->tmin, r->tmax), in increasing t:
- * 0, 1 or 2 (a solid crossed through: entry and exit).  r is not changed;
- * each out[i].prim is -1. */
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[2]);
+ * 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
+ * torus: two of each).  r is not changed; each out[i].prim is -1. */
+int isect_prim_all(const rf_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
  * its local box's 8 corners mapped).  Returns 0 for a plane, or when the

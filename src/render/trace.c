@@ -34,7 +34,7 @@ typedef struct surface {
 int trace_solid_id(const rf_scene *s, int prim)
 {
     const rf_prim *p = &s->prims[prim];
-    if (p->kind == PRIM_SPHERE || p->kind == PRIM_BOX)
+    if (scene_prim_is_solid(p))
         return prim;
     if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
         return s->prim_count + p->mesh;
@@ -402,16 +402,12 @@ static int probe_crossing(void *ctx, const hit *h)
     return 0;
 }
 
-/* Strictly inside a sphere or box (in its own frame); for a mesh, an odd
+/* Strictly inside a solid primitive (in its own frame); for a mesh, an odd
  * number of crossings of the probe. */
 static int contains(const rf_prim *p, vec3 point, int crossings)
 {
-    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
-    if (p->kind == PRIM_SPHERE)
-        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
-    if (p->kind == PRIM_BOX)
-        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
-               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    if (scene_prim_is_solid(p))
+        return scene_prim_contains(p, point);
     return crossings % 2 == 1;
 }
 

@@ -110,17 +110,23 @@ int check_image(loader *L, const check_at *at, const double size[4], rgb backgro
 }
 
 /* forward = look_at - eye; right = forward x up; true_up = right x forward.
- * When look_at - eye overflows, half of each gives the same direction. */
-static int camera_basis(loader *L, const check_at *at, rf_camera *cam)
+ * When look_at - eye overflows, half of each gives the same direction.
+ * A zero view and a zero up are both reported; parallel only when neither. */
+int check_camera_basis(loader *L, const check_at *at, rf_camera *cam)
 {
     vec3 view = vec_sub(cam->look_at, cam->eye), up;
     if (!vec_is_finite(view))
         view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
-    if (!loader_unit(view, &cam->forward)) {
+    int ok = loader_unit(view, &cam->forward);
+    if (!ok)
         diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_LOOK_AT),
                     "look_at must differ from eye (the view direction has zero length)");
+    if (vec_length(cam->up) == 0) {
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_UP), "up must not be a zero-length vector");
         return 0;
     }
+    if (!ok)
+        return 0;
     loader_unit(cam->up, &up);
     vec3 side = vec_cross(cam->forward, up);
     if (vec_length(side) < 1e-9) {
@@ -133,16 +139,16 @@ static int camera_basis(loader *L, const check_at *at, rf_camera *cam)
     return 1;
 }
 
+int check_camera_ranges(loader *L, const check_at *at, const rf_camera *cam)
+{
+    int ok = check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
+    return check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0) && ok;
+}
+
 int check_camera(loader *L, const check_at *at, rf_camera *cam)
 {
-    int ok = 1;
-    if (vec_length(cam->up) == 0) {
-        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_UP), "up must not be a zero-length vector");
-        ok = 0;
-    }
-    ok &= check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
-    ok &= check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0);
-    return ok && camera_basis(L, at, cam);
+    int ok = check_camera_ranges(L, at, cam);
+    return check_camera_basis(L, at, cam) && ok;
 }
 
 int check_ambient(loader *L, const check_at *at, rgb color)
@@ -213,6 +219,45 @@ int check_box(loader *L, const check_at *at, vec3 a, vec3 b, rf_prim *prim)
     return 1;
 }
 
+int check_ends(loader *L, const check_at *at, vec3 from, vec3 to)
+{
+    if (from.x != to.x || from.y != to.y || from.z != to.z)
+        return 1;
+    diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_TO),
+                "from and to must differ (they are the centres of the two ends)");
+    return 0;
+}
+
+int check_cone_radii(loader *L, const check_at *at, const double radius[2])
+{
+    for (int i = 0; i < 2; i++) {
+        if (!(radius[i] >= 0)) {
+            diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_CONE_RADIUS0 + i),
+                        "a cone's radii must be >= 0, got %.17g", radius[i]);
+            return 0;
+        }
+    }
+    if (radius[0] == 0 && radius[1] == 0) {
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_RADII), "a cone needs a radius > 0 at one end at least");
+        return 0;
+    }
+    return 1;
+}
+
+/* A ring torus: 0 < minor < major (a horn or spindle torus would cross
+ * itself, and its inside would no longer be the tube's). */
+int check_torus(loader *L, const check_at *at, double major, double minor)
+{
+    int ok = check_range(L, at, KW_MAJOR, "major", major, 0, 1, HUGE_VAL, 0);
+    ok &= check_range(L, at, KW_MINOR, "minor", minor, 0, 1, HUGE_VAL, 0);
+    if (ok && !(minor < major)) {
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_MINOR),
+                    "minor must be less than major (a ring torus), got minor %.17g and major %.17g", minor, major);
+        ok = 0;
+    }
+    return ok;
+}
+
 int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to_local)
 {
     if (xform_invert(to_world, to_local))
@@ -255,6 +300,9 @@ static int in_range(const rf_prim *prim)
              isfinite(prim->u.disk.radius);
         break;
     case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE:
+    case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
     }
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
@@ -272,11 +320,10 @@ static int degenerate(vec3 a, vec3 b, vec3 c)
 
 int check_placed(loader *L, const check_at *at, const rf_prim *prim)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     if (!in_range(prim)) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_BLOCK),
                     "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
-                    kinds[prim->kind]);
+                    scene_prim_name(prim->kind));
         return 0;
     }
     const vec3 *q = prim->u.triangle.p;

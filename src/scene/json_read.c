@@ -118,6 +118,13 @@ static src_span field_span(const void *ctx, int field)
     case CHECK_TRANSFORM: return jread_span(r, "transform");
     case CHECK_RECT_EDGES: return src_span_join(jread_span(r, "edge_u"), jread_span(r, "edge_v"));
     case CHECK_RECT_EXTENT: return src_span_join(jread_span(r, "corner"), jread_span(r, "edge_v"));
+    case CHECK_CONE_RADIUS0:
+    case CHECK_CONE_RADIUS1: {
+        jreader at = *r;
+        jread_push_key(&at, "radii");
+        jread_push_index(&at, (size_t)(field - CHECK_CONE_RADIUS0));
+        return jread_span(&at, NULL);
+    }
     default: return jread_span(r, keyword_name((keyword_id)field));
     }
 }
@@ -226,6 +233,17 @@ int jread_vec3(jreader *r, json_t *obj, const char *key, vec3 *out)
     int ok = jread_value_vec3(r, v, out);
     jread_pop(r);
     return ok;
+}
+
+int jread_bool(jreader *r, json_t *obj, const char *key, int *out)
+{
+    json_t *v = jread_member(r, obj, key);
+    if (!v)
+        return 0;
+    if (!json_is_boolean(v))
+        return wrong_type(r, key, "true or false", v);
+    *out = json_is_true(v);
+    return 1;
 }
 
 int jread_string(jreader *r, json_t *obj, const char *key, int nullable, const char **out)

@@ -54,6 +54,7 @@ json_t *jread_member(jreader *r, json_t *obj, const char *key);
 int jread_number(jreader *r, json_t *obj, const char *key, double *out);
 int jread_vec3(jreader *r, json_t *obj, const char *key, vec3 *out);
 int jread_enum(jreader *r, json_t *obj, const char *key, const char *const *names, int count, int *out);
+int jread_bool(jreader *r, json_t *obj, const char *key, int *out);
 /* A string, or null (*out NULL) when nullable. */
 int jread_string(jreader *r, json_t *obj, const char *key, int nullable, const char **out);
 /* An index in [0, count): an integer-valued number. */

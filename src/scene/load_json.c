@@ -311,6 +311,34 @@ static int read_vertices(jreader *r, json_t *p, rf_prim *prim)
     return ok;
 }
 
+/* radii: [at from, at to]. */
+static int read_cone(jreader *r, json_t *p, rf_prim *prim)
+{
+    check_at at = jread_at(r);
+    json_t *radii;
+    if (!jread_vec3(r, p, "from", &prim->u.cone.from) || !jread_vec3(r, p, "to", &prim->u.cone.to) ||
+        !jread_array(r, p, "radii", &radii) || !jread_bool(r, p, "open", &prim->u.cone.open))
+        return 0;
+    jread_push_key(r, "radii");
+    int ok = json_array_size(radii) == 2;
+    if (!ok)
+        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, NULL), "expected an array of 2 numbers, got %zu value%s",
+                    json_array_size(radii), json_array_size(radii) == 1 ? "" : "s");
+    for (size_t i = 0; ok && i < 2; i++) {
+        json_t *e = json_array_get(radii, i);
+        jread_push_index(r, i);
+        ok = json_is_number(e);
+        if (!ok)
+            diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, NULL), "expected a number");
+        else
+            prim->u.cone.radius[i] = json_number_value(e);
+        jread_pop(r);
+    }
+    jread_pop(r);
+    return ok && check_ends(r->L, &at, prim->u.cone.from, prim->u.cone.to) &&
+           check_cone_radii(r->L, &at, prim->u.cone.radius);
+}
+
 static int prim_shape(jreader *r, json_t *p, rf_prim *prim)
 {
     check_at at = jread_at(r);
@@ -330,6 +358,18 @@ static int prim_shape(jreader *r, json_t *p, rf_prim *prim)
                check_radius(r->L, &at, prim->u.disk.radius);
     case PRIM_BOX:
         return jread_vec3(r, p, "from", &from) && jread_vec3(r, p, "to", &to) && check_box(r->L, &at, from, to, prim);
+    case PRIM_CYLINDER:
+        return jread_vec3(r, p, "from", &prim->u.cylinder.from) && jread_vec3(r, p, "to", &prim->u.cylinder.to) &&
+               jread_number(r, p, "radius", &prim->u.cylinder.radius) &&
+               jread_bool(r, p, "open", &prim->u.cylinder.open) &&
+               check_ends(r->L, &at, prim->u.cylinder.from, prim->u.cylinder.to) &&
+               check_radius(r->L, &at, prim->u.cylinder.radius);
+    case PRIM_CONE: return read_cone(r, p, prim);
+    case PRIM_TORUS:
+        return jread_vec3(r, p, "center", &prim->u.torus.center) && jread_vec3(r, p, "axis", &prim->u.torus.axis) &&
+               jread_number(r, p, "major", &prim->u.torus.major) && jread_number(r, p, "minor", &prim->u.torus.minor) &&
+               check_unit(r->L, &at, KW_AXIS, "axis", prim->u.torus.axis) &&
+               check_torus(r->L, &at, prim->u.torus.major, prim->u.torus.minor);
     }
     return 0;
 }
@@ -344,22 +384,26 @@ static int use_material(jreader *r, json_t *p, int *material)
 
 static int read_prim(jreader *r, json_t *p, src_span where)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box", "mesh"};
-    static const char *const keys[5][7] = {
+    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box", "cylinder", "cone", "torus",
+                                        "mesh"};
+    static const char *const keys[PRIM_KINDS][8] = {
         {"kind", "material", "transform", "center", "radius", NULL},
         {"kind", "material", "transform", "point", "normal", NULL},
         {"kind", "material", "transform", "vertices", NULL},
         {"kind", "material", "transform", "center", "normal", "radius", NULL},
         {"kind", "material", "transform", "from", "to", NULL},
+        {"kind", "material", "transform", "from", "to", "radius", "open", NULL},
+        {"kind", "material", "transform", "from", "to", "radii", "open", NULL},
+        {"kind", "material", "transform", "center", "axis", "major", "minor", NULL},
     };
     rf_prim prim;
     int kind;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;
     prim.where = where;
-    if (!jread_is_object(r, p) || !jread_enum(r, p, "kind", kinds, 6, &kind))
+    if (!jread_is_object(r, p) || !jread_enum(r, p, "kind", kinds, PRIM_KINDS + 1, &kind))
         return 0;
-    if (kind == 5)
+    if (kind == PRIM_KINDS)
         return use_material(r, p, &prim.material) && load_json_mesh(r, p, &prim);
     prim.kind = (rf_prim_kind)kind;
     int ok = jread_known(r, p, keys[kind]) && prim_shape(r, p, &prim) &&

@@ -161,9 +161,9 @@ int loader_read_obj(loader *L, const char *name, src_span at, int *file)
         return 0;
     }
     int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0)
-        *file = source_set_add(&L->scene->sources, path, text, len, at);
-    else
+    if (status == 0 && (*file = source_set_add(&L->scene->sources, path, text, len, at)) >= 0)
+        L->scene->sources.files[*file]->is_mesh = 1;
+    else if (status != 0)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
     free(path);
     free(text);

@@ -29,6 +29,7 @@ typedef struct loader {
     src_span image_where;       /* first `image` block (file -1: none yet) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
+    const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
 } loader;
 
@@ -48,7 +49,9 @@ enum {
     CHECK_BLOCK = KEYWORD_COUNT, /* the record as a whole (its block or object) */
     CHECK_TRANSFORM,             /* a primitive's transforms */
     CHECK_RECT_EDGES,            /* a rectangle light's two edges */
-    CHECK_RECT_EXTENT            /* a rectangle light's corner and edges */
+    CHECK_RECT_EXTENT,           /* a rectangle light's corner and edges */
+    CHECK_CONE_RADIUS0,          /* a cone's radius at from */
+    CHECK_CONE_RADIUS1           /* a cone's radius at to */
 };
 typedef struct check_at {
     src_span (*span)(const void *ctx, int field);
@@ -90,6 +93,18 @@ int lower_material_ref(loader *L, const props *p);
 
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
+/* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
+void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local);
+/* A normal or axis n taken to the world by the inverse transpose, made unit
+ * (or left zero or non-finite when it cannot be, for the range check). */
+vec3 lower_transformed_normal(const xform *to_local, vec3 n);
+
+/* lower_quadrics.c: cylinder, cone and torus (block is KW_CYLINDER,
+ * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
+int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim);
+void lower_place_quadric(rf_prim *prim, const xform *to_world, const xform *to_local);
+/* 1 when every number of the placed shape is finite and in its domain. */
+int lower_quadric_in_range(const rf_prim *prim);
 
 /*
  * check.c: the rules of the scene model, shared by every front end.  Each
@@ -108,7 +123,10 @@ int check_is_unit(vec3 v);
 int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 v);
 /* size: width, height, samples, max_depth as read; fills *im. */
 int check_image(loader *L, const check_at *at, const double size[4], rgb background, rf_image_spec *im);
-/* up, fov, width, and the orthonormal basis derived from eye, look_at, up. */
+/* fov and width in range; the orthonormal basis derived from eye, look_at
+ * and up (a zero view and a zero up both reported); check_camera: both. */
+int check_camera_ranges(loader *L, const check_at *at, const rf_camera *cam);
+int check_camera_basis(loader *L, const check_at *at, rf_camera *cam);
 int check_camera(loader *L, const check_at *at, rf_camera *cam);
 int check_ambient(loader *L, const check_at *at, rgb color);
 /* power and d0 */
@@ -121,6 +139,12 @@ int check_radius(loader *L, const check_at *at, double radius);
 /* corners a, b differ on every axis; sets the box's lo and hi. */
 int check_box(loader *L, const check_at *at, vec3 a, vec3 b, rf_prim *prim);
 int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to_local);
+/* A cylinder's or cone's ends differ (else at KW_TO). */
+int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
+/* A cone's radii: each >= 0 (at CHECK_CONE_RADIUS0, 1), one > 0 (at KW_RADII). */
+int check_cone_radii(loader *L, const check_at *at, const double radius[2]);
+/* major > 0, minor > 0, minor < major (at KW_MINOR). */
+int check_torus(loader *L, const check_at *at, double major, double minor);
 /* A primitive as the tracer gets it: finite, unit normals, finite
  * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
  * KW_VERTICES). */

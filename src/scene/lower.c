@@ -208,6 +208,9 @@ static int lower_block(loader *L, const ast *node)
     case KW_TRIANGLE:
     case KW_DISK:
     case KW_BOX:
+    case KW_CYLINDER:
+    case KW_CONE:
+    case KW_TORUS:
     case KW_MESH: return lower_primitive(L, node);
     default:
         diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is a property, not a statement",
@@ -257,10 +260,13 @@ int loader_lower_file(loader *L, int file)
     int errors = L->diag.errors;
     ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
     int ok = 0;
+    const ast *includer = L->tree;
+    L->tree = tree;
     if (!tree)
         loader_oom(L);
     else if (L->diag.errors == errors)
         ok = lower_statements(L, tree);
+    L->tree = includer;
     /* Nested includes may have moved the stack: not `stack` here. */
     free(L->include_stack[--L->include_depth]);
     return ok;

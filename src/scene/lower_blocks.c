@@ -51,6 +51,8 @@ int lower_image(loader *L, const ast *block)
     return check_image(L, &at, size, background, im) && ok;
 }
 
+/* Perspective or orthographic, and no property of the other kind; both
+ * mistakes are reported when both are made. */
 static int camera_kind(loader *L, const props *p, rf_camera *cam)
 {
     const ast *persp = p->by_keyword[KW_PERSPECTIVE], *ortho = p->by_keyword[KW_ORTHOGRAPHIC];
@@ -78,23 +80,27 @@ static src_span camera_field_span(const void *ctx, int field)
     return field >= KEYWORD_COUNT ? p->block->head : props_value_span(p, (keyword_id)field);
 }
 
+/* Every property is checked even after an error, so one run reports all
+ * of a camera's mistakes ([LANG-CAMERA-2]).  A second camera is checked
+ * into a copy and reported, the first one kept. */
 int lower_camera(loader *L, const ast *block)
 {
     props p;
-    rf_camera *cam = &L->scene->camera;
+    rf_camera copy = L->scene->camera;
     int first = first_block(L, block, &L->camera_where);
-    if (!props_collect(L, block, &p) || !first)
-        return 0;
+    rf_camera *cam = first ? &L->scene->camera : &copy;
+    int ok = props_collect(L, block, &p) & first;
     cam->where = block->head;
-    if (!camera_kind(L, &p, cam))
-        return 0;
-    int ok = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
-    ok &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
-    ok &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
+    ok &= camera_kind(L, &p, cam);
+    int placed = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
+    placed &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
+    placed &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
     ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov);
     ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width);
     check_at at = {camera_field_span, &p};
-    return ok && check_camera(L, &at, cam);
+    ok &= check_camera_ranges(L, &at, cam);
+    int basis = placed && check_camera_basis(L, &at, cam);
+    return ok && basis;
 }
 
 int lower_ambient(loader *L, const ast *block)
@@ -323,6 +329,53 @@ static int default_material(loader *L)
     return L->default_material;
 }
 
+/* Named materials defined anywhere in the file being lowered after
+ * offset `after` (loop bodies included): names and the spans of their names. */
+enum { LATER_MAX = 256 };
+typedef struct later_materials {
+    const char *names[LATER_MAX];
+    src_span where[LATER_MAX];
+    int count;
+} later_materials;
+
+static void collect_later(const ast *list, size_t after, later_materials *out)
+{
+    for (const ast *node = list ? list->first : NULL; node && out->count < LATER_MAX; node = node->next) {
+        if (node->kind == AST_FOR)
+            collect_later(node->first->next->next, after, out);
+        else if (node->kind == AST_BLOCK && node->keyword == KW_MATERIAL && node->text && node->head.begin > after) {
+            out->names[out->count] = node->text;
+            out->where[out->count++] = node->head;
+        }
+    }
+}
+
+/* "did you mean" among the materials the file defines only further down:
+ * 1 when it reported. */
+static int report_defined_later(loader *L, const char *name, src_span at)
+{
+    later_materials later;
+    later.count = 0;
+    if (!L->tree)
+        return 0;
+    collect_later(L->tree, at.begin, &later);
+    const char *hint = suggest_nearest(name, strlen(name), later.names, later.count);
+    int k = 0;
+    while (hint && later.names[k] != hint)
+        k++;
+    if (!hint || later.where[k].file != at.file)
+        return 0;
+    int line, col;
+    source_line_col(L->scene->sources.files[at.file], later.where[k].begin, &line, &col);
+    if (strcmp(hint, name) == 0)
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s': it is defined only later, at line %d "
+                    "(define a material before its first use)", name, line);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s' (defined at line %d)?",
+                    name, hint, line);
+    return 1;
+}
+
 static int named_material(loader *L, const char *name, src_span at)
 {
     int index = find_material(L->scene, name);
@@ -336,7 +389,7 @@ static int named_material(loader *L, const char *name, src_span at)
     const char *hint = suggest_nearest(name, strlen(name), names, count);
     if (hint)
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s'?", name, hint);
-    else
+    else if (!report_defined_later(L, name, at))
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s' (define it with `material %s { ... }` before use)",
                     name, name);
     return -1;

@@ -1,5 +1,7 @@
 /*
- * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements.
+ * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements,
+ * and the shared path of every primitive (the cylinder, cone and torus
+ * shapes are read in lower_quadrics.c).
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
@@ -74,14 +76,14 @@ static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, 
 /* A normal taken through the inverse transpose, made unit.  When that is
  * impossible the raw result (zero or not finite) is kept, and in_range
  * refuses the primitive. */
-static vec3 transformed_normal(const xform *to_local, vec3 n)
+vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 {
     vec3 raw = xform_normal(to_local, n), unit;
     return loader_unit(raw, &unit) ? unit : raw;
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-static void keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
 {
     prim->has_xform = 1;
     prim->to_world = *to_world;
@@ -97,7 +99,7 @@ static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
         prim->u.sphere.center = xform_point(w, prim->u.sphere.center);
         prim->u.sphere.radius *= s;
     } else {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
     }
 }
 
@@ -108,10 +110,10 @@ static void place_disk(rf_prim *prim, const xform *w, const xform *l)
         return;
     if (xform_is_similarity(w, &s)) {
         prim->u.disk.center = xform_point(w, prim->u.disk.center);
-        prim->u.disk.normal = transformed_normal(l, prim->u.disk.normal);
+        prim->u.disk.normal = lower_transformed_normal(l, prim->u.disk.normal);
         prim->u.disk.radius *= s;
     } else {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
     }
 }
 
@@ -124,7 +126,7 @@ static int is_axis_aligned(const xform *w)
 static void place_box(rf_prim *prim, const xform *w, const xform *l)
 {
     if (!is_axis_aligned(w)) {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
         return;
     }
     vec3 a = xform_point(w, prim->u.box.lo), b = xform_point(w, prim->u.box.hi);
@@ -139,7 +141,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
         if (prim->u.triangle.has_normals)
-            prim->u.triangle.n[i] = transformed_normal(l, prim->u.triangle.n[i]);
+            prim->u.triangle.n[i] = lower_transformed_normal(l, prim->u.triangle.n[i]);
     }
     if (determinant(w) < 0) {
         vec3 t = prim->u.triangle.p[1];
@@ -250,12 +252,23 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const 
     return ok;
 }
 
+/* `file a` with no constant a: a file name without its quotes. */
+static int unquoted_file(loader *L, const props *p)
+{
+    const ast *v = p->by_keyword[KW_FILE] ? p->by_keyword[KW_FILE]->first : NULL;
+    if (!v || v->kind != AST_NAME || env_find(&L->env, v->text))
+        return 0;
+    diag_report(&L->diag, DIAG_ERROR, v->span, "file names are strings: write \"%s\"", v->text);
+    return 1;
+}
+
 static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
     int file;
-    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !loader_read_obj(L, name, at, &file))
+    if (!props_require(L, p, KW_FILE) || unquoted_file(L, p) || !props_string(L, p, KW_FILE, &name, &at) ||
+        !loader_read_obj(L, name, at, &file))
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
@@ -281,9 +294,12 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
     case PRIM_DISK: place_disk(prim, w, l); break;
     case PRIM_BOX: place_box(prim, w, l); break;
     case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE:
+    case PRIM_TORUS: lower_place_quadric(prim, w, l); break;
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
-        prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);
+        prim->u.plane.normal = lower_transformed_normal(l, prim->u.plane.normal);
         /* Any point of the plane names it; the one nearest the origin keeps
          * the hit point's rounding, and so the offset of rays leaving the
          * plane, relative to the plane's distance from the origin rather
@@ -313,6 +329,9 @@ int lower_primitive(loader *L, const ast *block)
     case KW_DISK: ok = disk(L, &p, &prim); break;
     case KW_BOX: ok = box(L, &p, &prim); break;
     case KW_TRIANGLE: ok = triangle(L, &p, &prim); break;
+    case KW_CYLINDER:
+    case KW_CONE:
+    case KW_TORUS: ok = lower_quadric(L, &p, (keyword_id)block->keyword, &prim); break;
     default: break;
     }
     prim.material = lower_material_ref(L, &p);

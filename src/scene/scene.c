@@ -40,3 +40,77 @@ void scene_free(rf_scene *s)
     free(s);
 }
 
+
+static const char *const prim_names[PRIM_KINDS][2] = {
+    {"sphere", "spheres"}, {"plane", "planes"},       {"triangle", "triangles"}, {"disk", "disks"},
+    {"box", "boxes"},      {"cylinder", "cylinders"}, {"cone", "cones"},         {"torus", "tori"},
+};
+
+const char *scene_prim_name(rf_prim_kind kind)
+{
+    return prim_names[kind][0];
+}
+
+const char *scene_prim_plural(rf_prim_kind kind)
+{
+    return prim_names[kind][1];
+}
+
+int scene_prim_is_solid(const rf_prim *p)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE:
+    case PRIM_BOX:
+    case PRIM_TORUS: return 1;
+    case PRIM_CYLINDER: return !p->u.cylinder.open;
+    case PRIM_CONE: return !p->u.cone.open;
+    default: return 0;
+    }
+}
+
+/* Height along the axis from `from` (0 .. len inside) and distance from it. */
+static void axial_place(vec3 from, vec3 to, vec3 q, real *z, real *len, real *across)
+{
+    vec3 a = vec_sub(to, from);
+    *len = vec_length(a);
+    a = vec_scale(a, 1.0 / *len);
+    vec3 f = vec_sub(q, from);
+    *z = vec_dot(f, a);
+    *across = vec_length(vec_madd(f, a, -*z));
+}
+
+static int inside_cone(vec3 from, vec3 to, real r0, real r1, vec3 q)
+{
+    real z, len, across;
+    axial_place(from, to, q, &z, &len, &across);
+    return z > 0 && z < len && across < r0 + (r1 - r0) * (z / len);
+}
+
+int scene_prim_contains(const rf_prim *p, vec3 point)
+{
+    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
+    if (!scene_prim_is_solid(p))
+        return 0;
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
+    case PRIM_BOX:
+        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
+               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    case PRIM_CYLINDER:
+        return inside_cone(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius, q);
+    case PRIM_CONE:
+        return inside_cone(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], q);
+    default: {
+        vec3 f = vec_sub(q, p->u.torus.center);
+        real z = vec_dot(f, p->u.torus.axis);
+        real rho = vec_length(vec_madd(f, p->u.torus.axis, -z));
+        return hypot(rho - p->u.torus.major, z) < p->u.torus.minor;
+    }
+    }
+}
+
+int scene_prim_self_shadows(const rf_prim *p)
+{
+    return p->kind == PRIM_TORUS || ((p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE) && !scene_prim_is_solid(p));
+}

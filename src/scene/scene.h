@@ -34,8 +34,13 @@ typedef enum rf_prim_kind {
     PRIM_PLANE,
     PRIM_TRIANGLE,     /* a `triangle` statement or one triangle of a mesh */
     PRIM_DISK,
-    PRIM_BOX
+    PRIM_BOX,
+    PRIM_CYLINDER,     /* closed (a solid) or open (a sheet, like a plane) */
+    PRIM_CONE,         /* the same, truncated or with an apex */
+    PRIM_TORUS         /* a ring torus: a solid */
 } rf_prim_kind;
+
+enum { PRIM_KINDS = PRIM_TORUS + 1 };
 
 typedef struct rf_prim {
     rf_prim_kind kind;
@@ -51,10 +56,18 @@ typedef struct rf_prim {
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
         struct { vec3 lo; vec3 hi; } box;
+        /* from != to; radius > 0; open: no end caps */
+        struct { vec3 from, to; double radius; int open; } cylinder;
+        /* radius[0] at from, radius[1] at to, both >= 0, not both 0 */
+        struct { vec3 from, to; double radius[2]; int open; } cone;
+        /* axis unit; 0 < minor < major: the tube of radius minor around
+         * the circle of radius major about center, normal to axis */
+        struct { vec3 center, axis; double major, minor; } torus;
     } u;
     /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles and planes always; spheres and
-     * disks under similarities; boxes under translate and axis scale).
+     * to the same kind of shape (triangles and planes always; spheres,
+     * disks, cylinders, cones and tori under similarities; boxes under
+     * translate and axis scale).
      * Otherwise the parameters are in the local frame and these are set. */
     int has_xform;
     xform to_world;
@@ -188,6 +201,22 @@ void scene_free(rf_scene *scene);
 #define SCENE_JSON_FORMAT "refray-scene"
 #define SCENE_JSON_VERSION 1
 int scene_json_available(void);
+
+/* Whether p is a closed solid on its own: a sphere, a box, a closed
+ * cylinder or cone, a torus (mesh triangles are solid only as a mesh). */
+int scene_prim_is_solid(const rf_prim *p);
+
+/* Whether point lies strictly inside the solid p (in p's own frame when it
+ * keeps one); 0 for anything that is not a solid on its own. */
+int scene_prim_contains(const rf_prim *p, vec3 point);
+
+/* Whether p can shadow itself where N.L > 0: a torus, an open cylinder or
+ * cone (convex solids and flat sheets cannot). */
+int scene_prim_self_shadows(const rf_prim *p);
+
+/* The block word of a primitive kind ("sphere", ..., "torus"), and its plural. */
+const char *scene_prim_name(rf_prim_kind kind);
+const char *scene_prim_plural(rf_prim_kind kind);
 
 
 #endif

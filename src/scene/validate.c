@@ -34,20 +34,6 @@ static void warn_energy(loader *L)
     }
 }
 
-/* Strictly inside a sphere or box, in the primitive's own frame. */
-static int strictly_inside(const rf_prim *prim, vec3 p)
-{
-    if (prim->has_xform)
-        p = xform_point(&prim->to_local, p);
-    if (prim->kind == PRIM_SPHERE)
-        return vec_length(vec_sub(p, prim->u.sphere.center)) < prim->u.sphere.radius;
-    if (prim->kind == PRIM_BOX) {
-        vec3 lo = prim->u.box.lo, hi = prim->u.box.hi;
-        return p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y && p.z > lo.z && p.z < hi.z;
-    }
-    return 0;
-}
-
 static void warn_buried_lights(loader *L)
 {
     const rf_scene *s = L->scene;
@@ -60,10 +46,10 @@ static void warn_buried_lights(loader *L)
             center = vec_add(center, vec_scale(vec_add(light->edge_u, light->edge_v), 0.5));
         for (int j = 0; j < s->prim_count; j++) {
             const rf_prim *prim = &s->prims[j];
-            if (s->materials[prim->material].t == 0 && strictly_inside(prim, center)) {
+            if (s->materials[prim->material].t == 0 && scene_prim_contains(prim, center)) {
                 diag_report(&L->diag, DIAG_WARNING, light->where,
                             "this light is inside an opaque %s: it lights nothing outside it",
-                            prim->kind == PRIM_SPHERE ? "sphere" : "box");
+                            scene_prim_name(prim->kind));
                 break;
             }
         }
@@ -85,8 +71,10 @@ static void record_features(rf_scene *s, const loader *L)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
     /* With N.L > 0 required, one convex or flat primitive never shadows
-     * itself; only a second primitive can stand in the way. */
-    f->shadows = s->light_count > 0 && s->prim_count >= 2;
+     * itself; only a second primitive can stand in the way, or a torus or
+     * an open tube on its own. */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || (s->prim_count == 1 &&
+                                                               scene_prim_self_shadows(&s->prims[0])));
 }
 
 int validate_scene(loader *L)

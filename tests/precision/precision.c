@@ -98,6 +98,52 @@ static void sphere_scene(const char *name)
     scene_free(s);
 }
 
+/* Over the camera rays of a scene whose prims[0] is a cylinder, cone or
+ * torus: wrong hit or miss decisions against the __float128 reference
+ * (away from its margins) and the worst distance of the hit point from the
+ * surface, in eps of m, for refray and (a torus) for the quartic written
+ * about the ray's origin. */
+static void shape_scene(const char *name)
+{
+    rf_scene *s = load(name);
+    const rf_prim *p = &s->prims[0];
+    int torus = p->kind == PRIM_TORUS, cone = p->kind == PRIM_CONE;
+    qcone qc = cone ? qcone_of(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], p->u.cone.open)
+                    : qcone_of(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius,
+                               p->u.cylinder.open);
+    qtorus qt = qtorus_of(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor);
+    int w = s->image.width * 4, h = s->image.height * 4;
+    long wrong[2] = {0, 0}, rays = 0;
+    double off[2] = {0, 0};
+    for (int j = 0; j < h; j++)
+        for (int i = 0; i < w; i++) {
+            ray r = camera_ray(&s->camera, w, h, i + 0.5, j + 0.5), rr = r;
+            quad want, margin, cosine;
+            int ref = torus ? qtorus_ref(&qt, &r, &want, &margin, &cosine) : qcone_ref(&qc, &r, &want, &margin, &cosine);
+            if (margin < 1e-6)
+                continue;
+            rays++;
+            hit hh;
+            real tn = 0;
+            int got[2] = {isect_prim(p, &rr, &hh),
+                          torus && naive_torus(p->u.torus.center, p->u.torus.axis, p->u.torus.major,
+                                               p->u.torus.minor, &r, &tn)};
+            vec3 at[2] = {hh.point, ray_at(&r, tn)};
+            for (int k = 0; k < 1 + torus; k++) {
+                wrong[k] += got[k] != ref;
+                if (got[k] && ref) {
+                    double e = torus ? qtorus_surface_err(&qt, at[k]) : qcone_surface_err(&qc, at[k]);
+                    off[k] = e > off[k] ? e : off[k];
+                }
+            }
+        }
+    if (torus)
+        printf("| %s | %ld | %ld | %.3g | %ld | %.3g |\n", name, rays, wrong[1], off[1], wrong[0], off[0]);
+    else
+        printf("| %s | %ld | - | - | %ld | %.3g |\n", name, rays, wrong[0], off[0]);
+    scene_free(s);
+}
+
 /* Shadow rays from prims[0]'s lit camera hits: how many hit prims[0] again
  * (self) or miss everything (leak, when a light is enclosed), with a fixed
  * epsilon and with ray_spawn_hit. */
@@ -190,6 +236,15 @@ int main(int argc, char **argv)
     sphere_scene("huge_sphere_near");
     sphere_scene("sphere_1e6_far");
     sphere_scene("ortho_far_sphere");
+    printf("\nCylinders, cones and tori on the stress scenes' camera rays (4 x 4 per pixel; off the surface in "
+           "eps of m; before: the torus's quartic written about the ray's origin)\n\n");
+    printf("| scene | rays | before: wrong | before: off | refray: wrong | refray: off |\n"
+           "|---|---|---|---|---|---|\n");
+    shape_scene("cylinder_grazing");
+    shape_scene("cone_apex");
+    shape_scene("torus_edge_on");
+    shape_scene("torus_hole");
+    shape_scene("torus_thin_far");
     printf("\nShadow rays leaving a lit sphere: fixed epsilon against ray_spawn_hit\n\n");
     printf("| scene | counted | rays | fixed | refray |\n|---|---|---|---|---|\n");
     spawn_scene("concentric_gap", 1e-4, 1);
