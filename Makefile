@@ -105,7 +105,7 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema)
 
-.PHONY: all deps check test demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench precision refray-ld report kit crosscheck mitsuba-venv fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -196,17 +196,37 @@ kit: $(REFRAY)
 	@echo "kit: $(KIT_DIR)/ and $(KIT_TARBALL)"
 
 # Other renderers measured by the oracle through the kit (spec/crosscheck.md,
-# tests/crosscheck.sh): installs POV-Ray (Debian povray) when missing, builds
-# the kit, runs `refray conform` with each renderer's command line, prints
+# tests/crosscheck.sh): installs POV-Ray (Debian povray) and Mitsuba 3 (the
+# venv below) when missing, builds the kit, runs `refray conform` with each
+# renderer's command line, prints
 # the tables and writes them into spec/crosscheck.md (CROSSCHECK_UPDATE=0:
 # print only); every file of the run is kept in build/crosscheck/.
 # CROSSCHECK_ONLY="NAME ..." runs only those scenes.
 CROSSCHECK_UPDATE ?= 1
 CROSSCHECK_ONLY ?=
 
-crosscheck: kit
+crosscheck: kit mitsuba-venv
 	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
-	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
+	  ONLY="$(CROSSCHECK_ONLY)" MITSUBA_PYTHON=$(MITSUBA_VENV)/bin/python sh tests/crosscheck.sh
+
+# Mitsuba 3 for `make crosscheck` (tests/conform/mitsuba3.py, spec/crosscheck.md
+# section 5): a virtual environment under build/ with the versions of the
+# recorded table, from PyPI, made only when missing (`make check` never needs
+# it).  Debian's python3 makes one only with python3-venv, installed here
+# when that is what fails.
+MITSUBA_VENV    := build/mitsuba-venv
+MITSUBA_PYTHON3 ?= /usr/bin/python3
+MITSUBA_PIP     := mitsuba==3.9.1 drjit==1.5.0 numpy==2.4.6
+
+mitsuba-venv: $(MITSUBA_VENV)/installed
+$(MITSUBA_VENV)/installed:
+	$(Q)rm -rf $(MITSUBA_VENV); $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV) >/dev/null 2>&1 || { \
+	  rm -rf $(MITSUBA_VENV); echo "mitsuba-venv: installing python3-venv"; \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get install -y -qq python3-venv >/dev/null && $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV); }
+	@echo "mitsuba-venv: pip install $(MITSUBA_PIP)"
+	$(Q)$(MITSUBA_VENV)/bin/pip install -q $(MITSUBA_PIP)
+	$(Q)echo "$(MITSUBA_PIP)" > $@
 
 # Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
 # `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
@@ -245,12 +265,13 @@ TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1
 # needs no library, built here only to be tested against `refray compare`.
 KIT_CHECK := $(BUILD)/kit_check
 # With JSON, the exports are checked against spec/scene.schema.json by a
-# validator in Python (tests/json_schema.sh), on the other core while the
-# suite runs; its report follows the suite's.
+# validator in Python (tests/json_schema.sh) and the Mitsuba adapter's
+# decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh), on
+# the other core while the suite runs; their report follows the suite's.
 SCHEMA_LOG := $(BUILD)/json-schema.log
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
-	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema \
-	  > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
+	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ { sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && \
+	  sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry; } > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
 	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
 	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
