@@ -223,7 +223,8 @@ $(MITSUBA_VENV)/installed:
 	$(Q)rm -rf $(MITSUBA_VENV); $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV) >/dev/null 2>&1 || { \
 	  rm -rf $(MITSUBA_VENV); echo "mitsuba-venv: installing python3-venv"; \
 	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
-	  $$SUDO apt-get install -y -qq python3-venv >/dev/null && $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV); }
+	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq python3-venv >/dev/null && \
+	  $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV); }
 	@echo "mitsuba-venv: pip install $(MITSUBA_PIP)"
 	$(Q)$(MITSUBA_VENV)/bin/pip install -q $(MITSUBA_PIP)
 	$(Q)echo "$(MITSUBA_PIP)" > $@
