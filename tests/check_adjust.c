@@ -12,9 +12,9 @@
 #include "verify/manifest.h"
 
 /* A 4 x 2 image whose channel c of pixel (x, y) is x + 4y + c/4. */
-static void ramp(rf_image *img)
+static void ramp(img_buf *img)
 {
-    ck_assert_int_eq(img_create(img, 4, 2), IMG_OK);
+    ck_assert_int_eq(img_create(img, 4, 2), STATUS_OK);
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 4; x++)
             for (int c = 0; c < 3; c++)
@@ -25,9 +25,9 @@ static void ramp(rf_image *img)
  * block (1, 0) holds 2, 3, 6, 7: mean 4.5 + c/4. */
 START_TEST(test_img_downsample_averages_blocks)
 {
-    rf_image in, out;
+    img_buf in, out;
     ramp(&in);
-    ck_assert_int_eq(img_downsample(&in, 2, &out), IMG_OK);
+    ck_assert_int_eq(img_downsample(&in, 2, &out), STATUS_OK);
     ck_assert_int_eq(out.width, 2);
     ck_assert_int_eq(out.height, 1);
     for (int c = 0; c < 3; c++) {
@@ -43,23 +43,23 @@ END_TEST
  * with out empty. */
 START_TEST(test_img_downsample_one_and_refusals)
 {
-    rf_image in, out;
+    img_buf in, out;
     ramp(&in);
-    ck_assert_int_eq(img_downsample(&in, 1, &out), IMG_OK);
+    ck_assert_int_eq(img_downsample(&in, 1, &out), STATUS_OK);
     ck_assert_int_eq(out.width, 4);
     ck_assert_near(img_pixel(&out, 3, 1)[2], 7.5, 0);
     img_free(&out);
-    ck_assert_int_eq(img_downsample(&in, 3, &out), IMG_EUSAGE);
+    ck_assert_int_eq(img_downsample(&in, 3, &out), STATUS_USAGE);
     ck_assert_ptr_null(out.rgb);
-    ck_assert_int_eq(img_downsample(&in, 0, &out), IMG_EUSAGE);
-    ck_assert_int_eq(img_downsample(&in, 4, &out), IMG_EUSAGE); /* 2 rows are no 4-row block */
+    ck_assert_int_eq(img_downsample(&in, 0, &out), STATUS_USAGE);
+    ck_assert_int_eq(img_downsample(&in, 4, &out), STATUS_USAGE); /* 2 rows are no 4-row block */
     img_free(&in);
 }
 END_TEST
 
 START_TEST(test_img_scale_and_nonfinite)
 {
-    rf_image img;
+    img_buf img;
     ramp(&img);
     img_scale(&img, 0.5);
     ck_assert_near(img_pixel(&img, 3, 1)[2], 3.75, 0);
@@ -81,10 +81,10 @@ END_TEST
  */
 START_TEST(test_metrics_compare_abs_rule)
 {
-    rf_image a, b;
+    img_buf a, b;
     image_metrics m;
-    ck_assert_int_eq(img_create(&a, 3, 1), IMG_OK);
-    ck_assert_int_eq(img_create(&b, 3, 1), IMG_OK);
+    ck_assert_int_eq(img_create(&a, 3, 1), STATUS_OK);
+    ck_assert_int_eq(img_create(&b, 3, 1), STATUS_OK);
     for (int x = 0; x < 2; x++) {
         img_pixel(&b, x, 0)[0] = 1;
         img_pixel(&b, x, 0)[1] = 0.5;

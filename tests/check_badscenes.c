@@ -29,6 +29,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define BAD_DIR "tests/bad"
@@ -157,11 +158,11 @@ static void check_library(const char *path, const expectation *e)
     int status;
     FILE *f = open_memstream(&out, &size);
     ck_assert_ptr_nonnull(f);
-    rf_scene *s = scene_load(path, NULL, f, 1, &status);
+    scene_model *s = scene_file_load(path, NULL, f, 1, &status);
     fclose(f);
     scene_free(s);
     ck_assert_msg(s == NULL, "%s loaded", path);
-    ck_assert_msg(status == REFRAY_EXIT_DATAERR, "%s: status %d, expected 65", path, status);
+    ck_assert_msg(status == STATUS_DATA, "%s: status %d, expected STATUS_DATA", path, status);
     check_output(path, out, e);
     free(out);
 }
@@ -211,7 +212,7 @@ static void check_cli(const char *path, const expectation *e)
     char who[PATH_MAX_LEN + 32];
     int code = run_cli(path, out, sizeof out);
     snprintf(who, sizeof who, "refray check %s", path);
-    ck_assert_msg(code == REFRAY_EXIT_DATAERR, "%s: exit %d, expected 65", who, code);
+    ck_assert_msg(code == 65, "%s: exit %d, expected 65", who, code);
     check_output(who, out, e);
 }
 

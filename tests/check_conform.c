@@ -13,7 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
 #include "cli_testlib.h"
 #include "image/image_file.h"
 #include "verify/conform.h"
@@ -212,7 +213,7 @@ END_TEST
 START_TEST(test_conform_downsample_and_scale)
 {
     char kit[128], src[300], big[300], cmd[700], err[256];
-    rf_image e, b;
+    img_buf e, b;
     cli_run *r = malloc(sizeof *r);
     snprintf(kit, sizeof kit, "%s/kit", kit_root);
     ck_assert_int_eq(kit_status, 0);
@@ -278,12 +279,12 @@ START_TEST(test_conform_reports)
     ck_assert_msg(strncmp(r->out, tap, strlen(tap)) == 0, "tap: %s", r->out);
     char *x;
     size_t n;
-    ck_assert_int_eq(file_read_all(junit, -1, &x, &n, why, sizeof why), 0);
+    ck_assert_int_eq(file_read_all(junit, -1, NULL, &x, &n, why, sizeof why), 0);
     ck_assert(strstr(x, "<testsuites name=\"refray conform\" tests=\"2\" failures=\"1\""));
     ck_assert(strstr(x, "name=\"plane_point_linear\" time=") && strstr(x, "<failure type=\"exit\""));
     ck_assert_msg(strstr(x, "<system-err>bad &lt;&amp;&gt; &quot;x&quot;\n</system-err>"), "junit: %s", x);
     free(x);
-    ck_assert_int_eq(file_read_all(md, -1, &x, &n, why, sizeof why), 0);
+    ck_assert_int_eq(file_read_all(md, -1, NULL, &x, &n, why, sizeof why), 0);
     snprintf(text, sizeof text, "%s", x);
     free(x);
     ck_assert(strstr(text, "| scene | family | exact peak |") && strstr(text, "| disk_light | disk_light |"));
@@ -358,7 +359,7 @@ START_TEST(test_kit_check_agrees)
 {
     const char *bin = getenv("KIT_CHECK_BIN");
     char kit[128], src[300], img[300], mask[300], mf[300], cmd[2048], err[256], want[64];
-    rf_image e;
+    img_buf e;
     ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
     snprintf(kit, sizeof kit, "%s/kit", kit_root);
     ck_assert_int_eq(kit_status, 0);
@@ -418,7 +419,7 @@ START_TEST(test_conform_expand_quotes)
     ck_assert(pr.exited && pr.exit_code == 0);
     char *got;
     size_t n;
-    ck_assert_int_eq(file_read_all(path, -1, &got, &n, why, sizeof why), 0);
+    ck_assert_int_eq(file_read_all(path, -1, NULL, &got, &n, why, sizeof why), 0);
     ck_assert_str_eq(got, nasty);
     free(got);
     free(cmd);

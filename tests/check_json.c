@@ -21,6 +21,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "export/export_json.h"
+#include "io/scene_file.h"
 #include "render/render.h"
 #include "cli_testlib.h"
 #include "testlib.h"
@@ -68,18 +69,18 @@ static void scenes_read(scene_list *l)
     qsort(l->names, (size_t)l->count, sizeof l->names[0], by_name);
 }
 
-static rf_scene *load_quiet(const char *path, const char *text, size_t len, int *status)
+static scene_model *load_quiet(const char *path, const char *text, size_t len, int *status)
 {
     FILE *null = fopen("/dev/null", "w");
-    rf_scene *s = text ? scene_load_text(path, text, len, NULL, null, 1, status)
-                       : scene_load(path, NULL, null, 1, status);
+    scene_model *s = text ? scene_file_load_text(path, text, len, NULL, null, 1, status)
+                       : scene_file_load(path, NULL, null, 1, status);
     if (null)
         fclose(null);
     return s;
 }
 
 /* The export of s as text (malloc'd). */
-static char *export_text(const rf_scene *s, const export_json_opts *o, size_t *len)
+static char *export_text(const scene_model *s, const export_json_opts *o, size_t *len)
 {
     char *buf = NULL, err[256] = "";
     FILE *fp = open_memstream(&buf, len);
@@ -92,13 +93,13 @@ static char *export_text(const rf_scene *s, const export_json_opts *o, size_t *l
 
 /* The scene read back from its export (json_path names it for messages
  * and mesh files). */
-static rf_scene *round_trip(const rf_scene *s, const export_json_opts *o, const char *json_path)
+static scene_model *round_trip(const scene_model *s, const export_json_opts *o, const char *json_path)
 {
     size_t len;
     int status;
     char *text = export_text(s, o, &len);
     FILE *errs = tmpfile();
-    rf_scene *back = scene_load_text(json_path, text, len, NULL, errs, 0, &status);
+    scene_model *back = scene_file_load_text(json_path, text, len, NULL, errs, 0, &status);
     if (!back) {
         char msg[1024] = "";
         rewind(errs);
@@ -121,7 +122,7 @@ static void same_name(const char *a, const char *b, const char *name, const char
                   a ? a : "(null)", b ? b : "(null)");
 }
 
-static void same_prim(const rf_prim *a, const rf_prim *b, const char *name, int i)
+static void same_prim(const scene_prim *a, const scene_prim *b, const char *name, int i)
 {
     ck_assert_msg(a->kind == b->kind && a->material == b->material && a->mesh == b->mesh &&
                       a->has_xform == b->has_xform,
@@ -157,7 +158,7 @@ static void same_prim(const rf_prim *a, const rf_prim *b, const char *name, int 
     }
 }
 
-static void same_light(const rf_light *a, const rf_light *b, const char *name, int i)
+static void same_light(const scene_light *a, const scene_light *b, const char *name, int i)
 {
     ck_assert_msg(a->kind == b->kind && a->falloff == b->falloff && a->samples == b->samples,
                   "%s: light %d: kind, falloff or samples differs", name, i);
@@ -171,7 +172,7 @@ static void same_light(const rf_light *a, const rf_light *b, const char *name, i
     SAME_BITS(a->radius, b->radius, "radius of light", i);
 }
 
-static void same_material(const rf_material *a, const rf_material *b, const char *name, int i)
+static void same_material(const scene_material *a, const scene_material *b, const char *name, int i)
 {
     SAME_BITS(a->kd, b->kd, "Kd of material", i);
     SAME_BITS(a->ks, b->ks, "Ks of material", i);
@@ -181,7 +182,7 @@ static void same_material(const rf_material *a, const rf_material *b, const char
     same_name(a->name, b->name, name, "material name");
 }
 
-static void same_camera(const rf_camera *a, const rf_camera *b, const char *name)
+static void same_camera(const scene_camera *a, const scene_camera *b, const char *name)
 {
     ck_assert_int_eq(a->kind, b->kind);
     SAME_BITS(a->eye, b->eye, "camera eye", 0);
@@ -196,7 +197,7 @@ static void same_camera(const rf_camera *a, const rf_camera *b, const char *name
 
 /* Everything the tracer reads, compared bit for bit (spans and mesh
  * paths, which only diagnostics read, are left out). */
-static void same_scene(const rf_scene *a, const rf_scene *b, const char *name)
+static void same_scene(const scene_model *a, const scene_model *b, const char *name)
 {
     ck_assert_msg(a->prim_count == b->prim_count && a->light_count == b->light_count &&
                       a->material_count == b->material_count && a->mesh_count == b->mesh_count,
@@ -219,7 +220,7 @@ static void same_scene(const rf_scene *a, const rf_scene *b, const char *name)
 
 /* Renders small enough for a unit test: scenes over the budget at 40 x 30
  * pixels (both the same way). */
-static render_opts view_of(const rf_scene *s)
+static render_opts view_of(const scene_model *s)
 {
     render_opts o;
     memset(&o, 0, sizeof o);
@@ -231,9 +232,9 @@ static render_opts view_of(const rf_scene *s)
     return o;
 }
 
-static void same_render(const rf_scene *a, const rf_scene *b, const char *name)
+static void same_render(const scene_model *a, const scene_model *b, const char *name)
 {
-    rf_image ia, ib;
+    img_buf ia, ib;
     render_opts o = view_of(a);
     int ra = render_image(a, &o, &ia, NULL), rb = render_image(b, &o, &ib, NULL);
     ck_assert_msg(ra == rb, "%s: render status %d, from JSON %d", name, ra, rb);
@@ -264,12 +265,12 @@ START_TEST(test_json_roundtrip_scene)
     scenes_read(&l);
     ck_assert_int_lt(_i, l.count);
     const char *name = l.names[_i];
-    rf_scene *s = load_quiet(name, NULL, 0, &status);
+    scene_model *s = load_quiet(name, NULL, 0, &status);
     ck_assert_msg(s != NULL, "%s does not load (%d)", name, status);
     export_json_opts o;
     memset(&o, 0, sizeof o);
     o.source = name;
-    rf_scene *back = round_trip(s, &o, "roundtrip.json");
+    scene_model *back = round_trip(s, &o, "roundtrip.json");
     same_scene(s, back, name);
     same_render(s, back, name);
     scene_free(s);
@@ -287,7 +288,7 @@ START_TEST(test_json_roundtrip_mesh_files)
     cli_scratch(dir, sizeof dir, "json");
     for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
         int status;
-        rf_scene *s = load_quiet(scenes[k], NULL, 0, &status);
+        scene_model *s = load_quiet(scenes[k], NULL, 0, &status);
         ck_assert_ptr_nonnull(s);
         export_json_opts o;
         memset(&o, 0, sizeof o);
@@ -295,7 +296,7 @@ START_TEST(test_json_roundtrip_mesh_files)
         o.json_dir = dir;
         o.mesh_stem = "x";
         snprintf(json, sizeof json, "%s/x.json", dir);
-        rf_scene *back = round_trip(s, &o, json);
+        scene_model *back = round_trip(s, &o, json);
         for (int m = 0; m < s->mesh_count; m++) {
             snprintf(obj, sizeof obj, "%s/meshes/x.mesh%d.obj", dir, m);
             ck_assert_msg(access(obj, F_OK) == 0, "%s: no %s", scenes[k], obj);
@@ -313,7 +314,7 @@ END_TEST
 static json_t *export_doc(const char *text)
 {
     int status;
-    rf_scene *s = load_quiet("t.scene", text, strlen(text), &status);
+    scene_model *s = load_quiet("t.scene", text, strlen(text), &status);
     ck_assert_msg(s != NULL, "scene did not load (%d)", status);
     json_t *doc = testjson_export(s);
     scene_free(s);
@@ -383,7 +384,7 @@ START_TEST(test_json_export_numbers_round_trip)
                                "point_light { position [1.7976931348623157e308, -0, 0.30000000000000004] }\n"
                                "sphere {}\n";
     int status;
-    rf_scene *s = load_quiet("t.scene", text, strlen(text), &status);
+    scene_model *s = load_quiet("t.scene", text, strlen(text), &status);
     ck_assert_ptr_nonnull(s);
     export_json_opts o;
     memset(&o, 0, sizeof o);
@@ -391,7 +392,7 @@ START_TEST(test_json_export_numbers_round_trip)
     char *out = export_text(s, &o, &len);
     ck_assert(strstr(out, "\"ambient\": [0.10000000000000001, 4.9406564584124654e-324, 0.0]"));
     ck_assert(strstr(out, "\"position\": [1.7976931348623157e308, -0.0, 0.30000000000000004]"));
-    rf_scene *back = round_trip(s, &o, "t.json");
+    scene_model *back = round_trip(s, &o, "t.json");
     double want[3] = {strtod("0.1", NULL), strtod("4.9406564584124654e-324", NULL), 0};
     ck_assert(memcmp(&back->ambient.x, &want[0], sizeof(double)) == 0);
     ck_assert(memcmp(&back->ambient.y, &want[1], sizeof(double)) == 0);
@@ -418,7 +419,7 @@ START_TEST(test_json_load_numbers_as_doubles)
         " \"primitives\": [{\"kind\": \"sphere\", \"material\": 0, \"center\": [0, 0, 0], \"radius\": 1e-3,\n"
         "                  \"transform\": null}]}\n";
     int status;
-    rf_scene *s = load_quiet("n.json", text, strlen(text), &status);
+    scene_model *s = load_quiet("n.json", text, strlen(text), &status);
     ck_assert_msg(s != NULL, "did not load (%d)", status);
     ck_assert_double_eq(s->camera.eye.z, strtod("12345678901234567890123", NULL));
     ck_assert_double_eq(s->prims[0].u.sphere.radius, strtod("1e-3", NULL));
@@ -454,12 +455,12 @@ static char *slurp(const char *path, size_t *len)
     FILE *f = fopen(path, "rb");
     ck_assert_msg(f != NULL, "cannot open %s", path);
     char *buf = NULL;
-    FILE *mem = open_memstream(&buf, len);
+    FILE *out = open_memstream(&buf, len);
     int c;
     while ((c = fgetc(f)) != EOF)
-        fputc(c, mem);
+        fputc(c, out);
     fclose(f);
-    fclose(mem);
+    fclose(out);
     return buf;
 }
 
@@ -512,7 +513,7 @@ START_TEST(test_cli_kit_writes_the_json_export)
     ck_assert_msg(r.code == 0, "%s", r.err);
     cli_path(json, sizeof json, kit, "scenes/disk_light/disk_light.json");
     cli_path(scene, sizeof scene, kit, "scenes/disk_light/disk_light.scene");
-    rf_scene *a = load_quiet(scene, NULL, 0, &status), *b = load_quiet(json, NULL, 0, &status);
+    scene_model *a = load_quiet(scene, NULL, 0, &status), *b = load_quiet(json, NULL, 0, &status);
     ck_assert_msg(a && b, "the kit's scene or its JSON does not load (%d)", status);
     same_scene(a, b, json);
     scene_free(a);
@@ -550,9 +551,9 @@ START_TEST(test_json_refused_without_jansson)
     static cli_run r;
     int status;
     FILE *msgs = tmpfile();
-    rf_scene *s = scene_load_text("x.json", text, strlen(text), NULL, msgs, 1, &status);
+    scene_model *s = scene_file_load_text("x.json", text, strlen(text), NULL, msgs, 1, &status);
     ck_assert_ptr_null(s);
-    ck_assert_int_eq(status, REFRAY_EXIT_USAGE);
+    ck_assert_int_eq(status, STATUS_USAGE);
     ck_assert_int_eq(scene_json_available(), 0);
     fclose(msgs);
     const char *exp[] = {"export", "scenes/analytic/rect_light.scene", "--to", "json", NULL};

@@ -19,6 +19,7 @@
 #include <string.h>
 #include "base/sampler.h"
 #include "export/export_json.h"
+#include "io/scene_file.h"
 #include "render/camera.h"
 #include "render/render.h"
 #include "testlib.h"
@@ -161,11 +162,11 @@ static uint64_t camera_key(const rule *r, int width, int k, int i, int j, int a,
     return key(r, key(r, (uint64_t)j * (uint64_t)width + (uint64_t)i, r->salt), (uint64_t)(b * k + a));
 }
 
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
     FILE *null = fopen("/dev/null", "w");
-    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
+    scene_model *s = scene_file_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
     fclose(null);
     ck_assert_msg(s != NULL, "scene did not load (%d)", status);
     return s;
@@ -180,7 +181,7 @@ static int same_bits(vec3 a, vec3 b)
  * agree with the description. */
 START_TEST(test_json_light_sampling_block)
 {
-    rf_scene *s = load(lights_scene);
+    scene_model *s = load(lights_scene);
     json_t *doc = testjson_export(s);
     rule r = read_rule(doc);
     static const int want_rows[] = {1, 3, 4}, want_cols[] = {7, 4, 4};
@@ -218,7 +219,7 @@ END_TEST
  * renderer's point to the last bit. */
 START_TEST(test_json_light_samples_match_renderer)
 {
-    rf_scene *s = load(lights_scene);
+    scene_model *s = load(lights_scene);
     json_t *doc = testjson_export(s);
     rule r = read_rule(doc);
     static const int pixels[][2] = {{0, 0}, {3, 2}, {6, 4}, {1, 4}};
@@ -283,7 +284,7 @@ START_TEST(test_json_camera_rays_match_renderer)
 {
     static const char *const scenes[] = {lights_scene, pixel_scene};
     for (int sc = 0; sc < 2; sc++) {
-        rf_scene *s = load(scenes[sc]);
+        scene_model *s = load(scenes[sc]);
         json_t *doc = testjson_export(s), *cam = testjson_at(doc, "camera");
         int w = s->image.width, h = s->image.height, k = s->image.samples;
         ck_assert_int_eq((int)testjson_num(cam, "pixel_samples/k"), k);
@@ -318,10 +319,10 @@ END_TEST
  * the renderer to rounding, so the renderer uses these samples and keys. */
 START_TEST(test_json_pixel_from_export)
 {
-    rf_scene *s = load(pixel_scene);
+    scene_model *s = load(pixel_scene);
     json_t *doc = testjson_export(s), *cam = testjson_at(doc, "camera"), *l = testjson_at(doc, "lights/0");
     rule r = read_rule(doc);
-    rf_image img;
+    img_buf img;
     ck_assert_int_eq(render_image(s, NULL, &img, NULL), 0);
     int w = s->image.width, h = s->image.height, k = s->image.samples, n = (int)testjson_num(l, "samples");
     double e = testjson_num(l, "sampling/sample_power/0"), kd = testjson_num(doc, "materials/0/Kd/0");

@@ -10,11 +10,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
 #include "cli_testlib.h"
 #include "image/image_file.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"
+#include "io/scene_file.h"
 #include "verify/manifest.h"
 #include "verify/verify.h"
 
@@ -50,9 +52,9 @@ static int same_bytes(const char *a, const char *b)
     char *x, *y;
     size_t nx, ny;
     char why[512];
-    int ok = file_read_all(a, -1, &x, &nx, why, sizeof why) == 0;
+    int ok = file_read_all(a, -1, NULL, &x, &nx, why, sizeof why) == 0;
     ck_assert_msg(ok, "%s", why);
-    ok = file_read_all(b, -1, &y, &ny, why, sizeof why) == 0;
+    ok = file_read_all(b, -1, NULL, &y, &ny, why, sizeof why) == 0;
     ck_assert_msg(ok, "%s", why);
     int same = nx == ny && memcmp(x, y, nx) == 0;
     free(x);
@@ -88,7 +90,7 @@ START_TEST(test_kit_layout)
                   m.scenes[2].missing[MANIFEST_FILE_POV]);
     char *readme;
     size_t n;
-    ck_assert_int_eq(file_read_all(cli_path(path, sizeof path, dir, "README.md"), -1, &readme, &n, why, sizeof why),
+    ck_assert_int_eq(file_read_all(cli_path(path, sizeof path, dir, "README.md"), -1, NULL, &readme, &n, why, sizeof why),
                      0);
     ck_assert(strstr(readme, "|OUT_c - EXACT_c| > relative * |EXACT_c| + absolute") != NULL);
     ck_assert(strstr(readme, "| disk_light | disk_light | 80x60 | 1 | 1 |") != NULL);
@@ -132,7 +134,7 @@ END_TEST
 static void measure(const char *dir, const manifest_scene *s, double *peak, long *masked)
 {
     char path[512], err[512];
-    rf_image img;
+    img_buf img;
     unsigned char *mask;
     ck_assert_int_eq(img_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
                               sizeof err), 0);
@@ -184,7 +186,7 @@ START_TEST(test_kit_manifest_numbers)
     ck_assert_int_eq(m.scenes[1].light_samples[0], 256); /* `samples 256` in disk_light.scene */
     /* The sampled tolerance is the family's at the scene's own samples. */
     int status;
-    rf_scene *sc = scene_load(cli_kit_scenes[1], NULL, stderr, 0, &status);
+    scene_model *sc = scene_file_load(cli_kit_scenes[1], NULL, stderr, 0, &status);
     ck_assert_ptr_nonnull(sc);
     oracle_view v = verify_view(sc, NULL);
     ck_assert(m.scenes[1].relative == oracle_find("disk_light")->tolerance(&v, 0));
@@ -278,24 +280,24 @@ START_TEST(test_manifest_read_errors)
     char work[64], why[1024], path[300];
     manifest m;
     cli_scratch(work, sizeof work, "manifest");
-    ck_assert_int_eq(manifest_read(cli_path(path, sizeof path, work, "none.json"), &m, why, sizeof why), 66);
-    ck_assert_int_eq(read_text_manifest(work, "{\"scenes\": [\n  1,,\n]}", why, sizeof why), 65);
+    ck_assert_int_eq(manifest_read(cli_path(path, sizeof path, work, "none.json"), &m, why, sizeof why), STATUS_NO_INPUT);
+    ck_assert_int_eq(read_text_manifest(work, "{\"scenes\": [\n  1,,\n]}", why, sizeof why), STATUS_DATA);
     ck_assert_msg(strstr(why, "bad.json:2:") != NULL, "why: %s", why);
-    ck_assert_int_eq(read_text_manifest(work, "{\"format_version\": 1}", why, sizeof why), 65);
+    ck_assert_int_eq(read_text_manifest(work, "{\"format_version\": 1}", why, sizeof why), STATUS_DATA);
     ck_assert_msg(strstr(why, "'scenes'") != NULL, "why: %s", why);
-    ck_assert_int_eq(read_text_manifest(work, "{\"format_version\": 2, \"scenes\": []}", why, sizeof why), 65);
+    ck_assert_int_eq(read_text_manifest(work, "{\"format_version\": 2, \"scenes\": []}", why, sizeof why), STATUS_DATA);
     static const char no_width[] =
         "{\"format_version\": 1, \"scenes\": [{\"name\": \"s\", \"family\": \"f\", "
         "\"files\": {\"exact_pfm\": \"s.pfm\"}}]}";
-    ck_assert_int_eq(read_text_manifest(work, no_width, why, sizeof why), 65);
+    ck_assert_int_eq(read_text_manifest(work, no_width, why, sizeof why), STATUS_DATA);
     ck_assert_msg(strstr(why, "scenes[0] ('s'): 'width'") != NULL, "why: %s", why);
     static const char outside[] =
         "{\"format_version\": 1, \"scenes\": [{\"name\": \"s\", \"family\": \"f\", "
         "\"files\": {\"exact_pfm\": \"../../etc/x.pfm\"}}]}";
-    ck_assert_int_eq(read_text_manifest(work, outside, why, sizeof why), 65);
+    ck_assert_int_eq(read_text_manifest(work, outside, why, sizeof why), STATUS_DATA);
     ck_assert_msg(strstr(why, "outside the kit") != NULL, "why: %s", why);
     static const char bad_name[] = "{\"format_version\": 1, \"scenes\": [{\"name\": \"a/b\"}]}";
-    ck_assert_int_eq(read_text_manifest(work, bad_name, why, sizeof why), 65);
+    ck_assert_int_eq(read_text_manifest(work, bad_name, why, sizeof why), STATUS_DATA);
     cli_remove(work);
 }
 END_TEST
@@ -349,7 +351,7 @@ END_TEST
 static void perturbed(const char *dir, const manifest_scene *s, double f, const char *path)
 {
     char src[512], err[512];
-    rf_image img;
+    img_buf img;
     ck_assert_int_eq(img_read(cli_path(src, sizeof src, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
                               sizeof err), 0);
     for (int i = 0; i < 3 * img.width * img.height; i++)
@@ -414,7 +416,7 @@ START_TEST(test_cli_compare_downsample_scale)
 {
     static const double quarter[4] = {0.75, 1.25, 1.0, 1.0}; /* mean 1 */
     char work[64], pa[300], pb[300], err[256];
-    rf_image a, b;
+    img_buf a, b;
     cli_run *r = malloc(sizeof *r);
     cli_scratch(work, sizeof work, "adjust");
     ck_assert_int_eq(img_create(&b, 2, 1), 0);

@@ -35,10 +35,10 @@ static void lex_bytes(lex_run *run, const char *text, size_t len)
 {
     yyscan_t scanner;
     memset(run, 0, sizeof *run);
-    arena_init(&run->arena);
-    source_set_init(&run->sources);
+    arena_init(&run->arena, NULL);
+    source_set_init(&run->sources, NULL);
     ck_assert_int_eq(source_set_add(&run->sources, "t.scene", text, len, src_span_none()), 0);
-    diag_init(&run->diag, &run->sources, NULL);
+    diag_init(&run->diag, &run->sources, NULL, NULL);
     run->ctx.arena = &run->arena;
     run->ctx.diag = &run->diag;
     run->ctx.sources = &run->sources;

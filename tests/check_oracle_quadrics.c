@@ -10,7 +10,7 @@
 #include "oracle_testlib.h"
 #include "oracle/oracle_quadric.h"
 
-static rf_scene *load_family(const char *family, const char *text)
+static scene_model *load_family(const char *family, const char *text)
 {
     char full[1024];
     snprintf(full, sizeof full, "oracle %s\nimage { width 2 height 2 max_depth 1 background [0.1, 0.2, 0.3] }\n%s",
@@ -19,14 +19,14 @@ static rf_scene *load_family(const char *family, const char *text)
 }
 
 /* The family's value at screen offset (a, b), which must be exact. */
-static double exact_at(const rf_scene *s, double a, double b)
+static double exact_at(const scene_model *s, double a, double b)
 {
     rgb c = vec_splat(-1);
     ck_assert_msg(radiance_at(s, 1 + a, 1 - b, &c) == ORACLE_EXACT, "ambiguous at (%g, %g)", a, b);
     return c.x;
 }
 
-static int ambiguous_at(const rf_scene *s, double a, double b)
+static int ambiguous_at(const scene_model *s, double a, double b)
 {
     rgb c;
     return radiance_at(s, 1 + a, 1 - b, &c) == ORACLE_AMBIGUOUS;
@@ -40,7 +40,7 @@ static int ambiguous_at(const rf_scene *s, double a, double b)
  * outside it the background; at its rim ambiguous. */
 START_TEST(test_lambert_cylinder_by_hand)
 {
-    rf_scene *s = load_family("lambert_cylinder",
+    scene_model *s = load_family("lambert_cylinder",
                               "camera { orthographic eye [10, 0, 0] look_at [0, 0, 0] up [0, 0, 1] width 2 }\n"
                               "ambient { color 0.1 }\ndistant_light { direction [-1, 0, 0] power 2 }\n"
                               "cylinder { from [0, 0, -1] to [0, 0, 1] material { Kd 0.5 } }\n");
@@ -68,7 +68,7 @@ END_TEST
  * itself is ambiguous. */
 START_TEST(test_lambert_cone_by_hand)
 {
-    rf_scene *s = load_family("lambert_cone",
+    scene_model *s = load_family("lambert_cone",
                               "camera { orthographic eye [10, 0, 0] look_at [0, 0, 0] up [0, 0, 1] width 2 }\n"
                               "ambient { color 0.1 }\ndistant_light { direction [-1, 0, -1] power 2 }\n"
                               "cone { from [0, 0, 0] to [0, 0, 1] radii 1 0 material { Kd 0.5 } }\n");
@@ -94,7 +94,7 @@ END_TEST
  * background; the outer outline (2.5) is ambiguous. */
 START_TEST(test_lambert_torus_by_hand)
 {
-    rf_scene *s = load_family("lambert_torus",
+    scene_model *s = load_family("lambert_torus",
                               "camera { orthographic eye [0, 0, 10] look_at [0, 0, 0] up [0, 1, 0] width 8 }\n"
                               "ambient { color 0.1 }\ndistant_light { direction [0, 0, -1] power 2 }\n"
                               "torus { axis [0, 0, 1] major 2 minor 0.5 material { Kd 0.5 } }\n");
@@ -117,7 +117,7 @@ END_TEST
  * top: past it, clear; short of it, blocked. */
 START_TEST(test_lambert_torus_shadow_by_hand)
 {
-    rf_scene *s = load_text("torus { axis [0, 0, 1] major 2 minor 0.5 }\n");
+    scene_model *s = load_text("torus { axis [0, 0, 1] major 2 minor 0.5 }\n");
     oracle_ring t = oracle_ring_of(&s->prims[0]);
     ck_assert_int_eq(oracle_ring_blocks(&t, vec_make(1.5, 0, 0), vec_make(-1, 0, 0)), 1);
     ck_assert_int_eq(oracle_ring_blocks(&t, vec_make(2, 0, 0.5), vec_make(0, 0, 1)), 0);

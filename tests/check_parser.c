@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/diag_print.h"
 #include "testlib.h"
 #include "lang/keywords.h"
 #include "lang/parse.h"
@@ -21,12 +22,12 @@ typedef struct parsed {
 static void parse_bytes(parsed *p, const char *text, size_t len)
 {
     memset(p, 0, sizeof *p);
-    arena_init(&p->arena);
-    source_set_init(&p->sources);
+    arena_init(&p->arena, NULL);
+    source_set_init(&p->sources, NULL);
     ck_assert_int_eq(source_set_add(&p->sources, "t.scene", text, len, src_span_none()), 0);
     FILE *out = open_memstream(&p->messages, &p->size);
     ck_assert_ptr_nonnull(out);
-    diag_init(&p->diag, &p->sources, out);
+    diag_init(&p->diag, &p->sources, out ? diag_print : NULL, out);
     p->root = parse_file(&p->arena, &p->diag, &p->sources, 0);
     fclose(out);
     ck_assert_ptr_nonnull(p->root);
@@ -480,7 +481,8 @@ START_TEST(test_parse_file_two_files)
     free(p.messages);
     ck_assert_int_eq(source_set_add(&p.sources, "u.scene", "sphere { radius }\nlet b = (", 27, src_span_none()), 1);
     FILE *out = open_memstream(&p.messages, &p.size);
-    p.diag.out = out;
+    p.diag.sink = diag_print;
+    p.diag.sink_user = out;
     ast *second = parse_file(&p.arena, &p.diag, &p.sources, 1);
     fclose(out);
     ck_assert_ptr_nonnull(second);

@@ -13,8 +13,8 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
-#include "base/fileio.h"
-#include "base/proc.h"
+#include "io/filewrite.h"
+#include "io/proc.h"
 #include "base/status.h"
 #include "base/text.h"
 #include "cli_testlib.h"
@@ -179,7 +179,7 @@ static int fill_fails(FILE *fp, void *ctx)
 {
     (void)ctx;
     fputs("half", fp);
-    return REFRAY_EXIT_IOERR;
+    return STATUS_IO;
 }
 
 /* The atomic writer leaves nothing when its filler fails; it replaces a
@@ -190,14 +190,14 @@ START_TEST(test_file_write_atomic)
     cli_scratch(dir, sizeof dir, "fileio");
     cli_path(path, sizeof path, dir, "f.txt");
     ck_assert_int_eq(file_write_bytes(path, "first", 5, why, sizeof why), 0);
-    ck_assert_int_eq(file_write_atomic(path, fill_fails, NULL, why, sizeof why), REFRAY_EXIT_IOERR);
+    ck_assert_int_eq(file_write_atomic(path, fill_fails, NULL, why, sizeof why), STATUS_IO);
     read_text(path, text, sizeof text);
     ck_assert_str_eq(text, "first");
     ck_assert_int_eq(file_write_bytes(path, "second", 6, why, sizeof why), 0);
     read_text(path, text, sizeof text);
     ck_assert_str_eq(text, "second");
     ck_assert_msg(cli_entries(dir) == 1, "a temporary file was left in %s", dir);
-    ck_assert_int_eq(file_write_bytes(dir, "x", 1, why, sizeof why), REFRAY_EXIT_IOERR);
+    ck_assert_int_eq(file_write_bytes(dir, "x", 1, why, sizeof why), STATUS_IO);
     ck_assert_msg(strstr(why, "not a regular file") != NULL, "why: %s", why);
     cli_remove(dir);
 }
@@ -219,7 +219,7 @@ START_TEST(test_file_dirs_and_remove_tree)
     cli_path(path, sizeof path, dir, "tree/a/b/file");
     ck_assert_int_eq(file_write_bytes(path, "x", 1, why, sizeof why), 0);
     ck_assert_int_eq(file_make_dirs(cli_path(path, sizeof path, dir, "keep.txt/x"), why, sizeof why),
-                     REFRAY_EXIT_IOERR);
+                     STATUS_IO);
     ck_assert_int_eq(file_remove_tree(cli_path(path, sizeof path, dir, "tree"), why, sizeof why), 0);
     ck_assert(!cli_exists(path));
     ck_assert(cli_exists(outside));

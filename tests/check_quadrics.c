@@ -10,6 +10,7 @@
 #include "render/intersect.h"
 #include "render/trace.h"
 #include "scene/scene.h"
+#include "io/scene_file.h"
 #include "base/xform.h"
 
 static ray make_ray(vec3 o, vec3 d)
@@ -22,9 +23,9 @@ static ray make_ray(vec3 o, vec3 d)
     return r;
 }
 
-static rf_prim blank(rf_prim_kind kind)
+static scene_prim blank(scene_prim_kind kind)
 {
-    rf_prim p;
+    scene_prim p;
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
@@ -32,9 +33,9 @@ static rf_prim blank(rf_prim_kind kind)
     return p;
 }
 
-static rf_prim cylinder(vec3 from, vec3 to, double radius, int open)
+static scene_prim cylinder(vec3 from, vec3 to, double radius, int open)
 {
-    rf_prim p = blank(PRIM_CYLINDER);
+    scene_prim p = blank(PRIM_CYLINDER);
     p.u.cylinder.from = from;
     p.u.cylinder.to = to;
     p.u.cylinder.radius = radius;
@@ -42,9 +43,9 @@ static rf_prim cylinder(vec3 from, vec3 to, double radius, int open)
     return p;
 }
 
-static rf_prim cone(vec3 from, double r0, vec3 to, double r1, int open)
+static scene_prim cone(vec3 from, double r0, vec3 to, double r1, int open)
 {
-    rf_prim p = blank(PRIM_CONE);
+    scene_prim p = blank(PRIM_CONE);
     p.u.cone.from = from;
     p.u.cone.to = to;
     p.u.cone.radius[0] = r0;
@@ -53,9 +54,9 @@ static rf_prim cone(vec3 from, double r0, vec3 to, double r1, int open)
     return p;
 }
 
-static rf_prim torus(vec3 c, vec3 axis, double major, double minor)
+static scene_prim torus(vec3 c, vec3 axis, double major, double minor)
 {
-    rf_prim p = blank(PRIM_TORUS);
+    scene_prim p = blank(PRIM_TORUS);
     p.u.torus.center = c;
     p.u.torus.axis = axis;
     p.u.torus.major = major;
@@ -65,7 +66,7 @@ static rf_prim torus(vec3 c, vec3 axis, double major, double minor)
 
 /* The crossings of p along r, checked against the expected t, normals and
  * entering flags, in order. */
-static void expect_crossings(const rf_prim *p, ray r, int count, const double *t, const vec3 *n, const int *entering,
+static void expect_crossings(const scene_prim *p, ray r, int count, const double *t, const vec3 *n, const int *entering,
                              double tol)
 {
     hit out[ISECT_MAX_CROSSINGS];
@@ -93,7 +94,7 @@ static void expect_crossings(const rf_prim *p, ray r, int count, const double *t
  * Open, the first is a sheet crossed twice; the second misses. */
 START_TEST(test_cylinder_by_hand)
 {
-    rf_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0), o = c;
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0), o = c;
     o.u.cylinder.open = 1;
     const double side_t[] = {2, 4}, cap_t[] = {3, 5};
     const vec3 side_n[] = {vec_make(1, 0, 0), vec_make(-1, 0, 0)};
@@ -124,7 +125,7 @@ END_TEST
  * cone throughout (a < 0) and the slab keeps one nappe. */
 START_TEST(test_cone_by_hand)
 {
-    rf_prim c = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
+    scene_prim c = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
     double s = sqrt(0.5);
     const int in_out[] = {1, 0};
     expect_crossings(&c, make_ray(vec_make(2, 0, 0.5), vec_make(-1, 0, 0)), 2, (const double[]){1.5, 2.5},
@@ -135,7 +136,7 @@ START_TEST(test_cone_by_hand)
                      (const vec3[]){vec_make(0, 0, 1), vec_make(0, 0, -1)}, in_out, 1e-15);
     /* Truncated, radii 1 and 0.5 over a length of 1 (k = -0.5): up the axis
      * 0.75 off it the side is met where 1 - 0.5 z = 0.75, z = 0.5. */
-    rf_prim tr = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0.5, 0);
+    scene_prim tr = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0.5, 0);
     double n = 1 / sqrt(1.25);
     expect_crossings(&tr, make_ray(vec_make(0.75, 0, -1), vec_make(0, 0, 1)), 2, (const double[]){1, 1.5},
                      (const vec3[]){vec_make(0, 0, -1), vec_make(n, 0, 0.5 * n)}, in_out, 1e-15);
@@ -153,7 +154,7 @@ END_TEST
  * centre along +x: the inner wall at x = 1.5 (t = 1.5, normal -x, entering). */
 START_TEST(test_torus_by_hand)
 {
-    rf_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     const vec3 px = vec_make(1, 0, 0), nx = vec_make(-1, 0, 0);
     expect_crossings(&t, make_ray(vec_make(5, 0, 0), nx), 4, (const double[]){2.5, 3.5, 6.5, 7.5},
                      (const vec3[]){px, nx, px, nx}, (const int[]){1, 0, 1, 0}, 1e-14);
@@ -175,7 +176,7 @@ END_TEST
  * within an ulp of 1e6 of the tube, with the normal +z. */
 START_TEST(test_torus_thin_far)
 {
-    rf_prim t = torus(vec_make(1e6, 0, 0), vec_make(0, 0, 1), 1, 1e-3);
+    scene_prim t = torus(vec_make(1e6, 0, 0), vec_make(0, 0, 1), 1, 1e-3);
     ray r = make_ray(vec_make(1e6 + 1, 0, 100), vec_make(0, 0, -1));
     hit h;
     ck_assert(isect_prim(&t, &r, &h));
@@ -190,7 +191,7 @@ END_TEST
  * top seen from above at x = 2 is at z = 2 * 0.5 = 1 (t = 4). */
 START_TEST(test_torus_transformed)
 {
-    rf_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     xform w = xform_scale(vec_make(1, 1, 2));
     t.has_xform = 1;
     t.to_world = w;
@@ -210,11 +211,11 @@ END_TEST
  * the rim. */
 START_TEST(test_rim_is_closed)
 {
-    rf_prim shapes[2] = {cylinder(vec_make(0.3, -0.2, 0.1), vec_make(1.3, 0.8, -0.4), 0.7, 0),
+    scene_prim shapes[2] = {cylinder(vec_make(0.3, -0.2, 0.1), vec_make(1.3, 0.8, -0.4), 0.7, 0),
                          cone(vec_make(0.3, -0.2, 0.1), 0.9, vec_make(1.3, 0.8, -0.4), 0.2, 0)};
     uint64_t state = 12345;
     for (int k = 0; k < 2; k++) {
-        const rf_prim *p = &shapes[k];
+        const scene_prim *p = &shapes[k];
         vec3 from = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
         vec3 to = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
         vec3 a = vec_normalize(vec_sub(to, from)), u = vec_normalize(vec_cross(a, vec_make(0, 0, 1)));
@@ -241,15 +242,15 @@ END_TEST
 START_TEST(test_quadric_bounds_and_magnitude)
 {
     vec3 lo, hi;
-    rf_prim c = cylinder(vec_make(0, 0, 0), vec_make(3, 0, 0), 1, 0);
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(3, 0, 0), 1, 0);
     ck_assert(isect_prim_bounds(&c, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(0, -1, -1), 0);
     ck_assert_vec_near(hi, vec_make(3, 1, 1), 0);
-    rf_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 2), 0.5, 0);
+    scene_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 2), 0.5, 0);
     ck_assert(isect_prim_bounds(&k, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(-1, -1, 0), 0);
     ck_assert_vec_near(hi, vec_make(1, 1, 2), 0);
-    rf_prim t = torus(vec_make(1, -7, 3), vec_make(0, 0, 1), 2, 0.5);
+    scene_prim t = torus(vec_make(1, -7, 3), vec_make(0, 0, 1), 2, 0.5);
     ck_assert(isect_prim_bounds(&t, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(-1.5, -9.5, 2.5), 0);
     ck_assert_vec_near(hi, vec_make(3.5, -4.5, 3.5), 0);
@@ -259,7 +260,7 @@ START_TEST(test_quadric_bounds_and_magnitude)
     ck_assert_near(isect_prim_magnitude(&k), 3, 0);
     /* A tilted axis: a unit cylinder along (1,1,0)/sqrt2 spans
      * sqrt(1 - 1/2) across x and y about each end, 1 along z. */
-    rf_prim d = cylinder(vec_make(0, 0, 0), vec_make(1, 1, 0), 1, 1);
+    scene_prim d = cylinder(vec_make(0, 0, 0), vec_make(1, 1, 0), 1, 1);
     ck_assert(isect_prim_bounds(&d, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(-sqrt(0.5), -sqrt(0.5), -1), 1e-15);
     ck_assert_vec_near(hi, vec_make(1 + sqrt(0.5), 1 + sqrt(0.5), 1), 1e-15);
@@ -271,18 +272,18 @@ END_TEST
  * nothing. */
 START_TEST(test_quadric_contains)
 {
-    rf_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0);
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0);
     ck_assert(scene_prim_contains(&c, vec_make(0.5, 0.5, 1)));
     ck_assert(!scene_prim_contains(&c, vec_make(0.8, 0.8, 1)));
     ck_assert(!scene_prim_contains(&c, vec_make(0, 0, 2.5)));
     c.u.cylinder.open = 1;
     ck_assert(!scene_prim_contains(&c, vec_make(0.5, 0.5, 1)));
     ck_assert(!scene_prim_is_solid(&c) && scene_prim_self_shadows(&c));
-    rf_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
+    scene_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
     ck_assert(scene_prim_contains(&k, vec_make(0.3, 0, 0.6)));   /* radius there 0.4 */
     ck_assert(!scene_prim_contains(&k, vec_make(0.5, 0, 0.6)));
     ck_assert(scene_prim_is_solid(&k) && !scene_prim_self_shadows(&k));
-    rf_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     ck_assert(scene_prim_contains(&t, vec_make(0, 2.2, 0.3)));    /* distance sqrt(0.13) < 0.5 */
     ck_assert(!scene_prim_contains(&t, vec_make(0, 0, 0)));       /* the hole */
     ck_assert(scene_prim_is_solid(&t) && scene_prim_self_shadows(&t));
@@ -293,7 +294,7 @@ END_TEST
  * surface it leaves at about t = 0 (it may meet it again further on). */
 START_TEST(test_quadric_spawn_no_self_hit)
 {
-    rf_prim shapes[3] = {cylinder(vec_make(1e4, 2, 3), vec_make(1e4 + 2, 4, 3), 0.5, 1),
+    scene_prim shapes[3] = {cylinder(vec_make(1e4, 2, 3), vec_make(1e4 + 2, 4, 3), 0.5, 1),
                          cone(vec_make(-3, 1e3, 0), 0.8, vec_make(-3, 1e3 + 2, 1), 0.1, 0),
                          torus(vec_make(5, 5, -1e5), vec_normalize(vec_make(1, 2, 3)), 1, 0.1)};
     uint64_t state = 99;
@@ -324,17 +325,17 @@ START_TEST(test_quadric_spawn_no_self_hit)
 }
 END_TEST
 
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
 
 /* The radiance along one ray through the scene, as the renderer traces a
  * camera ray (starting in air). */
-static rgb trace_one(const rf_scene *s, vec3 o, vec3 d, trace_stats *st)
+static rgb trace_one(const scene_model *s, vec3 o, vec3 d, trace_stats *st)
 {
     tracer t;
     medium_stack air;
@@ -354,7 +355,7 @@ static rgb trace_one(const rf_scene *s, vec3 o, vec3 d, trace_stats *st)
  * (0.5^4 of 0.5). */
 START_TEST(test_torus_transparent_shadow)
 {
-    rf_scene *s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
+    scene_model *s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
                        "torus { center [0, 1, 0] axis [0, 1, 0] major 1 minor 0.25 material clear }\n"
                        "plane { normal [0, 1, 0] material { Kd 0.5 } }\n"
                        "distant_light { direction [0, -1, 0] }\n");
@@ -382,7 +383,7 @@ END_TEST
  * left.  Lit from above, the top of the tube is not shadowed. */
 START_TEST(test_torus_shadows_itself)
 {
-    rf_scene *s = load("ambient { color 0.2 }\n"
+    scene_model *s = load("ambient { color 0.2 }\n"
                        "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
                        "distant_light { direction [1, 0, 0] }\n");
     ck_assert(s->features.shadows);
@@ -408,7 +409,7 @@ END_TEST
  * in the torus's hole or inside an open cylinder does not. */
 START_TEST(test_quadric_glass)
 {
-    rf_scene *s = load("image { background 1 max_depth 5 }\n"
+    scene_model *s = load("image { background 1 max_depth 5 }\n"
                        "cylinder { from [0, 0, 0] to [0, 0, -2] radius 1 material { Kd 0 t 0.8 ior 1.5 } }\n"
                        "torus { center [5, 0, 0] axis [0, 0, 1] major 2 minor 0.5 material { Kd 0 t 1 ior 1.3 } }\n"
                        "cylinder { from [20, 0, 0] to [20, 0, 5] open material { Kd 0 t 1 ior 1.7 } }\n");

@@ -13,7 +13,7 @@
 #include "testlib.h"
 
 /* The export of s (default options), parsed. */
-static inline json_t *testjson_export(const rf_scene *s)
+static inline json_t *testjson_export(const scene_model *s)
 {
     char *buf = NULL, err[256] = "";
     size_t len;

@@ -10,6 +10,7 @@
 #define REFRAY_SOURCE_H
 
 #include <stddef.h>
+#include "base/mem.h"
 
 typedef struct src_span {
     int file;         /* index into source_set.files; -1: no location */
@@ -23,6 +24,7 @@ typedef struct source_file {
     size_t len;            /* bytes in text, not counting the terminator */
     size_t *line_start;    /* offset of each line's first byte */
     size_t line_count;
+    size_t line_cap;       /* entries allocated in line_start */
     src_span included_from;/* the include statement that read it; file -1 for the root */
     int is_mesh;           /* read by a mesh (an OBJ file), not by an include */
 } source_file;
@@ -31,13 +33,15 @@ typedef struct source_set {
     source_file **files;
     int count;
     int cap;
+    mem mem;               /* where the files and their texts live */
 } source_set;
 
 /* A span that points nowhere, for messages about the command line. */
 src_span src_span_none(void);
 src_span src_span_join(src_span a, src_span b);
 
-void source_set_init(source_set *set);
+/* An empty set whose memory comes from m (NULL: the C library). */
+void source_set_init(source_set *set, const mem *m);
 void source_set_free(source_set *set);
 
 /* Adds a file whose text the caller already holds (copied).  Returns its

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "refray.h"
 #include "cli/cli.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -60,7 +61,7 @@ static int cli_features(void)
     for (int i = 0; i < n; i++)
         printf("%s%s", i ? " " : "", parts[i]);
     printf("\n");
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_main(int argc, char **argv)
@@ -70,11 +71,11 @@ int cli_main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage_text, stdout);
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     }
     if (strcmp(cmd, "--version") == 0) {
-        printf("refray %s\n", REFRAY_VERSION);
-        return REFRAY_EXIT_OK;
+        printf("refray %s\n", rf_version());
+        return STATUS_OK;
     }
     if (strcmp(cmd, "--features") == 0)
         return cli_features();

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
 #include "image/adjust.h"
 #include "image/image_file.h"
 #include "cli/cli_args.h"
@@ -105,7 +105,7 @@ static int parse_args(compare_args *a, int argc, char **argv)
         }
         int r = compare_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("compare: unknown option '%s'", argv[i]);
     }
@@ -122,16 +122,16 @@ static int parse_args(compare_args *a, int argc, char **argv)
     return 0;
 }
 
-static int read_image(const char *path, rf_image *img)
+static int read_image(const char *path, img_buf *img)
 {
     char err[512];
     int status = img_read(path, img, err, sizeof err);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
-static void print_text(const compare_args *a, const compare_kit *kit, const rf_image *img, const image_metrics *m)
+static void print_text(const compare_args *a, const compare_kit *kit, const img_buf *img, const image_metrics *m)
 {
     printf("A:        %s\nB:        %s (reference)\n", a->a, a->b);
     int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
@@ -174,89 +174,90 @@ static void print_json(const compare_args *a, const compare_kit *kit, const imag
     fputs("}\n", stdout);
 }
 
-static int write_map(const compare_args *a, const rf_image *x, const rf_image *ref, const unsigned char *mask)
+static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref, const unsigned char *mask)
 {
-    rf_image map;
+    img_buf map;
     img_format fmt = img_format_from_path(a->diff);
     int raw = fmt == IMG_FORMAT_EXR || fmt == IMG_FORMAT_PFM;
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
     char err[512] = "out of memory making the error map";
-    if (status == IMG_OK) {
+    if (status == STATUS_OK) {
         img_write_opts wo = img_write_opts_default();
         wo.exr_float = 1;
         status = img_write(a->diff, &map, &wo, err, sizeof err);
         img_free(&map);
     }
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
-/* The mask: --mask, or the kit's; NULL for none.  0 or the exit code. */
-static int read_mask(const compare_args *a, const compare_kit *kit, const rf_image *ref, unsigned char **mask)
+/* The mask: --mask, or the kit's; NULL for none.  STATUS_OK or the status. */
+static int read_mask(const compare_args *a, const compare_kit *kit, const img_buf *ref, unsigned char **mask)
 {
     char err[512];
     const char *rel = kit ? kit->scene->files[MANIFEST_FILE_MASK_PGM] : "";
-    char *path = rel[0] ? file_join(kit->dir, rel) : NULL;
+    char *path = rel[0] ? file_join(NULL, kit->dir, rel) : NULL;
     const char *use = a->mask ? a->mask : path;
-    int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : IMG_OK;
-    if (status != IMG_OK)
+    int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : STATUS_OK;
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s: %s\n", use, err);
     free(path);
-    return cli_image_status(status);
+    return status;
 }
 
-/* Compares the two loaded images; returns the exit code. */
-static int compare_images(const compare_args *a, const compare_kit *kit, const rf_image *x, const rf_image *ref)
+/* Compares the two loaded images; returns the status. */
+static int compare_images(const compare_args *a, const compare_kit *kit, const img_buf *x, const img_buf *ref)
 {
     if (x->width != ref->width || x->height != ref->height) {
         fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
                 x->height, a->b, ref->width, ref->height);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     unsigned char *mask = NULL;
     int status = read_mask(a, kit, ref, &mask);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
     image_metrics m;
     if (kit)
         metrics_compare_abs(x, ref, mask, kit->scene->relative, kit->scene->absolute, &m);
     else
         metrics_compare(x, ref, mask, a->has_tolerance ? a->tolerance : 0, &m);
-    status = a->diff ? write_map(a, x, ref, mask) : REFRAY_EXIT_OK;
+    status = a->diff ? write_map(a, x, ref, mask) : STATUS_OK;
     free(mask);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
     if (a->json)
         print_json(a, kit, &m);
     else
         print_text(a, kit, x, &m);
     if (kit)
-        return m.over > 0 || m.compared == 0 ? REFRAY_EXIT_FAIL : REFRAY_EXIT_OK;
-    return a->has_tolerance && m.over > 0 ? REFRAY_EXIT_FAIL : REFRAY_EXIT_OK;
+        return m.over > 0 || m.compared == 0 ? STATUS_FAIL : STATUS_OK;
+    return a->has_tolerance && m.over > 0 ? STATUS_FAIL : STATUS_OK;
 }
 
-/* A averaged over k x k blocks and scaled, in place; 0 or the exit code. */
-static int adjust_image(const compare_args *a, const compare_kit *kit, const rf_image *ref, rf_image *x)
+/* A averaged over k x k blocks and scaled, in place; STATUS_OK or the status. */
+static int adjust_image(const compare_args *a, const compare_kit *kit, const img_buf *ref, img_buf *x)
 {
     int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
     double scale = kit ? conform_scale_of(&a->adjust, kit->scene) : a->adjust.scale;
     if (k > 1) {
-        rf_image small;
+        img_buf small;
         if (x->width != k * ref->width || x->height != k * ref->height) {
             fprintf(stderr, "refray: error: with --downsample %d, '%s' must be %dx%d (%d times '%s', %dx%d), "
                     "not %dx%d\n", k, a->a, k * ref->width, k * ref->height, k, a->b, ref->width, ref->height,
                     x->width, x->height);
-            return REFRAY_EXIT_DATAERR;
+            return STATUS_DATA;
         }
-        if (img_downsample(x, k, &small) != IMG_OK)
-            return REFRAY_EXIT_SOFTWARE;
+        int status = img_downsample(x, k, &small);
+        if (status != STATUS_OK)
+            return status;
         img_free(x);
         *x = small;
     }
     if (scale != 1)
         img_scale(x, scale);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 /* 1 when path names the kit file rel: equal, or ending in "/" rel. */
@@ -295,20 +296,20 @@ static int load_kit(compare_args *a, compare_kit *kit)
 {
     char why[1024];
     int status = manifest_read(a->manifest, &kit->m, why, sizeof why);
-    if (status != 0) {
+    if (status != STATUS_OK) {
         fprintf(stderr, "refray: error: compare: %s\n", why);
         return status;
     }
-    kit->dir = file_dirname(a->manifest);
+    kit->dir = file_dirname(NULL, a->manifest);
     if (!(kit->scene = kit_scene(a, &kit->m)))
-        return REFRAY_EXIT_USAGE;
+        return STATUS_USAGE;
     if (!a->b) {
         const manifest_scene *s = kit->scene;
         int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
-        kit->exact = file_join(kit->dir, s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM]);
+        kit->exact = file_join(NULL, kit->dir, s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM]);
         a->b = kit->exact;
     }
-    return kit->dir && a->b ? 0 : REFRAY_EXIT_SOFTWARE;
+    return kit->dir && a->b ? STATUS_OK : STATUS_NO_MEMORY;
 }
 
 int cli_compare(int argc, char **argv)
@@ -321,18 +322,18 @@ int cli_compare(int argc, char **argv)
     a.adjust.scale = 1;
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     if (a.manifest)
         status = load_kit(&a, &kit);
     const compare_kit *k = a.manifest ? &kit : NULL;
-    rf_image x = {0, 0, NULL}, ref = {0, 0, NULL};
-    if (status == REFRAY_EXIT_OK)
+    img_buf x = {0}, ref = {0};
+    if (status == STATUS_OK)
         status = read_image(a.a, &x);
-    if (status == REFRAY_EXIT_OK)
+    if (status == STATUS_OK)
         status = read_image(a.b, &ref);
-    if (status == REFRAY_EXIT_OK)
+    if (status == STATUS_OK)
         status = adjust_image(&a, k, &ref, &x);
-    if (status == REFRAY_EXIT_OK)
+    if (status == STATUS_OK)
         status = compare_images(&a, k, &x, &ref);
     img_free(&x);
     img_free(&ref);

@@ -14,7 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
 #include "base/suggest.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -136,7 +137,7 @@ static int parse_args(conform_args *a, int argc, char **argv)
         }
         int r = conform_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("conform: unknown %s '%s'", argv[i][0] == '-' ? "option" : "argument", argv[i]);
     }
@@ -150,18 +151,18 @@ static int parse_args(conform_args *a, int argc, char **argv)
     return check_format(a);
 }
 
-/* The kit's manifest: 0, or the exit code after the message. */
+/* The kit's manifest: STATUS_OK, or the status after the message. */
 static int load_kit(const conform_args *a, char **kit_dir, manifest *m)
 {
     char why[1024];
     if (!manifest_supported(why, sizeof why))
         return cli_usage_error("conform: %s", why);
-    char *path = file_join(a->kit, "manifest.json");
+    char *path = file_join(NULL, a->kit, "manifest.json");
     if (!path || access(path, F_OK) != 0) {
         fprintf(stderr, "refray: error: conform: no kit at '%s' (no manifest.json); make one with `make kit` "
                 "or `refray kit -o DIR`, and name it with --kit DIR\n", a->kit);
         free(path);
-        return REFRAY_EXIT_NOINPUT;
+        return STATUS_NO_INPUT;
     }
     int status = manifest_read(path, m, why, sizeof why);
     free(path);
@@ -170,11 +171,11 @@ static int load_kit(const conform_args *a, char **kit_dir, manifest *m)
         return status;
     }
     /* Absolute, so the renderer may change directory and still find it. */
-    *kit_dir = file_absolute(a->kit);
+    *kit_dir = file_absolute(NULL, a->kit);
     if (!*kit_dir) {
         manifest_free(m);
         fprintf(stderr, "refray: error: conform: cannot resolve '%s'\n", a->kit);
-        return REFRAY_EXIT_NOINPUT;
+        return STATUS_NO_INPUT;
     }
     return 0;
 }
@@ -184,7 +185,7 @@ static int select_scenes(const conform_args *a, const manifest *m, const manifes
 {
     const char **names = malloc((size_t)m->scene_count * sizeof *names + 1);
     if (!names)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     for (int i = 0; i < m->scene_count; i++)
         names[i] = m->scenes[i].name;
     for (int k = 0; k < a->only_count; k++) {
@@ -218,7 +219,7 @@ static int fill_report(FILE *fp, void *ctx)
     return f->write(fp, f->rep);
 }
 
-/* --junit and --markdown, each atomically; 0 or 74. */
+/* --junit and --markdown, each atomically; STATUS_OK or STATUS_IO. */
 static int write_reports(const conform_args *a, const conform_report *rep)
 {
     const char *paths[2] = {a->junit, a->markdown};
@@ -227,7 +228,7 @@ static int write_reports(const conform_args *a, const conform_report *rep)
         char why[600];
         if (paths[k] && file_write_atomic(paths[k], fill_report, &files[k], why, sizeof why) != 0) {
             fprintf(stderr, "refray: error: conform: %s\n", why);
-            return REFRAY_EXIT_IOERR;
+            return STATUS_IO;
         }
     }
     return 0;
@@ -262,16 +263,17 @@ static int run_all(const conform_args *a, const conform_run *run, const manifest
     return ran;
 }
 
-/* 0 all passed, 1 some failed, 74 when refray itself could not run one. */
+/* STATUS_OK all passed, STATUS_FAIL some failed (exit 1), STATUS_IO (74)
+ * when refray itself could not run one. */
 static int verdict_status(const conform_report *rep)
 {
     int status = 0;
     for (int i = 0; i < rep->count; i++) {
         conform_outcome o = rep->results[i].outcome;
         if (o == CONFORM_ERROR)
-            status = REFRAY_EXIT_IOERR;
+            status = STATUS_IO;
         else if (o != CONFORM_PASS && status == 0)
-            status = REFRAY_EXIT_FAIL;
+            status = STATUS_FAIL;
     }
     return status;
 }
@@ -280,7 +282,7 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
 {
     const manifest_scene **scenes = calloc((size_t)m->scene_count + 1, sizeof *scenes);
     conform_result *results = calloc((size_t)m->scene_count + 1, sizeof *results);
-    int count = 0, status = scenes && results ? select_scenes(a, m, scenes, &count) : REFRAY_EXIT_SOFTWARE;
+    int count = 0, status = scenes && results ? select_scenes(a, m, scenes, &count) : STATUS_NO_MEMORY;
     const char *tmp = getenv("TMPDIR");
     conform_run run = {kit_dir, a->cmd, a->format, a->adjust, a->timeout, a->keep,
                        tmp && tmp[0] == '/' ? tmp : "/tmp", &stop_requested};
@@ -289,13 +291,13 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
     conform_report rep = {kit_dir, a->cmd, results, ran, render_clock() - start};
     if (status == 0 && count == 0) {
         fprintf(stderr, "refray: error: conform: the kit has no scenes: nothing was checked\n");
-        status = REFRAY_EXIT_FAIL;
+        status = STATUS_FAIL;
     } else if (status == 0 && stop_requested) {
         fprintf(stderr, "refray: conform: stopped after %d of %d scenes; no report written\n", ran, count);
-        status = REFRAY_EXIT_INTERRUPTED;
+        status = STATUS_CANCELLED;
     } else if (status == 0) {
         if (a->json && conform_json_write(stdout, &rep) != 0)
-            status = REFRAY_EXIT_IOERR;
+            status = STATUS_IO;
         else if (!a->json && !a->tap)
             conform_text_summary(stdout, &rep);
         if (status == 0)
@@ -324,7 +326,7 @@ int cli_conform(int argc, char **argv)
             names += *p == ',';
     a.only = calloc(names, sizeof *a.only);
     if (!a.only)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     int status = parse_args(&a, argc, argv);
     manifest m;
     char *kit_dir = NULL;
@@ -336,5 +338,5 @@ int cli_conform(int argc, char **argv)
     }
     free(kit_dir);
     free(a.only);
-    return status < 0 ? REFRAY_EXIT_OK : status;
+    return status < 0 ? STATUS_OK : status;
 }

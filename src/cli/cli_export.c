@@ -8,8 +8,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
-#include "cli/cli.h"
+#include "refray.h"
+#include "io/fileio.h"
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "export/export_json.h"
@@ -116,33 +117,35 @@ static char *stem_of(const char *path)
     return stem;
 }
 
-static int export_json(export_args *a, const rf_scene *scene)
+static int export_json(export_args *a, const scene_model *scene)
 {
     export_json_opts o;
     char err[600];
     int status;
+    char generator[64];
     memset(&o, 0, sizeof o);
+    snprintf(generator, sizeof generator, "refray %s", rf_version());
     o.source = a->input;
-    o.generator = "refray " REFRAY_VERSION;
+    o.generator = generator;
     o.mesh_dir = a->mesh_dir;
-    char *dir = a->output ? file_dirname(a->output) : NULL, *stem = stem_of(a->output ? a->output : a->input);
+    char *dir = a->output ? file_dirname(NULL, a->output) : NULL, *stem = stem_of(a->output ? a->output : a->input);
     o.json_dir = dir;
     o.mesh_stem = stem;
     if ((a->output && !dir) || !stem) {
-        status = REFRAY_EXIT_SOFTWARE;
+        status = STATUS_NO_MEMORY;
         snprintf(err, sizeof err, "out of memory");
     } else if (a->output) {
         status = export_json_file(scene, &o, a->output, err, sizeof err);
     } else {
         status = export_json_write(scene, &o, stdout, err, sizeof err);
-        if (status == 0 && fflush(stdout) != 0)
-            status = REFRAY_EXIT_IOERR;
-        if (status == REFRAY_EXIT_IOERR && !err[0])
+        if (status == STATUS_OK && fflush(stdout) != 0)
+            status = STATUS_IO;
+        if (status == STATUS_IO && !err[0])
             snprintf(err, sizeof err, "cannot write to stdout");
     }
-    if (status != 0)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    free(dir);
+    mem_free_string(NULL, dir);
     free(stem);
     return status;
 }
@@ -155,7 +158,7 @@ static void print_notes(const char *input, const pov_notes *n)
         fprintf(stderr, "refray: approximation: ... and %d more in '%s'\n", n->count - POV_NOTE_MAX, input);
 }
 
-static int export_scene(export_args *a, const rf_scene *scene)
+static int export_scene(export_args *a, const scene_model *scene)
 {
     pov_notes notes;
     char err[600];
@@ -165,7 +168,7 @@ static int export_scene(export_args *a, const rf_scene *scene)
         status = pov_export_file(scene, &a->pov, a->output, &notes, err, sizeof err);
     else
         status = pov_export_write(scene, &a->pov, stdout, &notes);
-    if (status == REFRAY_EXIT_DATAERR) {
+    if (status == STATUS_DATA) {
         fprintf(stderr, "refray: error: cannot export '%s' to POV-Ray: %s\n", a->input, notes.reason);
         return status;
     }
@@ -174,7 +177,7 @@ static int export_scene(export_args *a, const rf_scene *scene)
         return status;
     }
     print_notes(a->input, &notes);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_export(int argc, char **argv)
@@ -184,8 +187,8 @@ int cli_export(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+        return status < 0 ? STATUS_OK : status;
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = strcmp(a.format, "json") == 0 ? export_json(&a, scene) : export_scene(&a, scene);

@@ -43,12 +43,12 @@ static int parse_args(kit_args *a, int argc, char **argv)
         }
         int used = cli_scene_opt(&a->scene, argc, argv, i);
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used > 0) {
             i += used - 1;
         } else if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0) {
             if (!cli_take_value(argc, argv, &i, &a->output))
-                return REFRAY_EXIT_USAGE;
+                return STATUS_USAGE;
         } else if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0) {
             a->quiet = 1;
         } else if (opt[0] == '-' && opt[1]) {
@@ -87,7 +87,7 @@ static int default_scenes(glob_t *g)
         return 0;
     fprintf(stderr, "refray: error: kit: no scenes given, and ./scenes/analytic/*.scene matches nothing "
             "(name the scenes, or run from refray's source tree)\n");
-    return REFRAY_EXIT_NOINPUT;
+    return STATUS_NO_INPUT;
 }
 
 int cli_kit(int argc, char **argv)
@@ -97,7 +97,7 @@ int cli_kit(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     a.scenes = calloc((size_t)argc, sizeof *a.scenes);
     if (!a.scenes)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     int status = parse_args(&a, argc, argv);
     glob_t g;
     memset(&g, 0, sizeof g);
@@ -107,7 +107,7 @@ int cli_kit(int argc, char **argv)
         a.count = (int)g.gl_pathc;
     }
     if (status == 0) {
-        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, REFRAY_VERSION};
+        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, rf_version()};
         manifest m;
         char why[1024];
         status = kit_build(a.output, a.scenes, a.count, &o, &m, why, sizeof why);
@@ -122,5 +122,5 @@ int cli_kit(int argc, char **argv)
         globfree(&g);
     else
         free(a.scenes);
-    return status < 0 ? REFRAY_EXIT_OK : status;
+    return status < 0 ? STATUS_OK : status;
 }

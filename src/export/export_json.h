@@ -4,8 +4,8 @@
  * materials resolved, transforms as matrices, meshes inline or as OBJ
  * files, the camera's basis and sample positions, each distributed light's
  * sampling rule, and a header of conventions.  Reading the document back
- * (scene_load of a .json path) gives the same model, bit for bit, so the
- * same image.
+ * (scene_load_json_source, or any file loader given a .json path) gives
+ * the same model, bit for bit, so the same image.
  */
 #ifndef REFRAY_EXPORT_JSON_H
 #define REFRAY_EXPORT_JSON_H
@@ -28,14 +28,14 @@ typedef struct export_json_opts {
 
 /*
  * Writes s as JSON to fp (and the mesh files, when asked, before it).
- * Returns 0; REFRAY_EXIT_USAGE when this build has no JSON support
- * (JSON=0); REFRAY_EXIT_SOFTWARE when out of memory; REFRAY_EXIT_IOERR
- * when a write failed.  On failure a one-line reason is in err (errlen
+ * Returns STATUS_OK; STATUS_USAGE when this build has no JSON support
+ * (JSON=0); STATUS_NO_MEMORY when out of memory; STATUS_IO when a write
+ * failed.  On failure a one-line reason is in err (errlen
  * bytes), except for a failed write to fp itself (err then empty).
  */
-int export_json_write(const rf_scene *s, const export_json_opts *o, FILE *fp, char *err, size_t errlen);
+int export_json_write(const scene_model *s, const export_json_opts *o, FILE *fp, char *err, size_t errlen);
 
-/* The same into path, atomically (base/fileio.h file_write_atomic). */
-int export_json_file(const rf_scene *s, const export_json_opts *o, const char *path, char *err, size_t errlen);
+/* The same into path, atomically (io/filewrite.h file_write_atomic). */
+int export_json_file(const scene_model *s, const export_json_opts *o, const char *path, char *err, size_t errlen);
 
 #endif

@@ -71,7 +71,7 @@ static json_t *format(export_json_build *b, const export_json_opts *o)
     return f;
 }
 
-static json_t *features(export_json_build *b, const rf_features *f)
+static json_t *features(export_json_build *b, const scene_features *f)
 {
     json_t *out = json_object();
     export_json_set(b, out, "shadows", json_boolean(f->shadows));
@@ -83,7 +83,7 @@ static json_t *features(export_json_build *b, const rf_features *f)
     return out;
 }
 
-static json_t *image(export_json_build *b, const rf_image_spec *im)
+static json_t *image(export_json_build *b, const scene_image_spec *im)
 {
     json_t *out = json_object();
     set_int(b, out, "width", im->width);
@@ -109,10 +109,10 @@ static json_t *pixel_samples(export_json_build *b, int k)
 
 /* The scalars of the camera_ray formula, and the ray of the first sample
  * of pixel (0, 0) as a worked example. */
-static json_t *screen(export_json_build *b, const rf_scene *s)
+static json_t *screen(export_json_build *b, const scene_model *s)
 {
-    const rf_camera *cam = &s->camera;
-    const rf_image_spec *im = &s->image;
+    const scene_camera *cam = &s->camera;
+    const scene_image_spec *im = &s->image;
     json_t *out = json_object(), *example = json_object();
     real half = cam->kind == CAMERA_ORTHOGRAPHIC ? 0.5 * cam->width : tan(0.5 * cam->fov * (REAL_PI / 180));
     set_real(b, out, "aspect", (double)((real)im->height / (real)im->width));
@@ -126,9 +126,9 @@ static json_t *screen(export_json_build *b, const rf_scene *s)
     return out;
 }
 
-static json_t *camera(export_json_build *b, const rf_scene *s)
+static json_t *camera(export_json_build *b, const scene_model *s)
 {
-    const rf_camera *cam = &s->camera;
+    const scene_camera *cam = &s->camera;
     json_t *out = json_object(), *basis = json_object();
     int ortho = cam->kind == CAMERA_ORTHOGRAPHIC;
     set_text(b, out, "projection", ortho ? "orthographic" : "perspective");
@@ -145,7 +145,7 @@ static json_t *camera(export_json_build *b, const rf_scene *s)
     return out;
 }
 
-static json_t *material(export_json_build *b, const rf_material *m)
+static json_t *material(export_json_build *b, const scene_material *m)
 {
     json_t *out = json_object();
     set_text(b, out, "name", m->name);
@@ -160,9 +160,9 @@ static json_t *material(export_json_build *b, const rf_material *m)
 /* The stratification, per-sample power and frame refray uses, and the
  * points of the first camera sample of pixel (0, 0) as a worked example
  * (conventions.light_samples has the rule). */
-static json_t *sampling(export_json_build *b, const rf_scene *s, int index)
+static json_t *sampling(export_json_build *b, const scene_model *s, int index)
 {
-    const rf_light *light = &s->lights[index];
+    const scene_light *light = &s->lights[index];
     light_setup setup = trace_light_setup(light, light->samples);
     json_t *out = json_object(), *grid = json_object(), *example = json_object(), *points = json_array();
     set_int(b, grid, "rows", setup.grid.rows);
@@ -187,11 +187,11 @@ static json_t *sampling(export_json_build *b, const rf_scene *s, int index)
     return out;
 }
 
-static json_t *light(export_json_build *b, const rf_scene *s, int index)
+static json_t *light(export_json_build *b, const scene_model *s, int index)
 {
     static const char *const kinds[] = {"point", "distant", "rectangle", "disk"};
     static const char *const falloffs[] = {"linear", "inverse_square", "none"};
-    const rf_light *l = &s->lights[index];
+    const scene_light *l = &s->lights[index];
     json_t *out = json_object();
     set_text(b, out, "kind", kinds[l->kind]);
     switch (l->kind) {
@@ -227,7 +227,7 @@ static json_t *matrix(const xform *a)
                      m[1][3], m[2][0], m[2][1], m[2][2], m[2][3], 0.0, 0.0, 0.0, 1.0);
 }
 
-static json_t *transform(export_json_build *b, const rf_prim *p)
+static json_t *transform(export_json_build *b, const scene_prim *p)
 {
     if (!p->has_xform)
         return json_null();
@@ -237,7 +237,7 @@ static json_t *transform(export_json_build *b, const rf_prim *p)
     return out;
 }
 
-static json_t *primitive(export_json_build *b, const rf_prim *p)
+static json_t *primitive(export_json_build *b, const scene_prim *p)
 {
     json_t *out = json_object(), *corners;
     set_text(b, out, "kind", scene_prim_name(p->kind));
@@ -291,7 +291,7 @@ static json_t *primitive(export_json_build *b, const rf_prim *p)
 
 /* The primitives in the scene's order; a mesh's triangles, which are
  * consecutive, as one mesh entry where its first triangle is. */
-static json_t *primitives(export_json_build *b, const rf_scene *s, const export_json_opts *o, int *status, char *err,
+static json_t *primitives(export_json_build *b, const scene_model *s, const export_json_opts *o, int *status, char *err,
                           size_t errlen)
 {
     json_t *out = json_array();
@@ -310,7 +310,7 @@ static json_t *primitives(export_json_build *b, const rf_scene *s, const export_
     return out;
 }
 
-json_t *export_json_document(const rf_scene *s, const export_json_opts *o, int *status, char *err, size_t errlen)
+json_t *export_json_document(const scene_model *s, const export_json_opts *o, int *status, char *err, size_t errlen)
 {
     export_json_build b = {0};
     json_t *doc = json_object(), *materials = json_array(), *lights = json_array();
@@ -331,7 +331,7 @@ json_t *export_json_document(const rf_scene *s, const export_json_opts *o, int *
     export_json_set(&b, doc, "lights", lights);
     export_json_set(&b, doc, "primitives", primitives(&b, s, o, status, err, errlen));
     if (*status == 0 && b.failed) {
-        *status = REFRAY_EXIT_SOFTWARE;
+        *status = STATUS_NO_MEMORY;
         snprintf(err, errlen, "out of memory");
     }
     if (*status != 0) {

@@ -31,14 +31,14 @@ json_t *export_json_conventions(export_json_build *b);
 
 /* Mesh m of s: inline arrays, or (o->mesh_dir) an OBJ file written now and
  * referenced.  Returns the object, or NULL with the status and a reason. */
-json_t *export_json_mesh(const rf_scene *s, int m, const export_json_opts *o, int *status, char *err,
+json_t *export_json_mesh(const scene_model *s, int m, const export_json_opts *o, int *status, char *err,
                          size_t errlen);
 
 /* The document of s (export_json.h), or NULL with the status and reason. */
-json_t *export_json_document(const rf_scene *s, const export_json_opts *o, int *status, char *err, size_t errlen);
+json_t *export_json_document(const scene_model *s, const export_json_opts *o, int *status, char *err, size_t errlen);
 
 /* Writes doc with the layout of spec/json.md (one value per line, short
- * arrays and objects on one line); 0 or REFRAY_EXIT_IOERR. */
+ * arrays and objects on one line); STATUS_OK or STATUS_IO. */
 int export_json_print(FILE *fp, const json_t *doc);
 
 #endif

@@ -8,7 +8,8 @@
  */
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
 #include "base/sampler.h"
 #include "export/export_json_impl.h"
 
@@ -70,7 +71,7 @@ typedef struct indexed {
     int count;
 } indexed;
 
-static int index_mesh(const rf_scene *s, const rf_mesh *m, indexed *x)
+static int index_mesh(const scene_model *s, const scene_mesh *m, indexed *x)
 {
     size_t corners = 3 * (size_t)m->count;
     x->count = m->count;
@@ -79,7 +80,7 @@ static int index_mesh(const rf_scene *s, const rf_mesh *m, indexed *x)
     if (!set_init(&x->positions, corners) || !set_init(&x->normals, corners) || !x->v || !x->vn)
         return 0;
     for (int i = 0; i < m->count; i++) {
-        const rf_prim *p = &s->prims[m->first_prim + i];
+        const scene_prim *p = &s->prims[m->first_prim + i];
         for (int k = 0; k < 3; k++) {
             x->v[i][k] = set_index(&x->positions, p->u.triangle.p[k]);
             x->vn[i][k] = p->u.triangle.has_normals ? set_index(&x->normals, p->u.triangle.n[k]) : -1;
@@ -134,7 +135,7 @@ static int fill_obj(FILE *fp, void *ctx)
             fprintf(fp, "f %d//%d %d//%d %d//%d\n", x->v[i][0] + 1, x->vn[i][0] + 1, x->v[i][1] + 1, x->vn[i][1] + 1,
                     x->v[i][2] + 1, x->vn[i][2] + 1);
     }
-    return ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return ferror(fp) ? STATUS_IO : STATUS_OK;
 }
 
 /* Writes the OBJ file of mesh m; its reference (mesh_dir/NAME.obj) in *ref. */
@@ -142,10 +143,10 @@ static int write_obj(const export_json_opts *o, int m, const indexed *x, char **
 {
     char name[300];
     snprintf(name, sizeof name, "%s.mesh%d.obj", o->mesh_stem ? o->mesh_stem : "scene", m);
-    *ref = file_join(o->mesh_dir, name);
-    char *dir = file_join(o->json_dir ? o->json_dir : ".", o->mesh_dir);
-    char *path = *ref ? file_join(o->json_dir ? o->json_dir : ".", *ref) : NULL;
-    int rc = REFRAY_EXIT_SOFTWARE;
+    *ref = file_join(NULL, o->mesh_dir, name);
+    char *dir = file_join(NULL, o->json_dir ? o->json_dir : ".", o->mesh_dir);
+    char *path = *ref ? file_join(NULL, o->json_dir ? o->json_dir : ".", *ref) : NULL;
+    int rc = STATUS_NO_MEMORY;
     if (!dir || !path)
         snprintf(err, errlen, "out of memory");
     else if ((rc = file_make_dirs(dir, err, errlen)) == 0)
@@ -155,11 +156,11 @@ static int write_obj(const export_json_opts *o, int m, const indexed *x, char **
     return rc;
 }
 
-json_t *export_json_mesh(const rf_scene *s, int m, const export_json_opts *o, int *status, char *err,
+json_t *export_json_mesh(const scene_model *s, int m, const export_json_opts *o, int *status, char *err,
                          size_t errlen)
 {
     export_json_build b = {0};
-    const rf_mesh *mesh = &s->meshes[m];
+    const scene_mesh *mesh = &s->meshes[m];
     indexed x;
     char *ref = NULL;
     memset(&x, 0, sizeof x);
@@ -169,7 +170,7 @@ json_t *export_json_mesh(const rf_scene *s, int m, const export_json_opts *o, in
     export_json_set(&b, out, "kind", json_string("mesh"));
     export_json_set(&b, out, "material", json_integer(s->prims[mesh->first_prim].material));
     export_json_set(&b, out, "source", source ? source : json_null());
-    *status = index_mesh(s, mesh, &x) ? 0 : REFRAY_EXIT_SOFTWARE;
+    *status = index_mesh(s, mesh, &x) ? STATUS_OK : STATUS_NO_MEMORY;
     if (*status == 0 && o->mesh_dir && (*status = write_obj(o, m, &x, &ref, err, errlen)) == 0)
         export_json_set(&b, out, "file", json_string(ref));
     else if (*status == 0)
@@ -177,7 +178,7 @@ json_t *export_json_mesh(const rf_scene *s, int m, const export_json_opts *o, in
     free(ref);
     index_free(&x);
     if (*status == 0 && b.failed)
-        *status = REFRAY_EXIT_SOFTWARE;
+        *status = STATUS_NO_MEMORY;
     if (*status != 0 && errlen && !err[0])
         snprintf(err, errlen, "out of memory");
     if (*status != 0) {

@@ -144,5 +144,5 @@ static int put_value(FILE *fp, const json_t *v, int indent)
 int export_json_print(FILE *fp, const json_t *doc)
 {
     int ok = put_value(fp, doc, 0) && fputc('\n', fp) != EOF;
-    return ok && !ferror(fp) ? 0 : REFRAY_EXIT_IOERR;
+    return ok && !ferror(fp) ? STATUS_OK : STATUS_IO;
 }

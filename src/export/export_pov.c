@@ -26,8 +26,8 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "export/export_pov.h"
+#include "io/filewrite.h"
 #include "render/lightsample.h"
 
 /* ---- Notes ---- */
@@ -68,7 +68,7 @@ static void refuse(pov_notes *n, const char *fmt, ...)
 }
 
 /* "file:line" of a span, for notes; "?" when it points nowhere. */
-static void where(const rf_scene *s, src_span sp, char *buf, size_t size)
+static void where(const scene_model *s, src_span sp, char *buf, size_t size)
 {
     if (sp.file < 0 || sp.file >= s->sources.count) {
         snprintf(buf, size, "?");
@@ -95,7 +95,7 @@ static void extent_add(extent *e, vec3 p)
 }
 
 /* The 8 corners of the local box lo..hi, taken to the world. */
-static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
+static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
 {
     for (int i = 0; i < 8; i++) {
         vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
@@ -104,7 +104,7 @@ static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
 }
 
 /* Planes are unbounded and left out: they need no distance. */
-static void extent_add_prim(extent *e, const rf_prim *p)
+static void extent_add_prim(extent *e, const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE: {
@@ -145,14 +145,14 @@ static void extent_add_prim(extent *e, const rf_prim *p)
 
 /* Centre and radius (at least 1) of a ball holding the camera, the lights
  * and every bounded primitive. */
-static double scene_radius(const rf_scene *s, vec3 *centre)
+static double scene_radius(const scene_model *s, vec3 *centre)
 {
     extent e = {vec_splat(0), vec_splat(0), 0};
     extent_add(&e, s->camera.eye);
     for (int i = 0; i < s->prim_count; i++)
         extent_add_prim(&e, &s->prims[i]);
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_DISTANT)
             continue;
         extent_add(&e, l->position);
@@ -181,7 +181,7 @@ typedef struct fade {
  * inverse_square with d0 > 0 has no match: 1 + (d/D)^p has no term
  * linear in d, (d + d0)^2 = d^2 + 2 d d0 + d0^2 has.  Returns 0 then.
  */
-static int light_fade(const rf_light *l, double radius, fade *f)
+static int light_fade(const scene_light *l, double radius, fade *f)
 {
     f->colour = 1.0;
     f->distance = 0.0;
@@ -207,7 +207,7 @@ static int light_fade(const rf_light *l, double radius, fade *f)
 
 /* ---- Checks ---- */
 
-static const char *light_word(rf_light_kind k)
+static const char *light_word(scene_light_kind k)
 {
     return k == LIGHT_POINT ? "point_light" : k == LIGHT_DISTANT ? "distant_light" : "distributed_light";
 }
@@ -218,7 +218,7 @@ static int is_pow2(int n)
 }
 
 /* [XCHK-MAP-AREA-1] the sampling of a distributed light. */
-static void check_sampling(const rf_light *l, const char *at, const pov_opts *o, pov_notes *n)
+static void check_sampling(const scene_light *l, const char *at, const pov_opts *o, pov_notes *n)
 {
     light_grid g = light_grid_for(l->samples);
     if (!o->area_lights) {
@@ -236,7 +236,7 @@ static void check_sampling(const rf_light *l, const char *at, const pov_opts *o,
                  "recursive visibility average weights its sources unevenly", at, g.rows, g.cols);
 }
 
-static void check_light(const rf_scene *s, const rf_light *l, double radius, const pov_opts *o, pov_notes *n)
+static void check_light(const scene_model *s, const scene_light *l, double radius, const pov_opts *o, pov_notes *n)
 {
     char at[256];
     fade f;
@@ -257,7 +257,7 @@ static void check_light(const rf_scene *s, const rf_light *l, double radius, con
 }
 
 /* An open cylinder or cone is a sheet, as in refray ([XCHK-MAP-QUADRIC-1]). */
-static int is_solid(const rf_prim *p)
+static int is_solid(const scene_prim *p)
 {
     return scene_prim_is_solid(p) || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
 }
@@ -268,7 +268,7 @@ static int is_grey(rgb c)
 }
 
 /* How the primitives use a material: as a solid, as a sheet. */
-static void material_use(const rf_scene *s, int m, int *solid, int *sheet)
+static void material_use(const scene_model *s, int m, int *solid, int *sheet)
 {
     *solid = *sheet = 0;
     for (int i = 0; i < s->prim_count; i++) {
@@ -284,7 +284,7 @@ static void material_use(const rf_scene *s, int m, int *solid, int *sheet)
 /* [XCHK-MAP-TIR-1] On total internal reflection POV-Ray adds the mirror
  * ray once, unweighted (and skips the Ks mirror ray); refray adds it with
  * weight Ks + t.  They agree where Ks + t = 1. */
-static int tir_differs(const rf_material *m)
+static int tir_differs(const scene_material *m)
 {
     return fabs(m->ks.x + m->t - 1) > 1e-12 || fabs(m->ks.y + m->t - 1) > 1e-12 ||
            fabs(m->ks.z + m->t - 1) > 1e-12;
@@ -295,15 +295,15 @@ static int tir_differs(const rf_material *m)
  * that as a level of depth; POV-Ray does not when the two iors are equal
  * (it continues the ray), so by default each such surface gets its own ior
  * a few float steps above 1 (POV-Ray keeps iors in single precision). */
-static int passes_straight(const rf_scene *s, const rf_prim *p)
+static int passes_straight(const scene_model *s, const scene_prim *p)
 {
-    const rf_material *m = &s->materials[p->material];
+    const scene_material *m = &s->materials[p->material];
     return s->image.max_depth > 1 && m->t > 0 && (!is_solid(p) || m->ior == 1);
 }
 
-static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_notes *n)
+static void check_material(const scene_model *s, int index, const pov_opts *o, pov_notes *n)
 {
-    const rf_material *m = &s->materials[index];
+    const scene_material *m = &s->materials[index];
     int solid, sheet, deep = s->image.max_depth > 1;
     char at[256], name[320];
     material_use(s, index, &solid, &sheet);
@@ -331,9 +331,9 @@ static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_
 /* [XCHK-MAP-MESH-2] POV-Ray turns a mirror ray that a vertex normal sends
  * into the surface back out (reflecting it about the geometric normal);
  * refray traces the mirror ray as it is. */
-static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
+static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
 {
-    const rf_prim *tri = &s->prims[m->first_prim];
+    const scene_prim *tri = &s->prims[m->first_prim];
     int smooth = 0;
     char at[256];
     for (int i = 0; i < m->count; i++)
@@ -345,7 +345,7 @@ static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
              "surface POV-Ray reflects it out again about the geometric normal, refray traces it as it is", at);
 }
 
-int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes)
+int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
 {
     vec3 centre;
     double radius = scene_radius(s, &centre);
@@ -392,7 +392,7 @@ static void put_comment_text(FILE *fp, const char *text)
         fputc(*c < 0x20 || *c == 0x7f ? '?' : *c, fp);
 }
 
-int pov_render_size(const rf_scene *s, int *width, int *height)
+int pov_render_size(const scene_model *s, int *width, int *height)
 {
     int k = s->image.samples;
     *width = s->image.width * k;
@@ -400,7 +400,7 @@ int pov_render_size(const rf_scene *s, int *width, int *height)
     return k;
 }
 
-static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const pov_notes *n)
+static void write_header(FILE *fp, const scene_model *s, const pov_opts *o, const pov_notes *n)
 {
     int w, h, k = pov_render_size(s, &w, &h);
     fputs("// POV-Ray 3.7 scene written by `refray export --to pov`", fp);
@@ -434,7 +434,7 @@ static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const p
 
 /* [XCHK-MAP-GLOBAL-1] Linear working space, the ambient light, the depth,
  * and no adaptive cut-off of weak rays. */
-static void write_globals(FILE *fp, const rf_scene *s, double scale)
+static void write_globals(FILE *fp, const scene_model *s, double scale)
 {
     int depth = s->image.max_depth < POV_MAX_TRACE_LEVEL ? s->image.max_depth : POV_MAX_TRACE_LEVEL;
     fputs("global_settings {\n  assumed_gamma 1.0\n  ambient_light rgb ", fp);
@@ -448,9 +448,9 @@ static void write_globals(FILE *fp, const rf_scene *s, double scale)
  * the horizontal field of view (POV-Ray sizes the direction from right);
  * an orthographic camera's right and up are the view's extent.  sky is
  * refray's up as written; look_at comes last, as it re-aims the others. */
-static void write_camera(FILE *fp, const rf_scene *s)
+static void write_camera(FILE *fp, const scene_model *s)
 {
-    const rf_camera *c = &s->camera;
+    const scene_camera *c = &s->camera;
     double aspect = (double)s->image.width / (double)s->image.height;
     int ortho = c->kind == CAMERA_ORTHOGRAPHIC;
     fprintf(fp, "camera {\n  %s\n  location ", ortho ? "orthographic" : "perspective");
@@ -493,7 +493,7 @@ static void write_point_source(FILE *fp, vec3 pos, rgb power, const fade *f)
 /* [XCHK-MAP-DISTANT-1] A parallel light: POV-Ray shades with the fixed
  * direction and tests shadows up to the plane through its location, which
  * is put far behind everything (1000 scene radii) so no occluder is cut. */
-static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre, double radius)
+static void write_distant(FILE *fp, const scene_light *l, double scale, vec3 centre, double radius)
 {
     vec3 from = vec_sub(centre, vec_scale(l->direction, 1000.0 * radius));
     fputs("light_source { ", fp);
@@ -508,7 +508,7 @@ static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre
 /* [XCHK-MAP-AREA-1] Default: the light's samples as point sources of
  * E/samples at the centres of its cells, where refray puts them before
  * jitter (lightsample.h). */
-static void write_distributed_points(FILE *fp, const rf_light *l, const fade *f)
+static void write_distributed_points(FILE *fp, const scene_light *l, const fade *f)
 {
     light_grid g = light_grid_for(l->samples);
     vec3 t1 = vec_splat(0), t2 = vec_splat(0);
@@ -534,7 +534,7 @@ static int ceil_log2(int n)
  * so the axes are shrunk by (n - 1)/n to put the points at the cells'
  * centres; area_illumination shades each point (not only the centre);
  * adaptive as deep as the grid so every point's visibility is traced. */
-static void write_area(FILE *fp, const rf_light *l, const fade *f)
+static void write_area(FILE *fp, const scene_light *l, const fade *f)
 {
     light_grid g = light_grid_for(l->samples);
     vec3 u = l->edge_u, v = l->edge_v, centre = l->position;
@@ -561,11 +561,11 @@ static void write_area(FILE *fp, const rf_light *l, const fade *f)
     fputs(" }\n", fp);
 }
 
-static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 centre, double radius)
+static void write_lights(FILE *fp, const scene_model *s, const pov_opts *o, vec3 centre, double radius)
 {
     double scale = o->scale > 0 ? o->scale : 1.0;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         fade f;
         light_fade(l, radius, &f);
         f.colour *= scale;
@@ -586,7 +586,7 @@ static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 ce
  * ambient and diffuse; t weights the transmitted ray and the shadows);
  * ambient 1 and diffuse 1 in place of POV-Ray's 0.1 and 0.6, so that the
  * terms are Kd Ia and Kd E cos; phong and reflection from Ks. */
-static void write_texture(FILE *fp, int index, const rf_material *m)
+static void write_texture(FILE *fp, int index, const scene_material *m)
 {
     double phong = is_grey(m->ks) ? m->ks.x : (m->ks.x + m->ks.y + m->ks.z) / 3;
     fprintf(fp, "#declare RF_T%d = texture {  // %s\n  pigment { rgbt <", index, m->name ? m->name : "inline");
@@ -614,9 +614,9 @@ static void write_texture(FILE *fp, int index, const rf_material *m)
  * triangle) passes rays straight on, as POV-Ray does with ior 1 (a POV-Ray
  * plane is a half-space and would bend them).  A clear surface (t = 1)
  * lets all light through, which no_shadow says without tracing it. */
-static void write_material_ref(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+static void write_material_ref(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
 {
-    const rf_material *m = &s->materials[p->material];
+    const scene_material *m = &s->materials[p->material];
     fprintf(fp, "  texture { RF_T%d }\n", p->material);
     if (is_solid(p) && m->t > 0 && m->ior != 1) {
         fputs("  interior { ior ", fp);
@@ -653,7 +653,7 @@ static void write_matrix(FILE *fp, const xform *x)
  * to the centre.  Any orthonormal frame with that image of y will do, the
  * torus being the same under every turn about its axis and every mirror
  * through it. */
-static void write_torus_placement(FILE *fp, const rf_prim *p)
+static void write_torus_placement(FILE *fp, const scene_prim *p)
 {
     vec3 a = vec_normalize(to_pov(p->u.torus.axis)), c = to_pov(p->u.torus.center);
     vec3 least = fabs(a.x) <= fabs(a.y) && fabs(a.x) <= fabs(a.z) ? vec_make(1, 0, 0)
@@ -672,7 +672,7 @@ static void write_torus_placement(FILE *fp, const rf_prim *p)
     }
 }
 
-static void write_shape(FILE *fp, const rf_prim *p)
+static void write_shape(FILE *fp, const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -745,7 +745,7 @@ static void write_shape(FILE *fp, const rf_prim *p)
     fputc('\n', fp);
 }
 
-static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+static void write_prim(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
 {
     write_shape(fp, p);
     write_material_ref(fp, s, o, p, nudged);
@@ -756,7 +756,7 @@ static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_
 
 /* A triangle's vertex normals, or its geometric normal at all three
  * corners when it has none (a flat face of a smooth mesh). */
-static void triangle_normals(const rf_prim *p, vec3 n[3])
+static void triangle_normals(const scene_prim *p, vec3 n[3])
 {
     vec3 g = vec_normalize(vec_cross(vec_sub(p->u.triangle.p[1], p->u.triangle.p[0]),
                                      vec_sub(p->u.triangle.p[2], p->u.triangle.p[0])));
@@ -768,9 +768,9 @@ static void triangle_normals(const rf_prim *p, vec3 n[3])
  * sharing: the corners are written as refray holds them), with its vertex
  * normals if any triangle has them, and an inside_vector so that POV-Ray
  * treats it as a solid for refraction, as refray does. */
-static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_mesh *m, int *nudged)
+static void write_mesh(FILE *fp, const scene_model *s, const pov_opts *o, const scene_mesh *m, int *nudged)
 {
-    const rf_prim *tri = &s->prims[m->first_prim];
+    const scene_prim *tri = &s->prims[m->first_prim];
     int smooth = 0;
     for (int i = 0; i < m->count; i++)
         smooth |= tri[i].u.triangle.has_normals;
@@ -800,14 +800,14 @@ static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_
     fputs("}\n", fp);
 }
 
-static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
+static void write_geometry(FILE *fp, const scene_model *s, const pov_opts *o)
 {
     int nudged = 0;
     for (int i = 0; i < s->material_count; i++)
         write_texture(fp, i, &s->materials[i]);
     fputc('\n', fp);
     for (int i = 0; i < s->prim_count; i++) {
-        const rf_prim *p = &s->prims[i];
+        const scene_prim *p = &s->prims[i];
         if (p->kind == PRIM_TRIANGLE && p->mesh >= 0) {
             if (s->meshes[p->mesh].first_prim == i)
                 write_mesh(fp, s, o, &s->meshes[p->mesh], &nudged);
@@ -817,24 +817,24 @@ static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
     }
 }
 
-int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *notes)
+int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes)
 {
     vec3 centre;
     double radius = scene_radius(s, &centre);
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     write_header(fp, s, o, notes);
     write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
     write_camera(fp, s);
     write_lights(fp, s, o, centre, radius);
     write_geometry(fp, s, o);
-    return fflush(fp) != 0 || ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return fflush(fp) != 0 || ferror(fp) ? STATUS_IO : 0;
 }
 
 /* ---- The atomic file ---- */
 
 typedef struct pov_job {
-    const rf_scene *s;
+    const scene_model *s;
     const pov_opts *o;
     pov_notes *notes;
 } pov_job;
@@ -845,7 +845,7 @@ static int fill_pov(FILE *fp, void *ctx)
     return pov_export_write(job->s, job->o, fp, job->notes);
 }
 
-int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
+int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen)
 {
     pov_job job = {s, o, notes};
@@ -853,9 +853,9 @@ int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_
     if (err && errlen)
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     int rc = file_write_atomic(path, fill_pov, &job, why, sizeof why);
-    if (rc != 0 && rc != REFRAY_EXIT_DATAERR)
+    if (rc != STATUS_OK && rc != STATUS_DATA)
         snprintf(err, errlen, "%s", why);
     return rc;
 }

@@ -2,16 +2,16 @@
  * adjust.c - see adjust.h.
  */
 #include <math.h>
+#include <string.h>
 #include "image/adjust.h"
 
-int img_downsample(const rf_image *in, int k, rf_image *out)
+int img_downsample(const img_buf *in, int k, img_buf *out)
 {
-    out->width = out->height = 0;
-    out->rgb = NULL;
+    memset(out, 0, sizeof *out);
     if (k < 1 || in->width < k || in->height < k || in->width % k || in->height % k)
-        return IMG_EUSAGE;
+        return STATUS_USAGE;
     int status = img_create(out, in->width / k, in->height / k);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         return status;
     double n = (double)k * (double)k;
     for (int y = 0; y < out->height; y++)
@@ -24,17 +24,17 @@ int img_downsample(const rf_image *in, int k, rf_image *out)
             for (int c = 0; c < 3; c++)
                 px[c] /= n;
         }
-    return IMG_OK;
+    return STATUS_OK;
 }
 
-void img_scale(rf_image *img, double s)
+void img_scale(img_buf *img, double s)
 {
     size_t n = 3 * (size_t)img->width * (size_t)img->height;
     for (size_t i = 0; i < n; i++)
         img->rgb[i] *= s;
 }
 
-long img_count_nonfinite(const rf_image *img)
+long img_count_nonfinite(const img_buf *img)
 {
     size_t n = 3 * (size_t)img->width * (size_t)img->height;
     long count = 0;

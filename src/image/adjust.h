@@ -13,16 +13,16 @@
 /*
  * out = in with every k x k block averaged: out(x, y) is the mean of
  * in(k x + i, k y + j) for i, j in [0, k), channel by channel.  in must be
- * a whole number of blocks on both axes.  Returns IMG_OK; IMG_EUSAGE for
- * k < 1 or a size that is not a multiple of k (out is then empty);
- * IMG_EOSERR when out of memory.
+ * a whole number of blocks on both axes.  Returns STATUS_OK; STATUS_USAGE
+ * for k < 1 or a size that is not a multiple of k (out is then empty);
+ * STATUS_NO_MEMORY when out of memory.
  */
-int img_downsample(const rf_image *in, int k, rf_image *out);
+int img_downsample(const img_buf *in, int k, img_buf *out);
 
 /* Every channel of every pixel of img multiplied by s. */
-void img_scale(rf_image *img, double s);
+void img_scale(img_buf *img, double s);
 
 /* The number of channel values of img that are NaN or infinite. */
-long img_count_nonfinite(const rf_image *img);
+long img_count_nonfinite(const img_buf *img);
 
 #endif

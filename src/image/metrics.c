@@ -4,7 +4,7 @@
 #include <math.h>
 #include "image/metrics.h"
 
-static double peak_of(const rf_image *b, const unsigned char *excluded)
+static double peak_of(const img_buf *b, const unsigned char *excluded)
 {
     double peak = 0;
     size_t n = (size_t)b->width * (size_t)b->height;
@@ -20,7 +20,7 @@ typedef struct over_rule {
     double rel, floor_frac, abs;
 } over_rule;
 
-static void compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, over_rule rule,
+static void compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, over_rule rule,
                     image_metrics *m)
 {
     size_t n = (size_t)b->width * (size_t)b->height;
@@ -55,14 +55,14 @@ static void compare(const rf_image *a, const rf_image *b, const unsigned char *e
     m->psnr = m->rms > 0 ? 20 * log10((m->peak > 0 ? m->peak : 1) / m->rms) : HUGE_VAL;
 }
 
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
                      image_metrics *m)
 {
     over_rule rule = {tol, 1e-12, 0};
     compare(a, b, excluded, rule, m);
 }
 
-void metrics_compare_abs(const rf_image *a, const rf_image *b, const unsigned char *excluded, double rel,
+void metrics_compare_abs(const img_buf *a, const img_buf *b, const unsigned char *excluded, double rel,
                          double abs_tol, image_metrics *m)
 {
     over_rule rule = {rel, 0, abs_tol};

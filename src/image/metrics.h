@@ -31,12 +31,12 @@ typedef struct image_metrics {
 
 /* a and b must have the same size.  excluded: width*height bytes, non-zero
  * to skip a pixel, or NULL.  tol: the relative tolerance for `over`. */
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
                      image_metrics *m);
 
 /* The same metrics, with `over` the pixels where some channel has
  * |A - B| > rel * |B| + abs_tol (a NaN counts as over). */
-void metrics_compare_abs(const rf_image *a, const rf_image *b, const unsigned char *excluded, double rel,
+void metrics_compare_abs(const img_buf *a, const img_buf *b, const unsigned char *excluded, double rel,
                          double abs_tol, image_metrics *m);
 
 #endif

@@ -48,13 +48,13 @@ typedef struct parser {
     diag *d;
     obj_mesh *mesh;
     long max_triangles;          /* clamped to [0, INT_MAX] */
-    int position_cap, normal_cap, triangle_cap;
     int texcoord_count;          /* vt statements seen: t indices are checked against it */
     corner *corners;             /* the face being read */
     int corner_cap;
     src_span warned[WARNED_MAX]; /* keywords of the unknown statements warned about */
     int warned_count;
     int stop;                    /* a limit was hit or memory ran out: give up */
+    int out_of_memory;
 } parser;
 
 static int is_blank(char c)
@@ -270,8 +270,8 @@ static int resolve_index(parser *p, src_span tok, int count, const char *what, i
 
 /* Returns array grown to hold at least `need` elements of `size` bytes (its
  * capacity *cap doubling, capped at limit), or NULL when need exceeds limit,
- * the byte count would overflow, or realloc fails; array stays valid then. */
-static void *grow(void *array, int *cap, long need, size_t size, long limit)
+ * the byte count would overflow, or memory runs out; array stays valid then. */
+static void *grow(const mem *m, void *array, int *cap, long need, size_t size, long limit)
 {
     if (need <= *cap)
         return array;
@@ -282,7 +282,7 @@ static void *grow(void *array, int *cap, long need, size_t size, long limit)
         n = n > limit / 2 ? limit : 2 * n;
     if ((size_t)n > SIZE_MAX / size)
         return NULL;
-    void *grown = realloc(array, (size_t)n * size);
+    void *grown = mem_resize_array(m, array, (size_t)*cap, (size_t)n, size);
     if (grown)
         *cap = (int)n;
     return grown;
@@ -292,6 +292,7 @@ static void out_of_memory(parser *p, src_span where)
 {
     diag_report(p->d, DIAG_ERROR, where, "out of memory reading OBJ file");
     p->stop = 1;
+    p->out_of_memory = 1;
 }
 
 /* Appends v to *array (count *count, capacity *cap); reports and returns 0
@@ -303,7 +304,7 @@ static int append_vec(parser *p, vec3 **array, int *count, int *cap, vec3 v, src
         p->stop = 1;
         return 0;
     }
-    vec3 *a = grow(*array, cap, (long)*count + 1, sizeof *a, INT_MAX);
+    vec3 *a = grow(&p->mesh->mem, *array, cap, (long)*count + 1, sizeof *a, INT_MAX);
     if (!a) {
         out_of_memory(p, where);
         return 0;
@@ -346,7 +347,7 @@ static void parse_vertex(parser *p, src_span kw)
     while (next_token(p, &tok))
         if (!read_number(p, tok, &ignored))
             return;
-    append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->position_cap, v, kw);
+    append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->mesh->position_cap, v, kw);
 }
 
 /* vn x y z */
@@ -361,7 +362,7 @@ static void parse_normal(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
-    append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->normal_cap, n, kw);
+    append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->mesh->normal_cap, n, kw);
 }
 
 /* Splits tok at '/' into field[0..2]; returns the number of fields, or 4
@@ -423,7 +424,7 @@ static void emit_fan(parser *p, int n, src_span where)
         p->stop = 1;
         return;
     }
-    obj_triangle *t = grow(m->triangles, &p->triangle_cap, m->triangle_count + add, sizeof *t,
+    obj_triangle *t = grow(&m->mem, m->triangles, &m->triangle_cap, m->triangle_count + add, sizeof *t,
                            p->max_triangles);
     if (!t) {
         out_of_memory(p, where);
@@ -457,7 +458,7 @@ static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
                     has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
         return 0;
     }
-    corner *all = grow(p->corners, &p->corner_cap, (long)n + 1, sizeof *all, INT_MAX);
+    corner *all = grow(&p->mesh->mem, p->corners, &p->corner_cap, (long)n + 1, sizeof *all, INT_MAX);
     if (!all) {
         out_of_memory(p, tok);
         return 0;
@@ -560,6 +561,7 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     parser p;
     memset(&p, 0, sizeof p);
     memset(out, 0, sizeof *out);
+    out->mem = sources->mem;
     p.text = f->text;
     p.len = f->len;
     p.file = file;
@@ -570,17 +572,18 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
         parse_file(&p);
     if (d->errors == errors_before && out->triangle_count == 0)
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
-    free(p.corners);
+    mem_free(&out->mem, p.corners, (size_t)p.corner_cap * sizeof *p.corners);
     if (d->errors == errors_before)
         return 1;
     obj_free(out);
-    return 0;
+    return p.out_of_memory ? -1 : 0;
 }
 
 void obj_free(obj_mesh *mesh)
 {
-    free(mesh->positions);
-    free(mesh->normals);
-    free(mesh->triangles);
+    mem m = mesh->mem;
+    mem_free(&m, mesh->positions, (size_t)mesh->position_cap * sizeof *mesh->positions);
+    mem_free(&m, mesh->normals, (size_t)mesh->normal_cap * sizeof *mesh->normals);
+    mem_free(&m, mesh->triangles, (size_t)mesh->triangle_cap * sizeof *mesh->triangles);
     memset(mesh, 0, sizeof *mesh);
 }

@@ -45,13 +45,17 @@ typedef struct obj_mesh {
     int normal_count;
     obj_triangle *triangles;
     int triangle_count;
+    int position_cap, normal_cap, triangle_cap; /* entries allocated */
+    mem mem;                     /* the source set's: where the arrays live */
 } obj_mesh;
 
 /* Parses sources->files[file] as OBJ.  Every problem goes to d with the
  * span of the offending token: errors for bad input, one warning per kind of
  * unknown statement ("unknown OBJ statement 'xyz' ignored").  Returns 1 when
  * the mesh is usable (this call reported no error; warnings allowed); 0
- * otherwise, and *out is then empty (all NULL / 0, nothing to free).
+ * otherwise, -1 when memory ran out ("out of memory reading OBJ file"
+ * reported), and *out is then empty (all NULL / 0, nothing to free).  The
+ * arrays come from the allocator of sources.
  * max_triangles: a mesh with more triangles is refused with an error at the
  * face that crosses the limit, and no memory is ever reserved for more than
  * that many triangles.  A mesh with no faces is an error.  Degenerate

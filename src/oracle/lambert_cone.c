@@ -16,10 +16,10 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     vec3 c;
     double r;
-    const rf_prim *p = &s->prims[0];
+    const scene_prim *p = &s->prims[0];
     int one = s->prim_count == 1 && p->kind == PRIM_CONE;
     if (one && p->u.cone.open)
         return oracle_refuse(why, n, FAMILY ": the cone must be closed (an open one shows, and shadows, its inside)");

@@ -18,7 +18,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     vec3 c;
     double r;
     if (s->prim_count == 1 && s->prims[0].kind == PRIM_CYLINDER && s->prims[0].u.cylinder.open)

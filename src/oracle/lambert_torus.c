@@ -21,7 +21,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_prim *p = &v->scene->prims[0];
+    const scene_prim *p = &v->scene->prims[0];
     int one = v->scene->prim_count == 1 && p->kind == PRIM_TORUS;
     vec3 c = one ? p->u.torus.center : vec_make(0, 0, 0);
     double r = one ? p->u.torus.major + p->u.torus.minor : 1;

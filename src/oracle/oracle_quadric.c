@@ -14,7 +14,7 @@ static vec3 unit(vec3 v) { return vec_scale(v, 1 / sqrt(vec_dot(v, v))); }
 
 /* ---- frustum ------------------------------------------------------------ */
 
-oracle_frustum oracle_frustum_of(const rf_prim *p)
+oracle_frustum oracle_frustum_of(const scene_prim *p)
 {
     oracle_frustum f;
     int cone = p->kind == PRIM_CONE;
@@ -199,7 +199,7 @@ oracle_chord_kind oracle_line_frustum(const oracle_frustum *f, vec3 o, vec3 d, d
 
 /* ---- ring torus ---------------------------------------------------------- */
 
-oracle_ring oracle_ring_of(const rf_prim *p)
+oracle_ring oracle_ring_of(const scene_prim *p)
 {
     oracle_ring t;
     t.c = p->u.torus.center;

@@ -25,7 +25,7 @@ typedef struct oracle_frustum {
     double len, r0, r1;
 } oracle_frustum;
 
-oracle_frustum oracle_frustum_of(const rf_prim *p);
+oracle_frustum oracle_frustum_of(const scene_prim *p);
 
 /* The centre and radius of a ball holding the frustum. */
 void oracle_frustum_ball(const oracle_frustum *f, vec3 *centre, double *radius);
@@ -45,7 +45,7 @@ typedef struct oracle_ring {
     double major, minor;
 } oracle_ring;
 
-oracle_ring oracle_ring_of(const rf_prim *p);
+oracle_ring oracle_ring_of(const scene_prim *p);
 
 /* The first point of the line o + s d (d unit, o outside the torus's
  * bounding sphere) in the solid torus: *s, and the outward unit normal *n.

@@ -4,10 +4,10 @@
 #include <math.h>
 #include "oracle/quadric_family.h"
 
-int quadric_family_accepts(const oracle_view *v, rf_prim_kind kind, const char *what, vec3 c, double r,
+int quadric_family_accepts(const oracle_view *v, scene_prim_kind kind, const char *what, vec3 c, double r,
                            int distant_only, const char *family, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     vec3 f, right, up;
     if (s->prim_count != 1 || s->prims[0].kind != kind)
         return oracle_refuse(why, n, "%s: the scene must be one %s", family, what);
@@ -16,7 +16,7 @@ int quadric_family_accepts(const oracle_view *v, rf_prim_kind kind, const char *
         !oracle_accept_lights(s, family, why, n))
         return 0;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_POINT && distant_only)
             return oracle_refuse(why, n, "%s: light %d is a point light (distant lights only)", family, i + 1);
         if (l->kind == LIGHT_POINT && !(vec_length(vec_sub(l->position, c)) > r * (1 + ORACLE_EDGE_MARGIN)))
@@ -34,7 +34,7 @@ int quadric_family_accepts(const oracle_view *v, rf_prim_kind kind, const char *
 oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d, oracle_shadow_fn shadow,
                                    const void *ctx, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     oracle_shading sh;
     if (oracle_shade_direct(s, oracle_material(s, 0), p, n, vec_neg(d), shadow, ctx, &sh) != ORACLE_EXACT)
         return ORACLE_AMBIGUOUS;

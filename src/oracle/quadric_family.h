@@ -14,7 +14,7 @@
  * with point and distant lights outside the ball (c, r) (distant_only:
  * distant lights alone) and an orthographic camera whose image plane lies
  * wholly in front of that ball; else refuses with the reason. */
-int quadric_family_accepts(const oracle_view *v, rf_prim_kind kind, const char *what, vec3 c, double r,
+int quadric_family_accepts(const oracle_view *v, scene_prim_kind kind, const char *what, vec3 c, double r,
                            int distant_only, const char *family, char *why, size_t n);
 
 /* The Lambert value Kd (Ia + sum I S max(0, N.L)) at p with normal n for a

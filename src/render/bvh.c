@@ -84,7 +84,7 @@ static real pad(real lo, real hi)
 }
 
 /* The padded box of primitive p; 0 when it has no finite bounds. */
-static int item_of(const rf_prim *p, int index, build_item *out)
+static int item_of(const scene_prim *p, int index, build_item *out)
 {
     vec3 lo, hi;
     if (!isect_prim_bounds(p, &lo, &hi))
@@ -283,19 +283,17 @@ static void build_node(const build_ctx *ctx, int node, int begin, int end, int d
 
 void bvh_free(bvh *b)
 {
-    free(b->nodes);
-    free(b->items);
-    free(b->unbounded);
+    mem m = b->mem;
+    mem_free(&m, b->nodes, (size_t)b->node_cap * sizeof *b->nodes);
+    mem_free(&m, b->items, (size_t)b->item_count * sizeof *b->items);
+    mem_free(&m, b->unbounded, (size_t)b->unbounded_cap * sizeof *b->unbounded);
     memset(b, 0, sizeof *b);
+    b->mem = m;
 }
 
-static void *alloc_array(size_t count, size_t size)
-{
-    return malloc((count > 0 ? count : 1) * size);
-}
-
-/* Sorts primitives into build items (bounded) and b->unbounded. */
-static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
+/* Sorts primitives into build items (bounded) and b->unbounded, which is
+ * then cut to its count (it was made for every primitive). */
+static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
 {
     int bounded = 0;
     for (int i = 0; i < count; i++) {
@@ -304,6 +302,12 @@ static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
         else
             b->unbounded[b->unbounded_count++] = i;
     }
+    int *fit = mem_resize_array(&b->mem, b->unbounded, (size_t)b->unbounded_cap, (size_t)b->unbounded_count,
+                                sizeof *fit);
+    if (fit) {
+        b->unbounded = fit;
+        b->unbounded_cap = b->unbounded_count;
+    }
     return bounded;
 }
 
@@ -311,40 +315,47 @@ static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
 static int build_tree(build_ctx *ctx, int count)
 {
     bvh *b = ctx->b;
-    b->nodes = alloc_array(2 * (size_t)count, sizeof *b->nodes);
-    b->items = alloc_array((size_t)count, sizeof *b->items);
-    if (!b->nodes || !b->items)
+    b->nodes = mem_calloc(&b->mem, 2 * (size_t)count, sizeof *b->nodes);
+    if (!b->nodes)
         return 0;
+    b->node_cap = 2 * count;
+    b->items = mem_calloc(&b->mem, (size_t)count, sizeof *b->items);
+    if (!b->items)
+        return 0;
+    b->item_count = count;
     b->node_count = 1;
     build_node(ctx, 0, 0, count, 1);
     for (int i = 0; i < count; i++)
         b->items[i] = ctx->items[i].index;
-    b->item_count = count;
-    bvh_node *fit = realloc(b->nodes, (size_t)b->node_count * sizeof *fit);
-    if (fit)
+    bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
+    if (fit) {
         b->nodes = fit;
+        b->node_cap = b->node_count;
+    }
     return 1;
 }
 
-int bvh_build(bvh *b, const rf_prim *prims, int count)
+int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
 {
     build_ctx ctx = {b, NULL, NULL, NULL};
     int ok = 0;
     memset(b, 0, sizeof *b);
+    b->mem = mem_pick(m);
     if (count < 0 || count > INT_MAX / 2 || (size_t)count > SIZE_MAX / 2 / sizeof(build_item))
         return 0;
     size_t n = (size_t)count;
-    ctx.items = alloc_array(n, sizeof *ctx.items);
-    ctx.spare = alloc_array(n, sizeof *ctx.spare);
-    ctx.keys = alloc_array(n, sizeof *ctx.keys);
-    b->unbounded = alloc_array(n, sizeof *b->unbounded);
+    ctx.items = mem_calloc(&b->mem, n, sizeof *ctx.items);
+    ctx.spare = mem_calloc(&b->mem, n, sizeof *ctx.spare);
+    ctx.keys = mem_calloc(&b->mem, n, sizeof *ctx.keys);
+    b->unbounded = mem_calloc(&b->mem, n, sizeof *b->unbounded);
+    b->unbounded_cap = b->unbounded ? count : 0;
     if (ctx.items && ctx.spare && ctx.keys && b->unbounded) {
         int bounded = classify(b, prims, count, ctx.items);
         ok = bounded == 0 || build_tree(&ctx, bounded);
     }
-    free(ctx.items);
-    free(ctx.spare);
-    free(ctx.keys);
+    mem_free(&b->mem, ctx.items, n * sizeof *ctx.items);
+    mem_free(&b->mem, ctx.spare, n * sizeof *ctx.spare);
+    mem_free(&b->mem, ctx.keys, n * sizeof *ctx.keys);
     if (!ok)
         bvh_free(b);
     return ok;
@@ -457,7 +468,7 @@ static void nearest_add(nearest *ns, const hit *h)
     ns->rr.tmax = limit;
 }
 
-static void nearest_test(nearest *ns, const rf_prim *prims, int index)
+static void nearest_test(nearest *ns, const scene_prim *prims, int index)
 {
     hit h;
     if (ns->stats)
@@ -504,7 +515,7 @@ static int descend(const bvh *b, int node, const slab_ray *s, nearest *ns, stack
     return ha ? a : hc ? c : -1;
 }
 
-static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
+static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
@@ -533,7 +544,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
     }
 }
 
-static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
+static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     for (int i = 0; i < b->unbounded_count; i++)
         nearest_test(ns, prims, b->unbounded[i]);
@@ -541,7 +552,7 @@ static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats)
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
 {
     nearest ns;
     ns.rr = *r;
@@ -564,12 +575,12 @@ int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_
     return 1;
 }
 
-int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h)
+int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
 {
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_prim(const rf_prim *prims, int index, const ray *r,
+static int visit_prim(const scene_prim *prims, int index, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     hit out[ISECT_MAX_CROSSINGS];
@@ -587,7 +598,7 @@ static int visit_prim(const rf_prim *prims, int index, const ray *r,
 
 /* Depth-first over every node the ray meets; the stack holds at most one
  * pending sibling per level plus the node being expanded. */
-static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
+static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
                         int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     int stack[BVH_MAX_DEPTH + 1], sp = 0;
@@ -615,7 +626,7 @@ static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
     return 0;
 }
 
-int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
@@ -626,7 +637,7 @@ int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
     return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
 }
 
-int bvh_visit(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx)
 {
     return bvh_visit_stats(b, prims, r, fn, ctx, NULL);

@@ -351,7 +351,7 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, const ray *r, hit
     return 1;
 }
 
-static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
+static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -385,7 +385,7 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
  * entering is kept from the local frame: d . n has the same sign in both,
  * since (L^-1 d) . n_local = d . (L^-T n_local).
  */
-static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
+static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
     if (!p->has_xform)
         return local_hits(p, r, out, max);
@@ -401,7 +401,7 @@ static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
     return n;
 }
 
-int isect_prim(const rf_prim *p, ray *r, hit *h)
+int isect_prim(const scene_prim *p, ray *r, hit *h)
 {
     if (!prim_hits(p, r, h, 1))
         return 0;
@@ -409,7 +409,7 @@ int isect_prim(const rf_prim *p, ray *r, hit *h)
     return 1;
 }
 
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS])
+int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
     return prim_hits(p, r, out, ISECT_MAX_CROSSINGS);
 }
@@ -473,7 +473,7 @@ static void ends_bounds(vec3 from, vec3 to, real r0, real r1, vec3 *lo, vec3 *hi
 
 /* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
  * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
-static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+static int local_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
     vec3 c, e;
     switch (p->kind) {
@@ -515,7 +515,7 @@ static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
-int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
     vec3 l, h;
     if (!local_bounds(p, &l, &h))
@@ -538,7 +538,7 @@ int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
-static real local_magnitude(const rf_prim *p)
+static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -565,7 +565,7 @@ static real local_magnitude(const rf_prim *p)
 
 /* For a local frame: |L x + T|_max <= |L|_inf |x|_max + |T|_max, with
  * |L|_inf the largest row sum of absolute values. */
-real isect_prim_magnitude(const rf_prim *p)
+real isect_prim_magnitude(const scene_prim *p)
 {
     real m = local_magnitude(p);
     if (!p->has_xform)
@@ -646,7 +646,7 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target)
  * there that heads out through that face meets it at t <= 0 and leaves a
  * closed mirror box (spec/numerics.md, "Box edges").  Boxes thinner than
  * twice the offset are left alone. */
-static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
+static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
 {
     vec3 lo = p->u.box.lo, hi = p->u.box.hi;
     for (int k = 0; k < 3; k++) {
@@ -657,7 +657,7 @@ static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
     return origin;
 }
 
-ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
+ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 {
     real m = isect_prim_magnitude(p);
     ray r = spawn(h->point, h->normal, dir, m, 0);
@@ -666,12 +666,12 @@ ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
-ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
+ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
     return spawn(h->point, h->normal, dir, isect_prim_magnitude(p), 1);
 }
 
-ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)
+ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
     return spawn_to(h->point, h->normal, target, isect_prim_magnitude(p));
 }

@@ -68,22 +68,22 @@ int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h);
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
  * ray into the local frame when p->has_xform (t is preserved; point and
  * normals are mapped back to the world). */
-int isect_prim(const rf_prim *p, ray *r, hit *h);
+int isect_prim(const scene_prim *p, ray *r, hit *h);
 
 /* Every crossing of the surface in (r->tmin, r->tmax), in increasing t:
  * 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
  * torus: two of each).  r is not changed; each out[i].prim is -1. */
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
+int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
  * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
  * bounds are not finite (such a primitive must be tested unconditionally). */
-int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi);
+int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi);
 
 /* The largest coordinate magnitude a hit point of p is computed from (its
  * vertices, centre plus radius, plane point...): the hit point's rounding
  * error is relative to this, not to the point itself. */
-real isect_prim_magnitude(const rf_prim *p);
+real isect_prim_magnitude(const scene_prim *p);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
@@ -115,10 +115,10 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
 /* The same for a hit on p, with m = max(|h->point|, isect_prim_magnitude(p)):
  * what the tracer should use (a big triangle or sphere hit near the world
  * origin has an error relative to its vertices or centre, not to the point). */
-ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
-ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
+ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir);
+ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target);
 /* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
  * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
-ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
+ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir);
 
 #endif

@@ -24,16 +24,16 @@
 
 /* What shade() knows about the point it shades. */
 typedef struct surface {
-    const rf_material *m;
-    const rf_prim *prim;
+    const scene_material *m;
+    const scene_prim *prim;
     const hit *h;
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
 } surface;
 
-int trace_solid_id(const rf_scene *s, int prim)
+int trace_solid_id(const scene_model *s, int prim)
 {
-    const rf_prim *p = &s->prims[prim];
+    const scene_prim *p = &s->prims[prim];
     if (scene_prim_is_solid(p))
         return prim;
     if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
@@ -41,7 +41,7 @@ int trace_solid_id(const rf_scene *s, int prim)
     return -1;
 }
 
-int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
+int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
     memset(t, 0, sizeof *t);
     t->scene = s;
@@ -50,8 +50,8 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
     t->specular = s->features.specular;
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
-    t->lights = calloc((size_t)(s->light_count ? s->light_count : 1), sizeof *t->lights);
-    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count)) {
+    t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
+    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
         tracer_free(t);
         return 0;
     }
@@ -68,12 +68,13 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
-    free(t->lights);
+    if (t->scene)
+        mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
     t->lights = NULL;
 }
 
 typedef struct shadow_walk {
-    const rf_scene *scene;
+    const scene_model *scene;
     real carried;
 } shadow_walk;
 
@@ -81,7 +82,7 @@ typedef struct shadow_walk {
 static int shadow_crossing(void *ctx, const hit *h)
 {
     shadow_walk *w = ctx;
-    const rf_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
+    const scene_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
     w->carried = shade_shadow_transmission(w->carried, m->t);
     return w->carried == 0;
 }
@@ -101,7 +102,7 @@ typedef struct direct_sum {
 } direct_sum;
 
 /* One point source at pos (distant: at infinity along -direction). */
-static void add_source(const tracer *t, const surface *s, const rf_light *light, vec3 pos, rgb power,
+static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
                        direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -138,7 +139,7 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
     }
 }
 
-light_setup trace_light_setup(const rf_light *light, int samples)
+light_setup trace_light_setup(const scene_light *light, int samples)
 {
     light_setup setup;
     memset(&setup, 0, sizeof setup);
@@ -150,7 +151,7 @@ light_setup trace_light_setup(const rf_light *light, int samples)
     return setup;
 }
 
-vec3 trace_light_point(const rf_light *light, const light_setup *setup, int index, uint64_t key, int j)
+vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j)
 {
     uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
     double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
@@ -164,7 +165,7 @@ vec3 trace_light_point(const rf_light *light, const light_setup *setup, int inde
 static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
 {
-    const rf_light *light = &t->scene->lights[index];
+    const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
     for (int j = 0; j < setup->samples; j++)
@@ -175,7 +176,7 @@ static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, 
 {
     direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
     for (int i = 0; i < t->scene->light_count; i++) {
-        const rf_light *light = &t->scene->lights[i];
+        const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
             add_source(t, s, light, light->position, light->power, &sum, st);
         else
@@ -234,7 +235,7 @@ typedef struct interface {
     real reach;          /* a crossing whose point is this close belongs to it */
     int count;
     hit h[INTERFACE_MAX];
-    const rf_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
+    const scene_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
     const hit *spawn_hit;
 } interface;
 
@@ -272,7 +273,7 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
     f->spawn_prim = s->prim;
     f->spawn_hit = s->h;
     for (int k = 1; k < f->count; k++) {
-        const rf_prim *p = &t->scene->prims[f->h[k].prim];
+        const scene_prim *p = &t->scene->prims[f->h[k].prim];
         if (isect_prim_magnitude(p) > isect_prim_magnitude(f->spawn_prim)) {
             f->spawn_prim = p;
             f->spawn_hit = &f->h[k];
@@ -287,7 +288,7 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
 static int interface_cross(const tracer *t, const interface *f, medium_stack *next, real *through,
                            trace_stats *st)
 {
-    const rf_scene *sc = t->scene;
+    const scene_model *sc = t->scene;
     int solids = 0;
     *through = 1;
     for (int k = 1; k < f->count; k++)
@@ -373,7 +374,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
 /* Solids the probe ray crosses: count and nearest crossing of each. */
 enum { PROBE_MAX = 64 };
 typedef struct probe {
-    const rf_scene *scene;
+    const scene_model *scene;
     int count;
     int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
     real first[PROBE_MAX];
@@ -404,7 +405,7 @@ static int probe_crossing(void *ctx, const hit *h)
 
 /* Strictly inside a solid primitive (in its own frame); for a mesh, an odd
  * number of crossings of the probe. */
-static int contains(const rf_prim *p, vec3 point, int crossings)
+static int contains(const scene_prim *p, vec3 point, int crossings)
 {
     if (scene_prim_is_solid(p))
         return scene_prim_contains(p, point);
@@ -436,7 +437,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
                 best = k;
         if (best < 0)
             return;
-        const rf_prim *p = &t->scene->prims[pr.prim[best]];
+        const scene_prim *p = &t->scene->prims[pr.prim[best]];
         media_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
         pr.crossings[best] = -1;
     }

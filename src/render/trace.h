@@ -48,22 +48,23 @@ typedef struct medium_stack {
 } medium_stack;
 
 typedef struct tracer {
-    const rf_scene *scene;
+    const scene_model *scene;
     bvh accel;
     light_setup *lights;
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
-     * scene could use them (rf_features), so their work is left out. */
+     * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
 
-/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+/* Builds the acceleration structure, in memory from the scene's allocator.
+ * max_depth <= 0 takes the scene's;
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
-int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
+int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
 /*
@@ -80,12 +81,12 @@ void tracer_free(tracer *t);
 
 /* A distributed light's stratification and (for a disk) frame for a
  * render that gives it `samples` sources: tracer_init's per-light data. */
-light_setup trace_light_setup(const rf_light *light, int samples);
+light_setup trace_light_setup(const scene_light *light, int samples);
 
 /* Where sample j of the light at index `index` of the scene's lights sits
  * for a hit of a ray with key `key`: the point the tracer shades with, bit
  * for bit. */
-vec3 trace_light_point(const rf_light *light, const light_setup *setup, int index, uint64_t key, int j);
+vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */
@@ -102,6 +103,6 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
 
 /* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
  * for a sheet (plane, disk, lone triangle), which has no inside. */
-int trace_solid_id(const rf_scene *s, int prim);
+int trace_solid_id(const scene_model *s, int prim);
 
 #endif

@@ -87,9 +87,9 @@ int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 
     return 0;
 }
 
-int check_image(loader *L, const check_at *at, const double size[4], rgb background, rf_image_spec *im)
+int check_image(loader *L, const check_at *at, const double size[4], rgb background, scene_image_spec *im)
 {
-    const rf_limits *lim = L->limits;
+    const scene_limits *lim = L->limits;
     long w = im->width, h = im->height, k = im->samples, depth = im->max_depth;
     int ok = check_whole(L, at, KW_WIDTH, size[0], 1, lim->max_width, "--max-width", &w);
     ok &= check_whole(L, at, KW_HEIGHT, size[1], 1, lim->max_height, "--max-height", &h);
@@ -112,7 +112,7 @@ int check_image(loader *L, const check_at *at, const double size[4], rgb backgro
 /* forward = look_at - eye; right = forward x up; true_up = right x forward.
  * When look_at - eye overflows, half of each gives the same direction.
  * A zero view and a zero up are both reported; parallel only when neither. */
-int check_camera_basis(loader *L, const check_at *at, rf_camera *cam)
+int check_camera_basis(loader *L, const check_at *at, scene_camera *cam)
 {
     vec3 view = vec_sub(cam->look_at, cam->eye), up;
     if (!vec_is_finite(view))
@@ -139,13 +139,13 @@ int check_camera_basis(loader *L, const check_at *at, rf_camera *cam)
     return 1;
 }
 
-int check_camera_ranges(loader *L, const check_at *at, const rf_camera *cam)
+int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam)
 {
     int ok = check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
     return check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0) && ok;
 }
 
-int check_camera(loader *L, const check_at *at, rf_camera *cam)
+int check_camera(loader *L, const check_at *at, scene_camera *cam)
 {
     int ok = check_camera_ranges(L, at, cam);
     return check_camera_basis(L, at, cam) && ok;
@@ -156,7 +156,7 @@ int check_ambient(loader *L, const check_at *at, rgb color)
     return check_color(L, at, KW_COLOR, "ambient color", color, 0, HUGE_VAL);
 }
 
-int check_light(loader *L, const check_at *at, const rf_light *light)
+int check_light(loader *L, const check_at *at, const scene_light *light)
 {
     int ok = check_color(L, at, KW_POWER, "power", light->power, 0, HUGE_VAL);
     if (light->kind != LIGHT_DISTANT)
@@ -172,7 +172,7 @@ int check_light_samples(loader *L, const check_at *at, double x, int *out)
     return ok;
 }
 
-int check_rectangle(loader *L, const check_at *at, rf_light *light)
+int check_rectangle(loader *L, const check_at *at, scene_light *light)
 {
     /* The normal from the edges' directions: their cross product itself
      * could overflow for long edges. */
@@ -192,7 +192,7 @@ int check_rectangle(loader *L, const check_at *at, rf_light *light)
     return 1;
 }
 
-int check_material(loader *L, const check_at *at, const rf_material *m)
+int check_material(loader *L, const check_at *at, const scene_material *m)
 {
     int ok = check_color(L, at, KW_KD, "Kd", m->kd, 0, 1);
     ok &= check_color(L, at, KW_KS, "Ks", m->ks, 0, 1);
@@ -207,7 +207,7 @@ int check_radius(loader *L, const check_at *at, double radius)
     return check_range(L, at, KW_RADIUS, "radius", radius, 0, 1, HUGE_VAL, 0);
 }
 
-int check_box(loader *L, const check_at *at, vec3 a, vec3 b, rf_prim *prim)
+int check_box(loader *L, const check_at *at, vec3 a, vec3 b, scene_prim *prim)
 {
     if (a.x == b.x || a.y == b.y || a.z == b.z) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_TO),
@@ -276,7 +276,7 @@ static int xform_finite(const xform *a)
     return 1;
 }
 
-static int triangle_in_range(const rf_prim *prim)
+static int triangle_in_range(const scene_prim *prim)
 {
     const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
     int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
@@ -288,7 +288,7 @@ static int triangle_in_range(const rf_prim *prim)
 
 /* Placement can push a finite shape past the largest double, or leave a
  * normal that cannot be made unit: the scene keeps no such number. */
-static int in_range(const rf_prim *prim)
+static int in_range(const scene_prim *prim)
 {
     int ok = 1;
     switch (prim->kind) {
@@ -318,7 +318,7 @@ static int degenerate(vec3 a, vec3 b, vec3 c)
     return !(vec_length(vec_cross(e1, e2)) > 4 * DBL_EPSILON);
 }
 
-int check_placed(loader *L, const check_at *at, const rf_prim *prim)
+int check_placed(loader *L, const check_at *at, const scene_prim *prim)
 {
     if (!in_range(prim)) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_BLOCK),

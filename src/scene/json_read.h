@@ -70,7 +70,7 @@ int jread_value_index(jreader *r, json_t *val, int count, const char *what, int 
 
 /* load_json_mesh.c: the mesh object p (its material already in proto)
  * as consecutive triangle primitives. */
-int load_json_mesh(jreader *r, json_t *p, rf_prim *proto);
+int load_json_mesh(jreader *r, json_t *p, scene_prim *proto);
 
 #endif
 #endif

@@ -13,7 +13,6 @@
  * normal) are not read: they are derived again.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "lang/obj.h"
 #include "scene/json_read.h"
@@ -82,7 +81,7 @@ static int read_camera(jreader *r, json_t *root)
                                              "pixel_samples", NULL};
     static const char *const ortho_keys[] = {"projection", "eye", "look_at", "up", "width", "basis", "screen",
                                              "pixel_samples", NULL};
-    rf_camera *cam = &r->L->scene->camera;
+    scene_camera *cam = &r->L->scene->camera;
     int kind;
     json_t *c = enter(r, root, "camera");
     if (!c)
@@ -115,12 +114,13 @@ static int read_ambient(jreader *r, json_t *root)
 }
 
 /* The span of each element of the top-level array key: where a record
- * came from, found in one walk of the text.  NULL when out of memory. */
+ * came from, found in one walk of the text.  NULL when out of memory; free
+ * with count (at least 1) entries. */
 static size_t *element_begins(jreader *r, const char *key, size_t count)
 {
     const source_file *f = r->L->scene->sources.files[r->file];
     jsonloc_step step = {key, 0};
-    size_t *begins = calloc(count ? count : 1, sizeof *begins);
+    size_t *begins = mem_calloc(r->L->mem, count ? count : 1, sizeof *begins);
     if (!begins)
         loader_oom(r->L);
     else
@@ -137,7 +137,7 @@ static src_span element_span(const jreader *r, const size_t *begins, size_t i)
 static int read_material(jreader *r, json_t *m, src_span where)
 {
     static const char *const keys[] = {"name", "Kd", "Ks", "n", "t", "ior", NULL};
-    rf_material mat;
+    scene_material mat;
     const char *name;
     memset(&mat, 0, sizeof mat);
     mat.where = where;
@@ -147,7 +147,7 @@ static int read_material(jreader *r, json_t *m, src_span where)
     check_at at = jread_at(r);
     if (!ok || !check_material(r->L, &at, &mat))
         return 0;
-    rf_material *slot = loader_add_material(r->L);
+    scene_material *slot = loader_add_material(r->L);
     if (!slot || (name && !(mat.name = loader_strdup(r->L, name))))
         return 0;
     *slot = mat;
@@ -161,7 +161,8 @@ static int read_list(jreader *r, json_t *root, const char *key, int (*read_one)(
     size_t i;
     if (!jread_array(r, root, key, &list))
         return 0;
-    size_t *begins = element_begins(r, key, json_array_size(list));
+    size_t count = json_array_size(list);
+    size_t *begins = element_begins(r, key, count);
     if (!begins)
         return 0;
     int ok = 1;
@@ -174,13 +175,13 @@ static int read_list(jreader *r, json_t *root, const char *key, int (*read_one)(
         jread_pop(r);
     }
     jread_pop(r);
-    free(begins);
+    mem_free(r->L->mem, begins, (count ? count : 1) * sizeof *begins);
     return ok && !stop(r->L);
 }
 
 /* ---- lights ---- */
 
-static int light_falloff(jreader *r, json_t *l, rf_light *light)
+static int light_falloff(jreader *r, json_t *l, scene_light *light)
 {
     int f;
     if (light->kind == LIGHT_DISTANT) {
@@ -189,18 +190,18 @@ static int light_falloff(jreader *r, json_t *l, rf_light *light)
     }
     if (!jread_enum(r, l, "falloff", falloff_names, 3, &f) || !jread_number(r, l, "d0", &light->d0))
         return 0;
-    light->falloff = (rf_falloff)f;
+    light->falloff = (scene_falloff)f;
     return 1;
 }
 
-static int light_samples(jreader *r, json_t *l, rf_light *light)
+static int light_samples(jreader *r, json_t *l, scene_light *light)
 {
     double samples;
     check_at at = jread_at(r);
     return jread_number(r, l, "samples", &samples) && check_light_samples(r->L, &at, samples, &light->samples);
 }
 
-static int light_shape(jreader *r, json_t *l, rf_light *light)
+static int light_shape(jreader *r, json_t *l, scene_light *light)
 {
     check_at at = jread_at(r);
     switch (light->kind) {
@@ -229,19 +230,19 @@ static int read_light(jreader *r, json_t *l, src_span where)
         {"kind", "corner", "edge_u", "edge_v", "normal", "power", "falloff", "d0", "samples", "sampling", NULL},
         {"kind", "center", "normal", "radius", "power", "falloff", "d0", "samples", "sampling", NULL},
     };
-    rf_light light;
+    scene_light light;
     int kind;
     memset(&light, 0, sizeof light);
     light.where = where;
     if (!jread_is_object(r, l) || !jread_enum(r, l, "kind", kinds, 4, &kind))
         return 0;
-    light.kind = (rf_light_kind)kind;
+    light.kind = (scene_light_kind)kind;
     int ok = jread_known(r, l, keys[kind]) && light_shape(r, l, &light) &&
              jread_vec3(r, l, "power", &light.power) && light_falloff(r, l, &light);
     check_at at = jread_at(r);
     if (!ok || !check_light(r->L, &at, &light))
         return 0;
-    rf_light *slot = loader_add_light(r->L);
+    scene_light *slot = loader_add_light(r->L);
     if (slot)
         *slot = light;
     return slot != NULL;
@@ -277,7 +278,7 @@ static int read_matrix(jreader *r, json_t *t, xform *out)
     return ok;
 }
 
-static int read_transform(jreader *r, json_t *p, rf_prim *prim)
+static int read_transform(jreader *r, json_t *p, scene_prim *prim)
 {
     static const char *const keys[] = {"to_world", "to_local", NULL};
     json_t *t = jread_member(r, p, "transform");
@@ -293,7 +294,7 @@ static int read_transform(jreader *r, json_t *p, rf_prim *prim)
     return ok && check_invert(r->L, &at, &prim->to_world, &prim->to_local);
 }
 
-static int read_vertices(jreader *r, json_t *p, rf_prim *prim)
+static int read_vertices(jreader *r, json_t *p, scene_prim *prim)
 {
     json_t *v;
     if (!jread_array(r, p, "vertices", &v))
@@ -312,7 +313,7 @@ static int read_vertices(jreader *r, json_t *p, rf_prim *prim)
 }
 
 /* radii: [at from, at to]. */
-static int read_cone(jreader *r, json_t *p, rf_prim *prim)
+static int read_cone(jreader *r, json_t *p, scene_prim *prim)
 {
     check_at at = jread_at(r);
     json_t *radii;
@@ -339,7 +340,7 @@ static int read_cone(jreader *r, json_t *p, rf_prim *prim)
            check_cone_radii(r->L, &at, prim->u.cone.radius);
 }
 
-static int prim_shape(jreader *r, json_t *p, rf_prim *prim)
+static int prim_shape(jreader *r, json_t *p, scene_prim *prim)
 {
     check_at at = jread_at(r);
     vec3 from, to;
@@ -396,7 +397,7 @@ static int read_prim(jreader *r, json_t *p, src_span where)
         {"kind", "material", "transform", "from", "to", "radii", "open", NULL},
         {"kind", "material", "transform", "center", "axis", "major", "minor", NULL},
     };
-    rf_prim prim;
+    scene_prim prim;
     int kind;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;
@@ -405,13 +406,13 @@ static int read_prim(jreader *r, json_t *p, src_span where)
         return 0;
     if (kind == PRIM_KINDS)
         return use_material(r, p, &prim.material) && load_json_mesh(r, p, &prim);
-    prim.kind = (rf_prim_kind)kind;
+    prim.kind = (scene_prim_kind)kind;
     int ok = jread_known(r, p, keys[kind]) && prim_shape(r, p, &prim) &&
              use_material(r, p, &prim.material) && read_transform(r, p, &prim);
     check_at at = jread_at(r);
     if (!ok || !check_placed(r->L, &at, &prim))
         return 0;
-    rf_prim *slot = loader_add_prim(r->L, where);
+    scene_prim *slot = loader_add_prim(r->L, where);
     if (slot)
         *slot = prim;
     return slot != NULL;
@@ -448,12 +449,13 @@ static int read_scene(jreader *r, json_t *root)
     return ok && read_list(r, root, "primitives", read_prim);
 }
 
-/* The diag subject of a span in a JSON file: the pointer of its value. */
+/* The diag subject of a span in the JSON text: the pointer of its value.
+ * The only other files of a JSON load are the OBJ files its meshes read. */
 static size_t json_subject(const void *ctx, src_span span, char *buf, size_t size)
 {
     const source_set *set = ctx;
     const source_file *f = set->files[span.file];
-    if (!loader_is_json(f->path))
+    if (f->is_mesh)
         return 0;
     return jsonloc_pointer_at(f->text, f->len, span.begin, buf, size);
 }

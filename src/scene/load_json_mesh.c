@@ -6,24 +6,26 @@
  * no transform is applied and no normal is normalised (one that is not
  * unit is refused).  Built only with JSON=1.
  */
-#include <stdlib.h>
+#include <limits.h>
 #include <string.h>
 #include "lang/obj.h"
 #include "scene/json_read.h"
 
-/* An array of 3-vectors (normals: each unit) into a malloc'd *out. */
-static int read_points(jreader *r, json_t *p, const char *key, int normals, vec3 **out, int *count)
+/* An array of 3-vectors (normals: each unit) into *out, *cap entries
+ * from the load's allocator. */
+static int read_points(jreader *r, json_t *p, const char *key, int normals, vec3 **out, int *count, int *cap)
 {
     json_t *list, *item;
     size_t i;
     if (!jread_array(r, p, key, &list))
         return 0;
-    *count = (int)json_array_size(list);
-    *out = malloc((json_array_size(list) ? json_array_size(list) : 1) * sizeof **out);
-    if (!*out) {
+    size_t n = json_array_size(list) ? json_array_size(list) : 1;
+    if (n > INT_MAX || !(*out = mem_calloc(r->L->mem, n, sizeof **out))) {
         loader_oom(r->L);
         return 0;
     }
+    *cap = (int)n;
+    *count = (int)json_array_size(list);
     int ok = 1;
     jread_push_key(r, key);
     json_array_foreach(list, i, item) {
@@ -78,8 +80,9 @@ static int read_triangle(jreader *r, json_t *tris, json_t *tri_normals, size_t i
 static int inline_mesh(jreader *r, json_t *p, obj_mesh *m)
 {
     json_t *tris, *tri_normals = json_object_get(p, "triangle_normals");
-    if (!read_points(r, p, "vertices", 0, &m->positions, &m->position_count) ||
-        !read_points(r, p, "normals", 1, &m->normals, &m->normal_count) || !jread_array(r, p, "triangles", &tris))
+    if (!read_points(r, p, "vertices", 0, &m->positions, &m->position_count, &m->position_cap) ||
+        !read_points(r, p, "normals", 1, &m->normals, &m->normal_count, &m->normal_cap) ||
+        !jread_array(r, p, "triangles", &tris))
         return 0;
     size_t n = json_array_size(tris);
     if (n == 0 || n > (size_t)r->L->limits->max_mesh_triangles) {
@@ -94,12 +97,12 @@ static int inline_mesh(jreader *r, json_t *p, obj_mesh *m)
                     "expected an array with one entry per triangle (%zu)", n);
         return 0;
     }
-    m->triangles = malloc(n * sizeof *m->triangles);
+    m->triangles = mem_calloc(r->L->mem, n, sizeof *m->triangles);
     if (!m->triangles) {
         loader_oom(r->L);
         return 0;
     }
-    m->triangle_count = (int)n;
+    m->triangle_cap = m->triangle_count = (int)n;
     for (size_t i = 0; i < n; i++) {
         m->triangles[i].where = src_span_none();
         if (!read_triangle(r, tris, json_is_array(tri_normals) ? tri_normals : NULL, i, m, &m->triangles[i]))
@@ -114,15 +117,18 @@ static int file_mesh(jreader *r, json_t *p, obj_mesh *m)
     int file;
     if (!jread_string(r, p, "file", 0, &name) || !loader_read_obj(r->L, name, jread_span(r, "file"), &file))
         return 0;
-    return obj_parse(&r->L->scene->sources, file, &r->L->diag, r->L->limits->max_mesh_triangles, m);
+    int parsed = obj_parse(&r->L->scene->sources, file, &r->L->diag, r->L->limits->max_mesh_triangles, m);
+    if (parsed < 0)
+        r->L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
+    return parsed > 0;
 }
 
 /* Triangle i of m as a primitive; an inline triangle reports at its entry
  * of "triangles", a file's at its `f` line. */
-static int emit_triangle(jreader *r, const obj_mesh *m, int i, const rf_prim *proto)
+static int emit_triangle(jreader *r, const obj_mesh *m, int i, const scene_prim *proto)
 {
     const obj_triangle *t = &m->triangles[i];
-    rf_prim prim = *proto;
+    scene_prim prim = *proto;
     int from_file = t->where.file >= 0;
     check_at at = check_at_fixed(&t->where);
     if (from_file)
@@ -146,19 +152,19 @@ static int emit_triangle(jreader *r, const obj_mesh *m, int i, const rf_prim *pr
         jread_pop(r);
         jread_pop(r);
     }
-    rf_prim *slot = ok ? loader_add_prim(r->L, prim.where) : NULL;
+    scene_prim *slot = ok ? loader_add_prim(r->L, prim.where) : NULL;
     if (slot)
         *slot = prim;
     return slot != NULL;
 }
 
-static int emit_mesh(jreader *r, json_t *p, const obj_mesh *m, rf_prim *proto)
+static int emit_mesh(jreader *r, json_t *p, const obj_mesh *m, scene_prim *proto)
 {
     const char *source = NULL;
     json_t *file = json_object_get(p, "file");
     if (!jread_string(r, p, "source", 1, &source))
         return 0;
-    rf_mesh *mesh = loader_add_mesh(r->L);
+    scene_mesh *mesh = loader_add_mesh(r->L);
     if (!mesh)
         return 0;
     const char *path = source ? source : json_is_string(file) ? json_string_value(file)
@@ -175,13 +181,14 @@ static int emit_mesh(jreader *r, json_t *p, const obj_mesh *m, rf_prim *proto)
     return ok;
 }
 
-int load_json_mesh(jreader *r, json_t *p, rf_prim *proto)
+int load_json_mesh(jreader *r, json_t *p, scene_prim *proto)
 {
     static const char *const inline_keys[] = {"kind", "material", "source", "vertices", "normals", "triangles",
                                               "triangle_normals", NULL};
     static const char *const file_keys[] = {"kind", "material", "source", "file", NULL};
     obj_mesh m;
     memset(&m, 0, sizeof m);
+    m.mem = *r->L->mem;
     int from_file = json_object_get(p, "file") != NULL;
     int ok = jread_known(r, p, from_file ? file_keys : inline_keys) &&
              (from_file ? file_mesh(r, p, &m) : inline_mesh(r, p, &m)) && emit_mesh(r, p, &m, proto);

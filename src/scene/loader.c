@@ -1,11 +1,11 @@
 /*
  * loader.c - the state of one load: the scene being built, its growable
- * arrays, and the out-of-memory flag every pass checks.
+ * arrays, the files the resolver gives it, and the out-of-memory flag
+ * every pass checks.
  */
 #include <limits.h>
-#include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 
 void loader_oom(loader *L)
@@ -16,7 +16,7 @@ void loader_oom(loader *L)
 }
 
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s)
+void loader_scene_defaults(scene_model *s)
 {
     s->image.width = 640;
     s->image.height = 480;
@@ -34,18 +34,18 @@ void loader_scene_defaults(rf_scene *s)
     s->camera.true_up = vec_make(0, 1, 0);
     s->camera.where = src_span_none();
     s->oracle_where = src_span_none();
-    source_set_init(&s->sources);
+    source_set_init(&s->sources, &s->mem);
 }
 
 /* Doubles *cap until count + 1 fits; refuses past limit.  0 on failure. */
-static int grow(void **items, int *cap, int count, size_t size, long limit)
+static int grow(const mem *m, void **items, int *cap, int count, size_t size, long limit)
 {
     if (count < *cap)
         return 1;
     if (count >= limit || count >= INT_MAX / 2)
         return 0;
     int next = *cap ? 2 * *cap : 16;
-    void *grown = realloc(*items, (size_t)next * size);
+    void *grown = mem_resize_array(m, *items, (size_t)*cap, (size_t)next, size);
     if (!grown)
         return 0;
     *items = grown;
@@ -53,9 +53,9 @@ static int grow(void **items, int *cap, int count, size_t size, long limit)
     return 1;
 }
 
-rf_prim *loader_add_prim(loader *L, src_span where)
+scene_prim *loader_add_prim(loader *L, src_span where)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->prim_count >= L->limits->max_primitives) {
         if (s->prim_count == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
@@ -64,7 +64,7 @@ rf_prim *loader_add_prim(loader *L, src_span where)
         return NULL;
     }
     void *items = s->prims;
-    if (!grow(&items, &L->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
+    if (!grow(L->mem, &items, &s->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
         loader_oom(L);
         return NULL;
     }
@@ -72,11 +72,11 @@ rf_prim *loader_add_prim(loader *L, src_span where)
     return &s->prims[s->prim_count++];
 }
 
-rf_light *loader_add_light(loader *L)
+scene_light *loader_add_light(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->lights;
-    if (!grow(&items, &L->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
@@ -84,56 +84,118 @@ rf_light *loader_add_light(loader *L)
     return &s->lights[s->light_count++];
 }
 
-rf_material *loader_add_material(loader *L)
+scene_material *loader_add_material(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->materials;
-    int cap = L->material_cap;
-    if (!grow(&items, &cap, s->material_count, sizeof *s->materials, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->material_cap, s->material_count, sizeof *s->materials, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
     s->materials = items;
-    if (cap != L->material_cap) {
-        int *uses = realloc(L->material_uses, (size_t)cap * sizeof *uses);
-        if (!uses) {
-            L->material_cap = cap;
-            loader_oom(L);
-            return NULL;
-        }
-        L->material_uses = uses;
-        L->material_cap = cap;
+    items = L->material_uses;
+    if (!grow(L->mem, &items, &L->uses_cap, s->material_count, sizeof *L->material_uses, INT_MAX)) {
+        loader_oom(L);
+        return NULL;
     }
+    L->material_uses = items;
     L->material_uses[s->material_count] = 0;
-    rf_material *m = &s->materials[s->material_count++];
+    scene_material *m = &s->materials[s->material_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-rf_mesh *loader_add_mesh(loader *L)
+scene_mesh *loader_add_mesh(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->meshes;
-    if (!grow(&items, &L->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
     s->meshes = items;
-    rf_mesh *m = &s->meshes[s->mesh_count++];
+    scene_mesh *m = &s->meshes[s->mesh_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings)
+/* Shrinks one array to count entries; keeps it as it is when that fails. */
+static void trim(const mem *m, void **items, int *cap, int count, size_t size)
+{
+    if (count >= *cap)
+        return;
+    if (count == 0) {
+        mem_free(m, *items, (size_t)*cap * size);
+        *items = NULL;
+        *cap = 0;
+        return;
+    }
+    void *fit = mem_resize_array(m, *items, (size_t)*cap, (size_t)count, size);
+    if (fit) {
+        *items = fit;
+        *cap = count;
+    }
+}
+
+void loader_trim(loader *L)
+{
+    scene_model *s = L->scene;
+    void *p = s->prims;
+    trim(L->mem, &p, &s->prim_cap, s->prim_count, sizeof *s->prims);
+    s->prims = p;
+    p = s->lights;
+    trim(L->mem, &p, &s->light_cap, s->light_count, sizeof *s->lights);
+    s->lights = p;
+    p = s->materials;
+    trim(L->mem, &p, &s->material_cap, s->material_count, sizeof *s->materials);
+    s->materials = p;
+    p = s->meshes;
+    trim(L->mem, &p, &s->mesh_cap, s->mesh_count, sizeof *s->meshes);
+    s->meshes = p;
+}
+
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+{
+    const scene_resolver *r = L->resolver;
+    const char *from = L->scene->sources.files[at.file]->path;
+    scene_source src;
+    memset(&src, 0, sizeof src);
+    why[0] = '\0';
+    int status = STATUS_NO_INPUT;
+    if (r->fetch)
+        status = r->fetch(r->user, from, name, &src, why, why_size);
+    else
+        snprintf(why, why_size, "cannot read '%s': this load reads no files", name);
+    if (status != STATUS_OK) {
+        if (status == STATUS_NO_MEMORY)
+            loader_oom(L);
+        return -1;
+    }
+    int file = source_set_add(&L->scene->sources, src.path ? src.path : name, src.text, src.len, at);
+    if (identity && file >= 0) {
+        *identity = mem_strdup(L->mem, src.identity ? src.identity : L->scene->sources.files[file]->path);
+        if (!*identity)
+            file = -1;
+    }
+    if (r->release)
+        r->release(r->user, &src);
+    if (file < 0)
+        loader_oom(L);
+    return file;
+}
+
+void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
 {
     memset(L, 0, sizeof *L);
     L->scene = s;
-    L->limits = limits;
-    diag_init(&L->diag, &s->sources, diag_out);
-    L->diag.max_errors = (int)limits->max_errors;
-    L->diag.warnings_enabled = warnings;
-    arena_init(&L->arena);
-    env_init(&L->env);
+    L->limits = &o->limits;
+    L->resolver = &o->resolver;
+    L->mem = &s->mem;
+    diag_init(&L->diag, &s->sources, o->sink, o->sink_user);
+    L->diag.max_errors = (int)o->limits.max_errors;
+    L->diag.warnings_enabled = o->warnings;
+    arena_init(&L->arena, &s->mem);
+    env_init(&L->env, &s->mem);
     L->image_where = src_span_none();
     L->camera_where = src_span_none();
     L->default_material = -1;
@@ -143,41 +205,28 @@ void loader_free(loader *L)
 {
     arena_free(&L->arena);
     env_free(&L->env);
-    free(L->include_stack);
-    free(L->material_uses);
+    for (int i = 0; i < L->include_depth; i++)
+        mem_free_string(L->mem, L->include_stack[i]);
+    mem_free(L->mem, L->include_stack, (size_t)L->include_cap * sizeof *L->include_stack);
+    mem_free(L->mem, L->material_uses, (size_t)L->uses_cap * sizeof *L->material_uses);
 }
-
 
 /* Reads the OBJ file into the load's sources, so its errors point into it. */
 int loader_read_obj(loader *L, const char *name, src_span at, int *file)
 {
-    const source_file *from = L->scene->sources.files[at.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
     char why[512];
-    size_t len = 0;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
-        return 0;
-    }
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0 && (*file = source_set_add(&L->scene->sources, path, text, len, at)) >= 0)
+    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
+    if (*file >= 0)
         L->scene->sources.files[*file]->is_mesh = 1;
-    else if (status != 0)
+    else if (!L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    free(path);
-    free(text);
-    if (status == 0 && *file < 0)
-        loader_oom(L);
-    return status == 0 && *file >= 0;
+    return *file >= 0;
 }
 
 char *loader_strdup(loader *L, const char *text)
 {
-    char *copy = malloc(strlen(text) + 1);
+    char *copy = mem_strdup(L->mem, text);
     if (!copy)
         loader_oom(L);
-    else
-        strcpy(copy, text);
     return copy;
 }

@@ -16,16 +16,18 @@
 #include "lang/schema.h"
 
 typedef struct loader {
-    rf_scene *scene;            /* being filled; owns the sources */
-    const rf_limits *limits;
+    scene_model *scene;            /* being filled; owns the sources */
+    const scene_limits *limits;
+    const scene_resolver *resolver;
+    const mem *mem;             /* the scene's allocator */
     diag diag;
     arena arena;                /* syntax trees of every file read */
     env env;                    /* constants in scope */
-    char **include_stack;       /* real paths of the files being lowered, outermost first */
-    int include_depth;
+    char **include_stack;       /* identities of the files being lowered, outermost first */
+    int include_depth, include_cap;
     long loop_iterations;       /* over the whole load */
     int *material_uses;         /* per scene material: how many primitives use it */
-    int material_cap, prim_cap, light_cap, mesh_cap;
+    int uses_cap;               /* entries allocated in material_uses */
     src_span image_where;       /* first `image` block (file -1: none yet) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
@@ -60,8 +62,9 @@ typedef struct check_at {
 
 /* lower.c */
 int lower_statements(loader *L, const ast *list);
-/* Parses sources.files[file] and lowers it in the current scope. */
-int loader_lower_file(loader *L, int file);
+/* Parses sources.files[file] and lowers it in the current scope; identity
+ * (taken over, freed here) is on the include stack meanwhile. */
+int loader_lower_file(loader *L, int file, char *identity);
 
 /* lower_props.c: each returns 1 when the value is usable (given or
  * defaulted), 0 after reporting an error. */
@@ -94,17 +97,17 @@ int lower_material_ref(loader *L, const props *p);
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
 /* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
-void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local);
+void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit
  * (or left zero or non-finite when it cannot be, for the range check). */
 vec3 lower_transformed_normal(const xform *to_local, vec3 n);
 
 /* lower_quadrics.c: cylinder, cone and torus (block is KW_CYLINDER,
  * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
-int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim);
-void lower_place_quadric(rf_prim *prim, const xform *to_world, const xform *to_local);
+int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim);
+void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* 1 when every number of the placed shape is finite and in its domain. */
-int lower_quadric_in_range(const rf_prim *prim);
+int lower_quadric_in_range(const scene_prim *prim);
 
 /*
  * check.c: the rules of the scene model, shared by every front end.  Each
@@ -122,22 +125,22 @@ int check_whole(loader *L, const check_at *at, int field, double x, long lo, lon
 int check_is_unit(vec3 v);
 int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 v);
 /* size: width, height, samples, max_depth as read; fills *im. */
-int check_image(loader *L, const check_at *at, const double size[4], rgb background, rf_image_spec *im);
+int check_image(loader *L, const check_at *at, const double size[4], rgb background, scene_image_spec *im);
 /* fov and width in range; the orthonormal basis derived from eye, look_at
  * and up (a zero view and a zero up both reported); check_camera: both. */
-int check_camera_ranges(loader *L, const check_at *at, const rf_camera *cam);
-int check_camera_basis(loader *L, const check_at *at, rf_camera *cam);
-int check_camera(loader *L, const check_at *at, rf_camera *cam);
+int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam);
+int check_camera_basis(loader *L, const check_at *at, scene_camera *cam);
+int check_camera(loader *L, const check_at *at, scene_camera *cam);
 int check_ambient(loader *L, const check_at *at, rgb color);
 /* power and d0 */
-int check_light(loader *L, const check_at *at, const rf_light *light);
+int check_light(loader *L, const check_at *at, const scene_light *light);
 int check_light_samples(loader *L, const check_at *at, double x, int *out);
 /* the edges span an area and stay finite; sets light->normal. */
-int check_rectangle(loader *L, const check_at *at, rf_light *light);
-int check_material(loader *L, const check_at *at, const rf_material *m);
+int check_rectangle(loader *L, const check_at *at, scene_light *light);
+int check_material(loader *L, const check_at *at, const scene_material *m);
 int check_radius(loader *L, const check_at *at, double radius);
 /* corners a, b differ on every axis; sets the box's lo and hi. */
-int check_box(loader *L, const check_at *at, vec3 a, vec3 b, rf_prim *prim);
+int check_box(loader *L, const check_at *at, vec3 a, vec3 b, scene_prim *prim);
 int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to_local);
 /* A cylinder's or cone's ends differ (else at KW_TO). */
 int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
@@ -148,7 +151,7 @@ int check_torus(loader *L, const check_at *at, double major, double minor);
 /* A primitive as the tracer gets it: finite, unit normals, finite
  * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
  * KW_VERTICES). */
-int check_placed(loader *L, const check_at *at, const rf_prim *prim);
+int check_placed(loader *L, const check_at *at, const scene_prim *prim);
 /* A check_at that gives *span for every field. */
 check_at check_at_fixed(const src_span *span);
 
@@ -156,27 +159,34 @@ check_at check_at_fixed(const src_span *span);
 int validate_scene(loader *L);
 
 /* loader.c: the load's state; an out-of-memory error is reported once. */
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings);
+void loader_init(loader *L, scene_model *s, const scene_load_opts *o);
 void loader_free(loader *L);
+/* Asks the resolver for `name`, written in the statement at `at`, and
+ * adds it to the sources as included from `at`.  Returns the file's index,
+ * with *identity a copy of its identity (free with mem_free_string) when
+ * identity is not NULL; or -1 with the resolver's reason in why, not
+ * reported, unless memory ran out (then reported, the flag set). */
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size);
+/* Shrinks the scene's arrays to their counts (the load is over). */
+void loader_trim(loader *L);
 void loader_oom(loader *L);
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s);
+void loader_scene_defaults(scene_model *s);
 /* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
-rf_prim *loader_add_prim(loader *L, src_span where);
-rf_light *loader_add_light(loader *L);
-rf_material *loader_add_material(loader *L);
-rf_mesh *loader_add_mesh(loader *L);
-/* A malloc'd copy of text, or NULL after reporting out of memory. */
+scene_prim *loader_add_prim(loader *L, src_span where);
+scene_light *loader_add_light(loader *L);
+scene_material *loader_add_material(loader *L);
+scene_mesh *loader_add_mesh(loader *L);
+/* A copy of text from the load's allocator, or NULL after reporting out
+ * of memory. */
 char *loader_strdup(loader *L, const char *text);
-/* Reads the OBJ file `name` (relative to the directory of the file that
- * span `at` is in) into the load's sources, so its errors point into it;
+/* Asks the resolver for the OBJ file `name`, written at `at`, and adds it
+ * to the load's sources as read by a mesh, so its errors point into it;
  * 1 with its index in *file, else 0 after reporting at `at`. */
 int loader_read_obj(loader *L, const char *name, src_span at, int *file);
 
 /* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
  * (spec/json.md) into the scene, with the rules of check.c. */
 int loader_lower_json(loader *L, int file);
-/* Whether path names a JSON scene: it ends in ".json" (any case). */
-int loader_is_json(const char *path);
 
 #endif

@@ -36,7 +36,7 @@ static int first_block(loader *L, const ast *block, src_span *seen)
 int lower_image(loader *L, const ast *block)
 {
     props p;
-    rf_image_spec *im = &L->scene->image;
+    scene_image_spec *im = &L->scene->image;
     double size[4];
     rgb background;
     int first = first_block(L, block, &L->image_where);
@@ -53,7 +53,7 @@ int lower_image(loader *L, const ast *block)
 
 /* Perspective or orthographic, and no property of the other kind; both
  * mistakes are reported when both are made. */
-static int camera_kind(loader *L, const props *p, rf_camera *cam)
+static int camera_kind(loader *L, const props *p, scene_camera *cam)
 {
     const ast *persp = p->by_keyword[KW_PERSPECTIVE], *ortho = p->by_keyword[KW_ORTHOGRAPHIC];
     if (persp && ortho) {
@@ -86,9 +86,9 @@ static src_span camera_field_span(const void *ctx, int field)
 int lower_camera(loader *L, const ast *block)
 {
     props p;
-    rf_camera copy = L->scene->camera;
+    scene_camera copy = L->scene->camera;
     int first = first_block(L, block, &L->camera_where);
-    rf_camera *cam = first ? &L->scene->camera : &copy;
+    scene_camera *cam = first ? &L->scene->camera : &copy;
     int ok = props_collect(L, block, &p) & first;
     cam->where = block->head;
     ok &= camera_kind(L, &p, cam);
@@ -117,7 +117,7 @@ int lower_ambient(loader *L, const ast *block)
     return 1;
 }
 
-static int falloff(loader *L, const props *p, rf_falloff *out)
+static int falloff(loader *L, const props *p, scene_falloff *out)
 {
     static const char *const names[] = {"linear", "inverse_square", "none"};
     const char *name;
@@ -129,7 +129,7 @@ static int falloff(loader *L, const props *p, rf_falloff *out)
         return 1;
     for (int i = 0; i < 3; i++) {
         if (strcmp(name, names[i]) == 0) {
-            *out = (rf_falloff)i;
+            *out = (scene_falloff)i;
             return 1;
         }
     }
@@ -140,7 +140,7 @@ static int falloff(loader *L, const props *p, rf_falloff *out)
 }
 
 /* power and, for lights that have a distance, d0 and falloff. */
-static int light_common(loader *L, const props *p, const check_at *at, rf_light *light)
+static int light_common(loader *L, const props *p, const check_at *at, scene_light *light)
 {
     int ok = props_color(L, p, KW_POWER, vec_splat(1), &light->power);
     if (light->kind != LIGHT_DISTANT) {
@@ -171,7 +171,7 @@ static src_span shape_field_span(const void *ctx, int field)
     }
 }
 
-static int rectangle_light(loader *L, const props *p, shape_props *sp, rf_light *light)
+static int rectangle_light(loader *L, const props *p, shape_props *sp, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_RECTANGLE];
     value corner, u, v;
@@ -190,7 +190,7 @@ static int rectangle_light(loader *L, const props *p, shape_props *sp, rf_light 
     return check_rectangle(L, &at, light);
 }
 
-static int disk_light(loader *L, const props *p, shape_props *sp, rf_light *light)
+static int disk_light(loader *L, const props *p, shape_props *sp, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_DISK];
     value center, normal, radius;
@@ -214,7 +214,7 @@ static int disk_light(loader *L, const props *p, shape_props *sp, rf_light *ligh
     return 1;
 }
 
-static int distributed_shape(loader *L, const props *p, rf_light *light)
+static int distributed_shape(loader *L, const props *p, scene_light *light)
 {
     const ast *rect = p->by_keyword[KW_RECTANGLE], *disk = p->by_keyword[KW_DISK];
     if (rect && disk) {
@@ -239,7 +239,7 @@ static int distributed_shape(loader *L, const props *p, rf_light *light)
 int lower_light(loader *L, const ast *block)
 {
     props p;
-    rf_light light;
+    scene_light light;
     memset(&light, 0, sizeof light);
     light.where = block->head;
     if (!props_collect(L, block, &p))
@@ -260,14 +260,14 @@ int lower_light(loader *L, const ast *block)
     }
     check_at at = props_at(&p);
     ok &= light_common(L, &p, &at, &light);
-    rf_light *slot = ok ? loader_add_light(L) : NULL;
+    scene_light *slot = ok ? loader_add_light(L) : NULL;
     if (slot)
         *slot = light;
     return slot != NULL;
 }
 
 /* Material properties; the defaults are those of spec/language.md. */
-static int material_props(loader *L, const ast *block, rf_material *m)
+static int material_props(loader *L, const ast *block, scene_material *m)
 {
     props p;
     if (!props_collect(L, block, &p))
@@ -282,7 +282,7 @@ static int material_props(loader *L, const ast *block, rf_material *m)
     return check_material(L, &at, m) && ok;
 }
 
-static int find_material(const rf_scene *s, const char *name)
+static int find_material(const scene_model *s, const char *name)
 {
     for (int i = 0; i < s->material_count; i++)
         if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
@@ -301,12 +301,12 @@ int lower_material_def(loader *L, const ast *block)
                     block->text, line);
         return 0;
     }
-    rf_material m;
+    scene_material m;
     memset(&m, 0, sizeof m);
     if (!material_props(L, block, &m))
         return 0;
     m.where = block->head;
-    rf_material *slot = loader_add_material(L);
+    scene_material *slot = loader_add_material(L);
     if (!slot || !(m.name = loader_strdup(L, block->text)))
         return 0;
     *slot = m;
@@ -317,7 +317,7 @@ static int default_material(loader *L)
 {
     if (L->default_material >= 0)
         return L->default_material;
-    rf_material *m = loader_add_material(L);
+    scene_material *m = loader_add_material(L);
     if (!m)
         return -1;
     memset(m, 0, sizeof *m);
@@ -402,11 +402,11 @@ int lower_material_ref(loader *L, const props *p)
     if (!prop) {
         index = default_material(L);
     } else if (prop->first->kind == AST_BLOCK) {
-        rf_material m;
+        scene_material m;
         memset(&m, 0, sizeof m);
         if (!material_props(L, prop->first, &m))
             return -1;
-        rf_material *slot = loader_add_material(L);
+        scene_material *slot = loader_add_material(L);
         if (!slot)
             return -1;
         *slot = m;

@@ -5,13 +5,12 @@
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
- * shape (see rf_prim in scene.h); otherwise the primitive keeps its local
+ * shape (see scene_prim in scene.h); otherwise the primitive keeps its local
  * parameters and the matrix pair, and is intersected in its own frame.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/obj.h"
 
@@ -83,14 +82,14 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-void lower_keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
 {
     prim->has_xform = 1;
     prim->to_world = *to_world;
     prim->to_local = *to_local;
 }
 
-static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
+static void place_sphere(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -103,7 +102,7 @@ static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static void place_disk(rf_prim *prim, const xform *w, const xform *l)
+static void place_disk(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -123,7 +122,7 @@ static int is_axis_aligned(const xform *w)
            w->m[2][1] == 0;
 }
 
-static void place_box(rf_prim *prim, const xform *w, const xform *l)
+static void place_box(scene_prim *prim, const xform *w, const xform *l)
 {
     if (!is_axis_aligned(w)) {
         lower_keep_frame(prim, w, l);
@@ -136,7 +135,7 @@ static void place_box(rf_prim *prim, const xform *w, const xform *l)
 
 /* Vertices in world space; a mirroring transform would turn the winding
  * (and so the normal) inside out, so two corners are swapped back. */
-static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
+static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
 {
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
@@ -153,7 +152,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static int sphere(loader *L, const props *p, rf_prim *prim)
+static int sphere(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
     check_at at = props_at(p);
@@ -162,7 +161,7 @@ static int sphere(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int plane(loader *L, const props *p, rf_prim *prim)
+static int plane(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_PLANE;
     int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
@@ -170,7 +169,7 @@ static int plane(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int disk(loader *L, const props *p, rf_prim *prim)
+static int disk(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_DISK;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
@@ -180,7 +179,7 @@ static int disk(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int box(loader *L, const props *p, rf_prim *prim)
+static int box(loader *L, const props *p, scene_prim *prim)
 {
     vec3 a, b;
     prim->kind = PRIM_BOX;
@@ -194,7 +193,7 @@ static int box(loader *L, const props *p, rf_prim *prim)
     return ok && check_box(L, &at, a, b, prim);
 }
 
-static int triangle(loader *L, const props *p, rf_prim *prim)
+static int triangle(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_TRIANGLE;
     if (!props_require(L, p, KW_VERTICES))
@@ -209,15 +208,15 @@ static int triangle(loader *L, const props *p, rf_prim *prim)
     return 1;
 }
 
-static rf_prim *emit(loader *L, const rf_prim *prim)
+static scene_prim *emit(loader *L, const scene_prim *prim)
 {
-    rf_prim *slot = loader_add_prim(L, prim->where);
+    scene_prim *slot = loader_add_prim(L, prim->where);
     if (slot)
         *slot = *prim;
     return slot;
 }
 
-static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
+static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
 {
     int normals = t->vn[0] >= 0;
     for (int i = 0; i < 3; i++) {
@@ -234,13 +233,13 @@ static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, 
     return 1;
 }
 
-static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const xform *w, const xform *l)
+static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, const xform *w, const xform *l)
 {
-    rf_mesh *mesh = &L->scene->meshes[proto->mesh];
+    scene_mesh *mesh = &L->scene->meshes[proto->mesh];
     mesh->first_prim = L->scene->prim_count;
     int ok = 1;
     for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
-        rf_prim prim = *proto;
+        scene_prim prim = *proto;
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;
         place_triangle(&prim, w, l);
@@ -262,7 +261,7 @@ static int unquoted_file(loader *L, const props *p)
     return 1;
 }
 
-static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
+static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
@@ -272,9 +271,12 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
-    if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
+    int parsed = obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj);
+    if (parsed < 0)
+        L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
+    if (parsed <= 0)
         return 0;
-    rf_mesh *m = loader_add_mesh(L);
+    scene_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
         m->path = loader_strdup(L, L->scene->sources.files[file]->path);
@@ -287,7 +289,7 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     return ok && L->diag.errors == errors;
 }
 
-static void place(rf_prim *prim, const xform *w, const xform *l)
+static void place(scene_prim *prim, const xform *w, const xform *l)
 {
     switch (prim->kind) {
     case PRIM_SPHERE: place_sphere(prim, w, l); break;
@@ -313,7 +315,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
 int lower_primitive(loader *L, const ast *block)
 {
     props p;
-    rf_prim prim;
+    scene_prim prim;
     xform w, l;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;

@@ -47,7 +47,7 @@ static int ends(loader *L, const props *p, vec3 *from, vec3 *to)
     return ok && check_ends(L, &at, *from, *to);
 }
 
-static int cylinder(loader *L, const props *p, rf_prim *prim)
+static int cylinder(loader *L, const props *p, scene_prim *prim)
 {
     check_at at = props_at(p);
     prim->kind = PRIM_CYLINDER;
@@ -79,7 +79,7 @@ static int cone_radii(loader *L, const props *p, double radius[2])
     return check_cone_radii(L, &at, radius);
 }
 
-static int cone(loader *L, const props *p, rf_prim *prim)
+static int cone(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_CONE;
     int ok = ends(L, p, &prim->u.cone.from, &prim->u.cone.to);
@@ -88,7 +88,7 @@ static int cone(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int torus(loader *L, const props *p, rf_prim *prim)
+static int torus(loader *L, const props *p, scene_prim *prim)
 {
     quadric_props q = {p, {{-1, 0, 0}, {-1, 0, 0}}};
     check_at at = {quadric_span, &q};
@@ -105,7 +105,7 @@ static int torus(loader *L, const props *p, rf_prim *prim)
     return ok & axis & radii;
 }
 
-int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim)
+int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim)
 {
     switch (block) {
     case KW_CYLINDER: return cylinder(L, p, prim);
@@ -114,7 +114,7 @@ int lower_quadric(loader *L, const props *p, keyword_id block, rf_prim *prim)
     }
 }
 
-void lower_place_quadric(rf_prim *prim, const xform *w, const xform *l)
+void lower_place_quadric(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -149,7 +149,7 @@ static int ends_in_range(vec3 from, vec3 to)
     return vec_is_finite(from) && vec_is_finite(to) && vec_is_finite(d) && vec_length(d) > 0;
 }
 
-int lower_quadric_in_range(const rf_prim *prim)
+int lower_quadric_in_range(const scene_prim *prim)
 {
     switch (prim->kind) {
     case PRIM_CYLINDER:

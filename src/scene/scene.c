@@ -1,12 +1,12 @@
 /*
  * scene.c - the scene model's defaults and its release.
  */
-#include <stdlib.h>
+#include <string.h>
 #include "scene/scene.h"
 
-rf_limits scene_default_limits(void)
+scene_limits scene_default_limits(void)
 {
-    rf_limits l;
+    scene_limits l;
     l.max_width = 16384;
     l.max_height = 16384;
     l.max_pixels = 64L * 1024 * 1024;
@@ -23,40 +23,48 @@ rf_limits scene_default_limits(void)
     return l;
 }
 
-void scene_free(rf_scene *s)
+void scene_free(scene_model *s)
 {
     if (!s)
         return;
+    mem m = s->mem;
     for (int i = 0; i < s->material_count; i++)
-        free(s->materials[i].name);
+        mem_free_string(&m, s->materials[i].name);
     for (int i = 0; i < s->mesh_count; i++)
-        free(s->meshes[i].path);
-    free(s->materials);
-    free(s->prims);
-    free(s->meshes);
-    free(s->lights);
-    free(s->oracle);
+        mem_free_string(&m, s->meshes[i].path);
+    mem_free(&m, s->materials, (size_t)s->material_cap * sizeof *s->materials);
+    mem_free(&m, s->prims, (size_t)s->prim_cap * sizeof *s->prims);
+    mem_free(&m, s->meshes, (size_t)s->mesh_cap * sizeof *s->meshes);
+    mem_free(&m, s->lights, (size_t)s->light_cap * sizeof *s->lights);
+    mem_free_string(&m, s->oracle);
     source_set_free(&s->sources);
-    free(s);
+    mem_free(&m, s, sizeof *s);
 }
 
+
+void scene_load_opts_init(scene_load_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->limits = scene_default_limits();
+    o->warnings = 1;
+}
 
 static const char *const prim_names[PRIM_KINDS][2] = {
     {"sphere", "spheres"}, {"plane", "planes"},       {"triangle", "triangles"}, {"disk", "disks"},
     {"box", "boxes"},      {"cylinder", "cylinders"}, {"cone", "cones"},         {"torus", "tori"},
 };
 
-const char *scene_prim_name(rf_prim_kind kind)
+const char *scene_prim_name(scene_prim_kind kind)
 {
     return prim_names[kind][0];
 }
 
-const char *scene_prim_plural(rf_prim_kind kind)
+const char *scene_prim_plural(scene_prim_kind kind)
 {
     return prim_names[kind][1];
 }
 
-int scene_prim_is_solid(const rf_prim *p)
+int scene_prim_is_solid(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -86,7 +94,7 @@ static int inside_cone(vec3 from, vec3 to, real r0, real r1, vec3 q)
     return z > 0 && z < len && across < r0 + (r1 - r0) * (z / len);
 }
 
-int scene_prim_contains(const rf_prim *p, vec3 point)
+int scene_prim_contains(const scene_prim *p, vec3 point)
 {
     vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
     if (!scene_prim_is_solid(p))
@@ -110,7 +118,7 @@ int scene_prim_contains(const rf_prim *p, vec3 point)
     }
 }
 
-int scene_prim_self_shadows(const rf_prim *p)
+int scene_prim_self_shadows(const scene_prim *p)
 {
     return p->kind == PRIM_TORUS || ((p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE) && !scene_prim_is_solid(p));
 }

@@ -1,10 +1,7 @@
 /*
- * scene_load.c - loading a scene: read, parse, lower, validate.
+ * scene_load.c - loading a scene: parse, lower, validate (scene.h).
  */
-#include <ctype.h>
-#include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 
 int scene_json_available(void)
@@ -16,26 +13,15 @@ int scene_json_available(void)
 #endif
 }
 
-int loader_is_json(const char *path)
+/* The root file as the scene language. */
+static int lower_language(loader *L, int file, const scene_source *root)
 {
-    static const char ext[] = ".json";
-    size_t n = strlen(path), k = sizeof ext - 1;
-    if (n < k)
+    char *identity = mem_strdup(L->mem, root->identity ? root->identity : root->path);
+    if (!identity) {
+        loader_oom(L);
         return 0;
-    for (size_t i = 0; i < k; i++)
-        if (tolower((unsigned char)path[n - k + i]) != ext[i])
-            return 0;
-    return 1;
-}
-
-/* The root file in the language its name says. */
-static int lower_root(loader *L, int file)
-{
-#ifdef REFRAY_HAVE_JSON
-    if (loader_is_json(L->scene->sources.files[file]->path))
-        return loader_lower_json(L, file);
-#endif
-    if (!loader_lower_file(L, file))
+    }
+    if (!loader_lower_file(L, file, identity))
         return 0;
     /* Without a camera block the default camera's basis is derived by the
      * same rule as any other (a cross product leaves right.y = -0, not the
@@ -48,30 +34,42 @@ static int lower_root(loader *L, int file)
     return check_camera(L, &at, &L->scene->camera);
 }
 
-rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
-                          int warnings, int *status)
+/* The root file in the language asked for. */
+static int lower_root(loader *L, int file, const scene_source *root, int json)
 {
-    rf_limits fallback = scene_default_limits();
-    if (loader_is_json(path) && !scene_json_available()) {
-        if (diag_out)
-            fprintf(diag_out, "refray: error: '%s' is a JSON scene, and this refray was built without JSON support "
-                              "(JSON=0); rebuild it with JSON=1 (libjansson-dev)\n", path);
-        *status = REFRAY_EXIT_USAGE;
-        return NULL;
+#ifdef REFRAY_HAVE_JSON
+    if (json)
+        return loader_lower_json(L, file);
+#else
+    (void)json;
+#endif
+    return lower_language(L, file, root);
+}
+
+static scene_model *load(const scene_source *root, const scene_load_opts *o, int json, int *status)
+{
+    scene_load_opts fallback;
+    if (!o) {
+        scene_load_opts_init(&fallback);
+        o = &fallback;
     }
-    rf_scene *s = calloc(1, sizeof *s);
+    mem m = mem_pick(&o->mem);
+    scene_model *s = mem_calloc(&m, 1, sizeof *s);
     loader L;
     if (!s) {
-        *status = REFRAY_EXIT_SOFTWARE;
+        *status = STATUS_NO_MEMORY;
         return NULL;
     }
+    s->mem = m;
     loader_scene_defaults(s);
-    loader_init(&L, s, limits ? limits : &fallback, diag_out, warnings);
-    int file = source_set_add(&s->sources, path, text, len, src_span_none());
-    int ok = file >= 0 && lower_root(&L, file) && validate_scene(&L);
+    loader_init(&L, s, o);
+    int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
+    int ok = file >= 0 && lower_root(&L, file, root, json) && validate_scene(&L);
     if (file < 0)
         loader_oom(&L);
-    *status = ok ? REFRAY_EXIT_OK : L.out_of_memory ? REFRAY_EXIT_SOFTWARE : REFRAY_EXIT_DATAERR;
+    *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
+    if (ok)
+        loader_trim(&L);
     loader_free(&L);
     if (!ok) {
         scene_free(s);
@@ -80,20 +78,25 @@ rf_scene *scene_load_text(const char *path, const char *text, size_t len, const 
     return s;
 }
 
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out, int warnings, int *status)
+scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status)
 {
-    rf_limits fallback = scene_default_limits();
-    char why[512], *text = NULL;
-    size_t len = 0;
-    if (!limits)
-        limits = &fallback;
-    *status = file_read_all(path, limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (*status != 0) {
-        if (diag_out)
-            fprintf(diag_out, "refray: error: %s\n", why);
-        return NULL;
+    return load(root, o, 0, status);
+}
+
+scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status)
+{
+    if (scene_json_available())
+        return load(root, o, 1, status);
+    if (o && o->sink) {
+        source_set none; /* no files: only its allocator, for a long message */
+        diag d;
+        source_set_init(&none, &o->mem);
+        diag_init(&d, &none, o->sink, o->sink_user);
+        diag_report(&d, DIAG_ERROR, src_span_none(),
+                    "'%s' is a JSON scene, and this refray was built without JSON support (JSON=0); rebuild it "
+                    "with JSON=1 (libjansson-dev)",
+                    root->path);
     }
-    rf_scene *s = scene_load_text(path, text, len, limits, diag_out, warnings, status);
-    free(text);
-    return s;
+    *status = STATUS_USAGE;
+    return NULL;
 }

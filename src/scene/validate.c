@@ -13,7 +13,7 @@ static int material_used_by_scene(const loader *L, int m)
 
 static void warn_unused_materials(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->material_count; i++)
         if (s->materials[i].name && !material_used_by_scene(L, i))
             diag_report(&L->diag, DIAG_WARNING, s->materials[i].where, "material '%s' is never used",
@@ -23,9 +23,9 @@ static void warn_unused_materials(loader *L)
 /* Kd + Ks > 1 reflects more than arrives (legal, but rarely meant). */
 static void warn_energy(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->material_count; i++) {
-        const rf_material *m = &s->materials[i];
+        const scene_material *m = &s->materials[i];
         rgb sum = vec_add(m->kd, m->ks);
         if (vec_max_component(sum) > 1 && material_used_by_scene(L, i))
             diag_report(&L->diag, DIAG_WARNING, m->where,
@@ -36,16 +36,16 @@ static void warn_energy(loader *L)
 
 static void warn_buried_lights(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *light = &s->lights[i];
+        const scene_light *light = &s->lights[i];
         if (light->kind == LIGHT_DISTANT)
             continue;
         vec3 center = light->position;
         if (light->kind == LIGHT_RECTANGLE)
             center = vec_add(center, vec_scale(vec_add(light->edge_u, light->edge_v), 0.5));
         for (int j = 0; j < s->prim_count; j++) {
-            const rf_prim *prim = &s->prims[j];
+            const scene_prim *prim = &s->prims[j];
             if (s->materials[prim->material].t == 0 && scene_prim_contains(prim, center)) {
                 diag_report(&L->diag, DIAG_WARNING, light->where,
                             "this light is inside an opaque %s: it lights nothing outside it",
@@ -56,9 +56,9 @@ static void warn_buried_lights(loader *L)
     }
 }
 
-static void record_features(rf_scene *s, const loader *L)
+static void record_features(scene_model *s, const loader *L)
 {
-    rf_features *f = &s->features;
+    scene_features *f = &s->features;
     for (int i = 0; i < s->material_count; i++) {
         if (!material_used_by_scene(L, i))
             continue;
@@ -79,7 +79,7 @@ static void record_features(rf_scene *s, const loader *L)
 
 int validate_scene(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->prim_count == 0) {
         src_span whole = {0, 0, 0};
         diag_report(&L->diag, DIAG_ERROR, whole, "the scene has no primitives: nothing to render");

@@ -12,12 +12,17 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
+#include "base/status.h"
 #include "base/text.h"
 #include "image/adjust.h"
 #include "image/image_file.h"
 #include "verify/conform.h"
 #include "verify/verify.h"
+
+/* conform_expand returns CONFORM_NO_INPUT or a status: they must differ. */
+typedef char no_input_is_no_status[(int)CONFORM_NO_INPUT >= (int)STATUS_COUNT ? 1 : -1];
 
 const char *const conform_placeholders[] = {
     "scene", "json", "pov", "out", "width", "height", "samples", "name", "scale", NULL,
@@ -121,7 +126,7 @@ int conform_expand(const char *tmpl, const conform_var *vars, int count, char **
     if (failed) {
         free(buf);
         snprintf(why, why_size, "out of memory");
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     *out = buf;
     return 0;
@@ -165,31 +170,31 @@ static int png_bit_depth(const char *path)
 }
 
 /* The kit's exact image and mask of s: 0, or a reason in r. */
-static int read_exact(const char *kit_dir, const manifest_scene *s, rf_image *exact, unsigned char **mask,
+static int read_exact(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask,
                       conform_result *r)
 {
     char err[600];
     int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
     const char *rel = s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM];
-    char *path = file_join(kit_dir, rel);
-    int status = path ? img_read(path, exact, err, sizeof err) : IMG_EOSERR;
+    char *path = file_join(NULL, kit_dir, rel);
+    int status = path ? img_read(path, exact, err, sizeof err) : STATUS_NO_MEMORY;
     free(path);
-    if (status == IMG_OK && (exact->width != s->width || exact->height != s->height)) {
+    if (status == STATUS_OK && (exact->width != s->width || exact->height != s->height)) {
         snprintf(err, sizeof err, "the kit's exact image is %dx%d, its manifest says %dx%d", exact->width,
                  exact->height, s->width, s->height);
-        status = IMG_EDATA;
+        status = STATUS_DATA;
     }
     const char *mrel = s->files[MANIFEST_FILE_MASK_PGM];
     *mask = NULL;
-    if (status == IMG_OK && mrel[0]) {
-        char *mpath = file_join(kit_dir, mrel);
-        status = mpath ? verify_mask_read(mpath, s->width, s->height, mask, err, sizeof err) : IMG_EOSERR;
+    if (status == STATUS_OK && mrel[0]) {
+        char *mpath = file_join(NULL, kit_dir, mrel);
+        status = mpath ? verify_mask_read(mpath, s->width, s->height, mask, err, sizeof err) : STATUS_NO_MEMORY;
         free(mpath);
     }
-    if (status == IMG_OK)
+    if (status == STATUS_OK)
         return 0;
     img_free(exact);
-    set(r, CONFORM_ERROR, "the kit is damaged: %s", status == IMG_EOSERR ? "out of memory" : err);
+    set(r, CONFORM_ERROR, "the kit is damaged: %s", status == STATUS_NO_MEMORY ? "out of memory" : err);
     return -1;
 }
 
@@ -197,7 +202,7 @@ static int read_exact(const char *kit_dir, const manifest_scene *s, rf_image *ex
  * when {out} is not there (an extension added, another name chosen). */
 static void left_beside(const char *out_path, char *buf, size_t size)
 {
-    char *dir = file_dirname(out_path);
+    char *dir = file_dirname(NULL, out_path);
     DIR *d = dir ? opendir(dir) : NULL;
     struct dirent *e;
     size_t used = 0;
@@ -217,7 +222,7 @@ static void left_beside(const char *out_path, char *buf, size_t size)
 }
 
 /* Reads the picture and brings it to the exact image's size and units. */
-static int read_picture(const char *out_path, const manifest_scene *s, rf_image *img, conform_result *r)
+static int read_picture(const char *out_path, const manifest_scene *s, img_buf *img, conform_result *r)
 {
     char err[600];
     struct stat sb;
@@ -233,9 +238,9 @@ static int read_picture(const char *out_path, const manifest_scene *s, rf_image 
         set(r, CONFORM_UNREADABLE, "{out} is not a regular file");
         return -1;
     }
-    rf_image raw;
+    img_buf raw;
     int status = img_read(out_path, &raw, err, sizeof err);
-    if (status != IMG_OK) {
+    if (status != STATUS_OK) {
         set(r, CONFORM_UNREADABLE, "its output is not a readable image: %s", err);
         return -1;
     }
@@ -246,12 +251,12 @@ static int read_picture(const char *out_path, const manifest_scene *s, rf_image 
         img_free(&raw);
         return -1;
     }
-    status = k == 1 ? IMG_OK : img_downsample(&raw, k, img);
+    status = k == 1 ? STATUS_OK : img_downsample(&raw, k, img);
     if (k == 1)
         *img = raw;
     else
         img_free(&raw);
-    if (status != IMG_OK) {
+    if (status != STATUS_OK) {
         set(r, CONFORM_ERROR, "out of memory averaging the image");
         return -1;
     }
@@ -267,7 +272,7 @@ static int read_picture(const char *out_path, const manifest_scene *s, rf_image 
 }
 
 /* The reason of a picture over its tolerance, with the worst pixel. */
-static void over_reason(const rf_image *img, const rf_image *exact, const char *out_path, conform_result *r)
+static void over_reason(const img_buf *img, const img_buf *exact, const char *out_path, conform_result *r)
 {
     const image_metrics *m = &r->metrics;
     if (m->compared == 0) {
@@ -286,7 +291,7 @@ static void over_reason(const rf_image *img, const rf_image *exact, const char *
 void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out_path, const conform_adjust *a,
                    conform_result *r)
 {
-    rf_image img, exact;
+    img_buf img, exact;
     unsigned char *mask;
     r->relative = s->relative;
     r->absolute = s->absolute;
@@ -357,7 +362,7 @@ static int fill_vars(const conform_run *run, const manifest_scene *s, const char
     int k = conform_downsample_of(&run->adjust, s);
     for (int i = 0; i < 3; i++) {
         const char *rel = s->files[inputs[i]];
-        paths[i] = rel[0] ? file_join(run->kit_dir, rel) : NULL;
+        paths[i] = rel[0] ? file_join(NULL, run->kit_dir, rel) : NULL;
         if (rel[0] && !paths[i])
             return -1;
         vars[i].name = conform_placeholders[i];
@@ -390,7 +395,7 @@ static char *make_workdir(const conform_run *run, const manifest_scene *s, confo
         free(dir);
         return NULL;
     }
-    char *inner = file_join(dir, "run");
+    char *inner = file_join(NULL, dir, "run");
     if (!inner || file_make_dirs(inner, why, sizeof why) != 0) {
         set(r, CONFORM_ERROR, "cannot make a working directory: %s", inner ? why : "out of memory");
         file_remove_tree(dir, why, sizeof why);
@@ -408,11 +413,11 @@ static void run_in(const conform_run *run, const manifest_scene *s, const char *
     char *paths[3] = {NULL, NULL, NULL}, *cmd = NULL;
     conform_var vars[9];
     snprintf(name, sizeof name, "run/%s.%s", s->name, run->format);
-    char *out = file_join(dir, name), *cwd = file_join(dir, "run");
-    char *err_path = file_join(dir, "stderr.txt"), *out_log = file_join(dir, "stdout.txt");
+    char *out = file_join(NULL, dir, name), *cwd = file_join(NULL, dir, "run");
+    char *err_path = file_join(NULL, dir, "stderr.txt"), *out_log = file_join(NULL, dir, "stdout.txt");
     int status = out && cwd && err_path && out_log && fill_vars(run, s, out, vars, owned, paths) == 0
                      ? conform_expand(run->command, vars, 9, &cmd, why, sizeof why)
-                     : REFRAY_EXIT_SOFTWARE;
+                     : STATUS_NO_MEMORY;
     proc_opts po = {cwd, out_log, err_path, run->timeout, run->stop};
     if (status == CONFORM_NO_INPUT)
         set(r, CONFORM_NO_INPUT, "%s", why);

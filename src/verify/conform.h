@@ -4,7 +4,7 @@
  *
  * For each scene of the manifest the renderer's command line is expanded
  * (placeholders replaced by shell-quoted values) and run by /bin/sh in a
- * fresh directory with a time limit (base/proc.h); its picture is read,
+ * fresh directory with a time limit (io/proc.h); its picture is read,
  * brought to the exact image's terms (image/adjust.h) and compared under
  * the scene's tolerance and mask (metrics_compare_abs).  Whatever the
  * renderer does - crash, hang, exit non-zero, write nothing, garbage or the
@@ -15,7 +15,7 @@
 
 #include <signal.h>
 #include <stddef.h>
-#include "base/proc.h"
+#include "io/proc.h"
 #include "image/metrics.h"
 #include "verify/manifest.h"
 
@@ -97,7 +97,8 @@ char *conform_shell_quote(const char *s);
  * the shell-quoted value; other braces stay as written (so ${HOME} and
  * awk's { } pass through).  Returns 0 with *out malloc'd; CONFORM_NO_INPUT
  * as an int when a placeholder used has no value (the reason in why);
- * REFRAY_EXIT_SOFTWARE when out of memory.
+ * STATUS_NO_MEMORY when out of memory (conform.c checks that no status
+ * equals CONFORM_NO_INPUT).
  */
 int conform_expand(const char *tmpl, const conform_var *vars, int count, char **out, char *why,
                    size_t why_size);

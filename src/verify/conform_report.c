@@ -220,7 +220,7 @@ int conform_junit_write(FILE *fp, const conform_report *rep)
     for (int i = 0; i < rep->count; i++)
         junit_case(fp, &rep->results[i]);
     fputs("  </testsuite>\n</testsuites>\n", fp);
-    return ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return ferror(fp) ? STATUS_IO : STATUS_OK;
 }
 
 /* ---- Markdown ---- */
@@ -273,7 +273,7 @@ int conform_markdown_write(FILE *fp, const conform_report *rep)
         cell(fp, conform_short_reason(r, reason, sizeof reason));
         fputs(" |\n", fp);
     }
-    return ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return ferror(fp) ? STATUS_IO : STATUS_OK;
 }
 
 /* ---- JSON ---- */
@@ -368,7 +368,7 @@ int conform_json_write(FILE *fp, const conform_report *rep)
                  fputc('\n', fp) == EOF;
     json_decref(o);
     json_decref(results);
-    return status ? REFRAY_EXIT_IOERR : 0;
+    return status ? STATUS_IO : STATUS_OK;
 }
 
 #else
@@ -377,7 +377,7 @@ int conform_json_write(FILE *fp, const conform_report *rep)
 {
     (void)fp;
     (void)rep;
-    return REFRAY_EXIT_USAGE;
+    return STATUS_USAGE;
 }
 
 #endif

@@ -35,9 +35,9 @@ void conform_text_summary(FILE *fp, const conform_report *rep);
 void conform_tap_plan(FILE *fp, int count);
 void conform_tap_row(FILE *fp, int number, const conform_result *r);
 
-/* The whole run as one JSON object (returns 0, or REFRAY_EXIT_USAGE in a
- * build without JSON), as JUnit XML, as a Markdown table.  Each returns 0
- * or a non-zero status when fp failed. */
+/* The whole run as one JSON object (returns STATUS_OK, or STATUS_USAGE in
+ * a build without JSON), as JUnit XML, as a Markdown table.  Each returns
+ * STATUS_OK, or STATUS_IO when fp failed. */
 int conform_json_write(FILE *fp, const conform_report *rep);
 int conform_junit_write(FILE *fp, const conform_report *rep);
 int conform_markdown_write(FILE *fp, const conform_report *rep);

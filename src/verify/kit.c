@@ -15,8 +15,10 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "base/fileio.h"
 #include "export/export_json.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
+#include "io/scene_file.h"
 #include "export/export_pov.h"
 #include "image/image_file.h"
 #include "verify/kit.h"
@@ -28,7 +30,7 @@ enum { KIT_ABSENT = -1 };
 /* What a writer of one scene's files gets. */
 typedef struct kit_job {
     const char *name;          /* NAME */
-    const rf_scene *scene;
+    const scene_model *scene;
     const verify_exact *exact;
     manifest_scene *entry;     /* notes may be added */
 } kit_job;
@@ -57,7 +59,7 @@ static int write_json(const kit_job *job, const char *path, char *why, size_t wh
     snprintf(source, sizeof source, "%s.scene", job->name);
     o.source = source;
     int status = export_json_file(job->scene, &o, path, why, why_size);
-    return status == REFRAY_EXIT_USAGE ? KIT_ABSENT : status;
+    return status == STATUS_USAGE ? KIT_ABSENT : status;
 }
 
 static int write_pov(const kit_job *job, const char *path, char *why, size_t why_size)
@@ -70,7 +72,7 @@ static int write_pov(const kit_job *job, const char *path, char *why, size_t why
     po.source = source;
     po.scale = job->entry->png16_scale;
     int status = pov_export_file(job->scene, &po, path, &notes, why, why_size);
-    if (status == REFRAY_EXIT_DATAERR) {
+    if (status == STATUS_DATA) {
         snprintf(why, why_size, "refused by the POV-Ray export: %s", notes.reason);
         return KIT_ABSENT;
     }
@@ -108,7 +110,7 @@ static int write_mask(const kit_job *job, const char *path, char *why, size_t wh
 {
     if (img_format_from_path(path) != IMG_FORMAT_UNKNOWN && !available(path, why, why_size))
         return KIT_ABSENT;
-    const rf_image *img = &job->exact->image;
+    const img_buf *img = &job->exact->image;
     return verify_mask_write(path, job->exact->excluded, img->width, img->height, why, why_size);
 }
 
@@ -165,7 +167,7 @@ static void expected_order(manifest_scene *m)
 }
 
 /* The manifest's numbers for a scene whose exact image is e. */
-static void describe(const rf_scene *s, const verify_exact *e, manifest_scene *m)
+static void describe(const scene_model *s, const verify_exact *e, manifest_scene *m)
 {
     const oracle_family *f = e->family;
     snprintf(m->family, sizeof m->family, "%s", f->name);
@@ -189,11 +191,11 @@ static void describe(const rf_scene *s, const verify_exact *e, manifest_scene *m
 }
 
 /* Loads path and builds its exact image; 0 or the status, reason in why. */
-static int load_exact(const char *path, const kit_opts *o, rf_scene **s, verify_exact *e, char *why,
+static int load_exact(const char *path, const kit_opts *o, scene_model **s, verify_exact *e, char *why,
                       size_t why_size)
 {
     int status;
-    *s = scene_load(path, &o->limits, o->diag, o->warnings, &status);
+    *s = scene_file_load(path, &o->limits, o->diag, o->warnings, &status);
     if (!*s) {
         snprintf(why, why_size, "cannot load '%s' (see the messages above)", path);
         return status;
@@ -201,18 +203,18 @@ static int load_exact(const char *path, const kit_opts *o, rf_scene **s, verify_
     if ((*s)->sources.count != 1 || (*s)->mesh_count != 0) {
         snprintf(why, why_size, "'%s' reads other files (include or mesh): a kit holds single-file scenes",
                  path);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     char reason[512];
     oracle_view v = verify_view(*s, NULL);
     const oracle_family *f = verify_family(*s, &v, &status, reason, sizeof reason);
     if (!f) {
         snprintf(why, why_size, "'%s' has no exact image: %s", path, reason);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     if (verify_exact_build(f, &v, e) != 0) {
         snprintf(why, why_size, "out of memory building the exact image of '%s'", path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     return 0;
 }
@@ -232,12 +234,12 @@ static int write_files(const char *root, const kit_job *job, char *why, size_t w
     char rel_dir[MANIFEST_NAME_LEN + 16];
     snprintf(rel_dir, sizeof rel_dir, "scenes/%s", job->name);
     char *dir = path_of(root, rel_dir, "");
-    int status = dir ? file_make_dirs(dir, why, why_size) : REFRAY_EXIT_SOFTWARE;
+    int status = dir ? file_make_dirs(dir, why, why_size) : STATUS_NO_MEMORY;
     for (size_t i = 0; status == 0 && i < sizeof artifacts / sizeof artifacts[0]; i++) {
         const kit_artifact *a = &artifacts[i];
         char *path = path_of(dir, job->name, a->suffix);
         char reason[MANIFEST_TEXT_LEN] = "";
-        status = path ? a->write(job, path, reason, sizeof reason) : REFRAY_EXIT_SOFTWARE;
+        status = path ? a->write(job, path, reason, sizeof reason) : STATUS_NO_MEMORY;
         if (status == KIT_ABSENT) {
             snprintf(job->entry->missing[a->file], MANIFEST_TEXT_LEN, "%s", reason);
             status = 0;
@@ -255,7 +257,7 @@ static int write_files(const char *root, const kit_job *job, char *why, size_t w
 static int build_scene(const char *root, const char *path, const kit_opts *o, manifest_scene *m, char *why,
                        size_t why_size)
 {
-    rf_scene *s = NULL;
+    scene_model *s = NULL;
     verify_exact e;
     memset(&e, 0, sizeof e);
     int status = load_exact(path, o, &s, &e, why, why_size);
@@ -311,7 +313,7 @@ static int name_scenes(const char *const *scenes, int count, manifest *m, char *
         m->scene_count = i + 1;
         if (!s->name[0] || manifest_find(m, s->name) != s) {
             snprintf(why, why_size, "two scenes would be called '%s' in the kit ('%s')", s->name, scenes[i]);
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         }
     }
     return 0;
@@ -327,7 +329,7 @@ static int fill_kit(const char *tmp, const char *const *scenes, int count, const
     char *readme = status == 0 ? path_of(tmp, "README", ".md") : NULL;
     char *manifest_path = status == 0 ? path_of(tmp, "manifest", ".json") : NULL;
     if (status == 0 && (!readme || !manifest_path))
-        status = REFRAY_EXIT_SOFTWARE;
+        status = STATUS_NO_MEMORY;
     if (status == 0)
         status = kit_readme_write(readme, m, why, why_size);
     if (status == 0)
@@ -343,7 +345,7 @@ static int install(const char *tmp, const char *dir, char *why, size_t why_size)
     int status = file_remove_tree(dir, why, why_size);
     if (status == 0 && rename(tmp, dir) != 0) {
         snprintf(why, why_size, "cannot rename '%s' to '%s': %s", tmp, dir, strerror(errno));
-        status = REFRAY_EXIT_IOERR;
+        status = STATUS_IO;
     }
     return status;
 }
@@ -353,8 +355,8 @@ static int install(const char *tmp, const char *dir, char *why, size_t why_size)
  * can be shared as it is. */
 static char *make_temp_beside(const char *dir, char *why, size_t why_size)
 {
-    char *parent = file_dirname(dir);
-    int status = parent ? file_make_dirs(parent, why, why_size) : REFRAY_EXIT_SOFTWARE;
+    char *parent = file_dirname(NULL, dir);
+    int status = parent ? file_make_dirs(parent, why, why_size) : STATUS_NO_MEMORY;
     free(parent);
     size_t n = strlen(dir) + sizeof ".tmp-XXXXXX";
     char *tmp = status == 0 ? malloc(n) : NULL;
@@ -383,23 +385,23 @@ int kit_build(const char *dir_arg, const char *const *scenes, int count, const k
         n--;
     if (n == 0 || n >= sizeof dir) {
         snprintf(why, why_size, "the kit directory's name is empty or too long");
-        return REFRAY_EXIT_USAGE;
+        return STATUS_USAGE;
     }
     snprintf(dir, sizeof dir, "%.*s", (int)n, dir_arg);
     if (!manifest_supported(why, why_size))
-        return REFRAY_EXIT_USAGE;
+        return STATUS_USAGE;
     snprintf(out->refray_version, sizeof out->refray_version, "%s", o->version ? o->version : "");
     out->scenes = calloc(count > 0 ? (size_t)count : 1, sizeof *out->scenes);
     if (!out->scenes) {
         snprintf(why, why_size, "out of memory");
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     int status = name_scenes(scenes, count, out, why, why_size);
     if (status == 0 && !replaceable(dir, why, why_size))
-        status = REFRAY_EXIT_USAGE;
+        status = STATUS_USAGE;
     char *tmp = status == 0 ? make_temp_beside(dir, why, why_size) : NULL;
     if (status == 0 && !tmp)
-        status = REFRAY_EXIT_IOERR;
+        status = STATUS_IO;
     if (status == 0)
         status = fill_kit(tmp, scenes, count, o, out, why, why_size);
     if (status == 0)

@@ -25,7 +25,7 @@
 #include "verify/manifest.h"
 
 typedef struct kit_opts {
-    rf_limits limits;      /* for loading the scenes */
+    scene_limits limits;      /* for loading the scenes */
     int warnings;          /* print the scenes' warnings */
     FILE *diag;            /* the scenes' diagnostics */
     const char *version;   /* refray's version, for the manifest and README */
@@ -39,17 +39,17 @@ typedef struct kit_opts {
  * which is replaced; anything else is refused.  On success *out holds the
  * manifest (free with manifest_free).
  *
- * Returns 0; REFRAY_EXIT_USAGE (no JSON in this build, dir not a kit, two
- * scenes of one name); REFRAY_EXIT_DATAERR (a bad scene, one without an
- * `oracle` the family accepts, one that reads other files); 66 (a missing
- * scene); REFRAY_EXIT_IOERR; REFRAY_EXIT_SOFTWARE; with the reason in why
- * (a scene's own diagnostics go to o->diag).
+ * Returns STATUS_OK; STATUS_USAGE (no JSON in this build, dir not a kit,
+ * two scenes of one name); STATUS_DATA (a bad scene, one without an
+ * `oracle` the family accepts, one that reads other files);
+ * STATUS_NO_INPUT (a missing scene); STATUS_IO; STATUS_NO_MEMORY; with the
+ * reason in why (a scene's own diagnostics go to o->diag).
  */
 int kit_build(const char *dir, const char *const *scenes, int count, const kit_opts *o, manifest *out, char *why,
               size_t why_size);
 
-/* Writes the kit's README.md for m into path, atomically; 0 or the status
- * of file_write_atomic with the reason in why. */
+/* Writes the kit's README.md for m into path, atomically; STATUS_OK or the
+ * status of file_write_atomic with the reason in why. */
 int kit_readme_write(const char *path, const manifest *m, char *why, size_t why_size);
 
 #endif

@@ -5,7 +5,7 @@
  * [KIT-RULE-1]); the tests hold both to it.
  */
 #include <stdio.h>
-#include "base/fileio.h"
+#include "io/filewrite.h"
 #include "verify/kit.h"
 
 /* The page in sections (C99 guarantees string literals only up to 4095 bytes). */
@@ -98,7 +98,7 @@ static int fill(FILE *fp, void *ctx)
                 s->width, s->height, s->samples, s->max_depth, s->relative, s->absolute, s->peak, s->masked,
                 s->png16_scale);
     }
-    return ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return ferror(fp) ? STATUS_IO : STATUS_OK;
 }
 
 int kit_readme_write(const char *path, const manifest *m, char *why, size_t why_size)

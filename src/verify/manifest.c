@@ -8,7 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
+#include "io/fileio.h"
+#include "io/filewrite.h"
 #include "base/status.h"
 #include "base/text.h"
 #include "verify/manifest.h"
@@ -34,13 +35,13 @@ int manifest_add_note(manifest_scene *s, const char *text)
 {
     char **grown = realloc(s->notes, (size_t)(s->note_count + 1) * sizeof *grown);
     if (!grown)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     s->notes = grown;
     size_t n = strlen(text) + 1;
     if (!(grown[s->note_count] = malloc(n)))
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     memcpy(grown[s->note_count++], text, n);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 const manifest_scene *manifest_find(const manifest *m, const char *name)
@@ -266,7 +267,7 @@ int manifest_write(const char *path, const manifest *m, char *why, size_t why_si
     json_decref(root);
     if (!bytes) {
         snprintf(why, why_size, "cannot write '%s': out of memory", path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     /* A text file ends with a line feed; json_dumps writes none. */
     size_t n = strlen(bytes);
@@ -274,7 +275,7 @@ int manifest_write(const char *path, const manifest *m, char *why, size_t why_si
     if (!line) {
         free(bytes);
         snprintf(why, why_size, "cannot write '%s': out of memory", path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     line[n] = '\n';
     line[n + 1] = '\0';
@@ -293,7 +294,7 @@ typedef struct reader {
     size_t why_size;
 } reader;
 
-/* Prints "path: scenes[i] ('name'): what" into why; returns 65. */
+/* Prints "path: scenes[i] ('name'): what" into why; returns STATUS_DATA. */
 static int bad(reader *r, const char *what, const char *key)
 {
     char where[160] = "";
@@ -301,7 +302,7 @@ static int bad(reader *r, const char *what, const char *key)
         snprintf(where, sizeof where, " scenes[%d]%s%s%s:", r->index, r->name ? " ('" : "", r->name ? r->name : "",
                  r->name ? "')" : "");
     snprintf(r->why, r->why_size, "%s:%s '%s' %s", r->path, where, key, what);
-    return REFRAY_EXIT_DATAERR;
+    return STATUS_DATA;
 }
 
 static int get_string(reader *r, json_t *o, const char *key, char *out, size_t size)
@@ -420,7 +421,7 @@ static int read_notes(reader *r, json_t *o, manifest_scene *s)
             return bad(r, "holds something other than strings", "pov_notes");
         if (manifest_add_note(s, t) != 0) {
             snprintf(r->why, r->why_size, "out of memory reading '%s'", r->path);
-            return REFRAY_EXIT_SOFTWARE;
+            return STATUS_NO_MEMORY;
         }
     }
     return 0;
@@ -474,7 +475,7 @@ static int read_root(reader *r, json_t *root, manifest *m)
     if (!json_is_integer(version) || json_integer_value(version) != MANIFEST_FORMAT_VERSION) {
         snprintf(r->why, r->why_size, "%s: format_version is not %d: a kit of another refray", r->path,
                  MANIFEST_FORMAT_VERSION);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     const char *v = json_string_value(json_object_get(root, "refray_version"));
     snprintf(m->refray_version, sizeof m->refray_version, "%s", v ? v : "");
@@ -482,7 +483,7 @@ static int read_root(reader *r, json_t *root, manifest *m)
     m->scenes = calloc(n ? n : 1, sizeof *m->scenes);
     if (!m->scenes) {
         snprintf(r->why, r->why_size, "out of memory reading '%s'", r->path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     for (size_t i = 0; i < n; i++) {
         r->index = (int)i;
@@ -502,7 +503,7 @@ int manifest_read(const char *path, manifest *m, char *why, size_t why_size)
     memset(m, 0, sizeof *m);
     char *bytes;
     size_t len;
-    int status = file_read_all(path, 1L << 28, &bytes, &len, why, why_size);
+    int status = file_read_all(path, 1L << 28, NULL, &bytes, &len, why, why_size);
     if (status)
         return status;
     json_error_t error;
@@ -510,7 +511,7 @@ int manifest_read(const char *path, manifest *m, char *why, size_t why_size)
     free(bytes);
     if (!root) {
         snprintf(why, why_size, "%s:%d:%d: %s", path, error.line, error.column, error.text);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     reader r = {path, -1, NULL, why, why_size};
     status = read_root(&r, root, m);
@@ -533,7 +534,7 @@ static int no_json(char *why, size_t why_size)
 {
     snprintf(why, why_size, "this refray was built without JSON support (JSON=0, no jansson), which kit "
              "manifests need; rebuild with JSON=1 (Debian: libjansson-dev)");
-    return REFRAY_EXIT_USAGE;
+    return STATUS_USAGE;
 }
 
 int manifest_supported(char *why, size_t why_size)

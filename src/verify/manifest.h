@@ -7,8 +7,9 @@
  * read it; anyone else can read it with any JSON library.
  *
  * The manifest is JSON (written and read with jansson): in a build without
- * it (JSON=0) manifest_write and manifest_read return REFRAY_EXIT_USAGE
- * with a reason that names the missing feature.
+ * it (JSON=0) manifest_write and manifest_read return STATUS_USAGE (of
+ * base/status.h, as every status here) with a reason that names the
+ * missing feature.
  */
 #ifndef REFRAY_MANIFEST_H
 #define REFRAY_MANIFEST_H
@@ -76,7 +77,7 @@ int manifest_supported(char *why, size_t why_size);
 /* "scene", "json", "pov", "exact_exr", "exact_pfm", "mask_pgm", "mask_png". */
 const char *manifest_file_key(manifest_file f);
 
-/* Appends a note to s (copied).  Returns 0, or REFRAY_EXIT_SOFTWARE. */
+/* Appends a note to s (copied).  Returns STATUS_OK, or STATUS_NO_MEMORY. */
 int manifest_add_note(manifest_scene *s, const char *text);
 
 /* The scene called name, or NULL. */
@@ -94,19 +95,19 @@ double manifest_png16_step(double scale);
 void manifest_free(manifest *m);
 
 /*
- * Writes m as JSON to path atomically.  Returns 0; REFRAY_EXIT_USAGE in a
- * build without JSON; REFRAY_EXIT_IOERR or REFRAY_EXIT_SOFTWARE; with the
- * reason in why.
+ * Writes m as JSON to path atomically.  Returns STATUS_OK; STATUS_USAGE in
+ * a build without JSON; STATUS_IO or STATUS_NO_MEMORY; with the reason in
+ * why.
  */
 int manifest_write(const char *path, const manifest *m, char *why, size_t why_size);
 
 /*
  * Reads the manifest at path into *m (free it with manifest_free).
- * Returns 0; REFRAY_EXIT_NOINPUT when it cannot be opened;
- * REFRAY_EXIT_DATAERR when it is not JSON ("path:line:col: ...") or lacks
- * a field ("path: scenes[3] ('name'): ..."), or names a file outside the
- * kit (absolute, or with a ".." part); REFRAY_EXIT_USAGE in a build without
- * JSON; REFRAY_EXIT_SOFTWARE when out of memory.  On failure *m is empty.
+ * Returns STATUS_OK; STATUS_NO_INPUT when it cannot be opened; STATUS_DATA
+ * when it is not JSON ("path:line:col: ...") or lacks a field ("path:
+ * scenes[3] ('name'): ..."), or names a file outside the kit (absolute, or
+ * with a ".." part); STATUS_USAGE in a build without JSON; STATUS_IO when
+ * a read fails; STATUS_NO_MEMORY.  On failure *m is empty.
  */
 int manifest_read(const char *path, manifest *m, char *why, size_t why_size);
 

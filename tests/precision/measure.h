@@ -166,7 +166,7 @@ static void run_ambient(long n, uint64_t seed, measure *m)
     }
 }
 
-static void run_falloff(long n, uint64_t seed, measure *m, rf_falloff kind)
+static void run_falloff(long n, uint64_t seed, measure *m, scene_falloff kind)
 {
     gen g = {seed, 0};
     for (long i = 0; i < n; i++) {

@@ -16,6 +16,7 @@
 #include <string.h>
 #include "render/bvh.h"
 #include "render/camera.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 #include "render/trace.h"
 
@@ -49,12 +50,12 @@ static int print_table(long n, uint64_t seed)
 
 /* ---- the stress scenes: naive against robust ------------------------------ */
 
-static rf_scene *load(const char *name)
+static scene_model *load(const char *name)
 {
     char path[256];
     int status;
     snprintf(path, sizeof path, "scenes/stress/%s.scene", name);
-    rf_scene *s = scene_load(path, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
     if (!s) {
         fprintf(stderr, "precision: cannot load %s (run from the repository root)\n", path);
         exit(2);
@@ -68,8 +69,8 @@ static rf_scene *load(const char *name)
  * isect_sphere. */
 static void sphere_scene(const char *name)
 {
-    rf_scene *s = load(name);
-    const rf_prim *p = &s->prims[0];
+    scene_model *s = load(name);
+    const scene_prim *p = &s->prims[0];
     int w = s->image.width * 4, h = s->image.height * 4;
     long wrong[2] = {0, 0}, rays = 0;
     double off[2] = {0, 0};
@@ -105,8 +106,8 @@ static void sphere_scene(const char *name)
  * about the ray's origin. */
 static void shape_scene(const char *name)
 {
-    rf_scene *s = load(name);
-    const rf_prim *p = &s->prims[0];
+    scene_model *s = load(name);
+    const scene_prim *p = &s->prims[0];
     int torus = p->kind == PRIM_TORUS, cone = p->kind == PRIM_CONE;
     qcone qc = cone ? qcone_of(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], p->u.cone.open)
                     : qcone_of(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius,
@@ -149,11 +150,11 @@ static void shape_scene(const char *name)
  * epsilon and with ray_spawn_hit. */
 static void spawn_scene(const char *name, double eps, int count_leaks)
 {
-    rf_scene *s = load(name);
+    scene_model *s = load(name);
     tracer t;
     if (!tracer_init(&t, s, 0, 0))
         exit(2);
-    const rf_light *light = &s->lights[0];
+    const scene_light *light = &s->lights[0];
     long tried = 0, bad[2] = {0, 0};
     int w = s->image.width * 4, h = s->image.height * 4;
     for (int j = 0; j < h; j++)
@@ -186,7 +187,7 @@ static void watertight_scene(void)
 {
     static const double at[] = {0.5, 0.1, 0.3337, 0.71, 0.9};
     static const double lean[3][3] = {{0.31, -0.17, 0.05}, {-0.23, 0.11, 0.29}, {0.07, 0.37, -0.19}};
-    rf_scene *s = load("watertight_mesh");
+    scene_model *s = load("watertight_mesh");
     tracer t;
     if (!tracer_init(&t, s, 0, 0))
         exit(2);

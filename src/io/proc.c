@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
-#include "base/proc.h"
+#include "io/proc.h"
 #include "base/status.h"
 
 static double now(void)
@@ -116,7 +116,7 @@ int proc_run_shell(const char *command, const proc_opts *o, proc_result *r, char
             close(out);
         if (err >= 0)
             close(err);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     double start = now();
     pid_t pid = fork();
@@ -128,7 +128,7 @@ int proc_run_shell(const char *command, const proc_opts *o, proc_result *r, char
     close(err);
     if (pid < 0) {
         snprintf(why, why_size, "cannot start a process: %s", strerror(fork_errno));
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_INTERNAL;
     }
     /* Also here, so the group exists before any kill below, whichever of
      * the two runs first; it fails harmlessly once the child has exec'd. */
@@ -137,7 +137,7 @@ int proc_run_shell(const char *command, const proc_opts *o, proc_result *r, char
     kill(-pid, SIGKILL);
     reap(pid, r);
     r->seconds = now() - start;
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 const char *proc_signal_name(int sig, char *buf, size_t size)

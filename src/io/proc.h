@@ -37,9 +37,9 @@ typedef struct proc_result {
  * everything it started) can be killed with one kill(2).  Waits until it
  * ends, the timeout passes or *stop is set; in the last two cases sends
  * SIGKILL to the group.  When it ends by itself, whatever it left running
- * in its group is killed too.  Returns 0 with r filled (whatever the
- * command did), or REFRAY_EXIT_IOERR / REFRAY_EXIT_SOFTWARE when it could
- * not be started, with the reason in why.
+ * in its group is killed too.  Returns STATUS_OK with r filled (whatever
+ * the command did), or STATUS_IO (its output files cannot be opened) /
+ * STATUS_INTERNAL (no process can be started) with the reason in why.
  */
 int proc_run_shell(const char *command, const proc_opts *o, proc_result *r, char *why, size_t why_size);
 

@@ -1,6 +1,5 @@
 /*
- * fileio.c - see fileio.h.  Only regular files are read: a directory, a FIFO
- * or a device could block forever or never end, which an input must not.
+ * filewrite.c - see filewrite.h.
  */
 #include <dirent.h>
 #include <errno.h>
@@ -10,103 +9,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "base/fileio.h"
+#include "io/filewrite.h"
 #include "base/status.h"
-
-static int open_error(const char *path, char *why, size_t why_size)
-{
-    snprintf(why, why_size, "cannot open '%s': %s", path, strerror(errno));
-    return REFRAY_EXIT_NOINPUT;
-}
-
-static int read_stream(FILE *f, const char *path, size_t size, char **text, size_t *len, char *why,
-                       size_t why_size)
-{
-    char *buf = malloc(size + 1);
-    if (!buf) {
-        snprintf(why, why_size, "out of memory reading '%s'", path);
-        return REFRAY_EXIT_SOFTWARE;
-    }
-    size_t got = fread(buf, 1, size, f);
-    /* A file that grew since fstat is read only up to its checked size. */
-    if (got != size || ferror(f)) {
-        snprintf(why, why_size, "error reading '%s': %s", path, ferror(f) ? strerror(errno) : "file shrank");
-        free(buf);
-        return REFRAY_EXIT_IOERR;
-    }
-    buf[size] = '\0';
-    *text = buf;
-    *len = size;
-    return 0;
-}
-
-int file_read_all(const char *path, long max_bytes, char **text, size_t *len, char *why, size_t why_size)
-{
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return open_error(path, why, why_size);
-    if (S_ISDIR(st.st_mode)) {
-        snprintf(why, why_size, "'%s' is a directory, not a file", path);
-        return REFRAY_EXIT_NOINPUT;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        snprintf(why, why_size, "'%s' is not a regular file", path);
-        return REFRAY_EXIT_NOINPUT;
-    }
-    if (max_bytes >= 0 && st.st_size > max_bytes) {
-        snprintf(why, why_size, "'%s' is %lld bytes, over the limit of %ld (--max-file-size)", path,
-                 (long long)st.st_size, max_bytes);
-        return REFRAY_EXIT_DATAERR;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return open_error(path, why, why_size);
-    int status = read_stream(f, path, (size_t)st.st_size, text, len, why, why_size);
-    fclose(f);
-    return status;
-}
-
-char *file_dirname(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    size_t n = slash ? (size_t)(slash - path) : 0;
-    if (slash && n == 0)
-        n = 1; /* "/x": the root */
-    char *dir = malloc(slash ? n + 1 : 2);
-    if (!dir)
-        return NULL;
-    if (slash) {
-        memcpy(dir, path, n);
-        dir[n] = '\0';
-    } else {
-        strcpy(dir, ".");
-    }
-    return dir;
-}
-
-char *file_join(const char *dir, const char *rel)
-{
-    int keep = rel[0] == '/' || strcmp(dir, ".") == 0;
-    size_t n = keep ? strlen(rel) : strlen(dir) + 1 + strlen(rel);
-    char *out = malloc(n + 1);
-    if (!out)
-        return NULL;
-    if (keep)
-        strcpy(out, rel);
-    else
-        sprintf(out, "%s%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/", rel);
-    return out;
-}
-
-char *file_absolute(const char *path)
-{
-    if (path[0] == '/')
-        return file_join("/", path);
-    char cwd[4096];
-    return getcwd(cwd, sizeof cwd) ? file_join(cwd, path) : NULL;
-}
-
-/* ---- Writing ---- */
 
 /* Read where Linux publishes it: asking umask(2) means setting it, a
  * process-wide change.  Elsewhere the common umask 022 is assumed. */
@@ -129,13 +33,13 @@ static int fill_temp(int fd, file_fill_fn fill, void *ctx)
     FILE *fp = fchmod(fd, (mode_t)file_new_mode()) == 0 ? fdopen(fd, "wb") : NULL;
     if (!fp) {
         close(fd);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     int rc = fill(fp, ctx);
     if (rc == 0 && (fflush(fp) != 0 || ferror(fp) || fsync(fileno(fp)) != 0))
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     if (fclose(fp) != 0 && rc == 0)
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     return rc;
 }
 
@@ -146,20 +50,20 @@ int file_write_atomic(const char *path, file_fill_fn fill, void *ctx, char *why,
     /* rename would replace a directory entry that is not a plain file. */
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(why, why_size, "cannot write '%s': it exists and is not a regular file", path);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
     if (!tmp) {
         snprintf(why, why_size, "cannot write '%s': out of memory", path);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     snprintf(tmp, n, "%s%s", path, suffix);
     int fd = mkstemp(tmp), rc;
     if (fd < 0) {
         snprintf(why, why_size, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
         free(tmp);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     errno = 0;
     if ((rc = fill_temp(fd, fill, ctx)) != 0)
@@ -167,7 +71,7 @@ int file_write_atomic(const char *path, file_fill_fn fill, void *ctx, char *why,
     else if (rename(tmp, path) != 0) {
         snprintf(why, why_size, "cannot write '%s': cannot rename the temporary file into place: %s", path,
                  strerror(errno));
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     }
     if (rc != 0)
         unlink(tmp);
@@ -183,7 +87,7 @@ typedef struct byte_span {
 static int fill_bytes(FILE *fp, void *ctx)
 {
     const byte_span *b = ctx;
-    return b->len == 0 || fwrite(b->data, 1, b->len, fp) == b->len ? 0 : REFRAY_EXIT_IOERR;
+    return b->len == 0 || fwrite(b->data, 1, b->len, fp) == b->len ? 0 : STATUS_IO;
 }
 
 int file_write_bytes(const char *path, const void *data, size_t len, char *why, size_t why_size)
@@ -201,7 +105,7 @@ int file_make_dirs(const char *path, char *why, size_t why_size)
     char *p = malloc(strlen(path) + 1);
     if (!p) {
         snprintf(why, why_size, "out of memory");
-        return REFRAY_EXIT_IOERR;
+        return STATUS_NO_MEMORY;
     }
     strcpy(p, path);
     int rc = 0;
@@ -214,7 +118,7 @@ int file_make_dirs(const char *path, char *why, size_t why_size)
         struct stat sb;
         if (mkdir(p, 0777) != 0 && !(errno == EEXIST && stat(p, &sb) == 0 && S_ISDIR(sb.st_mode))) {
             snprintf(why, why_size, "cannot create the directory '%s': %s", p, strerror(errno));
-            rc = REFRAY_EXIT_IOERR;
+            rc = STATUS_IO;
         }
         *s = keep;
         if (!keep)
@@ -232,7 +136,7 @@ static int empty_dir(int fd, const char *path, char *why, size_t why_size)
     if (!d) {
         snprintf(why, why_size, "cannot read the directory '%s': %s", path, strerror(errno));
         close(fd);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     int rc = 0;
     struct dirent *e;
@@ -243,16 +147,16 @@ static int empty_dir(int fd, const char *path, char *why, size_t why_size)
         struct stat sb;
         if (fstatat(dirfd(d), name, &sb, AT_SYMLINK_NOFOLLOW) == 0 && S_ISDIR(sb.st_mode)) {
             int sub = openat(dirfd(d), name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-            int r = sub < 0 ? REFRAY_EXIT_IOERR : empty_dir(sub, name, why, why_size);
+            int r = sub < 0 ? STATUS_IO : empty_dir(sub, name, why, why_size);
             if (r == 0 && unlinkat(dirfd(d), name, AT_REMOVEDIR) != 0)
-                r = REFRAY_EXIT_IOERR;
+                r = STATUS_IO;
             if (r != 0 && rc == 0) {
                 snprintf(why, why_size, "cannot remove the directory '%s' in '%s'", name, path);
                 rc = r;
             }
         } else if (unlinkat(dirfd(d), name, 0) != 0 && rc == 0) {
             snprintf(why, why_size, "cannot remove '%s' in '%s': %s", name, path, strerror(errno));
-            rc = REFRAY_EXIT_IOERR;
+            rc = STATUS_IO;
         }
     }
     closedir(d);
@@ -266,17 +170,17 @@ int file_remove_tree(const char *path, char *why, size_t why_size)
         return 0;
     if (lstat(path, &sb) != 0 || (!S_ISDIR(sb.st_mode) && unlink(path) != 0)) {
         snprintf(why, why_size, "cannot remove '%s': %s", path, strerror(errno));
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     if (!S_ISDIR(sb.st_mode))
         return 0;
     int fd = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-    int rc = fd < 0 ? REFRAY_EXIT_IOERR : empty_dir(fd, path, why, why_size);
+    int rc = fd < 0 ? STATUS_IO : empty_dir(fd, path, why, why_size);
     if (fd < 0)
         snprintf(why, why_size, "cannot open the directory '%s': %s", path, strerror(errno));
     if (rc == 0 && rmdir(path) != 0) {
         snprintf(why, why_size, "cannot remove the directory '%s': %s", path, strerror(errno));
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     }
     return rc;
 }
