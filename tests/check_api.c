@@ -228,6 +228,17 @@ static rf_status memory_fetch(void *user, const char *from, const char *name, rf
     return RF_ERR_NO_INPUT;
 }
 
+/* Load options whose diagnostics go to c and whose files come from files. */
+static void collecting_options(rf_load_options *o, collected *c, const char *const *files)
+{
+    memset(c, 0, sizeof *c);
+    rf_load_options_init(o);
+    o->diagnostic = collect;
+    o->diagnostic_user = c;
+    o->resolver.fetch = memory_fetch;
+    o->resolver.user = (void *)files;
+}
+
 /* [EMBED-API-4] Diagnostics come as records with file, line, column,
  * severity, message and the source line; an error in an included file is
  * followed by the note "included from here"; the resolver's reason for a
@@ -237,13 +248,8 @@ START_TEST(test_api_diagnostics_and_resolver)
     static const char *const files[] = {"part.scene", "sphere {\n  radius -1 }\n", "tri.obj",
                                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", NULL};
     collected c;
-    memset(&c, 0, sizeof c);
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.diagnostic = collect;
-    o.diagnostic_user = &c;
-    o.resolver.fetch = memory_fetch;
-    o.resolver.user = (void *)files;
+    collecting_options(&o, &c, files);
     rf_scene *s = (rf_scene *)&c;
     static const char text[] = "mesh { file \"tri.obj\" }\ninclude \"part.scene\"\n";
     ck_assert_int_eq(rf_scene_load_memory("main.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
@@ -296,13 +302,8 @@ START_TEST(test_api_json_scenes)
     static const char *const files[] = {"tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", NULL};
     char text[2048];
     collected c;
-    memset(&c, 0, sizeof c);
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.diagnostic = collect;
-    o.diagnostic_user = &c;
-    o.resolver.fetch = memory_fetch;
-    o.resolver.user = (void *)files;
+    collecting_options(&o, &c, files);
     rf_scene *s;
     snprintf(text, sizeof text, plane_json, "");
 #ifdef REFRAY_HAVE_JSON
