@@ -1,8 +1,7 @@
 /* Keeps spec/language.md complete: every reserved word of the scanner's
  * table appears in it backquoted, every property of every block appears in
  * that block's section (`### \`name\``), every [LANG-...] ID a test cites
- * is defined there, and every ID defined there is cited by some test; the
- * same for the [REL-...] IDs of spec/reliability.md.
+ * is defined there, and every ID defined there is cited by some test.
  * Tests run from the repository root. */
 #include <dirent.h>
 #include <stdio.h>
@@ -123,7 +122,8 @@ static int id_listed(const id_list *l, const char *id)
     return 0;
 }
 
-/* Adds every ID of text that starts with prefix ("[LANG-") to l (once each). */
+/* Adds every "[PREFIX-...]" of text to l (once each); prefix is "[LANG-",
+ * "[JSON-" or "[REL-". */
 static void collect_ids(const char *text, const char *prefix, id_list *l)
 {
     for (const char *p = strstr(text, prefix); p; p = strstr(p + 1, prefix)) {
@@ -138,7 +138,8 @@ static void collect_ids(const char *text, const char *prefix, id_list *l)
     }
 }
 
-/* The IDs of prefix cited by the test sources tests/check_*.c. */
+/* The IDs cited by the test sources tests/check_NAME.c and the test
+ * scripts tests/NAME.sh. */
 static void cited_ids(const char *prefix, id_list *l)
 {
     DIR *dir = opendir(TESTS);
@@ -146,8 +147,9 @@ static void cited_ids(const char *prefix, id_list *l)
     l->count = 0;
     for (struct dirent *e = readdir(dir); e; e = readdir(dir)) {
         size_t n = strlen(e->d_name);
-        if (strncmp(e->d_name, "check_", 6) != 0 || n < 3 || strcmp(e->d_name + n - 2, ".c") != 0 ||
-            strcmp(e->d_name, "check_spec.c") == 0)
+        int script = n > 3 && strcmp(e->d_name + n - 3, ".sh") == 0;
+        if (!script && (strncmp(e->d_name, "check_", 6) != 0 || n < 3 || strcmp(e->d_name + n - 2, ".c") != 0 ||
+                        strcmp(e->d_name, "check_spec.c") == 0))
             continue;
         char path[512];
         snprintf(path, sizeof path, "%s/%s", TESTS, e->d_name);
@@ -158,24 +160,16 @@ static void cited_ids(const char *prefix, id_list *l)
     closedir(dir);
 }
 
-/* One spec file and the IDs it owns. */
-static const struct {
-    const char *spec, *prefix;
-    int at_least; /* cited IDs expected at the least (a broken scan finds 0) */
-} id_owners[] = {
-    {SPEC, "[LANG-", 40},
-    {"spec/reliability.md", "[REL-", 25},
-};
-
-START_TEST(test_spec_defines_every_cited_id)
+/* Every ID of spec_path with prefix is cited by a test, and every one a
+ * test cites is defined there; at least `least` of them. */
+static void check_ids(const char *spec_path, const char *prefix, int least)
 {
-    const char *spec_path = id_owners[_i].spec;
     id_list cited, defined;
     char *spec = read_text(spec_path);
-    cited_ids(id_owners[_i].prefix, &cited);
+    cited_ids(prefix, &cited);
     defined.count = 0;
-    collect_ids(spec, id_owners[_i].prefix, &defined);
-    ck_assert_int_ge(cited.count, id_owners[_i].at_least);
+    collect_ids(spec, prefix, &defined);
+    ck_assert_int_ge(cited.count, least);
     for (int i = 0; i < cited.count; i++)
         ck_assert_msg(id_listed(&defined, cited.ids[i]), "a test cites [%s], which %s does not define",
                       cited.ids[i], spec_path);
@@ -183,6 +177,25 @@ START_TEST(test_spec_defines_every_cited_id)
         ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", spec_path,
                       defined.ids[i]);
     free(spec);
+}
+
+START_TEST(test_spec_defines_every_cited_id)
+{
+    check_ids(SPEC, "[LANG-", 40);
+}
+END_TEST
+
+/* The same for the JSON format's statements (spec/json.md). */
+START_TEST(test_spec_json_defines_every_cited_id)
+{
+    check_ids("spec/json.md", "[JSON-", 10);
+}
+END_TEST
+
+/* The same for the reliability policies (spec/reliability.md). */
+START_TEST(test_spec_reliability_defines_every_cited_id)
+{
+    check_ids("spec/reliability.md", "[REL-", 25);
 }
 END_TEST
 
@@ -193,7 +206,9 @@ Suite *suite_spec(void)
     tcase_add_test(tc, test_spec_lists_every_keyword);
     tcase_add_test(tc, test_spec_lists_every_property_of_every_block);
     tcase_add_test(tc, test_spec_helpers);
-    tcase_add_loop_test(tc, test_spec_defines_every_cited_id, 0, (int)(sizeof id_owners / sizeof id_owners[0]));
+    tcase_add_test(tc, test_spec_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_json_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_reliability_defines_every_cited_id);
     suite_add_tcase(s, tc);
     return s;
 }

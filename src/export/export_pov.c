@@ -836,10 +836,10 @@ typedef struct pov_job {
     pov_notes *notes;
 } pov_job;
 
-static int fill(FILE *fp, void *ctx)
+static int fill_pov(FILE *fp, void *ctx)
 {
-    const pov_job *j = ctx;
-    return pov_export_write(j->s, j->o, fp, j->notes);
+    pov_job *job = ctx;
+    return pov_export_write(job->s, job->o, fp, job->notes);
 }
 
 int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
@@ -851,7 +851,7 @@ int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, p
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
         return STATUS_DATA;
-    int rc = file_write_atomic(path, fill, &job, why, sizeof why);
+    int rc = file_write_atomic(path, fill_pov, &job, why, sizeof why);
     if (rc != STATUS_OK && rc != STATUS_DATA && err && errlen)
         snprintf(err, errlen, "%s", why);
     return rc;
