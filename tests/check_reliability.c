@@ -22,6 +22,7 @@
 #include "testlib.h"
 #include "refray.h"
 #include "base/names.h"
+#include "export/export_json.h"
 #include "image/metrics.h"
 #include "io/atomic.h"
 #include "io/image_io.h"
@@ -441,6 +442,40 @@ START_TEST(test_cancel_inside_a_load_and_a_build)
 }
 END_TEST
 
+/* A JSON scene's load polls too, once per element: 20 000 spheres
+ * exported to JSON and read back, asked to stop at once, stop within
+ * 0.2 s of CPU time (before, the JSON reader never asked). */
+START_TEST(test_cancel_inside_a_json_load)
+{
+#ifdef REFRAY_HAVE_JSON
+    static const char many[] = "for i in 0..19999 { sphere { center [i, 0, 0] radius 0.4 } }\n";
+    int status;
+    scene_limits lim = scene_default_limits();
+    scene_model *s = scene_file_load_text("m.scene", many, sizeof many - 1, &lim, NULL, 0, &status);
+    ck_assert_ptr_nonnull(s);
+    char *json = NULL, err[256];
+    size_t len = 0;
+    FILE *fp = open_memstream(&json, &len);
+    export_json_opts eo;
+    memset(&eo, 0, sizeof eo);
+    ck_assert_int_eq(export_json_write(s, &eo, fp, err, sizeof err), STATUS_OK);
+    ck_assert_int_eq(fclose(fp), 0);
+    scene_free(s);
+    scene_load_opts o;
+    scene_load_opts_init(&o);
+    stopwatch w = watch(0.0);
+    o.cancel = stop_later;
+    o.cancel_user = &w;
+    scene_source root = {"m.json", NULL, json, len, 0};
+    s = scene_load_json_source(&root, &o, &status);
+    ck_assert_ptr_null(s);
+    ck_assert_int_eq(status, STATUS_CANCELLED);
+    ck_assert_msg(latency(&w) < 0.2, "JSON load stopped %.3f s after being asked", latency(&w));
+    free(json);
+#endif
+}
+END_TEST
+
 static int stop_now(void *user)
 {
     (void)user;
@@ -769,6 +804,7 @@ Suite *suite_reliability(void)
     tcase_add_test(cancel, test_cancel_inside_a_long_pixel);
     tcase_add_test(cancel, test_cancel_inside_an_unbounded_ray_tree);
     tcase_add_test(cancel, test_cancel_inside_a_load_and_a_build);
+    tcase_add_test(cancel, test_cancel_inside_a_json_load);
     tcase_add_test(cancel, test_cancel_a_write);
     tcase_add_test(cancel, test_glass_nested_too_deep_is_refused);
     suite_add_tcase(s, cancel);

@@ -19,9 +19,11 @@
 
 static const char *const falloff_names[] = {"linear", "inverse_square", "none"};
 
+/* Out of memory, too many errors, or cancelled (a step of the load's
+ * cancel poll per element: [REL-CANCEL-1]). */
 static int stop(const loader *L)
 {
-    return L->out_of_memory || diag_too_many(&L->diag);
+    return loader_stop(L);
 }
 
 /* The member key of obj, read with the path on it. */

@@ -105,7 +105,8 @@ static int inline_mesh(jreader *r, json_t *p, obj_mesh *m)
     m->triangle_cap = m->triangle_count = (int)n;
     for (size_t i = 0; i < n; i++) {
         m->triangles[i].where = src_span_none();
-        if (!read_triangle(r, tris, json_is_array(tri_normals) ? tri_normals : NULL, i, m, &m->triangles[i]))
+        json_t *normals = json_is_array(tri_normals) ? tri_normals : NULL;
+        if (loader_stop(r->L) || !read_triangle(r, tris, normals, i, m, &m->triangles[i]))
             return 0;
     }
     return 1;
@@ -175,7 +176,7 @@ static int emit_mesh(jreader *r, json_t *p, const obj_mesh *m, scene_prim *proto
     proto->kind = PRIM_TRIANGLE;
     proto->mesh = r->L->scene->mesh_count - 1;
     int ok = mesh->path != NULL;
-    for (int i = 0; ok && i < m->triangle_count && !diag_too_many(&r->L->diag); i++)
+    for (int i = 0; ok && i < m->triangle_count && !loader_stop(r->L); i++)
         ok = emit_triangle(r, m, i, proto);
     r->L->scene->meshes[proto->mesh].count = r->L->scene->prim_count - r->L->scene->meshes[proto->mesh].first_prim;
     return ok;
