@@ -13,14 +13,18 @@ static const char check_help[] =
     "Parses and validates each scene; prints diagnostics to stderr and, for each\n"
     "valid file, one line to stdout:\n"
     "  FILE: ok: P primitives, L lights, M materials; uses: FEATURES\n"
+    "and one line per mesh:\n"
+    "  mesh PATH: T triangles from F faces, D dropped; closed|open (...);\n"
+    "  consistently oriented|not consistently oriented; K pieces\n"
     "Options: -W (no warnings) and the input limits of `refray --help`.\n";
 
-static void count_kinds(const rf_scene *s, int counts[5])
+enum { KINDS = PRIM_MESH + 1 };
+
+static void count_kinds(const rf_scene *s, int counts[KINDS])
 {
-    memset(counts, 0, 5 * sizeof counts[0]);
+    memset(counts, 0, KINDS * sizeof counts[0]);
     for (int i = 0; i < s->prim_count; i++)
-        if (s->prims[i].mesh < 0)
-            counts[s->prims[i].kind]++;
+        counts[s->prims[i].kind]++;
 }
 
 static void print_features(const rf_features *f)
@@ -35,17 +39,37 @@ static void print_features(const rf_features *f)
         printf("none");
 }
 
+/* [MESH-CHECK-1] One line per mesh: what the loader found and did. */
+static void print_mesh(const rf_mesh *m)
+{
+    const rf_mesh_report *r = &m->report;
+    printf("  mesh %s: %d triangle%s from %d face%s, %d dropped; ", m->path, m->geom.tri_count,
+           m->geom.tri_count == 1 ? "" : "s", r->faces, r->faces == 1 ? "" : "s", r->dropped);
+    if (m->geom.closed)
+        printf("closed");
+    else
+        printf("open (%d open edge%s, %d edge%s of 3 or more triangles)", r->open_edges,
+               r->open_edges == 1 ? "" : "s", r->crowded_edges, r->crowded_edges == 1 ? "" : "s");
+    printf("; %s oriented; %d piece%s", r->oriented ? "consistently" : "not consistently", r->components,
+           r->components == 1 ? "" : "s");
+    if (r->nonplanar)
+        printf("; %d non-planar", r->nonplanar);
+    if (r->fanned)
+        printf("; %d fanned", r->fanned);
+    printf("\n");
+}
+
 static void print_summary(const char *path, const rf_scene *s)
 {
     static const char *kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     static const char *plural[] = {"spheres", "planes", "triangles", "disks", "boxes"};
-    int counts[5], mesh_triangles = 0;
+    int counts[KINDS], mesh_triangles = 0;
     count_kinds(s, counts);
     for (int i = 0; i < s->mesh_count; i++)
-        mesh_triangles += s->meshes[i].count;
+        mesh_triangles += s->meshes[i].geom.tri_count;
     printf("%s: ok: %d primitive%s (", path, s->prim_count, s->prim_count == 1 ? "" : "s");
     int listed = 0;
-    for (int k = 0; k < 5; k++)
+    for (int k = 0; k < PRIM_MESH; k++)
         if (counts[k])
             printf("%s%d %s", listed++ ? ", " : "", counts[k], counts[k] == 1 ? kinds[k] : plural[k]);
     if (s->mesh_count)
@@ -57,6 +81,8 @@ static void print_summary(const char *path, const rf_scene *s)
     if (s->oracle)
         printf("; oracle %s", s->oracle);
     printf("\n");
+    for (int i = 0; i < s->mesh_count; i++)
+        print_mesh(&s->meshes[i]);
 }
 
 int cli_check(int argc, char **argv)

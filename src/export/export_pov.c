@@ -126,6 +126,10 @@ static void extent_add_prim(extent *e, const rf_prim *p)
         for (int i = 0; i < 3; i++)
             extent_add(e, p->u.triangle.p[i]);
         break;
+    case PRIM_MESH:
+        for (int i = 0; i < p->u.mesh.position_count; i++)
+            extent_add(e, p->u.mesh.positions[i]);
+        break;
     case PRIM_PLANE:
         break;
     }
@@ -246,7 +250,15 @@ static void check_light(const rf_scene *s, const rf_light *l, double radius, con
 
 static int is_solid(const rf_prim *p)
 {
-    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
+    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_MESH && p->u.mesh.closed);
+}
+
+static int is_smooth(const rf_trimesh *g)
+{
+    for (int i = 0; g->tri_normal && i < g->tri_count; i++)
+        if (g->tri_normal[i][0] >= 0)
+            return 1;
+    return 0;
 }
 
 static int is_grey(rgb c)
@@ -320,12 +332,9 @@ static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_
  * refray traces the mirror ray as it is. */
 static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
 {
-    const rf_prim *tri = &s->prims[m->first_prim];
-    int smooth = 0;
     char at[256];
-    for (int i = 0; i < m->count; i++)
-        smooth |= tri[i].u.triangle.has_normals;
-    if (!smooth || s->image.max_depth < 2 || vec_max_component(s->materials[tri->material].ks) <= 0)
+    if (!is_smooth(&m->geom) || s->image.max_depth < 2 ||
+        vec_max_component(s->materials[s->prims[m->prim].material].ks) <= 0)
         return;
     where(s, m->where, at, sizeof at);
     add_note(n, "mesh at %s has vertex normals and Ks > 0: where a vertex normal sends the mirror ray into the "
@@ -665,6 +674,8 @@ static void write_shape(FILE *fp, const rf_prim *p)
         fputs(", ", fp);
         put_vec(fp, to_pov(p->u.box.hi));
         break;
+    case PRIM_MESH: /* written by write_mesh */
+        break;
     case PRIM_TRIANGLE:
         fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);
         for (int i = 0; i < 3; i++) {
@@ -689,49 +700,58 @@ static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_
     fputs("}\n", fp);
 }
 
-/* A triangle's vertex normals, or its geometric normal at all three
- * corners when it has none (a flat face of a smooth mesh). */
-static void triangle_normals(const rf_prim *p, vec3 n[3])
+static void put_list_item(FILE *fp, vec3 v)
 {
-    vec3 g = vec_normalize(vec_cross(vec_sub(p->u.triangle.p[1], p->u.triangle.p[0]),
-                                     vec_sub(p->u.triangle.p[2], p->u.triangle.p[0])));
-    for (int i = 0; i < 3; i++)
-        n[i] = p->u.triangle.has_normals ? p->u.triangle.n[i] : g;
+    fputs(",\n    ", fp);
+    put_vec(fp, to_pov(v));
 }
 
-/* [XCHK-MAP-MESH-1] A mesh as mesh2, three vertices per triangle (no
- * sharing: the corners are written as refray holds them), with its vertex
- * normals if any triangle has them, and an inside_vector so that POV-Ray
- * treats it as a solid for refraction, as refray does. */
-static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_mesh *m, int *nudged)
+/* normal_vectors: the mesh's normals, then one geometric normal for each
+ * flat triangle of a smooth mesh; normal_indices: which each corner uses. */
+static void write_mesh_normals(FILE *fp, const rf_trimesh *g)
 {
-    const rf_prim *tri = &s->prims[m->first_prim];
-    int smooth = 0;
-    for (int i = 0; i < m->count; i++)
-        smooth |= tri[i].u.triangle.has_normals;
-    fprintf(fp, "mesh2 {\n  vertex_vectors { %d", 3 * m->count);
-    for (int i = 0; i < 3 * m->count; i++) {
-        fputs(",\n    ", fp);
-        put_vec(fp, to_pov(tri[i / 3].u.triangle.p[i % 3]));
+    int flat = 0;
+    for (int i = 0; i < g->tri_count; i++)
+        flat += g->tri_normal[i][0] < 0;
+    fprintf(fp, "  normal_vectors { %d", g->normal_count + flat);
+    for (int i = 0; i < g->normal_count; i++)
+        put_list_item(fp, g->normals[i]);
+    for (int i = 0; i < g->tri_count; i++) {
+        const int *c = g->tri[i];
+        if (g->tri_normal[i][0] < 0)
+            put_list_item(fp, vec_normalize(vec_cross(vec_sub(g->positions[c[1]], g->positions[c[0]]),
+                                                      vec_sub(g->positions[c[2]], g->positions[c[0]]))));
+    }
+    fprintf(fp, " }\n  normal_indices { %d", g->tri_count);
+    for (int i = 0, flat_index = g->normal_count; i < g->tri_count; i++) {
+        int n[3] = {g->tri_normal[i][0], g->tri_normal[i][1], g->tri_normal[i][2]};
+        if (n[0] < 0)
+            n[0] = n[1] = n[2] = flat_index++;
+        fprintf(fp, ",\n    <%d, %d, %d>", n[0], n[1], n[2]);
     }
     fputs(" }\n", fp);
-    if (smooth) {
-        fprintf(fp, "  normal_vectors { %d", 3 * m->count);
-        for (int i = 0; i < m->count; i++) {
-            vec3 n[3];
-            triangle_normals(&tri[i], n);
-            for (int j = 0; j < 3; j++) {
-                fputs(",\n    ", fp);
-                put_vec(fp, to_pov(n[j]));
-            }
-        }
-        fputs(" }\n", fp);
-    }
-    fprintf(fp, "  face_indices { %d", m->count);
-    for (int i = 0; i < m->count; i++)
-        fprintf(fp, ",\n    <%d, %d, %d>", 3 * i, 3 * i + 1, 3 * i + 2);
-    fputs(" }\n  inside_vector <0, 0, 1>\n", fp);
-    write_material_ref(fp, s, o, tri, nudged);
+}
+
+/* [XCHK-MAP-MESH-1] A mesh as mesh2 with its shared vertices as refray
+ * holds them (world space), its vertex normals if any triangle has them,
+ * and, when it is closed, an inside_vector so that POV-Ray treats it as a
+ * solid for refraction, as refray does (an open mesh is sheets in both). */
+static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+{
+    const rf_trimesh *g = &p->u.mesh;
+    fprintf(fp, "mesh2 {\n  vertex_vectors { %d", g->position_count);
+    for (int i = 0; i < g->position_count; i++)
+        put_list_item(fp, g->positions[i]);
+    fputs(" }\n", fp);
+    if (is_smooth(g))
+        write_mesh_normals(fp, g);
+    fprintf(fp, "  face_indices { %d", g->tri_count);
+    for (int i = 0; i < g->tri_count; i++)
+        fprintf(fp, ",\n    <%d, %d, %d>", g->tri[i][0], g->tri[i][1], g->tri[i][2]);
+    fputs(" }\n", fp);
+    if (g->closed)
+        fputs("  inside_vector <0, 0, 1>\n", fp);
+    write_material_ref(fp, s, o, p, nudged);
     fputs("}\n", fp);
 }
 
@@ -743,12 +763,10 @@ static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
     fputc('\n', fp);
     for (int i = 0; i < s->prim_count; i++) {
         const rf_prim *p = &s->prims[i];
-        if (p->kind == PRIM_TRIANGLE && p->mesh >= 0) {
-            if (s->meshes[p->mesh].first_prim == i)
-                write_mesh(fp, s, o, &s->meshes[p->mesh], &nudged);
-            continue;
-        }
-        write_prim(fp, s, o, p, &nudged);
+        if (p->kind == PRIM_MESH)
+            write_mesh(fp, s, o, p, &nudged);
+        else
+            write_prim(fp, s, o, p, &nudged);
     }
 }
 

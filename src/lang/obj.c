@@ -7,8 +7,9 @@
  *   before anything else, so no byte of a token can be NUL.
  * - Tokens are spans into the text, so every message points at the exact
  *   bytes; numbers are parsed from a bounded copy of their token.
- * - Arrays grow by doubling with their limit and size_t overflow checked
- *   first; triangles never get room beyond max_triangles.
+ * - Arrays grow by doubling (here and in polymesh.c) with their limit and
+ *   size_t overflow checked first; triangles never get room beyond
+ *   max_triangles.
  * - One error per statement: after it the rest of the logical line is
  *   skipped and parsing goes on with the next, so one run reports many
  *   independent mistakes (up to the diag's limit).
@@ -31,11 +32,6 @@ enum {
  * so a saturated index is out of range whatever the count. */
 #define INDEX_SATURATED (1LL << 40)
 
-typedef struct corner {
-    int v;             /* 0-based position index */
-    int vn;            /* 0-based normal index, -1: none */
-} corner;
-
 typedef struct shown {
     char s[SHOWN_MAX + 4];
 } shown;
@@ -46,11 +42,9 @@ typedef struct parser {
     size_t pos;                  /* next byte to read */
     int file;                    /* for spans */
     diag *d;
-    obj_mesh *mesh;
-    long max_triangles;          /* clamped to [0, INT_MAX] */
-    int position_cap, normal_cap, triangle_cap;
+    polymesh *mesh;
     int texcoord_count;          /* vt statements seen: t indices are checked against it */
-    corner *corners;             /* the face being read */
+    int *corner_v, *corner_vn;   /* the face being read: position and normal indices */
     int corner_cap;
     src_span warned[WARNED_MAX]; /* keywords of the unknown statements warned about */
     int warned_count;
@@ -268,49 +262,26 @@ static int resolve_index(parser *p, src_span tok, int count, const char *what, i
     return 1;
 }
 
-/* Returns array grown to hold at least `need` elements of `size` bytes (its
- * capacity *cap doubling, capped at limit), or NULL when need exceeds limit,
- * the byte count would overflow, or realloc fails; array stays valid then. */
-static void *grow(void *array, int *cap, long need, size_t size, long limit)
-{
-    if (need <= *cap)
-        return array;
-    if (need > limit)
-        return NULL;
-    long n = *cap > 0 ? *cap : 16;
-    while (n < need)
-        n = n > limit / 2 ? limit : 2 * n;
-    if ((size_t)n > SIZE_MAX / size)
-        return NULL;
-    void *grown = realloc(array, (size_t)n * size);
-    if (grown)
-        *cap = (int)n;
-    return grown;
-}
-
 static void out_of_memory(parser *p, src_span where)
 {
     diag_report(p->d, DIAG_ERROR, where, "out of memory reading OBJ file");
     p->stop = 1;
 }
 
-/* Appends v to *array (count *count, capacity *cap); reports and returns 0
- * when the count would pass INT_MAX or memory runs out. */
-static int append_vec(parser *p, vec3 **array, int *count, int *cap, vec3 v, src_span where)
+/* Reports what a polymesh_add_* call refused; returns whether it succeeded. */
+static int added(parser *p, int status, src_span where, const char *what)
 {
-    if (*count == INT_MAX) {
-        diag_report(p->d, DIAG_ERROR, where, "too many vertices in OBJ file (limit %d)", INT_MAX);
-        p->stop = 1;
-        return 0;
-    }
-    vec3 *a = grow(*array, cap, (long)*count + 1, sizeof *a, INT_MAX);
-    if (!a) {
+    if (status == 1)
+        return 1;
+    if (status == POLYMESH_NO_MEMORY)
         out_of_memory(p, where);
-        return 0;
-    }
-    *array = a;
-    a[(*count)++] = v;
-    return 1;
+    else if (what)
+        diag_report(p->d, DIAG_ERROR, where, "too many %s in OBJ file (limit %d)", what, INT_MAX);
+    else
+        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
+                    p->mesh->max_triangles);
+    p->stop = 1;
+    return 0;
 }
 
 /* Reads x y z into *v.  When tokens run out, reports at the end of the last
@@ -346,7 +317,7 @@ static void parse_vertex(parser *p, src_span kw)
     while (next_token(p, &tok))
         if (!read_number(p, tok, &ignored))
             return;
-    append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->position_cap, v, kw);
+    added(p, polymesh_add_position(p->mesh, v), kw, "vertices");
 }
 
 /* vn x y z */
@@ -361,7 +332,7 @@ static void parse_normal(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
-    append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->normal_cap, n, kw);
+    added(p, polymesh_add_normal(p->mesh, n), kw, "normals");
 }
 
 /* Splits tok at '/' into field[0..2]; returns the number of fields, or 4
@@ -388,8 +359,8 @@ static int is_empty(src_span s)
 }
 
 /* corner: i | i/t | i//n | i/t/n.  Resolves the position and normal indices
- * into *c and range-checks the texture one. */
-static int parse_corner(parser *p, src_span tok, corner *c, int *has_normal)
+ * into *v and *vn (-1: none) and range-checks the texture one. */
+static int parse_corner(parser *p, src_span tok, int *v, int *vn, int *has_normal)
 {
     src_span field[3];
     int n = split_fields(p, tok, field), ignored;
@@ -401,52 +372,21 @@ static int parse_corner(parser *p, src_span tok, corner *c, int *has_normal)
                     "malformed face vertex '%s' (expected i, i/t, i//n or i/t/n)", q.s);
         return 0;
     }
-    if (!resolve_index(p, field[0], p->mesh->position_count, "vertex", &c->v))
+    if (!resolve_index(p, field[0], p->mesh->position_count, "vertex", v))
         return 0;
     if (n >= 2 && !is_empty(field[1])
         && !resolve_index(p, field[1], p->texcoord_count, "texture coordinate", &ignored))
         return 0;
-    c->vn = -1;
+    *vn = -1;
     *has_normal = n == 3;
-    return n < 3 || resolve_index(p, field[2], p->mesh->normal_count, "normal", &c->vn);
-}
-
-/* Cuts the n corners read into the fan (c0, ck, ck+1), refusing it when the
- * mesh would pass max_triangles (checked before any room is made). */
-static void emit_fan(parser *p, int n, src_span where)
-{
-    obj_mesh *m = p->mesh;
-    long add = n - 2;
-    if (add > p->max_triangles - m->triangle_count) {
-        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
-                    p->max_triangles);
-        p->stop = 1;
-        return;
-    }
-    obj_triangle *t = grow(m->triangles, &p->triangle_cap, m->triangle_count + add, sizeof *t,
-                           p->max_triangles);
-    if (!t) {
-        out_of_memory(p, where);
-        return;
-    }
-    m->triangles = t;
-    for (int k = 1; k + 1 < n; k++) {
-        const corner *c[3] = {&p->corners[0], &p->corners[k], &p->corners[k + 1]};
-        obj_triangle *tri = &t[m->triangle_count++];
-        for (int i = 0; i < 3; i++) {
-            tri->v[i] = c[i]->v;
-            tri->vn[i] = c[i]->vn;
-        }
-        tri->where = where;
-    }
+    return n < 3 || resolve_index(p, field[2], p->mesh->normal_count, "normal", vn);
 }
 
 /* Reads one corner token as the face's n-th; 0 after reporting a problem. */
 static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
 {
-    corner c;
-    int has_normal;
-    if (!parse_corner(p, tok, &c, &has_normal))
+    int v, vn, has_normal;
+    if (!parse_corner(p, tok, &v, &vn, &has_normal))
         return 0;
     if (n == 0)
         *first_has_normal = has_normal;
@@ -457,13 +397,22 @@ static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
                     has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
         return 0;
     }
-    corner *all = grow(p->corners, &p->corner_cap, (long)n + 1, sizeof *all, INT_MAX);
-    if (!all) {
-        out_of_memory(p, tok);
-        return 0;
+    if (n == p->corner_cap) {
+        int cap = p->corner_cap ? (p->corner_cap > INT_MAX / 2 ? INT_MAX : 2 * p->corner_cap) : 16;
+        int *cv = realloc(p->corner_v, (size_t)cap * sizeof *cv);
+        if (cv)
+            p->corner_v = cv;
+        int *cn = realloc(p->corner_vn, (size_t)cap * sizeof *cn);
+        if (cn)
+            p->corner_vn = cn;
+        if (!cv || !cn) {
+            out_of_memory(p, tok);
+            return 0;
+        }
+        p->corner_cap = cap;
     }
-    p->corners = all;
-    all[n] = c;
+    p->corner_v[n] = v;
+    p->corner_vn[n] = vn;
     return 1;
 }
 
@@ -482,7 +431,8 @@ static void parse_face(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, where, "face has %d vertices, needs at least 3", n);
         return;
     }
-    emit_fan(p, n, where);
+    added(p, polymesh_add_face(p->mesh, p->corner_v, first_has_normal ? p->corner_vn : NULL, n, kw.begin),
+          where, NULL);
 }
 
 /* Warns once per kind of unknown statement, for the first WARNED_MAX kinds;
@@ -552,35 +502,27 @@ static void parse_file(parser *p)
     }
 }
 
-int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, obj_mesh *out)
+int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, polymesh *out)
 {
     assert(sources && file >= 0 && file < sources->count);
     const source_file *f = sources->files[file];
     int errors_before = d->errors;
     parser p;
     memset(&p, 0, sizeof p);
-    memset(out, 0, sizeof *out);
+    polymesh_init(out, max_triangles);
     p.text = f->text;
     p.len = f->len;
     p.file = file;
     p.d = d;
     p.mesh = out;
-    p.max_triangles = max_triangles < 0 ? 0 : max_triangles > INT_MAX ? INT_MAX : max_triangles;
     if (check_no_nul(&p))
         parse_file(&p);
-    if (d->errors == errors_before && out->triangle_count == 0)
+    if (d->errors == errors_before && out->face_count == 0)
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
-    free(p.corners);
+    free(p.corner_v);
+    free(p.corner_vn);
     if (d->errors == errors_before)
         return 1;
-    obj_free(out);
+    polymesh_free(out);
     return 0;
-}
-
-void obj_free(obj_mesh *mesh)
-{
-    free(mesh->positions);
-    free(mesh->normals);
-    free(mesh->triangles);
-    memset(mesh, 0, sizeof *mesh);
 }

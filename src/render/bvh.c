@@ -34,16 +34,16 @@
 #define BOUNDS_PAD 0x1p-40
 #define EXIT_PAD (4.0 * DBL_EPSILON)
 
-/* A primitive during the build: its padded box, centroid and index.  The
+/* A part during the build: its padded box, centroid and reference.  The
  * build permutes these in place, so each node's are contiguous. */
 typedef struct build_item {
     vec3 lo, hi, centroid;
-    int index;
+    bvh_ref ref;
 } build_item;
 
 typedef struct sort_key {
     real key;
-    int index;     /* primitive index: the tie-break that makes the order unique */
+    bvh_ref ref;   /* the tie-break that makes the order unique */
     int position;  /* where the item was before sorting */
 } sort_key;
 
@@ -83,17 +83,19 @@ static real pad(real lo, real hi)
     return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
 }
 
-/* The padded box of primitive p; 0 when it has no finite bounds. */
-static int item_of(const rf_prim *p, int index, build_item *out)
+/* The padded box of part `part` of primitive prims[index]; 0 when it has
+ * no finite bounds. */
+static int item_of(const rf_prim *p, int index, int part, build_item *out)
 {
     vec3 lo, hi;
-    if (!isect_prim_bounds(p, &lo, &hi))
+    if (!isect_part_bounds(p, part, &lo, &hi))
         return 0;
     vec3 e = vec_make(pad(lo.x, hi.x), pad(lo.y, hi.y), pad(lo.z, hi.z));
     out->lo = vec_sub(lo, e);
     out->hi = vec_add(hi, e);
     out->centroid = vec_scale(vec_add(out->lo, out->hi), 0.5);
-    out->index = index;
+    out->ref.prim = index;
+    out->ref.part = part;
     return vec_is_finite(out->centroid);
 }
 
@@ -189,23 +191,31 @@ static int partition_bins(const build_ctx *ctx, int begin, int end, const binnin
     return i;
 }
 
+/* Orders references: by primitive, then by part. */
+static int ref_order(bvh_ref a, bvh_ref b)
+{
+    if (a.prim != b.prim)
+        return a.prim < b.prim ? -1 : 1;
+    return (a.part > b.part) - (a.part < b.part);
+}
+
 static int compare_keys(const void *pa, const void *pb)
 {
     const sort_key *a = pa, *b = pb;
     if (a->key != b->key)
         return a->key < b->key ? -1 : 1;
-    return (a->index > b->index) - (a->index < b->index);
+    return ref_order(a->ref, b->ref);
 }
 
-/* Sorts items[begin..end) by centroid on axis, ties by primitive index (so
- * the order is unique whatever qsort does), and returns the middle. */
+/* Sorts items[begin..end) by centroid on axis, ties by reference (so the
+ * order is unique whatever qsort does), and returns the middle. */
 static int median_split(const build_ctx *ctx, int begin, int end, int axis)
 {
     build_item *items = ctx->items + begin;
     int n = end - begin;
     for (int i = 0; i < n; i++) {
         ctx->keys[i].key = vec_component(items[i].centroid, axis);
-        ctx->keys[i].index = items[i].index;
+        ctx->keys[i].ref = items[i].ref;
         ctx->keys[i].position = i;
         ctx->spare[i] = items[i];
     }
@@ -294,15 +304,20 @@ static void *alloc_array(size_t count, size_t size)
     return malloc((count > 0 ? count : 1) * size);
 }
 
-/* Sorts primitives into build items (bounded) and b->unbounded. */
+/* Sorts parts into build items (bounded) and primitives into b->unbounded
+ * (a part without finite bounds puts its primitive there once: all of it
+ * is then tested on every ray). */
 static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
 {
     int bounded = 0;
     for (int i = 0; i < count; i++) {
-        if (item_of(&prims[i], i, &items[bounded]))
-            bounded++;
-        else
+        int parts = isect_part_count(&prims[i]), kept = bounded;
+        for (int k = 0; k < parts; k++)
+            bounded += item_of(&prims[i], i, k, &items[bounded]);
+        if (bounded - kept < parts) {
+            bounded = kept;
             b->unbounded[b->unbounded_count++] = i;
+        }
     }
     return bounded;
 }
@@ -318,7 +333,7 @@ static int build_tree(build_ctx *ctx, int count)
     b->node_count = 1;
     build_node(ctx, 0, 0, count, 1);
     for (int i = 0; i < count; i++)
-        b->items[i] = ctx->items[i].index;
+        b->items[i] = ctx->items[i].ref;
     b->item_count = count;
     bvh_node *fit = realloc(b->nodes, (size_t)b->node_count * sizeof *fit);
     if (fit)
@@ -326,18 +341,28 @@ static int build_tree(build_ctx *ctx, int count)
     return 1;
 }
 
+/* The number of parts of prims[0..count-1], or -1 past INT_MAX/2. */
+static long count_parts(const rf_prim *prims, int count)
+{
+    long parts = 0;
+    for (int i = 0; i < count && parts <= INT_MAX / 2; i++)
+        parts += isect_part_count(&prims[i]);
+    return parts <= INT_MAX / 2 ? parts : -1;
+}
+
 int bvh_build(bvh *b, const rf_prim *prims, int count)
 {
     build_ctx ctx = {b, NULL, NULL, NULL};
     int ok = 0;
     memset(b, 0, sizeof *b);
-    if (count < 0 || count > INT_MAX / 2 || (size_t)count > SIZE_MAX / 2 / sizeof(build_item))
+    long parts = count >= 0 ? count_parts(prims, count) : -1;
+    if (parts < 0 || (size_t)parts > SIZE_MAX / 2 / sizeof(build_item))
         return 0;
-    size_t n = (size_t)count;
+    size_t n = (size_t)parts;
     ctx.items = alloc_array(n, sizeof *ctx.items);
     ctx.spare = alloc_array(n, sizeof *ctx.spare);
     ctx.keys = alloc_array(n, sizeof *ctx.keys);
-    b->unbounded = alloc_array(n, sizeof *b->unbounded);
+    b->unbounded = alloc_array((size_t)count, sizeof *b->unbounded);
     if (ctx.items && ctx.spare && ctx.keys && b->unbounded) {
         int bounded = classify(b, prims, count, ctx.items);
         ok = bounded == 0 || build_tree(&ctx, bounded);
@@ -429,12 +454,20 @@ static real tie_limit(const nearest *ns)
     return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
 }
 
+/* Orders hits by primitive, then part: the tie-break of the window. */
+static int hit_order(const hit *a, const hit *b)
+{
+    if (a->prim != b->prim)
+        return a->prim < b->prim ? -1 : 1;
+    return (a->part > b->part) - (a->part < b->part);
+}
+
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
 static void nearest_add(nearest *ns, const hit *h)
 {
     if (ns->fixed) {
-        if (ns->count == 0 || h->prim < ns->cand[0].prim)
+        if (ns->count == 0 || hit_order(h, &ns->cand[0]) < 0)
             ns->cand[0] = *h;
         ns->count = 1;
         ns->rr.tmax = ns->t_near;   /* the window's end, set by the caller */
@@ -457,15 +490,23 @@ static void nearest_add(nearest *ns, const hit *h)
     ns->rr.tmax = limit;
 }
 
-static void nearest_test(nearest *ns, const rf_prim *prims, int index)
+static void nearest_test(nearest *ns, const rf_prim *prims, bvh_ref ref)
 {
     hit h;
     if (ns->stats)
         ns->stats->prims_tested++;
-    if (!isect_prim(&prims[index], &ns->rr, &h))
+    if (!isect_part(&prims[ref.prim], ref.part, &ns->rr, &h))
         return;
-    h.prim = index;
+    h.prim = ref.prim;
     nearest_add(ns, &h);
+}
+
+/* Every part of an unbounded primitive. */
+static void nearest_test_all(nearest *ns, const rf_prim *prims, int index)
+{
+    bvh_ref ref = {index, 0};
+    for (int parts = isect_part_count(&prims[index]); ref.part < parts; ref.part++)
+        nearest_test(ns, prims, ref);
 }
 
 /* The lowest-index candidate: the nearest hit (see above). */
@@ -473,7 +514,7 @@ static const hit *nearest_winner(const nearest *ns)
 {
     const hit *best = &ns->cand[0];
     for (int i = 1; i < ns->count; i++)
-        if (ns->cand[i].prim < best->prim)
+        if (hit_order(&ns->cand[i], best) < 0)
             best = &ns->cand[i];
     return best;
 }
@@ -536,7 +577,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
 static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
 {
     for (int i = 0; i < b->unbounded_count; i++)
-        nearest_test(ns, prims, b->unbounded[i]);
+        nearest_test_all(ns, prims, b->unbounded[i]);
     if (b->node_count > 0)
         traverse_nearest(b, prims, ns);
 }
@@ -569,15 +610,15 @@ int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h)
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_prim(const rf_prim *prims, int index, const ray *r,
+static int visit_part(const rf_prim *prims, bvh_ref ref, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     hit out[2];
     if (stats)
         stats->prims_tested++;
-    int n = isect_prim_all(&prims[index], r, out);
+    int n = isect_part_all(&prims[ref.prim], ref.part, r, out);
     for (int i = 0; i < n; i++) {
-        out[i].prim = index;
+        out[i].prim = ref.prim;
         int stop = fn(ctx, &out[i]);
         if (stop)
             return stop;
@@ -607,7 +648,7 @@ static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
             continue;
         }
         for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_prim(prims, b->items[i], r, fn, ctx, stats);
+            int stop = visit_part(prims, b->items[i], r, fn, ctx, stats);
             if (stop)
                 return stop;
         }
@@ -619,9 +660,12 @@ int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        int stop = visit_prim(prims, b->unbounded[i], r, fn, ctx, stats);
-        if (stop)
-            return stop;
+        bvh_ref ref = {b->unbounded[i], 0};
+        for (int parts = isect_part_count(&prims[ref.prim]); ref.part < parts; ref.part++) {
+            int stop = visit_part(prims, ref, r, fn, ctx, stats);
+            if (stop)
+                return stop;
+        }
     }
     return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
 }

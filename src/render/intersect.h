@@ -10,7 +10,9 @@
  *     for sphere and box, the declared side for plane, disk and triangle),
  *     h->shading_normal the unit interpolated vertex normal of a triangle
  *     with normals, else a copy of h->normal; h->entering = dir . normal < 0;
- *   - h->prim is set to -1: the caller that knows the index (the BVH) sets it.
+ *   - h->prim is set to -1: the caller that knows the index (the BVH) sets
+ *     it; h->part is the triangle of a mesh, else 0; h->b1, h->b2 are a
+ *     triangle's barycentric weights of corners 1 and 2 (else 0).
  * r->dir need not be unit length (rays taken into a local frame are not); a
  * zero direction never hits.  Sheets (plane, disk, triangle) are two-sided.
  *
@@ -26,8 +28,11 @@
  *   - box: faces are closed (a ray along a face plane hits, as does one
  *     through an edge); when entry and exit coincide (an edge or corner
  *     touched, or a flat box) it is one hit with the entry face's normal;
- *   - triangle: watertight (Woop, Benthin, Wald 2013): a ray through a
- *     shared edge or vertex of a mesh hits at least one of its triangles.
+ *   - triangle: watertight (Woop, Benthin, Wald 2013) with exact edge
+ *     signs and one tie rule: a ray through a shared edge or vertex of a
+ *     mesh hits exactly one of the triangles there where the surface does
+ *     not fold back around the ray, and an even number (0 or 2) where it
+ *     does (a silhouette): a closed mesh is crossed once per surface.
  * Numeric domain: hit/miss decisions multiply two coordinates together, so
  * they are exact in sign only while such products stay normal doubles: keep
  * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
@@ -50,12 +55,13 @@ int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
  * ray into the local frame when p->has_xform (t is preserved; point and
- * normals are mapped back to the world). */
+ * normals are mapped back to the world).  A mesh is searched triangle by
+ * triangle (the BVH does better: it holds the parts below). */
 int isect_prim(const rf_prim *p, ray *r, hit *h);
 
-/* Every crossing of the surface in (r->tmin, r->tmax), in increasing t:
- * 0, 1 or 2 (a solid crossed through: entry and exit).  r is not changed;
- * each out[i].prim is -1. */
+/* The first crossings of the surface in (r->tmin, r->tmax), in increasing
+ * t: 0, 1 or 2 (a solid crossed through: entry and exit; a mesh: its first
+ * two).  r is not changed; each out[i].prim is -1. */
 int isect_prim_all(const rf_prim *p, const ray *r, hit out[2]);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
@@ -67,6 +73,23 @@ int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi);
  * vertices, centre plus radius, plane point...): the hit point's rounding
  * error is relative to this, not to the point itself. */
 real isect_prim_magnitude(const rf_prim *p);
+
+/*
+ * Parts: what the BVH holds.  A mesh's parts are its triangles (part k is
+ * geom.tri[k]); every other primitive is one part, 0.  The functions are
+ * those above for one part; a hit's h->part says which.
+ */
+int isect_part_count(const rf_prim *p);
+int isect_part(const rf_prim *p, int part, ray *r, hit *h);
+int isect_part_all(const rf_prim *p, int part, const ray *r, hit out[2]);
+int isect_part_bounds(const rf_prim *p, int part, vec3 *lo, vec3 *hi);
+real isect_part_magnitude(const rf_prim *p, int part);
+
+/* Where shadow rays from a hit start: for a triangle with vertex normals
+ * the hit point lifted toward the curved surface those normals describe
+ * (Hanika's shadow terminator offset, spec/shading.md
+ * [SHADE-TERMINATOR-1]); for anything else the hit point itself. */
+vec3 isect_shadow_point(const rf_prim *p, const hit *h);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
@@ -95,13 +118,16 @@ ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir);
  * empty interval: nothing can stand between. */
 ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
 
-/* The same for a hit on p, with m = max(|h->point|, isect_prim_magnitude(p)):
- * what the tracer should use (a big triangle or sphere hit near the world
- * origin has an error relative to its vertices or centre, not to the point). */
+/* The same for a hit on p, with m = max(|h->point|, isect_part_magnitude(p,
+ * h->part)): what the tracer should use (a big triangle or sphere hit near
+ * the world origin has an error relative to its vertices or centre, not to
+ * the point).  A ray into a box starts inside it on every axis (see
+ * intersect.c, keep_inside). */
 ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
+/* Shadow rays: from isect_shadow_point(p, h), toward a target point, or
+ * toward a distant light (the shadow rays' tmin, the offset over |dir|, and
+ * tmax = HUGE_VAL). */
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
-/* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
- * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
 ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
 
 #endif

@@ -36,8 +36,8 @@ int trace_solid_id(const rf_scene *s, int prim)
     const rf_prim *p = &s->prims[prim];
     if (p->kind == PRIM_SPHERE || p->kind == PRIM_BOX)
         return prim;
-    if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
-        return s->prim_count + p->mesh;
+    if (p->kind == PRIM_MESH && p->u.mesh.closed)
+        return prim;
     return -1;
 }
 
@@ -237,7 +237,7 @@ static real max_abs_diff(vec3 a, vec3 b)
 static int gather_crossing(void *ctx, const hit *h)
 {
     interface *f = ctx;
-    if (h->prim == f->self->prim && h->entering == f->self->entering)
+    if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
         return 0;
     if (f->count < INTERFACE_MAX && max_abs_diff(h->point, f->self->point) <= f->reach)
         f->h[f->count++] = *h;
@@ -248,8 +248,8 @@ static int gather_crossing(void *ctx, const hit *h)
  * twice the spawn offset, the distance a spawned ray jumps. */
 static void interface_gather(const tracer *t, const surface *s, const ray *in, interface *f, trace_stats *st)
 {
-    real m = fmax(isect_prim_magnitude(s->prim), fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y),
-                                                                               fabs(s->h->point.z))));
+    real m = fmax(isect_part_magnitude(s->prim, s->h->part),
+                  fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y), fabs(s->h->point.z))));
     ray r = *in;
     f->self = s->h;
     f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
@@ -263,19 +263,42 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
     f->spawn_hit = s->h;
     for (int k = 1; k < f->count; k++) {
         const rf_prim *p = &t->scene->prims[f->h[k].prim];
-        if (isect_prim_magnitude(p) > isect_prim_magnitude(f->spawn_prim)) {
+        if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
             f->spawn_prim = p;
             f->spawn_hit = &f->h[k];
         }
     }
 }
 
+/* What crossing k of the interface does to the medium stack: 1 enters its
+ * solid, -1 leaves it, 0 nothing (a sheet).  A sphere or box says which by
+ * its outward normal.  A closed mesh is toggled by an odd number of its
+ * crossings here (on its first one; the others do nothing): entered when it
+ * was not on the stack before, left when it was.  Its winding is not
+ * trusted (a file may wind it inward, or inconsistently). */
+static int crossing_effect(const rf_scene *sc, const interface *f, const medium_stack *before, int k)
+{
+    int solid = trace_solid_id(sc, f->h[k].prim), odd = 0;
+    if (solid < 0)
+        return 0;
+    if (sc->prims[f->h[k].prim].kind != PRIM_MESH)
+        return f->h[k].entering ? 1 : -1;
+    for (int j = 0; j < f->count; j++) {
+        if (trace_solid_id(sc, f->h[j].prim) != solid)
+            continue;
+        if (j < k)
+            return 0;
+        odd ^= 1;
+    }
+    return !odd ? 0 : media_find(before, solid) >= 0 ? -1 : 1;
+}
+
 /* Crossing the interface: every solid left comes off the stack, then every
- * solid entered goes on (once).  Returns the number of solids crossed and
+ * solid entered goes on (once).  Returns the number of solid crossings and
  * sets *through to the product of the t of the surfaces crossed besides the
  * hit itself (whose t the caller applies). */
-static int interface_cross(const tracer *t, const interface *f, medium_stack *next, real *through,
-                           trace_stats *st)
+static int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
+                           real *through, trace_stats *st)
 {
     const rf_scene *sc = t->scene;
     int solids = 0;
@@ -283,14 +306,13 @@ static int interface_cross(const tracer *t, const interface *f, medium_stack *ne
     for (int k = 1; k < f->count; k++)
         *through = shade_shadow_transmission(*through, sc->materials[sc->prims[f->h[k].prim].material].t);
     for (int k = 0; k < f->count; k++) {
-        int solid = trace_solid_id(sc, f->h[k].prim);
-        solids += solid >= 0;
-        if (solid >= 0 && !f->h[k].entering)
-            media_remove(next, solid);
+        solids += trace_solid_id(sc, f->h[k].prim) >= 0;
+        if (crossing_effect(sc, f, before, k) < 0)
+            media_remove(next, trace_solid_id(sc, f->h[k].prim));
     }
     for (int k = 0; k < f->count; k++) {
         int solid = trace_solid_id(sc, f->h[k].prim);
-        if (solid >= 0 && f->h[k].entering && media_find(next, solid) < 0)
+        if (crossing_effect(sc, f, before, k) > 0 && media_find(next, solid) < 0)
             media_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
     }
     return solids;
@@ -310,7 +332,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     medium_stack next = *media;
     real through;
     interface_gather(t, s, in, &f, st);
-    int solids = interface_cross(t, &f, &next, &through, st);
+    int solids = interface_cross(t, &f, media, &next, &through, st);
     if (through == 0)
         return vec_splat(0);
     ray r;
@@ -318,7 +340,8 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     int refracts = 1;
     if (solids > 0) {
         int solid = trace_solid_id(t->scene, s->h->prim);
-        real n1 = solid >= 0 && !s->h->entering && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
+        int left = solid >= 0 && s->prim->kind != PRIM_MESH && !s->h->entering;
+        real n1 = left && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
         refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);

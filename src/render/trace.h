@@ -79,8 +79,9 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
  * when the tracer has no refraction pass. */
 void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
 
-/* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
- * for a sheet (plane, disk, lone triangle), which has no inside. */
+/* Identity of the solid a primitive is (sphere, box, closed mesh: its
+ * index), or -1 for a sheet (plane, disk, lone triangle, a mesh that is not
+ * closed), which has no inside. */
 int trace_solid_id(const rf_scene *s, int prim);
 
 #endif

@@ -55,8 +55,9 @@ static int grow(void **items, int *cap, int count, size_t size, long limit)
 rf_prim *loader_add_prim(loader *L, src_span where)
 {
     rf_scene *s = L->scene;
-    if (s->prim_count >= L->limits->max_primitives) {
-        if (s->prim_count == L->limits->max_primitives)
+    long used = s->prim_count + L->mesh_triangles;
+    if (used >= L->limits->max_primitives) {
+        if (used == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
                         L->limits->max_primitives);
         s->prim_count++;

@@ -14,6 +14,7 @@
 #include "lang/keywords.h"
 #include "scene/scene.h"
 #include "lang/schema.h"
+#include "lang/polymesh.h"
 
 typedef struct loader {
     rf_scene *scene;            /* being filled; owns the sources */
@@ -24,6 +25,7 @@ typedef struct loader {
     char **include_stack;       /* real paths of the files being lowered, outermost first */
     int include_depth;
     long loop_iterations;       /* over the whole load */
+    long mesh_triangles;        /* over the whole load: they count as primitives for the limit */
     int *material_uses;         /* per scene material: how many primitives use it */
     int material_cap, prim_cap, light_cap, mesh_cap;
     src_span image_where;       /* first `image` block (file -1: none yet) */
@@ -75,6 +77,19 @@ int lower_material_ref(loader *L, const props *p);
 
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
+/* Whether a triangle has no area: its edges' directions are parallel to
+ * within 4 epsilon (the size of the triangle does not matter). */
+int lower_degenerate(vec3 a, vec3 b, vec3 c);
+/* Whether the transform mirrors (negative determinant): triangles then
+ * swap two corners to keep their normal on the mirrored side. */
+int lower_mirrors(const xform *w);
+
+/* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
+ * `at`) becomes scene.meshes[k] and one PRIM_MESH primitive made from
+ * *proto (material set; kind, mesh and u are filled in).  Returns 1, or 0
+ * after reporting an error. */
+int lower_mesh(loader *L, const polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w,
+               const xform *l);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);

@@ -1,5 +1,6 @@
 /*
- * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements.
+ * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements
+ * (a mesh's file is read here; lower_mesh.c builds its store).
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
@@ -13,6 +14,7 @@
 #include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/obj.h"
+#include "lang/ply.h"
 
 static int one_transform(loader *L, const ast *prop, xform *out)
 {
@@ -63,6 +65,11 @@ static double determinant(const xform *a)
     const double(*m)[4] = a->m;
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+int lower_mirrors(const xform *w)
+{
+    return determinant(w) < 0;
 }
 
 static int positive(loader *L, const props *p, keyword_id kw, double fallback, double *out)
@@ -149,7 +156,7 @@ static void place_box(rf_prim *prim, const xform *w, const xform *l)
 /* A triangle has no area when its edges are parallel to rounding error:
  * the sine of the angle between them is at most 4 epsilon (computed on the
  * edges' directions, so the size of the triangle does not matter). */
-static int degenerate(vec3 a, vec3 b, vec3 c)
+int lower_degenerate(vec3 a, vec3 b, vec3 c)
 {
     vec3 e1, e2;
     if (!loader_unit(vec_sub(b, a), &e1) || !loader_unit(vec_sub(c, a), &e2))
@@ -166,7 +173,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
         if (prim->u.triangle.has_normals)
             prim->u.triangle.n[i] = transformed_normal(l, prim->u.triangle.n[i]);
     }
-    if (determinant(w) < 0) {
+    if (lower_mirrors(w)) {
         vec3 t = prim->u.triangle.p[1];
         prim->u.triangle.p[1] = prim->u.triangle.p[2];
         prim->u.triangle.p[2] = t;
@@ -274,6 +281,7 @@ static int in_range(const rf_prim *prim)
         ok = vec_is_finite(prim->u.disk.center) && is_unit(prim->u.disk.normal) && isfinite(prim->u.disk.radius);
         break;
     case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
+    case PRIM_MESH: break; /* checked triangle by triangle (lower_mesh.c) */
     }
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
@@ -292,7 +300,7 @@ static int check_range(loader *L, const rf_prim *prim, src_span at)
 static int check_triangle(loader *L, const rf_prim *prim, src_span at)
 {
     const vec3 *q = prim->u.triangle.p;
-    if (!degenerate(q[0], q[1], q[2]))
+    if (!lower_degenerate(q[0], q[1], q[2]))
         return 1;
     diag_report(&L->diag, DIAG_ERROR, at, "degenerate triangle: its corners are on one line (no area)");
     return 0;
@@ -306,7 +314,8 @@ static rf_prim *emit(loader *L, const rf_prim *prim)
     return slot;
 }
 
-/* Reads the OBJ file into the load's sources, so its errors point into it. */
+/* Reads the OBJ or PLY file into the load's sources, so its errors point
+ * into it: the one place a mesh file is read. */
 static int read_obj(loader *L, const char *name, src_span at, int *file)
 {
     const source_file *from = L->scene->sources.files[at.file];
@@ -330,38 +339,13 @@ static int read_obj(loader *L, const char *name, src_span at, int *file)
     return status == 0 && *file >= 0;
 }
 
-static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, rf_prim *prim)
+/* A PLY file by its name (".ply", any case) or by its first line. */
+static int is_ply(const source_file *f)
 {
-    int normals = t->vn[0] >= 0;
-    for (int i = 0; i < 3; i++) {
-        prim->u.triangle.p[i] = obj->positions[t->v[i]];
-        if (normals) {
-            if (!loader_unit(obj->normals[t->vn[i]], &prim->u.triangle.n[i])) {
-                diag_report(&L->diag, DIAG_ERROR, t->where, "vertex normal of zero length");
-                return 0;
-            }
-        }
-    }
-    prim->u.triangle.has_normals = normals;
-    prim->where = t->where;
-    return 1;
-}
-
-static int mesh_triangles(loader *L, const obj_mesh *obj, rf_prim *proto, const xform *w, const xform *l)
-{
-    rf_mesh *mesh = &L->scene->meshes[proto->mesh];
-    mesh->first_prim = L->scene->prim_count;
-    int ok = 1;
-    for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
-        rf_prim prim = *proto;
-        if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
-            continue;
-        place_triangle(&prim, w, l);
-        if (check_range(L, &prim, prim.where) && check_triangle(L, &prim, prim.where))
-            ok = emit(L, &prim) != NULL;
-    }
-    mesh->count = L->scene->prim_count - mesh->first_prim;
-    return ok;
+    size_t n = strlen(f->path);
+    const char *ext = n >= 4 ? f->path + n - 4 : "";
+    int named = ext[0] == '.' && (ext[1] | 0x20) == 'p' && (ext[2] | 0x20) == 'l' && (ext[3] | 0x20) == 'y';
+    return named || ply_is_ply(f->text, f->len);
 }
 
 static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
@@ -371,23 +355,16 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     int file;
     if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !read_obj(L, name, at, &file))
         return 0;
-    obj_mesh obj;
-    int errors = L->diag.errors;
-    if (!obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj))
+    polymesh pm;
+    const source_set *sources = &L->scene->sources;
+    long limit = L->limits->max_mesh_triangles;
+    int ok = is_ply(sources->files[file]) ? ply_parse(sources, file, &L->diag, limit, &pm)
+                                          : obj_parse(sources, file, &L->diag, limit, &pm);
+    if (!ok)
         return 0;
-    rf_mesh *m = loader_add_mesh(L);
-    int ok = m != NULL;
-    if (m) {
-        m->path = malloc(strlen(L->scene->sources.files[file]->path) + 1);
-        if (m->path)
-            strcpy(m->path, L->scene->sources.files[file]->path);
-        m->where = at;
-        proto->kind = PRIM_TRIANGLE;
-        proto->mesh = L->scene->mesh_count - 1;
-        ok = m->path && mesh_triangles(L, &obj, proto, w, l);
-    }
-    obj_free(&obj);
-    return ok && L->diag.errors == errors;
+    ok = lower_mesh(L, &pm, file, at, proto, w, l);
+    polymesh_free(&pm);
+    return ok;
 }
 
 static void place(rf_prim *prim, const xform *w, const xform *l)
@@ -397,6 +374,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
     case PRIM_DISK: place_disk(prim, w, l); break;
     case PRIM_BOX: place_box(prim, w, l); break;
     case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
+    case PRIM_MESH: break; /* lower_mesh.c places every vertex */
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
         prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);

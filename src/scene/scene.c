@@ -29,8 +29,15 @@ void scene_free(rf_scene *s)
         return;
     for (int i = 0; i < s->material_count; i++)
         free(s->materials[i].name);
-    for (int i = 0; i < s->mesh_count; i++)
-        free(s->meshes[i].path);
+    for (int i = 0; i < s->mesh_count; i++) {
+        rf_mesh *m = &s->meshes[i];
+        free(m->path);
+        free(m->geom.positions);
+        free(m->geom.normals);
+        free(m->geom.tri);
+        free(m->geom.tri_normal);
+        free(m->geom.open);
+    }
     free(s->materials);
     free(s->prims);
     free(s->meshes);

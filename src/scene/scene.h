@@ -32,15 +32,43 @@ typedef struct rf_material {
 typedef enum rf_prim_kind {
     PRIM_SPHERE,
     PRIM_PLANE,
-    PRIM_TRIANGLE,     /* a `triangle` statement or one triangle of a mesh */
+    PRIM_TRIANGLE,     /* a `triangle` statement */
     PRIM_DISK,
-    PRIM_BOX
+    PRIM_BOX,
+    PRIM_MESH          /* a `mesh`: many triangles in one compact store */
 } rf_prim_kind;
+
+/*
+ * The triangles of a mesh, in world space (the mesh's transforms baked in),
+ * stored compactly: shared vertices and three indices per triangle, about
+ * 24 bytes a triangle for a closed mesh without normals instead of a whole
+ * rf_prim.  Coordinates are the doubles the file gave, transformed: nothing
+ * is rounded to a smaller type.
+ */
+typedef struct rf_trimesh {
+    vec3 *positions;
+    int position_count;
+    vec3 *normals;         /* unit vertex normals, NULL when the mesh has none */
+    int normal_count;
+    int (*tri)[3];         /* corners of each triangle: indices into positions */
+    int (*tri_normal)[3];  /* each corner's index into normals, or -1 (a flat
+                              triangle); NULL when the mesh has no normals */
+    int tri_count;
+    unsigned char *open;   /* per triangle, bit k: its edge from corner k to
+                              k + 1 belongs to it alone (the hit test counts
+                              such an edge as inside, like a lone triangle's;
+                              shared ones by the tie rule of intersect.c);
+                              NULL when no edge is open */
+    int closed;            /* every edge shared by exactly two triangles
+                              (src/scene/mesh_topo.h): a solid, whose inside
+                              is found by counting crossings, so its winding
+                              does not matter; else a set of sheets */
+} rf_trimesh;
 
 typedef struct rf_prim {
     rf_prim_kind kind;
     int material;          /* index into scene.materials */
-    int mesh;              /* index into scene.meshes for mesh triangles, else -1 */
+    int mesh;              /* PRIM_MESH: index into scene.meshes, else -1 */
     union {
         struct { vec3 center; double radius; } sphere;
         struct { vec3 point; vec3 normal; } plane;
@@ -51,9 +79,12 @@ typedef struct rf_prim {
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
         struct { vec3 lo; vec3 hi; } box;
+        /* A view of scene.meshes[mesh].geom: the arrays are that mesh's,
+         * shared, so a primitive can be intersected on its own. */
+        rf_trimesh mesh;
     } u;
     /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles and planes always; spheres and
+     * to the same kind of shape (triangles, meshes and planes always; spheres and
      * disks under similarities; boxes under translate and axis scale).
      * Otherwise the parameters are in the local frame and these are set. */
     int has_xform;
@@ -62,11 +93,25 @@ typedef struct rf_prim {
     src_span where;
 } rf_prim;
 
+/* What the loader found out about a mesh (`refray check` prints it;
+ * spec/language.md, section 8). */
+typedef struct rf_mesh_report {
+    int faces;             /* faces read (polygons of any size) */
+    int dropped;           /* faces with no area, and triangles with none after the transforms */
+    int nonplanar;         /* polygons whose corners are not on one plane */
+    int fanned;            /* polygons cut as a fan: not simple, or past the ear-clipping budget */
+    int oriented;          /* every shared edge runs opposite ways in its two triangles */
+    int components;        /* pieces connected through shared edges */
+    int open_edges;        /* edges of one triangle only */
+    int crowded_edges;     /* edges of three or more triangles */
+} rf_mesh_report;
+
 typedef struct rf_mesh {
-    char *path;            /* the OBJ file as resolved */
-    int first_prim;        /* its triangles are prims[first_prim .. first_prim+count-1] */
-    int count;
-    src_span where;
+    char *path;            /* the OBJ or PLY file as resolved */
+    int prim;              /* the PRIM_MESH primitive in scene.prims */
+    rf_trimesh geom;       /* owned here; the primitive holds a view */
+    rf_mesh_report report;
+    src_span where;        /* the `file` value of the mesh statement */
 } rf_mesh;
 
 typedef enum rf_falloff {
@@ -133,7 +178,7 @@ typedef struct rf_scene {
     rgb ambient;               /* sum of all ambient blocks, I_a */
     rf_material *materials;
     int material_count;
-    rf_prim *prims;            /* bounded primitives and planes, mesh triangles included */
+    rf_prim *prims;            /* bounded primitives and planes; one PRIM_MESH per mesh */
     int prim_count;
     rf_mesh *meshes;
     int mesh_count;
@@ -154,7 +199,7 @@ typedef struct rf_limits {
     long max_depth;
     long max_loop_iterations;  /* per loop, and in total over a load */
     long max_include_depth;
-    long max_file_bytes;       /* per scene or OBJ file */
+    long max_file_bytes;       /* per scene, OBJ or PLY file */
     long max_mesh_triangles;   /* per mesh */
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */

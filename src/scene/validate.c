@@ -85,8 +85,9 @@ static void record_features(rf_scene *s, const loader *L)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
     /* With N.L > 0 required, one convex or flat primitive never shadows
-     * itself; only a second primitive can stand in the way. */
-    f->shadows = s->light_count > 0 && s->prim_count >= 2;
+     * itself; only a second primitive can stand in the way, or another part
+     * of a mesh. */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || s->mesh_count > 0);
 }
 
 int validate_scene(loader *L)

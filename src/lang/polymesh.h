@@ -1,0 +1,79 @@
+/*
+ * polymesh.h - a mesh as a file gives it: positions, normals and faces cut
+ * into triangles.  The OBJ reader (obj.h) and the PLY reader (ply.h) both
+ * fill one; the scene's `mesh` statement (src/scene/lower_mesh.c) turns it
+ * into the compact world-space store the tracer reads.
+ *
+ * Faces go through polymesh_add_face, the one place where polygons are cut
+ * (polygon.h) and where what the readers share is counted: faces with no
+ * area (dropped), non-planar faces, faces that had to be fanned.  The
+ * readers report their own syntax errors; those counts are reported once
+ * per mesh by the caller.
+ */
+#ifndef REFRAY_POLYMESH_H
+#define REFRAY_POLYMESH_H
+
+#include <stddef.h>
+#include "base/vec.h"
+#include "lang/polygon.h"
+
+typedef struct polymesh_tri {
+    int v[3];          /* 0-based indices into positions */
+    int vn[3];         /* 0-based indices into normals, or -1 when the face gave none */
+    size_t at;         /* byte offset of the face in its file, for messages */
+} polymesh_tri;
+
+/* A count of faces with something to say, and where the first one is. */
+typedef struct polymesh_tally {
+    int count;
+    size_t first_at;
+} polymesh_tally;
+
+typedef struct polymesh {
+    vec3 *positions;
+    int position_count;
+    vec3 *normals;               /* as read; not normalised */
+    int normal_count;
+    polymesh_tri *triangles;
+    int triangle_count;
+    int face_count;              /* faces given (of any size) */
+    polymesh_tally no_area;      /* faces with no area: no triangle made */
+    polymesh_tally nonplanar;    /* polygons not on one plane (cut all the same) */
+    polymesh_tally fanned;       /* not simple, or over the ear-clipping budget */
+    /* builder state */
+    long max_triangles;          /* refuse a face that would pass this */
+    int position_cap, normal_cap, triangle_cap;
+    int (*cuts)[3];              /* one polygon's triangles, as corner numbers */
+    vec3 *corners;               /* one polygon's positions */
+    int cut_cap;
+    polygon_work work;
+} polymesh;
+
+/* An empty mesh that accepts up to max_triangles triangles (clamped to
+ * [0, INT_MAX]). */
+void polymesh_init(polymesh *m, long max_triangles);
+
+/* Frees everything and leaves an empty mesh; safe to call twice. */
+void polymesh_free(polymesh *m);
+
+/* What polymesh_add_* return besides 1 (done). */
+enum {
+    POLYMESH_NO_MEMORY = 0,
+    POLYMESH_TOO_MANY = -1      /* past INT_MAX items or max_triangles */
+};
+
+int polymesh_add_position(polymesh *m, vec3 p);
+int polymesh_add_normal(polymesh *m, vec3 n);
+
+/*
+ * Adds the face of n corners: v[i] are position indices (already checked
+ * to be in range), vn[i] normal indices or NULL for none.  Cuts it into
+ * triangles (polygon.h) and counts it in the tallies (fewer than 3 corners:
+ * no area, no triangle); `at` is the
+ * face's byte offset in its file.  Returns 1, or POLYMESH_TOO_MANY when the
+ * mesh would pass max_triangles (checked before any room is made), or
+ * POLYMESH_NO_MEMORY.  Nothing is added on failure.
+ */
+int polymesh_add_face(polymesh *m, const int *v, const int *vn, int n, size_t at);
+
+#endif
