@@ -97,7 +97,10 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
     if (d->sources && span.file >= 0 && span.file < d->sources->count)
         f = d->sources->files[span.file];
     int line = 0, col = 0;
-    if (f) {
+    if (f && !f->text) {
+        fprintf(d->out, "%s: %s: ", f->path, level_name(level));
+        f = NULL;
+    } else if (f) {
         source_line_col(f, span.begin, &line, &col);
         fprintf(d->out, "%s:%d:%d: %s: ", f->path, line, col, level_name(level));
     } else {

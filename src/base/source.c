@@ -112,9 +112,50 @@ fail:
     return -1;
 }
 
-/* Binary search for the last line starting at or before offset. */
-static size_t line_index(const source_file *file, size_t offset)
+int source_set_adopt(source_set *set, const char *path, char *text, size_t len, src_span included_from)
 {
+    source_file *f = calloc(1, sizeof *f);
+    if (!f || !grow_set(set) || !(f->path = malloc(strlen(path) + 1))) {
+        free(f);
+        free(text);
+        return -1;
+    }
+    strcpy(f->path, path);
+    f->text = text;
+    f->len = len;
+    f->included_from = included_from;
+    set->files[set->count] = f;
+    return set->count++;
+}
+
+void source_set_release(source_set *set, int file)
+{
+    source_file *f = set->files[file];
+    free(f->text);
+    free(f->line_start);
+    f->text = NULL;
+    f->len = 0;
+    f->line_start = NULL;
+    f->line_count = 0;
+}
+
+/* The line holding offset: its number from 0 and where it starts.  With
+ * the index, a binary search for the last line starting at or before
+ * offset; without (an adopted file), a scan from the start. */
+static size_t line_index(const source_file *file, size_t offset, size_t *begin)
+{
+    if (!file->line_start) {
+        size_t line = 0;
+        *begin = 0;
+        for (size_t i = 0; i < offset && i < file->len; i++) {
+            char c = file->text[i];
+            if (c == '\n' || (c == '\r' && (i + 1 >= file->len || file->text[i + 1] != '\n'))) {
+                line++;
+                *begin = i + 1;
+            }
+        }
+        return line;
+    }
     size_t lo = 0, hi = file->line_count;
     while (hi - lo > 1) {
         size_t mid = lo + (hi - lo) / 2;
@@ -123,20 +164,21 @@ static size_t line_index(const source_file *file, size_t offset)
         else
             hi = mid;
     }
+    *begin = file->line_start[lo];
     return lo;
 }
 
 void source_line_col(const source_file *file, size_t offset, int *line, int *col)
 {
-    size_t i = line_index(file, offset);
+    size_t begin, i = line_index(file, offset, &begin);
     *line = (int)i + 1;
-    *col = (int)(offset - file->line_start[i]) + 1;
+    *col = (int)(offset - begin) + 1;
 }
 
 const char *source_line_text(const source_file *file, size_t offset, size_t *length)
 {
-    size_t i = line_index(file, offset);
-    size_t begin = file->line_start[i];
+    size_t begin;
+    line_index(file, offset, &begin);
     size_t end = begin;
     while (end < file->len && file->text[end] != '\n' && file->text[end] != '\r')
         end++;

@@ -19,9 +19,10 @@ typedef struct src_span {
 
 typedef struct source_file {
     char *path;            /* as the user or the include wrote it, joined to the includer's dir */
-    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them) */
+    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them);
+                              NULL once released */
     size_t len;            /* bytes in text, not counting the terminator */
-    size_t *line_start;    /* offset of each line's first byte */
+    size_t *line_start;    /* offset of each line's first byte; NULL for an adopted file */
     size_t line_count;
     src_span included_from;/* the include statement that read it; file -1 for the root */
 } source_file;
@@ -43,6 +44,16 @@ void source_set_free(source_set *set);
  * index, or -1 when out of memory. */
 int source_set_add(source_set *set, const char *path, const char *text, size_t len,
                    src_span included_from);
+
+/* The same without a copy, for big mesh files: takes over text (malloc'd,
+ * len + 1 bytes, NUL-terminated; freed here even on failure).  No line
+ * index is built: a message finds its line by scanning the text. */
+int source_set_adopt(source_set *set, const char *path, char *text, size_t len, src_span included_from);
+
+/* Frees the text of a file no message will point into any more (a mesh file
+ * once its mesh is built); its path stays.  A span into it is then printed
+ * without a line (diag.c). */
+void source_set_release(source_set *set, int file);
 
 /* 1-based line and column (in bytes) of a byte offset. */
 void source_line_col(const source_file *file, size_t offset, int *line, int *col);

@@ -182,8 +182,8 @@ static int read_number(parser *p, src_span tok, double *out)
 {
     size_t n = tok.end - tok.begin;
     const char *s = p->text + tok.begin;
-    shown q = show(p, tok);
     if (n > NUMBER_MAX) {
+        shown q = show(p, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is too long (more than %d characters)",
                     q.s, NUMBER_MAX);
         return 0;
@@ -196,10 +196,12 @@ static int read_number(parser *p, src_span tok, double *out)
     buf[n] = '\0';
     double v = i == n ? strtod(buf, &end) : 0.0;
     if (i < n || end != buf + n) {
+        shown q = show(p, tok);
         diag_report(p->d, DIAG_ERROR, tok, "malformed number '%s'", q.s);
         return 0;
     }
     if (!isfinite(v)) {
+        shown q = show(p, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is not finite", q.s);
         return 0;
     }
@@ -242,24 +244,23 @@ static int resolve_index(parser *p, src_span tok, int count, const char *what, i
     long long k;
     if (!read_index(p, tok, &k))
         return 0;
+    if (k >= -(long long)count && k <= count && k != 0) {
+        *out = k > 0 ? (int)(k - 1) : (int)(count + k);
+        return 1;
+    }
     shown q = show(p, tok);
     if (k == 0) {
         diag_report(p->d, DIAG_ERROR, tok,
                     "index 0 is invalid: OBJ indices start at 1 (or count back from -1)");
         return 0;
     }
-    if (k > count) {
+    if (k > count)
         diag_report(p->d, DIAG_ERROR, tok, "index %s refers to a %s not yet defined (%d so far)",
                     q.s, what, count);
-        return 0;
-    }
-    if (k < -(long long)count) {
+    else
         diag_report(p->d, DIAG_ERROR, tok, "index %s reaches before the first %s (%d so far)",
                     q.s, what, count);
-        return 0;
-    }
-    *out = k > 0 ? (int)(k - 1) : (int)(count + k);
-    return 1;
+    return 0;
 }
 
 static void out_of_memory(parser *p, src_span where)

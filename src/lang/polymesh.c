@@ -21,7 +21,9 @@ void polymesh_free(polymesh *m)
 {
     free(m->positions);
     free(m->normals);
-    free(m->triangles);
+    free(m->tri);
+    free(m->tri_normal);
+    free(m->tri_at);
     free(m->cuts);
     free(m->corners);
     polygon_work_free(&m->work);
@@ -96,6 +98,46 @@ static int gather(polymesh *m, const int *v, int n)
     return 1;
 }
 
+/* Room for `need` triangles in every triangle array (the normal indices
+ * only once some face has them); 0 when out of memory. */
+static int reserve_triangles(polymesh *m, long need)
+{
+    if (need <= m->triangle_cap)
+        return 1;
+    int cap = m->triangle_cap;
+    int(*tri)[3] = grow(m->tri, &cap, need, sizeof *m->tri, m->max_triangles);
+    if (!tri)
+        return 0;
+    m->tri = tri;
+    int at_cap = m->triangle_cap;
+    size_t *at = grow(m->tri_at, &at_cap, need, sizeof *m->tri_at, m->max_triangles);
+    if (!at)
+        return 0;
+    m->tri_at = at;
+    if (m->tri_normal) {
+        int n_cap = m->triangle_cap;
+        int(*tn)[3] = grow(m->tri_normal, &n_cap, need, sizeof *m->tri_normal, m->max_triangles);
+        if (!tn)
+            return 0;
+        m->tri_normal = tn;
+    }
+    m->triangle_cap = cap;
+    return 1;
+}
+
+/* The normal-index array, made on the first face with normals (every
+ * triangle before it has none). */
+static int start_normals(polymesh *m)
+{
+    if (m->tri_normal)
+        return 1;
+    m->tri_normal = malloc((size_t)(m->triangle_cap > 0 ? m->triangle_cap : 1) * sizeof *m->tri_normal);
+    if (!m->tri_normal)
+        return 0;
+    memset(m->tri_normal, 0xff, (size_t)m->triangle_count * sizeof *m->tri_normal);
+    return 1;
+}
+
 int polymesh_add_face(polymesh *m, const int *v, const int *vn, int n, size_t at)
 {
     int flags, made;
@@ -108,20 +150,16 @@ int polymesh_add_face(polymesh *m, const int *v, const int *vn, int n, size_t at
         return POLYMESH_TOO_MANY;
     if (!gather(m, v, n) || (made = polygon_triangulate(m->corners, n, &m->work, m->cuts, &flags)) < 0)
         return POLYMESH_NO_MEMORY;
-    polymesh_tri *t = grow(m->triangles, &m->triangle_cap, (long)m->triangle_count + made, sizeof *t,
-                           m->max_triangles);
-    if (!t && made > 0)
+    if (!reserve_triangles(m, (long)m->triangle_count + made) || (vn && !start_normals(m)))
         return POLYMESH_NO_MEMORY;
-    if (t)
-        m->triangles = t;
-    for (int k = 0; k < made; k++) {
-        polymesh_tri *tri = &m->triangles[m->triangle_count++];
+    for (int k = 0; k < made; k++, m->triangle_count++) {
         for (int i = 0; i < 3; i++) {
             int c = m->cuts[k][i];
-            tri->v[i] = v[c];
-            tri->vn[i] = vn ? vn[c] : -1;
+            m->tri[m->triangle_count][i] = v[c];
+            if (m->tri_normal)
+                m->tri_normal[m->triangle_count][i] = vn ? vn[c] : -1;
         }
-        tri->at = at;
+        m->tri_at[m->triangle_count] = at;
     }
     m->face_count += m->face_count < INT_MAX;
     if (flags & POLYGON_NO_AREA)

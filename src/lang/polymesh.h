@@ -17,24 +17,23 @@
 #include "base/vec.h"
 #include "lang/polygon.h"
 
-typedef struct polymesh_tri {
-    int v[3];          /* 0-based indices into positions */
-    int vn[3];         /* 0-based indices into normals, or -1 when the face gave none */
-    size_t at;         /* byte offset of the face in its file, for messages */
-} polymesh_tri;
-
 /* A count of faces with something to say, and where the first one is. */
 typedef struct polymesh_tally {
     int count;
     size_t first_at;
 } polymesh_tally;
 
+/* The triangles are parallel arrays, so that the scene can take over the
+ * corner and normal arrays as they are (src/scene/lower_mesh.c). */
 typedef struct polymesh {
     vec3 *positions;
     int position_count;
     vec3 *normals;               /* as read; not normalised */
     int normal_count;
-    polymesh_tri *triangles;
+    int (*tri)[3];               /* corners: 0-based indices into positions */
+    int (*tri_normal)[3];        /* 0-based indices into normals, -1 where the face
+                                    gave none; NULL until some face gives normals */
+    size_t *tri_at;              /* byte offset of each triangle's face, for messages */
     int triangle_count;
     int face_count;              /* faces given (of any size) */
     polymesh_tally no_area;      /* faces with no area: no triangle made */

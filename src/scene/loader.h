@@ -86,10 +86,10 @@ int lower_mirrors(const xform *w);
 
 /* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
  * `at`) becomes scene.meshes[k] and one PRIM_MESH primitive made from
- * *proto (material set; kind, mesh and u are filled in).  Returns 1, or 0
- * after reporting an error. */
-int lower_mesh(loader *L, const polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w,
-               const xform *l);
+ * *proto (material set; kind, mesh and u are filled in).  Takes over (and
+ * changes) pm's arrays; pm must still be freed.  Returns 1, or 0 after
+ * reporting an error. */
+int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w, const xform *l);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);

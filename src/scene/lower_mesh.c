@@ -41,95 +41,113 @@ static void *array_of(size_t count, size_t size)
     return malloc((count > 0 ? count : 1) * size);
 }
 
-/* Every position mapped by w (unused ones too; range is checked per
- * triangle, so an unused far vertex does not matter). */
-static int world_positions(loader *L, const polymesh *pm, const xform *w, rf_trimesh *g)
+/* The reader's positions, mapped by w in place and taken over (unused ones
+ * too: range is checked per triangle, so an unused far vertex does not
+ * matter). */
+static void world_positions(polymesh *pm, const xform *w, rf_trimesh *g)
 {
-    g->positions = array_of((size_t)pm->position_count, sizeof *g->positions);
-    if (!g->positions) {
-        loader_oom(L);
-        return 0;
-    }
     for (int i = 0; i < pm->position_count; i++)
-        g->positions[i] = xform_point(w, pm->positions[i]);
+        pm->positions[i] = xform_point(w, pm->positions[i]);
+    g->positions = pm->positions;
     g->position_count = pm->position_count;
-    return 1;
+    pm->positions = NULL;
+    pm->position_count = 0;
 }
 
-/* Every normal through the inverse transpose, made unit; one that cannot be
- * (zero or not finite) is stored as zero and refused if a triangle uses it. */
-static int world_normals(loader *L, const polymesh *pm, const xform *l, rf_trimesh *g)
+/* The reader's normals through the inverse transpose, made unit, taken
+ * over; one that cannot be (zero or not finite) becomes zero, refused if a
+ * triangle uses it. */
+static void world_normals(polymesh *pm, const xform *l, rf_trimesh *g)
 {
-    if (pm->normal_count == 0)
-        return 1;
-    g->normals = array_of((size_t)pm->normal_count, sizeof *g->normals);
-    if (!g->normals) {
-        loader_oom(L);
-        return 0;
-    }
     for (int i = 0; i < pm->normal_count; i++)
-        if (!loader_unit(xform_normal(l, pm->normals[i]), &g->normals[i]))
-            g->normals[i] = vec_splat(0);
+        if (!loader_unit(xform_normal(l, pm->normals[i]), &pm->normals[i]))
+            pm->normals[i] = vec_splat(0);
+    g->normals = pm->normals;
     g->normal_count = pm->normal_count;
-    return 1;
+    pm->normals = NULL;
+    pm->normal_count = 0;
 }
 
-static int usable_corners(const rf_trimesh *g, const polymesh_tri *t)
+static int usable_corners(const rf_trimesh *g, const int *c)
 {
-    vec3 a = g->positions[t->v[0]], b = g->positions[t->v[1]], c = g->positions[t->v[2]];
-    return vec_is_finite(a) && vec_is_finite(b) && vec_is_finite(c) && vec_is_finite(vec_sub(b, a)) &&
-           vec_is_finite(vec_sub(c, a)) && vec_is_finite(vec_sub(c, b));
+    vec3 a = g->positions[c[0]], b = g->positions[c[1]], d = g->positions[c[2]];
+    return vec_is_finite(a) && vec_is_finite(b) && vec_is_finite(d) && vec_is_finite(vec_sub(b, a)) &&
+           vec_is_finite(vec_sub(d, a)) && vec_is_finite(vec_sub(d, b));
 }
 
-/* Copies triangle t into slot k (corners 1 and 2 swapped when mirrored);
- * 0 after reporting a normal it uses that cannot be made unit. */
-static int keep_triangle(loader *L, int file, const polymesh_tri *t, int mirrored, rf_trimesh *g, int k)
+/* Whether triangle k uses a normal that could not be made unit (reported). */
+static int bad_normal(loader *L, int file, const polymesh *pm, const rf_trimesh *g, int k)
 {
-    static const int order[2][3] = {{0, 1, 2}, {0, 2, 1}};
-    const int *o = order[mirrored];
-    for (int i = 0; i < 3; i++)
-        g->tri[k][i] = t->v[o[i]];
-    if (!g->tri_normal)
-        return 1;
-    for (int i = 0; i < 3; i++) {
-        int n = t->vn[o[i]];
-        g->tri_normal[k][i] = n;
+    for (int i = 0; pm->tri_normal && i < 3; i++) {
+        int n = pm->tri_normal[k][i];
         if (n >= 0 && vec_length2(g->normals[n]) == 0) {
-            diag_report(&L->diag, DIAG_ERROR, face_span(file, t->at), "vertex normal of zero length");
-            return 0;
+            diag_report(&L->diag, DIAG_ERROR, face_span(file, pm->tri_at[k]), "vertex normal of zero length");
+            return 1;
         }
     }
-    return 1;
+    return 0;
 }
 
-/* The triangles with area, in file order; the others counted in *dropped. */
-static int keep_triangles(loader *L, const polymesh *pm, int file, int mirrored, rf_mesh *m, polymesh_tally *dropped)
+static void swap_corners(int *c)
 {
-    rf_trimesh *g = &m->geom;
-    size_t n = (size_t)pm->triangle_count;
-    g->tri = array_of(n, sizeof *g->tri);
-    g->tri_normal = pm->normal_count > 0 ? array_of(n, sizeof *g->tri_normal) : NULL;
-    if (!g->tri || (pm->normal_count > 0 && !g->tri_normal)) {
-        loader_oom(L);
-        return 0;
-    }
-    for (int i = 0; i < pm->triangle_count && !diag_too_many(&L->diag); i++) {
-        const polymesh_tri *t = &pm->triangles[i];
-        if (!usable_corners(g, t)) {
-            diag_report(&L->diag, DIAG_ERROR, face_span(file, t->at),
+    int t = c[1];
+    c[1] = c[2];
+    c[2] = t;
+}
+
+/* Keeps the triangles with area, in file order, moving them down in the
+ * reader's arrays, and takes those over; the others are counted in
+ * *dropped.  A mirroring transform swaps corners 1 and 2 of each. */
+static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, rf_trimesh *g, polymesh_tally *dropped)
+{
+    int kept = 0;
+    for (int k = 0; k < pm->triangle_count && !diag_too_many(&L->diag); k++) {
+        const int *c = pm->tri[k];
+        if (!usable_corners(g, c)) {
+            diag_report(&L->diag, DIAG_ERROR, face_span(file, pm->tri_at[k]),
                         "this face is out of range after the mesh's transforms: a coordinate passes the largest "
                         "number (about 1.8e308)");
             continue;
         }
-        if (lower_degenerate(g->positions[t->v[0]], g->positions[t->v[1]], g->positions[t->v[2]])) {
+        if (lower_degenerate(g->positions[c[0]], g->positions[c[1]], g->positions[c[2]])) {
             if (dropped->count++ == 0)
-                dropped->first_at = t->at;
+                dropped->first_at = pm->tri_at[k];
             continue;
         }
-        if (keep_triangle(L, file, t, mirrored, g, g->tri_count))
-            g->tri_count++;
+        if (bad_normal(L, file, pm, g, k))
+            continue;
+        memmove(pm->tri[kept], pm->tri[k], sizeof pm->tri[k]);
+        if (pm->tri_normal)
+            memmove(pm->tri_normal[kept], pm->tri_normal[k], sizeof pm->tri_normal[k]);
+        if (mirrored) {
+            swap_corners(pm->tri[kept]);
+            if (pm->tri_normal)
+                swap_corners(pm->tri_normal[kept]);
+        }
+        kept++;
     }
-    return 1;
+    g->tri = pm->tri;
+    g->tri_normal = pm->tri_normal;
+    g->tri_count = kept;
+    pm->tri = NULL;
+    pm->tri_normal = NULL;
+    pm->triangle_count = 0;
+}
+
+/* Gives back what the reader's doubling arrays hold beyond their counts
+ * (up to half of them).  A failed shrink keeps the array as it is. */
+static void *fit(void *array, size_t count, size_t size)
+{
+    void *fitted = array && count > 0 ? realloc(array, count * size) : NULL;
+    return fitted ? fitted : array;
+}
+
+static void fit_arrays(rf_trimesh *g)
+{
+    g->positions = fit(g->positions, (size_t)g->position_count, sizeof *g->positions);
+    g->normals = fit(g->normals, (size_t)g->normal_count, sizeof *g->normals);
+    g->tri = fit(g->tri, (size_t)g->tri_count, sizeof *g->tri);
+    g->tri_normal = fit(g->tri_normal, (size_t)g->tri_count, sizeof *g->tri_normal);
 }
 
 /* One warning for a tally of faces, pointing at the mesh statement and
@@ -144,15 +162,20 @@ static void warn_tally(loader *L, const rf_mesh *m, int file, polymesh_tally t, 
                 t.count == 1 ? "face " : "faces ", what, first);
 }
 
-static void report_findings(loader *L, const rf_mesh *m, int file, const polymesh *pm, polymesh_tally dropped,
-                            double t)
+/* The warnings about faces: they name the first face's place in the file. */
+static void report_faces(loader *L, const rf_mesh *m, int file, const polymesh *pm, polymesh_tally dropped)
+{
+    warn_tally(L, m, file, dropped, "with no area dropped (their corners are on one line)");
+    warn_tally(L, m, file, pm->nonplanar, "not planar (a corner is off the polygon's plane by more than 1e-4 of "
+                                          "its size), cut on their best-fit plane");
+    warn_tally(L, m, file, pm->fanned, "cut as a fan (the polygon crosses itself, or the ear-clipping budget ran "
+                                       "out)");
+}
+
+/* The warnings about the surface as a whole. */
+static void report_surface(loader *L, const rf_mesh *m, double t)
 {
     const rf_mesh_report *r = &m->report;
-    polymesh_tally nonplanar = pm->nonplanar, fanned = pm->fanned;
-    warn_tally(L, m, file, dropped, "with no area dropped (their corners are on one line)");
-    warn_tally(L, m, file, nonplanar, "not planar (a corner is off the polygon's plane by more than 1e-4 of its "
-                                      "size), cut on their best-fit plane");
-    warn_tally(L, m, file, fanned, "cut as a fan (the polygon crosses itself, or the ear-clipping budget ran out)");
     if (t > 0 && !m->geom.closed)
         diag_report(&L->diag, DIAG_WARNING, m->where,
                     "this transparent mesh is not closed (%d open edge%s, %d edge%s of 3 or more triangles): it is "
@@ -217,8 +240,7 @@ static char *copy_string(const char *s)
     return c;
 }
 
-int lower_mesh(loader *L, const polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w,
-               const xform *l)
+int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w, const xform *l)
 {
     if (!within_limit(L, pm, at))
         return 0;
@@ -234,22 +256,31 @@ int lower_mesh(loader *L, const polymesh *pm, int file, src_span at, rf_prim *pr
         loader_oom(L);
         return 0;
     }
-    if (!world_positions(L, pm, w, &m->geom) || !world_normals(L, pm, l, &m->geom) ||
-        !keep_triangles(L, pm, file, lower_mirrors(w), m, &dropped) || L->diag.errors != errors)
-        return 0;
     m->report.faces = pm->face_count;
+    world_positions(pm, w, &m->geom);
+    world_normals(pm, l, &m->geom);
+    keep_triangles(L, pm, file, lower_mirrors(w), &m->geom, &dropped);
+    fit_arrays(&m->geom);
+    if (L->diag.errors != errors)
+        return 0;
     dropped = all_dropped(pm, dropped);
     m->report.dropped = dropped.count;
     m->report.nonplanar = pm->nonplanar.count;
     m->report.fanned = pm->fanned.count;
     if (m->geom.tri_count == 0) {
         diag_report(&L->diag, DIAG_ERROR, at, "mesh has no triangle with area: all %d of its faces were dropped",
-                    pm->face_count);
+                    m->report.faces);
         return 0;
     }
+    report_faces(L, m, file, pm, dropped);
+    /* No message points into the file from here on: give back its text and
+     * the faces' places before the topology needs its memory. */
+    source_set_release(&L->scene->sources, file);
+    free(pm->tri_at);
+    pm->tri_at = NULL;
     if (!analyse(L, m))
         return 0;
-    report_findings(L, m, file, pm, dropped, L->scene->materials[proto->material].t);
+    report_surface(L, m, L->scene->materials[proto->material].t);
     L->mesh_triangles += m->geom.tri_count;
     proto->kind = PRIM_MESH;
     proto->mesh = index;

@@ -315,7 +315,8 @@ static rf_prim *emit(loader *L, const rf_prim *prim)
 }
 
 /* Reads the OBJ or PLY file into the load's sources, so its errors point
- * into it: the one place a mesh file is read. */
+ * into it: the one place a mesh file is read.  The sources take the text
+ * over without a copy (a mesh file can be tens of megabytes). */
 static int read_obj(loader *L, const char *name, src_span at, int *file)
 {
     const source_file *from = L->scene->sources.files[at.file];
@@ -329,11 +330,10 @@ static int read_obj(loader *L, const char *name, src_span at, int *file)
     }
     int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
     if (status == 0)
-        *file = source_set_add(&L->scene->sources, path, text, len, at);
+        *file = source_set_adopt(&L->scene->sources, path, text, len, at);
     else
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
     free(path);
-    free(text);
     if (status == 0 && *file < 0)
         loader_oom(L);
     return status == 0 && *file >= 0;
@@ -360,10 +360,11 @@ static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const
     long limit = L->limits->max_mesh_triangles;
     int ok = is_ply(sources->files[file]) ? ply_parse(sources, file, &L->diag, limit, &pm)
                                           : obj_parse(sources, file, &L->diag, limit, &pm);
-    if (!ok)
-        return 0;
-    ok = lower_mesh(L, &pm, file, at, proto, w, l);
+    if (ok)
+        ok = lower_mesh(L, &pm, file, at, proto, w, l);
     polymesh_free(&pm);
+    /* Nothing points into the file after this: its text can go. */
+    source_set_release(&L->scene->sources, file);
     return ok;
 }
 

@@ -1,12 +1,15 @@
 /*
  * mesh_topo.c - closed, oriented, pieces (see mesh_topo.h).
  *
- * Two hash tables with open addressing and linear probing, each at most
- * half full: positions to the first vertex index with that position, and
- * undirected edges to the first half-edge (3 t + k: corner k to corner
- * k + 1 of triangle t) found on them.  A second half-edge on an edge pairs
- * with the first; a third marks the edge crowded.  Pieces come from a
- * union-find over the paired triangles.
+ * Vertices are welded by a hash table of positions (open addressing,
+ * linear probing, at most half full).  The half-edges (3 t + k: corner k
+ * to corner k + 1 of triangle t) are then grouped by their lower welded
+ * vertex with a counting sort, and each group, a vertex's few edges, is
+ * sorted by the upper vertex: a run of two half-edges is a shared edge, of
+ * one an open edge, of three or more a crowded one.  Everything is linear
+ * in the triangle count (a vertex of very high degree is sorted by qsort)
+ * and walks memory mostly in order.  Pieces come from a union-find over
+ * the paired triangles.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -95,48 +98,104 @@ static int to_of(const edges *e, int h)
     return e->canon[e->m->tri[h / 3][(h % 3 + 1) % 3]];
 }
 
-static int same_edge(const edges *e, int g, int h)
+/* A half-edge with the upper vertex of its edge, for sorting a group. */
+typedef struct half {
+    int upper;
+    int h;
+} half;
+
+static int half_order(const void *pa, const void *pb)
 {
-    int a = from_of(e, g), b = to_of(e, g), c = from_of(e, h), d = to_of(e, h);
-    return (a == c && b == d) || (a == d && b == c);
+    const half *a = pa, *b = pb;
+    if (a->upper != b->upper)
+        return a->upper < b->upper ? -1 : 1;
+    return (a->h > b->h) - (a->h < b->h);
 }
 
-static uint64_t edge_hash(int a, int b)
+static void sort_group(half *g, int n)
 {
-    uint64_t lo = (uint64_t)(a < b ? a : b), hi = (uint64_t)(a < b ? b : a);
-    return mix(hi << 32 | lo);
+    if (n > 16) {
+        qsort(g, (size_t)n, sizeof *g, half_order);
+        return;
+    }
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && half_order(&g[j - 1], &g[j]) > 0; j--) {
+            half t = g[j];
+            g[j] = g[j - 1];
+            g[j - 1] = t;
+        }
+}
+
+/* Pairs the half-edges of one group (one lower vertex): runs of equal upper
+ * vertex.  Counts crowded edges. */
+static void pair_group(edges *e, half *g, int n, int *crowded)
+{
+    sort_group(g, n);
+    for (int i = 0; i < n;) {
+        int j = i + 1;
+        while (j < n && g[j].upper == g[i].upper)
+            j++;
+        if (j - i == 2) {
+            e->nbr[g[i].h] = g[i + 1].h;
+            e->nbr[g[i + 1].h] = g[i].h;
+        } else if (j - i > 2) {
+            for (int k = i; k < j; k++)
+                e->nbr[g[k].h] = CROWDED;
+            (*crowded)++;
+        }
+        i = j;
+    }
+}
+
+/* start[v] .. start[v + 1]: the half-edges whose lower vertex is v, in
+ * list (a counting sort). */
+static void group_by_lower(const edges *e, int *start, int *list)
+{
+    int nv = e->m->position_count, half_count = 3 * e->m->tri_count;
+    for (int h = 0; h < half_count; h++) {
+        int a = from_of(e, h), b = to_of(e, h);
+        start[(a < b ? a : b) + 1]++;
+    }
+    for (int v = 0; v < nv; v++)
+        start[v + 1] += start[v];
+    for (int h = 0; h < half_count; h++) {
+        int a = from_of(e, h), b = to_of(e, h);
+        list[start[a < b ? a : b]++] = h;
+    }
+    for (int v = nv; v > 0; v--)
+        start[v] = start[v - 1];
+    start[0] = 0;
 }
 
 /* Pairs the half-edges; counts the edges with three or more in *crowded. */
 static int pair_edges(edges *e, int *crowded)
 {
-    size_t mask, half = 3 * (size_t)e->m->tri_count;
-    int *slot = table_new(half, &mask);
-    if (!slot)
-        return 0;
-    *crowded = 0;
-    for (size_t h = 0; h < half; h++) {
-        int hi = (int)h;
-        size_t k = (size_t)edge_hash(from_of(e, hi), to_of(e, hi)) & mask;
-        while (slot[k] >= 0 && !same_edge(e, slot[k], hi))
-            k = (k + 1) & mask;
-        int first = slot[k];
-        if (first < 0) {
-            slot[k] = hi;
-        } else if (e->nbr[first] == UNPAIRED) {
-            e->nbr[first] = hi;
-            e->nbr[hi] = first;
-        } else {
-            if (e->nbr[first] >= 0) {
-                e->nbr[e->nbr[first]] = CROWDED;
-                e->nbr[first] = CROWDED;
-                (*crowded)++;
-            }
-            e->nbr[hi] = CROWDED;
-        }
+    int nv = e->m->position_count, widest = 0;
+    int *start = calloc((size_t)nv + 1, sizeof *start);
+    int *list = malloc(3 * (size_t)(e->m->tri_count > 0 ? e->m->tri_count : 1) * sizeof *list);
+    half *g = NULL;
+    int ok = start && list;
+    if (ok) {
+        group_by_lower(e, start, list);
+        for (int v = 0; v < nv; v++)
+            widest = start[v + 1] - start[v] > widest ? start[v + 1] - start[v] : widest;
+        g = malloc((size_t)(widest > 0 ? widest : 1) * sizeof *g);
+        ok = g != NULL;
     }
-    free(slot);
-    return 1;
+    *crowded = 0;
+    for (int v = 0; ok && v < nv; v++) {
+        int n = start[v + 1] - start[v];
+        for (int i = 0; i < n; i++) {
+            int h = list[start[v] + i], a = from_of(e, h), b = to_of(e, h);
+            g[i].upper = a < b ? b : a;
+            g[i].h = h;
+        }
+        pair_group(e, g, n, crowded);
+    }
+    free(start);
+    free(list);
+    free(g);
+    return ok;
 }
 
 static int find(int *parent, int t)
@@ -181,13 +240,13 @@ int mesh_topo_analyse(const rf_trimesh *m, mesh_topo *out, unsigned char *open)
     memset(out, 0, sizeof *out);
     if (open)
         memset(open, 0, (size_t)m->tri_count);
-    size_t half = 3 * (size_t)m->tri_count;
+    size_t halves = 3 * (size_t)m->tri_count;
     int *canon = malloc((size_t)(m->position_count > 0 ? m->position_count : 1) * sizeof *canon);
-    int *nbr = malloc((half > 0 ? half : 1) * sizeof *nbr);
+    int *nbr = malloc((halves > 0 ? halves : 1) * sizeof *nbr);
     edges e = {m, canon, nbr};
     int ok = canon && nbr && weld(m, canon);
     if (ok) {
-        for (size_t h = 0; h < half; h++)
+        for (size_t h = 0; h < halves; h++)
             nbr[h] = UNPAIRED;
         ok = pair_edges(&e, &out->crowded_edges) && summarise(&e, out, open);
     }
