@@ -4,9 +4,10 @@
  * Top-down, binned SAH (Wald, "On fast Construction of SAH-based Bounding
  * Volume Hierarchies", 2007): the centroids of a node's parts are binned
  * along all three axes in one pass, and the plane between bins of least
- *   C_TRAV + (area_L n_L + area_R n_R) / area
- * wins; a node of at most MAX_LEAF parts stays a leaf when that is not
- * cheaper than n.  A node of n parts uses min(n, BINS) bins.  The
+ *   C_TRAV + (area_L c_L + area_R c_R) / area
+ * wins, c being the summed intersection cost of a side's parts (1 for a
+ * primitive, TRIANGLE_COST for a mesh triangle); a node of at most
+ * MAX_LEAF parts stays a leaf when that is not cheaper than its own cost.  A node of n parts uses min(n, BINS) bins.  The
  * children's boxes come out of the bins exactly, and their centroids'
  * bounds out of the partition pass, so each level reads every part twice.
  * When the centroids coincide, or below
@@ -26,9 +27,11 @@
 
 #define BINS 32
 #define MAX_LEAF 4
-/* A traversal step costs about two triangle tests' worth of SAH: leaves of
- * three or four triangles, half a node per triangle in a large mesh. */
-#define C_TRAV 2.0
+#define C_TRAV 1.0
+/* A mesh triangle is tested in about half the time of a sphere or a
+ * transformed shape, the cost scale here: leaves of three or four
+ * triangles, about half a node per triangle in a large mesh. */
+#define TRIANGLE_COST 0.5
 /* Primitive boxes are widened by this fraction of their coordinates' size,
  * so a hit computed a few ulps outside its true box is still inside. */
 #define BOUNDS_PAD 0x1p-40
@@ -48,6 +51,7 @@ typedef struct range {
 typedef struct bin {
     vec3 lo, hi;
     int count;
+    real cost;        /* summed intersection cost of its parts */
 } bin;
 
 typedef struct sort_key {
@@ -58,6 +62,7 @@ typedef struct sort_key {
 
 typedef struct build_ctx {
     bvh *b;
+    const rf_prim *prims;
     build_item *items;    /* the bounded parts */
     int count;
     build_item *spare;    /* median splits: as many again, made on first use */
@@ -163,18 +168,28 @@ static binning binning_of(const range *r, int n)
     return bn;
 }
 
-/* One pass: every item into its bin on each binned axis. */
-static void fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
+static real part_cost(const build_ctx *ctx, const build_item *it)
 {
+    return ctx->prims[it->ref.prim].kind == PRIM_MESH ? TRIANGLE_COST : 1.0;
+}
+
+/* One pass: every item into its bin on each binned axis.  Returns the
+ * node's own cost (as a leaf). */
+static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
+{
+    real total = 0.0;
     for (int a = 0; a < 3; a++)
         for (int k = 0; k < bn->bins; k++) {
             ctx->bins[a][k].lo = vec_splat(INFINITY);
             ctx->bins[a][k].hi = vec_splat(-INFINITY);
             ctx->bins[a][k].count = 0;
+            ctx->bins[a][k].cost = 0.0;
         }
     for (int i = begin; i < end; i++) {
         const build_item *it = &ctx->items[i];
         vec3 c = centroid(it);
+        real cost = part_cost(ctx, it);
+        total += cost;
         for (int a = 0; a < 3; a++) {
             if (bn->scale[a] == 0.0)
                 continue;
@@ -182,8 +197,10 @@ static void fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
             bk->lo = vmin(bk->lo, it->lo);
             bk->hi = vmax(bk->hi, it->hi);
             bk->count++;
+            bk->cost += cost;
         }
     }
+    return total;
 }
 
 /* The best plane on one axis: its cost (area-weighted counts, not yet
@@ -191,26 +208,30 @@ static void fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
 {
     const bin *bins = ctx->bins[axis];
-    real right_area[BINS], best = INFINITY;
+    real right_area[BINS], right_cost[BINS], best = INFINITY, sum = 0.0;
     int right_count[BINS], count = 0;
     vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
     for (int k = nb - 1; k > 0; k--) {
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
+        sum += bins[k].cost;
         right_area[k] = half_area(lo, hi);
         right_count[k] = count;
+        right_cost[k] = sum;
     }
     lo = vec_splat(INFINITY);
     hi = vec_splat(-INFINITY);
     count = 0;
+    sum = 0.0;
     for (int k = 0; k < nb - 1; k++) {
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
+        sum += bins[k].cost;
         if (count == 0 || right_count[k + 1] == 0)
             continue;
-        real cost = half_area(lo, hi) * count + right_area[k + 1] * right_count[k + 1];
+        real cost = half_area(lo, hi) * sum + right_area[k + 1] * right_cost[k + 1];
         if (cost < best) {
             best = cost;
             *split = k + 1;
@@ -309,12 +330,12 @@ static int widest_axis(vec3 lo, vec3 hi)
 static int choose_split(build_ctx *ctx, int begin, int end, int depth, const range *r, range kids[2])
 {
     int n = end - begin, best_split = 0, best_axis = -1;
-    real best = INFINITY;
+    real best = INFINITY, leaf_cost = n;
     if (n <= 1)
         return -1;
     binning bn = binning_of(r, n);
     if (depth < BVH_MEDIAN_DEPTH && (bn.scale[0] != 0 || bn.scale[1] != 0 || bn.scale[2] != 0)) {
-        fill_bins(ctx, begin, end, &bn);
+        leaf_cost = fill_bins(ctx, begin, end, &bn);
         for (int a = 0; a < 3; a++) {
             int split = 0;
             real cost = bn.scale[a] != 0.0 ? sah_axis(ctx, a, bn.bins, &split) : INFINITY;
@@ -337,7 +358,7 @@ static int choose_split(build_ctx *ctx, int begin, int end, int depth, const ran
     }
     real area = half_area(r->lo, r->hi);
     real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
-    if (n <= MAX_LEAF && !(split_cost < n))
+    if (n <= MAX_LEAF && !(split_cost < leaf_cost))
         return -1;
     kid_boxes(ctx, best_axis, bn.bins, best_split, kids);
     return partition_bins(ctx, begin, end, &bn, best_axis, best_split, kids);
@@ -456,6 +477,7 @@ int bvh_build(bvh *b, const rf_prim *prims, int count)
         return 0;
     }
     ctx->b = b;
+    ctx->prims = prims;
     ctx->items = alloc_array((size_t)parts, sizeof *ctx->items);
     b->unbounded = alloc_array((size_t)count, sizeof *b->unbounded);
     if (ctx->items && b->unbounded) {

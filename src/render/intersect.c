@@ -840,12 +840,21 @@ ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
+/* Whether p can have vertex normals (then shadow rays start at the lifted
+ * point): tested first so other shapes pay nothing for it. */
+static int smooth(const rf_prim *p)
+{
+    return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
+}
+
 ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
 {
-    return spawn(isect_shadow_point(p, h), h->normal, dir, isect_part_magnitude(p, h->part), 1);
+    vec3 from = smooth(p) ? isect_shadow_point(p, h) : h->point;
+    return spawn(from, h->normal, dir, isect_part_magnitude(p, h->part), 1);
 }
 
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)
 {
-    return spawn_to(isect_shadow_point(p, h), h->normal, target, isect_part_magnitude(p, h->part));
+    vec3 from = smooth(p) ? isect_shadow_point(p, h) : h->point;
+    return spawn_to(from, h->normal, target, isect_part_magnitude(p, h->part));
 }
