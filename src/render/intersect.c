@@ -831,10 +831,32 @@ static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
     return xform_point(&p->to_world, local);
 }
 
+/*
+ * The same for a closed mesh, which has no axes to clamp on: the point is
+ * first moved along the triangle toward its centroid by the offset (at most
+ * half way).  A hit next to an edge may lie an ulp beyond the plane of the
+ * triangle across that edge; pushed off along its own normal only, a ray
+ * from there into the solid that heads through the other triangle meets it
+ * at t <= 0 and leaves (spec/numerics.md, "Mesh edges").  Moved away from
+ * the edge by the offset it lies inside the other triangle's plane by about
+ * the offset times the sine of the angle between the faces.  Done for rays
+ * to either side: which side is inside, a closed mesh's winding does not
+ * say (trace.c).
+ */
+static vec3 off_the_edges(const rf_prim *p, const hit *h, real offset)
+{
+    vec3 v[3], n[3];
+    mesh_corners(&p->u.mesh, h->part, v, n);
+    vec3 c = vec_scale(vec_add(v[0], vec_add(v[1], v[2])), 1.0 / 3.0), to = vec_sub(c, h->point);
+    real d = vec_length(to);
+    return d > 0.0 ? vec_madd(h->point, to, fmin(offset, d / 2) / d) : h->point;
+}
+
 ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
 {
     real m = isect_part_magnitude(p, h->part);
-    ray r = spawn(h->point, h->normal, dir, m, 0);
+    vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
+    ray r = spawn(from, h->normal, dir, m, 0);
     if (p->kind == PRIM_BOX && vec_dot(dir, h->normal) < 0)
         r.origin = keep_inside(p, r.origin, spawn_offset(h->point, m));
     return r;

@@ -84,10 +84,11 @@ static void record_features(rf_scene *s, const loader *L)
     for (int i = 0; i < s->light_count; i++)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
-    /* With N.L > 0 required, one convex or flat primitive never shadows
-     * itself; only a second primitive can stand in the way, or another part
-     * of a mesh. */
-    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || s->mesh_count > 0);
+    /* With N.L > 0 required, one opaque convex or flat primitive never
+     * shadows itself; only a second primitive can stand in the way, another
+     * part of a mesh, or the far side of a transparent solid seen from
+     * inside it (the light reaches its back face through its front). */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || s->mesh_count > 0 || f->refraction);
 }
 
 int validate_scene(loader *L)
