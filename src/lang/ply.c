@@ -93,11 +93,13 @@ typedef struct reader {
     int failed;                /* an error in the data: stop reading */
 } reader;
 
-/* One value read from the data: integers exactly in i (and f), floats in f. */
+/* One value read from the data: integers exactly in i (and f), floats in f;
+ * at is where it starts. */
 typedef struct value {
     long long i;
     double f;
     int integral;
+    size_t at;
 } value;
 
 /* ---- header: lines and tokens ------------------------------------------ */
@@ -525,7 +527,9 @@ static const char *const type_words[] = {"", "char", "uchar", "short", "ushort",
 static int read_ascii(reader *r, const element *e, long long index, const char *what, scalar t, value *v)
 {
     src_span tok;
-    if (!data_token(r, &tok)) {
+    int found = data_token(r, &tok);
+    v->at = found ? tok.begin : r->len;
+    if (!found) {
         data_error(r, e, index, span_of(r, r->len, r->len), "the file ends before %s", what);
         return 0;
     }
@@ -583,11 +587,11 @@ static int read_binary(reader *r, const element *e, long long index, const char 
         return 0;
     }
     decode(t, binary_bits(r, (const unsigned char *)r->text + r->pos, n), v);
-    size_t at = r->pos;
+    v->at = r->pos;
     r->pos += (size_t)n;
     if (v->integral || isfinite(v->f))
         return 1;
-    data_error(r, e, index, span_of(r, at, at), "%s is not finite", what);
+    data_error(r, e, index, span_of(r, v->at, v->at), "%s is not finite", what);
     return 0;
 }
 
@@ -610,15 +614,14 @@ static int read_list_count(reader *r, const element *e, long long index, const p
     char what[80];
     value v;
     describe(r, p, " (its count)", what, sizeof what);
-    size_t at = r->pos;
     if (!read_value(r, e, index, what, p->count_type, &v))
         return 0;
     if (v.i < 0 || v.i > INT_MAX) {
-        data_error(r, e, index, span_of(r, at, r->pos), "%s is %lld", what, v.i);
+        data_error(r, e, index, span_of(r, v.at, r->pos), "%s is %lld", what, v.i);
         return 0;
     }
     if (r->fmt != F_ASCII && (unsigned long long)v.i > (r->len - r->pos) / (size_t)type_size[p->type]) {
-        data_error(r, e, index, span_of(r, at, at), "%s is %lld, more items than the file holds", what, v.i);
+        data_error(r, e, index, span_of(r, v.at, v.at), "%s is %lld, more items than the file holds", what, v.i);
         return 0;
     }
     *count = v.i;
@@ -689,11 +692,10 @@ static int read_indices(reader *r, const element *e, long long index, const prop
     }
     for (long long k = 0; k < *n; k++) {
         value v;
-        size_t at = r->pos;
         if (!read_value(r, e, index, what, p->type, &v))
             return 0;
         if (v.i < 0 || v.i >= r->mesh->position_count) {
-            data_error(r, e, index, span_of(r, at, r->pos), "vertex index %lld is out of range (%d vertices)", v.i,
+            data_error(r, e, index, span_of(r, v.at, r->pos), "vertex index %lld is out of range (%d vertices)", v.i,
                        r->mesh->position_count);
             return 0;
         }

@@ -150,29 +150,30 @@ static void fit_arrays(rf_trimesh *g)
     g->tri_normal = fit(g->tri_normal, (size_t)g->tri_count, sizeof *g->tri_normal);
 }
 
-/* One warning for a tally of faces, pointing at the mesh statement and
- * naming the first face. */
-static void warn_tally(loader *L, const rf_mesh *m, int file, polymesh_tally t, const char *what)
+/* One warning for a tally of faces, at the mesh statement, naming the
+ * first face: "<verb> N face(s) <what>; the first at x.obj:L:C". */
+static void warn_tally(loader *L, const rf_mesh *m, int file, polymesh_tally t, const char *verb, const char *what)
 {
     char first[600];
     if (t.count == 0)
         return;
     face_place(L, file, t.first_at, first, sizeof first);
-    diag_report(&L->diag, DIAG_WARNING, m->where, "%d %s%s (the first at %s)", t.count,
-                t.count == 1 ? "face " : "faces ", what, first);
+    diag_report(&L->diag, DIAG_WARNING, m->where, "%s %d face%s %s; the first at %s", verb, t.count,
+                t.count == 1 ? "" : "s", what, first);
 }
 
-/* The warnings about faces: they name the first face's place in the file. */
+/* [MESH-WARN-1] The warnings about faces. */
 static void report_faces(loader *L, const rf_mesh *m, int file, const polymesh *pm, polymesh_tally dropped)
 {
-    warn_tally(L, m, file, dropped, "with no area dropped (their corners are on one line)");
-    warn_tally(L, m, file, pm->nonplanar, "not planar (a corner is off the polygon's plane by more than 1e-4 of "
-                                          "its size), cut on their best-fit plane");
-    warn_tally(L, m, file, pm->fanned, "cut as a fan (the polygon crosses itself, or the ear-clipping budget ran "
-                                       "out)");
+    warn_tally(L, m, file, dropped, "dropped", "with no area (corners on one line, or repeated)");
+    warn_tally(L, m, file, pm->nonplanar, "cut",
+               "on a plane that does not hold all their corners (one is off the best-fitting plane by more than "
+               "1e-4 of the face's size)");
+    warn_tally(L, m, file, pm->fanned, "cut",
+               "as a fan (the polygon crosses itself, or the ear-clipping budget ran out)");
 }
 
-/* The warnings about the surface as a whole. */
+/* [MESH-WARN-2] The warnings about the surface as a whole. */
 static void report_surface(loader *L, const rf_mesh *m, double t)
 {
     const rf_mesh_report *r = &m->report;
