@@ -188,15 +188,22 @@ $(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
 
-# Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
-# `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
-# instrumentation in build/fuzz, seeds the corpus from the scenes and the
-# bad-input corpus, and runs.  Crashes are written to build/fuzz/ as
-# crash-*; each one becomes a file under tests/fuzz-regressions/.
+# Fuzzing with libFuzzer (clang, Debian clang + libclang-rt-14-dev): the
+# front end (fuzz_scene), the OBJ reader (fuzz_obj) and the PLY reader
+# (fuzz_ply).  `make fuzz FUZZ_SECONDS=600 [FUZZ_TARGETS="obj ply"]`: builds
+# everything with clang and the fuzzer's instrumentation in build/fuzz,
+# seeds each target's corpus (build/fuzz/corpus-TARGET) from the test files
+# of its kind, and runs each in turn for FUZZ_SECONDS.  Crashes are written
+# to build/fuzz/ as crash-*; each one becomes a file under
+# tests/fuzz-regressions/ (a mesh file with a .scene that reads it).
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 1
+FUZZ_TARGETS ?= scene obj ply
 FUZZ_DIR := build/fuzz
 FUZZ_DEBS := clang libclang-rt-14-dev
+FUZZ_SEEDS_scene = scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/*.scene
+FUZZ_SEEDS_obj = tests/obj/*.obj tests/ply/*.obj scenes/*/*.obj tests/bad/inc/*.obj
+FUZZ_SEEDS_ply = tests/ply/*.ply tests/bad/inc/*.ply
 
 fuzz:
 	$(Q)$(MAKE) --no-print-directory deps
@@ -206,15 +213,23 @@ fuzz:
 	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
 	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
 
-fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
-	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
-	$(Q)mkdir -p $(BUILD)/corpus
-	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
+fuzz-run: $(LIBRARY) $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(FUZZ_TARGETS:%=$(BUILD)/%.dict)
+	$(Q)for t in $(FUZZ_TARGETS); do \
+	  $(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_$$t $(BUILD)/obj/tests/fuzz/fuzz_$$t.o $(LIBRARY) $(ALL_LIBS) || exit 1; \
+	done
+	$(Q)mkdir -p $(FUZZ_TARGETS:%=$(BUILD)/corpus-%)
+	$(Q)$(foreach t,$(FUZZ_TARGETS),cp -n $(FUZZ_SEEDS_$(t)) $(BUILD)/corpus-$(t)/ 2>/dev/null;) true
+	$(Q)for t in $(FUZZ_TARGETS); do echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
+	  (cd $(BUILD) && ./fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
+	    -dict=$$t.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus-$$t) || exit 1; \
+	done
+
+$(BUILD)/scene.dict: src/lang/keywords.c
 	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
 	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
-	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
-	cd $(BUILD) && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
-	  -dict=scene.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus
+	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $@
+$(BUILD)/%.dict: tests/fuzz/%.dict
+	$(Q)cp $< $@
 
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \

@@ -607,8 +607,8 @@ static void describe(const reader *r, const property *p, const char *extra, char
     snprintf(out, size, "property '%s'%s", q.s, extra);
 }
 
-/* A list's count: an integer from 0 to INT_MAX, whose items fit in the
- * bytes left (binary). */
+/* A list's count: an integer from 0 to INT_MAX, whose items can fit in the
+ * bytes left. */
 static int read_list_count(reader *r, const element *e, long long index, const property *p, long long *count)
 {
     char what[80];
@@ -620,7 +620,10 @@ static int read_list_count(reader *r, const element *e, long long index, const p
         data_error(r, e, index, span_of(r, v.at, r->pos), "%s is %lld", what, v.i);
         return 0;
     }
-    if (r->fmt != F_ASCII && (unsigned long long)v.i > (r->len - r->pos) / (size_t)type_size[p->type]) {
+    /* A binary item takes its type's size, an ASCII one a digit and a blank
+     * (the last one may lack its blank). */
+    size_t room = r->fmt != F_ASCII ? (r->len - r->pos) / (size_t)type_size[p->type] : (r->len - r->pos + 1) / 2;
+    if ((unsigned long long)v.i > room) {
         data_error(r, e, index, span_of(r, v.at, v.at), "%s is %lld, more items than the file holds", what, v.i);
         return 0;
     }
