@@ -100,7 +100,7 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
 
-.PHONY: all deps check test demo bench precision refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test demo bench precision terminator refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY)
@@ -163,6 +163,17 @@ precision: $(PRECISION)
 $(PRECISION): $(BUILD)/obj/tests/precision/precision.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS) -lquadmath
+
+# Figures, not tests: the shadow terminator of smooth sphere meshes against
+# the exact Lambert image, before and after the lifted shadow-ray start
+# (spec/shading.md).  TERMINATOR_ARGS="-o DIR" also writes the renders.
+TERMINATOR := $(BUILD)/terminator
+terminator: $(TERMINATOR)
+	$(TERMINATOR) $(TERMINATOR_ARGS)
+
+$(TERMINATOR): $(BUILD)/obj/tests/terminator/terminator.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
 
 # The long double twin of refray for `refray stability` (spec/numerics.md),
 # built by a recursive make in its own directory and copied next to refray.

@@ -862,21 +862,17 @@ ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
-/* Whether p can have vertex normals (then shadow rays start at the lifted
- * point): tested first so other shapes pay nothing for it. */
-static int smooth(const rf_prim *p)
+ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
+{
+    return spawn(h->point, h->normal, dir, isect_part_magnitude(p, h->part), 1);
+}
+
+int isect_smooth(const rf_prim *p)
 {
     return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
 }
 
-ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
-{
-    vec3 from = smooth(p) ? isect_shadow_point(p, h) : h->point;
-    return spawn(from, h->normal, dir, isect_part_magnitude(p, h->part), 1);
-}
-
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)
 {
-    vec3 from = smooth(p) ? isect_shadow_point(p, h) : h->point;
-    return spawn_to(from, h->normal, target, isect_part_magnitude(p, h->part));
+    return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
 }

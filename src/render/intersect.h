@@ -85,11 +85,16 @@ int isect_part_all(const rf_prim *p, int part, const ray *r, hit out[2]);
 int isect_part_bounds(const rf_prim *p, int part, vec3 *lo, vec3 *hi);
 real isect_part_magnitude(const rf_prim *p, int part);
 
-/* Where shadow rays from a hit start: for a triangle with vertex normals
- * the hit point lifted toward the curved surface those normals describe
- * (Hanika's shadow terminator offset, spec/shading.md
- * [SHADE-TERMINATOR-1]); for anything else the hit point itself. */
+/* Where shadow rays from a hit should start: for a triangle with vertex
+ * normals the hit point lifted toward the curved surface those normals
+ * describe (Hanika's shadow terminator offset, spec/shading.md
+ * [SHADE-TERMINATOR-1]); for anything else the hit point itself.  The
+ * tracer passes a copy of the hit with this point to ray_spawn_hit_to and
+ * ray_spawn_hit_shadow. */
 vec3 isect_shadow_point(const rf_prim *p, const hit *h);
+/* Whether p has vertex normals (a smooth triangle or mesh), so that the
+ * lifted point can differ from the hit point. */
+int isect_smooth(const rf_prim *p);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
@@ -124,9 +129,9 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
  * the point).  A ray into a box starts inside it on every axis (see
  * intersect.c, keep_inside). */
 ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
-/* Shadow rays: from isect_shadow_point(p, h), toward a target point, or
- * toward a distant light (the shadow rays' tmin, the offset over |dir|, and
- * tmax = HUGE_VAL). */
+/* Shadow rays: from h->point toward a target point, or toward a distant
+ * light (the shadow rays' tmin, the offset over |dir|, and tmax =
+ * HUGE_VAL). */
 ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
 ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
 

@@ -27,6 +27,7 @@ typedef struct surface {
     const rf_material *m;
     const rf_prim *prim;
     const hit *h;
+    const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
 } surface;
@@ -50,6 +51,7 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
     t->specular = s->features.specular;
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
+    t->terminator_offset = 1;
     t->lights = calloc((size_t)(s->light_count ? s->light_count : 1), sizeof *t->lights);
     if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count)) {
         tracer_free(t);
@@ -128,8 +130,8 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
-                                             : ray_spawn_hit_to(s->prim, s->h, pos);
+        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->shadow_from, l)
+                                             : ray_spawn_hit_to(s->prim, s->shadow_from, pos);
         real through = shadow_transmission(t, &r, st);
         if (through == 0)
             return;
@@ -365,9 +367,15 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
                  trace_stats *st)
 {
     surface s;
+    hit lifted;
     s.prim = &t->scene->prims[h->prim];
     s.m = &t->scene->materials[s.prim->material];
-    s.h = h;
+    s.h = s.shadow_from = h;
+    if (t->terminator_offset && t->shadows && isect_smooth(s.prim)) {
+        lifted = *h;
+        lifted.point = isect_shadow_point(s.prim, h);
+        s.shadow_from = &lifted;
+    }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
     direct_sum sum = direct_light(t, &s, key, st);

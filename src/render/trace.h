@@ -56,6 +56,10 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (rf_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int terminator_offset;    /* shadow rays of smooth triangles start at the
+                                 lifted point (isect_shadow_point): 1 by
+                                 default; 0 only to measure the seed's way
+                                 (spec/shading.md [SHADE-TERMINATOR-1]) */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
