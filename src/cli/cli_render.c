@@ -177,7 +177,21 @@ static int progress(void *ctx, int done, int total)
     return interrupted != 0;
 }
 
-static void print_stats(const render_stats *s, const img_write_stats *w)
+/* [MESH-SCALE-1] Load time, and the bytes of the mesh stores and of the
+ * BVH per mesh triangle (spec/numerics.md, "Meshes at scale"). */
+static void print_memory(const rf_scene *scene, const render_stats *s, double load_seconds)
+{
+    long triangles, mesh = scene_mesh_bytes(scene, &triangles);
+    fprintf(stderr, "  load: %.3f s; meshes: %ld triangles in %ld bytes", load_seconds, triangles, mesh);
+    if (triangles > 0)
+        fprintf(stderr, " (%.1f per triangle); bvh %ld bytes (%.1f per triangle)", (double)mesh / triangles,
+                s->bvh_bytes, (double)s->bvh_bytes / triangles);
+    else
+        fprintf(stderr, "; bvh %ld bytes", s->bvh_bytes);
+    fputc('\n', stderr);
+}
+
+static void print_stats(const rf_scene *scene, const render_stats *s, const img_write_stats *w, double load_seconds)
 {
     const trace_stats *t = &s->trace;
     long rays = t->camera_rays + t->shadow_rays + t->reflection_rays + t->refraction_rays + t->tir_rays;
@@ -190,6 +204,7 @@ static void print_stats(const render_stats *s, const img_write_stats *w)
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
+    print_memory(scene, s, load_seconds);
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
             s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, t->bvh.nodes_visited, t->bvh.prims_tested);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
@@ -197,7 +212,7 @@ static void print_stats(const render_stats *s, const img_write_stats *w)
             w->nonfinite, t->medium_overflow);
 }
 
-static int render_and_write(render_args *a, const rf_scene *scene)
+static int render_and_write(render_args *a, const rf_scene *scene, double load_seconds)
 {
     rf_image img = {0, 0, NULL};
     render_stats stats;
@@ -237,7 +252,7 @@ static int render_and_write(render_args *a, const rf_scene *scene)
         return wstatus == IMG_EUSAGE ? REFRAY_EXIT_USAGE : REFRAY_EXIT_IOERR;
     }
     if (a->stats)
-        print_stats(&stats, &written);
+        print_stats(scene, &stats, &written, load_seconds);
     return REFRAY_EXIT_OK;
 }
 
@@ -255,7 +270,9 @@ int cli_render(int argc, char **argv)
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
      * scene loads as well as while it renders. */
     signal(SIGINT, on_interrupt);
+    double start = render_clock();
     rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    double load_seconds = render_clock() - start;
     if (!scene)
         return interrupted ? REFRAY_EXIT_INTERRUPTED : status;
     if ((double)(a.render.width ? a.render.width : scene->image.width) *
@@ -263,7 +280,7 @@ int cli_render(int argc, char **argv)
         scene_free(scene);
         return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
     }
-    status = render_and_write(&a, scene);
+    status = render_and_write(&a, scene, load_seconds);
     scene_free(scene);
     signal(SIGINT, SIG_DFL);
     return status;

@@ -524,26 +524,46 @@ static int ascii_float(reader *r, src_span tok, double *out)
 
 static const char *const type_words[] = {"", "char", "uchar", "short", "ushort", "int", "uint", "float", "double"};
 
-static int read_ascii(reader *r, const element *e, long long index, const char *what, scalar t, value *v)
+/* What is being read, for messages only (so nothing is formatted unless
+ * something goes wrong): element e's instance index, property p, its list
+ * count when count is set. */
+typedef struct place {
+    const element *e;
+    long long index;
+    const property *p;
+    int count;
+} place;
+
+/* "property 'x'" or "property 'x' (its count)". */
+static void describe(const reader *r, const place *at, char *out, size_t size)
 {
+    shown q = show(r, at->p->name);
+    snprintf(out, size, "property '%s'%s", q.s, at->count ? " (its count)" : "");
+}
+
+static int read_ascii(reader *r, const place *at, scalar t, value *v)
+{
+    char what[80];
     src_span tok;
     int found = data_token(r, &tok);
     v->at = found ? tok.begin : r->len;
-    if (!found) {
-        data_error(r, e, index, span_of(r, r->len, r->len), "the file ends before %s", what);
-        return 0;
-    }
     v->integral = is_integer_type(t);
-    if (v->integral ? ascii_integer(r, tok, t, &v->i) : ascii_float(r, tok, &v->f)) {
+    if (found && (v->integral ? ascii_integer(r, tok, t, &v->i) : ascii_float(r, tok, &v->f))) {
         if (v->integral)
             v->f = (double)v->i;
         return 1;
     }
+    describe(r, at, what, sizeof what);
+    if (!found) {
+        data_error(r, at->e, at->index, span_of(r, r->len, r->len), "the file ends before %s", what);
+        return 0;
+    }
     shown q = show(r, tok);
     if (v->integral)
-        data_error(r, e, index, tok, "%s: '%s' is not a whole number in the range of %s", what, q.s, type_words[t]);
+        data_error(r, at->e, at->index, tok, "%s: '%s' is not a whole number in the range of %s", what, q.s,
+                   type_words[t]);
     else
-        data_error(r, e, index, tok, "%s: '%s' is not a finite number", what, q.s);
+        data_error(r, at->e, at->index, tok, "%s: '%s' is not a finite number", what, q.s);
     return 0;
 }
 
@@ -579,32 +599,28 @@ static void decode(scalar t, uint64_t u, value *v)
     }
 }
 
-static int read_binary(reader *r, const element *e, long long index, const char *what, scalar t, value *v)
+static int read_binary(reader *r, const place *at, scalar t, value *v)
 {
+    char what[80];
     int n = type_size[t];
+    v->at = r->pos;
     if (r->len - r->pos < (size_t)n) {
-        data_error(r, e, index, span_of(r, r->pos, r->pos), "the file ends in the middle of %s", what);
+        describe(r, at, what, sizeof what);
+        data_error(r, at->e, at->index, span_of(r, r->pos, r->pos), "the file ends in the middle of %s", what);
         return 0;
     }
     decode(t, binary_bits(r, (const unsigned char *)r->text + r->pos, n), v);
-    v->at = r->pos;
     r->pos += (size_t)n;
     if (v->integral || isfinite(v->f))
         return 1;
-    data_error(r, e, index, span_of(r, v->at, v->at), "%s is not finite", what);
+    describe(r, at, what, sizeof what);
+    data_error(r, at->e, at->index, span_of(r, v->at, v->at), "%s is not finite", what);
     return 0;
 }
 
-static int read_value(reader *r, const element *e, long long index, const char *what, scalar t, value *v)
+static int read_value(reader *r, const place *at, scalar t, value *v)
 {
-    return r->fmt == F_ASCII ? read_ascii(r, e, index, what, t, v) : read_binary(r, e, index, what, t, v);
-}
-
-/* "property 'x'" for messages. */
-static void describe(const reader *r, const property *p, const char *extra, char *out, size_t size)
-{
-    shown q = show(r, p->name);
-    snprintf(out, size, "property '%s'%s", q.s, extra);
+    return r->fmt == F_ASCII ? read_ascii(r, at, t, v) : read_binary(r, at, t, v);
 }
 
 /* A list's count: an integer from 0 to INT_MAX, whose items can fit in the
@@ -612,35 +628,34 @@ static void describe(const reader *r, const property *p, const char *extra, char
 static int read_list_count(reader *r, const element *e, long long index, const property *p, long long *count)
 {
     char what[80];
+    place at = {e, index, p, 1};
     value v;
-    describe(r, p, " (its count)", what, sizeof what);
-    if (!read_value(r, e, index, what, p->count_type, &v))
+    if (!read_value(r, &at, p->count_type, &v))
         return 0;
-    if (v.i < 0 || v.i > INT_MAX) {
-        data_error(r, e, index, span_of(r, v.at, r->pos), "%s is %lld", what, v.i);
-        return 0;
-    }
     /* A binary item takes its type's size, an ASCII one a digit and a blank
      * (the last one may lack its blank). */
     size_t room = r->fmt != F_ASCII ? (r->len - r->pos) / (size_t)type_size[p->type] : (r->len - r->pos + 1) / 2;
-    if ((unsigned long long)v.i > room) {
-        data_error(r, e, index, span_of(r, v.at, v.at), "%s is %lld, more items than the file holds", what, v.i);
-        return 0;
+    if (v.i >= 0 && v.i <= INT_MAX && (unsigned long long)v.i <= room) {
+        *count = v.i;
+        return 1;
     }
-    *count = v.i;
-    return 1;
+    describe(r, &at, what, sizeof what);
+    if (v.i < 0 || v.i > INT_MAX)
+        data_error(r, e, index, span_of(r, v.at, r->pos), "%s is %lld", what, v.i);
+    else
+        data_error(r, e, index, span_of(r, v.at, v.at), "%s is %lld, more items than the file holds", what, v.i);
+    return 0;
 }
 
 static int skip_property(reader *r, const element *e, long long index, const property *p)
 {
-    char what[80];
+    place at = {e, index, p, 0};
     value v;
     long long count = 1;
-    describe(r, p, "", what, sizeof what);
     if (p->count_type != S_NONE && !read_list_count(r, e, index, p, &count))
         return 0;
     for (long long k = 0; k < count; k++)
-        if (!read_value(r, e, index, what, p->type, &v))
+        if (!read_value(r, &at, p->type, &v))
             return 0;
     return 1;
 }
@@ -650,15 +665,14 @@ static int read_vertex(reader *r, const element *e, long long index)
     double c[R_NZ + 1] = {0};
     for (int i = 0; i < e->prop_count; i++) {
         const property *p = &e->props[i];
-        char what[80];
+        place at = {e, index, p, 0};
         value v;
         if (p->use == R_SKIP) {
             if (!skip_property(r, e, index, p))
                 return 0;
             continue;
         }
-        describe(r, p, "", what, sizeof what);
-        if (!read_value(r, e, index, what, p->type, &v))
+        if (!read_value(r, &at, p->type, &v))
             return 0;
         c[p->use] = v.f;
     }
@@ -685,8 +699,7 @@ static int reserve_corners(reader *r, long long n)
 /* The face's corner list: each index checked against the vertex count. */
 static int read_indices(reader *r, const element *e, long long index, const property *p, long long *n)
 {
-    char what[80];
-    describe(r, p, "", what, sizeof what);
+    place at = {e, index, p, 0};
     if (!read_list_count(r, e, index, p, n))
         return 0;
     if (!reserve_corners(r, *n)) {
@@ -695,7 +708,7 @@ static int read_indices(reader *r, const element *e, long long index, const prop
     }
     for (long long k = 0; k < *n; k++) {
         value v;
-        if (!read_value(r, e, index, what, p->type, &v))
+        if (!read_value(r, &at, p->type, &v))
             return 0;
         if (v.i < 0 || v.i >= r->mesh->position_count) {
             data_error(r, e, index, span_of(r, v.at, r->pos), "vertex index %lld is out of range (%d vertices)", v.i,

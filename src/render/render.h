@@ -23,6 +23,7 @@ typedef struct render_opts {
 typedef struct render_stats {
     trace_stats trace;
     int bvh_nodes, bvh_leaves, bvh_depth;
+    long bvh_bytes;      /* the tree's nodes, part references and plane list */
     int shadows, specular, reflection, refraction; /* passes that ran (1) or were left out (0) */
     int width, height, samples, max_depth;
     int overflow_x, overflow_y;  /* the pixel whose ray tree passed the budget */

@@ -47,3 +47,17 @@ void scene_free(rf_scene *s)
     free(s);
 }
 
+
+long scene_mesh_bytes(const rf_scene *s, long *triangles)
+{
+    long bytes = 0;
+    *triangles = 0;
+    for (int i = 0; i < s->mesh_count; i++) {
+        const rf_trimesh *g = &s->meshes[i].geom;
+        long t = g->tri_count;
+        *triangles += t;
+        bytes += (long)(g->position_count * sizeof *g->positions + g->normal_count * sizeof *g->normals);
+        bytes += t * (long)sizeof *g->tri + (g->tri_normal ? t * (long)sizeof *g->tri_normal : 0) + (g->open ? t : 0);
+    }
+    return bytes;
+}

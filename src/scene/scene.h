@@ -224,5 +224,9 @@ rf_scene *scene_load_text(const char *path, const char *text, size_t len,
 
 void scene_free(rf_scene *scene);
 
+/* The bytes the meshes' stores hold (positions, normals, corner and normal
+ * indices, open-edge masks), and their triangles in *triangles. */
+long scene_mesh_bytes(const rf_scene *s, long *triangles);
+
 
 #endif
