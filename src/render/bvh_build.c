@@ -156,14 +156,22 @@ static int bin_of(const binning *bn, int axis, real c)
     return k < bn->bins ? k : bn->bins - 1;
 }
 
+/* A node of more than ONE_AXIS parts is binned along the widest extent of
+ * its centroids only: for big nodes the best plane is nearly always across
+ * it, and one axis costs a third of three. */
+#define ONE_AXIS 4096
+
+static int widest_axis(vec3 lo, vec3 hi);
+
 static binning binning_of(const range *r, int n)
 {
     binning bn;
+    int only = n > ONE_AXIS ? widest_axis(r->clo, r->chi) : -1;
     bn.bins = n < BINS ? n : BINS;
     for (int a = 0; a < 3; a++) {
         real lo = vec_component(r->clo, a), extent = vec_component(r->chi, a) - lo, scale = bn.bins / extent;
         bn.lo[a] = lo;
-        bn.scale[a] = extent > 0.0 && isfinite(scale) ? scale : 0.0;
+        bn.scale[a] = extent > 0.0 && isfinite(scale) && (only < 0 || a == only) ? scale : 0.0;
     }
     return bn;
 }
