@@ -141,6 +141,22 @@ START_TEST(test_mesh_corpus_check_report)
 }
 END_TEST
 
+START_TEST(test_mesh_store_bytes)
+{
+    /* [MESH-SCALE-1] The cube: 8 positions and 6 normals of 3 doubles, 12
+     * triangles of 3 corner and 3 normal indices, closed (no open-edge
+     * bits): 8*24 + 6*24 + 12*12 + 12*12 = 624 bytes. */
+    int status;
+    static const char text[] = "mesh { file \"cube.obj\" }";
+    rf_scene *s = scene_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_ptr_nonnull(s);
+    long triangles;
+    ck_assert_int_eq(scene_mesh_bytes(s, &triangles), sizeof(real) == 8 ? 624 : 624 + 14 * 3 * (sizeof(real) - 8));
+    ck_assert_int_eq(triangles, 12);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_mesh_corpus_negative_indices_are_the_cube)
 {
     int status;
@@ -373,6 +389,7 @@ Suite *suite_mesh(void)
     tcase_add_test(tc, test_mesh_corpus_warnings);
     tcase_add_test(tc, test_mesh_corpus_check_report);
     tcase_add_test(tc, test_mesh_corpus_negative_indices_are_the_cube);
+    tcase_add_test(tc, test_mesh_store_bytes);
     tcase_add_test(tc, test_mesh_winding_does_not_matter);
     tcase_add_test(tc, test_mesh_open_glass_is_sheets);
     suite_add_tcase(s, tc);
