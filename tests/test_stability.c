@@ -700,20 +700,6 @@ typedef struct sweep {
     long wrong_crossings, naive_wrong_crossings; /* rays crossing the surface other than `crossings` times */
 } sweep;
 
-/* Corner positions of triangle k of a mesh. */
-static void mesh_triangle(const rf_trimesh *g, int k, vec3 p[3])
-{
-    for (int i = 0; i < 3; i++)
-        p[i] = g->positions[g->tri[k][i]];
-}
-
-static int count_crossing(void *ctx, const hit *h)
-{
-    (void)h;
-    ++*(int *)ctx;
-    return 0;
-}
-
 /* One ray through the scene's acceleration structure: a miss, and (when
  * crossings > 0) a number of surface crossings other than that.  With
  * count_naive, the same ray against every triangle of every mesh by

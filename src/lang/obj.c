@@ -20,21 +20,17 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lang/meshtext.h"
 #include "lang/obj.h"
 
 enum {
     NUMBER_MAX = 255,  /* longest number token accepted */
-    SHOWN_MAX = 40,    /* bytes of a token quoted in a message */
     WARNED_MAX = 8     /* distinct unknown statements warned about */
 };
 
 /* Indices saturate here while being read: far beyond any count (<= INT_MAX),
  * so a saturated index is out of range whatever the count. */
 #define INDEX_SATURATED (1LL << 40)
-
-typedef struct shown {
-    char s[SHOWN_MAX + 4];
-} shown;
 
 typedef struct parser {
     const char *text;
@@ -51,24 +47,6 @@ typedef struct parser {
     int stop;                    /* a limit was hit or memory ran out: give up */
 } parser;
 
-static int is_blank(char c)
-{
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
-}
-
-static int is_eol(char c)
-{
-    return c == '\n' || c == '\r';
-}
-
-/* Length of the line terminator at i: 2 for CRLF, 1 for LF or a lone CR, else 0. */
-static size_t eol_length(const parser *p, size_t i)
-{
-    if (i >= p->len || !is_eol(p->text[i]))
-        return 0;
-    return p->text[i] == '\r' && i + 1 < p->len && p->text[i + 1] == '\n' ? 2 : 1;
-}
-
 /* A continuation is a backslash followed by nothing but blanks up to a line
  * terminator (or the end of the text).  Returns the offset just past it, or 0
  * when i holds no continuation (0 cannot be past anything). */
@@ -77,11 +55,11 @@ static size_t continuation_end(const parser *p, size_t i)
     if (i >= p->len || p->text[i] != '\\')
         return 0;
     size_t j = i + 1;
-    while (j < p->len && is_blank(p->text[j]))
+    while (j < p->len && meshtext_blank(p->text[j]))
         j++;
     if (j == p->len)
         return j;
-    size_t n = eol_length(p, j);
+    size_t n = meshtext_eol_length(p->text, p->len, j);
     return n ? j + n : 0;
 }
 
@@ -90,7 +68,7 @@ static void skip_blank(parser *p)
 {
     for (;;) {
         size_t next;
-        if (p->pos < p->len && is_blank(p->text[p->pos]))
+        if (p->pos < p->len && meshtext_blank(p->text[p->pos]))
             p->pos++;
         else if ((next = continuation_end(p, p->pos)) != 0)
             p->pos = next;
@@ -102,13 +80,13 @@ static void skip_blank(parser *p)
 /* The end of a logical line: end of text, a line terminator, or a comment. */
 static int at_line_end(const parser *p)
 {
-    return p->pos >= p->len || is_eol(p->text[p->pos]) || p->text[p->pos] == '#';
+    return p->pos >= p->len || meshtext_eol(p->text[p->pos]) || p->text[p->pos] == '#';
 }
 
 static int is_token_byte(const parser *p, size_t i)
 {
     char c = p->text[i];
-    return !is_blank(c) && !is_eol(c) && c != '#' && !continuation_end(p, i);
+    return !meshtext_blank(c) && !meshtext_eol(c) && c != '#' && !continuation_end(p, i);
 }
 
 /* Reads the next token of the logical line into *tok; returns 0 at its end. */
@@ -131,34 +109,15 @@ static void skip_line(parser *p)
     src_span tok;
     while (next_token(p, &tok))
         continue;
-    while (p->pos < p->len && !is_eol(p->text[p->pos]))
+    while (p->pos < p->len && !meshtext_eol(p->text[p->pos]))
         p->pos++;
-    p->pos += eol_length(p, p->pos);
+    p->pos += meshtext_eol_length(p->text, p->len, p->pos);
 }
 
 static int token_is(const parser *p, src_span tok, const char *word)
 {
     size_t n = strlen(word);
     return tok.end - tok.begin == n && memcmp(p->text + tok.begin, word, n) == 0;
-}
-
-/* A token fit for quoting in a message: at most SHOWN_MAX bytes, control
- * bytes as '?', and "..." when cut.  Returned by value into a caller's
- * variable (a function result must not be read after the call in C99). */
-static shown show(const parser *p, src_span tok)
-{
-    shown out;
-    size_t n = tok.end - tok.begin, k = 0;
-    for (; k < n && k < SHOWN_MAX; k++) {
-        unsigned char c = (unsigned char)p->text[tok.begin + k];
-        out.s[k] = c < 0x20 || c == 0x7f ? '?' : (char)c;
-    }
-    if (k < n) {
-        memcpy(out.s + k, "...", 3);
-        k += 3;
-    }
-    out.s[k] = '\0';
-    return out;
 }
 
 static src_span span_at(const parser *p, size_t offset)
@@ -183,7 +142,7 @@ static int read_number(parser *p, src_span tok, double *out)
     size_t n = tok.end - tok.begin;
     const char *s = p->text + tok.begin;
     if (n > NUMBER_MAX) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is too long (more than %d characters)",
                     q.s, NUMBER_MAX);
         return 0;
@@ -196,12 +155,12 @@ static int read_number(parser *p, src_span tok, double *out)
     buf[n] = '\0';
     double v = i == n ? strtod(buf, &end) : 0.0;
     if (i < n || end != buf + n) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "malformed number '%s'", q.s);
         return 0;
     }
     if (!isfinite(v)) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is not finite", q.s);
         return 0;
     }
@@ -226,7 +185,7 @@ static int read_index(parser *p, src_span tok, long long *out)
             k = k * 10 + (c - '0');
     }
     if (k < 0) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "malformed index '%s'", q.s);
         return 0;
     }
@@ -248,7 +207,7 @@ static int resolve_index(parser *p, src_span tok, int count, const char *what, i
         *out = k > 0 ? (int)(k - 1) : (int)(count + k);
         return 1;
     }
-    shown q = show(p, tok);
+    meshtext_shown q = meshtext_show(p->text, tok);
     if (k == 0) {
         diag_report(p->d, DIAG_ERROR, tok,
                     "index 0 is invalid: OBJ indices start at 1 (or count back from -1)");
@@ -294,7 +253,7 @@ static int read_coords(parser *p, src_span kw, vec3 *v)
     for (int i = 0; i < 3; i++) {
         size_t last_end = tok.end;
         if (!next_token(p, &tok)) {
-            shown q = show(p, kw);
+            meshtext_shown q = meshtext_show(p->text, kw);
             diag_report(p->d, DIAG_ERROR, span_at(p, last_end), "'%s' needs 3 coordinates, got %d",
                         q.s, i);
             return 0;
@@ -329,7 +288,7 @@ static void parse_normal(parser *p, src_span kw)
     if (!read_coords(p, kw, &n))
         return;
     if (next_token(p, &tok)) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
@@ -368,7 +327,7 @@ static int parse_corner(parser *p, src_span tok, int *v, int *vn, int *has_norma
     int well_formed = n <= 3 && !is_empty(field[0]) && (n != 2 || !is_empty(field[1]))
                       && (n != 3 || !is_empty(field[2]));
     if (!well_formed) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok,
                     "malformed face vertex '%s' (expected i, i/t, i//n or i/t/n)", q.s);
         return 0;
@@ -392,7 +351,7 @@ static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
     if (n == 0)
         *first_has_normal = has_normal;
     if (has_normal != *first_has_normal) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok,
                     "face vertex '%s' %s a normal index but the face's first vertex %s", q.s,
                     has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
@@ -450,7 +409,7 @@ static void warn_unknown(parser *p, src_span kw)
     if (p->warned_count == WARNED_MAX)
         return;
     p->warned[p->warned_count++] = kw;
-    shown q = show(p, kw);
+    meshtext_shown q = meshtext_show(p->text, kw);
     diag_report(p->d, DIAG_WARNING, kw, "unknown OBJ statement '%s' ignored%s", q.s,
                 p->warned_count == WARNED_MAX ? " (further unknown statements are not reported)"
                                               : "");

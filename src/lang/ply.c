@@ -21,14 +21,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lang/meshtext.h"
 #include "lang/ply.h"
 
 enum {
     ELEMENTS_MAX = 256,   /* elements one header may declare */
     PROPERTIES_MAX = 1024,/* properties of one element */
     WORDS_MAX = 6,        /* tokens of one header line read (property list T T NAME is 5) */
-    NUMBER_MAX = 255,     /* longest number token accepted */
-    SHOWN_MAX = 40        /* bytes of a token quoted in a message */
+    NUMBER_MAX = 255      /* longest number token accepted */
 };
 
 typedef enum scalar {
@@ -72,10 +72,6 @@ typedef struct element {
 
 typedef enum format { F_NONE, F_ASCII, F_LITTLE, F_BIG } format;
 
-typedef struct shown {
-    char s[SHOWN_MAX + 4];
-} shown;
-
 typedef struct reader {
     const char *text;
     size_t len;
@@ -104,24 +100,6 @@ typedef struct value {
 
 /* ---- header: lines and tokens ------------------------------------------ */
 
-static int is_blank(char c)
-{
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
-}
-
-static int is_eol(char c)
-{
-    return c == '\n' || c == '\r';
-}
-
-/* Length of the line terminator at i: 2 for CRLF, 1 for LF or a lone CR, else 0. */
-static size_t eol_length(const reader *r, size_t i)
-{
-    if (i >= r->len || !is_eol(r->text[i]))
-        return 0;
-    return r->text[i] == '\r' && i + 1 < r->len && r->text[i + 1] == '\n' ? 2 : 1;
-}
-
 static src_span span_of(const reader *r, size_t begin, size_t end)
 {
     src_span s;
@@ -129,24 +107,6 @@ static src_span span_of(const reader *r, size_t begin, size_t end)
     s.begin = begin;
     s.end = end;
     return s;
-}
-
-/* A token fit for quoting: at most SHOWN_MAX bytes, control and non-ASCII
- * bytes as '?', "..." when cut. */
-static shown show(const reader *r, src_span tok)
-{
-    shown out;
-    size_t n = tok.end - tok.begin, k = 0;
-    for (; k < n && k < SHOWN_MAX; k++) {
-        unsigned char c = (unsigned char)r->text[tok.begin + k];
-        out.s[k] = c < 0x20 || c >= 0x7f ? '?' : (char)c;
-    }
-    if (k < n) {
-        memcpy(out.s + k, "...", 3);
-        k += 3;
-    }
-    out.s[k] = '\0';
-    return out;
 }
 
 static int token_is(const reader *r, src_span tok, const char *word)
@@ -163,24 +123,24 @@ static int header_line(reader *r, src_span w[WORDS_MAX], src_span *line)
 {
     int n = 0;
     *line = span_of(r, r->pos, r->pos);
-    while (r->pos < r->len && !is_eol(r->text[r->pos])) {
+    while (r->pos < r->len && !meshtext_eol(r->text[r->pos])) {
         if (r->text[r->pos] == '\0') {
             diag_report(r->d, DIAG_ERROR, span_of(r, r->pos, r->pos + 1), "NUL byte in the PLY header");
             return -1;
         }
-        if (is_blank(r->text[r->pos])) {
+        if (meshtext_blank(r->text[r->pos])) {
             r->pos++;
             continue;
         }
         size_t begin = r->pos;
-        while (r->pos < r->len && !is_eol(r->text[r->pos]) && !is_blank(r->text[r->pos]) && r->text[r->pos])
+        while (r->pos < r->len && !meshtext_eol(r->text[r->pos]) && !meshtext_blank(r->text[r->pos]) && r->text[r->pos])
             r->pos++;
         if (n < WORDS_MAX)
             w[n] = span_of(r, begin, r->pos);
         n += n < INT_MAX;
     }
     line->end = r->pos;
-    r->pos += eol_length(r, r->pos);
+    r->pos += meshtext_eol_length(r->text, r->len, r->pos);
     return n;
 }
 
@@ -199,7 +159,7 @@ static long long read_count(reader *r, src_span tok)
     }
     if (ok && k <= INT_MAX)
         return k;
-    shown q = show(r, tok);
+    meshtext_shown q = meshtext_show(r->text, tok);
     diag_report(r->d, DIAG_ERROR, tok, "element count '%s' is not a whole number from 0 to %d", q.s, INT_MAX);
     return -1;
 }
@@ -222,7 +182,7 @@ static scalar read_type(reader *r, src_span tok)
 {
     scalar t = type_of(r, tok);
     if (t == S_NONE) {
-        shown q = show(r, tok);
+        meshtext_shown q = meshtext_show(r->text, tok);
         diag_report(r->d, DIAG_ERROR, tok,
                     "unknown PLY type '%s' (expected char, uchar, short, ushort, int, uint, float or double)",
                     q.s);
@@ -243,7 +203,7 @@ static int header_format(reader *r, const src_span *w, int n, src_span line)
             r->fmt = (format)(F_ASCII + k);
             if (token_is(r, w[2], "1.0"))
                 return 1;
-            shown q = show(r, w[2]);
+            meshtext_shown q = meshtext_show(r->text, w[2]);
             diag_report(r->d, DIAG_ERROR, w[2], "unsupported PLY version '%s' (only 1.0 is known)", q.s);
             return 0;
         }
@@ -274,7 +234,7 @@ static int header_element(reader *r, const src_span *w, int n, src_span line)
     e->kind = token_is(r, w[1], "vertex") ? E_VERTEX : token_is(r, w[1], "face") ? E_FACE : E_OTHER;
     int *seen = e->kind == E_VERTEX ? &r->vertex_element : e->kind == E_FACE ? &r->face_element : NULL;
     if (seen && *seen >= 0) {
-        shown q = show(r, w[1]);
+        meshtext_shown q = meshtext_show(r->text, w[1]);
         diag_report(r->d, DIAG_ERROR, w[1], "a second element '%s'", q.s);
         return 0;
     }
@@ -309,7 +269,7 @@ static int add_property(reader *r, element *e, const property *p, src_span line)
     }
     for (int k = 0; k < e->prop_count && p->use != R_SKIP; k++)
         if (e->props[k].use == p->use) {
-            shown q = show(r, p->name);
+            meshtext_shown q = meshtext_show(r->text, p->name);
             diag_report(r->d, DIAG_ERROR, p->name, "a second property '%s'", q.s);
             return 0;
         }
@@ -380,7 +340,7 @@ static int header_statement(reader *r)
         return header_element(r, w, n, line);
     if (token_is(r, w[0], "property"))
         return header_property(r, w, n, line);
-    shown q = show(r, w[0]);
+    meshtext_shown q = meshtext_show(r->text, w[0]);
     diag_report(r->d, DIAG_ERROR, w[0], "unknown PLY header keyword '%s'", q.s);
     return 0;
 }
@@ -460,7 +420,7 @@ static void data_error(reader *r, const element *e, long long index, src_span to
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    shown name = show(r, e->name);
+    meshtext_shown name = meshtext_show(r->text, e->name);
     if (r->fmt == F_ASCII)
         diag_report(r->d, DIAG_ERROR, tok, "element '%s' %lld: %s", name.s, index, msg);
     else
@@ -471,12 +431,12 @@ static void data_error(reader *r, const element *e, long long index, src_span to
 /* The next whitespace-separated token of ASCII data; 0 at the end. */
 static int data_token(reader *r, src_span *tok)
 {
-    while (r->pos < r->len && (is_blank(r->text[r->pos]) || is_eol(r->text[r->pos])))
+    while (r->pos < r->len && (meshtext_blank(r->text[r->pos]) || meshtext_eol(r->text[r->pos])))
         r->pos++;
     if (r->pos >= r->len)
         return 0;
     size_t begin = r->pos;
-    while (r->pos < r->len && !is_blank(r->text[r->pos]) && !is_eol(r->text[r->pos]))
+    while (r->pos < r->len && !meshtext_blank(r->text[r->pos]) && !meshtext_eol(r->text[r->pos]))
         r->pos++;
     *tok = span_of(r, begin, r->pos);
     return 1;
@@ -537,7 +497,7 @@ typedef struct place {
 /* "property 'x'" or "property 'x' (its count)". */
 static void describe(const reader *r, const place *at, char *out, size_t size)
 {
-    shown q = show(r, at->p->name);
+    meshtext_shown q = meshtext_show(r->text, at->p->name);
     snprintf(out, size, "property '%s'%s", q.s, at->count ? " (its count)" : "");
 }
 
@@ -558,7 +518,7 @@ static int read_ascii(reader *r, const place *at, scalar t, value *v)
         data_error(r, at->e, at->index, span_of(r, r->len, r->len), "the file ends before %s", what);
         return 0;
     }
-    shown q = show(r, tok);
+    meshtext_shown q = meshtext_show(r->text, tok);
     if (v->integral)
         data_error(r, at->e, at->index, tok, "%s: '%s' is not a whole number in the range of %s", what, q.s,
                    type_words[t]);
@@ -768,14 +728,14 @@ static void parse_body(reader *r)
         return;
     src_span tok;
     if (data_token(r, &tok)) {
-        shown q = show(r, tok);
+        meshtext_shown q = meshtext_show(r->text, tok);
         diag_report(r->d, DIAG_WARNING, tok, "data after the last element ignored ('%s')", q.s);
     }
 }
 
 int ply_is_ply(const char *text, size_t len)
 {
-    return len >= 4 && memcmp(text, "ply", 3) == 0 && is_eol(text[3]);
+    return len >= 4 && memcmp(text, "ply", 3) == 0 && meshtext_eol(text[3]);
 }
 
 int ply_parse(const source_set *sources, int file, diag *d, long max_triangles, polymesh *out)

@@ -9,6 +9,7 @@
 #define REFRAY_NAIVE_H
 
 #include "render/ray.h"
+#include "scene/scene.h"
 
 /* Ray/sphere by the quadratic formula as printed in most textbooks:
  * a t^2 + b t + c = 0 with b = 2 f.d, c = f.f - R^2, disc = b^2 - 4ac,
@@ -97,6 +98,21 @@ static inline int naive_woop_inclusive(const vec3 p[3], const ray *r)
         return 0;
     real t = (e[0] / det * pz[0] + e[1] / det * pz[1] + e[2] / det * pz[2]) / dz;
     return t > r->tmin && t < r->tmax;
+}
+
+/* For the mesh sweeps of both users: the corner positions of triangle k of
+ * a mesh, and a bvh_visit callback that counts the crossings. */
+static inline void mesh_triangle(const rf_trimesh *g, int k, vec3 p[3])
+{
+    for (int i = 0; i < 3; i++)
+        p[i] = g->positions[g->tri[k][i]];
+}
+
+static inline int count_crossing(void *ctx, const hit *h)
+{
+    (void)h;
+    ++*(int *)ctx;
+    return 0;
 }
 
 /* A secondary ray pushed off the surface by a fixed distance eps along the

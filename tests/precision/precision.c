@@ -133,20 +133,6 @@ static void spawn_scene(const char *name, double eps, int count_leaks)
     scene_free(s);
 }
 
-/* Corner positions of triangle k of a mesh. */
-static void mesh_triangle(const rf_trimesh *g, int k, vec3 p[3])
-{
-    for (int i = 0; i < 3; i++)
-        p[i] = g->positions[g->tri[k][i]];
-}
-
-static int count_crossing(void *ctx, const hit *h)
-{
-    (void)h;
-    ++*(int *)ctx;
-    return 0;
-}
-
 /* Rays through every vertex and five points of every edge of the closed
  * icosphere, from its centre and from three places outside: misses by
  * Moller-Trumbore (brute force) and by the tracer, and rays whose number of
