@@ -702,8 +702,9 @@ typedef struct sweep {
 
 /* One ray through the scene's acceleration structure: a miss, and (when
  * crossings > 0) a number of surface crossings other than that.  With
- * count_naive, the same ray against every triangle of every mesh by
- * Moller-Trumbore and by the paper's inclusive Woop test too. */
+ * count_naive, the same ray against the triangles of every mesh by
+ * Moller-Trumbore and by the paper's inclusive Woop test too (until both
+ * have said what they have to). */
 static void sweep_ray(const tracer *t, const rf_scene *s, ray r, sweep *w, int count_naive, int crossings)
 {
     hit h;
@@ -717,7 +718,7 @@ static void sweep_ray(const tracer *t, const rf_scene *s, ray r, sweep *w, int c
         return;
     int any = 0, inclusive = 0;
     for (int m = 0; m < s->mesh_count; m++)
-        for (int k = 0; k < s->meshes[m].geom.tri_count; k++) {
+        for (int k = 0; k < s->meshes[m].geom.tri_count && (!any || inclusive <= crossings); k++) {
             vec3 p[3];
             real tt;
             mesh_triangle(&s->meshes[m].geom, k, p);
@@ -740,7 +741,8 @@ static ray ray_through(vec3 point, vec3 from)
 
 /* Rays through point: from the centre outward (one crossing), and from
  * three places outside, 3 units away in directions that lean off the
- * radial one (in at the point, out on the far side: two). */
+ * radial one (in at the point, out on the far side: two).  The naive
+ * methods (brute force) run on the first. */
 static void sweep_point(const tracer *t, const rf_scene *s, vec3 centre, vec3 point, sweep *w)
 {
     static const double lean[3][3] = {{0.31, -0.17, 0.05}, {-0.23, 0.11, 0.29}, {0.07, 0.37, -0.19}};
@@ -748,7 +750,7 @@ static void sweep_point(const tracer *t, const rf_scene *s, vec3 centre, vec3 po
     sweep_ray(t, s, ray_through(point, centre), w, 1, 1);
     for (int k = 0; k < 3; k++) {
         vec3 away = vec_normalize(vec_add(out, vec_make(lean[k][0], lean[k][1], lean[k][2])));
-        sweep_ray(t, s, ray_through(point, vec_madd(point, away, 3)), w, 1, 2);
+        sweep_ray(t, s, ray_through(point, vec_madd(point, away, 3)), w, 0, 2);
     }
 }
 
