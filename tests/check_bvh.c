@@ -477,7 +477,7 @@ START_TEST(test_bvh_deterministic_and_well_formed)
         seen[a.items[i].prim]++;
     }
     for (int i = 0; i < a.unbounded_count; i++)
-        seen[a.unbounded[i]]++;
+        seen[a.unbounded[i].prim]++;
     for (int i = 0; i < n + 2; i++)
         ck_assert_int_eq(seen[i], 1);
     /* Leaves cover the items exactly; inner boxes hold their children;

@@ -152,14 +152,6 @@ static void nearest_test(nearest *ns, const rf_prim *prims, bvh_ref ref)
     nearest_add(ns, &h);
 }
 
-/* Every part of an unbounded primitive. */
-static void nearest_test_all(nearest *ns, const rf_prim *prims, int index)
-{
-    bvh_ref ref = {index, 0};
-    for (int parts = isect_part_count(&prims[index]); ref.part < parts; ref.part++)
-        nearest_test(ns, prims, ref);
-}
-
 /* The lowest-index candidate: the nearest hit (see above). */
 static const hit *nearest_winner(const nearest *ns)
 {
@@ -228,7 +220,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
 static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
 {
     for (int i = 0; i < b->unbounded_count; i++)
-        nearest_test_all(ns, prims, b->unbounded[i]);
+        nearest_test(ns, prims, b->unbounded[i]);
     if (b->node_count > 0)
         traverse_nearest(b, prims, ns);
 }
@@ -311,12 +303,9 @@ int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        bvh_ref ref = {b->unbounded[i], 0};
-        for (int parts = isect_part_count(&prims[ref.prim]); ref.part < parts; ref.part++) {
-            int stop = visit_part(prims, ref, r, fn, ctx, stats);
-            if (stop)
-                return stop;
-        }
+        int stop = visit_part(prims, b->unbounded[i], r, fn, ctx, stats);
+        if (stop)
+            return stop;
     }
     return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
 }

@@ -48,7 +48,7 @@ typedef struct bvh {
     int depth;         /* longest root-to-leaf path, in nodes */
     bvh_ref *items;    /* the parts, each leaf's a contiguous run */
     int item_count;
-    int *unbounded;    /* planes etc.: tested linearly on every ray */
+    bvh_ref *unbounded; /* parts of planes etc.: tested linearly on every ray */
     int unbounded_count;
 } bvh;
 

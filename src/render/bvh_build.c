@@ -422,9 +422,9 @@ static void *alloc_array(size_t count, size_t size)
     return malloc((count > 0 ? count : 1) * size);
 }
 
-/* Sorts parts into build items (bounded) and primitives into b->unbounded
- * (a part without finite bounds puts its primitive there once: all of it
- * is then tested on every ray). */
+/* Sorts parts into build items (bounded) and b->unbounded (a part without
+ * finite bounds puts all its primitive's parts there: all of it is then
+ * tested on every ray). */
 static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
 {
     int bounded = 0;
@@ -432,9 +432,12 @@ static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
         int parts = isect_part_count(&prims[i]), kept = bounded;
         for (int k = 0; k < parts; k++)
             bounded += item_of(&prims[i], i, k, &items[bounded]);
-        if (bounded - kept < parts) {
-            bounded = kept;
-            b->unbounded[b->unbounded_count++] = i;
+        if (bounded - kept == parts)
+            continue;
+        bounded = kept;
+        for (int k = 0; k < parts; k++) {
+            bvh_ref ref = {i, k};
+            b->unbounded[b->unbounded_count++] = ref;
         }
     }
     return bounded;
@@ -487,7 +490,7 @@ int bvh_build(bvh *b, const rf_prim *prims, int count)
     ctx->b = b;
     ctx->prims = prims;
     ctx->items = alloc_array((size_t)parts, sizeof *ctx->items);
-    b->unbounded = alloc_array((size_t)count, sizeof *b->unbounded);
+    b->unbounded = alloc_array((size_t)parts, sizeof *b->unbounded);
     if (ctx->items && b->unbounded) {
         ctx->count = classify(b, prims, count, ctx->items);
         ok = ctx->count == 0 || build_tree(ctx);

@@ -469,8 +469,8 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
         return box_hits(p->u.box.lo, p->u.box.hi, r, out, max);
-    case PRIM_MESH:
-        return mesh_hits(&p->u.mesh, r, out, max);
+    case PRIM_MESH: /* prim_hits: a mesh has no local frame */
+        break;
     }
     return 0;
 }
@@ -484,6 +484,8 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
  */
 static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
 {
+    if (p->kind == PRIM_MESH)
+        return mesh_hits(&p->u.mesh, r, out, max);
     if (!p->has_xform)
         return local_hits(p, r, out, max);
     ray local = *r;
@@ -520,6 +522,8 @@ static int part_hits(const rf_prim *p, int part, const ray *r, hit *out, int max
 {
     if (p->kind == PRIM_MESH)
         return mesh_triangle_hits(&p->u.mesh, part, r, out);
+    if (!p->has_xform)
+        return local_hits(p, r, out, max);
     return prim_hits(p, r, out, max);
 }
 

@@ -46,7 +46,7 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->bvh_leaves = t->accel.leaf_count;
     stats->bvh_depth = t->accel.depth;
     stats->bvh_bytes = (long)(t->accel.node_count * sizeof(bvh_node) + t->accel.item_count * sizeof(bvh_ref) +
-                              t->accel.unbounded_count * sizeof(int));
+                              t->accel.unbounded_count * sizeof(bvh_ref));
     stats->shadows = t->shadows;
     stats->specular = t->specular;
     stats->reflection = t->reflection;
