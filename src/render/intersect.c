@@ -307,13 +307,11 @@ typedef struct tri_bary {
     real t, b[3];
 } tri_bary;
 
-/* The exact sign of a b - c d (-1, 0, 1); *value = fl(fl(a b) - fl(c d)). */
-static int product_difference_sign(real a, real b, real c, real d, real *value)
+/* The exact sign of a b - c d when fl(a b) == fl(c d) (so the rounded
+ * difference is 0): the sign of the remainders' difference. */
+static int remainder_sign(real a, real b, real c, real d)
 {
     real p = a * b, q = c * d;
-    *value = p - q;
-    if (p != q)
-        return p > q ? 1 : -1;
     real rp = fma(a, b, -p), rq = fma(c, d, -q);
     return (rp > rq) - (rp < rq);
 }
@@ -327,8 +325,6 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
-/* inclusive: bit i set when the edge opposite corner i (from corner i + 1
- * to corner i + 2) counts an exact 0 as inside. */
 static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary *out)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
@@ -348,11 +344,19 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
         px[i] = vec_component(a, kx) - sx * pz[i];
         py[i] = vec_component(a, ky) - sy * pz[i];
     }
-    real e[3];
-    int inside = 0, outside = 0;
-    for (int i = 0; i < 3; i++) {
+    /* e[i] = e(P, Q) for P, Q the corners after i: written out, the
+     * hottest lines of the tracer. */
+    real e[3] = {px[2] * py[1] - py[2] * px[1], px[0] * py[2] - py[0] * px[2], px[1] * py[0] - py[1] * px[0]};
+    int inside = e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0, outside = e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0;
+    /* A nonzero rounded edge function has its exact sign: only zeros need
+     * the remainders and the tie rule. */
+    if (inside && outside)
+        return 0;
+    for (int i = 0; i < 3 && (e[0] == 0.0 || e[1] == 0.0 || e[2] == 0.0); i++) {
         int p = (i + 1) % 3, q = (i + 2) % 3;
-        int sign = product_difference_sign(px[q], py[p], py[q], px[p], &e[i]);
+        if (e[i] != 0.0)
+            continue;
+        int sign = remainder_sign(px[q], py[p], py[q], px[p]);
         if (sign == 0 && !(inclusive >> i & 1))
             sign = tie_sign(px[p], py[p], px[q], py[q]);
         inside |= sign > 0;
