@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
+#include "base/diag.h"
+#include "base/source.h"
 #include "lang/polygon.h"
 #include "render/render.h"
 #include "scene/mesh_topo.h"
@@ -237,6 +239,47 @@ START_TEST(test_mesh_open_glass_is_sheets)
 }
 END_TEST
 
+/* ---- the file text of a mesh ------------------------------------------------ */
+
+START_TEST(test_mesh_file_text_adopted_and_released)
+{
+    /* A mesh file's text is taken over without a copy and has no line
+     * index: a message finds its line by scanning (LF, CRLF and lone CR
+     * all end a line).  Once released, a message pointing into it names
+     * the file without a line. */
+    static const char body[] = "v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3\n";
+    source_set set;
+    source_set_init(&set);
+    char *text = malloc(sizeof body);
+    ck_assert_ptr_nonnull(text);
+    memcpy(text, body, sizeof body);
+    int file = source_set_adopt(&set, "m.obj", text, sizeof body - 1, src_span_none());
+    ck_assert_int_eq(file, 0);
+    ck_assert_ptr_eq(set.files[0]->text, text);
+    ck_assert_ptr_null(set.files[0]->line_start);
+    int line, col;
+    source_line_col(set.files[0], (size_t)(strstr(body, "f 1") - body) + 2, &line, &col);
+    ck_assert_int_eq(line, 4);
+    ck_assert_int_eq(col, 3);
+    size_t len;
+    const char *at = source_line_text(set.files[0], 10, &len);
+    ck_assert_uint_eq(len, 7);
+    ck_assert(strncmp(at, "v 1 0 0", 7) == 0);
+    char *log = NULL;
+    size_t log_size = 0;
+    FILE *out = open_memstream(&log, &log_size);
+    diag d;
+    diag_init(&d, &set, out);
+    source_set_release(&set, file);
+    src_span s = {file, 9, 10};
+    diag_report(&d, DIAG_WARNING, s, "after the release");
+    fclose(out);
+    ck_assert_str_eq(log, "m.obj: warning: after the release\n");
+    free(log);
+    source_set_free(&set);
+}
+END_TEST
+
 /* ---- polygons -------------------------------------------------------------- */
 
 /* Twice the signed area of the cut triangles about +z (corners at z = 0). */
@@ -390,6 +433,7 @@ Suite *suite_mesh(void)
     tcase_add_test(tc, test_mesh_corpus_check_report);
     tcase_add_test(tc, test_mesh_corpus_negative_indices_are_the_cube);
     tcase_add_test(tc, test_mesh_store_bytes);
+    tcase_add_test(tc, test_mesh_file_text_adopted_and_released);
     tcase_add_test(tc, test_mesh_winding_does_not_matter);
     tcase_add_test(tc, test_mesh_open_glass_is_sheets);
     suite_add_tcase(s, tc);
