@@ -443,25 +443,44 @@ static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
     return bounded;
 }
 
+/* The references of the built items, in their final order, written over
+ * the front of the items' own array (reference i goes where item i/7
+ * was, already read) and the array shrunk to them: no second array at the
+ * build's peak. */
+static void keep_references(build_ctx *ctx)
+{
+    bvh *b = ctx->b;
+    bvh_ref *refs = (bvh_ref *)(void *)ctx->items;
+    for (int i = 0; i < ctx->count; i++) {
+        bvh_ref r = ctx->items[i].ref;
+        refs[i] = r;
+    }
+    bvh_ref *fit = realloc(refs, (size_t)(ctx->count > 0 ? ctx->count : 1) * sizeof *fit);
+    b->items = fit ? fit : refs;
+    b->item_count = ctx->count;
+    ctx->items = NULL;
+}
+
 /* The tree over ctx->items[0..count-1]; 0 when out of memory.  The node
- * array starts at one node per part (leaves hold about three) and shrinks
- * to fit at the end. */
+ * array starts at one node per part (leaves hold about three; untouched
+ * pages cost nothing) and shrinks to fit at the end. */
 static int build_tree(build_ctx *ctx)
 {
     bvh *b = ctx->b;
     ctx->node_cap = ctx->count + 1;
     b->nodes = alloc_array((size_t)ctx->node_cap, sizeof *b->nodes);
-    b->items = alloc_array((size_t)ctx->count, sizeof *b->items);
-    if (!b->nodes || !b->items)
+    if (!b->nodes)
         return 0;
     b->node_count = 1;
     range all = range_of(ctx, 0, ctx->count);
     build_node(ctx, 0, 0, ctx->count, 1, &all);
     if (ctx->failed)
         return 0;
-    for (int i = 0; i < ctx->count; i++)
-        b->items[i] = ctx->items[i].ref;
-    b->item_count = ctx->count;
+    free(ctx->spare);
+    free(ctx->keys);
+    ctx->spare = NULL;
+    ctx->keys = NULL;
+    keep_references(ctx);
     bvh_node *fit = realloc(b->nodes, (size_t)b->node_count * sizeof *fit);
     if (fit)
         b->nodes = fit;
