@@ -32,7 +32,9 @@
  *     signs and one tie rule: a ray through a shared edge or vertex of a
  *     mesh hits exactly one of the triangles there where the surface does
  *     not fold back around the ray, and an even number (0 or 2) where it
- *     does (a silhouette): a closed mesh is crossed once per surface.
+ *     does (a silhouette): a closed mesh is crossed once per surface; an
+ *     edge of one triangle only (a lone triangle, an open mesh's rim) is
+ *     part of it, so a ray through it hits (tests/check_watertight.c).
  * Numeric domain: hit/miss decisions multiply two coordinates together, so
  * they are exact in sign only while such products stay normal doubles: keep
  * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
