@@ -284,6 +284,31 @@ START_TEST(test_pov_export_write_triangle)
 }
 END_TEST
 
+/* [XCHK-MAP-MESH-1] A mesh is a mesh2 of its shared vertices (z negated),
+ * its normals plus one face normal per flat triangle, faces and then, as
+ * POV-Ray's grammar wants them, normal indices; an inside_vector only when
+ * closed.  messy-vtvn.obj: 8 vertices, 6 normals, 12 triangles of which 6
+ * are flat (its faces 1, 2 and 5 give no normals), so 12 normal vectors,
+ * the first flat triangle's index 6 at all three corners. */
+START_TEST(test_pov_export_write_mesh)
+{
+    pov_notes n;
+    char *sdl = export_default("mesh { file \"tests/obj/messy-vtvn.obj\" }\n", &n);
+    ck_assert_has(sdl, "mesh2 {\n  vertex_vectors { 8,\n    <-1, -1, 1>,");
+    ck_assert_has(sdl, "normal_vectors { 12,");
+    ck_assert_has(sdl, "normal_indices { 12,\n    <6, 6, 6>,");
+    const char *faces = strstr(sdl, "face_indices { 12"), *normals = strstr(sdl, "normal_indices");
+    const char *inside = strstr(sdl, "inside_vector");
+    ck_assert(faces && normals && inside && faces < normals && normals < inside);
+    free(sdl);
+    sdl = export_default("mesh { file \"tests/obj/messy-open.obj\" }\n", &n);
+    ck_assert_has(sdl, "face_indices { 10,");
+    ck_assert_ptr_null(strstr(sdl, "inside_vector"));
+    ck_assert_ptr_null(strstr(sdl, "normal_vectors"));
+    free(sdl);
+}
+END_TEST
+
 /* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
  * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
  * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
@@ -589,6 +614,7 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_scale);
     tcase_add_test(sdl, test_pov_export_write_matrix);
     tcase_add_test(sdl, test_pov_export_write_triangle);
+    tcase_add_test(sdl, test_pov_export_write_mesh);
     tcase_add_test(sdl, test_pov_export_check_notes);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);

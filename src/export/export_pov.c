@@ -707,7 +707,8 @@ static void put_list_item(FILE *fp, vec3 v)
 }
 
 /* normal_vectors: the mesh's normals, then one geometric normal for each
- * flat triangle of a smooth mesh; normal_indices: which each corner uses. */
+ * flat triangle of a smooth mesh (normal_indices, after the faces as
+ * POV-Ray wants, says which each corner uses). */
 static void write_mesh_normals(FILE *fp, const rf_trimesh *g)
 {
     int flat = 0;
@@ -722,7 +723,12 @@ static void write_mesh_normals(FILE *fp, const rf_trimesh *g)
             put_list_item(fp, vec_normalize(vec_cross(vec_sub(g->positions[c[1]], g->positions[c[0]]),
                                                       vec_sub(g->positions[c[2]], g->positions[c[0]]))));
     }
-    fprintf(fp, " }\n  normal_indices { %d", g->tri_count);
+    fputs(" }\n", fp);
+}
+
+static void write_normal_indices(FILE *fp, const rf_trimesh *g)
+{
+    fprintf(fp, "  normal_indices { %d", g->tri_count);
     for (int i = 0, flat_index = g->normal_count; i < g->tri_count; i++) {
         int n[3] = {g->tri_normal[i][0], g->tri_normal[i][1], g->tri_normal[i][2]};
         if (n[0] < 0)
@@ -749,6 +755,8 @@ static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_
     for (int i = 0; i < g->tri_count; i++)
         fprintf(fp, ",\n    <%d, %d, %d>", g->tri[i][0], g->tri[i][1], g->tri[i][2]);
     fputs(" }\n", fp);
+    if (is_smooth(g))
+        write_normal_indices(fp, g);
     if (g->closed)
         fputs("  inside_vector <0, 0, 1>\n", fp);
     write_material_ref(fp, s, o, p, nudged);
