@@ -1,6 +1,7 @@
-# refray - a plain GNU Makefile.  `make` builds build/refray and
-# build/librefray.a; `make check` installs missing packages, builds and runs
-# every test; `make demo` installs, builds and renders scenes/demo.scene.
+# refray - a plain GNU Makefile.  `make` builds build/refray and the
+# library a host links (build/lib: librefray.a, librefray.so, refray.pc);
+# `make check` installs missing packages, builds and runs every test;
+# `make demo` installs, builds and renders scenes/demo.scene.
 #
 # Knobs (command line or config.mk):
 #   PNG=0 EXR=0     build without libpng / OpenEXR (PFM and PPM output only)
@@ -9,6 +10,9 @@
 #   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
 #                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
 #                   for `refray stability`, spec/numerics.md)
+#   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
+#                   make deps installs); implies EXR=0 (see below)
+#   CC=clang        clang instead of gcc (make deps installs it)
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
@@ -21,17 +25,33 @@ EXR       ?= 1
 JSON      ?= 1
 SANITIZE  ?= 0
 LONG_DOUBLE ?= 0
+M32       ?= 0
 VALGRIND  ?= 0
 V         ?= 0
 
+# The 32-bit build.  Debian's i386 OpenEXR development package cannot be
+# installed next to the amd64 one (installing it removes the other), so a
+# 32-bit build goes without EXR; libpng, jansson and Check have i386
+# packages that coexist.  pkg-config then reads the i386 modules only.
+ifeq ($(M32),1)
+override EXR := 0
+export PKG_CONFIG_LIBDIR := /usr/lib/i386-linux-gnu/pkgconfig:/usr/share/pkgconfig
+endif
+
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
+VARIANT := $(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
+# Doubles in SSE2 registers, not in the x87's 80-bit ones, so that double
+# arithmetic rounds as it does on x86-64 (the tests compare bits).
+ifeq ($(M32),1)
+override CFLAGS += -m32 -msse2 -mfpmath=sse
+override LDFLAGS += -m32
+endif
 WARN    := -std=c99 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
            -Wmissing-prototypes -Wwrite-strings -Werror
 # flex and bison output is not ours: it gets C99 without -pedantic/-Werror
@@ -73,7 +93,12 @@ JSON_LIBS   = $(shell pkg-config --libs jansson)
 endif
 CHECK_CFLAGS = $(shell pkg-config --cflags check)
 # The tests compute some references in __float128 (libquadmath, part of gcc).
+# clang has the type but not gcc's quadmath.h: it is found after clang's
+# own headers in gcc's.
 CHECK_LIBS   = $(shell pkg-config --libs check) -lquadmath
+ifneq ($(findstring clang,$(CC)),)
+CHECK_CFLAGS += -idirafter $(shell gcc -print-file-name=include)
+endif
 
 ifeq ($(V),1)
 Q :=
@@ -93,20 +118,50 @@ DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
 TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
 
 REFRAY   := $(BUILD)/refray
-LIBRARY  := $(BUILD)/librefray.a
+# The program and the tests link the internal archive (every symbol); a
+# host links the public library, which exports rf_ symbols only.
+LIBRARY  := $(BUILD)/librefray-internal.a
 TESTBIN  := $(BUILD)/check_refray
+
+# The public library (see its rules below).
+RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' include/refray.h)
+RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
+LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
+PUBLIC_LAYERS := base image lang scene render io api
+# The io layer's process runner and file writer serve `refray kit` and
+# `refray conform` only: a host's library neither starts processes nor
+# removes directories.
+PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o
+PUBLIC_OBJS := $(filter-out $(PUBLIC_OMIT),$(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS)))                  $(BUILD)/obj/gen/%,$(LIB_OBJS)))
+PUBLIC_A    := $(BUILD)/lib/librefray.a
+PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
+PUBLIC_LIBS := $(PUBLIC_A) $(PUBLIC_SO)
+$(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
+
+# Objects depend on the flags they are compiled with: a build directory
+# made with other flags (say, before the library's -fPIC) is rebuilt.
+FLAGS_STAMP := $(BUILD)/obj/flags
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
+# The public library needs no jansson (only the kit's manifests use it).
+PUBLIC_LINK_LIBS = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
-        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev)
+        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev) \
+        $(if $(findstring clang,$(CC)),clang)
+ifeq ($(M32),1)
+DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
+endif
 
-.PHONY: all deps check test demo bench precision terminator refray-ld report crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed memory arena-min demo bench precision terminator refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
-all: $(REFRAY) $(LIBRARY)
+all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
 
 # Installs only what is missing; as root with apt-get, otherwise with sudo.
 deps:
+	$(Q)if [ "$(M32)" = 1 ] && ! dpkg --print-foreign-architectures | grep -qx i386; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; $$SUDO dpkg --add-architecture i386; fi
 	$(Q)missing=""; for p in $(DEBS); do \
 	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' \
 	    || missing="$$missing $$p"; done; \
@@ -148,6 +203,23 @@ report: deps
 	$(Q)$(MAKE) --no-print-directory $(REFRAY)
 	$(Q)sh tests/report.sh $(REFRAY) $(REPORT_DIR) scenes/analytic/*.scene
 
+# Figures, not tests (spec/embedding.md): the bytes the library allocates
+# per sphere, mesh triangle and light sample, and for MEMORY_SCENES, counted
+# through the allocator hook; and the smallest fixed arena that renders
+# ARENA_SCENE (tests/embed/render_string.c's arena, found by bisection).
+MEMORY := $(BUILD)/memory
+MEMORY_SCENES ?= scenes/demo.scene scenes/bench/grid100k.scene
+ARENA_SCENE ?= scenes/demo.scene
+memory: $(MEMORY)
+	$(MEMORY) $(MEMORY_SCENES)
+
+$(MEMORY): $(BUILD)/obj/tests/bench/memory.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
+arena-min: embed
+	$(Q)sh tests/bench/arena_min.sh $(BUILD)/embed/render_string-static $(ARENA_SCENE)
+
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
@@ -183,21 +255,35 @@ $(REFRAY_LD): FORCE
 	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
 	$(Q)cp $(BUILD)/ld/refray $@
 
-# POV-Ray checked by refray's oracle (spec/crosscheck.md): installs povray
-# when missing, exports, renders and measures every analytic scene, and
-# prints the table (also in $(BUILD)/crosscheck/table.md).
-# CROSSCHECK_UPDATE=1 writes the table into spec/crosscheck.md.
-POVCHECK := $(BUILD)/povcheck
-CROSSCHECK_SCENES ?= $(sort $(wildcard scenes/analytic/*.scene))
-CROSSCHECK_UPDATE ?= 0
+# The conformance kit (spec/conformance.md): every analytic scene with its
+# exact image, mask, .scene and .pov (and .json), one manifest.json and a
+# README.md, in build/kit/ and as build/refray-kit-VERSION.tar.gz (its top
+# directory refray-kit-VERSION/; the archive is the same bytes for the same
+# kit).  KIT_SCENES=... for fewer scenes.
+KIT_DIR     := build/kit
+KIT_TARBALL  = build/refray-kit-$(RF_VERSION).tar.gz
+KIT_SCENES  ?= $(sort $(wildcard scenes/analytic/*.scene))
 
-crosscheck: $(REFRAY) $(POVCHECK)
-	$(Q)REFRAY=$(REFRAY) POVCHECK=$(POVCHECK) OUT=$(BUILD)/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
-	  sh tests/crosscheck.sh $(CROSSCHECK_SCENES)
+kit: $(REFRAY)
+	$(Q)$(REFRAY) kit -q -o $(KIT_DIR) $(KIT_SCENES)
+	$(Q)cp tests/conform/kit_check.c $(KIT_DIR)/kit_check.c
+	$(Q)tar -C $(dir $(KIT_DIR)) --sort=name --mtime=@0 --owner=0 --group=0 --numeric-owner \
+	  --transform 's,^kit,refray-kit-$(RF_VERSION),' -cf - kit | gzip -n -9 > $(KIT_TARBALL).tmp && \
+	  mv $(KIT_TARBALL).tmp $(KIT_TARBALL)
+	@echo "kit: $(KIT_DIR)/ and $(KIT_TARBALL)"
 
-$(POVCHECK): $(BUILD)/obj/tests/crosscheck/povcheck.o $(LIBRARY)
-	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+# Other renderers measured by the oracle through the kit (spec/crosscheck.md,
+# tests/crosscheck.sh): installs POV-Ray (Debian povray) when missing, builds
+# the kit, runs `refray conform` with each renderer's command line, prints
+# the tables and writes them into spec/crosscheck.md (CROSSCHECK_UPDATE=0:
+# print only); every file of the run is kept in build/crosscheck/.
+# CROSSCHECK_ONLY="NAME ..." runs only those scenes.
+CROSSCHECK_UPDATE ?= 1
+CROSSCHECK_ONLY ?=
+
+crosscheck: kit
+	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
+	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
 
 # Fuzzing with libFuzzer (clang, Debian clang + libclang-rt-14-dev): the
 # front end (fuzz_scene), the OBJ reader (fuzz_obj) and the PLY reader
@@ -245,19 +331,86 @@ $(BUILD)/%.dict: tests/fuzz/%.dict
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
                 --trace-children=yes)
-TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,1))
+# The 32-bit build runs the heaviest cases about 2.5 times slower.
+TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$(if $(filter 1,$(M32)),4,1)))
 
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD)
-	$(Q)REFRAY_BIN=$(REFRAY) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+# The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
+# needs no library, built here only to be tested against `refray compare`.
+KIT_CHECK := $(BUILD)/kit_check
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
+	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
+	$(Q)$(MAKE) --no-print-directory embed
+
+# The library as a host sees it: installed into $(STAGE), the two examples
+# of tests/embed built with pkg-config against it and run, and the symbols
+# of the installed libraries and of the core's objects checked.
+STAGE        := $(BUILD)/stage
+STAGE_PREFIX := $(abspath $(STAGE))$(PREFIX)
+EMBED_FLAGS  := $(filter -m32 -fsanitize=%,$(CFLAGS) $(LDFLAGS))
+CORE_OBJS    := $(filter $(BUILD)/obj/src/base/% $(BUILD)/obj/src/lang/% $(BUILD)/obj/src/scene/% \
+                  $(BUILD)/obj/src/render/% $(BUILD)/obj/gen/%,$(LIB_OBJS))
+embed: all
+	$(Q)rm -rf $(STAGE) && $(MAKE) --no-print-directory install DESTDIR=$(abspath $(STAGE)) >/dev/null
+	$(Q)CC="$(CC)" EXTRA="$(EMBED_FLAGS)" PKG_CONFIG_PATH="$(STAGE_PREFIX)/lib/pkgconfig$(if $(PKG_CONFIG_PATH),:$(PKG_CONFIG_PATH))" \
+	  LIBDIR=$(STAGE_PREFIX)/lib OUT=$(BUILD)/embed IMAGE_EXT=$(if $(filter 1,$(PNG)),png,pfm) sh tests/embed/run.sh
+	$(Q)CC="$(CC) $(EMBED_FLAGS)" DATA_CHECK=$(if $(filter 1,$(SANITIZE)),0,1) sh tests/check_symbols.sh $(STAGE_PREFIX)/lib $(RF_ABI) $(CORE_OBJS)
+
+$(KIT_CHECK): tests/conform/kit_check.c
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
 
+$(FLAGS_STAMP): FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
+$(LIB_OBJS) $(DRIVER_OBJS) $(TEST_OBJS): $(FLAGS_STAMP)
+
 $(LIBRARY): $(LIB_OBJS)
 	@echo "  AR      $@"
 	$(Q)rm -f $@ && ar rcs $@ $^
+
+# The public library.  Library objects are compiled position-independent
+# with every symbol hidden but those marked RF_API (include/refray.h).  The
+# shared library exports those alone (and says so again in its version
+# script); the static one is the public layers' objects linked into one
+# relocatable object whose hidden symbols are then made local, so that it
+# too defines no global symbol but rf_ ones (tests/check_symbols.sh).  The
+# exception: i386 code finds its own address through the compiler's
+# __x86.get_pc_thunk.* functions, hidden and in COMDAT groups that every
+# object of a program shares; made local, the linker would discard them.
+
+$(PUBLIC_A): $(PUBLIC_OBJS)
+	@mkdir -p $(dir $@)
+	@echo "  AR      $@"
+	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -r -nostdlib -o $(BUILD)/lib/refray.o $^
+	$(Q)objcopy --localize-hidden $(BUILD)/lib/refray.o
+	$(Q)objcopy $$(nm $(BUILD)/lib/refray.o | awk '$$3 ~ /^__x86\.get_pc_thunk\./ { print "--globalize-symbol=" $$3 }' | \
+	  sort -u) $(BUILD)/lib/refray.o
+	$(Q)rm -f $@ && ar rcs $@ $(BUILD)/lib/refray.o
+
+$(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
+	@mkdir -p $(dir $@)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -shared -Wl,-soname,librefray.so.$(RF_ABI) \
+	  -Wl,--version-script=src/api/librefray.map -o $@ $(PUBLIC_OBJS) $(PUBLIC_LINK_LIBS)
+	$(Q)ln -sf librefray.so.$(RF_VERSION) $(BUILD)/lib/librefray.so.$(RF_ABI)
+	$(Q)ln -sf librefray.so.$(RF_ABI) $(BUILD)/lib/librefray.so
+
+# refray.pc: relocatable (prefix found from the file's own place), with the
+# build's optional libraries as private dependencies.  An optional library
+# with a pkg-config module adds it to PC_REQUIRES_PRIVATE, one without
+# adds its flags to PC_LIBS_PRIVATE.
+PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng)
+PC_LIBS_PRIVATE     := $(EXR_LIBS) $(LDLIBS)
+$(BUILD)/refray.pc: src/api/refray.pc.in include/refray.h Makefile
+	@mkdir -p $(dir $@)
+	$(Q)sed -e 's|@VERSION@|$(RF_VERSION)|' -e 's|@REQUIRES_PRIVATE@|$(strip $(PC_REQUIRES_PRIVATE))|' \
+	  -e 's|@LIBS_PRIVATE@|$(strip $(PC_LIBS_PRIVATE))|' $< > $@
 
 $(TESTBIN): $(TEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
@@ -282,12 +435,13 @@ $(GEN)/suites.h: $(TEST_SRCS)
 $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
-	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) -c -o $@ $<
+	$(Q)$(CC) $(CPPFLAGS) $(GEN_WARN) $(CFLAGS) $(OBJ_CFLAGS) -c -o $@ $<
 
 # Per-object flags go to OBJ_CFLAGS, not CFLAGS, so that a CFLAGS given on
 # the command line (the fuzz build) does not drop them.
 $(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
 $(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
+$(BUILD)/obj/src/verify/manifest.o $(BUILD)/obj/src/verify/conform_report.o: OBJ_CFLAGS += $(JSON_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes
 $(BUILD)/obj/tests/main.o: $(GEN)/suites.h
@@ -323,19 +477,21 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 .PHONY: FORCE
 FORCE:
 
-# The public header and every header it reaches (found by the compiler
-# itself) go to $(PREFIX)/include/refray/.
+# The public header alone, both libraries and refray.pc (in lib/pkgconfig).
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/refray
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
 	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
-	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/librefray.a
-	install -m 644 $$($(CC) -Isrc -Iinclude -MM -MT x include/refray.h | sed 's/^x://; s/\\$$//' | \
-	  tr ' ' '\n' | sort -u) \
-	  $(DESTDIR)$(PREFIX)/include/refray/
+	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
+	install -m 644 $(PUBLIC_A) $(DESTDIR)$(PREFIX)/lib/librefray.a
+	install -m 755 $(PUBLIC_SO) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_VERSION)
+	ln -sf librefray.so.$(RF_VERSION) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_ABI)
+	ln -sf librefray.so.$(RF_ABI) $(DESTDIR)$(PREFIX)/lib/librefray.so
+	install -m 644 $(BUILD)/refray.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/lib/librefray.a
-	rm -rf $(DESTDIR)$(PREFIX)/include/refray
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/include/refray.h \
+	  $(DESTDIR)$(PREFIX)/lib/librefray.a $(DESTDIR)$(PREFIX)/lib/librefray.so* \
+	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 clean:
 	rm -rf build demo.png

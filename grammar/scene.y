@@ -7,10 +7,12 @@
  *
  * Properties take their values by juxtaposition (`rectangle [0,4,0] [1,0,0]
  * [0,0,1]`).  To keep that unambiguous for an LALR(1) parser with no
- * conflicts, property names are reserved words, and a value after the first
- * may not begin with a sign: `a -b` is always the subtraction a - b.  The
- * second rule is why the expression grammar exists twice: expr, and expr_ns
- * ("no sign") that cannot start with unary + or -.
+ * conflicts, a property word comes as KEYWORD only where a property may
+ * start and as NAME everywhere else (the scanner decides, scene.l:
+ * `let width = 4`, `radius width / 2`), and a value after the first may not
+ * begin with a sign: `a -b` is always the subtraction a - b.  The second
+ * rule is why the expression grammar exists twice: expr, and expr_ns ("no
+ * sign") that cannot start with unary + or -.
  */
 
 %code requires {
@@ -80,6 +82,60 @@ static ast *named(parse_ctx *ctx, ast_kind kind, const char *text, src_span span
 }
 
 #define CHECK_MEMORY() do { if (ctx->out_of_memory) YYNOMEM; } while (0)
+
+/*
+ * The parse stacks start in yyparse's frame (YYINITDEPTH deep) and grow
+ * through the load's allocator, never malloc: yyoverflow is bison's hook
+ * for that, expanded inside yyparse (so ctx, scanner and yylloc are in
+ * scope).  Each stack is moved as soon as its copy exists, so a failure
+ * half way leaves every pointer valid; the size grows only when all three
+ * moved.  parse_file frees the blocks after the parse.  Past YYMAXDEPTH,
+ * or when memory runs out, the parse stops as bison itself would.
+ */
+#define yyoverflow(message, ss, ss_bytes, vs, vs_bytes, ls, ls_bytes, size)                                \
+    do {                                                                                                  \
+        YYPTRDIFF_T grown_ = *(size) >= YYMAXDEPTH ? 0 : *(size) > YYMAXDEPTH / 2 ? YYMAXDEPTH : 2 * *(size); \
+        void *moved_;                                                                                     \
+        if (grown_ && (moved_ = stack_move(ctx, 0, *(ss), (ss_bytes), (size_t)grown_ * sizeof **(ss))))    \
+            *(ss) = moved_;                                                                               \
+        else                                                                                              \
+            grown_ = 0;                                                                                   \
+        if (grown_ && (moved_ = stack_move(ctx, 1, *(vs), (vs_bytes), (size_t)grown_ * sizeof **(vs))))    \
+            *(vs) = moved_;                                                                               \
+        else                                                                                              \
+            grown_ = 0;                                                                                   \
+        if (grown_ && (moved_ = stack_move(ctx, 2, *(ls), (ls_bytes), (size_t)grown_ * sizeof **(ls))))    \
+            *(ls) = moved_;                                                                               \
+        else                                                                                              \
+            grown_ = 0;                                                                                   \
+        if (grown_)                                                                                       \
+            *(size) = grown_;                                                                             \
+        else if (!ctx->out_of_memory)                                                                     \
+            scn_error(&yylloc, scanner, ctx, (message));                                                  \
+    } while (0)
+
+/* Lookahead correction keeps a scratch stack of its own: 20 states in
+ * yyparse's frame, which this grammar never outgrows (only its three empty
+ * rules push onto it, and none follows another).  Were it ever to, the parse
+ * would end as "nesting too deep" instead of calling malloc. */
+#define YYSTACK_ALLOC(size) ((void)(size), (void *)0)
+
+/* A copy of the used bytes of stack `slot` in a block of `bytes`; the
+ * previous block is freed unless it is yyparse's own array.  NULL when out
+ * of memory (ctx->out_of_memory set). */
+static void *stack_move(parse_ctx *ctx, int slot, const void *old, size_t used, size_t bytes)
+{
+    void *block = mem_alloc(&ctx->arena->mem, bytes);
+    if (!block) {
+        ctx->out_of_memory = 1;
+        return NULL;
+    }
+    memcpy(block, old, used);
+    mem_free(&ctx->arena->mem, ctx->stacks[slot], ctx->stack_bytes[slot]);
+    ctx->stacks[slot] = block;
+    ctx->stack_bytes[slot] = bytes;
+    return block;
+}
 }
 
 %define api.pure full

@@ -1,37 +1,490 @@
 /*
- * The public API as an embedding program uses it: only refray.h, a scene
- * from memory, a render, a metric.  The pixel is derived by hand: an
- * orthographic view straight down at a plane with Kd 0.5 under ambient 0.2
- * and a distant light from straight above of power 2: 0.5*0.2 + 0.5*2*1.
+ * check_api.c - the public API (include/refray.h) as an embedding program
+ * uses it: this file includes refray.h and nothing of src/.  Expected
+ * pixels are derived by hand: an orthographic view straight down at a
+ * plane with Kd 0.5 under ambient 0.2 and a distant light from straight
+ * above of power 2 is 0.5 * 0.2 + 0.5 * 2 * 1 = 1.1 everywhere
+ * (spec/shading.md).  IDs: spec/embedding.md.
  */
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
-#include "testlib.h"
+#include <check.h>
+#include "memcheck.h"
 #include "refray.h"
 
-START_TEST(test_api_load_render_compare)
+static const char plane_text[] =
+    "image { width 4 height 3 }\n"
+    "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+    "ambient { color 0.2 }\n"
+    "distant_light { direction [0, -1, 0] power 2 }\n"
+    "plane { material { Kd 0.5 } }\n";
+
+static rf_scene *load(const char *text, const rf_load_options *o)
+{
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_memory("api.scene", text, strlen(text), o, &s), RF_OK);
+    ck_assert_ptr_nonnull(s);
+    return s;
+}
+
+/* [EMBED-API-1] The version macros and calls agree; every status has its
+ * own name. */
+START_TEST(test_api_version_and_status)
+{
+    char want[32];
+    snprintf(want, sizeof want, "%d.%d.%d", RF_VERSION_MAJOR, RF_VERSION_MINOR, RF_VERSION_PATCH);
+    ck_assert_str_eq(rf_version(), want);
+    ck_assert_str_eq(RF_VERSION_STRING, want);
+    ck_assert_int_eq(rf_version_number(), RF_VERSION_MAJOR * 10000 + RF_VERSION_MINOR * 100 + RF_VERSION_PATCH);
+    ck_assert_str_eq(rf_status_string(RF_OK), "success");
+    ck_assert_str_eq(rf_status_string(RF_ERR_NO_MEMORY), "out of memory");
+    for (int a = RF_OK; a <= RF_ERR_CHECK; a++)
+        for (int b = a + 1; b <= RF_ERR_CHECK; b++)
+            ck_assert_str_ne(rf_status_string((rf_status)a), rf_status_string((rf_status)b));
+}
+END_TEST
+
+/* [EMBED-API-2] A scene from a string, rendered into a float buffer with a
+ * row stride wider than the region; every pixel is 1.1, the padding is
+ * left alone. */
+START_TEST(test_api_render_region)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    int w, h;
+    rf_renderer_size(r, &w, &h);
+    ck_assert_int_eq(w, 4);
+    ck_assert_int_eq(h, 3);
+    enum { STRIDE = 16 };
+    float buf[3 * STRIDE];
+    for (int i = 0; i < 3 * STRIDE; i++)
+        buf[i] = -7.0f;
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, buf, STRIDE), RF_OK);
+    for (int y = 0; y < 3; y++)
+        for (int i = 0; i < STRIDE; i++)
+            ck_assert_float_eq(buf[y * STRIDE + i], i < 12 ? 1.1f : -7.0f);
+    rf_render_stats st;
+    rf_renderer_stats(r, &st);
+    ck_assert_int_eq(st.camera_rays, 12);
+    ck_assert_int_eq(st.width, 4);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* A pixel does not depend on the region it is rendered in: the demo scene
+ * in 2 x 2 tiles equals the demo scene in one piece, bit for bit. */
+START_TEST(test_api_regions_tile_the_image)
+{
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.width = 12;
+    o.height = 8;
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    float whole[8 * 12 * 3], tiled[8 * 12 * 3];
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 12, 8, whole, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 5, 3, tiled, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 5, 0, 12, 3, tiled + 15, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 3, 5, 8, tiled + 3 * 36, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 5, 3, 12, 8, tiled + 3 * 36 + 15, 36), RF_OK);
+    ck_assert_int_eq(memcmp(whole, tiled, sizeof whole), 0);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* A radiance beyond the float range arrives as FLT_MAX, not infinity:
+ * 0.5 * 1e300 under a distant light straight above. */
+START_TEST(test_api_region_float_saturates)
+{
+    static const char text[] = "image { width 2 height 1 }\n"
+                               "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                               "distant_light { direction [0, -1, 0] power 1e300 }\n"
+                               "plane { material { Kd 0.5 } }\n";
+    rf_scene *s = load(text, NULL);
+    rf_renderer *r;
+    float px[6];
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 2, 1, px, 6), RF_OK);
+    for (int i = 0; i < 6; i++)
+        ck_assert_float_eq(px[i], FLT_MAX);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* Bad regions and options are refused before anything is traced. */
+START_TEST(test_api_render_region_refusals)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rf_renderer *r;
+    float buf[64];
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 5, 1, buf, 15), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 4, buf, 12), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 2, 0, 2, 1, buf, 12), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, -1, 0, 2, 1, buf, 12), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 1, buf, 11), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 1, NULL, 12), RF_ERR_USAGE);
+    rf_renderer_free(r);
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.samples = -1;
+    r = (rf_renderer *)&o;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
+    ck_assert_ptr_null(r);
+    rf_scene_free(s);
+}
+END_TEST
+
+typedef struct rows {
+    int calls, last_done, last_total, stop_after;
+} rows;
+
+static void on_progress(void *user, int done, int total)
+{
+    rows *r = user;
+    r->calls++;
+    r->last_done = done;
+    r->last_total = total;
+}
+
+static int on_cancel(void *user)
+{
+    const rows *r = user;
+    return r->stop_after >= 0 && r->calls >= r->stop_after;
+}
+
+/* [EMBED-API-3] Progress after every row of the region; cancel, asked
+ * before the first row and after every row, stops the render with
+ * RF_ERR_CANCELLED. */
+START_TEST(test_api_progress_and_cancel)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rows seen = {0, 0, 0, -1};
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.progress = on_progress;
+    o.cancel = on_cancel;
+    o.user = &seen;
+    rf_renderer *r;
+    float buf[36];
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 1, 1, 3, 3, buf, 6), RF_OK);
+    ck_assert_int_eq(seen.calls, 2);
+    ck_assert_int_eq(seen.last_done, 2);
+    ck_assert_int_eq(seen.last_total, 2);
+    seen.calls = 0;
+    seen.stop_after = 1;
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, buf, 12), RF_ERR_CANCELLED);
+    ck_assert_int_eq(seen.calls, 1);
+    seen.stop_after = 0;
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, buf, 12), RF_ERR_CANCELLED);
+    ck_assert_int_eq(seen.calls, 1);
+    rf_renderer_free(r);
+    rf_image *img = (rf_image *)&seen;
+    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_CANCELLED);
+    ck_assert_ptr_null(img);
+    rf_scene_free(s);
+}
+END_TEST
+
+typedef struct collected {
+    int count;
+    char text[8][160];
+} collected;
+
+static void collect(void *user, const rf_diagnostic *d)
+{
+    collected *c = user;
+    if (c->count == 8)
+        return;
+    snprintf(c->text[c->count++], sizeof c->text[0], "%s|%d|%d|%d|%s|%.*s|%zu", d->file ? d->file : "-", d->line,
+             d->column, (int)d->severity, d->message, d->source_line ? (int)d->source_line_length : 1,
+             d->source_line ? d->source_line : "-", d->span_length);
+}
+
+/* The files of an in-memory resolver: name -> text. */
+static rf_status memory_fetch(void *user, const char *from, const char *name, rf_source *out, char *message,
+                              size_t size)
+{
+    const char *const *files = user;
+    (void)from;
+    for (int i = 0; files[i]; i += 2) {
+        if (strcmp(files[i], name) == 0) {
+            out->path = files[i];
+            out->text = files[i + 1];
+            out->size = strlen(files[i + 1]);
+            return RF_OK;
+        }
+    }
+    snprintf(message, size, "no file '%s' here", name);
+    return RF_ERR_NO_INPUT;
+}
+
+/* [EMBED-API-4] Diagnostics come as records with file, line, column,
+ * severity, message and the source line; an error in an included file is
+ * followed by the note "included from here"; the resolver's reason for a
+ * missing file becomes the error. */
+START_TEST(test_api_diagnostics_and_resolver)
+{
+    static const char *const files[] = {"part.scene", "sphere {\n  radius -1 }\n", "tri.obj",
+                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", NULL};
+    collected c;
+    memset(&c, 0, sizeof c);
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.diagnostic = collect;
+    o.diagnostic_user = &c;
+    o.resolver.fetch = memory_fetch;
+    o.resolver.user = (void *)files;
+    rf_scene *s = (rf_scene *)&c;
+    static const char text[] = "mesh { file \"tri.obj\" }\ninclude \"part.scene\"\n";
+    ck_assert_int_eq(rf_scene_load_memory("main.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
+    ck_assert_ptr_null(s);
+    ck_assert_int_eq(c.count, 2);
+    ck_assert_str_eq(c.text[0], "part.scene|2|10|0|radius must be > 0, got -1|  radius -1 }|2");
+    ck_assert_str_eq(c.text[1], "main.scene|2|1|2|included from here|-|0");
+    memset(&c, 0, sizeof c);
+    static const char missing[] = "include \"nowhere.scene\"\n";
+    ck_assert_int_eq(rf_scene_load_memory("main.scene", missing, strlen(missing), &o, &s), RF_ERR_DATA);
+    ck_assert_str_eq(c.text[0], "main.scene|1|9|0|no file 'nowhere.scene' here|include \"nowhere.scene\"|15");
+    memset(&c, 0, sizeof c);
+    o.resolver.fetch = NULL;
+    ck_assert_int_eq(rf_scene_load_memory("main.scene", missing, strlen(missing), &o, &s), RF_ERR_DATA);
+    ck_assert_str_eq(c.text[0], "main.scene|1|9|0|cannot read 'nowhere.scene': this load reads no files|"
+                                "include \"nowhere.scene\"|15");
+    o.resolver.fetch = memory_fetch;
+    static const char good[] = "mesh { file \"tri.obj\" }\nsphere { center [0, 0, -3] }\n";
+    ck_assert_int_eq(rf_scene_load_memory("main.scene", good, strlen(good), &o, &s), RF_OK);
+    rf_scene_info info;
+    rf_scene_get_info(s, &info);
+    ck_assert_int_eq(info.meshes, 1);
+    ck_assert_int_eq(info.mesh_triangles, 1);
+    ck_assert_int_eq(info.spheres, 1);
+    ck_assert_int_eq(info.primitives, 2);
+    ck_assert_uint_eq(info.features & RF_FEATURE_MESHES, RF_FEATURE_MESHES);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* rf_diagnostic_print writes what the refray program writes. */
+START_TEST(test_api_diagnostic_print)
+{
+    char *out = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&out, &size);
+    ck_assert_ptr_nonnull(f);
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.diagnostic = rf_diagnostic_print;
+    o.diagnostic_user = f;
+    rf_scene *s;
+    static const char text[] = "sphere { radius -1 }\n";
+    ck_assert_int_eq(rf_scene_load_memory("t.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
+    ck_assert_int_eq(rf_scene_load_file("tests/no-such.scene", &o, &s), RF_ERR_NO_INPUT);
+    fclose(f);
+    ck_assert_str_eq(out, "t.scene:1:17: error: radius must be > 0, got -1\n"
+                          "    1 | sphere { radius -1 }\n"
+                          "      |                 ^~\n"
+                          "refray: error: cannot open 'tests/no-such.scene': No such file or directory\n");
+    free(out);
+}
+END_TEST
+
+/* [EMBED-API-5] The summary of scenes/demo.scene, counted by hand from
+ * the file: 1 plane, 3 + 7 spheres, 1 box, 2 lights, 5 materials. */
+START_TEST(test_api_scene_info)
+{
+    rf_scene *s;
+    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
+    rf_scene_info i;
+    rf_scene_get_info(s, &i);
+    ck_assert_int_eq(i.width, 640);
+    ck_assert_int_eq(i.height, 400);
+    ck_assert_int_eq(i.samples, 2);
+    ck_assert_int_eq(i.max_depth, 8);
+    ck_assert_int_eq(i.planes, 1);
+    ck_assert_int_eq(i.spheres, 10);
+    ck_assert_int_eq(i.boxes, 1);
+    ck_assert_int_eq(i.primitives, 12);
+    ck_assert_int_eq(i.lights, 2);
+    ck_assert_int_eq(i.materials, 5);
+    ck_assert_ptr_null(i.oracle);
+    ck_assert_uint_eq(i.features, RF_FEATURE_SHADOWS | RF_FEATURE_SPECULAR | RF_FEATURE_REFLECTION |
+                                      RF_FEATURE_REFRACTION | RF_FEATURE_SAMPLED_LIGHTS);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* [EMBED-API-5] Every kind of primitive is counted, cylinders, cones and
+ * tori too (counted by hand from the text: 1, 2 and 3 of them, 1 sphere). */
+START_TEST(test_api_scene_info_quadrics)
 {
     static const char text[] =
-        "image { width 2 height 2 }\n"
-        "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
-        "ambient { color 0.2 }\n"
-        "distant_light { direction [0, -1, 0] power 2 }\n"
-        "plane { material { Kd 0.5 } }\n";
-    int status;
-    rf_scene *s = scene_load_text("api.scene", text, strlen(text), NULL, stderr, 1, &status);
-    ck_assert_ptr_nonnull(s);
-    ck_assert_int_eq(status, REFRAY_EXIT_OK);
-    rf_image img, want;
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
-    ck_assert_int_eq(img_create(&want, 2, 2), 0);
-    for (int i = 0; i < 12; i++)
-        want.rgb[i] = 1.1;
-    image_metrics m;
-    metrics_compare(&img, &want, NULL, 1e-15, &m);
-    ck_assert_int_eq(m.over, 0);
-    ck_assert(m.max_abs <= 1e-15);
-    img_free(&img);
-    img_free(&want);
-    scene_free(s);
+        "sphere { center [0, 0, -9] }\n"
+        "cylinder { from [0, 0, -5] to [0, 1, -5] radius 0.5 }\n"
+        "cone { from [1, 0, -5] to [1, 1, -5] radii 0.5 0 }\n"
+        "cone { from [2, 0, -5] to [2, 1, -5] radii 0.5 0.2 }\n"
+        "torus { center [0, 0, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
+        "torus { center [0, 2, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
+        "torus { center [0, 4, -6] axis [1, 0, 0] major 1 minor 0.2 }\n";
+    rf_scene *s;
+    ck_assert_int_eq(rf_scene_load_memory("q.scene", text, strlen(text), NULL, &s), RF_OK);
+    rf_scene_info i;
+    rf_scene_get_info(s, &i);
+    ck_assert_int_eq(i.primitives, 7);
+    ck_assert_int_eq(i.spheres, 1);
+    ck_assert_int_eq(i.cylinders, 1);
+    ck_assert_int_eq(i.cones, 2);
+    ck_assert_int_eq(i.tori, 3);
+    ck_assert_int_eq(i.planes + i.triangles + i.disks + i.boxes + i.meshes, 0);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* A bump allocator over a fixed buffer, as an embedding host would write
+ * one: no header, sized releases ignored except for the last block. */
+typedef struct bump {
+    unsigned char *base;
+    size_t size, used, last;
+} bump;
+
+static void *bump_alloc(void *user, size_t size)
+{
+    bump *b = user;
+    size_t at = (b->used + 15) / 16 * 16;
+    if (at > b->size || size > b->size - at)
+        return NULL;
+    b->last = at;
+    b->used = at + size;
+    return b->base + at;
+}
+
+static void bump_release(void *user, void *p, size_t size)
+{
+    bump *b = user;
+    if ((unsigned char *)p == b->base + b->last && b->last + size == b->used)
+        b->used = b->last;
+}
+
+/* [EMBED-API-6] Everything comes from the allocator given: with a fixed
+ * arena the render succeeds when it is large enough and fails with
+ * RF_ERR_NO_MEMORY, cleanly, when it is not. */
+START_TEST(test_api_fixed_arena)
+{
+    static unsigned char arena[1 << 20];
+    bump b = {arena, sizeof arena, 0, 0};
+    rf_allocator a = {bump_alloc, NULL, bump_release, &b};
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.allocator = &a;
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_memory("api.scene", plane_text, strlen(plane_text), &o, &s), RF_OK);
+    rf_image *img;
+    ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
+    ck_assert_double_eq_tol(rf_image_pixels(img)[0], 1.1, 1e-15);
+    rf_image_free(img);
+    rf_scene_free(s);
+    size_t needed = 0;
+    for (size_t size = 256; size < sizeof arena; size *= 2) {
+        b.size = size;
+        b.used = 0;
+        rf_status st = rf_scene_load_memory("api.scene", plane_text, strlen(plane_text), &o, &s);
+        if (st == RF_OK) {
+            st = rf_render_image(s, NULL, &img, NULL);
+            rf_scene_free(s);
+            if (st == RF_OK)
+                rf_image_free(img);
+        }
+        ck_assert_msg(st == RF_OK || st == RF_ERR_NO_MEMORY, "arena %zu: %s", size, rf_status_string(st));
+        if (st == RF_OK && !needed)
+            needed = size;
+    }
+    ck_assert_uint_gt(needed, 256);
+}
+END_TEST
+
+/* [EMBED-MEM-3] A counting allocator sees every byte returned; rendering
+ * a region allocates nothing (everything a render needs is made with the
+ * renderer). */
+START_TEST(test_api_counting_allocator)
+{
+    memcheck c;
+    memcheck_init(&c);
+    rf_allocator a = {memcheck_alloc, memcheck_resize, memcheck_release, &c};
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.allocator = &a;
+    rf_scene *s;
+    ck_assert_int_eq(rf_scene_load_file("scenes/mesh.scene", &o, &s), RF_OK);
+    rf_image *img;
+    rf_render_options ro;
+    rf_render_options_init(&ro);
+    ro.width = 8;
+    ro.height = 6;
+    ck_assert_int_eq(rf_render_image(s, &ro, &img, NULL), RF_OK);
+    rf_image_free(img);
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_OK);
+    long calls = c.calls;
+    size_t live = c.live;
+    float px[8 * 6 * 3];
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 8, 6, px, 24), RF_OK);
+    ck_assert_int_eq(c.calls, calls);
+    ck_assert_uint_eq(c.live, live);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+    ck_assert_int_gt(c.calls, 20);
+    ck_assert_int_eq(c.bad_sizes, 0);
+    ck_assert_uint_eq(c.live, 0);
+    ck_assert_int_eq(rf_image_create(0, 5, &a, &img), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_image_create(3, 2, &a, &img), RF_OK);
+    ck_assert_uint_ge(c.live, 3 * 2 * 3 * sizeof(double));
+    rf_image_free(img);
+    ck_assert_uint_eq(c.live, 0);
+}
+END_TEST
+
+/* Formats by extension; a PFM written through the API has the PFM header
+ * of a 4 x 3 image. */
+START_TEST(test_api_image_write)
+{
+    ck_assert_int_eq(rf_format_from_path("a.PNG"), RF_FORMAT_PNG);
+    ck_assert_int_eq(rf_format_from_path("a.exr"), RF_FORMAT_EXR);
+    ck_assert_int_eq(rf_format_from_path("a.pfm"), RF_FORMAT_PFM);
+    ck_assert_int_eq(rf_format_from_path("a.txt"), RF_FORMAT_UNKNOWN);
+    ck_assert_int_eq(rf_format_available(RF_FORMAT_PFM), 1);
+    ck_assert_int_eq(rf_format_available(RF_FORMAT_UNKNOWN), 0);
+    rf_scene *s = load(plane_text, NULL);
+    rf_image *img;
+    ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
+    ck_assert_int_eq(rf_image_width(img), 4);
+    ck_assert_int_eq(rf_image_height(img), 3);
+    const char *path = "build/check_api_out.pfm";
+    char message[256];
+    rf_write_stats st;
+    ck_assert_int_eq(rf_image_write(img, path, NULL, &st, message, sizeof message), RF_OK);
+    ck_assert_uint_eq(st.nonfinite, 0);
+    FILE *f = fopen(path, "rb");
+    ck_assert_ptr_nonnull(f);
+    char head[16] = "";
+    ck_assert_ptr_nonnull(fgets(head, sizeof head, f));
+    ck_assert_str_eq(head, "PF\n");
+    ck_assert_ptr_nonnull(fgets(head, sizeof head, f));
+    ck_assert_str_eq(head, "4 3\n");
+    fclose(f);
+    remove(path);
+    ck_assert_int_eq(rf_image_write(img, "build/x.nope", NULL, NULL, message, sizeof message), RF_ERR_USAGE);
+    ck_assert_int_ne(message[0], '\0');
+    rf_image_free(img);
+    rf_scene_free(s);
 }
 END_TEST
 
@@ -39,7 +492,19 @@ Suite *suite_api(void)
 {
     Suite *s = suite_create("api");
     TCase *tc = tcase_create("embedding");
-    tcase_add_test(tc, test_api_load_render_compare);
+    tcase_add_test(tc, test_api_version_and_status);
+    tcase_add_test(tc, test_api_render_region);
+    tcase_add_test(tc, test_api_regions_tile_the_image);
+    tcase_add_test(tc, test_api_region_float_saturates);
+    tcase_add_test(tc, test_api_render_region_refusals);
+    tcase_add_test(tc, test_api_progress_and_cancel);
+    tcase_add_test(tc, test_api_diagnostics_and_resolver);
+    tcase_add_test(tc, test_api_diagnostic_print);
+    tcase_add_test(tc, test_api_scene_info);
+    tcase_add_test(tc, test_api_scene_info_quadrics);
+    tcase_add_test(tc, test_api_fixed_arena);
+    tcase_add_test(tc, test_api_counting_allocator);
+    tcase_add_test(tc, test_api_image_write);
     suite_add_tcase(s, tc);
     return s;
 }

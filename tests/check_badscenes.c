@@ -6,6 +6,9 @@
  * (LINE counts the header itself).  When the first error is in a file the
  * scene reads (an include, an OBJ mesh), the expectation names that file
  * relative to tests/bad/: `# expect: inc/cycle_b.scene:2:9: error: ...`.
+ * Lines right after it of the form `# then: LINE:COL: error|note: ...` are
+ * later diagnostics the run must print too, in that order (each a whole
+ * line of the output; source and caret lines in between are skipped).
  *
  * Each file is checked twice: through scene_load (status 65, first line of
  * the diagnostics) and through the command line, `refray check FILE`, run
@@ -21,6 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define BAD_DIR "tests/bad"
@@ -62,22 +66,40 @@ static void corpus_read(corpus *c)
     qsort(c->names, (size_t)c->count, sizeof c->names[0], by_name);
 }
 
-/* The header's expectation as a whole first line: FILE:LINE:COL: ... */
-static void expected_line(const char *path, char *want, size_t size)
+enum { MAX_EXPECT = 8 };
+
+typedef struct expectation {
+    char lines[MAX_EXPECT][LINE_MAX_LEN + PATH_MAX_LEN];
+    int count;
+} expectation;
+
+/* A header line's expectation as a whole line of output: FILE:LINE:COL: ... */
+static void expected_text(const char *path, const char *expect, char *want, size_t size)
 {
-    char header[LINE_MAX_LEN];
-    static const char tag[] = "# expect: ";
-    FILE *f = fopen(path, "rb");
-    ck_assert_msg(f != NULL, "cannot open %s", path);
-    ck_assert_msg(fgets(header, sizeof header, f) != NULL, "%s is empty", path);
-    fclose(f);
-    header[strcspn(header, "\r\n")] = '\0';
-    ck_assert_msg(strncmp(header, tag, sizeof tag - 1) == 0, "%s: first line is not '# expect: ...'", path);
-    const char *expect = header + sizeof tag - 1;
     if (expect[0] >= '0' && expect[0] <= '9')
         snprintf(want, size, "%s:%s", path, expect);
     else
         snprintf(want, size, "%s/%s", BAD_DIR, expect);
+}
+
+/* The `# expect:` line and the `# then:` lines after it. */
+static void expected_lines(const char *path, expectation *e)
+{
+    char header[LINE_MAX_LEN];
+    static const char tag[] = "# expect: ", then[] = "# then: ";
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    e->count = 0;
+    while (e->count < MAX_EXPECT && fgets(header, sizeof header, f)) {
+        header[strcspn(header, "\r\n")] = '\0';
+        const char *want = e->count == 0 ? tag : then;
+        size_t n = strlen(want);
+        if (strncmp(header, want, n) != 0)
+            break;
+        expected_text(path, header + n, e->lines[e->count++], sizeof e->lines[0]);
+    }
+    fclose(f);
+    ck_assert_msg(e->count > 0, "%s: first line is not '# expect: ...'", path);
 }
 
 static void first_line_of(const char *text, char *line, size_t size)
@@ -89,27 +111,46 @@ static void first_line_of(const char *text, char *line, size_t size)
     line[n] = '\0';
 }
 
-/* (a) through the library. */
-static void check_library(const char *path, const char *want)
+/* The first line of text is e's first line, and e's later lines follow
+ * in order, each a whole line. */
+static void check_output(const char *who, const char *text, const expectation *e)
 {
-    char *out = NULL, line[LINE_MAX_LEN];
+    char line[LINE_MAX_LEN];
+    first_line_of(text, line, sizeof line);
+    ck_assert_msg(strcmp(line, e->lines[0]) == 0, "%s:\n  got  %s\n  want %s", who, line, e->lines[0]);
+    const char *at = text + strcspn(text, "\n");
+    for (int k = 1; k < e->count; k++) {
+        for (;;) {
+            ck_assert_msg(*at, "%s: no line\n  %s\nafter the ones before; the output is\n%s", who, e->lines[k], text);
+            at++;
+            first_line_of(at, line, sizeof line);
+            at += strcspn(at, "\n");
+            if (strcmp(line, e->lines[k]) == 0)
+                break;
+        }
+    }
+}
+
+/* (a) through the library. */
+static void check_library(const char *path, const expectation *e)
+{
+    char *out = NULL;
     size_t size;
     int status;
     FILE *f = open_memstream(&out, &size);
     ck_assert_ptr_nonnull(f);
-    rf_scene *s = scene_load(path, NULL, f, 1, &status);
+    scene_model *s = scene_file_load(path, NULL, f, 1, &status);
     fclose(f);
-    first_line_of(out, line, sizeof line);
-    free(out);
     scene_free(s);
     ck_assert_msg(s == NULL, "%s loaded", path);
-    ck_assert_msg(status == REFRAY_EXIT_DATAERR, "%s: status %d, expected 65", path, status);
-    ck_assert_msg(strcmp(line, want) == 0, "%s:\n  got  %s\n  want %s", path, line, want);
+    ck_assert_msg(status == STATUS_DATA, "%s: status %d, expected STATUS_DATA", path, status);
+    check_output(path, out, e);
+    free(out);
 }
 
 /* Runs `refray check path` with stderr into a pipe; returns the exit code
- * (-1 when it did not exit normally) and the first line of stderr. */
-static int run_cli(const char *path, char *line, size_t size)
+ * (-1 when it did not exit normally) and stderr (its first size - 1 bytes). */
+static int run_cli(const char *path, char *buf, size_t size)
 {
     const char *bin = getenv("REFRAY_BIN");
     if (!bin || !*bin)
@@ -130,30 +171,30 @@ static int run_cli(const char *path, char *line, size_t size)
         _exit(127);
     }
     close(fds[1]);
-    char buf[LINE_MAX_LEN * 4];
     size_t used = 0;
     ssize_t got;
-    while ((got = read(fds[0], buf + used, sizeof buf - 1 - used)) > 0)
+    while (used < size - 1 && (got = read(fds[0], buf + used, size - 1 - used)) > 0)
         used += (size_t)got;
     /* Drain the rest so the child never blocks on a full pipe. */
     char sink[4096];
-    while (used == sizeof buf - 1 && read(fds[0], sink, sizeof sink) > 0)
+    while (used == size - 1 && read(fds[0], sink, sizeof sink) > 0)
         ;
     close(fds[0]);
     buf[used] = '\0';
-    first_line_of(buf, line, size);
     int status;
     ck_assert_int_eq(waitpid(pid, &status, 0), pid);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 /* (b) through the command line. */
-static void check_cli(const char *path, const char *want)
+static void check_cli(const char *path, const expectation *e)
 {
-    char line[LINE_MAX_LEN];
-    int code = run_cli(path, line, sizeof line);
-    ck_assert_msg(code == REFRAY_EXIT_DATAERR, "refray check %s: exit %d, expected 65", path, code);
-    ck_assert_msg(strcmp(line, want) == 0, "refray check %s:\n  got  %s\n  want %s", path, line, want);
+    static char out[LINE_MAX_LEN * 16];
+    char who[PATH_MAX_LEN + 32];
+    int code = run_cli(path, out, sizeof out);
+    snprintf(who, sizeof who, "refray check %s", path);
+    ck_assert_msg(code == 65, "%s: exit %d, expected 65", who, code);
+    check_output(who, out, e);
 }
 
 /* A broken glob must not pass by checking nothing. */
@@ -170,13 +211,14 @@ END_TEST
 START_TEST(test_bad_scene_file)
 {
     corpus c;
-    char path[PATH_MAX_LEN], want[LINE_MAX_LEN + PATH_MAX_LEN];
+    char path[PATH_MAX_LEN];
+    static expectation e;
     corpus_read(&c);
     ck_assert_msg(_i < c.count, "no bad scene number %d (%d files)", _i, c.count);
     snprintf(path, sizeof path, "%s/%s", BAD_DIR, c.names[_i]);
-    expected_line(path, want, sizeof want);
-    check_library(path, want);
-    check_cli(path, want);
+    expected_lines(path, &e);
+    check_library(path, &e);
+    check_cli(path, &e);
 }
 END_TEST
 

@@ -40,9 +40,9 @@ static vec3 rng_unit(rng *g)
     }
 }
 
-static rf_prim prim_blank(rf_prim_kind kind)
+static scene_prim prim_blank(scene_prim_kind kind)
 {
-    rf_prim p;
+    scene_prim p;
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
@@ -50,18 +50,18 @@ static rf_prim prim_blank(rf_prim_kind kind)
     return p;
 }
 
-static rf_prim prim_sphere(vec3 c, double radius)
+static scene_prim prim_sphere(vec3 c, double radius)
 {
-    rf_prim p = prim_blank(PRIM_SPHERE);
+    scene_prim p = prim_blank(PRIM_SPHERE);
     p.u.sphere.center = c;
     p.u.sphere.radius = radius;
     return p;
 }
 
 /* One random primitive near c of size about s; kind chosen by k. */
-static rf_prim random_prim(rng *g, int k, vec3 c, double s)
+static scene_prim random_prim(rng *g, int k, vec3 c, double s)
 {
-    rf_prim p;
+    scene_prim p;
     switch (k % 7) {
     case 0:
     case 1:
@@ -102,10 +102,10 @@ static rf_prim random_prim(rng *g, int k, vec3 c, double s)
 }
 
 /* count primitives in [0,10]^3 plus two planes at the end. */
-static rf_prim *random_scene(uint64_t seed, int count, int planes)
+static scene_prim *random_scene(uint64_t seed, int count, int planes)
 {
     rng g = {seed, 0};
-    rf_prim *prims = calloc((size_t)count + 2, sizeof *prims);
+    scene_prim *prims = calloc((size_t)count + 2, sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     for (int i = 0; i < count; i++)
         prims[i] = random_prim(&g, (int)(rng_uniform(&g) * 7), rng_box(&g, 0, 10), 0.6);
@@ -123,7 +123,7 @@ static rf_prim *random_scene(uint64_t seed, int count, int planes)
 
 /* Rays of several sorts: general, axis-parallel, starting on a box face or
  * inside things, with narrowed intervals. */
-static ray random_ray(rng *g, const rf_prim *prims, int count, int i)
+static ray random_ray(rng *g, const scene_prim *prims, int count, int i)
 {
     ray r;
     r.origin = rng_box(g, -2, 12);
@@ -137,7 +137,7 @@ static ray random_ray(rng *g, const rf_prim *prims, int count, int i)
             r.dir = vec_neg(r.dir);
     }
     if (i % 7 == 2 && count > 0) {
-        const rf_prim *p = &prims[(int)(rng_uniform(g) * count)];
+        const scene_prim *p = &prims[(int)(rng_uniform(g) * count)];
         vec3 lo, hi;
         if (isect_prim_bounds(p, &lo, &hi))
             r.origin = vec_make(lo.x, r.origin.y, hi.z); /* on two slab planes of its box */
@@ -145,7 +145,7 @@ static ray random_ray(rng *g, const rf_prim *prims, int count, int i)
     if (i % 13 == 4 && count > 0) {
         /* Aimed at a vertex, a box corner or a sphere's extreme point: hits
          * that lie exactly on the primitive's bounding box. */
-        const rf_prim *p = &prims[(int)(rng_uniform(g) * count)];
+        const scene_prim *p = &prims[(int)(rng_uniform(g) * count)];
         vec3 aim = r.origin;
         if (p->kind == PRIM_TRIANGLE)
             aim = p->u.triangle.p[(int)(rng_uniform(g) * 3)];
@@ -163,7 +163,7 @@ static ray random_ray(rng *g, const rf_prim *prims, int count, int i)
     return r;
 }
 
-static int brute_nearest(const rf_prim *prims, int count, ray *r, hit *h)
+static int brute_nearest(const scene_prim *prims, int count, ray *r, hit *h)
 {
     real least = HUGE_VAL;
     hit hi;
@@ -189,7 +189,7 @@ static int brute_nearest(const rf_prim *prims, int count, ray *r, hit *h)
 }
 
 /* Returns how many of the rays hit something. */
-static int check_nearest_agrees(const bvh *b, const rf_prim *prims, int count, uint64_t seed,
+static int check_nearest_agrees(const bvh *b, const scene_prim *prims, int count, uint64_t seed,
                                 int rays)
 {
     rng g = {seed, 0};
@@ -239,10 +239,10 @@ static int compare_crossings(const void *pa, const void *pb)
     return (a->t > b->t) - (a->t < b->t);
 }
 
-static void brute_all(const rf_prim *prims, int count, const ray *r, crossing_list *l)
+static void brute_all(const scene_prim *prims, int count, const ray *r, crossing_list *l)
 {
     for (int i = 0; i < count; i++) {
-        hit out[2];
+        hit out[ISECT_MAX_CROSSINGS];
         int n = isect_prim_all(&prims[i], r, out);
         for (int k = 0; k < n; k++) {
             out[k].prim = i;
@@ -256,9 +256,9 @@ START_TEST(test_bvh_intersect_matches_brute_force)
     static const int sizes[] = {1, 2, 3, 7, 40, 500, 3000};
     for (int s = 0; s < 7; s++) {
         int n = sizes[s];
-        rf_prim *prims = random_scene(100 + (uint64_t)s, n, 2);
+        scene_prim *prims = random_scene(100 + (uint64_t)s, n, 2);
         bvh b;
-        ck_assert(bvh_build(&b, prims, n + 2));
+        ck_assert(bvh_build(&b, prims, n + 2, NULL));
         ck_assert_int_eq(b.unbounded_count, 2);
         int hits = check_nearest_agrees(&b, prims, n + 2, 200 + (uint64_t)s, 3000);
         /* The planes alone catch some rays; the rest must be tested too. */
@@ -272,9 +272,9 @@ END_TEST
 START_TEST(test_bvh_visit_matches_brute_force)
 {
     int n = 2000;
-    rf_prim *prims = random_scene(300, n, 2);
+    scene_prim *prims = random_scene(300, n, 2);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n + 2));
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
     rng g = {301, 0};
     long total = 0, solids_twice = 0;
     for (int i = 0; i < 3000; i++) {
@@ -310,11 +310,11 @@ static int stop_with_seven(void *ctx, const hit *h)
 START_TEST(test_bvh_visit_stops_early)
 {
     /* Ten spheres on the x axis, all on the ray: the first call stops it. */
-    rf_prim prims[10];
+    scene_prim prims[10];
     for (int i = 0; i < 10; i++)
         prims[i] = prim_sphere(vec_make(3 * i, 0, 0), 1);
     bvh b;
-    ck_assert(bvh_build(&b, prims, 10));
+    ck_assert(bvh_build(&b, prims, 10, NULL));
     ray r = {{-5, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL};
     int calls = 0;
     ck_assert_int_eq(bvh_visit(&b, prims, &r, stop_with_seven, &calls), 7);
@@ -346,13 +346,13 @@ START_TEST(test_bvh_parallel_ray_in_flat_box_plane)
     for (int flat = 0; flat < 3; flat++) {
         for (int k = 1; k < 3; k++) {
             int along = (flat + k) % 3, third = 3 - flat - along;
-            rf_prim prims[2];
+            scene_prim prims[2];
             prims[0] = prim_sphere(vec_make(5, 5, 5), 1);
             prims[1] = prim_blank(PRIM_BOX);
             prims[1].u.box.lo = vec_make(0, 0, 0);
             prims[1].u.box.hi = vec_sub(vec_make(1, 1, 1), axis_vec(flat, 1));
             bvh b;
-            ck_assert(bvh_build(&b, prims, 2));
+            ck_assert(bvh_build(&b, prims, 2, NULL));
             for (int sign = 0; sign < 2; sign++) {
                 /* From 1 before the box (or 2 past it going back), mid-way
                  * across the third axis: t = 1 either way. */
@@ -378,7 +378,7 @@ END_TEST
 START_TEST(test_bvh_empty_scene)
 {
     bvh b;
-    ck_assert(bvh_build(&b, NULL, 0));
+    ck_assert(bvh_build(&b, NULL, 0, NULL));
     ck_assert_int_eq(b.node_count, 0);
     ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
     hit h;
@@ -394,9 +394,9 @@ END_TEST
 START_TEST(test_bvh_one_prim_and_planes_only)
 {
     /* One sphere: a one-node tree; the hit carries prim 0. */
-    rf_prim s = prim_sphere(vec_make(0, 0, 5), 1);
+    scene_prim s = prim_sphere(vec_make(0, 0, 5), 1);
     bvh b;
-    ck_assert(bvh_build(&b, &s, 1));
+    ck_assert(bvh_build(&b, &s, 1, NULL));
     ck_assert_int_eq(b.node_count, 1);
     ck_assert_int_eq(b.leaf_count, 1);
     ray r = {{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
@@ -407,12 +407,12 @@ START_TEST(test_bvh_one_prim_and_planes_only)
     ck_assert_near(r.tmax, 4.0, 0.0);
     bvh_free(&b);
     /* Only planes: no tree, the list finds the nearer (prim 1 at t = 2). */
-    rf_prim planes[2] = {prim_blank(PRIM_PLANE), prim_blank(PRIM_PLANE)};
+    scene_prim planes[2] = {prim_blank(PRIM_PLANE), prim_blank(PRIM_PLANE)};
     planes[0].u.plane.point = vec_make(0, 0, 7);
     planes[0].u.plane.normal = vec_make(0, 0, -1);
     planes[1].u.plane.point = vec_make(0, 0, 2);
     planes[1].u.plane.normal = vec_make(0, 0, 1);
-    ck_assert(bvh_build(&b, planes, 2));
+    ck_assert(bvh_build(&b, planes, 2, NULL));
     ck_assert_int_eq(b.node_count, 0);
     ck_assert_int_eq(b.unbounded_count, 2);
     r = (ray){{0, 0, 0}, {0, 0, 1}, 0.0, HUGE_VAL};
@@ -436,12 +436,12 @@ START_TEST(test_bvh_identical_prims_tie_to_lowest_index)
      * an object median; the tree stays shallow and the nearest hit is the
      * copy with the lowest index, as brute force gives. */
     int n = 5000;
-    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    scene_prim *prims = malloc((size_t)n * sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     for (int i = 0; i < n; i++)
         prims[i] = prim_sphere(vec_make(1, 2, 3), 0.5);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_le(b.depth, 14); /* ceil(log2(5000 / 4)) + 1 = 12 */
     ray r = {{1, 2, -3}, {0, 0, 1}, 0.0, HUGE_VAL};
     hit h;
@@ -461,10 +461,10 @@ END_TEST
 START_TEST(test_bvh_deterministic_and_well_formed)
 {
     int n = 3000;
-    rf_prim *prims = random_scene(400, n, 2);
+    scene_prim *prims = random_scene(400, n, 2);
     bvh a, b;
-    ck_assert(bvh_build(&a, prims, n + 2));
-    ck_assert(bvh_build(&b, prims, n + 2));
+    ck_assert(bvh_build(&a, prims, n + 2, NULL));
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
     ck_assert_int_eq(a.node_count, b.node_count);
     ck_assert(memcmp(a.nodes, b.nodes, (size_t)a.node_count * sizeof *a.nodes) == 0);
     ck_assert(memcmp(a.items, b.items, (size_t)a.item_count * sizeof *a.items) == 0);
@@ -521,12 +521,12 @@ START_TEST(test_bvh_skewed_distribution_depth_bounded)
      * stays within BVH_MAX_DEPTH (the build asserts it, traversal relies on
      * it).  The smallest is 1e-106, well inside double's normal range. */
     int n = 600;
-    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    scene_prim *prims = malloc((size_t)n * sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     for (int i = 0; i < n; i++)
         prims[i] = prim_sphere(vec_make(pow(1.5, -i), 0, 0), 0.1 * pow(1.5, -i));
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_gt(b.depth, BVH_MEDIAN_DEPTH);
     ck_assert_int_le(b.depth, BVH_MAX_DEPTH);
     check_nearest_agrees(&b, prims, n, 501, 500);
@@ -558,14 +558,14 @@ START_TEST(test_bvh_grid_100k_visits_few_nodes)
      * a grid row from outside stops at the first sphere: the traversal
      * must test a tiny fraction of the nodes and primitives. */
     int nx = 100, ny = 100, nz = 10, n = nx * ny * nz;
-    rf_prim *prims = malloc((size_t)n * sizeof *prims);
+    scene_prim *prims = malloc((size_t)n * sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     for (int z = 0; z < nz; z++)
         for (int y = 0; y < ny; y++)
             for (int x = 0; x < nx; x++)
                 prims[(z * ny + y) * nx + x] = prim_sphere(vec_make(x, y, z), 0.3);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n));
+    ck_assert(bvh_build(&b, prims, n, NULL));
     ck_assert_int_le(b.depth, 40);
     bvh_stats st = {0, 0};
     ray r = {{-10, 37, 4}, {1, 0, 0}, 0.0, HUGE_VAL};

@@ -8,10 +8,10 @@
 #include "render/camera.h"
 #include "scene/scene.h"
 
-static rf_camera camera(rf_camera_kind kind, double fov, double width)
+static scene_camera camera(scene_camera_kind kind, double fov, double width)
 {
     /* Eye at +z looking at the origin with y up: forward -z, right +x. */
-    rf_camera c;
+    scene_camera c;
     memset(&c, 0, sizeof c);
     c.kind = kind;
     c.eye = vec_make(0, 0, 5);
@@ -27,7 +27,7 @@ static rf_camera camera(rf_camera_kind kind, double fov, double width)
 
 START_TEST(test_camera_ray_centre_is_forward)
 {
-    rf_camera c = camera(CAMERA_PERSPECTIVE, 60, 2);
+    scene_camera c = camera(CAMERA_PERSPECTIVE, 60, 2);
     ray r = camera_ray(&c, 100, 50, 50, 25);
     ck_assert_vec_near(r.dir, vec_make(0, 0, -1), 1e-16);
     ck_assert_vec_near(r.origin, c.eye, 0);
@@ -38,7 +38,7 @@ START_TEST(test_camera_ray_edges_span_the_horizontal_fov)
 {
     /* fov 90: the right edge's ray is at 45 degrees, (1, 0, -1)/sqrt2; the
      * top edge of a 2:1 image is at half that slope, (0, 0.5, -1)/|...|. */
-    rf_camera c = camera(CAMERA_PERSPECTIVE, 90, 2);
+    scene_camera c = camera(CAMERA_PERSPECTIVE, 90, 2);
     ray right = camera_ray(&c, 200, 100, 200, 50);
     ck_assert_vec_near(right.dir, vec_make(1 / sqrt(2.0), 0, -1 / sqrt(2.0)), 1e-15);
     ray top = camera_ray(&c, 200, 100, 100, 0);
@@ -51,7 +51,7 @@ START_TEST(test_camera_ray_orthographic_offsets_the_origin)
 {
     /* width 4 on a 4x2 image: x spans [-2, 2], y spans [-1, 1]; the centre
      * of pixel (3, 0) is at x = 3.5 -> 1.5, y = 0.5 -> 0.5. */
-    rf_camera c = camera(CAMERA_ORTHOGRAPHIC, 60, 4);
+    scene_camera c = camera(CAMERA_ORTHOGRAPHIC, 60, 4);
     ray r = camera_ray(&c, 4, 2, 3.5, 0.5);
     ck_assert_vec_near(r.origin, vec_make(1.5, 0.5, 5), 1e-15);
     ck_assert_vec_near(r.dir, vec_make(0, 0, -1), 0);

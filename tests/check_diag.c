@@ -1,12 +1,15 @@
-/* Tests of diagnostics (src/base/diag.c) and source positions (src/base/source.c):
- * the GCC form, the excerpt and caret, tabs, long lines, control bytes,
- * include chains, the error limit and switched-off warnings.  Expected
- * output is written out in full.  IDs: spec/language.md. */
+/* Tests of diagnostics (src/base/diag.c, printed by src/io/diag_print.c) and
+ * source positions (src/base/source.c): the GCC form, the excerpt and caret,
+ * tabs, long lines, control bytes, include chains, the error limit and
+ * switched-off warnings.  Expected output is written out in full.  IDs:
+ * spec/language.md. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/diag_print.h"
 #include "testlib.h"
 #include "base/diag.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 typedef struct capture {
@@ -19,11 +22,11 @@ typedef struct capture {
 
 static void capture_open(capture *c, const char *path, const char *text, size_t len)
 {
-    source_set_init(&c->sources);
+    source_set_init(&c->sources, NULL);
     ck_assert_int_eq(source_set_add(&c->sources, path, text, len, src_span_none()), 0);
     c->out = open_memstream(&c->text, &c->size);
     ck_assert_ptr_nonnull(c->out);
-    diag_init(&c->diag, &c->sources, c->out);
+    diag_init(&c->diag, &c->sources, diag_print, c->out);
 }
 
 /* Ends the capture; the text printed is in c->text until capture_free. */
@@ -249,12 +252,12 @@ START_TEST(test_diag_report_error_limit)
 }
 END_TEST
 
-/* A diag with no stream counts and prints nothing. */
+/* A diag with no sink counts and delivers nothing. */
 START_TEST(test_diag_report_no_stream)
 {
     capture c;
     capture_open(&c, "t.scene", "abc", 3);
-    c.diag.out = NULL;
+    c.diag.sink = NULL;
     diag_report(&c.diag, DIAG_ERROR, span(0, 0, 1), "silent");
     ck_assert_int_eq(c.diag.errors, 1);
     capture_close(&c);
@@ -273,10 +276,10 @@ START_TEST(test_scene_load_error_limit)
     size_t size;
     int status;
     FILE *f = open_memstream(&out, &size);
-    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, f, 1, &status);
+    scene_model *s = scene_file_load_text("t.scene", text, strlen(text), NULL, f, 1, &status);
     fclose(f);
     ck_assert_ptr_null(s);
-    ck_assert_int_eq(status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(status, STATUS_DATA);
     int errors = 0;
     for (const char *p = strstr(out, ": error: "); p; p = strstr(p + 1, ": error: "))
         errors++;

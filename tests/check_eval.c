@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/diag_print.h"
 #include "testlib.h"
 #include "lang/eval.h"
 #include "lang/parse.h"
@@ -26,14 +27,14 @@ static void eval_text(evaluated *r, const char *expr, const env *e)
 {
     char text[4096];
     env empty;
-    env_init(&empty);
+    env_init(&empty, NULL);
     memset(r, 0, sizeof *r);
     snprintf(text, sizeof text, "let x = %s", expr);
-    arena_init(&r->arena);
-    source_set_init(&r->sources);
+    arena_init(&r->arena, NULL);
+    source_set_init(&r->sources, NULL);
     ck_assert_int_eq(source_set_add(&r->sources, "t.scene", text, strlen(text), src_span_none()), 0);
     FILE *out = open_memstream(&r->messages, &r->size);
-    diag_init(&r->diag, &r->sources, out);
+    diag_init(&r->diag, &r->sources, out ? diag_print : NULL, out);
     ast *root = parse_file(&r->arena, &r->diag, &r->sources, 0);
     ck_assert_ptr_nonnull(root);
     ck_assert_int_eq(r->diag.errors, 0);
@@ -285,7 +286,7 @@ START_TEST(test_env_bind_find_restore)
     env e;
     value one = {VAL_NUMBER, 1, {0, 0, 0}, NULL, {-1, 0, 0}};
     value two = {VAL_NUMBER, 2, {0, 0, 0}, NULL, {-1, 0, 0}};
-    env_init(&e);
+    env_init(&e, NULL);
     ck_assert_ptr_null(env_find(&e, "r"));
     ck_assert(env_bind(&e, "r", one, src_span_none()));
     int mark = e.count;
@@ -309,7 +310,7 @@ START_TEST(test_eval_expr_uses_constants)
     env e;
     value r = {VAL_NUMBER, 2, {0, 0, 0}, NULL, {-1, 0, 0}};
     value c = {VAL_VECTOR, 0, {1, 2, 3}, NULL, {-1, 0, 0}};
-    env_init(&e);
+    env_init(&e, NULL);
     ck_assert(env_bind(&e, "r", r, src_span_none()));
     ck_assert(env_bind(&e, "c", c, src_span_none()));
     evaluated x;

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "export/export_pov.h"
 #include "testlib.h"
 
@@ -57,11 +58,11 @@ static const char scene_rect[] =
     "sphere { center [0, 0, 0] radius 1 }\n";
 
 /* Loads text (diagnostics, warnings included, thrown away). */
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
     FILE *null = fopen("/dev/null", "w");
-    rf_scene *s = scene_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
+    scene_model *s = scene_file_load_text("t.scene", text, strlen(text), NULL, null, 1, &status);
     if (null)
         fclose(null);
     ck_assert_msg(s != NULL, "scene did not load (status %d)", status);
@@ -73,7 +74,7 @@ static char *export_text(const char *text, const pov_opts *o, pov_notes *notes, 
 {
     char *buf = NULL;
     size_t len = 0;
-    rf_scene *s = load(text);
+    scene_model *s = load(text);
     FILE *fp = open_memstream(&buf, &len);
     ck_assert_ptr_nonnull(fp);
     *rc = pov_export_write(s, o, fp, notes);
@@ -131,7 +132,7 @@ END_TEST
 
 START_TEST(test_pov_render_size)
 {
-    rf_scene *s = load(scene_ortho);
+    scene_model *s = load(scene_ortho);
     int w, h;
     ck_assert_int_eq(pov_render_size(s, &w, &h), 3);
     ck_assert_int_eq(w, 192);
@@ -309,12 +310,34 @@ START_TEST(test_pov_export_write_mesh)
 }
 END_TEST
 
+/* [XCHK-MAP-QUADRIC-1] POV-Ray's cylinder and cone take the end centres
+ * and radii as refray's (z negated), `open` as it is.  Its torus lies
+ * about y at the origin: a matrix takes y to the axis and the origin to
+ * the centre.  By hand for axis +z: in POV-Ray's frame a = (0, 0, -1); the
+ * axis with the least component is x, u = a x (1,0,0) = (0, -1, 0),
+ * w = u x a = (1, 0, 0); rows u, a, w, then the centre (1, 2, -3). */
+START_TEST(test_pov_export_write_quadrics)
+{
+    pov_notes n;
+    char *sdl = export_default("cylinder { from [0, 0, 1] to [0, 2, 1] radius 0.5 }\n"
+                               "cylinder { from [0, 0, 1] to [0, 2, 1] radius 0.5 open }\n"
+                               "cone { from [0, 0, 0] to [0, 2, 0] radii 1 0 open }\n"
+                               "torus { center [1, 2, 3] axis [0, 0, 1] major 2 minor 0.5 }\n", &n);
+    ck_assert_has(sdl, "cylinder {\n  <0, 0, -1>, <0, 2, -1>, 0.5\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "cylinder {\n  <0, 0, -1>, <0, 2, -1>, 0.5\n  open\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "cone {\n  <0, 0, 0>, 1, <0, 2, 0>, 0\n  open\n  texture { RF_T0 }\n}");
+    ck_assert_has(sdl, "torus {\n  2, 0.5\n  sturm\n  matrix <0, -1, 0, 0, 0, -1, 1, 0, 0, 1, 2, -3>\n"
+                       "  texture { RF_T0 }\n}");
+    free(sdl);
+}
+END_TEST
+
 /* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
  * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
  * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
 START_TEST(test_pov_export_check_notes)
 {
-    rf_scene *s = load(scene_a);
+    scene_model *s = load(scene_a);
     pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
@@ -352,7 +375,7 @@ START_TEST(test_pov_export_write_refused)
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_refused, &o, &n, &rc);
-    ck_assert_int_eq(rc, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(rc, STATUS_DATA);
     ck_assert_int_eq(n.refused, 1);
     ck_assert_msg(strstr(n.reason, "point_light at t.scene:1") && strstr(n.reason, "inverse_square") &&
                       strstr(n.reason, "d0 1"), "%s", n.reason);
@@ -446,7 +469,7 @@ START_TEST(test_pov_export_file_atomic)
     FILE *old = fopen(path, "w");
     fputs("old contents\n", old);
     fclose(old);
-    rf_scene *s = load(scene_a);
+    scene_model *s = load(scene_a);
     pov_opts o = {0, "t.scene", 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_file(s, &o, path, &n, err, sizeof err), 0);
@@ -469,12 +492,12 @@ START_TEST(test_pov_export_file_failures)
     ck_assert_ptr_nonnull(mkdtemp(dir));
     pov_opts o = {0, NULL, 0, 0};
     pov_notes n;
-    rf_scene *bad = load(scene_refused), *good = load(scene_a);
+    scene_model *bad = load(scene_refused), *good = load(scene_a);
     snprintf(path, sizeof path, "%s/refused.pov", dir);
-    ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(pov_export_file(bad, &o, path, &n, err, sizeof err), STATUS_DATA);
     ck_assert_int_eq(access(path, F_OK), -1);
     snprintf(path, sizeof path, "%s/missing/out.pov", dir);
-    ck_assert_int_eq(pov_export_file(good, &o, path, &n, err, sizeof err), REFRAY_EXIT_IOERR);
+    ck_assert_int_eq(pov_export_file(good, &o, path, &n, err, sizeof err), STATUS_IO);
     ck_assert_msg(strstr(err, "cannot write") && strstr(err, "missing/out.pov"), "%s", err);
     ck_assert_int_eq(dir_entries(dir), 0);
     scene_free(bad);
@@ -586,13 +609,13 @@ START_TEST(test_cli_export_file_and_refusal)
     free(sdl);
     const char *argv2[] = {"refray", "export", bad, "--to", "pov", "-o", out2, NULL};
     run_refray(argv2, &r);
-    ck_assert_int_eq(r.code, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(r.code, 65);
     ck_assert_msg(strstr(r.err, "refray: error: cannot export '") && strstr(r.err, "inverse_square"), "%s",
                   r.err);
     ck_assert_int_eq(access(out2, F_OK), -1);
     const char *argv3[] = {"refray", "export", scene, "--to", "mitsuba", NULL};
     run_refray(argv3, &r);
-    ck_assert_int_eq(r.code, REFRAY_EXIT_USAGE);
+    ck_assert_int_eq(r.code, 64);
     ck_assert_msg(strstr(r.err, "unknown target 'mitsuba'") != NULL, "%s", r.err);
     remove_dir(dir);
 }
@@ -615,6 +638,7 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_matrix);
     tcase_add_test(sdl, test_pov_export_write_triangle);
     tcase_add_test(sdl, test_pov_export_write_mesh);
+    tcase_add_test(sdl, test_pov_export_write_quadrics);
     tcase_add_test(sdl, test_pov_export_check_notes);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);

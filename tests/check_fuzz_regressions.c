@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define REGRESSIONS "tests/fuzz-regressions"
@@ -32,10 +33,10 @@ START_TEST(test_fuzz_regressions_load_to_a_verdict)
         snprintf(path, sizeof path, "%s/%s", REGRESSIONS, e->d_name);
         FILE *sink = fopen("/dev/null", "w");
         int status;
-        rf_scene *s = scene_load(path, NULL, sink, 1, &status);
+        scene_model *s = scene_file_load(path, NULL, sink, 1, &status);
         fclose(sink);
-        ck_assert_msg(status == REFRAY_EXIT_OK || status == REFRAY_EXIT_DATAERR, "%s: status %d", path, status);
-        ck_assert_msg((s != NULL) == (status == REFRAY_EXIT_OK), "%s: scene and status disagree", path);
+        ck_assert_msg(status == STATUS_OK || status == STATUS_DATA, "%s: status %d", path, status);
+        ck_assert_msg((s != NULL) == (status == STATUS_OK), "%s: scene and status disagree", path);
         scene_free(s);
         files++;
     }

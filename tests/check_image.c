@@ -106,9 +106,9 @@ static void put_str(const char *path, const char *text)
 }
 
 /* A w x h image with distinct, irregular values in [lo, lo + span). */
-static rf_image make_image(int w, int h, double lo, double span)
+static img_buf make_image(int w, int h, double lo, double span)
 {
-    rf_image img;
+    img_buf img;
     ck_assert_int_eq(img_create(&img, w, h), 0);
     for (size_t i = 0; i < 3 * (size_t)w * (size_t)h; i++)
         img.rgb[i] = lo + span * fmod(0.618033988749895 * (double)(i + 1) * (double)(i + 7), 1.0);
@@ -257,11 +257,11 @@ END_TEST
 
 START_TEST(test_img_create_and_free)
 {
-    rf_image img;
-    ck_assert_int_eq(img_create(&img, 0, 3), IMG_ESOFTWARE);
+    img_buf img;
+    ck_assert_int_eq(img_create(&img, 0, 3), STATUS_INTERNAL);
     ck_assert_ptr_null(img.rgb);
-    ck_assert_int_eq(img_create(&img, 4, -1), IMG_ESOFTWARE);
-    ck_assert_int_eq(img_create(&img, 2, 3), IMG_OK);
+    ck_assert_int_eq(img_create(&img, 4, -1), STATUS_INTERNAL);
+    ck_assert_int_eq(img_create(&img, 2, 3), STATUS_OK);
     ck_assert_int_eq(img.width, 2);
     ck_assert_int_eq(img.height, 3);
     for (int i = 0; i < 18; i++)
@@ -311,7 +311,7 @@ START_TEST(test_img_write_pfm_layout)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(3, 2, -2.0, 1e6);
+    img_buf img = make_image(3, 2, -2.0, 1e6);
     tmpdir_make(&d);
     ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "a.pfm"), &img, NULL, err, sizeof err), 0);
     size_t n;
@@ -335,7 +335,7 @@ START_TEST(test_img_write_read_pfm_bit_exact)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(5, 4, -3.0, 1000.0), back;
+    img_buf img = make_image(5, 4, -3.0, 1000.0), back;
     img.rgb[0] = 0.1;   /* not a float: comes back as (float)0.1 */
     img.rgb[1] = 1e-40; /* a float subnormal */
     img.rgb[2] = 1e30;
@@ -359,7 +359,7 @@ START_TEST(test_img_write_pfm_counts_nonfinite_and_clamped)
     char path[256], err[256];
     img_write_stats st = {99, 99};
     img_write_opts o = img_write_opts_default();
-    rf_image img = make_image(2, 1, 0.0, 1.0), back;
+    img_buf img = make_image(2, 1, 0.0, 1.0), back;
     img.rgb[0] = NAN;
     img.rgb[1] = -INFINITY;
     img.rgb[2] = 1e300;
@@ -386,7 +386,7 @@ START_TEST(test_img_read_pfm_variants)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img;
+    img_buf img;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "v.pfm");
     /* 1x2 big-endian grey: bottom 2.0 (0x40000000), top -0.5 (0xBF000000) */
@@ -402,15 +402,15 @@ START_TEST(test_img_read_pfm_variants)
     img_free(&img);
     static const unsigned char truncated[] = "PF\n2 2\n-1.0\n\0\0\x80\x3F";
     put_file(path, truncated, sizeof truncated - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
     ck_assert_ptr_null(img.rgb);
     put_file(path, "P6\n1 1\n255\n\0\0\0", sizeof "P6\n1 1\n255\n\0\0\0" - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n-3 2\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n100000 100000\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "too large") != NULL, "%s", err);
     tmpdir_remove(&d);
 }
@@ -422,7 +422,7 @@ START_TEST(test_img_write_ppm_bytes)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(4, 3, -0.2, 1.6);
+    img_buf img = make_image(4, 3, -0.2, 1.6);
     img_write_opts o = img_write_opts_default();
     tmpdir_make(&d);
     for (int variant = 0; variant < 3; variant++) {
@@ -450,7 +450,7 @@ START_TEST(test_img_write_read_ppm)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(3, 5, 0.0, 1.0), back;
+    img_buf img = make_image(3, 5, 0.0, 1.0), back;
     img_write_opts o = img_write_opts_default();
     img_write_stats st;
     img.rgb[7] = NAN;
@@ -476,7 +476,7 @@ START_TEST(test_img_read_ppm_16bit)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img;
+    img_buf img;
     static const unsigned char ppm[] = "P6 2 1 65535\n\xFF\xFF\0\0\x80\0\0\0\0\x01\x12\x34";
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "w.ppm");
@@ -491,7 +491,7 @@ START_TEST(test_img_read_ppm_16bit)
     img_free(&img);
     static const unsigned char over[] = "P6 1 1 200\n\xC9\0\0";
     put_file(path, over, sizeof over - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     tmpdir_remove(&d);
 }
 END_TEST
@@ -543,7 +543,7 @@ START_TEST(test_img_write_png_chunks)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(2, 2, 0.0, 1.0);
+    img_buf img = make_image(2, 2, 0.0, 1.0);
     img_write_opts o = img_write_opts_default();
     size_t n;
     tmpdir_make(&d);
@@ -582,7 +582,7 @@ START_TEST(test_img_write_read_png_8bit)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(7, 5, -0.1, 1.3), back;
+    img_buf img = make_image(7, 5, -0.1, 1.3), back;
     img_write_opts o = img_write_opts_default();
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "e.png");
@@ -606,7 +606,7 @@ START_TEST(test_img_write_read_png_16bit)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(6, 4, 0.0, 1.0), back;
+    img_buf img = make_image(6, 4, 0.0, 1.0), back;
     img_write_opts o = img_write_opts_default();
     o.png_bits = 16;
     tmpdir_make(&d);
@@ -634,7 +634,7 @@ START_TEST(test_img_read_png_gamma_rules)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(3, 2, 0.05, 0.9), back;
+    img_buf img = make_image(3, 2, 0.05, 0.9), back;
     img_write_opts o = img_write_opts_default();
     size_t n;
     o.linear_png = 1;
@@ -656,7 +656,7 @@ START_TEST(test_img_read_png_gamma_rules)
         img_free(&back);
     }
     put_str(path, "\x89PNG\r\n\x1A\nnonsense");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "PNG") != NULL, "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -669,14 +669,14 @@ START_TEST(test_img_write_png_compiled_out)
 {
     tmpdir d;
     char path[256], err[256] = "";
-    rf_image img = make_image(2, 2, 0.0, 1.0), back;
+    img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "x.png");
-    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "this refray was built without libpng (PNG=0); write .ppm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x89PNG\r\n\x1A\n");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without libpng (PNG=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -692,7 +692,7 @@ START_TEST(test_img_write_read_exr_float_exact)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(9, 37, -50.0, 1e5), back; /* 37 rows: 3 ZIP chunks */
+    img_buf img = make_image(9, 37, -50.0, 1e5), back; /* 37 rows: 3 ZIP chunks */
     img_write_opts o = img_write_opts_default();
     img_write_stats st;
     img.rgb[0] = 1e300;
@@ -731,7 +731,7 @@ START_TEST(test_img_write_read_exr_half)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(16, 20, -10.0, 3000.0), back;
+    img_buf img = make_image(16, 20, -10.0, 3000.0), back;
     img_write_opts o = img_write_opts_default();
     img_write_stats st;
     static const double exact[] = {1.0, 0.5, 65504.0, -3.0, 0x1p-24, 1000.0};
@@ -764,11 +764,11 @@ START_TEST(test_img_read_exr_rejects_garbage)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img;
+    img_buf img;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "bad.exr");
     put_str(path, "\x76\x2f\x31\x01 this is not an image");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), IMG_EDATA);
+    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strncmp(err, "cannot read '", 13) == 0, "%s", err);
     ck_assert_ptr_null(img.rgb);
     tmpdir_remove(&d);
@@ -781,14 +781,14 @@ START_TEST(test_img_write_exr_compiled_out)
 {
     tmpdir d;
     char path[256], err[256] = "";
-    rf_image img = make_image(2, 2, 0.0, 1.0), back;
+    img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "x.exr");
-    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "this refray was built without OpenEXR (EXR=0); write .pfm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x76\x2f\x31\x01");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without OpenEXR (EXR=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -815,14 +815,14 @@ START_TEST(test_img_write_unknown_extension_is_usage_error)
 {
     tmpdir d;
     char path[256], err[256] = "";
-    rf_image img = make_image(2, 2, 0.0, 1.0), back;
+    img_buf img = make_image(2, 2, 0.0, 1.0), back;
     tmpdir_make(&d);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "a.jpg"), &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "a.jpg"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.jpg'") && strstr(err, ".pfm .ppm"), "%s", err);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "no file extension"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
-    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.tiff'"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -833,20 +833,20 @@ START_TEST(test_img_write_rejects_bad_arguments)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(2, 2, 0.0, 1.0), none = {0, 0, NULL};
+    img_buf img = make_image(2, 2, 0.0, 1.0), none = {0};
     img_write_opts o = img_write_opts_default();
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "a.pfm");
-    ck_assert_int_eq(img_write(path, &none, NULL, err, sizeof err), IMG_ESOFTWARE);
+    ck_assert_int_eq(img_write(path, &none, NULL, err, sizeof err), STATUS_INTERNAL);
     o.png_bits = 12;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "8 or 16"), "%s", err);
     o = img_write_opts_default();
     o.tone = 7;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     o = img_write_opts_default();
     o.exposure_stops = NAN;
-    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), IMG_EUSAGE);
+    ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), STATUS_USAGE);
     ck_assert_int_eq(count_entries(d.path), 0);
     img_free(&img);
     tmpdir_remove(&d);
@@ -856,8 +856,8 @@ END_TEST
 START_TEST(test_img_read_missing_file)
 {
     char err[256];
-    rf_image img;
-    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), IMG_ENOINPUT);
+    img_buf img;
+    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), STATUS_NO_INPUT);
     ck_assert_msg(strstr(err, "/nonexistent-refray-dir/none.pfm") && strstr(err, strerror(ENOENT)), "%s", err);
 }
 END_TEST
@@ -866,12 +866,12 @@ START_TEST(test_img_write_into_missing_directory)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(2, 2, 0.0, 1.0);
+    img_buf img = make_image(2, 2, 0.0, 1.0);
     tmpdir_make(&d);
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         char name[32];
         snprintf(name, sizeof name, "missing/out%s", built_exts[i]);
-        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, strerror(ENOENT)) && strstr(err, path), "%s", err);
     }
     ck_assert_int_eq(count_entries(d.path), 0);
@@ -886,11 +886,11 @@ START_TEST(test_img_write_name_too_long)
 {
     tmpdir d;
     char name[256], path[512], err[600];
-    rf_image img = make_image(2, 2, 0.0, 1.0);
+    img_buf img = make_image(2, 2, 0.0, 1.0);
     memset(name, 'n', 246);
     strcpy(name + 246, ".pfm");
     tmpdir_make(&d);
-    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+    ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
     ck_assert_msg(strstr(err, strerror(ENAMETOOLONG)), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     img_free(&img);
@@ -905,14 +905,14 @@ START_TEST(test_img_write_rename_failure_cleans_up)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(8, 8, 0.0, 1.0);
+    img_buf img = make_image(8, 8, 0.0, 1.0);
     struct stat sb;
     tmpdir_make(&d);
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         char name[32];
         snprintf(name, sizeof name, "dir%s", built_exts[i]);
         ck_assert_int_eq(mkdir(in_dir(path, sizeof path, &d, name), 0755), 0);
-        ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, "not a regular file"), "%s", err);
         ck_assert_int_eq(count_entries(d.path), i + 1);
         ck_assert(stat(path, &sb) == 0 && S_ISDIR(sb.st_mode));
@@ -931,7 +931,7 @@ START_TEST(test_img_write_failing_stream_keeps_old_file)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(64, 64, 0.0, 1.0);
+    img_buf img = make_image(64, 64, 0.0, 1.0);
     struct rlimit old, low;
     ck_assert_int_eq(getrlimit(RLIMIT_FSIZE, &old), 0);
     low = old;
@@ -945,7 +945,7 @@ START_TEST(test_img_write_failing_stream_keeps_old_file)
         ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &low), 0);
         int rc = img_write(path, &img, NULL, err, sizeof err);
         ck_assert_int_eq(setrlimit(RLIMIT_FSIZE, &old), 0);
-        ck_assert_msg(rc == IMG_EIO, "%s: rc %d, %s", name, rc, err);
+        ck_assert_msg(rc == STATUS_IO, "%s: rc %d, %s", name, rc, err);
         ck_assert_msg(strstr(err, strerror(EFBIG)), "%s: %s", name, err);
         size_t n;
         unsigned char *b = slurp(path, &n);
@@ -963,14 +963,14 @@ END_TEST
 START_TEST(test_img_write_stream_to_full_device)
 {
     char err[256];
-    rf_image img = make_image(32, 32, 0.0, 1.0);
+    img_buf img = make_image(32, 32, 0.0, 1.0);
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         FILE *f = fopen("/dev/full", "wb");
         ck_assert_msg(f != NULL, "/dev/full: %s", strerror(errno));
         err[0] = '\0';
         int rc = img_write_stream(f, img_format_from_path(built_exts[i]), &img, NULL, err, sizeof err);
         fclose(f);
-        ck_assert_msg(rc == IMG_EIO, "%s: rc %d", built_exts[i], rc);
+        ck_assert_msg(rc == STATUS_IO, "%s: rc %d", built_exts[i], rc);
         ck_assert_msg(strstr(err, strerror(ENOSPC)), "%s: %s", built_exts[i], err);
     }
     img_free(&img);
@@ -981,7 +981,7 @@ START_TEST(test_img_write_replaces_file_and_sets_mode)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(2, 2, 0.0, 1.0);
+    img_buf img = make_image(2, 2, 0.0, 1.0);
     struct stat sb;
     mode_t mask = umask(022);
     umask(mask);
@@ -1010,13 +1010,13 @@ START_TEST(test_img_write_into_read_only_directory)
 {
     tmpdir d;
     char path[256], err[256];
-    rf_image img = make_image(2, 2, 0.0, 1.0);
+    img_buf img = make_image(2, 2, 0.0, 1.0);
     tmpdir_make(&d);
     ck_assert_int_eq(chmod(d.path, 0555), 0);
     for (int i = 0; i < N_BUILT_EXTS; i++) {
         char name[32];
         snprintf(name, sizeof name, "ro%s", built_exts[i]);
-        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), IMG_EIO);
+        ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
         ck_assert_msg(strstr(err, strerror(EACCES)), "%s", err);
     }
     ck_assert_int_eq(count_entries(d.path), 0);

@@ -1,35 +1,36 @@
 /* Tests of `include` and `for` (src/scene/lower.c) and of reading scene files
- * (src/scene/scene.c scene_load, src/base/fileio.c).  Include trees are fixtures
+ * (src/io/scene_file.c, src/io/fileio.c, src/scene/lower.c).  Include trees are fixtures
  * under tests/scenes/include/; the tests run from the repository root.
  * IDs are those of spec/language.md. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 #define INC "tests/scenes/include/"
 
 typedef struct loaded {
-    rf_scene *scene;
+    scene_model *scene;
     int status;
     char *messages;
     size_t size;
 } loaded;
 
-static void load_file(loaded *l, const char *path, const rf_limits *limits)
+static void load_file(loaded *l, const char *path, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load(path, limits, out, 1, &l->status);
+    l->scene = scene_file_load(path, limits, out, 1, &l->status);
     fclose(out);
 }
 
-static void load_text(loaded *l, const char *text, const rf_limits *limits)
+static void load_text(loaded *l, const char *text, const scene_limits *limits)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load_text("t.scene", text, strlen(text), limits, out, 1, &l->status);
+    l->scene = scene_file_load_text("t.scene", text, strlen(text), limits, out, 1, &l->status);
     fclose(out);
 }
 
@@ -54,7 +55,7 @@ START_TEST(test_scene_load_include_relative_paths)
     loaded l;
     load_file(&l, INC "main.scene", NULL);
     ck_assert_msg(l.scene != NULL, "%s", l.messages);
-    const rf_scene *s = l.scene;
+    const scene_model *s = l.scene;
     ck_assert_int_eq(s->light_count, 1);
     ck_assert_vec_near(s->lights[0].position, vec_make(0, 10, 0), 0);
     /* r = 2 comes from parts/more.scene, found next to parts/lamps.scene. */
@@ -88,7 +89,7 @@ START_TEST(test_scene_load_include_error_location)
     loaded l;
     load_file(&l, INC "with_error.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(l.messages, INC "parts/bad.scene:2:17: error: radius must be > 0, got -1\n"
                                  "    2 | sphere { radius -1 }\n"
                                  "      |                 ^~\n"
@@ -104,7 +105,7 @@ START_TEST(test_scene_load_include_cycle)
     loaded l;
     load_file(&l, INC "cycle_a.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "cycle_b.scene:1:9: error: include cycle: 'cycle_a.scene' is already being read");
     loaded_done(&l);
 }
@@ -115,7 +116,7 @@ END_TEST
 START_TEST(test_scene_load_include_depth)
 {
     /* chain.scene -> c1 -> c2 -> c3: three levels of include. */
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     loaded l;
     lim.max_include_depth = 3;
     load_file(&l, INC "chain.scene", &lim);
@@ -141,11 +142,11 @@ START_TEST(test_scene_load_include_directory_and_missing)
 {
     loaded l;
     load_file(&l, INC "directory.scene", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "directory.scene:2:9: error: '" INC "parts' is a directory, not a file");
     loaded_done(&l);
     load_file(&l, INC "missing.scene", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "missing.scene:2:9: error: cannot open '" INC
                                      "parts/nowhere.scene': No such file or directory");
     loaded_done(&l);
@@ -159,17 +160,17 @@ START_TEST(test_scene_load_file_errors)
     loaded l;
     load_file(&l, INC "no_such.scene", NULL);
     ck_assert_ptr_null(l.scene);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_NOINPUT);
+    ck_assert_int_eq(l.status, STATUS_NO_INPUT);
     ck_assert_str_eq(first_line(&l), "refray: error: cannot open '" INC "no_such.scene': No such file or directory");
     loaded_done(&l);
     load_file(&l, INC "parts", NULL);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_NOINPUT);
+    ck_assert_int_eq(l.status, STATUS_NO_INPUT);
     ck_assert_str_eq(first_line(&l), "refray: error: '" INC "parts' is a directory, not a file");
     loaded_done(&l);
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_file_bytes = 10;
     load_file(&l, INC "main.scene", &lim);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_ptr_nonnull(strstr(first_line(&l), "bytes, over the limit of 10 (--max-file-size)"));
     loaded_done(&l);
     /* The limit holds for included files too. */
@@ -180,7 +181,7 @@ START_TEST(test_scene_load_file_errors)
     /* big_include.scene is 26 bytes, parts/big.scene 110. */
     lim.max_file_bytes = 109;
     load_file(&l, INC "big_include.scene", &lim);
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     ck_assert_str_eq(first_line(&l), INC "big_include.scene:1:9: error: '" INC "parts/big.scene' is 110 bytes, over "
                                      "the limit of 109 (--max-file-size)");
     loaded_done(&l);
@@ -255,7 +256,7 @@ END_TEST
  * and over the whole load; an error in the body is never reached then. */
 START_TEST(test_lower_for_iteration_cap)
 {
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_loop_iterations = 10;
     loaded l;
     load_text(&l, "for i in 1 .. 11 { sphere { radius -1 } }", &lim);
@@ -295,7 +296,7 @@ START_TEST(test_lower_for_nested)
     ck_assert_vec_near(l.scene->prims[11].u.sphere.center, vec_make(2, 3, 0), 0);
     loaded_done(&l);
     /* 3 outer + 3 x 4 inner = 15 iterations. */
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_loop_iterations = 15;
     load_text(&l, "for i in 0 .. 2 { for j in 0 .. 3 { sphere {} } }", &lim);
     ck_assert_ptr_nonnull(l.scene);

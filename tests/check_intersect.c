@@ -43,9 +43,9 @@ static ray make_ray(vec3 o, vec3 d)
     return r;
 }
 
-static rf_prim prim_blank(rf_prim_kind kind)
+static scene_prim prim_blank(scene_prim_kind kind)
 {
-    rf_prim p;
+    scene_prim p;
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
@@ -53,40 +53,40 @@ static rf_prim prim_blank(rf_prim_kind kind)
     return p;
 }
 
-static rf_prim prim_sphere(vec3 c, double radius)
+static scene_prim prim_sphere(vec3 c, double radius)
 {
-    rf_prim p = prim_blank(PRIM_SPHERE);
+    scene_prim p = prim_blank(PRIM_SPHERE);
     p.u.sphere.center = c;
     p.u.sphere.radius = radius;
     return p;
 }
 
-static rf_prim prim_plane(vec3 point, vec3 n)
+static scene_prim prim_plane(vec3 point, vec3 n)
 {
-    rf_prim p = prim_blank(PRIM_PLANE);
+    scene_prim p = prim_blank(PRIM_PLANE);
     p.u.plane.point = point;
     p.u.plane.normal = n;
     return p;
 }
 
-static rf_prim prim_triangle(vec3 a, vec3 b, vec3 c)
+static scene_prim prim_triangle(vec3 a, vec3 b, vec3 c)
 {
-    rf_prim p = prim_blank(PRIM_TRIANGLE);
+    scene_prim p = prim_blank(PRIM_TRIANGLE);
     p.u.triangle.p[0] = a;
     p.u.triangle.p[1] = b;
     p.u.triangle.p[2] = c;
     return p;
 }
 
-static rf_prim prim_box(vec3 lo, vec3 hi)
+static scene_prim prim_box(vec3 lo, vec3 hi)
 {
-    rf_prim p = prim_blank(PRIM_BOX);
+    scene_prim p = prim_blank(PRIM_BOX);
     p.u.box.lo = lo;
     p.u.box.hi = hi;
     return p;
 }
 
-static void prim_set_xform(rf_prim *p, xform to_world)
+static void prim_set_xform(scene_prim *p, xform to_world)
 {
     p->has_xform = 1;
     p->to_world = to_world;
@@ -148,9 +148,9 @@ START_TEST(test_isect_sphere_tangent_is_one_hit)
 {
     /* Unit sphere, ray along x at y = 1: the discriminant is exactly 0 and
      * the graze at (0,1,0), t = 5, counts once. */
-    rf_prim s = prim_sphere(vec_make(0, 0, 0), 1);
+    scene_prim s = prim_sphere(vec_make(0, 0, 0), 1);
     ray r = make_ray(vec_make(-5, 1, 0), vec_make(1, 0, 0));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 1);
     ck_assert_near(out[0].t, 5.0, 0.0);
     ck_assert_vec_near(out[0].point, vec_make(0, 1, 0), 0.0);
@@ -194,8 +194,8 @@ START_TEST(test_isect_sphere_from_inside_hits_far_side)
     ck_assert_near(h.t, 3.0, 1e-15);
     ck_assert_vec_near(h.normal, vec_make(0, -1, 0), 1e-15);
     ck_assert_int_eq(h.entering, 0);
-    rf_prim s = prim_sphere(vec_make(1, 1, 1), 3);
-    hit out[2];
+    scene_prim s = prim_sphere(vec_make(1, 1, 1), 3);
+    hit out[ISECT_MAX_CROSSINGS];
     r = make_ray(vec_make(1, 1, 1), vec_make(0, -1, 0));
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 1);
 }
@@ -221,7 +221,7 @@ END_TEST
 START_TEST(test_isect_sphere_respects_tmin_tmax)
 {
     /* Unit sphere at the origin, ray from z = -9 up: roots t = 8 and 10. */
-    rf_prim s = prim_sphere(vec_make(0, 0, 0), 1);
+    scene_prim s = prim_sphere(vec_make(0, 0, 0), 1);
     ray r = make_ray(vec_make(0, 0, -9), vec_make(0, 0, 1));
     hit h;
     r.tmax = 8.0; /* open interval: 8 itself is out */
@@ -238,7 +238,7 @@ START_TEST(test_isect_sphere_respects_tmin_tmax)
     r.tmin = 8.5;
     r.tmax = 10.0;
     ck_assert(!isect_prim(&s, &r, &h));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     r = make_ray(vec_make(0, 0, -9), vec_make(0, 0, 1));
     ck_assert_int_eq(isect_prim_all(&s, &r, out), 2);
     ck_assert_near(out[0].t, 8.0, 0.0);
@@ -470,7 +470,7 @@ START_TEST(test_isect_triangle_shading_normal_interpolated)
     ck_assert(isect_triangle(v, n, &r, &h));
     ck_assert_vec_near(h.shading_normal, vec_scale(vec_make(1, 1, 2), 1 / sqrt(6.0)), 1e-15);
     ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 0.0);
-    rf_prim p = prim_triangle(v[0], v[1], v[2]);
+    scene_prim p = prim_triangle(v[0], v[1], v[2]);
     p.u.triangle.has_normals = 1;
     memcpy(p.u.triangle.n, n, sizeof n);
     r = make_ray(vec_make(0.25, 0.25, 2), vec_make(0, 0, -1));
@@ -576,9 +576,9 @@ START_TEST(test_isect_box_hit_by_hand)
 {
     /* Box [-1,1]x[-2,2]x[-3,3]; from (-5,.5,.5) along +x: enters x = -1 at
      * t = 4 (normal -x), leaves x = 1 at t = 6 (normal +x). */
-    rf_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
+    scene_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
     ray r = make_ray(vec_make(-5, 0.5, 0.5), vec_make(1, 0, 0));
-    hit h, out[2];
+    hit h, out[ISECT_MAX_CROSSINGS];
     ck_assert(isect_box(bx.u.box.lo, bx.u.box.hi, &r, &h));
     ck_assert_near(h.t, 4.0, 0.0);
     ck_assert_vec_near(h.point, vec_make(-1, 0.5, 0.5), 0.0);
@@ -653,9 +653,9 @@ START_TEST(test_isect_box_edge_touch_is_one_hit)
      * the edge x = 0, y = 1 at t = sqrt 2: one crossing.  From (-1,-1,.5)
      * it goes in through the edge x = y = 0 (t = sqrt 2, the tie goes to
      * the x face) and out through x = y = 1 (t = 2 sqrt 2). */
-    rf_prim bx = prim_box(vec_make(0, 0, 0), vec_make(1, 1, 1));
+    scene_prim bx = prim_box(vec_make(0, 0, 0), vec_make(1, 1, 1));
     vec3 dir = vec_normalize(vec_make(1, 1, 0));
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     ray r = make_ray(vec_make(-1, 0, 0.5), dir);
     ck_assert_int_eq(isect_prim_all(&bx, &r, out), 1);
     ck_assert_near(out[0].t, sqrt(2.0), 1e-15);
@@ -670,7 +670,7 @@ END_TEST
 
 START_TEST(test_isect_box_tmin_tmax)
 {
-    rf_prim bx = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
+    scene_prim bx = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
     hit h;
     ray r = make_ray(vec_make(-5, 0, 0), vec_make(1, 0, 0)); /* t 4 and 6 */
     r.tmax = 4.0;
@@ -691,9 +691,9 @@ START_TEST(test_isect_prim_ellipsoid)
      * (-10,0,0): x = -2, t = 8, normal -x.  From (-10,0.5,0): x = -sqrt 3,
      * t = 10 - sqrt 3, normal along the gradient (x/4, y, 0) =
      * (-sqrt3/4, 1/2, 0). */
-    rf_prim e = prim_sphere(vec_make(0, 0, 0), 1);
+    scene_prim e = prim_sphere(vec_make(0, 0, 0), 1);
     prim_set_xform(&e, xform_scale(vec_make(2, 1, 1)));
-    hit h, out[2];
+    hit h, out[ISECT_MAX_CROSSINGS];
     ray r = make_ray(vec_make(-10, 0, 0), vec_make(1, 0, 0));
     ck_assert(isect_prim(&e, &r, &h));
     ck_assert_near(h.t, 8.0, 1e-14);
@@ -722,7 +722,7 @@ START_TEST(test_isect_prim_rotated_box)
 {
     /* Box [-1,1]x[-.5,.5]x[-.5,.5] turned 90 degrees about z spans
      * [-.5,.5]x[-1,1]: up +y from (0,-5,0) it is met at y = -1, t = 4. */
-    rf_prim bx = prim_box(vec_make(-1, -0.5, -0.5), vec_make(1, 0.5, 0.5));
+    scene_prim bx = prim_box(vec_make(-1, -0.5, -0.5), vec_make(1, 0.5, 0.5));
     prim_set_xform(&bx, xform_rotate_xyz(vec_make(0, 0, 90)));
     hit h;
     ray r = make_ray(vec_make(0, -5, 0), vec_make(0, 1, 0));
@@ -735,7 +735,7 @@ START_TEST(test_isect_prim_rotated_box)
      * y' = (y-x)/sqrt2.  Along +x at y = 0.2 the ray enters where
      * y' = 1, x = 0.2 - sqrt 2, so t = 5.2 - sqrt 2 from x = -5; the face
      * y' = 1 has world normal (-1,1,0)/sqrt 2. */
-    rf_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
+    scene_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
     prim_set_xform(&cube, xform_rotate_xyz(vec_make(0, 0, 45)));
     r = make_ray(vec_make(-5, 0.2, 0), vec_make(1, 0, 0));
     ck_assert(isect_prim(&cube, &r, &h));
@@ -749,7 +749,7 @@ START_TEST(test_isect_prim_translated_scaled_disk)
 {
     /* A unit disk (normal +z) scaled by 3 and moved to (0,0,2) is a radius
      * 3 disk in z = 2: from (2.9,0,10) down, t = 8; at x = 3.1, a miss. */
-    rf_prim d = prim_blank(PRIM_DISK);
+    scene_prim d = prim_blank(PRIM_DISK);
     d.u.disk.normal = vec_make(0, 0, 1);
     d.u.disk.radius = 1;
     xform s = xform_scale(vec_make(3, 3, 3)), t = xform_translate(vec_make(0, 0, 2));
@@ -767,21 +767,21 @@ END_TEST
 START_TEST(test_isect_prim_bounds)
 {
     vec3 lo, hi;
-    rf_prim s = prim_sphere(vec_make(1, 2, 3), 2);
+    scene_prim s = prim_sphere(vec_make(1, 2, 3), 2);
     ck_assert(isect_prim_bounds(&s, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(-1, 0, 1), 0.0);
     ck_assert_vec_near(hi, vec_make(3, 4, 5), 0.0);
-    rf_prim pl = prim_plane(vec_make(0, 0, 0), vec_make(0, 1, 0));
+    scene_prim pl = prim_plane(vec_make(0, 0, 0), vec_make(0, 1, 0));
     ck_assert(!isect_prim_bounds(&pl, &lo, &hi));
     /* Disk facing +z, radius 2: flat in z, +-2 in x and y. */
-    rf_prim d = prim_blank(PRIM_DISK);
+    scene_prim d = prim_blank(PRIM_DISK);
     d.u.disk.normal = vec_make(0, 0, 1);
     d.u.disk.radius = 2;
     ck_assert(isect_prim_bounds(&d, &lo, &hi));
     ck_assert_vec_near(lo, vec_make(-2, -2, 0), 0.0);
     ck_assert_vec_near(hi, vec_make(2, 2, 0), 0.0);
     /* The 45-degree cube: corners reach sqrt 2 in x and y. */
-    rf_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
+    scene_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
     prim_set_xform(&cube, xform_rotate_xyz(vec_make(0, 0, 45)));
     ck_assert(isect_prim_bounds(&cube, &lo, &hi));
     ck_assert_vec_near(hi, vec_make(sqrt(2.0), sqrt(2.0), 1), 1e-15);
@@ -848,7 +848,7 @@ START_TEST(test_ray_spawn_sphere_no_self_hit)
     rng g = {41, 0};
     for (int e = -6; e <= 6; e++) {
         double s = pow(10.0, e);
-        rf_prim sp = prim_sphere(vec_scale(vec_make(0.3, -0.2, 0.1), s), s);
+        scene_prim sp = prim_sphere(vec_scale(vec_make(0.3, -0.2, 0.1), s), s);
         for (int i = 0; i < 300; i++) {
             vec3 eye = vec_add(sp.u.sphere.center, vec_scale(rng_unit(&g), 5 * s));
             vec3 aim = vec_add(sp.u.sphere.center, vec_scale(rng_unit(&g), 0.9 * s));
@@ -882,11 +882,11 @@ START_TEST(test_ray_spawn_sheets_no_self_hit)
     for (int e = -6; e <= 6; e++) {
         double s = pow(10.0, e);
         vec3 n = vec_normalize(vec_make(0.2, 1, -0.3));
-        rf_prim pl = prim_plane(vec_scale(vec_make(0.1, -0.4, 0.2), s), n);
-        rf_prim tr = prim_triangle(vec_scale(vec_make(-1, -0.5, -1), s),
+        scene_prim pl = prim_plane(vec_scale(vec_make(0.1, -0.4, 0.2), s), n);
+        scene_prim tr = prim_triangle(vec_scale(vec_make(-1, -0.5, -1), s),
                                    vec_scale(vec_make(1.2, 0.1, -0.9), s),
                                    vec_scale(vec_make(0.1, 0.3, 1.3), s));
-        const rf_prim *sheets[2] = {&pl, &tr};
+        const scene_prim *sheets[2] = {&pl, &tr};
         for (int k = 0; k < 2; k++) {
             for (int i = 0; i < 300; i++) {
                 vec3 eye = vec_scale(rng_unit(&g), 4 * s);
@@ -912,11 +912,11 @@ START_TEST(test_ray_spawn_hit_large_geometry_near_origin)
     /* A 2e3-wide floor triangle and a 1e3-radius ground sphere hit near the
      * world origin: the hit point's error is relative to the vertices or
      * the centre (1e3), so ray_spawn_hit must offset by that, not by |p|. */
-    rf_prim floor = prim_triangle(vec_make(-1e3, 0, -1e3), vec_make(1e3, 0, -1e3),
+    scene_prim floor = prim_triangle(vec_make(-1e3, 0, -1e3), vec_make(1e3, 0, -1e3),
                                   vec_make(0.37, 0, 1.3e3));
     floor.u.triangle.p[0].y = 1e-3; /* tilt it so y is not exact */
-    rf_prim ground = prim_sphere(vec_make(0.2, -1e3, 0.1), 1e3);
-    const rf_prim *prims[2] = {&floor, &ground};
+    scene_prim ground = prim_sphere(vec_make(0.2, -1e3, 0.1), 1e3);
+    const scene_prim *prims[2] = {&floor, &ground};
     rng g = {43, 0};
     for (int k = 0; k < 2; k++) {
         for (int i = 0; i < 500; i++) {
@@ -935,14 +935,14 @@ END_TEST
 START_TEST(test_ray_spawn_ellipsoid_and_box)
 {
     /* Transformed primitives: an ellipsoid and a rotated box at scale 1e3. */
-    rf_prim e = prim_sphere(vec_make(0, 0, 0), 1);
+    scene_prim e = prim_sphere(vec_make(0, 0, 0), 1);
     xform sc = xform_scale(vec_make(2e3, 1e3, 0.5e3)), mv = xform_translate(vec_make(5e3, 0, 0));
     prim_set_xform(&e, xform_compose(&mv, &sc));
-    rf_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
+    scene_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
     xform rot = xform_rotate_xyz(vec_make(10, 20, 30)), big = xform_scale(vec_make(1e3, 1e3, 1e3));
     xform rb = xform_compose(&rot, &big);
     prim_set_xform(&bx, xform_compose(&mv, &rb));
-    const rf_prim *prims[2] = {&e, &bx};
+    const scene_prim *prims[2] = {&e, &bx};
     rng g = {44, 0};
     for (int k = 0; k < 2; k++) {
         for (int i = 0; i < 500; i++) {
@@ -975,7 +975,7 @@ END_TEST
  * strictly inside on every axis (by the offset). */
 START_TEST(test_ray_spawn_hit_shadow_and_box_edges)
 {
-    rf_prim bx = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
+    scene_prim bx = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
     hit h;
     /* From inside, straight at the edge x = -1, y = 1: the slab tie goes to
      * x (the lower axis), so the hit is on the face x = -1 with y = 1. */
@@ -999,9 +999,9 @@ END_TEST
 
 START_TEST(test_isect_prim_magnitude)
 {
-    rf_prim s = prim_sphere(vec_make(1, -7, 3), 2);
+    scene_prim s = prim_sphere(vec_make(1, -7, 3), 2);
     ck_assert_near(isect_prim_magnitude(&s), 9.0, 0.0);
-    rf_prim t = prim_triangle(vec_make(0, 0, 0), vec_make(-40, 1, 0), vec_make(3, 3, 3));
+    scene_prim t = prim_triangle(vec_make(0, 0, 0), vec_make(-40, 1, 0), vec_make(3, 3, 3));
     ck_assert_near(isect_prim_magnitude(&t), 40.0, 0.0);
     /* Scaled by 10 and moved by (0,0,-100): |L|inf 10, so 10 * 9 + 100. */
     xform sc = xform_scale(vec_make(10, 10, 10)), mv = xform_translate(vec_make(0, 0, -100));

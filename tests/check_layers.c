@@ -6,7 +6,9 @@
  * layer or of a layer below it in LAYER_ORDER, never one above; and no
  * chain of includes returns to where it started.  Generated headers (the parser's
  * and the oracle list, under build/) are written without a folder and are
- * allowed everywhere they are used.
+ * allowed everywhere they are used.  The public header, include/refray.h,
+ * is included as "refray.h" by the layers from PUBLIC_FROM up only, and
+ * itself includes standard headers only.
  */
 #include <dirent.h>
 #include <stdio.h>
@@ -16,10 +18,20 @@
 
 /* The allowed order, lowest first: written here and nowhere else. */
 static const char *const LAYER_ORDER[] = {
-    "base", "image", "lang", "scene", "render", "oracle", "export", "verify", "io", "api", "cli", NULL
+    "base", "image", "lang", "scene", "render", "io", "oracle", "export", "verify", "api", "cli", NULL
 };
 
 static const char *const GENERATED[] = {"scene.tab.h", "scene.lex.h", "oracle_list.h", NULL};
+
+#define PUBLIC_HEADER "refray.h"
+#define PUBLIC_FROM "api"
+
+/* The headers of the C99 standard library, and of POSIX that the public
+ * header could need: the only ones refray.h may include. */
+static const char *const STANDARD[] = {
+    "assert.h", "complex.h", "ctype.h", "errno.h", "fenv.h", "float.h", "inttypes.h", "iso646.h", "limits.h",
+    "locale.h", "math.h", "setjmp.h", "signal.h", "stdarg.h", "stdbool.h", "stddef.h", "stdint.h", "stdio.h",
+    "stdlib.h", "string.h", "tgmath.h", "time.h", "wchar.h", "wctype.h", NULL};
 
 enum { MAX_FILES = 512, MAX_INCLUDES = 64, NAME_LEN = 600 };
 
@@ -139,6 +151,12 @@ START_TEST(test_no_include_runs_up)
             const char *inc = f->includes[k];
             if (is_generated(inc))
                 continue;
+            if (strcmp(inc, PUBLIC_HEADER) == 0) {
+                ck_assert_msg(f->layer >= layer_rank(PUBLIC_FROM, strlen(PUBLIC_FROM)),
+                              "src/%s (layer %s) includes the public header; only %s and above may", f->path,
+                              LAYER_ORDER[f->layer], PUBLIC_FROM);
+                continue;
+            }
             const char *slash = strchr(inc, '/');
             ck_assert_msg(slash != NULL, "src/%s includes \"%s\" without its layer folder", f->path, inc);
             int rank = layer_rank(inc, (size_t)(slash - inc));
@@ -229,6 +247,59 @@ START_TEST(test_cycle_finder_sees_circle)
 }
 END_TEST
 
+/* The #include lines of path, quoted and angled, as "<x>" or "\"x\"". */
+static int all_includes(const char *path, char names[][NAME_LEN], int max)
+{
+    FILE *fp = fopen(path, "r");
+    char line[512];
+    int n = 0;
+    ck_assert_msg(fp != NULL, "cannot open %s", path);
+    while (fgets(line, sizeof line, fp)) {
+        const char *p = line;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (*p++ != '#')
+            continue;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        if (strncmp(p, "include", 7) != 0)
+            continue;
+        p += 7;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        ck_assert_int_lt(n, max);
+        snprintf(names[n++], NAME_LEN, "%.*s", (int)strcspn(p, "\r\n"), p);
+    }
+    fclose(fp);
+    return n;
+}
+
+static int is_standard(const char *include)
+{
+    size_t n = strlen(include);
+    if (n < 3 || include[0] != '<' || include[n - 1] != '>')
+        return 0;
+    for (int i = 0; STANDARD[i]; i++)
+        if (strlen(STANDARD[i]) == n - 2 && strncmp(include + 1, STANDARD[i], n - 2) == 0)
+            return 1;
+    return 0;
+}
+
+/* [EMBED-HEADER-1] include/refray.h includes standard headers only. */
+START_TEST(test_public_header_standard_only)
+{
+    static char names[MAX_INCLUDES][NAME_LEN];
+    int n = all_includes("include/" PUBLIC_HEADER, names, MAX_INCLUDES);
+    ck_assert_int_gt(n, 0);
+    for (int i = 0; i < n; i++)
+        ck_assert_msg(is_standard(names[i]), "include/refray.h includes %s, not a standard header", names[i]);
+    ck_assert(is_standard("<stdio.h>"));
+    ck_assert(!is_standard("\"stdio.h\""));
+    ck_assert(!is_standard("<png.h>"));
+    ck_assert(!is_standard("<scene/scene.h>"));
+}
+END_TEST
+
 START_TEST(test_includes_written_plainly)
 {
     static tree t;
@@ -265,6 +336,7 @@ Suite *suite_layers(void)
     tcase_add_test(tc, test_no_include_circle);
     tcase_add_test(tc, test_cycle_finder_sees_circle);
     tcase_add_test(tc, test_includes_written_plainly);
+    tcase_add_test(tc, test_public_header_standard_only);
     suite_add_tcase(s, tc);
     return s;
 }

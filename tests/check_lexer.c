@@ -35,10 +35,10 @@ static void lex_bytes(lex_run *run, const char *text, size_t len)
 {
     yyscan_t scanner;
     memset(run, 0, sizeof *run);
-    arena_init(&run->arena);
-    source_set_init(&run->sources);
+    arena_init(&run->arena, NULL);
+    source_set_init(&run->sources, NULL);
     ck_assert_int_eq(source_set_add(&run->sources, "t.scene", text, len, src_span_none()), 0);
-    diag_init(&run->diag, &run->sources, NULL);
+    diag_init(&run->diag, &run->sources, NULL, NULL);
     run->ctx.arena = &run->arena;
     run->ctx.diag = &run->diag;
     run->ctx.sources = &run->sources;
@@ -341,40 +341,95 @@ END_TEST
 START_TEST(test_scan_keywords_versus_names)
 {
     lex_run run;
-    lex(&run, "sphere spheres Sphere Kd kd n N sqrt sqrt( sqrt\t(x foo( foo (x _a1 let in material");
-    static const int kinds[] = {KEYWORD, NAME, NAME, KEYWORD, NAME, KEYWORD, NAME, NAME, FUNC, '(', FUNC, '(', NAME,
-                                CALLNAME, '(', NAME, '(', NAME, NAME, LET, IN, MATERIAL};
-    assert_kinds(&run, kinds, 22);
-    ck_assert_int_eq(run.tokens[0].value.id, KW_SPHERE);
+    lex(&run, "material m { Kd kd n N } sphere spheres Sphere sqrt sqrt( sqrt\t(x foo( foo (x _a1 let in material");
+    static const int kinds[] = {MATERIAL, NAME, '{', KEYWORD, NAME, KEYWORD, NAME, '}', KEYWORD, NAME, NAME, NAME,
+                                FUNC, '(', FUNC, '(', NAME, CALLNAME, '(', NAME, '(', NAME, NAME, LET, IN, MATERIAL};
+    assert_kinds(&run, kinds, 26);
     ck_assert_int_eq(run.tokens[3].value.id, KW_KD);
     ck_assert_int_eq(run.tokens[5].value.id, KW_N);
-    ck_assert_str_eq(run.tokens[7].value.text, "sqrt");
-    ck_assert_int_eq(run.tokens[8].value.id, KW_SQRT);
-    ck_assert_int_eq(run.tokens[10].value.id, KW_SQRT);
-    ck_assert_str_eq(run.tokens[1].value.text, "spheres");
-    ck_assert_str_eq(run.tokens[13].value.text, "foo");
-    ck_assert_str_eq(run.tokens[18].value.text, "_a1");
+    ck_assert_int_eq(run.tokens[8].value.id, KW_SPHERE);
+    ck_assert_str_eq(run.tokens[11].value.text, "sqrt");
+    ck_assert_int_eq(run.tokens[12].value.id, KW_SQRT);
+    ck_assert_int_eq(run.tokens[14].value.id, KW_SQRT);
+    ck_assert_str_eq(run.tokens[9].value.text, "spheres");
+    ck_assert_str_eq(run.tokens[17].value.text, "foo");
+    ck_assert_str_eq(run.tokens[22].value.text, "_a1");
     lex_done(&run);
 }
 END_TEST
 
+/* [LANG-LEX-WORD-3] a property word is a keyword only where a property may
+ * start: in a block body, once the property before has all its values and
+ * no operator waits for an operand.  Everywhere else it is a name. */
+START_TEST(test_scan_property_words_in_context)
+{
+    static const struct {
+        const char *text;
+        int at;        /* the token checked */
+        int kind;      /* KEYWORD or NAME */
+    } cases[] = {
+        {"let width = 4", 1, NAME},
+        {"for t in 0 .. 3 { }", 1, NAME},
+        {"for i in 0 .. n { }", 5, NAME},
+        {"material n { }", 1, NAME},
+        {"oracle width", 1, NAME},
+        {"sphere { radius 1 }", 2, KEYWORD},
+        {"sphere { radius width / 2 }", 3, NAME},
+        {"sphere { radius 2 * radius }", 5, NAME},
+        {"sphere { radius 1 center [radius, 0, 0] }", 4, KEYWORD},
+        {"sphere { radius 1 center [radius, 0, 0] }", 6, NAME},
+        {"sphere { radius (scale) }", 4, NAME},
+        {"sphere { radius sqrt(scale) }", 5, NAME},
+        {"sphere { radius sqrt(scale) scale 2 }", 7, KEYWORD},
+        {"sphere { radius -scale }", 4, NAME},
+        {"sphere { radius 1 -scale }", 5, NAME},
+        {"sphere { radius r scale 2 }", 4, KEYWORD},
+        {"camera { orthographic width width }", 3, KEYWORD},
+        {"camera { orthographic width width }", 4, NAME},
+        {"triangle { vertices a scale c }", 4, NAME},
+        {"triangle { vertices a b c scale 2 }", 6, KEYWORD},
+        {"distributed_light { disk c n r power 1 }", 4, NAME},
+        {"distributed_light { disk c n r power 1 }", 6, KEYWORD},
+        {"sphere { material { n 2 } radius 1 }", 4, KEYWORD},
+        {"sphere { material { n 2 } radius 1 }", 7, KEYWORD},
+        {"sphere { material m radius 1 }", 4, KEYWORD},
+        {"material glass { t 1 }", 3, KEYWORD},
+        {"for i in 0 .. 1 { sphere { radius i } }", 9, KEYWORD},
+        {"for i in 0 .. 1 { radius }", 7, NAME},
+        {"cone { radii 1 0 open }", 5, KEYWORD},
+        {"cone { radii a open }", 4, NAME},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        lex_run run;
+        lex(&run, cases[i].text);
+        ck_assert_msg(cases[i].at < run.count, "%s: %d tokens", cases[i].text, run.count);
+        ck_assert_msg(run.tokens[cases[i].at].token == cases[i].kind, "%s: token %d is %d, expected %d",
+                      cases[i].text, cases[i].at, run.tokens[cases[i].at].token, cases[i].kind);
+        lex_done(&run);
+    }
+}
+END_TEST
+
 /* Every word of the keyword table scans as its own class (a function when
- * called). */
+ * called, a property where a property may start: in a block body). */
 START_TEST(test_scan_every_keyword)
 {
     static const int statements[] = {LET, FOR, IN, INCLUDE, ORACLE, MATERIAL};
     for (int i = 0; i < KEYWORD_COUNT; i++) {
         const keyword_info *info = keyword_get((keyword_id)i);
         char text[64];
-        snprintf(text, sizeof text, "%s%s", info->name, info->cls == KWC_FUNCTION ? "(" : "");
+        int property = info->cls == KWC_PROPERTY;
+        snprintf(text, sizeof text, "%s%s%s", property ? "box { " : "", info->name,
+                 info->cls == KWC_FUNCTION ? "(" : "");
         lex_run run;
         lex(&run, text);
-        ck_assert_int_eq(run.count, info->cls == KWC_FUNCTION ? 2 : 1);
+        int at = property ? 2 : 0;
+        ck_assert_int_eq(run.count, property ? 3 : info->cls == KWC_FUNCTION ? 2 : 1);
         if (info->cls == KWC_STATEMENT) {
             ck_assert_int_eq(run.tokens[0].token, statements[i]);
         } else {
-            ck_assert_int_eq(run.tokens[0].token, info->cls == KWC_FUNCTION ? FUNC : KEYWORD);
-            ck_assert_int_eq(run.tokens[0].value.id, i);
+            ck_assert_int_eq(run.tokens[at].token, info->cls == KWC_FUNCTION ? FUNC : KEYWORD);
+            ck_assert_int_eq(run.tokens[at].value.id, i);
         }
         ck_assert_int_eq(keyword_lookup(info->name, strlen(info->name)), i);
         lex_done(&run);
@@ -512,6 +567,7 @@ Suite *suite_lexer(void)
     tcase_add_test(tc, test_scan_blanks);
     tcase_add_test(tc, test_scan_byte_order_mark);
     tcase_add_test(tc, test_scan_keywords_versus_names);
+    tcase_add_test(tc, test_scan_property_words_in_context);
     tcase_add_test(tc, test_scan_every_keyword);
     tcase_add_test(tc, test_scan_punctuation);
     tcase_add_test(tc, test_scan_locations_and_columns);

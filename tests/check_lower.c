@@ -8,20 +8,21 @@
 #include <stdlib.h>
 #include <string.h>
 #include "testlib.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 typedef struct loaded {
-    rf_scene *scene;
+    scene_model *scene;
     int status;
     char *messages;        /* every diagnostic printed */
     size_t size;
 } loaded;
 
-static void load_as(loaded *l, const char *path, const char *text, const rf_limits *limits, int warnings)
+static void load_as(loaded *l, const char *path, const char *text, const scene_limits *limits, int warnings)
 {
     FILE *out = open_memstream(&l->messages, &l->size);
     ck_assert_ptr_nonnull(out);
-    l->scene = scene_load_text(path, text, strlen(text), limits, out, warnings, &l->status);
+    l->scene = scene_file_load_text(path, text, strlen(text), limits, out, warnings, &l->status);
     fclose(out);
 }
 
@@ -45,11 +46,11 @@ static const char *first_line(loaded *l)
 }
 
 /* Loads text that must be valid and print nothing. */
-static rf_scene *load_ok(loaded *l, const char *text)
+static scene_model *load_ok(loaded *l, const char *text)
 {
     load(l, text);
     ck_assert_msg(l->scene != NULL, "%s: %s", text, l->messages);
-    ck_assert_int_eq(l->status, REFRAY_EXIT_OK);
+    ck_assert_int_eq(l->status, STATUS_OK);
     return l->scene;
 }
 
@@ -58,7 +59,7 @@ static rf_scene *load_ok(loaded *l, const char *text)
 START_TEST(test_scene_load_defaults_of_an_almost_empty_scene)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "sphere {}");
+    const scene_model *s = load_ok(&l, "sphere {}");
     ck_assert_str_eq(l.messages, "");
     ck_assert_int_eq(s->image.width, 640);
     ck_assert_int_eq(s->image.height, 480);
@@ -95,7 +96,7 @@ START_TEST(test_scene_load_defaults_of_an_almost_empty_scene)
     ck_assert_near(s->materials[0].n, 1, 0);
     ck_assert_near(s->materials[0].t, 0, 0);
     ck_assert_near(s->materials[0].ior, 1, 0);
-    const rf_features *f = &s->features;
+    const scene_features *f = &s->features;
     ck_assert(!f->shadows && !f->specular && !f->reflection && !f->refraction && !f->sampled_lights && !f->meshes);
     loaded_done(&l);
 }
@@ -107,7 +108,7 @@ END_TEST
 START_TEST(test_scene_load_defaults_of_shapes_and_materials)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "material m {}\nplane {}\ndisk {}\nsphere { material m }\nbox { from [0, 0, 0] to [1, 1, 1] }");
+    const scene_model *s = load_ok(&l, "material m {}\nplane {}\ndisk {}\nsphere { material m }\nbox { from [0, 0, 0] to [1, 1, 1] }");
     ck_assert_int_eq(s->prim_count, 4);
     ck_assert_vec_near(s->prims[0].u.plane.point, vec_make(0, 0, 0), 0);
     ck_assert_vec_near(s->prims[0].u.plane.normal, vec_make(0, 1, 0), 0);
@@ -135,13 +136,13 @@ END_TEST
 START_TEST(test_scene_load_defaults_of_lights)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "sphere { center [0, 0, -10] }\n"
+    const scene_model *s = load_ok(&l, "sphere { center [0, 0, -10] }\n"
                                     "point_light { position [0, 5, 0] }\n"
                                     "distant_light { direction [0, -2, 0] }\n"
                                     "distributed_light { rectangle [0, 4, 0] [2, 0, 0] [0, 0, 3] }\n"
                                     "distributed_light { disk [0, 4, 0] [0, -3, 0] 0.5 }");
     ck_assert_int_eq(s->light_count, 4);
-    const rf_light *point = &s->lights[0], *distant = &s->lights[1], *rect = &s->lights[2], *disk = &s->lights[3];
+    const scene_light *point = &s->lights[0], *distant = &s->lights[1], *rect = &s->lights[2], *disk = &s->lights[3];
     ck_assert_int_eq(point->kind, LIGHT_POINT);
     ck_assert_vec_near(point->position, vec_make(0, 5, 0), 0);
     ck_assert_vec_near(point->power, vec_splat(1), 0);
@@ -175,7 +176,7 @@ END_TEST
 START_TEST(test_scene_load_reads_every_value)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l,
+    const scene_model *s = load_ok(&l,
         "let r = 1.5\n"
         "image  { width 320  height 200  samples 2  max_depth 8  background [0.05, 0.05, 0.1] }\n"
         "camera { perspective  eye [0, 1, -5]  look_at [0, r, 0]  up [0, 1, 0]  fov 45 }\n"
@@ -211,7 +212,7 @@ START_TEST(test_scene_load_reads_every_value)
     ck_assert_near(s->lights[2].d0, 0.5, 0);
     ck_assert_int_eq(s->lights[2].falloff, FALLOFF_NONE);
     ck_assert_vec_near(s->lights[2].power, vec_splat(40), 0);
-    const rf_material *glass = &s->materials[0], *red = &s->materials[1];
+    const scene_material *glass = &s->materials[0], *red = &s->materials[1];
     ck_assert_str_eq(glass->name, "glass");
     ck_assert_vec_near(glass->kd, vec_splat(0), 0);
     ck_assert_vec_near(glass->ks, vec_splat(0.1), 0);
@@ -232,7 +233,7 @@ END_TEST
 START_TEST(test_scene_load_orthographic_camera)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "sphere {} camera { orthographic width 7 eye [0, 10, 0] up [0, 0, -1] }");
+    const scene_model *s = load_ok(&l, "sphere {} camera { orthographic width 7 eye [0, 10, 0] up [0, 0, -1] }");
     ck_assert_int_eq(s->camera.kind, CAMERA_ORTHOGRAPHIC);
     ck_assert_near(s->camera.width, 7, 0);
     /* forward (0,-1,0); right = (0,-1,0) x (0,0,-1) = (1, 0, 0); true_up =
@@ -281,8 +282,14 @@ START_TEST(test_scene_load_validation_errors)
         {"material m { n -1 }", "t.scene:1:16: error: n must be >= 0, got -1"},
         {"sphere { material { ior -1 } }", "t.scene:1:25: error: ior must be > 0, got -1"},
         /* unknown material, defined before use */
-        {"sphere { material glass }\nmaterial glass {}",
+        {"sphere { material glass }",
          "t.scene:1:19: error: unknown material 'glass' (define it with `material glass { ... }` before use)"},
+        {"sphere { material glass }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glass': it is defined only later, at line 2 (define a material "
+         "before its first use)"},
+        /* [LANG-DIAG-STUMBLE-1] a close name defined further down */
+        {"sphere { material glas }\nfor i in 0 .. 1 { }\nmaterial glass {}",
+         "t.scene:1:19: error: unknown material 'glas'; did you mean 'glass' (defined at line 3)?"},
         {"material glass {}\nsphere { material glas }",
          "t.scene:2:19: error: unknown material 'glas'; did you mean 'glass'?"},
         /* duplicate names */
@@ -311,7 +318,7 @@ START_TEST(test_scene_load_validation_errors)
         loaded l;
         load(&l, cases[i].text);
         ck_assert_msg(l.scene == NULL, "%s loaded", cases[i].text);
-        ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+        ck_assert_int_eq(l.status, STATUS_DATA);
         ck_assert_str_eq(first_line(&l), cases[i].message);
         loaded_done(&l);
     }
@@ -340,7 +347,7 @@ END_TEST
 static vec3 sphere_center(const char *text, double *radius)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, text);
+    const scene_model *s = load_ok(&l, text);
     ck_assert_int_eq(s->prims[0].has_xform, 0);
     vec3 c = s->prims[0].u.sphere.center;
     *radius = s->prims[0].u.sphere.radius;
@@ -404,7 +411,7 @@ END_TEST
 START_TEST(test_scene_load_baking_rules)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l,
+    const scene_model *s = load_ok(&l,
         "sphere { center [0, 0, 0] scale [1, 2, 1] translate [5, 0, 0] }\n"     /* 0: ellipsoid */
         "sphere { scale -1 }\n"                                                 /* 1: mirror */
         "box { from [0, 0, 0] to [1, 1, 1] scale [2, 3, 4] translate [1, 0, 0] }\n" /* 2: baked */
@@ -416,7 +423,7 @@ START_TEST(test_scene_load_baking_rules)
         "plane { rotate [0, 0, 90] }\n"                                         /* 8: baked */
         "triangle { vertices [0, 0, 0] [1, 0, 0] [0, 1, 0] scale [-1, 1, 1] }\n" /* 9: mirrored */
         "triangle { vertices [0, 0, 0] [1, 0, 0] [0, 1, 0] rotate [0, 0, 90] scale [1, 2, 3] }\n");
-    const rf_prim *p = s->prims;
+    const scene_prim *p = s->prims;
     ck_assert_int_eq(s->prim_count, 11);
     ck_assert_int_eq(p[0].has_xform, 1);
     ck_assert_vec_near(p[0].u.sphere.center, vec_make(0, 0, 0), 0);
@@ -459,10 +466,10 @@ START_TEST(test_scene_load_baking_rules)
 }
 END_TEST
 
-static rf_features features_of(const char *text)
+static scene_features features_of(const char *text)
 {
     loaded l;
-    rf_features f = load_ok(&l, text)->features;
+    scene_features f = load_ok(&l, text)->features;
     loaded_done(&l);
     return f;
 }
@@ -470,7 +477,7 @@ static rf_features features_of(const char *text)
 /* [LANG-FEATURES-1] the record of what a scene uses. */
 START_TEST(test_scene_load_features)
 {
-    rf_features f = features_of("sphere {} point_light { position [0, 5, 0] }");
+    scene_features f = features_of("sphere {} point_light { position [0, 5, 0] }");
     ck_assert_int_eq(f.shadows, 0);     /* one convex shape cannot shadow itself */
     f = features_of("sphere {} sphere { center [3, 0, 0] }");
     ck_assert_int_eq(f.shadows, 0);     /* no light */
@@ -515,7 +522,7 @@ START_TEST(test_scene_load_warnings)
         loaded l;
         load(&l, cases[i].text);
         ck_assert_msg(l.scene != NULL, "%s: %s", cases[i].text, l.messages);
-        ck_assert_int_eq(l.status, REFRAY_EXIT_OK);
+        ck_assert_int_eq(l.status, STATUS_OK);
         ck_assert_str_eq(first_line(&l), cases[i].message);
         loaded_done(&l);
         /* Switched off, nothing is printed. */
@@ -546,7 +553,7 @@ END_TEST
 START_TEST(test_scene_load_names)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "let red = 2\nmaterial red { Kd [1, 0, 0] }\nsphere { radius red material red }\n"
+    const scene_model *s = load_ok(&l, "let red = 2\nmaterial red { Kd [1, 0, 0] }\nsphere { radius red material red }\n"
                                     "let floor = 1\nmaterial floor {}\nplane { point [0, -floor, 0] material floor }");
     ck_assert_near(s->prims[0].u.sphere.radius, 2, 0);
     ck_assert_vec_near(s->materials[s->prims[0].material].kd, vec_make(1, 0, 0), 0);
@@ -555,8 +562,8 @@ START_TEST(test_scene_load_names)
     load(&l, "sphere { radius r }\nlet r = 1");
     ck_assert_str_eq(first_line(&l), "t.scene:1:17: error: unknown constant 'r'");
     loaded_done(&l);
-    load(&l, "let radius = 1");
-    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'radius' is a reserved word and cannot name a constant");
+    load(&l, "let sphere = 1");
+    ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'sphere' is a reserved word and cannot name a constant");
     loaded_done(&l);
     load(&l, "let pi = 3");
     ck_assert_str_eq(first_line(&l), "t.scene:1:5: error: 'pi' is built in and cannot be redefined");
@@ -568,7 +575,7 @@ END_TEST
 START_TEST(test_scene_load_oracle)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "oracle two_spheres\nsphere {}");
+    const scene_model *s = load_ok(&l, "oracle two_spheres\nsphere {}");
     ck_assert_str_eq(s->oracle, "two_spheres");
     ck_assert_int_eq(s->oracle_where.file, 0);
     ck_assert_uint_eq(s->oracle_where.begin, 7);
@@ -589,7 +596,7 @@ START_TEST(test_scene_load_image_limits)
     ck_assert_str_eq(first_line(&l), "t.scene:1:11: error: 16000 x 16000 pixels is over the limit of 67108864 "
                                      "(--max-pixels)");
     loaded_done(&l);
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_samples = 4;
     lim.max_primitives = 2;
     load_as(&l, "t.scene", "sphere {} image { samples 5 }", &lim, 1);
@@ -617,7 +624,7 @@ START_TEST(test_scene_load_mesh)
             "mesh { file \"../obj/quad.obj\" translate [0, 0, 5] scale 2 material { Kd 0.5 } }\n"
             "mesh { file \"../obj/tetrahedron.obj\" }", NULL, 1);
     ck_assert_msg(l.scene != NULL, "%s", l.messages);
-    const rf_scene *s = l.scene;
+    const scene_model *s = l.scene;
     ck_assert_int_eq(s->mesh_count, 3);
     ck_assert_int_eq(s->prim_count, 3);
     ck_assert_int_eq(s->meshes[0].geom.tri_count, 12);
@@ -634,7 +641,7 @@ START_TEST(test_scene_load_mesh)
     }
     /* The cube's first face `f 1//1 4//1 3//1 2//1` is cut into (1,4,3):
      * (-1,-1,-1) (-1,1,-1) (1,1,-1), with the normal (0,0,-1). */
-    const rf_trimesh *g = &s->meshes[0].geom;
+    const scene_trimesh *g = &s->meshes[0].geom;
     ck_assert_ptr_nonnull(g->tri_normal);
     ck_assert_vec_near(g->positions[g->tri[0][0]], vec_make(-1, -1, -1), 0);
     ck_assert_vec_near(g->positions[g->tri[0][1]], vec_make(-1, 1, -1), 0);
@@ -661,7 +668,7 @@ START_TEST(test_scene_load_mesh_errors)
     ck_assert_str_eq(first_line(&l),
                      "tests/scenes/mesh.scene:1:13: error: cannot open 'tests/scenes/../obj/none.obj': "
                      "No such file or directory");
-    ck_assert_int_eq(l.status, REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(l.status, STATUS_DATA);
     loaded_done(&l);
     load(&l, "mesh {}");
     ck_assert_str_eq(first_line(&l), "t.scene:1:1: error: mesh needs 'file'");
@@ -670,7 +677,7 @@ START_TEST(test_scene_load_mesh_errors)
     ck_assert_str_eq(first_line(&l), "t.scene:1:13: error: expected a string, got a number");
     loaded_done(&l);
     /* The triangle limit is the OBJ reader's, at the face that passes it. */
-    rf_limits lim = scene_default_limits();
+    scene_limits lim = scene_default_limits();
     lim.max_mesh_triangles = 11;
     load_as(&l, "tests/scenes/mesh.scene", "mesh { file \"../obj/cube.obj\" }", &lim, 1);
     ck_assert_ptr_null(l.scene);
@@ -684,7 +691,7 @@ END_TEST
 START_TEST(test_scene_load_huge_but_finite)
 {
     loaded l;
-    const rf_scene *s = load_ok(&l, "plane { normal [1.5e308, 1.5e308, 0] }\n"
+    const scene_model *s = load_ok(&l, "plane { normal [1.5e308, 1.5e308, 0] }\n"
                                     "sphere { radius 1e300 center [1e308, -1e308, 0] }\n"
                                     "distant_light { direction [1e308, 1e308, 1e308] }\n"
                                     "triangle { vertices [1e200, 0, 0] [0, 1e200, 0] [0, 0, 1e200] }\n"
@@ -695,6 +702,73 @@ START_TEST(test_scene_load_huge_but_finite)
     ck_assert_vec_near(s->lights[0].direction, vec_make(c, c, c), 1e-15);
     ck_assert_vec_near(s->camera.forward, vec_make(-1, 0, 0), 0);
     ck_assert_vec_near(s->prims[3].u.plane.normal, vec_make(1, 0, 0), 0);
+    loaded_done(&l);
+}
+END_TEST
+
+/* [LANG-CAMERA-2] Every mistake of a camera is reported, in one run: the
+ * kind and a value out of range, then look_at at the eye and a zero up. */
+START_TEST(test_scene_load_camera_reports_everything)
+{
+    loaded l;
+    load(&l, "camera { perspective orthographic fov 400 eye [1, 1, 1] look_at [1, 1, 1] up [0, 0, 0] }\nsphere {}");
+    ck_assert_ptr_null(l.scene);
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:22: error: a camera is either perspective or orthographic"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "t.scene:1:39: error: fov must be in (0, 180), got 400"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: look_at must differ from eye"));
+    ck_assert_ptr_nonnull(strstr(l.messages, "error: up must not be a zero-length vector"));
+    loaded_done(&l);
+}
+END_TEST
+
+/* [LANG-CYLINDER-1] [LANG-CONE-1] [LANG-TORUS-1]: defaults, open, and
+ * [LANG-XFORM-BAKE-1] baking under a similarity (rotate 90 about x takes
+ * y to z and z to -y; scale 2; translate): the ends or the centre moved,
+ * the axis turned, the radii doubled.  A non-uniform scale keeps the frame. */
+START_TEST(test_scene_load_quadrics)
+{
+    loaded l;
+    const scene_model *s = load_ok(&l,
+        "cylinder { }\n"
+        "cone { open }\n"
+        "torus { }\n"
+        "cylinder { from [0, 0, 0] to [0, 0, 1] radius 1 rotate [90, 0, 0] scale 2 translate [1, 0, 0] }\n"
+        "cone { radii 0.5 0.25 rotate [90, 0, 0] scale 2 }\n"
+        "torus { center [0, 1, 0] major 2 minor 0.5 rotate [90, 0, 0] scale 2 }\n"
+        "torus { scale [1, 2, 1] }\n"
+        "let radius = 3\nlet minor = 0.1\ncylinder { radius radius open }\ntorus { minor minor }\n");
+    const scene_prim *p = s->prims;
+    ck_assert_int_eq(s->prim_count, 9);
+    ck_assert_int_eq(p[0].kind, PRIM_CYLINDER);
+    ck_assert_vec_near(p[0].u.cylinder.from, vec_make(0, 0, 0), 0);
+    ck_assert_vec_near(p[0].u.cylinder.to, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[0].u.cylinder.radius, 1, 0);
+    ck_assert_int_eq(p[0].u.cylinder.open, 0);
+    ck_assert_int_eq(p[1].kind, PRIM_CONE);
+    ck_assert_near(p[1].u.cone.radius[0], 1, 0);
+    ck_assert_near(p[1].u.cone.radius[1], 0, 0);
+    ck_assert_int_eq(p[1].u.cone.open, 1);
+    ck_assert_int_eq(p[2].kind, PRIM_TORUS);
+    ck_assert_vec_near(p[2].u.torus.axis, vec_make(0, 1, 0), 0);
+    ck_assert_near(p[2].u.torus.major, 1, 0);
+    ck_assert_near(p[2].u.torus.minor, 0.25, 0);
+    ck_assert_int_eq(p[3].has_xform, 0);
+    ck_assert_vec_near(p[3].u.cylinder.from, vec_make(1, 0, 0), 1e-15);
+    ck_assert_vec_near(p[3].u.cylinder.to, vec_make(1, -2, 0), 1e-15);
+    ck_assert_near(p[3].u.cylinder.radius, 2, 1e-15);
+    ck_assert_int_eq(p[4].has_xform, 0);
+    ck_assert_vec_near(p[4].u.cone.to, vec_make(0, 0, 2), 1e-15);
+    ck_assert_near(p[4].u.cone.radius[0], 1, 1e-15);
+    ck_assert_near(p[4].u.cone.radius[1], 0.5, 1e-15);
+    ck_assert_int_eq(p[5].has_xform, 0);
+    ck_assert_vec_near(p[5].u.torus.center, vec_make(0, 0, 2), 1e-15);
+    ck_assert_vec_near(p[5].u.torus.axis, vec_make(0, 0, 1), 1e-15);
+    ck_assert_near(p[5].u.torus.major, 4, 1e-15);
+    ck_assert_near(p[5].u.torus.minor, 1, 1e-15);
+    ck_assert_int_eq(p[6].has_xform, 1);
+    ck_assert_near(p[7].u.cylinder.radius, 3, 0);
+    ck_assert_int_eq(p[7].u.cylinder.open, 1);
+    ck_assert_near(p[8].u.torus.minor, 0.1, 0);
     loaded_done(&l);
 }
 END_TEST
@@ -721,6 +795,8 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh);
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
+    tcase_add_test(tc, test_scene_load_quadrics);
+    tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);
     return s;
 }

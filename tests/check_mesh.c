@@ -12,6 +12,8 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/diag_print.h"
+#include "io/scene_file.h"
 #include "testlib.h"
 #include "base/diag.h"
 #include "base/source.h"
@@ -79,7 +81,7 @@ START_TEST(test_mesh_corpus_warnings)
         size_t log_size = 0;
         FILE *out = open_memstream(&log, &log_size);
         int status;
-        rf_scene *s = scene_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, out, 1, &status);
+        scene_model *s = scene_file_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, out, 1, &status);
         fclose(out);
         ck_assert_msg(s != NULL, "%s did not load: %s", names[k], log);
         int got = 0;
@@ -150,7 +152,7 @@ START_TEST(test_mesh_store_bytes)
      * bits): 8*24 + 6*24 + 12*12 + 12*12 = 624 bytes. */
     int status;
     static const char text[] = "mesh { file \"cube.obj\" }";
-    rf_scene *s = scene_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_ptr_nonnull(s);
     long triangles;
     ck_assert_int_eq(scene_mesh_bytes(s, &triangles), sizeof(real) == 8 ? 624 : 624 + 14 * 3 * (sizeof(real) - 8));
@@ -163,10 +165,10 @@ START_TEST(test_mesh_corpus_negative_indices_are_the_cube)
 {
     int status;
     static const char a[] = "mesh { file \"messy-negative.obj\" }", b[] = "mesh { file \"cube.obj\" }";
-    rf_scene *n = scene_load_text(OBJ_DIR "/t.scene", a, strlen(a), NULL, stderr, 0, &status);
-    rf_scene *c = scene_load_text(OBJ_DIR "/t.scene", b, strlen(b), NULL, stderr, 0, &status);
+    scene_model *n = scene_file_load_text(OBJ_DIR "/t.scene", a, strlen(a), NULL, stderr, 0, &status);
+    scene_model *c = scene_file_load_text(OBJ_DIR "/t.scene", b, strlen(b), NULL, stderr, 0, &status);
     ck_assert(n && c);
-    const rf_trimesh *gn = &n->meshes[0].geom, *gc = &c->meshes[0].geom;
+    const scene_trimesh *gn = &n->meshes[0].geom, *gc = &c->meshes[0].geom;
     ck_assert_int_eq(gn->tri_count, 12);
     ck_assert_int_eq(gc->tri_count, 12);
     for (int k = 0; k < 12; k++)
@@ -179,14 +181,14 @@ END_TEST
 
 /* ---- rendering what the corpus reports ----------------------------------- */
 
-static rf_image render_text(const char *text)
+static img_buf render_text(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text(OBJ_DIR "/t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "did not load:\n%s", text);
-    rf_image img;
+    img_buf img;
     render_stats st;
-    ck_assert_int_eq(render_image(s, NULL, &img, &st), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, &st), STATUS_OK);
     scene_free(s);
     return img;
 }
@@ -205,9 +207,9 @@ START_TEST(test_mesh_winding_does_not_matter)
      * crossings, not from its normals. */
     char text[1024];
     snprintf(text, sizeof text, glass_view, "messy-winding.obj");
-    rf_image w = render_text(text);
+    img_buf w = render_text(text);
     snprintf(text, sizeof text, glass_view, "cube.obj");
-    rf_image c = render_text(text);
+    img_buf c = render_text(text);
     ck_assert(memcmp(w.rgb, c.rgb, 3 * sizeof *w.rgb * (size_t)w.width * (size_t)w.height) == 0);
     img_free(&w);
     img_free(&c);
@@ -228,9 +230,9 @@ START_TEST(test_mesh_open_glass_is_sheets)
                                "%s material { Kd 0 t 0.9 ior 1.5 } }\n";
     char text[1024];
     snprintf(text, sizeof text, view, "mesh { file \"messy-open.obj\"");
-    rf_image open_mesh = render_text(text);
+    img_buf open_mesh = render_text(text);
     snprintf(text, sizeof text, view, "plane { point [0, -1, 0] normal [0, 1, 0]");
-    rf_image sheet = render_text(text);
+    img_buf sheet = render_text(text);
     for (long i = 0; i < 3L * 64; i++)
         ck_assert_msg(fabs(open_mesh.rgb[i] - sheet.rgb[i]) <= 1e-15, "value %ld: %.17g vs %.17g", i,
                       open_mesh.rgb[i], sheet.rgb[i]);
@@ -241,19 +243,20 @@ END_TEST
 
 /* ---- the file text of a mesh ------------------------------------------------ */
 
-START_TEST(test_mesh_file_text_adopted_and_released)
+START_TEST(test_mesh_file_text_lent_and_released)
 {
-    /* A mesh file's text is taken over without a copy and has no line
-     * index: a message finds its line by scanning (LF, CRLF and lone CR
-     * all end a line).  Once released, a message pointing into it names
-     * the file without a line. */
+    /* A mesh file's text is used where its owner holds it (no copy, no
+     * NUL after it) and has no line index: a message finds its line by
+     * scanning (LF, CRLF and lone CR all end a line).  Once released, the
+     * owner's text is untouched and a message pointing into the file
+     * names it without a line. */
     static const char body[] = "v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3\n";
     source_set set;
-    source_set_init(&set);
-    char *text = malloc(sizeof body);
+    source_set_init(&set, NULL);
+    char *text = malloc(sizeof body - 1);
     ck_assert_ptr_nonnull(text);
-    memcpy(text, body, sizeof body);
-    int file = source_set_adopt(&set, "m.obj", text, sizeof body - 1, src_span_none());
+    memcpy(text, body, sizeof body - 1);
+    int file = source_set_lend(&set, "m.obj", text, sizeof body - 1, src_span_none());
     ck_assert_int_eq(file, 0);
     ck_assert_ptr_eq(set.files[0]->text, text);
     ck_assert_ptr_null(set.files[0]->line_start);
@@ -265,18 +268,87 @@ START_TEST(test_mesh_file_text_adopted_and_released)
     const char *at = source_line_text(set.files[0], 10, &len);
     ck_assert_uint_eq(len, 7);
     ck_assert(strncmp(at, "v 1 0 0", 7) == 0);
+    at = source_line_text(set.files[0], sizeof body - 1, &len);
+    ck_assert_uint_eq(len, 0);
     char *log = NULL;
     size_t log_size = 0;
     FILE *out = open_memstream(&log, &log_size);
     diag d;
-    diag_init(&d, &set, out);
+    diag_init(&d, &set, diag_print, out);
     source_set_release(&set, file);
+    ck_assert_ptr_null(set.files[0]->text);
+    ck_assert(memcmp(text, body, sizeof body - 1) == 0);
+    free(text);
     src_span s = {file, 9, 10};
     diag_report(&d, DIAG_WARNING, s, "after the release");
     fclose(out);
     ck_assert_str_eq(log, "m.obj: warning: after the release\n");
     free(log);
     source_set_free(&set);
+}
+END_TEST
+
+/* A resolver that hands out exact-size copies of one OBJ text (no NUL
+ * after them) and counts what it gives and gets back. */
+typedef struct lender {
+    const char *text;
+    int fetched, released;
+    char *last;
+} lender;
+
+static int lend_fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t size)
+{
+    lender *l = user;
+    (void)from;
+    (void)why;
+    (void)size;
+    size_t n = strlen(l->text);
+    char *copy = malloc(n);
+    ck_assert_ptr_nonnull(copy);
+    memcpy(copy, l->text, n);
+    out->path = name;
+    out->text = copy;
+    out->len = n;
+    l->fetched++;
+    l->last = copy;
+    return STATUS_OK;
+}
+
+static void lend_release(void *user, scene_source *src)
+{
+    lender *l = user;
+    ck_assert_ptr_eq(src->text, l->last);
+    free((char *)src->text);
+    l->released++;
+}
+
+START_TEST(test_mesh_text_goes_back_to_the_resolver)
+{
+    /* The load reads a mesh file where the resolver holds it and gives it
+     * back exactly once, whether the mesh is good or not; the scene keeps
+     * the file's name only. */
+    static const char *const objs[] = {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3", "v 0 0 0\nf 1 2 7"};
+    static const char scene[] = "mesh { file \"m.obj\" }\n";
+    for (int k = 0; k < 2; k++) {
+        lender l = {objs[k], 0, 0, NULL};
+        scene_load_opts o;
+        scene_load_opts_init(&o);
+        o.resolver.fetch = lend_fetch;
+        o.resolver.release = lend_release;
+        o.resolver.user = &l;
+        scene_source root = {"t.scene", NULL, scene, sizeof scene - 1};
+        int status;
+        scene_model *s = scene_load_source(&root, &o, &status);
+        ck_assert_int_eq(l.fetched, 1);
+        ck_assert_int_eq(l.released, 1);
+        ck_assert_int_eq(status, k == 0 ? STATUS_OK : STATUS_DATA);
+        if (s) {
+            ck_assert_int_eq(s->meshes[0].geom.tri_count, 1);
+            ck_assert_str_eq(s->sources.files[1]->path, "m.obj");
+            ck_assert_ptr_null(s->sources.files[1]->text);
+        }
+        scene_free(s);
+    }
 }
 END_TEST
 
@@ -300,7 +372,7 @@ START_TEST(test_polygon_l_shape)
      * from that corner would have a triangle outside the L. */
     static const vec3 l[6] = {{2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}};
     polygon_work w;
-    polygon_work_init(&w);
+    polygon_work_init(&w, NULL);
     int t[6][3], flags;
     int n = polygon_triangulate(l, 6, &w, t, &flags);
     ck_assert_int_eq(n, 4);
@@ -326,7 +398,7 @@ START_TEST(test_polygon_keeps_corners_on_edges)
      * used, none of them a sliver along the edge. */
     static const vec3 q[5] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
     polygon_work w;
-    polygon_work_init(&w);
+    polygon_work_init(&w, NULL);
     int t[5][3], flags, used[5] = {0};
     int n = polygon_triangulate(q, 5, &w, t, &flags);
     ck_assert_int_eq(n, 3);
@@ -346,7 +418,7 @@ END_TEST
 START_TEST(test_polygon_flags)
 {
     polygon_work w;
-    polygon_work_init(&w);
+    polygon_work_init(&w, NULL);
     int t[8][3], flags;
     /* Every corner on one line: no triangle, no area. */
     static const vec3 line[4] = {{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {2, 2, 2}};
@@ -372,9 +444,9 @@ END_TEST
 
 /* ---- topology -------------------------------------------------------------- */
 
-static rf_trimesh trimesh(vec3 *pos, int np, int (*tri)[3], int nt)
+static scene_trimesh trimesh(vec3 *pos, int np, int (*tri)[3], int nt)
 {
-    rf_trimesh m;
+    scene_trimesh m;
     memset(&m, 0, sizeof m);
     m.positions = pos;
     m.position_count = np;
@@ -395,31 +467,31 @@ START_TEST(test_mesh_topo_cases)
     int tri[9][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {4, 6, 5}, {4, 5, 7}, {4, 7, 6}, {5, 6, 7}, {0, 1, 2}};
     mesh_topo t;
     unsigned char open[9];
-    rf_trimesh m = trimesh(pos, 12, tri, 4);
-    ck_assert(mesh_topo_analyse(&m, &t, open));
+    scene_trimesh m = trimesh(pos, 12, tri, 4);
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, open));
     ck_assert(t.closed && t.oriented && t.components == 1 && t.open_edges == 0);
     for (int k = 0; k < 4; k++)
         ck_assert_int_eq(open[k], 0);
     m = trimesh(pos, 12, tri, 8);
-    ck_assert(mesh_topo_analyse(&m, &t, NULL));
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, NULL));
     ck_assert(t.closed && t.oriented && t.components == 2);
     m = trimesh(pos, 12, tri, 3);
-    ck_assert(mesh_topo_analyse(&m, &t, open));
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, open));
     ck_assert(!t.closed && t.oriented && t.open_edges == 3 && t.crowded_edges == 0);
     /* The missing face was (1, 2, 3): its edges 1-2, 2-3, 3-1 are open in
      * the others: (0,2,1) edge 2->1 is its corner 1 -> 2, bit 1. */
     ck_assert_int_eq(open[0], 2);
     int turned[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     m = trimesh(pos, 12, turned, 4);
-    ck_assert(mesh_topo_analyse(&m, &t, NULL));
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, NULL));
     ck_assert(t.closed && !t.oriented);
     int crowded[5][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 1, 4}};
     m = trimesh(pos, 12, crowded, 5);
-    ck_assert(mesh_topo_analyse(&m, &t, NULL));
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, NULL));
     ck_assert(!t.closed && t.crowded_edges == 1 && t.open_edges == 2);
     int welded[4][3] = {{8, 10, 9}, {0, 1, 11}, {0, 3, 2}, {9, 2, 3}};
     m = trimesh(pos, 12, welded, 4);
-    ck_assert(mesh_topo_analyse(&m, &t, NULL));
+    ck_assert(mesh_topo_analyse(&m, NULL, &t, NULL));
     ck_assert(t.closed && t.oriented && t.components == 1);
 }
 END_TEST
@@ -433,7 +505,8 @@ Suite *suite_mesh(void)
     tcase_add_test(tc, test_mesh_corpus_check_report);
     tcase_add_test(tc, test_mesh_corpus_negative_indices_are_the_cube);
     tcase_add_test(tc, test_mesh_store_bytes);
-    tcase_add_test(tc, test_mesh_file_text_adopted_and_released);
+    tcase_add_test(tc, test_mesh_file_text_lent_and_released);
+    tcase_add_test(tc, test_mesh_text_goes_back_to_the_resolver);
     tcase_add_test(tc, test_mesh_winding_does_not_matter);
     tcase_add_test(tc, test_mesh_open_glass_is_sheets);
     suite_add_tcase(s, tc);

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/diag_print.h"
 #include "testlib.h"
 #include "base/diag.h"
 #include "lang/obj.h"
@@ -26,7 +27,7 @@ static void run_parse_len(run *r, const char *text, size_t len, long max_triangl
 {
     static const char scene[] = "mesh \"m.obj\"\n";
     memset(r, 0, sizeof *r);
-    source_set_init(&r->set);
+    source_set_init(&r->set, NULL);
     int root = source_set_add(&r->set, "s.scene", scene, sizeof scene - 1, src_span_none());
     src_span from = {root, 0, 4};
     int file = source_set_add(&r->set, "m.obj", text, len, from);
@@ -35,7 +36,7 @@ static void run_parse_len(run *r, const char *text, size_t len, long max_triangl
         r->out = open_memstream(&r->log, &r->log_size);
         ck_assert_ptr_nonnull(r->out);
     }
-    diag_init(&r->d, &r->set, r->out);
+    diag_init(&r->d, &r->set, r->out ? diag_print : NULL, r->out);
     r->ok = obj_parse(&r->set, file, &r->d, max_triangles, &r->mesh);
     if (r->out)
         fflush(r->out);
@@ -404,9 +405,9 @@ START_TEST(test_obj_parse_stops_at_error_limit)
     run r;
     static const char text[] = "f 0\nf 0\nf 0\nf 0\nf 0\n";
     memset(&r, 0, sizeof r);
-    source_set_init(&r.set);
+    source_set_init(&r.set, NULL);
     int file = source_set_add(&r.set, "m.obj", text, sizeof text - 1, src_span_none());
-    diag_init(&r.d, &r.set, NULL);
+    diag_init(&r.d, &r.set, NULL, NULL);
     r.d.max_errors = 2;
     ck_assert_int_eq(obj_parse(&r.set, file, &r.d, 100, &r.mesh), 0);
     ck_assert_int_eq(r.d.errors, 2);

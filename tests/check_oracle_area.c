@@ -220,7 +220,7 @@ START_TEST(test_area_polygon_linear_against_references)
     double cw[4][2] = {{-1.3, -1.95}, {-1.3, -0.45}, {0.7, -0.45}, {0.7, -1.95}};
     ck_assert_rel(area_polygon(&k, (const double (*)[2])cw, 4), 0.849428669583010541642, 1e-13);
     /* A parallelogram, every falloff, against the brute 2-D integral. */
-    rf_falloff f[3] = {FALLOFF_LINEAR, FALLOFF_INVERSE_SQUARE, FALLOFF_NONE};
+    scene_falloff f[3] = {FALLOFF_LINEAR, FALLOFF_INVERSE_SQUARE, FALLOFF_NONE};
     for (int i = 0; i < 3; i++) {
         area_kernel kk = {1.3, 0.25, f[i]};
         double p[2] = {-0.4, -0.9}, u[2] = {1.6, 0.1}, v[2] = {0.5, 1.4};
@@ -323,7 +323,7 @@ END_TEST
  * each radial piece closed, h (G(D2) - G(D1)), G written out here. */
 typedef struct polar_ref {
     double h, d0;
-    rf_falloff falloff;
+    scene_falloff falloff;
     double l[3], s[3];   /* cx, cy, r */
 } polar_ref;
 
@@ -405,7 +405,7 @@ START_TEST(test_area_disk_minus_disk_against_polar_route)
         {0, 0, 1, 0.5, 0.2, 0.8},   {0.3, -0.2, 1, -0.9, 0.4, 0.7}, {2.5, 1, 1, 2.9, 1.6, 0.8},
         {0.2, 0.1, 1.2, 0.4, 0.3, 0.5}, {0, 0, 1, 3, 0, 1},          {1.5, 0, 1, 1.5, 1.79, 0.8},
     };
-    rf_falloff f[2] = {FALLOFF_INVERSE_SQUARE, FALLOFF_LINEAR};
+    scene_falloff f[2] = {FALLOFF_INVERSE_SQUARE, FALLOFF_LINEAR};
     for (int i = 0; i < 6; i++) {
         for (int j = 0; j < 2; j++) {
             polar_ref p = {2.2, j ? 0.3 : 0, f[j], {cases[i][0], cases[i][1], cases[i][2]},
@@ -460,7 +460,7 @@ END_TEST
 
 static rgb centre_radiance(const char *family, const char *text)
 {
-    rf_scene *s = load_text(text);
+    scene_model *s = load_text(text);
     oracle_view v = view_of(s);
     const oracle_family *f = oracle_find(family);
     char why[200];
@@ -555,7 +555,7 @@ static const refusal refusals[] = {
 START_TEST(test_area_families_refuse_with_reason)
 {
     const refusal *r = &refusals[_i];
-    rf_scene *s = load_text(r->text);
+    scene_model *s = load_text(r->text);
     oracle_view v = view_of(s);
     char why[200] = "";
     ck_assert_int_eq(oracle_find(r->family)->accepts(&v, why, sizeof why), 0);
@@ -574,7 +574,7 @@ static const char *const scenes[] = {
 /* t statistic of the green channel's relative errors: the stratified
  * estimate is unbiased and the pixels' jitters are independent, so |t|
  * beyond 6 would mean a bias. */
-static double bias_t(const rf_image *a, const rf_image *b, const unsigned char *excluded)
+static double bias_t(const img_buf *a, const img_buf *b, const unsigned char *excluded)
 {
     double sum = 0, sum2 = 0;
     long n = 0;
@@ -594,17 +594,17 @@ static double bias_t(const rf_image *a, const rf_image *b, const unsigned char *
 START_TEST(test_area_scenes_meet_their_tolerance)
 {
     const char *path = scenes[_i];
-    rf_scene *s = load_file(path);
+    scene_model *s = load_file(path);
     const oracle_family *f = oracle_find(s->oracle);
     ck_assert_msg(f != NULL && f->sampled, "%s: no sampled family '%s'", path, s->oracle);
     oracle_view v = view_of(s);
     char why[200];
     ck_assert_msg(f->accepts(&v, why, sizeof why), "%s: %s", path, why);
-    rf_image got, want;
-    ck_assert_int_eq(render_image(s, NULL, &got, NULL), REFRAY_EXIT_OK);
+    img_buf got, want;
+    ck_assert_int_eq(render_image(s, NULL, &got, NULL), STATUS_OK);
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     long excluded_count = 0;
-    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, &excluded_count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, &excluded_count), STATUS_OK);
     double tol = f->tolerance(&v, 0);
     image_metrics m;
     metrics_compare(&got, &want, excluded, tol, &m);
@@ -625,12 +625,12 @@ END_TEST
  * on a small image of the scene. */
 static double convergence_slope(const char *path, int width, int height)
 {
-    rf_scene *s = load_file(path);
+    scene_model *s = load_file(path);
     const oracle_family *f = oracle_find(s->oracle);
     oracle_view v = {s, width, height, s->image.samples, s->image.max_depth};
-    rf_image want;
+    img_buf want;
     unsigned char *excluded = calloc((size_t)width * (size_t)height, 1);
-    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &want, excluded, NULL), STATUS_OK);
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     int count = 0;
     for (int n = 1; n <= 1024; n *= 4) {
@@ -639,8 +639,8 @@ static double convergence_slope(const char *path, int width, int height)
         o.width = width;
         o.height = height;
         o.light_samples = n;
-        rf_image got;
-        ck_assert_int_eq(render_image(s, &o, &got, NULL), REFRAY_EXIT_OK);
+        img_buf got;
+        ck_assert_int_eq(render_image(s, &o, &got, NULL), STATUS_OK);
         image_metrics m;
         metrics_compare(&got, &want, excluded, 1, &m);
         double x = log((double)n), y = log(m.rms);
@@ -680,7 +680,7 @@ END_TEST
 START_TEST(test_area_tolerance_falls_with_samples)
 {
     /* The bound is ~ 1/N for smooth integrands once the samples are many. */
-    rf_scene *s = load_file("scenes/analytic/rect_light.scene");
+    scene_model *s = load_file("scenes/analytic/rect_light.scene");
     oracle_view v = {s, 16, 12, 1, 1};
     const oracle_family *f = oracle_find("rect_light");
     double t64 = f->tolerance(&v, 64), t256 = f->tolerance(&v, 256), t1024 = f->tolerance(&v, 1024);

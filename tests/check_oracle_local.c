@@ -28,24 +28,24 @@
 
 /* Loads text as a scene of the given family (the `oracle` statement is
  * prepended). */
-static rf_scene *load_family(const char *family, const char *text)
+static scene_model *load_family(const char *family, const char *text)
 {
     char *full = malloc(strlen(text) + 64);
     ck_assert_ptr_nonnull(full);
     snprintf(full, strlen(text) + 64, "oracle %s\n%s", family, text);
-    rf_scene *s = load_text(full);
+    scene_model *s = load_text(full);
     free(full);
     return s;
 }
 
 /* The image point where the camera sees world point p. */
-static void image_point(const rf_scene *s, vec3 p, double *x, double *y)
+static void image_point(const scene_model *s, vec3 p, double *x, double *y)
 {
     oracle_view v = view_of(s);
     ck_assert(oracle_image_point(&v, p, x, y));
 }
 
-static oracle_status radiance_at_world(const rf_scene *s, vec3 p, rgb *out)
+static oracle_status radiance_at_world(const scene_model *s, vec3 p, rgb *out)
 {
     double x, y;
     image_point(s, p, &x, &y);
@@ -53,7 +53,7 @@ static oracle_status radiance_at_world(const rf_scene *s, vec3 p, rgb *out)
 }
 
 /* The exact value where the camera sees p, which must not be ambiguous. */
-static rgb exact_at_world(const rf_scene *s, vec3 p)
+static rgb exact_at_world(const scene_model *s, vec3 p)
 {
     rgb c = vec_splat(-1);
     ck_assert_msg(radiance_at_world(s, p, &c) == ORACLE_EXACT, "ambiguous at (%g, %g, %g)", (double)p.x,
@@ -61,7 +61,7 @@ static rgb exact_at_world(const rf_scene *s, vec3 p)
     return c;
 }
 
-static int ambiguous_at_world(const rf_scene *s, vec3 p)
+static int ambiguous_at_world(const scene_model *s, vec3 p)
 {
     rgb c;
     return radiance_at_world(s, p, &c) == ORACLE_AMBIGUOUS;
@@ -118,7 +118,7 @@ START_TEST(test_oracle_path_distance)
      * 1 from the segment; (6, 1, 0) is past its end, sqrt(5) from (4, 0, 0);
      * (-3, 4, 0) is before its start, 5 from the origin.  Toward a distant
      * light along +x the path never ends: (100, 2, 0) is 2 from it. */
-    rf_light point = {0}, distant = {0};
+    scene_light point = {0}, distant = {0};
     point.kind = LIGHT_POINT;
     point.position = vec_make(4, 0, 0);
     point.power = vec_splat(1);
@@ -152,7 +152,7 @@ START_TEST(test_oracle_image_point)
     /* Perspective, eye (0, 0, 5) toward the origin, fov 90, 100 x 100: the
      * point (1, 0, 4) is 1 to the right at depth 1, tan 45 = 1: the right
      * edge, x = 100, y = 50.  (0, -0.5, 4): half way down, y = 75. */
-    rf_scene *s = load_text("image { width 100 height 100 }\ncamera { perspective eye [0, 0, 5] fov 90 }\nsphere { }\n");
+    scene_model *s = load_text("image { width 100 height 100 }\ncamera { perspective eye [0, 0, 5] fov 90 }\nsphere { }\n");
     oracle_view v = view_of(s);
     double x, y;
     ck_assert(oracle_image_point(&v, vec_make(1, 0, 4), &x, &y));
@@ -234,7 +234,7 @@ START_TEST(test_ambient_radiance)
 {
     /* [ORACLE-AMBIENT-1] Inside: Kd Ia = [0.5*0.2, 0.5*0.4, 1*0.6]; outside:
      * the background; the outline is ambiguous. */
-    rf_scene *s = load_family("ambient_only", FRONT_2 "ambient { color [0.2, 0.4, 0.6] }\n"
+    scene_model *s = load_family("ambient_only", FRONT_2 "ambient { color [0.2, 0.4, 0.6] }\n"
                                     "sphere { radius 0.9 material { Kd [0.5, 0.5, 1] } }\n");
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0.3, 0.5, 0)), vec_make(0.1, 0.2, 0.6), 1e-15);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0.8, 0.5, 0)), vec_make(0.1, 0.2, 0.3), 0);
@@ -258,7 +258,7 @@ START_TEST(test_lambert_sphere_radiance)
      *   plus light along -x, E 2: N.L = 0.6, 0.5 (0.1 + 1.6 + 1.2) = 1.45
      *   a point light at (0.6, 0, 5.8): d = 5, L = +z, linear E 10 -> I = 2:
      *                          0.5 (0.1 + 2 * 0.8)               = 0.85 */
-    rf_scene *s = load_family("lambert_sphere", FRONT_2 "ambient { color 0.1 }\ndistant_light { direction [0, 0, -1] power 2 }\n"
+    scene_model *s = load_family("lambert_sphere", FRONT_2 "ambient { color 0.1 }\ndistant_light { direction [0, 0, -1] power 2 }\n"
                                     "sphere { material { Kd 0.5 } }\n");
     vec3 p = vec_make(0.6, 0, 0);
     ck_assert_rgb_rel(exact_at_world(s, p), vec_splat(0.85), 1e-14);
@@ -282,7 +282,7 @@ END_TEST
 START_TEST(test_lambert_sphere_terminator_is_ambiguous)
 {
     /* Light along -x: the terminator is the great circle x = 0. */
-    rf_scene *s = load_family("lambert_sphere", FRONT_2 "distant_light { direction [-1, 0, 0] }\nsphere { }\n");
+    scene_model *s = load_family("lambert_sphere", FRONT_2 "distant_light { direction [-1, 0, 0] }\nsphere { }\n");
     ck_assert(ambiguous_at_world(s, vec_make(0, 0.3, 0)));
     ck_assert(!ambiguous_at_world(s, vec_make(0.01, 0.3, 0)));
     scene_free(s);
@@ -304,7 +304,7 @@ START_TEST(test_plane_point_radiance)
                  DOWN_10 "ambient { color 0.1 }\npoint_light { position [0, 3, 0] power 10 d0 1 falloff %s }\n"
                          "plane { material { Kd 0.5 } }\n",
                  falloff[k]);
-        rf_scene *s = load_family("plane_point", text);
+        scene_model *s = load_family("plane_point", text);
         ck_assert_rgb_rel(exact_at_world(s, vec_make(4, 0, 0)), vec_splat(want[k]), 1e-14);
         scene_free(s);
     }
@@ -316,7 +316,7 @@ START_TEST(test_plane_point_radiance_perspective)
     /* The same plane seen from an eye at (4, 2, 6) (any route to the point
      * (4, 0, 0) gives the same value: a matte surface), and from below the
      * plane: the lit side is not seen, Kd Ia = 0.05 only. */
-    rf_scene *s = load_family("plane_point", "image { width 64 height 48 }\ncamera { perspective eye [4, 2, 6] look_at [4, 0, 0] }\n"
+    scene_model *s = load_family("plane_point", "image { width 64 height 48 }\ncamera { perspective eye [4, 2, 6] look_at [4, 0, 0] }\n"
                             "ambient { color 0.1 }\npoint_light { position [0, 3, 0] power 10 d0 1 }\n"
                             "plane { material { Kd 0.5 } }\n");
     ck_assert_rgb_rel(exact_at_world(s, vec_make(4, 0, 0)), vec_splat(0.55), 1e-14);
@@ -338,7 +338,7 @@ START_TEST(test_phong_plane_radiance)
      *     0.5 (0.1 + 2*0.6) + 0.25 * 2 * 0.36 = 0.65 + 0.18 = 0.83
      *   at the foot (0, 0, 0): d = 3, I = 10/3, V.R = 1:
      *     0.5 (0.1 + 10/3) + 0.25 * 10/3                             */
-    rf_scene *s = load_family("phong_plane", DOWN_10 "ambient { color 0.1 }\npoint_light { position [0, 3, 0] power 10 }\n"
+    scene_model *s = load_family("phong_plane", DOWN_10 "ambient { color 0.1 }\npoint_light { position [0, 3, 0] power 10 }\n"
                                     "plane { material { Kd 0.5 Ks 0.25 n 2 } }\n");
     ck_assert_rgb_rel(exact_at_world(s, vec_make(4, 0, 0)), vec_splat(0.83), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0, 0, 0)), vec_splat(0.5 * (0.1 + 10.0 / 3) + 0.25 * 10.0 / 3),
@@ -361,7 +361,7 @@ START_TEST(test_phong_sphere_radiance)
      * N.L = 0.8, V.R = 2(0.8)(0.8) - 1 = 0.28:
      *   0.5 (0.1 + 0.8) + 0.4 * 0.28^3 = 0.45 + 0.0087808
      * At the centre, N = L = V: 0.5 (0.1 + 1) + 0.4 = 0.95. */
-    rf_scene *s = load_family("phong_sphere", FRONT_2 "ambient { color 0.1 }\ndistant_light { direction [0, 0, -1] }\n"
+    scene_model *s = load_family("phong_sphere", FRONT_2 "ambient { color 0.1 }\ndistant_light { direction [0, 0, -1] }\n"
                                     "sphere { material { Kd 0.5 Ks 0.4 n 3 } }\n");
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0.6, 0, 0)), vec_splat(0.45 + 0.4 * 0.28 * 0.28 * 0.28), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0, 0, 0)), vec_splat(0.95), 1e-14);
@@ -385,7 +385,7 @@ START_TEST(test_sphere_shadow_radiance)
      * 6.25 - 10.25^2/18.25 = 0.493 < 1: shadowed, 0.05.  (Nearer than 1 to
      * the axis the plane is hidden by the sphere; at 1 the view grazes it.)
      * The sphere's top (0, 3, 0) faces the light at d = 1: 0.5 (0.1 + 8). */
-    rf_scene *s = load_family("sphere_shadow", SHADOW_SCENE("Kd 0.5"));
+    scene_model *s = load_family("sphere_shadow", SHADOW_SCENE("Kd 0.5"));
     ck_assert_rgb_rel(exact_at_world(s, vec_make(3, 0, 0)), vec_splat(0.69), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(1.5, 0, 0)), vec_splat(0.05), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0, 0, 0)), vec_splat(4.05), 1e-14);
@@ -399,7 +399,7 @@ START_TEST(test_sphere_shadow_boundary_is_ambiguous)
     /* [ORACLE-SPHERE-SHADOW-2] The tangents from (0, 4) to the unit circle
      * about (0, 2) make 30 degrees with the axis (sin = 1/2): they meet
      * y = 0 at x = 4 tan 30 = 4/sqrt3. */
-    rf_scene *s = load_family("sphere_shadow", SHADOW_SCENE("Kd 0.5"));
+    scene_model *s = load_family("sphere_shadow", SHADOW_SCENE("Kd 0.5"));
     double edge = 4 / sqrt(3.0);
     ck_assert(ambiguous_at_world(s, vec_make(edge, 0, 0)));
     ck_assert(ambiguous_at_world(s, vec_make(0, 0, -edge)));
@@ -424,7 +424,7 @@ START_TEST(test_transparent_shadow_radiance)
      *   L2 = 0.5 * 0.4 (0.1 + 8/3 * 0.5)  = 0.2 (0.1 + 4/3)
      *   C3 = 0.5 (0.1 + 2 * 0.25)         = 0.3
      *   C  = L1 + 0.5 (L2 + 0.5 C3)                                      */
-    rf_scene *s = load_family("transparent_shadow", "image { width 100 height 100 max_depth 5 background 0 }\n"
+    scene_model *s = load_family("transparent_shadow", "image { width 100 height 100 max_depth 5 background 0 }\n"
                             "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, -1] width 10 }\n"
                             "ambient { color 0.1 }\npoint_light { position [0, 4, 0] power 8 }\n"
                             "plane { material { Kd 0.5 } }\n"
@@ -448,7 +448,7 @@ START_TEST(test_transparent_shadow_depth_cut)
     for (int depth = 1; depth <= 2; depth++) {
         char text[1024];
         snprintf(text, sizeof text, "image { width 100 height 100 max_depth %d }\n%s", depth, head);
-        rf_scene *s = load_family("transparent_shadow", text);
+        scene_model *s = load_family("transparent_shadow", text);
         ck_assert_rgb_rel(exact_at_world(s, vec_make(0, 0, 0)), vec_splat(want[depth - 1]), 1e-14);
         scene_free(s);
     }
@@ -472,7 +472,7 @@ START_TEST(test_stacked_sheets_radiance_light_above)
      *   B_F = 0.8 (0.1 + 0.5 * 0.25) = 0.18;
      *   C = 0.11 + 0.5 * 0.27 + 0.5 * 0.25 * 0.18 = 0.2675.
      * Beside the disk (3, 0, 0): C = 0.11 + 0.5 * 0.8 (0.1 + 0.5) = 0.35. */
-    rf_scene *s = load_family("stacked_sheets", SHEETS("distant_light { direction [0, -1, 0] }", "5"));
+    scene_model *s = load_family("stacked_sheets", SHEETS("distant_light { direction [0, -1, 0] }", "5"));
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0.3, 0, 0.2)), vec_splat(0.2675), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(3, 0, 0)), vec_splat(0.35), 1e-14);
     ck_assert(ambiguous_at_world(s, vec_make(1, 0, 0)));
@@ -492,7 +492,7 @@ START_TEST(test_stacked_sheets_radiance_slanted_light)
      * inside: S = 0.25 * 0.5:  C = 0.5 B_A + 0.5 * 0.8 (0.1 + 0.125c).
      * max_depth 2 stops at the disk: C = 0.5 B_A + 0.5 * 0.75 B_B. */
     double c = sqrt(0.5), ba = 0.2 * (0.1 + c), bb = 0.6 * (0.1 + 0.5 * c), bf = 0.8 * (0.1 + 0.5 * c);
-    rf_scene *s = load_family("stacked_sheets", SHEETS("distant_light { direction [-1, -1, 0] }", "5"));
+    scene_model *s = load_family("stacked_sheets", SHEETS("distant_light { direction [-1, -1, 0] }", "5"));
     ck_assert_rgb_rel(exact_at_world(s, vec_make(0.5, 0, 0)), vec_splat(0.5 * ba + 0.375 * bb + 0.125 * bf), 1e-14);
     ck_assert_rgb_rel(exact_at_world(s, vec_make(-1.5, 0, 0)), vec_splat(0.5 * ba + 0.4 * (0.1 + 0.125 * c)), 1e-14);
     /* The floor's path at x = -2 grazes the rim (crosses y = 1 at x = -1). */
@@ -526,13 +526,18 @@ static const scene_case scenes[] = {
     {"scenes/analytic/transparent_shadow_depth2.scene", "transparent_shadow", 10},
     {"scenes/analytic/stacked_sheets.scene", "stacked_sheets", 10},
     {"scenes/analytic/stacked_sheets_cut.scene", "stacked_sheets", 10},
+    {"scenes/analytic/lambert_cylinder.scene", "lambert_cylinder", 10},
+    {"scenes/analytic/lambert_cone.scene", "lambert_cone", 20},
+    {"scenes/analytic/lambert_cone_apex.scene", "lambert_cone", 10},
+    {"scenes/analytic/lambert_torus.scene", "lambert_torus", 20},
+    {"scenes/analytic/lambert_torus_edge.scene", "lambert_torus", 20},
 };
 
 enum { SCENE_COUNT = sizeof scenes / sizeof scenes[0] };
 
 /* The spread of the exact image over its compared pixels: a test must not
  * pass on a blank picture. */
-static double spread(const rf_image *img, const unsigned char *excluded)
+static double spread(const img_buf *img, const unsigned char *excluded)
 {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (long p = 0; p < (long)img->width * img->height; p++)
@@ -553,17 +558,17 @@ static void report(const scene_case *sc, const image_metrics *m, long excluded)
 START_TEST(test_oracle_image_matches_render)
 {
     const scene_case *sc = &scenes[_i];
-    rf_scene *s = load_file(sc->path);
+    scene_model *s = load_file(sc->path);
     ck_assert_str_eq(s->oracle, sc->family);
     const oracle_family *f = family_of(s);
     oracle_view v = view_of(s);
-    rf_image traced, exact;
+    img_buf traced, exact;
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     long count = -1;
     image_metrics m;
     ck_assert_ptr_nonnull(excluded);
-    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), REFRAY_EXIT_OK);
-    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, &count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), STATUS_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, &count), STATUS_OK);
     metrics_compare(&traced, &exact, excluded, f->tolerance(&v, 0), &m);
     report(sc, &m, count);
     ck_assert_msg(m.over == 0, "%s: %ld pixels over %g; max rel %.3e, worst pixel (%d, %d)", sc->path, m.over,
@@ -581,13 +586,13 @@ END_TEST
 /* ---- 3. Phong peaks: place and value ---- */
 
 /* The pixel of the largest first channel of img. */
-static void brightest(const rf_image *img, int *bi, int *bj)
+static void brightest(const img_buf *img, int *bi, int *bj)
 {
     double best = -HUGE_VAL;
     for (int j = 0; j < img->height; j++)
         for (int i = 0; i < img->width; i++)
-            if (img_pixel((rf_image *)img, i, j)[0] > best) {
-                best = img_pixel((rf_image *)img, i, j)[0];
+            if (img_pixel((img_buf *)img, i, j)[0] > best) {
+                best = img_pixel((img_buf *)img, i, j)[0];
                 *bi = i;
                 *bj = j;
             }
@@ -600,24 +605,24 @@ static void brightest(const rf_image *img, int *bi, int *bj)
  * falloff, I(d) tilts the peak toward the light's foot.) */
 static void highlight_peak(const char *path, int keep_falloff, int *bi, int *bj)
 {
-    rf_scene *s = load_file(path);
-    rf_image img;
+    scene_model *s = load_file(path);
+    img_buf img;
     for (int k = 0; k < s->material_count; k++)
         s->materials[k].kd = vec_splat(0);
     for (int k = 0; k < s->light_count && !keep_falloff; k++)
         s->lights[k].falloff = FALLOFF_NONE;
     s->ambient = vec_splat(0);
     s->image.background = vec_splat(0);
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, NULL), STATUS_OK);
     brightest(&img, bi, bj);
     img_free(&img);
     scene_free(s);
 }
 
-static double traced_pixel(const rf_scene *s, int i, int j)
+static double traced_pixel(const scene_model *s, int i, int j)
 {
-    rf_image img;
-    ck_assert_int_eq(render_image(s, NULL, &img, NULL), REFRAY_EXIT_OK);
+    img_buf img;
+    ck_assert_int_eq(render_image(s, NULL, &img, NULL), STATUS_OK);
     double value = img_pixel(&img, i, j)[0];
     img_free(&img);
     return value;
@@ -635,7 +640,7 @@ START_TEST(test_phong_plane_peak_orthographic)
     /* [ORACLE-PHONG-PLANE-2] Camera along -N: the mirror point is the foot of
      * the light [1, 0, -1], the centre of pixel (50, 20).  Value there
      * (scene header): 0.3 (0.05 + 1) + 0.6 * 1 + 0.6 * 0.1 = 0.975. */
-    rf_scene *s = load_file("scenes/analytic/phong_plane.scene");
+    scene_model *s = load_file("scenes/analytic/phong_plane.scene");
     vec3 f, r, u;
     oracle_camera_frame(&s->camera, &f, &r, &u);
     vec3 m = oracle_mirror_point_ortho(s->prims[0].u.plane.point, s->prims[0].u.plane.normal, f, s->lights[0].position);
@@ -661,7 +666,7 @@ START_TEST(test_phong_plane_peak_perspective)
     /* [ORACLE-PHONG-PLANE-2] The eye-to-mirror-light line meets the plane at
      * the origin, the image centre: pixel (40, 30).  There I = 13/13 = 1,
      * N.L = 2/sqrt13: 0.4 (0.1 + 2/sqrt13) + 0.5. */
-    rf_scene *s = load_file("scenes/analytic/phong_plane_perspective.scene");
+    scene_model *s = load_file("scenes/analytic/phong_plane_perspective.scene");
     vec3 m = oracle_mirror_point(s->prims[0].u.plane.point, s->prims[0].u.plane.normal, s->camera.eye,
                                  s->lights[0].position);
     double x, y, want = 0.4 * (0.1 + 2 / sqrt(13.0)) + 0.5;
@@ -687,7 +692,7 @@ START_TEST(test_phong_sphere_peak)
 {
     /* [ORACLE-PHONG-SPHERE-2] Peak at c + r normalize(L + V) = [0.36, 0.48,
      * 0.8], the centre of pixel (52, 21); value 0.87 (scene header). */
-    rf_scene *s = load_file("scenes/analytic/phong_sphere.scene");
+    scene_model *s = load_file("scenes/analytic/phong_sphere.scene");
     vec3 p = oracle_phong_sphere_peak(s->prims[0].u.sphere.center, s->prims[0].u.sphere.radius,
                                       vec_neg(s->lights[0].direction), vec_neg(s->camera.forward));
     double x, y;
@@ -772,6 +777,23 @@ static const refusal refusals[] = {
     {"stacked_sheets", "camera { eye [0, 10, 1] look_at [0, 0, 0] }\n"
                        "plane { }\ndisk { center [0, 1, 0] }\ndisk { center [3, 1, 0] }\n",
      "stacked_sheets: primitives 2 and 3 lie at the same height"},
+    {"lambert_cylinder", FRONT_2 "cylinder { open }\n",
+     "lambert_cylinder: the cylinder must be closed (an open one shows, and shadows, its inside)"},
+    {"lambert_cylinder", "cylinder { }\n", "lambert_cylinder: the camera must be orthographic"},
+    {"lambert_cylinder", FRONT_2 "cylinder { }\nsphere { center [5, 0, 0] }\n",
+     "lambert_cylinder: the scene must be one cylinder"},
+    {"lambert_cylinder", FRONT_2 "point_light { position [0, 0.5, 0.5] }\ncylinder { }\n",
+     "lambert_cylinder: point light 1 is inside the ball around the cylinder"},
+    {"lambert_cylinder", FRONT_2 "cylinder { material { Ks 0.5 } }\n",
+     "lambert_cylinder: the material must have Ks = 0 and t = 0"},
+    {"lambert_cone", FRONT_2 "cone { radii 0.5 0.5 }\n",
+     "lambert_cone: the radii are equal: that is a cylinder (family lambert_cylinder)"},
+    {"lambert_cone", "camera { orthographic eye [0, 0, 0.9] }\ncone { }\n",
+     "lambert_cone: the cone must lie wholly in front of the camera's image plane"},
+    {"lambert_torus", FRONT_2 "point_light { position [5, 5, 5] }\ntorus { }\n",
+     "lambert_torus: light 1 is a point light (distant lights only)"},
+    {"lambert_torus", FRONT_2 "torus { scale [1, 2, 1] }\n",
+     "lambert_torus: primitive 1 keeps a transform (an ellipsoid, a mirrored or turned shape)"},
 };
 
 enum { REFUSAL_COUNT = sizeof refusals / sizeof refusals[0] };

@@ -29,7 +29,7 @@
 #include "scene/scene.h"
 
 /* The exact value at image point (x, y), which must not be ambiguous. */
-static rgb exact_at(const rf_scene *s, double x, double y)
+static rgb exact_at(const scene_model *s, double x, double y)
 {
     rgb c = vec_splat(-1);
     ck_assert_msg(radiance_at(s, x, y, &c) == ORACLE_EXACT, "ambiguous at (%g, %g)", x, y);
@@ -214,8 +214,8 @@ START_TEST(test_optics_light_terms)
      * linear, E 10, d0 1: I = 10/6; Kd 0.5: body = 0.5 * 10/6 * 0.6 = 0.5.
      * V = (0, 0.6, -0.8) is L mirrored about N, so V.R = 1:
      * highlight = Ks I = 0.25 * 10/6. */
-    rf_light l;
-    rf_material m;
+    scene_light l;
+    scene_material m;
     memset(&l, 0, sizeof l);
     memset(&m, 0, sizeof m);
     l.kind = LIGHT_POINT;
@@ -272,7 +272,7 @@ END_TEST
 START_TEST(test_parallel_mirrors_closed_series)
 {
     /* [ORACLE-MIRRORS-4] One material Kd 0.1, Ks 0.5, Ia 0.5, D 4: 0.05 (1 + 1/2 + 1/4 + 1/8). */
-    rf_scene *s = load_text(MIRRORS("4", "[1, 0, 0]", "ambient { color 0.5 }\n"
+    scene_model *s = load_text(MIRRORS("4", "[1, 0, 0]", "ambient { color 0.5 }\n"
                                     "plane { material { Kd 0.1 Ks 0.5 } }\n"
                                     "plane { point [0, 2, 0] material { Kd 0.1 Ks 0.5 } }\n"));
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.09375), 1e-15);
@@ -300,7 +300,7 @@ START_TEST(test_parallel_mirrors_lit_straight_down)
      * (0, 1, 0): every hit is 1 from the light, N.L = 1 and V = R, so the
      * local colour is Kd E/1 + Ks E/1 = 0.1*2 + 0.5*2 = 1.2 (Ia 0), and
      * with D 3 the series is 1.2 (1 + 0.5 + 0.25) = 2.1. */
-    rf_scene *s = load_text("oracle parallel_mirrors\n"
+    scene_model *s = load_text("oracle parallel_mirrors\n"
                             "image { width 1 height 1 max_depth 3 }\n"
                             "camera { orthographic eye [0, 1.5, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
                             "point_light { position [0, 1, 0] power 2 d0 0 }\n"
@@ -336,7 +336,7 @@ START_TEST(test_parallel_mirrors_lit_oblique)
 {
     /* [ORACLE-MIRRORS-1, ORACLE-MIRRORS-2] The forward ray of the 1 x 1 camera, along (3, -1, 0.5), against the
      * step-by-step route; the light off the ray's plane. */
-    rf_scene *s = load_text(MIRRORS("6", "[3, 0, 0.5]", "point_light { position [4, 1.3, 1] power 2 d0 0 }\n"
+    scene_model *s = load_text(MIRRORS("6", "[3, 0, 0.5]", "point_light { position [4, 1.3, 1] power 2 d0 0 }\n"
                                     "plane { material { Kd 0.2 Ks 0.6 n 5 } }\n"
                                     "plane { point [0, 2, 0] material { Kd 0.2 Ks 0.6 n 5 } }\n"));
     double want = mirrors_by_steps(vec_make(0, 1, 0), vec_normalize(vec_make(3, -1, 0.5)), vec_make(4, 1.3, 1), 2,
@@ -350,7 +350,7 @@ START_TEST(test_parallel_mirrors_horizon_is_ambiguous)
 {
     /* [ORACLE-MIRRORS margins] The forward ray parallel to the walls escapes: ambiguous. */
     rgb c;
-    rf_scene *s = load_text(MIRRORS("4", "[1, 1, 0]", "plane { material { Ks 0.5 } }\n"
+    scene_model *s = load_text(MIRRORS("4", "[1, 1, 0]", "plane { material { Ks 0.5 } }\n"
                                     "plane { point [0, 2, 0] material { Ks 0.5 } }\n"));
     ck_assert_int_eq(radiance_at(s, 0.5, 0.5, &c), ORACLE_AMBIGUOUS);
     scene_free(s);
@@ -372,7 +372,7 @@ START_TEST(test_glass_slab_shift_seen)
      * h (tan theta - tan theta_t) = 0.75 - 1/sqrt3 (h = 1).  A light at
      * (0, 0.5, 0), E 1, d0 0, linear: with a = 0.75 - 1/sqrt3 the floor is
      * Kd (1/d)(0.5/d) = 0.8 * 0.5 / (a^2 + 0.25), times t^2 = 0.81. */
-    rf_scene *s = load_text(SLAB("3", "1.2", "point_light { position [0, 0.5, 0] power 1 d0 0 }\n"));
+    scene_model *s = load_text(SLAB("3", "1.2", "point_light { position [0, 0.5, 0] power 1 d0 0 }\n"));
     double a = 0.75 - 1 / sqrt(3.0);
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.81 * 0.8 * 0.5 / (a * a + 0.25)), 1e-13);
     scene_free(s);
@@ -388,7 +388,7 @@ START_TEST(test_glass_slab_light_above)
     /* [ORACLE-SLAB-3] A distant light straight down, E 1: the floor receives it through
      * both faces (S = t^2 = 0.81), N.L = 1: floor = 0.8 * 0.81, seen with
      * weight t^2: 0.81 * 0.8 * 0.81 (with n 1.2 as above). */
-    rf_scene *s = load_text(SLAB("3", "1.2", "distant_light { direction [0, -1, 0] power 1 }\n"));
+    scene_model *s = load_text(SLAB("3", "1.2", "distant_light { direction [0, -1, 0] power 1 }\n"));
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.81 * 0.8 * 0.81), 1e-14);
     scene_free(s);
 }
@@ -400,7 +400,7 @@ START_TEST(test_glass_slab_total_reflection)
      * mirror ray goes up to the background: t bg = 0.9 * 0.4.  ior 0.6 =
      * sin theta is the critical angle: ambiguous. */
     rgb c;
-    rf_scene *s = load_text(SLAB("3", "0.5", ""));
+    scene_model *s = load_text(SLAB("3", "0.5", ""));
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.36), 1e-15);
     scene_free(s);
     s = load_text(SLAB("3", "0.6", ""));
@@ -426,7 +426,7 @@ START_TEST(test_snell_window_closed_series)
     const char *glass = "Kd 0.3 t 0.7 ior 1.5";
     char text[1024];
     snprintf(text, sizeof text, WINDOW("6", "[0.5, 0.8660254037844386, 0]", "ambient { color 0.5 }\n", "%s"), glass);
-    rf_scene *s = load_text(text);
+    scene_model *s = load_text(text);
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.395), 1e-15);
     scene_free(s);
     snprintf(text, sizeof text,
@@ -442,7 +442,7 @@ START_TEST(test_snell_window_critical_angle_is_ambiguous)
     /* [ORACLE-SNELL-1] sin theta = 2/3 exactly in the scene (look_at (2/3, sqrt5/3, 0)):
      * within the 1e-9 margin of the critical angle. */
     rgb c;
-    rf_scene *s = load_text(WINDOW("4", "[0.6666666666666666, 0.7453559924999299, 0]", "", "Kd 0.3 t 0.7 ior 1.5"));
+    scene_model *s = load_text(WINDOW("4", "[0.6666666666666666, 0.7453559924999299, 0]", "", "Kd 0.3 t 0.7 ior 1.5"));
     ck_assert_int_eq(radiance_at(s, 0.5, 0.5, &c), ORACLE_AMBIGUOUS);
     scene_free(s);
 }
@@ -456,7 +456,7 @@ START_TEST(test_snell_window_lit)
      * local colour is (1 - t) Kd I + Ks I: 0.12, 0.36, 0.12.  Inside the
      * window each hit but the last also sends t bg = 0.3 out and the path
      * goes on with Ks:  0.12 + 0.3 + 0.1 (0.36 + 0.3) + 0.01 * 0.12. */
-    rf_scene *s = load_text(WINDOW("3", "[0, 1, 0]", "point_light { position [0, -0.5, 0] power 1 d0 0 }\n",
+    scene_model *s = load_text(WINDOW("3", "[0, 1, 0]", "point_light { position [0, -0.5, 0] power 1 d0 0 }\n",
                                    "Kd 0.2 Ks 0.1 n 5 t 0.6 ior 1.5"));
     ck_assert_rgb_rel(exact_at(s, 0.5, 0.5), vec_splat(0.4872), 1e-14);
     scene_free(s);
@@ -479,7 +479,7 @@ START_TEST(test_ball_lens_sixty_degrees)
      * at y_s = -(2 - 1) tan 60 = -sqrt3: world (-sqrt3, 0, -2).
      * A light at (-sqrt3, 0, -1.5): d 0.5, N.L 1, linear E 1: the screen is
      * 0.6 * 2, seen with t^2 = 0.64. */
-    rf_scene *s = load_text(BALL("3", "ior 1.7320508075688772",
+    scene_model *s = load_text(BALL("3", "ior 1.7320508075688772",
                                  "point_light { position [-1.7320508075688772, 0, -1.5] power 1 d0 0 }\n"));
     double x = 50 * (sqrt(3.0) / 2 + 1);
     ck_assert_rgb_rel(exact_at(s, x, 50), vec_splat(0.64 * 0.6 * 2), 1e-12);
@@ -498,7 +498,7 @@ START_TEST(test_ball_lens_turns_back_and_depth)
     /* [ORACLE-BALL-4] n = sqrt3 turns the rays past 90 degrees for y > 0.9836 (i - r = 45
      * degrees): y = 0.995 sees t^2 bg = 0.64 * 0.25.  Below depth 3 the
      * ball's own colour, 0 with Kd 0 and Ks 0, is all. */
-    rf_scene *s = load_text(BALL("3", "ior 1.7320508075688772", "ambient { color 1 }\n"));
+    scene_model *s = load_text(BALL("3", "ior 1.7320508075688772", "ambient { color 1 }\n"));
     ck_assert_rgb_rel(exact_at(s, 50 * 1.995, 50), vec_splat(0.16), 1e-15);
     scene_free(s);
     s = load_text(BALL("2", "ior 1.7320508075688772", "ambient { color 1 }\n"));
@@ -510,7 +510,7 @@ END_TEST
 START_TEST(test_ball_lens_outline_is_ambiguous)
 {
     rgb c;
-    rf_scene *s = load_text(BALL("3", "ior 1.5", "ambient { color 1 }\n"));
+    scene_model *s = load_text(BALL("3", "ior 1.5", "ambient { color 1 }\n"));
     ck_assert_int_eq(radiance_at(s, 100, 50, &c), ORACLE_AMBIGUOUS);
     ck_assert_int_eq(radiance_at(s, 50, 0, &c), ORACLE_AMBIGUOUS);
     scene_free(s);
@@ -526,7 +526,7 @@ START_TEST(test_ball_lens_focus_seen_by_the_tracer)
      * linear: 0.6 * (1/0.4) * 1 * t^2 = 0.96 at the axis; the gradient
      * there is 0 (the light is on the axis), and y_s ~ 1e-7 changes it by
      * about (y_s / 0.4)^2, far less than 1e-11. */
-    rf_scene *s = load_text("oracle ball_lens\n"
+    scene_model *s = load_text("oracle ball_lens\n"
                             "image { width 101 height 101 max_depth 3 }\n"
                             "camera { orthographic eye [0, 0, 5] look_at [0, 0, 0] width 0.202 }\n"
                             "point_light { position [0, 0, -1.1] power 1 d0 0 }\n"
@@ -568,7 +568,7 @@ static const scene_case scenes[] = {
 
 enum { SCENE_COUNT = sizeof scenes / sizeof scenes[0] };
 
-static double spread(const rf_image *img, const unsigned char *excluded)
+static double spread(const img_buf *img, const unsigned char *excluded)
 {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (long p = 0; p < (long)img->width * img->height; p++)
@@ -581,15 +581,15 @@ static double spread(const rf_image *img, const unsigned char *excluded)
 
 /* Renders s and compares it with its exact image; returns the metrics and
  * the excluded count. */
-static void compare_scene(const rf_scene *s, const char *name, image_metrics *m, long *count, double *range)
+static void compare_scene(const scene_model *s, const char *name, image_metrics *m, long *count, double *range)
 {
     const oracle_family *f = family_of(s);
     oracle_view v = view_of(s);
-    rf_image traced, exact;
+    img_buf traced, exact;
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     ck_assert_ptr_nonnull(excluded);
-    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), REFRAY_EXIT_OK);
-    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, count), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &traced, NULL), STATUS_OK);
+    ck_assert_int_eq(oracle_image(f, &v, &exact, excluded, count), STATUS_OK);
     ck_assert_double_eq(f->tolerance(&v, 0), 1e-9);
     metrics_compare(&traced, &exact, excluded, f->tolerance(&v, 0), m);
     *range = spread(&exact, excluded);
@@ -606,7 +606,7 @@ static void compare_scene(const rf_scene *s, const char *name, image_metrics *m,
 START_TEST(test_oracle_optics_image_matches_render)
 {
     const scene_case *sc = &scenes[_i];
-    rf_scene *s = load_file(sc->path);
+    scene_model *s = load_file(sc->path);
     ck_assert_str_eq(s->oracle, sc->family);
     image_metrics m;
     long count = -1;
@@ -626,7 +626,7 @@ START_TEST(test_parallel_mirrors_far_from_origin)
      * gap, and the slips along the walls pass the tolerance at many pixels
      * (measured without the exclusion: 254 pixels over 1e-9, up to 2.0e-9).
      * The sensitive pixels are excluded, the rest pass. */
-    rf_scene *s = load_text("oracle parallel_mirrors\n"
+    scene_model *s = load_text("oracle parallel_mirrors\n"
                             "image { width 96 height 72 max_depth 6 }\n"
                             "camera { eye [5000, 5001, 5000] look_at [5000, 5000.95, 4997] fov 70 }\n"
                             "point_light { position [5000.5, 5001.5, 4994] power 4 d0 0.5 }\n"
@@ -651,7 +651,7 @@ START_TEST(test_ball_lens_rim_sensitivity)
      * more than 1e-9 (measured without the exclusion: 22 pixels over, up to
      * 6.3e-8).  Those are excluded; the rest, the background beyond
      * included, pass. */
-    rf_scene *s = load_text("oracle ball_lens\n"
+    scene_model *s = load_text("oracle ball_lens\n"
                             "image { width 2000 height 1 max_depth 3 background [0.1, 0.2, 0.4] }\n"
                             "camera { orthographic eye [0.99, 0, 6] look_at [0.99, 0, 0] width 0.02 }\n"
                             "point_light { position [0.5, 0.3, -2.4] power 1 d0 0.05 }\n"

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/diag_print.h"
+#include "io/scene_file.h"
 #include "testlib.h"
 #include "base/diag.h"
 #include "lang/obj.h"
@@ -29,13 +31,13 @@ static void run_parse_len(run *r, const char *text, size_t len, long max_triangl
 {
     static const char scene[] = "mesh \"m.ply\"\n";
     memset(r, 0, sizeof *r);
-    source_set_init(&r->set);
+    source_set_init(&r->set, NULL);
     int root = source_set_add(&r->set, "s.scene", scene, sizeof scene - 1, src_span_none());
     src_span from = {root, 0, 4};
     int file = source_set_add(&r->set, "m.ply", text, len, from);
     r->out = open_memstream(&r->log, &r->log_size);
     ck_assert_ptr_nonnull(r->out);
-    diag_init(&r->d, &r->set, r->out);
+    diag_init(&r->d, &r->set, diag_print, r->out);
     r->ok = ply_parse(&r->set, file, &r->d, max_triangles, &r->mesh);
     fflush(r->out);
 }
@@ -338,9 +340,9 @@ static void parse_file(const char *path, polymesh *out)
     char *text = read_file(path, &len);
     source_set set;
     diag d;
-    source_set_init(&set);
+    source_set_init(&set, NULL);
     int file = source_set_add(&set, path, text, len, src_span_none());
-    diag_init(&d, &set, stderr);
+    diag_init(&d, &set, diag_print, stderr);
     int ok = ply_is_ply(text, len) ? ply_parse(&set, file, &d, 1000, out) : obj_parse(&set, file, &d, 1000, out);
     ck_assert_msg(ok, "%s did not parse", path);
     source_set_free(&set);
@@ -371,7 +373,7 @@ START_TEST(test_ply_fixtures_hold_the_obj_mesh)
 }
 END_TEST
 
-static rf_image render_mesh(const char *file)
+static img_buf render_mesh(const char *file)
 {
     char text[512];
     snprintf(text, sizeof text,
@@ -382,11 +384,11 @@ static rf_image render_mesh(const char *file)
              "mesh { file \"%s\" rotate [0, 10, 0] material { Kd 0.6 Ks 0.3 n 30 } }\n",
              file);
     int status;
-    rf_scene *s = scene_load_text("tests/ply/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("tests/ply/t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "%s did not load", file);
-    rf_image img;
+    img_buf img;
     render_stats st;
-    ck_assert_int_eq(render_image(s, NULL, &img, &st), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, &st), STATUS_OK);
     scene_free(s);
     return img;
 }
@@ -395,7 +397,7 @@ START_TEST(test_ply_renders_as_the_obj)
 {
     /* [MESH-PLY-1] ASCII and both binary orders: the same image as the OBJ,
      * bit for bit. */
-    rf_image a = render_mesh("uvsphere.obj"), b = render_mesh(encodings[_i] + strlen("tests/ply/"));
+    img_buf a = render_mesh("uvsphere.obj"), b = render_mesh(encodings[_i] + strlen("tests/ply/"));
     ck_assert(memcmp(a.rgb, b.rgb, 3 * sizeof *a.rgb * (size_t)a.width * (size_t)a.height) == 0);
     int lit = 0;
     for (long i = 0; i < a.width * a.height; i++)

@@ -15,6 +15,7 @@
 #include "testlib.h"
 #include "render/render.h"
 #include "base/sampler.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 enum { SCENES = 150, TEXT_MAX = 16384 };
@@ -196,7 +197,7 @@ static void generate(gen *g, int index)
         emit_primitive(g);
 }
 
-static int all_finite(const rf_image *img)
+static int all_finite(const img_buf *img)
 {
     for (size_t i = 0; i < 3 * (size_t)img->width * (size_t)img->height; i++)
         if (!isfinite(img->rgb[i]))
@@ -209,9 +210,9 @@ START_TEST(test_random_valid_scenes_render_finite)
     static gen g; /* 16 kB of text: off the stack of the forked test */
     generate(&g, _i);
     int status;
-    rf_scene *s = scene_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", _i, status, g.text);
-    rf_image img;
+    img_buf img;
     render_stats st;
     ck_assert_msg(render_image(s, NULL, &img, &st) == 0, "scene %d did not render:\n%s", _i, g.text);
     ck_assert_msg(all_finite(&img) && st.trace.nonfinite == 0,

@@ -115,7 +115,7 @@ END_TEST
 START_TEST(test_shade_falloff_defensive_cases)
 {
     rgb e = vec_make(1, 2, 3);
-    static const rf_falloff kinds[] = {FALLOFF_LINEAR, FALLOFF_INVERSE_SQUARE};
+    static const scene_falloff kinds[] = {FALLOFF_LINEAR, FALLOFF_INVERSE_SQUARE};
     for (int k = 0; k < 2; k++) {
         ck_assert(vec_same_bits(shade_falloff(e, 0, 0, kinds[k]), e));
         ck_assert(vec_same_bits(shade_falloff(e, -1, 0.5, kinds[k]), e));

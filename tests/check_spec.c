@@ -88,8 +88,8 @@ START_TEST(test_spec_lists_every_property_of_every_block)
                           SPEC, prop);
         }
     }
-    /* image camera ambient 3 lights material 6 primitives */
-    ck_assert_int_eq(blocks, 13);
+    /* image camera ambient 3 lights material 9 primitives */
+    ck_assert_int_eq(blocks, 16);
     free(spec);
 }
 END_TEST

@@ -8,6 +8,7 @@
  * exact Lambert image.
  */
 #include <string.h>
+#include "io/scene_file.h"
 #include "testlib.h"
 #include "render/intersect.h"
 #include "render/render.h"
@@ -18,7 +19,7 @@
  * the lifted point is the hit point itself, bit for bit. */
 START_TEST(test_terminator_flat_triangle_is_not_lifted)
 {
-    rf_prim p;
+    scene_prim p;
     memset(&p, 0, sizeof p);
     p.kind = PRIM_TRIANGLE;
     p.mesh = -1;
@@ -43,7 +44,7 @@ END_TEST
  * worked out here in long double; the result lies above the facet. */
 START_TEST(test_terminator_lift_on_a_sphere_facet)
 {
-    rf_prim p;
+    scene_prim p;
     memset(&p, 0, sizeof p);
     p.kind = PRIM_TRIANGLE;
     p.mesh = -1;
@@ -98,7 +99,7 @@ static int self_shadowed_pixels(int offset)
                                "distant_light { direction [0.2, -1, 0.25] power 1 }\n"
                                "mesh { file \"models/sphere_12x8.obj\" scale 1.2 material { Kd 0.8 } }\n";
     int status, count = 0;
-    rf_scene *s = scene_load_text("scenes/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("scenes/t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_ptr_nonnull(s);
     tracer with, without;
     ck_assert(tracer_init(&with, s, 0, 0) && tracer_init(&without, s, 0, 0));

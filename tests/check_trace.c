@@ -9,19 +9,20 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/render.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 #include "render/trace.h"
 
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
 
 /* The colour of pixel (i, j) of the scene as rendered. */
-static rgb pixel(const rf_scene *s, int i, int j, trace_stats *st)
+static rgb pixel(const scene_model *s, int i, int j, trace_stats *st)
 {
     tracer t;
     trace_stats local;
@@ -41,7 +42,7 @@ static rgb pixel(const rf_scene *s, int i, int j, trace_stats *st)
 START_TEST(test_trace_ambient_only_is_kd_times_ia)
 {
     /* [SHADE-AMB-1] R_a = Kd * Ia channel-wise, no lights: 0.5*0.2, 0.25*0.4, 1*0.1. */
-    rf_scene *s = load(LOOK_DOWN "ambient { color [0.2, 0.4, 0.1] }\n"
+    scene_model *s = load(LOOK_DOWN "ambient { color [0.2, 0.4, 0.1] }\n"
                                  "plane { material { Kd [0.5, 0.25, 1] } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_make(0.1, 0.1, 0.1), 1e-15);
     scene_free(s);
@@ -50,7 +51,7 @@ END_TEST
 
 START_TEST(test_trace_background_when_nothing_is_hit)
 {
-    rf_scene *s = load("image { width 3 height 3 background [0.1, 0.2, 0.3] }\n"
+    scene_model *s = load("image { width 3 height 3 background [0.1, 0.2, 0.3] }\n"
                        "sphere { center [100, 0, 0] radius 1 }\n");
     ck_assert_vec_near(pixel(s, 1, 1, NULL), vec_make(0.1, 0.2, 0.3), 0);
     scene_free(s);
@@ -61,7 +62,7 @@ START_TEST(test_trace_distant_light_lambert)
 {
     /* Light travels along (1, -1, 0)/sqrt2, so L = (-1, 1, 0)/sqrt2 and
      * N.L = cos 45 = 1/sqrt2.  Pixel = Kd*E*N.L = 0.6 * 2 / sqrt2. */
-    rf_scene *s = load(LOOK_DOWN "distant_light { direction [1, -1, 0] power 2 }\n"
+    scene_model *s = load(LOOK_DOWN "distant_light { direction [1, -1, 0] power 2 }\n"
                                  "plane { material { Kd 0.6 } }\n");
     double want = 0.6 * 2 / sqrt(2.0);
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(want), 1e-15);
@@ -80,7 +81,7 @@ START_TEST(test_trace_point_light_falloffs)
         snprintf(text, sizeof text,
                  LOOK_DOWN "point_light { position [0, 3, 4] power 10 d0 1 falloff %s }\n"
                            "plane { material { Kd 0.5 } }\n", falloff[k]);
-        rf_scene *s = load(text);
+        scene_model *s = load(text);
         ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.5 * intensity[k] * 0.6), 1e-14);
         scene_free(s);
     }
@@ -90,7 +91,7 @@ END_TEST
 START_TEST(test_trace_light_below_the_horizon_adds_nothing)
 {
     /* The light is under the plane: N.L < 0 on the side the camera sees. */
-    rf_scene *s = load(LOOK_DOWN "point_light { position [0, -3, 0] power 10 }\n"
+    scene_model *s = load(LOOK_DOWN "point_light { position [0, -3, 0] power 10 }\n"
                                  "plane { material { Kd 0.5 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0), 0);
     scene_free(s);
@@ -104,7 +105,7 @@ START_TEST(test_trace_phong_highlight_at_the_mirror_direction)
      * d = 4, d0 = 0, linear: I = 8/4 = 2.  Pixel = Kd*I*1 + Ks*I*1^n
      * = 0.25*2 + 0.5*2 = 1.5.  (The camera at height 10 does not block: the
      * camera is not an object.) */
-    rf_scene *s = load(LOOK_DOWN_DEPTH1 "point_light { position [0, 4, 0] power 8 }\n"
+    scene_model *s = load(LOOK_DOWN_DEPTH1 "point_light { position [0, 4, 0] power 8 }\n"
                                         "plane { material { Kd 0.25 Ks 0.5 n 50 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(1.5), 1e-14);
     scene_free(s);
@@ -116,7 +117,7 @@ START_TEST(test_trace_opaque_occluder_casts_a_shadow)
     /* A sphere at height 2 stands between the origin and the light at
      * height 4.  A narrow camera from the side (which does not pass the
      * sphere) sees the origin: only ambient is left, Kd*Ia = 0.5*0.1. */
-    rf_scene *s = load("image { width 1 height 1 }\n"
+    scene_model *s = load("image { width 1 height 1 }\n"
                        "camera { perspective eye [0, 1, 5] look_at [0, 0, 0] fov 10 }\n"
                        "ambient { color 0.1 }\n"
                        "point_light { position [0, 4, 0] power 8 }\n"
@@ -132,7 +133,7 @@ START_TEST(test_trace_transparent_occluder_lets_t_squared_through)
     /* The same, but the sphere has t = 0.5: the shadow ray crosses its
      * surface twice, so 0.5^2 = 0.25 of the light arrives (slide 47).  At the
      * origin: d = 4, I = 8/4 = 2, N.L = 1; pixel = 0.5*0.1 + 0.5*2*0.25. */
-    rf_scene *s = load("image { width 1 height 1 }\n"
+    scene_model *s = load("image { width 1 height 1 }\n"
                        "camera { perspective eye [0, 1, 5] look_at [0, 0, 0] fov 10 }\n"
                        "ambient { color 0.1 }\n"
                        "point_light { position [0, 4, 0] power 8 }\n"
@@ -149,7 +150,7 @@ START_TEST(test_trace_mirror_reflects_with_weight_ks)
      * ray goes straight up and hits a plane y = 20 facing down whose colour
      * is its ambient Kd*Ia = 0.8*0.5 = 0.4.  The camera sits at y = 10, below
      * that plane.  Pixel = Ks * 0.4 = 0.2 (the mirror's own Kd is 0). */
-    rf_scene *s = load(LOOK_DOWN "ambient { color 0.5 }\n"
+    scene_model *s = load(LOOK_DOWN "ambient { color 0.5 }\n"
                                  "plane { material { Kd 0 Ks 0.5 } }\n"
                                  "plane { point [0, 20, 0] normal [0, -1, 0] material { Kd 0.8 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.2), 1e-15);
@@ -161,7 +162,7 @@ START_TEST(test_trace_max_depth_one_keeps_the_local_colour)
 {
     /* max_depth 1: no mirror ray; only Kd*Ia of the mirror's Kd 0.2 is left:
      * 0.2 * 0.5 = 0.1 (slide 48: the pseudocode keeps the local colour). */
-    rf_scene *s = load(LOOK_DOWN_DEPTH1 "ambient { color 0.5 }\n"
+    scene_model *s = load(LOOK_DOWN_DEPTH1 "ambient { color 0.5 }\n"
                                  "plane { material { Kd 0.2 Ks 0.5 } }\n"
                                  "plane { point [0, 20, 0] normal [0, -1, 0] material { Kd 0.8 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.1), 1e-15);
@@ -174,7 +175,7 @@ START_TEST(test_trace_transparent_sheet_blends_front_and_back)
     /* A sheet at y = 1 with Kd 0.6, t 0.25 over an opaque floor with Kd 0.4,
      * ambient 1: front = 0.6, back = 0.4, pixel = (1-t)*front + t*back
      * = 0.75*0.6 + 0.25*0.4 = 0.55 (slide 37 with t = transparency). */
-    rf_scene *s = load(LOOK_DOWN "ambient { color 1 }\n"
+    scene_model *s = load(LOOK_DOWN "ambient { color 1 }\n"
                                  "plane { material { Kd 0.4 } }\n"
                                  "disk { center [0, 1, 0] radius 5 material { Kd 0.6 t 0.25 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.55), 1e-15);
@@ -187,7 +188,7 @@ START_TEST(test_trace_ior_one_glass_passes_rays_straight)
     /* A clear sphere of ior 1 in front of a floor: the ray crosses it
      * unbent (bit for bit) and t=1 passes everything: the pixel is the
      * floor's ambient colour exactly, 0.3*1. */
-    rf_scene *s = load(LOOK_DOWN "ambient { color 1 }\n"
+    scene_model *s = load(LOOK_DOWN "ambient { color 1 }\n"
                                  "plane { material { Kd 0.3 } }\n"
                                  "sphere { center [0, 3, 0] radius 1 material { Kd 0 t 1 ior 1 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.3), 0);
@@ -201,7 +202,7 @@ START_TEST(test_trace_glass_sphere_on_axis_is_not_bent)
      * incidence: Snell leaves it straight, so it reaches the floor's origin.
      * Weights: t at entry and t at exit: pixel = t^2 * 0.3 with t = 0.8,
      * plus nothing else (Kd 0, Ks 0). */
-    rf_scene *s = load(LOOK_DOWN "ambient { color 1 }\n"
+    scene_model *s = load(LOOK_DOWN "ambient { color 1 }\n"
                                  "plane { material { Kd 0.3 } }\n"
                                  "sphere { center [0, 3, 0] radius 1 material { Kd 0 t 0.8 ior 1.5 } }\n");
     ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.64 * 0.3), 1e-15);
@@ -215,7 +216,7 @@ START_TEST(test_trace_distributed_light_sums_its_samples)
      * at height h with small jitter: with falloff none each sample gives
      * E/4 * N.L.  A tiny rectangle (1e-9 wide) makes N.L = 1 to 1e-18, so the
      * pixel is Kd*E = 0.5*3. */
-    rf_scene *s = load(LOOK_DOWN "distributed_light { rectangle [0, 5, 0] [1e-9, 0, 0] [0, 0, 1e-9] "
+    scene_model *s = load(LOOK_DOWN "distributed_light { rectangle [0, 5, 0] [1e-9, 0, 0] [0, 0, 1e-9] "
                                  "power 3 samples 4 falloff none }\n"
                                  "plane { material { Kd 0.5 } }\n");
     trace_stats st;
@@ -228,12 +229,12 @@ END_TEST
 
 START_TEST(test_trace_renders_are_bit_identical)
 {
-    rf_scene *s = load("image { width 16 height 12 samples 2 max_depth 4 }\n"
+    scene_model *s = load("image { width 16 height 12 samples 2 max_depth 4 }\n"
                        "ambient { color 0.1 }\n"
                        "distributed_light { disk [0, 4, 0] [0, -1, 0] 1 power 5 samples 9 }\n"
                        "plane { point [0, -1, 0] material { Kd 0.7 Ks 0.2 } }\n"
                        "sphere { material { Kd 0.1 Ks 0.1 t 0.8 ior 1.4 } }\n");
-    rf_image a, b;
+    img_buf a, b;
     ck_assert_int_eq(render_image(s, NULL, &a, NULL), 0);
     ck_assert_int_eq(render_image(s, NULL, &b, NULL), 0);
     ck_assert(memcmp(a.rgb, b.rgb, sizeof(double) * 3 * 16 * 12) == 0);
@@ -247,10 +248,10 @@ START_TEST(test_trace_diffuse_scene_skips_passes)
 {
     /* One diffuse sphere, one point light: nothing can occlude (N.L > 0 is
      * required, a lone convex shape cannot shadow itself), no Ks, no t. */
-    rf_scene *s = load("image { width 8 height 8 }\n"
+    scene_model *s = load("image { width 8 height 8 }\n"
                        "point_light { position [0, 5, 5] power 10 }\n"
                        "sphere { material { Kd 0.5 } }\n");
-    rf_image img;
+    img_buf img;
     render_stats st;
     ck_assert_int_eq(render_image(s, NULL, &img, &st), 0);
     ck_assert_int_eq(st.shadows, 0);
@@ -274,12 +275,12 @@ static int stop_after_two_rows(void *ctx, int done, int total)
 
 START_TEST(test_render_image_stops_when_asked)
 {
-    rf_scene *s = load("image { width 4 height 4 }\nsphere { }\n");
+    scene_model *s = load("image { width 4 height 4 }\nsphere { }\n");
     render_opts o;
     memset(&o, 0, sizeof o);
     o.progress = stop_after_two_rows;
-    rf_image img = {0, 0, NULL};
-    ck_assert_int_eq(render_image(s, &o, &img, NULL), REFRAY_EXIT_INTERRUPTED);
+    img_buf img = {0};
+    ck_assert_int_eq(render_image(s, &o, &img, NULL), STATUS_CANCELLED);
     ck_assert_ptr_null(img.rgb);
     scene_free(s);
 }
@@ -290,7 +291,7 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
     /* Glass that is both a full mirror and fully clear (Ks 1, t 1) inside a
      * mirror box doubles its rays at every bounce: 2^1000 rays at depth
      * 1000.  The budget stops it at once and voids the render. */
-    rf_scene *s = load("image { width 2 height 2 max_depth 1000 }\n"
+    scene_model *s = load("image { width 2 height 2 max_depth 1000 }\n"
                        "camera { eye [0, 0, 5] fov 10 }\n"
                        "material g { Kd 0 Ks 1 t 1 ior 1.5 }\n"
                        "sphere { radius 1 material g }\n"
@@ -298,9 +299,9 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
     render_opts o;
     memset(&o, 0, sizeof o);
     o.max_tree_rays = 10000;
-    rf_image img = {0, 0, NULL};
+    img_buf img = {0};
     render_stats st;
-    ck_assert_int_eq(render_image(s, &o, &img, &st), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(render_image(s, &o, &img, &st), STATUS_DATA);
     ck_assert_ptr_null(img.rgb);
     ck_assert(st.trace.tree_overflow);
     ck_assert(st.trace.tree_rays <= 10001);

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "image/image_file.h"
 #include "testlib.h"
 #include "verify/verify.h"
@@ -30,10 +31,10 @@ enum { OUT_MAX = 65536 };
 /* Loads text and gives it the oracle name `family` (NULL: none).  The name
  * is set here rather than with an `oracle` statement so that any family
  * name can be used, keywords included. */
-static rf_scene *load_scene(const char *text, const char *family)
+static scene_model *load_scene(const char *text, const char *family)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "the test scene does not load (status %d)", status);
     free(s->oracle);
     s->oracle = family ? strdup(family) : NULL;
@@ -45,7 +46,7 @@ static rf_scene *load_scene(const char *text, const char *family)
  * secondary ray (t = 0, Ks = 0). */
 START_TEST(test_verify_scene_ambient_passes)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "ambient.scene", NULL, &r), 0);
     ck_assert_int_eq(r.verdict, VERIFY_PASS);
@@ -68,7 +69,7 @@ END_TEST
 /* Overrides reach both the render and the exact image. */
 START_TEST(test_verify_scene_overrides)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_opts o = {16, 12, 3, 1, 0, 3}; /* three timed renders: rays of one */
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "a", &o, &r), 0);
@@ -85,7 +86,7 @@ END_TEST
  * 2.5e-6 relative) fails there and only there. */
 START_TEST(test_verify_render_compare_detects_an_error)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     oracle_view v = verify_view(s, NULL);
     verify_exact e;
     verify_result r;
@@ -93,7 +94,7 @@ START_TEST(test_verify_render_compare_detects_an_error)
     ck_assert_int_eq(verify_exact_build(oracle_find("ambient_only"), &v, &e), 0);
     ck_assert_near(img_pixel(&e.image, 16, 12)[0], 0.4, 1e-15);
     img_pixel(&e.image, 16, 12)[0] += 1e-6;
-    ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), STATUS_FAIL);
     ck_assert_int_eq(r.verdict, VERIFY_FAIL);
     ck_assert_int_eq(r.metrics.over, 1);
     ck_assert_int_eq(r.metrics.worst_x, 16);
@@ -109,9 +110,9 @@ END_TEST
  * family's own reason, status 1. */
 START_TEST(test_verify_family_refused)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY "point_light { position [0, 3, 3] power 1 }\n", "ambient_only");
     verify_result r;
-    ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(verify_scene(s, "lit.scene", NULL, &r), STATUS_FAIL);
     ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
     ck_assert_str_eq(r.reason, "ambient_only: the scene must have no lights (it has 1)");
     scene_free(s);
@@ -120,18 +121,18 @@ END_TEST
 
 START_TEST(test_verify_family_unknown_and_missing)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "no_such_family");
+    scene_model *s = load_scene(AMBIENT_BODY, "no_such_family");
     oracle_view v = verify_view(s, NULL);
     char why[512];
     int status;
     ck_assert_ptr_null(verify_family(s, &v, &status, why, sizeof why));
-    ck_assert_int_eq(status, REFRAY_EXIT_FAIL);
+    ck_assert_int_eq(status, STATUS_FAIL);
     ck_assert_msg(strstr(why, "no oracle family is called 'no_such_family' (known: ") && strstr(why, "ambient_only"),
                   "why: %s", why);
     free(s->oracle);
     s->oracle = NULL;
     verify_result r;
-    ck_assert_int_eq(verify_scene(s, "plain.scene", NULL, &r), REFRAY_EXIT_DATAERR);
+    ck_assert_int_eq(verify_scene(s, "plain.scene", NULL, &r), STATUS_DATA);
     ck_assert_int_eq(r.verdict, VERIFY_ERROR);
     ck_assert_msg(strstr(r.reason, "no `oracle NAME` statement") != NULL, "reason: %s", r.reason);
     scene_free(s);
@@ -162,7 +163,7 @@ END_TEST
  * the order is marked not meaningful [VERIFY-FIT-2]. */
 START_TEST(test_verify_sweep_run_deterministic)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_sweep sw;
     char why[256];
     verify_result steps[3];
@@ -402,14 +403,14 @@ END_TEST
  * make a well-formed array of three objects. */
 START_TEST(test_verify_json_results_well_formed)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_result r[3];
     verify_scene(s, "dir/\"quoted\"\tname.scene", NULL, &r[0]);
     free(s->oracle);
     s->oracle = strdup("nope\\family");
     verify_scene(s, "b.scene", NULL, &r[1]);
     memset(&r[2], 0, sizeof r[2]);
-    verify_result_error(&r[2], "missing\n.scene", REFRAY_EXIT_NOINPUT, "cannot read");
+    verify_result_error(&r[2], "missing\n.scene", STATUS_NO_INPUT, "cannot read");
     membuf m;
     mem_open(&m);
     verify_json_results(m.fp, r, 3);
@@ -438,7 +439,7 @@ static int count_char(const char *s, char c, const char *end)
  * in JSON is well formed. */
 START_TEST(test_verify_tsv_and_json_sweep)
 {
-    rf_scene *s = load_scene(AMBIENT_BODY, "ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
     verify_sweep sw;
     char why[256];
     verify_result steps[2];
@@ -627,7 +628,7 @@ START_TEST(test_cli_oracle_writes_the_exact_image)
     ck_assert_int_eq(run_refray(draw, out), 0);
     const char *cmp[] = {"compare", render, exact, "--mask", mask, "--tolerance", "1e-7", NULL};
     ck_assert_int_eq(run_refray(cmp, out), 0);
-    rf_image img;
+    img_buf img;
     ck_assert_int_eq(img_read(exact, &img, err, sizeof err), 0);
     ck_assert_near(img_pixel(&img, 16, 12)[0], 0.4, 1e-7); /* Kd * Ia, red */
     ck_assert_near(img_pixel(&img, 0, 0)[2], 0.3, 1e-7);   /* the background */

@@ -15,6 +15,7 @@
  * pixel is the geometric series of the ambient term).
  */
 #include <string.h>
+#include "io/scene_file.h"
 #include "testlib.h"
 #include "render/bvh.h"
 #include "render/render.h"
@@ -39,15 +40,15 @@ static const solid solids[] = {
 enum { SOLIDS = sizeof solids / sizeof solids[0] };
 
 /* Loads a scene written here as if it were tests/obj/t.scene. */
-static rf_scene *load(const char *text)
+static scene_model *load(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("tests/obj/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("tests/obj/t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
 
-static rf_scene *load_solid(const solid *so, const char *material, const char *xforms)
+static scene_model *load_solid(const solid *so, const char *material, const char *xforms)
 {
     char text[1024];
     snprintf(text, sizeof text,
@@ -80,7 +81,7 @@ typedef struct tally {
 } tally;
 
 /* A ray through point: it must hit, and cross the surface `want` times. */
-static void shoot(const tracer *t, const rf_scene *s, vec3 from, vec3 point, int want, tally *out)
+static void shoot(const tracer *t, const scene_model *s, vec3 from, vec3 point, int want, tally *out)
 {
     ray r = ray_from_to(from, point), near = r;
     hit h;
@@ -95,7 +96,7 @@ static void shoot(const tracer *t, const rf_scene *s, vec3 from, vec3 point, int
  * from outside toward each inside point (two: in here, out on the far
  * side; the direction points into the solid there because the solid is
  * convex and the inside point strictly inside it). */
-static void shoot_through(const tracer *t, const rf_scene *s, const vec3 inside[3], vec3 point, tally *out)
+static void shoot_through(const tracer *t, const scene_model *s, const vec3 inside[3], vec3 point, tally *out)
 {
     for (int k = 0; k < 3; k++) {
         shoot(t, s, inside[k], point, 1, out);
@@ -105,13 +106,13 @@ static void shoot_through(const tracer *t, const rf_scene *s, const vec3 inside[
 
 /* Every vertex, and five points of every edge (its midpoint among them),
  * of the mesh's triangles. */
-static tally sweep_mesh(const rf_scene *s, const vec3 inside[3])
+static tally sweep_mesh(const scene_model *s, const vec3 inside[3])
 {
     static const double at[] = {0.5, 0.1, 0.3337, 0.71, 0.9};
     tracer t;
     tally out = {0, 0, 0};
     ck_assert(tracer_init(&t, s, 0, 0));
-    const rf_trimesh *g = &s->meshes[0].geom;
+    const scene_trimesh *g = &s->meshes[0].geom;
     for (int k = 0; k < g->tri_count; k++)
         for (int e = 0; e < 3; e++) {
             vec3 a = g->positions[g->tri[k][e]], b = g->positions[g->tri[k][(e + 1) % 3]];
@@ -129,7 +130,7 @@ START_TEST(test_watertight_every_edge_and_vertex)
      * coordinates) and turned and moved off the axes. */
     static const char *const frames[2] = {"", "rotate [17, 29, 41] translate [0.5, 0.25, 0.125]"};
     const solid *so = &solids[_i / 2];
-    rf_scene *s = load_solid(so, "Kd 0.8", frames[_i % 2]);
+    scene_model *s = load_solid(so, "Kd 0.8", frames[_i % 2]);
     ck_assert(s->meshes[0].geom.closed);
     vec3 inside[3];
     xform turn = xform_rotate_xyz(vec_make(17, 29, 41)), move = xform_translate(vec_make(0.5, 0.25, 0.125));
@@ -147,11 +148,11 @@ END_TEST
 
 /* ---- camera rays on shared edges ----------------------------------------- */
 
-static rf_image render(const rf_scene *s)
+static img_buf render(const scene_model *s)
 {
-    rf_image img;
+    img_buf img;
     render_stats st;
-    ck_assert_int_eq(render_image(s, NULL, &img, &st), REFRAY_EXIT_OK);
+    ck_assert_int_eq(render_image(s, NULL, &img, &st), STATUS_OK);
     ck_assert_int_eq(st.trace.nonfinite, 0);
     return img;
 }
@@ -166,10 +167,10 @@ START_TEST(test_watertight_prism_pixels_on_the_diagonal)
      * into the background: one path for all of them, so every pixel of the
      * face shows the same value.  Counting the diagonal twice made those
      * pixels darker by t (0.9). */
-    rf_scene *s = load("image { width 16 height 16 max_depth 8 background 1 }\n"
+    scene_model *s = load("image { width 16 height 16 max_depth 8 background 1 }\n"
                        "camera { orthographic eye [-10, 0, 0] look_at [0, 0, 0] up [0, 1, 0] width 2 }\n"
                        "mesh { file \"prism.obj\" material { Kd 0 t 0.9 ior 1.5 } }\n");
-    rf_image img = render(s);
+    img_buf img = render(s);
     double first = img_pixel(&img, 0, 15)[0];
     int on_diagonal = 0;
     for (int j = 0; j < 16; j++)
@@ -192,7 +193,7 @@ END_TEST
 /* Two renders agree at every pixel whose centre is farther than `margin`
  * (in pixels) from where the solid's silhouette could pass: pixels that both
  * show the background, or both the solid's inside, agree to rel. */
-static void assert_same_image(const rf_image *a, const rf_image *b, double rel, const char *what)
+static void assert_same_image(const img_buf *a, const img_buf *b, double rel, const char *what)
 {
     ck_assert_int_eq(a->width, b->width);
     ck_assert_int_eq(a->height, b->height);
@@ -217,10 +218,10 @@ START_TEST(test_watertight_cube_head_on_equals_box)
                                 "%s { %s material { Kd [0.2, 0.3, 0.4] Ks 0.1 n 20 t 0.8 ior 1.5 } }\n";
     char text[1024];
     snprintf(text, sizeof text, scene, "mesh", "file \"cube.obj\"");
-    rf_scene *m = load(text);
+    scene_model *m = load(text);
     snprintf(text, sizeof text, scene, "box", "from [-1, -1, -1] to [1, 1, 1]");
-    rf_scene *b = load(text);
-    rf_image im = render(m), ib = render(b);
+    scene_model *b = load(text);
+    img_buf im = render(m), ib = render(b);
     assert_same_image(&im, &ib, 1e-12, "glass cube head on");
     img_free(&im);
     img_free(&ib);
@@ -242,11 +243,11 @@ static void mesh_against_box(const char *material, double rel)
         "%s { %s rotate [0, 30, 0] rotate [20, 0, 0] translate [0, 0.5, 0] material { %s } }\n";
     char text[1024];
     snprintf(text, sizeof text, scene, "mesh", "file \"cube.obj\"", material);
-    rf_scene *m = load(text);
+    scene_model *m = load(text);
     snprintf(text, sizeof text, scene, "box", "from [-1, -1, -1] to [1, 1, 1]", material);
-    rf_scene *b = load(text);
+    scene_model *b = load(text);
     ck_assert(b->prims[1].has_xform);
-    rf_image im = render(m), ib = render(b);
+    img_buf im = render(m), ib = render(b);
     int differ = 0;
     for (int j = 0; j < im.height; j++)
         for (int i = 0; i < im.width; i++)
@@ -283,7 +284,7 @@ static void assert_mirror_keeps_light(const char *shape, int depth)
              "ambient { color 0.002 }\n"
              "%s material { Kd 0.5 Ks 1 } }\n",
              depth, shape);
-    rf_scene *s = load(text);
+    scene_model *s = load(text);
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
     static const double origins[3][3] = {{0.05, 0.02, -0.03}, {0.3, -0.2, 0.1}, {-0.4, 0.35, -0.25}};
@@ -292,7 +293,7 @@ static void assert_mirror_keeps_light(const char *shape, int depth)
     vec3 corner[8];
     for (int k = 0; k < 8; k++)
         corner[k] = vec_make(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
-    const rf_prim *p = &s->prims[0];
+    const scene_prim *p = &s->prims[0];
     for (int o = 0; o < 3; o++)
         for (int a = 0; a < 8; a++)
             for (int b = 0; b < 8; b++) {
@@ -336,7 +337,7 @@ END_TEST
 /* ---- shadow rays through edges -------------------------------------------- */
 
 typedef struct carried {
-    const rf_scene *s;
+    const scene_model *s;
     double through;
 } carried;
 
@@ -353,11 +354,11 @@ START_TEST(test_watertight_shadow_rays_through_edges)
      * it, on a line through a vertex or an edge point of the cube and a
      * point inside it: each is attenuated by t^2 (in and out), never t^3 or
      * t^4 (an edge counted twice), never t or 1 (a leak). */
-    rf_scene *s = load("point_light { position [0, 10, 0] power 1 }\n"
+    scene_model *s = load("point_light { position [0, 10, 0] power 1 }\n"
                        "mesh { file \"cube.obj\" rotate [17, 29, 41] material { Kd 0 t 0.5 ior 1.5 } }\n");
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
-    const rf_trimesh *g = &s->meshes[0].geom;
+    const scene_trimesh *g = &s->meshes[0].geom;
     static const double inside[3][3] = {{0.1, -0.2, 0.3}, {-0.6, 0.5, 0.2}, {0.05, 0.02, -0.1}};
     int rays = 0, wrong = 0;
     for (int k = 0; k < g->tri_count; k++)

@@ -1,35 +1,27 @@
 #!/bin/sh
-# crosscheck.sh - POV-Ray checked by refray's oracle; the script behind
-# `make crosscheck` (spec/crosscheck.md).
+# crosscheck.sh - other renderers measured by refray's oracle through the
+# conformance kit; the script behind `make crosscheck` (spec/crosscheck.md).
 #
-# For each analytic scene given: export it (`refray export --to pov`),
-# render the SDL with POV-Ray 3.7 on one thread with linear output, compare
-# the picture with the scene's exact image (`povcheck compare`: the exact
-# image and its excluded pixels as `refray verify` builds them), and put
-# POV-Ray's error and time next to refray's (`povcheck refray`: the
-# verify_scene result that `refray verify --json` prints).
+# Each renderer is one `refray conform` run over the kit with the command
+# line and options that renderer needs (run_renderer below): its table is
+# conform's --markdown, its JUnit XML and text table stay in $OUT.  After
+# the tables come the kit's notes on what the POV-Ray export could not
+# match, read from the header of each .pov file.
 #
-# The picture goes through a 16-bit PNG (+FN16, File_Gamma=1.0, with
-# assumed_gamma 1.0 in the SDL: linear codes).  So that its step (1/65535
-# of full scale) is small against the picture, the export scales every
-# light, the ambient light and the background by the power of two that
-# puts the exact image's peak in (0.4, 0.8] (`refray export --scale`: the
-# image is linear in them, so this is exact), and povcheck divides it back.
-# POV_FORMAT=exr uses +FE instead (this povray writes half floats: a
-# relative step of 2^-11, coarser than the scaled PNG).
-#
-# Environment: REFRAY and POVCHECK (the two programs), OUT (the work
-# directory; every file of the run stays there), UPDATE_SPEC=1 to write the
-# table into spec/crosscheck.md between its crosscheck-table markers.
-# POV-Ray is installed from Debian (`povray`) when it is missing.
+# Environment: REFRAY (the program), KIT (a kit made by `refray kit`), OUT
+# (the work directory), UPDATE_SPEC=1 to write the result into
+# spec/crosscheck.md between its crosscheck-table markers, ONLY="NAME ..."
+# for some scenes only.  POV-Ray is installed from Debian (`povray`) when
+# it is missing.
 set -u
 
 REFRAY=${REFRAY:-build/refray}
-POVCHECK=${POVCHECK:-build/povcheck}
+KIT=${KIT:-build/kit}
 OUT=${OUT:-build/crosscheck}
 UPDATE_SPEC=${UPDATE_SPEC:-0}
-POV_FORMAT=${POV_FORMAT:-png16}
+ONLY=${ONLY:-}
 SPEC=spec/crosscheck.md
+ROOT=$(pwd)
 
 die() {
     echo "crosscheck: $*" >&2
@@ -45,125 +37,53 @@ install_povray() {
         die "cannot install povray"
 }
 
-# Seconds since the epoch with nanoseconds (GNU date).
-now() {
-    date +%s.%N
-}
-
-# a - b, printed with 3 decimals.
-elapsed() {
-    awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", a - b }'
-}
-
-# A number in 3 significant digits, for the table.
-num() {
-    awk -v x="$1" 'BEGIN { if (x == "") print "-"; else if (x == 0) print "0"; else printf "%.2e", x }'
-}
-
-# The power of two 2^-m that takes the peak $1 into (0.4, 0.8].
-scale_for() {
-    awk -v p="$1" 'BEGIN {
-        if (!(p > 0)) { print 1; exit }
-        m = 0
-        while (p * 2 ^ -m > 0.8) m++
-        while (p * 2 ^ -m <= 0.4) m--
-        printf "%.17g\n", 2 ^ -m }'
-}
-
-# Seconds in 3 significant digits.
-secs() {
-    awk -v x="$1" 'BEGIN { if (x == "") print "-"; else printf "%.3g", x }'
-}
-
-# Renders $OUT/$1.pov (POV-Ray reads and writes only in its current
-# directory and /tmp under Debian's povray.conf: run it inside $OUT).
-# Sets pov_image, pov_wall, pov_trace and pov_ok.
-render_pov() {
-    name=$1
-    args=$(sed -n 's,^// pov-args: ,,p' "$OUT/$name.pov")
-    if [ "$POV_FORMAT" = exr ]; then
-        pov_image=$name.pov.exr
-        fmt="+FE"
-    else
-        pov_image=$name.pov.png
-        fmt="+FN16 File_Gamma=1.0"
-    fi
-    t0=$(now)
-    # shellcheck disable=SC2086 # args and fmt are lists of options
-    (cd "$OUT" && povray "+I$name.pov" "+O$pov_image" $args $fmt -D -V +WT1 Output_Alpha=off \
-        >"$name.pov.log" 2>&1)
-    pov_ok=$?
-    t1=$(now)
-    pov_wall=$(elapsed "$t1" "$t0")
-    pov_trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$OUT/$name.pov.log" | head -n 1)
-}
-
-# Turns povcheck's "key=value ..." line into variables PREFIX_key.
-read_values() {
-    prefix=$1
-    line=$2
-    for kv in $line; do
-        eval "${prefix}_${kv%%=*}=\${kv#*=}"
-    done
-}
-
-# Exports, renders and measures one variant of a scene: $1 the scene, $2
-# the label in the table, $3 the file stem, then the extra export options.
-# Adds a row to $rows and the notes to $notes_md; uses ex_* and rf_*.
-pov_row() {
-    scene=$1
-    label=$2
-    stem=$3
+# Runs conform for one renderer: $1 its heading, $2 the file stem, $3 the
+# command as shown in the spec (paths relative to the repository), then
+# conform's options.  Appends its section to $sections.
+run_renderer() {
+    heading=$1
+    stem=$2
+    shown=$3
     shift 3
-    if ! "$REFRAY" export "$scene" --to pov --scale "$scale" "$@" -o "$OUT/$stem.pov" -W 2>"$OUT/$stem.notes"
-    then
-        reason=$(sed -n 's/^refray: error: //p' "$OUT/$stem.notes" | head -n 1)
-        printf '| %s | %s | refused by the export | | | | | %s | %s | %s | %s %s | %s/%s |\n' "$label" \
-            "$(num "$ex_peak")" "$(num "$rf_max_abs")" "$(num "$rf_rms")" "$(num "$rf_max_rel")" \
-            "$(secs "$rf_seconds")" "${rf_verdict:-}" "$ex_excluded" "$ex_pixels" >>"$rows"
-        printf '\n#### %s\n\nRefused by `refray export`: %s\n' "$label" "$reason" >>"$notes_md"
-        return
-    fi
-    render_pov "$stem"
-    k=$(sed -n 's,^// pov-downsample: ,,p' "$OUT/$stem.pov")
-    pv_max_abs="" pv_rms="" pv_max_rel="" pv_max_rel_bright=""
-    if [ "$pov_ok" = 0 ]; then
-        pov=$("$POVCHECK" compare "$scene" "$OUT/$pov_image" "$k" "$scale" 2>"$OUT/$stem.compare.err") &&
-            read_values pv "$pov"
-    fi
-    peak="$(num "$ex_peak")"
-    [ "$pov_ok" = 0 ] || peak="$peak; POV-Ray failed ($OUT/$stem.pov.log)"
-    printf '| %s | %s | %s | %s | %s | %s | %s (%s) | %s | %s | %s | %s %s | %s/%s |\n' \
-        "$label" "$peak" "$(num "$pv_max_abs")" "$(num "$pv_rms")" "$(num "$pv_max_rel")" \
-        "$(num "$pv_max_rel_bright")" "$pov_wall" "${pov_trace:--}" "$(num "$rf_max_abs")" \
-        "$(num "$rf_rms")" "$(num "$rf_max_rel")" "$(secs "$rf_seconds")" "${rf_verdict:-}" \
-        "$ex_excluded" "$ex_pixels" >>"$rows"
-    printf '\n#### %s\n\n' "$label" >>"$notes_md"
-    if grep -q '^refray: approximation: ' "$OUT/$stem.notes"; then
-        sed -n 's/^refray: approximation: \(.*\)/- \1/p' "$OUT/$stem.notes" >>"$notes_md"
-    else
-        echo "- nothing: the export is exact for this scene" >>"$notes_md"
-    fi
+    echo "crosscheck: $heading" >&2
+    # shellcheck disable=SC2086 # ONLY is a list of names
+    "$REFRAY" conform --kit "$KIT" --markdown "$OUT/$stem.md" --junit "$OUT/$stem.xml" \
+        ${ONLY:+--only $ONLY} "$@" >"$OUT/$stem.txt" 2>"$OUT/$stem.err"
+    status=$?
+    # 0: every scene passed, 1: some failed; both are a measurement.
+    [ "$status" -le 1 ] || die "conform for $heading stopped with exit $status: $(cat "$OUT/$stem.err")"
+    {
+        echo
+        echo "### $heading"
+        echo
+        echo "    $shown"
+        echo
+        cat "$OUT/$stem.md"
+        echo
+        tail -n 1 "$OUT/$stem.txt" | sed 's/^/Summary: /'
+    } >>"$sections"
 }
 
-# One scene: its exact image and refray's check, then POV-Ray's rows: the
-# default export, and for distributed lights also POV-Ray's own area_light.
-check_scene() {
-    scene=$1
-    name=$(basename "$scene" .scene)
-    exact=$("$POVCHECK" exact "$scene" 2>"$OUT/$name.exact.err") || {
-        printf '| %s | no exact image | | | | | | | | | | |\n' "$name" >>"$rows"
-        printf '\n#### %s\n\nNo exact image: %s\n' "$name" "$(head -n 1 "$OUT/$name.exact.err")" >>"$notes_md"
-        return
-    }
-    read_values ex "$exact"
-    scale=$(scale_for "$ex_peak")
-    rf_max_abs="" rf_rms="" rf_max_rel="" rf_seconds="" rf_verdict=""
-    ref=$("$POVCHECK" refray "$scene" 2>"$OUT/$name.refray.err") && read_values rf "$ref"
-    pov_row "$scene" "$name" "$name"
-    if grep -q '^distributed_light' "$scene"; then
-        pov_row "$scene" "$name (area_light)" "$name.area" --area-lights
-    fi
+# The approximations listed in the header of each of the kit's .pov files
+# (`//   - ...` lines after `// approximations:`), per scene.
+pov_notes() {
+    for dir in "$KIT"/scenes/*/; do
+        name=$(basename "$dir")
+        if [ -n "$ONLY" ] && ! echo " $ONLY " | grep -q " $name "; then
+            continue
+        fi
+        echo
+        echo "#### $name"
+        echo
+        pov="$dir$name.pov"
+        if [ ! -f "$pov" ]; then
+            echo "- no .pov: the export refused the scene (the reason is in the table and in manifest.json)"
+        elif grep -q '^//   - ' "$pov"; then
+            sed -n '/^#version/q; s,^//   - \(.*\),- \1,p' "$pov"
+        else
+            echo "- nothing: the export is exact for this scene"
+        fi
+    done
 }
 
 # Replaces the lines between the markers in $SPEC with $1 (atomically).
@@ -176,35 +96,40 @@ update_spec() {
         !skip { print }' "$SPEC" >"$SPEC.tmp" && mv "$SPEC.tmp" "$SPEC"
 }
 
-[ $# -gt 0 ] || die "no scenes given (scenes/analytic/*.scene)"
 [ -x "$REFRAY" ] || die "no refray at $REFRAY"
-[ -x "$POVCHECK" ] || die "no povcheck at $POVCHECK"
+[ -f "$KIT/manifest.json" ] || die "no kit at $KIT (make kit)"
 install_povray
 mkdir -p "$OUT" || die "cannot create $OUT"
-if [ "$POV_FORMAT" = exr ]; then
-    povray --version 2>&1 | grep -q 'openexr' || die "this povray cannot write OpenEXR (+FE)"
-fi
-rows=$OUT/rows.md
-notes_md=$OUT/notes.md
-: >"$rows"
-: >"$notes_md"
-for scene in "$@"; do
-    echo "crosscheck: $scene" >&2
-    check_scene "$scene"
-done
+sections=$OUT/sections.md
+: >"$sections"
 
-version=$(povray --version 2>&1 | sed -n 's/^POV-Ray \(3[^ ]*\).*/\1/p' | head -n 1)
+pov_version=$(povray --version 2>&1 | sed -n 's/^POV-Ray \(3[^ ]*\).*/\1/p' | head -n 1)
+run_renderer "POV-Ray ${pov_version:-3.7} (one thread, no anti-aliasing, 16-bit linear PNG)" povray \
+    "refray conform --kit $KIT --format png --downsample manifest --scale manifest --timeout 120 --cmd 'sh tests/conform/povray.sh {pov} {out} {width} {height}'" \
+    --format png --downsample manifest --scale manifest --timeout 120 \
+    --cmd "sh '$ROOT/tests/conform/povray.sh' {pov} {out} {width} {height}"
+
+# Mitsuba 3 (issue 10, 4b) goes here: one more run_renderer, with the
+# adapter that reads the kit's .json, e.g.
+#   run_renderer "Mitsuba 3 (scalar_rgb)" mitsuba "refray conform ... --cmd '...'" \
+#       --format exr --cmd "'$ROOT/build/mitsuba-venv/bin/python' '$ROOT/tests/conform/mitsuba.py' {json} {out}"
+
+case $REFRAY in /*) refray_abs=$REFRAY ;; *) refray_abs=$ROOT/$REFRAY ;; esac
+run_renderer "refray $("$REFRAY" --version | sed 's/^refray //') itself, through the same runner" refray \
+    "refray conform --kit $KIT --format pfm --cmd '$REFRAY render -q {scene} -o {out}'" \
+    --format pfm --cmd "'$refray_abs' render -q {scene} -o {out}"
+
 table=$OUT/table.md
 {
-    echo "Made by \`make crosscheck\` on $(date -u +%Y-%m-%d) with POV-Ray ${version:-?} (one thread, +WT1)"
-    echo "and refray $("$REFRAY" --version | sed 's/^refray //'), $(uname -m); $# scenes."
+    echo "Made by \`make crosscheck\` on $(date -u +%Y-%m-%d), $(uname -m), with the kit of \`make kit\`"
+    echo "($(ls -d "$KIT"/scenes/*/ | wc -l | tr -d ' ') scenes).  Columns: the exact image's peak; max abs, RMS and max rel error"
+    echo "over the compared pixels; pixels over the tolerance |out - exact| <= relative |exact| + absolute"
+    echo "of the manifest; the renderer's wall time in seconds (POV-Ray's includes its start-up of about"
+    echo "0.6 s); the verdict and its reason."
+    cat "$sections"
     echo
-    echo "| scene | exact peak | POV max abs | POV RMS | POV max rel | POV max rel (>1% of peak) | POV s: wall (trace) | refray max abs | refray RMS | refray max rel | refray s, verdict | excluded px |"
-    echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
-    cat "$rows"
-    echo
-    echo "### What the export could not match, per scene"
-    cat "$notes_md"
+    echo "### What the POV-Ray export could not match, per scene"
+    pov_notes
 } >"$table"
 cat "$table"
 if [ "$UPDATE_SPEC" = 1 ]; then

@@ -10,32 +10,33 @@
 #include <string.h>
 #include "testlib.h"
 #include "oracle/oracle.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
-static inline rf_scene *load_text(const char *text)
+static inline scene_model *load_text(const char *text)
 {
     int status;
-    rf_scene *s = scene_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
 
-static inline rf_scene *load_file(const char *path)
+static inline scene_model *load_file(const char *path)
 {
     int status;
-    rf_scene *s = scene_load(path, NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
     return s;
 }
 
-static inline oracle_view view_of(const rf_scene *s)
+static inline oracle_view view_of(const scene_model *s)
 {
     oracle_view v = {s, s->image.width, s->image.height, s->image.samples, s->image.max_depth};
     return v;
 }
 
 /* The scene's family, which must accept it. */
-static inline const oracle_family *family_of(const rf_scene *s)
+static inline const oracle_family *family_of(const scene_model *s)
 {
     char why[256] = "";
     ck_assert_ptr_nonnull(s->oracle);
@@ -46,7 +47,7 @@ static inline const oracle_family *family_of(const rf_scene *s)
     return f;
 }
 
-static inline oracle_status radiance_at(const rf_scene *s, double x, double y, rgb *out)
+static inline oracle_status radiance_at(const scene_model *s, double x, double y, rgb *out)
 {
     oracle_view v = view_of(s);
     return family_of(s)->radiance(&v, x, y, out);
@@ -55,7 +56,7 @@ static inline oracle_status radiance_at(const rf_scene *s, double x, double y, r
 /* A scene the family must refuse, with exactly this reason. */
 static inline void assert_refused(const char *family, const char *text, const char *reason)
 {
-    rf_scene *s = load_text(text);
+    scene_model *s = load_text(text);
     const oracle_family *f = oracle_find(family);
     char why[256] = "";
     ck_assert_ptr_nonnull(f);

@@ -1,7 +1,7 @@
 /*
  * arena.c - chained blocks; a request larger than a block gets its own.
  */
-#include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include "base/arena.h"
 
@@ -21,16 +21,17 @@ struct arena_block {
     arena_align data[]; /* flexible array of the strictest alignment */
 };
 
-void arena_init(arena *a)
+void arena_init(arena *a, const mem *m)
 {
     a->head = NULL;
+    a->mem = mem_pick(m);
 }
 
 void arena_free(arena *a)
 {
     while (a->head) {
         arena_block *next = a->head->next;
-        free(a->head);
+        mem_free(&a->mem, a->head, sizeof *a->head + a->head->size);
         a->head = next;
     }
 }
@@ -43,11 +44,13 @@ static size_t round_up(size_t n)
 
 void *arena_alloc(arena *a, size_t size)
 {
+    if (size > SIZE_MAX / 2)
+        return NULL;
     size = round_up(size ? size : 1);
     arena_block *b = a->head;
     if (!b || b->size - b->used < size) {
         size_t cap = size > BLOCK_BYTES ? size : BLOCK_BYTES;
-        b = malloc(sizeof *b + cap);
+        b = cap <= SIZE_MAX - sizeof *b ? mem_alloc(&a->mem, sizeof *b + cap) : NULL;
         if (!b)
             return NULL;
         b->used = 0;

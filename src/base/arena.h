@@ -6,14 +6,17 @@
 #define REFRAY_ARENA_H
 
 #include <stddef.h>
+#include "base/mem.h"
 
 typedef struct arena_block arena_block;
 
 typedef struct arena {
     arena_block *head;
+    mem mem;          /* where the blocks come from */
 } arena;
 
-void arena_init(arena *a);
+/* An empty arena whose blocks come from m (NULL: the C library). */
+void arena_init(arena *a, const mem *m);
 void arena_free(arena *a);
 /* Zeroed memory aligned for any object; NULL when out of memory. */
 void *arena_alloc(arena *a, size_t size);

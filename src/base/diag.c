@@ -1,24 +1,22 @@
 /*
- * diag.c - prints diagnostics in the form compilers use:
+ * diag.c - counts diagnostics and turns them into records (diag.h).
  *
- *   scene.scene:3:17: error: radius must be > 0, got -1
- *       3 | sphere { radius -1 }
- *         |                 ^~
- *
- * Columns count bytes from 1.  The caret line copies the tabs of the source
- * line so the caret sits under the span in any tab width.  Very long lines
- * are shown as a window around the span, so a 1 MB line prints one screen.
+ * The message is formatted here, into a buffer on the stack; one longer
+ * than that gets a buffer from the source set's allocator, and is cut to
+ * the stack buffer when even that fails, so reporting never fails.
  */
 #include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 #include "base/diag.h"
 
-enum { WINDOW_BEFORE = 60, WINDOW_AFTER = 100 };
+enum { MESSAGE_BYTES = 512 };
 
-void diag_init(diag *d, const source_set *sources, FILE *out)
+void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_user)
 {
     d->sources = sources;
-    d->out = out;
+    d->sink = sink;
+    d->sink_user = sink_user;
     d->errors = 0;
     d->warnings = 0;
     d->max_errors = 20;
@@ -30,57 +28,47 @@ int diag_too_many(const diag *d)
     return d->max_errors > 0 && d->errors >= d->max_errors;
 }
 
-static const char *level_name(diag_level level)
+static void emit(const diag *d, diag_level level, const source_file *f, size_t offset, const char *message,
+                 size_t span_length, int excerpt)
 {
-    switch (level) {
-    case DIAG_ERROR:
-        return "error";
-    case DIAG_WARNING:
-        return "warning";
-    default:
-        return "note";
+    diag_record r;
+    memset(&r, 0, sizeof r);
+    r.level = level;
+    r.message = message;
+    if (f)
+        r.path = f->path;
+    /* A mesh file's text is released once its mesh is built: a later
+     * message names the file without a line. */
+    if (f && f->text) {
+        source_line_col(f, offset, &r.line, &r.column);
+        if (excerpt)
+            r.source_line = source_line_text(f, offset, &r.source_line_length);
+        r.span_length = span_length;
+    }
+    d->sink(d->sink_user, &r);
+}
+
+/* One note per file that read the next: an OBJ file is read by a mesh,
+ * a scene file by an include. */
+static void emit_include_chain(const diag *d, const source_file *f)
+{
+    const source_set *set = d->sources;
+    while (f->included_from.file >= 0 && f->included_from.file < set->count) {
+        const source_file *parent = set->files[f->included_from.file];
+        emit(d, DIAG_NOTE, parent, f->included_from.begin,
+             f->is_mesh ? "in the mesh read here" : "included from here", 0, 0);
+        f = parent;
     }
 }
 
-/* Control bytes (NUL among them) would garble the terminal: show them as '?'. */
-static int shown_byte(unsigned char c)
+static void deliver(const diag *d, diag_level level, src_span span, const char *message)
 {
-    return (c < 0x20 && c != '\t') || c == 0x7f ? '?' : c;
-}
-
-static void print_excerpt(FILE *out, const source_file *f, src_span span, int line, int col)
-{
-    size_t len;
-    const char *text = source_line_text(f, span.begin, &len);
-    size_t caret = (size_t)(col - 1);
-    size_t from = caret > WINDOW_BEFORE ? caret - WINDOW_BEFORE : 0;
-    size_t to = len - from > (size_t)(WINDOW_BEFORE + WINDOW_AFTER) ? from + WINDOW_BEFORE + WINDOW_AFTER : len;
-    size_t width = span.end > span.begin ? span.end - span.begin : 1;
-    if (caret + width > len)
-        width = caret < len ? len - caret : 1;
-    const char *lead = from > 0 ? "..." : "";
-    fprintf(out, "%5d | %s", line, lead);
-    for (size_t i = from; i < to; i++)
-        fputc(shown_byte((unsigned char)text[i]), out);
-    fprintf(out, "%s\n      | %s", to < len ? "..." : "", from > 0 ? "   " : "");
-    for (size_t i = from; i < caret && i < len; i++)
-        fputc(text[i] == '\t' ? '\t' : ' ', out);
-    fputc('^', out);
-    for (size_t i = 1; i < width && caret + i < to; i++)
-        fputc('~', out);
-    fputc('\n', out);
-}
-
-static void print_include_chain(FILE *out, const source_set *set, const source_file *f)
-{
-    src_span from = f->included_from;
-    while (from.file >= 0 && from.file < set->count) {
-        const source_file *parent = set->files[from.file];
-        int line, col;
-        source_line_col(parent, from.begin, &line, &col);
-        fprintf(out, "%s:%d:%d: note: included from here\n", parent->path, line, col);
-        from = parent->included_from;
-    }
+    const source_file *f = NULL;
+    if (d->sources && span.file >= 0 && span.file < d->sources->count)
+        f = d->sources->files[span.file];
+    emit(d, level, f, span.begin, message, span.end > span.begin ? span.end - span.begin : 0, 1);
+    if (f)
+        emit_include_chain(d, f);
 }
 
 void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
@@ -91,30 +79,26 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
         d->warnings++;
     int over = level == DIAG_ERROR ? d->max_errors > 0 && d->errors > d->max_errors
                                    : level == DIAG_WARNING && !d->warnings_enabled;
-    if (over || !d->out)
+    if (over || !d->sink)
         return;
-    const source_file *f = NULL;
-    if (d->sources && span.file >= 0 && span.file < d->sources->count)
-        f = d->sources->files[span.file];
-    int line = 0, col = 0;
-    if (f && !f->text) {
-        fprintf(d->out, "%s: %s: ", f->path, level_name(level));
-        f = NULL;
-    } else if (f) {
-        source_line_col(f, span.begin, &line, &col);
-        fprintf(d->out, "%s:%d:%d: %s: ", f->path, line, col, level_name(level));
-    } else {
-        fprintf(d->out, "refray: %s: ", level_name(level));
-    }
+    char local[MESSAGE_BYTES], *message = local;
     va_list ap;
     va_start(ap, fmt);
-    vfprintf(d->out, fmt, ap);
+    int n = vsnprintf(local, sizeof local, fmt, ap);
     va_end(ap);
-    fputc('\n', d->out);
-    if (f) {
-        print_excerpt(d->out, f, span, line, col);
-        print_include_chain(d->out, d->sources, f);
+    const mem *m = d->sources ? &d->sources->mem : NULL;
+    char *big = n >= (int)sizeof local ? mem_alloc(m, (size_t)n + 1) : NULL;
+    if (big) {
+        va_start(ap, fmt);
+        vsnprintf(big, (size_t)n + 1, fmt, ap);
+        va_end(ap);
+        message = big;
     }
-    if (level == DIAG_ERROR && d->max_errors > 0 && d->errors == d->max_errors)
-        fprintf(d->out, "refray: note: too many errors (%d), stopping\n", d->max_errors);
+    deliver(d, level, span, message);
+    if (big)
+        mem_free(m, big, (size_t)n + 1);
+    if (level == DIAG_ERROR && d->max_errors > 0 && d->errors == d->max_errors) {
+        snprintf(local, sizeof local, "too many errors (%d), stopping", d->max_errors);
+        deliver(d, DIAG_NOTE, src_span_none(), local);
+    }
 }

@@ -1,7 +1,6 @@
 /*
  * source.c - file texts and byte-offset spans (see source.h).
  */
-#include <stdlib.h>
 #include <string.h>
 #include "base/source.h"
 
@@ -23,34 +22,37 @@ src_span src_span_join(src_span a, src_span b)
     return a;
 }
 
-void source_set_init(source_set *set)
+void source_set_init(source_set *set, const mem *m)
 {
     set->files = NULL;
     set->count = 0;
     set->cap = 0;
+    set->mem = mem_pick(m);
 }
 
-static void source_file_free(source_file *f)
+static void source_file_free(const mem *m, source_file *f)
 {
-    free(f->path);
-    free(f->text);
-    free(f->line_start);
-    free(f);
+    mem_free_string(m, f->path);
+    if (f->text && !f->lent)
+        mem_free(m, f->text, f->len + 1);
+    mem_free(m, f->line_start, f->line_cap * sizeof *f->line_start);
+    mem_free(m, f, sizeof *f);
 }
 
 void source_set_free(source_set *set)
 {
+    mem m = set->mem;
     for (int i = 0; i < set->count; i++)
-        source_file_free(set->files[i]);
-    free(set->files);
-    source_set_init(set);
+        source_file_free(&m, set->files[i]);
+    mem_free(&m, set->files, (size_t)set->cap * sizeof *set->files);
+    source_set_init(set, &m);
 }
 
 /* Records where every line starts; "\n", "\r\n" and a lone "\r" all end a line. */
-static int index_lines(source_file *f)
+static int index_lines(const mem *m, source_file *f)
 {
     size_t cap = 64, count = 0;
-    size_t *starts = malloc(cap * sizeof *starts);
+    size_t *starts = mem_alloc(m, cap * sizeof *starts);
     if (!starts)
         return 0;
     starts[count++] = 0;
@@ -59,9 +61,9 @@ static int index_lines(source_file *f)
         if (!ends)
             continue;
         if (count == cap) {
-            size_t *grown = realloc(starts, 2 * cap * sizeof *starts);
+            size_t *grown = mem_resize_array(m, starts, cap, 2 * cap, sizeof *starts);
             if (!grown) {
-                free(starts);
+                mem_free(m, starts, cap * sizeof *starts);
                 return 0;
             }
             starts = grown;
@@ -71,6 +73,7 @@ static int index_lines(source_file *f)
     }
     f->line_start = starts;
     f->line_count = count;
+    f->line_cap = cap;
     return 1;
 }
 
@@ -79,7 +82,7 @@ static int grow_set(source_set *set)
     if (set->count < set->cap)
         return 1;
     int cap = set->cap ? 2 * set->cap : 8;
-    source_file **files = realloc(set->files, (size_t)cap * sizeof *files);
+    source_file **files = mem_resize_array(&set->mem, set->files, (size_t)set->cap, (size_t)cap, sizeof *files);
     if (!files)
         return 0;
     set->files = files;
@@ -90,39 +93,36 @@ static int grow_set(source_set *set)
 int source_set_add(source_set *set, const char *path, const char *text, size_t len,
                    src_span included_from)
 {
-    source_file *f = calloc(1, sizeof *f);
+    source_file *f = mem_calloc(&set->mem, 1, sizeof *f);
     if (!f || !grow_set(set))
         goto fail;
-    f->path = malloc(strlen(path) + 1);
-    f->text = malloc(len + 1);
+    f->len = len;
+    f->path = mem_strdup(&set->mem, path);
+    f->text = mem_strndup(&set->mem, text, len);
     if (!f->path || !f->text)
         goto fail;
-    strcpy(f->path, path);
-    memcpy(f->text, text, len);
-    f->text[len] = '\0';
-    f->len = len;
     f->included_from = included_from;
-    if (!index_lines(f))
+    if (!index_lines(&set->mem, f))
         goto fail;
     set->files[set->count] = f;
     return set->count++;
 fail:
     if (f)
-        source_file_free(f);
+        source_file_free(&set->mem, f);
     return -1;
 }
 
-int source_set_adopt(source_set *set, const char *path, char *text, size_t len, src_span included_from)
+int source_set_lend(source_set *set, const char *path, const char *text, size_t len, src_span included_from)
 {
-    source_file *f = calloc(1, sizeof *f);
-    if (!f || !grow_set(set) || !(f->path = malloc(strlen(path) + 1))) {
-        free(f);
-        free(text);
+    source_file *f = mem_calloc(&set->mem, 1, sizeof *f);
+    if (!f || !grow_set(set) || !(f->path = mem_strdup(&set->mem, path))) {
+        mem_free(&set->mem, f, sizeof *f);
         return -1;
     }
-    strcpy(f->path, path);
-    f->text = text;
+    /* Never written through: the set only reads a lent text. */
+    f->text = (char *)(text ? text : "");
     f->len = len;
+    f->lent = 1;
     f->included_from = included_from;
     set->files[set->count] = f;
     return set->count++;
@@ -131,17 +131,19 @@ int source_set_adopt(source_set *set, const char *path, char *text, size_t len, 
 void source_set_release(source_set *set, int file)
 {
     source_file *f = set->files[file];
-    free(f->text);
-    free(f->line_start);
+    if (f->text && !f->lent)
+        mem_free(&set->mem, f->text, f->len + 1);
+    mem_free(&set->mem, f->line_start, f->line_cap * sizeof *f->line_start);
     f->text = NULL;
     f->len = 0;
     f->line_start = NULL;
-    f->line_count = 0;
+    f->line_count = f->line_cap = 0;
+    f->lent = 0;
 }
 
 /* The line holding offset: its number from 0 and where it starts.  With
  * the index, a binary search for the last line starting at or before
- * offset; without (an adopted file), a scan from the start. */
+ * offset; without (a lent file), a scan from the start. */
 static size_t line_index(const source_file *file, size_t offset, size_t *begin)
 {
     if (!file->line_start) {

@@ -10,6 +10,7 @@
 #define REFRAY_SOURCE_H
 
 #include <stddef.h>
+#include "base/mem.h"
 
 typedef struct src_span {
     int file;         /* index into source_set.files; -1: no location */
@@ -19,25 +20,30 @@ typedef struct src_span {
 
 typedef struct source_file {
     char *path;            /* as the user or the include wrote it, joined to the includer's dir */
-    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them);
-                              NULL once released */
+    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them)
+                              unless lent; NULL once released */
     size_t len;            /* bytes in text, not counting the terminator */
-    size_t *line_start;    /* offset of each line's first byte; NULL for an adopted file */
+    size_t *line_start;    /* offset of each line's first byte; NULL for a lent file */
     size_t line_count;
+    size_t line_cap;       /* entries allocated in line_start */
     src_span included_from;/* the include statement that read it; file -1 for the root */
+    int is_mesh;           /* read by a mesh (an OBJ or PLY file), not by an include */
+    int lent;              /* text is the caller's (source_set_lend), not freed here */
 } source_file;
 
 typedef struct source_set {
     source_file **files;
     int count;
     int cap;
+    mem mem;               /* where the files and their texts live */
 } source_set;
 
 /* A span that points nowhere, for messages about the command line. */
 src_span src_span_none(void);
 src_span src_span_join(src_span a, src_span b);
 
-void source_set_init(source_set *set);
+/* An empty set whose memory comes from m (NULL: the C library). */
+void source_set_init(source_set *set, const mem *m);
 void source_set_free(source_set *set);
 
 /* Adds a file whose text the caller already holds (copied).  Returns its
@@ -45,14 +51,16 @@ void source_set_free(source_set *set);
 int source_set_add(source_set *set, const char *path, const char *text, size_t len,
                    src_span included_from);
 
-/* The same without a copy, for big mesh files: takes over text (malloc'd,
- * len + 1 bytes, NUL-terminated; freed here even on failure).  No line
- * index is built: a message finds its line by scanning the text. */
-int source_set_adopt(source_set *set, const char *path, char *text, size_t len, src_span included_from);
+/* The same without a copy, for big mesh files: text[0..len) (need not be
+ * NUL-terminated) stays the caller's and must stay valid until
+ * source_set_release(set, index), which the caller must call before it
+ * frees the text.  No line index is built: a message finds its line by
+ * scanning.  Returns the index, or -1 when out of memory. */
+int source_set_lend(source_set *set, const char *path, const char *text, size_t len, src_span included_from);
 
-/* Frees the text of a file no message will point into any more (a mesh file
- * once its mesh is built); its path stays.  A span into it is then printed
- * without a line (diag.c). */
+/* Drops the text of a file no message will point into any more (a mesh
+ * file once its mesh is built; freed unless lent); its path stays.  A span
+ * into it is then reported without a line (diag.c). */
 void source_set_release(source_set *set, int file);
 
 /* 1-based line and column (in bytes) of a byte offset. */

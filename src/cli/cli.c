@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "refray.h"
 #include "cli/cli.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -23,6 +24,8 @@ static const char usage_text[] =
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
     "  oracle SCENE -o OUT  write the exact image of an analytic scene (.exr .pfm)\n"
     "  compare A B          compare image A with the reference B, --diff MAP for a map\n"
+    "  kit -o DIR           write the conformance kit: scenes, exact images, manifest\n"
+    "  conform --cmd CMD    run another renderer over a kit and check every image\n"
     "\n"
     "options of every command that reads scenes:\n"
     "  -W, --no-warnings          do not print warnings\n"
@@ -46,11 +49,11 @@ int cli_main(int argc, char **argv)
     const char *cmd = argv[1];
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         fputs(usage_text, stdout);
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     }
     if (strcmp(cmd, "--version") == 0) {
-        printf("refray %s\n", REFRAY_VERSION);
-        return REFRAY_EXIT_OK;
+        printf("refray %s\n", rf_version());
+        return STATUS_OK;
     }
     if (strcmp(cmd, "check") == 0)
         return cli_check(argc - 1, argv + 1);
@@ -64,5 +67,9 @@ int cli_main(int argc, char **argv)
         return cli_oracle(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)
         return cli_compare(argc - 1, argv + 1);
+    if (strcmp(cmd, "kit") == 0)
+        return cli_kit(argc - 1, argv + 1);
+    if (strcmp(cmd, "conform") == 0)
+        return cli_conform(argc - 1, argv + 1);
     return cli_usage_error("unknown command '%s'", cmd);
 }

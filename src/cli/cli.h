@@ -4,9 +4,8 @@
 #ifndef REFRAY_CLI_H
 #define REFRAY_CLI_H
 
-#define REFRAY_VERSION "0.1.0"
-
-/* Runs the command argv[1] and returns the process's exit code. */
+/* Runs the command argv[1] and returns its status (base/status.h), which
+ * main turns into the exit code. */
 int cli_main(int argc, char **argv);
 
 #endif

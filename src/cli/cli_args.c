@@ -1,6 +1,5 @@
 /*
- * cli_args.c - the options and argument loops the commands share, and the
- * mapping of image statuses to exit codes.
+ * cli_args.c - the options and argument loops the commands share.
  */
 #include <errno.h>
 #include <math.h>
@@ -8,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "api/convert.h"
 #include "cli/cli_args.h"
 
 int cli_usage_error(const char *fmt, ...)
@@ -18,7 +18,7 @@ int cli_usage_error(const char *fmt, ...)
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputs("\n(see refray --help)\n", stderr);
-    return REFRAY_EXIT_USAGE;
+    return STATUS_USAGE;
 }
 
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out)
@@ -66,7 +66,7 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
     return 1;
 }
 
-int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i)
+int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
     if (strcmp(opt, "--width") == 0)
@@ -92,7 +92,7 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         }
         int used = cli_scene_opt(scene, argc, argv, i);
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used > 0) {
             i += used - 1;
             continue;
@@ -105,7 +105,7 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         }
         int r = option(args, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
     }
@@ -120,12 +120,23 @@ void cli_scene_opts_init(cli_scene_opts *o)
     o->warnings = 1;
 }
 
+rf_load_options cli_load_options(const cli_scene_opts *o)
+{
+    rf_load_options lo;
+    rf_load_options_init(&lo);
+    lo.limits = api_limits_out(&o->limits);
+    lo.warnings = o->warnings;
+    lo.diagnostic = rf_diagnostic_print;
+    lo.diagnostic_user = stderr;
+    return lo;
+}
+
 typedef struct limit_flag {
     const char *name;
     size_t offset;
 } limit_flag;
 
-#define LIMIT(flag, field) {flag, offsetof(rf_limits, field)}
+#define LIMIT(flag, field) {flag, offsetof(scene_limits, field)}
 static const limit_flag limit_flags[] = {
     LIMIT("--max-width", max_width),
     LIMIT("--max-height", max_height),
@@ -166,7 +177,7 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i)
+int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
     if (strcmp(opt, "--width") == 0)
@@ -182,7 +193,7 @@ int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int a
     return -1;
 }
 
-int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size)
+int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size)
 {
     if ((double)v->width * v->height <= (double)lim->max_pixels)
         return 1;
@@ -191,14 +202,31 @@ int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t 
     return 0;
 }
 
-int cli_image_status(int img_status)
+int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i)
 {
-    switch (img_status) {
-    case IMG_OK: return REFRAY_EXIT_OK;
-    case IMG_EUSAGE: return REFRAY_EXIT_USAGE;
-    case IMG_EDATA: return REFRAY_EXIT_DATAERR;
-    case IMG_ENOINPUT: return REFRAY_EXIT_NOINPUT;
-    case IMG_EIO: return REFRAY_EXIT_IOERR;
-    default: return REFRAY_EXIT_SOFTWARE;
+    const char *opt = argv[*i], *v;
+    int downsample = strcmp(opt, "--downsample") == 0;
+    long k;
+    if (!downsample && strcmp(opt, "--scale") != 0)
+        return -1;
+    if (!cli_take_value(argc, argv, i, &v))
+        return 0;
+    if (strcmp(v, "manifest") == 0) {
+        if (downsample)
+            a->downsample = CONFORM_FROM_MANIFEST;
+        else
+            a->scale = CONFORM_FROM_MANIFEST;
+        return 1;
     }
+    if (downsample) {
+        if (!cli_parse_long(opt, v, 1, 64, &k))
+            return 0;
+        a->downsample = (int)k;
+        return 1;
+    }
+    if (!cli_parse_double(opt, v, &a->scale) || !(a->scale > 0)) {
+        cli_usage_error("--scale takes a number > 0 or 'manifest', not '%s'", v);
+        return 0;
+    }
+    return 1;
 }

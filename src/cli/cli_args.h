@@ -7,19 +7,25 @@
 #define REFRAY_CLI_ARGS_H
 
 #include <stddef.h>
+#include "refray.h"
 #include "render/render.h"
 #include "scene/scene.h"
+#include "verify/conform.h"
 #include "verify/verify.h"
 
 /* Options every scene-reading command accepts: the input limits and
  * whether warnings are shown.  Returns the number of argv entries consumed
  * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
 typedef struct cli_scene_opts {
-    rf_limits limits;
+    scene_limits limits;
     int warnings;
 } cli_scene_opts;
 
 void cli_scene_opts_init(cli_scene_opts *o);
+
+/* The public API's load options for o: its limits and warnings, the
+ * diagnostics printed to stderr, files from the file system. */
+rf_load_options cli_load_options(const cli_scene_opts *o);
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
 
 /* The value after option argv[*i] (advancing *i); 0 with the usage error
@@ -31,7 +37,7 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
  * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
-int cli_render_option(render_opts *o, const rf_limits *lim, int argc, char **argv, int *i);
+int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
 
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */
@@ -41,7 +47,7 @@ typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
  * The argument loop of a command that reads one scene: --help (prints help,
  * returns -1), the shared scene options, one SCENE into *input, and the
  * command's own options through option.  Returns 0 to go on, -1 after help,
- * or REFRAY_EXIT_USAGE after the error was printed.
+ * or STATUS_USAGE after the error was printed.
  */
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                         const char **input, cli_option_fn option, void *args);
@@ -64,14 +70,15 @@ int cli_usage_error(const char *fmt, ...)
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */
-int cli_view_option(verify_opts *o, const rf_limits *lim, int allow_light, int argc, char **argv, int *i);
+int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i);
 
 /* 1 when view v (the scene's size with the overrides) is within
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is
  * checked by the loader, so only an override can exceed it. */
-int cli_view_fits(const oracle_view *v, const rf_limits *lim, char *why, size_t why_size);
+int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size);
 
-/* Maps an image-library status to the exit code the commands use. */
-int cli_image_status(int img_status);
+/* --downsample K|manifest and --scale S|manifest (conform, compare) into
+ * a; 1 consumed, 0 error reported, -1 not one of them. */
+int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i);
 
 #endif

@@ -2,17 +2,23 @@
  * cli_compare.c - `refray compare A B`: the metrics of verify for any two
  * image files, B the reference, and an error map.  The images are compared
  * as img_read returns them: EXR and PFM values as stored, PNG and PPM codes
- * decoded to linear values.
+ * decoded to linear values.  A may first be averaged over blocks and scaled
+ * (--downsample, --scale); with --manifest the tolerance, the mask and, if
+ * B is not given, B itself come from a conformance kit (spec/conformance.md).
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/fileio.h"
+#include "image/adjust.h"
 #include "image/image_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "verify/conform.h"
 
 static const char compare_help[] =
     "usage: refray compare A B [OPTIONS]\n"
+    "       refray compare A [B] --manifest KIT/manifest.json [--scene NAME] [OPTIONS]\n"
     "Compares image A with the reference B (.exr .pfm .png .ppm; PNG and PPM are\n"
     "decoded to linear values) and prints max abs, RMS and max rel error, PSNR and\n"
     "the pixels over a tolerance.\n"
@@ -29,14 +35,31 @@ static const char compare_help[] =
     "                    `refray oracle --mask` writes it)\n"
     "  --json            one JSON object on stdout instead of the text (without\n"
     "                    --tolerance: \"tolerance\" null, \"over\" the pixels that differ)\n"
-    "exit: 0; 1 some pixel over --tolerance; 64 usage; 65 unreadable images or\n"
+    "  --downsample K    average K x K blocks of A first (A rendered K times larger)\n"
+    "  --scale S         then multiply A by S (S > 0)\n"
+    "  --manifest FILE   a kit's manifest.json: the scene's tolerance (|A - B| >\n"
+    "                    relative |B| + absolute is over; exit 1 if any) and mask;\n"
+    "                    B defaults to the scene's exact image; 'manifest' as the\n"
+    "                    value of --downsample or --scale takes the scene's samples\n"
+    "                    or 1 / png16_scale\n"
+    "  --scene NAME      the kit's scene (default: the one whose exact image is B)\n"
+    "exit: 0; 1 some pixel over the tolerance; 64 usage; 65 unreadable images or\n"
     "images of different sizes; 66 a missing file; 74 the map could not be written.\n";
 
 typedef struct compare_args {
-    const char *a, *b, *diff, *mask;
+    const char *a, *b, *diff, *mask, *manifest, *scene;
     double tolerance;
     int has_tolerance, grey, json;
+    conform_adjust adjust;          /* downsample 1 and scale 1: A as read */
 } compare_args;
+
+/* The kit's side of --manifest: the scene, its tolerance and files. */
+typedef struct compare_kit {
+    manifest m;
+    const manifest_scene *scene;
+    char *dir;                      /* the manifest's directory */
+    char *exact;                    /* B when not given (malloc'd) */
+} compare_kit;
 
 /* 1: consumed, 0: error (reported), -1: not a compare option. */
 static int compare_option(compare_args *a, int argc, char **argv, int *i)
@@ -50,6 +73,12 @@ static int compare_option(compare_args *a, int argc, char **argv, int *i)
         return a->grey = 1;
     if (strcmp(opt, "--json") == 0)
         return a->json = 1;
+    if (strcmp(opt, "--manifest") == 0)
+        return cli_take_value(argc, argv, i, &a->manifest);
+    if (strcmp(opt, "--scene") == 0)
+        return cli_take_value(argc, argv, i, &a->scene);
+    if (strcmp(opt, "--downsample") == 0 || strcmp(opt, "--scale") == 0)
+        return cli_adjust_option(&a->adjust, argc, argv, i);
     if (strcmp(opt, "--tolerance") != 0)
         return -1;
     if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->tolerance))
@@ -76,29 +105,39 @@ static int parse_args(compare_args *a, int argc, char **argv)
         }
         int r = compare_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("compare: unknown option '%s'", argv[i]);
     }
-    if (!a->b)
+    if (!a->a || (!a->b && !a->manifest))
         return cli_usage_error("compare: needs two images, A and the reference B");
+    if (a->manifest && (a->has_tolerance || a->mask))
+        return cli_usage_error("compare: --manifest gives the tolerance and the mask: drop %s",
+                               a->has_tolerance ? "--tolerance" : "--mask");
+    if (!a->manifest && (a->scene || a->adjust.downsample == CONFORM_FROM_MANIFEST ||
+                         a->adjust.scale == CONFORM_FROM_MANIFEST))
+        return cli_usage_error("compare: %s needs --manifest", a->scene ? "--scene" : "'manifest' as a value");
     if (a->diff && img_format_from_path(a->diff) == IMG_FORMAT_UNKNOWN)
         return cli_usage_error("compare: '%s' has no known image extension (.png .exr .pfm .ppm)", a->diff);
     return 0;
 }
 
-static int read_image(const char *path, rf_image *img)
+static int read_image(const char *path, img_buf *img)
 {
     char err[512];
     int status = img_read(path, img, err, sizeof err);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
-static void print_text(const compare_args *a, const rf_image *img, const image_metrics *m)
+static void print_text(const compare_args *a, const compare_kit *kit, const img_buf *img, const image_metrics *m)
 {
     printf("A:        %s\nB:        %s (reference)\n", a->a, a->b);
+    int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
+    double scale = kit ? conform_scale_of(&a->adjust, kit->scene) : a->adjust.scale;
+    if (k != 1 || scale != 1)
+        printf("adjusted: A averaged over %dx%d blocks, then times %.17g\n", k, k, scale);
     printf("size:     %dx%d: %ld pixels compared, %ld excluded\n", img->width, img->height, m->compared,
            m->excluded);
     printf("max abs:  %.6e at pixel (%d, %d)\n", m->max_abs, m->worst_x, m->worst_y);
@@ -108,84 +147,198 @@ static void print_text(const compare_args *a, const rf_image *img, const image_m
         printf("PSNR:     %.2f dB (peak %.6g)\n", m->psnr, m->peak);
     else
         printf("PSNR:     inf (the images are equal)\n");
-    if (a->has_tolerance)
+    if (kit)
+        printf("over:     %ld pixel%s over |A - B| <= %.3g |B| + %.3g (scene %s of %s)\n", m->over,
+               m->over == 1 ? "" : "s", kit->scene->relative, kit->scene->absolute, kit->scene->name, a->manifest);
+    else if (a->has_tolerance)
         printf("over:     %ld pixel%s over the relative tolerance %.3g\n", m->over, m->over == 1 ? "" : "s",
                a->tolerance);
     else
         printf("differ:   %ld pixel%s differ at all (no --tolerance: exit 0)\n", m->over, m->over == 1 ? "" : "s");
 }
 
-static void print_json(const compare_args *a, const image_metrics *m)
+static void print_json(const compare_args *a, const compare_kit *kit, const image_metrics *m)
 {
     fputs("{\"a\": ", stdout);
     verify_json_string(stdout, a->a);
     fputs(", \"b\": ", stdout);
     verify_json_string(stdout, a->b);
     fputs(", ", stdout);
-    verify_json_metrics(stdout, m, a->has_tolerance ? a->tolerance : NAN);
+    verify_json_metrics(stdout, m, kit ? kit->scene->relative : a->has_tolerance ? a->tolerance : NAN);
+    if (kit) {
+        fputs(", \"tolerance_absolute\": ", stdout);
+        verify_json_number(stdout, kit->scene->absolute);
+        fputs(", \"scene\": ", stdout);
+        verify_json_string(stdout, kit->scene->name);
+    }
     fputs("}\n", stdout);
 }
 
-static int write_map(const compare_args *a, const rf_image *x, const rf_image *ref, const unsigned char *mask)
+static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref, const unsigned char *mask)
 {
-    rf_image map;
+    img_buf map;
     img_format fmt = img_format_from_path(a->diff);
     int raw = fmt == IMG_FORMAT_EXR || fmt == IMG_FORMAT_PFM;
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
     char err[512] = "out of memory making the error map";
-    if (status == IMG_OK) {
+    if (status == STATUS_OK) {
         img_write_opts wo = img_write_opts_default();
         wo.exr_float = 1;
         status = img_write(a->diff, &map, &wo, err, sizeof err);
         img_free(&map);
     }
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         fprintf(stderr, "refray: error: %s\n", err);
-    return cli_image_status(status);
+    return status;
 }
 
-/* Compares the two loaded images; returns the exit code. */
-static int compare_images(const compare_args *a, const rf_image *x, const rf_image *ref)
+/* The mask: --mask, or the kit's; NULL for none.  STATUS_OK or the status. */
+static int read_mask(const compare_args *a, const compare_kit *kit, const img_buf *ref, unsigned char **mask)
+{
+    char err[512];
+    const char *rel = kit ? kit->scene->files[MANIFEST_FILE_MASK_PGM] : "";
+    char *path = rel[0] ? file_join(NULL, kit->dir, rel) : NULL;
+    const char *use = a->mask ? a->mask : path;
+    int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : STATUS_OK;
+    if (status != STATUS_OK)
+        fprintf(stderr, "refray: error: %s: %s\n", use, err);
+    free(path);
+    return status;
+}
+
+/* Compares the two loaded images; returns the status. */
+static int compare_images(const compare_args *a, const compare_kit *kit, const img_buf *x, const img_buf *ref)
 {
     if (x->width != ref->width || x->height != ref->height) {
         fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
                 x->height, a->b, ref->width, ref->height);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     unsigned char *mask = NULL;
-    char err[512];
-    int status = a->mask ? verify_mask_read(a->mask, ref->width, ref->height, &mask, err, sizeof err) : IMG_OK;
-    if (status != IMG_OK) {
-        fprintf(stderr, "refray: error: %s: %s\n", a->mask, err);
-        return cli_image_status(status);
-    }
+    int status = read_mask(a, kit, ref, &mask);
+    if (status != STATUS_OK)
+        return status;
     image_metrics m;
-    metrics_compare(x, ref, mask, a->has_tolerance ? a->tolerance : 0, &m);
-    status = a->diff ? write_map(a, x, ref, mask) : REFRAY_EXIT_OK;
+    if (kit)
+        metrics_compare_abs(x, ref, mask, kit->scene->relative, kit->scene->absolute, &m);
+    else
+        metrics_compare(x, ref, mask, a->has_tolerance ? a->tolerance : 0, &m);
+    status = a->diff ? write_map(a, x, ref, mask) : STATUS_OK;
     free(mask);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
     if (a->json)
-        print_json(a, &m);
+        print_json(a, kit, &m);
     else
-        print_text(a, x, &m);
-    return a->has_tolerance && m.over > 0 ? REFRAY_EXIT_FAIL : REFRAY_EXIT_OK;
+        print_text(a, kit, x, &m);
+    if (kit)
+        return m.over > 0 || m.compared == 0 ? STATUS_FAIL : STATUS_OK;
+    return a->has_tolerance && m.over > 0 ? STATUS_FAIL : STATUS_OK;
+}
+
+/* A averaged over k x k blocks and scaled, in place; STATUS_OK or the status. */
+static int adjust_image(const compare_args *a, const compare_kit *kit, const img_buf *ref, img_buf *x)
+{
+    int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
+    double scale = kit ? conform_scale_of(&a->adjust, kit->scene) : a->adjust.scale;
+    if (k > 1) {
+        img_buf small;
+        if (x->width != k * ref->width || x->height != k * ref->height) {
+            fprintf(stderr, "refray: error: with --downsample %d, '%s' must be %dx%d (%d times '%s', %dx%d), "
+                    "not %dx%d\n", k, a->a, k * ref->width, k * ref->height, k, a->b, ref->width, ref->height,
+                    x->width, x->height);
+            return STATUS_DATA;
+        }
+        int status = img_downsample(x, k, &small);
+        if (status != STATUS_OK)
+            return status;
+        img_free(x);
+        *x = small;
+    }
+    if (scale != 1)
+        img_scale(x, scale);
+    return STATUS_OK;
+}
+
+/* 1 when path names the kit file rel: equal, or ending in "/" rel. */
+static int names_file(const char *path, const char *rel)
+{
+    size_t n = strlen(path), r = strlen(rel);
+    return r > 0 && n >= r && strcmp(path + n - r, rel) == 0 && (n == r || path[n - r - 1] == '/');
+}
+
+/* The scene of --scene, or the one whose exact image B is. */
+static const manifest_scene *kit_scene(const compare_args *a, const manifest *m)
+{
+    if (a->scene) {
+        const manifest_scene *s = manifest_find(m, a->scene);
+        if (!s)
+            cli_usage_error("compare: %s has no scene '%s'", a->manifest, a->scene);
+        return s;
+    }
+    for (int i = 0; a->b && i < m->scene_count; i++)
+        if (names_file(a->b, m->scenes[i].files[MANIFEST_FILE_EXACT_EXR]) ||
+            names_file(a->b, m->scenes[i].files[MANIFEST_FILE_EXACT_PFM]))
+            return &m->scenes[i];
+    if (m->scene_count == 1)
+        return &m->scenes[0];
+    if (a->b)
+        cli_usage_error("compare: name the kit's scene with --scene NAME ('%s' is not one of its exact images)",
+                        a->b);
+    else
+        cli_usage_error("compare: name the kit's scene with --scene NAME (no B given; the kit has %d scenes)",
+                        m->scene_count);
+    return NULL;
+}
+
+/* Reads --manifest and picks the scene; B defaults to its exact image. */
+static int load_kit(compare_args *a, compare_kit *kit)
+{
+    char why[1024];
+    int status = manifest_read(a->manifest, &kit->m, why, sizeof why);
+    if (status != STATUS_OK) {
+        fprintf(stderr, "refray: error: compare: %s\n", why);
+        return status;
+    }
+    kit->dir = file_dirname(NULL, a->manifest);
+    if (!(kit->scene = kit_scene(a, &kit->m)))
+        return STATUS_USAGE;
+    if (!a->b) {
+        const manifest_scene *s = kit->scene;
+        int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
+        kit->exact = file_join(NULL, kit->dir, s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM]);
+        a->b = kit->exact;
+    }
+    return kit->dir && a->b ? STATUS_OK : STATUS_NO_MEMORY;
 }
 
 int cli_compare(int argc, char **argv)
 {
     compare_args a;
+    compare_kit kit;
     memset(&a, 0, sizeof a);
+    memset(&kit, 0, sizeof kit);
+    a.adjust.downsample = 1;
+    a.adjust.scale = 1;
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
-    rf_image x = {0, 0, NULL}, ref = {0, 0, NULL};
-    status = read_image(a.a, &x);
-    if (status == REFRAY_EXIT_OK)
+        return status < 0 ? STATUS_OK : status;
+    if (a.manifest)
+        status = load_kit(&a, &kit);
+    const compare_kit *k = a.manifest ? &kit : NULL;
+    img_buf x = {0}, ref = {0};
+    if (status == STATUS_OK)
+        status = read_image(a.a, &x);
+    if (status == STATUS_OK)
         status = read_image(a.b, &ref);
-    if (status == REFRAY_EXIT_OK)
-        status = compare_images(&a, &x, &ref);
+    if (status == STATUS_OK)
+        status = adjust_image(&a, k, &ref, &x);
+    if (status == STATUS_OK)
+        status = compare_images(&a, k, &x, &ref);
     img_free(&x);
     img_free(&ref);
+    manifest_free(&kit.m);
+    free(kit.dir);
+    free(kit.exact);
     return status;
 }

@@ -6,6 +6,7 @@
  */
 #include <stdio.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "export/export_pov.h"
@@ -81,7 +82,7 @@ static void print_notes(const char *input, const pov_notes *n)
         fprintf(stderr, "refray: approximation: ... and %d more in '%s'\n", n->count - POV_NOTE_MAX, input);
 }
 
-static int export_scene(export_args *a, const rf_scene *scene)
+static int export_scene(export_args *a, const scene_model *scene)
 {
     pov_notes notes;
     char err[600];
@@ -91,7 +92,7 @@ static int export_scene(export_args *a, const rf_scene *scene)
         status = pov_export_file(scene, &a->pov, a->output, &notes, err, sizeof err);
     else
         status = pov_export_write(scene, &a->pov, stdout, &notes);
-    if (status == REFRAY_EXIT_DATAERR) {
+    if (status == STATUS_DATA) {
         fprintf(stderr, "refray: error: cannot export '%s' to POV-Ray: %s\n", a->input, notes.reason);
         return status;
     }
@@ -100,7 +101,7 @@ static int export_scene(export_args *a, const rf_scene *scene)
         return status;
     }
     print_notes(a->input, &notes);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_export(int argc, char **argv)
@@ -110,8 +111,8 @@ int cli_export(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+        return status < 0 ? STATUS_OK : status;
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = export_scene(&a, scene);

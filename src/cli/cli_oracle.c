@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
+#include "io/scene_file.h"
 #include "image/image_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -90,11 +91,11 @@ static int write_files(const oracle_args *a, const verify_exact *e)
     img_write_opts wo = img_write_opts_default();
     wo.exr_float = 1;
     int status = img_write(a->output, &e->image, &wo, err, sizeof err);
-    if (status == IMG_OK && a->mask)
+    if (status == STATUS_OK && a->mask)
         status = verify_mask_write(a->mask, e->excluded, e->image.width, e->image.height, err, sizeof err);
-    if (status != IMG_OK) {
+    if (status != STATUS_OK) {
         fprintf(stderr, "refray: error: %s\n", err);
-        return cli_image_status(status);
+        return status;
     }
     long pixels = (long)e->image.width * e->image.height;
     printf("%s: family %s, %dx%d, %dx%d points per pixel: %ld of %ld pixels excluded (%.2f%%)%s; wrote %s%s%s\n",
@@ -102,10 +103,10 @@ static int write_files(const oracle_args *a, const verify_exact *e)
            e->excluded_count, pixels, 100.0 * (double)e->excluded_count / (double)pixels,
            e->excluded_count ? ", written as 0" : "", a->output, a->mask ? " and the mask " : "",
            a->mask ? a->mask : "");
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
-static int exact_of(const oracle_args *a, const rf_scene *s)
+static int exact_of(const oracle_args *a, const scene_model *s)
 {
     oracle_view v = verify_view(s, &a->view);
     char why[512];
@@ -115,12 +116,12 @@ static int exact_of(const oracle_args *a, const rf_scene *s)
     const oracle_family *f = verify_family(s, &v, &status, why, sizeof why);
     if (!f) {
         fprintf(stderr, "refray: error: %s: %s\n", a->input, why);
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     }
     verify_exact e;
-    if (verify_exact_build(f, &v, &e) != REFRAY_EXIT_OK) {
+    if (verify_exact_build(f, &v, &e) != STATUS_OK) {
         fputs("refray: error: out of memory building the exact image\n", stderr);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     status = write_files(a, &e);
     verify_exact_free(&e);
@@ -134,10 +135,10 @@ int cli_oracle(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     if ((status = check_formats(&a)) != 0)
         return status;
-    rf_scene *s = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *s = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!s)
         return status;
     status = exact_of(&a, s);

@@ -1,8 +1,10 @@
 /*
- * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically.
+ * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically,
+ * through the public API (refray.h).
  *
- * The one piece of global state in refray lives here: the SIGINT flag, as a
- * volatile sig_atomic_t, because a signal handler can reach nothing else.
+ * One of refray's two pieces of global state lives here (the other is
+ * cli_conform.c's stop flag): the SIGINT flag, as a volatile sig_atomic_t,
+ * because a signal handler can reach nothing else.
  * The library never sees it; it is asked through the progress callback.
  */
 #include <signal.h>
@@ -12,9 +14,7 @@
 #include <unistd.h>
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "base/fileio.h"
-#include "image/image_file.h"
-#include "render/render.h"
+#include "io/fileio.h"
 
 static volatile sig_atomic_t interrupted;
 
@@ -29,7 +29,7 @@ typedef struct render_args {
     const char *input, *output;
     const char *format;   /* --format, for -o - (standard output) */
     render_opts render;
-    img_write_opts image;
+    rf_write_options image;
     int stats, quiet;
 } render_args;
 
@@ -57,7 +57,7 @@ static int image_option(render_args *a, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i], *v;
     if (strcmp(opt, "--linear") == 0)
-        a->image.linear_png = 1;
+        a->image.linear = 1;
     else if (strcmp(opt, "--exr-float") == 0)
         a->image.exr_float = 1;
     else if (strcmp(opt, "--exposure") == 0)
@@ -78,7 +78,7 @@ static int image_option(render_args *a, int argc, char **argv, int *i)
             cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
             return 0;
         }
-        a->image.tone = strcmp(v, "reinhard") == 0 ? IMG_TONE_REINHARD : IMG_TONE_CLAMP;
+        a->image.tone = strcmp(v, "reinhard") == 0 ? RF_TONE_REINHARD : RF_TONE_CLAMP;
     } else {
         return -1;
     }
@@ -116,13 +116,13 @@ static int parse_args(render_args *a, int argc, char **argv)
 }
 
 /* The format of standard output, from --format. */
-static img_format stdout_format(const char *name)
+static rf_format stdout_format(const char *name)
 {
     char probe[16];
     if (!name || strlen(name) > 4)
-        return IMG_FORMAT_UNKNOWN;
+        return RF_FORMAT_UNKNOWN;
     snprintf(probe, sizeof probe, "x.%s", name);
-    return img_format_from_path(probe);
+    return rf_format_from_path(probe);
 }
 
 /* Fails before the render, not after it, when OUT cannot be written. */
@@ -130,10 +130,10 @@ static int check_output(const render_args *a)
 {
     const char *path = a->output;
     if (strcmp(path, "-") == 0) {
-        img_format f = stdout_format(a->format);
-        if (f == IMG_FORMAT_UNKNOWN)
+        rf_format f = stdout_format(a->format);
+        if (f == RF_FORMAT_UNKNOWN)
             return cli_usage_error("render: -o - needs --format png, exr, pfm or ppm");
-        if (!img_format_available(f))
+        if (!rf_format_available(f))
             return cli_usage_error("render: this refray was built without support for --format %s", a->format);
         if (isatty(1))
             return cli_usage_error("render: refusing to write an image to a terminal");
@@ -141,19 +141,19 @@ static int check_output(const render_args *a)
     }
     if (a->format)
         return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
-    img_format fmt = img_format_from_path(path);
-    if (fmt == IMG_FORMAT_UNKNOWN)
+    rf_format fmt = rf_format_from_path(path);
+    if (fmt == RF_FORMAT_UNKNOWN)
         return cli_usage_error("render: '%s' has no known image extension (.png .exr .pfm .ppm)", path);
-    if (!img_format_available(fmt))
+    if (!rf_format_available(fmt))
         return cli_usage_error("render: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
                                path);
-    char *dir = file_dirname(path);
+    char *dir = file_dirname(NULL, path);
     int ok = dir && access(dir, W_OK) == 0;
     if (!ok)
         fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
                 dir ? "directory missing or not writable" : "out of memory");
-    free(dir);
-    return ok ? 0 : REFRAY_EXIT_IOERR;
+    mem_free_string(NULL, dir);
+    return ok ? 0 : STATUS_IO;
 }
 
 typedef struct progress_state {
@@ -161,9 +161,9 @@ typedef struct progress_state {
     double start;
 } progress_state;
 
-static int progress(void *ctx, int done, int total)
+static void progress(void *ctx, int done, int total)
 {
-    progress_state *p = ctx;
+    const progress_state *p = ctx;
     if (p->show) {
         double elapsed = render_clock() - p->start;
         double eta = done > 0 ? elapsed * (total - done) / done : 0;
@@ -174,86 +174,110 @@ static int progress(void *ctx, int done, int total)
             fputc('\n', stderr);
         fflush(stderr);
     }
+}
+
+static int cancel(void *ctx)
+{
+    (void)ctx;
     return interrupted != 0;
 }
 
 /* [MESH-SCALE-1] Load time, and the bytes of the mesh stores and of the
  * BVH per mesh triangle (spec/numerics.md, "Meshes at scale"). */
-static void print_memory(const rf_scene *scene, const render_stats *s, double load_seconds)
+static void print_memory(const rf_scene *scene, const rf_render_stats *s, double load_seconds)
 {
-    long triangles, mesh = scene_mesh_bytes(scene, &triangles);
-    fprintf(stderr, "  load: %.3f s; meshes: %ld triangles in %ld bytes", load_seconds, triangles, mesh);
+    rf_scene_info info;
+    rf_scene_get_info(scene, &info);
+    long triangles = info.mesh_triangles;
+    fprintf(stderr, "  load: %.3f s; meshes: %ld triangles in %ld bytes", load_seconds, triangles, info.mesh_bytes);
     if (triangles > 0)
-        fprintf(stderr, " (%.1f per triangle); bvh %ld bytes (%.1f per triangle)", (double)mesh / triangles,
-                s->bvh_bytes, (double)s->bvh_bytes / triangles);
+        fprintf(stderr, " (%.1f per triangle); bvh %ld bytes (%.1f per triangle)",
+                (double)info.mesh_bytes / triangles, s->bvh_bytes, (double)s->bvh_bytes / triangles);
     else
         fprintf(stderr, "; bvh %ld bytes", s->bvh_bytes);
     fputc('\n', stderr);
 }
 
-static void print_stats(const rf_scene *scene, const render_stats *s, const img_write_stats *w, double load_seconds)
+static void print_stats(const rf_scene *scene, const rf_render_stats *s, const rf_write_stats *w,
+                        double load_seconds)
 {
-    const trace_stats *t = &s->trace;
-    long rays = t->camera_rays + t->shadow_rays + t->reflection_rays + t->refraction_rays + t->tir_rays;
+    long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
+                s->total_internal_reflection_rays;
     fprintf(stderr, "stats: %dx%d pixels, %dx%d camera rays per pixel, max_depth %d\n", s->width, s->height,
             s->samples, s->samples, s->max_depth);
     fprintf(stderr, "  rays: %ld camera, %ld shadow, %ld reflection, %ld refraction, %ld total-internal-reflection; "
-            "%ld in all\n", t->camera_rays, t->shadow_rays, t->reflection_rays, t->refraction_rays, t->tir_rays, rays);
-    fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", t->light_samples, t->lights_on_surface);
+            "%ld in all\n", s->camera_rays, s->shadow_rays, s->reflection_rays, s->refraction_rays,
+            s->total_internal_reflection_rays, rays);
+    fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", s->light_samples,
+            s->light_samples_on_surface);
     fprintf(stderr, "  passes: shadows %s, specular %s, reflection %s, refraction %s\n",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
     print_memory(scene, s, load_seconds);
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
-            s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, t->bvh.nodes_visited, t->bvh.prims_tested);
+            s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, s->node_visits, s->primitive_tests);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
-    fprintf(stderr, "  non-finite values: %ld traced, %zu written; medium stack overflows: %ld\n", t->nonfinite,
-            w->nonfinite, t->medium_overflow);
+    fprintf(stderr, "  non-finite values: %ld traced, %zu written; medium stack overflows: %ld\n", s->nonfinite,
+            w->nonfinite, s->medium_overflows);
+}
+
+static rf_render_options public_opts(const render_args *a, progress_state *p)
+{
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.width = a->render.width;
+    o.height = a->render.height;
+    o.samples = a->render.samples;
+    o.max_depth = a->render.max_depth;
+    o.light_samples = a->render.light_samples;
+    o.max_tree_rays = a->scene.limits.max_ray_tree;
+    o.progress = progress;
+    o.cancel = cancel;
+    o.user = p;
+    return o;
 }
 
 static int render_and_write(render_args *a, const rf_scene *scene, double load_seconds)
 {
-    rf_image img = {0, 0, NULL};
-    render_stats stats;
-    img_write_stats written = {0, 0};
+    rf_image *img = NULL;
+    rf_render_stats stats;
+    rf_write_stats written = {0, 0};
     progress_state p = {!a->quiet && isatty(2), render_clock()};
-    a->render.progress = progress;
-    a->render.max_tree_rays = a->scene.limits.max_ray_tree;
-    a->render.progress_ctx = &p;
-    int status = interrupted ? REFRAY_EXIT_INTERRUPTED : render_image(scene, &a->render, &img, &stats);
-    if (status == REFRAY_EXIT_DATAERR) {
+    rf_render_options o = public_opts(a, &p);
+    int status = interrupted ? STATUS_CANCELLED : (int)rf_render_image(scene, &o, &img, &stats);
+    if (status == STATUS_DATA) {
         fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
                 "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
-                stats.overflow_x, stats.overflow_y, a->render.max_tree_rays);
+                stats.overflow_x, stats.overflow_y, o.max_tree_rays);
         return status;
     }
-    if (status == REFRAY_EXIT_INTERRUPTED) {
+    if (status == STATUS_CANCELLED) {
         fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
         return status;
     }
-    if (status != REFRAY_EXIT_OK) {
+    if (status != STATUS_OK) {
         fprintf(stderr, "refray: error: out of memory rendering '%s'\n", a->input);
         return status;
     }
     char err[512];
-    a->image.stats = &written;
     int wstatus;
     if (strcmp(a->output, "-") == 0) {
-        wstatus = img_write_stream(stdout, stdout_format(a->format), &img, &a->image, err, sizeof err);
+        wstatus = (int)rf_image_write_stream(img, stdout, stdout_format(a->format), &a->image, &written, err,
+                                             sizeof err);
         if (wstatus == 0 && fflush(stdout) != 0)
-            wstatus = IMG_EIO;
+            wstatus = STATUS_IO;
     } else {
-        wstatus = img_write(a->output, &img, &a->image, err, sizeof err);
+        wstatus = (int)rf_image_write(img, a->output, &a->image, &written, err, sizeof err);
     }
-    img_free(&img);
+    rf_image_free(img);
     if (wstatus != 0) {
         fprintf(stderr, "refray: error: %s\n", err);
-        return wstatus == IMG_EUSAGE ? REFRAY_EXIT_USAGE : REFRAY_EXIT_IOERR;
+        return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
     }
     if (a->stats)
         print_stats(scene, &stats, &written, load_seconds);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int cli_render(int argc, char **argv)
@@ -261,27 +285,31 @@ int cli_render(int argc, char **argv)
     render_args a;
     memset(&a, 0, sizeof a);
     cli_scene_opts_init(&a.scene);
-    a.image = img_write_opts_default();
+    rf_write_options_init(&a.image);
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
      * scene loads as well as while it renders. */
     signal(SIGINT, on_interrupt);
     double start = render_clock();
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    rf_load_options lo = cli_load_options(&a.scene);
+    rf_scene *scene;
+    status = (int)rf_scene_load_file(a.input, &lo, &scene);
     double load_seconds = render_clock() - start;
     if (!scene)
-        return interrupted ? REFRAY_EXIT_INTERRUPTED : status;
-    if ((double)(a.render.width ? a.render.width : scene->image.width) *
-            (a.render.height ? a.render.height : scene->image.height) > (double)a.scene.limits.max_pixels) {
-        scene_free(scene);
+        return interrupted ? STATUS_CANCELLED : status;
+    rf_scene_info info;
+    rf_scene_get_info(scene, &info);
+    if ((double)(a.render.width ? a.render.width : info.width) * (a.render.height ? a.render.height : info.height) >
+        (double)a.scene.limits.max_pixels) {
+        rf_scene_free(scene);
         return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
     }
     status = render_and_write(&a, scene, load_seconds);
-    scene_free(scene);
+    rf_scene_free(scene);
     signal(SIGINT, SIG_DFL);
     return status;
 }

@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "image/image_file.h"
@@ -142,22 +143,22 @@ static int run_twin(const stab_args *a, stab_image *out)
     if (find_twin(a, twin, sizeof twin) != 0 || access(twin, X_OK) != 0) {
         fprintf(stderr, "refray: error: the long double program '%s' is missing; build it with `make refray-ld`, "
                 "or name it with --ld\n", twin);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_INTERNAL;
     }
     int fd = mkstemp(tmp);
     if (fd < 0) {
         fprintf(stderr, "refray: error: cannot create a temporary file: %s\n", strerror(errno));
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     close(fd);
     char **argv = twin_argv(a, twin, tmp);
     pid_t pid;
-    int wstatus = 0, status = REFRAY_EXIT_SOFTWARE;
+    int wstatus = 0, status = STATUS_INTERNAL;
     if (argv && posix_spawn(&pid, twin, NULL, NULL, argv, environ) == 0 && waitpid(pid, &wstatus, 0) == pid) {
         if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0) {
             FILE *f = fopen(tmp, "r");
-            status = f && stability_read_raw(f, out, err, sizeof err) == 0 ? REFRAY_EXIT_OK : REFRAY_EXIT_SOFTWARE;
-            if (status != REFRAY_EXIT_OK)
+            status = f && stability_read_raw(f, out, err, sizeof err) == 0 ? STATUS_OK : STATUS_INTERNAL;
+            if (status != STATUS_OK)
                 fprintf(stderr, "refray: error: reading the long double image: %s\n", f ? err : strerror(errno));
             if (f)
                 fclose(f);
@@ -165,7 +166,7 @@ static int run_twin(const stab_args *a, stab_image *out)
             fprintf(stderr, "refray: error: the long double program failed (%s %d)\n",
                     WIFEXITED(wstatus) ? "exit status" : "signal",
                     WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : WTERMSIG(wstatus));
-            status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) != 0 ? WEXITSTATUS(wstatus) : REFRAY_EXIT_SOFTWARE;
+            status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) != 0 ? status_from_exit_code(WEXITSTATUS(wstatus)) : STATUS_INTERNAL;
         }
     } else {
         fprintf(stderr, "refray: error: cannot run '%s'\n", twin);
@@ -176,11 +177,11 @@ static int run_twin(const stab_args *a, stab_image *out)
 }
 
 /* The private half: render in this build's precision, dump raw. */
-static int dump_raw(const stab_args *a, const rf_scene *scene)
+static int dump_raw(const stab_args *a, const scene_model *scene)
 {
     stab_image img;
     int status = stability_render(scene, &a->render, &img);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
     FILE *f = fopen(a->raw_dump, "w");
     int bad = !f || stability_write_raw(f, &img) != 0;
@@ -189,9 +190,9 @@ static int dump_raw(const stab_args *a, const rf_scene *scene)
     stability_free(&img);
     if (bad) {
         fprintf(stderr, "refray: error: cannot write '%s': %s\n", a->raw_dump, strerror(errno));
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 static void print_report(const stab_args *a, const stab_image *d, const stab_image *ld, const stab_report *r)
@@ -213,38 +214,38 @@ static void print_report(const stab_args *a, const stab_image *d, const stab_ima
     printf("  non-finite values: %ld in double, %ld in long double\n", d->nonfinite, ld->nonfinite);
 }
 
-static int write_map(const char *path, const rf_image *map)
+static int write_map(const char *path, const img_buf *map)
 {
     img_write_opts o = img_write_opts_default();
     char err[512];
     o.linear_png = 1;
     if (img_write(path, map, &o, err, sizeof err) != 0) {
         fprintf(stderr, "refray: error: %s\n", err);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
-static int compare(const stab_args *a, const rf_scene *scene)
+static int compare(const stab_args *a, const scene_model *scene)
 {
     stab_image d, ld;
     stab_report r;
-    rf_image map = {0, 0, NULL};
+    img_buf map = {0};
     int status = stability_render(scene, &a->render, &d);
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         return status;
-    if ((status = run_twin(a, &ld)) != REFRAY_EXIT_OK) {
+    if ((status = run_twin(a, &ld)) != STATUS_OK) {
         stability_free(&d);
         return status;
     }
     if (stability_compare(&d, &ld, a->threshold, &r, a->map ? &map : NULL) != 0) {
         fprintf(stderr, "refray: error: the two renders differ in size, or out of memory\n");
-        status = REFRAY_EXIT_SOFTWARE;
+        status = STATUS_INTERNAL;
     } else {
         print_report(a, &d, &ld, &r);
-        status = a->map ? write_map(a->map, &map) : REFRAY_EXIT_OK;
-        if (status == REFRAY_EXIT_OK && (r.beyond > 0 || d.nonfinite > 0 || ld.nonfinite > 0))
-            status = REFRAY_EXIT_FAIL;
+        status = a->map ? write_map(a->map, &map) : STATUS_OK;
+        if (status == STATUS_OK && (r.beyond > 0 || d.nonfinite > 0 || ld.nonfinite > 0))
+            status = STATUS_FAIL;
     }
     if (a->map)
         img_free(&map);
@@ -263,15 +264,15 @@ int cli_stability(int argc, char **argv)
     a.argv = argv;
     int status = parse_args(&a, argc, argv);
     if (status != 0)
-        return status < 0 ? REFRAY_EXIT_OK : status;
+        return status < 0 ? STATUS_OK : status;
     a.render.max_tree_rays = a.scene.limits.max_ray_tree;
     if (!a.raw_dump && sizeof(real) > sizeof(double))
         return cli_usage_error("stability: this is the long double program; run refray, the double one");
-    rf_scene *scene = scene_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
     if (!scene)
         return status;
     status = a.raw_dump ? dump_raw(&a, scene) : compare(&a, scene);
-    if (status == REFRAY_EXIT_DATAERR)
+    if (status == STATUS_DATA)
         fprintf(stderr, "refray: error: a ray tree passed --max-ray-tree %ld; nothing compared\n",
                 a.scene.limits.max_ray_tree);
     scene_free(scene);

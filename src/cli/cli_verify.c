@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/scene_file.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 
@@ -90,7 +91,7 @@ static int parse_args(verify_args *a, int argc, char **argv)
         }
         int used = cli_scene_opt(&a->scene, argc, argv, i);
         if (used < 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (used > 0) {
             i += used - 1;
             continue;
@@ -101,7 +102,7 @@ static int parse_args(verify_args *a, int argc, char **argv)
         }
         int r = verify_option(a, argc, argv, &i);
         if (r == 0)
-            return REFRAY_EXIT_USAGE;
+            return STATUS_USAGE;
         if (r < 0)
             return cli_usage_error("verify: unknown option '%s'", argv[i]);
     }
@@ -182,19 +183,19 @@ static void print_totals(const verify_result *r, int count)
 
 static const char *load_reason(int status)
 {
-    if (status == REFRAY_EXIT_NOINPUT)
+    if (status == STATUS_NO_INPUT)
         return "cannot read the scene (see the message above)";
-    if (status == REFRAY_EXIT_SOFTWARE)
+    if (status == STATUS_NO_MEMORY)
         return "out of memory loading the scene";
     return "not a valid scene (see the diagnostics above)";
 }
 
 /* Loads path; NULL with r filled as an error when it cannot be used. */
-static rf_scene *load(const verify_args *a, const char *path, verify_result *r)
+static scene_model *load(const verify_args *a, const char *path, verify_result *r)
 {
     int status;
     memset(r, 0, sizeof *r);
-    rf_scene *s = scene_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
+    scene_model *s = scene_file_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
     if (!s) {
         verify_result_error(r, path, status, load_reason(status));
         return NULL;
@@ -202,7 +203,7 @@ static rf_scene *load(const verify_args *a, const char *path, verify_result *r)
     oracle_view v = verify_view(s, &a->view);
     char why[256];
     if (!cli_view_fits(&v, &a->scene.limits, why, sizeof why)) {
-        verify_result_error(r, path, REFRAY_EXIT_USAGE, why);
+        verify_result_error(r, path, STATUS_USAGE, why);
         scene_free(s);
         return NULL;
     }
@@ -211,16 +212,16 @@ static rf_scene *load(const verify_args *a, const char *path, verify_result *r)
 
 static int verify_all(const verify_args *a, verify_result *results)
 {
-    int worst = REFRAY_EXIT_OK, w = name_width(a);
+    int worst = STATUS_OK, w = name_width(a);
     if (!a->json)
         print_header(w);
     for (int i = 0; i < a->path_count; i++) {
-        rf_scene *s = load(a, a->paths[i], &results[i]);
+        scene_model *s = load(a, a->paths[i], &results[i]);
         if (s) {
             verify_scene(s, a->paths[i], &a->view, &results[i]);
             scene_free(s);
         }
-        worst = results[i].status > worst ? results[i].status : worst;
+        worst = status_worse(worst, results[i].status);
         if (!a->json) {
             print_row(&results[i], w);
             fflush(stdout);
@@ -271,7 +272,7 @@ static void print_sweep(const verify_sweep *sw, const verify_result *steps, int 
 static int sweep_one(const verify_args *a, const char *path, verify_result *steps, FILE *tsv, int *first_json)
 {
     int ran = 0, status;
-    rf_scene *s = load(a, path, &steps[0]);
+    scene_model *s = load(a, path, &steps[0]);
     if (s) {
         status = verify_sweep_run(s, path, &a->view, &a->sweep, steps, &ran);
         scene_free(s);
@@ -297,13 +298,13 @@ static int sweep_one(const verify_args *a, const char *path, verify_result *step
 static int close_tsv(FILE *tsv, const char *path)
 {
     if (!tsv)
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     int bad = ferror(tsv);
     bad |= fclose(tsv) != 0;
     if (!bad)
-        return REFRAY_EXIT_OK;
+        return STATUS_OK;
     fprintf(stderr, "refray: error: could not write '%s'\n", path);
-    return REFRAY_EXIT_IOERR;
+    return STATUS_IO;
 }
 
 static int sweep_all(const verify_args *a, verify_result *steps)
@@ -311,19 +312,19 @@ static int sweep_all(const verify_args *a, verify_result *steps)
     FILE *tsv = NULL;
     if (a->tsv_path && !(tsv = fopen(a->tsv_path, "w"))) {
         fprintf(stderr, "refray: error: cannot write '%s'\n", a->tsv_path);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     if (tsv)
         verify_tsv_header(tsv);
-    int worst = REFRAY_EXIT_OK, first_json = 1;
+    int worst = STATUS_OK, first_json = 1;
     for (int i = 0; i < a->path_count; i++) {
         int status = sweep_one(a, a->paths[i], steps, tsv, &first_json);
-        worst = status > worst ? status : worst;
+        worst = status_worse(worst, status);
     }
     if (a->json)
         fputs(first_json ? "[]\n" : "]\n", stdout);
     int status = close_tsv(tsv, a->tsv_path);
-    return status > worst ? status : worst;
+    return status_worse(worst, status);
 }
 
 /* In cli_stability.c: `verify --stability SCENE` is the stability tool. */
@@ -337,11 +338,11 @@ int cli_verify(int argc, char **argv)
     cli_scene_opts_init(&a.scene);
     a.paths = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *a.paths);
     verify_result *results = malloc((size_t)(argc > VERIFY_SWEEP_MAX ? argc : VERIFY_SWEEP_MAX) * sizeof *results);
-    int status = a.paths && results ? parse_args(&a, argc, argv) : REFRAY_EXIT_SOFTWARE;
-    if (status == REFRAY_EXIT_SOFTWARE)
+    int status = a.paths && results ? parse_args(&a, argc, argv) : STATUS_NO_MEMORY;
+    if (status == STATUS_NO_MEMORY)
         fputs("refray: error: out of memory\n", stderr);
     else if (status < 0)
-        status = REFRAY_EXIT_OK;
+        status = STATUS_OK;
     else if (status == 0)
         status = a.sweep_text ? sweep_all(&a, results) : verify_all(&a, results);
     free(results);

@@ -70,7 +70,7 @@ static void refuse(pov_notes *n, const char *fmt, ...)
 }
 
 /* "file:line" of a span, for notes; "?" when it points nowhere. */
-static void where(const rf_scene *s, src_span sp, char *buf, size_t size)
+static void where(const scene_model *s, src_span sp, char *buf, size_t size)
 {
     if (sp.file < 0 || sp.file >= s->sources.count) {
         snprintf(buf, size, "?");
@@ -97,7 +97,7 @@ static void extent_add(extent *e, vec3 p)
 }
 
 /* The 8 corners of the local box lo..hi, taken to the world. */
-static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
+static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
 {
     for (int i = 0; i < 8; i++) {
         vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
@@ -106,7 +106,7 @@ static void extent_add_box(extent *e, const rf_prim *p, vec3 lo, vec3 hi)
 }
 
 /* Planes are unbounded and left out: they need no distance. */
-static void extent_add_prim(extent *e, const rf_prim *p)
+static void extent_add_prim(extent *e, const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE: {
@@ -126,6 +126,20 @@ static void extent_add_prim(extent *e, const rf_prim *p)
         for (int i = 0; i < 3; i++)
             extent_add(e, p->u.triangle.p[i]);
         break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE: {
+        vec3 a = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
+        vec3 b = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
+        vec3 r = vec_splat(p->kind == PRIM_CONE ? fmax(p->u.cone.radius[0], p->u.cone.radius[1])
+                                                : p->u.cylinder.radius);
+        extent_add_box(e, p, vec_sub(vec_min(a, b), r), vec_add(vec_max(a, b), r));
+        break;
+    }
+    case PRIM_TORUS: {
+        vec3 r = vec_splat(p->u.torus.major + p->u.torus.minor);
+        extent_add_box(e, p, vec_sub(p->u.torus.center, r), vec_add(p->u.torus.center, r));
+        break;
+    }
     case PRIM_MESH:
         for (int i = 0; i < p->u.mesh.position_count; i++)
             extent_add(e, p->u.mesh.positions[i]);
@@ -137,14 +151,14 @@ static void extent_add_prim(extent *e, const rf_prim *p)
 
 /* Centre and radius (at least 1) of a ball holding the camera, the lights
  * and every bounded primitive. */
-static double scene_radius(const rf_scene *s, vec3 *centre)
+static double scene_radius(const scene_model *s, vec3 *centre)
 {
     extent e = {vec_splat(0), vec_splat(0), 0};
     extent_add(&e, s->camera.eye);
     for (int i = 0; i < s->prim_count; i++)
         extent_add_prim(&e, &s->prims[i]);
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_DISTANT)
             continue;
         extent_add(&e, l->position);
@@ -173,7 +187,7 @@ typedef struct fade {
  * inverse_square with d0 > 0 has no match: 1 + (d/D)^p has no term
  * linear in d, (d + d0)^2 = d^2 + 2 d d0 + d0^2 has.  Returns 0 then.
  */
-static int light_fade(const rf_light *l, double radius, fade *f)
+static int light_fade(const scene_light *l, double radius, fade *f)
 {
     f->colour = 1.0;
     f->distance = 0.0;
@@ -199,7 +213,7 @@ static int light_fade(const rf_light *l, double radius, fade *f)
 
 /* ---- Checks ---- */
 
-static const char *light_word(rf_light_kind k)
+static const char *light_word(scene_light_kind k)
 {
     return k == LIGHT_POINT ? "point_light" : k == LIGHT_DISTANT ? "distant_light" : "distributed_light";
 }
@@ -210,7 +224,7 @@ static int is_pow2(int n)
 }
 
 /* [XCHK-MAP-AREA-1] the sampling of a distributed light. */
-static void check_sampling(const rf_light *l, const char *at, const pov_opts *o, pov_notes *n)
+static void check_sampling(const scene_light *l, const char *at, const pov_opts *o, pov_notes *n)
 {
     light_grid g = light_grid_for(l->samples);
     if (!o->area_lights) {
@@ -228,7 +242,7 @@ static void check_sampling(const rf_light *l, const char *at, const pov_opts *o,
                  "recursive visibility average weights its sources unevenly", at, g.rows, g.cols);
 }
 
-static void check_light(const rf_scene *s, const rf_light *l, double radius, const pov_opts *o, pov_notes *n)
+static void check_light(const scene_model *s, const scene_light *l, double radius, const pov_opts *o, pov_notes *n)
 {
     char at[256];
     fade f;
@@ -248,12 +262,13 @@ static void check_light(const rf_scene *s, const rf_light *l, double radius, con
         check_sampling(l, at, o, n);
 }
 
-static int is_solid(const rf_prim *p)
+/* An open cylinder or cone is a sheet, as in refray ([XCHK-MAP-QUADRIC-1]). */
+static int is_solid(const scene_prim *p)
 {
-    return p->kind == PRIM_SPHERE || p->kind == PRIM_BOX || (p->kind == PRIM_MESH && p->u.mesh.closed);
+    return scene_prim_is_solid(p) || (p->kind == PRIM_MESH && p->u.mesh.closed);
 }
 
-static int is_smooth(const rf_trimesh *g)
+static int is_smooth(const scene_trimesh *g)
 {
     for (int i = 0; g->tri_normal && i < g->tri_count; i++)
         if (g->tri_normal[i][0] >= 0)
@@ -267,7 +282,7 @@ static int is_grey(rgb c)
 }
 
 /* How the primitives use a material: as a solid, as a sheet. */
-static void material_use(const rf_scene *s, int m, int *solid, int *sheet)
+static void material_use(const scene_model *s, int m, int *solid, int *sheet)
 {
     *solid = *sheet = 0;
     for (int i = 0; i < s->prim_count; i++) {
@@ -283,7 +298,7 @@ static void material_use(const rf_scene *s, int m, int *solid, int *sheet)
 /* [XCHK-MAP-TIR-1] On total internal reflection POV-Ray adds the mirror
  * ray once, unweighted (and skips the Ks mirror ray); refray adds it with
  * weight Ks + t.  They agree where Ks + t = 1. */
-static int tir_differs(const rf_material *m)
+static int tir_differs(const scene_material *m)
 {
     return fabs(m->ks.x + m->t - 1) > 1e-12 || fabs(m->ks.y + m->t - 1) > 1e-12 ||
            fabs(m->ks.z + m->t - 1) > 1e-12;
@@ -294,15 +309,15 @@ static int tir_differs(const rf_material *m)
  * that as a level of depth; POV-Ray does not when the two iors are equal
  * (it continues the ray), so by default each such surface gets its own ior
  * a few float steps above 1 (POV-Ray keeps iors in single precision). */
-static int passes_straight(const rf_scene *s, const rf_prim *p)
+static int passes_straight(const scene_model *s, const scene_prim *p)
 {
-    const rf_material *m = &s->materials[p->material];
+    const scene_material *m = &s->materials[p->material];
     return s->image.max_depth > 1 && m->t > 0 && (!is_solid(p) || m->ior == 1);
 }
 
-static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_notes *n)
+static void check_material(const scene_model *s, int index, const pov_opts *o, pov_notes *n)
 {
-    const rf_material *m = &s->materials[index];
+    const scene_material *m = &s->materials[index];
     int solid, sheet, deep = s->image.max_depth > 1;
     char at[256], name[320];
     material_use(s, index, &solid, &sheet);
@@ -330,7 +345,7 @@ static void check_material(const rf_scene *s, int index, const pov_opts *o, pov_
 /* [XCHK-MAP-MESH-2] POV-Ray turns a mirror ray that a vertex normal sends
  * into the surface back out (reflecting it about the geometric normal);
  * refray traces the mirror ray as it is. */
-static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
+static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
 {
     char at[256];
     if (!is_smooth(&m->geom) || s->image.max_depth < 2 ||
@@ -341,7 +356,7 @@ static void check_mesh(const rf_scene *s, const rf_mesh *m, pov_notes *n)
              "surface POV-Ray reflects it out again about the geometric normal, refray traces it as it is", at);
 }
 
-int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes)
+int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
 {
     vec3 centre;
     double radius = scene_radius(s, &centre);
@@ -388,7 +403,7 @@ static void put_comment_text(FILE *fp, const char *text)
         fputc(*c < 0x20 || *c == 0x7f ? '?' : *c, fp);
 }
 
-int pov_render_size(const rf_scene *s, int *width, int *height)
+int pov_render_size(const scene_model *s, int *width, int *height)
 {
     int k = s->image.samples;
     *width = s->image.width * k;
@@ -396,7 +411,7 @@ int pov_render_size(const rf_scene *s, int *width, int *height)
     return k;
 }
 
-static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const pov_notes *n)
+static void write_header(FILE *fp, const scene_model *s, const pov_opts *o, const pov_notes *n)
 {
     int w, h, k = pov_render_size(s, &w, &h);
     fputs("// POV-Ray 3.7 scene written by `refray export --to pov`", fp);
@@ -430,7 +445,7 @@ static void write_header(FILE *fp, const rf_scene *s, const pov_opts *o, const p
 
 /* [XCHK-MAP-GLOBAL-1] Linear working space, the ambient light, the depth,
  * and no adaptive cut-off of weak rays. */
-static void write_globals(FILE *fp, const rf_scene *s, double scale)
+static void write_globals(FILE *fp, const scene_model *s, double scale)
 {
     int depth = s->image.max_depth < POV_MAX_TRACE_LEVEL ? s->image.max_depth : POV_MAX_TRACE_LEVEL;
     fputs("global_settings {\n  assumed_gamma 1.0\n  ambient_light rgb ", fp);
@@ -444,9 +459,9 @@ static void write_globals(FILE *fp, const rf_scene *s, double scale)
  * the horizontal field of view (POV-Ray sizes the direction from right);
  * an orthographic camera's right and up are the view's extent.  sky is
  * refray's up as written; look_at comes last, as it re-aims the others. */
-static void write_camera(FILE *fp, const rf_scene *s)
+static void write_camera(FILE *fp, const scene_model *s)
 {
-    const rf_camera *c = &s->camera;
+    const scene_camera *c = &s->camera;
     double aspect = (double)s->image.width / (double)s->image.height;
     int ortho = c->kind == CAMERA_ORTHOGRAPHIC;
     fprintf(fp, "camera {\n  %s\n  location ", ortho ? "orthographic" : "perspective");
@@ -489,7 +504,7 @@ static void write_point_source(FILE *fp, vec3 pos, rgb power, const fade *f)
 /* [XCHK-MAP-DISTANT-1] A parallel light: POV-Ray shades with the fixed
  * direction and tests shadows up to the plane through its location, which
  * is put far behind everything (1000 scene radii) so no occluder is cut. */
-static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre, double radius)
+static void write_distant(FILE *fp, const scene_light *l, double scale, vec3 centre, double radius)
 {
     vec3 from = vec_sub(centre, vec_scale(l->direction, 1000.0 * radius));
     fputs("light_source { ", fp);
@@ -504,7 +519,7 @@ static void write_distant(FILE *fp, const rf_light *l, double scale, vec3 centre
 /* [XCHK-MAP-AREA-1] Default: the light's samples as point sources of
  * E/samples at the centres of its cells, where refray puts them before
  * jitter (lightsample.h). */
-static void write_distributed_points(FILE *fp, const rf_light *l, const fade *f)
+static void write_distributed_points(FILE *fp, const scene_light *l, const fade *f)
 {
     light_grid g = light_grid_for(l->samples);
     vec3 t1 = vec_splat(0), t2 = vec_splat(0);
@@ -530,7 +545,7 @@ static int ceil_log2(int n)
  * so the axes are shrunk by (n - 1)/n to put the points at the cells'
  * centres; area_illumination shades each point (not only the centre);
  * adaptive as deep as the grid so every point's visibility is traced. */
-static void write_area(FILE *fp, const rf_light *l, const fade *f)
+static void write_area(FILE *fp, const scene_light *l, const fade *f)
 {
     light_grid g = light_grid_for(l->samples);
     vec3 u = l->edge_u, v = l->edge_v, centre = l->position;
@@ -557,11 +572,11 @@ static void write_area(FILE *fp, const rf_light *l, const fade *f)
     fputs(" }\n", fp);
 }
 
-static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 centre, double radius)
+static void write_lights(FILE *fp, const scene_model *s, const pov_opts *o, vec3 centre, double radius)
 {
     double scale = o->scale > 0 ? o->scale : 1.0;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         fade f;
         light_fade(l, radius, &f);
         f.colour *= scale;
@@ -582,7 +597,7 @@ static void write_lights(FILE *fp, const rf_scene *s, const pov_opts *o, vec3 ce
  * ambient and diffuse; t weights the transmitted ray and the shadows);
  * ambient 1 and diffuse 1 in place of POV-Ray's 0.1 and 0.6, so that the
  * terms are Kd Ia and Kd E cos; phong and reflection from Ks. */
-static void write_texture(FILE *fp, int index, const rf_material *m)
+static void write_texture(FILE *fp, int index, const scene_material *m)
 {
     double phong = is_grey(m->ks) ? m->ks.x : (m->ks.x + m->ks.y + m->ks.z) / 3;
     fprintf(fp, "#declare RF_T%d = texture {  // %s\n  pigment { rgbt <", index, m->name ? m->name : "inline");
@@ -610,9 +625,9 @@ static void write_texture(FILE *fp, int index, const rf_material *m)
  * triangle) passes rays straight on, as POV-Ray does with ior 1 (a POV-Ray
  * plane is a half-space and would bend them).  A clear surface (t = 1)
  * lets all light through, which no_shadow says without tracing it. */
-static void write_material_ref(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+static void write_material_ref(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
 {
-    const rf_material *m = &s->materials[p->material];
+    const scene_material *m = &s->materials[p->material];
     fprintf(fp, "  texture { RF_T%d }\n", p->material);
     if (is_solid(p) && m->t > 0 && m->ior != 1) {
         fputs("  interior { ior ", fp);
@@ -644,7 +659,31 @@ static void write_matrix(FILE *fp, const xform *x)
     fputs(">\n", fp);
 }
 
-static void write_shape(FILE *fp, const rf_prim *p)
+/* [XCHK-MAP-QUADRIC-1] POV-Ray's torus lies about its y axis at the
+ * origin: a matrix takes y to the axis (in POV-Ray's frame) and the origin
+ * to the centre.  Any orthonormal frame with that image of y will do, the
+ * torus being the same under every turn about its axis and every mirror
+ * through it. */
+static void write_torus_placement(FILE *fp, const scene_prim *p)
+{
+    vec3 a = vec_normalize(to_pov(p->u.torus.axis)), c = to_pov(p->u.torus.center);
+    vec3 least = fabs(a.x) <= fabs(a.y) && fabs(a.x) <= fabs(a.z) ? vec_make(1, 0, 0)
+                 : fabs(a.y) <= fabs(a.z)                          ? vec_make(0, 1, 0)
+                                                                    : vec_make(0, 0, 1);
+    vec3 u = vec_normalize(vec_cross(a, least)), w = vec_cross(u, a);
+    const vec3 rows[4] = {u, a, w, c};
+    fputs("  sturm\n  matrix <", fp);
+    for (int i = 0; i < 4; i++) {
+        put_num(fp, rows[i].x);
+        fputs(", ", fp);
+        put_num(fp, rows[i].y);
+        fputs(", ", fp);
+        put_num(fp, rows[i].z);
+        fputs(i < 3 ? ", " : ">", fp);
+    }
+}
+
+static void write_shape(FILE *fp, const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -674,6 +713,34 @@ static void write_shape(FILE *fp, const rf_prim *p)
         fputs(", ", fp);
         put_vec(fp, to_pov(p->u.box.hi));
         break;
+    case PRIM_CYLINDER:
+        fputs("cylinder {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.from));
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cylinder.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cylinder.radius);
+        fputs(p->u.cylinder.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_CONE:
+        fputs("cone {\n  ", fp);
+        put_vec(fp, to_pov(p->u.cone.from));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[0]);
+        fputs(", ", fp);
+        put_vec(fp, to_pov(p->u.cone.to));
+        fputs(", ", fp);
+        put_num(fp, p->u.cone.radius[1]);
+        fputs(p->u.cone.open ? "\n  open" : "", fp);
+        break;
+    case PRIM_TORUS:
+        fputs("torus {\n  ", fp);
+        put_num(fp, p->u.torus.major);
+        fputs(", ", fp);
+        put_num(fp, p->u.torus.minor);
+        fputc('\n', fp);
+        write_torus_placement(fp, p);
+        break;
     case PRIM_MESH: /* written by write_mesh */
         break;
     case PRIM_TRIANGLE:
@@ -691,7 +758,7 @@ static void write_shape(FILE *fp, const rf_prim *p)
     fputc('\n', fp);
 }
 
-static void write_prim(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+static void write_prim(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
 {
     write_shape(fp, p);
     write_material_ref(fp, s, o, p, nudged);
@@ -709,7 +776,7 @@ static void put_list_item(FILE *fp, vec3 v)
 /* normal_vectors: the mesh's normals, then one geometric normal for each
  * flat triangle of a smooth mesh (normal_indices, after the faces as
  * POV-Ray wants, says which each corner uses). */
-static void write_mesh_normals(FILE *fp, const rf_trimesh *g)
+static void write_mesh_normals(FILE *fp, const scene_trimesh *g)
 {
     int flat = 0;
     for (int i = 0; i < g->tri_count; i++)
@@ -726,7 +793,7 @@ static void write_mesh_normals(FILE *fp, const rf_trimesh *g)
     fputs(" }\n", fp);
 }
 
-static void write_normal_indices(FILE *fp, const rf_trimesh *g)
+static void write_normal_indices(FILE *fp, const scene_trimesh *g)
 {
     fprintf(fp, "  normal_indices { %d", g->tri_count);
     for (int i = 0, flat_index = g->normal_count; i < g->tri_count; i++) {
@@ -742,9 +809,9 @@ static void write_normal_indices(FILE *fp, const rf_trimesh *g)
  * holds them (world space), its vertex normals if any triangle has them,
  * and, when it is closed, an inside_vector so that POV-Ray treats it as a
  * solid for refraction, as refray does (an open mesh is sheets in both). */
-static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_prim *p, int *nudged)
+static void write_mesh(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
 {
-    const rf_trimesh *g = &p->u.mesh;
+    const scene_trimesh *g = &p->u.mesh;
     fprintf(fp, "mesh2 {\n  vertex_vectors { %d", g->position_count);
     for (int i = 0; i < g->position_count; i++)
         put_list_item(fp, g->positions[i]);
@@ -763,14 +830,14 @@ static void write_mesh(FILE *fp, const rf_scene *s, const pov_opts *o, const rf_
     fputs("}\n", fp);
 }
 
-static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
+static void write_geometry(FILE *fp, const scene_model *s, const pov_opts *o)
 {
     int nudged = 0;
     for (int i = 0; i < s->material_count; i++)
         write_texture(fp, i, &s->materials[i]);
     fputc('\n', fp);
     for (int i = 0; i < s->prim_count; i++) {
-        const rf_prim *p = &s->prims[i];
+        const scene_prim *p = &s->prims[i];
         if (p->kind == PRIM_MESH)
             write_mesh(fp, s, o, p, &nudged);
         else
@@ -778,18 +845,18 @@ static void write_geometry(FILE *fp, const rf_scene *s, const pov_opts *o)
     }
 }
 
-int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *notes)
+int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes)
 {
     vec3 centre;
     double radius = scene_radius(s, &centre);
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     write_header(fp, s, o, notes);
     write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
     write_camera(fp, s);
     write_lights(fp, s, o, centre, radius);
     write_geometry(fp, s, o);
-    return fflush(fp) != 0 || ferror(fp) ? REFRAY_EXIT_IOERR : 0;
+    return fflush(fp) != 0 || ferror(fp) ? STATUS_IO : 0;
 }
 
 /* ---- The atomic file ---- */
@@ -816,23 +883,23 @@ static void set_mode(int fd, const char *path)
 }
 
 /* Writes into the open temporary fd and closes it; 0 or the exit code. */
-static int fill_temp(int fd, const char *path, const rf_scene *s, const pov_opts *o, pov_notes *notes)
+static int fill_temp(int fd, const char *path, const scene_model *s, const pov_opts *o, pov_notes *notes)
 {
     set_mode(fd, path);
     FILE *fp = fdopen(fd, "w");
     if (!fp) {
         close(fd);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     int rc = pov_export_write(s, o, fp, notes);
     if (rc == 0 && fsync(fileno(fp)) != 0)
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     if (fclose(fp) != 0 && rc == 0)
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     return rc;
 }
 
-int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
+int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen)
 {
     static const char suffix[] = ".tmp.XXXXXX";
@@ -840,19 +907,19 @@ int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_
     if (err && errlen)
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
-        return REFRAY_EXIT_DATAERR;
+        return STATUS_DATA;
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         snprintf(err, errlen, "cannot write '%s': it exists and is not a regular file", path);
-        return REFRAY_EXIT_IOERR;
+        return STATUS_IO;
     }
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
     if (!tmp) {
         snprintf(err, errlen, "out of memory");
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     snprintf(tmp, n, "%s%s", path, suffix);
-    int fd = mkstemp(tmp), rc = REFRAY_EXIT_IOERR;
+    int fd = mkstemp(tmp), rc = STATUS_IO;
     if (fd < 0)
         snprintf(err, errlen, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
     else if ((rc = fill_temp(fd, path, s, o, notes)) != 0)
@@ -860,7 +927,7 @@ int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_
     else if (rename(tmp, path) != 0) {
         snprintf(err, errlen, "cannot write '%s': cannot rename the temporary file into place: %s", path,
                  strerror(errno));
-        rc = REFRAY_EXIT_IOERR;
+        rc = STATUS_IO;
     }
     if (fd >= 0 && rc != 0)
         unlink(tmp);

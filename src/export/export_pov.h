@@ -71,17 +71,17 @@ typedef struct pov_opts {
  * Finds what cannot be mapped: fills notes (cleared first) and returns 1
  * when s can be exported, 0 when it is refused (the reason in notes).
  */
-int pov_export_check(const rf_scene *s, const pov_opts *o, pov_notes *notes);
+int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes);
 
 /*
  * Writes s as SDL to fp: a header comment that names the povray options
  * the render needs and how to read the image back (`// pov-args:`,
  * `// pov-downsample:` and `// pov-scale:` lines, read by
  * tests/crosscheck.sh) and lists the approximations, then the scene.
- * Returns 0; REFRAY_EXIT_DATAERR when refused (nothing written); or
- * REFRAY_EXIT_IOERR when a write to fp failed.  notes as pov_export_check.
+ * Returns 0; STATUS_DATA when refused (nothing written); or
+ * STATUS_IO when a write to fp failed.  notes as pov_export_check.
  */
-int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *notes);
+int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes);
 
 /*
  * The same into path, atomically: a temporary "<path>.tmp.XXXXXX" in the
@@ -90,12 +90,12 @@ int pov_export_write(const rf_scene *s, const pov_opts *o, FILE *fp, pov_notes *
  * pov_export_write, with a one-line reason in err (errlen bytes; err may be
  * NULL only when errlen is 0) for an I/O error.
  */
-int pov_export_file(const rf_scene *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
+int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen);
 
 /* The size POV-Ray must render: k times the scene's image for a k x k
  * pixel grid (whose sub-pixel centres are then POV-Ray's pixel centres).
  * Returns k. */
-int pov_render_size(const rf_scene *s, int *width, int *height);
+int pov_render_size(const scene_model *s, int *width, int *height);
 
 #endif

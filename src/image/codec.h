@@ -11,17 +11,17 @@
  * checks its own writes; the caller flushes.  Each reader fills *out or
  * leaves it empty.  Both return the codes of img_write / img_read, with a
  * reason in err that does not name the file. */
-int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_png_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
-int img_png_read(FILE *fp, rf_image *out, char *err, size_t errlen);
-int img_exr_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_png_read(FILE *fp, img_buf *out, char *err, size_t errlen);
+int img_exr_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
-int img_exr_read(FILE *fp, rf_image *out, char *err, size_t errlen);
-int img_pfm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_exr_read(FILE *fp, img_buf *out, char *err, size_t errlen);
+int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
-int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen);
-int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_pfm_read(FILE *fp, img_buf *out, char *err, size_t errlen);
+int img_ppm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
-int img_ppm_read(FILE *fp, rf_image *out, char *err, size_t errlen);
+int img_ppm_read(FILE *fp, img_buf *out, char *err, size_t errlen);
 
 #endif

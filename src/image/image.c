@@ -22,25 +22,32 @@ int img_error(char *err, size_t errlen, int code, const char *fmt, ...)
     return code;
 }
 
-int img_create(rf_image *img, int width, int height)
+int img_create(img_buf *img, int width, int height)
+{
+    return img_create_mem(img, width, height, NULL);
+}
+
+int img_create_mem(img_buf *img, int width, int height, const mem *m)
 {
     img->width = img->height = 0;
     img->rgb = NULL;
+    img->mem = mem_pick(m);
     if (width < 1 || height < 1 || (size_t)width > SIZE_MAX / 3 / sizeof(double) / (size_t)height)
-        return IMG_ESOFTWARE;
-    img->rgb = calloc((size_t)width * (size_t)height * 3, sizeof(double));
+        return STATUS_INTERNAL;
+    img->rgb = mem_calloc(&img->mem, (size_t)width * (size_t)height * 3, sizeof(double));
     if (!img->rgb)
-        return IMG_EOSERR;
+        return STATUS_NO_MEMORY;
     img->width = width;
     img->height = height;
-    return IMG_OK;
+    return STATUS_OK;
 }
 
-void img_free(rf_image *img)
+void img_free(img_buf *img)
 {
     if (!img)
         return;
-    free(img->rgb);
+    if (img->rgb)
+        mem_free(&img->mem, img->rgb, (size_t)img->width * (size_t)img->height * 3 * sizeof(double));
     img->rgb = NULL;
     img->width = img->height = 0;
 }

@@ -22,9 +22,12 @@
  *     The new file gets the mode of the file it replaces, or 0666 less the
  *     umask for a new one.
  *
- * Status codes are 0 or a sysexits(3)-style value the CLI can exit with,
- * and every failing call leaves a one-line message in err (err may be NULL;
- * a message longer than errlen is cut).
+ * Functions return a status of base/status.h (STATUS_OK, STATUS_USAGE for an
+ * unknown extension or a format compiled out, STATUS_DATA for a malformed
+ * file, STATUS_NO_INPUT when a file cannot be opened, STATUS_INTERNAL for
+ * an invalid image passed in, STATUS_NO_MEMORY, STATUS_IO), and every
+ * failing call leaves a one-line message in err (err may be NULL; a
+ * message longer than errlen is cut).
  */
 #ifndef REFRAY_IMAGE_H
 #define REFRAY_IMAGE_H
@@ -32,38 +35,33 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-
-enum {
-    IMG_OK = 0,
-    IMG_EUSAGE = 64,    /* unknown extension, format compiled out, bad options */
-    IMG_EDATA = 65,     /* a file being read is malformed or unsupported */
-    IMG_ENOINPUT = 66,  /* a file being read cannot be opened */
-    IMG_ESOFTWARE = 70, /* the caller passed an invalid image */
-    IMG_EOSERR = 71,    /* out of memory */
-    IMG_EIO = 74        /* the operating system refused a read or write */
-};
+#include "base/mem.h"
+#include "base/status.h"
 
 /* Readers refuse headers that claim more pixels than this (a corrupt or
  * hostile header must not make us allocate gigabytes). */
 #define IMG_MAX_PIXELS (1L << 28)
 
 /* Linear RGB, row-major from the top row, 3 doubles per pixel. */
-typedef struct rf_image {
+typedef struct img_buf {
     int width, height;
     double *rgb;
-} rf_image;
+    mem mem;           /* where rgb lives; zeroed: the C library */
+} img_buf;
 
-/* Allocates a width x height image of zeros.  Returns 0, IMG_ESOFTWARE for
- * a size < 1 or too large to address, IMG_EOSERR when out of memory; on
- * failure *img is {0, 0, NULL}. */
-int img_create(rf_image *img, int width, int height);
+/* Allocates a width x height image of zeros.  Returns 0, STATUS_INTERNAL for
+ * a size < 1 or too large to address, STATUS_NO_MEMORY when out of memory; on
+ * failure *img is empty (no pixels). */
+int img_create(img_buf *img, int width, int height);
+/* The same with the pixels from the allocator m (NULL: the C library). */
+int img_create_mem(img_buf *img, int width, int height, const mem *m);
 
-/* Frees the pixels and resets *img to {0, 0, NULL}; NULL and an already
+/* Frees the pixels and resets *img to empty (no pixels); NULL and an already
  * freed image are fine. */
-void img_free(rf_image *img);
+void img_free(img_buf *img);
 
 /* The 3 channels of pixel (x, y), y = 0 the top row. */
-static inline double *img_pixel(const rf_image *img, int x, int y)
+static inline double *img_pixel(const img_buf *img, int x, int y)
 {
     return img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
 }

@@ -49,7 +49,7 @@ static int exr_failure(const exr_stream *s, exr_result_t rv, int code, const cha
                        size_t errlen)
 {
     if (s->saved_errno)
-        return img_error(err, errlen, IMG_EIO, "%s error: %s", what, strerror(s->saved_errno));
+        return img_error(err, errlen, STATUS_IO, "%s error: %s", what, strerror(s->saved_errno));
     if (s->msg[0])
         return img_error(err, errlen, code, "OpenEXR: %s", s->msg);
     return img_error(err, errlen, code, "OpenEXR: %s", exr_get_default_error_message(rv));
@@ -95,7 +95,7 @@ static void store_value(exr_planes *pl, int c, size_t i, double v, img_write_sta
     st->clamped += (size_t)clamped;
 }
 
-static int fill_planes(exr_planes *pl, const rf_image *img, int use_float, img_write_stats *st)
+static int fill_planes(exr_planes *pl, const img_buf *img, int use_float, img_write_stats *st)
 {
     size_t n = (size_t)img->width * (size_t)img->height;
     pl->elem = use_float ? 4 : 2;
@@ -132,7 +132,7 @@ static void aim_encoder(exr_encode_pipeline_t *enc, const exr_planes *pl, int wi
     }
 }
 
-static exr_result_t write_chunks(exr_context_t ctx, int part, const rf_image *img,
+static exr_result_t write_chunks(exr_context_t ctx, int part, const img_buf *img,
                                  const exr_planes *pl)
 {
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
@@ -159,7 +159,7 @@ static exr_result_t write_chunks(exr_context_t ctx, int part, const rf_image *im
 }
 
 /* Part, required attributes, channels, header. */
-static exr_result_t define_part(exr_context_t ctx, const rf_image *img, int ptype, int *part)
+static exr_result_t define_part(exr_context_t ctx, const img_buf *img, int ptype, int *part)
 {
     static const char *const names[3] = {"R", "G", "B"};
     exr_result_t rv = exr_add_part(ctx, "rgb", EXR_STORAGE_SCANLINE, part);
@@ -174,7 +174,7 @@ static exr_result_t define_part(exr_context_t ctx, const rf_image *img, int ptyp
     return rv;
 }
 
-static exr_result_t encode_exr(exr_stream *s, const rf_image *img, const exr_planes *pl)
+static exr_result_t encode_exr(exr_stream *s, const img_buf *img, const exr_planes *pl)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
@@ -192,21 +192,21 @@ static exr_result_t encode_exr(exr_stream *s, const rf_image *img, const exr_pla
     return rv != EXR_ERR_SUCCESS ? rv : fin;
 }
 
-int img_exr_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_exr_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     exr_stream s = {fp, 0, 0, ""};
     exr_planes pl = {{NULL, NULL, NULL}, 0, 0};
-    int rc = IMG_OK;
+    int rc = STATUS_OK;
     s.base = ftello(fp);
     if (s.base < 0)
-        rc = img_error(err, errlen, IMG_EIO, "EXR needs a seekable file: %s", strerror(errno));
+        rc = img_error(err, errlen, STATUS_IO, "EXR needs a seekable file: %s", strerror(errno));
     else if (fill_planes(&pl, img, o->exr_float, st) != 0)
-        rc = img_error(err, errlen, IMG_EOSERR, "out of memory");
+        rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     else {
         exr_result_t rv = encode_exr(&s, img, &pl);
         if (rv != EXR_ERR_SUCCESS || s.saved_errno)
-            rc = exr_failure(&s, rv, IMG_EIO, "write", err, errlen);
+            rc = exr_failure(&s, rv, STATUS_IO, "write", err, errlen);
     }
     for (int c = 0; c < 3; c++)
         free(pl.plane[c]);
@@ -303,27 +303,27 @@ static int check_layout(exr_const_context_t ctx, exr_target *t, char *err, size_
     const exr_attr_chlist_t *chl = NULL;
     int found = 0;
     if (exr_get_storage(ctx, 0, &storage) || storage != EXR_STORAGE_SCANLINE)
-        return img_error(err, errlen, IMG_EDATA, "only scanline OpenEXR files are supported");
+        return img_error(err, errlen, STATUS_DATA, "only scanline OpenEXR files are supported");
     if (exr_get_data_window(ctx, 0, &dw) || exr_get_channels(ctx, 0, &chl) || !chl)
-        return img_error(err, errlen, IMG_EDATA, "OpenEXR header lacks a data window or channels");
+        return img_error(err, errlen, STATUS_DATA, "OpenEXR header lacks a data window or channels");
     for (int i = 0; i < chl->num_channels; i++) {
         const exr_attr_chlist_entry_t *e = &chl->entries[i];
         int c = rgb_index(e->name.str);
         if (c >= 0 && (e->x_sampling != 1 || e->y_sampling != 1))
-            return img_error(err, errlen, IMG_EDATA, "subsampled channel %s", e->name.str);
+            return img_error(err, errlen, STATUS_DATA, "subsampled channel %s", e->name.str);
         found |= c >= 0 ? 1 << c : 0;
     }
     if (found != 7)
-        return img_error(err, errlen, IMG_EDATA, "the file has no R, G and B channels");
+        return img_error(err, errlen, STATUS_DATA, "the file has no R, G and B channels");
     t->width = dw.max.x - dw.min.x + 1;
     t->height = dw.max.y - dw.min.y + 1;
     t->min_y = dw.min.y;
     if (t->width < 1 || t->height < 1 || t->width > IMG_MAX_PIXELS / t->height)
-        return img_error(err, errlen, IMG_EDATA, "bad data window");
-    return IMG_OK;
+        return img_error(err, errlen, STATUS_DATA, "bad data window");
+    return STATUS_OK;
 }
 
-static void copy_planes(const exr_target *t, rf_image *out)
+static void copy_planes(const exr_target *t, img_buf *out)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < n; i++)
@@ -332,29 +332,29 @@ static void copy_planes(const exr_target *t, rf_image *out)
 }
 
 /* Decodes the first part into *out once the context is open. */
-static int decode_exr(exr_const_context_t ctx, exr_stream *s, rf_image *out, char *err,
+static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char *err,
                       size_t errlen)
 {
     exr_target t = {{NULL, NULL, NULL}, 0, 0, 0};
     int rc = check_layout(ctx, &t, err, errlen);
-    for (int c = 0; rc == IMG_OK && c < 3; c++)
+    for (int c = 0; rc == STATUS_OK && c < 3; c++)
         if (!(t.plane[c] = calloc((size_t)t.width * (size_t)t.height, sizeof(float))))
-            rc = img_error(err, errlen, IMG_EOSERR, "out of memory");
-    if (rc == IMG_OK) {
+            rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    if (rc == STATUS_OK) {
         exr_result_t rv = read_chunks(ctx, &t);
         if (rv != EXR_ERR_SUCCESS)
-            rc = exr_failure(s, rv, IMG_EDATA, "read", err, errlen);
+            rc = exr_failure(s, rv, STATUS_DATA, "read", err, errlen);
     }
-    if (rc == IMG_OK && (rc = img_create(out, t.width, t.height)) != IMG_OK)
+    if (rc == STATUS_OK && (rc = img_create(out, t.width, t.height)) != STATUS_OK)
         rc = img_error(err, errlen, rc, "out of memory");
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         copy_planes(&t, out);
     for (int c = 0; c < 3; c++)
         free(t.plane[c]);
     return rc;
 }
 
-int img_exr_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_exr_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     exr_stream s = {fp, 0, 0, ""};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -365,7 +365,7 @@ int img_exr_read(FILE *fp, rf_image *out, char *err, size_t errlen)
     init.error_handler_fn = on_exr_error;
     exr_result_t rv = exr_start_read(&ctx, "image.exr", &init);
     int rc = rv == EXR_ERR_SUCCESS ? decode_exr(ctx, &s, out, err, errlen)
-                                   : exr_failure(&s, rv, IMG_EDATA, "read", err, errlen);
+                                   : exr_failure(&s, rv, STATUS_DATA, "read", err, errlen);
     if (ctx)
         exr_finish(&ctx);
     return rc;

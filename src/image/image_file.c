@@ -89,56 +89,56 @@ static int check_format(const char *path, img_format fmt, int writing, char *why
 {
     const char *ext = path ? extension_of(path) : NULL;
     if (fmt == IMG_FORMAT_UNKNOWN && path && !ext)
-        return img_error(why, len, IMG_EUSAGE,
+        return img_error(why, len, STATUS_USAGE,
                          "no file extension to choose the format by (supported: %s)",
                          supported_list);
     if (fmt == IMG_FORMAT_UNKNOWN && !ext)
-        return img_error(why, len, IMG_EUSAGE, "unknown image format (supported: %s)",
+        return img_error(why, len, STATUS_USAGE, "unknown image format (supported: %s)",
                          supported_list);
     if (fmt == IMG_FORMAT_UNKNOWN)
-        return img_error(why, len, IMG_EUSAGE, "unknown image format '%s' (supported: %s)", ext,
+        return img_error(why, len, STATUS_USAGE, "unknown image format '%s' (supported: %s)", ext,
                          supported_list);
     if (img_format_available(fmt))
-        return IMG_OK;
+        return STATUS_OK;
     if (fmt == IMG_FORMAT_EXR)
-        return img_error(why, len, IMG_EUSAGE, "this refray was built without OpenEXR (EXR=0); %s",
+        return img_error(why, len, STATUS_USAGE, "this refray was built without OpenEXR (EXR=0); %s",
                          writing ? "write .pfm instead" : "cannot read .exr files");
-    return img_error(why, len, IMG_EUSAGE, "this refray was built without libpng (PNG=0); %s",
+    return img_error(why, len, STATUS_USAGE, "this refray was built without libpng (PNG=0); %s",
                      writing ? "write .ppm instead" : "cannot read .png files");
 }
 
-static int check_image(const rf_image *img, char *why, size_t len)
+static int check_image(const img_buf *img, char *why, size_t len)
 {
     if (!img || !img->rgb || img->width < 1 || img->height < 1)
-        return img_error(why, len, IMG_ESOFTWARE, "invalid image (%dx%d%s)", img ? img->width : 0,
+        return img_error(why, len, STATUS_INTERNAL, "invalid image (%dx%d%s)", img ? img->width : 0,
                          img ? img->height : 0, img && !img->rgb ? ", no pixels" : "");
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 static int check_opts(const img_write_opts *o, char *why, size_t len)
 {
     if (o->png_bits != 8 && o->png_bits != 16)
-        return img_error(why, len, IMG_EUSAGE, "PNG bit depth must be 8 or 16, not %d", o->png_bits);
+        return img_error(why, len, STATUS_USAGE, "PNG bit depth must be 8 or 16, not %d", o->png_bits);
     if (o->tone != IMG_TONE_CLAMP && o->tone != IMG_TONE_REINHARD)
-        return img_error(why, len, IMG_EUSAGE, "unknown tone mapping %d", o->tone);
+        return img_error(why, len, STATUS_USAGE, "unknown tone mapping %d", o->tone);
     if (!isfinite(o->exposure_stops))
-        return img_error(why, len, IMG_EUSAGE, "exposure must be a finite number of stops");
-    return IMG_OK;
+        return img_error(why, len, STATUS_USAGE, "exposure must be a finite number of stops");
+    return STATUS_OK;
 }
 
 /* Every check that can fail before a byte is written. */
-static int check_write(const char *path, img_format fmt, const rf_image *img,
+static int check_write(const char *path, img_format fmt, const img_buf *img,
                        const img_write_opts *o, char *why, size_t len)
 {
     int rc = check_format(path, fmt, 1, why, len);
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         rc = check_image(img, why, len);
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         rc = check_opts(o, why, len);
     return rc;
 }
 
-static int encode(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+static int encode(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                   img_write_stats *st, char *why, size_t len)
 {
     switch (fmt) {
@@ -150,13 +150,13 @@ static int encode(FILE *fp, img_format fmt, const rf_image *img, const img_write
 #endif
     case IMG_FORMAT_PFM: return img_pfm_write(fp, img, o, st, why, len);
     case IMG_FORMAT_PPM: return img_ppm_write(fp, img, o, st, why, len);
-    default: return img_error(why, len, IMG_ESOFTWARE, "no encoder for this format");
+    default: return img_error(why, len, STATUS_INTERNAL, "no encoder for this format");
     }
 }
 
 /* The stream checks are here, not only in the back ends, because stdio
  * buffers: a full disk usually shows only when the buffer is flushed. */
-int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                      char *err, size_t errlen)
 {
     img_write_opts defaults = img_write_opts_default();
@@ -164,13 +164,13 @@ int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_wr
     if (!o)
         o = &defaults;
     int rc = check_write(NULL, fmt, img, o, err, errlen);
-    if (rc != IMG_OK)
+    if (rc != STATUS_OK)
         return rc;
     rc = encode(fp, fmt, img, o, &st, err, errlen);
-    if (rc == IMG_OK && fflush(fp) != 0)
-        rc = img_error(err, errlen, IMG_EIO, "write error: %s", strerror(errno));
-    else if (rc == IMG_OK && ferror(fp))
-        rc = img_error(err, errlen, IMG_EIO, "write error");
+    if (rc == STATUS_OK && fflush(fp) != 0)
+        rc = img_error(err, errlen, STATUS_IO, "write error: %s", strerror(errno));
+    else if (rc == STATUS_OK && ferror(fp))
+        rc = img_error(err, errlen, STATUS_IO, "write error");
     if (o->stats)
         *o->stats = st;
     return rc;
@@ -202,61 +202,61 @@ static int set_final_mode(int fd, const char *path, char *why, size_t len)
     mode_t mode = stat(path, &sb) == 0 && S_ISREG(sb.st_mode) ? (sb.st_mode & 07777)
                                                               : new_file_mode();
     if (fchmod(fd, mode) != 0)
-        return img_error(why, len, IMG_EIO, "cannot set the file mode: %s", strerror(errno));
-    return IMG_OK;
+        return img_error(why, len, STATUS_IO, "cannot set the file mode: %s", strerror(errno));
+    return STATUS_OK;
 }
 
 /* Encodes into the open temporary file fd and closes it, checking the
  * flush, the fsync and the close. */
-static int fill_temp(int fd, const char *path, img_format fmt, const rf_image *img,
+static int fill_temp(int fd, const char *path, img_format fmt, const img_buf *img,
                      const img_write_opts *o, char *why, size_t len)
 {
     int rc = set_final_mode(fd, path, why, len);
-    FILE *fp = rc == IMG_OK ? fdopen(fd, "wb") : NULL;
+    FILE *fp = rc == STATUS_OK ? fdopen(fd, "wb") : NULL;
     if (!fp) {
-        if (rc == IMG_OK)
-            rc = img_error(why, len, IMG_EIO, "cannot open a stream: %s", strerror(errno));
+        if (rc == STATUS_OK)
+            rc = img_error(why, len, STATUS_IO, "cannot open a stream: %s", strerror(errno));
         close(fd);
         return rc;
     }
     rc = img_write_stream(fp, fmt, img, o, why, len);
-    if (rc == IMG_OK && fsync(fileno(fp)) != 0)
-        rc = img_error(why, len, IMG_EIO, "write error: %s", strerror(errno));
-    if (fclose(fp) != 0 && rc == IMG_OK)
-        rc = img_error(why, len, IMG_EIO, "write error: %s", strerror(errno));
+    if (rc == STATUS_OK && fsync(fileno(fp)) != 0)
+        rc = img_error(why, len, STATUS_IO, "write error: %s", strerror(errno));
+    if (fclose(fp) != 0 && rc == STATUS_OK)
+        rc = img_error(why, len, STATUS_IO, "write error: %s", strerror(errno));
     return rc;
 }
 
-static int write_atomically(const char *path, img_format fmt, const rf_image *img,
+static int write_atomically(const char *path, img_format fmt, const img_buf *img,
                             const img_write_opts *o, char *why, size_t len)
 {
     /* The rename would replace a device, a FIFO or a directory entry that
      * is not a plain file (as root even /dev/full): refuse instead. */
     struct stat sb;
     if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
-        return img_error(why, len, IMG_EIO, "it exists and is not a regular file");
+        return img_error(why, len, STATUS_IO, "it exists and is not a regular file");
     static const char suffix[] = ".tmp.XXXXXX";
     size_t n = strlen(path) + sizeof suffix;
     char *tmp = malloc(n);
     if (!tmp)
-        return img_error(why, len, IMG_EOSERR, "out of memory");
+        return img_error(why, len, STATUS_NO_MEMORY, "out of memory");
     snprintf(tmp, n, "%s%s", path, suffix);
     int fd = mkstemp(tmp);
-    int rc = IMG_OK;
+    int rc = STATUS_OK;
     if (fd < 0)
-        rc = img_error(why, len, IMG_EIO, "cannot create a temporary file: %s", strerror(errno));
+        rc = img_error(why, len, STATUS_IO, "cannot create a temporary file: %s", strerror(errno));
     else
         rc = fill_temp(fd, path, fmt, img, o, why, len);
-    if (fd >= 0 && rc == IMG_OK && rename(tmp, path) != 0)
-        rc = img_error(why, len, IMG_EIO, "cannot rename the temporary file into place: %s",
+    if (fd >= 0 && rc == STATUS_OK && rename(tmp, path) != 0)
+        rc = img_error(why, len, STATUS_IO, "cannot rename the temporary file into place: %s",
                        strerror(errno));
-    if (fd >= 0 && rc != IMG_OK)
+    if (fd >= 0 && rc != STATUS_OK)
         unlink(tmp);
     free(tmp);
     return rc;
 }
 
-int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+int img_write(const char *path, const img_buf *img, const img_write_opts *o, char *err,
               size_t errlen)
 {
     char why[REASON_MAX];
@@ -265,16 +265,16 @@ int img_write(const char *path, const rf_image *img, const img_write_opts *o, ch
         o = &defaults;
     img_format fmt = img_format_from_path(path);
     int rc = check_write(path, fmt, img, o, why, sizeof why);
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         rc = write_atomically(path, fmt, img, o, why, sizeof why);
-    if (rc != IMG_OK)
+    if (rc != STATUS_OK)
         img_error(err, errlen, rc, "cannot write '%s': %s", path ? path : "(null)", why);
     return rc;
 }
 
 /* ---- Reading ---- */
 
-static int decode(FILE *fp, img_format fmt, rf_image *out, char *why, size_t len)
+static int decode(FILE *fp, img_format fmt, img_buf *out, char *why, size_t len)
 {
     switch (fmt) {
 #if REFRAY_HAVE_PNG
@@ -285,25 +285,24 @@ static int decode(FILE *fp, img_format fmt, rf_image *out, char *why, size_t len
 #endif
     case IMG_FORMAT_PFM: return img_pfm_read(fp, out, why, len);
     case IMG_FORMAT_PPM: return img_ppm_read(fp, out, why, len);
-    default: return img_error(why, len, IMG_ESOFTWARE, "no decoder for this format");
+    default: return img_error(why, len, STATUS_INTERNAL, "no decoder for this format");
     }
 }
 
-int img_read(const char *path, rf_image *out, char *err, size_t errlen)
+int img_read(const char *path, img_buf *out, char *err, size_t errlen)
 {
     char why[REASON_MAX];
     FILE *fp = NULL;
-    out->width = out->height = 0;
-    out->rgb = NULL;
+    memset(out, 0, sizeof *out);
     img_format fmt = img_format_from_path(path);
     int rc = check_format(path, fmt, 0, why, sizeof why);
-    if (rc == IMG_OK && !(fp = fopen(path, "rb")))
-        rc = img_error(why, sizeof why, IMG_ENOINPUT, "%s", strerror(errno));
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK && !(fp = fopen(path, "rb")))
+        rc = img_error(why, sizeof why, STATUS_NO_INPUT, "%s", strerror(errno));
+    if (rc == STATUS_OK)
         rc = decode(fp, fmt, out, why, sizeof why);
     if (fp)
         fclose(fp);
-    if (rc != IMG_OK) {
+    if (rc != STATUS_OK) {
         img_free(out);
         img_error(err, errlen, rc, "cannot read '%s': %s", path ? path : "(null)", why);
     }

@@ -24,17 +24,17 @@ img_format img_format_from_path(const char *path);
 int img_format_available(img_format fmt);
 
 /* Writes img to path, format by extension, atomically (see the top).
- * o may be NULL for the defaults.  Returns 0; IMG_EUSAGE for an unknown
- * extension, a format this build lacks or bad options; IMG_ESOFTWARE for an
- * invalid image; IMG_EIO when the file cannot be created, written or
- * renamed; IMG_EOSERR when out of memory. */
-int img_write(const char *path, const rf_image *img, const img_write_opts *o, char *err,
+ * o may be NULL for the defaults.  Returns 0; STATUS_USAGE for an unknown
+ * extension, a format this build lacks or bad options; STATUS_INTERNAL for an
+ * invalid image; STATUS_IO when the file cannot be created, written or
+ * renamed; STATUS_NO_MEMORY when out of memory. */
+int img_write(const char *path, const img_buf *img, const img_write_opts *o, char *err,
               size_t errlen);
 
 /* The same encoding to an open stream, which is flushed but not closed;
  * the caller owns atomicity.  EXR needs a seekable stream.  Returns as
  * img_write; err holds the reason without a file name. */
-int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_write_opts *o,
+int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                      char *err, size_t errlen);
 
 /* Reads path (format by extension) into *out, which the caller frees with
@@ -48,10 +48,10 @@ int img_write_stream(FILE *fp, img_format fmt, const rf_image *img, const img_wr
  *         code^(1/g) (the PNG specification's rule);
  *   .ppm  binary P6, maxval up to 65535, decoded as sRGB (PPM cannot say
  *         otherwise; a PPM written with linear_png reads back wrong).
- * Returns 0; IMG_EUSAGE for an unknown or compiled-out format;
- * IMG_ENOINPUT when path cannot be opened; IMG_EDATA for a malformed or
- * unsupported file; IMG_EIO for a read error; IMG_EOSERR when out of
- * memory.  On failure *out is {0, 0, NULL}. */
-int img_read(const char *path, rf_image *out, char *err, size_t errlen);
+ * Returns 0; STATUS_USAGE for an unknown or compiled-out format;
+ * STATUS_NO_INPUT when path cannot be opened; STATUS_DATA for a malformed or
+ * unsupported file; STATUS_IO for a read error; STATUS_NO_MEMORY when out of
+ * memory.  On failure *out is empty (no pixels). */
+int img_read(const char *path, img_buf *out, char *err, size_t errlen);
 
 #endif

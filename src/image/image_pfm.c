@@ -27,15 +27,15 @@
 
 static int write_failed(char *err, size_t errlen)
 {
-    return img_error(err, errlen, IMG_EIO, "write error: %s", strerror(errno));
+    return img_error(err, errlen, STATUS_IO, "write error: %s", strerror(errno));
 }
 
 /* A short fread is either an I/O error or a file that ends too soon. */
 static int read_failed(FILE *fp, char *err, size_t errlen)
 {
     if (ferror(fp))
-        return img_error(err, errlen, IMG_EIO, "read error: %s", strerror(errno));
-    return img_error(err, errlen, IMG_EDATA, "file is truncated (the pixel data ends early)");
+        return img_error(err, errlen, STATUS_IO, "read error: %s", strerror(errno));
+    return img_error(err, errlen, STATUS_DATA, "file is truncated (the pixel data ends early)");
 }
 
 static int is_white(int c)
@@ -86,12 +86,12 @@ static int read_size(FILE *fp, int *w, int *h, char *err, size_t errlen)
     long wl = read_token(fp, a, sizeof a) ? -1 : parse_long(a, 1, INT_MAX);
     long hl = wl < 0 || read_token(fp, b, sizeof b) ? -1 : parse_long(b, 1, INT_MAX);
     if (wl < 0 || hl < 0)
-        return img_error(err, errlen, IMG_EDATA, "bad width or height in the header");
+        return img_error(err, errlen, STATUS_DATA, "bad width or height in the header");
     if (wl > IMG_MAX_PIXELS / hl)
-        return img_error(err, errlen, IMG_EDATA, "image too large (%ldx%ld)", wl, hl);
+        return img_error(err, errlen, STATUS_DATA, "image too large (%ldx%ld)", wl, hl);
     *w = (int)wl;
     *h = (int)hl;
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 /* ---- PFM ---- */
@@ -112,7 +112,7 @@ static uint32_t get32(const unsigned char *p, int little)
 }
 
 /* Image row y as little-endian floats, sanitised and range-clamped. */
-static void pack_float_row(unsigned char *out, const rf_image *img, int y, img_write_stats *st)
+static void pack_float_row(unsigned char *out, const img_buf *img, int y, img_write_stats *st)
 {
     const double *p = img_pixel(img, 0, y);
     for (size_t i = 0; i < 3 * (size_t)img->width; i++) {
@@ -125,18 +125,18 @@ static void pack_float_row(unsigned char *out, const rf_image *img, int y, img_w
     }
 }
 
-int img_pfm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     (void)o; /* PFM stores linear values: no display options apply */
     size_t rowlen = 12 * (size_t)img->width;
     unsigned char *row = malloc(rowlen);
     if (!row)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
-    int rc = IMG_OK;
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    int rc = STATUS_OK;
     if (fprintf(fp, "PF\n%d %d\n-1.0\n", img->width, img->height) < 0)
         rc = write_failed(err, errlen);
-    for (int y = img->height - 1; rc == IMG_OK && y >= 0; y--) {
+    for (int y = img->height - 1; rc == STATUS_OK && y >= 0; y--) {
         pack_float_row(row, img, y, st);
         if (fwrite(row, 1, rowlen, fp) != rowlen)
             rc = write_failed(err, errlen);
@@ -151,13 +151,13 @@ static int read_pfm_scale(FILE *fp, int *little, char *err, size_t errlen)
     char s[64] = "", *end = s;
     double scale = read_token(fp, s, sizeof s) ? 0.0 : strtod(s, &end);
     if (scale == 0.0 || !isfinite(scale) || *end)
-        return img_error(err, errlen, IMG_EDATA, "bad scale in the PFM header");
+        return img_error(err, errlen, STATUS_DATA, "bad scale in the PFM header");
     *little = scale < 0;
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 /* Reads the file row that is image row y; nch floats per pixel. */
-static int read_pfm_row(FILE *fp, rf_image *out, int y, int nch, int little, unsigned char *buf,
+static int read_pfm_row(FILE *fp, img_buf *out, int y, int nch, int little, unsigned char *buf,
                         char *err, size_t errlen)
 {
     size_t rowlen = 4 * (size_t)nch * (size_t)out->width;
@@ -171,25 +171,25 @@ static int read_pfm_row(FILE *fp, rf_image *out, int y, int nch, int little, uns
             memcpy(&f, &bits, sizeof f);
             p[3 * x + c] = f;
         }
-    return IMG_OK;
+    return STATUS_OK;
 }
 
-int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_pfm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     char magic[4];
     int w = 0, h = 0, little = 1;
     if (read_token(fp, magic, sizeof magic) || (strcmp(magic, "PF") && strcmp(magic, "Pf")))
-        return img_error(err, errlen, IMG_EDATA, "not a PFM file (it does not start with PF or Pf)");
+        return img_error(err, errlen, STATUS_DATA, "not a PFM file (it does not start with PF or Pf)");
     int nch = magic[1] == 'F' ? 3 : 1;
     int rc = read_size(fp, &w, &h, err, errlen);
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         rc = read_pfm_scale(fp, &little, err, errlen);
-    if (rc == IMG_OK && (rc = img_create(out, w, h)) != IMG_OK)
+    if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
         return img_error(err, errlen, rc, "out of memory");
-    unsigned char *buf = rc == IMG_OK ? malloc(4 * (size_t)nch * (size_t)w) : NULL;
-    if (rc == IMG_OK && !buf)
-        rc = img_error(err, errlen, IMG_EOSERR, "out of memory");
-    for (int y = h - 1; rc == IMG_OK && y >= 0; y--)
+    unsigned char *buf = rc == STATUS_OK ? malloc(4 * (size_t)nch * (size_t)w) : NULL;
+    if (rc == STATUS_OK && !buf)
+        rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    for (int y = h - 1; rc == STATUS_OK && y >= 0; y--)
         rc = read_pfm_row(fp, out, y, nch, little, buf, err, errlen);
     free(buf);
     return rc;
@@ -197,17 +197,17 @@ int img_pfm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
 
 /* ---- PPM ---- */
 
-int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_ppm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     size_t rowlen = 3 * (size_t)img->width;
     unsigned char *row = malloc(rowlen);
     if (!row)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
-    int rc = IMG_OK;
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    int rc = STATUS_OK;
     if (fprintf(fp, "P6\n%d %d\n255\n", img->width, img->height) < 0)
         rc = write_failed(err, errlen);
-    for (int y = 0; rc == IMG_OK && y < img->height; y++) {
+    for (int y = 0; rc == STATUS_OK && y < img->height; y++) {
         const double *p = img_pixel(img, 0, y);
         for (size_t i = 0; i < rowlen; i++)
             row[i] = (unsigned char)tonemap_quantize(img_display_value(img_sanitize(p[i], st), o), 255);
@@ -219,7 +219,7 @@ int img_ppm_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_wr
 }
 
 /* Reads image row y of samples of nb bytes each (1 or 2, big-endian). */
-static int read_ppm_row(FILE *fp, rf_image *out, int y, long maxval, unsigned char *buf,
+static int read_ppm_row(FILE *fp, img_buf *out, int y, long maxval, unsigned char *buf,
                         char *err, size_t errlen)
 {
     size_t nb = maxval < 256 ? 1 : 2, n = 3 * (size_t)out->width;
@@ -229,28 +229,28 @@ static int read_ppm_row(FILE *fp, rf_image *out, int y, long maxval, unsigned ch
     for (size_t i = 0; i < n; i++) {
         long code = nb == 1 ? buf[i] : (long)buf[2 * i] << 8 | buf[2 * i + 1];
         if (code > maxval)
-            return img_error(err, errlen, IMG_EDATA, "sample %ld exceeds maxval %ld", code, maxval);
+            return img_error(err, errlen, STATUS_DATA, "sample %ld exceeds maxval %ld", code, maxval);
         p[i] = tonemap_srgb_decode((double)code / (double)maxval);
     }
-    return IMG_OK;
+    return STATUS_OK;
 }
 
-int img_ppm_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_ppm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     char magic[4], m[16];
     int w = 0, h = 0;
     if (read_token(fp, magic, sizeof magic) || strcmp(magic, "P6"))
-        return img_error(err, errlen, IMG_EDATA, "not a binary PPM file (it does not start with P6)");
+        return img_error(err, errlen, STATUS_DATA, "not a binary PPM file (it does not start with P6)");
     int rc = read_size(fp, &w, &h, err, errlen);
-    long maxval = rc != IMG_OK || read_token(fp, m, sizeof m) ? -1 : parse_long(m, 1, 65535);
-    if (rc == IMG_OK && maxval < 0)
-        rc = img_error(err, errlen, IMG_EDATA, "bad maxval in the PPM header (1 to 65535)");
-    if (rc == IMG_OK && (rc = img_create(out, w, h)) != IMG_OK)
+    long maxval = rc != STATUS_OK || read_token(fp, m, sizeof m) ? -1 : parse_long(m, 1, 65535);
+    if (rc == STATUS_OK && maxval < 0)
+        rc = img_error(err, errlen, STATUS_DATA, "bad maxval in the PPM header (1 to 65535)");
+    if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
         return img_error(err, errlen, rc, "out of memory");
-    unsigned char *buf = rc == IMG_OK ? malloc(6 * (size_t)w) : NULL;
-    if (rc == IMG_OK && !buf)
-        rc = img_error(err, errlen, IMG_EOSERR, "out of memory");
-    for (int y = 0; rc == IMG_OK && y < h; y++)
+    unsigned char *buf = rc == STATUS_OK ? malloc(6 * (size_t)w) : NULL;
+    if (rc == STATUS_OK && !buf)
+        rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    for (int y = 0; rc == STATUS_OK && y < h; y++)
         rc = read_ppm_row(fp, out, y, maxval, buf, err, errlen);
     free(buf);
     return rc;

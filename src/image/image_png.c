@@ -44,7 +44,7 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 
 /* The display codes of the whole image, PNG byte order (16-bit samples
  * big-endian); rowbytes receives the length of one row. */
-static unsigned char *pack_codes(const rf_image *img, const img_write_opts *o, img_write_stats *st,
+static unsigned char *pack_codes(const img_buf *img, const img_write_opts *o, img_write_stats *st,
                                  size_t *rowbytes)
 {
     size_t nb = o->png_bits == 16 ? 2 : 1, n = 3 * (size_t)img->width * (size_t)img->height;
@@ -60,7 +60,7 @@ static unsigned char *pack_codes(const rf_image *img, const img_write_opts *o, i
     return px;
 }
 
-static int encode_png(FILE *fp, const rf_image *img, const img_write_opts *o,
+static int encode_png(FILE *fp, const img_buf *img, const img_write_opts *o,
                       const unsigned char *px, size_t rowbytes, png_failure *f)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, f, on_png_error, on_png_warning);
@@ -90,22 +90,22 @@ static int encode_png(FILE *fp, const rf_image *img, const img_write_opts *o,
     return 0;
 }
 
-int img_png_write(FILE *fp, const rf_image *img, const img_write_opts *o, img_write_stats *st,
+int img_png_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
     png_failure f = {"", 0};
     size_t rowbytes;
     unsigned char *px = pack_codes(img, o, st, &rowbytes);
     if (!px)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     int failed = encode_png(fp, img, o, px, rowbytes, &f);
     free(px);
     if (!failed)
-        return IMG_OK;
+        return STATUS_OK;
     /* libpng's stdio writer says only "Write Error"; errno said why. */
     if (ferror(fp))
-        return img_error(err, errlen, IMG_EIO, "write error: %s", strerror(f.saved_errno));
-    return img_error(err, errlen, IMG_EIO, "PNG encoder: %s", f.msg);
+        return img_error(err, errlen, STATUS_IO, "write error: %s", strerror(f.saved_errno));
+    return img_error(err, errlen, STATUS_IO, "PNG encoder: %s", f.msg);
 }
 
 /* ---- Reading ---- */
@@ -206,7 +206,7 @@ static double code_to_linear(unsigned code, unsigned maxcode, const png_decoded 
     }
 }
 
-static void unpack_linear(const png_decoded *d, rf_image *out)
+static void unpack_linear(const png_decoded *d, img_buf *out)
 {
     size_t n = 3 * (size_t)d->width * d->height;
     unsigned maxcode = d->bits == 16 ? 65535u : 255u;
@@ -216,18 +216,18 @@ static void unpack_linear(const png_decoded *d, rf_image *out)
     }
 }
 
-int img_png_read(FILE *fp, rf_image *out, char *err, size_t errlen)
+int img_png_read(FILE *fp, img_buf *out, char *err, size_t errlen)
 {
     png_failure f = {"", 0};
     png_decoded d;
     memset(&d, 0, sizeof d);
-    int rc = IMG_OK;
+    int rc = STATUS_OK;
     if (decode_png(fp, &d, &f) != 0)
-        rc = ferror(fp) ? img_error(err, errlen, IMG_EIO, "read error: %s", strerror(f.saved_errno))
-                        : img_error(err, errlen, IMG_EDATA, "PNG decoder: %s", f.msg);
-    if (rc == IMG_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != IMG_OK)
+        rc = ferror(fp) ? img_error(err, errlen, STATUS_IO, "read error: %s", strerror(f.saved_errno))
+                        : img_error(err, errlen, STATUS_DATA, "PNG decoder: %s", f.msg);
+    if (rc == STATUS_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != STATUS_OK)
         rc = img_error(err, errlen, rc, "out of memory");
-    if (rc == IMG_OK)
+    if (rc == STATUS_OK)
         unpack_linear(&d, out);
     free(d.px);
     free(d.rows);

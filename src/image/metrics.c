@@ -4,7 +4,7 @@
 #include <math.h>
 #include "image/metrics.h"
 
-static double peak_of(const rf_image *b, const unsigned char *excluded)
+static double peak_of(const img_buf *b, const unsigned char *excluded)
 {
     double peak = 0;
     size_t n = (size_t)b->width * (size_t)b->height;
@@ -14,13 +14,19 @@ static double peak_of(const rf_image *b, const unsigned char *excluded)
     return peak;
 }
 
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
-                     image_metrics *m)
+/* A channel is over when err > rel * max(|ref|, floor_frac * peak) + abs:
+ * verify's rule with abs 0, the kit's with floor_frac 0. */
+typedef struct over_rule {
+    double rel, floor_frac, abs;
+} over_rule;
+
+static void compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, over_rule rule,
+                    image_metrics *m)
 {
     size_t n = (size_t)b->width * (size_t)b->height;
     double sum2 = 0;
     m->peak = peak_of(b, excluded);
-    double floor_value = 1e-12 * m->peak;
+    double floor_value = 1e-12 * m->peak, over_floor = rule.floor_frac * m->peak;
     m->max_abs = m->max_rel = 0;
     m->over = m->compared = m->excluded = 0;
     m->worst_x = m->worst_y = 0;
@@ -39,7 +45,7 @@ void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *
             }
             if (fabs(ref) > floor_value)
                 m->max_rel = fmax(m->max_rel, err / fabs(ref));
-            over |= !(err <= tol * fmax(fabs(ref), floor_value));
+            over |= !(err <= rule.rel * fmax(fabs(ref), over_floor) + rule.abs);
             sum2 += err * err;
         }
         m->over += over;
@@ -47,4 +53,18 @@ void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *
     }
     m->rms = m->compared ? sqrt(sum2 / (3.0 * (double)m->compared)) : 0;
     m->psnr = m->rms > 0 ? 20 * log10((m->peak > 0 ? m->peak : 1) / m->rms) : HUGE_VAL;
+}
+
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
+                     image_metrics *m)
+{
+    over_rule rule = {tol, 1e-12, 0};
+    compare(a, b, excluded, rule, m);
+}
+
+void metrics_compare_abs(const img_buf *a, const img_buf *b, const unsigned char *excluded, double rel,
+                         double abs_tol, image_metrics *m)
+{
+    over_rule rule = {rel, 0, abs_tol};
+    compare(a, b, excluded, rule, m);
 }

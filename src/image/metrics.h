@@ -9,6 +9,8 @@
  *             everywhere is not assumed: HDR references have peaks above 1)
  *   over      pixels where some channel has |A - B| > tol * max(|B|, floor)
  * floor = 1e-12 * peak keeps near-black channels from dividing by zero.
+ * metrics_compare_abs counts `over` by the conformance kit's rule instead
+ * (spec/conformance.md): |A - B| > rel * |B| + abs_tol.
  */
 #ifndef REFRAY_METRICS_H
 #define REFRAY_METRICS_H
@@ -29,7 +31,12 @@ typedef struct image_metrics {
 
 /* a and b must have the same size.  excluded: width*height bytes, non-zero
  * to skip a pixel, or NULL.  tol: the relative tolerance for `over`. */
-void metrics_compare(const rf_image *a, const rf_image *b, const unsigned char *excluded, double tol,
+void metrics_compare(const img_buf *a, const img_buf *b, const unsigned char *excluded, double tol,
                      image_metrics *m);
+
+/* The same metrics, with `over` the pixels where some channel has
+ * |A - B| > rel * |B| + abs_tol (a NaN counts as over). */
+void metrics_compare_abs(const img_buf *a, const img_buf *b, const unsigned char *excluded, double rel,
+                         double abs_tol, image_metrics *m);
 
 #endif

@@ -2,7 +2,6 @@
  * eval.c - constant folding of the scene language's expressions.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "lang/eval.h"
 #include "lang/keywords.h"
@@ -20,24 +19,26 @@ enum { SUGGEST_MAX = 64, EVAL_MAX_DEPTH = 1000 };
 
 static int eval_at(const env *e, diag *d, const ast *node, value *out, int depth);
 
-void env_init(env *e)
+void env_init(env *e, const mem *m)
 {
     e->items = NULL;
     e->count = 0;
     e->cap = 0;
+    e->mem = mem_pick(m);
 }
 
 void env_free(env *e)
 {
-    free(e->items);
-    env_init(e);
+    mem m = e->mem;
+    mem_free(&m, e->items, (size_t)e->cap * sizeof *e->items);
+    env_init(e, &m);
 }
 
 int env_bind(env *e, const char *name, value v, src_span where)
 {
     if (e->count == e->cap) {
         int cap = e->cap ? 2 * e->cap : 16;
-        binding *items = realloc(e->items, (size_t)cap * sizeof *items);
+        binding *items = mem_resize_array(&e->mem, e->items, (size_t)e->cap, (size_t)cap, sizeof *items);
         if (!items)
             return 0;
         e->items = items;

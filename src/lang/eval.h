@@ -11,6 +11,7 @@
 
 #include "lang/ast.h"
 #include "base/diag.h"
+#include "base/mem.h"
 #include "base/vec.h"
 
 typedef enum value_kind {
@@ -38,9 +39,11 @@ typedef struct env {
     binding *items;
     int count;
     int cap;
+    mem mem;
 } env;
 
-void env_init(env *e);
+/* An empty scope whose bindings live in memory from m (NULL: the C library). */
+void env_init(env *e, const mem *m);
 void env_free(env *e);
 /* Adds a binding; 0 when out of memory. */
 int env_bind(env *e, const char *name, value v, src_span where);

@@ -12,7 +12,9 @@
 
 typedef enum keyword_class {
     KWC_STATEMENT,   /* let for in include oracle material: structural words */
-    KWC_KEYWORD,     /* block and property names */
+    KWC_BLOCK,       /* block names: reserved everywhere */
+    KWC_PROPERTY,    /* property names: keywords only where a property may
+                        start, names everywhere else (the scanner decides) */
     KWC_FUNCTION     /* built-in functions */
 } keyword_class;
 
@@ -22,6 +24,7 @@ typedef enum keyword_id {
     /* blocks */
     KW_IMAGE, KW_CAMERA, KW_AMBIENT, KW_POINT_LIGHT, KW_DISTANT_LIGHT, KW_DISTRIBUTED_LIGHT,
     KW_SPHERE, KW_PLANE, KW_TRIANGLE, KW_DISK, KW_BOX, KW_MESH,
+    KW_CYLINDER, KW_CONE, KW_TORUS,
     /* properties */
     KW_WIDTH, KW_HEIGHT, KW_SAMPLES, KW_MAX_DEPTH, KW_BACKGROUND,
     KW_PERSPECTIVE, KW_ORTHOGRAPHIC, KW_EYE, KW_LOOK_AT, KW_UP, KW_FOV,
@@ -29,6 +32,7 @@ typedef enum keyword_id {
     KW_KD, KW_KS, KW_N, KW_T, KW_IOR,
     KW_CENTER, KW_RADIUS, KW_POINT, KW_NORMAL, KW_VERTICES, KW_FROM, KW_TO, KW_FILE,
     KW_TRANSLATE, KW_ROTATE, KW_SCALE,
+    KW_OPEN, KW_RADII, KW_AXIS, KW_MAJOR, KW_MINOR,
     /* functions */
     KW_SQRT, KW_SIN, KW_COS, KW_TAN, KW_ASIN, KW_ACOS, KW_ATAN2, KW_POW, KW_ABS,
     KW_MIN, KW_MAX, KW_DOT, KW_CROSS, KW_NORMALIZE, KW_LENGTH,

@@ -41,10 +41,11 @@ typedef struct parser {
     polymesh *mesh;
     int texcoord_count;          /* vt statements seen: t indices are checked against it */
     int *corner_v, *corner_vn;   /* the face being read: position and normal indices */
-    int corner_cap;
+    int corner_v_cap, corner_vn_cap;
     src_span warned[WARNED_MAX]; /* keywords of the unknown statements warned about */
     int warned_count;
     int stop;                    /* a limit was hit or memory ran out: give up */
+    int out_of_memory;
 } parser;
 
 /* A continuation is a backslash followed by nothing but blanks up to a line
@@ -226,6 +227,7 @@ static void out_of_memory(parser *p, src_span where)
 {
     diag_report(p->d, DIAG_ERROR, where, "out of memory reading OBJ file");
     p->stop = 1;
+    p->out_of_memory = 1;
 }
 
 /* Reports what a polymesh_add_* call refused; returns whether it succeeded. */
@@ -357,19 +359,16 @@ static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
                     has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
         return 0;
     }
-    if (n == p->corner_cap) {
-        int cap = p->corner_cap ? (p->corner_cap > INT_MAX / 2 ? INT_MAX : 2 * p->corner_cap) : 16;
-        int *cv = realloc(p->corner_v, (size_t)cap * sizeof *cv);
-        if (cv)
-            p->corner_v = cv;
-        int *cn = realloc(p->corner_vn, (size_t)cap * sizeof *cn);
-        if (cn)
-            p->corner_vn = cn;
-        if (!cv || !cn) {
-            out_of_memory(p, tok);
-            return 0;
-        }
-        p->corner_cap = cap;
+    const mem *m = &p->mesh->mem;
+    int *cv = polymesh_grow(m, p->corner_v, &p->corner_v_cap, (long)n + 1, sizeof *cv, INT_MAX);
+    if (cv)
+        p->corner_v = cv;
+    int *cn = cv ? polymesh_grow(m, p->corner_vn, &p->corner_vn_cap, (long)n + 1, sizeof *cn, INT_MAX) : NULL;
+    if (cn)
+        p->corner_vn = cn;
+    if (!cv || !cn) {
+        out_of_memory(p, tok);
+        return 0;
     }
     p->corner_v[n] = v;
     p->corner_vn[n] = vn;
@@ -469,7 +468,7 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     int errors_before = d->errors;
     parser p;
     memset(&p, 0, sizeof p);
-    polymesh_init(out, max_triangles);
+    polymesh_init(out, max_triangles, &sources->mem);
     p.text = f->text;
     p.len = f->len;
     p.file = file;
@@ -479,10 +478,10 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
         parse_file(&p);
     if (d->errors == errors_before && out->face_count == 0)
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
-    free(p.corner_v);
-    free(p.corner_vn);
+    mem_free(&out->mem, p.corner_v, (size_t)p.corner_v_cap * sizeof *p.corner_v);
+    mem_free(&out->mem, p.corner_vn, (size_t)p.corner_vn_cap * sizeof *p.corner_vn);
     if (d->errors == errors_before)
         return 1;
     polymesh_free(out);
-    return 0;
+    return p.out_of_memory ? -1 : 0;
 }

@@ -34,7 +34,9 @@
  * with the span of the offending token: errors for bad input, one warning
  * per kind of unknown statement ("unknown OBJ statement 'xyz' ignored").
  * Returns 1 when the mesh is usable (this call reported no error; warnings
- * allowed); 0 otherwise, and *out is then empty (polymesh_free done).
+ * allowed); 0 otherwise, -1 when memory ran out ("out of memory reading OBJ
+ * file" reported), and *out is then empty (polymesh_free done).  The
+ * arrays come from the allocator of sources.
  * max_triangles: a mesh with more triangles is refused with an error at the
  * face that crosses the limit, and no memory is ever reserved for more than
  * that many triangles.  A mesh with no faces is an error.  Triangles whose

@@ -10,6 +10,7 @@
 #include "base/diag.h"
 #include "lang/keywords.h"
 #include "lang/parse_error.h"
+#include "lang/parse_hints.h"
 #include "lang/schema.h"
 #include "base/suggest.h"
 
@@ -203,12 +204,16 @@ static char closer_of(char open)
     return open == '{' ? '}' : open == '[' ? ']' : ')';
 }
 
-/* " (to close '{' at line 3)" when the innermost open bracket's closer would do. */
-static void bracket_note(const parse_ctx *ctx, const expect_set *set, char *buf, size_t size)
+/* " (to close '{' at line 3)" when the innermost open bracket's closer
+ * would do; an opener that is itself the unexpected token does not count. */
+static void bracket_note(const parse_ctx *ctx, src_span at, const expect_set *set, char *buf, size_t size)
 {
-    if (ctx->bracket_depth <= 0 || ctx->bracket_depth > PARSE_MAX_BRACKETS)
+    int depth = ctx->bracket_depth;
+    if (depth > 0 && depth <= PARSE_MAX_BRACKETS && ctx->brackets[depth - 1].begin == at.begin)
+        depth--;
+    if (depth <= 0 || depth > PARSE_MAX_BRACKETS)
         return;
-    src_span open = ctx->brackets[ctx->bracket_depth - 1];
+    src_span open = ctx->brackets[depth - 1];
     char c = file_of(ctx)->text[open.begin];
     if (!expects(set, TC_PUNCT, closer_of(c)))
         return;
@@ -242,7 +247,12 @@ void parse_error_report(parse_ctx *ctx, src_span at, token_desc found,
 {
     char message[MESSAGE_MAX];
     expect_set set = {expected, count};
-    if (found.cls == TC_BAD_CHAR || found.cls == TC_BAD_STRING || found.cls == TC_BAD_NUMBER) {
+    int only_string = count == 1 && expected[0].cls == TC_STRING;
+    if (parse_hint_file_name(ctx, &at, found, only_string, message, sizeof message) ||
+        parse_hint_unclosed(ctx, &at, found, message, sizeof message) ||
+        (expects(&set, TC_LET, 0) && parse_hint_property_statement(ctx, at, found, message, sizeof message))) {
+        /* a known stumble, said in its own terms */
+    } else if (found.cls == TC_BAD_CHAR || found.cls == TC_BAD_STRING || found.cls == TC_BAD_NUMBER) {
         bad_token(ctx, at, found, message, sizeof message);
     } else if (!misspelt_word(ctx, at, found, &set, message, sizeof message)) {
         char what[SHOWN_TEXT_MAX + 32], wanted[256];
@@ -252,7 +262,7 @@ void parse_error_report(parse_ctx *ctx, src_span at, token_desc found,
             snprintf(message, sizeof message, "unexpected %s, expecting %s", what, wanted);
         else
             snprintf(message, sizeof message, "unexpected %s", what);
-        bracket_note(ctx, &set, message, sizeof message);
+        bracket_note(ctx, at, &set, message, sizeof message);
     }
     parse_report_syntax(ctx, at, message);
 }

@@ -87,6 +87,7 @@ typedef struct reader {
     int *corners;              /* the face being read */
     int corner_cap;
     int failed;                /* an error in the data: stop reading */
+    int out_of_memory;
 } reader;
 
 /* One value read from the data: integers exactly in i (and f), floats in f;
@@ -273,16 +274,14 @@ static int add_property(reader *r, element *e, const property *p, src_span line)
             diag_report(r->d, DIAG_ERROR, p->name, "a second property '%s'", q.s);
             return 0;
         }
-    if (e->prop_count == e->prop_cap) {
-        int cap = e->prop_cap ? 2 * e->prop_cap : 8;
-        property *grown = realloc(e->props, (size_t)cap * sizeof *grown);
-        if (!grown) {
-            diag_report(r->d, DIAG_ERROR, line, "out of memory reading PLY file");
-            return 0;
-        }
-        e->props = grown;
-        e->prop_cap = cap;
+    property *grown = polymesh_grow(&r->mesh->mem, e->props, &e->prop_cap, (long)e->prop_count + 1, sizeof *grown,
+                                    PROPERTIES_MAX);
+    if (!grown) {
+        diag_report(r->d, DIAG_ERROR, line, "out of memory reading PLY file");
+        r->out_of_memory = 1;
+        return 0;
     }
+    e->props = grown;
     e->props[e->prop_count++] = *p;
     return 1;
 }
@@ -641,18 +640,16 @@ static int read_vertex(reader *r, const element *e, long long index)
         ok = polymesh_add_normal(r->mesh, vec_make(c[R_NX], c[R_NY], c[R_NZ]));
     if (ok != 1)
         data_error(r, e, index, span_of(r, r->pos, r->pos), ok == 0 ? "out of memory" : "too many vertices");
+    r->out_of_memory |= ok == POLYMESH_NO_MEMORY;
     return ok == 1;
 }
 
 static int reserve_corners(reader *r, long long n)
 {
-    if (n <= r->corner_cap)
-        return 1;
-    int *grown = realloc(r->corners, (size_t)n * sizeof *grown);
+    int *grown = polymesh_grow(&r->mesh->mem, r->corners, &r->corner_cap, n, sizeof *grown, INT_MAX);
     if (!grown)
         return 0;
     r->corners = grown;
-    r->corner_cap = (int)n;
     return 1;
 }
 
@@ -664,6 +661,7 @@ static int read_indices(reader *r, const element *e, long long index, const prop
         return 0;
     if (!reserve_corners(r, *n)) {
         data_error(r, e, index, span_of(r, r->pos, r->pos), "out of memory");
+        r->out_of_memory = 1;
         return 0;
     }
     for (long long k = 0; k < *n; k++) {
@@ -702,6 +700,7 @@ static int read_face(reader *r, const element *e, long long index)
         data_error(r, e, index, span_of(r, at, at), "mesh exceeds the limit of %ld triangles", r->mesh->max_triangles);
     else
         data_error(r, e, index, span_of(r, at, at), "out of memory");
+    r->out_of_memory |= ok == POLYMESH_NO_MEMORY;
     return 0;
 }
 
@@ -745,7 +744,7 @@ int ply_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     element elements[ELEMENTS_MAX];
     reader r;
     memset(&r, 0, sizeof r);
-    polymesh_init(out, max_triangles);
+    polymesh_init(out, max_triangles, &sources->mem);
     r.text = f->text;
     r.len = f->len;
     r.file = file;
@@ -758,10 +757,10 @@ int ply_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     if (d->errors == errors_before && out->face_count == 0)
         diag_report(d, DIAG_ERROR, r.elements[r.face_element].decl, "mesh has no faces");
     for (int k = 0; k < r.element_count; k++)
-        free(elements[k].props);
-    free(r.corners);
+        mem_free(&out->mem, elements[k].props, (size_t)elements[k].prop_cap * sizeof *elements[k].props);
+    mem_free(&out->mem, r.corners, (size_t)r.corner_cap * sizeof *r.corners);
     if (d->errors == errors_before)
         return 1;
     polymesh_free(out);
-    return 0;
+    return r.out_of_memory ? -1 : 0;
 }

@@ -8,46 +8,51 @@
  * are differences from corner 0, so their size is the polygon's, not its
  * distance from the origin.
  */
-#include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include "lang/polygon.h"
 
 #define DEFAULT_BUDGET (1L << 26)
 
-void polygon_work_init(polygon_work *w)
+/* Bytes of the block that holds room for n corners. */
+static size_t block_size(int n)
+{
+    return (size_t)n * (2 * sizeof(double) + 2 * sizeof(int));
+}
+
+void polygon_work_init(polygon_work *w, const mem *m)
 {
     memset(w, 0, sizeof *w);
     w->budget = DEFAULT_BUDGET;
+    w->mem = mem_pick(m);
 }
 
 void polygon_work_free(polygon_work *w)
 {
-    free(w->x);
-    free(w->y);
-    free(w->next);
-    free(w->prev);
+    mem m = w->mem;
+    mem_free(&m, w->x, block_size(w->cap));
     memset(w, 0, sizeof *w);
+    w->mem = m;
 }
 
-/* Room for n corners; 0 when out of memory (the old arrays stay valid). */
+/* Room for n corners; 0 when out of memory (the old room stays).  The
+ * arrays are filled afresh for every polygon, so nothing is copied. */
 static int reserve(polygon_work *w, int n)
 {
     if (n <= w->cap)
         return 1;
-    double *x = realloc(w->x, (size_t)n * sizeof *x);
-    if (x)
-        w->x = x;
-    double *y = realloc(w->y, (size_t)n * sizeof *y);
-    if (y)
-        w->y = y;
-    int *next = realloc(w->next, (size_t)n * sizeof *next);
-    if (next)
-        w->next = next;
-    int *prev = realloc(w->prev, (size_t)n * sizeof *prev);
-    if (prev)
-        w->prev = prev;
-    if (!x || !y || !next || !prev)
+    if ((size_t)n > SIZE_MAX / block_size(1))
         return 0;
+    double *block = mem_alloc(&w->mem, block_size(n));
+    if (!block)
+        return 0;
+    long budget = w->budget;
+    polygon_work_free(w);
+    w->budget = budget;
+    w->x = block;
+    w->y = block + n;
+    w->next = (int *)(void *)(block + 2 * (size_t)n);
+    w->prev = w->next + n;
     w->cap = n;
     return 1;
 }

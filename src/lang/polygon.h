@@ -21,6 +21,7 @@
 #ifndef REFRAY_POLYGON_H
 #define REFRAY_POLYGON_H
 
+#include "base/mem.h"
 #include "base/vec.h"
 
 /* A corner is off the plane when farther than this times the largest side
@@ -41,12 +42,14 @@ enum {
 typedef struct polygon_work {
     double *x, *y;     /* projected corners */
     int *next, *prev;  /* the corners still in the polygon, as a ring */
-    int cap;
+    int cap;           /* corners of room: the four arrays are one block */
     long budget;       /* steps left */
+    mem mem;
 } polygon_work;
 
-/* Empty scratch with the default budget (2^26 steps, a fraction of a second). */
-void polygon_work_init(polygon_work *w);
+/* Empty scratch with the default budget (2^26 steps, a fraction of a
+ * second), allocating from m (NULL: the C library). */
+void polygon_work_init(polygon_work *w, const mem *m);
 void polygon_work_free(polygon_work *w);
 
 /*

@@ -6,35 +6,41 @@
  */
 #include <limits.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 #include "lang/polymesh.h"
 
-void polymesh_init(polymesh *m, long max_triangles)
+void polymesh_init(polymesh *m, long max_triangles, const mem *mm)
 {
     memset(m, 0, sizeof *m);
+    m->mem = mem_pick(mm);
     m->max_triangles = max_triangles < 0 ? 0 : max_triangles > INT_MAX ? INT_MAX : max_triangles;
-    polygon_work_init(&m->work);
+    polygon_work_init(&m->work, &m->mem);
+}
+
+/* Bytes of the block of one polygon's corners and cuts, for n corners. */
+static size_t cut_block(int n)
+{
+    return (size_t)n * (sizeof(vec3) + sizeof(int[3]));
 }
 
 void polymesh_free(polymesh *m)
 {
-    free(m->positions);
-    free(m->normals);
-    free(m->tri);
-    free(m->tri_normal);
-    free(m->tri_at);
-    free(m->cuts);
-    free(m->corners);
+    mem mm = m->mem;
+    mem_free(&mm, m->positions, (size_t)m->position_cap * sizeof *m->positions);
+    mem_free(&mm, m->normals, (size_t)m->normal_cap * sizeof *m->normals);
+    mem_free(&mm, m->tri, (size_t)m->tri_cap * sizeof *m->tri);
+    mem_free(&mm, m->tri_normal, (size_t)m->tri_normal_cap * sizeof *m->tri_normal);
+    mem_free(&mm, m->tri_at, (size_t)m->tri_at_cap * sizeof *m->tri_at);
+    mem_free(&mm, m->corners, cut_block(m->cut_cap));
     polygon_work_free(&m->work);
     memset(m, 0, sizeof *m);
+    m->mem = mm;
 }
 
-/* Returns array grown to hold at least `need` elements of `size` bytes (its
- * capacity *cap doubling, capped at limit), or NULL when need exceeds limit,
- * the byte count would overflow, or realloc fails; array stays valid then. */
-static void *grow(void *array, int *cap, long need, size_t size, long limit)
+void *polymesh_grow(const mem *m, void *array, int *cap, long need, size_t size, long limit)
 {
+    if (need < 1)
+        need = 1; /* so that the result is NULL only on failure */
     if (need <= *cap)
         return array;
     if (need > limit)
@@ -44,17 +50,17 @@ static void *grow(void *array, int *cap, long need, size_t size, long limit)
         n = n > limit / 2 ? limit : 2 * n;
     if ((size_t)n > SIZE_MAX / size)
         return NULL;
-    void *grown = realloc(array, (size_t)n * size);
+    void *grown = mem_resize_array(m, array, (size_t)*cap, (size_t)n, size);
     if (grown)
         *cap = (int)n;
     return grown;
 }
 
-static int append(vec3 **array, int *count, int *cap, vec3 v)
+static int append(const mem *mm, vec3 **array, int *count, int *cap, vec3 v)
 {
     if (*count == INT_MAX)
         return POLYMESH_TOO_MANY;
-    vec3 *a = grow(*array, cap, (long)*count + 1, sizeof *a, INT_MAX);
+    vec3 *a = polymesh_grow(mm, *array, cap, (long)*count + 1, sizeof *a, INT_MAX);
     if (!a)
         return POLYMESH_NO_MEMORY;
     *array = a;
@@ -64,12 +70,12 @@ static int append(vec3 **array, int *count, int *cap, vec3 v)
 
 int polymesh_add_position(polymesh *m, vec3 p)
 {
-    return append(&m->positions, &m->position_count, &m->position_cap, p);
+    return append(&m->mem, &m->positions, &m->position_count, &m->position_cap, p);
 }
 
 int polymesh_add_normal(polymesh *m, vec3 n)
 {
-    return append(&m->normals, &m->normal_count, &m->normal_cap, n);
+    return append(&m->mem, &m->normals, &m->normal_count, &m->normal_cap, n);
 }
 
 static void tally(polymesh_tally *t, size_t at)
@@ -79,18 +85,19 @@ static void tally(polymesh_tally *t, size_t at)
     t->count += t->count < INT_MAX;
 }
 
-/* The polygon's positions into m->corners and room for its cuts. */
+/* The polygon's positions into m->corners and room for its cuts (one
+ * block, filled afresh for every polygon: nothing to copy when it grows). */
 static int gather(polymesh *m, const int *v, int n)
 {
     if (n > m->cut_cap) {
-        vec3 *c = realloc(m->corners, (size_t)n * sizeof *c);
-        if (c)
-            m->corners = c;
-        int(*cuts)[3] = realloc(m->cuts, (size_t)n * sizeof *cuts);
-        if (cuts)
-            m->cuts = cuts;
-        if (!c || !cuts)
+        if ((size_t)n > SIZE_MAX / cut_block(1))
             return 0;
+        vec3 *block = mem_alloc(&m->mem, cut_block(n));
+        if (!block)
+            return 0;
+        mem_free(&m->mem, m->corners, cut_block(m->cut_cap));
+        m->corners = block;
+        m->cuts = (int(*)[3])(void *)(block + n);
         m->cut_cap = n;
     }
     for (int i = 0; i < n; i++)
@@ -102,26 +109,21 @@ static int gather(polymesh *m, const int *v, int n)
  * only once some face has them); 0 when out of memory. */
 static int reserve_triangles(polymesh *m, long need)
 {
-    if (need <= m->triangle_cap)
-        return 1;
-    int cap = m->triangle_cap;
-    int(*tri)[3] = grow(m->tri, &cap, need, sizeof *m->tri, m->max_triangles);
+    int(*tri)[3] = polymesh_grow(&m->mem, m->tri, &m->tri_cap, need, sizeof *m->tri, m->max_triangles);
     if (!tri)
         return 0;
     m->tri = tri;
-    int at_cap = m->triangle_cap;
-    size_t *at = grow(m->tri_at, &at_cap, need, sizeof *m->tri_at, m->max_triangles);
+    size_t *at = polymesh_grow(&m->mem, m->tri_at, &m->tri_at_cap, need, sizeof *m->tri_at, m->max_triangles);
     if (!at)
         return 0;
     m->tri_at = at;
     if (m->tri_normal) {
-        int n_cap = m->triangle_cap;
-        int(*tn)[3] = grow(m->tri_normal, &n_cap, need, sizeof *m->tri_normal, m->max_triangles);
+        int(*tn)[3] = polymesh_grow(&m->mem, m->tri_normal, &m->tri_normal_cap, need, sizeof *m->tri_normal,
+                                    m->max_triangles);
         if (!tn)
             return 0;
         m->tri_normal = tn;
     }
-    m->triangle_cap = cap;
     return 1;
 }
 
@@ -131,9 +133,11 @@ static int start_normals(polymesh *m)
 {
     if (m->tri_normal)
         return 1;
-    m->tri_normal = malloc((size_t)(m->triangle_cap > 0 ? m->triangle_cap : 1) * sizeof *m->tri_normal);
+    int cap = m->tri_cap > 0 ? m->tri_cap : 1;
+    m->tri_normal = mem_alloc(&m->mem, (size_t)cap * sizeof *m->tri_normal);
     if (!m->tri_normal)
         return 0;
+    m->tri_normal_cap = cap;
     memset(m->tri_normal, 0xff, (size_t)m->triangle_count * sizeof *m->tri_normal);
     return 1;
 }

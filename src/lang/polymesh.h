@@ -14,6 +14,7 @@
 #define REFRAY_POLYMESH_H
 
 #include <stddef.h>
+#include "base/mem.h"
 #include "base/vec.h"
 #include "lang/polygon.h"
 
@@ -39,18 +40,27 @@ typedef struct polymesh {
     polymesh_tally no_area;      /* faces with no area: no triangle made */
     polymesh_tally nonplanar;    /* polygons not on one plane (cut all the same) */
     polymesh_tally fanned;       /* not simple, or over the ear-clipping budget */
+    /* entries allocated (every array comes from mem) */
+    int position_cap, normal_cap, tri_cap, tri_normal_cap, tri_at_cap;
     /* builder state */
     long max_triangles;          /* refuse a face that would pass this */
-    int position_cap, normal_cap, triangle_cap;
-    int (*cuts)[3];              /* one polygon's triangles, as corner numbers */
-    vec3 *corners;               /* one polygon's positions */
+    vec3 *corners;               /* one polygon's positions, then its */
+    int (*cuts)[3];              /* triangles as corner numbers: one block */
     int cut_cap;
     polygon_work work;
+    mem mem;
 } polymesh;
 
 /* An empty mesh that accepts up to max_triangles triangles (clamped to
- * [0, INT_MAX]). */
-void polymesh_init(polymesh *m, long max_triangles);
+ * [0, INT_MAX]), allocating from m (NULL: the C library). */
+void polymesh_init(polymesh *m, long max_triangles, const mem *mm);
+
+/* Returns array (of *cap elements of size bytes, from m) grown to hold at
+ * least `need` elements (at least 1), its capacity doubling from 16 and
+ * capped at limit; NULL when need exceeds limit, the byte count would
+ * overflow, or memory runs out (array and *cap untouched then).  The
+ * readers' arrays grow through it. */
+void *polymesh_grow(const mem *m, void *array, int *cap, long need, size_t size, long limit);
 
 /* Frees everything and leaves an empty mesh; safe to call twice. */
 void polymesh_free(polymesh *m);

@@ -21,6 +21,9 @@ static const block_schema schemas[] = {
     {KW_DISK, 7, {KW_CENTER, KW_NORMAL, KW_RADIUS, KW_MATERIAL, XFORMS}},
     {KW_BOX, 6, {KW_FROM, KW_TO, KW_MATERIAL, XFORMS}},
     {KW_MESH, 5, {KW_FILE, KW_MATERIAL, XFORMS}},
+    {KW_CYLINDER, 8, {KW_FROM, KW_TO, KW_RADIUS, KW_OPEN, KW_MATERIAL, XFORMS}},
+    {KW_CONE, 8, {KW_FROM, KW_TO, KW_RADII, KW_OPEN, KW_MATERIAL, XFORMS}},
+    {KW_TORUS, 8, {KW_CENTER, KW_AXIS, KW_MAJOR, KW_MINOR, KW_MATERIAL, XFORMS}},
 };
 
 const block_schema *schema_of(keyword_id block)

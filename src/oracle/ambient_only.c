@@ -19,7 +19,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (s->light_count != 0)
         return oracle_refuse(why, n, "ambient_only: the scene must have no lights (it has %d)", s->light_count);
     if (s->prim_count != 1 || s->prims[0].kind != PRIM_SPHERE)
@@ -34,8 +34,8 @@ static int accepts(const oracle_view *v, char *why, size_t n)
  * through the sphere's back). */
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
-    const rf_prim *sphere = &s->prims[0];
+    const scene_model *s = v->scene;
+    const scene_prim *sphere = &s->prims[0];
     double radius = sphere->u.sphere.radius;
     oracle_ray r = oracle_view_ray(v, x, y);
     oracle_chord ch;

@@ -25,7 +25,7 @@
 #define BOUND_DELTA 1e-9    /* failure probability of Bernstein's bound per sample point */
 #define GRAD_STEPS 64       /* sub-intervals of the gradient's sup */
 
-static const char *light_name(rf_light_kind k)
+static const char *light_name(scene_light_kind k)
 {
     return k == LIGHT_RECTANGLE ? "rectangle" : "disk";
 }
@@ -37,18 +37,18 @@ static void tangents(vec3 n, vec3 *e1, vec3 *e2)
     *e2 = vec_cross(n, *e1);
 }
 
-static int opaque_lambert(const rf_scene *sc, const rf_prim *p)
+static int opaque_lambert(const scene_model *sc, const scene_prim *p)
 {
-    const rf_material *m = &sc->materials[p->material];
+    const scene_material *m = &sc->materials[p->material];
     return m->t == 0 && vec_max_component(m->ks) == 0;
 }
 
 /* The floor, the occluder, and nothing else. */
 static int read_prims(const oracle_view *v, const area_kind *k, area_setup *s, char *why, size_t n)
 {
-    const rf_scene *sc = v->scene;
+    const scene_model *sc = v->scene;
     for (int i = 0; i < sc->prim_count; i++) {
-        const rf_prim *p = &sc->prims[i];
+        const scene_prim *p = &sc->prims[i];
         if (p->kind == PRIM_PLANE && !s->floor)
             s->floor = p;
         else if (p->kind == PRIM_DISK && k->occluded && !s->occluder && !p->has_xform)
@@ -75,7 +75,7 @@ static int parallel_normals(vec3 a, vec3 b)
 /* The light parallel to the floor and off its plane; its area. */
 static int read_light(const area_kind *k, area_setup *s, char *why, size_t n)
 {
-    const rf_light *l = s->light;
+    const scene_light *l = s->light;
     double size;
     if (l->kind == LIGHT_RECTANGLE) {
         double lu = vec_length(l->edge_u), lv = vec_length(l->edge_v);
@@ -98,7 +98,7 @@ static int read_light(const area_kind *k, area_setup *s, char *why, size_t n)
 /* The occluder parallel, strictly between the floor and the light. */
 static int read_occluder(const area_kind *k, area_setup *s, char *why, size_t n)
 {
-    const rf_prim *o = s->occluder;
+    const scene_prim *o = s->occluder;
     if (!parallel_normals(o->u.disk.normal, s->n))
         return oracle_refuse(why, n, "%s: the occluder is not parallel to the floor", k->family);
     vec3 p0 = s->floor->u.plane.point;
@@ -113,7 +113,7 @@ static int read_occluder(const area_kind *k, area_setup *s, char *why, size_t n)
 /* A perspective eye on a plane of the scene sees it edge-on. */
 static int read_camera(const oracle_view *v, const area_kind *k, area_setup *s, char *why, size_t n)
 {
-    const rf_camera *c = &v->scene->camera;
+    const scene_camera *c = &v->scene->camera;
     if (c->kind != CAMERA_PERSPECTIVE)
         return 1;
     double df = vec_dot(vec_sub(c->eye, s->floor->u.plane.point), s->n);
@@ -125,7 +125,7 @@ static int read_camera(const oracle_view *v, const area_kind *k, area_setup *s, 
 
 int area_setup_read(const oracle_view *v, const area_kind *k, area_setup *s, char *why, size_t n)
 {
-    const rf_scene *sc = v->scene;
+    const scene_model *sc = v->scene;
     memset(s, 0, sizeof *s);
     s->family = k->family;
     s->scene = sc;
@@ -147,7 +147,7 @@ int area_setup_read(const oracle_view *v, const area_kind *k, area_setup *s, cha
 typedef struct receiver {
     vec3 p;                 /* the hit */
     vec3 nf;                /* the floor's normal turned toward the viewer */
-    const rf_prim *prim;
+    const scene_prim *prim;
 } receiver;
 
 enum { LOCATE_AMBIGUOUS = -1, LOCATE_MISS = 0, LOCATE_HIT = 1 };
@@ -206,7 +206,7 @@ static void plane_coords(const area_setup *s, vec3 p, vec3 x, double *out)
 /* 0 when the light is not on the lit side of the receiver. */
 static int view_light(const area_setup *s, const receiver *rec, light_view *lv)
 {
-    const rf_light *l = s->light;
+    const scene_light *l = s->light;
     double h = vec_dot(vec_sub(l->position, rec->p), rec->nf);
     if (!(h > 0))
         return 0;
@@ -235,7 +235,7 @@ static int view_light(const area_setup *s, const receiver *rec, light_view *lv)
 }
 
 /* Is the rectangle a true rectangle (for the corner form)? */
-static int right_angled(const rf_light *l)
+static int right_angled(const scene_light *l)
 {
     return fabs(vec_dot(l->edge_u, l->edge_v)) <= 1e-12 * vec_length(l->edge_u) * vec_length(l->edge_v);
 }
@@ -244,7 +244,7 @@ static int right_angled(const rf_light *l)
  * exist (inverse square, d0 = 0: the solid angle), else the contour. */
 static double light_integral(const area_setup *s, const receiver *rec, const light_view *lv)
 {
-    const rf_light *l = s->light;
+    const scene_light *l = s->light;
     int solid_angle = l->falloff == FALLOFF_INVERSE_SQUARE && l->d0 == 0;
     if (l->kind == LIGHT_RECTANGLE) {
         if (!solid_angle || !right_angled(l))
@@ -263,7 +263,7 @@ static double light_integral(const area_setup *s, const receiver *rec, const lig
 
 static rgb shade(const area_setup *s, const receiver *rec, double mean)
 {
-    const rf_scene *sc = s->scene;
+    const scene_model *sc = s->scene;
     rgb kd = sc->materials[rec->prim->material].kd;
     return vec_mul(kd, vec_madd(sc->ambient, s->light->power, mean));
 }
@@ -377,7 +377,7 @@ static void concentric(double s, double t, double *x, double *y)
 /* The centre of cell (row, col) in the light's plane about the foot. */
 static void cell_centre(const area_setup *s, const receiver *rec, const cell_model *m, int row, int col, double *out)
 {
-    const rf_light *l = s->light;
+    const scene_light *l = s->light;
     double u = (col + 0.5) / m->cols, v = (row + 0.5) / m->rows;
     vec3 p;
     if (l->kind == LIGHT_RECTANGLE) {
@@ -396,7 +396,7 @@ static void cell_centre(const area_setup *s, const receiver *rec, const cell_mod
  * paths stretch by at most 2R sqrt(1 + pi^2/8) (the Frobenius norm of its
  * Jacobian): the square's reach, diameter and moment scaled by it.  The
  * disk's tangent frame is the model's (Duff et al. 2017, lightsample.h). */
-static void cell_model_for(const rf_light *l, int samples, cell_model *m)
+static void cell_model_for(const scene_light *l, int samples, cell_model *m)
 {
     grid_for(samples, &m->rows, &m->cols);
     double w = 1.0 / m->cols, v = 1.0 / m->rows;

@@ -16,10 +16,10 @@
 
 typedef struct area_setup {
     const char *family;         /* for messages */
-    const rf_scene *scene;
-    const rf_light *light;
-    const rf_prim *floor;       /* the plane */
-    const rf_prim *occluder;    /* the disk, or NULL */
+    const scene_model *scene;
+    const scene_light *light;
+    const scene_prim *floor;       /* the plane */
+    const scene_prim *occluder;    /* the disk, or NULL */
     vec3 n, e1, e2;             /* the floor's unit normal and two unit tangents */
     double area;                /* of the light */
 } area_setup;
@@ -27,7 +27,7 @@ typedef struct area_setup {
 /* The family's description of the light and whether it has an occluder. */
 typedef struct area_kind {
     const char *family;
-    rf_light_kind light;        /* LIGHT_RECTANGLE or LIGHT_DISK */
+    scene_light_kind light;        /* LIGHT_RECTANGLE or LIGHT_DISK */
     int occluded;
 } area_kind;
 

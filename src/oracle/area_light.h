@@ -28,7 +28,7 @@
 typedef struct area_kernel {
     double h;              /* distance from the receiver to the light's plane, > 0 */
     double d0;             /* the falloff's offset, >= 0 */
-    rf_falloff falloff;
+    scene_falloff falloff;
 } area_kernel;
 
 /* phi(d) = g(d) h / d, the density the light is integrated with. */

@@ -29,13 +29,13 @@
 #define BALL_GRAZING 1e-5
 
 typedef struct ball_setup {
-    const rf_prim *ball, *screen;
-    const rf_material *glass, *paint;
+    const scene_prim *ball, *screen;
+    const scene_material *glass, *paint;
     vec3 forward;          /* the camera's view direction: the axis */
     double screen_z;       /* the screen's distance from the centre along it */
 } ball_setup;
 
-static int find_parts(const rf_scene *s, ball_setup *b)
+static int find_parts(const scene_model *s, ball_setup *b)
 {
     if (s->prim_count != 2)
         return 0;
@@ -58,11 +58,11 @@ static double axial(const ball_setup *b, vec3 p)
     return vec_dot(vec_sub(p, b->ball->u.sphere.center), b->forward);
 }
 
-static int accepts_parts(const rf_scene *s, ball_setup *b, char *why, size_t n)
+static int accepts_parts(const scene_model *s, ball_setup *b, char *why, size_t n)
 {
     if (!find_parts(s, b))
         return oracle_refuse(why, n, "ball_lens: the scene must be one sphere and one plane");
-    const rf_material *g = b->glass, *p = b->paint;
+    const scene_material *g = b->glass, *p = b->paint;
     if (vec_max_component(g->kd) != 0 || vec_max_component(g->ks) != 0 || !(g->t > 0) || !(g->ior > 1))
         return oracle_refuse(why, n, "ball_lens: the sphere must have Kd = 0, Ks = 0, t > 0 and ior > 1");
     if (vec_max_component(p->ks) != 0 || p->t != 0)
@@ -83,13 +83,13 @@ static int accepts_parts(const rf_scene *s, ball_setup *b, char *why, size_t n)
  * screen point to them stays behind the ball, so nothing shadows them. */
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     ball_setup b;
     if (!accepts_parts(s, &b, why, n))
         return 0;
     double radius = b.ball->u.sphere.radius;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind != LIGHT_POINT)
             return oracle_refuse(why, n, "ball_lens: light %d is not a point light", i + 1);
         double z = axial(&b, l->position);
@@ -101,7 +101,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 }
 
 /* The screen's colour at point p seen along view (toward the viewer). */
-static rgb screen_colour(const rf_scene *s, const ball_setup *b, vec3 p, vec3 view)
+static rgb screen_colour(const scene_model *s, const ball_setup *b, vec3 p, vec3 view)
 {
     rgb body = vec_mul(b->paint->kd, s->ambient), highlight = vec_splat(0);
     vec3 facing = vec_neg(b->forward);
@@ -113,7 +113,7 @@ static rgb screen_colour(const rf_scene *s, const ball_setup *b, vec3 p, vec3 vi
 /* t^2 times the screen's colour seen by the exit ray of path p turned to
  * deviation delta (t^2 bg when it turns back); offset: the unit vector
  * from the axis toward the camera ray. */
-static rgb exit_colour(const rf_scene *s, const ball_setup *b, const optics_ball_path *p, double delta, vec3 offset)
+static rgb exit_colour(const scene_model *s, const ball_setup *b, const optics_ball_path *p, double delta, vec3 offset)
 {
     double c = cos(delta), t2 = b->glass->t * b->glass->t;
     if (!(c > 0))
@@ -147,7 +147,7 @@ static double exit_uncertainty(const ball_setup *b, const optics_ball_path *p)
  * far screen near it, where the hit point runs away as 1/cos(delta)). */
 static oracle_status through_ball(const oracle_view *v, const ball_setup *b, double y, vec3 offset, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     optics_ball_path p;
     optics_ball_trace(y, b->ball->u.sphere.radius, b->glass->ior, &p);
     if (v->max_depth < 3) {

@@ -30,8 +30,8 @@
 #include "oracle/oracle_geom.h"
 
 typedef struct slab_setup {
-    const rf_prim *box, *floor;
-    const rf_material *glass, *ground;
+    const scene_prim *box, *floor;
+    const scene_material *glass, *ground;
     vec3 up;                  /* the coordinate axis from the floor toward the slab */
     int axis;                 /* its index */
     double top, bottom, ground_z; /* heights z(X) = up . X */
@@ -48,7 +48,7 @@ typedef struct slab_path {
     vec3 inside;              /* direction inside the slab */
 } slab_path;
 
-static int find_parts(const rf_scene *s, slab_setup *g)
+static int find_parts(const scene_model *s, slab_setup *g)
 {
     if (s->prim_count != 2)
         return 0;
@@ -122,7 +122,7 @@ static void slab_trace(const slab_setup *g, oracle_ray r, slab_path *p)
     p->f = vec_madd(undeviated, p->across, -along_floor);
 }
 
-static int light_above(const slab_setup *g, const rf_light *l)
+static int light_above(const slab_setup *g, const scene_light *l)
 {
     if (l->kind == LIGHT_DISTANT)
         return vec_dot(l->direction, g->up) < 0;
@@ -131,7 +131,7 @@ static int light_above(const slab_setup *g, const rf_light *l)
 
 /* Where the segment from floor point f to a light above the slab crosses
  * the bottom face's plane. */
-static vec3 bottom_crossing(const slab_setup *g, const rf_light *l, vec3 f)
+static vec3 bottom_crossing(const slab_setup *g, const scene_light *l, vec3 f)
 {
     double rise = g->bottom - height(g, f);
     if (l->kind == LIGHT_DISTANT)
@@ -140,7 +140,7 @@ static vec3 bottom_crossing(const slab_setup *g, const rf_light *l, vec3 f)
     return vec_madd(f, to, rise / vec_dot(to, g->up));
 }
 
-static int accepts_parts(const rf_scene *s, slab_setup *g, char *why, size_t n)
+static int accepts_parts(const scene_model *s, slab_setup *g, char *why, size_t n)
 {
     if (!find_parts(s, g))
         return oracle_refuse(why, n, "glass_slab: the scene must be one box (not rotated) and one plane");
@@ -157,10 +157,10 @@ static int accepts_parts(const rf_scene *s, slab_setup *g, char *why, size_t n)
     return 1;
 }
 
-static int accepts_lights(const rf_scene *s, const slab_setup *g, char *why, size_t n)
+static int accepts_lights(const scene_model *s, const slab_setup *g, char *why, size_t n)
 {
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_RECTANGLE || l->kind == LIGHT_DISK)
             return oracle_refuse(why, n, "glass_slab: light %d is distributed (point or distant only)", i + 1);
         double z = l->kind == LIGHT_POINT ? height(g, l->position) : 0;
@@ -175,7 +175,7 @@ static int accepts_lights(const rf_scene *s, const slab_setup *g, char *why, siz
  * bottom face: all affine in the image point, so the corners decide. */
 static int accepts_view(const oracle_view *v, const slab_setup *g, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     for (int c = 0; c < 4; c++) {
         oracle_ray r = optics_corner_ray(v, c);
         slab_path p;
@@ -203,12 +203,12 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 
 /* Kd Ia plus every light's direct terms, each through its shadow factor;
  * for the floor the factor is t^2 under lights above the slab. */
-static rgb body_at(const rf_scene *s, const slab_setup *g, const rf_material *m, vec3 point, vec3 view,
+static rgb body_at(const scene_model *s, const slab_setup *g, const scene_material *m, vec3 point, vec3 view,
                    double through, int floor)
 {
     rgb body = vec_mul(m->kd, s->ambient), highlight = vec_splat(0);
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         double pass = floor ? (light_above(g, l) ? through : 1) : through;
         (void)optics_light_terms(l, m, point, g->up, view, pass, &body, &highlight);
     }
@@ -224,7 +224,7 @@ static rgb body_at(const rf_scene *s, const slab_setup *g, const rf_material *m,
  */
 static rgb slab_colour(const oracle_view *v, const slab_setup *g, oracle_ray r, const slab_path *p, double slip)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     double t = g->glass->t, size = fmax(optics_max_abs(g->box->u.box.lo), optics_max_abs(g->box->u.box.hi));
     rgb c = vec_scale(body_at(s, g, g->glass, p->a, vec_neg(r.dir), 1, 0), 1 - t);
     if (v->max_depth < 2)

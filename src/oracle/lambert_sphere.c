@@ -24,10 +24,10 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (s->prim_count != 1 || s->prims[0].kind != PRIM_SPHERE)
         return oracle_refuse(why, n, FAMILY ": the scene must be one sphere");
-    const rf_prim *sphere = &s->prims[0];
+    const scene_prim *sphere = &s->prims[0];
     return oracle_accept_untransformed(s, FAMILY, why, n) &&
            oracle_accept_matte(oracle_material(s, 0), FAMILY, "sphere's material", why, n) &&
            oracle_accept_lights(s, FAMILY, why, n) &&
@@ -37,7 +37,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     vec3 p, n, toward;
     oracle_chord_kind kind = oracle_view_sphere(v, x, y, &s->prims[0], &p, &n, &toward);
     if (kind == ORACLE_CHORD_GRAZE)

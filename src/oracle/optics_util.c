@@ -48,7 +48,7 @@ void optics_slab_hit(const optics_slab *s, vec3 o, vec3 d, int k, optics_bounce 
     out->length = length;
 }
 
-rgb optics_falloff(const rf_light *light, double d)
+rgb optics_falloff(const scene_light *light, double d)
 {
     double s = d + light->d0;
     rgb e = light->power;
@@ -75,7 +75,7 @@ static double phong_lobe(double c, double shininess)
     return p >= DBL_MIN ? p : 0;
 }
 
-int optics_light_terms(const rf_light *light, const rf_material *m, vec3 point, vec3 n, vec3 v, double through,
+int optics_light_terms(const scene_light *light, const scene_material *m, vec3 point, vec3 n, vec3 v, double through,
                        rgb *body, rgb *highlight)
 {
     vec3 l;

@@ -94,12 +94,12 @@ void optics_slab_hit(const optics_slab *s, vec3 o, vec3 d, int k, optics_bounce 
  * the margin of a discontinuity of the model (shininess 0 with V.R about 0,
  * where the lobe jumps from 1 to 0), else 1.
  */
-int optics_light_terms(const rf_light *light, const rf_material *m, vec3 point, vec3 n, vec3 v, double through,
+int optics_light_terms(const scene_light *light, const scene_material *m, vec3 point, vec3 n, vec3 v, double through,
                        rgb *body, rgb *highlight);
 
 /* falloff(E, d, d0) of a light: linear E/(d+d0), inverse_square E/(d+d0)^2,
  * none E (spec/shading.md, slides 15-17). */
-rgb optics_falloff(const rf_light *light, double d);
+rgb optics_falloff(const scene_light *light, double d);
 
 /*
  * Lateral displacement of a ray crossing a plane-parallel slab of thickness

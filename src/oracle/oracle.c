@@ -52,11 +52,11 @@ static int exact_pixel(const oracle_family *f, const oracle_view *v, int i, int 
     return 1;
 }
 
-int oracle_image(const oracle_family *f, const oracle_view *v, rf_image *out, unsigned char *excluded,
+int oracle_image(const oracle_family *f, const oracle_view *v, img_buf *out, unsigned char *excluded,
                  long *excluded_count)
 {
     if (img_create(out, v->width, v->height) != 0)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     long count = 0;
     for (int j = 0; j < v->height; j++) {
         for (int i = 0; i < v->width; i++) {
@@ -73,7 +73,7 @@ int oracle_image(const oracle_family *f, const oracle_view *v, rf_image *out, un
     }
     if (excluded_count)
         *excluded_count = count;
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 int oracle_refuse(char *why, size_t why_size, const char *fmt, ...)

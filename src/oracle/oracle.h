@@ -26,7 +26,7 @@ typedef enum oracle_status {
 
 /* The render the exact image is for. */
 typedef struct oracle_view {
-    const rf_scene *scene;
+    const scene_model *scene;
     int width, height;  /* pixels */
     int samples;        /* k: k x k camera rays per pixel */
     int max_depth;      /* the depth the tracer stops at */
@@ -59,9 +59,9 @@ const oracle_family *oracle_find(const char *name);
  * The exact image of view v: each pixel the mean of the k x k sample
  * points.  excluded (width*height bytes, may be NULL) marks pixels with an
  * ambiguous sample point; *excluded_count counts them (their value in out
- * is 0).  Returns 0, or REFRAY_EXIT_SOFTWARE when out of memory.
+ * is 0).  Returns 0, or STATUS_NO_MEMORY when out of memory.
  */
-int oracle_image(const oracle_family *f, const oracle_view *v, rf_image *out, unsigned char *excluded,
+int oracle_image(const oracle_family *f, const oracle_view *v, img_buf *out, unsigned char *excluded,
                  long *excluded_count);
 
 /* Writes the reason a scene is refused into why; returns 0 (for accepts). */

@@ -21,7 +21,7 @@ static vec3 unit(vec3 v)
     return vec_make(v.x / len, v.y / len, v.z / len);
 }
 
-void oracle_camera_frame(const rf_camera *c, vec3 *forward, vec3 *right, vec3 *up)
+void oracle_camera_frame(const scene_camera *c, vec3 *forward, vec3 *right, vec3 *up)
 {
     *forward = unit(vec_sub(c->look_at, c->eye));
     *up = unit(vec_sub(c->up, vec_scale(*forward, vec_dot(c->up, *forward))));
@@ -30,7 +30,7 @@ void oracle_camera_frame(const rf_camera *c, vec3 *forward, vec3 *right, vec3 *u
 
 oracle_ray oracle_view_ray(const oracle_view *v, double x, double y)
 {
-    const rf_camera *c = &v->scene->camera;
+    const scene_camera *c = &v->scene->camera;
     vec3 f, r, u;
     oracle_camera_frame(c, &f, &r, &u);
     double sx = 2 * x / v->width - 1, sy = 1 - 2 * y / v->height, aspect = (double)v->height / v->width;

@@ -15,7 +15,7 @@ typedef struct oracle_ray {
 
 /* The camera's frame: forward from eye to look_at; up made perpendicular
  * to it by Gram-Schmidt; right = forward x up (right-handed). */
-void oracle_camera_frame(const rf_camera *c, vec3 *forward, vec3 *right, vec3 *up);
+void oracle_camera_frame(const scene_camera *c, vec3 *forward, vec3 *right, vec3 *up);
 
 /* The camera ray through continuous image point (x, y) of view v. */
 oracle_ray oracle_view_ray(const oracle_view *v, double x, double y);

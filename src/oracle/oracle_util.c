@@ -16,7 +16,7 @@ double oracle_tolerance_exact(const oracle_view *v, int light_samples)
     return ORACLE_EXACT_TOLERANCE;
 }
 
-rgb oracle_falloff(rgb power, double d, double d0, rf_falloff falloff)
+rgb oracle_falloff(rgb power, double d, double d0, scene_falloff falloff)
 {
     double s = d + d0;
     if (falloff == FALLOFF_LINEAR)
@@ -26,7 +26,7 @@ rgb oracle_falloff(rgb power, double d, double d0, rf_falloff falloff)
     return power;
 }
 
-int oracle_light_toward(const rf_light *light, vec3 p, oracle_light_at *out)
+int oracle_light_toward(const scene_light *light, vec3 p, oracle_light_at *out)
 {
     out->light = light;
     if (light->kind == LIGHT_DISTANT) {
@@ -61,7 +61,7 @@ double oracle_phong_lobe(double c, double n, int *ambiguous)
  * One light's share, added to *out.  V.R is expanded rather than R formed:
  * with R = 2(N.L)N - L, V.R = 2(N.L)(N.V) - L.V (slides 24-28).
  */
-static oracle_status add_light(const rf_material *m, vec3 p, vec3 n, vec3 v, const oracle_light_at *la,
+static oracle_status add_light(const scene_material *m, vec3 p, vec3 n, vec3 v, const oracle_light_at *la,
                                oracle_shadow_fn shadow, const void *ctx, oracle_shading *out)
 {
     double cos_nl = vec_dot(n, la->l);
@@ -83,7 +83,7 @@ static oracle_status add_light(const rf_material *m, vec3 p, vec3 n, vec3 v, con
     return ORACLE_EXACT;
 }
 
-oracle_status oracle_shade_direct(const rf_scene *s, const rf_material *m, vec3 p, vec3 n, vec3 v,
+oracle_status oracle_shade_direct(const scene_model *s, const scene_material *m, vec3 p, vec3 n, vec3 v,
                                   oracle_shadow_fn shadow, const void *ctx, oracle_shading *out)
 {
     out->body = vec_mul(m->kd, s->ambient);
@@ -98,7 +98,7 @@ oracle_status oracle_shade_direct(const rf_scene *s, const rf_material *m, vec3 
     return ORACLE_EXACT;
 }
 
-rgb oracle_shade_local(const rf_material *m, const oracle_shading *sh)
+rgb oracle_shade_local(const scene_material *m, const oracle_shading *sh)
 {
     return vec_add(vec_scale(sh->body, 1 - m->t), sh->highlight);
 }
@@ -126,7 +126,7 @@ vec3 oracle_chord_normal(const oracle_chord *ch, vec3 d, double r, int far)
     return vec_scale(radial, 1 / r);
 }
 
-oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, const rf_prim *sphere, vec3 *p,
+oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, const scene_prim *sphere, vec3 *p,
                                      vec3 *n, vec3 *toward_viewer)
 {
     double r = sphere->u.sphere.radius;
@@ -141,7 +141,7 @@ oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, c
     return kind;
 }
 
-int oracle_view_plane(const oracle_view *v, double x, double y, const rf_prim *plane, vec3 *p, vec3 *n,
+int oracle_view_plane(const oracle_view *v, double x, double y, const scene_prim *plane, vec3 *p, vec3 *n,
                       vec3 *toward_viewer)
 {
     vec3 p0 = plane->u.plane.point, normal = plane->u.plane.normal;
@@ -192,7 +192,7 @@ int oracle_line_plane(vec3 o, vec3 d, vec3 p0, vec3 n, double *s)
  */
 int oracle_image_point(const oracle_view *v, vec3 p, double *x, double *y)
 {
-    const rf_camera *c = &v->scene->camera;
+    const scene_camera *c = &v->scene->camera;
     vec3 f, r, u, w = vec_sub(p, c->eye);
     oracle_camera_frame(c, &f, &r, &u);
     double aspect = (double)v->height / v->width, a = vec_dot(w, r), b = vec_dot(w, u), half;
@@ -231,11 +231,11 @@ static double grow(double scale, vec3 p, double extra)
     return fmax(scale, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))) + extra);
 }
 
-double oracle_scene_scale(const rf_scene *s)
+double oracle_scene_scale(const scene_model *s)
 {
     double scale = grow(grow(1, s->camera.eye, 0), s->camera.look_at, 0);
     for (int i = 0; i < s->prim_count; i++) {
-        const rf_prim *p = &s->prims[i];
+        const scene_prim *p = &s->prims[i];
         if (p->kind == PRIM_SPHERE)
             scale = grow(scale, p->u.sphere.center, p->u.sphere.radius);
         else if (p->kind == PRIM_PLANE)
@@ -249,15 +249,15 @@ double oracle_scene_scale(const rf_scene *s)
     return scale;
 }
 
-const rf_material *oracle_material(const rf_scene *s, int prim)
+const scene_material *oracle_material(const scene_model *s, int prim)
 {
     return &s->materials[s->prims[prim].material];
 }
 
-int oracle_accept_lights(const rf_scene *s, const char *family, char *why, size_t n)
+int oracle_accept_lights(const scene_model *s, const char *family, char *why, size_t n)
 {
     for (int i = 0; i < s->light_count; i++) {
-        rf_light_kind k = s->lights[i].kind;
+        scene_light_kind k = s->lights[i].kind;
         if (k != LIGHT_POINT && k != LIGHT_DISTANT)
             return oracle_refuse(why, n,
                                  "%s: light %d is distributed (only point and distant lights have an exact image here)",
@@ -266,7 +266,7 @@ int oracle_accept_lights(const rf_scene *s, const char *family, char *why, size_
     return 1;
 }
 
-int oracle_accept_untransformed(const rf_scene *s, const char *family, char *why, size_t n)
+int oracle_accept_untransformed(const scene_model *s, const char *family, char *why, size_t n)
 {
     for (int i = 0; i < s->prim_count; i++)
         if (s->prims[i].has_xform)
@@ -276,24 +276,24 @@ int oracle_accept_untransformed(const rf_scene *s, const char *family, char *why
     return 1;
 }
 
-int oracle_accept_matte(const rf_material *m, const char *family, const char *what, char *why, size_t n)
+int oracle_accept_matte(const scene_material *m, const char *family, const char *what, char *why, size_t n)
 {
     if (vec_max_component(m->ks) != 0 || m->t != 0)
         return oracle_refuse(why, n, "%s: the %s must have Ks = 0 and t = 0", family, what);
     return 1;
 }
 
-int oracle_accept_lights_outside(const rf_scene *s, vec3 c, double r, const char *family, char *why, size_t n)
+int oracle_accept_lights_outside(const scene_model *s, vec3 c, double r, const char *family, char *why, size_t n)
 {
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_POINT && !(vec_length(vec_sub(l->position, c)) > r * (1 + ORACLE_EDGE_MARGIN)))
             return oracle_refuse(why, n, "%s: point light %d is inside or on the sphere", family, i + 1);
     }
     return 1;
 }
 
-int oracle_accept_ortho_in_front(const rf_scene *s, vec3 c, double r, const char *family, char *why, size_t n)
+int oracle_accept_ortho_in_front(const scene_model *s, vec3 c, double r, const char *family, char *why, size_t n)
 {
     vec3 f, right, up;
     if (s->camera.kind != CAMERA_ORTHOGRAPHIC)
@@ -304,7 +304,7 @@ int oracle_accept_ortho_in_front(const rf_scene *s, vec3 c, double r, const char
     return 1;
 }
 
-int oracle_accept_off_plane(const rf_scene *s, const rf_prim *plane, const char *family, char *why, size_t n)
+int oracle_accept_off_plane(const scene_model *s, const scene_prim *plane, const char *family, char *why, size_t n)
 {
     double margin = ORACLE_EDGE_MARGIN * oracle_scene_scale(s);
     vec3 p0 = plane->u.plane.point, normal = plane->u.plane.normal;
@@ -318,8 +318,8 @@ int oracle_accept_off_plane(const rf_scene *s, const rf_prim *plane, const char 
 
 /* The sphere is met first when its entry lies ahead and before the plane;
  * an outline graze matters only where the sphere would be met first. */
-oracle_sees oracle_view_sphere_plane(const oracle_view *v, double x, double y, const rf_prim *sphere,
-                                     const rf_prim *plane, oracle_pair_view *out)
+oracle_sees oracle_view_sphere_plane(const oracle_view *v, double x, double y, const scene_prim *sphere,
+                                     const scene_prim *plane, oracle_pair_view *out)
 {
     vec3 p0 = plane->u.plane.point, normal = plane->u.plane.normal;
     out->ray = oracle_view_ray(v, x, y);
@@ -338,14 +338,14 @@ oracle_sees oracle_view_sphere_plane(const oracle_view *v, double x, double y, c
     return plane_ahead ? ORACLE_SEES_PLANE : ORACLE_SEES_NOTHING;
 }
 
-void oracle_plane_hit(const rf_prim *plane, const oracle_ray *ray, double s, vec3 *p, vec3 *n)
+void oracle_plane_hit(const scene_prim *plane, const oracle_ray *ray, double s, vec3 *p, vec3 *n)
 {
     vec3 normal = plane->u.plane.normal;
     *p = vec_add(ray->origin, vec_scale(ray->dir, s));
     *n = vec_dot(normal, ray->dir) < 0 ? normal : vec_neg(normal);
 }
 
-static int find_pair(const rf_scene *s, int *sphere, int *plane)
+static int find_pair(const scene_model *s, int *sphere, int *plane)
 {
     *sphere = *plane = -1;
     for (int i = 0; i < s->prim_count; i++) {
@@ -358,16 +358,16 @@ static int find_pair(const rf_scene *s, int *sphere, int *plane)
 }
 
 /* The signed height of p over the plane, positive on the sphere's side. */
-static double height(const rf_prim *plane, double side, vec3 p)
+static double height(const scene_prim *plane, double side, vec3 p)
 {
     return side * vec_dot(plane->u.plane.normal, vec_sub(p, plane->u.plane.point));
 }
 
-static int pair_lights(const rf_scene *s, const rf_prim *plane, double side, const char *family, char *why,
+static int pair_lights(const scene_model *s, const scene_prim *plane, double side, const char *family, char *why,
                        size_t n)
 {
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_DISTANT && !(-side * vec_dot(plane->u.plane.normal, l->direction) > ORACLE_COS_MARGIN))
             return oracle_refuse(why, n, "%s: distant light %d does not shine from the sphere's side of the plane",
                                  family, i + 1);
@@ -377,7 +377,7 @@ static int pair_lights(const rf_scene *s, const rf_prim *plane, double side, con
     return 1;
 }
 
-static int pair_eye(const rf_scene *s, const rf_prim *sphere, const rf_prim *plane, double side,
+static int pair_eye(const scene_model *s, const scene_prim *sphere, const scene_prim *plane, double side,
                     const char *family, char *why, size_t n)
 {
     vec3 c = sphere->u.sphere.center, f, right, up;
@@ -392,14 +392,14 @@ static int pair_eye(const rf_scene *s, const rf_prim *sphere, const rf_prim *pla
     return 1;
 }
 
-int oracle_accept_sphere_plane(const rf_scene *s, const char *family, int *sphere, int *plane, char *why,
+int oracle_accept_sphere_plane(const scene_model *s, const char *family, int *sphere, int *plane, char *why,
                                size_t n)
 {
     if (!find_pair(s, sphere, plane))
         return oracle_refuse(why, n, "%s: the scene must be one sphere and one plane", family);
     if (!oracle_accept_untransformed(s, family, why, n) || !oracle_accept_lights(s, family, why, n))
         return 0;
-    const rf_prim *sp = &s->prims[*sphere], *pl = &s->prims[*plane];
+    const scene_prim *sp = &s->prims[*sphere], *pl = &s->prims[*plane];
     double above = vec_dot(pl->u.plane.normal, vec_sub(sp->u.sphere.center, pl->u.plane.point));
     double side = above < 0 ? -1 : 1;
     if (!(fabs(above) > sp->u.sphere.radius * (1 + ORACLE_EDGE_MARGIN)))

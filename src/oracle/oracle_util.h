@@ -36,11 +36,11 @@
 double oracle_tolerance_exact(const oracle_view *v, int light_samples);
 
 /* E/(d+d0), E/(d+d0)^2 or E (slides 15-16), straight from the formula. */
-rgb oracle_falloff(rgb power, double d, double d0, rf_falloff falloff);
+rgb oracle_falloff(rgb power, double d, double d0, scene_falloff falloff);
 
 /* A light as seen from a point p. */
 typedef struct oracle_light_at {
-    const rf_light *light;
+    const scene_light *light;
     vec3 l;             /* unit, from p toward the light */
     double dist;        /* to a point light; HUGE_VAL for a distant light */
     rgb intensity;      /* E after the falloff */
@@ -48,7 +48,7 @@ typedef struct oracle_light_at {
 
 /* Fills *out for a point or distant light seen from p; returns 0 for a
  * distributed light or a point light at p (callers refuse both). */
-int oracle_light_toward(const rf_light *light, vec3 p, oracle_light_at *out);
+int oracle_light_toward(const scene_light *light, vec3 p, oracle_light_at *out);
 
 /* The fraction S of light la that reaches p (1, 0, t^2, ...); sets
  * *ambiguous when p lies within the margin of a shadow boundary. */
@@ -66,11 +66,11 @@ typedef struct oracle_shading {
  * with power has |N.L| within ORACLE_COS_MARGIN, when a lobe with n < 1 has
  * |V.R| within it, or when shadow() says so.
  */
-oracle_status oracle_shade_direct(const rf_scene *s, const rf_material *m, vec3 p, vec3 n, vec3 v,
+oracle_status oracle_shade_direct(const scene_model *s, const scene_material *m, vec3 p, vec3 n, vec3 v,
                                   oracle_shadow_fn shadow, const void *ctx, oracle_shading *out);
 
 /* (1 - t)*body + highlight: the local colour (slide 37). */
-rgb oracle_shade_local(const rf_material *m, const oracle_shading *sh);
+rgb oracle_shade_local(const scene_material *m, const oracle_shading *sh);
 
 /* max(0, c)^n with c = V.R clamped to 1; 0 when ambiguous (see above). */
 double oracle_phong_lobe(double c, double n, int *ambiguous);
@@ -100,7 +100,7 @@ vec3 oracle_chord_normal(const oracle_chord *ch, vec3 d, double r, int far);
  * ray through (x, y) on the sphere prim; the kind of its chord (*p, *n, *v
  * are set for ORACLE_CHORD_HIT only).  The caller has checked that the view
  * ray's origin is outside the sphere. */
-oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, const rf_prim *sphere, vec3 *p,
+oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, const scene_prim *sphere, vec3 *p,
                                      vec3 *n, vec3 *toward_viewer);
 
 /* The same for a plane prim (any camera): returns 1 with *p, *n (the
@@ -108,7 +108,7 @@ oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, c
  * meets the plane ahead, 0 when it does not, -1 (ambiguous) when the ray
  * runs within ORACLE_COS_MARGIN of parallel to the plane or starts within
  * ORACLE_EDGE_MARGIN scene scales of it. */
-int oracle_view_plane(const oracle_view *v, double x, double y, const rf_prim *plane, vec3 *p, vec3 *n,
+int oracle_view_plane(const oracle_view *v, double x, double y, const scene_prim *plane, vec3 *p, vec3 *n,
                       vec3 *toward_viewer);
 
 /* Where the Phong lobe of a distant light peaks on a sphere seen along v
@@ -139,29 +139,29 @@ vec3 oracle_mirror_point_ortho(vec3 p0, vec3 n, vec3 f, vec3 light);
 
 /* The largest coordinate magnitude of the scene's camera, primitives and
  * point lights (at least 1): the length scale of absolute margins. */
-double oracle_scene_scale(const rf_scene *s);
+double oracle_scene_scale(const scene_model *s);
 
 /* The material of primitive i. */
-const rf_material *oracle_material(const rf_scene *s, int prim);
+const scene_material *oracle_material(const scene_model *s, int prim);
 
 /* 1 when every light is a point or distant light, else refuses with
  * "FAMILY: light N is distributed (...)". */
-int oracle_accept_lights(const rf_scene *s, const char *family, char *why, size_t n);
+int oracle_accept_lights(const scene_model *s, const char *family, char *why, size_t n);
 
 /* 1 when every primitive is stored without a transform (spheres under
  * similarities, planes and disks always are), else refuses. */
-int oracle_accept_untransformed(const rf_scene *s, const char *family, char *why, size_t n);
+int oracle_accept_untransformed(const scene_model *s, const char *family, char *why, size_t n);
 
 /* 1 when material m has Ks = 0 and t = 0, else refuses naming what. */
-int oracle_accept_matte(const rf_material *m, const char *family, const char *what, char *why, size_t n);
+int oracle_accept_matte(const scene_material *m, const char *family, const char *what, char *why, size_t n);
 
 /* 1 when every point light is more than ORACLE_EDGE_MARGIN radii outside
  * the sphere (c, r), else refuses. */
-int oracle_accept_lights_outside(const rf_scene *s, vec3 c, double r, const char *family, char *why, size_t n);
+int oracle_accept_lights_outside(const scene_model *s, vec3 c, double r, const char *family, char *why, size_t n);
 
 /* 1 when the camera is orthographic and the sphere lies wholly in front
  * of its image plane ((c - eye).forward > r), else refuses. */
-int oracle_accept_ortho_in_front(const rf_scene *s, vec3 c, double r, const char *family, char *why, size_t n);
+int oracle_accept_ortho_in_front(const scene_model *s, vec3 c, double r, const char *family, char *why, size_t n);
 
 /*
  * A sphere over a plane (sphere_shadow, transparent_shadow): what the view
@@ -183,12 +183,12 @@ typedef struct oracle_pair_view {
     double plane_s;
 } oracle_pair_view;
 
-oracle_sees oracle_view_sphere_plane(const oracle_view *v, double x, double y, const rf_prim *sphere,
-                                     const rf_prim *plane, oracle_pair_view *out);
+oracle_sees oracle_view_sphere_plane(const oracle_view *v, double x, double y, const scene_prim *sphere,
+                                     const scene_prim *plane, oracle_pair_view *out);
 
 /* The plane's point at parameter s of the ray, with the normal turned
  * toward the ray's origin. */
-void oracle_plane_hit(const rf_prim *plane, const oracle_ray *ray, double s, vec3 *p, vec3 *n);
+void oracle_plane_hit(const scene_prim *plane, const oracle_ray *ray, double s, vec3 *p, vec3 *n);
 
 /*
  * 1 when the scene is one sphere and one plane, untransformed, the sphere
@@ -200,11 +200,11 @@ void oracle_plane_hit(const rf_prim *plane, const oracle_ray *ray, double s, vec
  * shadows the sphere where N.L > 0: a segment between two points of an open
  * half-space stays in it.
  */
-int oracle_accept_sphere_plane(const rf_scene *s, const char *family, int *sphere, int *plane, char *why,
+int oracle_accept_sphere_plane(const scene_model *s, const char *family, int *sphere, int *plane, char *why,
                                size_t n);
 
 /* 1 when every point light and the eye lie more than ORACLE_EDGE_MARGIN
  * scene scales off the plane prim, else refuses. */
-int oracle_accept_off_plane(const rf_scene *s, const rf_prim *plane, const char *family, char *why, size_t n);
+int oracle_accept_off_plane(const scene_model *s, const scene_prim *plane, const char *family, char *why, size_t n);
 
 #endif

@@ -30,9 +30,9 @@
 
 /* The two walls as a slab whose lo wall (wall 0) is the first plane: the
  * axis is the first plane's normal, turned toward the second plane. */
-static void mirror_slab(const rf_scene *s, optics_slab *slab)
+static void mirror_slab(const scene_model *s, optics_slab *slab)
 {
-    const rf_prim *a = &s->prims[0], *b = &s->prims[1];
+    const scene_prim *a = &s->prims[0], *b = &s->prims[1];
     slab->axis = a->u.plane.normal;
     double za = vec_dot(slab->axis, a->u.plane.point), zb = vec_dot(slab->axis, b->u.plane.point);
     if (zb < za) {
@@ -50,7 +50,7 @@ static int strictly_between(const optics_slab *slab, vec3 p)
     return z > slab->lo + margin && z < slab->hi - margin;
 }
 
-static int accepts_walls(const rf_scene *s, char *why, size_t n)
+static int accepts_walls(const scene_model *s, char *why, size_t n)
 {
     if (s->prim_count != 2 || s->prims[0].kind != PRIM_PLANE || s->prims[1].kind != PRIM_PLANE)
         return oracle_refuse(why, n, "parallel_mirrors: the scene must be exactly two planes");
@@ -69,7 +69,7 @@ static int accepts_walls(const rf_scene *s, char *why, size_t n)
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (!accepts_walls(s, why, n))
         return 0;
     optics_slab slab;
@@ -78,7 +78,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
         if (!strictly_between(&slab, optics_corner_ray(v, c).origin))
             return oracle_refuse(why, n, "parallel_mirrors: the camera is not strictly between the mirrors");
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_RECTANGLE || l->kind == LIGHT_DISK)
             return oracle_refuse(why, n, "parallel_mirrors: light %d is distributed (point or distant only)", i + 1);
         if (l->kind == LIGHT_POINT && !strictly_between(&slab, l->position))
@@ -89,12 +89,12 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 }
 
 /* Wall 0 is the first plane (mirror_slab), wall 1 the second. */
-static const rf_material *wall_material(const rf_scene *s, int wall)
+static const scene_material *wall_material(const scene_model *s, int wall)
 {
     return &s->materials[s->prims[wall].material];
 }
 
-static int has_point_light(const rf_scene *s)
+static int has_point_light(const scene_model *s)
 {
     for (int i = 0; i < s->light_count; i++)
         if (s->lights[i].kind == LIGHT_POINT)
@@ -103,9 +103,9 @@ static int has_point_light(const rf_scene *s)
 }
 
 /* The closed form: the walls alternate from the first one, A. */
-static rgb closed_series(const rf_scene *s, int first_wall, int depth)
+static rgb closed_series(const scene_model *s, int first_wall, int depth)
 {
-    const rf_material *a = wall_material(s, first_wall), *b = wall_material(s, !first_wall);
+    const scene_material *a = wall_material(s, first_wall), *b = wall_material(s, !first_wall);
     rgb q = vec_mul(a->ks, b->ks);
     rgb even = vec_mul(optics_geometric_sum_rgb(q, (depth + 1) / 2), vec_mul(a->kd, s->ambient));
     rgb odd = vec_mul(vec_mul(a->ks, optics_geometric_sum_rgb(q, depth / 2)), vec_mul(b->kd, s->ambient));
@@ -119,7 +119,7 @@ static rgb closed_series(const rf_scene *s, int first_wall, int depth)
  * times slip: each mirror ray starts o_j off its wall, so every later hit
  * comes o_j tan(theta) early along the wall (0 for the exact value).
  */
-static oracle_status unfolded_series(const rf_scene *s, const optics_slab *slab, oracle_ray r, int depth, double slip,
+static oracle_status unfolded_series(const scene_model *s, const optics_slab *slab, oracle_ray r, int depth, double slip,
                                      rgb *out)
 {
     rgb sum = vec_splat(0), weight = vec_splat(1);
@@ -130,7 +130,7 @@ static oracle_status unfolded_series(const rf_scene *s, const optics_slab *slab,
     for (int k = 0; k < depth; k++) {
         optics_bounce b;
         optics_slab_hit(slab, r.origin, r.dir, k, &b);
-        const rf_material *m = wall_material(s, b.wall);
+        const scene_material *m = wall_material(s, b.wall);
         vec3 point = vec_madd(b.point, across, -slip * early);
         rgb body = vec_mul(m->kd, s->ambient), highlight = vec_splat(0);
         for (int i = 0; i < s->light_count; i++)
@@ -139,7 +139,7 @@ static oracle_status unfolded_series(const rf_scene *s, const optics_slab *slab,
                 return ORACLE_AMBIGUOUS;
         sum = vec_add(sum, vec_mul(weight, vec_add(body, highlight)));
         weight = vec_mul(weight, m->ks);
-        const rf_prim *wall = &s->prims[b.wall];
+        const scene_prim *wall = &s->prims[b.wall];
         early += optics_spawn_offset(optics_max_abs(wall->u.plane.point), b.point) * tan_theta;
     }
     *out = sum;
@@ -148,7 +148,7 @@ static oracle_status unfolded_series(const rf_scene *s, const optics_slab *slab,
 
 /* The exact series, ambiguous when twice the tracer's slips (either way)
  * would move it by more than OPTICS_SENSITIVITY. */
-static oracle_status lit_series(const rf_scene *s, const optics_slab *slab, oracle_ray r, int depth, rgb *out)
+static oracle_status lit_series(const scene_model *s, const optics_slab *slab, oracle_ray r, int depth, rgb *out)
 {
     rgb early, late;
     if (unfolded_series(s, slab, r, depth, 0, out) != ORACLE_EXACT ||
@@ -162,7 +162,7 @@ static oracle_status lit_series(const rf_scene *s, const optics_slab *slab, orac
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     optics_slab slab;
     mirror_slab(s, &slab);
     oracle_ray r = oracle_view_ray(v, x, y);

@@ -25,7 +25,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (s->prim_count != 1 || s->prims[0].kind != PRIM_PLANE)
         return oracle_refuse(why, n, FAMILY ": the scene must be one plane");
     if (oracle_material(s, 0)->t != 0)
@@ -35,8 +35,8 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
-    const rf_material *m = oracle_material(s, 0);
+    const scene_model *s = v->scene;
+    const scene_material *m = oracle_material(s, 0);
     vec3 p, normal, toward;
     int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
     if (seen < 0)

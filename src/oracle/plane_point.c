@@ -22,7 +22,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (s->prim_count != 1 || s->prims[0].kind != PRIM_PLANE)
         return oracle_refuse(why, n, FAMILY ": the scene must be one plane");
     return oracle_accept_matte(oracle_material(s, 0), FAMILY, "plane's material", why, n) &&
@@ -31,7 +31,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     vec3 p, normal, toward;
     int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
     if (seen < 0)

@@ -31,14 +31,14 @@
 
 /* The box, its material and the pair of faces the camera looks at. */
 typedef struct window_setup {
-    const rf_prim *box;
-    const rf_material *glass;
+    const scene_prim *box;
+    const scene_material *glass;
     optics_slab slab;
     int axis;
 } window_setup;
 
 /* The faces across the camera's forward axis (its largest component). */
-static void window_setup_of(const rf_scene *s, window_setup *w)
+static void window_setup_of(const scene_model *s, window_setup *w)
 {
     w->box = &s->prims[0];
     w->glass = &s->materials[w->box->material];
@@ -53,7 +53,7 @@ static void window_setup_of(const rf_scene *s, window_setup *w)
 
 /* Strictly inside the box along the axes in mask (bit i: axis i), a margin
  * of each extent away from the faces. */
-static int inside_box(const rf_prim *box, vec3 p, int mask)
+static int inside_box(const scene_prim *box, vec3 p, int mask)
 {
     for (int i = 0; i < 3; i++) {
         double lo = vec_component(box->u.box.lo, i), hi = vec_component(box->u.box.hi, i);
@@ -64,15 +64,15 @@ static int inside_box(const rf_prim *box, vec3 p, int mask)
     return 1;
 }
 
-static int accepts_scene(const rf_scene *s, char *why, size_t n)
+static int accepts_scene(const scene_model *s, char *why, size_t n)
 {
     if (s->prim_count != 1 || s->prims[0].kind != PRIM_BOX || s->prims[0].has_xform)
         return oracle_refuse(why, n, "snell_window: the scene must be one box (not rotated)");
-    const rf_material *m = &s->materials[s->prims[0].material];
+    const scene_material *m = &s->materials[s->prims[0].material];
     if (!(m->t > 0))
         return oracle_refuse(why, n, "snell_window: the box must be transparent (t > 0)");
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind != LIGHT_POINT)
             return oracle_refuse(why, n, "snell_window: light %d is not a point light", i + 1);
         if (!inside_box(&s->prims[0], l->position, 7))
@@ -87,7 +87,7 @@ static int accepts_scene(const rf_scene *s, char *why, size_t n)
  * rectangle from the eye when no ray is parallel to the faces). */
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     if (!accepts_scene(s, why, n))
         return 0;
     window_setup w;
@@ -121,10 +121,10 @@ static int accepts(const oracle_view *v, char *why, size_t n)
  * offsets do, times slip: each reflected ray starts o_k off its face, so
  * every later hit comes o_k tan(theta) early (0 for the exact value).
  */
-static oracle_status unfolded_series(const rf_scene *s, const window_setup *w, oracle_ray r, int tir, int depth,
+static oracle_status unfolded_series(const scene_model *s, const window_setup *w, oracle_ray r, int tir, int depth,
                                      double slip, rgb *out)
 {
-    const rf_material *m = w->glass;
+    const scene_material *m = w->glass;
     rgb sum = vec_splat(0), weight = vec_splat(1);
     rgb next = tir ? vec_add(m->ks, vec_splat(m->t)) : m->ks;
     double dz = vec_dot(w->slab.axis, r.dir), early = 0;
@@ -152,7 +152,7 @@ static oracle_status unfolded_series(const rf_scene *s, const window_setup *w, o
 
 /* The exact series, ambiguous when twice the tracer's slips (either way)
  * would move it by more than OPTICS_SENSITIVITY. */
-static oracle_status lit_series(const rf_scene *s, const window_setup *w, oracle_ray r, int tir, int depth, rgb *out)
+static oracle_status lit_series(const scene_model *s, const window_setup *w, oracle_ray r, int tir, int depth, rgb *out)
 {
     rgb early, late;
     if (unfolded_series(s, w, r, tir, depth, 0, out) != ORACLE_EXACT ||
@@ -165,7 +165,7 @@ static oracle_status lit_series(const rf_scene *s, const window_setup *w, oracle
 }
 
 /* The closed forms of the file comment. */
-static rgb closed_series(const rf_scene *s, const rf_material *m, int tir, int depth)
+static rgb closed_series(const scene_model *s, const scene_material *m, int tir, int depth)
 {
     rgb local = vec_scale(vec_mul(m->kd, s->ambient), 1 - m->t);
     if (tir)
@@ -176,7 +176,7 @@ static rgb closed_series(const rf_scene *s, const rf_material *m, int tir, int d
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     window_setup w;
     window_setup_of(s, &w);
     oracle_ray r = oracle_view_ray(v, x, y);

@@ -25,7 +25,7 @@
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     int sphere, plane;
     return oracle_accept_sphere_plane(s, FAMILY, &sphere, &plane, why, n) &&
            oracle_accept_matte(oracle_material(s, sphere), FAMILY, "sphere's material", why, n) &&
@@ -35,7 +35,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 /* 0 inside the shadow, 1 outside (oracle_shadow_fn; ctx: the sphere). */
 static double blocked(const void *ctx, vec3 p, const oracle_light_at *la, int *ambiguous)
 {
-    const rf_prim *sphere = ctx;
+    const scene_prim *sphere = ctx;
     double r = sphere->u.sphere.radius, gap = oracle_path_distance(p, la, sphere->u.sphere.center) - r;
     if (fabs(gap) <= ORACLE_EDGE_MARGIN * r)
         *ambiguous = 1;
@@ -44,9 +44,9 @@ static double blocked(const void *ctx, vec3 p, const oracle_light_at *la, int *a
 
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     int si = s->prims[0].kind == PRIM_SPHERE ? 0 : 1, pi = 1 - si;
-    const rf_prim *sphere = &s->prims[si], *plane = &s->prims[pi];
+    const scene_prim *sphere = &s->prims[si], *plane = &s->prims[pi];
     oracle_pair_view pv;
     oracle_sees sees = oracle_view_sphere_plane(v, x, y, sphere, plane, &pv);
     vec3 p, normal, toward = vec_neg(pv.ray.dir);

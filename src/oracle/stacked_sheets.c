@@ -32,26 +32,26 @@
 #define STACK_MAX 32
 
 typedef struct stack {
-    const rf_scene *scene;
+    const scene_model *scene;
     vec3 up;                  /* unit, toward the eye */
     double height[STACK_MAX]; /* of each prim, measured from the eye (all < 0) */
     int order[STACK_MAX];     /* prim indices from the top down; order[count-1] the floor */
     int count;
 } stack;
 
-static vec3 prim_point(const rf_prim *p)
+static vec3 prim_point(const scene_prim *p)
 {
     return p->kind == PRIM_PLANE ? p->u.plane.point : p->u.disk.center;
 }
 
-static vec3 prim_normal(const rf_prim *p)
+static vec3 prim_normal(const scene_prim *p)
 {
     return p->kind == PRIM_PLANE ? p->u.plane.normal : p->u.disk.normal;
 }
 
 /* Heights from the eye along up, and the order from the top down
  * (insertion sort: a few surfaces). */
-static void stack_build(const rf_scene *s, stack *st)
+static void stack_build(const scene_model *s, stack *st)
 {
     st->scene = s;
     st->count = s->prim_count;
@@ -66,13 +66,13 @@ static void stack_build(const rf_scene *s, stack *st)
     }
 }
 
-static int accept_shapes(const rf_scene *s, char *why, size_t n)
+static int accept_shapes(const scene_model *s, char *why, size_t n)
 {
     if (s->prim_count < 2 || s->prim_count > STACK_MAX)
         return oracle_refuse(why, n, FAMILY ": the scene must have 2 to %d surfaces (sheets and a floor)", STACK_MAX);
     vec3 n0 = prim_normal(&s->prims[0]);
     for (int i = 0; i < s->prim_count; i++) {
-        const rf_prim *p = &s->prims[i];
+        const scene_prim *p = &s->prims[i];
         if (p->kind != PRIM_PLANE && p->kind != PRIM_DISK)
             return oracle_refuse(why, n, FAMILY ": primitive %d is not a plane or a disk", i + 1);
         if (!(fabs(vec_dot(prim_normal(p), n0)) >= 1 - 1e-12))
@@ -86,7 +86,7 @@ static int accept_shapes(const rf_scene *s, char *why, size_t n)
 /* The floor is the lowest surface: an opaque plane; heights distinct. */
 static int accept_heights(const stack *st, char *why, size_t n)
 {
-    const rf_scene *s = st->scene;
+    const scene_model *s = st->scene;
     double margin = ORACLE_EDGE_MARGIN * oracle_scene_scale(s);
     int floor = st->order[st->count - 1];
     if (s->prims[floor].kind != PRIM_PLANE || oracle_material(s, floor)->t != 0)
@@ -102,7 +102,7 @@ static int accept_heights(const stack *st, char *why, size_t n)
 
 static int accept_view(const stack *st, char *why, size_t n)
 {
-    const rf_camera *c = &st->scene->camera;
+    const scene_camera *c = &st->scene->camera;
     vec3 f, right, up;
     oracle_camera_frame(c, &f, &right, &up);
     if (c->kind == CAMERA_ORTHOGRAPHIC && !(vec_dot(f, st->up) <= -1 + 1e-12))
@@ -112,10 +112,10 @@ static int accept_view(const stack *st, char *why, size_t n)
 
 static int accept_lights(const stack *st, char *why, size_t n)
 {
-    const rf_scene *s = st->scene;
+    const scene_model *s = st->scene;
     double margin = ORACLE_EDGE_MARGIN * oracle_scene_scale(s);
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *l = &s->lights[i];
+        const scene_light *l = &s->lights[i];
         if (l->kind == LIGHT_DISTANT && !(fabs(vec_dot(l->direction, st->up)) > ORACLE_COS_MARGIN))
             return oracle_refuse(why, n, FAMILY ": distant light %d runs along the sheets", i + 1);
         for (int k = 0; l->kind == LIGHT_POINT && k < st->count; k++)
@@ -138,7 +138,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
  * ORACLE_EDGE_MARGIN radii of a disk's rim. */
 static int covers(const stack *st, int i, vec3 x)
 {
-    const rf_prim *p = &st->scene->prims[i];
+    const scene_prim *p = &st->scene->prims[i];
     if (p->kind == PRIM_PLANE)
         return 1;
     vec3 w = vec_sub(x, p->u.disk.center);
@@ -179,7 +179,7 @@ static oracle_status sheet_local(const stack *st, int i, vec3 x, vec3 d, rgb *ou
 {
     shadow_ctx sc = {st, i};
     oracle_shading sh;
-    const rf_material *m = oracle_material(st->scene, i);
+    const scene_material *m = oracle_material(st->scene, i);
     if (oracle_shade_direct(st->scene, m, x, st->up, vec_neg(d), transmission, &sc, &sh) != ORACLE_EXACT)
         return ORACLE_AMBIGUOUS;
     *out = oracle_shade_local(m, &sh);

@@ -26,11 +26,11 @@
 #define FAMILY "transparent_shadow"
 
 typedef struct pair {
-    const rf_scene *scene;
+    const scene_model *scene;
     int sphere, plane;
 } pair;
 
-static pair pair_of(const rf_scene *s)
+static pair pair_of(const scene_model *s)
 {
     pair p = {s, s->prims[0].kind == PRIM_SPHERE ? 0 : 1, 0};
     p.plane = 1 - p.sphere;
@@ -39,12 +39,12 @@ static pair pair_of(const rf_scene *s)
 
 static int accepts(const oracle_view *v, char *why, size_t n)
 {
-    const rf_scene *s = v->scene;
+    const scene_model *s = v->scene;
     int sphere, plane;
     if (!oracle_accept_sphere_plane(s, FAMILY, &sphere, &plane, why, n) ||
         !oracle_accept_matte(oracle_material(s, plane), FAMILY, "plane's material", why, n))
         return 0;
-    const rf_material *m = oracle_material(s, sphere);
+    const scene_material *m = oracle_material(s, sphere);
     if (!(m->t > 0) || m->ior != 1 || vec_max_component(m->ks) != 0)
         return oracle_refuse(why, n, FAMILY ": the sphere's material must have t > 0, ior 1 and Ks = 0");
     return 1;
@@ -54,7 +54,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
 static double through_twice(const void *ctx, vec3 p, const oracle_light_at *la, int *ambiguous)
 {
     const pair *pr = ctx;
-    const rf_prim *sphere = &pr->scene->prims[pr->sphere];
+    const scene_prim *sphere = &pr->scene->prims[pr->sphere];
     double r = sphere->u.sphere.radius, gap = oracle_path_distance(p, la, sphere->u.sphere.center) - r;
     double t = oracle_material(pr->scene, pr->sphere)->t;
     if (fabs(gap) <= ORACLE_EDGE_MARGIN * r)
@@ -76,7 +76,7 @@ static double through_once(const void *ctx, vec3 p, const oracle_light_at *la, i
  * does not meet it ahead). */
 static oracle_status plane_colour(const pair *pr, const oracle_pair_view *pv, double after, rgb *out)
 {
-    const rf_scene *s = pr->scene;
+    const scene_model *s = pr->scene;
     vec3 p, normal;
     oracle_shading sh;
     if (!pv->plane_ok)
@@ -95,9 +95,9 @@ static oracle_status plane_colour(const pair *pr, const oracle_pair_view *pv, do
 /* Entry (far = 0) or exit (far = 1) of the chord, shaded locally. */
 static oracle_status sphere_local(const pair *pr, const oracle_pair_view *pv, int far, rgb *out)
 {
-    const rf_scene *s = pr->scene;
-    const rf_prim *sphere = &s->prims[pr->sphere];
-    const rf_material *m = oracle_material(s, pr->sphere);
+    const scene_model *s = pr->scene;
+    const scene_prim *sphere = &s->prims[pr->sphere];
+    const scene_material *m = oracle_material(s, pr->sphere);
     vec3 outward = oracle_chord_normal(&pv->chord, pv->ray.dir, sphere->u.sphere.radius, far);
     vec3 p = vec_add(sphere->u.sphere.center, vec_scale(outward, sphere->u.sphere.radius));
     oracle_shading sh;

@@ -11,7 +11,6 @@
  * update it are false for NaN.
  */
 #include <float.h>
-#include <stdlib.h>
 #include <string.h>
 #include <assert.h>
 #include "render/bvh.h"
@@ -20,10 +19,12 @@
 
 void bvh_free(bvh *b)
 {
-    free(b->nodes);
-    free(b->items);
-    free(b->unbounded);
+    mem m = b->mem;
+    mem_free(&m, b->nodes, (size_t)b->node_cap * sizeof *b->nodes);
+    mem_free(&m, b->items, b->item_bytes);
+    mem_free(&m, b->unbounded, (size_t)b->unbounded_cap * sizeof *b->unbounded);
     memset(b, 0, sizeof *b);
+    b->mem = m;
 }
 
 /* A ray prepared for slab tests: 1/d with signed infinities for d = +-0. */
@@ -141,7 +142,7 @@ static void nearest_add(nearest *ns, const hit *h)
     ns->rr.tmax = limit;
 }
 
-static void nearest_test(nearest *ns, const rf_prim *prims, bvh_ref ref)
+static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
 {
     hit h;
     if (ns->stats)
@@ -188,7 +189,7 @@ static int descend(const bvh *b, int node, const slab_ray *s, nearest *ns, stack
     return ha ? a : hc ? c : -1;
 }
 
-static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
+static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
@@ -217,7 +218,7 @@ static void traverse_nearest(const bvh *b, const rf_prim *prims, nearest *ns)
     }
 }
 
-static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
+static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     for (int i = 0; i < b->unbounded_count; i++)
         nearest_test(ns, prims, b->unbounded[i]);
@@ -225,7 +226,7 @@ static void nearest_pass(const bvh *b, const rf_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats)
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
 {
     nearest ns;
     ns.rr = *r;
@@ -248,15 +249,15 @@ int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_
     return 1;
 }
 
-int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h)
+int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
 {
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_part(const rf_prim *prims, bvh_ref ref, const ray *r,
+static int visit_part(const scene_prim *prims, bvh_ref ref, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
-    hit out[2];
+    hit out[ISECT_MAX_CROSSINGS];
     if (stats)
         stats->prims_tested++;
     int n = isect_part_all(&prims[ref.prim], ref.part, r, out);
@@ -271,7 +272,7 @@ static int visit_part(const rf_prim *prims, bvh_ref ref, const ray *r,
 
 /* Depth-first over every node the ray meets; the stack holds at most one
  * pending sibling per level plus the node being expanded. */
-static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
+static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
                         int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     int stack[BVH_MAX_DEPTH + 1], sp = 0;
@@ -299,7 +300,7 @@ static int traverse_all(const bvh *b, const rf_prim *prims, const ray *r,
     return 0;
 }
 
-int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
@@ -310,7 +311,7 @@ int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
     return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
 }
 
-int bvh_visit(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx)
 {
     return bvh_visit_stats(b, prims, r, fn, ctx, NULL);

@@ -21,6 +21,7 @@
 #ifndef REFRAY_BVH_H
 #define REFRAY_BVH_H
 
+#include "base/mem.h"
 #include "render/intersect.h"
 
 /* The tree is at most this deep, so traversal uses a fixed stack: past
@@ -44,12 +45,16 @@ typedef struct bvh_ref {
 typedef struct bvh {
     bvh_node *nodes;   /* nodes[0] is the root; NULL when nothing is bounded */
     int node_count;
+    int node_cap;      /* entries allocated in nodes */
     int leaf_count;
     int depth;         /* longest root-to-leaf path, in nodes */
     bvh_ref *items;    /* the parts, each leaf's a contiguous run */
     int item_count;
+    size_t item_bytes; /* bytes allocated at items (it was the build's array) */
     bvh_ref *unbounded; /* parts of planes etc.: tested linearly on every ray */
     int unbounded_count;
+    int unbounded_cap;
+    mem mem;           /* where the arrays live */
 } bvh;
 
 /* What one query did, accumulated (the caller zeroes it). */
@@ -58,19 +63,19 @@ typedef struct bvh_stats {
     long prims_tested;     /* part intersection tests, unbounded ones included */
 } bvh_stats;
 
-/* Builds the tree over the parts of prims[0..count-1].  Returns 1, or 0
- * when out of memory, count < 0, or there are more than INT_MAX/2 parts
- * (then *b is empty and bvh_free is still safe).  Nothing of prims is kept
- * but the indices. */
-int bvh_build(bvh *b, const rf_prim *prims, int count);
+/* Builds the tree over the parts of prims[0..count-1] in memory from m
+ * (NULL: the C library).  Returns 1, or 0 when out of memory, count < 0,
+ * or there are more than INT_MAX/2 parts (then *b is empty and bvh_free is
+ * still safe).  Nothing of prims is kept but the indices. */
+int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m);
 void bvh_free(bvh *b);
 
 /* The nearest hit in (r->tmin, r->tmax), ties resolved as above: shrinks
  * r->tmax to its t, fills *h including h->prim and h->part, returns 1 on a
  * hit.  On a miss *r and *h are unchanged. */
-int bvh_intersect(const bvh *b, const rf_prim *prims, ray *r, hit *h);
+int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h);
 /* The same, adding to *stats when it is not NULL. */
-int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_stats *stats);
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats);
 
 /*
  * Calls fn for every surface crossing in (r->tmin, r->tmax) (a solid
@@ -79,9 +84,9 @@ int bvh_intersect_stats(const bvh *b, const rf_prim *prims, ray *r, hit *h, bvh_
  * value; returns 0 when all crossings were reported.  Meant for shadow
  * rays through transparent occluders.
  */
-int bvh_visit(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx);
-int bvh_visit_stats(const bvh *b, const rf_prim *prims, const ray *r,
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats);
 
 #endif

@@ -62,13 +62,13 @@ typedef struct sort_key {
 
 typedef struct build_ctx {
     bvh *b;
-    const rf_prim *prims;
+    const scene_prim *prims;
     build_item *items;    /* the bounded parts */
     int count;
     build_item *spare;    /* median splits: as many again, made on first use */
     sort_key *keys;
+    size_t item_bytes;    /* allocated at items */
     bin bins[3][BINS];    /* the binning of the node being split */
-    int node_cap;
     int failed;           /* out of memory */
 } build_ctx;
 
@@ -128,7 +128,7 @@ static real pad(real lo, real hi)
 
 /* The padded box of part `part` of primitive prims[index]; 0 when it has
  * no finite bounds. */
-static int item_of(const rf_prim *p, int index, int part, build_item *out)
+static int item_of(const scene_prim *p, int index, int part, build_item *out)
 {
     vec3 lo, hi;
     if (!isect_part_bounds(p, part, &lo, &hi))
@@ -306,8 +306,8 @@ static int compare_keys(const void *pa, const void *pb)
 static int median_split(build_ctx *ctx, int begin, int end, int axis)
 {
     if (!ctx->spare) {
-        ctx->spare = malloc((size_t)ctx->count * sizeof *ctx->spare);
-        ctx->keys = malloc((size_t)ctx->count * sizeof *ctx->keys);
+        ctx->spare = mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->spare);
+        ctx->keys = ctx->spare ? mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->keys) : NULL;
         if (!ctx->spare || !ctx->keys) {
             ctx->failed = 1;
             return -1;
@@ -376,15 +376,15 @@ static int choose_split(build_ctx *ctx, int begin, int end, int depth, const ran
 static int new_pair(build_ctx *ctx)
 {
     bvh *b = ctx->b;
-    if (b->node_count + 2 > ctx->node_cap) {
-        int cap = ctx->node_cap > INT_MAX / 2 ? INT_MAX : 2 * ctx->node_cap;
-        bvh_node *grown = realloc(b->nodes, (size_t)cap * sizeof *grown);
+    if (b->node_count + 2 > b->node_cap) {
+        int cap = b->node_cap > INT_MAX / 2 ? INT_MAX : 2 * b->node_cap;
+        bvh_node *grown = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)cap, sizeof *grown);
         if (!grown) {
             ctx->failed = 1;
             return -1;
         }
         b->nodes = grown;
-        ctx->node_cap = cap;
+        b->node_cap = cap;
     }
     b->node_count += 2;
     return b->node_count - 2;
@@ -417,15 +417,19 @@ static void build_node(build_ctx *ctx, int node, int begin, int end, int depth, 
     build_node(ctx, first + 1, mid, end, depth + 1, &kids[1]);
 }
 
-static void *alloc_array(size_t count, size_t size)
+static void free_sort_buffers(build_ctx *ctx)
 {
-    return malloc((count > 0 ? count : 1) * size);
+    mem_free(&ctx->b->mem, ctx->spare, (size_t)ctx->count * sizeof *ctx->spare);
+    mem_free(&ctx->b->mem, ctx->keys, (size_t)ctx->count * sizeof *ctx->keys);
+    ctx->spare = NULL;
+    ctx->keys = NULL;
 }
 
 /* Sorts parts into build items (bounded) and b->unbounded (a part without
  * finite bounds puts all its primitive's parts there: all of it is then
- * tested on every ray). */
-static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
+ * tested on every ray), which is then cut to its count (it was made for
+ * every part). */
+static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
 {
     int bounded = 0;
     for (int i = 0; i < count; i++) {
@@ -439,6 +443,12 @@ static int classify(bvh *b, const rf_prim *prims, int count, build_item *items)
             bvh_ref ref = {i, k};
             b->unbounded[b->unbounded_count++] = ref;
         }
+    }
+    bvh_ref *fit = mem_resize_array(&b->mem, b->unbounded, (size_t)b->unbounded_cap, (size_t)b->unbounded_count,
+                                    sizeof *fit);
+    if (fit) {
+        b->unbounded = fit;
+        b->unbounded_cap = b->unbounded_count;
     }
     return bounded;
 }
@@ -455,8 +465,10 @@ static void keep_references(build_ctx *ctx)
         bvh_ref r = ctx->items[i].ref;
         refs[i] = r;
     }
-    bvh_ref *fit = realloc(refs, (size_t)(ctx->count > 0 ? ctx->count : 1) * sizeof *fit);
+    size_t want = (size_t)ctx->count * sizeof *refs;
+    bvh_ref *fit = mem_resize(&b->mem, refs, ctx->item_bytes, want);
     b->items = fit ? fit : refs;
+    b->item_bytes = fit ? want : ctx->item_bytes;
     b->item_count = ctx->count;
     ctx->items = NULL;
 }
@@ -467,28 +479,27 @@ static void keep_references(build_ctx *ctx)
 static int build_tree(build_ctx *ctx)
 {
     bvh *b = ctx->b;
-    ctx->node_cap = ctx->count + 1;
-    b->nodes = alloc_array((size_t)ctx->node_cap, sizeof *b->nodes);
+    b->nodes = mem_alloc(&b->mem, ((size_t)ctx->count + 1) * sizeof *b->nodes);
     if (!b->nodes)
         return 0;
+    b->node_cap = ctx->count + 1;
     b->node_count = 1;
     range all = range_of(ctx, 0, ctx->count);
     build_node(ctx, 0, 0, ctx->count, 1, &all);
     if (ctx->failed)
         return 0;
-    free(ctx->spare);
-    free(ctx->keys);
-    ctx->spare = NULL;
-    ctx->keys = NULL;
+    free_sort_buffers(ctx);
     keep_references(ctx);
-    bvh_node *fit = realloc(b->nodes, (size_t)b->node_count * sizeof *fit);
-    if (fit)
+    bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
+    if (fit) {
         b->nodes = fit;
+        b->node_cap = b->node_count;
+    }
     return 1;
 }
 
 /* The number of parts of prims[0..count-1], or -1 past INT_MAX/2. */
-static long count_parts(const rf_prim *prims, int count)
+static long count_parts(const scene_prim *prims, int count)
 {
     long parts = 0;
     for (int i = 0; i < count && parts <= INT_MAX / 2; i++)
@@ -496,28 +507,30 @@ static long count_parts(const rf_prim *prims, int count)
     return parts <= INT_MAX / 2 ? parts : -1;
 }
 
-int bvh_build(bvh *b, const rf_prim *prims, int count)
+int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
 {
-    build_ctx *ctx = calloc(1, sizeof *ctx);
-    int ok = 0;
     memset(b, 0, sizeof *b);
+    b->mem = mem_pick(m);
+    build_ctx *ctx = mem_calloc(&b->mem, 1, sizeof *ctx);
+    int ok = 0;
     long parts = count >= 0 ? count_parts(prims, count) : -1;
     if (!ctx || parts < 0 || (size_t)parts > SIZE_MAX / 2 / sizeof(build_item)) {
-        free(ctx);
+        mem_free(&b->mem, ctx, sizeof *ctx);
         return 0;
     }
     ctx->b = b;
     ctx->prims = prims;
-    ctx->items = alloc_array((size_t)parts, sizeof *ctx->items);
-    b->unbounded = alloc_array((size_t)parts, sizeof *b->unbounded);
+    ctx->item_bytes = (size_t)parts * sizeof *ctx->items;
+    ctx->items = mem_alloc(&b->mem, ctx->item_bytes);
+    b->unbounded = mem_alloc(&b->mem, (size_t)parts * sizeof *b->unbounded);
+    b->unbounded_cap = b->unbounded ? (int)parts : 0;
     if (ctx->items && b->unbounded) {
         ctx->count = classify(b, prims, count, ctx->items);
         ok = ctx->count == 0 || build_tree(ctx);
     }
-    free(ctx->items);
-    free(ctx->spare);
-    free(ctx->keys);
-    free(ctx);
+    mem_free(&b->mem, ctx->items, ctx->item_bytes);
+    free_sort_buffers(ctx);
+    mem_free(&b->mem, ctx, sizeof *ctx);
     if (!ok)
         bvh_free(b);
     return ok;

@@ -3,7 +3,7 @@
  */
 #include "render/camera.h"
 
-ray camera_ray(const rf_camera *cam, int width, int height, real x, real y)
+ray camera_ray(const scene_camera *cam, int width, int height, real x, real y)
 {
     real aspect = (real)height / (real)width;
     real sx = 2.0 * x / width - 1.0;   /* -1 at the left edge, +1 at the right */

@@ -16,6 +16,6 @@
  * whose half-width is tan(fov/2).  Orthographic: parallel to forward, from
  * the point of a width-wide rectangle centred on the eye.
  */
-ray camera_ray(const rf_camera *cam, int width, int height, real x, real y);
+ray camera_ray(const scene_camera *cam, int width, int height, real x, real y);
 
 #endif

@@ -9,6 +9,7 @@
  */
 #include <float.h>
 #include "render/intersect.h"
+#include "render/intersect_shapes.h"
 #include "base/xform.h"
 
 static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
@@ -21,6 +22,11 @@ static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
     h->part = 0;
     h->entering = vec_dot(dir, n) < 0.0;
     h->b1 = h->b2 = 0.0;
+}
+
+void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
+{
+    hit_set(h, t, p, n, dir);
 }
 
 static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
@@ -92,6 +98,11 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;
+}
+
+int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
+{
+    return sphere_roots(f, d, radius, t);
 }
 
 /*
@@ -406,7 +417,7 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, co
 
 /* Triangle k of a mesh: its corners, and its vertex normals when it has
  * them (returns the normals pointer to pass on, or NULL). */
-static const vec3 *mesh_corners(const rf_trimesh *m, int k, vec3 v[3], vec3 n[3])
+static const vec3 *mesh_corners(const scene_trimesh *m, int k, vec3 v[3], vec3 n[3])
 {
     const int *c = m->tri[k];
     v[0] = m->positions[c[0]];
@@ -421,13 +432,13 @@ static const vec3 *mesh_corners(const rf_trimesh *m, int k, vec3 v[3], vec3 n[3]
 
 /* The inclusive edges of triangle k (triangle_solve's numbering): its open
  * edge from corner j to j + 1 is the one opposite corner j + 2. */
-static int open_edges(const rf_trimesh *m, int k)
+static int open_edges(const scene_trimesh *m, int k)
 {
     int open = m->open ? m->open[k] : 0;
     return (open >> 1 & 1) | (open >> 2 & 1) << 1 | (open & 1) << 2;
 }
 
-static int mesh_triangle_hits(const rf_trimesh *m, int k, const ray *r, hit *out)
+static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *out)
 {
     vec3 v[3], n[3];
     const vec3 *normals = mesh_corners(m, k, v, n);
@@ -440,7 +451,7 @@ static int mesh_triangle_hits(const rf_trimesh *m, int k, const ray *r, hit *out
 /* The nearest crossings of a whole mesh by testing every triangle: for
  * callers without a BVH (tests, one-off queries).  Ties go to the lower
  * triangle index.  Writes up to max in increasing t. */
-static int mesh_hits(const rf_trimesh *m, const ray *r, hit *out, int max)
+static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max)
 {
     int found = 0;
     for (int k = 0; k < m->tri_count; k++) {
@@ -460,7 +471,7 @@ static int mesh_hits(const rf_trimesh *m, const ray *r, hit *out, int max)
     return found;
 }
 
-static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
+static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -473,6 +484,15 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
         return box_hits(p->u.box.lo, p->u.box.hi, r, out, max);
+    case PRIM_CYLINDER:
+        return isect_cylinder_hits(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.open,
+                                   r, out, max);
+    case PRIM_CONE:
+        return isect_cone_hits(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1],
+                               p->u.cone.open, r, out, max);
+    case PRIM_TORUS:
+        return isect_torus_hits(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor, r, out,
+                                max);
     case PRIM_MESH: /* prim_hits: a mesh has no local frame */
         break;
     }
@@ -486,7 +506,7 @@ static int local_hits(const rf_prim *p, const ray *r, hit *out, int max)
  * entering is kept from the local frame: d . n has the same sign in both,
  * since (L^-1 d) . n_local = d . (L^-T n_local).
  */
-static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
+static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
     if (p->kind == PRIM_MESH)
         return mesh_hits(&p->u.mesh, r, out, max);
@@ -504,7 +524,7 @@ static int prim_hits(const rf_prim *p, const ray *r, hit *out, int max)
     return n;
 }
 
-int isect_prim(const rf_prim *p, ray *r, hit *h)
+int isect_prim(const scene_prim *p, ray *r, hit *h)
 {
     if (!prim_hits(p, r, h, 1))
         return 0;
@@ -512,17 +532,17 @@ int isect_prim(const rf_prim *p, ray *r, hit *h)
     return 1;
 }
 
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[2])
+int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return prim_hits(p, r, out, 2);
+    return prim_hits(p, r, out, ISECT_MAX_CROSSINGS);
 }
 
-int isect_part_count(const rf_prim *p)
+int isect_part_count(const scene_prim *p)
 {
     return p->kind == PRIM_MESH ? p->u.mesh.tri_count : 1;
 }
 
-static int part_hits(const rf_prim *p, int part, const ray *r, hit *out, int max)
+static int part_hits(const scene_prim *p, int part, const ray *r, hit *out, int max)
 {
     if (p->kind == PRIM_MESH)
         return mesh_triangle_hits(&p->u.mesh, part, r, out);
@@ -531,7 +551,7 @@ static int part_hits(const rf_prim *p, int part, const ray *r, hit *out, int max
     return prim_hits(p, r, out, max);
 }
 
-int isect_part(const rf_prim *p, int part, ray *r, hit *h)
+int isect_part(const scene_prim *p, int part, ray *r, hit *h)
 {
     if (!part_hits(p, part, r, h, 1))
         return 0;
@@ -539,9 +559,9 @@ int isect_part(const rf_prim *p, int part, ray *r, hit *h)
     return 1;
 }
 
-int isect_part_all(const rf_prim *p, int part, const ray *r, hit out[2])
+int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return part_hits(p, part, r, out, 2);
+    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS);
 }
 
 static int nearest(int found, ray *r, const hit *h)
@@ -576,9 +596,34 @@ int isect_box(vec3 lo, vec3 hi, ray *r, hit *h)
     return nearest(box_hits(lo, hi, r, h, 1), r, h);
 }
 
+int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h)
+{
+    return nearest(isect_cylinder_hits(from, to, radius, open, r, h, 1), r, h);
+}
+
+int isect_cone(vec3 from, vec3 to, real r0, real r1, int open, ray *r, hit *h)
+{
+    return nearest(isect_cone_hits(from, to, r0, r1, open, r, h, 1), r, h);
+}
+
+int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h)
+{
+    return nearest(isect_torus_hits(center, axis, major, minor, r, h, 1), r, h);
+}
+
+/* The box of the two end disks of a cylinder or cone, radii r0 and r1. */
+static void ends_bounds(vec3 from, vec3 to, real r0, real r1, vec3 *lo, vec3 *hi)
+{
+    vec3 a = vec_normalize(vec_sub(to, from)), e0, e1;
+    isect_disk_extent(a, r0, &e0);
+    isect_disk_extent(a, r1, &e1);
+    *lo = vec_min(vec_sub(from, e0), vec_sub(to, e1));
+    *hi = vec_max(vec_add(from, e0), vec_add(to, e1));
+}
+
 /* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
  * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
-static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+static int local_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
     vec3 c, e;
     switch (p->kind) {
@@ -602,6 +647,16 @@ static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
         *lo = p->u.box.lo;
         *hi = p->u.box.hi;
         return 1;
+    case PRIM_CYLINDER:
+        ends_bounds(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius, lo, hi);
+        return 1;
+    case PRIM_CONE:
+        ends_bounds(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], lo, hi);
+        return 1;
+    case PRIM_TORUS:
+        c = p->u.torus.center;
+        isect_torus_extent(p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &e);
+        break;
     case PRIM_MESH:
         *lo = vec_splat(INFINITY);
         *hi = vec_splat(-INFINITY);
@@ -618,7 +673,7 @@ static int local_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
-int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
+int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
     vec3 l, h;
     if (!local_bounds(p, &l, &h))
@@ -641,7 +696,7 @@ int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
-int isect_part_bounds(const rf_prim *p, int part, vec3 *lo, vec3 *hi)
+int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
 {
     if (p->kind != PRIM_MESH)
         return isect_prim_bounds(p, lo, hi);
@@ -657,7 +712,7 @@ static real triangle_magnitude(const vec3 v[3])
     return fmax(max_abs(v[0]), fmax(max_abs(v[1]), max_abs(v[2])));
 }
 
-static real local_magnitude(const rf_prim *p)
+static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
@@ -670,6 +725,13 @@ static real local_magnitude(const rf_prim *p)
         return max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
         return fmax(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+    case PRIM_CYLINDER:
+        return fmax(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
+    case PRIM_CONE:
+        return fmax(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
+               fmax(p->u.cone.radius[0], p->u.cone.radius[1]);
+    case PRIM_TORUS:
+        return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
     case PRIM_MESH: {
         real m = 0.0;
         for (int i = 0; i < p->u.mesh.position_count; i++)
@@ -682,7 +744,7 @@ static real local_magnitude(const rf_prim *p)
 
 /* For a local frame: |L x + T|_max <= |L|_inf |x|_max + |T|_max, with
  * |L|_inf the largest row sum of absolute values. */
-real isect_prim_magnitude(const rf_prim *p)
+real isect_prim_magnitude(const scene_prim *p)
 {
     real m = local_magnitude(p);
     if (!p->has_xform)
@@ -696,7 +758,7 @@ real isect_prim_magnitude(const rf_prim *p)
     return norm * m + shift;
 }
 
-real isect_part_magnitude(const rf_prim *p, int part)
+real isect_part_magnitude(const scene_prim *p, int part)
 {
     vec3 v[3], n[3];
     if (p->kind != PRIM_MESH)
@@ -720,7 +782,7 @@ real isect_part_magnitude(const rf_prim *p, int part)
  * so p' keeps p's precision where the correction is 0: on flat parts and
  * at every vertex.)  Flat triangles and other shapes return p.
  */
-vec3 isect_shadow_point(const rf_prim *p, const hit *h)
+vec3 isect_shadow_point(const scene_prim *p, const hit *h)
 {
     vec3 v[3], n[3];
     const vec3 *normals = NULL;
@@ -827,7 +889,7 @@ static vec3 clamp_inside(vec3 lo, vec3 hi, vec3 origin, vec3 margin)
     return origin;
 }
 
-static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
+static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
 {
     if (!p->has_xform)
         return clamp_inside(p->u.box.lo, p->u.box.hi, origin, vec_splat(offset));
@@ -851,7 +913,7 @@ static vec3 keep_inside(const rf_prim *p, vec3 origin, real offset)
  * to either side: which side is inside, a closed mesh's winding does not
  * say (trace.c).
  */
-static vec3 off_the_edges(const rf_prim *p, const hit *h, real offset)
+static vec3 off_the_edges(const scene_prim *p, const hit *h, real offset)
 {
     vec3 v[3], n[3];
     mesh_corners(&p->u.mesh, h->part, v, n);
@@ -860,7 +922,7 @@ static vec3 off_the_edges(const rf_prim *p, const hit *h, real offset)
     return d > 0.0 ? vec_madd(h->point, to, fmin(offset, d / 2) / d) : h->point;
 }
 
-ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
+ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 {
     real m = isect_part_magnitude(p, h->part);
     vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
@@ -870,17 +932,17 @@ ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
-ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir)
+ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
     return spawn(h->point, h->normal, dir, isect_part_magnitude(p, h->part), 1);
 }
 
-int isect_smooth(const rf_prim *p)
+int isect_smooth(const scene_prim *p)
 {
     return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
 }
 
-ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target)
+ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
     return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
 }

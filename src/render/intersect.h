@@ -7,14 +7,16 @@
  *   - on a hit it sets r->tmax = t, fills *h and returns 1; on a miss it
  *     returns 0 and touches neither *r nor *h;
  *   - h->normal is the unit geometric normal oriented as ray.h says (outward
- *     for sphere and box, the declared side for plane, disk and triangle),
+ *     for sphere, box, cylinder, cone and torus, open or closed; the
+ *     declared side for plane, disk and triangle),
  *     h->shading_normal the unit interpolated vertex normal of a triangle
  *     with normals, else a copy of h->normal; h->entering = dir . normal < 0;
  *   - h->prim is set to -1: the caller that knows the index (the BVH) sets
  *     it; h->part is the triangle of a mesh, else 0; h->b1, h->b2 are a
  *     triangle's barycentric weights of corners 1 and 2 (else 0).
  * r->dir need not be unit length (rays taken into a local frame are not); a
- * zero direction never hits.  Sheets (plane, disk, triangle) are two-sided.
+ * zero direction never hits.  Sheets (plane, disk, triangle, and an open
+ * cylinder or cone) are two-sided.
  *
  * Edge cases, as defined here and tested in tests/check_intersect.c:
  *   - sphere: a ray whose line touches the sphere with discriminant exactly
@@ -34,7 +36,12 @@
  *     not fold back around the ray, and an even number (0 or 2) where it
  *     does (a silhouette): a closed mesh is crossed once per surface; an
  *     edge of one triangle only (a lone triangle, an open mesh's rim) is
- *     part of it, so a ray through it hits (tests/check_watertight.c).
+ *     part of it, so a ray through it hits (tests/check_watertight.c);
+ *   - closed cylinder and cone: like the box, one interval per ray (the
+ *     rim between side and cap leaves no gap); an open one has no caps
+ *     and keeps the side's crossings between the end planes (closed);
+ *   - torus: up to 4 crossings; a ray that only touches it (a double root
+ *     of its quartic) may be a hit or a miss, as a sphere's graze.
  * Numeric domain: hit/miss decisions multiply two coordinates together, so
  * they are exact in sign only while such products stay normal doubles: keep
  * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
@@ -54,38 +61,49 @@ int isect_plane(vec3 point, vec3 normal, ray *r, hit *h);
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h);
 int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h);
 int isect_box(vec3 lo, vec3 hi, ray *r, hit *h);
+/* A cylinder between the end centres from and to (from != to), radius > 0;
+ * open: no end caps. */
+int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h);
+/* A cone with radius r0 at from and r1 at to (both >= 0, not both 0). */
+int isect_cone(vec3 from, vec3 to, real r0, real r1, int open, ray *r, hit *h);
+/* A ring torus: unit axis, 0 < minor < major. */
+int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h);
+
+/* The most crossings one primitive has with a line: a torus's 4. */
+#define ISECT_MAX_CROSSINGS 4
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
  * ray into the local frame when p->has_xform (t is preserved; point and
  * normals are mapped back to the world).  A mesh is searched triangle by
  * triangle (the BVH does better: it holds the parts below). */
-int isect_prim(const rf_prim *p, ray *r, hit *h);
+int isect_prim(const scene_prim *p, ray *r, hit *h);
 
 /* The first crossings of the surface in (r->tmin, r->tmax), in increasing
- * t: 0, 1 or 2 (a solid crossed through: entry and exit; a mesh: its first
- * two).  r is not changed; each out[i].prim is -1. */
-int isect_prim_all(const rf_prim *p, const ray *r, hit out[2]);
+ * t: 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
+ * torus: two of each; a mesh: its first four).  r is not changed; each
+ * out[i].prim is -1. */
+int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
  * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
  * bounds are not finite (such a primitive must be tested unconditionally). */
-int isect_prim_bounds(const rf_prim *p, vec3 *lo, vec3 *hi);
+int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi);
 
 /* The largest coordinate magnitude a hit point of p is computed from (its
  * vertices, centre plus radius, plane point...): the hit point's rounding
  * error is relative to this, not to the point itself. */
-real isect_prim_magnitude(const rf_prim *p);
+real isect_prim_magnitude(const scene_prim *p);
 
 /*
  * Parts: what the BVH holds.  A mesh's parts are its triangles (part k is
  * geom.tri[k]); every other primitive is one part, 0.  The functions are
  * those above for one part; a hit's h->part says which.
  */
-int isect_part_count(const rf_prim *p);
-int isect_part(const rf_prim *p, int part, ray *r, hit *h);
-int isect_part_all(const rf_prim *p, int part, const ray *r, hit out[2]);
-int isect_part_bounds(const rf_prim *p, int part, vec3 *lo, vec3 *hi);
-real isect_part_magnitude(const rf_prim *p, int part);
+int isect_part_count(const scene_prim *p);
+int isect_part(const scene_prim *p, int part, ray *r, hit *h);
+int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
+int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
+real isect_part_magnitude(const scene_prim *p, int part);
 
 /* Where shadow rays from a hit should start: for a triangle with vertex
  * normals the hit point lifted toward the curved surface those normals
@@ -93,10 +111,10 @@ real isect_part_magnitude(const rf_prim *p, int part);
  * [SHADE-TERMINATOR-1]); for anything else the hit point itself.  The
  * tracer passes a copy of the hit with this point to ray_spawn_hit_to and
  * ray_spawn_hit_shadow. */
-vec3 isect_shadow_point(const rf_prim *p, const hit *h);
+vec3 isect_shadow_point(const scene_prim *p, const hit *h);
 /* Whether p has vertex normals (a smooth triangle or mesh), so that the
  * lifted point can differ from the hit point. */
-int isect_smooth(const rf_prim *p);
+int isect_smooth(const scene_prim *p);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
@@ -130,11 +148,11 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
  * the world origin has an error relative to its vertices or centre, not to
  * the point).  A ray into a box starts inside it on every axis (see
  * intersect.c, keep_inside). */
-ray ray_spawn_hit(const rf_prim *p, const hit *h, vec3 dir);
+ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir);
 /* Shadow rays: from h->point toward a target point, or toward a distant
  * light (the shadow rays' tmin, the offset over |dir|, and tmax =
  * HUGE_VAL). */
-ray ray_spawn_hit_to(const rf_prim *p, const hit *h, vec3 target);
-ray ray_spawn_hit_shadow(const rf_prim *p, const hit *h, vec3 dir);
+ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target);
+ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir);
 
 #endif

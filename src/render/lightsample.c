@@ -53,7 +53,7 @@ void light_frame(vec3 n, vec3 *t1, vec3 *t2)
     *t2 = vec_make(b, sign + n.y * n.y * a, -n.y);
 }
 
-vec3 light_point(const rf_light *light, vec3 t1, vec3 t2, double s, double t)
+vec3 light_point(const scene_light *light, vec3 t1, vec3 t2, double s, double t)
 {
     if (light->kind == LIGHT_RECTANGLE)
         return vec_add(light->position, vec_add(vec_scale(light->edge_u, s), vec_scale(light->edge_v, t)));

@@ -34,6 +34,6 @@ void light_frame(vec3 n, vec3 *t1, vec3 *t2);
 /* The position of a distributed light's sample for parameter (s, t) in the
  * unit square; t1, t2 as light_frame gives them for a disk (unused for a
  * rectangle). */
-vec3 light_point(const rf_light *light, vec3 t1, vec3 t2, double s, double t);
+vec3 light_point(const scene_light *light, vec3 t1, vec3 t2, double s, double t);
 
 #endif

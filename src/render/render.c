@@ -53,53 +53,91 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->refraction = t->refraction;
 }
 
-static int trace_rows(const tracer *t, const render_opts *opts, rf_image *out, render_stats *stats)
+int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts)
 {
-    for (int j = 0; j < out->height; j++) {
-        for (int i = 0; i < out->width; i++) {
-            rgb c = render_pixel(t, out->width, out->height, stats->samples, i, j, &stats->trace);
-            double *px = img_pixel(out, i, j);
-            px[0] = c.x;
-            px[1] = c.y;
-            px[2] = c.z;
+    const render_opts *o = opts;
+    render_stats *stats = &r->stats;
+    memset(r, 0, sizeof *r);
+    if (o)
+        r->opts = *o;
+    stats->width = o && o->width > 0 ? o->width : scene->image.width;
+    stats->height = o && o->height > 0 ? o->height : scene->image.height;
+    stats->samples = o && o->samples > 0 ? o->samples : scene->image.samples;
+    double start = render_clock();
+    if (!tracer_init(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0))
+        return STATUS_NO_MEMORY;
+    r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
+    stats->max_depth = r->tracer.max_depth;
+    stats->build_seconds = render_clock() - start;
+    record_setup(&r->tracer, stats);
+    return STATUS_OK;
+}
+
+void renderer_free(renderer *r)
+{
+    tracer_free(&r->tracer);
+}
+
+/* v as float; beyond FLT_MAX (a radiance can reach DBL_MAX) the largest
+ * float, so a float target never holds an infinity. */
+static float to_float(real v)
+{
+    return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v;
+}
+
+static void store(const render_target *target, int x, int y, rgb c)
+{
+    size_t at = (size_t)(y - target->y0) * target->stride + 3 * (size_t)(x - target->x0);
+    if (target->f32) {
+        target->f32[at] = to_float(c.x);
+        target->f32[at + 1] = to_float(c.y);
+        target->f32[at + 2] = to_float(c.z);
+    } else {
+        target->f64[at] = (double)c.x;
+        target->f64[at + 1] = (double)c.y;
+        target->f64[at + 2] = (double)c.z;
+    }
+}
+
+int renderer_region(renderer *r, const render_target *target)
+{
+    render_stats *stats = &r->stats;
+    const render_opts *opts = &r->opts;
+    int rows = target->y1 - target->y0, status = STATUS_OK;
+    double start = render_clock();
+    stats->trace.tree_overflow = 0;
+    for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
+        for (int i = target->x0; i < target->x1; i++) {
+            rgb c = render_pixel(&r->tracer, stats->width, stats->height, stats->samples, i, j, &stats->trace);
+            store(target, i, j, c);
             if (stats->trace.tree_overflow) {
                 stats->overflow_x = i;
                 stats->overflow_y = j;
-                return REFRAY_EXIT_DATAERR;
+                status = STATUS_DATA;
+                break;
             }
         }
-        if (opts && opts->progress && opts->progress(opts->progress_ctx, j + 1, out->height))
-            return REFRAY_EXIT_INTERRUPTED;
+        if (status == STATUS_OK && opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))
+            status = STATUS_CANCELLED;
     }
-    return REFRAY_EXIT_OK;
+    stats->seconds += render_clock() - start;
+    return status;
 }
 
-int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, render_stats *stats)
+int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats)
 {
-    render_stats local;
-    tracer t;
-    if (!stats)
-        stats = &local;
-    memset(stats, 0, sizeof *stats);
-    stats->width = opts && opts->width > 0 ? opts->width : scene->image.width;
-    stats->height = opts && opts->height > 0 ? opts->height : scene->image.height;
-    stats->samples = opts && opts->samples > 0 ? opts->samples : scene->image.samples;
-    double start = render_clock();
-    if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0))
-        return REFRAY_EXIT_SOFTWARE;
-    t.max_tree_rays = opts ? opts->max_tree_rays : 0;
-    stats->max_depth = t.max_depth;
-    stats->build_seconds = render_clock() - start;
-    record_setup(&t, stats);
-    if (img_create(out, stats->width, stats->height) != 0) {
-        tracer_free(&t);
-        return REFRAY_EXIT_SOFTWARE;
+    renderer r;
+    int status = renderer_init(&r, scene, opts);
+    if (status == STATUS_OK && img_create_mem(out, r.stats.width, r.stats.height, &scene->mem) != STATUS_OK)
+        status = STATUS_NO_MEMORY;
+    if (status == STATUS_OK) {
+        render_target all = {0, 0, out->width, out->height, NULL, out->rgb, 3 * (size_t)out->width};
+        status = renderer_region(&r, &all);
+        if (status != STATUS_OK)
+            img_free(out);
     }
-    start = render_clock();
-    int status = trace_rows(&t, opts, out, stats);
-    stats->seconds = render_clock() - start;
-    tracer_free(&t);
-    if (status != REFRAY_EXIT_OK)
-        img_free(out);
+    if (stats)
+        *stats = r.stats;
+    renderer_free(&r);
     return status;
 }

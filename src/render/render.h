@@ -1,6 +1,7 @@
 /*
  * render.h - the image loop: every pixel's k x k camera rays, traced and
- * averaged with a box filter (slide 45's RayTrace()).
+ * averaged with a box filter (slide 45's RayTrace()), over a whole image or
+ * over one region of it at a time.
  */
 #ifndef REFRAY_RENDER_H
 #define REFRAY_RENDER_H
@@ -15,7 +16,8 @@ typedef struct render_opts {
     int max_depth;        /* 0: the scene's */
     int light_samples;    /* > 0: samples of every distributed light; 0: each light's own */
     long max_tree_rays;   /* rays per camera ray before the render is refused; 0: no limit */
-    /* Called after every row; a non-zero return stops the render (SIGINT). */
+    /* Called after every row of a region (rows_total: the region's); a
+     * non-zero return stops the render (SIGINT). */
     int (*progress)(void *ctx, int rows_done, int rows_total);
     void *progress_ctx;
 } render_opts;
@@ -31,14 +33,47 @@ typedef struct render_stats {
     double build_seconds; /* of the acceleration structure */
 } render_stats;
 
+/* Where a region's pixels go: pixel (x, y) of the region [x0, x1) x
+ * [y0, y1) of the image is written to the three elements at
+ * (y - y0) * stride + 3 * (x - x0) of f32 (when not NULL) or of f64. */
+typedef struct render_target {
+    int x0, y0, x1, y1;
+    float *f32;
+    double *f64;
+    size_t stride;       /* elements from one row to the next, >= 3 * (x1 - x0) */
+} render_target;
+
+/* A scene made ready to render: its tracer (BVH, light tables, from the
+ * scene's allocator), the options, and the statistics summed over every
+ * region rendered so far. */
+typedef struct renderer {
+    tracer tracer;
+    render_opts opts;
+    render_stats stats;
+} renderer;
+
+/* Builds the tracer for scene with opts (NULL: the scene's settings) and
+ * fixes the image size.  Returns STATUS_OK or STATUS_NO_MEMORY (then
+ * nothing is left to free). */
+int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts);
+
+/* Renders the region of target (inside r->stats.width x height, checked by
+ * the caller) into it, adding to r->stats.  Returns STATUS_OK,
+ * STATUS_CANCELLED when progress asked to stop, or STATUS_DATA when a ray
+ * tree passed max_tree_rays (r->stats.overflow_x, _y say where); the
+ * region's pixels are then partly written. */
+int renderer_region(renderer *r, const render_target *target);
+
+void renderer_free(renderer *r);
+
 /*
  * Renders scene into out (created here; free it with img_free).  Returns
- * REFRAY_EXIT_OK, REFRAY_EXIT_INTERRUPTED when progress asked to stop,
- * REFRAY_EXIT_DATAERR when a ray tree passed max_tree_rays (stats->trace
- * then says where), or REFRAY_EXIT_SOFTWARE when out of memory; out is
+ * STATUS_OK, STATUS_CANCELLED when progress asked to stop,
+ * STATUS_DATA when a ray tree passed max_tree_rays (stats->trace
+ * then says where), or STATUS_NO_MEMORY when out of memory; out is
  * freed on every failure.
  */
-int render_image(const rf_scene *scene, const render_opts *opts, rf_image *out, render_stats *stats);
+int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats);
 
 /* The colour of one pixel (i, j) with a k x k grid: what render_image
  * stores, exposed for tests and for the oracle's comparisons. */

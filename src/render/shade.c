@@ -25,7 +25,7 @@ static rgb clamp_finite(rgb c)
     return vec_min(c, vec_splat(DBL_MAX));
 }
 
-rgb shade_falloff(rgb power, real d, real d0, rf_falloff falloff)
+rgb shade_falloff(rgb power, real d, real d0, scene_falloff falloff)
 {
     real s = d + d0;
     if (falloff == FALLOFF_NONE)

@@ -35,7 +35,7 @@ rgb shade_ambient(rgb kd, rgb ia);
  * > 0 (or is NaN) the power is returned unchanged, and a result too large for
  * a double is clamped to DBL_MAX, so the result is never Inf or NaN.
  */
-rgb shade_falloff(rgb power, real d, real d0, rf_falloff falloff);
+rgb shade_falloff(rgb power, real d, real d0, scene_falloff falloff);
 
 /* [SHADE-SAMPLE-1] Power of one of `samples` >= 1 point sources of a
  * distributed light (slides 3, 5): E/samples. */

@@ -24,25 +24,25 @@
 
 /* What shade() knows about the point it shades. */
 typedef struct surface {
-    const rf_material *m;
-    const rf_prim *prim;
+    const scene_material *m;
+    const scene_prim *prim;
     const hit *h;
     const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
 } surface;
 
-int trace_solid_id(const rf_scene *s, int prim)
+int trace_solid_id(const scene_model *s, int prim)
 {
-    const rf_prim *p = &s->prims[prim];
-    if (p->kind == PRIM_SPHERE || p->kind == PRIM_BOX)
+    const scene_prim *p = &s->prims[prim];
+    if (scene_prim_is_solid(p))
         return prim;
     if (p->kind == PRIM_MESH && p->u.mesh.closed)
         return prim;
     return -1;
 }
 
-int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
+int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
     memset(t, 0, sizeof *t);
     t->scene = s;
@@ -52,13 +52,13 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
     t->terminator_offset = 1;
-    t->lights = calloc((size_t)(s->light_count ? s->light_count : 1), sizeof *t->lights);
-    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count)) {
+    t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
+    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
         tracer_free(t);
         return 0;
     }
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *light = &s->lights[i];
+        const scene_light *light = &s->lights[i];
         t->lights[i].samples = light_samples > 0 ? light_samples : light->samples;
         if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
             t->lights[i].grid = light_grid_for(t->lights[i].samples);
@@ -76,12 +76,13 @@ int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples)
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
-    free(t->lights);
+    if (t->scene)
+        mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
     t->lights = NULL;
 }
 
 typedef struct shadow_walk {
-    const rf_scene *scene;
+    const scene_model *scene;
     real carried;
 } shadow_walk;
 
@@ -89,7 +90,7 @@ typedef struct shadow_walk {
 static int shadow_crossing(void *ctx, const hit *h)
 {
     shadow_walk *w = ctx;
-    const rf_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
+    const scene_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
     w->carried = shade_shadow_transmission(w->carried, m->t);
     return w->carried == 0;
 }
@@ -109,7 +110,7 @@ typedef struct direct_sum {
 } direct_sum;
 
 /* One point source at pos (distant: at infinity along -direction). */
-static void add_source(const tracer *t, const surface *s, const rf_light *light, vec3 pos, rgb power,
+static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
                        direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -150,7 +151,7 @@ static void add_source(const tracer *t, const surface *s, const rf_light *light,
 static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
 {
-    const rf_light *light = &t->scene->lights[index];
+    const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
     uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
@@ -167,7 +168,7 @@ static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, 
 {
     direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
     for (int i = 0; i < t->scene->light_count; i++) {
-        const rf_light *light = &t->scene->lights[i];
+        const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
             add_source(t, s, light, light->position, light->power, &sum, st);
         else
@@ -226,7 +227,7 @@ typedef struct interface {
     real reach;          /* a crossing whose point is this close belongs to it */
     int count;
     hit h[INTERFACE_MAX];
-    const rf_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
+    const scene_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
     const hit *spawn_hit;
 } interface;
 
@@ -264,7 +265,7 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
     f->spawn_prim = s->prim;
     f->spawn_hit = s->h;
     for (int k = 1; k < f->count; k++) {
-        const rf_prim *p = &t->scene->prims[f->h[k].prim];
+        const scene_prim *p = &t->scene->prims[f->h[k].prim];
         if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
             f->spawn_prim = p;
             f->spawn_hit = &f->h[k];
@@ -278,7 +279,7 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
  * crossings here (on its first one; the others do nothing): entered when it
  * was not on the stack before, left when it was.  Its winding is not
  * trusted (a file may wind it inward, or inconsistently). */
-static int crossing_effect(const rf_scene *sc, const interface *f, const medium_stack *before, int k)
+static int crossing_effect(const scene_model *sc, const interface *f, const medium_stack *before, int k)
 {
     int solid = trace_solid_id(sc, f->h[k].prim), odd = 0;
     if (solid < 0)
@@ -302,7 +303,7 @@ static int crossing_effect(const rf_scene *sc, const interface *f, const medium_
 static int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
                            real *through, trace_stats *st)
 {
-    const rf_scene *sc = t->scene;
+    const scene_model *sc = t->scene;
     int solids = 0;
     *through = 1;
     for (int k = 1; k < f->count; k++)
@@ -394,7 +395,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
 /* Solids the probe ray crosses: count and nearest crossing of each. */
 enum { PROBE_MAX = 64 };
 typedef struct probe {
-    const rf_scene *scene;
+    const scene_model *scene;
     int count;
     int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
     real first[PROBE_MAX];
@@ -423,16 +424,12 @@ static int probe_crossing(void *ctx, const hit *h)
     return 0;
 }
 
-/* Strictly inside a sphere or box (in its own frame); for a mesh, an odd
+/* Strictly inside a solid primitive (in its own frame); for a mesh, an odd
  * number of crossings of the probe. */
-static int contains(const rf_prim *p, vec3 point, int crossings)
+static int contains(const scene_prim *p, vec3 point, int crossings)
 {
-    vec3 q = p->has_xform ? xform_point(&p->to_local, point) : point;
-    if (p->kind == PRIM_SPHERE)
-        return vec_length(vec_sub(q, p->u.sphere.center)) < p->u.sphere.radius;
-    if (p->kind == PRIM_BOX)
-        return q.x > p->u.box.lo.x && q.x < p->u.box.hi.x && q.y > p->u.box.lo.y && q.y < p->u.box.hi.y &&
-               q.z > p->u.box.lo.z && q.z < p->u.box.hi.z;
+    if (scene_prim_is_solid(p))
+        return scene_prim_contains(p, point);
     return crossings % 2 == 1;
 }
 
@@ -461,7 +458,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
                 best = k;
         if (best < 0)
             return;
-        const rf_prim *p = &t->scene->prims[pr.prim[best]];
+        const scene_prim *p = &t->scene->prims[pr.prim[best]];
         media_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
         pr.crossings[best] = -1;
     }

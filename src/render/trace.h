@@ -48,13 +48,13 @@ typedef struct medium_stack {
 } medium_stack;
 
 typedef struct tracer {
-    const rf_scene *scene;
+    const scene_model *scene;
     bvh accel;
     light_setup *lights;
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
-     * scene could use them (rf_features), so their work is left out. */
+     * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
     int terminator_offset;    /* shadow rays of smooth triangles start at the
                                  lifted point (isect_shadow_point): 1 by
@@ -64,10 +64,11 @@ typedef struct tracer {
 } tracer;
 
 
-/* Builds the acceleration structure.  max_depth <= 0 takes the scene's;
+/* Builds the acceleration structure, in memory from the scene's allocator.
+ * max_depth <= 0 takes the scene's;
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
-int tracer_init(tracer *t, const rf_scene *s, int max_depth, int light_samples);
+int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
@@ -83,9 +84,10 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
  * when the tracer has no refraction pass. */
 void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
 
-/* Identity of the solid a primitive is (sphere, box, closed mesh: its
- * index), or -1 for a sheet (plane, disk, lone triangle, a mesh that is not
- * closed), which has no inside. */
-int trace_solid_id(const rf_scene *s, int prim);
+/* Identity of the solid a primitive is (sphere, box, closed cylinder or
+ * cone, torus, closed mesh: its index), or -1 for a sheet (plane, disk,
+ * lone triangle, open cylinder or cone, a mesh that is not closed), which
+ * has no inside. */
+int trace_solid_id(const scene_model *s, int prim);
 
 #endif

@@ -1,9 +1,10 @@
 /*
  * loader.c - the state of one load: the scene being built, its growable
- * arrays, and the out-of-memory flag every pass checks.
+ * arrays, the files the resolver gives it, and the out-of-memory flag
+ * every pass checks.
  */
 #include <limits.h>
-#include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include "scene/loader.h"
 
@@ -15,7 +16,7 @@ void loader_oom(loader *L)
 }
 
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s)
+void loader_scene_defaults(scene_model *s)
 {
     s->image.width = 640;
     s->image.height = 480;
@@ -33,18 +34,18 @@ void loader_scene_defaults(rf_scene *s)
     s->camera.true_up = vec_make(0, 1, 0);
     s->camera.where = src_span_none();
     s->oracle_where = src_span_none();
-    source_set_init(&s->sources);
+    source_set_init(&s->sources, &s->mem);
 }
 
 /* Doubles *cap until count + 1 fits; refuses past limit.  0 on failure. */
-static int grow(void **items, int *cap, int count, size_t size, long limit)
+static int grow(const mem *m, void **items, int *cap, int count, size_t size, long limit)
 {
     if (count < *cap)
         return 1;
     if (count >= limit || count >= INT_MAX / 2)
         return 0;
     int next = *cap ? 2 * *cap : 16;
-    void *grown = realloc(*items, (size_t)next * size);
+    void *grown = mem_resize_array(m, *items, (size_t)*cap, (size_t)next, size);
     if (!grown)
         return 0;
     *items = grown;
@@ -52,9 +53,9 @@ static int grow(void **items, int *cap, int count, size_t size, long limit)
     return 1;
 }
 
-rf_prim *loader_add_prim(loader *L, src_span where)
+scene_prim *loader_add_prim(loader *L, src_span where)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     long used = s->prim_count + L->mesh_triangles;
     if (used >= L->limits->max_primitives) {
         if (used == L->limits->max_primitives)
@@ -64,7 +65,7 @@ rf_prim *loader_add_prim(loader *L, src_span where)
         return NULL;
     }
     void *items = s->prims;
-    if (!grow(&items, &L->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
+    if (!grow(L->mem, &items, &s->prim_cap, s->prim_count, sizeof *s->prims, L->limits->max_primitives)) {
         loader_oom(L);
         return NULL;
     }
@@ -72,11 +73,11 @@ rf_prim *loader_add_prim(loader *L, src_span where)
     return &s->prims[s->prim_count++];
 }
 
-rf_light *loader_add_light(loader *L)
+scene_light *loader_add_light(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->lights;
-    if (!grow(&items, &L->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->light_cap, s->light_count, sizeof *s->lights, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
@@ -84,56 +85,152 @@ rf_light *loader_add_light(loader *L)
     return &s->lights[s->light_count++];
 }
 
-rf_material *loader_add_material(loader *L)
+scene_material *loader_add_material(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->materials;
-    int cap = L->material_cap;
-    if (!grow(&items, &cap, s->material_count, sizeof *s->materials, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->material_cap, s->material_count, sizeof *s->materials, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
     s->materials = items;
-    if (cap != L->material_cap) {
-        int *uses = realloc(L->material_uses, (size_t)cap * sizeof *uses);
-        if (!uses) {
-            L->material_cap = cap;
-            loader_oom(L);
-            return NULL;
-        }
-        L->material_uses = uses;
-        L->material_cap = cap;
+    items = L->material_uses;
+    if (!grow(L->mem, &items, &L->uses_cap, s->material_count, sizeof *L->material_uses, INT_MAX)) {
+        loader_oom(L);
+        return NULL;
     }
+    L->material_uses = items;
     L->material_uses[s->material_count] = 0;
-    rf_material *m = &s->materials[s->material_count++];
+    scene_material *m = &s->materials[s->material_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-rf_mesh *loader_add_mesh(loader *L)
+scene_mesh *loader_add_mesh(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     void *items = s->meshes;
-    if (!grow(&items, &L->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
+    if (!grow(L->mem, &items, &s->mesh_cap, s->mesh_count, sizeof *s->meshes, INT_MAX)) {
         loader_oom(L);
         return NULL;
     }
     s->meshes = items;
-    rf_mesh *m = &s->meshes[s->mesh_count++];
+    scene_mesh *m = &s->meshes[s->mesh_count++];
     memset(m, 0, sizeof *m);
     return m;
 }
 
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings)
+/* Shrinks one array to count entries; keeps it as it is when that fails. */
+static void trim(const mem *m, void **items, int *cap, int count, size_t size)
+{
+    if (count >= *cap)
+        return;
+    if (count == 0) {
+        mem_free(m, *items, (size_t)*cap * size);
+        *items = NULL;
+        *cap = 0;
+        return;
+    }
+    void *fit = mem_resize_array(m, *items, (size_t)*cap, (size_t)count, size);
+    if (fit) {
+        *items = fit;
+        *cap = count;
+    }
+}
+
+void loader_trim(loader *L)
+{
+    scene_model *s = L->scene;
+    void *p = s->prims;
+    trim(L->mem, &p, &s->prim_cap, s->prim_count, sizeof *s->prims);
+    s->prims = p;
+    p = s->lights;
+    trim(L->mem, &p, &s->light_cap, s->light_count, sizeof *s->lights);
+    s->lights = p;
+    p = s->materials;
+    trim(L->mem, &p, &s->material_cap, s->material_count, sizeof *s->materials);
+    s->materials = p;
+    p = s->meshes;
+    trim(L->mem, &p, &s->mesh_cap, s->mesh_count, sizeof *s->meshes);
+    s->meshes = p;
+}
+
+/* Asks the resolver for name into *src; STATUS_OK, or another status with
+ * the reason in why (out of memory reported). */
+static int ask(loader *L, const char *name, src_span at, scene_source *src, char *why, size_t why_size)
+{
+    const scene_resolver *r = L->resolver;
+    const char *from = L->scene->sources.files[at.file]->path;
+    memset(src, 0, sizeof *src);
+    why[0] = '\0';
+    int status = STATUS_NO_INPUT;
+    if (r->fetch)
+        status = r->fetch(r->user, from, name, src, why, why_size);
+    else
+        snprintf(why, why_size, "cannot read '%s': this load reads no files", name);
+    if (status == STATUS_NO_MEMORY)
+        loader_oom(L);
+    return status;
+}
+
+static void give_back(loader *L, scene_source *src)
+{
+    if (L->resolver->release)
+        L->resolver->release(L->resolver->user, src);
+    memset(src, 0, sizeof *src);
+}
+
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+{
+    scene_source src;
+    if (ask(L, name, at, &src, why, why_size) != STATUS_OK)
+        return -1;
+    int file = source_set_add(&L->scene->sources, src.path ? src.path : name, src.text, src.len, at);
+    if (identity && file >= 0) {
+        *identity = mem_strdup(L->mem, src.identity ? src.identity : L->scene->sources.files[file]->path);
+        if (!*identity)
+            file = -1;
+    }
+    give_back(L, &src);
+    if (file < 0)
+        loader_oom(L);
+    return file;
+}
+
+int loader_fetch_mesh(loader *L, const char *name, src_span at, scene_source *held, char *why, size_t why_size)
+{
+    if (ask(L, name, at, held, why, why_size) != STATUS_OK)
+        return -1;
+    int file = source_set_lend(&L->scene->sources, held->path ? held->path : name, held->text, held->len, at);
+    if (file < 0) {
+        give_back(L, held);
+        loader_oom(L);
+        return -1;
+    }
+    L->scene->sources.files[file]->is_mesh = 1;
+    return file;
+}
+
+void loader_release_mesh(loader *L, int file, scene_source *held)
+{
+    if (!L->scene->sources.files[file]->lent)
+        return;
+    source_set_release(&L->scene->sources, file);
+    give_back(L, held);
+}
+
+void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
 {
     memset(L, 0, sizeof *L);
     L->scene = s;
-    L->limits = limits;
-    diag_init(&L->diag, &s->sources, diag_out);
-    L->diag.max_errors = (int)limits->max_errors;
-    L->diag.warnings_enabled = warnings;
-    arena_init(&L->arena);
-    env_init(&L->env);
+    L->limits = &o->limits;
+    L->resolver = &o->resolver;
+    L->mem = &s->mem;
+    diag_init(&L->diag, &s->sources, o->sink, o->sink_user);
+    L->diag.max_errors = (int)o->limits.max_errors;
+    L->diag.warnings_enabled = o->warnings;
+    arena_init(&L->arena, &s->mem);
+    env_init(&L->env, &s->mem);
     L->image_where = src_span_none();
     L->camera_where = src_span_none();
     L->default_material = -1;
@@ -143,7 +240,8 @@ void loader_free(loader *L)
 {
     arena_free(&L->arena);
     env_free(&L->env);
-    free(L->include_stack);
-    free(L->material_uses);
+    for (int i = 0; i < L->include_depth; i++)
+        mem_free_string(L->mem, L->include_stack[i]);
+    mem_free(L->mem, L->include_stack, (size_t)L->include_cap * sizeof *L->include_stack);
+    mem_free(L->mem, L->material_uses, (size_t)L->uses_cap * sizeof *L->material_uses);
 }
-

@@ -17,20 +17,23 @@
 #include "lang/polymesh.h"
 
 typedef struct loader {
-    rf_scene *scene;            /* being filled; owns the sources */
-    const rf_limits *limits;
+    scene_model *scene;            /* being filled; owns the sources */
+    const scene_limits *limits;
+    const scene_resolver *resolver;
+    const mem *mem;             /* the scene's allocator */
     diag diag;
     arena arena;                /* syntax trees of every file read */
     env env;                    /* constants in scope */
-    char **include_stack;       /* real paths of the files being lowered, outermost first */
-    int include_depth;
+    char **include_stack;       /* identities of the files being lowered, outermost first */
+    int include_depth, include_cap;
     long loop_iterations;       /* over the whole load */
     long mesh_triangles;        /* over the whole load: they count as primitives for the limit */
     int *material_uses;         /* per scene material: how many primitives use it */
-    int material_cap, prim_cap, light_cap, mesh_cap;
+    int uses_cap;               /* entries allocated in material_uses */
     src_span image_where;       /* first `image` block (file -1: none yet) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
+    const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
 } loader;
 
@@ -45,8 +48,9 @@ typedef struct props {
 
 /* lower.c */
 int lower_statements(loader *L, const ast *list);
-/* Parses sources.files[file] and lowers it in the current scope. */
-int loader_lower_file(loader *L, int file);
+/* Parses sources.files[file] and lowers it in the current scope; identity
+ * (taken over, freed here) is on the include stack meanwhile. */
+int loader_lower_file(loader *L, int file, char *identity);
 
 /* lower_props.c: each returns 1 when the value is usable (given or
  * defaulted), 0 after reporting an error. */
@@ -85,25 +89,57 @@ int lower_degenerate(vec3 a, vec3 b, vec3 c);
 int lower_mirrors(const xform *w);
 
 /* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
- * `at`) becomes scene.meshes[k] and one PRIM_MESH primitive made from
- * *proto (material set; kind, mesh and u are filled in).  Takes over (and
+ * `at`; its text held in *held, given back here once the mesh is built)
+ * becomes scene.meshes[k] and one PRIM_MESH primitive made from *proto
+ * (material set; kind, mesh and u are filled in).  Takes over (and
  * changes) pm's arrays; pm must still be freed.  Returns 1, or 0 after
  * reporting an error. */
-int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w, const xform *l);
+int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
+               const xform *w, const xform *l);
+/* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
+void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
+/* A normal or axis n taken to the world by the inverse transpose, made unit
+ * (or left zero or non-finite when it cannot be, for the range check). */
+vec3 lower_transformed_normal(const xform *to_local, vec3 n);
+
+/* lower_quadrics.c: cylinder, cone and torus (block is KW_CYLINDER,
+ * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
+int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim);
+void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
+/* 1 when every number of the placed shape is finite and in its domain. */
+int lower_quadric_in_range(const scene_prim *prim);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 
 /* loader.c: the load's state; an out-of-memory error is reported once. */
-void loader_init(loader *L, rf_scene *s, const rf_limits *limits, FILE *diag_out, int warnings);
+void loader_init(loader *L, scene_model *s, const scene_load_opts *o);
 void loader_free(loader *L);
+/* Asks the resolver for `name`, written in the statement at `at`, and
+ * adds it to the sources as included from `at`.  Returns the file's index,
+ * with *identity a copy of its identity (free with mem_free_string) when
+ * identity is not NULL; or -1 with the resolver's reason in why, not
+ * reported, unless memory ran out (then reported, the flag set). */
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size);
+/* The same for a mesh file, without copying its text (a mesh file can be
+ * tens of megabytes): the sources point into the resolver's text, held in
+ * *held, until loader_release_mesh; no line index is built (a message
+ * finds its line by scanning).  Returns the file's index or -1 as
+ * loader_fetch (nothing then held). */
+int loader_fetch_mesh(loader *L, const char *name, src_span at, scene_source *held, char *why, size_t why_size);
+/* Gives a mesh file's text back to the resolver once no message will
+ * point into it; the file keeps its name (later messages name it without
+ * a line).  Call it exactly once after loader_fetch_mesh succeeded. */
+void loader_release_mesh(loader *L, int file, scene_source *held);
+/* Shrinks the scene's arrays to their counts (the load is over). */
+void loader_trim(loader *L);
 void loader_oom(loader *L);
 /* The defaults of spec/language.md for what a scene does not say. */
-void loader_scene_defaults(rf_scene *s);
+void loader_scene_defaults(scene_model *s);
 /* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
-rf_prim *loader_add_prim(loader *L, src_span where);
-rf_light *loader_add_light(loader *L);
-rf_material *loader_add_material(loader *L);
-rf_mesh *loader_add_mesh(loader *L);
+scene_prim *loader_add_prim(loader *L, src_span where);
+scene_light *loader_add_light(loader *L);
+scene_material *loader_add_material(loader *L);
+scene_mesh *loader_add_mesh(loader *L);
 
 #endif

@@ -3,13 +3,9 @@
  * includes and blocks.  Constants are bound when their `let` is reached, so
  * a name can be used only after it is defined; the same holds for materials.
  */
-/* realpath is an XSI function: it needs more than _POSIX_C_SOURCE. */
-#define _XOPEN_SOURCE 700
 #include <limits.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/parse.h"
 #include "base/suggest.h"
@@ -140,58 +136,42 @@ static int on_include_stack(const loader *L, const char *resolved)
     return 0;
 }
 
-static int read_include(loader *L, const ast *node, const char *path, int *file)
-{
-    char why[512], *text = NULL;
-    size_t len = 0;
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status != 0) {
-        diag_report(&L->diag, DIAG_ERROR, node->head, "%s", why);
-        return 0;
-    }
-    *file = source_set_add(&L->scene->sources, path, text, len, node->span);
-    free(text);
-    if (*file < 0)
-        loader_oom(L);
-    return *file >= 0;
-}
-
+/* The resolver is asked first; its failure is reported only when the
+ * statement is not already wrong as a cycle or as too deep, in that order. */
 static int lower_include(loader *L, const ast *node)
 {
-    const source_file *from = L->scene->sources.files[node->span.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, node->text) : NULL;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
+    char why[512], *identity = NULL;
+    int file = loader_fetch(L, node->text, node->span, &identity, why, sizeof why);
+    if (L->out_of_memory)
         return 0;
-    }
-    int file = -1, ok = 0;
-    char *resolved = realpath(path, NULL);
-    if (resolved && on_include_stack(L, resolved))
+    int ok = 0;
+    if (file >= 0 && on_include_stack(L, identity))
         diag_report(&L->diag, DIAG_ERROR, node->head, "include cycle: '%s' is already being read", node->text);
     else if (L->include_depth > L->limits->max_include_depth) /* the root file is not an include */
         diag_report(&L->diag, DIAG_ERROR, node->head, "includes nested more than %ld deep (--max-include-depth)",
                     L->limits->max_include_depth);
-    else if (read_include(L, node, path, &file))
-        ok = loader_lower_file(L, file);
-    free(resolved);
-    free(path);
+    else if (file < 0)
+        diag_report(&L->diag, DIAG_ERROR, node->head, "%s", why);
+    else {
+        ok = loader_lower_file(L, file, identity);
+        identity = NULL;
+    }
+    mem_free_string(L->mem, identity);
     return ok;
 }
 
 static int lower_oracle(loader *L, const ast *node)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->oracle) {
         diag_report(&L->diag, DIAG_ERROR, node->head, "a scene names one oracle; '%s' is already named", s->oracle);
         return 0;
     }
-    s->oracle = malloc(strlen(node->text) + 1);
+    s->oracle = mem_strdup(L->mem, node->text);
     if (!s->oracle) {
         loader_oom(L);
         return 0;
     }
-    strcpy(s->oracle, node->text);
     s->oracle_where = node->head;
     return 1;
 }
@@ -211,6 +191,9 @@ static int lower_block(loader *L, const ast *node)
     case KW_TRIANGLE:
     case KW_DISK:
     case KW_BOX:
+    case KW_CYLINDER:
+    case KW_CONE:
+    case KW_TORUS:
     case KW_MESH: return lower_primitive(L, node);
     default:
         diag_report(&L->diag, DIAG_ERROR, node->head, "'%s' is a property, not a statement",
@@ -240,31 +223,32 @@ int lower_statements(loader *L, const ast *list)
     return ok && !stop(L);
 }
 
-int loader_lower_file(loader *L, int file)
+int loader_lower_file(loader *L, int file, char *identity)
 {
-    const char *path = L->scene->sources.files[file]->path;
-    char *resolved = realpath(path, NULL);
-    if (!resolved) {
-        resolved = malloc(strlen(path) + 1);
-        if (resolved)
-            strcpy(resolved, path);
+    if (L->include_depth == L->include_cap) {
+        int cap = L->include_cap ? 2 * L->include_cap : 8;
+        char **stack = mem_resize_array(L->mem, L->include_stack, (size_t)L->include_cap, (size_t)cap,
+                                        sizeof *stack);
+        if (!stack) {
+            mem_free_string(L->mem, identity);
+            loader_oom(L);
+            return 0;
+        }
+        L->include_stack = stack;
+        L->include_cap = cap;
     }
-    char **stack = resolved ? realloc(L->include_stack, (size_t)(L->include_depth + 1) * sizeof *stack) : NULL;
-    if (!stack) {
-        free(resolved);
-        loader_oom(L);
-        return 0;
-    }
-    L->include_stack = stack;
-    stack[L->include_depth++] = resolved;
+    L->include_stack[L->include_depth++] = identity;
     int errors = L->diag.errors;
     ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
     int ok = 0;
+    const ast *includer = L->tree;
+    L->tree = tree;
     if (!tree)
         loader_oom(L);
     else if (L->diag.errors == errors)
         ok = lower_statements(L, tree);
-    /* Nested includes may have moved the stack: not `stack` here. */
-    free(L->include_stack[--L->include_depth]);
+    L->tree = includer;
+    /* Nested includes may have moved the stack: index it afresh. */
+    mem_free_string(L->mem, L->include_stack[--L->include_depth]);
     return ok;
 }

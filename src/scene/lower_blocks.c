@@ -71,8 +71,8 @@ static int first_block(loader *L, const ast *block, src_span *seen)
 int lower_image(loader *L, const ast *block)
 {
     props p;
-    rf_image_spec *im = &L->scene->image;
-    const rf_limits *lim = L->limits;
+    scene_image_spec *im = &L->scene->image;
+    const scene_limits *lim = L->limits;
     long w, h, k, depth;
     int first = first_block(L, block, &L->image_where);
     if (!props_collect(L, block, &p) || !first)
@@ -95,7 +95,9 @@ int lower_image(loader *L, const ast *block)
     return ok;
 }
 
-static int camera_kind(loader *L, const props *p, rf_camera *cam)
+/* Perspective or orthographic, and no property of the other kind; both
+ * mistakes are reported when both are made. */
+static int camera_kind(loader *L, const props *p, scene_camera *cam)
 {
     const ast *persp = p->by_keyword[KW_PERSPECTIVE], *ortho = p->by_keyword[KW_ORTHOGRAPHIC];
     if (persp && ortho) {
@@ -114,17 +116,23 @@ static int camera_kind(loader *L, const props *p, rf_camera *cam)
 }
 
 /* forward = look_at - eye; right = forward x up; true_up = right x forward.
- * When look_at - eye overflows, half of each gives the same direction. */
-static int camera_basis(loader *L, const props *p, rf_camera *cam)
+ * When look_at - eye overflows, half of each gives the same direction.
+ * A zero view and a zero up are both reported; parallel only when neither. */
+static int camera_basis(loader *L, const props *p, scene_camera *cam)
 {
     vec3 view = vec_sub(cam->look_at, cam->eye), up;
     if (!vec_is_finite(view))
         view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
-    if (!loader_unit(view, &cam->forward)) {
+    int ok = loader_unit(view, &cam->forward);
+    if (!ok)
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_LOOK_AT] ? KW_LOOK_AT : KW_EYE),
                     "look_at must differ from eye (the view direction has zero length)");
+    if (vec_length(cam->up) == 0) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP), "up must not be a zero-length vector");
         return 0;
     }
+    if (!ok)
+        return 0;
     loader_unit(cam->up, &up);
     vec3 side = vec_cross(cam->forward, up);
     if (vec_length(side) < 1e-9) {
@@ -137,28 +145,27 @@ static int camera_basis(loader *L, const props *p, rf_camera *cam)
     return 1;
 }
 
+/* Every property is checked even after an error, so one run reports all
+ * of a camera's mistakes ([LANG-CAMERA-2]).  A second camera is checked
+ * into a copy and reported, the first one kept. */
 int lower_camera(loader *L, const ast *block)
 {
     props p;
-    rf_camera *cam = &L->scene->camera;
+    scene_camera copy = L->scene->camera;
     int first = first_block(L, block, &L->camera_where);
-    if (!props_collect(L, block, &p) || !first)
-        return 0;
+    scene_camera *cam = first ? &L->scene->camera : &copy;
+    int ok = props_collect(L, block, &p) & first;
     cam->where = block->head;
-    if (!camera_kind(L, &p, cam))
-        return 0;
-    int ok = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
-    ok &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
-    ok &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
-    if (ok && vec_length(cam->up) == 0) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(&p, KW_UP), "up must not be a zero-length vector");
-        ok = 0;
-    }
+    ok &= camera_kind(L, &p, cam);
+    int placed = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
+    placed &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
+    placed &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
     ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov) &&
           in_range(L, props_value_span(&p, KW_FOV), "fov", cam->fov, 0, 1, 180, 1);
     ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width) &&
           in_range(L, props_value_span(&p, KW_WIDTH), "width", cam->width, 0, 1, HUGE_VAL, 0);
-    return ok && camera_basis(L, &p, cam);
+    int basis = placed && camera_basis(L, &p, cam);
+    return ok && basis;
 }
 
 int lower_ambient(loader *L, const ast *block)
@@ -173,7 +180,7 @@ int lower_ambient(loader *L, const ast *block)
     return 1;
 }
 
-static int falloff(loader *L, const props *p, rf_falloff *out)
+static int falloff(loader *L, const props *p, scene_falloff *out)
 {
     static const char *const names[] = {"linear", "inverse_square", "none"};
     const char *name;
@@ -185,7 +192,7 @@ static int falloff(loader *L, const props *p, rf_falloff *out)
         return 1;
     for (int i = 0; i < 3; i++) {
         if (strcmp(name, names[i]) == 0) {
-            *out = (rf_falloff)i;
+            *out = (scene_falloff)i;
             return 1;
         }
     }
@@ -196,7 +203,7 @@ static int falloff(loader *L, const props *p, rf_falloff *out)
 }
 
 /* power and, for lights that have a distance, d0 and falloff. */
-static int light_common(loader *L, const props *p, rf_light *light)
+static int light_common(loader *L, const props *p, scene_light *light)
 {
     int ok = props_color(L, p, KW_POWER, vec_splat(1), &light->power) &&
              color_in_range(L, props_value_span(p, KW_POWER), "power", light->power, 0, HUGE_VAL);
@@ -207,7 +214,7 @@ static int light_common(loader *L, const props *p, rf_light *light)
     return ok & falloff(L, p, &light->falloff);
 }
 
-static int rectangle_light(loader *L, const props *p, rf_light *light)
+static int rectangle_light(loader *L, const props *p, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_RECTANGLE];
     value corner, u, v;
@@ -237,7 +244,7 @@ static int rectangle_light(loader *L, const props *p, rf_light *light)
     return 1;
 }
 
-static int disk_light(loader *L, const props *p, rf_light *light)
+static int disk_light(loader *L, const props *p, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_DISK];
     value center, normal, radius;
@@ -257,7 +264,7 @@ static int disk_light(loader *L, const props *p, rf_light *light)
     return 1;
 }
 
-static int distributed_shape(loader *L, const props *p, rf_light *light)
+static int distributed_shape(loader *L, const props *p, scene_light *light)
 {
     const ast *rect = p->by_keyword[KW_RECTANGLE], *disk = p->by_keyword[KW_DISK];
     if (rect && disk) {
@@ -277,7 +284,7 @@ static int distributed_shape(loader *L, const props *p, rf_light *light)
 int lower_light(loader *L, const ast *block)
 {
     props p;
-    rf_light light;
+    scene_light light;
     memset(&light, 0, sizeof light);
     light.where = block->head;
     if (!props_collect(L, block, &p))
@@ -297,14 +304,14 @@ int lower_light(loader *L, const ast *block)
         ok = distributed_shape(L, &p, &light);
     }
     ok &= light_common(L, &p, &light);
-    rf_light *slot = ok ? loader_add_light(L) : NULL;
+    scene_light *slot = ok ? loader_add_light(L) : NULL;
     if (slot)
         *slot = light;
     return slot != NULL;
 }
 
 /* Material properties; the defaults are those of spec/language.md. */
-static int material_props(loader *L, const ast *block, rf_material *m)
+static int material_props(loader *L, const ast *block, scene_material *m)
 {
     props p;
     if (!props_collect(L, block, &p))
@@ -321,7 +328,7 @@ static int material_props(loader *L, const ast *block, rf_material *m)
     return ok;
 }
 
-static int find_material(const rf_scene *s, const char *name)
+static int find_material(const scene_model *s, const char *name)
 {
     for (int i = 0; i < s->material_count; i++)
         if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
@@ -331,11 +338,9 @@ static int find_material(const rf_scene *s, const char *name)
 
 static char *copy_name(loader *L, const char *name)
 {
-    char *copy = malloc(strlen(name) + 1);
+    char *copy = mem_strdup(L->mem, name);
     if (!copy)
         loader_oom(L);
-    else
-        strcpy(copy, name);
     return copy;
 }
 
@@ -350,12 +355,12 @@ int lower_material_def(loader *L, const ast *block)
                     block->text, line);
         return 0;
     }
-    rf_material m;
+    scene_material m;
     memset(&m, 0, sizeof m);
     if (!material_props(L, block, &m))
         return 0;
     m.where = block->head;
-    rf_material *slot = loader_add_material(L);
+    scene_material *slot = loader_add_material(L);
     if (!slot || !(m.name = copy_name(L, block->text)))
         return 0;
     *slot = m;
@@ -366,7 +371,7 @@ static int default_material(loader *L)
 {
     if (L->default_material >= 0)
         return L->default_material;
-    rf_material *m = loader_add_material(L);
+    scene_material *m = loader_add_material(L);
     if (!m)
         return -1;
     memset(m, 0, sizeof *m);
@@ -376,6 +381,53 @@ static int default_material(loader *L)
     m->where = src_span_none();
     L->default_material = L->scene->material_count - 1;
     return L->default_material;
+}
+
+/* Named materials defined anywhere in the file being lowered after
+ * offset `after` (loop bodies included): names and the spans of their names. */
+enum { LATER_MAX = 256 };
+typedef struct later_materials {
+    const char *names[LATER_MAX];
+    src_span where[LATER_MAX];
+    int count;
+} later_materials;
+
+static void collect_later(const ast *list, size_t after, later_materials *out)
+{
+    for (const ast *node = list ? list->first : NULL; node && out->count < LATER_MAX; node = node->next) {
+        if (node->kind == AST_FOR)
+            collect_later(node->first->next->next, after, out);
+        else if (node->kind == AST_BLOCK && node->keyword == KW_MATERIAL && node->text && node->head.begin > after) {
+            out->names[out->count] = node->text;
+            out->where[out->count++] = node->head;
+        }
+    }
+}
+
+/* "did you mean" among the materials the file defines only further down:
+ * 1 when it reported. */
+static int report_defined_later(loader *L, const char *name, src_span at)
+{
+    later_materials later;
+    later.count = 0;
+    if (!L->tree)
+        return 0;
+    collect_later(L->tree, at.begin, &later);
+    const char *hint = suggest_nearest(name, strlen(name), later.names, later.count);
+    int k = 0;
+    while (hint && later.names[k] != hint)
+        k++;
+    if (!hint || later.where[k].file != at.file)
+        return 0;
+    int line, col;
+    source_line_col(L->scene->sources.files[at.file], later.where[k].begin, &line, &col);
+    if (strcmp(hint, name) == 0)
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s': it is defined only later, at line %d "
+                    "(define a material before its first use)", name, line);
+    else
+        diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s' (defined at line %d)?",
+                    name, hint, line);
+    return 1;
 }
 
 static int named_material(loader *L, const char *name, src_span at)
@@ -391,7 +443,7 @@ static int named_material(loader *L, const char *name, src_span at)
     const char *hint = suggest_nearest(name, strlen(name), names, count);
     if (hint)
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s'; did you mean '%s'?", name, hint);
-    else
+    else if (!report_defined_later(L, name, at))
         diag_report(&L->diag, DIAG_ERROR, at, "unknown material '%s' (define it with `material %s { ... }` before use)",
                     name, name);
     return -1;
@@ -404,11 +456,11 @@ int lower_material_ref(loader *L, const props *p)
     if (!prop) {
         index = default_material(L);
     } else if (prop->first->kind == AST_BLOCK) {
-        rf_material m;
+        scene_material m;
         memset(&m, 0, sizeof m);
         if (!material_props(L, prop->first, &m))
             return -1;
-        rf_material *slot = loader_add_material(L);
+        scene_material *slot = loader_add_material(L);
         if (!slot)
             return -1;
         *slot = m;

@@ -1,6 +1,6 @@
 /*
  * lower_mesh.c - a mesh read from a file (a polymesh) becomes the scene's
- * compact world-space store (rf_trimesh) and one PRIM_MESH primitive.
+ * compact world-space store (scene_trimesh) and one PRIM_MESH primitive.
  *
  * On the way: the transforms are applied to every position and normal (a
  * mirroring one swaps two corners of every triangle, as for `triangle`),
@@ -13,7 +13,6 @@
  * an error (spec/language.md, section 8).
  */
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include "scene/loader.h"
 #include "scene/mesh_topo.h"
@@ -36,39 +35,36 @@ static src_span face_span(int file, size_t at)
     return s;
 }
 
-static void *array_of(size_t count, size_t size)
-{
-    return malloc((count > 0 ? count : 1) * size);
-}
-
 /* The reader's positions, mapped by w in place and taken over (unused ones
  * too: range is checked per triangle, so an unused far vertex does not
  * matter). */
-static void world_positions(polymesh *pm, const xform *w, rf_trimesh *g)
+static void world_positions(polymesh *pm, const xform *w, scene_trimesh *g)
 {
     for (int i = 0; i < pm->position_count; i++)
         pm->positions[i] = xform_point(w, pm->positions[i]);
     g->positions = pm->positions;
     g->position_count = pm->position_count;
+    g->position_cap = pm->position_cap;
     pm->positions = NULL;
-    pm->position_count = 0;
+    pm->position_count = pm->position_cap = 0;
 }
 
 /* The reader's normals through the inverse transpose, made unit, taken
  * over; one that cannot be (zero or not finite) becomes zero, refused if a
  * triangle uses it. */
-static void world_normals(polymesh *pm, const xform *l, rf_trimesh *g)
+static void world_normals(polymesh *pm, const xform *l, scene_trimesh *g)
 {
     for (int i = 0; i < pm->normal_count; i++)
         if (!loader_unit(xform_normal(l, pm->normals[i]), &pm->normals[i]))
             pm->normals[i] = vec_splat(0);
     g->normals = pm->normals;
     g->normal_count = pm->normal_count;
+    g->normal_cap = pm->normal_cap;
     pm->normals = NULL;
-    pm->normal_count = 0;
+    pm->normal_count = pm->normal_cap = 0;
 }
 
-static int usable_corners(const rf_trimesh *g, const int *c)
+static int usable_corners(const scene_trimesh *g, const int *c)
 {
     vec3 a = g->positions[c[0]], b = g->positions[c[1]], d = g->positions[c[2]];
     return vec_is_finite(a) && vec_is_finite(b) && vec_is_finite(d) && vec_is_finite(vec_sub(b, a)) &&
@@ -76,7 +72,7 @@ static int usable_corners(const rf_trimesh *g, const int *c)
 }
 
 /* Whether triangle k uses a normal that could not be made unit (reported). */
-static int bad_normal(loader *L, int file, const polymesh *pm, const rf_trimesh *g, int k)
+static int bad_normal(loader *L, int file, const polymesh *pm, const scene_trimesh *g, int k)
 {
     for (int i = 0; pm->tri_normal && i < 3; i++) {
         int n = pm->tri_normal[k][i];
@@ -98,7 +94,7 @@ static void swap_corners(int *c)
 /* Keeps the triangles with area, in file order, moving them down in the
  * reader's arrays, and takes those over; the others are counted in
  * *dropped.  A mirroring transform swaps corners 1 and 2 of each. */
-static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, rf_trimesh *g, polymesh_tally *dropped)
+static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, scene_trimesh *g, polymesh_tally *dropped)
 {
     int kept = 0;
     for (int k = 0; k < pm->triangle_count && !diag_too_many(&L->diag); k++) {
@@ -129,30 +125,36 @@ static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, rf_t
     g->tri = pm->tri;
     g->tri_normal = pm->tri_normal;
     g->tri_count = kept;
+    g->tri_cap = pm->tri_cap;
+    g->tri_normal_cap = pm->tri_normal_cap;
     pm->tri = NULL;
     pm->tri_normal = NULL;
-    pm->triangle_count = 0;
+    pm->triangle_count = pm->tri_cap = pm->tri_normal_cap = 0;
 }
 
 /* Gives back what the reader's doubling arrays hold beyond their counts
  * (up to half of them).  A failed shrink keeps the array as it is. */
-static void *fit(void *array, size_t count, size_t size)
+static void *fit(const mem *m, void *array, int *cap, int count, size_t size)
 {
-    void *fitted = array && count > 0 ? realloc(array, count * size) : NULL;
-    return fitted ? fitted : array;
+    void *fitted = array && count > 0 && count < *cap ? mem_resize_array(m, array, (size_t)*cap, (size_t)count, size)
+                                                      : NULL;
+    if (!fitted)
+        return array;
+    *cap = count;
+    return fitted;
 }
 
-static void fit_arrays(rf_trimesh *g)
+static void fit_arrays(const mem *m, scene_trimesh *g)
 {
-    g->positions = fit(g->positions, (size_t)g->position_count, sizeof *g->positions);
-    g->normals = fit(g->normals, (size_t)g->normal_count, sizeof *g->normals);
-    g->tri = fit(g->tri, (size_t)g->tri_count, sizeof *g->tri);
-    g->tri_normal = fit(g->tri_normal, (size_t)g->tri_count, sizeof *g->tri_normal);
+    g->positions = fit(m, g->positions, &g->position_cap, g->position_count, sizeof *g->positions);
+    g->normals = fit(m, g->normals, &g->normal_cap, g->normal_count, sizeof *g->normals);
+    g->tri = fit(m, g->tri, &g->tri_cap, g->tri_count, sizeof *g->tri);
+    g->tri_normal = fit(m, g->tri_normal, &g->tri_normal_cap, g->tri_count, sizeof *g->tri_normal);
 }
 
 /* One warning for a tally of faces, at the mesh statement, naming the
  * first face: "<verb> N face(s) <what>; the first at x.obj:L:C". */
-static void warn_tally(loader *L, const rf_mesh *m, int file, polymesh_tally t, const char *verb, const char *what)
+static void warn_tally(loader *L, const scene_mesh *m, int file, polymesh_tally t, const char *verb, const char *what)
 {
     char first[600];
     if (t.count == 0)
@@ -163,7 +165,7 @@ static void warn_tally(loader *L, const rf_mesh *m, int file, polymesh_tally t, 
 }
 
 /* [MESH-WARN-1] The warnings about faces. */
-static void report_faces(loader *L, const rf_mesh *m, int file, const polymesh *pm, polymesh_tally dropped)
+static void report_faces(loader *L, const scene_mesh *m, int file, const polymesh *pm, polymesh_tally dropped)
 {
     warn_tally(L, m, file, dropped, "dropped", "with no area (corners on one line, or repeated)");
     warn_tally(L, m, file, pm->nonplanar, "cut",
@@ -174,9 +176,9 @@ static void report_faces(loader *L, const rf_mesh *m, int file, const polymesh *
 }
 
 /* [MESH-WARN-2] The warnings about the surface as a whole. */
-static void report_surface(loader *L, const rf_mesh *m, double t)
+static void report_surface(loader *L, const scene_mesh *m, double t)
 {
-    const rf_mesh_report *r = &m->report;
+    const scene_mesh_report *r = &m->report;
     if (t > 0 && !m->geom.closed)
         diag_report(&L->diag, DIAG_WARNING, m->where,
                     "this transparent mesh is not closed (%d open edge%s, %d edge%s of 3 or more triangles): it is "
@@ -200,19 +202,20 @@ static polymesh_tally all_dropped(const polymesh *pm, polymesh_tally here)
 
 /* The topology into the report, and the open-edge masks when some edge
  * is open (NULL for a closed mesh: nothing to keep). */
-static int analyse(loader *L, rf_mesh *m)
+static int analyse(loader *L, scene_mesh *m)
 {
     mesh_topo topo;
-    unsigned char *open = array_of((size_t)m->geom.tri_count, 1);
-    if (!open || !mesh_topo_analyse(&m->geom, &topo, open)) {
-        free(open);
+    size_t bytes = (size_t)m->geom.tri_count;
+    unsigned char *open = mem_alloc(L->mem, bytes);
+    if (!open || !mesh_topo_analyse(&m->geom, L->mem, &topo, open)) {
+        mem_free(L->mem, open, bytes);
         loader_oom(L);
         return 0;
     }
     if (topo.open_edges > 0)
         m->geom.open = open;
     else
-        free(open);
+        mem_free(L->mem, open, bytes);
     m->geom.closed = topo.closed;
     m->report.oriented = topo.oriented;
     m->report.components = topo.components;
@@ -233,26 +236,19 @@ static int within_limit(loader *L, const polymesh *pm, src_span at)
     return 0;
 }
 
-static char *copy_string(const char *s)
-{
-    char *c = malloc(strlen(s) + 1);
-    if (c)
-        strcpy(c, s);
-    return c;
-}
-
-int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, const xform *w, const xform *l)
+int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
+               const xform *w, const xform *l)
 {
     if (!within_limit(L, pm, at))
         return 0;
-    rf_mesh *m = loader_add_mesh(L);
+    scene_mesh *m = loader_add_mesh(L);
     if (!m)
         return 0;
     int index = L->scene->mesh_count - 1, errors = L->diag.errors;
     polymesh_tally dropped = {0, 0};
     m->where = at;
     m->prim = -1;
-    m->path = copy_string(L->scene->sources.files[file]->path);
+    m->path = mem_strdup(L->mem, L->scene->sources.files[file]->path);
     if (!m->path) {
         loader_oom(L);
         return 0;
@@ -261,7 +257,7 @@ int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, c
     world_positions(pm, w, &m->geom);
     world_normals(pm, l, &m->geom);
     keep_triangles(L, pm, file, lower_mirrors(w), &m->geom, &dropped);
-    fit_arrays(&m->geom);
+    fit_arrays(L->mem, &m->geom);
     if (L->diag.errors != errors)
         return 0;
     dropped = all_dropped(pm, dropped);
@@ -281,13 +277,13 @@ int lower_mesh(loader *L, polymesh *pm, int file, src_span at, rf_prim *proto, c
      * threshold for mapping blocks when a large mapped block is freed, and
      * the scratch allocated after that would stay in its heap (measured:
      * 28 MB more at the peak for a million triangles). */
-    source_set_release(&L->scene->sources, file);
+    loader_release_mesh(L, file, held);
     report_surface(L, m, L->scene->materials[proto->material].t);
     L->mesh_triangles += m->geom.tri_count;
     proto->kind = PRIM_MESH;
     proto->mesh = index;
     proto->u.mesh = m->geom;
-    rf_prim *slot = loader_add_prim(L, proto->where);
+    scene_prim *slot = loader_add_prim(L, proto->where);
     if (!slot)
         return 0;
     *slot = *proto;

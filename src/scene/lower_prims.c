@@ -1,17 +1,18 @@
 /*
- * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements
- * (a mesh's file is read here; lower_mesh.c builds its store).
+ * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements,
+ * and the shared path of every primitive (the cylinder, cone and torus
+ * shapes are read in lower_quadrics.c; a mesh's file is read here,
+ * lower_mesh.c builds its store).
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
- * shape (see rf_prim in scene.h); otherwise the primitive keeps its local
+ * shape (see scene_prim in scene.h); otherwise the primitive keeps its local
  * parameters and the matrix pair, and is intersected in its own frame.
  */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "base/fileio.h"
 #include "scene/loader.h"
 #include "lang/obj.h"
 #include "lang/ply.h"
@@ -95,21 +96,21 @@ static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, 
 /* A normal taken through the inverse transpose, made unit.  When that is
  * impossible the raw result (zero or not finite) is kept, and in_range
  * refuses the primitive. */
-static vec3 transformed_normal(const xform *to_local, vec3 n)
+vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 {
     vec3 raw = xform_normal(to_local, n), unit;
     return loader_unit(raw, &unit) ? unit : raw;
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-static void keep_frame(rf_prim *prim, const xform *to_world, const xform *to_local)
+void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
 {
     prim->has_xform = 1;
     prim->to_world = *to_world;
     prim->to_local = *to_local;
 }
 
-static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
+static void place_sphere(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
@@ -118,21 +119,21 @@ static void place_sphere(rf_prim *prim, const xform *w, const xform *l)
         prim->u.sphere.center = xform_point(w, prim->u.sphere.center);
         prim->u.sphere.radius *= s;
     } else {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
     }
 }
 
-static void place_disk(rf_prim *prim, const xform *w, const xform *l)
+static void place_disk(scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
         return;
     if (xform_is_similarity(w, &s)) {
         prim->u.disk.center = xform_point(w, prim->u.disk.center);
-        prim->u.disk.normal = transformed_normal(l, prim->u.disk.normal);
+        prim->u.disk.normal = lower_transformed_normal(l, prim->u.disk.normal);
         prim->u.disk.radius *= s;
     } else {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
     }
 }
 
@@ -142,10 +143,10 @@ static int is_axis_aligned(const xform *w)
            w->m[2][1] == 0;
 }
 
-static void place_box(rf_prim *prim, const xform *w, const xform *l)
+static void place_box(scene_prim *prim, const xform *w, const xform *l)
 {
     if (!is_axis_aligned(w)) {
-        keep_frame(prim, w, l);
+        lower_keep_frame(prim, w, l);
         return;
     }
     vec3 a = xform_point(w, prim->u.box.lo), b = xform_point(w, prim->u.box.hi);
@@ -166,12 +167,12 @@ int lower_degenerate(vec3 a, vec3 b, vec3 c)
 
 /* Vertices in world space; a mirroring transform would turn the winding
  * (and so the normal) inside out, so two corners are swapped back. */
-static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
+static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
 {
     for (int i = 0; i < 3; i++) {
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
         if (prim->u.triangle.has_normals)
-            prim->u.triangle.n[i] = transformed_normal(l, prim->u.triangle.n[i]);
+            prim->u.triangle.n[i] = lower_transformed_normal(l, prim->u.triangle.n[i]);
     }
     if (lower_mirrors(w)) {
         vec3 t = prim->u.triangle.p[1];
@@ -183,7 +184,7 @@ static void place_triangle(rf_prim *prim, const xform *w, const xform *l)
     }
 }
 
-static int sphere(loader *L, const props *p, rf_prim *prim)
+static int sphere(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
@@ -191,7 +192,7 @@ static int sphere(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int plane(loader *L, const props *p, rf_prim *prim)
+static int plane(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_PLANE;
     int ok = props_vector(L, p, KW_POINT, vec_splat(0), &prim->u.plane.point);
@@ -199,7 +200,7 @@ static int plane(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int disk(loader *L, const props *p, rf_prim *prim)
+static int disk(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_DISK;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
@@ -208,7 +209,7 @@ static int disk(loader *L, const props *p, rf_prim *prim)
     return ok;
 }
 
-static int box(loader *L, const props *p, rf_prim *prim)
+static int box(loader *L, const props *p, scene_prim *prim)
 {
     vec3 a, b;
     prim->kind = PRIM_BOX;
@@ -230,7 +231,7 @@ static int box(loader *L, const props *p, rf_prim *prim)
     return 1;
 }
 
-static int triangle(loader *L, const props *p, rf_prim *prim)
+static int triangle(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_TRIANGLE;
     if (!props_require(L, p, KW_VERTICES))
@@ -259,7 +260,7 @@ static int xform_finite(const xform *a)
     return 1;
 }
 
-static int triangle_in_range(const rf_prim *prim)
+static int triangle_in_range(const scene_prim *prim)
 {
     const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
     int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
@@ -270,7 +271,7 @@ static int triangle_in_range(const rf_prim *prim)
 
 /* Placement can push a finite shape past the largest double, or leave a
  * normal that cannot be made unit: the scene keeps no such number. */
-static int in_range(const rf_prim *prim)
+static int in_range(const scene_prim *prim)
 {
     int ok = 1;
     switch (prim->kind) {
@@ -281,23 +282,25 @@ static int in_range(const rf_prim *prim)
         ok = vec_is_finite(prim->u.disk.center) && is_unit(prim->u.disk.normal) && isfinite(prim->u.disk.radius);
         break;
     case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE:
+    case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
     case PRIM_MESH: break; /* checked triangle by triangle (lower_mesh.c) */
     }
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
 
-static int check_range(loader *L, const rf_prim *prim, src_span at)
+static int check_range(loader *L, const scene_prim *prim, src_span at)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box"};
     if (in_range(prim))
         return 1;
     diag_report(&L->diag, DIAG_ERROR, at,
                 "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
-                kinds[prim->kind]);
+                scene_prim_name(prim->kind));
     return 0;
 }
 
-static int check_triangle(loader *L, const rf_prim *prim, src_span at)
+static int check_triangle(loader *L, const scene_prim *prim, src_span at)
 {
     const vec3 *q = prim->u.triangle.p;
     if (!lower_degenerate(q[0], q[1], q[2]))
@@ -306,37 +309,25 @@ static int check_triangle(loader *L, const rf_prim *prim, src_span at)
     return 0;
 }
 
-static rf_prim *emit(loader *L, const rf_prim *prim)
+static scene_prim *emit(loader *L, const scene_prim *prim)
 {
-    rf_prim *slot = loader_add_prim(L, prim->where);
+    scene_prim *slot = loader_add_prim(L, prim->where);
     if (slot)
         *slot = *prim;
     return slot;
 }
 
-/* Reads the OBJ or PLY file into the load's sources, so its errors point
- * into it: the one place a mesh file is read.  The sources take the text
- * over without a copy (a mesh file can be tens of megabytes). */
-static int read_obj(loader *L, const char *name, src_span at, int *file)
+/* Fetches the OBJ or PLY file into the load's sources, so its errors point
+ * into it: the one place a mesh file is read.  The sources use the
+ * resolver's text without a copy (a mesh file can be tens of megabytes),
+ * held in *held until loader_release_mesh. */
+static int read_mesh_file(loader *L, const char *name, src_span at, scene_source *held, int *file)
 {
-    const source_file *from = L->scene->sources.files[at.file];
-    char *dir = file_dirname(from->path), *path = dir ? file_join(dir, name) : NULL, *text = NULL;
     char why[512];
-    size_t len = 0;
-    free(dir);
-    if (!path) {
-        loader_oom(L);
-        return 0;
-    }
-    int status = file_read_all(path, L->limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (status == 0)
-        *file = source_set_adopt(&L->scene->sources, path, text, len, at);
-    else
+    *file = loader_fetch_mesh(L, name, at, held, why, sizeof why);
+    if (*file < 0 && !L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    free(path);
-    if (status == 0 && *file < 0)
-        loader_oom(L);
-    return status == 0 && *file >= 0;
+    return *file >= 0;
 }
 
 /* A PLY file by its name (".ply", any case) or by its first line. */
@@ -348,37 +339,55 @@ static int is_ply(const source_file *f)
     return named || ply_is_ply(f->text, f->len);
 }
 
-static int mesh(loader *L, const props *p, rf_prim *proto, const xform *w, const xform *l)
+/* `file a` with no constant a: a file name without its quotes. */
+static int unquoted_file(loader *L, const props *p)
+{
+    const ast *v = p->by_keyword[KW_FILE] ? p->by_keyword[KW_FILE]->first : NULL;
+    if (!v || v->kind != AST_NAME || env_find(&L->env, v->text))
+        return 0;
+    diag_report(&L->diag, DIAG_ERROR, v->span, "file names are strings: write \"%s\"", v->text);
+    return 1;
+}
+
+static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, const xform *l)
 {
     const char *name;
     src_span at;
     int file;
-    if (!props_require(L, p, KW_FILE) || !props_string(L, p, KW_FILE, &name, &at) || !read_obj(L, name, at, &file))
+    scene_source held;
+    if (!props_require(L, p, KW_FILE) || unquoted_file(L, p) || !props_string(L, p, KW_FILE, &name, &at) ||
+        !read_mesh_file(L, name, at, &held, &file))
         return 0;
     polymesh pm;
     const source_set *sources = &L->scene->sources;
     long limit = L->limits->max_mesh_triangles;
     int ok = is_ply(sources->files[file]) ? ply_parse(sources, file, &L->diag, limit, &pm)
                                           : obj_parse(sources, file, &L->diag, limit, &pm);
-    if (ok)
-        ok = lower_mesh(L, &pm, file, at, proto, w, l);
+    if (ok < 0)
+        L->out_of_memory = 1; /* the reader said so at the place it ran out */
+    if (ok > 0)
+        ok = lower_mesh(L, &pm, file, &held, at, proto, w, l);
     polymesh_free(&pm);
-    /* Nothing points into the file after this: its text can go. */
-    source_set_release(&L->scene->sources, file);
-    return ok;
+    /* Nothing points into the file after this: its text goes back (when
+     * lower_mesh has not given it back already). */
+    loader_release_mesh(L, file, &held);
+    return ok > 0;
 }
 
-static void place(rf_prim *prim, const xform *w, const xform *l)
+static void place(scene_prim *prim, const xform *w, const xform *l)
 {
     switch (prim->kind) {
     case PRIM_SPHERE: place_sphere(prim, w, l); break;
     case PRIM_DISK: place_disk(prim, w, l); break;
     case PRIM_BOX: place_box(prim, w, l); break;
     case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE:
+    case PRIM_TORUS: lower_place_quadric(prim, w, l); break;
     case PRIM_MESH: break; /* lower_mesh.c places every vertex */
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
-        prim->u.plane.normal = transformed_normal(l, prim->u.plane.normal);
+        prim->u.plane.normal = lower_transformed_normal(l, prim->u.plane.normal);
         /* Any point of the plane names it; the one nearest the origin keeps
          * the hit point's rounding, and so the offset of rays leaving the
          * plane, relative to the plane's distance from the origin rather
@@ -392,7 +401,7 @@ static void place(rf_prim *prim, const xform *w, const xform *l)
 int lower_primitive(loader *L, const ast *block)
 {
     props p;
-    rf_prim prim;
+    scene_prim prim;
     xform w, l;
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;
@@ -408,6 +417,9 @@ int lower_primitive(loader *L, const ast *block)
     case KW_DISK: ok = disk(L, &p, &prim); break;
     case KW_BOX: ok = box(L, &p, &prim); break;
     case KW_TRIANGLE: ok = triangle(L, &p, &prim); break;
+    case KW_CYLINDER:
+    case KW_CONE:
+    case KW_TORUS: ok = lower_quadric(L, &p, (keyword_id)block->keyword, &prim); break;
     default: break;
     }
     prim.material = lower_material_ref(L, &p);

@@ -54,9 +54,32 @@ static const char *sign_hint(const ast *prop)
     return "";
 }
 
+/* `sphere { center radius 1 }`: a property word right after a property
+ * that still waits for values is a name ([LANG-LEX-WORD-3]), so `radius`
+ * became center's value.  When a value is such a word of this block and no
+ * constant of that name exists, the property before it lost its value. */
+static int report_swallowed(loader *L, const ast *prop, const block_schema *schema)
+{
+    if (prop->keyword == KW_MATERIAL || prop->keyword == KW_FALLOFF)
+        return 0;   /* these take a bare name, which may be any word */
+    for (const ast *k = prop->first; k; k = k->next) {
+        int id = k->kind == AST_NAME ? keyword_lookup(k->text, strlen(k->text)) : -1;
+        if (id < 0 || !schema_has(schema, (keyword_id)id) || env_find(&L->env, k->text))
+            continue;
+        diag_report(&L->diag, DIAG_ERROR, k->span,
+                    "'%s' is missing a value: '%s' is read as its value here (a property word starts a "
+                    "property only once the one before has all its values)",
+                    keyword_name((keyword_id)prop->keyword), k->text);
+        return 1;
+    }
+    return 0;
+}
+
 static int check_arity(loader *L, const ast *block, const ast *prop, const block_schema *schema)
 {
     int arity = keyword_get((keyword_id)prop->keyword)->arity;
+    if (report_swallowed(L, prop, schema))
+        return 0;
     if (prop->count == arity)
         return 1;
     if (prop->count > arity) {

@@ -51,12 +51,12 @@ static int same_position(vec3 a, vec3 b)
 
 /* A table of at least 2 n slots (a power of two), all -1; NULL when out of
  * memory.  *mask gets the slot count less one. */
-static int *table_new(size_t n, size_t *mask)
+static int *table_new(const mem *mm, size_t n, size_t *mask)
 {
     size_t size = 16;
     while (size < 2 * n && size < SIZE_MAX / 4 / sizeof(int))
         size *= 2;
-    int *t = malloc(size * sizeof *t);
+    int *t = mem_alloc(mm, size * sizeof *t);
     if (t)
         memset(t, 0xff, size * sizeof *t);
     *mask = size - 1;
@@ -64,10 +64,10 @@ static int *table_new(size_t n, size_t *mask)
 }
 
 /* canon[i]: the first vertex with the position of vertex i. */
-static int weld(const rf_trimesh *m, int *canon)
+static int weld(const scene_trimesh *m, const mem *mm, int *canon)
 {
     size_t mask;
-    int *slot = table_new((size_t)m->position_count, &mask);
+    int *slot = table_new(mm, (size_t)m->position_count, &mask);
     if (!slot)
         return 0;
     for (int i = 0; i < m->position_count; i++) {
@@ -78,14 +78,15 @@ static int weld(const rf_trimesh *m, int *canon)
             slot[k] = i;
         canon[i] = slot[k];
     }
-    free(slot);
+    mem_free(mm, slot, (mask + 1) * sizeof *slot);
     return 1;
 }
 
 typedef struct edges {
-    const rf_trimesh *m;
+    const scene_trimesh *m;
     const int *canon;
     int *nbr;          /* per half-edge: its partner, UNPAIRED or CROWDED */
+    const mem *mem;    /* where the scratch comes from */
 } edges;
 
 static int from_of(const edges *e, int h)
@@ -171,15 +172,16 @@ static void group_by_lower(const edges *e, int *start, int *list)
 static int pair_edges(edges *e, int *crowded)
 {
     int nv = e->m->position_count, widest = 0;
-    int *start = calloc((size_t)nv + 1, sizeof *start);
-    int *list = malloc(3 * (size_t)(e->m->tri_count > 0 ? e->m->tri_count : 1) * sizeof *list);
+    size_t halves = 3 * (size_t)e->m->tri_count;
+    int *start = mem_calloc(e->mem, (size_t)nv + 1, sizeof *start);
+    int *list = mem_alloc(e->mem, halves * sizeof *list);
     half *g = NULL;
     int ok = start && list;
     if (ok) {
         group_by_lower(e, start, list);
         for (int v = 0; v < nv; v++)
             widest = start[v + 1] - start[v] > widest ? start[v + 1] - start[v] : widest;
-        g = malloc((size_t)(widest > 0 ? widest : 1) * sizeof *g);
+        g = mem_alloc(e->mem, (size_t)widest * sizeof *g);
         ok = g != NULL;
     }
     *crowded = 0;
@@ -192,9 +194,9 @@ static int pair_edges(edges *e, int *crowded)
         }
         pair_group(e, g, n, crowded);
     }
-    free(start);
-    free(list);
-    free(g);
+    mem_free(e->mem, start, ((size_t)nv + 1) * sizeof *start);
+    mem_free(e->mem, list, halves * sizeof *list);
+    mem_free(e->mem, g, (size_t)widest * sizeof *g);
     return ok;
 }
 
@@ -211,7 +213,7 @@ static int find(int *parent, int t)
 static int summarise(const edges *e, mesh_topo *out, unsigned char *open)
 {
     int n = e->m->tri_count;
-    int *parent = malloc((size_t)(n > 0 ? n : 1) * sizeof *parent);
+    int *parent = mem_alloc(e->mem, (size_t)n * sizeof *parent);
     if (!parent)
         return 0;
     for (int t = 0; t < n; t++)
@@ -231,27 +233,27 @@ static int summarise(const edges *e, mesh_topo *out, unsigned char *open)
     }
     for (int t = 0; t < n; t++)
         out->components += find(parent, t) == t;
-    free(parent);
+    mem_free(e->mem, parent, (size_t)n * sizeof *parent);
     return 1;
 }
 
-int mesh_topo_analyse(const rf_trimesh *m, mesh_topo *out, unsigned char *open)
+int mesh_topo_analyse(const scene_trimesh *m, const mem *mm, mesh_topo *out, unsigned char *open)
 {
     memset(out, 0, sizeof *out);
     if (open)
         memset(open, 0, (size_t)m->tri_count);
     size_t halves = 3 * (size_t)m->tri_count;
-    int *canon = malloc((size_t)(m->position_count > 0 ? m->position_count : 1) * sizeof *canon);
-    int *nbr = malloc((halves > 0 ? halves : 1) * sizeof *nbr);
-    edges e = {m, canon, nbr};
-    int ok = canon && nbr && weld(m, canon);
+    int *canon = mem_alloc(mm, (size_t)m->position_count * sizeof *canon);
+    int *nbr = mem_alloc(mm, halves * sizeof *nbr);
+    edges e = {m, canon, nbr, mm};
+    int ok = canon && nbr && weld(m, mm, canon);
     if (ok) {
         for (size_t h = 0; h < halves; h++)
             nbr[h] = UNPAIRED;
         ok = pair_edges(&e, &out->crowded_edges) && summarise(&e, out, open);
     }
-    free(canon);
-    free(nbr);
+    mem_free(mm, canon, (size_t)m->position_count * sizeof *canon);
+    mem_free(mm, nbr, halves * sizeof *nbr);
     if (!ok) {
         memset(out, 0, sizeof *out);
         return 0;

@@ -27,7 +27,8 @@ typedef struct mesh_topo {
 /* Fills *out for the triangles of m, and when open is not NULL sets bit k
  * of open[t] for each edge (corner k to k + 1 of triangle t) that belongs
  * to t alone.  Returns 1, or 0 when out of memory (*out is then zero).
- * Linear time and memory in the triangle count. */
-int mesh_topo_analyse(const rf_trimesh *m, mesh_topo *out, unsigned char *open);
+ * Linear time and memory in the triangle count; the scratch comes from
+ * mm (NULL: the C library) and is freed before the return. */
+int mesh_topo_analyse(const scene_trimesh *m, const mem *mm, mesh_topo *out, unsigned char *open);
 
 #endif

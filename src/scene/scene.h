@@ -1,25 +1,29 @@
 /*
  * scene.h - the flat, validated scene that the tracer and the oracle read.
  *
- * Invariants once scene_load has returned a scene (checked by the lowering
+ * Invariants once scene_load_source has returned a scene (checked by the lowering
  * pass, relied on everywhere else):
  *   - every double is finite; every direction and normal has unit length;
  *   - 0 <= Kd, Ks, t <= 1 channel-wise; n >= 0; ior > 0;
  *   - every primitive's material index is valid; triangles are not degenerate;
  *   - the camera basis is orthonormal and the image has at least one pixel.
- * The scene owns all its memory; scene_free releases it in one call.
+ * The scene owns all its memory, taken from the allocator it was loaded
+ * with (kept in scene.mem); scene_free releases it in one call.  Loading
+ * reads no file itself: the text comes from the caller and every `include`
+ * and `mesh` file from the caller's resolver (io/scene_file.h reads files).
  */
 #ifndef REFRAY_SCENE_H
 #define REFRAY_SCENE_H
 
 #include <stddef.h>
-#include <stdio.h>
+#include "base/diag.h"
+#include "base/mem.h"
 #include "base/vec.h"
 #include "base/xform.h"
 #include "base/source.h"
 #include "base/status.h"
 
-typedef struct rf_material {
+typedef struct scene_material {
     rgb kd;            /* diffuse reflectivity K_d per channel, [0,1] (slide 11) */
     rgb ks;            /* specular coefficient K_s: highlight and mirror weight, [0,1] */
     double n;          /* Phong shininess exponent, >= 0 */
@@ -27,46 +31,53 @@ typedef struct rf_material {
     double ior;        /* index of refraction of the material's inside, > 0 */
     char *name;        /* NULL for an inline material */
     src_span where;
-} rf_material;
+} scene_material;
 
-typedef enum rf_prim_kind {
+typedef enum scene_prim_kind {
     PRIM_SPHERE,
     PRIM_PLANE,
     PRIM_TRIANGLE,     /* a `triangle` statement */
     PRIM_DISK,
     PRIM_BOX,
+    PRIM_CYLINDER,     /* closed (a solid) or open (a sheet, like a plane) */
+    PRIM_CONE,         /* the same, truncated or with an apex */
+    PRIM_TORUS,        /* a ring torus: a solid */
     PRIM_MESH          /* a `mesh`: many triangles in one compact store */
-} rf_prim_kind;
+} scene_prim_kind;
+
+enum { PRIM_KINDS = PRIM_MESH + 1 };
 
 /*
  * The triangles of a mesh, in world space (the mesh's transforms baked in),
  * stored compactly: shared vertices and three indices per triangle, about
  * 24 bytes a triangle for a closed mesh without normals instead of a whole
- * rf_prim.  Coordinates are the doubles the file gave, transformed: nothing
- * is rounded to a smaller type.
+ * scene_prim.  Coordinates are the doubles the file gave, transformed:
+ * nothing is rounded to a smaller type.  The arrays come from the scene's
+ * allocator; the caps are the entries allocated (a shrink that failed
+ * leaves more than the count).
  */
-typedef struct rf_trimesh {
+typedef struct scene_trimesh {
     vec3 *positions;
-    int position_count;
+    int position_count, position_cap;
     vec3 *normals;         /* unit vertex normals, NULL when the mesh has none */
-    int normal_count;
+    int normal_count, normal_cap;
     int (*tri)[3];         /* corners of each triangle: indices into positions */
     int (*tri_normal)[3];  /* each corner's index into normals, or -1 (a flat
                               triangle); NULL when the mesh has no normals */
-    int tri_count;
+    int tri_count, tri_cap, tri_normal_cap;
     unsigned char *open;   /* per triangle, bit k: its edge from corner k to
                               k + 1 belongs to it alone (the hit test counts
                               such an edge as inside, like a lone triangle's;
                               shared ones by the tie rule of intersect.c);
-                              NULL when no edge is open */
+                              NULL when no edge is open (else tri_count bytes) */
     int closed;            /* every edge shared by exactly two triangles
                               (src/scene/mesh_topo.h): a solid, whose inside
                               is found by counting crossings, so its winding
                               does not matter; else a set of sheets */
-} rf_trimesh;
+} scene_trimesh;
 
-typedef struct rf_prim {
-    rf_prim_kind kind;
+typedef struct scene_prim {
+    scene_prim_kind kind;
     int material;          /* index into scene.materials */
     int mesh;              /* PRIM_MESH: index into scene.meshes, else -1 */
     union {
@@ -79,23 +90,31 @@ typedef struct rf_prim {
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
         struct { vec3 lo; vec3 hi; } box;
+        /* from != to; radius > 0; open: no end caps */
+        struct { vec3 from, to; double radius; int open; } cylinder;
+        /* radius[0] at from, radius[1] at to, both >= 0, not both 0 */
+        struct { vec3 from, to; double radius[2]; int open; } cone;
+        /* axis unit; 0 < minor < major: the tube of radius minor around
+         * the circle of radius major about center, normal to axis */
+        struct { vec3 center, axis; double major, minor; } torus;
         /* A view of scene.meshes[mesh].geom: the arrays are that mesh's,
          * shared, so a primitive can be intersected on its own. */
-        rf_trimesh mesh;
+        scene_trimesh mesh;
     } u;
     /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles, meshes and planes always; spheres and
-     * disks under similarities; boxes under translate and axis scale).
+     * to the same kind of shape (triangles, meshes and planes always;
+     * spheres, disks, cylinders, cones and tori under similarities; boxes
+     * under translate and axis scale).
      * Otherwise the parameters are in the local frame and these are set. */
     int has_xform;
     xform to_world;
     xform to_local;
     src_span where;
-} rf_prim;
+} scene_prim;
 
 /* What the loader found out about a mesh (`refray check` prints it;
  * spec/language.md, section 8). */
-typedef struct rf_mesh_report {
+typedef struct scene_mesh_report {
     int faces;             /* faces read (polygons of any size) */
     int dropped;           /* faces with no area, and triangles with none after the transforms */
     int nonplanar;         /* polygons whose corners are not on one plane */
@@ -104,34 +123,34 @@ typedef struct rf_mesh_report {
     int components;        /* pieces connected through shared edges */
     int open_edges;        /* edges of one triangle only */
     int crowded_edges;     /* edges of three or more triangles */
-} rf_mesh_report;
+} scene_mesh_report;
 
-typedef struct rf_mesh {
+typedef struct scene_mesh {
     char *path;            /* the OBJ or PLY file as resolved */
     int prim;              /* the PRIM_MESH primitive in scene.prims */
-    rf_trimesh geom;       /* owned here; the primitive holds a view */
-    rf_mesh_report report;
+    scene_trimesh geom;    /* owned here; the primitive holds a view */
+    scene_mesh_report report;
     src_span where;        /* the `file` value of the mesh statement */
-} rf_mesh;
+} scene_mesh;
 
-typedef enum rf_falloff {
+typedef enum scene_falloff {
     FALLOFF_LINEAR,        /* E / (d + d0), the seed's choice (slide 16); the default */
     FALLOFF_INVERSE_SQUARE,/* E / (d + d0)^2 (slide 15 with the d0 guard) */
     FALLOFF_NONE           /* E */
-} rf_falloff;
+} scene_falloff;
 
-typedef enum rf_light_kind {
+typedef enum scene_light_kind {
     LIGHT_POINT,
     LIGHT_DISTANT,
     LIGHT_RECTANGLE,       /* distributed light over a parallelogram */
     LIGHT_DISK             /* distributed light over a disk */
-} rf_light_kind;
+} scene_light_kind;
 
-typedef struct rf_light {
-    rf_light_kind kind;
+typedef struct scene_light {
+    scene_light_kind kind;
     rgb power;             /* E_p; for distributed lights the total over all samples */
     double d0;             /* falloff offset, >= 0 */
-    rf_falloff falloff;    /* distant lights: always FALLOFF_NONE */
+    scene_falloff falloff;    /* distant lights: always FALLOFF_NONE */
     vec3 position;         /* point: the position; rectangle: a corner; disk: the centre */
     vec3 direction;        /* distant: unit direction the light travels */
     vec3 edge_u, edge_v;   /* rectangle: the two edges from the corner */
@@ -139,59 +158,60 @@ typedef struct rf_light {
     double radius;         /* disk: radius, > 0 */
     int samples;           /* distributed: number of point sources, >= 1 */
     src_span where;
-} rf_light;
+} scene_light;
 
-typedef enum rf_camera_kind {
+typedef enum scene_camera_kind {
     CAMERA_PERSPECTIVE,
     CAMERA_ORTHOGRAPHIC
-} rf_camera_kind;
+} scene_camera_kind;
 
-typedef struct rf_camera {
-    rf_camera_kind kind;
+typedef struct scene_camera {
+    scene_camera_kind kind;
     vec3 eye, look_at, up;  /* as written (up need not be orthogonal to the view) */
     double fov;             /* perspective: horizontal field of view in degrees, (0,180) */
     double width;           /* orthographic: horizontal extent of the view in scene units */
     vec3 forward, right, true_up; /* orthonormal basis derived at load time */
     src_span where;
-} rf_camera;
+} scene_camera;
 
-typedef struct rf_image_spec {
+typedef struct scene_image_spec {
     int width, height;     /* pixels */
     int samples;           /* k: a k x k grid of camera rays per pixel */
     int max_depth;         /* trace depth; 1 means camera rays only (slide 48) */
     rgb background;
-} rf_image_spec;
+} scene_image_spec;
 
 /* What the scene uses, so the tracer can leave out whole passes. */
-typedef struct rf_features {
+typedef struct scene_features {
     int shadows;           /* some primitive can occlude some light from some surface */
     int specular;          /* some material has Ks > 0: highlights */
     int reflection;        /* some material has Ks > 0: mirror rays */
     int refraction;        /* some material has t > 0 */
     int sampled_lights;    /* some distributed light */
     int meshes;            /* some mesh */
-} rf_features;
+} scene_features;
 
-typedef struct rf_scene {
-    rf_image_spec image;
-    rf_camera camera;
+typedef struct scene_model {
+    scene_image_spec image;
+    scene_camera camera;
     rgb ambient;               /* sum of all ambient blocks, I_a */
-    rf_material *materials;
-    int material_count;
-    rf_prim *prims;            /* bounded primitives and planes; one PRIM_MESH per mesh */
-    int prim_count;
-    rf_mesh *meshes;
-    int mesh_count;
-    rf_light *lights;          /* point, distant and distributed lights (not ambient) */
-    int light_count;
-    rf_features features;
+    scene_material *materials;
+    int material_count, material_cap; /* cap: entries allocated */
+    scene_prim *prims;            /* bounded primitives and planes; one PRIM_MESH per mesh */
+    int prim_count, prim_cap;
+    scene_mesh *meshes;
+    int mesh_count, mesh_cap;
+    scene_light *lights;          /* point, distant and distributed lights (not ambient) */
+    int light_count, light_cap;
+    scene_features features;
     char *oracle;              /* `oracle NAME`, or NULL */
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
-} rf_scene;
+    mem mem;                   /* the allocator everything above came from */
+} scene_model;
 
 /* Limits on what an input may ask for, enforced before allocation. */
-typedef struct rf_limits {
+typedef struct scene_limits {
     long max_width, max_height;
     long max_pixels;
     long max_samples;          /* k of the k x k pixel grid */
@@ -204,29 +224,83 @@ typedef struct rf_limits {
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
     long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
-} rf_limits;
+} scene_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
-rf_limits scene_default_limits(void);
+scene_limits scene_default_limits(void);
+
+/* A file's text as the loader receives it. */
+typedef struct scene_source {
+    const char *path;      /* the name it goes by: in messages, and as `from` for what it includes */
+    const char *identity;  /* the same file under any name (include cycles); NULL: path */
+    const char *text;
+    size_t len;
+} scene_source;
 
 /*
- * Reads, parses, evaluates and validates a scene file.  Diagnostics go to
- * diag_out (with warnings when warnings is non-zero).  Returns the scene, or
- * NULL with *status set to one of the exit codes below; on success *status
- * is REFRAY_EXIT_OK.  Never returns a partially valid scene.
+ * Where `include` and `mesh` files come from.  fetch is asked for the file
+ * `name` as written in a statement of the file `from` (its scene_source
+ * path) and fills *out, returning STATUS_OK; or it returns another status
+ * with a one-line reason in why (reported as an error at the statement;
+ * STATUS_NO_MEMORY ends the load as out of memory).  The loader copies the
+ * text and names, then calls release (when not NULL) with the same *out;
+ * a mesh file's text is read where it is, without a copy (it may be tens
+ * of megabytes), and released once its mesh is built.  The text need not
+ * be NUL-terminated.  The resolver enforces its own limits
+ * (io/scene_file.c: --max-file-size).
  */
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out,
-                     int warnings, int *status);
+typedef struct scene_resolver {
+    int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,
+                 size_t why_size);
+    void (*release)(void *user, scene_source *src);
+    void *user;
+} scene_resolver;
 
-/* The same from text in memory (path is used for messages and includes). */
-rf_scene *scene_load_text(const char *path, const char *text, size_t len,
-                          const rf_limits *limits, FILE *diag_out, int warnings, int *status);
+typedef struct scene_load_opts {
+    scene_limits limits;
+    int warnings;              /* 0: warnings are counted, not delivered */
+    diag_sink sink;            /* receives every diagnostic; NULL: none delivered */
+    void *sink_user;
+    scene_resolver resolver;   /* fetch NULL: `include` and `mesh` are errors */
+    mem mem;                   /* zeroed: the C library's allocator */
+} scene_load_opts;
 
-void scene_free(rf_scene *scene);
+/* The default limits, warnings on, no sink, no resolver, the C library. */
+void scene_load_opts_init(scene_load_opts *o);
+
+/*
+ * Parses, evaluates and validates the scene in root.  Returns the scene,
+ * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY);
+ * on success *status is STATUS_OK.  Never returns a partially valid scene,
+ * and frees everything it allocated when it fails.
+ */
+scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status);
+
+void scene_free(scene_model *scene);
+
+/* Whether p is a solid whose inside is known on its own: a sphere, a box,
+ * a closed cylinder or cone, a torus.  A closed mesh is a solid too, but
+ * its inside is found by counting crossings (render/trace.c). */
+int scene_prim_is_solid(const scene_prim *p);
+
+/* Whether point lies strictly inside the solid p (in p's own frame when it
+ * keeps one); 0 for anything that is not a solid on its own. */
+int scene_prim_contains(const scene_prim *p, vec3 point);
+
+/* Whether p can shadow itself where N.L > 0: a torus, an open cylinder or
+ * cone, a mesh (convex solids and flat sheets cannot). */
+int scene_prim_self_shadows(const scene_prim *p);
+
+/* The block word of a primitive kind ("sphere", ..., "torus", "mesh"), and its plural. */
+const char *scene_prim_name(scene_prim_kind kind);
+const char *scene_prim_plural(scene_prim_kind kind);
+
+/* Frees a mesh store allocated from m and empties it. */
+void scene_trimesh_free(const mem *m, scene_trimesh *g);
 
 /* The bytes the meshes' stores hold (positions, normals, corner and normal
  * indices, open-edge masks), and their triangles in *triangles. */
-long scene_mesh_bytes(const rf_scene *s, long *triangles);
+long scene_mesh_bytes(const scene_model *s, long *triangles);
 
 
 #endif

@@ -1,49 +1,38 @@
 /*
- * scene_load.c - loading a scene: read, parse, lower, validate.
+ * scene_load.c - loading a scene: parse, lower, validate (scene.h).
  */
-#include <stdlib.h>
-#include "base/fileio.h"
+#include <string.h>
 #include "scene/loader.h"
 
-rf_scene *scene_load_text(const char *path, const char *text, size_t len, const rf_limits *limits, FILE *diag_out,
-                          int warnings, int *status)
+scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status)
 {
-    rf_limits fallback = scene_default_limits();
-    rf_scene *s = calloc(1, sizeof *s);
+    scene_load_opts fallback;
+    if (!o) {
+        scene_load_opts_init(&fallback);
+        o = &fallback;
+    }
+    mem m = mem_pick(&o->mem);
+    scene_model *s = mem_calloc(&m, 1, sizeof *s);
     loader L;
     if (!s) {
-        *status = REFRAY_EXIT_SOFTWARE;
+        *status = STATUS_NO_MEMORY;
         return NULL;
     }
+    s->mem = m;
     loader_scene_defaults(s);
-    loader_init(&L, s, limits ? limits : &fallback, diag_out, warnings);
-    int file = source_set_add(&s->sources, path, text, len, src_span_none());
-    int ok = file >= 0 && loader_lower_file(&L, file) && validate_scene(&L);
-    if (file < 0)
+    loader_init(&L, s, o);
+    int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
+    char *identity = file >= 0 ? mem_strdup(&m, root->identity ? root->identity : root->path) : NULL;
+    int ok = identity && loader_lower_file(&L, file, identity) && validate_scene(&L);
+    if (!identity)
         loader_oom(&L);
-    *status = ok ? REFRAY_EXIT_OK : L.out_of_memory ? REFRAY_EXIT_SOFTWARE : REFRAY_EXIT_DATAERR;
+    *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
+    if (ok)
+        loader_trim(&L);
     loader_free(&L);
     if (!ok) {
         scene_free(s);
         return NULL;
     }
-    return s;
-}
-
-rf_scene *scene_load(const char *path, const rf_limits *limits, FILE *diag_out, int warnings, int *status)
-{
-    rf_limits fallback = scene_default_limits();
-    char why[512], *text = NULL;
-    size_t len = 0;
-    if (!limits)
-        limits = &fallback;
-    *status = file_read_all(path, limits->max_file_bytes, &text, &len, why, sizeof why);
-    if (*status != 0) {
-        if (diag_out)
-            fprintf(diag_out, "refray: error: %s\n", why);
-        return NULL;
-    }
-    rf_scene *s = scene_load_text(path, text, len, limits, diag_out, warnings, status);
-    free(text);
     return s;
 }

@@ -13,7 +13,7 @@ static int material_used_by_scene(const loader *L, int m)
 
 static void warn_unused_materials(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->material_count; i++)
         if (s->materials[i].name && !material_used_by_scene(L, i))
             diag_report(&L->diag, DIAG_WARNING, s->materials[i].where, "material '%s' is never used",
@@ -23,9 +23,9 @@ static void warn_unused_materials(loader *L)
 /* Kd + Ks > 1 reflects more than arrives (legal, but rarely meant). */
 static void warn_energy(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->material_count; i++) {
-        const rf_material *m = &s->materials[i];
+        const scene_material *m = &s->materials[i];
         rgb sum = vec_add(m->kd, m->ks);
         if (vec_max_component(sum) > 1 && material_used_by_scene(L, i))
             diag_report(&L->diag, DIAG_WARNING, m->where,
@@ -34,45 +34,31 @@ static void warn_energy(loader *L)
     }
 }
 
-/* Strictly inside a sphere or box, in the primitive's own frame. */
-static int strictly_inside(const rf_prim *prim, vec3 p)
-{
-    if (prim->has_xform)
-        p = xform_point(&prim->to_local, p);
-    if (prim->kind == PRIM_SPHERE)
-        return vec_length(vec_sub(p, prim->u.sphere.center)) < prim->u.sphere.radius;
-    if (prim->kind == PRIM_BOX) {
-        vec3 lo = prim->u.box.lo, hi = prim->u.box.hi;
-        return p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y && p.z > lo.z && p.z < hi.z;
-    }
-    return 0;
-}
-
 static void warn_buried_lights(loader *L)
 {
-    const rf_scene *s = L->scene;
+    const scene_model *s = L->scene;
     for (int i = 0; i < s->light_count; i++) {
-        const rf_light *light = &s->lights[i];
+        const scene_light *light = &s->lights[i];
         if (light->kind == LIGHT_DISTANT)
             continue;
         vec3 center = light->position;
         if (light->kind == LIGHT_RECTANGLE)
             center = vec_add(center, vec_scale(vec_add(light->edge_u, light->edge_v), 0.5));
         for (int j = 0; j < s->prim_count; j++) {
-            const rf_prim *prim = &s->prims[j];
-            if (s->materials[prim->material].t == 0 && strictly_inside(prim, center)) {
+            const scene_prim *prim = &s->prims[j];
+            if (s->materials[prim->material].t == 0 && scene_prim_contains(prim, center)) {
                 diag_report(&L->diag, DIAG_WARNING, light->where,
                             "this light is inside an opaque %s: it lights nothing outside it",
-                            prim->kind == PRIM_SPHERE ? "sphere" : "box");
+                            scene_prim_name(prim->kind));
                 break;
             }
         }
     }
 }
 
-static void record_features(rf_scene *s, const loader *L)
+static void record_features(scene_model *s, const loader *L)
 {
-    rf_features *f = &s->features;
+    scene_features *f = &s->features;
     for (int i = 0; i < s->material_count; i++) {
         if (!material_used_by_scene(L, i))
             continue;
@@ -85,15 +71,17 @@ static void record_features(rf_scene *s, const loader *L)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
     /* With N.L > 0 required, one opaque convex or flat primitive never
-     * shadows itself; only a second primitive can stand in the way, another
-     * part of a mesh, or the far side of a transparent solid seen from
-     * inside it (the light reaches its back face through its front). */
-    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || s->mesh_count > 0 || f->refraction);
+     * shadows itself; only a second primitive can stand in the way, a torus,
+     * an open tube or a mesh on its own, or the far side of a transparent
+     * solid seen from inside it (the light reaches its back face through
+     * its front). */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || f->refraction ||
+                                        (s->prim_count == 1 && scene_prim_self_shadows(&s->prims[0])));
 }
 
 int validate_scene(loader *L)
 {
-    rf_scene *s = L->scene;
+    scene_model *s = L->scene;
     if (s->prim_count == 0) {
         src_span whole = {0, 0, 0};
         diag_report(&L->diag, DIAG_ERROR, whole, "the scene has no primitives: nothing to render");

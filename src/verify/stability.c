@@ -48,12 +48,12 @@ static int render_rows(const tracer *t, int k, stab_image *out, trace_stats *st)
             px[1] = c.y;
             px[2] = c.z;
             if (st->tree_overflow)
-                return REFRAY_EXIT_DATAERR;
+                return STATUS_DATA;
         }
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
-int stability_render(const rf_scene *scene, const render_opts *opts, stab_image *out)
+int stability_render(const scene_model *scene, const render_opts *opts, stab_image *out)
 {
     tracer t;
     trace_stats st;
@@ -62,17 +62,17 @@ int stability_render(const rf_scene *scene, const render_opts *opts, stab_image 
     int k = opts && opts->samples > 0 ? opts->samples : scene->image.samples;
     memset(&st, 0, sizeof st);
     if (alloc_image(out, width, height) != 0)
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0)) {
         stability_free(out);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     t.max_tree_rays = opts ? opts->max_tree_rays : 0;
     int status = render_rows(&t, k, out, &st);
     tracer_free(&t);
     out->long_double = sizeof(real) > sizeof(double);
     out->nonfinite = st.nonfinite;
-    if (status != REFRAY_EXIT_OK)
+    if (status != STATUS_OK)
         stability_free(out);
     return status;
 }
@@ -184,7 +184,7 @@ static void note_pixel(stab_report *r, const long double *pa, const long double 
 }
 
 int stability_compare(const stab_image *a, const stab_image *b, long double threshold, stab_report *r,
-                      rf_image *map)
+                      img_buf *map)
 {
     memset(r, 0, sizeof *r);
     r->abs_x = r->abs_y = r->rel_x = r->rel_y = -1;

@@ -38,10 +38,10 @@ const char *stability_real_name(void);
 /*
  * Renders scene as render_image does (opts as there; NULL for the scene's
  * own settings) but keeps every pixel in this build's `real`, unrounded.
- * Returns REFRAY_EXIT_OK, REFRAY_EXIT_DATAERR when a ray tree passed the
- * budget, or REFRAY_EXIT_SOFTWARE when out of memory (out is then empty).
+ * Returns STATUS_OK, STATUS_DATA when a ray tree passed the
+ * budget, or STATUS_NO_MEMORY when out of memory (out is then empty).
  */
-int stability_render(const rf_scene *scene, const render_opts *opts, stab_image *out);
+int stability_render(const scene_model *scene, const render_opts *opts, stab_image *out);
 void stability_free(stab_image *img);
 
 /* Writes img as a raw dump; returns 0, or -1 on a write error (errno). */
@@ -73,6 +73,6 @@ typedef struct stab_report {
  * the map cannot be allocated.
  */
 int stability_compare(const stab_image *a, const stab_image *b, long double threshold, stab_report *r,
-                      rf_image *map);
+                      img_buf *map);
 
 #endif

@@ -18,7 +18,7 @@ static void copy_text(char *dst, size_t size, const char *src)
     snprintf(dst, size, "%s", src ? src : "");
 }
 
-oracle_view verify_view(const rf_scene *s, const verify_opts *o)
+oracle_view verify_view(const scene_model *s, const verify_opts *o)
 {
     oracle_view v;
     v.scene = s;
@@ -42,11 +42,11 @@ static void family_names(char *out, size_t size)
     }
 }
 
-const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int *status, char *why,
+const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
                                    size_t why_size)
 {
     if (!s->oracle) {
-        *status = REFRAY_EXIT_DATAERR;
+        *status = STATUS_DATA;
         snprintf(why, why_size, "the scene has no `oracle NAME` statement, so there is no exact image to "
                  "compare with (the analytic scenes are in scenes/analytic/)");
         return NULL;
@@ -55,18 +55,18 @@ const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int 
     if (!f) {
         char names[384];
         family_names(names, sizeof names);
-        *status = REFRAY_EXIT_FAIL;
+        *status = STATUS_FAIL;
         snprintf(why, why_size, "no oracle family is called '%s' (known: %s)", s->oracle, names);
         return NULL;
     }
     why[0] = '\0';
     if (!f->accepts(v, why, why_size)) {
-        *status = REFRAY_EXIT_FAIL;
+        *status = STATUS_FAIL;
         if (!why[0])
             snprintf(why, why_size, "%s: the family refused the scene", f->name);
         return NULL;
     }
-    *status = REFRAY_EXIT_OK;
+    *status = STATUS_OK;
     return f;
 }
 
@@ -87,17 +87,17 @@ int verify_exact_build(const oracle_family *f, const oracle_view *v, verify_exac
     double start = render_clock();
     if (!e->excluded || oracle_image(f, v, &e->image, e->excluded, &e->excluded_count) != 0) {
         verify_exact_free(e);
-        return REFRAY_EXIT_SOFTWARE;
+        return STATUS_NO_MEMORY;
     }
     e->seconds = render_clock() - start;
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason)
 {
     if (r->scene != path)
         copy_text(r->scene, sizeof r->scene, path);
-    r->verdict = status == REFRAY_EXIT_FAIL ? VERIFY_REFUSED : VERIFY_ERROR;
+    r->verdict = status == STATUS_FAIL ? VERIFY_REFUSED : VERIFY_ERROR;
     r->status = status;
     if (r->reason != reason)
         copy_text(r->reason, sizeof r->reason, reason);
@@ -112,7 +112,7 @@ static void judge(verify_result *r)
 {
     const image_metrics *m = &r->metrics;
     r->verdict = VERIFY_PASS;
-    r->status = REFRAY_EXIT_OK;
+    r->status = STATUS_OK;
     if (m->compared == 0)
         copy_text(r->reason, sizeof r->reason, "every pixel was excluded: nothing was compared");
     else if (m->over > 0)
@@ -121,7 +121,7 @@ static void judge(verify_result *r)
     else
         return;
     r->verdict = VERIFY_FAIL;
-    r->status = REFRAY_EXIT_FAIL;
+    r->status = STATUS_FAIL;
 }
 
 static int by_value(const void *a, const void *b)
@@ -132,29 +132,29 @@ static int by_value(const void *a, const void *b)
 
 /* Renders runs times (the image is the same every time: the samples are a
  * pure function of the pixel), keeps the first image and the median time. */
-static int timed_render(const rf_scene *s, const render_opts *ro, int runs, rf_image *img, render_stats *st,
+static int timed_render(const scene_model *s, const render_opts *ro, int runs, img_buf *img, render_stats *st,
                         double *seconds)
 {
     double times[VERIFY_RUNS_MAX];
     runs = runs < 1 ? 1 : runs > VERIFY_RUNS_MAX ? VERIFY_RUNS_MAX : runs;
     for (int i = 0; i < runs; i++) {
-        rf_image again = {0, 0, NULL};
+        img_buf again = {0};
         render_stats st_again;
         double start = render_clock();
         int status = render_image(s, ro, i == 0 ? img : &again, i == 0 ? st : &st_again);
         times[i] = render_clock() - start;
         img_free(&again);
-        if (status != REFRAY_EXIT_OK) {
+        if (status != STATUS_OK) {
             img_free(img);
             return status;
         }
     }
     qsort(times, (size_t)runs, sizeof times[0], by_value);
     *seconds = runs % 2 ? times[runs / 2] : 0.5 * (times[runs / 2 - 1] + times[runs / 2]);
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
-int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r)
+int verify_render_compare(const scene_model *s, const verify_opts *o, const verify_exact *e, verify_result *r)
 {
     render_opts ro;
     memset(&ro, 0, sizeof ro);
@@ -163,13 +163,13 @@ int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_
     ro.samples = e->view.samples;
     ro.max_depth = e->view.max_depth;
     ro.light_samples = o ? o->light_samples : 0;
-    rf_image img = {0, 0, NULL};
+    img_buf img = {0};
     render_stats st;
     memset(&st, 0, sizeof st);
     int status = timed_render(s, &ro, o ? o->runs : 1, &img, &st, &r->render_seconds);
     r->oracle_seconds = e->seconds;
-    if (status != REFRAY_EXIT_OK) {
-        verify_result_error(r, r->scene, status, status == REFRAY_EXIT_SOFTWARE ? "out of memory while rendering"
+    if (status != STATUS_OK) {
+        verify_result_error(r, r->scene, status, status == STATUS_NO_MEMORY ? "out of memory while rendering"
                                                                                 : "the render was stopped");
         return status;
     }
@@ -183,7 +183,7 @@ int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_
 
 /* Fills r's identity and view, finds the family.  Returns r->status
  * (0 when the scene can be checked, with *f set). */
-static int prepare(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r,
+static int prepare(const scene_model *s, const char *path, const verify_opts *o, verify_result *r,
                    const oracle_family **f)
 {
     memset(r, 0, sizeof *r);
@@ -203,18 +203,18 @@ static int prepare(const rf_scene *s, const char *path, const verify_opts *o, ve
         return status;
     }
     r->sampled = (*f)->sampled;
-    return REFRAY_EXIT_OK;
+    return STATUS_OK;
 }
 
-int verify_scene(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r)
+int verify_scene(const scene_model *s, const char *path, const verify_opts *o, verify_result *r)
 {
     const oracle_family *f;
-    if (prepare(s, path, o, r, &f) != REFRAY_EXIT_OK)
+    if (prepare(s, path, o, r, &f) != STATUS_OK)
         return r->status;
     verify_exact e;
     oracle_view v = verify_view(s, o);
-    if (verify_exact_build(f, &v, &e) != REFRAY_EXIT_OK) {
-        verify_result_error(r, path, REFRAY_EXIT_SOFTWARE, "out of memory building the exact image");
+    if (verify_exact_build(f, &v, &e) != STATUS_OK) {
+        verify_result_error(r, path, STATUS_NO_MEMORY, "out of memory building the exact image");
         return r->status;
     }
     verify_render_compare(s, o, &e, r);
@@ -290,34 +290,29 @@ static verify_opts step_opts(const verify_opts *o, const verify_sweep *sw, int i
     return so;
 }
 
-static int worse(int a, int b)
-{
-    return a > b ? a : b;
-}
-
-int verify_sweep_run(const rf_scene *s, const char *path, const verify_opts *o, const verify_sweep *sw,
+int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *o, const verify_sweep *sw,
                      verify_result *steps, int *ran)
 {
     verify_exact e;
-    int have_exact = 0, worst = REFRAY_EXIT_OK;
+    int have_exact = 0, worst = STATUS_OK;
     *ran = 0;
     for (int i = 0; i < sw->count; i++) {
         verify_opts so = step_opts(o, sw, i);
         const oracle_family *f;
         *ran = i + 1;
-        if (prepare(s, path, &so, &steps[i], &f) != REFRAY_EXIT_OK)
-            return worse(worst, steps[i].status);
+        if (prepare(s, path, &so, &steps[i], &f) != STATUS_OK)
+            return status_worse(worst, steps[i].status);
         if (have_exact && sw->kind == VERIFY_SWEEP_PIXEL) {
             verify_exact_free(&e);
             have_exact = 0;
         }
         oracle_view v = verify_view(s, &so);
-        if (!have_exact && verify_exact_build(f, &v, &e) != REFRAY_EXIT_OK) {
-            verify_result_error(&steps[i], path, REFRAY_EXIT_SOFTWARE, "out of memory building the exact image");
-            return REFRAY_EXIT_SOFTWARE;
+        if (!have_exact && verify_exact_build(f, &v, &e) != STATUS_OK) {
+            verify_result_error(&steps[i], path, STATUS_NO_MEMORY, "out of memory building the exact image");
+            return STATUS_NO_MEMORY;
         }
         have_exact = 1;
-        worst = worse(worst, verify_render_compare(s, &so, &e, &steps[i]));
+        worst = status_worse(worst, verify_render_compare(s, &so, &e, &steps[i]));
     }
     if (have_exact)
         verify_exact_free(&e);
@@ -487,7 +482,7 @@ void verify_json_result(FILE *fp, const verify_result *r)
         fputs("null", fp);
     json_key(fp, "verdict", 0);
     verify_json_string(fp, verdict_name(r->verdict));
-    json_long(fp, "status", r->status);
+    json_long(fp, "status", status_exit_code(r->status));
     json_key(fp, "reason", 0);
     if (r->verdict == VERIFY_PASS)
         fputs("null", fp);
@@ -652,7 +647,7 @@ static int excluded_at(const unsigned char *mask, size_t p)
 }
 
 /* max over channels |a - b| at pixel p. */
-static double pixel_error(const rf_image *a, const rf_image *b, size_t p)
+static double pixel_error(const img_buf *a, const img_buf *b, size_t p)
 {
     double e = 0;
     for (int c = 0; c < 3; c++)
@@ -660,29 +655,29 @@ static double pixel_error(const rf_image *a, const rf_image *b, size_t p)
     return e;
 }
 
-static int same_size(const rf_image *a, const rf_image *b)
+static int same_size(const img_buf *a, const img_buf *b)
 {
     return a->width == b->width && a->height == b->height && a->rgb && b->rgb;
 }
 
-int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *mask, rf_image *out)
+int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mask, img_buf *out)
 {
     if (!same_size(a, b))
-        return IMG_ESOFTWARE;
+        return STATUS_INTERNAL;
     int status = img_create(out, a->width, a->height);
     size_t n = (size_t)a->width * (size_t)a->height;
-    for (size_t p = 0; status == IMG_OK && p < n; p++)
+    for (size_t p = 0; status == STATUS_OK && p < n; p++)
         for (int c = 0; c < 3; c++)
             out->rgb[3 * p + c] = excluded_at(mask, p) ? 0 : fabs(a->rgb[3 * p + c] - b->rgb[3 * p + c]);
     return status;
 }
 
-int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *mask, int style, rf_image *out)
+int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mask, int style, img_buf *out)
 {
     if (!same_size(a, b))
-        return IMG_ESOFTWARE;
+        return STATUS_INTERNAL;
     int status = img_create(out, a->width, a->height);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         return status;
     size_t n = (size_t)a->width * (size_t)a->height;
     double max_abs = 0;
@@ -696,7 +691,7 @@ int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *m
         out->rgb[3 * p + 1] = srgb_to_linear(c.y);
         out->rgb[3 * p + 2] = srgb_to_linear(c.z);
     }
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 /* ---- Masks ---- */
@@ -731,7 +726,7 @@ static int pgm_write(const char *path, const unsigned char *mask, int width, int
     size_t len = strlen(path) + 32;
     char *tmp = malloc(len);
     if (!tmp)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
     int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
     FILE *fp = fd >= 0 ? fdopen(fd, "wb") : NULL;
@@ -744,7 +739,7 @@ static int pgm_write(const char *path, const unsigned char *mask, int width, int
     if (!ok && fd >= 0)
         unlink(tmp);
     free(tmp);
-    return ok ? IMG_OK : img_error(err, errlen, IMG_EIO, "cannot write '%s'", path);
+    return ok ? STATUS_OK : img_error(err, errlen, STATUS_IO, "cannot write '%s'", path);
 }
 
 int verify_mask_write(const char *path, const unsigned char *mask, int width, int height, char *err,
@@ -752,9 +747,9 @@ int verify_mask_write(const char *path, const unsigned char *mask, int width, in
 {
     if (has_extension(path, "pgm"))
         return pgm_write(path, mask, width, height, err, errlen);
-    rf_image img;
+    img_buf img;
     int status = img_create(&img, width, height);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         return img_error(err, errlen, status, "cannot make a %dx%d mask", width, height);
     size_t n = (size_t)width * (size_t)height;
     for (size_t p = 0; p < 3 * n; p++)
@@ -790,31 +785,31 @@ static int pgm_read(FILE *fp, int width, int height, unsigned char *mask, char *
     long w, h, maxval;
     if (fgetc(fp) != 'P' || fgetc(fp) != '5' || !pgm_number(fp, &w) || !pgm_number(fp, &h) ||
         !pgm_number(fp, &maxval) || maxval < 1 || maxval > 255)
-        return img_error(err, errlen, IMG_EDATA, "not a binary 8-bit PGM (P5, maxval up to 255)");
+        return img_error(err, errlen, STATUS_DATA, "not a binary 8-bit PGM (P5, maxval up to 255)");
     if (w != width || h != height)
-        return img_error(err, errlen, IMG_EDATA, "the mask is %ldx%ld, the images %dx%d", w, h, width, height);
+        return img_error(err, errlen, STATUS_DATA, "the mask is %ldx%ld, the images %dx%d", w, h, width, height);
     size_t n = (size_t)width * (size_t)height;
     for (size_t p = 0; p < n; p++) {
         int c = fgetc(fp);
         if (c == EOF)
-            return img_error(err, errlen, IMG_EDATA, "the PGM ends after %zu of %zu pixels", p, n);
+            return img_error(err, errlen, STATUS_DATA, "the PGM ends after %zu of %zu pixels", p, n);
         mask[p] = 2 * c > maxval;
     }
-    return IMG_OK;
+    return STATUS_OK;
 }
 
 static int mask_from_image(const char *path, int width, int height, unsigned char *mask, char *err,
                            size_t errlen)
 {
-    rf_image img;
+    img_buf img;
     int status = img_read(path, &img, err, errlen);
-    if (status != IMG_OK)
+    if (status != STATUS_OK)
         return status;
     if (img.width != width || img.height != height)
-        status = img_error(err, errlen, IMG_EDATA, "the mask is %dx%d, the images %dx%d", img.width, img.height,
+        status = img_error(err, errlen, STATUS_DATA, "the mask is %dx%d, the images %dx%d", img.width, img.height,
                            width, height);
     size_t n = (size_t)width * (size_t)height;
-    for (size_t p = 0; status == IMG_OK && p < n; p++)
+    for (size_t p = 0; status == STATUS_OK && p < n; p++)
         mask[p] = img.rgb[3 * p] > 0.5 || img.rgb[3 * p + 1] > 0.5 || img.rgb[3 * p + 2] > 0.5;
     img_free(&img);
     return status;
@@ -824,18 +819,18 @@ int verify_mask_read(const char *path, int width, int height, unsigned char **ma
 {
     *mask = malloc((size_t)width * (size_t)height);
     if (!*mask)
-        return img_error(err, errlen, IMG_EOSERR, "out of memory");
+        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     int status;
     if (has_extension(path, "pgm")) {
         FILE *fp = fopen(path, "rb");
         status = fp ? pgm_read(fp, width, height, *mask, err, errlen)
-                    : img_error(err, errlen, IMG_ENOINPUT, "cannot open '%s'", path);
+                    : img_error(err, errlen, STATUS_NO_INPUT, "cannot open '%s'", path);
         if (fp)
             fclose(fp);
     } else {
         status = mask_from_image(path, width, height, *mask, err, errlen);
     }
-    if (status != IMG_OK) {
+    if (status != STATUS_OK) {
         free(*mask);
         *mask = NULL;
     }

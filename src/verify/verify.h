@@ -8,11 +8,12 @@
  * convergence order fitted, and the JSON, error-map and mask files.  The
  * command-line driver only parses options and prints.
  *
- * Status codes are the exit codes of scene.h: 0 pass, 1 a check failed (an
- * error over the tolerance, a refused scene, an unknown family), 65 a bad
- * scene (no `oracle` statement included), 66 a missing file, 70 out of
- * memory.  A run over many scenes exits with the largest code it met
- * ([VERIFY-EXIT-1]): 70 > 66 > 65 > 1 > 0.
+ * Statuses are those of base/status.h: STATUS_OK pass, STATUS_FAIL a check
+ * failed (an error over the tolerance, a refused scene, an unknown family),
+ * STATUS_DATA a bad scene (no `oracle` statement included), STATUS_NO_INPUT
+ * a missing file, STATUS_NO_MEMORY.  A run over many scenes exits with the
+ * largest exit code it met ([VERIFY-EXIT-1]): 70 > 66 > 65 > 1 > 0
+ * (status_worse); the JSON's "status" is that exit code.
  */
 #ifndef REFRAY_VERIFY_H
 #define REFRAY_VERIFY_H
@@ -49,7 +50,7 @@ typedef struct verify_result {
     char scene[512];          /* the path as given (cut if longer) */
     char family[64];          /* the scene's `oracle` name, "" when none */
     verify_verdict verdict;
-    int status;               /* this scene's exit code (see the top) */
+    int status;               /* this scene's status (see the top) */
     char reason[512];         /* why, for REFUSED, ERROR and a FAIL with no pixels */
     int width, height, samples, max_depth;
     int light_samples;        /* the override, 0 for each light's own */
@@ -66,24 +67,24 @@ typedef struct verify_result {
 typedef struct verify_exact {
     const oracle_family *family;
     oracle_view view;
-    rf_image image;
+    img_buf image;
     unsigned char *excluded;  /* width*height flags */
     long excluded_count;
     double seconds;
 } verify_exact;
 
 /* The view a render with options o makes of s (the overrides applied). */
-oracle_view verify_view(const rf_scene *s, const verify_opts *o);
+oracle_view verify_view(const scene_model *s, const verify_opts *o);
 
 /*
  * The family of s, if it accepts view v.  Returns it, or NULL with the
- * reason in why and *status 65 (no `oracle` statement) or 1 (no family of
+ * reason in why and *status STATUS_DATA (no `oracle` statement) or STATUS_FAIL (no family of
  * that name, or the family refused the scene: its own reason).
  */
-const oracle_family *verify_family(const rf_scene *s, const oracle_view *v, int *status, char *why,
+const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
                                    size_t why_size);
 
-/* Builds (and times) the exact image of f for v into e.  Returns 0 or 70
+/* Builds (and times) the exact image of f for v into e.  Returns 0 or STATUS_NO_MEMORY
  * (out of memory; e is then empty).  Free e with verify_exact_free. */
 int verify_exact_build(const oracle_family *f, const oracle_view *v, verify_exact *e);
 void verify_exact_free(verify_exact *e);
@@ -94,13 +95,13 @@ void verify_exact_free(verify_exact *e);
  * metrics, timings, rays and verdict.  r->scene is left as it is.
  * Returns r->status.
  */
-int verify_render_compare(const rf_scene *s, const verify_opts *o, const verify_exact *e, verify_result *r);
+int verify_render_compare(const scene_model *s, const verify_opts *o, const verify_exact *e, verify_result *r);
 
 /*
  * The whole check of one loaded scene: family, exact image, render,
  * comparison.  path names the scene in r.  Returns r->status.
  */
-int verify_scene(const rf_scene *s, const char *path, const verify_opts *o, verify_result *r);
+int verify_scene(const scene_model *s, const char *path, const verify_opts *o, verify_result *r);
 
 /* r for a scene that could not be loaded or checked: verdict ERROR. */
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason);
@@ -138,10 +139,10 @@ double verify_sweep_n(const verify_sweep *sw, int step);
  * Runs every step of sw on s: steps[i] is the check of s with o and the
  * swept setting replaced by sw->values[i] (the exact image is built once
  * for a light sweep, once per k for a pixel sweep).  Returns the largest
- * status of the steps; steps past a failed exact image (70) or a refused
+ * status of the steps; steps past a failed exact image (out of memory) or a refused
  * scene are not run (steps[0] then holds the reason and *ran is 1).
  */
-int verify_sweep_run(const rf_scene *s, const char *path, const verify_opts *o, const verify_sweep *sw,
+int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *o, const verify_sweep *sw,
                      verify_result *steps, int *ran);
 
 /* A convergence order, with whether it means anything. */
@@ -209,15 +210,15 @@ enum { VERIFY_MAP_COLOUR = 0, VERIFY_MAP_GREY = 1 };
  * mask may be NULL) are teal.  The colours are display (sRGB-encoded)
  * values; out holds them made linear, so that an 8-bit PNG written with the
  * default options stores exactly these display colours.  Returns 0 or
- * IMG_EOSERR / IMG_ESOFTWARE (sizes differ).
+ * STATUS_NO_MEMORY / STATUS_INTERNAL (sizes differ).
  */
-int verify_diff_map(const rf_image *a, const rf_image *b, const unsigned char *mask, int style, rf_image *out);
+int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mask, int style, img_buf *out);
 
 /* The display colour of e in [0, 1] on the scale of style. */
 rgb verify_map_colour(double e, int style);
 
 /* |a - b| per channel (excluded pixels 0): the raw error, for EXR/PFM maps. */
-int verify_abs_diff(const rf_image *a, const rf_image *b, const unsigned char *mask, rf_image *out);
+int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mask, img_buf *out);
 
 /*
  * Writes a width x height mask (non-zero = excluded) to path: .pgm as a
@@ -232,7 +233,7 @@ int verify_mask_write(const char *path, const unsigned char *mask, int width, in
  * Reads a mask of width x height from path (.pgm: binary P5, maxval <= 255;
  * others through img_read): a pixel is excluded when any of its values is
  * above half the range.  *mask is malloc'd.  Returns 0, or an IMG_ code
- * with the reason in err (IMG_EDATA for a size other than width x height).
+ * with the reason in err (STATUS_DATA for a size other than width x height).
  */
 int verify_mask_read(const char *path, int width, int height, unsigned char **mask, char *err, size_t errlen);
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render/render.h"
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 static int by_value(const void *a, const void *b)
@@ -26,7 +27,7 @@ static long total_rays(const trace_stats *t)
 }
 
 /* Renders runs times; writes the median time, rays of one render and build time. */
-static int measure(const rf_scene *s, int runs, int width, double *median, long *rays, double *build)
+static int measure(const scene_model *s, int runs, int width, double *median, long *rays, double *build)
 {
     double times[64];
     render_opts o;
@@ -37,7 +38,7 @@ static int measure(const rf_scene *s, int runs, int width, double *median, long 
         o.height = o.height < 1 ? 1 : o.height;
     }
     for (int r = 0; r < runs; r++) {
-        rf_image img;
+        img_buf img;
         render_stats st;
         if (render_image(s, &o, &img, &st) != 0)
             return 0;
@@ -67,7 +68,7 @@ int main(int argc, char **argv)
            "ns/ray");
     for (int i = first; i < argc; i++) {
         int status;
-        rf_scene *s = scene_load(argv[i], NULL, stderr, 0, &status);
+        scene_model *s = scene_file_load(argv[i], NULL, stderr, 0, &status);
         double median, build;
         long rays;
         if (!s || !measure(s, runs, width, &median, &rays, &build)) {

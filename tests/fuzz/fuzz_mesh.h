@@ -55,7 +55,7 @@ static inline int fuzz_mesh(const uint8_t *data, size_t size, fuzz_reader read)
         __builtin_trap();
     fuzz_check(&m);
     if (ok) {
-        rf_trimesh g;
+        scene_trimesh g;
         mesh_topo topo;
         memset(&g, 0, sizeof g);
         g.positions = m.positions;

@@ -10,13 +10,14 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "io/scene_file.h"
 #include "scene/scene.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    rf_limits limits = scene_default_limits();
+    scene_limits limits = scene_default_limits();
     limits.max_loop_iterations = 2000;
     limits.max_primitives = 2000;
     limits.max_mesh_triangles = 2000;
@@ -25,10 +26,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     limits.max_file_bytes = 1 << 16;
     FILE *sink = fopen("/dev/null", "w");
     int status;
-    rf_scene *s = scene_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
-    if (s && status != REFRAY_EXIT_OK)
+    scene_model *s = scene_file_load_text("fuzz.scene", (const char *)data, size, &limits, sink, 1, &status);
+    if (s && status != STATUS_OK)
         __builtin_trap(); /* a scene comes back only when it is valid */
-    if (!s && status == REFRAY_EXIT_OK)
+    if (!s && status == STATUS_OK)
         __builtin_trap();
     scene_free(s);
     if (sink)

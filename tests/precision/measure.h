@@ -166,7 +166,7 @@ static void run_ambient(long n, uint64_t seed, measure *m)
     }
 }
 
-static void run_falloff(long n, uint64_t seed, measure *m, rf_falloff kind)
+static void run_falloff(long n, uint64_t seed, measure *m, scene_falloff kind)
 {
     gen g = {seed, 0};
     for (long i = 0; i < n; i++) {
@@ -684,10 +684,15 @@ static void run_box(long n, uint64_t seed, measure *m)
     }
 }
 
+#include "measure_shapes.h"
+
 /* ---- the table --------------------------------------------------------- */
 
 /* Bounds are the measured worst over 10^6 inputs (make precision), rounded
- * up; spec/numerics.md has the figures and the inputs that give them.  For
+ * up; spec/numerics.md has the figures and the inputs that give them.
+ * The cylinder, cone and torus rows measure t against (|t| + |o|)/cos, cos
+ * the crossing's cosine |n.d|: a ray nearly along the surface moves its t
+ * by the point's error over that cosine, which no method avoids.  For
  * triangles D is the largest distance of a vertex from the ray's origin and
  * A the triangle's area projected across the ray: D^2/2A is the condition
  * of the barycentric weights (about the aspect ratio for a near origin).
@@ -718,10 +723,18 @@ static const measure_fn measure_table[] = {
     {"isect_plane point", "eps of m off plane", 2, run_plane, 0},
     {"isect_disk point", "eps of m off plane", 2, run_disk, 0},
     {"isect_box t", "eps of |t|+|o|", 2, run_box, 0},
+    {"isect_cylinder point", "eps of m off surface", 4, run_cylinder_surface, 0},
+    {"isect_cylinder t", "eps of (|t|+|o|)/cos", 16, run_cylinder_t, 0},
+    {"isect_cone point", "eps of m off surface", 4, run_cone_surface, 0},
+    {"isect_cone t", "eps of (|t|+|o|)/cos", 16, run_cone_t, 0},
+    {"isect_torus point", "eps of m off surface", 4, run_torus_surface, 0},
+    {"isect_torus t", "eps of (|t|+|o|)/cos", 8, run_torus_t, 0},
     {"before: phong pow(V.R, n)", "eps of value", 0, run_phong_pow_dot, 0},
     {"before: phong exp(n log V.R)", "eps of value", 0, run_phong_exp_log, 0},
     {"before: textbook refract", "eps max(1, n1/n2)", 0, run_refract_naive, 0},
     {"before: textbook sphere point", "eps of m off surface", 0, run_sphere_naive_surface, 0},
+    {"before: textbook cylinder point", "eps of m off surface", 0, run_cylinder_naive, 0},
+    {"before: unshifted torus quartic point", "eps of m off surface", 0, run_torus_naive, 0},
 };
 
 enum { MEASURE_COUNT = sizeof measure_table / sizeof measure_table[0] };

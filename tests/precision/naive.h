@@ -102,7 +102,7 @@ static inline int naive_woop_inclusive(const vec3 p[3], const ray *r)
 
 /* For the mesh sweeps of both users: the corner positions of triangle k of
  * a mesh, and a bvh_visit callback that counts the crossings. */
-static inline void mesh_triangle(const rf_trimesh *g, int k, vec3 p[3])
+static inline void mesh_triangle(const scene_trimesh *g, int k, vec3 p[3])
 {
     for (int i = 0; i < 3; i++)
         p[i] = g->positions[g->tri[k][i]];
@@ -147,6 +147,82 @@ static inline int naive_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
         return 0;
     *t = vec_madd(vec_scale(d, eta), n, eta * c - sqrt(k));
     return 1;
+}
+
+/* A closed cylinder by the textbook quadratic: the side as
+ * a t^2 + b t + c = 0 across the axis with c = |fp|^2 - R^2 and
+ * disc = b^2 - 4ac, the caps as planes; the nearest hit in (tmin, tmax) and
+ * the point o + t d.  For a far origin c is the difference of two huge
+ * squares and the point carries the error of o. */
+static inline int naive_cylinder(vec3 from, vec3 to, real radius, const ray *r, real *t)
+{
+    vec3 w = vec_sub(to, from), a = vec_normalize(w), f = vec_sub(r->origin, from);
+    real len = vec_length(w), z0 = vec_dot(f, a), dz = vec_dot(r->dir, a), best = HUGE_VAL;
+    vec3 fp = vec_sub(f, vec_scale(a, z0)), dp = vec_sub(r->dir, vec_scale(a, dz));
+    real qa = vec_dot(dp, dp), qb = 2 * vec_dot(fp, dp), qc = vec_dot(fp, fp) - radius * radius;
+    real disc = qb * qb - 4 * qa * qc;
+    if (qa > 0 && disc >= 0)
+        for (int k = -1; k <= 1; k += 2) {
+            real tt = (-qb + k * sqrt(disc)) / (2 * qa), z = z0 + tt * dz;
+            if (z >= 0 && z <= len && tt > r->tmin && tt < r->tmax && tt < best)
+                best = tt;
+        }
+    for (int e = 0; e < 2 && dz != 0; e++) {
+        real tt = ((e ? len : 0) - z0) / dz;
+        vec3 q = vec_add(fp, vec_scale(dp, tt));
+        if (vec_dot(q, q) <= radius * radius && tt > r->tmin && tt < r->tmax && tt < best)
+            best = tt;
+    }
+    *t = best;
+    return best < HUGE_VAL;
+}
+
+/* A torus by its quartic in t written from the ray as given (no shift of
+ * the origin, no scaling), (|q|^2 + R^2 - r^2)^2 - 4 R^2 rho^2 with
+ * q = o - c + t d expanded in powers of t, its first root found by
+ * stepping t over the bounding sphere's chord in 256 steps and bisecting a
+ * sign change; the point o + t d.  The coefficients of a far ray are huge
+ * and nearly cancel: the quartic's value near a thin tube is noise. */
+static inline real naive_torus_quartic(const real c[5], real t)
+{
+    return (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0];
+}
+
+static inline int naive_torus(vec3 center, vec3 axis, real major, real minor, const ray *r, real *t)
+{
+    vec3 f = vec_sub(r->origin, center), d = r->dir;
+    real fz = vec_dot(f, axis), dz = vec_dot(d, axis);
+    real dd = vec_dot(d, d), fd = vec_dot(f, d), ff = vec_dot(f, f);
+    real k = ff + major * major - minor * minor, R2 = 4 * major * major, c[5];
+    c[4] = dd * dd;
+    c[3] = 4 * dd * fd;
+    c[2] = 2 * dd * k + 4 * fd * fd - R2 * (dd - dz * dz);
+    c[1] = 4 * fd * k - 2 * R2 * (fd - fz * dz);
+    c[0] = k * k - R2 * (ff - fz * fz);
+    real bound = major + minor, disc = fd * fd - dd * (ff - bound * bound);
+    if (disc < 0)
+        return 0;
+    real lo = (-fd - sqrt(disc)) / dd, hi = (-fd + sqrt(disc)) / dd;
+    lo = lo > r->tmin ? lo : r->tmin;
+    hi = hi < r->tmax ? hi : r->tmax;
+    real step = (hi - lo) / 256, a = lo, fa = naive_torus_quartic(c, a);
+    for (int i = 1; i <= 256 && step > 0; i++) {
+        real b = lo + i * step, fb = naive_torus_quartic(c, b);
+        if ((fa < 0) != (fb < 0)) {
+            for (int j = 0; j < 100; j++) {
+                real m = 0.5 * (a + b), fm = naive_torus_quartic(c, m);
+                if ((fm < 0) == (fa < 0))
+                    a = m;
+                else
+                    b = m;
+            }
+            *t = 0.5 * (a + b);
+            return *t > r->tmin;
+        }
+        a = b;
+        fa = fb;
+    }
+    return 0;
 }
 
 #endif

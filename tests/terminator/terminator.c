@@ -61,7 +61,7 @@ static char *read_text(const char *path)
 
 /* The analytic scene with its light turned (LIGHT) and, for a mesh, the
  * sphere statement replaced by the mesh and the `oracle` line left out. */
-static rf_scene *variant(const char *analytic, const char *mesh)
+static scene_model *variant(const char *analytic, const char *mesh)
 {
     char *text = malloc(strlen(analytic) + 512), *out = text;
     const char *line = analytic;
@@ -82,7 +82,7 @@ static rf_scene *variant(const char *analytic, const char *mesh)
     }
     *out = '\0';
     int status;
-    rf_scene *s = scene_load_text(mesh ? "scenes/terminator.scene" : SCENE, text, strlen(text), NULL, stderr, 1,
+    scene_model *s = scene_load_text(mesh ? "scenes/terminator.scene" : SCENE, text, strlen(text), NULL, stderr, 1,
                                   &status);
     free(text);
     return s;
@@ -90,9 +90,9 @@ static rf_scene *variant(const char *analytic, const char *mesh)
 
 /* Renders with the tracer's terminator offset on or off (-1: no shadow
  * rays at all). */
-static rf_image render(const rf_scene *s, int offset)
+static img_buf render(const scene_model *s, int offset)
 {
-    rf_image img;
+    img_buf img;
     tracer t;
     trace_stats st;
     int w = s->image.width, h = s->image.height, k = s->image.samples;
@@ -115,7 +115,7 @@ static rf_image render(const rf_scene *s, int offset)
 
 /* Where pixel (i, j) is on the screen, in radii from the sphere's centre
  * (the camera looks at it), and the sphere's N.L at its centre. */
-static void pixel_geometry(const rf_scene *s, int i, int j, double *r, double *nl)
+static void pixel_geometry(const scene_model *s, int i, int j, double *r, double *nl)
 {
     double half = s->camera.width / 2, radius = 1.2;
     double x = (2 * (i + 0.5) / s->image.width - 1) * half;
@@ -129,7 +129,7 @@ static void pixel_geometry(const rf_scene *s, int i, int j, double *r, double *n
     *nl = vec_dot(n, l);
 }
 
-static double pixel_diff(const rf_image *a, const rf_image *b, int i, int j)
+static double pixel_diff(const img_buf *a, const img_buf *b, int i, int j)
 {
     double d = 0;
     for (int c = 0; c < 3; c++)
@@ -139,7 +139,7 @@ static double pixel_diff(const rf_image *a, const rf_image *b, int i, int j)
 
 /* got against exact in the region and the band; against unshadowed (when
  * not NULL) everywhere. */
-static measure compare(const rf_scene *s, const rf_image *got, const rf_image *exact, const rf_image *unshadowed,
+static measure compare(const scene_model *s, const img_buf *got, const img_buf *exact, const img_buf *unshadowed,
                        const unsigned char *excluded)
 {
     measure m = {0, 0, 0, 0, 0, 0, 0};
@@ -174,7 +174,7 @@ static void row(const char *name, const char *method, measure m)
            m.shadow_max);
 }
 
-static void save(const char *dir, const char *name, const rf_image *img)
+static void save(const char *dir, const char *name, const img_buf *img)
 {
     char path[512], err[256];
     if (!dir)
@@ -192,7 +192,7 @@ int main(int argc, char **argv)
     static const char *const meshes[] = {"sphere_12x8", "sphere_24x16", "sphere_48x32"};
     const char *dir = argc == 3 && strcmp(argv[1], "-o") == 0 ? argv[2] : NULL;
     char *text = read_text(SCENE);
-    rf_scene *analytic = text ? variant(text, NULL) : NULL;
+    scene_model *analytic = text ? variant(text, NULL) : NULL;
     if (!analytic) {
         fprintf(stderr, "terminator: cannot load %s (run from the repository root)\n", SCENE);
         return 66;
@@ -200,7 +200,7 @@ int main(int argc, char **argv)
     const oracle_family *f = oracle_find("lambert_sphere");
     oracle_view v = {analytic, analytic->image.width, analytic->image.height, analytic->image.samples,
                      analytic->image.max_depth};
-    rf_image exact, sphere = render(analytic, 1);
+    img_buf exact, sphere = render(analytic, 1);
     unsigned char *excluded = calloc((size_t)v.width * (size_t)v.height, 1);
     long count;
     if (!excluded || oracle_image(f, &v, &exact, excluded, &count) != 0)
@@ -215,10 +215,10 @@ int main(int argc, char **argv)
     row("analytic sphere", "the hit point", m);
     save(dir, "sphere", &sphere);
     for (int k = 0; k < 3; k++) {
-        rf_scene *s = variant(text, meshes[k]);
+        scene_model *s = variant(text, meshes[k]);
         if (!s)
             return 65;
-        rf_image before = render(s, 0), after = render(s, 1), none = render(s, -1);
+        img_buf before = render(s, 0), after = render(s, 1), none = render(s, -1);
         char name[64];
         row(meshes[k], "the facet (before)", compare(s, &before, &exact, &none, excluded));
         row(meshes[k], "the lifted point (after)", compare(s, &after, &exact, &none, excluded));

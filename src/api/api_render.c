@@ -1,0 +1,109 @@
+/*
+ * api_render.c - the public API's rendering: renderers, regions into the
+ * caller's float buffer, whole images (refray.h).
+ */
+#include <string.h>
+#include "api/convert.h"
+
+void rf_render_options_init(rf_render_options *o)
+{
+    memset(o, 0, sizeof *o);
+}
+
+/* The renderer's progress hook: the caller's progress, then cancel. */
+static int on_row(void *ctx, int done, int total)
+{
+    const rf_render_options *o = &((const rf_renderer *)ctx)->options;
+    if (o->progress)
+        o->progress(o->user, done, total);
+    return o->cancel && o->cancel(o->user);
+}
+
+rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out)
+{
+    const scene_model *s = api_scene(scene);
+    render_opts ro;
+    *out = NULL;
+    if (!api_render_opts(o, &ro))
+        return RF_ERR_USAGE;
+    rf_renderer *r = mem_alloc(&s->mem, sizeof *r);
+    if (!r)
+        return RF_ERR_NO_MEMORY;
+    if (o)
+        r->options = *o;
+    else
+        rf_render_options_init(&r->options);
+    ro.progress = on_row;
+    ro.progress_ctx = r;
+    int status = renderer_init(&r->r, s, &ro);
+    if (status != STATUS_OK) {
+        mem_free(&s->mem, r, sizeof *r);
+        return api_status(status);
+    }
+    *out = r;
+    return RF_OK;
+}
+
+void rf_renderer_size(const rf_renderer *r, int *width, int *height)
+{
+    *width = r->r.stats.width;
+    *height = r->r.stats.height;
+}
+
+rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
+{
+    const render_stats *st = &r->r.stats;
+    if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || !pixels ||
+        row_stride < 3 * (size_t)(x1 - x0))
+        return RF_ERR_USAGE;
+    if (r->options.cancel && r->options.cancel(r->options.user))
+        return RF_ERR_CANCELLED;
+    render_target t = {x0, y0, x1, y1, pixels, NULL, row_stride};
+    return api_status(renderer_region(&r->r, &t));
+}
+
+void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats)
+{
+    api_render_stats(&r->r.stats, stats);
+}
+
+void rf_renderer_free(rf_renderer *r)
+{
+    if (!r)
+        return;
+    mem m = r->r.tracer.scene->mem;
+    renderer_free(&r->r);
+    mem_free(&m, r, sizeof *r);
+}
+
+rf_status rf_render_image(const rf_scene *scene, const rf_render_options *o, rf_image **out,
+                          rf_render_stats *stats)
+{
+    const scene_model *s = api_scene(scene);
+    rf_renderer *r;
+    *out = NULL;
+    if (stats)
+        memset(stats, 0, sizeof *stats);
+    rf_status status = rf_renderer_create(scene, o, &r);
+    if (status != RF_OK)
+        return status;
+    rf_image *img = mem_alloc(&s->mem, sizeof *img);
+    if (!img || img_create_mem(&img->buf, r->r.stats.width, r->r.stats.height, &s->mem) != STATUS_OK)
+        status = RF_ERR_NO_MEMORY;
+    if (status == RF_OK && !(r->options.cancel && r->options.cancel(r->options.user))) {
+        render_target all = {0, 0, img->buf.width, img->buf.height, NULL, img->buf.rgb, 3 * (size_t)img->buf.width};
+        status = api_status(renderer_region(&r->r, &all));
+    } else if (status == RF_OK) {
+        status = RF_ERR_CANCELLED;
+    }
+    if (stats)
+        rf_renderer_stats(r, stats);
+    rf_renderer_free(r);
+    if (status != RF_OK && img) {
+        img_free(&img->buf);
+        mem_free(&s->mem, img, sizeof *img);
+        img = NULL;
+    }
+    *out = img;
+    return status;
+}

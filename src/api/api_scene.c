@@ -1,0 +1,170 @@
+/*
+ * api_scene.c - the public API's scenes: loading from memory and from
+ * files, the callbacks between the caller and the loader, the summary
+ * (refray.h).
+ */
+#include <string.h>
+#include "api/convert.h"
+#include "io/diag_print.h"
+#include "io/scene_file.h"
+
+void rf_load_options_init(rf_load_options *o)
+{
+    memset(o, 0, sizeof *o);
+    scene_limits l = scene_default_limits();
+    o->limits = api_limits_out(&l);
+    o->warnings = 1;
+}
+
+/* A diagnostic record as the caller's callback sees it. */
+static void to_caller(void *user, const diag_record *r)
+{
+    const rf_load_options *o = user;
+    rf_diagnostic d;
+    d.severity = r->level == DIAG_ERROR ? RF_SEVERITY_ERROR : r->level == DIAG_WARNING ? RF_SEVERITY_WARNING
+                                                                                       : RF_SEVERITY_NOTE;
+    d.file = r->path;
+    d.line = r->line;
+    d.column = r->column;
+    d.message = r->message;
+    d.source_line = r->source_line;
+    d.source_line_length = r->source_line_length;
+    d.span_length = r->span_length;
+    o->diagnostic(o->diagnostic_user, &d);
+}
+
+void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
+{
+    diag_record r;
+    r.level = d->severity == RF_SEVERITY_ERROR ? DIAG_ERROR : d->severity == RF_SEVERITY_WARNING ? DIAG_WARNING
+                                                                                                 : DIAG_NOTE;
+    r.path = d->file;
+    r.line = d->line;
+    r.column = d->column;
+    r.message = d->message;
+    r.source_line = d->source_line;
+    r.source_line_length = d->source_line_length;
+    r.span_length = d->span_length;
+    diag_print(stream, &r);
+}
+
+/* The caller's resolver behind the loader's. */
+static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
+{
+    const rf_resolver *r = user;
+    rf_source src;
+    memset(&src, 0, sizeof src);
+    rf_status status = r->fetch(r->user, from, name, &src, why, why_size);
+    out->path = src.path;
+    out->identity = src.identity;
+    out->text = src.text;
+    out->len = src.size;
+    return (int)status;
+}
+
+static void release(void *user, scene_source *out)
+{
+    const rf_resolver *r = user;
+    rf_source src = {out->path, out->identity, out->text, out->len};
+    if (r->release)
+        r->release(r->user, &src);
+}
+
+/* The loader's options for the caller's o (NULL: the defaults). */
+static void load_opts(const rf_load_options *o, scene_load_opts *out)
+{
+    scene_load_opts_init(out);
+    if (!o)
+        return;
+    out->limits = api_limits_in(&o->limits);
+    out->warnings = o->warnings;
+    if (o->diagnostic) {
+        out->sink = to_caller;
+        out->sink_user = (void *)o;
+    }
+    if (o->resolver.fetch) {
+        out->resolver.fetch = fetch;
+        out->resolver.release = release;
+        out->resolver.user = (void *)&o->resolver;
+    }
+    out->mem = api_mem(o->allocator);
+}
+
+rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
+                               rf_scene **out)
+{
+    scene_load_opts lo;
+    int status;
+    load_opts(o, &lo);
+    scene_source root = {name, NULL, text, size};
+    *out = (rf_scene *)(void *)scene_load_source(&root, &lo, &status);
+    return api_status(status);
+}
+
+rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scene **out)
+{
+    scene_load_opts lo;
+    int status;
+    load_opts(o, &lo);
+    *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
+    return api_status(status);
+}
+
+void rf_scene_free(rf_scene *scene)
+{
+    scene_free((scene_model *)(void *)scene);
+}
+
+static unsigned features(const scene_features *f)
+{
+    return (f->shadows ? RF_FEATURE_SHADOWS : 0u) | (f->specular ? RF_FEATURE_SPECULAR : 0u) |
+           (f->reflection ? RF_FEATURE_REFLECTION : 0u) | (f->refraction ? RF_FEATURE_REFRACTION : 0u) |
+           (f->sampled_lights ? RF_FEATURE_SAMPLED_LIGHTS : 0u) | (f->meshes ? RF_FEATURE_MESHES : 0u);
+}
+
+/* rf_scene_info counts every kind of primitive: a new kind needs a field. */
+typedef char every_kind[PRIM_KINDS == 9 ? 1 : -1];
+
+void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
+{
+    const scene_model *s = api_scene(scene);
+    int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes,    &info->triangles, &info->disks, &info->boxes,
+                              &info->cylinders, &info->cones, &info->tori,      &info->meshes};
+    long triangles;
+    memset(info, 0, sizeof *info);
+    info->width = s->image.width;
+    info->height = s->image.height;
+    info->samples = s->image.samples;
+    info->max_depth = s->image.max_depth;
+    info->primitives = s->prim_count;
+    for (int i = 0; i < s->prim_count; i++)
+        (*kinds[s->prims[i].kind])++;
+    info->mesh_bytes = scene_mesh_bytes(s, &triangles);
+    info->mesh_triangles = (int)triangles;
+    info->lights = s->light_count;
+    info->materials = s->material_count;
+    info->features = features(&s->features);
+    info->oracle = s->oracle;
+}
+
+rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info)
+{
+    const scene_model *s = api_scene(scene);
+    memset(info, 0, sizeof *info);
+    if (index < 0 || index >= s->mesh_count)
+        return RF_ERR_USAGE;
+    const scene_mesh *m = &s->meshes[index];
+    const scene_mesh_report *r = &m->report;
+    info->path = m->path;
+    info->triangles = m->geom.tri_count;
+    info->faces = r->faces;
+    info->dropped = r->dropped;
+    info->nonplanar = r->nonplanar;
+    info->fanned = r->fanned;
+    info->closed = m->geom.closed;
+    info->oriented = r->oriented;
+    info->pieces = r->components;
+    info->open_edges = r->open_edges;
+    info->crowded_edges = r->crowded_edges;
+    return RF_OK;
+}

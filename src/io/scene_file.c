@@ -1,0 +1,129 @@
+/*
+ * scene_file.c - the file resolver and the file loaders (scene_file.h).
+ */
+/* realpath is an XSI function: it needs more than _POSIX_C_SOURCE. */
+#define _XOPEN_SOURCE 700
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include "io/diag_print.h"
+#include "io/fileio.h"
+#include "io/scene_file.h"
+
+static void release(void *user, scene_source *src)
+{
+    scene_file_reader *f = user;
+    mem_free_string(&f->mem, (char *)src->path);
+    mem_free_string(&f->mem, (char *)src->identity);
+    if (src->text)
+        mem_free(&f->mem, (char *)src->text, src->len + 1);
+    memset(src, 0, sizeof *src);
+}
+
+/* A copy of path's real path, or of path itself when it has none. */
+static char *identity_of(const mem *m, const char *path)
+{
+    char resolved[PATH_MAX];
+    return mem_strdup(m, realpath(path, resolved) ? resolved : path);
+}
+
+static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
+{
+    scene_file_reader *f = user;
+    char *dir = file_dirname(&f->mem, from);
+    char *path = dir ? file_join(&f->mem, dir, name) : NULL, *text = NULL;
+    mem_free_string(&f->mem, dir);
+    if (!path)
+        return STATUS_NO_MEMORY;
+    size_t len = 0;
+    int status = file_read_all(path, f->max_bytes, &f->mem, &text, &len, why, why_size);
+    out->path = path;
+    out->text = text;
+    out->len = len;
+    if (status == STATUS_OK && !(out->identity = identity_of(&f->mem, path)))
+        status = STATUS_NO_MEMORY;
+    if (status != STATUS_OK)
+        release(f, out);
+    return status;
+}
+
+scene_resolver scene_file_resolver(scene_file_reader *files)
+{
+    scene_resolver r = {fetch, release, files};
+    return r;
+}
+
+/* A message without location through the load's sink. */
+static void report(const scene_load_opts *o, const char *message)
+{
+    diag_record r;
+    memset(&r, 0, sizeof r);
+    r.level = DIAG_ERROR;
+    r.message = message;
+    if (o->sink)
+        o->sink(o->sink_user, &r);
+}
+
+/* Loads the root text under path (its identity: its real path). */
+static scene_model *load_root(const char *path, const char *text, size_t len, const scene_load_opts *o,
+                              const mem *m, int *status)
+{
+    scene_source root = {path, identity_of(m, path), text, len};
+    scene_model *s = NULL;
+    if (root.identity)
+        s = scene_load_source(&root, o, status);
+    else
+        *status = STATUS_NO_MEMORY;
+    mem_free_string(m, (char *)root.identity);
+    return s;
+}
+
+scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status)
+{
+    scene_load_opts opts;
+    if (o)
+        opts = *o;
+    else
+        scene_load_opts_init(&opts);
+    scene_file_reader files = {opts.limits.max_file_bytes, mem_pick(&opts.mem)};
+    if (!opts.resolver.fetch)
+        opts.resolver = scene_file_resolver(&files);
+    char why[512], *text = NULL;
+    size_t len = 0;
+    *status = file_read_all(path, opts.limits.max_file_bytes, &files.mem, &text, &len, why, sizeof why);
+    if (*status != STATUS_OK) {
+        report(&opts, why);
+        return NULL;
+    }
+    scene_model *s = load_root(path, text, len, &opts, &files.mem, status);
+    mem_free(&files.mem, text, len + 1);
+    return s;
+}
+
+static void short_opts(scene_load_opts *o, const scene_limits *limits, FILE *diag_out, int warnings)
+{
+    scene_load_opts_init(o);
+    if (limits)
+        o->limits = *limits;
+    o->warnings = warnings;
+    o->sink = diag_out ? diag_print : NULL;
+    o->sink_user = diag_out;
+}
+
+scene_model *scene_file_load(const char *path, const scene_limits *limits, FILE *diag_out, int warnings,
+                             int *status)
+{
+    scene_load_opts o;
+    short_opts(&o, limits, diag_out, warnings);
+    return scene_file_load_with(path, &o, status);
+}
+
+scene_model *scene_file_load_text(const char *path, const char *text, size_t len, const scene_limits *limits,
+                                  FILE *diag_out, int warnings, int *status)
+{
+    scene_load_opts o;
+    short_opts(&o, limits, diag_out, warnings);
+    scene_file_reader files = {o.limits.max_file_bytes, mem_pick(&o.mem)};
+    o.resolver = scene_file_resolver(&files);
+    return load_root(path, text, len, &o, &files.mem, status);
+}

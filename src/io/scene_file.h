@@ -1,0 +1,50 @@
+/*
+ * scene_file.h - scenes that live in files: the resolver that reads
+ * `include` and `mesh` files from the file system, and loading a scene
+ * file with its diagnostics printed to a stream.  The core (scene.h) reads
+ * nothing itself; this is where the file system comes in.
+ */
+#ifndef REFRAY_SCENE_FILE_H
+#define REFRAY_SCENE_FILE_H
+
+#include <stdio.h>
+#include "scene/scene.h"
+
+/* The file resolver's state: the size limit and the allocator of what it
+ * reads (the load's). */
+typedef struct scene_file_reader {
+    long max_bytes;     /* per file (--max-file-size); < 0: no limit */
+    mem mem;
+} scene_file_reader;
+
+/*
+ * A resolver over the file system: `name` is read relative to the
+ * directory of the including file's path (as written, not resolved), only
+ * if it is a regular file of at most max_bytes; its identity is its real
+ * path (realpath), so an include cycle is found under any spelling.
+ */
+scene_resolver scene_file_resolver(scene_file_reader *files);
+
+/*
+ * Reads the scene file path and loads it with o (NULL: the defaults); when
+ * o has no resolver, includes and meshes come from files (with o's
+ * --max-file-size).  A file that cannot be read is reported through
+ * o->sink without a location, and *status is file_read_all's
+ * (STATUS_NO_INPUT, STATUS_DATA over the size limit, STATUS_IO,
+ * STATUS_NO_MEMORY).  Otherwise as scene_load_source.
+ */
+scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status);
+
+/*
+ * The short forms the program and the tests use: the default options but
+ * limits (NULL: the defaults) and warnings, diagnostics printed to diag_out
+ * (NULL: none), includes and meshes from files.  scene_file_load_text
+ * takes the root's text from memory; path names it in messages and is
+ * where its includes are looked for.
+ */
+scene_model *scene_file_load(const char *path, const scene_limits *limits, FILE *diag_out, int warnings,
+                             int *status);
+scene_model *scene_file_load_text(const char *path, const char *text, size_t len, const scene_limits *limits,
+                                  FILE *diag_out, int warnings, int *status);
+
+#endif

@@ -1,0 +1,26 @@
+/*
+ * quadric_family.h - what the families lambert_cylinder, lambert_cone and
+ * lambert_torus share: their assumptions (one untransformed matte shape,
+ * an orthographic camera whose image plane lies outside a ball around it,
+ * lights outside that ball) and the shading of the first point a view ray
+ * meets (spec/analytic.md).
+ */
+#ifndef REFRAY_QUADRIC_FAMILY_H
+#define REFRAY_QUADRIC_FAMILY_H
+
+#include "oracle/oracle_quadric.h"
+
+/* 1 when the scene is one primitive of kind `kind`, untransformed, matte,
+ * with point and distant lights outside the ball (c, r) (distant_only:
+ * distant lights alone) and an orthographic camera whose image plane lies
+ * wholly in front of that ball; else refuses with the reason. */
+int quadric_family_accepts(const oracle_view *v, scene_prim_kind kind, const char *what, vec3 c, double r,
+                           int distant_only, const char *family, char *why, size_t n);
+
+/* The Lambert value Kd (Ia + sum I S max(0, N.L)) at p with normal n for a
+ * view along d, shadow() as oracle_shade_direct takes it; *out is set when
+ * ORACLE_EXACT. */
+oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d, oracle_shadow_fn shadow,
+                                   const void *ctx, rgb *out);
+
+#endif

@@ -1,0 +1,331 @@
+/*
+ * intersect_quadric.c - cylinder and cone (intersect_shapes.h).
+ *
+ * Both are seen along their axis a = (to - from)/len from the end `from`:
+ * a point o + t d has the axial coordinate z0 + t dz (z0 = (o - from).a,
+ * dz = d.a) and the part across the axis fp + t dp.  The side is where
+ * |fp + t dp| equals the radius at that height, rho(z) = r0 + k z with
+ * k = (r1 - r0)/len (k = 0: a cylinder); the ends are the planes z = 0 and
+ * z = len (the slab).
+ *
+ * A closed one is a convex solid: the points of the slab inside the side.
+ * The line meets it in one interval (Kay and Kajiya's slabs, "Ray Tracing
+ * Complex Scenes", SIGGRAPH 1986, with the side as one more constraint):
+ * it enters at the later of the slab's and the side's entries and leaves
+ * at the earlier of their exits.  Deciding both crossings from one interval
+ * leaves no gap at the rim between side and cap.  An open one is the side
+ * alone, cut by the slab: a sheet, like a plane.
+ *
+ * The side, |fp + t dp|^2 = (rho0 + s t)^2 with rho0 = r0 + k z0 and
+ * s = k dz, is a t^2 + 2 b t + c = 0 with
+ *     a = |dp|^2 - s^2,  b = fp.dp - rho0 s,  c = |fp|^2 - rho0^2.
+ * For the cylinder (s = 0) it is the sphere's equation in the plane across
+ * the axis, solved by sphere_roots' perpendicular foot (intersect.c).  For
+ * the cone, a and c are formed as products of a difference and a sum
+ * (exact to rounding near the surface), and the discriminant b^2 - a c
+ * with both products' rounding errors recovered by fma, so that a ray
+ * along a generator or just grazing the side is decided from the exact
+ * sign of the rounded coefficients.  a may be negative (a ray steeper
+ * than the side): then the line is inside the double cone outside its
+ * roots, and the slab keeps the one nappe between the ends.
+ *
+ * A root of the side is refined like the sphere's: the equation is solved
+ * again from o' = o + t d, where its root of least magnitude is a Newton
+ * step onto the surface, so the hit point's error is relative to the
+ * point itself and not to a far ray origin.  Cap points are projected onto
+ * their plane.
+ */
+#include "render/intersect_shapes.h"
+
+/* The ray seen along the axis. */
+typedef struct axial {
+    vec3 a;          /* unit axis */
+    real len;        /* |to - from| */
+    real z0, dz;     /* axial coordinate of the origin, and its rate along d */
+    vec3 fp, dp;     /* the parts of o - from and of d across the axis */
+} axial;
+
+static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
+{
+    vec3 w = vec_sub(to, from), f = vec_sub(o, from);
+    x->len = vec_length(w);
+    x->a = vec_scale(w, 1.0 / x->len);
+    x->z0 = vec_dot(f, x->a);
+    x->dz = vec_dot(d, x->a);
+    x->fp = vec_madd(f, x->a, -x->z0);
+    x->dp = vec_madd(d, x->a, -x->dz);
+}
+
+/* The shape: radius r0 at from, r1 at to. */
+typedef struct quadric {
+    vec3 from, to;
+    real r0, r1;
+    real k;          /* (r1 - r0)/len */
+    int cone;        /* 0: the cylinder's perpendicular-foot solve */
+} quadric;
+
+/* Up to two closed intervals of t; lo may be -inf and hi +inf. */
+typedef struct tspan {
+    int count;
+    real lo[2], hi[2];
+} tspan;
+
+/* b^2 - a c with the rounding of both products recovered by fma. */
+static real discriminant(real a, real b, real c)
+{
+    real p = b * b, q = a * c;
+    return (p - q) + (fma(b, b, -p) - fma(a, c, -q));
+}
+
+typedef struct side_eq {
+    real a, b, c;
+} side_eq;
+
+static side_eq cone_equation(const quadric *s, const axial *x)
+{
+    side_eq e;
+    real rho0 = s->r0 + s->k * x->z0, sig = s->k * x->dz;
+    real lf = vec_length(x->fp), ld = vec_length(x->dp);
+    e.a = (ld - fabs(sig)) * (ld + fabs(sig));
+    e.b = vec_dot(x->fp, x->dp) - rho0 * sig;
+    e.c = (lf - fabs(rho0)) * (lf + fabs(rho0));
+    return e;
+}
+
+/* The roots of the side's equation, increasing; their number (0 to 2).
+ * *all: the equation holds nowhere or everywhere without roots (a = 0, a
+ * cylinder's axis direction): set to 1 when the line is inside throughout. */
+static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
+{
+    if (!s->cone) {
+        eq->a = vec_length2(x->dp);
+        eq->b = 0;
+        eq->c = vec_length(x->fp) - s->r0;
+        return eq->a > 0 ? isect_sphere_roots(x->fp, x->dp, s->r0, t) : 0;
+    }
+    *eq = cone_equation(s, x);
+    if (eq->a == 0) {
+        if (eq->b == 0)
+            return 0;
+        t[0] = -eq->c / (2 * eq->b);
+        return 1;
+    }
+    real disc = discriminant(eq->a, eq->b, eq->c);
+    if (disc < 0)
+        return 0;
+    real q = -(eq->b + copysign(sqrt(disc), eq->b));
+    if (q == 0) {
+        t[0] = 0;
+        return 1;
+    }
+    real t0 = q / eq->a, t1 = eq->c / q;
+    t[0] = t0 < t1 ? t0 : t1;
+    t[1] = t0 < t1 ? t1 : t0;
+    return 2;
+}
+
+/* The t where the line is inside the side: for the cylinder and a cone
+ * with a > 0 between the roots; a cone with a < 0 outside them; a = 0
+ * on one side of the single root; no roots: nowhere or everywhere by the
+ * sign of the equation (c for the cylinder's axis direction). */
+static void side_span(const quadric *s, const axial *x, tspan *out)
+{
+    real t[2];
+    side_eq eq;
+    int n = side_roots(s, x, t, &eq);
+    out->count = 0;
+    if (n == 0) {
+        int inside = s->cone ? eq.a < 0 || (eq.a == 0 && eq.b == 0 && eq.c <= 0) : eq.a == 0 && eq.c <= 0;
+        if (inside) {
+            out->lo[0] = -INFINITY;
+            out->hi[0] = INFINITY;
+            out->count = 1;
+        }
+        return;
+    }
+    if (n == 1 && s->cone && eq.a == 0) {
+        out->lo[0] = eq.b > 0 ? -INFINITY : t[0];
+        out->hi[0] = eq.b > 0 ? t[0] : INFINITY;
+        out->count = 1;
+        return;
+    }
+    if (n == 1)
+        t[1] = t[0];
+    if (!s->cone || eq.a > 0) {
+        out->lo[0] = t[0];
+        out->hi[0] = t[1];
+        out->count = 1;
+        return;
+    }
+    out->lo[0] = -INFINITY;
+    out->hi[0] = t[0];
+    out->lo[1] = t[1];
+    out->hi[1] = INFINITY;
+    out->count = 2;
+}
+
+/* The t between the end planes, [*lo, *hi]; 0 when never (parallel and
+ * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to). */
+static int slab(const axial *x, real *lo, real *hi, int *lo_end)
+{
+    if (x->dz == 0) {
+        *lo = -INFINITY;
+        *hi = INFINITY;
+        *lo_end = 0;
+        return x->z0 >= 0 && x->z0 <= x->len;
+    }
+    real t0 = -x->z0 / x->dz, t1 = (x->len - x->z0) / x->dz;
+    *lo_end = x->dz > 0 ? 0 : 1;
+    *lo = x->dz > 0 ? t0 : t1;
+    *hi = x->dz > 0 ? t1 : t0;
+    return 1;
+}
+
+/* One crossing before refinement: t and the surface (0, 1: the end caps at
+ * from and to, 2: the side). */
+typedef struct crossing {
+    real t;
+    int surface;
+} crossing;
+
+enum { SURFACE_SIDE = 2 };
+
+/* The closed solid: the slab's interval met with the side's (by
+ * convexity at most one of the side's pieces meets the slab in more than a
+ * point; near the apex, where both may touch it, the longer one is kept). */
+static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
+{
+    real slo, shi;
+    int end;
+    tspan side;
+    if (!slab(x, &slo, &shi, &end))
+        return 0;
+    side_span(s, x, &side);
+    int best = -1;
+    real best_len = -1;
+    for (int i = 0; i < side.count; i++) {
+        real lo = side.lo[i] > slo ? side.lo[i] : slo, hi = side.hi[i] < shi ? side.hi[i] : shi;
+        if (lo <= hi && hi - lo > best_len) {
+            best = i;
+            best_len = hi - lo;
+        }
+    }
+    if (best < 0)
+        return 0;
+    c[0].surface = side.lo[best] >= slo ? SURFACE_SIDE : end;
+    c[0].t = side.lo[best] >= slo ? side.lo[best] : slo;
+    c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
+    c[1].t = side.hi[best] <= shi ? side.hi[best] : shi;
+    if (!isfinite(c[0].t) || !isfinite(c[1].t))
+        return 0;
+    return c[0].t == c[1].t ? 1 : 2;
+}
+
+/* The open side: its finite crossings whose height is between the ends. */
+static int open_crossings(const quadric *s, const axial *x, crossing c[2])
+{
+    tspan side;
+    real t[4];
+    int n = 0, found = 0;
+    side_span(s, x, &side);
+    for (int i = 0; i < side.count; i++) {
+        t[n++] = side.lo[i];
+        if (side.hi[i] != side.lo[i])
+            t[n++] = side.hi[i];
+    }
+    for (int i = 0; i < n && found < 2; i++) {
+        real z = x->z0 + t[i] * x->dz;
+        if (isfinite(t[i]) && z >= 0 && z <= x->len) {
+            c[found].t = t[i];
+            c[found++].surface = SURFACE_SIDE;
+        }
+    }
+    return found;
+}
+
+/* t moved onto the side: the equation solved again from o' = o + t d; its
+ * root of least magnitude is the step.  Returns the refined t, *p the point. */
+static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
+{
+    axial x;
+    side_eq eq;
+    real roots[2];
+    vec3 o2 = ray_at(r, t);
+    axial_of(s->from, s->to, o2, r->dir, &x);
+    int n = side_roots(s, &x, roots, &eq);
+    *p = o2;
+    if (n == 0)
+        return t;
+    real step = n == 2 && fabs(roots[1]) < fabs(roots[0]) ? roots[1] : roots[0];
+    *p = vec_madd(o2, r->dir, step);
+    return t + step;
+}
+
+/* The outward normal of the side at p (a cone's apex: along the axis,
+ * away from the cone). */
+static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
+{
+    vec3 q = vec_sub(p, s->from);
+    vec3 across = vec_madd(q, a, -vec_dot(q, a));
+    real l = vec_length(across);
+    if (!(l > 0))
+        return s->k > 0 ? vec_neg(a) : a;
+    return vec_normalize(vec_madd(vec_scale(across, 1.0 / l), a, -s->k));
+}
+
+static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
+{
+    vec3 p, n;
+    real t = c.t;
+    if (c.surface == SURFACE_SIDE) {
+        t = side_refine(s, r, t, &p);
+        n = side_normal(s, x->a, p);
+    } else {
+        vec3 plane = c.surface == 0 ? s->from : s->to;
+        p = ray_at(r, t);
+        p = vec_madd(p, x->a, -vec_dot(vec_sub(p, plane), x->a));
+        n = c.surface == 0 ? vec_neg(x->a) : x->a;
+    }
+    isect_hit_set(h, t, p, n, r->dir);
+}
+
+static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int max)
+{
+    axial x;
+    crossing c[2];
+    hit h[2];
+    axial_of(s->from, s->to, r->origin, r->dir, &x);
+    int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;
+    for (int i = 0; i < n; i++) {
+        crossing_hit(s, &x, r, c[i], &h[kept]);
+        kept += h[kept].t > r->tmin && h[kept].t < r->tmax;
+    }
+    if (kept == 2 && h[1].t < h[0].t) {
+        hit swap = h[0];
+        h[0] = h[1];
+        h[1] = swap;
+    }
+    for (int i = 0; i < kept && i < max; i++)
+        out[i] = h[i];
+    return kept < max ? kept : max;
+}
+
+int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max)
+{
+    quadric s = {from, to, radius, radius, 0, 0};
+    return quadric_hits(&s, open, r, out, max);
+}
+
+int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max)
+{
+    quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};
+    return quadric_hits(&s, open, r, out, max);
+}
+
+/* A disk of radius R across the unit axis a spans R sqrt(1 - a_k^2) about
+ * its centre along axis k. */
+void isect_disk_extent(vec3 a, real radius, vec3 *e)
+{
+    *e = vec_make(radius * sqrt(fmax(0.0, 1.0 - a.x * a.x)), radius * sqrt(fmax(0.0, 1.0 - a.y * a.y)),
+                  radius * sqrt(fmax(0.0, 1.0 - a.z * a.z)));
+}

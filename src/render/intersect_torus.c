@@ -1,0 +1,226 @@
+/*
+ * intersect_torus.c - the ring torus (intersect_shapes.h): the points at
+ * distance `minor` (r) from the circle of radius `major` (R) about `center`
+ * across the unit `axis` a.  With q = p - center, z = q.a and
+ * rho = |q - z a| (the distance from the axis), the distance from the
+ * circle is D = sqrt((rho - R)^2 + z^2) and the surface is D = r.
+ *
+ * Squaring twice gives the quartic of the literature (P. Hanrahan in
+ * Glassner, ed., "An Introduction to Ray Tracing", 1989; J. M. Cychosz,
+ * "Intersecting a Ray with an Elliptical Torus", Graphics Gems II, 1991):
+ *     (|q|^2 + R^2 - r^2)^2 - 4 R^2 rho^2 = (D^2 - r^2)((rho + R)^2 + z^2 - r^2),
+ * whose second factor is positive for a ring torus (r < R), so the quartic
+ * and D - r have the same sign.  Along the line q(s) = p0 + s e (e unit)
+ * it is s^4 + c3 s^3 + c2 s^2 + c1 s + c0 with alpha = p0.e,
+ * beta = |p0|^2 + R^2 - r^2 and the parts p0', e' of p0 and e across the
+ * axis:
+ *     c3 = 4 alpha,                c2 = 4 alpha^2 + 2 beta - 4 R^2 |e'|^2,
+ *     c1 = 4 alpha beta - 8 R^2 p0'.e',
+ *     c0 = (D0 - r)(D0 + r) ((rho0 + R)^2 + z0^2 - r^2)    (D0, rho0, z0 at p0).
+ *
+ * Three steps keep it robust at the scales of scenes/stress:
+ *   1. the line is met with the bounding sphere (radius R + r, by
+ *      sphere_roots' perpendicular foot); p0 is the middle of that chord,
+ *      the point of the line nearest the centre, and lengths are divided by
+ *      R + r: the coefficients are of order 1 and the roots lie in
+ *      [-h, h], h <= 1, however far the ray starts;
+ *   2. the real roots in [-h, h] are isolated by the derivative cascade:
+ *      the roots of P''' split [-h, h] where P'' is monotone, the roots of
+ *      P'' where P' is, the roots of P' where P is; in each monotone piece
+ *      a sign change brackets exactly one root, found by Newton's method
+ *      safeguarded by bisection.  No closed form (Ferrari's cancels
+ *      badly for thin tori), no root is lost to a near-double root
+ *      elsewhere, and a graze (a double root) is a sign change only when
+ *      the rounded quartic changes sign;
+ *   3. each root is polished by Newton's method on the distance itself,
+ *      g(t) = D(o + t d) - r, whose gradient is the unit normal n, so
+ *      t <- t - g / (n.d), restarted from the point each time (as the
+ *      sphere's refinement): the hit point ends within a few ulps of its
+ *      own magnitude of the surface, however far the origin.  A polish
+ *      that would move the root farther than the quartic could have been
+ *      wrong (a grazing pair) is not taken.
+ * spec/numerics.md ("The torus") has the measured errors.
+ */
+#include "render/intersect_shapes.h"
+
+enum { DEGREE = 4, ROOTS_MAX = 4 };
+
+/* p[0] + p[1] u + ... + p[deg] u^deg by Horner's rule. */
+static real poly_eval(const real *p, int deg, real u)
+{
+    real v = p[deg];
+    for (int i = deg - 1; i >= 0; i--)
+        v = v * u + p[i];
+    return v;
+}
+
+static void poly_derive(const real *p, int deg, real *dp)
+{
+    for (int i = 1; i <= deg; i++)
+        dp[i - 1] = (real)i * p[i];
+}
+
+/* The one root of p in [a, b], where p is monotone and changes sign
+ * (fa = p(a)): Newton from the middle, falling back to bisection whenever
+ * a step would leave the bracket; stops when the bracket or the step is
+ * below 2^-50 (lengths here are of order 1). */
+static real monotone_root(const real *p, const real *dp, int deg, real a, real b, real fa)
+{
+    real x = 0.5 * (a + b);
+    for (int i = 0; i < 200; i++) {
+        real fx = poly_eval(p, deg, x);
+        if (fx == 0)
+            return x;
+        if ((fx < 0) == (fa < 0))
+            a = x;
+        else
+            b = x;
+        real slope = poly_eval(dp, deg - 1, x), next = x - fx / slope;
+        if (!(next > a && next < b))
+            next = 0.5 * (a + b);
+        if (fabs(next - x) <= 0x1p-50 || b - a <= 0x1p-50)
+            return next;
+        x = next;
+    }
+    return x;
+}
+
+/* The real roots of p (degree deg >= 1) in [lo, hi], increasing; their number. */
+static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
+{
+    if (deg == 1) {
+        real u = -p[0] / p[1];
+        roots[0] = u;
+        return p[1] != 0 && u >= lo && u <= hi;
+    }
+    real dp[DEGREE], ends[ROOTS_MAX + 2];
+    poly_derive(p, deg, dp);
+    int ncut = poly_roots(dp, deg - 1, lo, hi, ends + 1), found = 0;
+    ends[0] = lo;
+    ends[ncut + 1] = hi;
+    for (int i = 0; i <= ncut; i++) {
+        real a = ends[i], b = ends[i + 1], fa = poly_eval(p, deg, a), fb = poly_eval(p, deg, b);
+        if (fa == 0) {
+            if (found == 0 || roots[found - 1] != a)
+                roots[found++] = a;
+        } else if (fb == 0 && i == ncut) {
+            roots[found++] = b;
+        } else if ((fa < 0) != (fb < 0) && fb != 0) {
+            roots[found++] = monotone_root(p, dp, deg, a, b, fa);
+        }
+    }
+    return found;
+}
+
+typedef struct torus {
+    vec3 c, a;
+    real major, minor;
+} torus;
+
+/* The distance from the core circle at p and its gradient, the outward
+ * unit normal; 0 on the axis or the circle itself, where neither exists. */
+static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
+{
+    vec3 q = vec_sub(p, tr->c);
+    real z = vec_dot(q, tr->a);
+    vec3 across = vec_madd(q, tr->a, -z);
+    real rho = vec_length(across), dr = rho - tr->major;
+    *d = hypot(dr, z);
+    if (!(rho > 0) || !(*d > 0))
+        return 0;
+    *n = vec_madd(vec_scale(across, dr / (*d * rho)), tr->a, z / *d);
+    return 1;
+}
+
+/* Polishes the root t (step 3); *p and *n are the point and the normal.
+ * limit: the largest move in t that is still the same root. */
+static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 *p, vec3 *n)
+{
+    vec3 x = ray_at(r, t);
+    real tt = t, d, dl = vec_length(r->dir);
+    vec3 nn;
+    for (int i = 0; i < 8 && torus_distance(tr, x, &d, &nn); i++) {
+        real slope = vec_dot(nn, r->dir);
+        if (slope == 0)
+            break;
+        real step = -(d - tr->minor) / slope;
+        if (!(fabs(tt + step - t) <= limit))
+            break;
+        x = vec_madd(x, r->dir, step);
+        tt += step;
+        /* Done when the move is below the rounding of the point itself. */
+        vec3 ax = vec_make(fabs(x.x), fabs(x.y), fabs(x.z));
+        if (fabs(step) * dl <= REAL_EPSILON * (vec_max_component(ax) + tr->major))
+            break;
+    }
+    if (!torus_distance(tr, x, &d, n))
+        *n = tr->a;
+    *p = x;
+    return tt;
+}
+
+/* The quartic's coefficients about p0 (lengths divided by the bounding
+ * radius; e unit), leading coefficient 1 in c[4]. */
+static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[DEGREE + 1])
+{
+    real big = tr->major / scale, small = tr->minor / scale;
+    real z0 = vec_dot(p0, tr->a), ez = vec_dot(e, tr->a);
+    vec3 p0x = vec_madd(p0, tr->a, -z0), ex = vec_madd(e, tr->a, -ez);
+    real alpha = vec_dot(p0, e), m = vec_length2(p0), beta = m + (big - small) * (big + small);
+    real rho0 = vec_length(p0x), d0 = hypot(rho0 - big, z0);
+    c[4] = 1;
+    c[3] = 4 * alpha;
+    c[2] = 4 * alpha * alpha + 2 * beta - 4 * big * big * vec_length2(ex);
+    c[1] = 4 * alpha * beta - 8 * big * big * vec_dot(p0x, ex);
+    c[0] = (d0 - small) * (d0 + small) * ((rho0 + big) * (rho0 + big) + z0 * z0 - small * small);
+}
+
+int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max)
+{
+    torus tr = {center, axis, major, minor};
+    real scale = major + minor, tb[2], c[DEGREE + 1], u[ROOTS_MAX];
+    vec3 f = vec_sub(r->origin, center);
+    /* A line that only touches the bounding sphere touches the torus at
+     * most on its outer equator: a graze, counted as a miss. */
+    if (isect_sphere_roots(f, r->dir, scale, tb) < 2)
+        return 0;
+    real dl = vec_length(r->dir), tm = 0.5 * (tb[0] + tb[1]), half = 0.5 * (tb[1] - tb[0]) * dl / scale;
+    vec3 e = vec_scale(r->dir, 1.0 / dl), p0 = vec_scale(vec_madd(f, r->dir, tm), 1.0 / scale);
+    torus_quartic(&tr, scale, p0, e, c);
+    /* The torus touches its bounding sphere along the outer equator: a ray
+     * entering there has a root at the chord's very end, which rounding may
+     * put just outside.  Outside the sphere the quartic is positive (no
+     * point of the torus is there), so a margin adds no root. */
+    half += 0x1p-20;
+    int n = poly_roots(c, DEGREE, -half, half, u), found = 0;
+    hit h[ROOTS_MAX];
+    for (int i = 0; i < n; i++) {
+        real t = tm + u[i] * scale / dl;
+        /* The same root until halfway to its neighbours (or 1e-3 of the
+         * chord past the outer ones). */
+        real below = i > 0 ? 0.5 * (u[i] - u[i - 1]) : 1e-3 * half;
+        real above = i + 1 < n ? 0.5 * (u[i + 1] - u[i]) : 1e-3 * half;
+        real limit = (below < above ? below : above) * scale / dl;
+        vec3 p, nn;
+        t = torus_polish(&tr, r, t, limit, &p, &nn);
+        if (t > r->tmin && t < r->tmax)
+            isect_hit_set(&h[found++], t, p, nn, r->dir);
+    }
+    for (int i = 1; i < found; i++)
+        for (int j = i; j > 0 && h[j].t < h[j - 1].t; j--) {
+            hit s = h[j];
+            h[j] = h[j - 1];
+            h[j - 1] = s;
+        }
+    for (int i = 0; i < found && i < max; i++)
+        out[i] = h[i];
+    return found < max ? found : max;
+}
+
+/* The ring spans major sqrt(1 - a_k^2) about the centre along axis k, and
+ * the tube adds minor in every direction. */
+void isect_torus_extent(vec3 a, real major, real minor, vec3 *e)
+{
+    isect_disk_extent(a, major, e);
+    *e = vec_add(*e, vec_splat(minor));
+}

@@ -1,0 +1,470 @@
+/*
+ * check_conform.c - `refray conform` against fake renderers
+ * (the scripts in tests/conform/fake/) that crash, hang, exit non-zero, write nothing,
+ * garbage, a FIFO, the wrong size or NaN, and that are right (a copy of the exact
+ * image; refray itself; a picture rendered twice as large and four times
+ * as bright, taken back by --downsample and --scale); each with its verdict
+ * and exit code, the reports, the command-line errors, and the expansion
+ * of placeholders (spec/conformance.md).  A kit of three small scenes
+ * (cli_testlib.h) is built once for the suite.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "io/fileio.h"
+#include "io/filewrite.h"
+#include "cli_testlib.h"
+#include "image/image_file.h"
+#include "verify/conform.h"
+
+static char kit_root[64];
+static int kit_status = -1;
+
+static void kit_setup(void)
+{
+    kit_status = cli_kit_setup(kit_root, sizeof kit_root);
+}
+
+static void kit_teardown(void)
+{
+    cli_kit_teardown(kit_root);
+}
+
+/* Valgrind runs refray and the shell under it: more time there. */
+static double slow(void)
+{
+    const char *v = getenv("REFRAY_TEST_VALGRIND");
+    return v && strcmp(v, "1") == 0 ? 20 : 1;
+}
+
+#if REFRAY_HAVE_JSON
+
+/* The command line of a fake: absolute, since conform runs it in a fresh
+ * directory. */
+static const char *fake(char *buf, size_t size, const char *name)
+{
+    char cwd[256];
+    ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+    snprintf(buf, size, "sh %s/tests/conform/fake/%s.sh {scene} {out} {width} {height}", cwd, name);
+    return buf;
+}
+
+static void conform(cli_run *r, const char *cmd, const char *extra1, const char *extra2)
+{
+    char kit[128], timeout[32];
+    ck_assert_msg(kit_status == 0, "`refray kit` failed (exit %d)", kit_status);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    snprintf(timeout, sizeof timeout, "%g", 10 * slow());
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--only", "plane_point_linear",
+                          "--timeout", timeout, "--cmd", cmd, extra1, extra2, NULL};
+    cli_refray(r, args);
+}
+
+/* Asserts the one scene's outcome and that reason holds want. */
+static void expect(const cli_run *r, int code, const char *outcome, const char *want)
+{
+    char pattern[64];
+    snprintf(pattern, sizeof pattern, "\"outcome\": \"%s\"", outcome);
+    ck_assert_msg(r->code == code, "exit %d, expected %d\nstdout %s\nstderr %s", r->code, code, r->out, r->err);
+    ck_assert_msg(strstr(r->out, pattern) != NULL, "no %s in %s", pattern, r->out);
+    ck_assert_msg(!want || strstr(r->out, want) != NULL, "no '%s' in %s", want, r->out);
+}
+
+/* [CONF-OUTCOME-1] One test per way a renderer can go wrong. */
+START_TEST(test_conform_crash)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "crash"), NULL, NULL);
+    expect(r, 1, "crashed", "SIGSEGV");
+    ck_assert(strstr(r->out, "fake renderer: about to crash") != NULL); /* its stderr */
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_hang)
+{
+    char cmd[512], kit[128];
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--only", "plane_point_linear",
+                          "--timeout", "0.3", "--cmd", fake(cmd, sizeof cmd, "hang"), NULL};
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    cli_refray(r, args);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    expect(r, 1, "timeout", "--timeout 0.3 s");
+    ck_assert(strstr(r->out, "\"timed_out\": true") != NULL);
+    ck_assert_msg(s < 10 * slow(), "conform took %g s for a 0.3 s limit", s);
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_garbage)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "garbage"), NULL, NULL);
+    expect(r, 1, "unreadable", "not a PFM file");
+    free(r);
+}
+END_TEST
+
+/* A FIFO at {out} would block a reader for ever: it is refused unread. */
+START_TEST(test_conform_fifo)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "fifo"), NULL, NULL);
+    expect(r, 1, "unreadable", "not a regular file");
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_wrong_size)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "wrong_size"), NULL, NULL);
+    expect(r, 1, "size", "its image is 97x72; expected 96x72");
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_nothing)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "nothing"), NULL, NULL);
+    expect(r, 1, "no_output", "wrote nothing at {out} (its directory holds: elsewhere.pfm)");
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_nonzero_exit)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "fail"), NULL, NULL);
+    expect(r, 1, "exit", "exited with status 3");
+    ck_assert(strstr(r->out, "\"exit_status\": 3") && strstr(r->out, "fake renderer: cannot read /"));
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_nan)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "nan"), NULL, NULL);
+    expect(r, 1, "nonfinite", "1 channel value of its image is NaN");
+    free(r);
+}
+END_TEST
+
+/* A relative path to a program is the classic mistake: say why. */
+START_TEST(test_conform_command_not_found)
+{
+    cli_run *r = malloc(sizeof *r);
+    conform(r, "no-such-renderer-anywhere {scene} {out}", NULL, NULL);
+    expect(r, 1, "exit", "status 127 (command not found");
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_exact_copy_passes)
+{
+    char cmd[512];
+    cli_run *r = malloc(sizeof *r);
+    conform(r, fake(cmd, sizeof cmd, "exact"), NULL, NULL);
+    expect(r, 0, "pass", "\"max_abs\": 0.0,");
+    ck_assert(strstr(r->out, "\"passed\": 1") && strstr(r->out, "\"failed\": 0"));
+    free(r);
+}
+END_TEST
+
+/* refray's own render, as PFM, is within 1e-4 of its oracle everywhere. */
+START_TEST(test_conform_refray_render_passes)
+{
+    char cmd[512], kit[128];
+    cli_run *r = malloc(sizeof *r);
+    const char *bin = cli_refray_bin();
+    char cwd[256];
+    ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+    snprintf(cmd, sizeof cmd, "%s%s%s render -q {scene} -o {out}", bin[0] == '/' ? "" : cwd,
+             bin[0] == '/' ? "" : "/", bin);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", cmd, NULL};
+    cli_refray(r, args);
+    ck_assert_msg(r->code == 0, "exit %d\n%s\n%s", r->code, r->out, r->err);
+    ck_assert_msg(strstr(r->out, "3 scenes: 3 passed, 0 failed") != NULL, "stdout: %s", r->out);
+    free(r);
+}
+END_TEST
+
+/* [KIT-ADJUST-1] A renderer that draws the exact image 2 x 2 larger and 4
+ * times as bright passes with --downsample 2 --scale 0.25 (powers of two:
+ * exact in float) and fails on its size without them. */
+START_TEST(test_conform_downsample_and_scale)
+{
+    char kit[128], src[300], big[300], cmd[700], err[256];
+    img_buf e, b;
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
+    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    ck_assert_int_eq(img_create(&b, 2 * e.width, 2 * e.height), 0);
+    for (int y = 0; y < b.height; y++)
+        for (int x = 0; x < b.width; x++)
+            for (int c = 0; c < 3; c++)
+                img_pixel(&b, x, y)[c] = 4 * img_pixel(&e, x / 2, y / 2)[c];
+    cli_path(big, sizeof big, kit_root, "big.pfm");
+    ck_assert_int_eq(img_write(big, &b, NULL, err, sizeof err), 0);
+    snprintf(cmd, sizeof cmd, "test {width}x{height} = 192x144 && cp '%s' {out}", big);
+    conform(r, cmd, "--downsample", "2");
+    expect(r, 1, "over", NULL);
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--only", "plane_point_linear",
+                          "--downsample", "2", "--scale", "0.25", "--cmd", cmd, NULL};
+    cli_refray(r, args);
+    expect(r, 0, "pass", "\"max_abs\": 0.0,");
+    snprintf(cmd, sizeof cmd, "cp '%s' {out}", big);
+    conform(r, cmd, NULL, NULL);
+    expect(r, 1, "size", "expected 96x72");
+    img_free(&e);
+    img_free(&b);
+    free(r);
+}
+END_TEST
+
+/* A scene the kit has no .pov for fails without running the command. */
+START_TEST(test_conform_missing_input)
+{
+    char kit[128];
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--only",
+                          "sphere_shadow_two_lights", "--cmd", "touch {out}.ran; cp {pov} {out}", NULL};
+    cli_refray(r, args);
+    expect(r, 1, "no_input", "refused by the POV-Ray export");
+    ck_assert(strstr(r->out, "\"exit_status\": null") != NULL);
+    free(r);
+}
+END_TEST
+
+/* [CONF-REPORT-1] TAP, JUnit and Markdown of a run where one scene of two
+ * fails ({name} in shell syntax: it is quoted for the shell). */
+START_TEST(test_conform_reports)
+{
+    char kit[128], cmd[700], junit[300], md[300], text[8192], why[256], exact[512];
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    snprintf(cmd, sizeof cmd, "case {name} in disk*) echo 'bad <&> \"x\"' >&2; exit 2;; esac; %s",
+             fake(exact, sizeof exact, "exact"));
+    cli_path(junit, sizeof junit, kit_root, "junit.xml");
+    cli_path(md, sizeof md, kit_root, "table.md");
+    const char *args[] = {"conform", "--kit", kit, "--format", "pfm", "--tap", "--only", "plane_point_linear",
+                          "disk_light", "--junit", junit, "--markdown", md, "--cmd", cmd, NULL};
+    cli_refray(r, args);
+    ck_assert_int_eq(r->code, 1);
+    static const char tap[] = "TAP version 13\n1..2\nok 1 - plane_point_linear\n"
+                              "not ok 2 - disk_light # the renderer exited with status 2\n  ---\n";
+    ck_assert_msg(strncmp(r->out, tap, strlen(tap)) == 0, "tap: %s", r->out);
+    char *x;
+    size_t n;
+    ck_assert_int_eq(file_read_all(junit, -1, NULL, &x, &n, why, sizeof why), 0);
+    ck_assert(strstr(x, "<testsuites name=\"refray conform\" tests=\"2\" failures=\"1\""));
+    ck_assert(strstr(x, "name=\"plane_point_linear\" time=") && strstr(x, "<failure type=\"exit\""));
+    ck_assert_msg(strstr(x, "<system-err>bad &lt;&amp;&gt; &quot;x&quot;\n</system-err>"), "junit: %s", x);
+    free(x);
+    ck_assert_int_eq(file_read_all(md, -1, NULL, &x, &n, why, sizeof why), 0);
+    snprintf(text, sizeof text, "%s", x);
+    free(x);
+    ck_assert(strstr(text, "| scene | family | exact peak |") && strstr(text, "| disk_light | disk_light |"));
+    /* A report that cannot be written: exit 74 and no file. */
+    const char *bad[] = {"conform", "--kit", kit, "--format", "pfm", "--only", "plane_point_linear", "--junit",
+                         "/nonexistent/dir/j.xml", "--cmd", cmd, NULL};
+    cli_refray(r, bad);
+    ck_assert_int_eq(r->code, 74);
+    ck_assert(!cli_exists("/nonexistent/dir/j.xml"));
+    free(r);
+}
+END_TEST
+
+START_TEST(test_conform_usage_errors)
+{
+    char kit[128], work[64], path[300], why[128];
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    const char *no_cmd[] = {"conform", "--kit", kit, NULL};
+    const char *no_out[] = {"conform", "--kit", kit, "--cmd", "render {scene}", NULL};
+    const char *unknown[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", "x {out}", "--only", "disk_lite",
+                             NULL};
+    const char *timeout[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--timeout", "-1", NULL};
+    const char *both[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--json", "--tap", NULL};
+    const char *format[] = {"conform", "--kit", kit, "--cmd", "x {out}", "--format", "tiff", NULL};
+    /* More names than arguments: the list must not overrun (ASan watches). */
+    const char *many[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", "x {out}", "--only",
+                          "disk_light,a,b,c,d,e,f,g,h,i,j,k,l,m,n,o,p,q,r,s,t,u,v,w,x,y,z", NULL};
+    const char *const *usage[] = {no_cmd, no_out, unknown, timeout, both, format, many};
+    for (int i = 0; i < 7; i++) {
+        cli_refray(r, usage[i]);
+        ck_assert_msg(r->code == 64, "case %d: exit %d, stderr %s", i, r->code, r->err);
+    }
+    cli_refray(r, unknown);
+    ck_assert_msg(strstr(r->err, "did you mean 'disk_light'") != NULL, "stderr: %s", r->err);
+    cli_scratch(work, sizeof work, "nokit");
+    const char *missing[] = {"conform", "--kit", work, "--format", "pfm", "--cmd", "x {out}", NULL};
+    cli_refray(r, missing);
+    ck_assert_int_eq(r->code, 66);
+    ck_assert_int_eq(file_write_bytes(cli_path(path, sizeof path, work, "manifest.json"), "{", 1, why, sizeof why),
+                     0);
+    cli_refray(r, missing);
+    ck_assert_int_eq(r->code, 65);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
+/* The over count of `refray compare --manifest` for image against the
+ * suite kit's plane_point_linear. */
+static long compare_over(const char *kit, const char *image)
+{
+    char mf[300];
+    cli_run *r = malloc(sizeof *r);
+    const char *args[] = {"compare", image, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), "--scene",
+                          "plane_point_linear", "--json", NULL};
+    cli_refray(r, args);
+    const char *p = strstr(r->out, "\"over\": ");
+    ck_assert_msg(p != NULL, "compare: %s %s", r->out, r->err);
+    long over = strtol(p + 8, NULL, 10);
+    free(r);
+    return over;
+}
+
+/* [KIT-RULE-1] The rule is enough to check without refray: the kit's
+ * stand-alone checker (tests/conform/kit_check.c, one C99 file without a
+ * library, the worked example of spec/conformance.md) counts the same
+ * pixels over as compare, on a picture 3e-4 too bright in its top half,
+ * and passes the exact image itself. */
+START_TEST(test_kit_check_agrees)
+{
+    const char *bin = getenv("KIT_CHECK_BIN");
+    char kit[128], src[300], img[300], mask[300], mf[300], cmd[2048], err[256], want[64];
+    img_buf e;
+    ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
+    cli_path(mask, sizeof mask, kit, "scenes/plane_point_linear/plane_point_linear.mask.pgm");
+    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    for (int i = 0; i < 3 * e.width * e.height / 2; i++)
+        e.rgb[i] *= 1 + 3e-4;
+    ck_assert_int_eq(img_write(cli_path(img, sizeof img, kit_root, "bright.pfm"), &e, NULL, err, sizeof err), 0);
+    long over = compare_over(kit, img);
+    ck_assert_int_gt(over, 0);
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, err, sizeof err), 0);
+    const manifest_scene *sc = manifest_find(&m, "plane_point_linear");
+    ck_assert_ptr_nonnull(sc);
+    snprintf(want, sizeof want, "%ld of %d pixels over", over, e.width * e.height);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' | grep -qx '%s'", bin, src, mask, sc->relative,
+             sc->absolute, img, want);
+    ck_assert_msg(system(cmd) == 0, "kit_check does not print '%s'", want);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null", bin, src, mask, sc->relative, sc->absolute,
+             src);
+    ck_assert_int_eq(system(cmd), 0);
+    manifest_free(&m);
+    img_free(&e);
+}
+END_TEST
+
+#else
+
+/* conform reads the kit's manifest: a build without jansson says so. */
+START_TEST(test_conform_needs_json)
+{
+    cli_run *r = malloc(sizeof *r);
+    const char *args[] = {"conform", "--kit", "/tmp", "--format", "pfm", "--cmd", "x {out}", NULL};
+    cli_refray(r, args);
+    ck_assert_int_eq(r->code, 64);
+    ck_assert_msg(strstr(r->err, "JSON") != NULL, "stderr: %s", r->err);
+    free(r);
+}
+END_TEST
+
+#endif
+
+/* [CONF-CMD-1] Values survive the shell whatever they hold; braces that
+ * are not placeholders stay; a missing file says why. */
+START_TEST(test_conform_expand_quotes)
+{
+    static const char nasty[] = "a b'c\"d$HOME`x`\\e\nf;g*";
+    conform_var vars[2] = {{"out", NULL, NULL}, {"x", nasty, NULL}};
+    char work[64], path[300], why[256], *cmd = NULL;
+    cli_scratch(work, sizeof work, "expand");
+    vars[0].value = cli_path(path, sizeof path, work, "o u't");
+    ck_assert_int_eq(conform_expand("printf %s {x} > {out}", vars, 2, &cmd, why, sizeof why), 0);
+    proc_opts po = {work, NULL, NULL, 10 * slow(), NULL};
+    proc_result pr;
+    ck_assert_int_eq(proc_run_shell(cmd, &po, &pr, why, sizeof why), 0);
+    ck_assert(pr.exited && pr.exit_code == 0);
+    char *got;
+    size_t n;
+    ck_assert_int_eq(file_read_all(path, -1, NULL, &got, &n, why, sizeof why), 0);
+    ck_assert_str_eq(got, nasty);
+    free(got);
+    free(cmd);
+    ck_assert_int_eq(conform_expand("{y} ${HOME} {x {out", vars, 2, &cmd, why, sizeof why), 0);
+    ck_assert_str_eq(cmd, "{y} ${HOME} {x {out");
+    free(cmd);
+    char *q = conform_shell_quote("it's");
+    ck_assert_str_eq(q, "'it'\\''s'");
+    free(q);
+    conform_var none = {"json", NULL, "not exported"};
+    ck_assert_int_eq(conform_expand("r {json}", &none, 1, &cmd, why, sizeof why), CONFORM_NO_INPUT);
+    ck_assert_msg(strstr(why, "{json}") && strstr(why, "not exported"), "why: %s", why);
+    ck_assert(conform_template_ok("r {scene} -o {out}", why, sizeof why));
+    ck_assert(!conform_template_ok("r {scene}", why, sizeof why));
+    cli_remove(work);
+}
+END_TEST
+
+Suite *suite_conform(void)
+{
+    Suite *s = suite_create("conform");
+    TCase *tc = tcase_create("conform");
+    tcase_add_unchecked_fixture(tc, kit_setup, kit_teardown);
+    tcase_set_timeout(tc, 20);
+    tcase_add_test(tc, test_conform_expand_quotes);
+#if REFRAY_HAVE_JSON
+    tcase_add_test(tc, test_conform_crash);
+    tcase_add_test(tc, test_conform_hang);
+    tcase_add_test(tc, test_conform_garbage);
+    tcase_add_test(tc, test_conform_wrong_size);
+    tcase_add_test(tc, test_conform_fifo);
+    tcase_add_test(tc, test_conform_nothing);
+    tcase_add_test(tc, test_conform_nonzero_exit);
+    tcase_add_test(tc, test_conform_nan);
+    tcase_add_test(tc, test_conform_command_not_found);
+    tcase_add_test(tc, test_conform_exact_copy_passes);
+    tcase_add_test(tc, test_conform_refray_render_passes);
+    tcase_add_test(tc, test_conform_downsample_and_scale);
+    tcase_add_test(tc, test_conform_missing_input);
+    tcase_add_test(tc, test_conform_reports);
+    tcase_add_test(tc, test_conform_usage_errors);
+    tcase_add_test(tc, test_kit_check_agrees);
+#else
+    tcase_add_test(tc, test_conform_needs_json);
+#endif
+    suite_add_tcase(s, tc);
+    return s;
+}

@@ -1,0 +1,184 @@
+/*
+ * check_mem.c - the allocator hook (src/base/mem.h, spec/embedding.md):
+ * every allocation of a load and a render goes through the mem it was
+ * given, every release names the size that was allocated, nothing is left
+ * when the scene is freed, and a failure at any allocation ends the load
+ * or the render cleanly with STATUS_NO_MEMORY ([EMBED-MEM-1], [EMBED-MEM-2]).
+ */
+#include <stdio.h>
+#include <string.h>
+#include "testlib.h"
+#include "memcheck.h"
+#include "base/mem.h"
+#include "io/scene_file.h"
+#include "render/render.h"
+
+static mem checked(memcheck *c)
+{
+    mem m = {memcheck_alloc, memcheck_resize, memcheck_release, c};
+    return m;
+}
+
+/* The checker itself sees a wrong size and a leak. */
+START_TEST(test_memcheck_sees_mistakes)
+{
+    memcheck c;
+    memcheck_init(&c);
+    mem m = checked(&c);
+    char *p = mem_alloc(&m, 10);
+    ck_assert_ptr_nonnull(p);
+    ck_assert_uint_eq(c.live, 10);
+    mem_free(&m, p, 9);
+    ck_assert_int_eq(c.bad_sizes, 1);
+    ck_assert_uint_eq(c.live, 0);
+    p = mem_resize(&m, NULL, 0, 5);
+    p = mem_resize(&m, p, 5, 50);
+    ck_assert_uint_eq(c.live, 50);
+    ck_assert_int_eq(c.blocks, 1);
+    mem_free(&m, p, 50);
+    c.fail_after = c.calls;
+    ck_assert_ptr_null(mem_alloc(&m, 1));
+    ck_assert_int_eq(c.failures, 1);
+    ck_assert_int_eq(c.bad_sizes, 1);
+}
+END_TEST
+
+/* A zeroed mem is the C library; sizes 0 become 1 on both sides. */
+START_TEST(test_mem_default_and_zero_sizes)
+{
+    mem none;
+    memset(&none, 0, sizeof none);
+    char *p = mem_calloc(&none, 0, 8);
+    ck_assert_ptr_nonnull(p);
+    mem_free(&none, p, 0);
+    ck_assert_ptr_null(mem_calloc(NULL, (size_t)-1 / 2, 4));
+    char *s = mem_strndup(NULL, "abcdef", 3);
+    ck_assert_str_eq(s, "abc");
+    mem_free_string(NULL, s);
+    memcheck c;
+    memcheck_init(&c);
+    mem m = checked(&c);
+    p = mem_calloc(&m, 0, 8);
+    mem_free(&m, p, 0);
+    ck_assert_int_eq(c.bad_sizes, 0);
+    ck_assert_int_eq(c.blocks, 0);
+}
+END_TEST
+
+/* Loads path (or text when not NULL) and renders a w x h image with mem m;
+ * returns the status of the first step that failed. */
+static int load_and_render(const char *path, const char *text, const mem *m, int w, int h)
+{
+    scene_load_opts o;
+    scene_load_opts_init(&o);
+    o.mem = *m;
+    o.warnings = 0;
+    int status;
+    scene_model *s;
+    if (text) {
+        scene_source root = {path, NULL, text, strlen(text)};
+        s = scene_load_source(&root, &o, &status);
+    } else {
+        s = scene_file_load_with(path, &o, &status);
+    }
+    if (!s)
+        return status;
+    img_buf img;
+    render_opts ro;
+    memset(&ro, 0, sizeof ro);
+    ro.width = w;
+    ro.height = h;
+    status = render_image(s, &ro, &img, NULL);
+    if (status == STATUS_OK) {
+        ck_assert_int_eq(img.width, w);
+        img_free(&img);
+    }
+    scene_free(s);
+    return status;
+}
+
+static const char *const scenes[] = {"scenes/demo.scene", "scenes/mesh.scene", "tests/scenes/include/main.scene",
+                                     "scenes/cornell.scene"};
+
+/* [EMBED-MEM-1] A load and a render allocate only through the mem given,
+ * release every block with its size, and leave nothing behind. */
+START_TEST(test_mem_whole_life)
+{
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        memcheck c;
+        memcheck_init(&c);
+        mem m = checked(&c);
+        ck_assert_int_eq(load_and_render(scenes[i], NULL, &m, 6, 4), STATUS_OK);
+        ck_assert_msg(c.calls > 10, "%s: only %ld allocations seen", scenes[i], c.calls);
+        ck_assert_int_eq(c.bad_sizes, 0);
+        ck_assert_msg(c.live == 0 && c.blocks == 0, "%s: %zu bytes in %ld blocks left", scenes[i], c.live,
+                      c.blocks);
+    }
+}
+END_TEST
+
+/* Runs the job with every allocation in turn made to fail: each run ends
+ * with success or STATUS_NO_MEMORY (or want_other, the input's own
+ * verdict), leaks nothing and names every size right; the last run, with
+ * no failure, ends as want_other. */
+static void sweep(const char *path, const char *text, int want_other)
+{
+    memcheck c;
+    memcheck_init(&c);
+    mem m = checked(&c);
+    ck_assert_int_eq(load_and_render(path, text, &m, 3, 2), want_other);
+    long needed = c.calls;
+    for (long n = 0; n <= needed; n++) {
+        memcheck_init(&c);
+        c.fail_after = n;
+        int status = load_and_render(path, text, &m, 3, 2);
+        ck_assert_msg(status == STATUS_NO_MEMORY || status == want_other,
+                      "%s: failing allocation %ld of %ld gave status %d", path, n, needed, status);
+        ck_assert_msg(n < needed || status == want_other, "%s: ran out with no failure", path);
+        ck_assert_msg(c.failures == 0 || status == STATUS_NO_MEMORY || want_other != STATUS_OK,
+                      "%s: allocation %ld failed unnoticed", path, n);
+        ck_assert_int_eq(c.bad_sizes, 0);
+        ck_assert_msg(c.live == 0 && c.blocks == 0, "%s: failing allocation %ld left %zu bytes in %ld blocks",
+                      path, n, c.live, c.blocks);
+    }
+}
+
+/* [EMBED-MEM-2] Out of memory at any allocation of a load or a render:
+ * STATUS_NO_MEMORY, nothing leaked (run under SANITIZE=1 too). */
+START_TEST(test_mem_fail_everywhere)
+{
+    sweep(scenes[_i], NULL, STATUS_OK);
+}
+END_TEST
+
+/* The parser's stacks past their first 200 entries (a long chain of
+ * unary minus), a diagnostic longer than the formatting buffer, and a
+ * scene with errors, under the same sweep. */
+START_TEST(test_mem_fail_parser_and_diagnostics)
+{
+    char text[4096] = "let a = ";
+    for (int i = 0; i < 600; i++)
+        strcat(text, "-");
+    strcat(text, "1\nsphere { radius a * a }\n");
+    sweep("deep.scene", text, STATUS_OK);
+    char bad[2048] = "sphere { radius ";
+    for (int i = 0; i < 900; i++)
+        strcat(bad, "q");
+    strcat(bad, " }\nsphere { radius -1 }\n");
+    sweep("bad.scene", bad, STATUS_DATA);
+}
+END_TEST
+
+Suite *suite_mem(void)
+{
+    Suite *s = suite_create("mem");
+    TCase *tc = tcase_create("hook");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, test_memcheck_sees_mistakes);
+    tcase_add_test(tc, test_mem_default_and_zero_sizes);
+    tcase_add_test(tc, test_mem_whole_life);
+    tcase_add_loop_test(tc, test_mem_fail_everywhere, 0, (int)(sizeof scenes / sizeof scenes[0]));
+    tcase_add_test(tc, test_mem_fail_parser_and_diagnostics);
+    suite_add_tcase(s, tc);
+    return s;
+}

@@ -1,0 +1,456 @@
+/* Tests of the cylinder, cone and torus hit tests (src/render/intersect_quadric.c,
+ * intersect_torus.c), their bounds, magnitudes and containment
+ * (scene_prim_contains).  Every expected t, point and normal is worked out by
+ * hand in the comment next to it, or checked by another route (the distance
+ * to the surface computed from its definition). */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+#include "testlib.h"
+#include "render/intersect.h"
+#include "render/trace.h"
+#include "scene/scene.h"
+#include "io/scene_file.h"
+#include "base/xform.h"
+
+static ray make_ray(vec3 o, vec3 d)
+{
+    ray r;
+    r.origin = o;
+    r.dir = d;
+    r.tmin = 0.0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
+static scene_prim blank(scene_prim_kind kind)
+{
+    scene_prim p;
+    memset(&p, 0, sizeof p);
+    p.kind = kind;
+    p.mesh = -1;
+    p.to_world = p.to_local = xform_identity();
+    return p;
+}
+
+static scene_prim cylinder(vec3 from, vec3 to, double radius, int open)
+{
+    scene_prim p = blank(PRIM_CYLINDER);
+    p.u.cylinder.from = from;
+    p.u.cylinder.to = to;
+    p.u.cylinder.radius = radius;
+    p.u.cylinder.open = open;
+    return p;
+}
+
+static scene_prim cone(vec3 from, double r0, vec3 to, double r1, int open)
+{
+    scene_prim p = blank(PRIM_CONE);
+    p.u.cone.from = from;
+    p.u.cone.to = to;
+    p.u.cone.radius[0] = r0;
+    p.u.cone.radius[1] = r1;
+    p.u.cone.open = open;
+    return p;
+}
+
+static scene_prim torus(vec3 c, vec3 axis, double major, double minor)
+{
+    scene_prim p = blank(PRIM_TORUS);
+    p.u.torus.center = c;
+    p.u.torus.axis = axis;
+    p.u.torus.major = major;
+    p.u.torus.minor = minor;
+    return p;
+}
+
+/* The crossings of p along r, checked against the expected t, normals and
+ * entering flags, in order. */
+static void expect_crossings(const scene_prim *p, ray r, int count, const double *t, const vec3 *n, const int *entering,
+                             double tol)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    int got = isect_prim_all(p, &r, out);
+    ck_assert_int_eq(got, count);
+    for (int i = 0; i < count; i++) {
+        ck_assert_near(out[i].t, t[i], tol);
+        ck_assert_vec_near(out[i].normal, n[i], tol);
+        ck_assert_vec_near(out[i].point, ray_at(&r, t[i]), tol * (1 + fabs(t[i])));
+        ck_assert_int_eq(out[i].entering, entering[i]);
+        ck_assert_int_eq(out[i].prim, -1);
+    }
+    hit h;
+    ray rr = r;
+    ck_assert_int_eq(isect_prim(p, &rr, &h), count > 0);
+    if (count > 0) {
+        ck_assert_near(h.t, t[0], tol);
+        ck_assert_near(rr.tmax, h.t, 0);
+    }
+}
+
+/* Unit cylinder on the z axis from 0 to 2: a ray along -x at height 1
+ * enters the side at x = 1 (t = 2) and leaves at x = -1 (t = 4); one down
+ * the axis 0.5 off it crosses the caps at z = 2 (t = 3) and z = 0 (t = 5).
+ * Open, the first is a sheet crossed twice; the second misses. */
+START_TEST(test_cylinder_by_hand)
+{
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0), o = c;
+    o.u.cylinder.open = 1;
+    const double side_t[] = {2, 4}, cap_t[] = {3, 5};
+    const vec3 side_n[] = {vec_make(1, 0, 0), vec_make(-1, 0, 0)};
+    const vec3 cap_n[] = {vec_make(0, 0, 1), vec_make(0, 0, -1)};
+    const int in_out[] = {1, 0};
+    ray across = make_ray(vec_make(3, 0, 1), vec_make(-1, 0, 0)), down = make_ray(vec_make(0.5, 0, 5), vec_make(0, 0, -1));
+    expect_crossings(&c, across, 2, side_t, side_n, in_out, 1e-15);
+    expect_crossings(&c, down, 2, cap_t, cap_n, in_out, 1e-15);
+    expect_crossings(&o, across, 2, side_t, side_n, in_out, 1e-15);
+    expect_crossings(&o, down, 0, NULL, NULL, NULL, 0);
+    /* From inside: only the exit (t = 1 to x = 1, normal +x, leaving). */
+    const double exit_t[] = {1};
+    const vec3 exit_n[] = {vec_make(1, 0, 0)};
+    const int leaving[] = {0};
+    expect_crossings(&c, make_ray(vec_make(0, 0, 1), vec_make(1, 0, 0)), 1, exit_t, exit_n, leaving, 1e-15);
+    /* A non-unit direction: t scales, the point does not. */
+    expect_crossings(&c, make_ray(vec_make(3, 0, 1), vec_make(-2, 0, 0)), 2, (const double[]){1, 2}, side_n, in_out,
+                     1e-15);
+}
+END_TEST
+
+/* A cone with radius 1 at z = 0 and its apex at z = 1: the side is
+ * |p'| = 1 - z, slope k = -1, outward normal (rho^ + a)/sqrt(2).  Across at
+ * z = 0.5: the side is at x = +-0.5 (t = 1.5, 2.5).  Up the axis 0.25 off
+ * it: the base at t = 1, then the side where 1 - z = 0.25, z = 0.75
+ * (t = 1.75).  Down the axis itself: the apex (t = 4, normal +z: away
+ * from the cone), then the base (t = 5): the line is inside the double
+ * cone throughout (a < 0) and the slab keeps one nappe. */
+START_TEST(test_cone_by_hand)
+{
+    scene_prim c = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
+    double s = sqrt(0.5);
+    const int in_out[] = {1, 0};
+    expect_crossings(&c, make_ray(vec_make(2, 0, 0.5), vec_make(-1, 0, 0)), 2, (const double[]){1.5, 2.5},
+                     (const vec3[]){vec_make(s, 0, s), vec_make(-s, 0, s)}, in_out, 1e-15);
+    expect_crossings(&c, make_ray(vec_make(0.25, 0, -1), vec_make(0, 0, 1)), 2, (const double[]){1, 1.75},
+                     (const vec3[]){vec_make(0, 0, -1), vec_make(s, 0, s)}, in_out, 1e-15);
+    expect_crossings(&c, make_ray(vec_make(0, 0, 5), vec_make(0, 0, -1)), 2, (const double[]){4, 5},
+                     (const vec3[]){vec_make(0, 0, 1), vec_make(0, 0, -1)}, in_out, 1e-15);
+    /* Truncated, radii 1 and 0.5 over a length of 1 (k = -0.5): up the axis
+     * 0.75 off it the side is met where 1 - 0.5 z = 0.75, z = 0.5. */
+    scene_prim tr = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0.5, 0);
+    double n = 1 / sqrt(1.25);
+    expect_crossings(&tr, make_ray(vec_make(0.75, 0, -1), vec_make(0, 0, 1)), 2, (const double[]){1, 1.5},
+                     (const vec3[]){vec_make(0, 0, -1), vec_make(n, 0, 0.5 * n)}, in_out, 1e-15);
+    /* Open: the same ray meets the side only. */
+    tr.u.cone.open = 1;
+    expect_crossings(&tr, make_ray(vec_make(0.75, 0, -1), vec_make(0, 0, 1)), 1, (const double[]){1.5},
+                     (const vec3[]){vec_make(n, 0, 0.5 * n)}, (const int[]){0}, 1e-15);
+}
+END_TEST
+
+/* Torus about z, major 2, minor 0.5.  Along -x in its plane: the tube is
+ * crossed at x = 2.5, 1.5, -1.5, -2.5 (t = 2.5, 3.5, 6.5, 7.5) with outward
+ * normals +x, -x, +x, -x.  Down through the tube at x = 2: z = +-0.5
+ * (t = 4.5, 5.5).  Down the axis: through the hole, no hit.  From the
+ * centre along +x: the inner wall at x = 1.5 (t = 1.5, normal -x, entering). */
+START_TEST(test_torus_by_hand)
+{
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    const vec3 px = vec_make(1, 0, 0), nx = vec_make(-1, 0, 0);
+    expect_crossings(&t, make_ray(vec_make(5, 0, 0), nx), 4, (const double[]){2.5, 3.5, 6.5, 7.5},
+                     (const vec3[]){px, nx, px, nx}, (const int[]){1, 0, 1, 0}, 1e-14);
+    expect_crossings(&t, make_ray(vec_make(2, 0, 5), vec_make(0, 0, -1)), 2, (const double[]){4.5, 5.5},
+                     (const vec3[]){vec_make(0, 0, 1), vec_make(0, 0, -1)}, (const int[]){1, 0}, 1e-14);
+    expect_crossings(&t, make_ray(vec_make(0, 0, 5), vec_make(0, 0, -1)), 0, NULL, NULL, NULL, 0);
+    expect_crossings(&t, make_ray(vec_make(0, 0, 0), px), 2, (const double[]){1.5, 2.5}, (const vec3[]){nx, px},
+                     (const int[]){1, 0}, 1e-14);
+    /* tmin and tmax cut the crossings: only those in (3, 7) remain. */
+    ray cut = make_ray(vec_make(5, 0, 0), nx);
+    cut.tmin = 3;
+    cut.tmax = 7;
+    expect_crossings(&t, cut, 2, (const double[]){3.5, 6.5}, (const vec3[]){nx, px}, (const int[]){0, 1}, 1e-14);
+}
+END_TEST
+
+/* [NUM-TORUS-1] A tube of radius 1e-3 at 1e6 from the origin, seen from
+ * 100 above: the hit is 1e-3 above the plane of the ring (t = 100 - 1e-3),
+ * within an ulp of 1e6 of the tube, with the normal +z. */
+START_TEST(test_torus_thin_far)
+{
+    scene_prim t = torus(vec_make(1e6, 0, 0), vec_make(0, 0, 1), 1, 1e-3);
+    ray r = make_ray(vec_make(1e6 + 1, 0, 100), vec_make(0, 0, -1));
+    hit h;
+    ck_assert(isect_prim(&t, &r, &h));
+    ck_assert_near(h.t, 100 - 1e-3, 1e-12);
+    ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 1e-9);
+    ck_assert_near(h.point.x, 1e6 + 1, 2.4e-10);
+    ck_assert_near(h.point.z, 1e-3, 1e-15);
+}
+END_TEST
+
+/* A torus scaled by 2 along its axis (kept in its local frame): the tube's
+ * top seen from above at x = 2 is at z = 2 * 0.5 = 1 (t = 4). */
+START_TEST(test_torus_transformed)
+{
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    xform w = xform_scale(vec_make(1, 1, 2));
+    t.has_xform = 1;
+    t.to_world = w;
+    ck_assert(xform_invert(&w, &t.to_local));
+    ray r = make_ray(vec_make(2, 0, 5), vec_make(0, 0, -1));
+    hit h;
+    ck_assert(isect_prim(&t, &r, &h));
+    ck_assert_near(h.t, 4, 1e-14);
+    ck_assert_vec_near(h.point, vec_make(2, 0, 1), 1e-14);
+    ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 1e-14);
+}
+END_TEST
+
+/* The rim of a closed cylinder or cone leaves no gap: a ray aimed at a
+ * point of the rim from any direction that enters the solid there (toward
+ * both the side's and the cap's inside) hits, at about the distance to
+ * the rim. */
+START_TEST(test_rim_is_closed)
+{
+    scene_prim shapes[2] = {cylinder(vec_make(0.3, -0.2, 0.1), vec_make(1.3, 0.8, -0.4), 0.7, 0),
+                         cone(vec_make(0.3, -0.2, 0.1), 0.9, vec_make(1.3, 0.8, -0.4), 0.2, 0)};
+    uint64_t state = 12345;
+    for (int k = 0; k < 2; k++) {
+        const scene_prim *p = &shapes[k];
+        vec3 from = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
+        vec3 to = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
+        vec3 a = vec_normalize(vec_sub(to, from)), u = vec_normalize(vec_cross(a, vec_make(0, 0, 1)));
+        vec3 v = vec_cross(a, u);
+        for (int i = 0; i < 2000; i++) {
+            state = state * 6364136223846793005u + 1442695040888963407u;
+            double phi = (double)(state >> 11) * 0x1p-53 * 6.283185307179586;
+            int top = i & 1;
+            double radius = p->kind == PRIM_CONE ? p->u.cone.radius[top] : p->u.cylinder.radius;
+            vec3 radial = vec_add(vec_scale(u, cos(phi)), vec_scale(v, sin(phi)));
+            vec3 rim = vec_madd(top ? to : from, radial, radius);
+            /* come from outside, diagonally across the edge */
+            vec3 out = vec_normalize(vec_add(radial, vec_scale(a, top ? 1.0 : -1.0)));
+            ray r = make_ray(vec_madd(rim, out, 2.0), vec_neg(out));
+            hit h;
+            ck_assert_msg(isect_prim(p, &r, &h), "shape %d rim point %d missed", k, i);
+            ck_assert_near(h.t, 2.0, 1e-12);
+        }
+    }
+}
+END_TEST
+
+/* Bounds: the box of the end disks, or of the ring plus the tube. */
+START_TEST(test_quadric_bounds_and_magnitude)
+{
+    vec3 lo, hi;
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(3, 0, 0), 1, 0);
+    ck_assert(isect_prim_bounds(&c, &lo, &hi));
+    ck_assert_vec_near(lo, vec_make(0, -1, -1), 0);
+    ck_assert_vec_near(hi, vec_make(3, 1, 1), 0);
+    scene_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 2), 0.5, 0);
+    ck_assert(isect_prim_bounds(&k, &lo, &hi));
+    ck_assert_vec_near(lo, vec_make(-1, -1, 0), 0);
+    ck_assert_vec_near(hi, vec_make(1, 1, 2), 0);
+    scene_prim t = torus(vec_make(1, -7, 3), vec_make(0, 0, 1), 2, 0.5);
+    ck_assert(isect_prim_bounds(&t, &lo, &hi));
+    ck_assert_vec_near(lo, vec_make(-1.5, -9.5, 2.5), 0);
+    ck_assert_vec_near(hi, vec_make(3.5, -4.5, 3.5), 0);
+    /* |centre|max 7 + major 2 + minor 0.5; the cylinder's ends 3 + radius 1 */
+    ck_assert_near(isect_prim_magnitude(&t), 9.5, 0);
+    ck_assert_near(isect_prim_magnitude(&c), 4, 0);
+    ck_assert_near(isect_prim_magnitude(&k), 3, 0);
+    /* A tilted axis: a unit cylinder along (1,1,0)/sqrt2 spans
+     * sqrt(1 - 1/2) across x and y about each end, 1 along z. */
+    scene_prim d = cylinder(vec_make(0, 0, 0), vec_make(1, 1, 0), 1, 1);
+    ck_assert(isect_prim_bounds(&d, &lo, &hi));
+    ck_assert_vec_near(lo, vec_make(-sqrt(0.5), -sqrt(0.5), -1), 1e-15);
+    ck_assert_vec_near(hi, vec_make(1 + sqrt(0.5), 1 + sqrt(0.5), 1), 1e-15);
+}
+END_TEST
+
+/* Containment (the medium stack's probe, the buried-light warning): a
+ * closed cylinder and cone, and the torus's tube; an open one holds
+ * nothing. */
+START_TEST(test_quadric_contains)
+{
+    scene_prim c = cylinder(vec_make(0, 0, 0), vec_make(0, 0, 2), 1, 0);
+    ck_assert(scene_prim_contains(&c, vec_make(0.5, 0.5, 1)));
+    ck_assert(!scene_prim_contains(&c, vec_make(0.8, 0.8, 1)));
+    ck_assert(!scene_prim_contains(&c, vec_make(0, 0, 2.5)));
+    c.u.cylinder.open = 1;
+    ck_assert(!scene_prim_contains(&c, vec_make(0.5, 0.5, 1)));
+    ck_assert(!scene_prim_is_solid(&c) && scene_prim_self_shadows(&c));
+    scene_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
+    ck_assert(scene_prim_contains(&k, vec_make(0.3, 0, 0.6)));   /* radius there 0.4 */
+    ck_assert(!scene_prim_contains(&k, vec_make(0.5, 0, 0.6)));
+    ck_assert(scene_prim_is_solid(&k) && !scene_prim_self_shadows(&k));
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
+    ck_assert(scene_prim_contains(&t, vec_make(0, 2.2, 0.3)));    /* distance sqrt(0.13) < 0.5 */
+    ck_assert(!scene_prim_contains(&t, vec_make(0, 0, 0)));       /* the hole */
+    ck_assert(scene_prim_is_solid(&t) && scene_prim_self_shadows(&t));
+}
+END_TEST
+
+/* A ray leaving a hit by ray_spawn_hit, outward or inward, never meets the
+ * surface it leaves at about t = 0 (it may meet it again further on). */
+START_TEST(test_quadric_spawn_no_self_hit)
+{
+    scene_prim shapes[3] = {cylinder(vec_make(1e4, 2, 3), vec_make(1e4 + 2, 4, 3), 0.5, 1),
+                         cone(vec_make(-3, 1e3, 0), 0.8, vec_make(-3, 1e3 + 2, 1), 0.1, 0),
+                         torus(vec_make(5, 5, -1e5), vec_normalize(vec_make(1, 2, 3)), 1, 0.1)};
+    uint64_t state = 99;
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < 3000; i++) {
+            vec3 lo, hi;
+            ck_assert(isect_prim_bounds(&shapes[k], &lo, &hi));
+            double u[6];
+            for (int j = 0; j < 6; j++) {
+                state = state * 6364136223846793005u + 1442695040888963407u;
+                u[j] = (double)(state >> 11) * 0x1p-53;
+            }
+            vec3 target = vec_make(lo.x + u[0] * (hi.x - lo.x), lo.y + u[1] * (hi.y - lo.y), lo.z + u[2] * (hi.z - lo.z));
+            vec3 dir = vec_normalize(vec_make(u[3] - 0.5, u[4] - 0.5, u[5] - 0.5));
+            ray r = make_ray(vec_madd(target, dir, -10), dir);
+            hit h;
+            if (!isect_prim(&shapes[k], &r, &h))
+                continue;
+            vec3 out = vec_normalize(vec_add(h.normal, vec_scale(dir, 0.3)));
+            for (int side = 0; side < 2; side++) {
+                vec3 d = side ? vec_neg(out) : out;
+                ray s = ray_spawn_hit(&shapes[k], &h, d);
+                hit h2;
+                if (isect_prim(&shapes[k], &s, &h2))
+                    ck_assert_msg(h2.t > 1e-6, "shape %d: a spawned ray met its own surface at t = %g", k, h2.t);
+            }
+        }
+}
+END_TEST
+
+static scene_model *load(const char *text)
+{
+    int status;
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
+    return s;
+}
+
+/* The radiance along one ray through the scene, as the renderer traces a
+ * camera ray (starting in air). */
+static rgb trace_one(const scene_model *s, vec3 o, vec3 d, trace_stats *st)
+{
+    tracer t;
+    medium_stack air;
+    memset(&air, 0, sizeof air);
+    memset(st, 0, sizeof *st);
+    ck_assert(tracer_init(&t, s, 0, 0));
+    ray r = make_ray(o, d);
+    rgb c = trace_ray(&t, &r, 1, &air, 0, st);
+    tracer_free(&t);
+    return c;
+}
+
+/* [SHADE-SHADOW-1] Shadows through a clear torus (t = 0.5, ior 1): a
+ * plane point under the tube sees the light through 2 surfaces (0.5^2 of
+ * Kd E = 0.5: 0.125), one under the hole or beyond the ring all of it
+ * (0.5); a wall point behind the ring seen along its plane, through 4
+ * (0.5^4 of 0.5). */
+START_TEST(test_torus_transparent_shadow)
+{
+    scene_model *s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
+                       "torus { center [0, 1, 0] axis [0, 1, 0] major 1 minor 0.25 material clear }\n"
+                       "plane { normal [0, 1, 0] material { Kd 0.5 } }\n"
+                       "distant_light { direction [0, -1, 0] }\n");
+    trace_stats st;
+    static const double x[] = {1, 1.24, 0, 1.3, -0.8};
+    static const double want[] = {0.125, 0.125, 0.5, 0.5, 0.125};
+    for (int i = 0; i < 5; i++) {
+        rgb c = trace_one(s, vec_make(x[i], 0.1, 0.01), vec_make(0, -1, 0), &st);
+        ck_assert_msg(fabs(c.x - want[i]) < 1e-12, "x = %g: %.17g, expected %g", x[i], c.x, want[i]);
+    }
+    scene_free(s);
+    s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
+             "torus { axis [0, 1, 0] major 1 minor 0.25 material clear }\n"
+             "plane { point [-5, 0, 0] normal [1, 0, 0] material { Kd 0.5 } }\n"
+             "point_light { position [5, 0, 0] falloff none }\n");
+    rgb c = trace_one(s, vec_make(-4.9, 0, 0), vec_make(-1, 0, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.5 * 0.0625) < 1e-12, "%.17g", c.x);
+    scene_free(s);
+}
+END_TEST
+
+/* [LANG-FEATURES-1] A torus shadows itself: from the centre, the inner
+ * wall at x = 1.5 faces a light coming from -x (N.L = 1), but the far side
+ * of the ring stands in the way: only the ambient Kd Ia = 0.5 * 0.2 is
+ * left.  Lit from above, the top of the tube is not shadowed. */
+START_TEST(test_torus_shadows_itself)
+{
+    scene_model *s = load("ambient { color 0.2 }\n"
+                       "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
+                       "distant_light { direction [1, 0, 0] }\n");
+    ck_assert(s->features.shadows);
+    trace_stats st;
+    rgb c = trace_one(s, vec_make(0, 0, 0), vec_make(1, 0, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.1) < 1e-15, "%.17g", c.x);
+    ck_assert_int_eq(st.shadow_rays, 1);
+    scene_free(s);
+    /* Lit from above, a point on the tube's top (N = +y): Kd (Ia + E). */
+    s = load("ambient { color 0.2 }\n"
+             "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
+             "distant_light { direction [0, -1, 0] }\n");
+    c = trace_one(s, vec_make(2, 5, 0), vec_make(0, -1, 0), &st);
+    ck_assert_msg(fabs(c.x - 0.6) < 1e-15, "%.17g", c.x);
+    scene_free(s);
+}
+END_TEST
+
+/* [NUM-GLASS-2] [SHADE-SNELL-1] Glass cylinders and tori are solids: a ray down the
+ * axis of a glass cylinder meets both caps at normal incidence and passes
+ * straight through (two refracted rays, the background times t^2); a point
+ * inside the cylinder or inside the torus's tube starts in its glass; one
+ * in the torus's hole or inside an open cylinder does not. */
+START_TEST(test_quadric_glass)
+{
+    scene_model *s = load("image { background 1 max_depth 5 }\n"
+                       "cylinder { from [0, 0, 0] to [0, 0, -2] radius 1 material { Kd 0 t 0.8 ior 1.5 } }\n"
+                       "torus { center [5, 0, 0] axis [0, 0, 1] major 2 minor 0.5 material { Kd 0 t 1 ior 1.3 } }\n"
+                       "cylinder { from [20, 0, 0] to [20, 0, 5] open material { Kd 0 t 1 ior 1.7 } }\n");
+    trace_stats st;
+    rgb c = trace_one(s, vec_make(0.3, 0.2, 5), vec_make(0, 0, -1), &st);
+    ck_assert_msg(fabs(c.x - 0.64) < 1e-12, "%.17g", c.x);
+    ck_assert_int_eq(st.refraction_rays, 2);
+    tracer t;
+    medium_stack m;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    trace_media_at(&t, vec_make(0.2, 0.1, -1), &m, &st);
+    ck_assert_int_eq(m.count, 1);
+    ck_assert_near(m.ior[0], 1.5, 0);
+    trace_media_at(&t, vec_make(5 + 2.1, 0, 0.2), &m, &st);
+    ck_assert_int_eq(m.count, 1);
+    ck_assert_near(m.ior[0], 1.3, 0);
+    trace_media_at(&t, vec_make(5, 0, 0), &m, &st);
+    ck_assert_int_eq(m.count, 0);
+    trace_media_at(&t, vec_make(20, 0.5, 1), &m, &st);
+    ck_assert_int_eq(m.count, 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+Suite *suite_quadrics(void)
+{
+    Suite *s = suite_create("quadrics");
+    TCase *tc = tcase_create("quadrics");
+    tcase_add_test(tc, test_cylinder_by_hand);
+    tcase_add_test(tc, test_cone_by_hand);
+    tcase_add_test(tc, test_torus_by_hand);
+    tcase_add_test(tc, test_torus_thin_far);
+    tcase_add_test(tc, test_torus_transformed);
+    tcase_add_test(tc, test_rim_is_closed);
+    tcase_add_test(tc, test_quadric_bounds_and_magnitude);
+    tcase_add_test(tc, test_quadric_contains);
+    tcase_add_test(tc, test_quadric_spawn_no_self_hit);
+    tcase_add_test(tc, test_torus_transparent_shadow);
+    tcase_add_test(tc, test_torus_shadows_itself);
+    tcase_add_test(tc, test_quadric_glass);
+    suite_add_tcase(s, tc);
+    return s;
+}

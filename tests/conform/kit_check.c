@@ -1,0 +1,156 @@
+/*
+ * kit_check.c - checks a picture against one scene of a refray conformance
+ * kit without refray: one C99 file, no library, PFM pictures and the PGM
+ * mask only.  It is the rule of spec/conformance.md [KIT-RULE-1] written
+ * out, for a renderer's author who wants to read it or port it:
+ *
+ *     cc -std=c99 -O2 -o kit_check kit_check.c -lm
+ *     kit_check EXACT.pfm MASK.pgm RELATIVE ABSOLUTE MINE.pfm
+ *
+ * EXACT.pfm and MASK.pgm are the scene's files in the kit; RELATIVE and
+ * ABSOLUTE are its manifest's "tolerance" numbers.  A channel fails when
+ * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
+ * number; masked pixels (mask byte non-zero) are skipped.  Prints
+ * "N of M pixels over"; exit 0 when none is over and at least one pixel
+ * was compared, 1 when some are, 2 when a file cannot be read.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct picture {
+    long width, height;
+    float *rgb;         /* 3 per pixel, rows from the top */
+} picture;
+
+/* A PFM header token: whitespace-separated, at most 31 bytes. */
+static int token(FILE *f, char *buf, size_t size)
+{
+    int c;
+    size_t n = 0;
+    while ((c = fgetc(f)) != EOF && (c == ' ' || c == '\t' || c == '\n' || c == '\r'))
+        ;
+    while (c != EOF && c != ' ' && c != '\t' && c != '\n' && c != '\r' && n + 1 < size) {
+        buf[n++] = (char)c;
+        c = fgetc(f);
+    }
+    buf[n] = '\0';
+    return n > 0 && (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+}
+
+static int little_endian_host(void)
+{
+    unsigned one = 1;
+    unsigned char first;
+    memcpy(&first, &one, 1);
+    return first == 1;
+}
+
+/* PF (colour) or Pf (grey) of either byte order; PFM stores rows from the
+ * bottom, so they are turned over here. */
+static int read_pfm(const char *path, picture *p)
+{
+    char kind[32], w[32], h[32], scale[32];
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    int ok = token(f, kind, sizeof kind) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
+             token(f, scale, sizeof scale) && (strcmp(kind, "PF") == 0 || strcmp(kind, "Pf") == 0);
+    p->width = ok ? strtol(w, NULL, 10) : 0;
+    p->height = ok ? strtol(h, NULL, 10) : 0;
+    if (!ok || p->width < 1 || p->height < 1 || p->width > 65536 || p->height > 65536) {
+        fclose(f);
+        return 0;
+    }
+    int channels = kind[1] == 'F' ? 3 : 1;
+    int swap = (strtod(scale, NULL) < 0) != little_endian_host();
+    size_t pixels = (size_t)p->width * (size_t)p->height;
+    p->rgb = malloc(3 * pixels * sizeof *p->rgb);
+    for (long row = p->height - 1; p->rgb && row >= 0; row--) {
+        for (long x = 0; x < p->width; x++) {
+            float v[3];
+            for (int c = 0; c < channels; c++) {
+                unsigned char b[4];
+                if (fread(b, 1, 4, f) != 4) {
+                    fclose(f);
+                    free(p->rgb);
+                    return 0;
+                }
+                if (swap) {
+                    unsigned char t = b[0];
+                    b[0] = b[3], b[3] = t, t = b[1], b[1] = b[2], b[2] = t;
+                }
+                memcpy(&v[c], b, 4);
+            }
+            for (int c = 0; c < 3; c++)
+                p->rgb[3 * ((size_t)row * (size_t)p->width + (size_t)x) + (size_t)c] = v[channels == 3 ? c : 0];
+        }
+    }
+    fclose(f);
+    return p->rgb != NULL;
+}
+
+/* Binary PGM (P5, maxval < 256): the mask's bytes, rows from the top. */
+static unsigned char *read_pgm(const char *path, long width, long height)
+{
+    char magic[32], w[32], h[32], maxval[32];
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    unsigned char *mask = NULL;
+    if (token(f, magic, sizeof magic) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
+        token(f, maxval, sizeof maxval) && strcmp(magic, "P5") == 0 && strtol(w, NULL, 10) == width &&
+        strtol(h, NULL, 10) == height && strtol(maxval, NULL, 10) < 256) {
+        size_t n = (size_t)width * (size_t)height;
+        mask = malloc(n);
+        if (mask && fread(mask, 1, n, f) != n) {
+            free(mask);
+            mask = NULL;
+        }
+    }
+    fclose(f);
+    return mask;
+}
+
+int main(int argc, char **argv)
+{
+    picture exact, mine;
+    if (argc != 6) {
+        fputs("usage: kit_check EXACT.pfm MASK.pgm RELATIVE ABSOLUTE MINE.pfm\n", stderr);
+        return 2;
+    }
+    double rel = strtod(argv[3], NULL), abs_tol = strtod(argv[4], NULL);
+    if (!read_pfm(argv[1], &exact) || !read_pfm(argv[5], &mine)) {
+        fprintf(stderr, "kit_check: cannot read %s or %s as PFM\n", argv[1], argv[5]);
+        return 2;
+    }
+    if (mine.width != exact.width || mine.height != exact.height) {
+        printf("the image is %ldx%ld, the exact image %ldx%ld\n", mine.width, mine.height, exact.width,
+               exact.height);
+        return 1;
+    }
+    unsigned char *mask = read_pgm(argv[2], exact.width, exact.height);
+    if (!mask) {
+        fprintf(stderr, "kit_check: %s is not a %ldx%ld binary PGM\n", argv[2], exact.width, exact.height);
+        return 2;
+    }
+    long over = 0, compared = 0;
+    for (size_t p = 0; p < (size_t)exact.width * (size_t)exact.height; p++) {
+        if (mask[p])
+            continue;
+        compared++;
+        int bad = 0;
+        for (int c = 0; c < 3; c++) {
+            double e = exact.rgb[3 * p + (size_t)c], m = mine.rgb[3 * p + (size_t)c];
+            /* "not <=" so that a NaN fails too */
+            bad |= !(fabs(m - e) <= rel * fabs(e) + abs_tol);
+        }
+        over += bad;
+    }
+    printf("%ld of %ld pixels over\n", over, compared);
+    free(mask);
+    free(exact.rgb);
+    free(mine.rgb);
+    return over == 0 && compared > 0 ? 0 : 1;
+}
