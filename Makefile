@@ -153,7 +153,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench precision terminator refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed memory arena-min demo bench precision terminator fixtures refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -337,8 +337,9 @@ TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$
 # The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
 # needs no library, built here only to be tested against `refray compare`.
 KIT_CHECK := $(BUILD)/kit_check
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
-	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK) $(GEN_BINS)
+	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) GEN_BIN_DIR=$(BUILD) REFRAY_TEST_VALGRIND=$(VALGRIND) \
+	  CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN)
 	$(Q)$(MAKE) --no-print-directory embed
 
@@ -360,6 +361,21 @@ $(KIT_CHECK): tests/conform/kit_check.c
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
+
+# The generators of committed fixtures (tests/gen/, C, no library): `make
+# fixtures` writes the PLY corpus, the terminator's sphere meshes and the
+# computed stress scenes again in place; tests/check_fixtures.c checks that
+# they give the committed bytes.  gen_big_mesh writes the million-triangle
+# torus of spec/numerics.md 2.16 where it is told.
+GEN_TOOLS := gen_sphere_meshes gen_ply_corpus gen_stress gen_big_mesh
+GEN_BINS  := $(GEN_TOOLS:%=$(BUILD)/%)
+$(GEN_BINS): $(BUILD)/%: tests/gen/%.c tests/gen/gen.c tests/gen/gen.h
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) -D_POSIX_C_SOURCE=200809L $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< tests/gen/gen.c -lm
+
+fixtures: $(GEN_BINS)
+	$(Q)for g in gen_sphere_meshes gen_ply_corpus gen_stress; do $(BUILD)/$$g . || exit 1; done
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"

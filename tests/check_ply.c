@@ -2,7 +2,7 @@
  * (spec/language.md, section 8).  Inputs are in-memory files "m.ply"
  * included from a one-line scene, diagnostics go to a memory stream so
  * their exact text is checked, and the fixtures of tests/ply/ (written by
- * tests/gen_ply_corpus.py) are one mesh in OBJ and in the three PLY
+ * tests/gen/gen_ply_corpus.c) are one mesh in OBJ and in the three PLY
  * encodings.  Expected values are worked out by hand from the inputs. */
 #include <stdint.h>
 #include <stdio.h>
