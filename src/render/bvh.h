@@ -53,6 +53,10 @@ typedef struct bvh {
     size_t item_bytes; /* bytes allocated at items (it was the build's array) */
     bvh_ref *unbounded; /* parts of planes etc.: tested linearly on every ray */
     int unbounded_count;
+    int exhaustive;    /* 1: no box culls a ray, every primitive is tested, in
+                          the order of the tree (the shortcuts-off mode of
+                          spec/shading.md, [SHADE-SHORTCUT-BVH-1]); 0 after
+                          bvh_build */
     int unbounded_cap;
     mem mem;           /* where the arrays live */
 } bvh;
