@@ -11,6 +11,7 @@
  */
 #include <dirent.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,7 @@
 #include <unistd.h>
 #include "io/scene_file.h"
 #include "export/export_pov.h"
+#include "export/export_pov_far.h"
 #include "testlib.h"
 
 static const char scene_a[] =
@@ -487,6 +489,33 @@ START_TEST(test_pov_export_check_far_shadow)
 }
 END_TEST
 
+/* [XCHK-MAP-FAR-1] [XCHK-MAP-DISTANT-1] A mesh is bounded by its
+ * positions: cube.obj ([-1, 1]^3) moved 100 along x, the eye at (0, 0, 5)
+ * and no other primitive or positional light.  The extent is (0, -1, -1)
+ * to (101, 1, 5): centre (50.5, 0, 2), radius half its diagonal,
+ * sqrt(101^2 + 2^2 + 6^2) / 2 = sqrt(10241) / 2.  (Left out, the mesh
+ * would leave the eye alone: radius 1.)  A transparent sphere whose
+ * surface that cube cuts (the cube from x = 0.5) is listed as near it. */
+START_TEST(test_pov_export_far_bounds_mesh)
+{
+    scene_model *s = load("camera { eye [0, 0, 5] look_at [0, 0, 0] }\n"
+                          "mesh { file \"tests/obj/cube.obj\" translate [100, 0, 0] }\n");
+    pov_bounds b = pov_far_bounds(s);
+    ck_assert_double_eq_tol(b.centre.x, 50.5, 1e-12);
+    ck_assert_double_eq_tol(b.centre.y, 0, 1e-12);
+    ck_assert_double_eq_tol(b.centre.z, 2, 1e-12);
+    ck_assert_double_eq_tol(b.radius, 0.5 * sqrt(10241.0), 1e-12);
+    scene_free(s);
+    pov_notes n;
+    notes_of("point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+             "mesh { file \"tests/obj/cube.obj\" translate [1.5, 0, 0] }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "transparent sphere", "within 1e-3"), 1);
+    notes_of("point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+             "mesh { file \"tests/obj/cube.obj\" translate [3, 0, 0] }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+}
+END_TEST
+
 /* linear with d0 0 is approximated (fade_distance stands in for d0), a
  * non-grey Ks gives phong its mean (0.25 + 0.5 + 0.75)/3 = 0.5 and keeps
  * the colour for the mirror ray; both listed, in the header too. */
@@ -782,6 +811,7 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_check_shadow_tolerance);
     tcase_add_test(sdl, test_pov_export_check_far_plane);
     tcase_add_test(sdl, test_pov_export_check_far_shadow);
+    tcase_add_test(sdl, test_pov_export_far_bounds_mesh);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);
     tcase_add_test(sdl, test_pov_export_write_distributed_points);
