@@ -46,6 +46,22 @@ typedef struct props {
     int xform_count;
 } props;
 
+/* Where a rule of check.c reports: field is a keyword_id naming the
+ * property, or one of the pseudo-fields below; the front end maps it to a
+ * span only when a rule reports. */
+enum {
+    CHECK_BLOCK = KEYWORD_COUNT, /* the record as a whole (its block or object) */
+    CHECK_TRANSFORM,             /* a primitive's transforms */
+    CHECK_RECT_EDGES,            /* a rectangle light's two edges */
+    CHECK_RECT_EXTENT,           /* a rectangle light's corner and edges */
+    CHECK_CONE_RADIUS0,          /* a cone's radius at from */
+    CHECK_CONE_RADIUS1           /* a cone's radius at to */
+};
+typedef struct check_at {
+    src_span (*span)(const void *ctx, int field);
+    const void *ctx;
+} check_at;
+
 /* lower.c */
 int lower_statements(loader *L, const ast *list);
 /* Parses sources.files[file] and lowers it in the current scope; identity
@@ -58,13 +74,14 @@ int props_collect(loader *L, const ast *block, props *out);
 int props_number(loader *L, const props *p, keyword_id kw, double fallback, double *out);
 int props_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out);
 int props_color(loader *L, const props *p, keyword_id kw, rgb fallback, rgb *out);
-int props_int(loader *L, const props *p, keyword_id kw, long fallback, long lo, long hi, const char *limit_flag,
-              long *out);
 int props_name(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
 int props_string(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
 int props_require(loader *L, const props *p, keyword_id kw);
 /* The span of a property's first value (or of the block when absent). */
 src_span props_value_span(const props *p, keyword_id kw);
+/* The check_at of a block: a property's first value, or the block's head
+ * for a pseudo-field or a property not given. */
+check_at props_at(const props *p);
 int props_value_at(loader *L, const ast *node, value_kind kind, value *out);
 /* v / |v| computed without overflow or underflow (v is first divided by its
  * largest component); 0 when v is zero or not finite. */
@@ -81,9 +98,9 @@ int lower_material_ref(loader *L, const props *p);
 
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
-/* Whether a triangle has no area: its edges' directions are parallel to
- * within 4 epsilon (the size of the triangle does not matter). */
-int lower_degenerate(vec3 a, vec3 b, vec3 c);
+/* Parses sources.files[file] (PLY by its name or first line, else OBJ)
+ * into *pm, which must be freed after; 1, or 0 after reporting. */
+int lower_parse_mesh(loader *L, int file, polymesh *pm);
 /* Whether the transform mirrors (negative determinant): triangles then
  * swap two corners to keep their normal on the mirrored side. */
 int lower_mirrors(const xform *w);
@@ -92,8 +109,10 @@ int lower_mirrors(const xform *w);
  * `at`; its text held in *held, given back here once the mesh is built)
  * becomes scene.meshes[k] and one PRIM_MESH primitive made from *proto
  * (material set; kind, mesh and u are filled in).  Takes over (and
- * changes) pm's arrays; pm must still be freed.  Returns 1, or 0 after
- * reporting an error. */
+ * changes) pm's arrays; pm must still be freed.  w and l NULL: the
+ * positions are in world coordinates and the normals unit already, kept
+ * bit for bit (a JSON scene's); held NULL: no mesh file text to give back.
+ * Returns 1, or 0 after reporting an error. */
 int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
                const xform *w, const xform *l);
 /* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
@@ -108,6 +127,55 @@ int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim)
 void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* 1 when every number of the placed shape is finite and in its domain. */
 int lower_quadric_in_range(const scene_prim *prim);
+
+/*
+ * check.c: the rules of the scene model, shared by every front end.  Each
+ * returns 1 when the value passes, else 0 after reporting at
+ * check_span(at, field).
+ */
+src_span check_span(const check_at *at, int field);
+/* lo <= x <= hi, an end exclusive when lo_open / hi_open; what names x. */
+int check_range(loader *L, const check_at *at, int field, const char *what, double x, double lo, int lo_open,
+                double hi, int hi_open);
+int check_color(loader *L, const check_at *at, int field, const char *what, rgb c, double lo, double hi);
+/* x a whole number in [lo, hi] into *out (limit_flag names the option that raises hi). */
+int check_whole(loader *L, const check_at *at, int field, double x, long lo, long hi, const char *limit_flag,
+                long *out);
+int check_is_unit(vec3 v);
+int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 v);
+/* size: width, height, samples, max_depth as read; fills *im. */
+int check_image(loader *L, const check_at *at, const double size[4], rgb background, scene_image_spec *im);
+/* fov and width in range; the orthonormal basis derived from eye, look_at
+ * and up (a zero view and a zero up both reported); check_camera: both. */
+int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam);
+int check_camera_basis(loader *L, const check_at *at, scene_camera *cam);
+int check_camera(loader *L, const check_at *at, scene_camera *cam);
+int check_ambient(loader *L, const check_at *at, rgb color);
+/* power and d0 */
+int check_light(loader *L, const check_at *at, const scene_light *light);
+int check_light_samples(loader *L, const check_at *at, double x, int *out);
+/* the edges span an area and stay finite; sets light->normal. */
+int check_rectangle(loader *L, const check_at *at, scene_light *light);
+int check_material(loader *L, const check_at *at, const scene_material *m);
+int check_radius(loader *L, const check_at *at, double radius);
+/* corners a, b differ on every axis; sets the box's lo and hi. */
+int check_box(loader *L, const check_at *at, vec3 a, vec3 b, scene_prim *prim);
+int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to_local);
+/* A cylinder's or cone's ends differ (else at KW_TO). */
+int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
+/* A cone's radii: each >= 0 (at CHECK_CONE_RADIUS0, 1), one > 0 (at KW_RADII). */
+int check_cone_radii(loader *L, const check_at *at, const double radius[2]);
+/* major > 0, minor > 0, minor < major (at KW_MINOR). */
+int check_torus(loader *L, const check_at *at, double major, double minor);
+/* A primitive as the tracer gets it: finite, unit normals, finite
+ * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
+ * KW_VERTICES). */
+int check_placed(loader *L, const check_at *at, const scene_prim *prim);
+/* Whether a triangle has no area: its edges' directions are parallel to
+ * within 4 epsilon (the size of the triangle does not matter). */
+int check_degenerate(vec3 a, vec3 b, vec3 c);
+/* A check_at that gives *span for every field. */
+check_at check_at_fixed(const src_span *span);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
@@ -141,5 +209,17 @@ scene_prim *loader_add_prim(loader *L, src_span where);
 scene_light *loader_add_light(loader *L);
 scene_material *loader_add_material(loader *L);
 scene_mesh *loader_add_mesh(loader *L);
+/* A copy of text from the load's allocator, or NULL after reporting out
+ * of memory. */
+char *loader_strdup(loader *L, const char *text);
+/* Fetches the OBJ or PLY file `name`, written at `at`, into the load's
+ * sources (loader_fetch_mesh: its text held in *held until
+ * loader_release_mesh), so its errors point into it: the one place a mesh
+ * file is read.  1 with its index in *file, else 0 after reporting at `at`. */
+int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *held, int *file);
+
+/* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
+ * (spec/json.md) into the scene, with the rules of check.c. */
+int loader_lower_json(loader *L, int file);
 
 #endif

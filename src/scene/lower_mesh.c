@@ -35,12 +35,12 @@ static src_span face_span(int file, size_t at)
     return s;
 }
 
-/* The reader's positions, mapped by w in place and taken over (unused ones
- * too: range is checked per triangle, so an unused far vertex does not
- * matter). */
+/* The reader's positions, mapped by w in place (w NULL: kept as read) and
+ * taken over (unused ones too: range is checked per triangle, so an unused
+ * far vertex does not matter). */
 static void world_positions(polymesh *pm, const xform *w, scene_trimesh *g)
 {
-    for (int i = 0; i < pm->position_count; i++)
+    for (int i = 0; w && i < pm->position_count; i++)
         pm->positions[i] = xform_point(w, pm->positions[i]);
     g->positions = pm->positions;
     g->position_count = pm->position_count;
@@ -49,12 +49,12 @@ static void world_positions(polymesh *pm, const xform *w, scene_trimesh *g)
     pm->position_count = pm->position_cap = 0;
 }
 
-/* The reader's normals through the inverse transpose, made unit, taken
- * over; one that cannot be (zero or not finite) becomes zero, refused if a
- * triangle uses it. */
+/* The reader's normals through the inverse transpose, made unit (l NULL:
+ * kept as read, already checked to be unit), taken over; one that cannot
+ * be (zero or not finite) becomes zero, refused if a triangle uses it. */
 static void world_normals(polymesh *pm, const xform *l, scene_trimesh *g)
 {
-    for (int i = 0; i < pm->normal_count; i++)
+    for (int i = 0; l && i < pm->normal_count; i++)
         if (!loader_unit(xform_normal(l, pm->normals[i]), &pm->normals[i]))
             pm->normals[i] = vec_splat(0);
     g->normals = pm->normals;
@@ -105,7 +105,7 @@ static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, scen
                         "number (about 1.8e308)");
             continue;
         }
-        if (lower_degenerate(g->positions[c[0]], g->positions[c[1]], g->positions[c[2]])) {
+        if (check_degenerate(g->positions[c[0]], g->positions[c[1]], g->positions[c[2]])) {
             if (dropped->count++ == 0)
                 dropped->first_at = pm->tri_at[k];
             continue;
@@ -256,7 +256,7 @@ int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span a
     m->report.faces = pm->face_count;
     world_positions(pm, w, &m->geom);
     world_normals(pm, l, &m->geom);
-    keep_triangles(L, pm, file, lower_mirrors(w), &m->geom, &dropped);
+    keep_triangles(L, pm, file, w && lower_mirrors(w), &m->geom, &dropped);
     fit_arrays(L->mem, &m->geom);
     if (L->diag.errors != errors)
         return 0;
@@ -277,7 +277,8 @@ int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span a
      * threshold for mapping blocks when a large mapped block is freed, and
      * the scratch allocated after that would stay in its heap (measured:
      * 28 MB more at the peak for a million triangles). */
-    loader_release_mesh(L, file, held);
+    if (held)
+        loader_release_mesh(L, file, held);
     report_surface(L, m, L->scene->materials[proto->material].t);
     L->mesh_triangles += m->geom.tri_count;
     proto->kind = PRIM_MESH;
