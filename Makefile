@@ -126,6 +126,10 @@ REFRAY   := $(BUILD)/refray
 # host links the public library, which exports rf_ symbols only.
 LIBRARY  := $(BUILD)/librefray-internal.a
 TESTBIN  := $(BUILD)/check_refray
+# The fixture generators (tests/gen/; their rule is below): defined before
+# the test rule, whose prerequisites are expanded where it is read.
+GEN_TOOLS := gen_sphere_meshes gen_ply_corpus gen_stress gen_big_mesh
+GEN_BINS  := $(GEN_TOOLS:%=$(BUILD)/%)
 
 # The public library (see its rules below).
 RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' include/refray.h)
@@ -427,8 +431,6 @@ $(KIT_CHECK): tests/conform/kit_check.c
 # computed stress scenes again in place; tests/check_fixtures.c checks that
 # they give the committed bytes.  gen_big_mesh writes the million-triangle
 # torus of spec/numerics.md 2.16 where it is told.
-GEN_TOOLS := gen_sphere_meshes gen_ply_corpus gen_stress gen_big_mesh
-GEN_BINS  := $(GEN_TOOLS:%=$(BUILD)/%)
 $(GEN_BINS): $(BUILD)/%: tests/gen/%.c tests/gen/gen.c tests/gen/gen.h
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
