@@ -127,6 +127,47 @@ START_TEST(test_terminator_smooth_sphere_does_not_shadow_itself)
 }
 END_TEST
 
+/* [SHADE-TERMINATOR-1] render_opts.facet_shadows (make difftest's way of
+ * comparing with POV-Ray, spec/crosscheck.md [XCHK-MAP-MESH-3]) renders
+ * what a tracer with the offset off renders, pixel for pixel; without it,
+ * what the default tracer renders; and the two differ (the stair steps). */
+START_TEST(test_terminator_facet_shadows_option)
+{
+    static const char text[] = "image { width 32 height 24 samples 1 max_depth 1 }\n"
+                               "camera { orthographic eye [0, 0, 10] look_at [0, 0, 0] up [0, 1, 0] width 3.2 }\n"
+                               "distant_light { direction [0.2, -1, 0.25] power 1 }\n"
+                               "mesh { file \"models/sphere_12x8.obj\" scale 1.2 material { Kd 0.8 } }\n";
+    int status, differ = 0;
+    scene_model *s = scene_file_load_text("scenes/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_ptr_nonnull(s);
+    img_buf img[2];
+    for (int facet = 0; facet <= 1; facet++) {
+        render_opts o;
+        tracer t;
+        memset(&o, 0, sizeof o);
+        o.facet_shadows = facet;
+        ck_assert_int_eq(render_image(s, &o, &img[facet], NULL), STATUS_OK);
+        ck_assert(tracer_init(&t, s, 0, 0));
+        t.terminator_offset = !facet;
+        for (int j = 0; j < 24; j++)
+            for (int i = 0; i < 32; i++) {
+                trace_stats st;
+                memset(&st, 0, sizeof st);
+                rgb a = render_pixel(&t, 32, 24, 1, i, j, &st);
+                const double *px = img_pixel(&img[facet], i, j);
+                ck_assert_msg(memcmp(&a.x, &px[0], sizeof a.x) == 0, "facet %d, pixel (%d, %d)", facet, i, j);
+            }
+        tracer_free(&t);
+    }
+    for (int k = 0; k < 3 * 32 * 24; k++)
+        differ += img[0].rgb[k] != img[1].rgb[k];
+    ck_assert_int_gt(differ, 0);
+    img_free(&img[0]);
+    img_free(&img[1]);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_terminator(void)
 {
     Suite *s = suite_create("terminator");
@@ -134,6 +175,7 @@ Suite *suite_terminator(void)
     tcase_add_test(tc, test_terminator_flat_triangle_is_not_lifted);
     tcase_add_test(tc, test_terminator_lift_on_a_sphere_facet);
     tcase_add_test(tc, test_terminator_smooth_sphere_does_not_shadow_itself);
+    tcase_add_test(tc, test_terminator_facet_shadows_option);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -259,7 +259,7 @@ static void check_material(const scene_model *s, int index, const pov_opts *o, p
  * refray traces the mirror ray as it is.  A ray refracted about a vertex
  * normal can head back into the mesh too: refray then goes by the face's
  * orientation, POV-Ray by its list of interiors. */
-static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
+static void check_mesh_mirror(const scene_model *s, const scene_mesh *m, pov_notes *n)
 {
     char at[256];
     const scene_material *mat = &s->materials[s->prims[m->prim].material];
@@ -274,6 +274,34 @@ static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
         add_note(n, "mesh at %s has vertex normals and t > 0: where a ray refracted about a vertex normal heads "
                  "back into the surface, refray follows the face's orientation and POV-Ray its list of "
                  "interiors", at);
+}
+
+/* Whether some triangle's corners have different normals: a curved
+ * surface, where Hanika's lifted point leaves the facet. */
+static int is_curved(const scene_trimesh *g)
+{
+    for (int i = 0; g->tri_normal && i < g->tri_count; i++) {
+        const int *c = g->tri_normal[i];
+        if (c[0] >= 0 && (memcmp(&g->normals[c[0]], &g->normals[c[1]], sizeof(vec3)) != 0 ||
+                          memcmp(&g->normals[c[0]], &g->normals[c[2]], sizeof(vec3)) != 0))
+            return 1;
+    }
+    return 0;
+}
+
+/* [XCHK-MAP-MESH-3] refray starts the shadow rays of a smooth mesh at
+ * Hanika's lifted point ([SHADE-TERMINATOR-1]); POV-Ray starts them on the
+ * facet, which shadows itself near the terminator. */
+static void check_mesh(const scene_model *s, const scene_mesh *m, const pov_opts *o, pov_notes *n)
+{
+    char at[256];
+    check_mesh_mirror(s, m, n);
+    if (o->facet_shadows || !s->features.shadows || !is_curved(&m->geom))
+        return;
+    where(s, m->where, at, sizeof at);
+    add_note(n, "mesh at %s has vertex normals and the scene has shadows: refray starts a smooth triangle's shadow "
+             "rays at the lifted point (no dark facets at the terminator), POV-Ray on the facet, which can shadow "
+             "itself there", at);
 }
 
 /* [XCHK-MAP-SHADOW-2] POV-Ray does not count a shadow-ray crossing within
@@ -351,7 +379,7 @@ int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
     for (int i = 0; i < s->material_count; i++)
         check_material(s, i, o, notes);
     for (int i = 0; i < s->mesh_count; i++)
-        check_mesh(s, &s->meshes[i], notes);
+        check_mesh(s, &s->meshes[i], o, notes);
     check_shadow_tolerance(s, notes);
     check_far(s, notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)

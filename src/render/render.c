@@ -80,6 +80,8 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
     if (o && o->no_shortcuts)
         tracer_no_shortcuts(&r->tracer);
+    if (o && o->facet_shadows)
+        r->tracer.terminator_offset = 0;
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&r->tracer, stats);
