@@ -51,6 +51,10 @@ static void emit(const diag *d, diag_level level, const source_file *f, size_t o
     if (f) {
         text_escape(f->path, strlen(f->path), path, sizeof path);
         r.path = path;
+    }
+    /* A mesh file's text is released once its mesh is built: a later
+     * message names the file without a line. */
+    if (f && f->text) {
         source_line_col(f, offset, &r.line, &r.column);
         if (excerpt)
             r.source_line = source_line_text(f, offset, &r.source_line_length);

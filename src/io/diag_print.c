@@ -71,10 +71,13 @@ void diag_print(void *stream, const diag_record *r)
      * may not: escaping printable ASCII again changes nothing. */
     char path[1024], message[1024];
     text_escape(r->message ? r->message : "", r->message ? strlen(r->message) : 0, message, sizeof message);
-    if (r->path) {
+    if (r->path)
         text_escape(r->path, strlen(r->path), path, sizeof path);
+    if (r->path && r->line > 0)
         fprintf(out, "%s:%d:%d: %s: %s\n", path, r->line, r->column, level_name(r->level), message);
-    } else
+    else if (r->path)
+        fprintf(out, "%s: %s: %s\n", path, level_name(r->level), message);
+    else
         fprintf(out, "refray: %s: %s\n", level_name(r->level), message);
     if (r->path && r->source_line)
         print_excerpt(out, r);

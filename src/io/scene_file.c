@@ -79,6 +79,8 @@ static char *identity_of(const mem *m, const char *path)
 static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
 {
     scene_file_reader *f = user;
+    int accept_known = out->known;
+    out->known = 0;
     char *dir = file_dirname(&f->mem, from);
     char *path = dir ? file_join(&f->mem, dir, name) : NULL, *text = NULL;
     mem_free_string(&f->mem, dir);
@@ -89,7 +91,7 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
         release(f, out);
         return STATUS_NO_MEMORY;
     }
-    if (name_index_find(&f->index, out->identity) >= 0) {
+    if (accept_known && name_index_find(&f->index, out->identity) >= 0) {
         out->known = 1;
         return STATUS_OK;
     }
@@ -97,7 +99,7 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
     int status = file_read_all(path, f->max_bytes, &f->mem, &text, &len, why, why_size);
     out->text = text;
     out->len = len;
-    if (status == STATUS_OK && !remember(f, out->identity))
+    if (status == STATUS_OK && accept_known && !remember(f, out->identity))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK)
         release(f, out);

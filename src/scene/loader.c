@@ -84,8 +84,9 @@ scene_prim *loader_add_prim(loader *L, src_span where)
     scene_model *s = L->scene;
     if (L->prims_refused)
         return NULL;
-    if (s->prim_count >= L->limits->max_primitives) {
-        if (s->prim_count == L->limits->max_primitives)
+    long used = s->prim_count + L->mesh_triangles;
+    if (used >= L->limits->max_primitives) {
+        if (used == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
                         L->limits->max_primitives);
         s->prim_count++;
@@ -256,23 +257,45 @@ static int new_file(loader *L, const scene_source *src, const char *name, const 
     return loader_add_file(L, file, identity, src->len) ? file : -1;
 }
 
-int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+/* Asks the resolver for name into *src; STATUS_OK, or another status with
+ * the reason in why (out of memory reported).  accept_known: the resolver
+ * may answer a file it gave before with `known` and no text (an include,
+ * whose copy the load keeps; a mesh file's text is released once its mesh
+ * is built, so it is always read). */
+static int ask(loader *L, const char *name, src_span at, int accept_known, scene_source *src, char *why,
+               size_t why_size)
 {
     const scene_resolver *r = L->resolver;
     const char *from = L->scene->sources.files[at.file]->path;
-    scene_source src;
-    memset(&src, 0, sizeof src);
+    memset(src, 0, sizeof *src);
+    src->known = accept_known;
     why[0] = '\0';
     int status = STATUS_NO_INPUT;
     if (r->fetch)
-        status = r->fetch(r->user, from, name, &src, why, why_size);
+        status = r->fetch(r->user, from, name, src, why, why_size);
     else
         snprintf(why, why_size, "cannot read '%s': this load reads no files", name);
-    if (status != STATUS_OK) {
-        if (status == STATUS_NO_MEMORY)
-            loader_oom(L);
+    /* A resolver that knows nothing of `known` leaves the flag as it was
+     * set on entry: an answer with text is a fresh read whatever it says. */
+    if (src->text)
+        src->known = 0;
+    if (status == STATUS_NO_MEMORY)
+        loader_oom(L);
+    return status;
+}
+
+static void give_back(loader *L, scene_source *src)
+{
+    if (L->resolver->release)
+        L->resolver->release(L->resolver->user, src);
+    memset(src, 0, sizeof *src);
+}
+
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+{
+    scene_source src;
+    if (ask(L, name, at, 1, &src, why, why_size) != STATUS_OK)
         return -1;
-    }
     const char *id = src.identity ? src.identity : src.path ? src.path : name;
     int file = known_file(L, id, at);
     if (file < 0)
@@ -281,9 +304,41 @@ int loader_fetch(loader *L, const char *name, src_span at, char **identity, char
         loader_oom(L);
         file = -1;
     }
-    if (r->release)
-        r->release(r->user, &src);
+    give_back(L, &src);
     return file;
+}
+
+int loader_fetch_mesh(loader *L, const char *name, src_span at, scene_source *held, char *why, size_t why_size)
+{
+    if (ask(L, name, at, 0, held, why, why_size) != STATUS_OK)
+        return -1;
+    double total = (double)L->input_bytes + (double)held->len;
+    if (!held->text || held->known || total > (double)L->limits->max_input_bytes) {
+        if (!held->text || held->known)
+            snprintf(why, why_size, "cannot read '%s': the resolver gave no text", name);
+        else
+            snprintf(why, why_size, "'%s' (%zu bytes) would bring the bytes this load reads to %.0f, over the limit "
+                     "of %ld (--max-input-size)", name, held->len, total, L->limits->max_input_bytes);
+        give_back(L, held);
+        return -1;
+    }
+    int file = source_set_lend(&L->scene->sources, held->path ? held->path : name, held->text, held->len, at);
+    if (file < 0) {
+        give_back(L, held);
+        loader_oom(L);
+        return -1;
+    }
+    L->input_bytes += (long)held->len;
+    L->scene->sources.files[file]->is_mesh = 1;
+    return file;
+}
+
+void loader_release_mesh(loader *L, int file, scene_source *held)
+{
+    if (!L->scene->sources.files[file]->lent)
+        return;
+    source_set_release(&L->scene->sources, file);
+    give_back(L, held);
 }
 
 static const char *material_name(const void *scene, int i)
@@ -329,13 +384,11 @@ void loader_free(loader *L)
 }
 
 /* Reads the OBJ file into the load's sources, so its errors point into it. */
-int loader_read_obj(loader *L, const char *name, src_span at, int *file)
+int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *held, int *file)
 {
     char why[512];
-    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
-    if (*file >= 0)
-        L->scene->sources.files[*file]->is_mesh = 1;
-    else if (!L->out_of_memory)
+    *file = loader_fetch_mesh(L, name, at, held, why, sizeof why);
+    if (*file < 0 && !L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
     return *file >= 0;
 }
