@@ -581,16 +581,30 @@ int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_prim(const scene_prim *prims, int index, const ray *r,
-                      int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+/* One walk over every crossing: either each crossing (fn) or each
+ * primitive's number of crossings (count_fn). */
+typedef struct walk {
+    const scene_prim *prims;
+    const ray *r;
+    int (*fn)(void *ctx, const hit *h);
+    int (*count_fn)(void *ctx, int prim, int crossings);
+    void *ctx;
+    bvh_stats *stats;
+} walk;
+
+static int visit_prim(const walk *w, int index)
 {
     hit out[ISECT_MAX_CROSSINGS];
-    if (stats)
-        stats->prims_tested++;
-    int n = isect_prim_all(&prims[index], r, out);
+    if (w->stats)
+        w->stats->prims_tested++;
+    if (w->count_fn) {
+        int n = isect_prim_count(&w->prims[index], w->r);
+        return n > 0 ? w->count_fn(w->ctx, index, n) : 0;
+    }
+    int n = isect_prim_all(&w->prims[index], w->r, out);
     for (int i = 0; i < n; i++) {
         out[i].prim = index;
-        int stop = fn(ctx, &out[i]);
+        int stop = w->fn(w->ctx, &out[i]);
         if (stop)
             return stop;
     }
@@ -599,18 +613,17 @@ static int visit_prim(const scene_prim *prims, int index, const ray *r,
 
 /* Depth-first over every node the ray meets; the stack holds at most one
  * pending sibling per level plus the node being expanded. */
-static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
-                        int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+static int traverse_all(const bvh *b, const walk *w)
 {
     int stack[BVH_MAX_DEPTH + 1], sp = 0;
-    slab_ray s = slab_make(r);
+    slab_ray s = slab_make(w->r);
     stack[sp++] = 0;
     while (sp > 0) {
         const bvh_node *nd = &b->nodes[stack[--sp]];
         real enter;
-        if (stats)
-            stats->nodes_visited++;
-        if (!node_hit(nd, &s, r->tmin, r->tmax, &enter) && !b->exhaustive)
+        if (w->stats)
+            w->stats->nodes_visited++;
+        if (!node_hit(nd, &s, w->r->tmin, w->r->tmax, &enter) && !b->exhaustive)
             continue;
         if (nd->count == 0) {
             assert(sp + 2 <= BVH_MAX_DEPTH + 1);
@@ -619,7 +632,7 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
             continue;
         }
         for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_prim(prims, b->items[i], r, fn, ctx, stats);
+            int stop = visit_prim(w, b->items[i]);
             if (stop)
                 return stop;
         }
@@ -627,19 +640,32 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
     return 0;
 }
 
-int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
-                    int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+static int walk_all(const bvh *b, const walk *w)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        int stop = visit_prim(prims, b->unbounded[i], r, fn, ctx, stats);
+        int stop = visit_prim(w, b->unbounded[i]);
         if (stop)
             return stop;
     }
-    return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
+    return b->node_count > 0 ? traverse_all(b, w) : 0;
+}
+
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
+                    int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+{
+    walk w = {prims, r, fn, NULL, ctx, stats};
+    return walk_all(b, &w);
 }
 
 int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx)
 {
     return bvh_visit_stats(b, prims, r, fn, ctx, NULL);
+}
+
+int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
+                     int (*fn)(void *ctx, int prim, int crossings), void *ctx, bvh_stats *stats)
+{
+    walk w = {prims, r, NULL, fn, ctx, stats};
+    return walk_all(b, &w);
 }

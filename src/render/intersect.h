@@ -74,6 +74,9 @@ int isect_prim(const scene_prim *p, ray *r, hit *h);
  * 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
  * torus: two of each).  r is not changed; each out[i].prim is -1. */
 int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
+/* How many crossings isect_prim_all reports, found by the same arithmetic
+ * without their points and normals (a shadow ray needs only the count). */
+int isect_prim_count(const scene_prim *p, const ray *r);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
  * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
@@ -120,5 +123,18 @@ ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target);
 /* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
  * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir);
+
+/* The shadow rays of one shaded point share their start: the hit point,
+ * its geometric normal and the offset of ray_spawn_hit_to, computed once
+ * (the primitive's magnitude is not cheap for a transformed one).
+ * ray_shadow_to and ray_shadow_along give exactly the rays of
+ * ray_spawn_hit_to and ray_spawn_hit_shadow. */
+typedef struct shadow_start {
+    vec3 point, normal;
+    real offset;
+} shadow_start;
+shadow_start ray_shadow_start(const scene_prim *p, const hit *h);
+ray ray_shadow_to(const shadow_start *st, vec3 target);
+ray ray_shadow_along(const shadow_start *st, vec3 dir);
 
 #endif

@@ -29,6 +29,9 @@ typedef struct surface {
     const hit *h;
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
+    shadow_start from; /* where its shadow rays start */
+    int blocker;     /* the opaque primitive that last stopped one of its
+                        shadow rays, or -1: tried first on the next */
 } surface;
 
 int trace_solid_id(const scene_model *s, int prim)
@@ -124,25 +127,47 @@ typedef struct shadow_walk {
     const scene_model *scene;
     real carried;
     int walk_on;     /* no stop at 0: the shortcuts-off mode */
+    int opaque;      /* the opaque primitive the walk stopped at, or -1 */
 } shadow_walk;
 
 /* Slide 47: every surface on the way lets through its t (opaque: 0).
  * [SHADE-SHORTCUT-STOP-1] Once 0 is carried the product stays 0, so the
  * walk stops there. */
-static int shadow_crossing(void *ctx, const hit *h)
+static int shadow_crossing(void *ctx, int prim, int crossings)
 {
     shadow_walk *w = ctx;
-    const scene_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
-    w->carried = shade_shadow_transmission(w->carried, m->t);
+    const scene_material *m = &w->scene->materials[w->scene->prims[prim].material];
+    for (int i = 0; i < crossings; i++) {
+        w->carried = shade_shadow_transmission(w->carried, m->t);
+        if (w->carried == 0 && !w->walk_on)
+            break;
+    }
+    if (m->t == 0)
+        w->opaque = prim;
     return w->carried == 0 && !w->walk_on;
 }
 
-/* The fraction of a light that reaches the surface along r. */
-static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
+/*
+ * The fraction of a light that reaches the surface along r.
+ * [SHADE-SHORTCUT-BLOCKER-1] Neighbouring shadow rays of one point (the
+ * samples of an area light) are mostly stopped by the same opaque surface,
+ * so the one that stopped the last is tested first: when r crosses it
+ * (the walk's own test, on the same interval) the walk would report that
+ * crossing too and carry 0 whatever else it met, so 0 is the answer
+ * without the walk.  Off in the shortcuts-off mode.
+ */
+static real shadow_transmission(const tracer *t, const ray *r, int *blocker, trace_stats *st)
 {
-    shadow_walk w = {t->scene, 1.0, t->no_shortcuts};
+    shadow_walk w = {t->scene, 1.0, t->no_shortcuts, -1};
     st->shadow_rays++;
-    bvh_visit_stats(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    if (*blocker >= 0 && !t->no_shortcuts) {
+        st->bvh.prims_tested++;
+        if (isect_prim_count(&t->scene->prims[*blocker], r) > 0)
+            return 0;
+    }
+    bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    if (w.carried == 0 && w.opaque >= 0)
+        *blocker = w.opaque;
     return w.carried;
 }
 
@@ -152,7 +177,7 @@ typedef struct direct_sum {
 } direct_sum;
 
 /* One point source at pos (distant: at infinity along -direction). */
-static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
+static void add_source(const tracer *t, surface *s, const scene_light *light, vec3 pos, rgb power,
                        direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -176,9 +201,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
-                                             : ray_spawn_hit_to(s->prim, s->h, pos);
-        real through = shadow_transmission(t, &r, st);
+        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
+        real through = shadow_transmission(t, &r, &s->blocker, st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -194,7 +218,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
 }
 
 /* The samples of a distributed light, each a point source of E/samples. */
-static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
+static void add_distributed(const tracer *t, surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
 {
     const scene_light *light = &t->scene->lights[index];
@@ -210,7 +234,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     }
 }
 
-static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
+static direct_sum direct_light(const tracer *t, surface *s, uint64_t key, trace_stats *st)
 {
     direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
     for (int i = 0; i < t->scene->light_count; i++) {
@@ -397,6 +421,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.h = h;
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
+    s.blocker = -1;
+    if (t->shadows)
+        s.from = ray_shadow_start(s.prim, h);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
