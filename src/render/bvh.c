@@ -382,13 +382,13 @@ static slab_ray slab_make(const ray *r)
 }
 
 /* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
-static void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
+static inline void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
 {
     real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
     /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
      * (a box wholly to one side of a parallel ray) that would be NaN and
      * the box would never be culled. */
-    t1 *= t1 >= 0.0 ? 1.0 + EXIT_PAD : 1.0 - EXIT_PAD;
+    t1 *= 1.0 + copysign(EXIT_PAD, t1);   /* 1 + pad for t1 >= 0, 1 - pad below: no branch */
     if (t0 > *tn)
         *tn = t0;
     if (t1 < *tf)
@@ -397,7 +397,7 @@ static void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf
 
 /* Whether the ray meets the node's box within [tmin, tmax]; *enter is the
  * entry distance. */
-static int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
+static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
 {
     real tn = tmin, tf = tmax;
     slab(nd->lo.x, nd->hi.x, s->o.x, s->inv.x, s->neg[0], &tn, &tf);
