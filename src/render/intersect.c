@@ -49,13 +49,6 @@ static real max_abs(vec3 v)
     return m > z ? m : z;
 }
 
-/* |v|: sqrt of the dot product when that neither overflowed nor lost
- * precision to underflow, else vec_length's scaled form. */
-static real length_fast(vec3 v)
-{
-    real d = vec_dot(v, v);
-    return d >= REAL_MIN && d <= REAL_MAX ? sqrt(d) : vec_length(v);
-}
 
 /*
  * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
@@ -85,7 +78,7 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     real rr = radius * radius, l2 = vec_dot(l, l);
     if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
         return 0;
-    real ll = length_fast(l);
+    real ll = vec_length_fast(l);
     /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
      * underflows to -0 for a sphere below about 1e-154 and would pass for a
      * graze.  The square root is taken factor by factor for the same reason. */
@@ -96,7 +89,7 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
         t[0] = -b / a;
         return 1;
     }
-    real lf = length_fast(f);
+    real lf = vec_length_fast(f);
     real c = (lf - radius) * (lf + radius);
     real q = -(b + copysign(root, b));
     real t0 = c / q, t1 = q / a;
@@ -659,7 +652,7 @@ static ray spawn_to_by(vec3 point, vec3 normal, vec3 target, real offset)
     ray r;
     r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
     vec3 to = vec_sub(target, r.origin);
-    real dist = vec_length(to);
+    real dist = vec_length_fast(to);
     r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
     r.tmin = offset;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);

@@ -187,7 +187,7 @@ static void add_source(const tracer *t, surface *s, const scene_light *light, ve
         l = vec_neg(light->direction);
     } else {
         vec3 to = vec_sub(pos, s->h->point);
-        d = vec_length(to);
+        d = vec_length_fast(to);
         if (!(d > 0)) {
             st->lights_on_surface++;
             return;
