@@ -234,15 +234,16 @@ static void check_random_scene(int index)
 
 /*
  * [SHADE-SHORTCUT-BLOCKER-1] A floor under a 1 x 1 area light at height 4
- * (16 samples) with an opaque ball of radius 0.5 at height 2 between them;
- * an orthographic camera sees the floor within 0.1 of the origin from the
- * side (max_depth 1).  From there the light spans at most atan(0.6/3.9) =
- * 8.7 degrees off the vertical and the ball asin(0.5/2) = 14.5 degrees, so
- * every shadow ray runs into the ball, which is tested first for all but
- * the first ray of a pixel: the shadow rays test under one and a half
+ * (16 samples) with an opaque ball of radius 0.9 at height 2 between them;
+ * an orthographic camera (width 0.2, from (0, 1, 5)) sees the floor within
+ * |x| <= 0.1, |z| <= 0.51 of the origin, passing 1.8 from the ball's
+ * centre (max_depth 1).  A shadow ray from there to the light is at height
+ * 2 halfway, within sqrt(0.3^2 + 0.51^2) = 0.6 of the ball's centre, so
+ * every one runs into the ball, which is tested first for all but the
+ * first ray of a pixel: the shadow rays test under one and a half
  * primitives each on average (the walk alone tests the floor plane and the
  * ball: 2), while the image is the same bits as with the shortcuts off, and
- * black.
+ * black (no ambient).
  */
 START_TEST(test_shortcuts_blocker_tried_first)
 {
@@ -250,7 +251,7 @@ START_TEST(test_shortcuts_blocker_tried_first)
                           "camera { orthographic eye [0, 1, 5] look_at [0, 0, 0] up [0, 1, 0] width 0.2 }\n"
                           "distributed_light { rectangle [-0.5, 4, -0.5] [1, 0, 0] [0, 0, 1] power 1 samples 16 }\n"
                           "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
-                          "sphere { center [0, 2, 0] radius 0.5 material { Kd 0.5 } }\n");
+                          "sphere { center [0, 2, 0] radius 0.9 material { Kd 0.5 } }\n");
     img_buf on, off;
     render_stats st_on, st_off;
     render(s, 0, &on, &st_on);
