@@ -248,6 +248,12 @@ static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
             tt[1] = t1;
             axis[1] = k;
         }
+        /* The entry only grows and the exit only falls from here on: once
+         * they cross, or the exit is at or before tmin, or the entry at or
+         * past tmax, no crossing can be accepted; the other axes' divisions
+         * are saved. */
+        if (tt[0] > tt[1] || tt[1] <= r->tmin || tt[0] >= r->tmax)
+            return 0;
     }
     return axis[0] >= 0 && tt[0] <= tt[1];
 }
