@@ -30,8 +30,6 @@ typedef struct surface {
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
     shadow_start from; /* where its shadow rays start */
-    int blocker;     /* the opaque primitive that last stopped one of its
-                        shadow rays, or -1: tried first on the next */
 } surface;
 
 int trace_solid_id(const scene_model *s, int prim)
@@ -142,26 +140,28 @@ static int shadow_crossing(void *ctx, int prim, int crossings)
 }
 
 /*
- * The fraction of a light that reaches the surface along r.
- * [SHADE-SHORTCUT-BLOCKER-1] Neighbouring shadow rays of one point (the
- * samples of an area light) are mostly stopped by the same opaque surface,
- * so the one that stopped the last is tested first: when r crosses it
- * (the walk's own test, on the same interval) the walk would report that
- * crossing too and carry 0 whatever else it met, so 0 is the answer
- * without the walk.  Off in the shortcuts-off mode.
+ * The fraction of light `light` that reaches the surface along r.
+ * [SHADE-SHORTCUT-BLOCKER-1] Neighbouring shadow rays toward one light
+ * (the samples of an area light from one point, the rays of the next
+ * pixel) are mostly stopped by the same opaque surface, so the one that
+ * stopped the last is tested first: when r crosses it (the walk's own
+ * test, on the same interval) the walk would report that crossing too and
+ * carry 0 whatever else it met, so 0 is the answer without the walk.  Off
+ * in the shortcuts-off mode.
  */
-static real shadow_transmission(const tracer *t, const ray *r, int *blocker, trace_stats *st)
+static real shadow_transmission(const tracer *t, const ray *r, int light, trace_stats *st)
 {
     shadow_walk w = {t->scene, 1.0, t->no_shortcuts, -1};
+    int *slot = &st->blocker[light % TRACE_BLOCKERS], hint = *slot - 1;
     st->shadow_rays++;
-    if (*blocker >= 0 && !t->no_shortcuts) {
+    if (hint >= 0 && hint < t->scene->prim_count && !t->no_shortcuts) {
         st->bvh.prims_tested++;
-        if (isect_prim_count(&t->scene->prims[*blocker], r) > 0)
+        if (isect_prim_count(&t->scene->prims[hint], r) > 0)
             return 0;
     }
     bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
     if (w.carried == 0 && w.opaque >= 0)
-        *blocker = w.opaque;
+        *slot = w.opaque + 1;
     return w.carried;
 }
 
@@ -171,7 +171,7 @@ typedef struct direct_sum {
 } direct_sum;
 
 /* One point source at pos (distant: at infinity along -direction). */
-static void add_source(const tracer *t, surface *s, const scene_light *light, vec3 pos, rgb power,
+static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
                        direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -196,7 +196,7 @@ static void add_source(const tracer *t, surface *s, const scene_light *light, ve
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
-        real through = shadow_transmission(t, &r, &s->blocker, st);
+        real through = shadow_transmission(t, &r, (int)(light - t->scene->lights), st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -234,7 +234,7 @@ vec3 trace_light_point(const scene_light *light, const light_setup *setup, int i
 }
 
 /* The samples of a distributed light, each a point source of E/samples. */
-static void add_distributed(const tracer *t, surface *s, int index, uint64_t key, direct_sum *sum,
+static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
 {
     const scene_light *light = &t->scene->lights[index];
@@ -244,7 +244,7 @@ static void add_distributed(const tracer *t, surface *s, int index, uint64_t key
         add_source(t, s, light, trace_light_point(light, setup, index, key, j), power, sum, st);
 }
 
-static direct_sum direct_light(const tracer *t, surface *s, uint64_t key, trace_stats *st)
+static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
 {
     direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
     for (int i = 0; i < t->scene->light_count; i++) {
@@ -431,7 +431,6 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.h = h;
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
-    s.blocker = -1;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, h);
     direct_sum sum = direct_light(t, &s, key, st);
