@@ -239,14 +239,16 @@ arena-min: embed
 # Installs povray when missing; files of the run in build/bench-pov/.
 BENCH_POV := $(BUILD)/benchpov
 BENCH_POV_RUNS ?= 3
+# The 100 000-triangle torus is written by gen_big_mesh into build/bench-pov/.
 BENCH_POV_SCENES ?= scenes/bench/grid1k.scene@1600x1200x1 scenes/bench/grid100k.scene@1600x1200x1 \
   scenes/demo.scene@240x150x2 scenes/cornell.scene@160x160x2 scenes/bench/room.scene@160x160x2 \
-  scenes/mesh.scene@240x160x2 scenes/nested_glass.scene@240x160x2
+  scenes/mesh.scene@240x160x2 build/bench-pov/torus/torus.scene@640x480x1 scenes/nested_glass.scene@240x160x2
 
 bench-pov: deps
 	$(if $(filter 0,$(PNG)),$(error make bench-pov reads POV-Ray's pictures as PNG: it needs PNG=1))
 	$(Q)$(call need_program,povray,povray)
-	$(Q)$(MAKE) --no-print-directory $(BENCH_POV) $(REFRAY)
+	$(Q)$(MAKE) --no-print-directory $(BENCH_POV) $(REFRAY) $(BUILD)/gen_big_mesh
+	$(Q)mkdir -p build/bench-pov && $(BUILD)/gen_big_mesh build/bench-pov/torus --u 250 --v 200
 	$(BENCH_POV) -r $(BENCH_POV_RUNS) -o build/bench-pov --refray $(REFRAY) $(BENCH_POV_SCENES)
 
 $(BENCH_POV): $(BUILD)/obj/tests/bench/benchpov.o $(BUILD)/obj/tests/difftest/run.o $(LIBRARY)
