@@ -61,21 +61,9 @@ static double children_cpu(void)
  * CPU seconds (user + system), or -1 when it failed. */
 static double run_timed(char *const argv[], const char *dir, const char *log)
 {
-    pid_t pid = fork();
+    pid_t pid = dt_spawn(argv, dir, log);
     if (pid < 0)
         return -1;
-    if (pid == 0) {
-        if (dir && chdir(dir) != 0)
-            _exit(126);
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            dup2(fd, 1);
-            dup2(fd, 2);
-            close(fd);
-        }
-        execvp(argv[0], argv);
-        _exit(127);
-    }
     int status;
     double before = children_cpu();
     while (waitpid(pid, &status, 0) < 0)

@@ -9,6 +9,7 @@
 #define REFRAY_DIFFTEST_DT_H
 
 #include <stdio.h>
+#include <sys/types.h>
 #include "export/export_pov.h"
 #include "image/image.h"
 #include "gen.h"
@@ -55,6 +56,12 @@ typedef struct dt_result {
  * verdict.
  */
 dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_result *r);
+
+/* Starts argv[0] (found on PATH) with argv in dir (NULL: here), its output
+ * and errors going to the file log (relative to dir); returns the child's
+ * pid, or -1 when fork failed.  The child exits 126 when dir is not there,
+ * 127 when the program cannot run. */
+pid_t dt_spawn(char *const argv[], const char *dir, const char *log);
 
 /* The export's scale for s: the power of two that puts the peak of what
  * POV-Ray will write (ours, or its sub-samples for a k x k grid) in

@@ -81,6 +81,23 @@ double dt_scale(const scene_model *s, const img_buf *ours)
     return scale_for(sample_peak(s, ours));
 }
 
+pid_t dt_spawn(char *const argv[], const char *dir, const char *log)
+{
+    pid_t pid = fork();
+    if (pid != 0)
+        return pid;
+    if (dir && chdir(dir) != 0)
+        _exit(126);
+    int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+        dup2(fd, 1);
+        dup2(fd, 2);
+        close(fd);
+    }
+    execvp(argv[0], argv);
+    _exit(127);
+}
+
 /* Runs POV-Ray on name.pov inside the work directory (Debian's povray.conf
  * lets it read and write only there and in /tmp), output name.png, log
  * name.log.  Returns 0 when it exited 0 within the timeout. */
@@ -92,22 +109,11 @@ static int run_povray(const dt_config *c, const char *name, int width, int heigh
     snprintf(log, sizeof log, "%s.log", name);
     snprintf(w, sizeof w, "+W%d", width);
     snprintf(h, sizeof h, "+H%d", height);
-    pid_t pid = fork();
+    const char *args[] = {c->povray, in, out, w, h, "-A", "-D", "-V", "+WT1", "+FN16", "File_Gamma=1.0",
+                          "Output_Alpha=off", NULL};
+    pid_t pid = dt_spawn((char *const *)args, c->work_dir, log);
     if (pid < 0)
         return -1;
-    if (pid == 0) {
-        if (chdir(c->work_dir) != 0)
-            _exit(126);
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            dup2(fd, 1);
-            dup2(fd, 2);
-            close(fd);
-        }
-        execlp(c->povray, c->povray, in, out, w, h, "-A", "-D", "-V", "+WT1", "+FN16", "File_Gamma=1.0",
-               "Output_Alpha=off", (char *)NULL);
-        _exit(127);
-    }
     struct timespec nap = {0, 20000000};
     for (long waited = 0;; waited += 20) {
         int status;
