@@ -164,7 +164,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -233,6 +233,30 @@ $(MEMORY): $(BUILD)/obj/tests/bench/memory.o $(LIBRARY)
 
 arena-min: embed
 	$(Q)sh tests/bench/arena_min.sh $(BUILD)/embed/render_string-static $(ARENA_SCENE)
+
+# Figures, not tests (spec/performance.md): CPU time of refray against
+# POV-Ray 3.7 (+WT1 -A) on the same scenes through `refray export --to pov`,
+# median of BENCH_POV_RUNS paired runs, and the two images compared by make
+# difftest's rule.  SCENE@WxHxK overrides the size and pixel grid.
+# Installs povray when missing; files of the run in build/bench-pov/.
+BENCH_POV := $(BUILD)/benchpov
+BENCH_POV_RUNS ?= 3
+# The 100 000-triangle torus is written by gen_big_mesh into build/bench-pov/.
+BENCH_POV_SCENES ?= scenes/bench/grid1k.scene@1600x1200x1 scenes/bench/grid100k.scene@1600x1200x1 \
+  scenes/demo.scene@240x150x2 scenes/cornell.scene@160x160x2 scenes/bench/room.scene@160x160x2 \
+  scenes/mesh.scene@240x160x2 build/bench-pov/torus/torus.scene@640x480x1 scenes/nested_glass.scene@240x160x2
+
+bench-pov: deps
+	$(if $(filter 0,$(PNG)),$(error make bench-pov reads POV-Ray's pictures as PNG: it needs PNG=1))
+	$(Q)$(call need_program,povray,povray)
+	$(Q)$(MAKE) --no-print-directory $(BENCH_POV) $(REFRAY) $(BUILD)/gen_big_mesh
+	$(Q)mkdir -p build/bench-pov && $(BUILD)/gen_big_mesh build/bench-pov/torus --u 250 --v 200
+	$(BENCH_POV) -r $(BENCH_POV_RUNS) -o build/bench-pov --refray $(REFRAY) $(BENCH_POV_SCENES)
+
+$(BENCH_POV): $(BUILD)/obj/tests/bench/benchpov.o $(BUILD)/obj/tests/difftest/run.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(BUILD)/obj/tests/bench/benchpov.o $(BUILD)/obj/tests/difftest/run.o \
+	  $(LIBRARY) $(ALL_LIBS)
 
 $(BENCH): $(BUILD)/obj/tests/bench/bench.o $(LIBRARY)
 	@echo "  LD      $@"

@@ -301,9 +301,45 @@ static void check_random_scene(int index)
     scene_free(s);
 }
 
+/*
+ * [SHADE-SHORTCUT-BLOCKER-1] A floor under a 1 x 1 area light at height 4
+ * (16 samples) with an opaque ball of radius 0.9 at height 2 between them;
+ * an orthographic camera (width 0.2, from (0, 1, 5)) sees the floor within
+ * |x| <= 0.1, |z| <= 0.51 of the origin, passing 1.8 from the ball's
+ * centre (max_depth 1).  A shadow ray from there to the light is at height
+ * 2 halfway, within sqrt(0.3^2 + 0.51^2) = 0.6 of the ball's centre, so
+ * every one runs into the ball, which is tested first for all but the
+ * first ray of a pixel: the shadow rays test under one and a half
+ * primitives each on average (the walk alone tests the floor plane and the
+ * ball: 2), while the image is the same bits as with the shortcuts off, and
+ * black (no ambient).
+ */
+START_TEST(test_shortcuts_blocker_tried_first)
+{
+    scene_model *s = load("image { width 4 height 4 max_depth 1 }\n"
+                          "camera { orthographic eye [0, 1, 5] look_at [0, 0, 0] up [0, 1, 0] width 0.2 }\n"
+                          "distributed_light { rectangle [-0.5, 4, -0.5] [1, 0, 0] [0, 0, 1] power 1 samples 16 }\n"
+                          "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+                          "sphere { center [0, 2, 0] radius 0.9 material { Kd 0.5 } }\n");
+    img_buf on, off;
+    render_stats st_on, st_off;
+    render(s, 0, &on, &st_on);
+    render(s, 1, &off, &st_off);
+    ck_assert_int_eq(st_on.trace.shadow_rays, 16 * 16);
+    ck_assert_int_lt(st_on.trace.bvh.prims_tested - st_on.trace.camera_rays * 2, 3 * st_on.trace.shadow_rays / 2);
+    for (int i = 0; i < 3 * 16; i++) {
+        ck_assert_msg(on.rgb[i] == 0, "value %d is %.17g, not 0", i, on.rgb[i]);
+        ck_assert(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0);
+    }
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
  * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1]
- * Random scenes: identical bits with the shortcuts on and off. */
+ * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
     for (int k = 0; k < RANDOM_BATCH; k++)
@@ -321,6 +357,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_off_does_all_the_work);
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
+    tcase_add_test(tc, test_shortcuts_blocker_tried_first);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,

@@ -92,6 +92,15 @@ static inline real vec_length(vec3 a)
     return m * sqrt(vec_dot(a, a));
 }
 
+/* |a| as sqrt(a.a) when a.a neither overflowed nor lost precision to
+ * underflow (one square root, no divisions), else vec_length's scaled form;
+ * the two may differ in the last bit. */
+static inline real vec_length_fast(vec3 a)
+{
+    real d = vec_dot(a, a);
+    return d >= REAL_MIN && d <= REAL_MAX ? sqrt(d) : vec_length(a);
+}
+
 /* Unit vector along a; returns the zero vector for a zero input so that a
  * caller that validated its input never sees NaN from here. */
 static inline vec3 vec_normalize(vec3 a)

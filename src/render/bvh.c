@@ -48,13 +48,13 @@ static slab_ray slab_make(const ray *r)
 }
 
 /* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
-static void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
+static inline void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
 {
     real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
     /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
      * (a box wholly to one side of a parallel ray) that would be NaN and
      * the box would never be culled. */
-    t1 *= t1 >= 0.0 ? 1.0 + EXIT_PAD : 1.0 - EXIT_PAD;
+    t1 *= 1.0 + copysign(EXIT_PAD, t1);   /* 1 + pad for t1 >= 0, 1 - pad below: no branch */
     if (t0 > *tn)
         *tn = t0;
     if (t1 < *tf)
@@ -63,7 +63,7 @@ static void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf
 
 /* Whether the ray meets the node's box within [tmin, tmax]; *enter is the
  * entry distance. */
-static int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
+static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
 {
     real tn = tmin, tf = tmax;
     slab(nd->lo.x, nd->hi.x, s->o.x, s->inv.x, s->neg[0], &tn, &tf);
@@ -255,16 +255,30 @@ int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_part(const scene_prim *prims, bvh_ref ref, const ray *r,
-                      int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+/* One walk over every crossing: either each crossing (fn) or each part's
+ * number of crossings (count_fn). */
+typedef struct walk {
+    const scene_prim *prims;
+    const ray *r;
+    int (*fn)(void *ctx, const hit *h);
+    int (*count_fn)(void *ctx, bvh_ref ref, int crossings);
+    void *ctx;
+    bvh_stats *stats;
+} walk;
+
+static int visit_part(const walk *w, bvh_ref ref)
 {
     hit out[ISECT_MAX_CROSSINGS];
-    if (stats)
-        stats->prims_tested++;
-    int n = isect_part_all(&prims[ref.prim], ref.part, r, out);
+    if (w->stats)
+        w->stats->prims_tested++;
+    if (w->count_fn) {
+        int n = isect_part_crossings(&w->prims[ref.prim], ref.part, w->r);
+        return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
+    }
+    int n = isect_part_all(&w->prims[ref.prim], ref.part, w->r, out);
     for (int i = 0; i < n; i++) {
         out[i].prim = ref.prim;
-        int stop = fn(ctx, &out[i]);
+        int stop = w->fn(w->ctx, &out[i]);
         if (stop)
             return stop;
     }
@@ -273,18 +287,17 @@ static int visit_part(const scene_prim *prims, bvh_ref ref, const ray *r,
 
 /* Depth-first over every node the ray meets; the stack holds at most one
  * pending sibling per level plus the node being expanded. */
-static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
-                        int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+static int traverse_all(const bvh *b, const walk *w)
 {
     int stack[BVH_MAX_DEPTH + 1], sp = 0;
-    slab_ray s = slab_make(r);
+    slab_ray s = slab_make(w->r);
     stack[sp++] = 0;
     while (sp > 0) {
         const bvh_node *nd = &b->nodes[stack[--sp]];
         real enter;
-        if (stats)
-            stats->nodes_visited++;
-        if (!node_hit(nd, &s, r->tmin, r->tmax, &enter) && !b->exhaustive)
+        if (w->stats)
+            w->stats->nodes_visited++;
+        if (!node_hit(nd, &s, w->r->tmin, w->r->tmax, &enter) && !b->exhaustive)
             continue;
         if (nd->count == 0) {
             assert(sp + 2 <= BVH_MAX_DEPTH + 1);
@@ -293,7 +306,7 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
             continue;
         }
         for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_part(prims, b->items[i], r, fn, ctx, stats);
+            int stop = visit_part(w, b->items[i]);
             if (stop)
                 return stop;
         }
@@ -301,19 +314,32 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
     return 0;
 }
 
-int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
-                    int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+static int walk_all(const bvh *b, const walk *w)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        int stop = visit_part(prims, b->unbounded[i], r, fn, ctx, stats);
+        int stop = visit_part(w, b->unbounded[i]);
         if (stop)
             return stop;
     }
-    return b->node_count > 0 ? traverse_all(b, prims, r, fn, ctx, stats) : 0;
+    return b->node_count > 0 ? traverse_all(b, w) : 0;
+}
+
+int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
+                    int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+{
+    walk w = {prims, r, fn, NULL, ctx, stats};
+    return walk_all(b, &w);
 }
 
 int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx)
 {
     return bvh_visit_stats(b, prims, r, fn, ctx, NULL);
+}
+
+int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
+                     int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
+{
+    walk w = {prims, r, NULL, fn, ctx, stats};
+    return walk_all(b, &w);
 }

@@ -97,5 +97,11 @@ int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx);
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats);
+/* The same walk for callers that need only which part is crossed and how
+ * often (shadow rays): fn(ctx, ref, n) once for each part with n >= 1
+ * crossings (isect_part_crossings), in the order bvh_visit reports them,
+ * with no hit point or normal computed. */
+int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
+                     int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats);
 
 #endif

@@ -51,13 +51,6 @@ static real max_abs(vec3 v)
     return m > z ? m : z;
 }
 
-/* |v|: sqrt of the dot product when that neither overflowed nor lost
- * precision to underflow, else vec_length's scaled form. */
-static real length_fast(vec3 v)
-{
-    real d = vec_dot(v, v);
-    return d >= REAL_MIN && d <= REAL_MAX ? sqrt(d) : vec_length(v);
-}
 
 /*
  * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
@@ -80,7 +73,14 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     if (!(a > 0.0))
         return 0;
     real b = vec_dot(f, d);
-    real ll = length_fast(vec_madd(f, d, -b / a));
+    vec3 l = vec_madd(f, d, -b / a);
+    /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
+     * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
+     * after its rounding, so the test below would fail too. */
+    real rr = radius * radius, l2 = vec_dot(l, l);
+    if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
+        return 0;
+    real ll = vec_length_fast(l);
     /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
      * underflows to -0 for a sphere below about 1e-154 and would pass for a
      * graze.  The square root is taken factor by factor for the same reason. */
@@ -91,7 +91,7 @@ static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
         t[0] = -b / a;
         return 1;
     }
-    real lf = length_fast(f);
+    real lf = vec_length_fast(f);
     real c = (lf - radius) * (lf + radius);
     real q = -(b + copysign(root, b));
     real t0 = c / q, t1 = q / a;
@@ -137,7 +137,9 @@ static int sphere_root_possible(const ray *r, real t)
     return t + slack > r->tmin && t - slack < r->tmax;
 }
 
-static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max)
+/* bare: only each hit's t (and a mesh triangle's part) is written: a
+ * shadow ray needs no more; the same for every shape below. */
+static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max, int bare)
 {
     vec3 f = vec_sub(r->origin, center);
     real t[2];
@@ -157,7 +159,10 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
         }
         if (!in_interval(r, ti))
             continue;
-        hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
+        if (bare)
+            out[found++].t = ti;
+        else
+            hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
     }
     return found;
 }
@@ -167,23 +172,30 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
  * The point is projected back onto the plane, so its error is relative to
  * |p| and |p0|, not to the ray origin (a camera far away).
  */
-static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
+static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
         return 0;
     *t = vec_dot(n, vec_sub(p0, r->origin)) / dn;
-    if (!in_interval(r, *t))
+    return in_interval(r, *t);
+}
+
+static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
+{
+    if (!plane_t(p0, n, r, t))
         return 0;
     vec3 x = ray_at(r, *t);
     *p = vec_madd(x, n, -vec_dot(n, vec_sub(x, p0)) / vec_dot(n, n));
     return 1;
 }
 
-static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out)
+static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out, int bare)
 {
     real t;
     vec3 p;
+    if (bare)
+        return plane_t(p0, n, r, &out->t);
     if (!plane_point(p0, n, r, &t, &p))
         return 0;
     hit_set(out, t, p, vec_normalize(n), r->dir);
@@ -238,6 +250,12 @@ static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
             tt[1] = t1;
             axis[1] = k;
         }
+        /* The entry only grows and the exit only falls from here on: once
+         * they cross, or the exit is at or before tmin, or the entry at or
+         * past tmax, no crossing can be accepted; the other axes' divisions
+         * are saved. */
+        if (tt[0] > tt[1] || tt[1] <= r->tmin || tt[0] >= r->tmax)
+            return 0;
     }
     return axis[0] >= 0 && tt[0] <= tt[1];
 }
@@ -252,7 +270,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit
     hit_set(h, t, p, n, r->dir);
 }
 
-static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max)
+static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
 {
     real tt[2];
     int axis[2], found = 0;
@@ -260,7 +278,11 @@ static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max)
         return 0;
     int crossings = tt[0] == tt[1] ? 1 : 2;
     for (int i = 0; i < crossings && found < max; i++)
-        if (in_interval(r, tt[i]))
+        if (!in_interval(r, tt[i]))
+            continue;
+        else if (bare)
+            out[found++].t = tt[i];
+        else
             box_face_hit(lo, hi, r, tt[i], axis[i], i, &out[found++]);
     return found;
 }
@@ -390,11 +412,15 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
     return 1;
 }
 
-static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, const ray *r, hit *out)
+static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, const ray *r, hit *out, int bare)
 {
     tri_bary s;
     if (!triangle_solve(v, inclusive, r, &s) || !in_interval(r, s.t))
         return 0;
+    if (bare) {
+        out->t = s.t;
+        return 1;
+    }
     /* The barycentric point lies in the triangle's plane to rounding of the
      * vertices, which o + t d (error relative to the origin) does not. */
     vec3 p = vec_scale(v[0], s.b[0]);
@@ -438,11 +464,11 @@ static int open_edges(const scene_trimesh *m, int k)
     return (open >> 1 & 1) | (open >> 2 & 1) << 1 | (open & 1) << 2;
 }
 
-static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *out)
+static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *out, int bare)
 {
     vec3 v[3], n[3];
     const vec3 *normals = mesh_corners(m, k, v, n);
-    if (!triangle_hits(v, normals, open_edges(m, k), r, out))
+    if (!triangle_hits(v, normals, open_edges(m, k), r, out, bare))
         return 0;
     out->part = k;
     return 1;
@@ -451,12 +477,12 @@ static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *
 /* The nearest crossings of a whole mesh by testing every triangle: for
  * callers without a BVH (tests, one-off queries).  Ties go to the lower
  * triangle index.  Writes up to max in increasing t. */
-static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max)
+static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max, int bare)
 {
     int found = 0;
     for (int k = 0; k < m->tri_count; k++) {
         hit h;
-        if (!mesh_triangle_hits(m, k, r, &h))
+        if (!mesh_triangle_hits(m, k, r, &h, bare))
             continue;
         int at = found;
         while (at > 0 && h.t < out[at - 1].t)
@@ -471,19 +497,19 @@ static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max)
     return found;
 }
 
-static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
+static int local_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
-        return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, max);
+        return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, max, bare);
     case PRIM_PLANE:
-        return plane_hits(p->u.plane.point, p->u.plane.normal, r, out);
+        return plane_hits(p->u.plane.point, p->u.plane.normal, r, out, bare);
     case PRIM_TRIANGLE:
-        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, out);
+        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, out, bare);
     case PRIM_DISK:
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
-        return box_hits(p->u.box.lo, p->u.box.hi, r, out, max);
+        return box_hits(p->u.box.lo, p->u.box.hi, r, out, max, bare);
     case PRIM_CYLINDER:
         return isect_cylinder_hits(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.open,
                                    r, out, max);
@@ -506,17 +532,17 @@ static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
  * entering is kept from the local frame: d . n has the same sign in both,
  * since (L^-1 d) . n_local = d . (L^-T n_local).
  */
-static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max)
+static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
 {
     if (p->kind == PRIM_MESH)
-        return mesh_hits(&p->u.mesh, r, out, max);
+        return mesh_hits(&p->u.mesh, r, out, max, bare);
     if (!p->has_xform)
-        return local_hits(p, r, out, max);
+        return local_hits(p, r, out, max, bare);
     ray local = *r;
     local.origin = xform_point(&p->to_local, r->origin);
     local.dir = xform_vector(&p->to_local, r->dir);
-    int n = local_hits(p, &local, out, max);
-    for (int i = 0; i < n; i++) {
+    int n = local_hits(p, &local, out, max, bare);
+    for (int i = 0; i < n && !bare; i++) {
         out[i].point = xform_point(&p->to_world, out[i].point);
         out[i].normal = vec_normalize(xform_normal(&p->to_local, out[i].normal));
         out[i].shading_normal = vec_normalize(xform_normal(&p->to_local, out[i].shading_normal));
@@ -526,7 +552,7 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max)
 
 int isect_prim(const scene_prim *p, ray *r, hit *h)
 {
-    if (!prim_hits(p, r, h, 1))
+    if (!prim_hits(p, r, h, 1, 0))
         return 0;
     r->tmax = h->t;
     return 1;
@@ -534,7 +560,7 @@ int isect_prim(const scene_prim *p, ray *r, hit *h)
 
 int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return prim_hits(p, r, out, ISECT_MAX_CROSSINGS);
+    return prim_hits(p, r, out, ISECT_MAX_CROSSINGS, 0);
 }
 
 int isect_part_count(const scene_prim *p)
@@ -542,18 +568,18 @@ int isect_part_count(const scene_prim *p)
     return p->kind == PRIM_MESH ? p->u.mesh.tri_count : 1;
 }
 
-static int part_hits(const scene_prim *p, int part, const ray *r, hit *out, int max)
+static int part_hits(const scene_prim *p, int part, const ray *r, hit *out, int max, int bare)
 {
     if (p->kind == PRIM_MESH)
-        return mesh_triangle_hits(&p->u.mesh, part, r, out);
+        return mesh_triangle_hits(&p->u.mesh, part, r, out, bare);
     if (!p->has_xform)
-        return local_hits(p, r, out, max);
-    return prim_hits(p, r, out, max);
+        return local_hits(p, r, out, max, bare);
+    return prim_hits(p, r, out, max, bare);
 }
 
 int isect_part(const scene_prim *p, int part, ray *r, hit *h)
 {
-    if (!part_hits(p, part, r, h, 1))
+    if (!part_hits(p, part, r, h, 1, 0))
         return 0;
     r->tmax = h->t;
     return 1;
@@ -561,7 +587,13 @@ int isect_part(const scene_prim *p, int part, ray *r, hit *h)
 
 int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS);
+    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS, 0);
+}
+
+int isect_part_crossings(const scene_prim *p, int part, const ray *r)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS, 1);
 }
 
 static int nearest(int found, ray *r, const hit *h)
@@ -573,17 +605,17 @@ static int nearest(int found, ray *r, const hit *h)
 
 int isect_sphere(vec3 center, real radius, ray *r, hit *h)
 {
-    return nearest(sphere_hits(center, radius, r, h, 1), r, h);
+    return nearest(sphere_hits(center, radius, r, h, 1, 0), r, h);
 }
 
 int isect_plane(vec3 point, vec3 normal, ray *r, hit *h)
 {
-    return nearest(plane_hits(point, normal, r, h), r, h);
+    return nearest(plane_hits(point, normal, r, h, 0), r, h);
 }
 
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h)
 {
-    return nearest(triangle_hits(p, normals, 7, r, h), r, h);
+    return nearest(triangle_hits(p, normals, 7, r, h, 0), r, h);
 }
 
 int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)
@@ -593,7 +625,7 @@ int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)
 
 int isect_box(vec3 lo, vec3 hi, ray *r, hit *h)
 {
-    return nearest(box_hits(lo, hi, r, h, 1), r, h);
+    return nearest(box_hits(lo, hi, r, h, 1, 0), r, h);
 }
 
 int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h)
@@ -832,10 +864,9 @@ static real shadow_tmin(real offset, vec3 dir)
     return len > 0 ? offset / len : 0;
 }
 
-static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
+static ray spawn_by(vec3 point, vec3 normal, vec3 dir, real offset, int shadow)
 {
     ray r;
-    real offset = spawn_offset(point, magnitude);
     r.origin = spawn_origin(point, normal, dir, offset);
     r.dir = dir;
     r.tmin = shadow ? shadow_tmin(offset, dir) : 0;
@@ -843,17 +874,26 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
     return r;
 }
 
-static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
+static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
+{
+    return spawn_by(point, normal, dir, spawn_offset(point, magnitude), shadow);
+}
+
+static ray spawn_to_by(vec3 point, vec3 normal, vec3 target, real offset)
 {
     ray r;
-    real offset = spawn_offset(point, magnitude);
     r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
     vec3 to = vec_sub(target, r.origin);
-    real dist = vec_length(to);
+    real dist = vec_length_fast(to);
     r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
     r.tmin = offset;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);
     return r;
+}
+
+static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
+{
+    return spawn_to_by(point, normal, target, spawn_offset(point, magnitude));
 }
 
 ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir)
@@ -945,4 +985,23 @@ int isect_smooth(const scene_prim *p)
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
     return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
+}
+
+shadow_start ray_shadow_start(const scene_prim *p, const hit *h)
+{
+    shadow_start st;
+    st.point = h->point;
+    st.normal = h->normal;
+    st.offset = spawn_offset(h->point, isect_part_magnitude(p, h->part));
+    return st;
+}
+
+ray ray_shadow_to(const shadow_start *st, vec3 target)
+{
+    return spawn_to_by(st->point, st->normal, target, st->offset);
+}
+
+ray ray_shadow_along(const shadow_start *st, vec3 dir)
+{
+    return spawn_by(st->point, st->normal, dir, st->offset, 1);
 }

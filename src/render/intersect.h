@@ -104,6 +104,9 @@ int isect_part(const scene_prim *p, int part, ray *r, hit *h);
 int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
 real isect_part_magnitude(const scene_prim *p, int part);
+/* How many crossings isect_part_all reports, found by the same arithmetic
+ * without their points and normals (a shadow ray needs only the count). */
+int isect_part_crossings(const scene_prim *p, int part, const ray *r);
 
 /* Where shadow rays from a hit should start: for a triangle with vertex
  * normals the hit point lifted toward the curved surface those normals
@@ -154,5 +157,19 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir);
  * HUGE_VAL). */
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target);
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir);
+
+/* The shadow rays of one shaded point share their start: the hit point
+ * (h->point, or the lifted point of isect_shadow_point in a copy of the
+ * hit), its geometric normal and the offset of ray_spawn_hit_to, computed
+ * once (the magnitude is not cheap for a transformed primitive).
+ * ray_shadow_to and ray_shadow_along give exactly the rays of
+ * ray_spawn_hit_to and ray_spawn_hit_shadow. */
+typedef struct shadow_start {
+    vec3 point, normal;
+    real offset;
+} shadow_start;
+shadow_start ray_shadow_start(const scene_prim *p, const hit *h);
+ray ray_shadow_to(const shadow_start *st, vec3 target);
+ray ray_shadow_along(const shadow_start *st, vec3 dir);
 
 #endif

@@ -30,6 +30,7 @@ typedef struct surface {
     const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
+    shadow_start from; /* where its shadow rays start */
 } surface;
 
 int trace_solid_id(const scene_model *s, int prim)
@@ -130,25 +131,53 @@ typedef struct shadow_walk {
     const scene_model *scene;
     real carried;
     int walk_on;     /* no stop at 0: the shortcuts-off mode */
+    bvh_ref opaque;  /* the opaque part the walk stopped at (prim -1: none) */
 } shadow_walk;
 
 /* Slide 47: every surface on the way lets through its t (opaque: 0).
  * [SHADE-SHORTCUT-STOP-1] Once 0 is carried the product stays 0, so the
  * walk stops there. */
-static int shadow_crossing(void *ctx, const hit *h)
+static int shadow_crossing(void *ctx, bvh_ref ref, int crossings)
 {
     shadow_walk *w = ctx;
-    const scene_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
-    w->carried = shade_shadow_transmission(w->carried, m->t);
+    const scene_material *m = &w->scene->materials[w->scene->prims[ref.prim].material];
+    for (int i = 0; i < crossings; i++) {
+        w->carried = shade_shadow_transmission(w->carried, m->t);
+        if (w->carried == 0 && !w->walk_on)
+            break;
+    }
+    if (m->t == 0)
+        w->opaque = ref;
     return w->carried == 0 && !w->walk_on;
 }
 
-/* The fraction of a light that reaches the surface along r. */
-static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
+/*
+ * The fraction of light `light` that reaches the surface along r.
+ * [SHADE-SHORTCUT-BLOCKER-1] Neighbouring shadow rays toward one light
+ * (the samples of an area light from one point, the rays of the next
+ * pixel) are mostly stopped by the same opaque surface, so the one that
+ * stopped the last is tested first: when r crosses it (the walk's own
+ * test, on the same interval) the walk would report that crossing too and
+ * carry 0 whatever else it met, so 0 is the answer without the walk.  Off
+ * in the shortcuts-off mode.
+ */
+static real shadow_transmission(const tracer *t, const ray *r, int light, trace_stats *st)
 {
-    shadow_walk w = {t->scene, 1.0, t->no_shortcuts};
+    shadow_walk w = {t->scene, 1.0, t->no_shortcuts, {-1, 0}};
+    bvh_ref *slot = &st->blocker[light % TRACE_BLOCKERS];
+    int hint = slot->prim - 1;
     st->shadow_rays++;
-    bvh_visit_stats(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    if (hint >= 0 && hint < t->scene->prim_count && slot->part >= 0 &&
+        slot->part < isect_part_count(&t->scene->prims[hint]) && !t->no_shortcuts) {
+        st->bvh.prims_tested++;
+        if (isect_part_crossings(&t->scene->prims[hint], slot->part, r) > 0)
+            return 0;
+    }
+    bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    if (w.carried == 0 && w.opaque.prim >= 0) {
+        slot->prim = w.opaque.prim + 1;
+        slot->part = w.opaque.part;
+    }
     return w.carried;
 }
 
@@ -168,7 +197,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         l = vec_neg(light->direction);
     } else {
         vec3 to = vec_sub(pos, s->h->point);
-        d = vec_length(to);
+        d = vec_length_fast(to);
         if (!(d > 0)) {
             st->lights_on_surface++;
             return;
@@ -182,9 +211,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->shadow_from, l)
-                                             : ray_spawn_hit_to(s->prim, s->shadow_from, pos);
-        real through = shadow_transmission(t, &r, st);
+        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
+        real through = shadow_transmission(t, &r, (int)(light - t->scene->lights), st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -448,6 +476,8 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
+    if (t->shadows)
+        s.from = ray_shadow_start(s.prim, s.shadow_from);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */

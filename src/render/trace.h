@@ -17,6 +17,8 @@
 #include "render/ray.h"
 #include "scene/scene.h"
 
+enum { TRACE_BLOCKERS = 8 };
+
 typedef struct trace_stats {
     long camera_rays;
     long shadow_rays;
@@ -40,6 +42,11 @@ typedef struct trace_stats {
      * it); the image never depends on it. */
     uint64_t path;
     bvh_stats bvh;
+    /* Per light (its index mod TRACE_BLOCKERS): the opaque part that
+     * stopped its last shadow ray, prim 1 + its index (0: none).  A hint
+     * the next shadow ray toward that light tests first (spec/shading.md
+     * [SHADE-SHORTCUT-BLOCKER-1]); no image depends on it. */
+    bvh_ref blocker[TRACE_BLOCKERS];
 } trace_stats;
 
 /* Per-light data computed once: the stratification and a disk's frame. */

@@ -9,7 +9,9 @@
 #define REFRAY_DIFFTEST_DT_H
 
 #include <stdio.h>
+#include <sys/types.h>
 #include "export/export_pov.h"
+#include "image/image.h"
 #include "gen.h"
 
 typedef struct dt_config {
@@ -54,6 +56,27 @@ typedef struct dt_result {
  * verdict.
  */
 dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_result *r);
+
+/* Starts argv[0] (found on PATH) with argv in dir (NULL: here), its output
+ * and errors going to the file log (relative to dir); returns the child's
+ * pid, or -1 when fork failed.  The child exits 126 when dir is not there,
+ * 127 when the program cannot run. */
+pid_t dt_spawn(char *const argv[], const char *dir, const char *log);
+
+/* The export's scale for s: the power of two that puts the peak of what
+ * POV-Ray will write (ours, or its sub-samples for a k x k grid) in
+ * (0.4, 0.8] ([XCHK-RUN-SCALE-1]). */
+double dt_scale(const scene_model *s, const img_buf *ours);
+
+/* POV-Ray's picture c->work_dir/name.png, k x k blocks averaged, divided
+ * by scale, into out (the scene's size).  Returns 0, or -1 with the
+ * reason in r. */
+int dt_read_pov(const dt_config *c, const char *name, int k, double scale, img_buf *out, dt_result *r);
+
+/* Compares ours with pov pixel by pixel (r->scale set) and sorts the
+ * disagreeing pixels into edge and interior ones as dt_run says; sets
+ * r->verdict. */
+void dt_compare(const dt_config *c, const scene_model *s, const img_buf *ours, const img_buf *pov, dt_result *r);
 
 /*
  * Delta debugging over the statements of g (image and camera always

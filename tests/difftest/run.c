@@ -76,6 +76,28 @@ static double sample_peak(const scene_model *s, const img_buf *ours)
     return peak;
 }
 
+double dt_scale(const scene_model *s, const img_buf *ours)
+{
+    return scale_for(sample_peak(s, ours));
+}
+
+pid_t dt_spawn(char *const argv[], const char *dir, const char *log)
+{
+    pid_t pid = fork();
+    if (pid != 0)
+        return pid;
+    if (dir && chdir(dir) != 0)
+        _exit(126);
+    int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+        dup2(fd, 1);
+        dup2(fd, 2);
+        close(fd);
+    }
+    execvp(argv[0], argv);
+    _exit(127);
+}
+
 /* Runs POV-Ray on name.pov inside the work directory (Debian's povray.conf
  * lets it read and write only there and in /tmp), output name.png, log
  * name.log.  Returns 0 when it exited 0 within the timeout. */
@@ -87,22 +109,11 @@ static int run_povray(const dt_config *c, const char *name, int width, int heigh
     snprintf(log, sizeof log, "%s.log", name);
     snprintf(w, sizeof w, "+W%d", width);
     snprintf(h, sizeof h, "+H%d", height);
-    pid_t pid = fork();
+    const char *args[] = {c->povray, in, out, w, h, "-A", "-D", "-V", "+WT1", "+FN16", "File_Gamma=1.0",
+                          "Output_Alpha=off", NULL};
+    pid_t pid = dt_spawn((char *const *)args, c->work_dir, log);
     if (pid < 0)
         return -1;
-    if (pid == 0) {
-        if (chdir(c->work_dir) != 0)
-            _exit(126);
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            dup2(fd, 1);
-            dup2(fd, 2);
-            close(fd);
-        }
-        execlp(c->povray, c->povray, in, out, w, h, "-A", "-D", "-V", "+WT1", "+FN16", "File_Gamma=1.0",
-               "Output_Alpha=off", (char *)NULL);
-        _exit(127);
-    }
     struct timespec nap = {0, 20000000};
     for (long waited = 0;; waited += 20) {
         int status;
@@ -120,9 +131,7 @@ static int run_povray(const dt_config *c, const char *name, int width, int heigh
     }
 }
 
-/* POV-Ray's picture, k x k blocks averaged, divided by scale, into out
- * (the scene's size).  Returns 0, or -1 with the reason in r. */
-static int read_pov(const dt_config *c, const char *name, int k, double scale, img_buf *out, dt_result *r)
+int dt_read_pov(const dt_config *c, const char *name, int k, double scale, img_buf *out, dt_result *r)
 {
     char path[PATH_LEN], err[512];
     img_buf raw;
@@ -182,8 +191,7 @@ static int is_edge(const tracer *t, int i, int j, double radius)
     return 0;
 }
 
-/* Compares pixel by pixel and sorts the disagreeing pixels. */
-static void compare(const dt_config *c, const scene_model *s, const img_buf *ours, const img_buf *pov, dt_result *r)
+void dt_compare(const dt_config *c, const scene_model *s, const img_buf *ours, const img_buf *pov, dt_result *r)
 {
     tracer t;
     int have_tracer = tracer_init(&t, s, 0, 0);
@@ -242,9 +250,9 @@ static void against_pov(const dt_config *c, const char *name, const scene_model 
         fail(r, "POV-Ray failed or timed out (see %.250s.log)", name);
         return;
     }
-    if (read_pov(c, name, k, r->scale, &pov, r) != 0)
+    if (dt_read_pov(c, name, k, r->scale, &pov, r) != 0)
         return;
-    compare(c, s, ours, &pov, r);
+    dt_compare(c, s, ours, &pov, r);
     img_free(&pov);
 }
 
@@ -278,7 +286,7 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
     } else if (render_image(s, &ro, &ours, NULL) != STATUS_OK) {
         fail(r, "refray could not render %.250s", name);
     } else {
-        r->scale = scale_for(sample_peak(s, &ours));
+        r->scale = dt_scale(s, &ours);
         against_pov(c, name, s, &ours, r);
         img_free(&ours);
     }
