@@ -18,6 +18,41 @@
 #include "base/vec.h"
 #include "scene/scene.h"
 
+/*
+ * The formulas in the exact (real-number) arithmetic of the contracts in
+ * shade.c (spec/proofs.md); what a lemma states WP proves once.
+ */
+/*@
+  // [SHADE-FALLOFF-1, 2] with [SHADE-FALLOFF-5]'s cap at DBL_MAX; s = d + d0
+  logic mreal falloff_of(mreal e, mreal s, integer kind) =
+      kind == FALLOFF_LINEAR ? \min(e / s, DBL_MAX) : \min(\min(e / s, DBL_MAX) / s, DBL_MAX);
+
+  lemma falloff_positive:
+      \forall mreal e, s, integer kind; e > 0 && s > 0 ==> falloff_of(e, s, kind) > 0;
+  lemma falloff_nonincreasing:
+      \forall mreal e, s1, s2, integer kind; e >= 0 && 0 < s1 <= s2 ==>
+          falloff_of(e, s2, kind) <= falloff_of(e, s1, kind);
+
+  // n2^2 cos^2 th2 (Snell, [SHADE-SNELL-2]): negative exactly on total internal reflection
+  logic mreal snell_k(mreal n1, mreal n2, mreal c) = (n1 * c) * (n1 * c) - (n1 * n1 - n2 * n2);
+
+  lemma snell_k_scaled:
+      \forall mreal n1, n2, s1, s2, c; n1 > 0 && s1 > 0 && s1 * n2 == s2 * n1 ==>
+          (snell_k(s1, s2, c) < 0 <==> snell_k(n1, n2, c) < 0);
+
+  // cos th1 = -N.D, clamped to [0, 1]
+  logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));
+
+  // [SHADE-MIRROR-1]
+  predicate is_mirror(vec3 t, vec3 d, vec3 n) =
+      t.x == d.x - 2 * vdot(n, d) * n.x && t.y == d.y - 2 * vdot(n, d) * n.y && t.z == d.z - 2 * vdot(n, d) * n.z;
+
+  // [SHADE-LOCAL-1] with [SHADE-SAT-1]
+  predicate is_local(vec3 c, vec3 body, vec3 highlight, mreal t) =
+      c.x == \min(highlight.x + (1 - t) * body.x, DBL_MAX) && c.y == \min(highlight.y + (1 - t) * body.y, DBL_MAX) &&
+      c.z == \min(highlight.z + (1 - t) * body.z, DBL_MAX);
+*/
+
 /* One light's share of a hit's colour, kept in the two parts the
  * transparency blend treats differently (local = (1 - t) * body + highlight). */
 typedef struct shade_terms {
