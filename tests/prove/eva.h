@@ -16,4 +16,13 @@ static vec3 any_dir(void) { return any_vec(-4, 4); }
 static rgb any_colour(void) { return any_vec(0, DBL_MAX); }
 static rgb any_coefficient(void) { return any_vec(0, 1); }
 
+/* The largest double below hi = 2^j (a binade [2^(j-1), 2^j) ends there),
+ * and DBL_MAX itself, which ends the last one. */
+static real binade_top(real hi)
+{
+    if (hi == DBL_MAX)
+        return hi;
+    return hi > 0x1p-1022 ? hi - hi * 0x1p-53 : hi - 0x1p-1074;
+}
+
 #endif

@@ -91,3 +91,10 @@ extern double cos(double x);
     ensures \is_finite(\result) && -1 <= \result <= 1;
     ensures EXACT(\result == \sin(x)); */
 extern double sin(double x);
+
+/* pow(1, y) is 1 for every y, pow(x, y) in [0, 1] for x in [0, 1] and
+ * y >= 0 (C99 F.9.4.4; monotony of x^y). Merged with Frama-C's contract. */
+/*@ assigns errno, \result \from x, y;
+    ensures x == 1 ==> \result == 1;
+    ensures 0 <= x <= 1 && y >= 0 ==> 0 <= \result <= 1; */
+extern double pow(double x, double y);
