@@ -170,7 +170,8 @@ static inline real vec_length2(vec3 a) { return a.x * a.x + a.y * a.y + a.z * a.
     ensures DOUBLES(\max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) >= 0x1p-1072 ==>
                     \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) / 4 <= \result);
     ensures DOUBLES(\result <= 7 * \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))));
-    ensures EXACT(\result >= 0 && \result * \result == vnorm2(a)); */
+    // admitted (spec/proofs.md, "Admitted"): m sqrt(sum (a/m)^2) is |a|
+    admit ensures EXACT(\result >= 0 && \result * \result == vnorm2(a)); */
 static inline real vec_length(vec3 a)
 {
     real m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
@@ -190,7 +191,8 @@ static inline real vec_length(vec3 a)
     ensures a.x == 0 && a.y == 0 && a.z == 0 ==> \result.x == 0 && \result.y == 0 && \result.z == 0;
     ensures DOUBLES(a.x != 0 || a.y != 0 || a.z != 0 ==>
                     \max(\abs(\result.x), \max(\abs(\result.y), \abs(\result.z))) >= 0.125);
-    ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1); */
+    // admitted (spec/proofs.md, "Admitted"): |a / |a|| = 1
+    admit ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1); */
 static inline vec3 vec_normalize(vec3 a)
 {
     real len = vec_length(a);
