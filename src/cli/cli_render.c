@@ -47,6 +47,8 @@ static const char render_help[] =
     "  --samples K           K x K camera rays per pixel\n"
     "  --max-depth D         trace depth (1: camera rays only)\n"
     "  --light-samples N     N point sources for every distributed light\n"
+    "  --no-shortcuts        run every pass and ray the scene could do without\n"
+    "                        (same image to the bit, more work: a check)\n"
     "  --exposure STOPS      PNG/PPM: multiply by 2^STOPS before mapping\n"
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
@@ -182,7 +184,7 @@ static int cancel(void *ctx)
     return interrupted != 0;
 }
 
-static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
+static void print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -193,7 +195,8 @@ static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
             s->total_internal_reflection_rays, rays);
     fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", s->light_samples,
             s->light_samples_on_surface);
-    fprintf(stderr, "  passes: shadows %s, specular %s, reflection %s, refraction %s\n",
+    fprintf(stderr, "  passes%s: shadows %s, specular %s, reflection %s, refraction %s\n",
+            no_shortcuts ? " (every shortcut off)" : "",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
@@ -214,6 +217,7 @@ static rf_render_options public_opts(const render_args *a, progress_state *p)
     o.max_depth = a->render.max_depth;
     o.light_samples = a->render.light_samples;
     o.max_tree_rays = a->scene.limits.max_ray_tree;
+    o.no_shortcuts = a->render.no_shortcuts;
     o.progress = progress;
     o.cancel = cancel;
     o.user = p;
@@ -258,7 +262,7 @@ static int render_and_write(render_args *a, const rf_scene *scene)
         return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
     }
     if (a->stats)
-        print_stats(&stats, &written);
+        print_stats(&stats, &written, a->render.no_shortcuts);
     return STATUS_OK;
 }
 

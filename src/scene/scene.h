@@ -228,6 +228,21 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
 
 void scene_free(scene_model *scene);
 
+/*
+ * The same for a JSON scene (spec/json.md): root's text is one JSON
+ * document (root->identity is not used: a JSON scene includes nothing);
+ * a mesh's `file` comes from o's resolver.  jansson parses the text with
+ * its own allocator (malloc unless a program sets json_set_alloc_funcs):
+ * that tree is freed before this returns, the scene comes from o->mem.  A
+ * build without JSON support (JSON=0; scene_json_available() is 0) refuses
+ * every JSON scene with STATUS_USAGE and an error without location
+ * through o->sink.  io/scene_file.h picks the reader by the file name.
+ */
+#define SCENE_JSON_FORMAT "refray-scene"
+#define SCENE_JSON_VERSION 1
+scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status);
+int scene_json_available(void);
+
 /* Whether p is a closed solid on its own: a sphere, a box, a closed
  * cylinder or cone, a torus (mesh triangles are solid only as a mesh). */
 int scene_prim_is_solid(const scene_prim *p);
@@ -236,8 +251,9 @@ int scene_prim_is_solid(const scene_prim *p);
  * keeps one); 0 for anything that is not a solid on its own. */
 int scene_prim_contains(const scene_prim *p, vec3 point);
 
-/* Whether p can shadow itself where N.L > 0: a torus, an open cylinder or
- * cone (convex solids and flat sheets cannot). */
+/* Whether p can shadow itself where N.L > 0: all but the flat ones (plane,
+ * disk, triangle), whose shadow rays never meet them again.  A torus or an
+ * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
 
 /* The block word of a primitive kind ("sphere", ..., "torus"), and its plural. */
