@@ -13,6 +13,7 @@ survivors=0
 mutants=$(cat <<'LIST'
 shade_lambert|s/(real c = vec_dot\(n, l\);\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the N.L > 0 gate removed
 shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (0) {/|the TIR test removed
+shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (!(k > 0x1p-20)) {/|TIR also for 0 <= k <= 2^-20
 shade_phong_lobe|s/(real c = vec_dot\(v, r\), rel;\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the V.R > 0 gate removed
 shade_specular|s/if \(!\(vec_dot\(n, l\) > 0\.0\)\)/if (0)/|the N.L > 0 gate removed
 shade_falloff|s/s = d \+ d0;/s = d + d0 + 1;/|d0 counted twice
@@ -26,7 +27,7 @@ shade_critical_angle_cos|s/c = below;/c = 0.5 * below;/|steps past the critical 
 shade_transmit_blend|s/vec_scale\(front, 1\.0 - t\)/vec_scale(front, t)/|front weighted by t
 shade_local|s/saturating_sum\(highlight, vec_scale\(body, 1\.0 - t\)\)/saturating_sum(highlight, body)/|body not scaled by 1 - t
 shade_combine|s/vec_mul\(ks, mirrored\)/mirrored/|mirror term without Ks
-shade_saturate|s/return x > DBL_MAX \? DBL_MAX : x;/return x;/|no cap
+saturate1|s/return x > DBL_MAX \? DBL_MAX : x;/return x;/|no cap in shade_saturate's channel
 shade_shadow_transmission|s/return carried \* t_occluder;/return carried + t_occluder;/|sum for product
 LIST
 )
