@@ -115,18 +115,19 @@ if [ "$what" = all ] || [ "$what" = wp ]; then
         -wp-prover z3,cvc4 -wp-timeout "$timeout" -wp-par 2 ${PROVE_FCT:+-wp-fct "$PROVE_FCT"} \
         >"$out/wp.log" 2>&1
     rc=$?
-    fns=$(grep -o '^[a-z][a-z0-9_ ]* \**\(shade_[a-z_]*\|[a-z_]*\)(' "$src/render/shade.c" "$src/base/vec.h" |
-          sed 's/.*[ *]\([a-z_0-9]*\)($/\1/' | sort -u)
+    fns=$(grep -ho '^[a-z][a-z0-9_ ]* \**[a-z_][a-z0-9_]*(' "$src/render/shade.c" "$src/base/vec.h" |
+          sed 's/.*[ *]\([a-z_0-9]*\)($/\1/' | sort -u | tr '\n' ' ')
     awk -v fns="$fns" '
-        BEGIN { split(fns, list, "\n") }
+        BEGIN { split(fns, list, " ") }
         /^\[wp\] \[[^]]*\] Goal / {
-            g = $4; sub(/^typed_real_/, "", g); best = ""
+            match($0, /Goal [^ ]+/); name = substr($0, RSTART + 5, RLENGTH - 5)
+            g = name; sub(/^typed_real_/, "", g); best = ""
             if (g ~ /^lemma_/) best = "(lemmas)"
             else for (i in list) if (index(g, list[i] "_") == 1 && length(list[i]) > length(best)) best = list[i]
             if (best == "") best = "(other)"
             total[best]++
             if ($0 ~ / : Valid/) ok[best]++
-            else { failed = failed "    unproved: " $4 "\n" }
+            else { failed = failed "    unproved: " name "\n" }
         }
         END {
             for (f in total) printf "  wp  %-30s goals %3d/%-3d\n", f, ok[f], total[f]
