@@ -11,14 +11,15 @@
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
 # Environment: PROVE_OUT (logs, default build/prove), PROVE_TIMEOUT (seconds
-# a prover gets per goal, default 10), PROVE_SRC (the source tree, default
+# a prover gets per goal, default 30: the slowest goal takes 0.5 s alone,
+# but a loaded machine stretches wall-clock limits), PROVE_SRC (the source tree, default
 # src: tests/prove/mutants.sh points it at a mutated copy), PROVE_FCT (WP
 # only these functions, comma-separated).
 set -u
 cd "$(dirname "$0")/../.."
 out=${PROVE_OUT:-build/prove}
 src=${PROVE_SRC:-src}
-timeout=${PROVE_TIMEOUT:-10}
+timeout=${PROVE_TIMEOUT:-30}
 what=${1:-all}
 mkdir -p "$out"
 
