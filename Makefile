@@ -591,6 +591,30 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(SOLO_TESTS) > $(GEN)/solo_suites.h
 	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
 
+# make prove: Frama-C's Eva and WP on the contracts of the shading formulas
+# (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: each of a set
+# of deliberate bugs makes a goal fail.  They install what they need.
+PROVE_DEBS := frama-c-base why3 z3 cvc4
+.PHONY: prove prove-mutants prove-quick prove-deps
+prove-deps:
+	$(Q)missing=""; for p in $(PROVE_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
+	  grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "prove: installing$$missing"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
+
+prove: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh
+
+prove-mutants: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
+
+# What CI runs (seconds): Eva on the shading formulas, four helpers taken by
+# their contracts; make prove checks those too, and runs WP.
+prove-quick: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh quick
+
 .PHONY: FORCE
 FORCE:
 
