@@ -80,6 +80,12 @@ typedef enum rf_status {
     RF_ERR_CHECK         /* a check did not pass (not returned by this API) */
 } rf_status;
 
+/* A NULL where this reference does not say one is allowed (an out pointer,
+ * a scene name, its text with a size > 0, a path, a scene, a renderer, an
+ * image, a stream) returns RF_ERR_USAGE, with an out pointer set to NULL;
+ * rf_scene_get_info of NULL fills zeros.  Limits above INT_MAX act as
+ * INT_MAX for the counts an int holds (width, height, samples, depth). */
+
 /* A short lower-case description of status ("out of memory"). */
 RF_API const char *rf_status_string(rf_status status);
 

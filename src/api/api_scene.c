@@ -95,6 +95,11 @@ rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, 
 {
     scene_load_opts lo;
     int status;
+    if (!out)
+        return RF_ERR_USAGE;
+    *out = NULL;
+    if (!name || (!text && size > 0))
+        return RF_ERR_USAGE;
     load_opts(o, &lo);
     scene_source root = {name, NULL, text, size};
     *out = (rf_scene *)(void *)scene_file_load_source(&root, &lo, &status);
@@ -105,6 +110,11 @@ rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scen
 {
     scene_load_opts lo;
     int status;
+    if (!out)
+        return RF_ERR_USAGE;
+    *out = NULL;
+    if (!path)
+        return RF_ERR_USAGE;
     load_opts(o, &lo);
     *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
     return api_status(status);
@@ -130,7 +140,11 @@ void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
     const scene_model *s = api_scene(scene);
     int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes, &info->triangles, &info->disks,
                               &info->boxes,   &info->cylinders, &info->cones, &info->tori};
+    if (!info)
+        return;
     memset(info, 0, sizeof *info);
+    if (!s)
+        return;
     info->width = s->image.width;
     info->height = s->image.height;
     info->samples = s->image.samples;
