@@ -164,7 +164,9 @@ typedef struct rf_source {
  * becomes an error at the statement (RF_ERR_NO_MEMORY ends the load as out
  * of memory).  After RF_OK the library copies what it needs, then calls
  * release (when not NULL) with the same *out; after a failure it calls
- * nothing.  Enforce your own size limits in fetch.
+ * nothing.  Enforce your own size limits in fetch.  RF_OK with a NULL
+ * text and a size > 0 is an error at the statement, as is a failure
+ * whose message is empty (the message then names the status).
  */
 typedef struct rf_resolver {
     rf_status (*fetch)(void *user, const char *from, const char *name, rf_source *out, char *message,

@@ -336,6 +336,39 @@ static void collecting_options(rf_load_options *o, collected *c, const char *con
     o->resolver.user = (void *)files;
 }
 
+/* A resolver that breaks its contract: RF_OK with a size but no text
+ * (mode 0), or a failure with no reason (mode 1). */
+static rf_status broken_fetch(void *user, const char *from, const char *name, rf_source *out, char *message,
+                              size_t size)
+{
+    (void)from, (void)name, (void)message, (void)size;
+    out->size = 100;
+    return *(const int *)user == 0 ? RF_OK : RF_ERR_CANCELLED;
+}
+
+/* [EMBED-API-NULL-1] The first crashed in the copy of the text; the second
+ * gave the error an empty message. */
+START_TEST(test_api_broken_resolver)
+{
+    static const char text[] = "image { width 4 height 3 }\n"
+                               "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                               "include \"x.scene\"\n";
+    static const char *const want[] = {"cannot read 'x.scene': the resolver gave 100 bytes of no text",
+                                       "cannot read 'x.scene': cancelled"};
+    for (int mode = 0; mode < 2; mode++) {
+        rf_load_options o;
+        collected c;
+        rf_scene *s = NULL;
+        collecting_options(&o, &c, NULL);
+        o.resolver.fetch = broken_fetch;
+        o.resolver.user = &mode;
+        ck_assert_int_eq(rf_scene_load_memory("b.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
+        ck_assert_int_ge(c.count, 1);
+        ck_assert_msg(strstr(c.text[0], want[mode]) != NULL, "mode %d: %s", mode, c.text[0]);
+    }
+}
+END_TEST
+
 /* [EMBED-API-4] Diagnostics come as records with file, line, column,
  * severity, message and the source line; an error in an included file is
  * followed by the note "included from here"; the resolver's reason for a
@@ -661,6 +694,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_null_arguments);
+    tcase_add_test(tc, test_api_broken_resolver);
     tcase_add_test(tc, test_api_no_shortcuts);
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);

@@ -55,6 +55,15 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
     rf_source src;
     memset(&src, 0, sizeof src);
     rf_status status = r->fetch(r->user, from, name, &src, why, why_size);
+    if (status == RF_OK && !src.text && src.size > 0) {
+        /* Text that is not there: refused here, before it is copied. */
+        if (r->release)
+            r->release(r->user, &src);
+        snprintf(why, why_size, "cannot read '%s': the resolver gave %zu bytes of no text", name, src.size);
+        return STATUS_DATA;
+    }
+    if (status != RF_OK && why_size > 0 && why[0] == '\0')
+        snprintf(why, why_size, "cannot read '%s': %s", name, rf_status_string(status));
     out->path = src.path;
     out->identity = src.identity;
     out->text = src.text;
