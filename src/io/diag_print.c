@@ -50,13 +50,26 @@ static void print_excerpt(FILE *out, const diag_record *r)
     fputc('\n', out);
 }
 
+/* A message or a path quotes what the input holds (a JSON key decoded from
+ * "\u001b" or "\n", a file name): shown the same way, so a diagnostic stays
+ * one line and cannot drive the terminal. */
+static void put_shown(FILE *out, const char *s)
+{
+    for (; *s; s++)
+        fputc(shown_byte((unsigned char)*s), out);
+}
+
 void diag_print(void *stream, const diag_record *r)
 {
     FILE *out = stream;
-    if (r->path)
-        fprintf(out, "%s:%d:%d: %s: %s\n", r->path, r->line, r->column, level_name(r->level), r->message);
-    else
-        fprintf(out, "refray: %s: %s\n", level_name(r->level), r->message);
+    if (r->path) {
+        put_shown(out, r->path);
+        fprintf(out, ":%d:%d: %s: ", r->line, r->column, level_name(r->level));
+    } else {
+        fprintf(out, "refray: %s: ", level_name(r->level));
+    }
+    put_shown(out, r->message);
+    fputc('\n', out);
     if (r->path && r->source_line)
         print_excerpt(out, r);
 }
