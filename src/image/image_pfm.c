@@ -94,6 +94,25 @@ static int read_size(FILE *fp, int *w, int *h, char *err, size_t errlen)
     return STATUS_OK;
 }
 
+/* The raster's bytes, rows x bytes_per_row, fit in what the file holds
+ * after the header: a header of 16384 x 16384 on a 1 KB file must not
+ * allocate gigabytes before the first row comes up short.  A stream that
+ * cannot seek (a pipe) is read as it comes. */
+static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, char *err, size_t errlen)
+{
+    long here = ftell(fp);
+    if (here < 0 || fseek(fp, 0, SEEK_END) != 0) {
+        clearerr(fp);
+        return STATUS_OK;
+    }
+    long end = ftell(fp);
+    if (fseek(fp, here, SEEK_SET) != 0)
+        return img_error(err, errlen, STATUS_IO, "cannot seek back in the file: %s", strerror(errno));
+    if (end >= here && (size_t)(end - here) / bytes_per_row < (size_t)rows)
+        return img_error(err, errlen, STATUS_DATA, "file is truncated (the pixel data ends early)");
+    return STATUS_OK;
+}
+
 /* ---- PFM ---- */
 
 static void put_le32(unsigned char *p, uint32_t u)
@@ -184,6 +203,8 @@ int img_pfm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
     int rc = read_size(fp, &w, &h, err, errlen);
     if (rc == STATUS_OK)
         rc = read_pfm_scale(fp, &little, err, errlen);
+    if (rc == STATUS_OK)
+        rc = raster_fits(fp, h, 4 * (size_t)nch * (size_t)w, err, errlen);
     if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
         return img_error(err, errlen, rc, "out of memory");
     unsigned char *buf = rc == STATUS_OK ? malloc(4 * (size_t)nch * (size_t)w) : NULL;
@@ -245,6 +266,8 @@ int img_ppm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
     long maxval = rc != STATUS_OK || read_token(fp, m, sizeof m) ? -1 : parse_long(m, 1, 65535);
     if (rc == STATUS_OK && maxval < 0)
         rc = img_error(err, errlen, STATUS_DATA, "bad maxval in the PPM header (1 to 65535)");
+    if (rc == STATUS_OK)
+        rc = raster_fits(fp, h, (maxval < 256 ? 3 : 6) * (size_t)w, err, errlen);
     if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
         return img_error(err, errlen, rc, "out of memory");
     unsigned char *buf = rc == STATUS_OK ? malloc(6 * (size_t)w) : NULL;
