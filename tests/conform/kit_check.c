@@ -64,9 +64,10 @@ static int read_pfm(const char *path, picture *p)
         fclose(f);
         return 0;
     }
-    /* 65536 x 65536 pixels of 12 bytes do not fit a 32-bit size_t: refuse
-     * what cannot be counted rather than allocate a wrapped-around size. */
-    if ((size_t)p->width > (size_t)-1 / (3 * sizeof *p->rgb) / (size_t)p->height) {
+    /* At most 2^28 pixels (refray's own bound): 65536 x 65536 pixels of 12
+     * bytes wrapped a 32-bit size_t into a small allocation, and asked a
+     * 64-bit host for 51 GB before the short file was noticed. */
+    if (p->width > (1L << 28) / p->height) {
         fclose(f);
         return 0;
     }
