@@ -20,9 +20,9 @@
 
 #if REFRAY_HAVE_JSON
 #include <jansson.h>
-#endif
 
 static const char kit_name[] = "refray conformance kit";
+#endif
 
 static const char *const file_keys[MANIFEST_FILE_COUNT] = {
     "scene", "json", "pov", "exact_exr", "exact_pfm", "mask_pgm", "mask_png",
