@@ -184,7 +184,24 @@ static int cancel(void *ctx)
     return interrupted != 0;
 }
 
-static void print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts)
+/* [MESH-SCALE-1] Load time, and the bytes of the mesh stores and of the
+ * BVH per mesh triangle (spec/numerics.md, "Meshes at scale"). */
+static void print_memory(const rf_scene *scene, const rf_render_stats *s, double load_seconds)
+{
+    rf_scene_info info;
+    rf_scene_get_info(scene, &info);
+    long triangles = info.mesh_triangles;
+    fprintf(stderr, "  load: %.3f s; meshes: %ld triangles in %ld bytes", load_seconds, triangles, info.mesh_bytes);
+    if (triangles > 0)
+        fprintf(stderr, " (%.1f per triangle); bvh %ld bytes (%.1f per triangle)",
+                (double)info.mesh_bytes / triangles, s->bvh_bytes, (double)s->bvh_bytes / triangles);
+    else
+        fprintf(stderr, "; bvh %ld bytes", s->bvh_bytes);
+    fputc('\n', stderr);
+}
+
+static void print_stats(const rf_scene *scene, const rf_render_stats *s, const rf_write_stats *w,
+                        double load_seconds, int no_shortcuts)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -200,6 +217,7 @@ static void print_stats(const rf_render_stats *s, const rf_write_stats *w, int n
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
+    print_memory(scene, s, load_seconds);
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
             s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, s->node_visits, s->primitive_tests);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
@@ -224,7 +242,7 @@ static rf_render_options public_opts(const render_args *a, progress_state *p)
     return o;
 }
 
-static int render_and_write(render_args *a, const rf_scene *scene)
+static int render_and_write(render_args *a, const rf_scene *scene, double load_seconds)
 {
     rf_image *img = NULL;
     rf_render_stats stats;
@@ -262,7 +280,7 @@ static int render_and_write(render_args *a, const rf_scene *scene)
         return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
     }
     if (a->stats)
-        print_stats(&stats, &written, a->render.no_shortcuts);
+        print_stats(scene, &stats, &written, load_seconds, a->render.no_shortcuts);
     return STATUS_OK;
 }
 
@@ -280,9 +298,11 @@ int cli_render(int argc, char **argv)
     /* From here on SIGINT means "stop, write nothing, exit 130", while the
      * scene loads as well as while it renders. */
     signal(SIGINT, on_interrupt);
+    double start = render_clock();
     rf_load_options lo = cli_load_options(&a.scene);
     rf_scene *scene;
     status = (int)rf_scene_load_file(a.input, &lo, &scene);
+    double load_seconds = render_clock() - start;
     if (!scene)
         return interrupted ? STATUS_CANCELLED : status;
     rf_scene_info info;
@@ -292,7 +312,7 @@ int cli_render(int argc, char **argv)
         rf_scene_free(scene);
         return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
     }
-    status = render_and_write(&a, scene);
+    status = render_and_write(&a, scene, load_seconds);
     rf_scene_free(scene);
     signal(SIGINT, SIG_DFL);
     return status;

@@ -64,7 +64,9 @@ void diag_print(void *stream, const diag_record *r)
     FILE *out = stream;
     if (r->path) {
         put_shown(out, r->path);
-        fprintf(out, ":%d:%d: %s: ", r->line, r->column, level_name(r->level));
+        if (r->line > 0)
+            fprintf(out, ":%d:%d", r->line, r->column);
+        fprintf(out, ": %s: ", level_name(r->level));
     } else {
         fprintf(out, "refray: %s: ", level_name(r->level));
     }
