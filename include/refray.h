@@ -80,6 +80,12 @@ typedef enum rf_status {
     RF_ERR_CHECK         /* a check did not pass (not returned by this API) */
 } rf_status;
 
+/* A NULL where this reference does not say one is allowed (an out pointer,
+ * a scene name, its text with a size > 0, a path, a scene, a renderer, an
+ * image, a stream) returns RF_ERR_USAGE, with an out pointer set to NULL;
+ * rf_scene_get_info of NULL fills zeros.  Limits above INT_MAX act as
+ * INT_MAX for the counts an int holds (width, height, samples, depth). */
+
 /* A short lower-case description of status ("out of memory"). */
 RF_API const char *rf_status_string(rf_status status);
 
@@ -164,7 +170,9 @@ typedef struct rf_source {
  * release (when not NULL) with the same *out; a mesh file's text is read
  * where it is, without a copy, and released once its mesh is built (before
  * the load returns).  After a failure it calls nothing.  Enforce your own
- * size limits in fetch.
+ * size limits in fetch.  RF_OK with a NULL text and a size > 0 is an error
+ * at the statement, as is a failure whose message is empty (the message
+ * then names the status).
  */
 typedef struct rf_resolver {
     rf_status (*fetch)(void *user, const char *from, const char *name, rf_source *out, char *message,

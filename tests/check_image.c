@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -412,6 +413,37 @@ START_TEST(test_img_read_pfm_variants)
     put_str(path, "PF\n100000 100000\n-1.0\n");
     ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "over --max-pixels 67108864") != NULL, "%s", err);
+    tmpdir_remove(&d);
+}
+END_TEST
+
+/* A header that claims more pixels than the file holds is refused before
+ * the image is allocated: 16384 x 16384 (under IMG_MAX_PIXELS) on a 1 KB
+ * file made `refray conform` allocate and clear 6.3 GB and spend 39 s of
+ * CPU before "truncated"; the same for a PPM.  The CPU time bound is what
+ * fails if the allocation comes back. */
+START_TEST(test_img_read_short_raster_allocates_nothing)
+{
+    tmpdir d;
+    char path[256], err[256];
+    static const char *const headers[] = {"PF\n16384 16384\n-1.0\n", "P6\n16384 16384\n65535\n"};
+    tmpdir_make(&d);
+    for (int i = 0; i < 2; i++) {
+        img_buf img;
+        in_dir(path, sizeof path, &d, i ? "big.ppm" : "big.pfm");
+        FILE *f = fopen(path, "wb");
+        ck_assert_ptr_nonnull(f);
+        fputs(headers[i], f);
+        for (int k = 0; k < 1000; k++)
+            fputc(0, f);
+        ck_assert_int_eq(fclose(f), 0);
+        clock_t t0 = clock();
+        ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+        ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
+        ck_assert_ptr_null(img.rgb);
+        ck_assert_msg((double)(clock() - t0) / CLOCKS_PER_SEC < 2.0, "%s: %.1f s of CPU", headers[i],
+                      (double)(clock() - t0) / CLOCKS_PER_SEC);
+    }
     tmpdir_remove(&d);
 }
 END_TEST
@@ -1052,6 +1084,7 @@ Suite *suite_image(void)
     tcase_add_test(fmt, test_img_write_read_pfm_bit_exact);
     tcase_add_test(fmt, test_img_write_pfm_counts_nonfinite_and_clamped);
     tcase_add_test(fmt, test_img_read_pfm_variants);
+    tcase_add_test(fmt, test_img_read_short_raster_allocates_nothing);
     tcase_add_test(fmt, test_img_write_ppm_bytes);
     tcase_add_test(fmt, test_img_write_read_ppm);
     tcase_add_test(fmt, test_img_read_ppm_16bit);

@@ -331,6 +331,16 @@ START_TEST(test_cli_kit_errors)
     cli_refray(r, over);
     ck_assert_int_eq(r->code, 64);
     ck_assert(cli_exists(path));
+    /* Nor is one that holds someone else's manifest.json (a web extension's):
+     * the name alone made it "a kit", and the directory was deleted whole. */
+    char other[300];
+    static const char ext[] = "{\"manifest_version\": 3, \"name\": \"an extension\"}\n";
+    cli_path(other, sizeof other, dir, "manifest.json");
+    ck_assert_int_eq(file_write_bytes(other, ext, sizeof ext - 1, why, sizeof why), 0);
+    cli_refray(r, over);
+    ck_assert_int_eq(r->code, 64);
+    ck_assert(cli_exists(path));
+    ck_assert(cli_exists(other));
     /* A kit is: the old one goes whole. */
     cli_remove(dir);
     cli_refray(r, over);

@@ -8,6 +8,8 @@
 rf_status rf_image_create(int width, int height, const rf_allocator *allocator, rf_image **out)
 {
     mem m = api_mem(allocator);
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
     rf_image *img = mem_alloc(&m, sizeof *img);
     if (!img)
@@ -108,10 +110,22 @@ static void write_stats(const img_write_stats *st, rf_write_stats *out)
     }
 }
 
+/* A NULL image, path or stream: RF_ERR_USAGE with the reason. */
+static rf_status missing(char *message, size_t message_size, rf_write_stats *stats, const char *why)
+{
+    img_write_stats none = {0, 0};
+    write_stats(&none, stats);
+    if (message && message_size > 0)
+        snprintf(message, message_size, "%s", why);
+    return RF_ERR_USAGE;
+}
+
 rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_options *o, rf_write_stats *stats,
                          char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
+    if (!img || !path)
+        return missing(message, message_size, stats, !img ? "no image to write" : "no path to write to");
     cancel_poll cancel;
     img_write_opts w = write_opts(o, &st, &cancel);
     int status = img_write(path, &img->buf, &w, message, message ? message_size : 0);
@@ -123,6 +137,8 @@ rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt
                                 rf_write_stats *stats, char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
+    if (!img || !stream)
+        return missing(message, message_size, stats, !img ? "no image to write" : "no stream to write to");
     cancel_poll cancel;
     img_write_opts w = write_opts(o, &st, &cancel);
     int status = img_write_stream(stream, format_in(fmt), &img->buf, &w, message, message ? message_size : 0);

@@ -23,8 +23,10 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
 {
     const scene_model *s = api_scene(scene);
     render_opts ro;
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
-    if (!api_render_opts(o, &ro))
+    if (!s || !api_render_opts(o, &ro))
         return RF_ERR_USAGE;
     rf_renderer *r = mem_alloc(&s->mem, sizeof *r);
     if (!r)
@@ -54,9 +56,15 @@ void rf_renderer_size(const rf_renderer *r, int *width, int *height)
 
 rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
 {
+    if (!r)
+        return RF_ERR_USAGE;
     const render_stats *st = &r->r.stats;
     if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || !pixels ||
         row_stride < 3 * (size_t)(x1 - x0))
+        return RF_ERR_USAGE;
+    /* The last row ends (rows - 1) * row_stride + 3 * columns floats in: a
+     * stride so large that this wraps around would write before pixels. */
+    if ((size_t)(y1 - y0 - 1) > ((size_t)-1 - 3 * (size_t)(x1 - x0)) / row_stride)
         return RF_ERR_USAGE;
     if (r->options.cancel && r->options.cancel(r->options.user))
         return RF_ERR_CANCELLED;
@@ -83,6 +91,8 @@ rf_status rf_render_image(const rf_scene *scene, const rf_render_options *o, rf_
 {
     const scene_model *s = api_scene(scene);
     rf_renderer *r;
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
     if (stats)
         memset(stats, 0, sizeof *stats);

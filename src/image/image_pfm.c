@@ -105,6 +105,25 @@ static int make_target(const img_read_opts *o, int w, int h, img_buf *out, char 
     return rc == STATUS_OK ? rc : img_error(err, errlen, rc, "out of memory");
 }
 
+/* The raster's bytes, rows x bytes_per_row, fit in what the file holds
+ * after the header: a header of 16384 x 16384 on a 1 KB file must not
+ * allocate gigabytes before the first row comes up short.  A stream that
+ * cannot seek (a pipe) is read as it comes. */
+static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, char *err, size_t errlen)
+{
+    long here = ftell(fp);
+    if (here < 0 || fseek(fp, 0, SEEK_END) != 0) {
+        clearerr(fp);
+        return STATUS_OK;
+    }
+    long end = ftell(fp);
+    if (fseek(fp, here, SEEK_SET) != 0)
+        return img_error(err, errlen, STATUS_IO, "cannot seek back in the file: %s", strerror(errno));
+    if (end >= here && (size_t)(end - here) / bytes_per_row < (size_t)rows)
+        return img_error(err, errlen, STATUS_DATA, "file is truncated (the pixel data ends early)");
+    return STATUS_OK;
+}
+
 /* ---- PFM ---- */
 
 static void put_le32(unsigned char *p, uint32_t u)
@@ -200,6 +219,8 @@ int img_pfm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size
     if (rc == STATUS_OK)
         rc = read_pfm_scale(fp, &little, err, errlen);
     if (rc == STATUS_OK)
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, 4 * (size_t)nch * (size_t)w, err, errlen);
+    if (rc == STATUS_OK)
         rc = make_target(o, w, h, out, err, errlen);
     if (rc != STATUS_OK || o->header_only)
         return rc;
@@ -266,6 +287,8 @@ int img_ppm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size
     long maxval = rc != STATUS_OK || read_token(fp, m, sizeof m) ? -1 : parse_long(m, 1, 65535);
     if (rc == STATUS_OK && maxval < 0)
         rc = img_error(err, errlen, STATUS_DATA, "bad maxval in the PPM header (1 to 65535)");
+    if (rc == STATUS_OK)
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, (maxval < 256 ? 3 : 6) * (size_t)w, err, errlen);
     if (rc == STATUS_OK)
         rc = make_target(o, w, h, out, err, errlen);
     if (rc != STATUS_OK || o->header_only)

@@ -23,7 +23,7 @@ double render_clock(void)
 uint64_t render_sample_key(int width, int k, int i, int j, int a, int b)
 {
     uint64_t pixel_key = sampler_key((uint64_t)j * (uint64_t)width + (uint64_t)i, RENDER_PIXEL_SALT);
-    return sampler_key(pixel_key, (uint64_t)(b * k + a));
+    return sampler_key(pixel_key, (uint64_t)b * (uint64_t)k + (uint64_t)a);
 }
 
 double render_sample_offset(int k, int a)

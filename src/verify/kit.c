@@ -294,13 +294,16 @@ static int replaceable(const char *dir, char *why, size_t why_size)
         snprintf(why, why_size, "cannot use '%s': %s", dir, strerror(errno));
         return errno == ENOENT;
     }
+    /* A kit is told by its manifest's "kit" member, not by the file's name:
+     * a web extension's or an app's manifest.json is not a reason to
+     * delete the directory around it. */
     char *manifest_path = path_of(dir, "manifest", ".json");
-    int kit = manifest_path && access(manifest_path, F_OK) == 0;
+    int kit = manifest_path && manifest_is_kit(manifest_path);
     free(manifest_path);
     if (S_ISDIR(sb.st_mode) && (kit || empty_dir(dir)))
         return 1;
-    snprintf(why, why_size, "'%s' exists and is not a kit (no manifest.json): give a new or empty directory",
-             dir);
+    snprintf(why, why_size,
+             "'%s' exists and is not a kit (no manifest.json of a refray kit): give a new or empty directory", dir);
     return 0;
 }
 
