@@ -128,10 +128,11 @@ RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' incl
 RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
 LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
 PUBLIC_LAYERS := base image lang scene render io api
-# The io layer's process runner and file writer serve `refray kit` and
-# `refray conform` only: a host's library neither starts processes nor
-# removes directories.
-PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o
+# The io layer's process runner, worker pool, file writer and tile files
+# serve the program only (kit, conform, render --jobs, merge): a host's
+# library neither starts processes nor removes directories.
+PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o $(BUILD)/obj/src/io/pool.o \
+               $(BUILD)/obj/src/io/tile_file.o
 PUBLIC_OBJS := $(filter-out $(PUBLIC_OMIT),$(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS)))                  $(BUILD)/obj/gen/%,$(LIB_OBJS)))
 PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)

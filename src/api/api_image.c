@@ -83,7 +83,7 @@ void rf_write_options_init(rf_write_options *o)
     o->exr_float = d.exr_float;
 }
 
-static img_write_opts write_opts(const rf_write_options *o, img_write_stats *st)
+img_write_opts api_write_opts(const rf_write_options *o, img_write_stats *st)
 {
     img_write_opts w = img_write_opts_default();
     if (o) {
@@ -109,7 +109,7 @@ rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_o
                          char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    img_write_opts w = api_write_opts(o, &st);
     int status = img_write(path, &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);
@@ -119,7 +119,7 @@ rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt
                                 rf_write_stats *stats, char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    img_write_opts w = api_write_opts(o, &st);
     int status = img_write_stream(stream, format_in(fmt), &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);

@@ -1,37 +1,19 @@
 /*
  * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically,
- * through the public API (refray.h).
- *
- * One of refray's two pieces of global state lives here (the other is
- * cli_conform.c's stop flag): the SIGINT flag, as a volatile sig_atomic_t,
- * because a signal handler can reach nothing else.
- * The library never sees it; it is asked through the progress callback.
+ * through the public API (refray.h).  A region, a tile, workers or a
+ * checkpoint: cli_render_tiles.c.  SIGINT, SIGTERM and SIGHUP stop a
+ * render through the flag of cli_signal.h, which the library is asked
+ * about through the cancel callback.
  */
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "cli/cli_args.h"
+#include "cli/cli_render.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 #include "io/fileio.h"
-
-static volatile sig_atomic_t interrupted;
-
-static void on_interrupt(int sig)
-{
-    (void)sig;
-    interrupted = 1;
-}
-
-typedef struct render_args {
-    cli_scene_opts scene;
-    const char *input, *output;
-    const char *format;   /* --format, for -o - (standard output) */
-    render_opts render;
-    rf_write_options image;
-    int stats, quiet;
-} render_args;
+#include "io/tile_file.h"
 
 static const char render_help[] =
     "usage: refray render SCENE -o OUT [OPTIONS]\n"
@@ -51,37 +33,76 @@ static const char render_help[] =
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
     "  -q, --quiet           no progress bar\n"
+    "big renders (spec/scaling.md):\n"
+    "  --jobs N              N worker processes over bands of rows (default 1;\n"
+    "                        0: one per processor); the same pixels as --jobs 1\n"
+    "  --region X0 Y0 X1 Y1  only the pixels X0 <= x < X1, Y0 <= y < Y1 (y = 0 at\n"
+    "                        the top), as a tile: OUT is .exr or .pfm (+ OUT.tile)\n"
+    "  --tile I/N            tile I of N (0 <= I < N): the rows from floor(I*H/N)\n"
+    "                        to floor((I+1)*H/N), full width; put tiles together\n"
+    "                        with refray merge\n"
+    "  --checkpoint DIR      keep every finished band in DIR; the same command\n"
+    "                        after an interruption renders only what is missing\n"
     "and -W and the input limits of `refray --help`.\n";
 
-static int image_option(render_args *a, int argc, char **argv, int *i)
+/* --region's four values. */
+static int region_option(render_args *a, int argc, char **argv, int *i)
 {
-    const char *opt = argv[*i], *v;
-    if (strcmp(opt, "--linear") == 0)
-        a->image.linear = 1;
-    else if (strcmp(opt, "--exr-float") == 0)
-        a->image.exr_float = 1;
-    else if (strcmp(opt, "--exposure") == 0)
-        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->image.exposure_stops);
-    else if (strcmp(opt, "--bit-depth") == 0) {
-        long bits;
-        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
-            return 0;
-        if (bits != 8 && bits != 16) {
-            cli_usage_error("--bit-depth is 8 or 16");
+    static const char *const names[4] = {"X0", "Y0", "X1", "Y1"};
+    for (int k = 0; k < 4; k++) {
+        long v;
+        if (*i + 1 >= argc) {
+            cli_usage_error("--region needs four values, X0 Y0 X1 Y1");
             return 0;
         }
-        a->image.png_bits = (int)bits;
-    } else if (strcmp(opt, "--tone") == 0) {
-        if (!cli_take_value(argc, argv, i, &v))
+        if (!cli_parse_long(names[k], argv[++*i], 0, 1000000000, &v))
             return 0;
-        if (strcmp(v, "clamp") != 0 && strcmp(v, "reinhard") != 0) {
-            cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
-            return 0;
-        }
-        a->image.tone = strcmp(v, "reinhard") == 0 ? RF_TONE_REINHARD : RF_TONE_CLAMP;
-    } else {
-        return -1;
+        a->region[k] = (int)v;
     }
+    a->has_region = 1;
+    return 1;
+}
+
+/* --tile I/N. */
+static int tile_option(render_args *a, int argc, char **argv, int *i)
+{
+    const char *v;
+    long index, count;
+    char text[64], *slash;
+    if (!cli_take_value(argc, argv, i, &v))
+        return 0;
+    snprintf(text, sizeof text, "%s", v);
+    slash = strchr(text, '/');
+    if (!slash || strlen(v) >= sizeof text) {
+        cli_usage_error("--tile takes I/N (tile I of N, 0 <= I < N), not '%s'", v);
+        return 0;
+    }
+    *slash = '\0';
+    if (!cli_parse_long("--tile's N", slash + 1, 1, 1000000000, &count) ||
+        !cli_parse_long("--tile's I", text, 0, count - 1, &index))
+        return 0;
+    a->tile_index = (int)index;
+    a->tile_count = (int)count;
+    return 1;
+}
+
+/* The options of big renders; 1, 0 or -1 as render_option. */
+static int scaling_option(render_args *a, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    long jobs;
+    const char *v;
+    if (strcmp(opt, "--region") == 0)
+        return region_option(a, argc, argv, i);
+    if (strcmp(opt, "--tile") == 0)
+        return tile_option(a, argc, argv, i);
+    if (strcmp(opt, "--checkpoint") == 0)
+        return cli_take_value(argc, argv, i, &a->checkpoint);
+    if (strcmp(opt, "--jobs") != 0)
+        return -1;
+    if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 0, 256, &jobs))
+        return 0;
+    a->jobs = (int)jobs;
     return 1;
 }
 
@@ -93,6 +114,8 @@ static int render_option(void *args, int argc, char **argv, int *i)
     int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
     if (sized >= 0)
         return sized;
+    if ((sized = scaling_option(a, argc, argv, i)) >= 0)
+        return sized;
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
         return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--format") == 0)
@@ -101,7 +124,7 @@ static int render_option(void *args, int argc, char **argv, int *i)
         return a->stats = 1;
     if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
         return a->quiet = 1;
-    return image_option(a, argc, argv, i);
+    return cli_image_option(&a->image, argc, argv, i);
 }
 
 /* 0: go on; -1: help printed; else the usage exit code. */
@@ -112,11 +135,17 @@ static int parse_args(render_args *a, int argc, char **argv)
         return status;
     if (!a->output)
         return cli_usage_error("render: no output given (-o OUT)");
+    if (a->has_region && a->tile_count)
+        return cli_usage_error("render: --region and --tile both choose the pixels; give one");
     return 0;
 }
 
-/* The format of standard output, from --format. */
-static rf_format stdout_format(const char *name)
+int cli_render_in_tiles(const render_args *a)
+{
+    return a->has_region || a->tile_count || a->jobs != 1 || a->checkpoint;
+}
+
+rf_format cli_render_stdout_format(const char *name)
 {
     char probe[16];
     if (!name || strlen(name) > 4)
@@ -125,12 +154,28 @@ static rf_format stdout_format(const char *name)
     return rf_format_from_path(probe);
 }
 
+/* A tile's output: a tile format, a file. */
+static int check_tile_output(const render_args *a)
+{
+    char why[300];
+    if (strcmp(a->output, "-") == 0)
+        return cli_usage_error("render: a tile is written to a file (it has a sidecar or needs seeking), not to -o -");
+    if (a->format)
+        return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
+    if (!tile_file_format_ok(a->output, why, sizeof why))
+        return cli_usage_error("render: %s", why);
+    return 0;
+}
+
 /* Fails before the render, not after it, when OUT cannot be written. */
 static int check_output(const render_args *a)
 {
     const char *path = a->output;
-    if (strcmp(path, "-") == 0) {
-        rf_format f = stdout_format(a->format);
+    int tile = a->has_region || a->tile_count, status;
+    if (tile && (status = check_tile_output(a)) != 0)
+        return status;
+    if (!tile && strcmp(path, "-") == 0) {
+        rf_format f = cli_render_stdout_format(a->format);
         if (f == RF_FORMAT_UNKNOWN)
             return cli_usage_error("render: -o - needs --format png, exr, pfm or ppm");
         if (!rf_format_available(f))
@@ -141,48 +186,21 @@ static int check_output(const render_args *a)
     }
     if (a->format)
         return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
-    rf_format fmt = rf_format_from_path(path);
-    if (fmt == RF_FORMAT_UNKNOWN)
-        return cli_usage_error("render: '%s' has no known image extension (.png .exr .pfm .ppm)", path);
-    if (!rf_format_available(fmt))
-        return cli_usage_error("render: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
-                               path);
-    char *dir = file_dirname(NULL, path);
-    int ok = dir && access(dir, W_OK) == 0;
-    if (!ok)
-        fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
-                dir ? "directory missing or not writable" : "out of memory");
-    mem_free_string(NULL, dir);
-    return ok ? 0 : STATUS_IO;
+    return tile ? cli_check_output_dir(path) : cli_check_output_file("render", path);
 }
-
-typedef struct progress_state {
-    int show;
-    double start;
-} progress_state;
 
 static void progress(void *ctx, int done, int total)
 {
-    const progress_state *p = ctx;
-    if (p->show) {
-        double elapsed = render_clock() - p->start;
-        double eta = done > 0 ? elapsed * (total - done) / done : 0;
-        int width = 40, filled = (int)((long)width * done / total);
-        fprintf(stderr, "\r[%-*.*s] %3d%%  %.1fs elapsed, ETA %.1fs ", width, filled,
-                "########################################", (int)(100L * done / total), elapsed, eta);
-        if (done == total)
-            fputc('\n', stderr);
-        fflush(stderr);
-    }
+    cli_progress_show(ctx, done, total);
 }
 
 static int cancel(void *ctx)
 {
     (void)ctx;
-    return interrupted != 0;
+    return cli_signal_stopped();
 }
 
-static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
+void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -204,7 +222,7 @@ static void print_stats(const rf_render_stats *s, const rf_write_stats *w)
             w->nonfinite, s->medium_overflows);
 }
 
-static rf_render_options public_opts(const render_args *a, progress_state *p)
+rf_render_options cli_render_options(const render_args *a, cli_progress *bar)
 {
     rf_render_options o;
     rf_render_options_init(&o);
@@ -214,58 +232,72 @@ static rf_render_options public_opts(const render_args *a, progress_state *p)
     o.max_depth = a->render.max_depth;
     o.light_samples = a->render.light_samples;
     o.max_tree_rays = a->scene.limits.max_ray_tree;
-    o.progress = progress;
+    o.progress = bar ? progress : NULL;
     o.cancel = cancel;
-    o.user = p;
+    o.user = bar;
     return o;
 }
 
-static int render_and_write(render_args *a, const rf_scene *scene)
+void cli_render_report(const render_args *a, int status, int overflow_x, int overflow_y, const char *nl)
+{
+    if (status == STATUS_DATA)
+        fprintf(stderr, "%srefray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
+                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n", nl, overflow_x,
+                overflow_y, a->scene.limits.max_ray_tree);
+    else if (status == STATUS_CANCELLED && a->checkpoint)
+        fprintf(stderr, "%srefray: interrupted; nothing written but the finished tiles in '%s' (the same "
+                "command goes on from them)\n", nl, a->checkpoint);
+    else if (status == STATUS_CANCELLED)
+        fprintf(stderr, "%srefray: interrupted; nothing written\n", nl);
+    else
+        fprintf(stderr, "%srefray: error: %s rendering '%s'\n", nl, status_string(status), a->input);
+}
+
+int cli_render_write(const render_args *a, const rf_image *img, rf_write_stats *written)
+{
+    char err[512];
+    int wstatus;
+    if (strcmp(a->output, "-") == 0) {
+        wstatus = (int)rf_image_write_stream(img, stdout, cli_render_stdout_format(a->format), &a->image, written,
+                                             err, sizeof err);
+        if (wstatus == 0 && fflush(stdout) != 0) {
+            snprintf(err, sizeof err, "cannot write to standard output");
+            wstatus = STATUS_IO;
+        }
+    } else {
+        wstatus = (int)rf_image_write(img, a->output, &a->image, written, err, sizeof err);
+    }
+    if (wstatus == 0)
+        return STATUS_OK;
+    fprintf(stderr, "refray: error: %s\n", err);
+    return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
+}
+
+static int render_and_write(const render_args *a, const rf_scene *scene)
 {
     rf_image *img = NULL;
     rf_render_stats stats;
     rf_write_stats written = {0, 0};
-    progress_state p = {!a->quiet && isatty(2), render_clock()};
-    rf_render_options o = public_opts(a, &p);
-    int status = interrupted ? STATUS_CANCELLED : (int)rf_render_image(scene, &o, &img, &stats);
-    if (status == STATUS_DATA) {
-        fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
-                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
-                stats.overflow_x, stats.overflow_y, o.max_tree_rays);
-        return status;
-    }
-    if (status == STATUS_CANCELLED) {
-        fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
-        return status;
-    }
+    cli_progress bar;
+    cli_progress_init(&bar, !a->quiet, 0);
+    rf_render_options o = cli_render_options(a, &bar);
+    int status = cli_signal_stopped() ? STATUS_CANCELLED : (int)rf_render_image(scene, &o, &img, &stats);
     if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: out of memory rendering '%s'\n", a->input);
+        cli_render_report(a, status, stats.overflow_x, stats.overflow_y, bar.show ? "\n" : "");
         return status;
     }
-    char err[512];
-    int wstatus;
-    if (strcmp(a->output, "-") == 0) {
-        wstatus = (int)rf_image_write_stream(img, stdout, stdout_format(a->format), &a->image, &written, err,
-                                             sizeof err);
-        if (wstatus == 0 && fflush(stdout) != 0)
-            wstatus = STATUS_IO;
-    } else {
-        wstatus = (int)rf_image_write(img, a->output, &a->image, &written, err, sizeof err);
-    }
+    status = cli_render_write(a, img, &written);
     rf_image_free(img);
-    if (wstatus != 0) {
-        fprintf(stderr, "refray: error: %s\n", err);
-        return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
-    }
-    if (a->stats)
-        print_stats(&stats, &written);
-    return STATUS_OK;
+    if (status == STATUS_OK && a->stats)
+        cli_render_print_stats(&stats, &written);
+    return status;
 }
 
 int cli_render(int argc, char **argv)
 {
     render_args a;
     memset(&a, 0, sizeof a);
+    a.jobs = 1;
     cli_scene_opts_init(&a.scene);
     rf_write_options_init(&a.image);
     int status = parse_args(&a, argc, argv);
@@ -273,23 +305,26 @@ int cli_render(int argc, char **argv)
         return status < 0 ? STATUS_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
-    /* From here on SIGINT means "stop, write nothing, exit 130", while the
-     * scene loads as well as while it renders. */
-    signal(SIGINT, on_interrupt);
+    /* From here on SIGINT (SIGTERM, SIGHUP) means "stop, write nothing,
+     * exit 130", while the scene loads as well as while it renders. */
+    cli_signal_catch();
     rf_load_options lo = cli_load_options(&a.scene);
     rf_scene *scene;
     status = (int)rf_scene_load_file(a.input, &lo, &scene);
-    if (!scene)
-        return interrupted ? STATUS_CANCELLED : status;
+    if (!scene) {
+        cli_signal_release();
+        return cli_signal_stopped() ? STATUS_CANCELLED : status;
+    }
     rf_scene_info info;
     rf_scene_get_info(scene, &info);
     if ((double)(a.render.width ? a.render.width : info.width) * (a.render.height ? a.render.height : info.height) >
         (double)a.scene.limits.max_pixels) {
         rf_scene_free(scene);
+        cli_signal_release();
         return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
     }
-    status = render_and_write(&a, scene);
+    status = cli_render_in_tiles(&a) ? cli_render_tiles(&a, scene) : render_and_write(&a, scene);
     rf_scene_free(scene);
-    signal(SIGINT, SIG_DFL);
+    cli_signal_release();
     return status;
 }

@@ -10,6 +10,7 @@
 #include <time.h>
 #include "render/camera.h"
 #include "render/render.h"
+#include "base/hash.h"
 #include "base/sampler.h"
 #include "render/shade.h"
 
@@ -76,9 +77,28 @@ void renderer_free(renderer *r)
     tracer_free(&r->tracer);
 }
 
+uint64_t renderer_fingerprint(const renderer *r)
+{
+    const source_set *src = &r->tracer.scene->sources;
+    const render_stats *st = &r->stats;
+    uint64_t h = hash_bytes(HASH_FNV_START, "refray pixels 1", 15);
+    for (int i = 0; i < src->count; i++) {
+        h = hash_u64(h, (uint64_t)src->files[i]->len);
+        h = hash_bytes(h, src->files[i]->text, src->files[i]->len);
+    }
+    h = hash_u64(h, (uint64_t)st->width);
+    h = hash_u64(h, (uint64_t)st->height);
+    h = hash_u64(h, (uint64_t)st->samples);
+    h = hash_u64(h, (uint64_t)st->max_depth);
+    h = hash_u64(h, (uint64_t)r->opts.light_samples);
+    return hash_u64(h, (uint64_t)sizeof(real));
+}
+
 /* v as float; beyond FLT_MAX (a radiance can reach DBL_MAX) the largest
- * float, so a float target never holds an infinity. */
-static float to_float(real v)
+ * float, so a float target never holds an infinity.  From the double a
+ * double target would hold, so that a float region has the floats a whole
+ * image written as 32-bit float has (with a long double `real` too). */
+static float to_float(double v)
 {
     return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v;
 }
@@ -87,9 +107,9 @@ static void store(const render_target *target, int x, int y, rgb c)
 {
     size_t at = (size_t)(y - target->y0) * target->stride + 3 * (size_t)(x - target->x0);
     if (target->f32) {
-        target->f32[at] = to_float(c.x);
-        target->f32[at + 1] = to_float(c.y);
-        target->f32[at + 2] = to_float(c.z);
+        target->f32[at] = to_float((double)c.x);
+        target->f32[at + 1] = to_float((double)c.y);
+        target->f32[at + 2] = to_float((double)c.z);
     } else {
         target->f64[at] = (double)c.x;
         target->f64[at + 1] = (double)c.y;
