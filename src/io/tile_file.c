@@ -208,10 +208,16 @@ int tile_file_read(const char *path, tile_info *t, img_buf *px, char *why, size_
     const char *open_path = exr ? path : name;
     if (!open_path)
         return read_error(why, why_size, STATUS_NO_MEMORY, path, "out of memory");
-    FILE *fp = fopen(open_path, "rb");
+    /* A PFM tile's pixels are in its sidecar, but a missing PFM itself is
+     * what to say first. */
+    int e = 0, pfm_there = exr || access(path, F_OK) == 0;
+    FILE *fp = NULL;
+    if (!pfm_there)
+        e = errno;
+    else if (!(fp = fopen(open_path, "rb")))
+        e = errno;
     if (!fp) {
-        int e = errno;
-        if (!exr && e == ENOENT)
+        if (pfm_there && !exr && e == ENOENT)
             snprintf(reason, sizeof reason, "its sidecar '%s' is missing (a PFM tile needs it)", open_path);
         else
             snprintf(reason, sizeof reason, "%s", strerror(e));
