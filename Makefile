@@ -147,14 +147,15 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 # The public library needs no jansson (only the kit's manifests use it).
 PUBLIC_LINK_LIBS = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
-DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
+# parallel: GNU parallel, for the test of the recipe in spec/scaling.md.
+DEBS := flex bison check pkg-config parallel $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev) \
         $(if $(findstring clang,$(CC)),clang)
 ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -181,6 +182,21 @@ check: deps
 demo: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(REFRAY) render scenes/demo.scene -o demo.png
+
+# The recipes of spec/scaling.md tried for real on this machine, each in a
+# temporary directory of its own (tests/scaling/): GNU parallel through a
+# private sshd on 127.0.0.1, and a one-node Slurm with its own MUNGE daemon
+# (root only).  Not part of `make check`: they install servers.
+SCALING_DEBS_ssh := openssh-server openssh-client rsync parallel
+SCALING_DEBS_slurm := slurm-wlm munge
+check-ssh check-slurm: deps
+	$(Q)missing=""; for p in $(SCALING_DEBS_ssh) $(if $(filter check-slurm,$@),$(SCALING_DEBS_slurm)); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "$@: installing$$missing"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)sh tests/scaling/$(if $(filter check-ssh,$@),ssh_localhost,slurm_local).sh $(REFRAY)
 
 # Leak kinds are listed in a variable: a literal comma would split $(if ...).
 LEAK_KINDS := definite,indirect,possible

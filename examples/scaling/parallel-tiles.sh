@@ -44,14 +44,15 @@ if [ -z "${SSHLOGIN:-}" ]; then
         "$refray" render -q "$scene" --tile "{}/$n" -o "$TILES/tile-{}.$ext" "$@"
 else
     # Remote machines: the scene goes as a base file and the tiles come
-    # back, all named relative to the tile directory, which is where they
-    # land here and, under the remote home directory, there.
+    # back, all named relative to the tile directory here and to a
+    # directory of the same name under REMOTE_DIR (default /tmp) there,
+    # whose files --cleanup removes.
     cp "$scene" "$TILES/scene.scene"
     returns="--return tile-{}.$ext"
     [ "$ext" = pfm ] && returns="$returns --return tile-{}.$ext.tile"
     # shellcheck disable=SC2086
     (cd "$TILES" && seq 0 $((n - 1)) | parallel --will-cite -q --halt now,fail=1 --ssh "${SSH:-ssh}" \
-        --sshlogin "$SSHLOGIN" --basefile scene.scene $returns --cleanup ${PARALLEL_OPTS:-} \
+        --sshlogin "$SSHLOGIN" --workdir "${REMOTE_DIR:-/tmp}/$(basename "$TILES")" --basefile scene.scene $returns --cleanup ${PARALLEL_OPTS:-} \
         "$refray" render -q scene.scene --tile "{}/$n" -o "tile-{}.$ext" "$@")
     rm -f "$TILES/scene.scene"
 fi
