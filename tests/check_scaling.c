@@ -274,7 +274,7 @@ START_TEST(test_scaling_jobs_write_the_bytes_of_one)
 }
 END_TEST
 
-/* [SCALE-MERGE-2..3] Tiles that are not one render's exact cover: exit 65
+/* [SCALE-MERGE-2] [SCALE-MERGE-3] Tiles that are not one render's exact cover: exit 65
  * (66 for a missing file) with the region or the files named, and no
  * output or temporary file. */
 START_TEST(test_scaling_merge_refusals)
@@ -547,7 +547,8 @@ END_TEST
 
 /* [SCALE-RESUME-1] A render with --checkpoint stopped by SIGINT after its
  * first tiles keeps them and writes nothing; the same command renders
- * only the other bands (the checkpoint's split, though --jobs changed) and
+ * only the other bands (the checkpoint's split, [TILE-SPLIT-2], though
+ * --jobs changed) and
  * writes the bytes of an uninterrupted render; the checkpoint is gone. */
 START_TEST(test_scaling_resume)
 {
@@ -705,6 +706,75 @@ START_TEST(test_scaling_slurm_array_task)
 }
 END_TEST
 
+/* The [SCALE-...] and [TILE-...] IDs of a text one after another: the
+ * next one at or after *from into id, *from moved past it; 0 at the end. */
+static int next_id(const char **from, char *id, size_t size)
+{
+    for (const char *p = *from; (p = strchr(p, '[')) != NULL; p++) {
+        size_t n = strspn(p + 1, "ABCDEFGHIJKLMNOPQRSTUVWXYZ-0123456789");
+        if ((strncmp(p + 1, "SCALE-", 6) == 0 || strncmp(p + 1, "TILE-", 5) == 0) && p[1 + n] == ']' &&
+            n < size && p[n] >= '0' && p[n] <= '9') {
+            memcpy(id, p + 1, n);
+            id[n] = '\0';
+            *from = p + 1 + n;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The text of every test file: the .c files of tests, the .sh of tests/scaling. */
+static char *all_tests(void)
+{
+    static const char *const dirs[] = {"tests", "tests/scaling"};
+    size_t len = 0;
+    char *all = calloc(1, 1);
+    for (int d = 0; d < 2; d++) {
+        DIR *dir = opendir(dirs[d]);
+        ck_assert_ptr_nonnull(dir);
+        for (struct dirent *e; (e = readdir(dir)) != NULL;) {
+            size_t n = strlen(e->d_name);
+            if (n < 3 || (strcmp(e->d_name + n - 2, ".c") != 0 && strcmp(e->d_name + n - 3, ".sh") != 0))
+                continue;
+            char path[300], *text;
+            long size;
+            snprintf(path, sizeof path, "%s/%s", dirs[d], e->d_name);
+            read_all(path, &text, &size);
+            all = realloc(all, len + (size_t)size + 1);
+            ck_assert_ptr_nonnull(all);
+            memcpy(all + len, text, (size_t)size);
+            len += (size_t)size;
+            all[len] = '\0';
+            free(text);
+        }
+        closedir(dir);
+    }
+    return all;
+}
+
+/* spec/scaling.md and the tests agree: every ID the spec defines is cited
+ * by a test, every ID a test cites is in the spec. */
+START_TEST(test_scaling_spec_ids)
+{
+    char *spec, *tests = all_tests(), id[64], quoted[70];
+    long len;
+    read_all("spec/scaling.md", &spec, &len);
+    spec[len] = '\0';
+    int count = 0;
+    for (const char *p = spec; next_id(&p, id, sizeof id); count++) {
+        snprintf(quoted, sizeof quoted, "[%s]", id);
+        ck_assert_msg(strstr(tests, quoted) != NULL, "no test cites %s of spec/scaling.md", quoted);
+    }
+    ck_assert_int_ge(count, 15);
+    for (const char *p = tests; next_id(&p, id, sizeof id);) {
+        snprintf(quoted, sizeof quoted, "[%s]", id);
+        ck_assert_msg(strstr(spec, quoted) != NULL, "a test cites %s, which spec/scaling.md lacks", quoted);
+    }
+    free(spec);
+    free(tests);
+}
+END_TEST
+
 Suite *suite_scaling(void)
 {
     Suite *s = suite_create("scaling");
@@ -716,6 +786,7 @@ Suite *suite_scaling(void)
     tcase_add_test(files, test_scaling_merge_refusals);
     tcase_add_test(files, test_scaling_usage_errors);
     tcase_add_test(files, test_scaling_full_disk);
+    tcase_add_test(files, test_scaling_spec_ids);
     suite_add_tcase(s, files);
     TCase *runs = tcase_create("runs");
     tcase_set_timeout(runs, 120);

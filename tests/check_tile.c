@@ -3,7 +3,8 @@
  * fixed split into bands, the checks a merge makes (overlaps, gaps), the
  * key's text, and tile files that give back every double exactly, refuse
  * what is not a whole tile, and show viewers the floats a whole image has
- * (spec/scaling.md [TILE-SPLIT-1], [TILE-FILE-1..3], [SCALE-MERGE-2]).
+ * (spec/scaling.md: [TILE-SPLIT-1], [TILE-FILE-1], [TILE-FILE-2], [TILE-FILE-3],
+ * [SCALE-MERGE-3]).
  * Expected bands and gaps are worked out by hand below each case.
  */
 #include <float.h>
@@ -69,7 +70,7 @@ static tile_rect rect(int x0, int y0, int x1, int y1)
     return r;
 }
 
-/* [SCALE-MERGE-2] The first gap, by hand for each layout (W x H). */
+/* [SCALE-MERGE-3] The first gap, by hand for each layout (W x H). */
 START_TEST(test_tile_find_gap)
 {
     static const struct {
