@@ -75,16 +75,23 @@ START_TEST(test_api_render_region)
 }
 END_TEST
 
+/* The demo scene, with options *o for a 12 x 8 image of it. */
+static rf_scene *load_demo_12x8(rf_render_options *o)
+{
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
+    rf_render_options_init(o);
+    o->width = 12;
+    o->height = 8;
+    return s;
+}
+
 /* A pixel does not depend on the region it is rendered in: the demo scene
  * in 2 x 2 tiles equals the demo scene in one piece, bit for bit. */
 START_TEST(test_api_regions_tile_the_image)
 {
-    rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
     rf_render_options o;
-    rf_render_options_init(&o);
-    o.width = 12;
-    o.height = 8;
+    rf_scene *s = load_demo_12x8(&o);
     rf_renderer *r;
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
     float whole[8 * 12 * 3], tiled[8 * 12 * 3];
@@ -124,12 +131,8 @@ END_TEST
  * to nearest (the demo in two regions, 12 x 8). */
 START_TEST(test_api_region_double_is_the_image)
 {
-    rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
     rf_render_options o;
-    rf_render_options_init(&o);
-    o.width = 12;
-    o.height = 8;
+    rf_scene *s = load_demo_12x8(&o);
     rf_image *img;
     rf_renderer *r;
     ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_OK);

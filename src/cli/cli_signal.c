@@ -17,27 +17,27 @@ static void on_stop(int sig)
 
 static const int stop_signals[] = {SIGINT, SIGTERM, SIGHUP};
 
-void cli_signal_catch(void)
+/* stop for the stop signals, xfsz for SIGXFSZ. */
+static void install(void (*stop)(int), void (*xfsz)(int))
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_stop;
     sigemptyset(&sa.sa_mask);
+    sa.sa_handler = stop;
     for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
         sigaction(stop_signals[i], &sa, NULL);
-    sa.sa_handler = SIG_IGN;
+    sa.sa_handler = xfsz;
     sigaction(SIGXFSZ, &sa, NULL);
+}
+
+void cli_signal_catch(void)
+{
+    install(on_stop, SIG_IGN);
 }
 
 void cli_signal_release(void)
 {
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = SIG_DFL;
-    sigemptyset(&sa.sa_mask);
-    for (size_t i = 0; i < sizeof stop_signals / sizeof stop_signals[0]; i++)
-        sigaction(stop_signals[i], &sa, NULL);
-    sigaction(SIGXFSZ, &sa, NULL);
+    install(SIG_DFL, SIG_DFL);
 }
 
 int cli_signal_stopped(void)

@@ -434,6 +434,31 @@ static void copy_planes(const exr_target *t, img_buf *out)
         }
 }
 
+/* Decodes the slots [from, to) of the first part into new planes of t
+ * (the caller frees them) and makes *out of the data window's size. */
+static int decode_planes(exr_const_context_t ctx, exr_stream *s, exr_target *t, int from, int to, img_buf *out,
+                         char *err, size_t errlen)
+{
+    int rc = STATUS_OK;
+    for (int c = from; rc == STATUS_OK && c < to; c++)
+        if (!(t->plane[c] = calloc((size_t)t->width * (size_t)t->height, 4)))
+            rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+    if (rc == STATUS_OK) {
+        exr_result_t rv = read_chunks(ctx, t);
+        if (rv != EXR_ERR_SUCCESS)
+            rc = exr_failure(s, rv, STATUS_DATA, "read", err, errlen);
+    }
+    if (rc == STATUS_OK && (rc = img_create(out, t->width, t->height)) != STATUS_OK)
+        rc = img_error(err, errlen, rc, "out of memory");
+    return rc;
+}
+
+static void free_planes(exr_target *t)
+{
+    for (int c = 0; c < SLOT_COUNT; c++)
+        free(t->plane[c]);
+}
+
 /* Decodes the first part into *out once the context is open. */
 static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char *err,
                       size_t errlen)
@@ -441,20 +466,11 @@ static int decode_exr(exr_const_context_t ctx, exr_stream *s, img_buf *out, char
     exr_target t;
     memset(&t, 0, sizeof t);
     int rc = check_layout(ctx, &t, err, errlen);
-    for (int c = 0; rc == STATUS_OK && c < 3; c++)
-        if (!(t.plane[c] = calloc((size_t)t.width * (size_t)t.height, 4)))
-            rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
-    if (rc == STATUS_OK) {
-        exr_result_t rv = read_chunks(ctx, &t);
-        if (rv != EXR_ERR_SUCCESS)
-            rc = exr_failure(s, rv, STATUS_DATA, "read", err, errlen);
-    }
-    if (rc == STATUS_OK && (rc = img_create(out, t.width, t.height)) != STATUS_OK)
-        rc = img_error(err, errlen, rc, "out of memory");
+    if (rc == STATUS_OK)
+        rc = decode_planes(ctx, s, &t, 0, RGB_SLOTS, out, err, errlen);
     if (rc == STATUS_OK)
         copy_planes(&t, out);
-    for (int c = 0; c < 3; c++)
-        free(t.plane[c]);
+    free_planes(&t);
     return rc;
 }
 
@@ -534,20 +550,10 @@ static int decode_tile(exr_const_context_t ctx, exr_stream *s, tile_info *info, 
         rc = tile_channels(ctx, err, errlen);
     if (rc != STATUS_OK || !out)
         return rc;
-    for (int c = RGB_SLOTS; rc == STATUS_OK && c < SLOT_COUNT; c++)
-        if (!(t.plane[c] = calloc((size_t)t.width * (size_t)t.height, 4)))
-            rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
-    if (rc == STATUS_OK) {
-        exr_result_t rv = read_chunks(ctx, &t);
-        if (rv != EXR_ERR_SUCCESS)
-            rc = exr_failure(s, rv, STATUS_DATA, "read", err, errlen);
-    }
-    if (rc == STATUS_OK && (rc = img_create(out, t.width, t.height)) != STATUS_OK)
-        rc = img_error(err, errlen, rc, "out of memory");
+    rc = decode_planes(ctx, s, &t, RGB_SLOTS, SLOT_COUNT, out, err, errlen);
     if (rc == STATUS_OK)
         join_words(&t, out);
-    for (int c = 0; c < SLOT_COUNT; c++)
-        free(t.plane[c]);
+    free_planes(&t);
     return rc;
 }
 
