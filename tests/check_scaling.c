@@ -229,6 +229,20 @@ START_TEST(test_scaling_merge_writes_the_whole_renders_bytes)
             }
         }
     }
+    if (have(IMG_FORMAT_EXR)) {
+        /* PFM and EXR tiles in one merge. */
+        static cli_run r;
+        char p[4][300];
+        for (int i = 0; i < 4; i++) {
+            snprintf(name, sizeof name, "t%d.%s", i, exts[i % 2]);
+            cli_path(p[i], sizeof p[i], dir, name);
+        }
+        const char *args[] = {"merge", p[0], p[1], p[2], p[3], "-o", cli_path(merged, sizeof merged, dir, "mix.pfm"),
+                              NULL};
+        cli_refray(&r, args);
+        ck_assert_msg(r.code == 0, "merge: %s", r.err);
+        same_bytes(cli_path(whole, sizeof whole, dir, "o.pfm"), merged);
+    }
     cli_remove(dir);
 }
 END_TEST

@@ -12,7 +12,6 @@
 #include "cli/cli_render.h"
 #include "cli/cli_signal.h"
 #include "cli/commands.h"
-#include "io/fileio.h"
 #include "io/tile_file.h"
 
 static const char render_help[] =
@@ -38,9 +37,9 @@ static const char render_help[] =
     "                        0: one per processor); the same pixels as --jobs 1\n"
     "  --region X0 Y0 X1 Y1  only the pixels X0 <= x < X1, Y0 <= y < Y1 (y = 0 at\n"
     "                        the top), as a tile: OUT is .exr or .pfm (+ OUT.tile)\n"
-    "  --tile I/N            tile I of N (0 <= I < N): the rows from floor(I*H/N)\n"
-    "                        to floor((I+1)*H/N), full width; put tiles together\n"
-    "                        with refray merge\n"
+    "  --tile I/N            tile I of N (0 <= I < N): the full-width rows y with\n"
+    "                        floor(I*H/N) <= y < floor((I+1)*H/N), as a tile;\n"
+    "                        put tiles together with refray merge\n"
     "  --checkpoint DIR      keep every finished band in DIR; the same command\n"
     "                        after an interruption renders only what is missing\n"
     "and -W and the input limits of `refray --help`.\n";
@@ -159,9 +158,7 @@ static int check_tile_output(const render_args *a)
 {
     char why[300];
     if (strcmp(a->output, "-") == 0)
-        return cli_usage_error("render: a tile is written to a file (it has a sidecar or needs seeking), not to -o -");
-    if (a->format)
-        return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
+        return cli_usage_error("render: a tile is written to a file (a sidecar, or seeking), not to -o -");
     if (!tile_file_format_ok(a->output, why, sizeof why))
         return cli_usage_error("render: %s", why);
     return 0;
