@@ -608,6 +608,88 @@ START_TEST(test_scaling_resume)
 }
 END_TEST
 
+/* The whole tile sidecars of dir (a checkpoint), not the temporary files
+ * of their writes; the first one's path into path. */
+static int sidecars(const char *dir, char *path, size_t size)
+{
+    DIR *d = opendir(dir);
+    int found = 0;
+    ck_assert_ptr_nonnull(d);
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        size_t n = strlen(e->d_name);
+        if (strncmp(e->d_name, "tile-", 5) == 0 && n > 9 && strcmp(e->d_name + n - 9, ".pfm.tile") == 0 &&
+            found++ == 0 && path)
+            cli_path(path, size, dir, e->d_name);
+    }
+    closedir(d);
+    return found;
+}
+
+/* [SCALE-RESUME-1] [SCALE-RESUME-3] --jobs 2 --checkpoint stopped the hard
+ * way: refray itself killed by SIGKILL (a power cut: nothing of it runs
+ * after), or one of its workers killed (exit 70).  The finished tiles stay;
+ * after the parent's death its workers are gone too.  The same command
+ * then resumes from them (a tile damaged meanwhile is rendered again, with
+ * a warning), writes the bytes of an uninterrupted render, and removes the
+ * checkpoint with the temporary files of the cut writes. */
+START_TEST(test_scaling_resume_after_kill)
+{
+    char dir[64], ck[300], out[300], plain[300], name[40], side[330], note[200];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "scale");
+    cli_path(ck, sizeof ck, dir, "ck");
+    snprintf(name, sizeof name, "plain.%s", display_ext());
+    const char *whole[] = {"-q", "-o", cli_path(plain, sizeof plain, dir, name), NULL}, *args[64];
+    render_args(args, SLOW, whole);
+    cli_refray(&r, args);
+    ck_assert_int_eq(r.code, 0);
+    snprintf(name, sizeof name, "out.%s", display_ext());
+    cli_path(out, sizeof out, dir, name);
+    for (int k = 0; k < 2; k++) {
+        pid_t kids[8];
+        const char *extra[] = {"--jobs", "2", "--checkpoint", ck, "-o", out, NULL};
+        render_args(args, SLOW, extra);
+        pid_t pid = spawn(dir, args, 0);
+        int n = wait_for_workers(pid, kids, 2), kept = 0;
+        ck_assert_msg(n == 2, "refray has %d workers", n);
+        /* Two tiles: one stays whole when the other is damaged. */
+        for (int i = 0; i < (int)(4000 * slowness()) && kept < 2; i++) {
+            nap_ms(5);
+            kept = cli_exists(ck) ? sidecars(ck, NULL, 0) : 0;
+        }
+        ck_assert_int_ge(kept, 2);
+        ck_assert_int_eq(kill(k == 0 ? pid : kids[0], SIGKILL), 0);
+        finish(dir, pid, &r);
+        if (k == 0) {
+            ck_assert_msg(r.code == -1, "exit %d: %s", r.code, r.err);
+        } else {
+            ck_assert_msg(r.code == 70, "exit %d: %s", r.code, r.err);
+            ASSERT_ERR_HAS(&r, "was killed by SIGKILL");
+        }
+        no_process_left(kids, n);
+        ck_assert(!cli_exists(out));
+        kept = sidecars(ck, side, sizeof side);
+        /* 80 rows, 2 workers: min(80, max(64, 4 x 2)) = 64 bands. */
+        ck_assert_msg(kept >= 2 && kept < 64, "%d tiles kept", kept);
+        if (k == 0) {
+            ck_assert_int_eq(truncate(side, 40), 0);
+            kept--;
+        }
+        cli_refray(&r, args);
+        ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
+        snprintf(note, sizeof note, "%d of 64 tiles are done", kept);
+        ASSERT_ERR_HAS(&r, note);
+        if (k == 0)
+            ASSERT_ERR_HAS(&r, "rendering that tile again");
+        ck_assert(!cli_exists(ck));
+        same_bytes(plain, out);
+        ck_assert_int_eq(files_with(dir, ".tmp."), 0);
+        ck_assert_int_eq(unlink(out), 0);
+    }
+    cli_remove(dir);
+}
+END_TEST
+
 static void write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "wb");
@@ -806,6 +888,7 @@ Suite *suite_scaling(void)
     tcase_set_timeout(runs, 120);
     tcase_add_test(runs, test_scaling_killed_worker_and_sigint);
     tcase_add_test(runs, test_scaling_resume);
+    tcase_add_test(runs, test_scaling_resume_after_kill);
     tcase_add_test(runs, test_scaling_checkpoint_of_another_render);
     tcase_add_test(runs, test_scaling_gnu_parallel);
     tcase_add_test(runs, test_scaling_slurm_array_task);
