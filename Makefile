@@ -155,7 +155,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -197,6 +197,21 @@ check-ssh check-slurm: deps
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
 	$(Q)$(MAKE) --no-print-directory $(REFRAY)
 	$(Q)sh tests/scaling/$(if $(filter check-ssh,$@),ssh_localhost,slurm_local).sh $(REFRAY)
+
+# Figures, not tests (spec/scaling.md): --jobs 1 against --jobs N, GNU
+# parallel over tiles, the merge alone, a checkpointed render killed and
+# resumed, each output compared with --jobs 1's bytes.  SCALING_SIZE=WxH,
+# SCALING_JOBS="2 4", SCALING_OPTS="--samples 1" for other runs.  Times
+# come from GNU time (Debian's time, installed if missing).
+SCALING_SIZE ?= 1920x1080
+SCALING_JOBS ?= 2 4
+SCALING_OPTS ?=
+scaling-figures: deps
+	$(Q)[ -x /usr/bin/time ] || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "scaling-figures: installing time"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq time >/dev/null; }
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)SIZE=$(SCALING_SIZE) JOBS="$(SCALING_JOBS)" sh tests/scaling/figures.sh $(REFRAY) $(SCALING_OPTS)
 
 # Leak kinds are listed in a variable: a literal comma would split $(if ...).
 LEAK_KINDS := definite,indirect,possible
