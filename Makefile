@@ -115,7 +115,7 @@ GEN_HDRS    := $(GEN)/scene.tab.h $(GEN)/scene.lex.h
 
 LIB_OBJS    := $(LIB_SRCS:%.c=$(BUILD)/obj/%.o) $(GEN_SRCS:$(GEN)/%.c=$(BUILD)/obj/gen/%.o)
 DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
-TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o)
+TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/difftest/gen.o
 
 REFRAY   := $(BUILD)/refray
 # The program and the tests link the internal archive (every symbol); a
@@ -155,7 +155,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -228,10 +228,13 @@ bench: $(BENCH)
 # analytic suite (tests/report.sh, spec/verify.md): PNG and SVG plots, TSVs
 # and summary.md under build/report/.  Installs gnuplot-nox if missing.
 REPORT_DIR := build/report
+# $(call need_program,PROGRAM,DEBIAN_PACKAGE): installs the package when
+# PROGRAM is missing (as root with apt-get, otherwise with sudo).
+need_program = command -v $(1) >/dev/null 2>&1 || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "installing $(2)"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $(2) >/dev/null; }
 report: deps
-	$(Q)command -v gnuplot >/dev/null 2>&1 || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
-	  echo "report: installing gnuplot-nox"; $$SUDO apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq gnuplot-nox >/dev/null; }
+	$(Q)$(call need_program,gnuplot,gnuplot-nox)
 	$(Q)$(MAKE) --no-print-directory $(REFRAY)
 	$(Q)sh tests/report.sh $(REFRAY) $(REPORT_DIR) scenes/analytic/*.scene
 
@@ -306,6 +309,29 @@ crosscheck: kit
 	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
 	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
 
+# Differential testing against POV-Ray 3.7 (spec/crosscheck.md, section 5):
+# the minimal scenes of past findings (tests/difftest/regress/), then N
+# random scenes of seed SEED (tests/difftest/gen.c, only what the export
+# maps exactly), rendered by refray and by POV-Ray and compared pixel by
+# pixel; each scene with an interior disagreement is shrunk and written to
+# $(DIFFTEST_OUT), and the run fails.  Installs povray when missing.
+# `make difftest N=1000` is a long campaign; .ci/run runs a short one.
+DIFFTEST := $(BUILD)/refray-difftest
+DIFFTEST_OBJS := $(addprefix $(BUILD)/obj/tests/difftest/,difftest.o run.o shrink.o gen.o)
+DIFFTEST_OUT ?= build/difftest
+N ?= 40
+SEED ?= 1
+
+difftest: deps
+	$(if $(filter 0,$(PNG)),$(error make difftest reads POV-Ray's pictures as PNG: it needs PNG=1))
+	$(Q)$(call need_program,povray,povray)
+	$(Q)$(MAKE) --no-print-directory $(DIFFTEST)
+	$(DIFFTEST) -n $(N) --seed $(SEED) -o $(DIFFTEST_OUT) --obj-dir tests/obj --regress tests/difftest/regress
+
+$(DIFFTEST): $(DIFFTEST_OBJS) $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(DIFFTEST_OBJS) $(LIBRARY) $(ALL_LIBS)
+
 # Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
 # `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
 # instrumentation in build/fuzz, seeds the corpus from the scenes and the
@@ -374,7 +400,7 @@ $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 $(FLAGS_STAMP): FORCE
 	@mkdir -p $(dir $@)
 	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
-$(LIB_OBJS) $(DRIVER_OBJS) $(TEST_OBJS): $(FLAGS_STAMP)
+$(LIB_OBJS) $(DRIVER_OBJS) $(TEST_OBJS) $(DIFFTEST_OBJS): $(FLAGS_STAMP)
 
 $(LIBRARY): $(LIB_OBJS)
 	@echo "  AR      $@"

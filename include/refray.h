@@ -255,6 +255,12 @@ typedef struct rf_render_options {
     int light_samples;      /* > 0: samples of every distributed light; 0: each light's own */
     long max_tree_rays;     /* rays below one camera ray before the render is
                                refused with RF_ERR_DATA; 0: no limit */
+    int no_shortcuts;       /* 1: a verification switch that never changes an
+                               image: every pass, ray and primitive test the
+                               scene could do without is done anyway, so the
+                               pixels are the same to the bit and only the
+                               work (and the rays counted against
+                               max_tree_rays) grows; 0: the shortcuts */
     /* Called after each row of a region (rows_total: the region's rows). */
     void (*progress)(void *user, int rows_done, int rows_total);
     /* Asked before the first row and after every row (after progress);

@@ -217,6 +217,42 @@ START_TEST(test_api_render_region_refusals)
 }
 END_TEST
 
+/* The plane scene, one region, with the shortcuts on or off. */
+static void render_plane(int no_shortcuts, float *px, rf_render_stats *st)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rf_render_options o;
+    rf_renderer *r;
+    rf_render_options_init(&o);
+    o.no_shortcuts = no_shortcuts;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, px, 12), RF_OK);
+    rf_renderer_stats(r, st);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+
+/* [EMBED-API-7] [SHADE-SHORTCUT-OFF-1] no_shortcuts changes the work, not
+ * the image.  A lone plane cannot shadow itself, so with the shortcuts
+ * the shadow pass is left out (0 shadow rays); without them each of the
+ * 12 camera rays meets the plane once, under one light, and sends one
+ * shadow ray (what leaves the plane meets nothing).  The pixels are the
+ * same bits. */
+START_TEST(test_api_no_shortcuts)
+{
+    float on[36], off[36];
+    rf_render_stats st_on, st_off;
+    render_plane(0, on, &st_on);
+    render_plane(1, off, &st_off);
+    ck_assert_int_eq(memcmp(on, off, sizeof on), 0);
+    ck_assert_float_eq(on[0], 1.1f);
+    ck_assert_int_eq(st_on.shadows, 0);
+    ck_assert_int_eq(st_on.shadow_rays, 0);
+    ck_assert_int_eq(st_off.shadows, 1);
+    ck_assert_int_eq(st_off.shadow_rays, 12);
+}
+END_TEST
+
 typedef struct rows {
     int calls, last_done, last_total, stop_after;
 } rows;
@@ -573,6 +609,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_region_double_is_the_image);
     tcase_add_test(tc, test_api_fingerprint);
+    tcase_add_test(tc, test_api_no_shortcuts);
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);
     tcase_add_test(tc, test_api_diagnostic_print);

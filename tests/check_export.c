@@ -169,8 +169,11 @@ START_TEST(test_pov_export_write_lights)
 }
 END_TEST
 
-/* A distant light travelling down (0, -1, 0) sits above the scene, and
- * point_at is one unit further along the direction. */
+/* [XCHK-MAP-DISTANT-1] A distant light travelling down (0, -1, 0) sits
+ * above the scene's centre, which is its point_at, beyond every point
+ * POV-Ray can shade by MAX_DISTANCE: (max_depth + 1) 1e7 = 5e7 plus the
+ * spread of the scene (the eye's distance from the centre and the radius:
+ * more than 1, far less than 100 in scene_a). */
 START_TEST(test_pov_export_write_distant_direction)
 {
     pov_notes n;
@@ -184,9 +187,9 @@ START_TEST(test_pov_export_write_distant_direction)
     ck_assert_int_eq(sscanf(start, "light_source { <%lf, %lf, %lf>", &fx, &fy, &fz), 3);
     ck_assert_int_eq(sscanf(p, " parallel point_at <%lf, %lf, %lf>", &tx, &ty, &tz), 3);
     ck_assert_near(tx - fx, 0, 1e-9);
-    ck_assert_near(ty - fy, -1, 1e-9);
     ck_assert_near(tz - fz, 0, 1e-9);
-    ck_assert(fy > 100);
+    ck_assert_msg(fy - ty > 5e7 + 1 && fy - ty < 5e7 + 100, "the light is %.17g above its point_at", fy - ty);
+    ck_assert(fabs(tx) < 10 && fabs(ty) < 10 && fabs(tz) < 10);
     free(sdl);
 }
 END_TEST
@@ -307,9 +310,12 @@ START_TEST(test_pov_export_write_quadrics)
 }
 END_TEST
 
-/* Two notes in scene_a: the glass disk (a transparent sheet) and the clear
- * sphere (ior 1) pass rays straight on, which POV-Ray does not count as a
- * trace level.  glass has Ks + t = 1: no total-internal-reflection note. */
+/* Three notes in scene_a: the glass disk (a transparent sheet) and the
+ * clear sphere (ior 1) pass rays straight on, which POV-Ray does not count
+ * as a trace level; and the glass sphere (centre 1 above the floor, radius
+ * 1) touches the floor ([XCHK-MAP-SHADOW-2]).  glass has Ks + t = 1: no
+ * total-internal-reflection note.  The clear sphere (centre 1 above the
+ * floor, radius 0.5) is 0.5 clear of it. */
 START_TEST(test_pov_export_check_notes)
 {
     scene_model *s = load(scene_a);
@@ -317,10 +323,142 @@ START_TEST(test_pov_export_check_notes)
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
     ck_assert_int_eq(n.refused, 0);
-    ck_assert_int_eq(n.count, 2);
+    ck_assert_int_eq(n.count, 3);
     ck_assert_msg(strstr(n.text[0], "material glass") && strstr(n.text[0], "trace level"), "%s", n.text[0]);
     ck_assert_msg(strstr(n.text[1], "material clear") && strstr(n.text[1], "trace level"), "%s", n.text[1]);
+    ck_assert_msg(strstr(n.text[2], "transparent sphere at t.scene:11 cuts or comes within 1e-3 of the surface at "
+                                    "t.scene:10"), "%s", n.text[2]);
     scene_free(s);
+}
+END_TEST
+
+/* The notes of the export of text (the scene must be exportable). */
+static void notes_of(const char *text, pov_notes *n)
+{
+    scene_model *s = load(text);
+    pov_opts o = {0, NULL, 0, 0};
+    ck_assert_int_eq(pov_export_check(s, &o, n), 1);
+    scene_free(s);
+}
+
+/* How many of the notes contain a, and b when it is not NULL. */
+static int notes_with(const pov_notes *n, const char *a, const char *b)
+{
+    int found = 0;
+    for (int i = 0; i < n->count && i < POV_NOTE_MAX; i++)
+        found += strstr(n->text[i], a) && (!b || strstr(n->text[i], b));
+    return found;
+}
+
+/* [XCHK-MAP-MESH-2] A mesh with vertex normals (cube.obj has them) is
+ * listed for Ks > 0 and for t > 0, each with its reason; without normals,
+ * or at max_depth 1, or with neither, not. */
+START_TEST(test_pov_export_check_smooth_mesh)
+{
+    pov_notes n;
+    notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/cube.obj\" material { t 0.5 ior 1.5 Ks 0.5 } }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "vertex normals and t > 0", "interiors"), 1);
+    ck_assert_int_eq(notes_with(&n, "vertex normals and Ks > 0", NULL), 1);
+    notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/cube.obj\" material { t 0.5 ior 1.5 } }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "vertex normals", NULL), 1);
+    notes_of("image { max_depth 1 }\nmesh { file \"tests/obj/cube.obj\" material { t 0.5 ior 1.5 } }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "vertex normals", NULL), 0);
+    notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/tetrahedron.obj\" material { t 0.5 ior 1.5 } }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "vertex normals", NULL), 0);
+    notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/cube.obj\" material { Kd 0.5 } }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+}
+END_TEST
+
+/* [XCHK-MAP-SHADOW-2] A transparent box or mesh under a light is listed
+ * (shadow rays inside it leave through an adjacent face within 1e-3 of the
+ * point near its edges); a transparent sphere alone, an opaque box, or no
+ * light, not.  A transparent sphere is listed when another surface cuts
+ * it or comes within 1e-3 of it, and not when it keeps more than 1e-3
+ * away or lies wholly inside without touching. */
+START_TEST(test_pov_export_check_shadow_tolerance)
+{
+    static const char *const listed[] = {
+        "point_light { position [0, 5, 0] }\nbox { from [0, 0, 0] to [1, 1, 1] material { t 0.5 ior 1.5 Ks 0.5 } }\n",
+        "distant_light { direction [0, -1, 0] }\nmesh { file \"tests/obj/tetrahedron.obj\" material { t 0.5 "
+        "ior 1.5 Ks 0.5 } }\n",
+    };
+    static const char *const near[] = {
+        /* a plane 1 + 1e-3 from the centre of a unit sphere; a sphere 2 away */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "plane { point [0, -1.001, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { center [2, 0, 0] }\n",
+        /* a box whose nearest corner is 0.52 from the centre: it cuts the surface */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "box { from [0.3, 0.3, 0.3] to [2, 2, 2] }\n",
+    };
+    static const char *const apart[] = {
+        /* 1 + 2e-3 from the plane; a sphere 2.01 away; a ball well inside */
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "plane { point [0, -1.002, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { center [2.01, 0, 0] }\n",
+        "point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+        "sphere { radius 0.5 }\n",
+    };
+    static const char *const not_listed[] = {
+        "point_light { position [0, 5, 0] }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n",
+        "point_light { position [0, 5, 0] }\nbox { from [0, 0, 0] to [1, 1, 1] material { Kd 0.5 } }\n",
+        "box { from [0, 0, 0] to [1, 1, 1] material { t 0.5 ior 1.5 Ks 0.5 } }\n",
+    };
+    pov_notes n;
+    for (int i = 0; i < 2; i++) {
+        notes_of(listed[i], &n);
+        ck_assert_int_eq(notes_with(&n, "SHADOW_TOLERANCE", "edges"), 1);
+    }
+    for (int i = 0; i < 3; i++) {
+        notes_of(not_listed[i], &n);
+        ck_assert_int_eq(notes_with(&n, "SHADOW_TOLERANCE", NULL), 0);
+        notes_of(near[i], &n);
+        ck_assert_msg(notes_with(&n, "transparent sphere", "within 1e-3") == 1, "scene %d: %d notes", i, n.count);
+        notes_of(apart[i], &n);
+        ck_assert_int_eq(n.count, 0);
+    }
+}
+END_TEST
+
+/* [XCHK-MAP-FAR-1] A camera 2e5 above a floor, looking level, has pixels
+ * whose rays meet the floor past 1e7 (a ray d below the horizon meets it
+ * at 2e5 / sin d, and the row next to the horizon is about 0.0055 rad
+ * below it with fov 45 over 64 pixels and 48 rows: 3.6e7): listed.  Looking
+ * down at it from 2 units, or level from 2 units (the nearest rows meet it
+ * at 2 / 0.0055 = 364), not. */
+START_TEST(test_pov_export_check_far_plane)
+{
+    pov_notes n;
+    notes_of("image { width 64 height 48 }\ncamera { eye [0, 2e5, 0] look_at [0, 2e5, -1] fov 45 }\n"
+             "plane { }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "camera rays meet it", "MAX_DISTANCE"), 1);
+    notes_of("image { width 64 height 48 }\ncamera { eye [0, 2, 0] look_at [0, 2, -1] fov 45 }\nplane { }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+    notes_of("image { width 64 height 48 }\ncamera { eye [0, 2, 0] look_at [0, 0, 0] up [0, 0, -1] fov 45 }\n"
+             "plane { }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+}
+END_TEST
+
+/* [XCHK-MAP-FAR-1] A distant light straight down, a floor, and a wall
+ * through the origin tilted 1e-9 rad off vertical: from the sphere (within
+ * 2 of the origin) a shadow ray meets the wall up to (0 + R) / sin(1e-9)
+ * away, R the scene's radius: listed.  An upright wall (its normal across
+ * the light: never met) and the floor (met only by rays going down, which
+ * no shadow ray toward this light does), not. */
+START_TEST(test_pov_export_check_far_shadow)
+{
+    pov_notes n;
+    notes_of("camera { eye [0, 2, 6] look_at [0, 0, 0] }\ndistant_light { direction [0, -1, 0] }\n"
+             "sphere { center [1, 1, 0] }\nplane { point [0, -1, 0] }\n"
+             "plane { normal [1, 1e-9, 0] }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "distant_light", "shadow ray can meet the plane"), 1);
+    notes_of("camera { eye [0, 2, 6] look_at [0, 0, 0] }\ndistant_light { direction [0, -1, 0] }\n"
+             "sphere { center [1, 1, 0] }\nplane { point [0, -1, 0] }\nplane { normal [1, 0, 0] }\n", &n);
+    ck_assert_int_eq(n.count, 0);
 }
 END_TEST
 
@@ -614,6 +752,10 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_triangle);
     tcase_add_test(sdl, test_pov_export_write_quadrics);
     tcase_add_test(sdl, test_pov_export_check_notes);
+    tcase_add_test(sdl, test_pov_export_check_smooth_mesh);
+    tcase_add_test(sdl, test_pov_export_check_shadow_tolerance);
+    tcase_add_test(sdl, test_pov_export_check_far_plane);
+    tcase_add_test(sdl, test_pov_export_check_far_shadow);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);
     tcase_add_test(sdl, test_pov_export_write_distributed_points);

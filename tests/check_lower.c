@@ -474,13 +474,26 @@ static scene_features features_of(const char *text)
     return f;
 }
 
-/* [LANG-FEATURES-1] the record of what a scene uses. */
+/* [LANG-FEATURES-1] [LANG-FEATURES-2] the record of what a scene uses. */
 START_TEST(test_scene_load_features)
 {
-    scene_features f = features_of("sphere {} point_light { position [0, 5, 0] }");
-    ck_assert_int_eq(f.shadows, 0);     /* one convex shape cannot shadow itself */
-    f = features_of("sphere {} sphere { center [3, 0, 0] }");
-    ck_assert_int_eq(f.shadows, 0);     /* no light */
+    /* A lone flat primitive cannot shadow itself; a lone solid can, seen
+     * from inside (a closed cylinder or cone too); nothing without a light. */
+    static const struct { const char *scene; int shadows; } lone[] = {
+        {"plane {} point_light { position [0, 5, 0] }", 0},
+        {"disk {} point_light { position [0, 5, 0] }", 0},
+        {"triangle { vertices [0, 0, 0] [1, 0, 0] [0, 1, 0] } distant_light { direction [0, -1, 0] }", 0},
+        {"sphere {} point_light { position [0, 5, 0] }", 1},
+        {"box { from [0, 0, 0] to [1, 1, 1] } point_light { position [0, 5, 0] }", 1},
+        {"cylinder {} point_light { position [0, 5, 0] }", 1},
+        {"cone {} distant_light { direction [0, -1, 0] }", 1},
+        {"sphere {} sphere { center [3, 0, 0] }", 0},
+    };
+    scene_features f;
+    for (size_t i = 0; i < sizeof lone / sizeof lone[0]; i++) {
+        f = features_of(lone[i].scene);
+        ck_assert_msg(f.shadows == lone[i].shadows, "%s: shadows %d", lone[i].scene, f.shadows);
+    }
     f = features_of("sphere {} plane { point [0, -1, 0] } point_light { position [0, 5, 0] }");
     ck_assert_int_eq(f.shadows, 1);
     ck_assert_int_eq(f.specular | f.reflection | f.refraction | f.sampled_lights | f.meshes, 0);

@@ -282,7 +282,7 @@ START_TEST(test_quadric_contains)
     scene_prim k = cone(vec_make(0, 0, 0), 1, vec_make(0, 0, 1), 0, 0);
     ck_assert(scene_prim_contains(&k, vec_make(0.3, 0, 0.6)));   /* radius there 0.4 */
     ck_assert(!scene_prim_contains(&k, vec_make(0.5, 0, 0.6)));
-    ck_assert(scene_prim_is_solid(&k) && !scene_prim_self_shadows(&k));
+    ck_assert(scene_prim_is_solid(&k) && scene_prim_self_shadows(&k));  /* seen from inside */
     scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     ck_assert(scene_prim_contains(&t, vec_make(0, 2.2, 0.3)));    /* distance sqrt(0.13) < 0.5 */
     ck_assert(!scene_prim_contains(&t, vec_make(0, 0, 0)));       /* the hole */

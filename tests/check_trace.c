@@ -246,11 +246,11 @@ END_TEST
 
 START_TEST(test_trace_diffuse_scene_skips_passes)
 {
-    /* One diffuse sphere, one point light: nothing can occlude (N.L > 0 is
-     * required, a lone convex shape cannot shadow itself), no Ks, no t. */
+    /* One diffuse disk, one point light: nothing can occlude (a ray that
+     * leaves a flat primitive never meets it again), no Ks, no t. */
     scene_model *s = load("image { width 8 height 8 }\n"
-                       "point_light { position [0, 5, 5] power 10 }\n"
-                       "sphere { material { Kd 0.5 } }\n");
+                          "point_light { position [0, 5, 5] power 10 }\n"
+                          "disk { normal [0, 0, 1] radius 3 material { Kd 0.5 } }\n");
     img_buf img;
     render_stats st;
     ck_assert_int_eq(render_image(s, NULL, &img, &st), 0);

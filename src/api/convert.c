@@ -72,6 +72,7 @@ int api_render_opts(const rf_render_options *o, render_opts *out)
     out->max_depth = o->max_depth;
     out->light_samples = o->light_samples;
     out->max_tree_rays = o->max_tree_rays;
+    out->no_shortcuts = o->no_shortcuts != 0;
     return 1;
 }
 

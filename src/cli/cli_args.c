@@ -81,6 +81,8 @@ int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **
         return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
     if (strcmp(opt, "--max-depth") == 0)
         return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+    if (strcmp(opt, "--no-shortcuts") == 0)
+        return o->no_shortcuts = 1;
     return -1;
 }
 

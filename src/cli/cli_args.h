@@ -36,7 +36,8 @@ int cli_take_value(int argc, char **argv, int *i, const char **value);
 int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
- * --light-samples) into o, within lim; 1 consumed, 0 error, -1 not one. */
+ * --light-samples) and --no-shortcuts into o, within lim; 1 consumed,
+ * 0 error, -1 not one. */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
 
 /* The options of an image file (--linear --exr-float --exposure

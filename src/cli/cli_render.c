@@ -28,6 +28,8 @@ static const char render_help[] =
     "  --samples K           K x K camera rays per pixel\n"
     "  --max-depth D         trace depth (1: camera rays only)\n"
     "  --light-samples N     N point sources for every distributed light\n"
+    "  --no-shortcuts        run every pass and ray the scene could do without\n"
+    "                        (same image to the bit, more work: a check)\n"
     "  --exposure STOPS      PNG/PPM: multiply by 2^STOPS before mapping\n"
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
@@ -197,7 +199,7 @@ static int cancel(void *ctx)
     return cli_signal_stopped();
 }
 
-void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w)
+void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -208,7 +210,8 @@ void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w)
             s->total_internal_reflection_rays, rays);
     fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", s->light_samples,
             s->light_samples_on_surface);
-    fprintf(stderr, "  passes: shadows %s, specular %s, reflection %s, refraction %s\n",
+    fprintf(stderr, "  passes%s: shadows %s, specular %s, reflection %s, refraction %s\n",
+            no_shortcuts ? " (every shortcut off)" : "",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
@@ -229,6 +232,7 @@ rf_render_options cli_render_options(const render_args *a, cli_progress *bar)
     o.max_depth = a->render.max_depth;
     o.light_samples = a->render.light_samples;
     o.max_tree_rays = a->scene.limits.max_ray_tree;
+    o.no_shortcuts = a->render.no_shortcuts;
     o.progress = bar ? progress : NULL;
     o.cancel = cancel;
     o.user = bar;
@@ -286,7 +290,7 @@ static int render_and_write(const render_args *a, const rf_scene *scene)
     status = cli_render_write(a, img, &written);
     rf_image_free(img);
     if (status == STATUS_OK && a->stats)
-        cli_render_print_stats(&stats, &written);
+        cli_render_print_stats(&stats, &written, a->render.no_shortcuts);
     return status;
 }
 

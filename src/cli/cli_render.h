@@ -37,7 +37,8 @@ rf_render_options cli_render_options(const render_args *a, cli_progress *bar);
  * budget; nl: what ends a progress bar cut short. */
 void cli_render_report(const render_args *a, int status, int overflow_x, int overflow_y, const char *nl);
 
-void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w);
+/* --stats; no_shortcuts: --no-shortcuts was given. */
+void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts);
 
 /* The format of standard output, from --format. */
 rf_format cli_render_stdout_format(const char *name);

@@ -81,7 +81,7 @@ static int render_region(const render_args *a, cli_tiles *t)
     if (status == STATUS_OK && a->checkpoint)
         cli_tiles_checkpoint_clear(t);
     if (status == STATUS_OK && a->stats)
-        cli_render_print_stats(&t->stats, &written);
+        cli_render_print_stats(&t->stats, &written, a->render.no_shortcuts);
     rf_image_free(img);
     return status;
 }

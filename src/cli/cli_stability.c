@@ -46,7 +46,7 @@ static const char stability_help[] =
     "  --ld PATH             the long double program (default: $REFRAY_LD, or\n"
     "                        refray-ld next to this program)\n"
     "  --width W --height H --samples K --max-depth D --light-samples N\n"
-    "                        as for `refray render`\n"
+    "  --no-shortcuts        as for `refray render`\n"
     "and -W and the input limits of `refray --help`.\n";
 
 typedef struct stab_args {

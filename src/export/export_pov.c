@@ -30,6 +30,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "export/export_pov.h"
+#include "export/export_pov_far.h"
 #include "render/lightsample.h"
 
 /* ---- Notes ---- */
@@ -80,89 +81,6 @@ static void where(const scene_model *s, src_span sp, char *buf, size_t size)
     int line, col;
     source_line_col(f, sp.begin, &line, &col);
     snprintf(buf, size, "%.200s:%d", f->path, line);
-}
-
-/* ---- The scene's size, for the stand-ins of d0 = 0 and distant lights ---- */
-
-typedef struct extent {
-    vec3 lo, hi;
-    int any;
-} extent;
-
-static void extent_add(extent *e, vec3 p)
-{
-    e->lo = e->any ? vec_min(e->lo, p) : p;
-    e->hi = e->any ? vec_max(e->hi, p) : p;
-    e->any = 1;
-}
-
-/* The 8 corners of the local box lo..hi, taken to the world. */
-static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
-{
-    for (int i = 0; i < 8; i++) {
-        vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-        extent_add(e, p->has_xform ? xform_point(&p->to_world, c) : c);
-    }
-}
-
-/* Planes are unbounded and left out: they need no distance. */
-static void extent_add_prim(extent *e, const scene_prim *p)
-{
-    switch (p->kind) {
-    case PRIM_SPHERE: {
-        vec3 r = vec_splat(p->u.sphere.radius);
-        extent_add_box(e, p, vec_sub(p->u.sphere.center, r), vec_add(p->u.sphere.center, r));
-        break;
-    }
-    case PRIM_DISK: {
-        vec3 r = vec_splat(p->u.disk.radius);
-        extent_add_box(e, p, vec_sub(p->u.disk.center, r), vec_add(p->u.disk.center, r));
-        break;
-    }
-    case PRIM_BOX:
-        extent_add_box(e, p, p->u.box.lo, p->u.box.hi);
-        break;
-    case PRIM_TRIANGLE:
-        for (int i = 0; i < 3; i++)
-            extent_add(e, p->u.triangle.p[i]);
-        break;
-    case PRIM_CYLINDER:
-    case PRIM_CONE: {
-        vec3 a = p->kind == PRIM_CONE ? p->u.cone.from : p->u.cylinder.from;
-        vec3 b = p->kind == PRIM_CONE ? p->u.cone.to : p->u.cylinder.to;
-        vec3 r = vec_splat(p->kind == PRIM_CONE ? fmax(p->u.cone.radius[0], p->u.cone.radius[1])
-                                                : p->u.cylinder.radius);
-        extent_add_box(e, p, vec_sub(vec_min(a, b), r), vec_add(vec_max(a, b), r));
-        break;
-    }
-    case PRIM_TORUS: {
-        vec3 r = vec_splat(p->u.torus.major + p->u.torus.minor);
-        extent_add_box(e, p, vec_sub(p->u.torus.center, r), vec_add(p->u.torus.center, r));
-        break;
-    }
-    case PRIM_PLANE:
-        break;
-    }
-}
-
-/* Centre and radius (at least 1) of a ball holding the camera, the lights
- * and every bounded primitive. */
-static double scene_radius(const scene_model *s, vec3 *centre)
-{
-    extent e = {vec_splat(0), vec_splat(0), 0};
-    extent_add(&e, s->camera.eye);
-    for (int i = 0; i < s->prim_count; i++)
-        extent_add_prim(&e, &s->prims[i]);
-    for (int i = 0; i < s->light_count; i++) {
-        const scene_light *l = &s->lights[i];
-        if (l->kind == LIGHT_DISTANT)
-            continue;
-        extent_add(&e, l->position);
-        if (l->kind == LIGHT_RECTANGLE)
-            extent_add(&e, vec_add(l->position, vec_add(l->edge_u, l->edge_v)));
-    }
-    *centre = vec_scale(vec_add(e.lo, e.hi), 0.5);
-    return fmax(1.0, 0.5 * vec_length(vec_sub(e.hi, e.lo)));
 }
 
 /* ---- Falloff as POV-Ray fading ---- */
@@ -332,32 +250,108 @@ static void check_material(const scene_model *s, int index, const pov_opts *o, p
 
 /* [XCHK-MAP-MESH-2] POV-Ray turns a mirror ray that a vertex normal sends
  * into the surface back out (reflecting it about the geometric normal);
- * refray traces the mirror ray as it is. */
+ * refray traces the mirror ray as it is.  A ray refracted about a vertex
+ * normal can head back into the mesh too: refray then goes by the face's
+ * orientation, POV-Ray by its list of interiors. */
 static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
 {
     const scene_prim *tri = &s->prims[m->first_prim];
+    const scene_material *mat = &s->materials[tri->material];
     int smooth = 0;
     char at[256];
     for (int i = 0; i < m->count; i++)
         smooth |= tri[i].u.triangle.has_normals;
-    if (!smooth || s->image.max_depth < 2 || vec_max_component(s->materials[tri->material].ks) <= 0)
+    if (!smooth || s->image.max_depth < 2 || (vec_max_component(mat->ks) <= 0 && !(mat->t > 0)))
         return;
     where(s, m->where, at, sizeof at);
-    add_note(n, "mesh at %s has vertex normals and Ks > 0: where a vertex normal sends the mirror ray into the "
-             "surface POV-Ray reflects it out again about the geometric normal, refray traces it as it is", at);
+    if (vec_max_component(mat->ks) > 0)
+        add_note(n, "mesh at %s has vertex normals and Ks > 0: where a vertex normal sends the mirror ray into "
+                 "the surface POV-Ray reflects it out again about the geometric normal, refray traces it as it is",
+                 at);
+    if (mat->t > 0)
+        add_note(n, "mesh at %s has vertex normals and t > 0: where a ray refracted about a vertex normal heads "
+                 "back into the surface, refray follows the face's orientation and POV-Ray its list of "
+                 "interiors", at);
+}
+
+/* [XCHK-MAP-SHADOW-2] POV-Ray does not count a shadow-ray crossing within
+ * SHADOW_TOLERANCE (1e-3) of the shaded point or of the transparent
+ * crossing before it.  Inside a transparent solid with edges, a point next
+ * to an edge sends its shadow ray out through the adjacent face that
+ * close; and a shadow ray that leaves a transparent solid where another
+ * surface cuts or touches it passes that surface within 1e-3: refray
+ * counts those crossings, POV-Ray does not. */
+static void check_shadow_tolerance(const scene_model *s, pov_notes *n)
+{
+    if (s->light_count == 0)
+        return;
+    for (int i = 0; i < s->prim_count; i++) {
+        const scene_prim *p = &s->prims[i];
+        int mesh = p->kind == PRIM_TRIANGLE && p->mesh >= 0, other;
+        char at[256], at_other[256];
+        if (!(s->materials[p->material].t > 0) || (mesh && s->meshes[p->mesh].first_prim != i))
+            continue;
+        where(s, mesh ? s->meshes[p->mesh].where : p->where, at, sizeof at);
+        int edges = mesh || (scene_prim_is_solid(p) && p->kind != PRIM_SPHERE && p->kind != PRIM_TORUS);
+        const char *kind = mesh ? "mesh" : scene_prim_name(p->kind);
+        if (edges)
+            add_note(n, "transparent %s at %s has edges: POV-Ray ignores a shadow-ray crossing within 1e-3 of the "
+                     "shaded point (SHADOW_TOLERANCE), so inside it, next to an edge, the adjacent face does not "
+                     "shadow in POV-Ray and lets t through in refray", kind, at);
+        else if (scene_prim_is_solid(p) && (other = pov_far_near_solid(s, i, POV_SHADOW_TOLERANCE)) >= 0) {
+            const scene_prim *q = &s->prims[other];
+            where(s, q->mesh >= 0 ? s->meshes[q->mesh].where : q->where, at_other, sizeof at_other);
+            add_note(n, "transparent %s at %s cuts or comes within 1e-3 of the surface at %s: POV-Ray ignores a "
+                     "shadow-ray crossing within 1e-3 of the one before it (SHADOW_TOLERANCE), so a shadow ray "
+                     "that leaves it next to that surface passes that surface in POV-Ray", kind, at, at_other);
+        }
+    }
+}
+
+/* [XCHK-MAP-FAR-1] POV-Ray drops every hit beyond MAX_DISTANCE (1e7).  A
+ * plane can be met that far by a camera ray (its horizon), and then so can
+ * everything else by the rays that leave it; and a shadow ray toward a
+ * distant light can meet a plane that far. */
+static void check_far(const scene_model *s, pov_notes *n)
+{
+    pov_bounds b = pov_far_bounds(s);
+    double spread = pov_far_spread(s, &b);
+    for (int i = 0; i < s->prim_count; i++) {
+        const scene_prim *w = &s->prims[i];
+        char at[256], lat[256];
+        if (w->kind != PRIM_PLANE)
+            continue;
+        where(s, w->where, at, sizeof at);
+        double reach = pov_far_camera_reach(s, w);
+        if (reach + spread > POV_MAX_DISTANCE)
+            add_note(n, "plane at %s: camera rays meet it up to %.3g units away, and the rays that leave it reach "
+                     "the rest of the scene within %.3g more: beyond 1e7 POV-Ray sees nothing (MAX_DISTANCE), "
+                     "refray sees what is there", at, reach, spread);
+        for (int j = 0; j < s->light_count; j++) {
+            const scene_light *l = &s->lights[j];
+            double shadow;
+            if (l->kind != LIGHT_DISTANT || !((shadow = pov_far_shadow_reach(s, &b, l, w)) > POV_MAX_DISTANCE))
+                continue;
+            where(s, l->where, lat, sizeof lat);
+            add_note(n, "distant_light at %s and plane at %s: a shadow ray can meet the plane %.3g units away; "
+                     "beyond 1e7 POV-Ray finds no occluder (MAX_DISTANCE), refray finds the plane", lat, at,
+                     shadow);
+        }
+    }
 }
 
 int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
 {
-    vec3 centre;
-    double radius = scene_radius(s, &centre);
+    pov_bounds b = pov_far_bounds(s);
     memset(notes, 0, sizeof *notes);
     for (int i = 0; i < s->light_count; i++)
-        check_light(s, &s->lights[i], radius, o, notes);
+        check_light(s, &s->lights[i], b.radius, o, notes);
     for (int i = 0; i < s->material_count; i++)
         check_material(s, i, o, notes);
     for (int i = 0; i < s->mesh_count; i++)
         check_mesh(s, &s->meshes[i], notes);
+    check_shadow_tolerance(s, notes);
+    check_far(s, notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
         add_note(notes, "max_depth %d is over POV-Ray's limit: max_trace_level %d (they differ only for paths "
                  "deeper than that)", s->image.max_depth, POV_MAX_TRACE_LEVEL);
@@ -494,16 +488,20 @@ static void write_point_source(FILE *fp, vec3 pos, rgb power, const fade *f)
 
 /* [XCHK-MAP-DISTANT-1] A parallel light: POV-Ray shades with the fixed
  * direction and tests shadows up to the plane through its location, which
- * is put far behind everything (1000 scene radii) so no occluder is cut. */
-static void write_distant(FILE *fp, const scene_light *l, double scale, vec3 centre, double radius)
+ * is put beyond every point POV-Ray can shade by MAX_DISTANCE, so that its
+ * shadow rays are cut by MAX_DISTANCE alone, like every other ray
+ * (pov_far_distant_distance).  point_at is the scene's centre, so the
+ * direction POV-Ray takes from the two is exact to rounding. */
+static void write_distant(FILE *fp, const scene_model *s, const scene_light *l, double scale, const pov_bounds *b)
 {
-    vec3 from = vec_sub(centre, vec_scale(l->direction, 1000.0 * radius));
+    int levels = s->image.max_depth < POV_MAX_TRACE_LEVEL ? s->image.max_depth : POV_MAX_TRACE_LEVEL;
+    vec3 from = vec_sub(b->centre, vec_scale(l->direction, pov_far_distant_distance(s, b, levels)));
     fputs("light_source { ", fp);
     put_vec(fp, to_pov(from));
     fputs(" color rgb ", fp);
     put_vec(fp, vec_scale(l->power, scale));
     fputs(" parallel point_at ", fp);
-    put_vec(fp, to_pov(vec_add(from, l->direction)));
+    put_vec(fp, to_pov(b->centre));
     fputs(" }\n", fp);
 }
 
@@ -563,19 +561,19 @@ static void write_area(FILE *fp, const scene_light *l, const fade *f)
     fputs(" }\n", fp);
 }
 
-static void write_lights(FILE *fp, const scene_model *s, const pov_opts *o, vec3 centre, double radius)
+static void write_lights(FILE *fp, const scene_model *s, const pov_opts *o, const pov_bounds *b)
 {
     double scale = o->scale > 0 ? o->scale : 1.0;
     for (int i = 0; i < s->light_count; i++) {
         const scene_light *l = &s->lights[i];
         fade f;
-        light_fade(l, radius, &f);
+        light_fade(l, b->radius, &f);
         f.colour *= scale;
         fprintf(fp, "// %s %d\n", light_word(l->kind), i + 1);
         if (l->kind == LIGHT_POINT)
             write_point_source(fp, l->position, l->power, &f);
         else if (l->kind == LIGHT_DISTANT)
-            write_distant(fp, l, scale, centre, radius);
+            write_distant(fp, s, l, scale, b);
         else if (o->area_lights)
             write_area(fp, l, &f);
         else
@@ -821,14 +819,13 @@ static void write_geometry(FILE *fp, const scene_model *s, const pov_opts *o)
 
 int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes)
 {
-    vec3 centre;
-    double radius = scene_radius(s, &centre);
+    pov_bounds b = pov_far_bounds(s);
     if (!pov_export_check(s, o, notes))
         return STATUS_DATA;
     write_header(fp, s, o, notes);
     write_globals(fp, s, o->scale > 0 ? o->scale : 1.0);
     write_camera(fp, s);
-    write_lights(fp, s, o, centre, radius);
+    write_lights(fp, s, o, &b);
     write_geometry(fp, s, o);
     return fflush(fp) != 0 || ferror(fp) ? STATUS_IO : 0;
 }

@@ -11,7 +11,8 @@
  * Every choice is a deterministic function of the input.
  *
  * Traversal: an explicit stack of BVH_MAX_DEPTH entries, nearest child
- * first, culling by the shrinking tmax.  The slab test is the robust one of
+ * first, culling by the shrinking tmax (not when b->exhaustive: then every
+ * node is entered, so every primitive is tested in the same order).  The slab test is the robust one of
  * Ize ("Robust BVH Ray Traversal", JCGT 2(2), 2013): the exit distance is
  * enlarged by 1 + 4 eps (> 1 + 2 gamma_3) so rounding never culls a box the
  * ray touches, and a NaN from 0 * inf (origin on a slab plane, direction
@@ -501,8 +502,8 @@ static int descend(const bvh *b, int node, const slab_ray *s, nearest *ns, stack
 {
     int a = b->nodes[node].first, c = a + 1;
     real ta, tc;
-    int ha = node_hit(&b->nodes[a], s, ns->rr.tmin, ns->rr.tmax, &ta);
-    int hc = node_hit(&b->nodes[c], s, ns->rr.tmin, ns->rr.tmax, &tc);
+    int ha = node_hit(&b->nodes[a], s, ns->rr.tmin, ns->rr.tmax, &ta) || b->exhaustive;
+    int hc = node_hit(&b->nodes[c], s, ns->rr.tmin, ns->rr.tmax, &tc) || b->exhaustive;
     if (ns->stats)
         ns->stats->nodes_visited += 2;
     if (ha && hc) {
@@ -523,7 +524,7 @@ static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
     slab_ray s = slab_make(&ns->rr);
     if (ns->stats)
         ns->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], &s, ns->rr.tmin, ns->rr.tmax, &enter))
+    if (!node_hit(&b->nodes[0], &s, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
         return;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
@@ -538,7 +539,7 @@ static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
             if (sp == 0)
                 return;
             sp--;
-            if (stack[sp].enter <= ns->rr.tmax)
+            if (stack[sp].enter <= ns->rr.tmax || b->exhaustive)
                 node = stack[sp].node;
         }
     }
@@ -609,7 +610,7 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
         real enter;
         if (stats)
             stats->nodes_visited++;
-        if (!node_hit(nd, &s, r->tmin, r->tmax, &enter))
+        if (!node_hit(nd, &s, r->tmin, r->tmax, &enter) && !b->exhaustive)
             continue;
         if (nd->count == 0) {
             assert(sp + 2 <= BVH_MAX_DEPTH + 1);

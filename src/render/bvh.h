@@ -45,6 +45,10 @@ typedef struct bvh {
     int item_count;
     int *unbounded;    /* planes etc.: tested linearly on every ray */
     int unbounded_count;
+    int exhaustive;    /* 1: no box culls a ray, every primitive is tested, in
+                          the order of the tree (the shortcuts-off mode of
+                          spec/shading.md, [SHADE-SHORTCUT-BVH-1]); 0 after
+                          bvh_build */
     int unbounded_cap;
     mem mem;           /* where the arrays live */
 } bvh;

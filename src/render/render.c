@@ -50,6 +50,7 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->specular = t->specular;
     stats->reflection = t->reflection;
     stats->refraction = t->refraction;
+    stats->no_shortcuts = t->no_shortcuts;
 }
 
 int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts)
@@ -66,6 +67,8 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     if (!tracer_init(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0))
         return STATUS_NO_MEMORY;
     r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
+    if (o && o->no_shortcuts)
+        tracer_no_shortcuts(&r->tracer);
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&r->tracer, stats);

@@ -16,6 +16,7 @@ typedef struct render_opts {
     int max_depth;        /* 0: the scene's */
     int light_samples;    /* > 0: samples of every distributed light; 0: each light's own */
     long max_tree_rays;   /* rays per camera ray before the render is refused; 0: no limit */
+    int no_shortcuts;     /* 1: every shortcut off (tracer_no_shortcuts); same image, more work */
     /* Called after every row of a region (rows_total: the region's); a
      * non-zero return stops the render (SIGINT). */
     int (*progress)(void *ctx, int rows_done, int rows_total);
@@ -26,6 +27,7 @@ typedef struct render_stats {
     trace_stats trace;
     int bvh_nodes, bvh_leaves, bvh_depth;
     int shadows, specular, reflection, refraction; /* passes that ran (1) or were left out (0) */
+    int no_shortcuts;     /* the render ran with every shortcut off */
     int width, height, samples, max_depth;
     int overflow_x, overflow_y;  /* the pixel whose ray tree passed the budget */
     double seconds;      /* wall time of the traversal and tracing */

@@ -71,6 +71,18 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     return 1;
 }
 
+void tracer_no_shortcuts(tracer *t)
+{
+    t->no_shortcuts = 1;
+    t->shadows = t->specular = t->reflection = t->refraction = 1;
+    t->accel.exhaustive = 1;
+    if (t->scene->camera.kind == CAMERA_PERSPECTIVE) {
+        trace_stats none;
+        memset(&none, 0, sizeof none);
+        trace_media_at(t, t->scene->camera.eye, &t->eye_media, &none);
+    }
+}
+
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
@@ -79,24 +91,56 @@ void tracer_free(tracer *t)
     t->lights = NULL;
 }
 
+/* Folds v into st->path (FNV-1a over 64-bit words). */
+static void path_note(trace_stats *st, uint64_t v)
+{
+    st->path = (st->path ^ v) * 0x100000001b3u;
+}
+
+static uint64_t bits_of(real x)
+{
+    double d = (double)x;
+    uint64_t u;
+    memcpy(&u, &d, sizeof u);
+    return u;
+}
+
+/* Which piece of a primitive made of pieces a hit is on: a box's face (its
+ * normal, constant over it), a cylinder's or cone's cap or side (a cap's
+ * normal is the axis); 0 for the others. */
+static uint64_t piece_of(const scene_prim *p, const hit *h)
+{
+    if (p->kind == PRIM_BOX)
+        return bits_of(h->normal.x) ^ bits_of(h->normal.y) << 1 ^ bits_of(h->normal.z) << 2;
+    if (p->kind != PRIM_CYLINDER && p->kind != PRIM_CONE)
+        return 0;
+    vec3 a = p->kind == PRIM_CYLINDER ? vec_sub(p->u.cylinder.to, p->u.cylinder.from)
+                                      : vec_sub(p->u.cone.to, p->u.cone.from);
+    real c = vec_dot(h->normal, vec_normalize(p->has_xform ? xform_vector(&p->to_world, a) : a));
+    return c > 1 - 1e-9 ? 1 : c < -(1 - 1e-9) ? 2 : 3;
+}
+
 typedef struct shadow_walk {
     const scene_model *scene;
     real carried;
+    int walk_on;     /* no stop at 0: the shortcuts-off mode */
 } shadow_walk;
 
-/* Slide 47: every surface on the way lets through its t (opaque: 0). */
+/* Slide 47: every surface on the way lets through its t (opaque: 0).
+ * [SHADE-SHORTCUT-STOP-1] Once 0 is carried the product stays 0, so the
+ * walk stops there. */
 static int shadow_crossing(void *ctx, const hit *h)
 {
     shadow_walk *w = ctx;
     const scene_material *m = &w->scene->materials[w->scene->prims[h->prim].material];
     w->carried = shade_shadow_transmission(w->carried, m->t);
-    return w->carried == 0;
+    return w->carried == 0 && !w->walk_on;
 }
 
 /* The fraction of a light that reaches the surface along r. */
 static real shadow_transmission(const tracer *t, const ray *r, trace_stats *st)
 {
-    shadow_walk w = {t->scene, 1.0};
+    shadow_walk w = {t->scene, 1.0, t->no_shortcuts};
     st->shadow_rays++;
     bvh_visit_stats(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
     return w.carried;
@@ -125,14 +169,18 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         }
         l = vec_scale(to, 1.0 / d);
     }
-    if (!(vec_dot(s->n, l) > 0))
+    int lit = vec_dot(s->n, l) > 0;
+    path_note(st, (uint64_t)lit + 1);
+    /* [SHADE-SHORTCUT-GATE-1] Where N.L <= 0 both terms are 0: no shadow ray. */
+    if (!lit && !t->no_shortcuts)
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
                                              : ray_spawn_hit_to(s->prim, s->h, pos);
         real through = shadow_transmission(t, &r, st);
-        if (through == 0)
+        path_note(st, bits_of(through));
+        if (through == 0 && !t->no_shortcuts)
             return;
         intensity = vec_scale(intensity, through);
     }
@@ -312,7 +360,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     real through;
     interface_gather(t, s, in, &f, st);
     int solids = interface_cross(t, &f, &next, &through, st);
-    if (through == 0)
+    if (through == 0 && !t->no_shortcuts)
         return vec_splat(0);
     ray r;
     vec3 dir = in->dir;
@@ -323,6 +371,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
         refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    path_note(st, (uint64_t)refracts + 3);
     if (refracts) {
         st->refraction_rays++;
         return vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
@@ -350,10 +399,11 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.n = shade_face_forward(h->shading_normal, s.v);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
+    /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
-        if (t->reflection && vec_max_component(s.m->ks) > 0)
+        if (t->reflection && (vec_max_component(s.m->ks) > 0 || t->no_shortcuts))
             mirror = mirrored(t, &s, in, depth, media, sampler_key(key, 1), st);
-        if (t->refraction && s.m->t > 0)
+        if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
             through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
@@ -452,7 +502,11 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     rgb c = t->scene->image.background;
     if (over_budget(t, st))
         return c;
-    if (bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh))
+    int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
+    path_note(st, met ? (uint64_t)h.prim + 5 : 0);
+    if (met)
+        path_note(st, piece_of(&t->scene->prims[h.prim], &h));
+    if (met)
         c = shade(t, &nearest, &h, depth, media, key, st);
     if (!vec_is_finite(c)) {
         st->nonfinite++;

@@ -29,6 +29,13 @@ typedef struct trace_stats {
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
     long medium_overflow;     /* glass nested deeper than the medium stack holds */
+    /* A hash of the ray tree's shape, in order: the primitive (and the face
+     * of a box, the cap or side of a cylinder or cone) each ray met, which
+     * side of each light the surface faced and what its shadow ray let
+     * through, refraction or total reflection.  Two nearby camera rays with
+     * the same hash met the same things (make difftest tells edge pixels by
+     * it); the image never depends on it. */
+    uint64_t path;
     bvh_stats bvh;
 } trace_stats;
 
@@ -56,6 +63,7 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
 
@@ -66,6 +74,15 @@ typedef struct tracer {
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
+
+/* Turns off every shortcut that leaves out work a scene does not need
+ * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
+ * mirror and transmitted rays while depth < max_depth, every light gets its
+ * shadow ray, no walk stops early, the BVH culls nothing.  The image is the
+ * same to the bit ([SHADE-SHORTCUT-OFF-1]); only the work and the counts in
+ * trace_stats grow (and with them the ray-tree budget's count).  Call it
+ * after tracer_init, before tracing. */
+void tracer_no_shortcuts(tracer *t);
 
 /* Radiance along r (slide 46); depth 1 for camera rays.  key seeds the
  * jitter of every light sample below this ray. */

@@ -120,5 +120,5 @@ int scene_prim_contains(const scene_prim *p, vec3 point)
 
 int scene_prim_self_shadows(const scene_prim *p)
 {
-    return p->kind == PRIM_TORUS || ((p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE) && !scene_prim_is_solid(p));
+    return p->kind != PRIM_PLANE && p->kind != PRIM_DISK && p->kind != PRIM_TRIANGLE;
 }

@@ -236,8 +236,9 @@ int scene_prim_is_solid(const scene_prim *p);
  * keeps one); 0 for anything that is not a solid on its own. */
 int scene_prim_contains(const scene_prim *p, vec3 point);
 
-/* Whether p can shadow itself where N.L > 0: a torus, an open cylinder or
- * cone (convex solids and flat sheets cannot). */
+/* Whether p can shadow itself where N.L > 0: all but the flat ones (plane,
+ * disk, triangle), whose shadow rays never meet them again.  A torus or an
+ * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
 
 /* The block word of a primitive kind ("sphere", ..., "torus"), and its plural. */

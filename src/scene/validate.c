@@ -70,11 +70,11 @@ static void record_features(scene_model *s, const loader *L)
     for (int i = 0; i < s->light_count; i++)
         f->sampled_lights |= s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK;
     f->meshes = s->mesh_count > 0;
-    /* With N.L > 0 required, one convex or flat primitive never shadows
-     * itself; only a second primitive can stand in the way, or a torus or
-     * an open tube on its own. */
-    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || (s->prim_count == 1 &&
-                                                               scene_prim_self_shadows(&s->prims[0])));
+    /* [LANG-FEATURES-2] A ray that leaves a flat primitive never meets it
+     * again, so a lone plane, disk or triangle cannot shadow itself; any
+     * other primitive can (a torus, an open tube, and any solid seen from
+     * inside: a camera in it, a ray refracted into it). */
+    f->shadows = s->light_count > 0 && (s->prim_count >= 2 || scene_prim_self_shadows(&s->prims[0]));
 }
 
 int validate_scene(loader *L)

@@ -68,6 +68,8 @@ int stability_render(const scene_model *scene, const render_opts *opts, stab_ima
         return STATUS_NO_MEMORY;
     }
     t.max_tree_rays = opts ? opts->max_tree_rays : 0;
+    if (opts && opts->no_shortcuts)
+        tracer_no_shortcuts(&t);
     int status = render_rows(&t, k, out, &st);
     tracer_free(&t);
     out->long_double = sizeof(real) > sizeof(double);

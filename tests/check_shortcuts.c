@@ -1,0 +1,258 @@
+/*
+ * The tracer's shortcuts (spec/shading.md, "Shortcuts"): every piece of
+ * work a scene is known not to need may be left out only when leaving it
+ * out changes no bit of the image.  Random scenes (tests/difftest/gen.c,
+ * profile DTGEN_ANY: every construct, lone primitives and cameras inside
+ * solids often) are rendered with the shortcuts on and with all of them off
+ * (tracer_no_shortcuts) and compared with memcmp.  The two scenes that
+ * found the unsound one (a lone sphere seen from inside) are checked
+ * against values derived by hand.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "cli_testlib.h"
+#include "difftest/gen.h"
+#include "io/scene_file.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+/* 400 random scenes, 50 to a test: one fork per 50 renders, not per
+ * render (the sanitizer build pays for every fork). */
+enum { RANDOM_BATCHES = 8, RANDOM_BATCH = 50 };
+
+static scene_model *load(const char *text)
+{
+    int status;
+    scene_model *s = scene_file_load_text("test.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
+    return s;
+}
+
+/* Renders s with the shortcuts on (no_shortcuts 0) or off (1). */
+static void render(const scene_model *s, int no_shortcuts, img_buf *img, render_stats *st)
+{
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.no_shortcuts = no_shortcuts;
+    ck_assert_int_eq(render_image(s, &o, img, st), STATUS_OK);
+}
+
+/* [LANG-FEATURES-2] [SHADE-SHORTCUT-OFF-1] A camera at the centre of an
+ * opaque sphere (radius 2, Kd 0.5), a point light outside it at z = 5, no
+ * ambient: every camera ray meets the inner wall at some p; where N.L > 0
+ * (N the inward normal) the segment from p to the light runs into the ball
+ * and leaves it through the wall again before reaching the light, so the
+ * light is blocked; where N.L <= 0 it adds nothing.  Every pixel is 0,
+ * with the shortcuts on and off.  (The record once left the shadow rays of
+ * a lone sphere out: the centre pixel was 0.5 = Kd E N.L, N.L = 1.) */
+START_TEST(test_shortcuts_camera_inside_opaque_sphere_is_dark)
+{
+    scene_model *s = load("image { width 5 height 5 max_depth 1 }\n"
+                          "camera { perspective eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] fov 90 }\n"
+                          "point_light { position [0, 0, 5] power 1 falloff none }\n"
+                          "sphere { center [0, 0, 0] radius 2 material { Kd 0.5 } }\n");
+    ck_assert_int_eq(s->features.shadows, 1);
+    for (int off = 0; off <= 1; off++) {
+        img_buf img;
+        render_stats st;
+        render(s, off, &img, &st);
+        for (int i = 0; i < 3 * 25; i++)
+            ck_assert_msg(img.rgb[i] == 0, "shortcuts %s: value %d is %.17g, not 0", off ? "off" : "on", i,
+                          img.rgb[i]);
+        ck_assert_int_gt(st.trace.shadow_rays, 0);
+        img_free(&img);
+    }
+    scene_free(s);
+}
+END_TEST
+
+/*
+ * [SHADE-SHADOW-1] [LANG-FEATURES-2] A lone glass sphere (unit, at the
+ * origin; Kd 0.5, Ks 0.5, n 10, t 0.5, ior 1.5) under a distant light
+ * travelling down -y (E = 1), max_depth 2, no ambient, black background.
+ * The centre pixel's orthographic ray runs from (0, 3, 4) toward the
+ * origin, d = (0, -0.6, -0.8): it passes through the centre, so it meets
+ * the sphere along the normal at p1 = (0, 0.6, 0.8) and goes on unbent to
+ * p2 = (0, -0.6, -0.8).
+ *   p1: N = V = (0, 0.6, 0.8), N.L = 0.6 with L = (0, 1, 0); the shadow ray
+ *       leaves the ball (y grows from 0.6 on the line x = 0, z = 0.8, whose
+ *       other crossing is at y = -0.6): light 1.  R = 2 (N.L) N - L gives
+ *       V.R = 2 (0.6)(1) - 0.6 = 0.6.  Body (1 - t) Kd 0.6 = 0.15,
+ *       highlight Ks 0.6^10 = 0.0030233088; the mirror ray goes back
+ *       along -d into the black background.
+ *   p2 (depth 2 = max_depth: local colour only): N, turned toward
+ *       V = (0, 0.6, 0.8), is (0, 0.6, 0.8), N.L = 0.6, V.R = 0.6; the shadow
+ *       ray climbs the line x = 0, z = -0.8 and leaves the ball through its
+ *       own wall at y = 0.6: light t = 0.5.  Body (1 - t) Kd 0.5 0.6 =
+ *       0.075, highlight Ks 0.5 0.6^10 = 0.0015116544; weighted by t:
+ *       0.0382558272.
+ * Pixel: 0.15 + 0.0030233088 + 0.0382558272 = 0.191279136.  (With the
+ * wall's shadow left out p2 gets light 1 and the pixel 0.2295349632.)
+ */
+START_TEST(test_shortcuts_lone_glass_sphere_shadows_itself)
+{
+    scene_model *s = load("image { width 3 height 3 max_depth 2 background 0 }\n"
+                          "camera { orthographic eye [0, 3, 4] look_at [0, 0, 0] up [0, 1, 0] width 0.5 }\n"
+                          "distant_light { direction [0, -1, 0] power 1 }\n"
+                          "sphere { center [0, 0, 0] radius 1 material { Kd 0.5 Ks 0.5 n 10 t 0.5 ior 1.5 } }\n");
+    for (int off = 0; off <= 1; off++) {
+        img_buf img;
+        render(s, off, &img, NULL);
+        const double *px = img_pixel(&img, 1, 1);
+        for (int c = 0; c < 3; c++)
+            ck_assert_rel(px[c], 0.191279136, 1e-13);
+        img_free(&img);
+    }
+    scene_free(s);
+}
+END_TEST
+
+/* [SHADE-SHORTCUT-OFF-1] The switch does switch: a lone diffuse plane
+ * under a light sends no shadow ray with the shortcuts on (nothing can
+ * occlude it) and one per camera ray with them off, and the BVH tests
+ * every primitive for every ray with them off. */
+START_TEST(test_shortcuts_off_does_all_the_work)
+{
+    scene_model *s = load("image { width 4 height 4 max_depth 3 }\n"
+                          "camera { eye [0, 3, 5] look_at [0, 0, 0] }\n"
+                          "point_light { position [0, 5, 0] }\n"
+                          "plane { material { Kd 0.5 } }\n");
+    img_buf on, off;
+    render_stats st_on, st_off;
+    render(s, 0, &on, &st_on);
+    render(s, 1, &off, &st_off);
+    ck_assert_int_eq(st_on.shadows, 0);
+    ck_assert_int_eq(st_on.trace.shadow_rays, 0);
+    ck_assert_int_eq(st_off.no_shortcuts, 1);
+    ck_assert_int_eq(st_off.shadows & st_off.specular & st_off.reflection & st_off.refraction, 1);
+    ck_assert_int_ge(st_off.trace.shadow_rays, 16);
+    ck_assert_int_gt(st_off.trace.reflection_rays, 0);
+    ck_assert_int_gt(st_off.trace.refraction_rays, 0);
+    ck_assert(memcmp(on.rgb, off.rgb, sizeof(double) * 3 * 16) == 0);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+END_TEST
+
+/* [SHADE-SHORTCUT-BVH-1] With culling off the BVH tests every bounded
+ * primitive for every ray: a ray that meets one sphere of a row of 20
+ * tests all 20, against a handful with culling. */
+START_TEST(test_shortcuts_bvh_exhaustive_tests_everything)
+{
+    scene_prim prims[20];
+    bvh b;
+    memset(prims, 0, sizeof prims);
+    for (int i = 0; i < 20; i++) {
+        prims[i].kind = PRIM_SPHERE;
+        prims[i].mesh = -1;
+        prims[i].u.sphere.center = vec_make(3.0 * i, 0, 0);
+        prims[i].u.sphere.radius = 1;
+    }
+    ck_assert(bvh_build(&b, prims, 20, NULL));
+    for (int exhaustive = 0; exhaustive <= 1; exhaustive++) {
+        ray r = {vec_make(0, 0, 5), vec_make(0, 0, -1), 0, HUGE_VAL};
+        hit h;
+        bvh_stats st = {0, 0};
+        b.exhaustive = exhaustive;
+        ck_assert(bvh_intersect_stats(&b, prims, &r, &h, &st));
+        ck_assert_int_eq(h.prim, 0);
+        ck_assert_near(h.t, 4, 1e-12);
+        if (exhaustive)
+            ck_assert_int_eq(st.prims_tested, 20);
+        else
+            ck_assert_int_lt(st.prims_tested, 20);
+    }
+    bvh_free(&b);
+}
+END_TEST
+
+/* The bytes of the file at path into buf (size bytes); how many. */
+static size_t file_bytes(const char *path, char *buf, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", path);
+    size_t n = fread(buf, 1, size, f);
+    fclose(f);
+    return n;
+}
+
+/* [SHADE-SHORTCUT-OFF-1] [EMBED-API-7] `refray render --no-shortcuts`
+ * reaches the tracer through the public API: on a lone plane under a
+ * point light the shadow pass, skipped with the shortcuts, runs (one
+ * shadow ray for each of the 8 x 6 x 2 x 2 camera rays, all of which meet
+ * the plane), and the file written is the same to the byte. */
+START_TEST(test_shortcuts_cli_no_shortcuts)
+{
+    char dir[64], on[128], off[128];
+    static char a[8192], b[8192];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "shortcuts");
+    cli_path(on, sizeof on, dir, "on.pfm");
+    cli_path(off, sizeof off, dir, "off.pfm");
+    const char *scene = "scenes/analytic/plane_point_inverse_square.scene";
+    const char *with[] = {"render", scene, "--width", "8", "--height", "6", "--stats", "-q", "-o", on, NULL};
+    cli_refray(&r, with);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    ck_assert_msg(strstr(r.err, "  passes: shadows skipped (nothing can occlude)"), "%s", r.err);
+    ck_assert_msg(strstr(r.err, " 0 shadow,"), "%s", r.err);
+    const char *without[] = {"render", scene, "--width", "8", "--height", "6", "--stats", "-q", "--no-shortcuts",
+                             "-o", off, NULL};
+    cli_refray(&r, without);
+    ck_assert_msg(r.code == 0, "%s", r.err);
+    ck_assert_msg(strstr(r.err, "  passes (every shortcut off): shadows on,"), "%s", r.err);
+    ck_assert_msg(strstr(r.err, " 192 shadow,"), "%s", r.err);
+    size_t na = file_bytes(on, a, sizeof a), nb = file_bytes(off, b, sizeof b);
+    ck_assert(na > 8 * 6 * 12 && na < sizeof a);
+    ck_assert(na == nb && memcmp(a, b, na) == 0);
+    cli_remove(dir);
+}
+END_TEST
+
+/* Scene index of the random generator, rendered both ways and compared;
+ * the failing scene's text is printed. */
+static void check_random_scene(int index)
+{
+    static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
+    dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
+    int status;
+    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", index, status, g.text);
+    img_buf on, off;
+    render(s, 0, &on, NULL);
+    render(s, 1, &off, NULL);
+    size_t n = 3 * (size_t)on.width * (size_t)on.height;
+    for (size_t i = 0; i < n; i++)
+        ck_assert_msg(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0,
+                      "scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", index, i, on.rgb[i],
+                      off.rgb[i], g.text);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+
+/* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
+ * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1]
+ * Random scenes: identical bits with the shortcuts on and off. */
+START_TEST(test_shortcuts_random_scenes_bit_identical)
+{
+    for (int k = 0; k < RANDOM_BATCH; k++)
+        check_random_scene(_i * RANDOM_BATCH + k);
+}
+END_TEST
+
+Suite *suite_shortcuts(void)
+{
+    Suite *s = suite_create("shortcuts");
+    TCase *tc = tcase_create("shortcuts");
+    tcase_set_timeout(tc, 20);
+    tcase_add_test(tc, test_shortcuts_camera_inside_opaque_sphere_is_dark);
+    tcase_add_test(tc, test_shortcuts_lone_glass_sphere_shadows_itself);
+    tcase_add_test(tc, test_shortcuts_off_does_all_the_work);
+    tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
+    tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
+    tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
+    suite_add_tcase(s, tc);
+    return s;
+}
