@@ -9,6 +9,8 @@
  * worker behind.  The reference is always a plain `refray render` of the
  * whole image (--jobs 1), compared byte for byte or double for double.
  */
+/* posix_openpt and its kin, for the progress bar's terminal. */
+#define _XOPEN_SOURCE 700
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -559,6 +561,74 @@ START_TEST(test_scaling_killed_worker_and_sigint)
 }
 END_TEST
 
+/* What refray with args writes to its standard error when that is a
+ * terminal (a pseudo-terminal here), into buf. */
+static void run_on_terminal(const char *const *args, char *buf, size_t size)
+{
+    const char *argv[64];
+    int n = 0, master = posix_openpt(O_RDWR | O_NOCTTY), status;
+    ck_assert_int_ge(master, 0);
+    ck_assert_int_eq(grantpt(master), 0);
+    ck_assert_int_eq(unlockpt(master), 0);
+    const char *slave = ptsname(master);
+    ck_assert_ptr_nonnull(slave);
+    argv[n++] = cli_refray_bin();
+    for (int i = 0; args[i]; i++)
+        argv[n++] = args[i];
+    argv[n] = NULL;
+    fflush(NULL);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        int tty = open(slave, O_RDWR | O_NOCTTY), null = open("/dev/null", O_RDWR);
+        dup2(null, 0);
+        dup2(null, 1);
+        dup2(tty, 2);
+        close(master);
+        execv(argv[0], (char *const *)argv);
+        _exit(127);
+    }
+    size_t used = 0;
+    ssize_t got;
+    /* Linux reports EIO once the last holder of the terminal has gone. */
+    while (used + 1 < size && (got = read(master, buf + used, size - 1 - used)) > 0)
+        used += (size_t)got;
+    buf[used] = '\0';
+    close(master);
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "refray failed: %s", buf);
+}
+
+/* [SCALE-JOBS-5] --jobs 3 draws one progress bar for the whole image on
+ * a terminal: its percentages never go back, it reaches 100 % once, and
+ * it ends its line once. */
+START_TEST(test_scaling_one_progress_bar)
+{
+    char dir[64], out[300];
+    static char text[1 << 16];
+    cli_scratch(dir, sizeof dir, "scale");
+    const char *extra[] = {"--jobs", "3", "-o", cli_path(out, sizeof out, dir, "o.pfm"), NULL}, *args[64];
+    render_args(args, SLOW, extra);
+    run_on_terminal(args, text, sizeof text);
+    int last = -1, full = 0, bars = 0, lines = 0;
+    for (const char *p = text; *p; p++) {
+        lines += *p == '\n';
+        if (*p != '[')
+            continue;
+        const char *pct = strchr(p, '%');
+        ck_assert_ptr_nonnull(pct);
+        int v = atoi(pct - 3);
+        ck_assert_msg(v >= last, "the bar went back from %d %% to %d %%:\n%s", last, v, text);
+        last = v;
+        full += v == 100;
+        bars++;
+    }
+    ck_assert_msg(bars >= 2 && full == 1 && last == 100, "%d bars, %d at 100 %%:\n%s", bars, full, text);
+    ck_assert_msg(lines == 1, "%d lines:\n%s", lines, text);
+    cli_remove(dir);
+}
+END_TEST
+
 /* [SCALE-RESUME-1] A render with --checkpoint stopped by SIGINT after its
  * first tiles keeps them and writes nothing; the same command renders
  * only the other bands (the checkpoint's split, [TILE-SPLIT-2], though
@@ -887,6 +957,7 @@ Suite *suite_scaling(void)
     TCase *runs = tcase_create("runs");
     tcase_set_timeout(runs, 120);
     tcase_add_test(runs, test_scaling_killed_worker_and_sigint);
+    tcase_add_test(runs, test_scaling_one_progress_bar);
     tcase_add_test(runs, test_scaling_resume);
     tcase_add_test(runs, test_scaling_resume_after_kill);
     tcase_add_test(runs, test_scaling_checkpoint_of_another_render);
