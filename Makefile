@@ -107,7 +107,11 @@ Q := @
 endif
 
 DRIVER_SRCS := $(wildcard src/cli/*.c)
-OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c)
+JSON_SRCS   := src/scene/json_read.c src/scene/load_json.c src/scene/load_json_mesh.c \
+               src/export/export_json_doc.c src/export/export_json_conv.c src/export/export_json_mesh.c \
+               src/export/export_json_print.c
+OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c) \
+                 $(if $(filter 1,$(JSON)),,$(JSON_SRCS))
 LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*/*.c))
 TEST_SRCS   := $(wildcard tests/*.c)
 GEN_SRCS    := $(GEN)/scene.tab.c $(GEN)/scene.lex.c
@@ -144,18 +148,19 @@ $(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
 FLAGS_STAMP := $(BUILD)/obj/flags
 FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
-# The public library needs no jansson (only the kit's manifests use it).
-PUBLIC_LINK_LIBS = $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
+# The public library reads JSON scenes with jansson (src/scene/load_json*.c).
+PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
+# python3-jsonschema: the schema test of the JSON scene format (tests/json_schema.sh).
 # parallel: GNU parallel, for the test of the recipe in spec/scaling.md.
 DEBS := flex bison check pkg-config parallel $(if $(filter 1,$(PNG)),libpng-dev) \
-        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev) \
+        $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema) \
         $(if $(findstring clang,$(CC)),clang)
 ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -297,19 +302,40 @@ kit: $(REFRAY)
 	@echo "kit: $(KIT_DIR)/ and $(KIT_TARBALL)"
 
 # Other renderers measured by the oracle through the kit (spec/crosscheck.md,
-# tests/crosscheck.sh): installs POV-Ray (Debian povray) when missing, builds
-# the kit, runs `refray conform` with each renderer's command line, prints
+# tests/crosscheck.sh): installs POV-Ray (Debian povray) and Mitsuba 3 (the
+# venv below) when missing, builds the kit, runs `refray conform` with each
+# renderer's command line, prints
 # the tables and writes them into spec/crosscheck.md (CROSSCHECK_UPDATE=0:
 # print only); every file of the run is kept in build/crosscheck/.
 # CROSSCHECK_ONLY="NAME ..." runs only those scenes.
 CROSSCHECK_UPDATE ?= 1
 CROSSCHECK_ONLY ?=
 
-crosscheck: kit
+crosscheck: kit mitsuba-venv
 	$(Q)REFRAY=$(REFRAY) KIT=$(KIT_DIR) OUT=build/crosscheck UPDATE_SPEC=$(CROSSCHECK_UPDATE) \
-	  ONLY="$(CROSSCHECK_ONLY)" sh tests/crosscheck.sh
+	  ONLY="$(CROSSCHECK_ONLY)" MITSUBA_PYTHON=$(MITSUBA_VENV)/bin/python sh tests/crosscheck.sh
 
-# Differential testing against POV-Ray 3.7 (spec/crosscheck.md, section 5):
+# Mitsuba 3 for `make crosscheck` (tests/conform/mitsuba3.py, spec/crosscheck.md
+# section 5): a virtual environment under build/ with the versions of the
+# recorded table, from PyPI, made only when missing (`make check` never needs
+# it).  Debian's python3 makes one only with python3-venv, installed here
+# when that is what fails.
+MITSUBA_VENV    := build/mitsuba-venv
+MITSUBA_PYTHON3 ?= /usr/bin/python3
+MITSUBA_PIP     := mitsuba==3.9.1 drjit==1.5.0 numpy==2.4.6
+
+mitsuba-venv: $(MITSUBA_VENV)/installed
+$(MITSUBA_VENV)/installed:
+	$(Q)rm -rf $(MITSUBA_VENV); $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV) >/dev/null 2>&1 || { \
+	  rm -rf $(MITSUBA_VENV); echo "mitsuba-venv: installing python3-venv"; \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq python3-venv >/dev/null && \
+	  $(MITSUBA_PYTHON3) -m venv $(MITSUBA_VENV); }
+	@echo "mitsuba-venv: pip install $(MITSUBA_PIP)"
+	$(Q)$(MITSUBA_VENV)/bin/pip install -q $(MITSUBA_PIP)
+	$(Q)echo "$(MITSUBA_PIP)" > $@
+
+# Differential testing against POV-Ray 3.7 (spec/crosscheck.md, section 6):
 # the minimal scenes of past findings (tests/difftest/regress/), then N
 # random scenes of seed SEED (tests/difftest/gen.c, only what the export
 # maps exactly), rendered by refray and by POV-Ray and compared pixel by
@@ -353,7 +379,7 @@ fuzz:
 fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
 	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
 	$(Q)mkdir -p $(BUILD)/corpus
-	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
+	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/bad/*.json tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
 	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
 	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
 	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
@@ -369,9 +395,18 @@ TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$
 # The kit's stand-alone checker (tests/conform/kit_check.c): one C99 file that
 # needs no library, built here only to be tested against `refray compare`.
 KIT_CHECK := $(BUILD)/kit_check
+# With JSON, the exports are checked against spec/scene.schema.json by a
+# validator in Python (tests/json_schema.sh) and the Mitsuba adapter's
+# decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh), on
+# the other core while the suite runs; their report follows the suite's.
+SCHEMA_LOG := $(BUILD)/json-schema.log
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
-	$(Q)REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
-	  $(VALGRIND_CMD) $(TESTBIN)
+	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ { sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && \
+	  sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry; } > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
+	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
+	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
+	exit $$rc
 	$(Q)$(MAKE) --no-print-directory embed
 
 # The library as a host sees it: installed into $(STAGE), the two examples
@@ -437,7 +472,7 @@ $(PUBLIC_SO): $(PUBLIC_OBJS) src/api/librefray.map
 # build's optional libraries as private dependencies.  An optional library
 # with a pkg-config module adds it to PC_REQUIRES_PRIVATE, one without
 # adds its flags to PC_LIBS_PRIVATE.
-PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng)
+PC_REQUIRES_PRIVATE := $(if $(filter 1,$(PNG)),libpng) $(if $(filter 1,$(JSON)),jansson)
 PC_LIBS_PRIVATE     := $(EXR_LIBS) $(LDLIBS)
 $(BUILD)/refray.pc: src/api/refray.pc.in include/refray.h Makefile
 	@mkdir -p $(dir $@)
@@ -473,6 +508,7 @@ $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 # the command line (the fuzz build) does not drop them.
 $(BUILD)/obj/src/image/image_png.o: OBJ_CFLAGS += $(PNG_CFLAGS)
 $(BUILD)/obj/src/image/image_exr.o: OBJ_CFLAGS += $(EXR_CFLAGS)
+$(JSON_SRCS:%.c=$(BUILD)/obj/%.o): OBJ_CFLAGS += $(JSON_CFLAGS)
 $(BUILD)/obj/src/verify/manifest.o $(BUILD)/obj/src/verify/conform_report.o: OBJ_CFLAGS += $(JSON_CFLAGS)
 # A suite file exports only suite_NAME(), declared by the runner itself.
 $(BUILD)/obj/tests/%.o: OBJ_CFLAGS += $(CHECK_CFLAGS) -Wno-missing-prototypes

@@ -201,15 +201,22 @@ typedef struct rf_scene rf_scene;
 
 /*
  * Loads the scene text[0..size) (no NUL needed), called name in messages,
- * with o (NULL: the defaults).  Reads no file: include and mesh files come
- * from o->resolver only.  Returns RF_OK with *out set, or RF_ERR_DATA (the
- * reasons went to o->diagnostic) or RF_ERR_NO_MEMORY.
+ * with o (NULL: the defaults).  A name ending in ".json" (any case) makes
+ * it a JSON scene (spec/json.md, as `refray export --to json` writes it),
+ * any other name a scene in the scene language (spec/language.md).  Reads
+ * no file: include and mesh files come from o->resolver only.  Returns
+ * RF_OK with *out set, or RF_ERR_DATA (the reasons went to o->diagnostic)
+ * or RF_ERR_NO_MEMORY; RF_ERR_USAGE for a JSON scene when the library was
+ * built without JSON support.  A JSON text is parsed by jansson, whose
+ * own allocations (freed before the call returns) do not go through
+ * o->allocator (spec/embedding.md).
  */
 RF_API rf_status rf_scene_load_memory(const char *name, const char *text, size_t size,
                                       const rf_load_options *o, rf_scene **out);
 
 /*
- * Loads the scene file path.  Unless o has a resolver, include and mesh
+ * Loads the scene file path (JSON when it ends in ".json", as above).
+ * Unless o has a resolver, include and mesh
  * files are read from the file system relative to the including file, each
  * at most limits.max_file_bytes.  Returns as rf_scene_load_memory, and
  * RF_ERR_NO_INPUT, RF_ERR_DATA (over the size limit) or RF_ERR_IO when path

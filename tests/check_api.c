@@ -338,6 +338,17 @@ static rf_status memory_fetch(void *user, const char *from, const char *name, rf
     return RF_ERR_NO_INPUT;
 }
 
+/* Load options whose diagnostics go to c and whose files come from files. */
+static void collecting_options(rf_load_options *o, collected *c, const char *const *files)
+{
+    memset(c, 0, sizeof *c);
+    rf_load_options_init(o);
+    o->diagnostic = collect;
+    o->diagnostic_user = c;
+    o->resolver.fetch = memory_fetch;
+    o->resolver.user = (void *)files;
+}
+
 /* [EMBED-API-4] Diagnostics come as records with file, line, column,
  * severity, message and the source line; an error in an included file is
  * followed by the note "included from here"; the resolver's reason for a
@@ -347,13 +358,8 @@ START_TEST(test_api_diagnostics_and_resolver)
     static const char *const files[] = {"part.scene", "sphere {\n  radius -1 }\n", "tri.obj",
                                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", NULL};
     collected c;
-    memset(&c, 0, sizeof c);
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.diagnostic = collect;
-    o.diagnostic_user = &c;
-    o.resolver.fetch = memory_fetch;
-    o.resolver.user = (void *)files;
+    collecting_options(&o, &c, files);
     rf_scene *s = (rf_scene *)&c;
     static const char text[] = "mesh { file \"tri.obj\" }\ninclude \"part.scene\"\n";
     ck_assert_int_eq(rf_scene_load_memory("main.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
@@ -381,6 +387,66 @@ START_TEST(test_api_diagnostics_and_resolver)
     ck_assert_int_eq(info.primitives, 2);
     ck_assert_uint_eq(info.features & RF_FEATURE_MESHES, RF_FEATURE_MESHES);
     rf_scene_free(s);
+}
+END_TEST
+
+/* The plane scene above as a JSON scene (spec/json.md): every default
+ * written out, the distant light's falloff "none". */
+static const char plane_json[] =
+    "{\"format\": {\"name\": \"refray-scene\", \"version\": 1}, \"oracle\": null,\n"
+    " \"image\": {\"width\": 4, \"height\": 3, \"samples\": 1, \"max_depth\": 5, \"background\": [0, 0, 0]},\n"
+    " \"camera\": {\"projection\": \"orthographic\", \"eye\": [0, 1, 0], \"look_at\": [0, 0, 0], \"up\": [0, 0, 1],"
+    " \"width\": 1},\n"
+    " \"ambient\": [0.2, 0.2, 0.2],\n"
+    " \"materials\": [{\"name\": null, \"Kd\": [0.5, 0.5, 0.5], \"Ks\": [0, 0, 0], \"n\": 1, \"t\": 0, \"ior\": 1}],\n"
+    " \"lights\": [{\"kind\": \"distant\", \"direction\": [0, -1, 0], \"power\": [2, 2, 2], \"falloff\": \"none\"}],\n"
+    " \"primitives\": [{\"kind\": \"plane\", \"material\": 0, \"transform\": null, \"point\": [0, 0, 0],"
+    " \"normal\": [0, 1, 0]}%s]}\n";
+
+/* [EMBED-API-7] A name ending in ".json" makes the text a JSON scene: the
+ * plane scene renders to 1.1 as in the scene language; a mesh's file comes
+ * from the resolver; a diagnostic names the value by its JSON pointer.  A
+ * library without JSON support refuses it with RF_ERR_USAGE. */
+START_TEST(test_api_json_scenes)
+{
+    static const char *const files[] = {"tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", NULL};
+    char text[2048];
+    collected c;
+    rf_load_options o;
+    collecting_options(&o, &c, files);
+    rf_scene *s;
+    snprintf(text, sizeof text, plane_json, "");
+#ifdef REFRAY_HAVE_JSON
+    ck_assert_int_eq(rf_scene_load_memory("plane.JSON", text, strlen(text), &o, &s), RF_OK);
+    rf_image *img;
+    ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
+    for (int i = 0; i < 3 * 4 * 3; i++)
+        ck_assert_double_eq_tol(rf_image_pixels(img)[i], 1.1, 1e-12);
+    rf_image_free(img);
+    rf_scene_free(s);
+    snprintf(text, sizeof text, plane_json,
+             ",\n {\"kind\": \"mesh\", \"material\": 0, \"source\": null, \"file\": \"tri.obj\"}");
+    ck_assert_int_eq(rf_scene_load_memory("plane.json", text, strlen(text), &o, &s), RF_OK);
+    rf_scene_info info;
+    rf_scene_get_info(s, &info);
+    ck_assert_int_eq(info.planes, 1);
+    ck_assert_int_eq(info.mesh_triangles, 1);
+    rf_scene_free(s);
+    ck_assert_int_eq(c.count, 0);
+    snprintf(text, sizeof text, plane_json, "");
+    char *one = strstr(text, "\"width\": 1}");
+    one[9] = '0';
+    ck_assert_int_eq(rf_scene_load_memory("plane.json", text, strlen(text), &o, &s), RF_ERR_DATA);
+    ck_assert_int_eq(c.count, 1);
+    ck_assert_msg(strstr(c.text[0], "plane.json|3|") == c.text[0] &&
+                      strstr(c.text[0], "|0|/camera/width: width must be > 0, got 0|"),
+                  "%s", c.text[0]);
+#else
+    ck_assert_int_eq(rf_scene_load_memory("plane.json", text, strlen(text), &o, &s), RF_ERR_USAGE);
+    ck_assert_ptr_null(s);
+    ck_assert_int_eq(c.count, 1);
+    ck_assert_msg(strstr(c.text[0], "without JSON support"), "%s", c.text[0]);
+#endif
 }
 END_TEST
 
@@ -613,6 +679,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);
     tcase_add_test(tc, test_api_diagnostic_print);
+    tcase_add_test(tc, test_api_json_scenes);
     tcase_add_test(tc, test_api_scene_info);
     tcase_add_test(tc, test_api_scene_info_quadrics);
     tcase_add_test(tc, test_api_fixed_arena);

@@ -3,7 +3,12 @@
  *   # expect: LINE:COL: error: MESSAGE
  *
  * the exact first diagnostic the file must produce, without the file name
- * (LINE counts the header itself).  When the first error is in a file the
+ * (LINE counts the header itself).  A JSON scene, tests/bad/NAME.json
+ * (spec/json.md, "Diagnostics"), cannot hold a comment: its expectation is
+ * the first line of tests/bad/NAME.expect, in the same form (LINE counts
+ * the lines of the .json); they are checked only in builds with JSON
+ * (spec/json.md [JSON-DIAG-1] malformed JSON, [JSON-DIAG-2] a document
+ * that breaks the format).  When the first error is in a file the
  * scene reads (an include, an OBJ mesh), the expectation names that file
  * relative to tests/bad/: `# expect: inc/cycle_b.scene:2:9: error: ...`.
  * Lines right after it of the form `# then: LINE:COL: error|note: ...` are
@@ -41,13 +46,22 @@ static int by_name(const void *a, const void *b)
     return strcmp((const char *)a, (const char *)b);
 }
 
-static int is_scene(const char *name)
+static int ends_with(const char *name, const char *ext)
 {
-    size_t n = strlen(name);
-    return n > 6 && strcmp(name + n - 6, ".scene") == 0 && name[0] != '.';
+    size_t n = strlen(name), k = strlen(ext);
+    return n > k && strcmp(name + n - k, ext) == 0;
 }
 
-/* The *.scene files of tests/bad, sorted; count -1 when the directory
+static int is_scene(const char *name)
+{
+#ifdef REFRAY_HAVE_JSON
+    if (ends_with(name, ".json") && name[0] != '.')
+        return 1;
+#endif
+    return ends_with(name, ".scene") && name[0] != '.';
+}
+
+/* The *.scene (and *.json) files of tests/bad, sorted; count -1 when the directory
  * cannot be read. */
 static void corpus_read(corpus *c)
 {
@@ -85,10 +99,15 @@ static void expected_text(const char *path, const char *expect, char *want, size
 /* The `# expect:` line and the `# then:` lines after it. */
 static void expected_lines(const char *path, expectation *e)
 {
-    char header[LINE_MAX_LEN];
+    char header[LINE_MAX_LEN], sidecar[LINE_MAX_LEN];
     static const char tag[] = "# expect: ", then[] = "# then: ";
-    FILE *f = fopen(path, "rb");
-    ck_assert_msg(f != NULL, "cannot open %s", path);
+    const char *from = path;
+    if (ends_with(path, ".json")) {
+        snprintf(sidecar, sizeof sidecar, "%.*s.expect", (int)(strlen(path) - 5), path);
+        from = sidecar;
+    }
+    FILE *f = fopen(from, "rb");
+    ck_assert_msg(f != NULL, "cannot open %s", from);
     e->count = 0;
     while (e->count < MAX_EXPECT && fgets(header, sizeof header, f)) {
         header[strcspn(header, "\r\n")] = '\0';

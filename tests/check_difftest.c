@@ -1,6 +1,6 @@
 /*
  * The pieces of `make difftest` that need no POV-Ray (spec/crosscheck.md,
- * section 5): the random scene generator (tests/difftest/gen.c) and the
+ * section 6): the random scene generator (tests/difftest/gen.c) and the
  * ray-tree hash (trace_stats.path) by which edge pixels are told from
  * interior ones.
  */

@@ -75,9 +75,13 @@ static int load_and_render(const char *path, const char *text, const mem *m, int
     o.warnings = 0;
     int status;
     scene_model *s;
+    scene_file_reader files = {-1, *m};
     if (text) {
+        /* Files the text names come from beside path; a .json path makes it
+         * a JSON scene. */
         scene_source root = {path, NULL, text, strlen(text)};
-        s = scene_load_source(&root, &o, &status);
+        o.resolver = scene_file_resolver(&files);
+        s = scene_file_load_source(&root, &o, &status);
     } else {
         s = scene_file_load_with(path, &o, &status);
     }
@@ -169,6 +173,37 @@ START_TEST(test_mem_fail_parser_and_diagnostics)
 }
 END_TEST
 
+#ifdef REFRAY_HAVE_JSON
+/* [EMBED-MEM-2] for the JSON reader (spec/json.md): its own allocations
+ * (element spans, inline mesh arrays, names, an OBJ file's mesh) fail in
+ * turn too, in a good scene and in one with errors.  jansson's parse tree
+ * is jansson's, not the hook's (spec/embedding.md), and is not swept. */
+START_TEST(test_mem_fail_json)
+{
+    static const char head[] =
+        "{\"format\": {\"name\": \"refray-scene\", \"version\": 1}, \"oracle\": \"none_such\",\n"
+        " \"image\": {\"width\": 4, \"height\": 3, \"samples\": 1, \"max_depth\": 3, \"background\": [0, 0, 0]},\n"
+        " \"camera\": {\"projection\": \"perspective\", \"eye\": [0, 0, 5], \"look_at\": [0, 0, 0],"
+        " \"up\": [0, 1, 0], \"fov\": 60},\n"
+        " \"ambient\": [0.1, 0.1, 0.1],\n"
+        " \"materials\": [{\"name\": \"grey\", \"Kd\": [0.5, 0.5, 0.5], \"Ks\": [0.2, 0.2, 0.2], \"n\": 8,"
+        " \"t\": 0, \"ior\": 1}],\n"
+        " \"lights\": [{\"kind\": \"rectangle\", \"corner\": [-1, 3, 2], \"edge_u\": [2, 0, 0],"
+        " \"edge_v\": [0, 0, 2], \"power\": [4, 4, 4], \"falloff\": \"linear\", \"d0\": 0, \"samples\": 4}],\n"
+        " \"primitives\": [\n"
+        "  {\"kind\": \"sphere\", \"material\": 0, \"transform\": null, \"center\": [0, 0, 0], \"radius\": %s},\n"
+        "  {\"kind\": \"mesh\", \"material\": 0, \"source\": null, \"vertices\": [[0, 0, 1], [1, 0, 1], [0, 1, 1]],"
+        " \"normals\": [[0, 0, 1]], \"triangles\": [[0, 1, 2]], \"triangle_normals\": [[0, 0, 0]]},\n"
+        "  {\"kind\": \"mesh\", \"material\": 0, \"source\": null, \"file\": \"tetrahedron.obj\"}]}\n";
+    char text[2048];
+    snprintf(text, sizeof text, head, "0.5");
+    sweep("tests/obj/mem.json", text, STATUS_OK);
+    snprintf(text, sizeof text, head, "-1");
+    sweep("tests/obj/mem.json", text, STATUS_DATA);
+}
+END_TEST
+#endif
+
 Suite *suite_mem(void)
 {
     Suite *s = suite_create("mem");
@@ -179,6 +214,9 @@ Suite *suite_mem(void)
     tcase_add_test(tc, test_mem_whole_life);
     tcase_add_loop_test(tc, test_mem_fail_everywhere, 0, (int)(sizeof scenes / sizeof scenes[0]));
     tcase_add_test(tc, test_mem_fail_parser_and_diagnostics);
+#ifdef REFRAY_HAVE_JSON
+    tcase_add_test(tc, test_mem_fail_json);
+#endif
     suite_add_tcase(s, tc);
     return s;
 }

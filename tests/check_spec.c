@@ -122,10 +122,11 @@ static int id_listed(const id_list *l, const char *id)
     return 0;
 }
 
-/* Adds every "[LANG-...]" of text to l (once each). */
-static void collect_ids(const char *text, id_list *l)
+/* Adds every "[PREFIX-...]" of text to l (once each); prefix is "[LANG-"
+ * or "[JSON-". */
+static void collect_ids(const char *text, const char *prefix, id_list *l)
 {
-    for (const char *p = strstr(text, "[LANG-"); p; p = strstr(p + 1, "[LANG-")) {
+    for (const char *p = strstr(text, prefix); p; p = strstr(p + 1, prefix)) {
         size_t n = strspn(p + 1, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-");
         if (p[1 + n] != ']' || n + 1 >= sizeof l->ids[0])
             continue;
@@ -137,41 +138,57 @@ static void collect_ids(const char *text, id_list *l)
     }
 }
 
-/* The IDs cited by the test sources tests/check_*.c. */
-static void cited_ids(id_list *l)
+/* The IDs cited by the test sources tests/check_NAME.c and the test
+ * scripts tests/NAME.sh. */
+static void cited_ids(const char *prefix, id_list *l)
 {
     DIR *dir = opendir(TESTS);
     ck_assert_ptr_nonnull(dir);
     l->count = 0;
     for (struct dirent *e = readdir(dir); e; e = readdir(dir)) {
         size_t n = strlen(e->d_name);
-        if (strncmp(e->d_name, "check_", 6) != 0 || n < 3 || strcmp(e->d_name + n - 2, ".c") != 0 ||
-            strcmp(e->d_name, "check_spec.c") == 0)
+        int script = n > 3 && strcmp(e->d_name + n - 3, ".sh") == 0;
+        if (!script && (strncmp(e->d_name, "check_", 6) != 0 || n < 3 || strcmp(e->d_name + n - 2, ".c") != 0 ||
+                        strcmp(e->d_name, "check_spec.c") == 0))
             continue;
         char path[512];
         snprintf(path, sizeof path, "%s/%s", TESTS, e->d_name);
         char *text = read_text(path);
-        collect_ids(text, l);
+        collect_ids(text, prefix, l);
         free(text);
     }
     closedir(dir);
 }
 
-START_TEST(test_spec_defines_every_cited_id)
+/* Every ID of spec_path with prefix is cited by a test, and every one a
+ * test cites is defined there; at least `least` of them. */
+static void check_ids(const char *spec_path, const char *prefix, int least)
 {
     id_list cited, defined;
-    char *spec = read_text(SPEC);
-    cited_ids(&cited);
+    char *spec = read_text(spec_path);
+    cited_ids(prefix, &cited);
     defined.count = 0;
-    collect_ids(spec, &defined);
-    ck_assert_int_ge(cited.count, 40);
+    collect_ids(spec, prefix, &defined);
+    ck_assert_int_ge(cited.count, least);
     for (int i = 0; i < cited.count; i++)
         ck_assert_msg(id_listed(&defined, cited.ids[i]), "a test cites [%s], which %s does not define",
-                      cited.ids[i], SPEC);
+                      cited.ids[i], spec_path);
     for (int i = 0; i < defined.count; i++)
-        ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", SPEC,
+        ck_assert_msg(id_listed(&cited, defined.ids[i]), "%s defines [%s], which no test cites", spec_path,
                       defined.ids[i]);
     free(spec);
+}
+
+START_TEST(test_spec_defines_every_cited_id)
+{
+    check_ids(SPEC, "[LANG-", 40);
+}
+END_TEST
+
+/* The same for the JSON format's statements (spec/json.md). */
+START_TEST(test_spec_json_defines_every_cited_id)
+{
+    check_ids("spec/json.md", "[JSON-", 10);
 }
 END_TEST
 
@@ -183,6 +200,7 @@ Suite *suite_spec(void)
     tcase_add_test(tc, test_spec_lists_every_property_of_every_block);
     tcase_add_test(tc, test_spec_helpers);
     tcase_add_test(tc, test_spec_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_json_defines_every_cited_id);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -4,14 +4,20 @@
 #
 # Each renderer is one `refray conform` run over the kit with the command
 # line and options that renderer needs (run_renderer below): its table is
-# conform's --markdown, its JUnit XML and text table stay in $OUT.  After
-# the tables come the kit's notes on what the POV-Ray export could not
-# match, read from the header of each .pov file.
+# conform's --markdown, its JUnit XML and text table stay in $OUT.  Mitsuba
+# 3 reads the kit's .json through tests/conform/mitsuba3.py; the scenes
+# whose model it does not share exit 69, and their rows get the adapter's
+# reason (its --dry-run says it without rendering).  A scene that is not
+# analytic, tests/conform/axes.scene, checks Mitsuba's camera and image
+# orientation against refray's own render.  After the tables come the
+# kit's notes on what the POV-Ray export could not match, read from the
+# header of each .pov file.
 #
 # Environment: REFRAY (the program), KIT (a kit made by `refray kit`), OUT
 # (the work directory), UPDATE_SPEC=1 to write the result into
 # spec/crosscheck.md between its crosscheck-table markers, ONLY="NAME ..."
-# for some scenes only.  POV-Ray is installed from Debian (`povray`) when
+# for some scenes only, MITSUBA_PYTHON (a Python with mitsuba and numpy:
+# `make mitsuba-venv`).  POV-Ray is installed from Debian (`povray`) when
 # it is missing.
 set -u
 
@@ -20,6 +26,8 @@ KIT=${KIT:-build/kit}
 OUT=${OUT:-build/crosscheck}
 UPDATE_SPEC=${UPDATE_SPEC:-0}
 ONLY=${ONLY:-}
+MITSUBA_PYTHON=${MITSUBA_PYTHON:-build/mitsuba-venv/bin/python}
+MITSUBA_NOT_EXPRESSIBLE=69
 SPEC=spec/crosscheck.md
 ROOT=$(pwd)
 
@@ -52,6 +60,7 @@ run_renderer() {
     status=$?
     # 0: every scene passed, 1: some failed; both are a measurement.
     [ "$status" -le 1 ] || die "conform for $heading stopped with exit $status: $(cat "$OUT/$stem.err")"
+    [ "$stem" != mitsuba ] || mitsuba_reasons "$OUT/$stem.md"
     {
         echo
         echo "### $heading"
@@ -86,6 +95,53 @@ pov_notes() {
     done
 }
 
+# Puts the adapter's reason into the rows of the scenes it refused (exit 69)
+# of the Markdown table $1, and adds a line that counts them.
+mitsuba_reasons() {
+    reasons=$OUT/mitsuba-reasons.tsv
+    : >"$reasons"
+    for json in "$KIT"/scenes/*/*.json; do
+        why=$("$MITSUBA_PYTHON" "$ROOT/tests/conform/mitsuba3.py" --dry-run "$json" 2>&1 >/dev/null |
+            sed -n 's/^mitsuba3.py: model not expressible: //p')
+        [ -z "$why" ] || printf '%s\t%s\n' "$(basename "$json" .json)" "$why" >>"$reasons"
+    done
+    awk -F '\t' -v code="$MITSUBA_NOT_EXPRESSIBLE" '
+        NR == FNR { why[$1] = $2; next }
+        {
+            at = index($0, "| the renderer exited with status " code " |")
+            if (at > 0) {
+                name = substr($0, 3, index(substr($0, 3), " ") - 1)
+                $0 = substr($0, 1, at + 1) "not expressible: " why[name] " |"
+                refused++
+            }
+            print
+        }
+        END { printf "\nNot expressible in Mitsuba 3 (the adapter exits %d with the reason): %d scenes.\n", code, refused }
+    ' "$reasons" "$1" >"$1.tmp" && mv "$1.tmp" "$1"
+}
+
+# [XCHK-MITSUBA-AXES-1] tests/conform/axes.scene (asymmetric: perspective,
+# two lights, every shape the adapter maps but the cylinder) by Mitsuba
+# against refray's own render of it, into the Mitsuba section.
+mitsuba_axes() {
+    scene=tests/conform/axes.scene
+    "$REFRAY" export -W "$scene" --to json -o "$OUT/axes.json" &&
+        "$REFRAY" render -q "$scene" -o "$OUT/axes.pfm" &&
+        "$MITSUBA_PYTHON" tests/conform/mitsuba3.py "$OUT/axes.json" "$OUT/axes.exr" ||
+        die "the axes check could not run"
+    "$REFRAY" compare "$OUT/axes.exr" "$OUT/axes.pfm" --downsample 2 --tolerance 1e-4 >"$OUT/axes.txt"
+    [ $? -le 1 ] || die "the axes check's compare failed"
+    {
+        echo
+        echo "The axes check ([XCHK-MITSUBA-AXES-1]): \`$scene\` rendered by refray (PFM) and by the adapter"
+        echo "(its 2 x 2 samples as a 192 x 144 EXR), then"
+        echo
+        echo "    refray compare axes.exr axes.pfm --downsample 2 --tolerance 1e-4"
+        echo
+        grep -E '^(size|max abs|max rel|over):' "$OUT/axes.txt" | sed 's/^/    /'
+    } >>"$sections"
+}
+
 # Replaces the lines between the markers in $SPEC with $1 (atomically).
 update_spec() {
     [ -f "$SPEC" ] || die "$SPEC is missing"
@@ -109,10 +165,16 @@ run_renderer "POV-Ray ${pov_version:-3.7} (one thread, no anti-aliasing, 16-bit 
     --format png --downsample manifest --scale manifest --timeout 120 \
     --cmd "sh '$ROOT/tests/conform/povray.sh' {pov} {out} {width} {height}"
 
-# Mitsuba 3 (issue 10, 4b) goes here: one more run_renderer, with the
-# adapter that reads the kit's .json, e.g.
-#   run_renderer "Mitsuba 3 (scalar_rgb)" mitsuba "refray conform ... --cmd '...'" \
-#       --format exr --cmd "'$ROOT/build/mitsuba-venv/bin/python' '$ROOT/tests/conform/mitsuba.py' {json} {out}"
+case $MITSUBA_PYTHON in /*) mitsuba_abs=$MITSUBA_PYTHON ;; *) mitsuba_abs=$ROOT/$MITSUBA_PYTHON ;; esac
+versions=$("$MITSUBA_PYTHON" -c 'import mitsuba, drjit, numpy; print(mitsuba.__version__, drjit.__version__, numpy.__version__)') ||
+    die "no Mitsuba 3 at $MITSUBA_PYTHON (make mitsuba-venv)"
+# shellcheck disable=SC2086 # three words
+set -- $versions
+run_renderer "Mitsuba $1 (scalar_rgb; drjit $2, numpy $3; 32-bit float EXR)" mitsuba \
+    "refray conform --kit $KIT --format exr --downsample manifest --timeout 300 --cmd '$MITSUBA_PYTHON tests/conform/mitsuba3.py {json} {out}'" \
+    --format exr --downsample manifest --timeout 300 \
+    --cmd "'$mitsuba_abs' '$ROOT/tests/conform/mitsuba3.py' {json} {out}"
+mitsuba_axes
 
 case $REFRAY in /*) refray_abs=$REFRAY ;; *) refray_abs=$ROOT/$REFRAY ;; esac
 run_renderer "refray $("$REFRAY" --version | sed 's/^refray //') itself, through the same runner" refray \
@@ -125,7 +187,7 @@ table=$OUT/table.md
     echo "($(ls -d "$KIT"/scenes/*/ | wc -l | tr -d ' ') scenes).  Columns: the exact image's peak; max abs, RMS and max rel error"
     echo "over the compared pixels; pixels over the tolerance |out - exact| <= relative |exact| + absolute"
     echo "of the manifest; the renderer's wall time in seconds (POV-Ray's includes its start-up of about"
-    echo "0.6 s); the verdict and its reason."
+    echo "0.6 s, Mitsuba's its import of about 0.4 s and one render per light); the verdict and its reason."
     cat "$sections"
     echo
     echo "### What the POV-Ray export could not match, per scene"

@@ -97,7 +97,7 @@ rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, 
     int status;
     load_opts(o, &lo);
     scene_source root = {name, NULL, text, size};
-    *out = (rf_scene *)(void *)scene_load_source(&root, &lo, &status);
+    *out = (rf_scene *)(void *)scene_file_load_source(&root, &lo, &status);
     return api_status(status);
 }
 

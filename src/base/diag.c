@@ -21,6 +21,8 @@ void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_us
     d->warnings = 0;
     d->max_errors = 20;
     d->warnings_enabled = 1;
+    d->subject = NULL;
+    d->subject_ctx = NULL;
 }
 
 int diag_too_many(const diag *d)
@@ -68,6 +70,18 @@ static void deliver(const diag *d, diag_level level, src_span span, const char *
         emit_include_chain(d, f);
 }
 
+/* "SUBJECT: " into buf when the subject hook names the span's value;
+ * returns its length (0: none). */
+static size_t subject_prefix(const diag *d, src_span span, char *buf, size_t size)
+{
+    char name[256];
+    if (!d->subject || !d->sources || span.file < 0 || span.file >= d->sources->count ||
+        d->subject(d->subject_ctx, span, name, sizeof name) == 0)
+        return 0;
+    int n = snprintf(buf, size, "%s: ", name);
+    return n > 0 && (size_t)n < size ? (size_t)n : 0;
+}
+
 void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
 {
     if (level == DIAG_ERROR)
@@ -79,15 +93,17 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
     if (over || !d->sink)
         return;
     char local[MESSAGE_BYTES], *message = local;
+    size_t lead = subject_prefix(d, span, local, sizeof local);
     va_list ap;
     va_start(ap, fmt);
-    int n = vsnprintf(local, sizeof local, fmt, ap);
+    int n = vsnprintf(local + lead, sizeof local - lead, fmt, ap) + (int)lead;
     va_end(ap);
     const mem *m = d->sources ? &d->sources->mem : NULL;
     char *big = n >= (int)sizeof local ? mem_alloc(m, (size_t)n + 1) : NULL;
     if (big) {
+        memcpy(big, local, lead);
         va_start(ap, fmt);
-        vsnprintf(big, (size_t)n + 1, fmt, ap);
+        vsnprintf(big + lead, (size_t)n + 1 - lead, fmt, ap);
         va_end(ap);
         message = big;
     }

@@ -39,6 +39,13 @@ typedef struct diag {
     int warnings;
     int max_errors;            /* after this many errors further ones are counted, not delivered */
     int warnings_enabled;      /* 0: warnings are counted but not delivered */
+    /* Optional: what a span points at, put before the message as
+     * "SUBJECT: " (a JSON scene names the value by its JSON pointer, since
+     * a line and column alone do not say which field of a generated file
+     * is meant).  Writes at most size bytes into buf, NUL-terminated;
+     * returns 0 for none. */
+    size_t (*subject)(const void *ctx, src_span span, char *buf, size_t size);
+    const void *subject_ctx;
 } diag;
 
 void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_user);

@@ -13,12 +13,21 @@
 
 #include <stdint.h>
 
+/* The finaliser's constants, named so that `refray export --to json`
+ * writes the rule from the same numbers the sampler uses. */
+#define SAMPLER_GAMMA 0x9e3779b97f4a7c15ULL
+#define SAMPLER_MUL1 0xbf58476d1ce4e5b9ULL
+#define SAMPLER_MUL2 0x94d049bb133111ebULL
+#define SAMPLER_SHIFT1 30
+#define SAMPLER_SHIFT2 27
+#define SAMPLER_SHIFT3 31
+
 static inline uint64_t sampler_mix(uint64_t z)
 {
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
+    z += SAMPLER_GAMMA;
+    z = (z ^ (z >> SAMPLER_SHIFT1)) * SAMPLER_MUL1;
+    z = (z ^ (z >> SAMPLER_SHIFT2)) * SAMPLER_MUL2;
+    return z ^ (z >> SAMPLER_SHIFT3);
 }
 
 /* A key extended by one more counter. */

@@ -22,7 +22,8 @@ static const char usage_text[] =
     "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension);\n"
     "                       --jobs N, --tile I/N, --region, --checkpoint DIR for big ones\n"
     "  merge TILE... -o OUT put the tiles of one render together (spec/scaling.md)\n"
-    "  export SCENE --to pov  write POV-Ray SDL of the scene (-o OUT.pov, else stdout)\n"
+    "  export SCENE --to pov|json  write the scene as POV-Ray SDL or as JSON\n"
+    "                       (spec/json.md; -o OUT, else stdout)\n"
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
     "  oracle SCENE -o OUT  write the exact image of an analytic scene (.exr .pfm)\n"
     "  compare A B          compare image A with the reference B, --diff MAP for a map\n"
@@ -39,10 +40,31 @@ static const char usage_text[] =
     "\n"
     "  refray --help | -h         this text\n"
     "  refray --version           the version\n"
+    "  refray --features          the optional parts built in (png exr json)\n"
     "  refray COMMAND --help      the options of one command\n"
     "\n"
     "exit codes: 0 ok, 1 a check failed, 64 usage, 65 bad scene, 66 missing input,\n"
     "74 I/O error, 130 interrupted.  The language: spec/language.md.\n";
+
+/* One line naming the optional parts this build has, so scripts can ask
+ * (`refray --features | grep -qw json`). */
+static int cli_features(void)
+{
+    const char *parts[3];
+    int n = 0;
+#ifdef REFRAY_HAVE_PNG
+    parts[n++] = "png";
+#endif
+#ifdef REFRAY_HAVE_EXR
+    parts[n++] = "exr";
+#endif
+    if (scene_json_available())
+        parts[n++] = "json";
+    for (int i = 0; i < n; i++)
+        printf("%s%s", i ? " " : "", parts[i]);
+    printf("\n");
+    return STATUS_OK;
+}
 
 int cli_main(int argc, char **argv)
 {
@@ -57,6 +79,8 @@ int cli_main(int argc, char **argv)
         printf("refray %s\n", rf_version());
         return STATUS_OK;
     }
+    if (strcmp(cmd, "--features") == 0)
+        return cli_features();
     if (strcmp(cmd, "check") == 0)
         return cli_check(argc - 1, argv + 1);
     if (strcmp(cmd, "render") == 0)

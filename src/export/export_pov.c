@@ -22,14 +22,12 @@
  *   - a camera ray is trace level 1 and a secondary ray of level L is
  *     traced only while L <= max_trace_level (else black): refray's depth.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include "export/export_pov.h"
+#include "io/filewrite.h"
 #include "export/export_pov_far.h"
 #include "render/lightsample.h"
 
@@ -832,76 +830,29 @@ int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_note
 
 /* ---- The atomic file ---- */
 
-/* mkstemp makes 0600; give the file the mode a plain fopen would have:
- * an existing file's, else 0666 less the umask (read from /proc, since
- * asking umask(2) means changing it for the whole process). */
-static void set_mode(int fd, const char *path)
-{
-    struct stat sb;
-    unsigned mask = 022;
-    char line[128];
-    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode)) {
-        fchmod(fd, sb.st_mode & 07777);
-        return;
-    }
-    FILE *f = fopen("/proc/self/status", "r");
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "Umask: %o", &mask) == 1)
-            break;
-    if (f)
-        fclose(f);
-    fchmod(fd, (mode_t)(0666 & ~mask));
-}
+typedef struct pov_job {
+    const scene_model *s;
+    const pov_opts *o;
+    pov_notes *notes;
+} pov_job;
 
-/* Writes into the open temporary fd and closes it; 0 or the exit code. */
-static int fill_temp(int fd, const char *path, const scene_model *s, const pov_opts *o, pov_notes *notes)
+static int fill_pov(FILE *fp, void *ctx)
 {
-    set_mode(fd, path);
-    FILE *fp = fdopen(fd, "w");
-    if (!fp) {
-        close(fd);
-        return STATUS_IO;
-    }
-    int rc = pov_export_write(s, o, fp, notes);
-    if (rc == 0 && fsync(fileno(fp)) != 0)
-        rc = STATUS_IO;
-    if (fclose(fp) != 0 && rc == 0)
-        rc = STATUS_IO;
-    return rc;
+    pov_job *job = ctx;
+    return pov_export_write(job->s, job->o, fp, job->notes);
 }
 
 int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen)
 {
-    static const char suffix[] = ".tmp.XXXXXX";
-    struct stat sb;
+    pov_job job = {s, o, notes};
+    char why[600];
     if (err && errlen)
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
         return STATUS_DATA;
-    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
-        snprintf(err, errlen, "cannot write '%s': it exists and is not a regular file", path);
-        return STATUS_IO;
-    }
-    size_t n = strlen(path) + sizeof suffix;
-    char *tmp = malloc(n);
-    if (!tmp) {
-        snprintf(err, errlen, "out of memory");
-        return STATUS_NO_MEMORY;
-    }
-    snprintf(tmp, n, "%s%s", path, suffix);
-    int fd = mkstemp(tmp), rc = STATUS_IO;
-    if (fd < 0)
-        snprintf(err, errlen, "cannot write '%s': cannot create a temporary file: %s", path, strerror(errno));
-    else if ((rc = fill_temp(fd, path, s, o, notes)) != 0)
-        snprintf(err, errlen, "cannot write '%s': write error: %s", path, strerror(errno));
-    else if (rename(tmp, path) != 0) {
-        snprintf(err, errlen, "cannot write '%s': cannot rename the temporary file into place: %s", path,
-                 strerror(errno));
-        rc = STATUS_IO;
-    }
-    if (fd >= 0 && rc != 0)
-        unlink(tmp);
-    free(tmp);
+    int rc = file_write_atomic(path, fill_pov, &job, why, sizeof why);
+    if (rc != STATUS_OK && rc != STATUS_DATA)
+        snprintf(err, errlen, "%s", why);
     return rc;
 }

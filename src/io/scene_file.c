@@ -3,6 +3,7 @@
  */
 /* realpath is an XSI function: it needs more than _POSIX_C_SOURCE. */
 #define _XOPEN_SOURCE 700
+#include <ctype.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,6 +65,25 @@ static void report(const scene_load_opts *o, const char *message)
         o->sink(o->sink_user, &r);
 }
 
+int scene_file_is_json(const char *path)
+{
+    static const char ext[] = ".json";
+    size_t n = strlen(path), k = sizeof ext - 1;
+    if (n < k)
+        return 0;
+    for (size_t i = 0; i < k; i++)
+        if (tolower((unsigned char)path[n - k + i]) != ext[i])
+            return 0;
+    return 1;
+}
+
+scene_model *scene_file_load_source(const scene_source *root, const scene_load_opts *o, int *status)
+{
+    if (scene_file_is_json(root->path))
+        return scene_load_json_source(root, o, status);
+    return scene_load_source(root, o, status);
+}
+
 /* Loads the root text under path (its identity: its real path). */
 static scene_model *load_root(const char *path, const char *text, size_t len, const scene_load_opts *o,
                               const mem *m, int *status)
@@ -71,7 +91,7 @@ static scene_model *load_root(const char *path, const char *text, size_t len, co
     scene_source root = {path, identity_of(m, path), text, len};
     scene_model *s = NULL;
     if (root.identity)
-        s = scene_load_source(&root, o, status);
+        s = scene_file_load_source(&root, o, status);
     else
         *status = STATUS_NO_MEMORY;
     mem_free_string(m, (char *)root.identity);

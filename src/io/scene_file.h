@@ -1,7 +1,8 @@
 /*
  * scene_file.h - scenes that live in files: the resolver that reads
- * `include` and `mesh` files from the file system, and loading a scene
- * file with its diagnostics printed to a stream.  The core (scene.h) reads
+ * `include` and `mesh` files from the file system, the choice between the
+ * scene language and JSON by the file's name, and loading a scene file
+ * with its diagnostics printed to a stream.  The core (scene.h) reads
  * nothing itself; this is where the file system comes in.
  */
 #ifndef REFRAY_SCENE_FILE_H
@@ -25,13 +26,21 @@ typedef struct scene_file_reader {
  */
 scene_resolver scene_file_resolver(scene_file_reader *files);
 
+/* Whether path names a JSON scene (spec/json.md): it ends in ".json", in
+ * any case.  Every loader below reads such a file as JSON. */
+int scene_file_is_json(const char *path);
+
+/* root in the format its path names: scene_load_json_source for a JSON
+ * scene, else scene_load_source. */
+scene_model *scene_file_load_source(const scene_source *root, const scene_load_opts *o, int *status);
+
 /*
  * Reads the scene file path and loads it with o (NULL: the defaults); when
  * o has no resolver, includes and meshes come from files (with o's
  * --max-file-size).  A file that cannot be read is reported through
  * o->sink without a location, and *status is file_read_all's
  * (STATUS_NO_INPUT, STATUS_DATA over the size limit, STATUS_IO,
- * STATUS_NO_MEMORY).  Otherwise as scene_load_source.
+ * STATUS_NO_MEMORY).  Otherwise as scene_file_load_source.
  */
 scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status);
 

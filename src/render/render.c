@@ -21,20 +21,30 @@ double render_clock(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+uint64_t render_sample_key(int width, int k, int i, int j, int a, int b)
+{
+    uint64_t pixel_key = sampler_key((uint64_t)j * (uint64_t)width + (uint64_t)i, RENDER_PIXEL_SALT);
+    return sampler_key(pixel_key, (uint64_t)(b * k + a));
+}
+
+double render_sample_offset(int k, int a)
+{
+    return (a + 0.5) / k;
+}
+
 rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, trace_stats *st)
 {
-    uint64_t pixel_key = sampler_key((uint64_t)j * (uint64_t)width + (uint64_t)i, 0x5eed);
     rgb sum = vec_splat(0);
     for (int b = 0; b < k; b++) {
         for (int a = 0; a < k; a++) {
-            real x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
+            real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
             ray r = camera_ray(&t->scene->camera, width, height, x, y);
             medium_stack media = t->eye_media;
             if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
                 trace_media_at(t, r.origin, &media, st);
             st->camera_rays++;
             st->tree_rays = 0;
-            rgb c = trace_ray(t, &r, 1, &media, sampler_key(pixel_key, (uint64_t)(b * k + a)), st);
+            rgb c = trace_ray(t, &r, 1, &media, render_sample_key(width, k, i, j, a, b), st);
             sum = shade_saturate(vec_add(sum, c));
         }
     }

@@ -86,6 +86,16 @@ uint64_t renderer_fingerprint(const renderer *r);
  */
 int render_image(const scene_model *scene, const render_opts *opts, img_buf *out, render_stats *stats);
 
+/* The key of camera sample (a, b) of pixel (i, j) with a k x k grid in an
+ * image `width` pixels wide: sampler_key(sampler_key(j * width + i,
+ * RENDER_PIXEL_SALT), b * k + a), the root of that ray's light jitter. */
+#define RENDER_PIXEL_SALT 0x5eedu
+uint64_t render_sample_key(int width, int k, int i, int j, int a, int b);
+
+/* The offset of camera sample a (or b) of a k x k grid from its pixel's
+ * corner, in pixels: (a + 0.5) / k. */
+double render_sample_offset(int k, int a);
+
 /* The colour of one pixel (i, j) with a k x k grid: what render_image
  * stores, exposed for tests and for the oracle's comparisons. */
 rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, trace_stats *st);

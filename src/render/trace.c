@@ -55,14 +55,8 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
         tracer_free(t);
         return 0;
     }
-    for (int i = 0; i < s->light_count; i++) {
-        const scene_light *light = &s->lights[i];
-        t->lights[i].samples = light_samples > 0 ? light_samples : light->samples;
-        if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
-            t->lights[i].grid = light_grid_for(t->lights[i].samples);
-        if (light->kind == LIGHT_DISK)
-            light_frame(light->normal, &t->lights[i].t1, &t->lights[i].t2);
-    }
+    for (int i = 0; i < s->light_count; i++)
+        t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
         memset(&none, 0, sizeof none);
@@ -193,6 +187,28 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     }
 }
 
+light_setup trace_light_setup(const scene_light *light, int samples)
+{
+    light_setup setup;
+    memset(&setup, 0, sizeof setup);
+    setup.samples = samples;
+    if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
+        setup.grid = light_grid_for(samples);
+    if (light->kind == LIGHT_DISK)
+        light_frame(light->normal, &setup.t1, &setup.t2);
+    return setup;
+}
+
+vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j)
+{
+    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
+    double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
+    double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
+    double a, b;   /* the sample's place in the light's unit square: model data, double */
+    light_cell_point(setup->grid, j, u1, u2, &a, &b);
+    return light_point(light, setup->t1, setup->t2, a, b);
+}
+
 /* The samples of a distributed light, each a point source of E/samples. */
 static void add_distributed(const tracer *t, const surface *s, int index, uint64_t key, direct_sum *sum,
                             trace_stats *st)
@@ -200,14 +216,8 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
-    uint64_t light_key = sampler_key(key, 0x100u + (uint64_t)index);
-    for (int j = 0; j < setup->samples; j++) {
-        double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
-        double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
-        double a, b;   /* the sample's place in the light's unit square: model data, double */
-        light_cell_point(setup->grid, j, u1, u2, &a, &b);
-        add_source(t, s, light, light_point(light, setup->t1, setup->t2, a, b), power, sum, st);
-    }
+    for (int j = 0; j < setup->samples; j++)
+        add_source(t, s, light, trace_light_point(light, setup, index, key, j), power, sum, st);
 }
 
 static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
@@ -402,9 +412,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
         if (t->reflection && (vec_max_component(s.m->ks) > 0 || t->no_shortcuts))
-            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, 1), st);
+            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
-            through = transmitted(t, &s, in, depth, media, sampler_key(key, 2), st);
+            through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }

@@ -75,6 +75,27 @@ typedef struct tracer {
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
 void tracer_free(tracer *t);
 
+/*
+ * The keys of the light-sample jitter (spec/json.md, "Light samples"): a
+ * camera ray's key is render_sample_key's; a ray spawned at a hit takes
+ * sampler_key(key, TRACE_KEY_MIRROR) or sampler_key(key, TRACE_KEY_REFRACT)
+ * (the refracted or, on total internal reflection, mirrored transmitted
+ * ray); distributed light i at a hit of a ray with key k draws from
+ * sampler_key(k, TRACE_KEY_LIGHT + i).
+ */
+#define TRACE_KEY_MIRROR 1u
+#define TRACE_KEY_REFRACT 2u
+#define TRACE_KEY_LIGHT 0x100u
+
+/* A distributed light's stratification and (for a disk) frame for a
+ * render that gives it `samples` sources: tracer_init's per-light data. */
+light_setup trace_light_setup(const scene_light *light, int samples);
+
+/* Where sample j of the light at index `index` of the scene's lights sits
+ * for a hit of a ray with key `key`: the point the tracer shades with, bit
+ * for bit. */
+vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j);
+
 /* Turns off every shortcut that leaves out work a scene does not need
  * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
  * mirror and transmitted rays while depth < max_depth, every light gets its

@@ -210,3 +210,23 @@ void loader_free(loader *L)
     mem_free(L->mem, L->include_stack, (size_t)L->include_cap * sizeof *L->include_stack);
     mem_free(L->mem, L->material_uses, (size_t)L->uses_cap * sizeof *L->material_uses);
 }
+
+/* Reads the OBJ file into the load's sources, so its errors point into it. */
+int loader_read_obj(loader *L, const char *name, src_span at, int *file)
+{
+    char why[512];
+    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
+    if (*file >= 0)
+        L->scene->sources.files[*file]->is_mesh = 1;
+    else if (!L->out_of_memory)
+        diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
+    return *file >= 0;
+}
+
+char *loader_strdup(loader *L, const char *text)
+{
+    char *copy = mem_strdup(L->mem, text);
+    if (!copy)
+        loader_oom(L);
+    return copy;
+}

@@ -44,6 +44,22 @@ typedef struct props {
     int xform_count;
 } props;
 
+/* Where a rule of check.c reports: field is a keyword_id naming the
+ * property, or one of the pseudo-fields below; the front end maps it to a
+ * span only when a rule reports. */
+enum {
+    CHECK_BLOCK = KEYWORD_COUNT, /* the record as a whole (its block or object) */
+    CHECK_TRANSFORM,             /* a primitive's transforms */
+    CHECK_RECT_EDGES,            /* a rectangle light's two edges */
+    CHECK_RECT_EXTENT,           /* a rectangle light's corner and edges */
+    CHECK_CONE_RADIUS0,          /* a cone's radius at from */
+    CHECK_CONE_RADIUS1           /* a cone's radius at to */
+};
+typedef struct check_at {
+    src_span (*span)(const void *ctx, int field);
+    const void *ctx;
+} check_at;
+
 /* lower.c */
 int lower_statements(loader *L, const ast *list);
 /* Parses sources.files[file] and lowers it in the current scope; identity
@@ -56,13 +72,14 @@ int props_collect(loader *L, const ast *block, props *out);
 int props_number(loader *L, const props *p, keyword_id kw, double fallback, double *out);
 int props_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out);
 int props_color(loader *L, const props *p, keyword_id kw, rgb fallback, rgb *out);
-int props_int(loader *L, const props *p, keyword_id kw, long fallback, long lo, long hi, const char *limit_flag,
-              long *out);
 int props_name(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
 int props_string(loader *L, const props *p, keyword_id kw, const char **out, src_span *where);
 int props_require(loader *L, const props *p, keyword_id kw);
 /* The span of a property's first value (or of the block when absent). */
 src_span props_value_span(const props *p, keyword_id kw);
+/* The check_at of a block: a property's first value, or the block's head
+ * for a pseudo-field or a property not given. */
+check_at props_at(const props *p);
 int props_value_at(loader *L, const ast *node, value_kind kind, value *out);
 /* v / |v| computed without overflow or underflow (v is first divided by its
  * largest component); 0 when v is zero or not finite. */
@@ -92,6 +109,52 @@ void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *t
 /* 1 when every number of the placed shape is finite and in its domain. */
 int lower_quadric_in_range(const scene_prim *prim);
 
+/*
+ * check.c: the rules of the scene model, shared by every front end.  Each
+ * returns 1 when the value passes, else 0 after reporting at
+ * check_span(at, field).
+ */
+src_span check_span(const check_at *at, int field);
+/* lo <= x <= hi, an end exclusive when lo_open / hi_open; what names x. */
+int check_range(loader *L, const check_at *at, int field, const char *what, double x, double lo, int lo_open,
+                double hi, int hi_open);
+int check_color(loader *L, const check_at *at, int field, const char *what, rgb c, double lo, double hi);
+/* x a whole number in [lo, hi] into *out (limit_flag names the option that raises hi). */
+int check_whole(loader *L, const check_at *at, int field, double x, long lo, long hi, const char *limit_flag,
+                long *out);
+int check_is_unit(vec3 v);
+int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 v);
+/* size: width, height, samples, max_depth as read; fills *im. */
+int check_image(loader *L, const check_at *at, const double size[4], rgb background, scene_image_spec *im);
+/* fov and width in range; the orthonormal basis derived from eye, look_at
+ * and up (a zero view and a zero up both reported); check_camera: both. */
+int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam);
+int check_camera_basis(loader *L, const check_at *at, scene_camera *cam);
+int check_camera(loader *L, const check_at *at, scene_camera *cam);
+int check_ambient(loader *L, const check_at *at, rgb color);
+/* power and d0 */
+int check_light(loader *L, const check_at *at, const scene_light *light);
+int check_light_samples(loader *L, const check_at *at, double x, int *out);
+/* the edges span an area and stay finite; sets light->normal. */
+int check_rectangle(loader *L, const check_at *at, scene_light *light);
+int check_material(loader *L, const check_at *at, const scene_material *m);
+int check_radius(loader *L, const check_at *at, double radius);
+/* corners a, b differ on every axis; sets the box's lo and hi. */
+int check_box(loader *L, const check_at *at, vec3 a, vec3 b, scene_prim *prim);
+int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to_local);
+/* A cylinder's or cone's ends differ (else at KW_TO). */
+int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
+/* A cone's radii: each >= 0 (at CHECK_CONE_RADIUS0, 1), one > 0 (at KW_RADII). */
+int check_cone_radii(loader *L, const check_at *at, const double radius[2]);
+/* major > 0, minor > 0, minor < major (at KW_MINOR). */
+int check_torus(loader *L, const check_at *at, double major, double minor);
+/* A primitive as the tracer gets it: finite, unit normals, finite
+ * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
+ * KW_VERTICES). */
+int check_placed(loader *L, const check_at *at, const scene_prim *prim);
+/* A check_at that gives *span for every field. */
+check_at check_at_fixed(const src_span *span);
+
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 
@@ -114,5 +177,16 @@ scene_prim *loader_add_prim(loader *L, src_span where);
 scene_light *loader_add_light(loader *L);
 scene_material *loader_add_material(loader *L);
 scene_mesh *loader_add_mesh(loader *L);
+/* A copy of text from the load's allocator, or NULL after reporting out
+ * of memory. */
+char *loader_strdup(loader *L, const char *text);
+/* Asks the resolver for the OBJ file `name`, written at `at`, and adds it
+ * to the load's sources as read by a mesh, so its errors point into it;
+ * 1 with its index in *file, else 0 after reporting at `at`. */
+int loader_read_obj(loader *L, const char *name, src_span at, int *file);
+
+/* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
+ * (spec/json.md) into the scene, with the rules of check.c. */
+int loader_lower_json(loader *L, int file);
 
 #endif

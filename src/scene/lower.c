@@ -167,11 +167,9 @@ static int lower_oracle(loader *L, const ast *node)
         diag_report(&L->diag, DIAG_ERROR, node->head, "a scene names one oracle; '%s' is already named", s->oracle);
         return 0;
     }
-    s->oracle = mem_strdup(L->mem, node->text);
-    if (!s->oracle) {
-        loader_oom(L);
+    s->oracle = loader_strdup(L, node->text);
+    if (!s->oracle)
         return 0;
-    }
     s->oracle_where = node->head;
     return 1;
 }

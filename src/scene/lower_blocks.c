@@ -1,46 +1,11 @@
 /*
  * lower_blocks.c - image, camera, ambient, lights and materials: read the
- * properties, apply the documented defaults (spec/language.md), check ranges
- * at the offending value, and append to the scene.
+ * properties, apply the documented defaults (spec/language.md), check them
+ * with the rules of check.c at the offending value, and append to the scene.
  */
-#include <float.h>
-#include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "scene/loader.h"
 #include "base/suggest.h"
-
-/* Reports unless lo <= x <= hi (lo_open/hi_open make an end exclusive). */
-static int in_range(loader *L, src_span at, const char *what, double x, double lo, int lo_open, double hi,
-                    int hi_open)
-{
-    int ok = (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
-    if (ok)
-        return 1;
-    if (isinf(hi))
-        diag_report(&L->diag, DIAG_ERROR, at, "%s must be %s %g, got %.17g", what, lo_open ? ">" : ">=", lo, x);
-    else
-        diag_report(&L->diag, DIAG_ERROR, at, "%s must be in %c%g, %g%c, got %.17g", what, lo_open ? '(' : '[',
-                    lo, hi, hi_open ? ')' : ']', x);
-    return 0;
-}
-
-static int color_in_range(loader *L, src_span at, const char *what, rgb c, double lo, double hi)
-{
-    const char *channel[3] = {"red", "green", "blue"};
-    double v[3] = {c.x, c.y, c.z};
-    for (int i = 0; i < 3; i++) {
-        if (v[i] < lo || v[i] > hi) {
-            if (isinf(hi))
-                diag_report(&L->diag, DIAG_ERROR, at, "%s must be >= %g, got %.17g (%s)", what, lo, v[i], channel[i]);
-            else
-                diag_report(&L->diag, DIAG_ERROR, at, "%s must be in [%g, %g], got %.17g (%s)", what, lo, hi, v[i],
-                            channel[i]);
-            return 0;
-        }
-    }
-    return 1;
-}
 
 /* A direction or normal: any non-zero length, returned normalised. */
 static int direction(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
@@ -72,27 +37,18 @@ int lower_image(loader *L, const ast *block)
 {
     props p;
     scene_image_spec *im = &L->scene->image;
-    const scene_limits *lim = L->limits;
-    long w, h, k, depth;
+    double size[4];
+    rgb background;
     int first = first_block(L, block, &L->image_where);
     if (!props_collect(L, block, &p) || !first)
         return 0;
-    int ok = props_int(L, &p, KW_WIDTH, im->width, 1, lim->max_width, "--max-width", &w);
-    ok &= props_int(L, &p, KW_HEIGHT, im->height, 1, lim->max_height, "--max-height", &h);
-    ok &= props_int(L, &p, KW_SAMPLES, im->samples, 1, lim->max_samples, "--max-samples", &k);
-    ok &= props_int(L, &p, KW_MAX_DEPTH, im->max_depth, 1, lim->max_depth, "--max-depth-limit", &depth);
-    ok &= props_color(L, &p, KW_BACKGROUND, im->background, &im->background) &&
-          color_in_range(L, props_value_span(&p, KW_BACKGROUND), "background", im->background, 0, HUGE_VAL);
-    if (ok && (double)w * (double)h > (double)lim->max_pixels) {
-        diag_report(&L->diag, DIAG_ERROR, block->head, "%ld x %ld pixels is over the limit of %ld (--max-pixels)",
-                    w, h, lim->max_pixels);
-        ok = 0;
-    }
-    im->width = (int)w;
-    im->height = (int)h;
-    im->samples = (int)k;
-    im->max_depth = (int)depth;
-    return ok;
+    int ok = props_number(L, &p, KW_WIDTH, im->width, &size[0]);
+    ok &= props_number(L, &p, KW_HEIGHT, im->height, &size[1]);
+    ok &= props_number(L, &p, KW_SAMPLES, im->samples, &size[2]);
+    ok &= props_number(L, &p, KW_MAX_DEPTH, im->max_depth, &size[3]);
+    ok &= props_color(L, &p, KW_BACKGROUND, im->background, &background);
+    check_at at = props_at(&p);
+    return check_image(L, &at, size, background, im) && ok;
 }
 
 /* Perspective or orthographic, and no property of the other kind; both
@@ -115,34 +71,13 @@ static int camera_kind(loader *L, const props *p, scene_camera *cam)
     return 1;
 }
 
-/* forward = look_at - eye; right = forward x up; true_up = right x forward.
- * When look_at - eye overflows, half of each gives the same direction.
- * A zero view and a zero up are both reported; parallel only when neither. */
-static int camera_basis(loader *L, const props *p, scene_camera *cam)
+/* look_at - eye is reported at look_at, or at eye when look_at is not given. */
+static src_span camera_field_span(const void *ctx, int field)
 {
-    vec3 view = vec_sub(cam->look_at, cam->eye), up;
-    if (!vec_is_finite(view))
-        view = vec_sub(vec_scale(cam->look_at, 0.5), vec_scale(cam->eye, 0.5));
-    int ok = loader_unit(view, &cam->forward);
-    if (!ok)
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_LOOK_AT] ? KW_LOOK_AT : KW_EYE),
-                    "look_at must differ from eye (the view direction has zero length)");
-    if (vec_length(cam->up) == 0) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP), "up must not be a zero-length vector");
-        return 0;
-    }
-    if (!ok)
-        return 0;
-    loader_unit(cam->up, &up);
-    vec3 side = vec_cross(cam->forward, up);
-    if (vec_length(side) < 1e-9) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_UP),
-                    "up is parallel to the view direction (look_at - eye)");
-        return 0;
-    }
-    cam->right = vec_normalize(side);
-    cam->true_up = vec_normalize(vec_cross(cam->right, cam->forward));
-    return 1;
+    const props *p = ctx;
+    if (field == KW_LOOK_AT && !p->by_keyword[KW_LOOK_AT])
+        field = KW_EYE;
+    return field >= KEYWORD_COUNT ? p->block->head : props_value_span(p, (keyword_id)field);
 }
 
 /* Every property is checked even after an error, so one run reports all
@@ -160,11 +95,11 @@ int lower_camera(loader *L, const ast *block)
     int placed = props_vector(L, &p, KW_EYE, cam->eye, &cam->eye);
     placed &= props_vector(L, &p, KW_LOOK_AT, cam->look_at, &cam->look_at);
     placed &= props_vector(L, &p, KW_UP, cam->up, &cam->up);
-    ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov) &&
-          in_range(L, props_value_span(&p, KW_FOV), "fov", cam->fov, 0, 1, 180, 1);
-    ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width) &&
-          in_range(L, props_value_span(&p, KW_WIDTH), "width", cam->width, 0, 1, HUGE_VAL, 0);
-    int basis = placed && camera_basis(L, &p, cam);
+    ok &= props_number(L, &p, KW_FOV, cam->fov, &cam->fov);
+    ok &= props_number(L, &p, KW_WIDTH, cam->width, &cam->width);
+    check_at at = {camera_field_span, &p};
+    ok &= check_camera_ranges(L, &at, cam);
+    int basis = placed && check_camera_basis(L, &at, cam);
     return ok && basis;
 }
 
@@ -173,8 +108,10 @@ int lower_ambient(loader *L, const ast *block)
     props p;
     rgb color;
     if (!props_collect(L, block, &p) || !props_require(L, &p, KW_COLOR) ||
-        !props_color(L, &p, KW_COLOR, vec_splat(0), &color) ||
-        !color_in_range(L, props_value_span(&p, KW_COLOR), "ambient color", color, 0, HUGE_VAL))
+        !props_color(L, &p, KW_COLOR, vec_splat(0), &color))
+        return 0;
+    check_at at = props_at(&p);
+    if (!check_ambient(L, &at, color))
         return 0;
     L->scene->ambient = vec_add(L->scene->ambient, color);
     return 1;
@@ -203,18 +140,38 @@ static int falloff(loader *L, const props *p, scene_falloff *out)
 }
 
 /* power and, for lights that have a distance, d0 and falloff. */
-static int light_common(loader *L, const props *p, scene_light *light)
+static int light_common(loader *L, const props *p, const check_at *at, scene_light *light)
 {
-    int ok = props_color(L, p, KW_POWER, vec_splat(1), &light->power) &&
-             color_in_range(L, props_value_span(p, KW_POWER), "power", light->power, 0, HUGE_VAL);
-    if (light->kind == LIGHT_DISTANT)
-        return ok;
-    ok &= props_number(L, p, KW_D0, 0, &light->d0) &&
-          in_range(L, props_value_span(p, KW_D0), "d0", light->d0, 0, 0, HUGE_VAL, 0);
-    return ok & falloff(L, p, &light->falloff);
+    int ok = props_color(L, p, KW_POWER, vec_splat(1), &light->power);
+    if (light->kind != LIGHT_DISTANT) {
+        ok &= props_number(L, p, KW_D0, 0, &light->d0);
+        ok &= falloff(L, p, &light->falloff);
+    }
+    return check_light(L, at, light) && ok;
 }
 
-static int rectangle_light(loader *L, const props *p, scene_light *light)
+/* A distributed light's shape is one property of three values: a field
+ * reports at the value it names. */
+typedef struct shape_props {
+    const props *p;
+    src_span value[3];
+} shape_props;
+
+static src_span shape_field_span(const void *ctx, int field)
+{
+    const shape_props *sp = ctx;
+    switch (field) {
+    case CHECK_RECT_EDGES: return src_span_join(sp->value[1], sp->value[2]);
+    case CHECK_RECT_EXTENT: return src_span_join(sp->value[0], sp->value[2]);
+    case KW_RADIUS: return sp->value[2];
+    default: {
+        check_at whole = props_at(sp->p);
+        return check_span(&whole, field);
+    }
+    }
+}
+
+static int rectangle_light(loader *L, const props *p, shape_props *sp, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_RECTANGLE];
     value corner, u, v;
@@ -222,29 +179,18 @@ static int rectangle_light(loader *L, const props *p, scene_light *light)
         !props_value_at(L, prop->first->next, VAL_VECTOR, &u) ||
         !props_value_at(L, prop->first->next->next, VAL_VECTOR, &v))
         return 0;
-    /* The normal from the edges' directions: their cross product itself
-     * could overflow for long edges. */
-    vec3 du, dv, far = vec_add(vec_add(corner.vector, u.vector), v.vector);
-    if (!loader_unit(u.vector, &du) || !loader_unit(v.vector, &dv) ||
-        !(vec_length(vec_cross(du, dv)) > 4 * DBL_EPSILON) || !loader_unit(vec_cross(du, dv), &light->normal)) {
-        diag_report(&L->diag, DIAG_ERROR, src_span_join(u.span, v.span),
-                    "the rectangle's edges are parallel or zero: it has no area");
-        return 0;
-    }
-    if (!vec_is_finite(far) || !vec_is_finite(vec_add(corner.vector, u.vector)) ||
-        !vec_is_finite(vec_add(corner.vector, v.vector))) {
-        diag_report(&L->diag, DIAG_ERROR, src_span_join(corner.span, v.span),
-                    "the rectangle reaches beyond the largest number (about 1.8e308)");
-        return 0;
-    }
+    sp->value[0] = corner.span;
+    sp->value[1] = u.span;
+    sp->value[2] = v.span;
     light->kind = LIGHT_RECTANGLE;
     light->position = corner.vector;
     light->edge_u = u.vector;
     light->edge_v = v.vector;
-    return 1;
+    check_at at = {shape_field_span, sp};
+    return check_rectangle(L, &at, light);
 }
 
-static int disk_light(loader *L, const props *p, scene_light *light)
+static int disk_light(loader *L, const props *p, shape_props *sp, scene_light *light)
 {
     const ast *prop = p->by_keyword[KW_DISK];
     value center, normal, radius;
@@ -252,11 +198,15 @@ static int disk_light(loader *L, const props *p, scene_light *light)
         !props_value_at(L, prop->first->next, VAL_VECTOR, &normal) ||
         !props_value_at(L, prop->first->next->next, VAL_NUMBER, &radius))
         return 0;
+    sp->value[0] = center.span;
+    sp->value[1] = normal.span;
+    sp->value[2] = radius.span;
     if (!loader_unit(normal.vector, &light->normal)) {
         diag_report(&L->diag, DIAG_ERROR, normal.span, "the disk's normal must not be a zero-length vector");
         return 0;
     }
-    if (!in_range(L, radius.span, "radius", radius.number, 0, 1, HUGE_VAL, 0))
+    check_at at = {shape_field_span, sp};
+    if (!check_radius(L, &at, radius.number))
         return 0;
     light->kind = LIGHT_DISK;
     light->position = center.vector;
@@ -275,10 +225,15 @@ static int distributed_shape(loader *L, const props *p, scene_light *light)
         diag_report(&L->diag, DIAG_ERROR, p->block->head, "distributed_light needs 'rectangle' or 'disk'");
         return 0;
     }
-    long samples;
-    int ok = props_int(L, p, KW_SAMPLES, 16, 1, L->limits->max_light_samples, "--max-light-samples", &samples);
-    light->samples = (int)samples;
-    return ok & (rect ? rectangle_light(L, p, light) : disk_light(L, p, light));
+    double samples;
+    shape_props sp;
+    memset(&sp, 0, sizeof sp);
+    sp.p = p;
+    check_at at = props_at(p);
+    light->samples = 16;
+    int ok = props_number(L, p, KW_SAMPLES, light->samples, &samples) &&
+             check_light_samples(L, &at, samples, &light->samples);
+    return ok & (rect ? rectangle_light(L, p, &sp, light) : disk_light(L, p, &sp, light));
 }
 
 int lower_light(loader *L, const ast *block)
@@ -303,7 +258,8 @@ int lower_light(loader *L, const ast *block)
     default:
         ok = distributed_shape(L, &p, &light);
     }
-    ok &= light_common(L, &p, &light);
+    check_at at = props_at(&p);
+    ok &= light_common(L, &p, &at, &light);
     scene_light *slot = ok ? loader_add_light(L) : NULL;
     if (slot)
         *slot = light;
@@ -316,16 +272,14 @@ static int material_props(loader *L, const ast *block, scene_material *m)
     props p;
     if (!props_collect(L, block, &p))
         return 0;
-    int ok = props_color(L, &p, KW_KD, vec_splat(0.8), &m->kd) &&
-             color_in_range(L, props_value_span(&p, KW_KD), "Kd", m->kd, 0, 1);
-    ok &= props_color(L, &p, KW_KS, vec_splat(0), &m->ks) &&
-          color_in_range(L, props_value_span(&p, KW_KS), "Ks", m->ks, 0, 1);
-    ok &= props_number(L, &p, KW_N, 1, &m->n) && in_range(L, props_value_span(&p, KW_N), "n", m->n, 0, 0, HUGE_VAL, 0);
-    ok &= props_number(L, &p, KW_T, 0, &m->t) && in_range(L, props_value_span(&p, KW_T), "t", m->t, 0, 0, 1, 0);
-    ok &= props_number(L, &p, KW_IOR, 1, &m->ior) &&
-          in_range(L, props_value_span(&p, KW_IOR), "ior", m->ior, 0, 1, HUGE_VAL, 0);
+    int ok = props_color(L, &p, KW_KD, vec_splat(0.8), &m->kd);
+    ok &= props_color(L, &p, KW_KS, vec_splat(0), &m->ks);
+    ok &= props_number(L, &p, KW_N, 1, &m->n);
+    ok &= props_number(L, &p, KW_T, 0, &m->t);
+    ok &= props_number(L, &p, KW_IOR, 1, &m->ior);
     m->where = block->head;
-    return ok;
+    check_at at = props_at(&p);
+    return check_material(L, &at, m) && ok;
 }
 
 static int find_material(const scene_model *s, const char *name)
@@ -334,14 +288,6 @@ static int find_material(const scene_model *s, const char *name)
         if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
             return i;
     return -1;
-}
-
-static char *copy_name(loader *L, const char *name)
-{
-    char *copy = mem_strdup(L->mem, name);
-    if (!copy)
-        loader_oom(L);
-    return copy;
 }
 
 int lower_material_def(loader *L, const ast *block)
@@ -361,7 +307,7 @@ int lower_material_def(loader *L, const ast *block)
         return 0;
     m.where = block->head;
     scene_material *slot = loader_add_material(L);
-    if (!slot || !(m.name = copy_name(L, block->text)))
+    if (!slot || !(m.name = loader_strdup(L, block->text)))
         return 0;
     *slot = m;
     return 1;

@@ -8,7 +8,6 @@
  * shape (see scene_prim in scene.h); otherwise the primitive keeps its local
  * parameters and the matrix pair, and is intersected in its own frame.
  */
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,12 +50,9 @@ static int transforms(loader *L, const props *p, xform *to_world, xform *to_loca
             return 0;
         *to_world = xform_compose(&step, to_world);
     }
-    if (!xform_invert(to_world, to_local)) {
-        diag_report(&L->diag, DIAG_ERROR, p->xforms[p->xform_count - 1]->head,
-                    "these transforms cannot be undone (the matrix is singular)");
-        return 0;
-    }
-    return 1;
+    src_span last = p->xform_count > 0 ? p->xforms[p->xform_count - 1]->head : p->block->head;
+    check_at at = check_at_fixed(&last);
+    return check_invert(L, &at, to_world, to_local);
 }
 
 static double determinant(const xform *a)
@@ -64,16 +60,6 @@ static double determinant(const xform *a)
     const double(*m)[4] = a->m;
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-static int positive(loader *L, const props *p, keyword_id kw, double fallback, double *out)
-{
-    if (!props_number(L, p, kw, fallback, out))
-        return 0;
-    if (*out > 0)
-        return 1;
-    diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must be > 0, got %.17g", keyword_name(kw), *out);
-    return 0;
 }
 
 static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
@@ -147,17 +133,6 @@ static void place_box(scene_prim *prim, const xform *w, const xform *l)
     prim->u.box.hi = vec_max(a, b);
 }
 
-/* A triangle has no area when its edges are parallel to rounding error:
- * the sine of the angle between them is at most 4 epsilon (computed on the
- * edges' directions, so the size of the triangle does not matter). */
-static int degenerate(vec3 a, vec3 b, vec3 c)
-{
-    vec3 e1, e2;
-    if (!loader_unit(vec_sub(b, a), &e1) || !loader_unit(vec_sub(c, a), &e2))
-        return 1;
-    return !(vec_length(vec_cross(e1, e2)) > 4 * DBL_EPSILON);
-}
-
 /* Vertices in world space; a mirroring transform would turn the winding
  * (and so the normal) inside out, so two corners are swapped back. */
 static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
@@ -180,8 +155,9 @@ static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
 static int sphere(loader *L, const props *p, scene_prim *prim)
 {
     prim->kind = PRIM_SPHERE;
+    check_at at = props_at(p);
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.sphere.center);
-    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.sphere.radius);
+    ok &= props_number(L, p, KW_RADIUS, 1, &prim->u.sphere.radius) && check_radius(L, &at, prim->u.sphere.radius);
     return ok;
 }
 
@@ -198,7 +174,8 @@ static int disk(loader *L, const props *p, scene_prim *prim)
     prim->kind = PRIM_DISK;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.disk.center);
     ok &= unit_vector(L, p, KW_NORMAL, vec_make(0, 1, 0), &prim->u.disk.normal);
-    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.disk.radius);
+    check_at at = props_at(p);
+    ok &= props_number(L, p, KW_RADIUS, 1, &prim->u.disk.radius) && check_radius(L, &at, prim->u.disk.radius);
     return ok;
 }
 
@@ -212,16 +189,8 @@ static int box(loader *L, const props *p, scene_prim *prim)
         return 0;
     ok = props_vector(L, p, KW_FROM, vec_splat(0), &a);
     ok &= props_vector(L, p, KW_TO, vec_splat(0), &b);
-    if (!ok)
-        return 0;
-    if (a.x == b.x || a.y == b.y || a.z == b.z) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_TO),
-                    "the box is flat: from and to must differ along every axis");
-        return 0;
-    }
-    prim->u.box.lo = vec_min(a, b);
-    prim->u.box.hi = vec_max(a, b);
-    return 1;
+    check_at at = props_at(p);
+    return ok && check_box(L, &at, a, b, prim);
 }
 
 static int triangle(loader *L, const props *p, scene_prim *prim)
@@ -239,86 +208,12 @@ static int triangle(loader *L, const props *p, scene_prim *prim)
     return 1;
 }
 
-static int is_unit(vec3 n)
-{
-    return vec_is_finite(n) && fabs(vec_length(n) - 1) < 1e-9;
-}
-
-static int xform_finite(const xform *a)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            if (!isfinite(a->m[i][j]))
-                return 0;
-    return 1;
-}
-
-static int triangle_in_range(const scene_prim *prim)
-{
-    const vec3 *q = prim->u.triangle.p, *n = prim->u.triangle.n;
-    int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
-             vec_is_finite(vec_sub(q[1], q[0])) && vec_is_finite(vec_sub(q[2], q[0])) &&
-             vec_is_finite(vec_sub(q[2], q[1]));
-    return ok && (!prim->u.triangle.has_normals || (is_unit(n[0]) && is_unit(n[1]) && is_unit(n[2])));
-}
-
-/* Placement can push a finite shape past the largest double, or leave a
- * normal that cannot be made unit: the scene keeps no such number. */
-static int in_range(const scene_prim *prim)
-{
-    int ok = 1;
-    switch (prim->kind) {
-    case PRIM_SPHERE: ok = vec_is_finite(prim->u.sphere.center) && isfinite(prim->u.sphere.radius); break;
-    case PRIM_PLANE: ok = vec_is_finite(prim->u.plane.point) && is_unit(prim->u.plane.normal); break;
-    case PRIM_TRIANGLE: ok = triangle_in_range(prim); break;
-    case PRIM_DISK:
-        ok = vec_is_finite(prim->u.disk.center) && is_unit(prim->u.disk.normal) && isfinite(prim->u.disk.radius);
-        break;
-    case PRIM_BOX: ok = vec_is_finite(prim->u.box.lo) && vec_is_finite(prim->u.box.hi); break;
-    case PRIM_CYLINDER:
-    case PRIM_CONE:
-    case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
-    }
-    return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
-}
-
-static int check_range(loader *L, const scene_prim *prim, src_span at)
-{
-    if (in_range(prim))
-        return 1;
-    diag_report(&L->diag, DIAG_ERROR, at,
-                "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
-                scene_prim_name(prim->kind));
-    return 0;
-}
-
-static int check_triangle(loader *L, const scene_prim *prim, src_span at)
-{
-    const vec3 *q = prim->u.triangle.p;
-    if (!degenerate(q[0], q[1], q[2]))
-        return 1;
-    diag_report(&L->diag, DIAG_ERROR, at, "degenerate triangle: its corners are on one line (no area)");
-    return 0;
-}
-
 static scene_prim *emit(loader *L, const scene_prim *prim)
 {
     scene_prim *slot = loader_add_prim(L, prim->where);
     if (slot)
         *slot = *prim;
     return slot;
-}
-
-/* Reads the OBJ file into the load's sources, so its errors point into it. */
-static int read_obj(loader *L, const char *name, src_span at, int *file)
-{
-    char why[512];
-    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
-    if (*file >= 0)
-        L->scene->sources.files[*file]->is_mesh = 1;
-    else if (!L->out_of_memory)
-        diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
-    return *file >= 0;
 }
 
 static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
@@ -348,7 +243,8 @@ static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, con
         if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
             continue;
         place_triangle(&prim, w, l);
-        if (check_range(L, &prim, prim.where) && check_triangle(L, &prim, prim.where))
+        check_at at = check_at_fixed(&prim.where);
+        if (check_placed(L, &at, &prim))
             ok = emit(L, &prim) != NULL;
     }
     mesh->count = L->scene->prim_count - mesh->first_prim;
@@ -371,7 +267,7 @@ static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, co
     src_span at;
     int file;
     if (!props_require(L, p, KW_FILE) || unquoted_file(L, p) || !props_string(L, p, KW_FILE, &name, &at) ||
-        !read_obj(L, name, at, &file))
+        !loader_read_obj(L, name, at, &file))
         return 0;
     obj_mesh obj;
     int errors = L->diag.errors;
@@ -383,13 +279,11 @@ static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, co
     scene_mesh *m = loader_add_mesh(L);
     int ok = m != NULL;
     if (m) {
-        m->path = mem_strdup(L->mem, L->scene->sources.files[file]->path);
+        m->path = loader_strdup(L, L->scene->sources.files[file]->path);
         m->where = at;
         proto->kind = PRIM_TRIANGLE;
         proto->mesh = L->scene->mesh_count - 1;
         ok = m->path && mesh_triangles(L, &obj, proto, w, l);
-        if (!m->path)
-            loader_oom(L);
     }
     obj_free(&obj);
     return ok && L->diag.errors == errors;
@@ -450,9 +344,6 @@ int lower_primitive(loader *L, const ast *block)
     if (!ok)
         return 0;
     place(&prim, &w, &l);
-    if (!check_range(L, &prim, prim.where))
-        return 0;
-    if (prim.kind == PRIM_TRIANGLE && !check_triangle(L, &prim, props_value_span(&p, KW_VERTICES)))
-        return 0;
-    return emit(L, &prim) != NULL;
+    check_at at = props_at(&p);
+    return check_placed(L, &at, &prim) && emit(L, &prim) != NULL;
 }

@@ -213,31 +213,20 @@ int props_color(loader *L, const props *p, keyword_id kw, rgb fallback, rgb *out
     return 1;
 }
 
-int props_int(loader *L, const props *p, keyword_id kw, long fallback, long lo, long hi, const char *limit_flag,
-              long *out)
+static src_span props_field_span(const void *ctx, int field)
 {
-    double x;
-    *out = fallback;
-    if (!p->by_keyword[kw])
-        return 1;
-    if (!props_number(L, p, kw, (double)fallback, &x))
-        return 0;
-    src_span at = props_value_span(p, kw);
-    if (x != floor(x)) {
-        diag_report(&L->diag, DIAG_ERROR, at, "%s must be a whole number, got %.17g", keyword_name(kw), x);
-        return 0;
-    }
-    if (x < (double)lo) {
-        diag_report(&L->diag, DIAG_ERROR, at, "%s must be at least %ld, got %.17g", keyword_name(kw), lo, x);
-        return 0;
-    }
-    if (x > (double)hi) {
-        diag_report(&L->diag, DIAG_ERROR, at, "%s of %.17g is over the limit of %ld%s%s%s", keyword_name(kw), x,
-                    hi, limit_flag ? " (raise it with " : "", limit_flag ? limit_flag : "", limit_flag ? ")" : "");
-        return 0;
-    }
-    *out = (long)x;
-    return 1;
+    const props *p = ctx;
+    if (field >= KEYWORD_COUNT)
+        return p->block->head;
+    return props_value_span(p, (keyword_id)field);
+}
+
+check_at props_at(const props *p)
+{
+    check_at at;
+    at.span = props_field_span;
+    at.ctx = p;
+    return at;
 }
 
 /* A bare word such as a material or falloff name: not looked up as a constant. */

@@ -12,40 +12,48 @@
 #include <string.h>
 #include "scene/loader.h"
 
-static int report(loader *L, src_span at, const char *message, double got)
-{
-    diag_report(&L->diag, DIAG_ERROR, at, "%s, got %.17g", message, got);
-    return 0;
-}
+/* Where the rules of check.c report for these blocks: the ends at to (at
+ * from when to is not written), the ring at minor (at major when minor is
+ * not written), each of a cone's radii at its value, the radii together
+ * at the whole property. */
+typedef struct quadric_props {
+    const props *p;
+    src_span radius[2];
+} quadric_props;
 
-static int positive(loader *L, const props *p, keyword_id kw, double fallback, double *out)
+static src_span quadric_span(const void *ctx, int field)
 {
-    if (!props_number(L, p, kw, fallback, out))
-        return 0;
-    if (*out > 0)
-        return 1;
-    diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must be > 0, got %.17g", keyword_name(kw), *out);
-    return 0;
+    const quadric_props *q = ctx;
+    const props *p = q->p;
+    if (field == CHECK_CONE_RADIUS0 || field == CHECK_CONE_RADIUS1)
+        return q->radius[field - CHECK_CONE_RADIUS0];
+    if (field == KW_RADII && p->by_keyword[KW_RADII])
+        return p->by_keyword[KW_RADII]->span;
+    if (field == KW_TO && !p->by_keyword[KW_TO])
+        field = KW_FROM;
+    if (field == KW_MINOR && !p->by_keyword[KW_MINOR])
+        field = KW_MAJOR;
+    check_at whole = props_at(p);
+    return check_span(&whole, field);
 }
 
 /* from and to, which must differ: the axis of a cylinder or cone. */
 static int ends(loader *L, const props *p, vec3 *from, vec3 *to)
 {
+    quadric_props q = {p, {{-1, 0, 0}, {-1, 0, 0}}};
+    check_at at = {quadric_span, &q};
     int ok = props_vector(L, p, KW_FROM, vec_splat(0), from);
     ok &= props_vector(L, p, KW_TO, vec_make(0, 1, 0), to);
-    if (ok && from->x == to->x && from->y == to->y && from->z == to->z) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_TO] ? KW_TO : KW_FROM),
-                    "from and to must differ (they are the centres of the two ends)");
-        return 0;
-    }
-    return ok;
+    return ok && check_ends(L, &at, *from, *to);
 }
 
 static int cylinder(loader *L, const props *p, scene_prim *prim)
 {
+    check_at at = props_at(p);
     prim->kind = PRIM_CYLINDER;
     int ok = ends(L, p, &prim->u.cylinder.from, &prim->u.cylinder.to);
-    ok &= positive(L, p, KW_RADIUS, 1, &prim->u.cylinder.radius);
+    ok &= props_number(L, p, KW_RADIUS, 1, &prim->u.cylinder.radius) &&
+          check_radius(L, &at, prim->u.cylinder.radius);
     prim->u.cylinder.open = p->by_keyword[KW_OPEN] != NULL;
     return ok;
 }
@@ -54,6 +62,8 @@ static int cylinder(loader *L, const props *p, scene_prim *prim)
 static int cone_radii(loader *L, const props *p, double radius[2])
 {
     const ast *prop = p->by_keyword[KW_RADII];
+    quadric_props q = {p, {{-1, 0, 0}, {-1, 0, 0}}};
+    check_at at = {quadric_span, &q};
     radius[0] = 1;
     radius[1] = 0;
     if (!prop)
@@ -63,15 +73,10 @@ static int cone_radii(loader *L, const props *p, double radius[2])
         !props_value_at(L, prop->first->next, VAL_NUMBER, &v[1]))
         return 0;
     for (int i = 0; i < 2; i++) {
-        if (!(v[i].number >= 0))
-            return report(L, v[i].span, "a cone's radii must be >= 0", v[i].number);
         radius[i] = v[i].number;
+        q.radius[i] = v[i].span;
     }
-    if (radius[0] == 0 && radius[1] == 0) {
-        diag_report(&L->diag, DIAG_ERROR, prop->span, "a cone needs a radius > 0 at one end at least");
-        return 0;
-    }
-    return 1;
+    return check_cone_radii(L, &at, radius);
 }
 
 static int cone(loader *L, const props *p, scene_prim *prim)
@@ -83,10 +88,10 @@ static int cone(loader *L, const props *p, scene_prim *prim)
     return ok;
 }
 
-/* A ring torus: 0 < minor < major (a horn or spindle torus would cross
- * itself, and its inside would no longer be the tube's). */
 static int torus(loader *L, const props *p, scene_prim *prim)
 {
+    quadric_props q = {p, {{-1, 0, 0}, {-1, 0, 0}}};
+    check_at at = {quadric_span, &q};
     prim->kind = PRIM_TORUS;
     int ok = props_vector(L, p, KW_CENTER, vec_splat(0), &prim->u.torus.center);
     int axis = props_vector(L, p, KW_AXIS, vec_make(0, 1, 0), &prim->u.torus.axis);
@@ -94,14 +99,9 @@ static int torus(loader *L, const props *p, scene_prim *prim)
         diag_report(&L->diag, DIAG_ERROR, props_value_span(p, KW_AXIS), "axis must not be a zero-length vector");
         axis = 0;
     }
-    int radii = positive(L, p, KW_MAJOR, 1, &prim->u.torus.major);
-    radii &= positive(L, p, KW_MINOR, 0.25, &prim->u.torus.minor);
-    if (radii && !(prim->u.torus.minor < prim->u.torus.major)) {
-        diag_report(&L->diag, DIAG_ERROR, props_value_span(p, p->by_keyword[KW_MINOR] ? KW_MINOR : KW_MAJOR),
-                    "minor must be less than major (a ring torus), got minor %.17g and major %.17g",
-                    prim->u.torus.minor, prim->u.torus.major);
-        radii = 0;
-    }
+    int radii = props_number(L, p, KW_MAJOR, 1, &prim->u.torus.major);
+    radii &= props_number(L, p, KW_MINOR, 0.25, &prim->u.torus.minor);
+    radii = radii && check_torus(L, &at, prim->u.torus.major, prim->u.torus.minor);
     return ok & axis & radii;
 }
 

@@ -228,6 +228,21 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
 
 void scene_free(scene_model *scene);
 
+/*
+ * The same for a JSON scene (spec/json.md): root's text is one JSON
+ * document (root->identity is not used: a JSON scene includes nothing);
+ * a mesh's `file` comes from o's resolver.  jansson parses the text with
+ * its own allocator (malloc unless a program sets json_set_alloc_funcs):
+ * that tree is freed before this returns, the scene comes from o->mem.  A
+ * build without JSON support (JSON=0; scene_json_available() is 0) refuses
+ * every JSON scene with STATUS_USAGE and an error without location
+ * through o->sink.  io/scene_file.h picks the reader by the file name.
+ */
+#define SCENE_JSON_FORMAT "refray-scene"
+#define SCENE_JSON_VERSION 1
+scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status);
+int scene_json_available(void);
+
 /* Whether p is a closed solid on its own: a sphere, a box, a closed
  * cylinder or cone, a torus (mesh triangles are solid only as a mesh). */
 int scene_prim_is_solid(const scene_prim *p);

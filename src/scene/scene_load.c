@@ -4,7 +4,49 @@
 #include <string.h>
 #include "scene/loader.h"
 
-scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status)
+int scene_json_available(void)
+{
+#ifdef REFRAY_HAVE_JSON
+    return 1;
+#else
+    return 0;
+#endif
+}
+
+/* The root file as the scene language. */
+static int lower_language(loader *L, int file, const scene_source *root)
+{
+    char *identity = mem_strdup(L->mem, root->identity ? root->identity : root->path);
+    if (!identity) {
+        loader_oom(L);
+        return 0;
+    }
+    if (!loader_lower_file(L, file, identity))
+        return 0;
+    /* Without a camera block the default camera's basis is derived by the
+     * same rule as any other (a cross product leaves right.y = -0, not the
+     * +0 a written-out default would have), so a scene read back from its
+     * JSON export, which always derives it, has the same bits. */
+    if (L->camera_where.file >= 0)
+        return 1;
+    src_span none = src_span_none();
+    check_at at = check_at_fixed(&none);
+    return check_camera(L, &at, &L->scene->camera);
+}
+
+/* The root file in the language asked for. */
+static int lower_root(loader *L, int file, const scene_source *root, int json)
+{
+#ifdef REFRAY_HAVE_JSON
+    if (json)
+        return loader_lower_json(L, file);
+#else
+    (void)json;
+#endif
+    return lower_language(L, file, root);
+}
+
+static scene_model *load(const scene_source *root, const scene_load_opts *o, int json, int *status)
 {
     scene_load_opts fallback;
     if (!o) {
@@ -22,9 +64,8 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
     loader_scene_defaults(s);
     loader_init(&L, s, o);
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
-    char *identity = file >= 0 ? mem_strdup(&m, root->identity ? root->identity : root->path) : NULL;
-    int ok = identity && loader_lower_file(&L, file, identity) && validate_scene(&L);
-    if (!identity)
+    int ok = file >= 0 && lower_root(&L, file, root, json) && validate_scene(&L);
+    if (file < 0)
         loader_oom(&L);
     *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     if (ok)
@@ -35,4 +76,27 @@ scene_model *scene_load_source(const scene_source *root, const scene_load_opts *
         return NULL;
     }
     return s;
+}
+
+scene_model *scene_load_source(const scene_source *root, const scene_load_opts *o, int *status)
+{
+    return load(root, o, 0, status);
+}
+
+scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status)
+{
+    if (scene_json_available())
+        return load(root, o, 1, status);
+    if (o && o->sink) {
+        source_set none; /* no files: only its allocator, for a long message */
+        diag d;
+        source_set_init(&none, &o->mem);
+        diag_init(&d, &none, o->sink, o->sink_user);
+        diag_report(&d, DIAG_ERROR, src_span_none(),
+                    "'%s' is a JSON scene, and this refray was built without JSON support (JSON=0); rebuild it "
+                    "with JSON=1 (libjansson-dev)",
+                    root->path);
+    }
+    *status = STATUS_USAGE;
+    return NULL;
 }

@@ -15,6 +15,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "export/export_json.h"
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "io/scene_file.h"
@@ -48,18 +49,17 @@ static int write_scene(const kit_job *job, const char *path, char *why, size_t w
     return file_write_bytes(path, root->text, root->len, why, why_size);
 }
 
-/*
- * HOOK(json): the scene as JSON, exactly what `refray export SCENE --to
- * json -o PATH` writes.  Until that export is in the library the file is
- * listed as missing with this reason; the manifest, the README and
- * conform's {json} placeholder need no other change.
- */
+/* The scene as JSON (spec/json.md), what `refray export SCENE --to json
+ * -o PATH` writes, meshes inline so the file stands alone. */
 static int write_json(const kit_job *job, const char *path, char *why, size_t why_size)
 {
-    (void)job;
-    (void)path;
-    snprintf(why, why_size, "this refray has no JSON scene export (refray export --to json)");
-    return KIT_ABSENT;
+    export_json_opts o;
+    char source[MANIFEST_NAME_LEN + 8];
+    memset(&o, 0, sizeof o);
+    snprintf(source, sizeof source, "%s.scene", job->name);
+    o.source = source;
+    int status = export_json_file(job->scene, &o, path, why, why_size);
+    return status == STATUS_USAGE ? KIT_ABSENT : status;
 }
 
 static int write_pov(const kit_job *job, const char *path, char *why, size_t why_size)

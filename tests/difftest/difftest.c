@@ -1,6 +1,6 @@
 /*
  * difftest.c - `make difftest`: random scenes rendered by refray and by
- * POV-Ray 3.7 and compared pixel by pixel (spec/crosscheck.md, section 5).
+ * POV-Ray 3.7 and compared pixel by pixel (spec/crosscheck.md, section 6).
  *
  *   refray-difftest [-n N] [--seed S] [--first K] [-o DIR] [--obj-dir DIR]
  *                   [--povray PROG] [--tolerance STEPS] [--edge-radius PX]

@@ -1,5 +1,5 @@
 /*
- * dt.h - the parts of `make difftest` (spec/crosscheck.md, section 5):
+ * dt.h - the parts of `make difftest` (spec/crosscheck.md, section 6):
  * one scene rendered by refray and by POV-Ray 3.7 and compared pixel by
  * pixel (run.c), a disagreeing scene shrunk to the fewest statements that
  * still disagree (shrink.c), and the campaign over many random scenes
