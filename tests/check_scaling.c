@@ -352,6 +352,49 @@ START_TEST(test_scaling_merge_refusals)
 }
 END_TEST
 
+#if REFRAY_HAVE_JSON
+/* [SCALE-MERGE-1] [SCALE-MERGE-2] Tiles of a JSON scene (spec/json.md; the
+ * demo exported) merge into the bytes of its whole render; the JSON's text
+ * is in the key, so a tile of the same scene written with one more space
+ * is refused as another render's. */
+START_TEST(test_scaling_json_scene)
+{
+    char dir[64], json[300], edited[300], whole[300], merged[300], t[3][300], cmd[1000], name[32];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "scale");
+    const char *exp[] = {"export", SCENE, "--to", "json", "-o", cli_path(json, sizeof json, dir, "demo.json"), NULL};
+    cli_refray(&r, exp);
+    ck_assert_msg(r.code == 0, "export: %s", r.err);
+    snprintf(cmd, sizeof cmd, "{ cat '%s'; echo ' '; } > '%s'", json, cli_path(edited, sizeof edited, dir, "e.json"));
+    ck_assert_int_eq(system(cmd), 0);
+    const char *which[3] = {json, json, edited}, *specs[3] = {"0/2", "1/2", "1/2"};
+    for (int i = 0; i < 3; i++) {
+        snprintf(name, sizeof name, "t%d.pfm", i);
+        const char *args[] = {"render", which[i], "-q", "--width", "40", "--height", "24", "--light-samples", "8",
+                              "--tile", specs[i], "-o", cli_path(t[i], sizeof t[i], dir, name), NULL};
+        cli_refray(&r, args);
+        ck_assert_msg(r.code == 0, "render: %s", r.err);
+    }
+    snprintf(name, sizeof name, "whole.%s", display_ext());
+    const char *args[] = {"render", json, "-q", "--width", "40", "--height", "24", "--light-samples", "8", "-o",
+                          cli_path(whole, sizeof whole, dir, name), NULL};
+    cli_refray(&r, args);
+    ck_assert_int_eq(r.code, 0);
+    snprintf(name, sizeof name, "m.%s", display_ext());
+    const char *merge[] = {"merge", t[0], t[1], "-o", cli_path(merged, sizeof merged, dir, name), NULL};
+    cli_refray(&r, merge);
+    ck_assert_msg(r.code == 0, "merge: %s", r.err);
+    same_bytes(whole, merged);
+    const char *mixed[] = {"merge", t[0], t[2], "-o", cli_path(merged, sizeof merged, dir, "x.pfm"), NULL};
+    cli_refray(&r, mixed);
+    ck_assert_int_eq(r.code, 65);
+    ASSERT_ERR_HAS(&r, "comes from another render");
+    ck_assert(!cli_exists(merged));
+    cli_remove(dir);
+}
+END_TEST
+#endif
+
 /* [SCALE-TILE-2] Options that cannot give a tile are usage errors (64). */
 START_TEST(test_scaling_usage_errors)
 {
@@ -950,6 +993,9 @@ Suite *suite_scaling(void)
     tcase_add_test(files, test_scaling_merge_writes_the_whole_renders_bytes);
     tcase_add_test(files, test_scaling_jobs_write_the_bytes_of_one);
     tcase_add_test(files, test_scaling_merge_refusals);
+#if REFRAY_HAVE_JSON
+    tcase_add_test(files, test_scaling_json_scene);
+#endif
     tcase_add_test(files, test_scaling_usage_errors);
     tcase_add_test(files, test_scaling_full_disk);
     tcase_add_test(files, test_scaling_spec_ids);
