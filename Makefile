@@ -126,6 +126,10 @@ REFRAY   := $(BUILD)/refray
 # host links the public library, which exports rf_ symbols only.
 LIBRARY  := $(BUILD)/librefray-internal.a
 TESTBIN  := $(BUILD)/check_refray
+# The fixture generators (tests/gen/; their rule is below): defined before
+# the test rule, whose prerequisites are expanded where it is read.
+GEN_TOOLS := gen_sphere_meshes gen_ply_corpus gen_stress gen_big_mesh
+GEN_BINS  := $(GEN_TOOLS:%=$(BUILD)/%)
 
 # The public library (see its rules below).
 RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' include/refray.h)
@@ -160,7 +164,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -276,6 +280,17 @@ $(PRECISION): $(BUILD)/obj/tests/precision/precision.o $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS) -lquadmath
 
+# Figures, not tests: the shadow terminator of smooth sphere meshes against
+# the exact Lambert image, before and after the lifted shadow-ray start
+# (spec/shading.md).  TERMINATOR_ARGS="-o DIR" also writes the renders.
+TERMINATOR := $(BUILD)/terminator
+terminator: $(TERMINATOR)
+	$(TERMINATOR) $(TERMINATOR_ARGS)
+
+$(TERMINATOR): $(BUILD)/obj/tests/terminator/terminator.o $(LIBRARY)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
+
 # The long double twin of refray for `refray stability` (spec/numerics.md),
 # built by a recursive make in its own directory and copied next to refray.
 REFRAY_LD := $(BUILD)/refray-ld
@@ -358,15 +373,22 @@ $(DIFFTEST): $(DIFFTEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(DIFFTEST_OBJS) $(LIBRARY) $(ALL_LIBS)
 
-# Fuzzing the front end with libFuzzer (clang, Debian clang + libclang-rt-14-dev).
-# `make fuzz FUZZ_SECONDS=600`: builds everything with clang and the fuzzer's
-# instrumentation in build/fuzz, seeds the corpus from the scenes and the
-# bad-input corpus, and runs.  Crashes are written to build/fuzz/ as
-# crash-*; each one becomes a file under tests/fuzz-regressions/.
+# Fuzzing with libFuzzer (clang, Debian clang + libclang-rt-14-dev): the
+# front end (fuzz_scene), the OBJ reader (fuzz_obj) and the PLY reader
+# (fuzz_ply).  `make fuzz FUZZ_SECONDS=600 [FUZZ_TARGETS="obj ply"]`: builds
+# everything with clang and the fuzzer's instrumentation in build/fuzz,
+# seeds each target's corpus (build/fuzz/corpus-TARGET) from the test files
+# of its kind, and runs each in turn for FUZZ_SECONDS.  Crashes are written
+# to build/fuzz/ as crash-*; each one becomes a file under
+# tests/fuzz-regressions/ (a mesh file with a .scene that reads it).
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 1
+FUZZ_TARGETS ?= scene obj ply
 FUZZ_DIR := build/fuzz
 FUZZ_DEBS := clang libclang-rt-14-dev
+FUZZ_SEEDS_scene = scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/bad/*.json tests/fuzz-regressions/*.scene
+FUZZ_SEEDS_obj = tests/obj/*.obj tests/ply/*.obj scenes/*/*.obj tests/bad/inc/*.obj
+FUZZ_SEEDS_ply = tests/ply/*.ply tests/bad/inc/*.ply
 
 fuzz:
 	$(Q)$(MAKE) --no-print-directory deps
@@ -376,15 +398,23 @@ fuzz:
 	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
 	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
 
-fuzz-run: $(LIBRARY) $(BUILD)/obj/tests/fuzz/fuzz_scene.o
-	$(Q)$(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_scene $(BUILD)/obj/tests/fuzz/fuzz_scene.o $(LIBRARY) $(ALL_LIBS)
-	$(Q)mkdir -p $(BUILD)/corpus
-	$(Q)cp -n scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/bad/*.json tests/fuzz-regressions/* $(BUILD)/corpus/ 2>/dev/null || true
+fuzz-run: $(LIBRARY) $(FUZZ_TARGETS:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o) $(FUZZ_TARGETS:%=$(BUILD)/%.dict)
+	$(Q)for t in $(FUZZ_TARGETS); do \
+	  $(CC) $(CFLAGS) -fsanitize=fuzzer -o $(BUILD)/fuzz_$$t $(BUILD)/obj/tests/fuzz/fuzz_$$t.o $(LIBRARY) $(ALL_LIBS) || exit 1; \
+	done
+	$(Q)mkdir -p $(FUZZ_TARGETS:%=$(BUILD)/corpus-%)
+	$(Q)$(foreach t,$(FUZZ_TARGETS),cp -n $(FUZZ_SEEDS_$(t)) $(BUILD)/corpus-$(t)/ 2>/dev/null;) true
+	$(Q)for t in $(FUZZ_TARGETS); do echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
+	  (cd $(BUILD) && ./fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
+	    -dict=$$t.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus-$$t) || exit 1; \
+	done
+
+$(BUILD)/scene.dict: src/lang/keywords.c
 	$(Q){ sed -n 's/^ *{"\([A-Za-z_0-9]*\)", KWC.*/"\1"/p' src/lang/keywords.c; \
 	  printf '%s\n' '"{"' '"}"' '"["' '"]"' '"("' '")"' '","' '"="' '".."' '"#"' '"\\""' \
-	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $(BUILD)/scene.dict
-	cd $(BUILD) && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -jobs=$(FUZZ_JOBS) -workers=$(FUZZ_JOBS) \
-	  -dict=scene.dict -max_len=8192 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 corpus
+	    '"1e400"' '"-0"' '"pi"' '"linear"' '"inverse_square"' '"none"'; } > $@
+$(BUILD)/%.dict: tests/fuzz/%.dict
+	$(Q)cp $< $@
 
 VALGRIND_CMD := $(if $(filter 1,$(VALGRIND)),valgrind -q --error-exitcode=99 --leak-check=full \
                 --show-leak-kinds=$(LEAK_KINDS) --errors-for-leak-kinds=$(LEAK_KINDS) \
@@ -400,10 +430,10 @@ KIT_CHECK := $(BUILD)/kit_check
 # decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh), on
 # the other core while the suite runs; their report follows the suite's.
 SCHEMA_LOG := $(BUILD)/json-schema.log
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK)
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK) $(GEN_BINS)
 	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ { sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && \
 	  sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry; } > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
-	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
+	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) GEN_BIN_DIR=$(BUILD) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
 	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
 	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
 	exit $$rc
@@ -427,6 +457,21 @@ $(KIT_CHECK): tests/conform/kit_check.c
 	@mkdir -p $(dir $@)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< -lm
+
+# The generators of committed fixtures (tests/gen/, C, no library): `make
+# fixtures` writes the PLY corpus, the terminator's sphere meshes and the
+# computed stress scenes again in place; tests/check_fixtures.c checks that
+# they give the committed bytes.  gen_big_mesh writes the million-triangle
+# torus of spec/numerics.md 2.16 where it is told.  -ffp-contract=off: every
+# product rounded on its own, as in the committed files (clang would fuse
+# a*b+c and change the last digit of a stress scene).
+$(GEN_BINS): $(BUILD)/%: tests/gen/%.c tests/gen/gen.c tests/gen/gen.h
+	@mkdir -p $(dir $@)
+	@echo "  CC      $<"
+	$(Q)$(CC) -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(WARN) $(CFLAGS) $(LDFLAGS) -o $@ $< tests/gen/gen.c -lm
+
+fixtures: $(GEN_BINS)
+	$(Q)for g in gen_sphere_meshes gen_ply_corpus gen_stress; do $(BUILD)/$$g . || exit 1; done
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"

@@ -117,12 +117,14 @@ typedef enum rf_severity {
 /* One message about the scene.  Its pointers are valid during the
  * callback only.  A message that refers to a file that was included is
  * followed by one note "included from here" per include, outermost last
- * ("in the mesh read here" for an OBJ file read by a mesh; those notes have
- * no source_line). */
+ * ("in the mesh read here" for an OBJ or PLY file read by a mesh; those
+ * notes have no source_line). */
 typedef struct rf_diagnostic {
     rf_severity severity;
     const char *file;            /* the file's name; NULL: no location */
-    int line, column;            /* 1-based; column in bytes; 0 without a location */
+    int line, column;            /* 1-based; column in bytes; 0 without a location, or
+                                    with file alone (a mesh file read earlier, whose
+                                    text is no longer kept) */
     const char *message;         /* "radius must be > 0, got -1" */
     const char *source_line;     /* the line the message is about, without its end of
                                     line (not NUL-terminated); NULL: none to show */
@@ -157,8 +159,10 @@ typedef struct rf_source {
  * reason in message (at most message_size bytes with the NUL), which
  * becomes an error at the statement (RF_ERR_NO_MEMORY ends the load as out
  * of memory).  After RF_OK the library copies what it needs, then calls
- * release (when not NULL) with the same *out; after a failure it calls
- * nothing.  Enforce your own size limits in fetch.
+ * release (when not NULL) with the same *out; a mesh file's text is read
+ * where it is, without a copy, and released once its mesh is built (before
+ * the load returns).  After a failure it calls nothing.  Enforce your own
+ * size limits in fetch.
  */
 typedef struct rf_resolver {
     rf_status (*fetch)(void *user, const char *from, const char *name, rf_source *out, char *message,
@@ -237,14 +241,17 @@ enum {
     RF_FEATURE_MESHES = 32
 };
 
-/* What a scene holds, as `refray check` reports it. */
+/* What a scene holds, as `refray check` reports it.  A mesh is one
+ * primitive however many triangles it has (they are in mesh_triangles). */
 typedef struct rf_scene_info {
     int width, height;      /* the image, pixels */
     int samples;            /* k of the k x k camera rays per pixel */
     int max_depth;
-    int primitives;         /* every primitive, mesh triangles included */
-    int spheres, planes, triangles, disks, boxes, cylinders, cones, tori; /* outside meshes */
+    int primitives;         /* every primitive, a mesh counting as one */
+    int spheres, planes, triangles, disks, boxes, cylinders, cones, tori; /* triangle: a `triangle` statement */
     int meshes, mesh_triangles;
+    long mesh_bytes;        /* what the meshes' stores hold (vertices, normals,
+                               corner indices, open-edge masks), in bytes */
     int lights;             /* point, distant and distributed (not ambient) */
     int materials;
     unsigned features;      /* RF_FEATURE_* */
@@ -252,6 +259,26 @@ typedef struct rf_scene_info {
 } rf_scene_info;
 
 RF_API void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info);
+
+/* What the load found out about one mesh ("refray check" prints it). */
+typedef struct rf_mesh_info {
+    const char *path;       /* the OBJ or PLY file as the resolver named it;
+                               valid while the scene is */
+    int triangles;          /* kept (with area after the transforms) */
+    int faces;              /* faces read, polygons of any size */
+    int dropped;            /* faces or triangles with no area */
+    int nonplanar;          /* polygons not on one plane (cut all the same) */
+    int fanned;             /* polygons cut as a fan (not simple) */
+    int closed;             /* every edge shared by exactly two triangles: a solid */
+    int oriented;           /* every shared edge runs opposite ways in its two triangles */
+    int pieces;             /* parts connected through shared edges */
+    int open_edges;         /* edges of one triangle only */
+    int crowded_edges;      /* edges of three or more triangles */
+} rf_mesh_info;
+
+/* Fills *info for mesh number index (0 .. rf_scene_info.meshes - 1, in the
+ * order the scene names them).  RF_OK, or RF_ERR_USAGE for another index. */
+RF_API rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info);
 
 /* ---- Rendering -------------------------------------------------------- */
 
@@ -290,6 +317,7 @@ typedef struct rf_render_stats {
     long medium_overflows;         /* glass nested deeper than the tracer follows */
     long node_visits, primitive_tests;
     int bvh_nodes, bvh_leaves, bvh_depth;
+    long bvh_bytes;                /* the tree's nodes, part references and plane list */
     int shadows, specular, reflection, refraction; /* 1: the pass ran */
     int overflow_x, overflow_y;    /* after RF_ERR_DATA: the pixel whose ray tree
                                       passed max_tree_rays */

@@ -525,6 +525,54 @@ START_TEST(test_api_scene_info_quadrics)
 }
 END_TEST
 
+/* [EMBED-API-5] A mesh is one primitive; its triangles and store are
+ * counted apart, and each mesh has its own record.  By hand: a closed
+ * tetrahedron (4 vertices, 4 triangles, no open edge) and a quad cut into
+ * 2 triangles (4 open edges, one mask byte per triangle); 3 doubles a
+ * vertex, 3 ints a triangle. */
+START_TEST(test_api_scene_info_meshes)
+{
+    static const char *const files[] = {"tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                                   "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n",
+                                        "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n", NULL};
+    static const char text[] = "mesh { file \"tet.obj\" }\nsphere { center [0, 0, -3] }\n"
+                               "mesh { file \"quad.obj\" translate [0, 0, -1] }\n";
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.resolver.fetch = memory_fetch;
+    o.resolver.user = (void *)files;
+    rf_scene *s;
+    ck_assert_int_eq(rf_scene_load_memory("m.scene", text, strlen(text), &o, &s), RF_OK);
+    rf_scene_info i;
+    rf_scene_get_info(s, &i);
+    ck_assert_int_eq(i.primitives, 3);
+    ck_assert_int_eq(i.meshes, 2);
+    ck_assert_int_eq(i.spheres, 1);
+    ck_assert_int_eq(i.triangles, 0);
+    ck_assert_int_eq(i.mesh_triangles, 6);
+    long tet = 4 * 3 * (long)sizeof(double) + 4 * 3 * (long)sizeof(int);
+    long quad = 4 * 3 * (long)sizeof(double) + 2 * 3 * (long)sizeof(int) + 2;
+    ck_assert_int_eq(i.mesh_bytes, tet + quad);
+    rf_mesh_info m;
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, 0, &m), RF_OK);
+    ck_assert_str_eq(m.path, "tet.obj");
+    ck_assert_int_eq(m.triangles, 4);
+    ck_assert_int_eq(m.faces, 4);
+    ck_assert(m.closed && m.oriented);
+    ck_assert_int_eq(m.pieces, 1);
+    ck_assert_int_eq(m.open_edges + m.crowded_edges + m.dropped + m.nonplanar + m.fanned, 0);
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, 1, &m), RF_OK);
+    ck_assert_str_eq(m.path, "quad.obj");
+    ck_assert_int_eq(m.triangles, 2);
+    ck_assert_int_eq(m.faces, 1);
+    ck_assert(!m.closed && m.oriented);
+    ck_assert_int_eq(m.open_edges, 4);
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, 2, &m), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, -1, &m), RF_ERR_USAGE);
+    rf_scene_free(s);
+}
+END_TEST
+
 /* A bump allocator over a fixed buffer, as an embedding host would write
  * one: no header, sized releases ignored except for the last block. */
 typedef struct bump {
@@ -682,6 +730,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_json_scenes);
     tcase_add_test(tc, test_api_scene_info);
     tcase_add_test(tc, test_api_scene_info_quadrics);
+    tcase_add_test(tc, test_api_scene_info_meshes);
     tcase_add_test(tc, test_api_fixed_arena);
     tcase_add_test(tc, test_api_counting_allocator);
     tcase_add_test(tc, test_api_image_write);

@@ -472,10 +472,12 @@ START_TEST(test_bvh_deterministic_and_well_formed)
     int *seen = calloc((size_t)n + 2, sizeof *seen);
     ck_assert_ptr_nonnull(seen);
     ck_assert_int_eq(a.item_count + a.unbounded_count, n + 2);
-    for (int i = 0; i < a.item_count; i++)
-        seen[a.items[i]]++;
+    for (int i = 0; i < a.item_count; i++) {
+        ck_assert_int_eq(a.items[i].part, 0);
+        seen[a.items[i].prim]++;
+    }
     for (int i = 0; i < a.unbounded_count; i++)
-        seen[a.unbounded[i]]++;
+        seen[a.unbounded[i].prim]++;
     for (int i = 0; i < n + 2; i++)
         ck_assert_int_eq(seen[i], 1);
     /* Leaves cover the items exactly; inner boxes hold their children;
@@ -488,7 +490,7 @@ START_TEST(test_bvh_deterministic_and_well_formed)
             leaf_items += nd->count;
             for (int i = nd->first; i < nd->first + nd->count; i++) {
                 vec3 lo, hi;
-                ck_assert(isect_prim_bounds(&prims[a.items[i]], &lo, &hi));
+                ck_assert(isect_prim_bounds(&prims[a.items[i].prim], &lo, &hi));
                 ck_assert(lo.x >= nd->lo.x && lo.y >= nd->lo.y && lo.z >= nd->lo.z);
                 ck_assert(hi.x <= nd->hi.x && hi.y <= nd->hi.y && hi.z <= nd->hi.z);
             }

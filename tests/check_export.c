@@ -11,6 +11,7 @@
  */
 #include <dirent.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,7 @@
 #include <unistd.h>
 #include "io/scene_file.h"
 #include "export/export_pov.h"
+#include "export/export_pov_far.h"
 #include "testlib.h"
 
 static const char scene_a[] =
@@ -85,7 +87,7 @@ static char *export_text(const char *text, const pov_opts *o, pov_notes *notes, 
 
 static char *export_default(const char *text, pov_notes *notes)
 {
-    pov_opts o = {0, "t.scene", 0, 0};
+    pov_opts o = {0, "t.scene", 0, 0, 0};
     int rc;
     char *sdl = export_text(text, &o, notes, &rc);
     ck_assert_int_eq(rc, 0);
@@ -230,7 +232,7 @@ END_TEST
 /* plain_sheets: the disk and the clear sphere keep POV-Ray's ior 1. */
 START_TEST(test_pov_export_write_plain_sheets)
 {
-    pov_opts o = {0, NULL, 0, 1};
+    pov_opts o = {0, NULL, 0, 1, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_a, &o, &n, &rc);
@@ -247,7 +249,7 @@ END_TEST
  * header says so. */
 START_TEST(test_pov_export_write_scale)
 {
-    pov_opts o = {0, NULL, 0.25, 0};
+    pov_opts o = {0, NULL, 0.25, 0, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_a, &o, &n, &rc);
@@ -288,6 +290,31 @@ START_TEST(test_pov_export_write_triangle)
 }
 END_TEST
 
+/* [XCHK-MAP-MESH-1] A mesh is a mesh2 of its shared vertices (z negated),
+ * its normals plus one face normal per flat triangle, faces and then, as
+ * POV-Ray's grammar wants them, normal indices; an inside_vector only when
+ * closed.  messy-vtvn.obj: 8 vertices, 6 normals, 12 triangles of which 6
+ * are flat (its faces 1, 2 and 5 give no normals), so 12 normal vectors,
+ * the first flat triangle's index 6 at all three corners. */
+START_TEST(test_pov_export_write_mesh)
+{
+    pov_notes n;
+    char *sdl = export_default("mesh { file \"tests/obj/messy-vtvn.obj\" }\n", &n);
+    ck_assert_has(sdl, "mesh2 {\n  vertex_vectors { 8,\n    <-1, -1, 1>,");
+    ck_assert_has(sdl, "normal_vectors { 12,");
+    ck_assert_has(sdl, "normal_indices { 12,\n    <6, 6, 6>,");
+    const char *faces = strstr(sdl, "face_indices { 12"), *normals = strstr(sdl, "normal_indices");
+    const char *inside = strstr(sdl, "inside_vector");
+    ck_assert(faces && normals && inside && faces < normals && normals < inside);
+    free(sdl);
+    sdl = export_default("mesh { file \"tests/obj/messy-open.obj\" }\n", &n);
+    ck_assert_has(sdl, "face_indices { 10,");
+    ck_assert_ptr_null(strstr(sdl, "inside_vector"));
+    ck_assert_ptr_null(strstr(sdl, "normal_vectors"));
+    free(sdl);
+}
+END_TEST
+
 /* [XCHK-MAP-QUADRIC-1] POV-Ray's cylinder and cone take the end centres
  * and radii as refray's (z negated), `open` as it is.  Its torus lies
  * about y at the origin: a matrix takes y to the axis and the origin to
@@ -319,7 +346,7 @@ END_TEST
 START_TEST(test_pov_export_check_notes)
 {
     scene_model *s = load(scene_a);
-    pov_opts o = {0, NULL, 0, 0};
+    pov_opts o = {0, NULL, 0, 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
     ck_assert_int_eq(n.refused, 0);
@@ -336,7 +363,7 @@ END_TEST
 static void notes_of(const char *text, pov_notes *n)
 {
     scene_model *s = load(text);
-    pov_opts o = {0, NULL, 0, 0};
+    pov_opts o = {0, NULL, 0, 0, 0};
     ck_assert_int_eq(pov_export_check(s, &o, n), 1);
     scene_free(s);
 }
@@ -366,6 +393,31 @@ START_TEST(test_pov_export_check_smooth_mesh)
     notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/tetrahedron.obj\" material { t 0.5 ior 1.5 } }\n", &n);
     ck_assert_int_eq(notes_with(&n, "vertex normals", NULL), 0);
     notes_of("image { max_depth 2 }\nmesh { file \"tests/obj/cube.obj\" material { Kd 0.5 } }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+}
+END_TEST
+
+/* [XCHK-MAP-MESH-3] A curved smooth mesh (the icosahedron with vertex
+ * normals) in a scene with shadows is listed: refray lifts its shadow
+ * rays, POV-Ray does not.  Not listed: with pov_opts.facet_shadows (the
+ * comparison renders refray the seed's way), without a light, and for
+ * cube.obj, whose corners of a face share the face's normal (flat). */
+START_TEST(test_pov_export_check_terminator)
+{
+    static const char lit[] = "point_light { position [0, 5, 0] falloff none }\n"
+                              "mesh { file \"tests/obj/icosahedron_smooth.obj\" material { Kd 0.5 } }\n";
+    pov_notes n;
+    notes_of(lit, &n);
+    ck_assert_int_eq(notes_with(&n, "lifted point", "POV-Ray on the facet"), 1);
+    scene_model *s = load(lit);
+    pov_opts o = {0, NULL, 0, 0, 1};
+    ck_assert_int_eq(pov_export_check(s, &o, &n), 1);
+    ck_assert_int_eq(n.count, 0);
+    scene_free(s);
+    notes_of("mesh { file \"tests/obj/icosahedron_smooth.obj\" material { Kd 0.5 } }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+    notes_of("point_light { position [0, 5, 0] falloff none }\n"
+             "mesh { file \"tests/obj/cube.obj\" material { Kd 0.5 } }\n", &n);
     ck_assert_int_eq(n.count, 0);
 }
 END_TEST
@@ -462,6 +514,33 @@ START_TEST(test_pov_export_check_far_shadow)
 }
 END_TEST
 
+/* [XCHK-MAP-FAR-1] [XCHK-MAP-DISTANT-1] A mesh is bounded by its
+ * positions: cube.obj ([-1, 1]^3) moved 100 along x, the eye at (0, 0, 5)
+ * and no other primitive or positional light.  The extent is (0, -1, -1)
+ * to (101, 1, 5): centre (50.5, 0, 2), radius half its diagonal,
+ * sqrt(101^2 + 2^2 + 6^2) / 2 = sqrt(10241) / 2.  (Left out, the mesh
+ * would leave the eye alone: radius 1.)  A transparent sphere whose
+ * surface that cube cuts (the cube from x = 0.5) is listed as near it. */
+START_TEST(test_pov_export_far_bounds_mesh)
+{
+    scene_model *s = load("camera { eye [0, 0, 5] look_at [0, 0, 0] }\n"
+                          "mesh { file \"tests/obj/cube.obj\" translate [100, 0, 0] }\n");
+    pov_bounds b = pov_far_bounds(s);
+    ck_assert_double_eq_tol(b.centre.x, 50.5, 1e-12);
+    ck_assert_double_eq_tol(b.centre.y, 0, 1e-12);
+    ck_assert_double_eq_tol(b.centre.z, 2, 1e-12);
+    ck_assert_double_eq_tol(b.radius, 0.5 * sqrt(10241.0), 1e-12);
+    scene_free(s);
+    pov_notes n;
+    notes_of("point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+             "mesh { file \"tests/obj/cube.obj\" translate [1.5, 0, 0] }\n", &n);
+    ck_assert_int_eq(notes_with(&n, "transparent sphere", "within 1e-3"), 1);
+    notes_of("point_light { position [0, 5, 0] falloff none }\nsphere { material { t 0.5 ior 1.5 Ks 0.5 } }\n"
+             "mesh { file \"tests/obj/cube.obj\" translate [3, 0, 0] }\n", &n);
+    ck_assert_int_eq(n.count, 0);
+}
+END_TEST
+
 /* linear with d0 0 is approximated (fade_distance stands in for d0), a
  * non-grey Ks gives phong its mean (0.25 + 0.5 + 0.75)/3 = 0.5 and keeps
  * the colour for the mirror ray; both listed, in the header too. */
@@ -484,7 +563,7 @@ END_TEST
  * and nothing written. */
 START_TEST(test_pov_export_write_refused)
 {
-    pov_opts o = {0, NULL, 0, 0};
+    pov_opts o = {0, NULL, 0, 0, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_refused, &o, &n, &rc);
@@ -518,7 +597,7 @@ END_TEST
  * the axes shrink by (n-1)/n = 1/2 to (1,0,0) and (0,0,2)/2, z negated. */
 START_TEST(test_pov_export_write_area_light)
 {
-    pov_opts o = {1, NULL, 0, 0};
+    pov_opts o = {1, NULL, 0, 0, 0};
     pov_notes n;
     int rc;
     char *sdl = export_text(scene_rect, &o, &n, &rc);
@@ -583,7 +662,7 @@ START_TEST(test_pov_export_file_atomic)
     fputs("old contents\n", old);
     fclose(old);
     scene_model *s = load(scene_a);
-    pov_opts o = {0, "t.scene", 0, 0};
+    pov_opts o = {0, "t.scene", 0, 0, 0};
     pov_notes n;
     ck_assert_int_eq(pov_export_file(s, &o, path, &n, err, sizeof err), 0);
     scene_free(s);
@@ -603,7 +682,7 @@ START_TEST(test_pov_export_file_failures)
 {
     char dir[] = "/tmp/refray-export-XXXXXX", path[256], err[256];
     ck_assert_ptr_nonnull(mkdtemp(dir));
-    pov_opts o = {0, NULL, 0, 0};
+    pov_opts o = {0, NULL, 0, 0, 0};
     pov_notes n;
     scene_model *bad = load(scene_refused), *good = load(scene_a);
     snprintf(path, sizeof path, "%s/refused.pov", dir);
@@ -750,12 +829,15 @@ Suite *suite_export(void)
     tcase_add_test(sdl, test_pov_export_write_scale);
     tcase_add_test(sdl, test_pov_export_write_matrix);
     tcase_add_test(sdl, test_pov_export_write_triangle);
+    tcase_add_test(sdl, test_pov_export_write_mesh);
     tcase_add_test(sdl, test_pov_export_write_quadrics);
     tcase_add_test(sdl, test_pov_export_check_notes);
     tcase_add_test(sdl, test_pov_export_check_smooth_mesh);
+    tcase_add_test(sdl, test_pov_export_check_terminator);
     tcase_add_test(sdl, test_pov_export_check_shadow_tolerance);
     tcase_add_test(sdl, test_pov_export_check_far_plane);
     tcase_add_test(sdl, test_pov_export_check_far_shadow);
+    tcase_add_test(sdl, test_pov_export_far_bounds_mesh);
     tcase_add_test(sdl, test_pov_export_write_approximations);
     tcase_add_test(sdl, test_pov_export_write_refused);
     tcase_add_test(sdl, test_pov_export_write_distributed_points);

@@ -151,6 +151,7 @@ static void same_prim(const scene_prim *a, const scene_prim *b, const char *name
         if (a->u.triangle.has_normals)
             SAME_BITS(a->u.triangle.n, b->u.triangle.n, "triangle normals", i);
         break;
+    case PRIM_MESH: break; /* a view of its mesh's store: same_mesh */
     }
     if (a->has_xform) {
         SAME_BITS(a->to_world, b->to_world, "to_world of primitive", i);
@@ -195,6 +196,24 @@ static void same_camera(const scene_camera *a, const scene_camera *b, const char
     SAME_BITS(a->true_up, b->true_up, "camera true_up", 0);
 }
 
+#define SAME_ARRAY(a, b, n, what)                                                                          \
+    ck_assert_msg(((a) == NULL) == ((b) == NULL) && (!(a) || memcmp((a), (b), (size_t)(n) * sizeof *(a)) == 0), \
+                  "%s: mesh %d: %s differ after the round trip", name, i, what)
+
+/* A mesh's store, every array the tracer reads, bit for bit. */
+static void same_mesh(const scene_mesh *ma, const scene_mesh *mb, const char *name, int i)
+{
+    const scene_trimesh *a = &ma->geom, *b = &mb->geom;
+    ck_assert_msg(ma->prim == mb->prim && a->position_count == b->position_count &&
+                      a->normal_count == b->normal_count && a->tri_count == b->tri_count && a->closed == b->closed,
+                  "%s: mesh %d: primitive, counts or closedness differ", name, i);
+    SAME_ARRAY(a->positions, b->positions, a->position_count, "positions");
+    SAME_ARRAY(a->normals, b->normals, a->normal_count, "normals");
+    SAME_ARRAY(a->tri, b->tri, a->tri_count, "triangles");
+    SAME_ARRAY(a->tri_normal, b->tri_normal, a->tri_count, "triangle normals");
+    SAME_ARRAY(a->open, b->open, a->tri_count, "open edges");
+}
+
 /* Everything the tracer reads, compared bit for bit (spans and mesh
  * paths, which only diagnostics read, are left out). */
 static void same_scene(const scene_model *a, const scene_model *b, const char *name)
@@ -214,8 +233,7 @@ static void same_scene(const scene_model *a, const scene_model *b, const char *n
     for (int i = 0; i < a->prim_count; i++)
         same_prim(&a->prims[i], &b->prims[i], name, i);
     for (int i = 0; i < a->mesh_count; i++)
-        ck_assert_msg(a->meshes[i].first_prim == b->meshes[i].first_prim && a->meshes[i].count == b->meshes[i].count,
-                      "%s: mesh %d differs", name, i);
+        same_mesh(&a->meshes[i], &b->meshes[i], name, i);
 }
 
 /* Renders small enough for a unit test: scenes over the budget at 40 x 30
@@ -278,12 +296,48 @@ START_TEST(test_json_roundtrip_scene)
 }
 END_TEST
 
+/* [JSON-ROUNDTRIP-1] [JSON-MESH-1] Mesh scenes outside scenes/, meshes
+ * inline: three PLY meshes (ASCII and both binary orders), a closed glass
+ * prism seen head on through its shared edges, and the messy-OBJ corpus
+ * (dropped, non-convex, non-planar, open, inconsistently wound faces, vt/vn
+ * mixes): the same store and the same image, bit for bit. */
+static const char *const mesh_scenes[] = {
+    "tests/ply/encodings.scene",
+    "tests/obj/prism_head_on.scene",
+    "mesh { file \"tests/obj/messy-degenerate.obj\" }\n",
+    "mesh { file \"tests/obj/messy-nonconvex.obj\" material { t 0.5 ior 1.5 } }\n",
+    "mesh { file \"tests/obj/messy-nonplanar.obj\" rotate [10, 20, 30] }\n",
+    "mesh { file \"tests/obj/messy-open.obj\" material { t 0.5 ior 1.5 } }\n",
+    "mesh { file \"tests/obj/messy-winding.obj\" scale [1, -1, 1] material { t 0.9 ior 1.5 } }\n",
+    "mesh { file \"tests/obj/messy-vtvn.obj\" translate [0, 0, -3] }\n",
+    "mesh { file \"tests/obj/messy-negative.obj\" }\n",
+};
+
+START_TEST(test_json_roundtrip_mesh_scenes)
+{
+    const char *what = mesh_scenes[_i];
+    int status, is_text = strchr(what, '{') != NULL;
+    scene_model *s = is_text ? load_quiet("t.scene", what, strlen(what), &status) : load_quiet(what, NULL, 0, &status);
+    ck_assert_msg(s != NULL, "%s does not load (%d)", what, status);
+    ck_assert_int_gt(s->mesh_count, 0);
+    export_json_opts o;
+    memset(&o, 0, sizeof o);
+    o.source = is_text ? "t.scene" : what;
+    scene_model *back = round_trip(s, &o, "roundtrip.json");
+    same_scene(s, back, what);
+    same_render(s, back, what);
+    scene_free(s);
+    scene_free(back);
+}
+END_TEST
+
 /* [JSON-MESH-1] With mesh files the meshes are OBJ files beside the JSON,
  * named after it, and the scene still comes back bit for bit. */
 START_TEST(test_json_roundtrip_mesh_files)
 {
     static const char *const scenes[] = {"scenes/mesh.scene", "scenes/stress/thin_triangles.scene",
-                                         "scenes/stress/watertight_mesh.scene"};
+                                         "scenes/stress/watertight_mesh.scene", "tests/ply/encodings.scene",
+                                         "tests/obj/prism_head_on.scene"};
     char dir[256], json[320], obj[320];
     cli_scratch(dir, sizeof dir, "json");
     for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
@@ -583,6 +637,7 @@ Suite *suite_json(void)
     tcase_add_test(tc, test_json_roundtrip_scene_count);
     tcase_add_loop_test(tc, test_json_roundtrip_scene, 0, l.count > 0 ? l.count : 1);
     tcase_add_test(tc, test_json_roundtrip_mesh_files);
+    tcase_add_loop_test(tc, test_json_roundtrip_mesh_scenes, 0, (int)(sizeof mesh_scenes / sizeof mesh_scenes[0]));
     tcase_add_test(tc, test_json_export_defaults_explicit);
     tcase_add_test(tc, test_json_export_lights_materials_transforms);
     tcase_add_test(tc, test_json_export_numbers_round_trip);

@@ -639,35 +639,37 @@ START_TEST(test_scene_load_mesh)
     ck_assert_msg(l.scene != NULL, "%s", l.messages);
     const scene_model *s = l.scene;
     ck_assert_int_eq(s->mesh_count, 3);
-    ck_assert_int_eq(s->prim_count, 12 + 2 + 4);
-    ck_assert_int_eq(s->meshes[0].first_prim, 0);
-    ck_assert_int_eq(s->meshes[0].count, 12);
-    ck_assert_int_eq(s->meshes[1].first_prim, 12);
-    ck_assert_int_eq(s->meshes[1].count, 2);
-    ck_assert_int_eq(s->meshes[2].count, 4);
+    ck_assert_int_eq(s->prim_count, 3);
+    ck_assert_int_eq(s->meshes[0].geom.tri_count, 12);
+    ck_assert_int_eq(s->meshes[1].geom.tri_count, 2);
+    ck_assert_int_eq(s->meshes[2].geom.tri_count, 4);
     ck_assert_str_eq(s->meshes[0].path, "tests/scenes/../obj/cube.obj");
     ck_assert(s->features.meshes);
     for (int i = 0; i < s->prim_count; i++) {
-        ck_assert_int_eq(s->prims[i].kind, PRIM_TRIANGLE);
-        ck_assert_int_eq(s->prims[i].mesh, i < 12 ? 0 : i < 14 ? 1 : 2);
+        ck_assert_int_eq(s->prims[i].kind, PRIM_MESH);
+        ck_assert_int_eq(s->prims[i].mesh, i);
+        ck_assert_int_eq(s->meshes[i].prim, i);
+        /* The primitive's view shares the mesh's arrays. */
+        ck_assert_ptr_eq(s->prims[i].u.mesh.tri, s->meshes[i].geom.tri);
     }
-    /* The cube's first face `f 1//1 4//1 3//1 2//1` fans into (1,4,3):
+    /* The cube's first face `f 1//1 4//1 3//1 2//1` is cut into (1,4,3):
      * (-1,-1,-1) (-1,1,-1) (1,1,-1), with the normal (0,0,-1). */
-    const scene_prim *t = &s->prims[0];
-    ck_assert(t->u.triangle.has_normals);
-    ck_assert_vec_near(t->u.triangle.p[0], vec_make(-1, -1, -1), 0);
-    ck_assert_vec_near(t->u.triangle.p[1], vec_make(-1, 1, -1), 0);
-    ck_assert_vec_near(t->u.triangle.p[2], vec_make(1, 1, -1), 0);
-    ck_assert_vec_near(t->u.triangle.n[0], vec_make(0, 0, -1), 0);
+    const scene_trimesh *g = &s->meshes[0].geom;
+    ck_assert_ptr_nonnull(g->tri_normal);
+    ck_assert_vec_near(g->positions[g->tri[0][0]], vec_make(-1, -1, -1), 0);
+    ck_assert_vec_near(g->positions[g->tri[0][1]], vec_make(-1, 1, -1), 0);
+    ck_assert_vec_near(g->positions[g->tri[0][2]], vec_make(1, 1, -1), 0);
+    ck_assert_vec_near(g->normals[g->tri_normal[0][0]], vec_make(0, 0, -1), 0);
+    ck_assert(g->closed);
     /* The quad's second triangle (1,3,4): corners translated by (0,0,5),
      * then doubled: (-2,-2,10) (2,2,10) (-2,2,10). */
-    t = &s->prims[13];
-    ck_assert(!t->u.triangle.has_normals);
-    ck_assert_vec_near(t->u.triangle.p[0], vec_make(-2, -2, 10), 0);
-    ck_assert_vec_near(t->u.triangle.p[1], vec_make(2, 2, 10), 0);
-    ck_assert_vec_near(t->u.triangle.p[2], vec_make(-2, 2, 10), 0);
-    ck_assert_vec_near(s->materials[t->material].kd, vec_splat(0.5), 0);
-    ck_assert_int_eq(s->prims[12].material, t->material);
+    g = &s->meshes[1].geom;
+    ck_assert_ptr_null(g->tri_normal);
+    ck_assert_vec_near(g->positions[g->tri[1][0]], vec_make(-2, -2, 10), 0);
+    ck_assert_vec_near(g->positions[g->tri[1][1]], vec_make(2, 2, 10), 0);
+    ck_assert_vec_near(g->positions[g->tri[1][2]], vec_make(-2, 2, 10), 0);
+    ck_assert(!g->closed);
+    ck_assert_vec_near(s->materials[s->prims[1].material].kd, vec_splat(0.5), 0);
     loaded_done(&l);
 }
 END_TEST

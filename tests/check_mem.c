@@ -102,7 +102,7 @@ static int load_and_render(const char *path, const char *text, const mem *m, int
 }
 
 static const char *const scenes[] = {"scenes/demo.scene", "scenes/mesh.scene", "tests/scenes/include/main.scene",
-                                     "scenes/cornell.scene"};
+                                     "scenes/cornell.scene", "tests/ply/encodings.scene"};
 
 /* [EMBED-MEM-1] A load and a render allocate only through the mem given,
  * release every block with its size, and leave nothing behind. */

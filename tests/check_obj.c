@@ -19,7 +19,7 @@ typedef struct run {
     FILE *out;         /* NULL: diagnostics only counted */
     char *log;
     size_t log_size;
-    obj_mesh mesh;
+    polymesh mesh;
     int ok;
 } run;
 
@@ -52,7 +52,7 @@ static void run_free(run *r)
     if (r->out)
         fclose(r->out);
     free(r->log);
-    obj_free(&r->mesh);
+    polymesh_free(&r->mesh);
     source_set_free(&r->set);
 }
 
@@ -68,21 +68,22 @@ static const char *first_line(run *r, char *buf, size_t size)
     return buf;
 }
 
-static void assert_triangle(const obj_mesh *m, int i, int a, int b, int c)
+static void assert_triangle(const polymesh *m, int i, int a, int b, int c)
 {
     ck_assert_int_lt(i, m->triangle_count);
-    const obj_triangle *t = &m->triangles[i];
-    ck_assert_msg(t->v[0] == a && t->v[1] == b && t->v[2] == c,
-                  "triangle %d is (%d,%d,%d), expected (%d,%d,%d)", i, t->v[0], t->v[1], t->v[2],
+    const int *t = m->tri[i];
+    ck_assert_msg(t[0] == a && t[1] == b && t[2] == c,
+                  "triangle %d is (%d,%d,%d), expected (%d,%d,%d)", i, t[0], t[1], t[2],
                   a, b, c);
 }
 
-static void assert_normals(const obj_mesh *m, int i, int a, int b, int c)
+static void assert_normals(const polymesh *m, int i, int a, int b, int c)
 {
-    const obj_triangle *t = &m->triangles[i];
-    ck_assert_msg(t->vn[0] == a && t->vn[1] == b && t->vn[2] == c,
-                  "triangle %d normals (%d,%d,%d), expected (%d,%d,%d)", i, t->vn[0], t->vn[1],
-                  t->vn[2], a, b, c);
+    static const int none[3] = {-1, -1, -1};
+    const int *t = m->tri_normal ? m->tri_normal[i] : none;
+    ck_assert_msg(t[0] == a && t[1] == b && t[2] == c,
+                  "triangle %d normals (%d,%d,%d), expected (%d,%d,%d)", i, t[0], t[1],
+                  t[2], a, b, c);
 }
 
 #define TRI3 "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
@@ -168,13 +169,10 @@ START_TEST(test_obj_parse_polygon_fan)
     assert_triangle(&r.mesh, 0, 0, 1, 2);
     assert_triangle(&r.mesh, 1, 0, 2, 3);
     assert_triangle(&r.mesh, 2, 0, 3, 4);
-    /* Each triangle points at "f 1 2 3 4 5": from the 'f' up to the '5'. */
+    /* Each triangle points at the 'f' of "f 1 2 3 4 5". */
     size_t f_at = (size_t)(strstr(text, "f 1") - text);
-    for (int i = 0; i < 3; i++) {
-        ck_assert_int_eq(r.mesh.triangles[i].where.file, 1);
-        ck_assert_uint_eq(r.mesh.triangles[i].where.begin, f_at);
-        ck_assert_uint_eq(r.mesh.triangles[i].where.end, f_at + strlen("f 1 2 3 4 5"));
-    }
+    for (int i = 0; i < 3; i++)
+        ck_assert_uint_eq(r.mesh.tri_at[i], f_at);
     run_free(&r);
 }
 END_TEST
@@ -229,9 +227,8 @@ START_TEST(test_obj_parse_continuation)
     ck_assert_vec_near(r.mesh.positions[1], vec_make(1, 0, 0), 0);
     ck_assert_int_eq(r.mesh.triangle_count, 1);
     assert_triangle(&r.mesh, 0, 0, 1, 2);
-    /* The face spans three physical lines, from its 'f' to its '3'. */
-    ck_assert_uint_eq(r.mesh.triangles[0].where.begin, (size_t)(strstr(text, "f 1") - text));
-    ck_assert_uint_eq(r.mesh.triangles[0].where.end, sizeof text - 2);
+    /* The face spans three physical lines; it is located at its 'f'. */
+    ck_assert_uint_eq(r.mesh.tri_at[0], (size_t)(strstr(text, "f 1") - text));
     run_free(&r);
     /* Joining acts as a blank: "1\\" at a line end is the index 1. */
     run_parse(&r, TRI3 "f 1\\\n2 3\n", 100);
@@ -369,7 +366,7 @@ START_TEST(test_obj_parse_errors)
     ck_assert_str_eq(first_line(&r, buf, sizeof buf), c->first);
     ck_assert_int_eq(r.d.errors, 1);
     ck_assert_ptr_null(r.mesh.positions);
-    ck_assert_ptr_null(r.mesh.triangles);
+    ck_assert_ptr_null(r.mesh.tri);
     ck_assert_int_eq(r.mesh.position_count + r.mesh.normal_count + r.mesh.triangle_count, 0);
     run_free(&r);
 }
@@ -522,16 +519,17 @@ START_TEST(test_obj_parse_random_input_invariants)
         run_parse_len(&r, buf, n, 8, 0);
         ck_assert_int_eq(r.ok, r.d.errors == 0);
         if (!r.ok) {
-            ck_assert_ptr_null(r.mesh.triangles);
+            ck_assert_ptr_null(r.mesh.tri);
             ck_assert_int_eq(r.mesh.triangle_count, 0);
         }
         ck_assert_int_le(r.mesh.triangle_count, 8);
         for (int t = 0; t < r.mesh.triangle_count; t++)
             for (int k = 0; k < 3; k++) {
-                const obj_triangle *tri = &r.mesh.triangles[t];
-                ck_assert(tri->v[k] >= 0 && tri->v[k] < r.mesh.position_count);
-                ck_assert(tri->vn[k] >= -1 && tri->vn[k] < r.mesh.normal_count);
-                ck_assert(tri->where.begin < tri->where.end && tri->where.end <= n);
+                const int *v = r.mesh.tri[t];
+                ck_assert(v[k] >= 0 && v[k] < r.mesh.position_count);
+                if (r.mesh.tri_normal)
+                    ck_assert(r.mesh.tri_normal[t][k] >= -1 && r.mesh.tri_normal[t][k] < r.mesh.normal_count);
+                ck_assert(r.mesh.tri_at[t] < n);
             }
         run_free(&r);
     }
@@ -540,14 +538,14 @@ END_TEST
 
 START_TEST(test_obj_free_is_idempotent)
 {
-    obj_mesh m;
+    polymesh m;
     memset(&m, 0, sizeof m);
-    obj_free(&m);
+    polymesh_free(&m);
     ck_assert_ptr_null(m.positions);
     run r;
     run_parse(&r, TRI3 "f 1 2 3\n", 10);
-    obj_free(&r.mesh);
-    ck_assert_ptr_null(r.mesh.triangles);
+    polymesh_free(&r.mesh);
+    ck_assert_ptr_null(r.mesh.tri);
     ck_assert_int_eq(r.mesh.triangle_count, 0);
     run_free(&r);
 }
@@ -570,15 +568,15 @@ static char *read_fixture(const char *path, size_t *len)
 
 /* Closed and consistently wound: every directed edge a->b occurs once and
  * its reverse b->a occurs once. */
-static int is_closed(const obj_mesh *m)
+static int is_closed(const polymesh *m)
 {
     for (int i = 0; i < m->triangle_count; i++)
         for (int k = 0; k < 3; k++) {
-            int a = m->triangles[i].v[k], b = m->triangles[i].v[(k + 1) % 3];
+            int a = m->tri[i][k], b = m->tri[i][(k + 1) % 3];
             int same = 0, reverse = 0;
             for (int j = 0; j < m->triangle_count; j++)
                 for (int l = 0; l < 3; l++) {
-                    int c = m->triangles[j].v[l], d = m->triangles[j].v[(l + 1) % 3];
+                    int c = m->tri[j][l], d = m->tri[j][(l + 1) % 3];
                     same += c == a && d == b;
                     reverse += c == b && d == a;
                 }
@@ -590,11 +588,11 @@ static int is_closed(const obj_mesh *m)
 
 /* Divergence theorem: the volume is the sum of the signed tetrahedra
  * (origin, a, b, c), a.(b x c) / 6; positive when the faces wind outward. */
-static double volume(const obj_mesh *m)
+static double volume(const polymesh *m)
 {
     double v = 0;
     for (int i = 0; i < m->triangle_count; i++) {
-        const int *t = m->triangles[i].v;
+        const int *t = m->tri[i];
         v += vec_dot(m->positions[t[0]], vec_cross(m->positions[t[1]], m->positions[t[2]])) / 6;
     }
     return v;
@@ -621,12 +619,12 @@ START_TEST(test_obj_parse_fixture_cube)
     ck_assert_near(volume(&r.mesh), 8.0, 1e-12);
     /* Each corner's normal is its face's unit geometric normal. */
     for (int i = 0; i < 12; i++) {
-        const obj_triangle *t = &r.mesh.triangles[i];
-        vec3 a = r.mesh.positions[t->v[0]], b = r.mesh.positions[t->v[1]];
-        vec3 n = vec_normalize(vec_cross(vec_sub(b, a), vec_sub(r.mesh.positions[t->v[2]], a)));
+        const int *t = r.mesh.tri[i], *tn = r.mesh.tri_normal[i];
+        vec3 a = r.mesh.positions[t[0]], b = r.mesh.positions[t[1]];
+        vec3 n = vec_normalize(vec_cross(vec_sub(b, a), vec_sub(r.mesh.positions[t[2]], a)));
         for (int k = 0; k < 3; k++) {
-            ck_assert_int_ge(t->vn[k], 0);
-            ck_assert_vec_near(r.mesh.normals[t->vn[k]], n, 1e-15);
+            ck_assert_int_ge(tn[k], 0);
+            ck_assert_vec_near(r.mesh.normals[tn[k]], n, 1e-15);
         }
     }
     run_free(&r);
@@ -655,7 +653,7 @@ START_TEST(test_obj_parse_fixture_quad)
     assert_triangle(&r.mesh, 1, 0, 2, 3);
     assert_normals(&r.mesh, 1, -1, -1, -1);
     for (int i = 0; i < 2; i++) {
-        const int *t = r.mesh.triangles[i].v;
+        const int *t = r.mesh.tri[i];
         vec3 a = r.mesh.positions[t[0]];
         vec3 n = vec_cross(vec_sub(r.mesh.positions[t[1]], a), vec_sub(r.mesh.positions[t[2]], a));
         ck_assert_vec_near(n, vec_make(0, 0, 4), 0);

@@ -722,6 +722,9 @@ Suite *suite_oracle_area(void)
     tcase_add_test(fam, test_area_convergence_slope_smooth);
     tcase_add_test(fam, test_area_convergence_slope_occluded);
     tcase_add_test(fam, test_area_tolerance_falls_with_samples);
+    /* Whole renders of up to 1024 light samples a pixel: about 1 s each alone,
+     * several times that beside other builds on a shared 2-core machine. */
+    tcase_set_timeout(fam, 20);
     suite_add_tcase(s, fam);
     return s;
 }

@@ -38,20 +38,17 @@ static void render(const scene_model *s, int no_shortcuts, img_buf *img, render_
     ck_assert_int_eq(render_image(s, &o, img, st), STATUS_OK);
 }
 
-/* [LANG-FEATURES-2] [SHADE-SHORTCUT-OFF-1] A camera at the centre of an
- * opaque sphere (radius 2, Kd 0.5), a point light outside it at z = 5, no
- * ambient: every camera ray meets the inner wall at some p; where N.L > 0
- * (N the inward normal) the segment from p to the light runs into the ball
- * and leaves it through the wall again before reaching the light, so the
- * light is blocked; where N.L <= 0 it adds nothing.  Every pixel is 0,
- * with the shortcuts on and off.  (The record once left the shadow rays of
- * a lone sphere out: the centre pixel was 0.5 = Kd E N.L, N.L = 1.) */
-START_TEST(test_shortcuts_camera_inside_opaque_sphere_is_dark)
+/* The camera at the origin looking down -z (fov 90, 5 x 5 pixels), a
+ * point light at z = 5 outside the lone solid `solid` around the camera:
+ * every value is 0 with the shortcuts on and off, and shadow rays ran. */
+static void dark_both_ways(const char *solid)
 {
-    scene_model *s = load("image { width 5 height 5 max_depth 1 }\n"
-                          "camera { perspective eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] fov 90 }\n"
-                          "point_light { position [0, 0, 5] power 1 falloff none }\n"
-                          "sphere { center [0, 0, 0] radius 2 material { Kd 0.5 } }\n");
+    char text[512];
+    snprintf(text, sizeof text, "image { width 5 height 5 max_depth 1 }\n"
+                                "camera { perspective eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] fov 90 }\n"
+                                "point_light { position [0, 0, 5] power 1 falloff none }\n%s", solid);
+    scene_model *s = load(text);
+    ck_assert_int_eq(s->prim_count, 1);
     ck_assert_int_eq(s->features.shadows, 1);
     for (int off = 0; off <= 1; off++) {
         img_buf img;
@@ -64,6 +61,19 @@ START_TEST(test_shortcuts_camera_inside_opaque_sphere_is_dark)
         img_free(&img);
     }
     scene_free(s);
+}
+
+/* [LANG-FEATURES-2] [SHADE-SHORTCUT-OFF-1] A camera at the centre of an
+ * opaque sphere (radius 2, Kd 0.5), a point light outside it at z = 5, no
+ * ambient: every camera ray meets the inner wall at some p; where N.L > 0
+ * (N the inward normal) the segment from p to the light runs into the ball
+ * and leaves it through the wall again before reaching the light, so the
+ * light is blocked; where N.L <= 0 it adds nothing.  Every pixel is 0,
+ * with the shortcuts on and off.  (The record once left the shadow rays of
+ * a lone sphere out: the centre pixel was 0.5 = Kd E N.L, N.L = 1.) */
+START_TEST(test_shortcuts_camera_inside_opaque_sphere_is_dark)
+{
+    dark_both_ways("sphere { center [0, 0, 0] radius 2 material { Kd 0.5 } }\n");
 }
 END_TEST
 
@@ -210,6 +220,65 @@ START_TEST(test_shortcuts_cli_no_shortcuts)
 }
 END_TEST
 
+/* [LANG-FEATURES-2] [SHADE-SHORTCUT-OFF-1] The same with a closed mesh:
+ * the camera at the centre of cube.obj ([-1, 1]^3, opaque, Kd 0.5), a
+ * point light outside at z = 5.  Fov 90 over 5 x 5 pixels: every camera
+ * ray (x, y, -1) with |x|, |y| <= 0.8 meets the inner side of the face
+ * z = -1, whose inward normal (0, 0, 1) faces the light (N.L > 0); the
+ * segment to the light crosses the cube and leaves it through the face
+ * z = 1, which blocks it.  Every pixel is 0 both ways; a mesh alone is
+ * not flat, so its scene keeps the shadow pass. */
+START_TEST(test_shortcuts_camera_inside_opaque_mesh_is_dark)
+{
+    dark_both_ways("mesh { file \"tests/obj/cube.obj\" material { Kd 0.5 } }\n");
+}
+END_TEST
+
+/* The mesh scenes of the tree, each at most 48 x 32 with 1 sample and 4
+ * samples a distributed light (their own size when smaller: the prism's
+ * pixel centres lie on its shared edges): OBJ and PLY meshes, glass and
+ * mirror meshes, smooth meshes (the terminator's lift), slivers, a closed
+ * mesh far from the origin, a lone glass prism seen head on. */
+static const char *const mesh_scenes[] = {
+    "scenes/mesh.scene",
+    "scenes/terminator.scene",
+    "scenes/stress/watertight_mesh.scene",
+    "scenes/stress/thin_triangles.scene",
+    "scenes/stress/surface_starts.scene",
+    "tests/ply/encodings.scene",
+    "tests/obj/prism_head_on.scene",
+};
+
+/* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-BVH-1] Mesh scenes: identical
+ * bits with the shortcuts on and off (the BVH testing every triangle of
+ * every mesh for every ray). */
+START_TEST(test_shortcuts_mesh_scenes_bit_identical)
+{
+    const char *path = mesh_scenes[_i];
+    int status;
+    scene_model *s = scene_file_load(path, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "%s did not load (status %d)", path, status);
+    ck_assert_int_gt(s->mesh_count, 0);
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = s->image.width < 48 ? s->image.width : 48;
+    o.height = s->image.height < 32 ? s->image.height : 32;
+    o.samples = 1;
+    o.light_samples = 4;
+    img_buf on, off;
+    ck_assert_int_eq(render_image(s, &o, &on, NULL), STATUS_OK);
+    o.no_shortcuts = 1;
+    ck_assert_int_eq(render_image(s, &o, &off, NULL), STATUS_OK);
+    size_t n = 3 * (size_t)on.width * (size_t)on.height;
+    for (size_t i = 0; i < n; i++)
+        ck_assert_msg(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0,
+                      "%s, value %zu: %.17g with the shortcuts, %.17g without", path, i, on.rgb[i], off.rgb[i]);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+END_TEST
+
 /* Scene index of the random generator, rendered both ways and compared;
  * the failing scene's text is printed. */
 static void check_random_scene(int index)
@@ -253,6 +322,9 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
+    tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
+    tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,
+                        (int)(sizeof mesh_scenes / sizeof mesh_scenes[0]));
     suite_add_tcase(s, tc);
     return s;
 }

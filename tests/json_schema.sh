@@ -32,6 +32,14 @@ done
 "$REFRAY" export -W scenes/mesh.scene --to json -o "$OUT/good/mesh-files.json" --mesh-files meshes ||
     die "export of scenes/mesh.scene with --mesh-files failed"
 set -- "$@" -i "$OUT/good/mesh-files.json"
+# Meshes outside scenes/: PLY (ASCII and both binary orders, inline and as
+# mesh files) and the closed glass prism.
+"$REFRAY" export -W tests/ply/encodings.scene --to json -o "$OUT/good/ply.json" || die "export of the PLY scene failed"
+"$REFRAY" export -W tests/ply/encodings.scene --to json -o "$OUT/good/ply-files.json" --mesh-files meshes ||
+    die "export of the PLY scene with --mesh-files failed"
+"$REFRAY" export -W tests/obj/prism_head_on.scene --to json -o "$OUT/good/prism.json" ||
+    die "export of tests/obj/prism_head_on.scene failed"
+set -- "$@" -i "$OUT/good/ply.json" -i "$OUT/good/ply-files.json" -i "$OUT/good/prism.json"
 [ "$count" -ge 70 ] || die "only $count scenes under scenes/"
 "$JSONSCHEMA" "$@" "$SCHEMA" || die "an export does not follow $SCHEMA"
 
@@ -66,4 +74,4 @@ break_one analytic-lambert_cone 's/"radii": \[1.0, /"radii": [/' "a cone with on
 break_one analytic-lambert_cone 's/"open": false/"open": 0/' "open as a number"
 break_one analytic-lambert_torus 's/"minor": 0.34999999999999998/"minor": -0.35/' "a negative minor radius"
 break_one mesh-files 's/"file": "[^"]*"/"file": ""/' "an empty mesh file name"
-echo "json_schema.sh: $count exported scenes (and 1 with mesh files) follow $SCHEMA; $broken broken exports are rejected"
+echo "json_schema.sh: $count exported scenes (and 1 with mesh files, 3 of PLY and glass meshes) follow $SCHEMA; $broken broken exports are rejected"

@@ -698,24 +698,36 @@ END_TEST
 
 typedef struct sweep {
     long rays, misses, naive_misses;
+    long wrong_crossings, naive_wrong_crossings; /* rays crossing the surface other than `crossings` times */
 } sweep;
 
-/* One ray through the scene's acceleration structure; with count_naive,
- * the same ray against every triangle by Moller-Trumbore too. */
-static void sweep_ray(const tracer *t, const scene_model *s, ray r, sweep *w, int count_naive)
+/* One ray through the scene's acceleration structure: a miss, and (when
+ * crossings > 0) a number of surface crossings other than that.  With
+ * count_naive, the same ray against the triangles of every mesh by
+ * Moller-Trumbore and by the paper's inclusive Woop test too (until both
+ * have said what they have to). */
+static void sweep_ray(const tracer *t, const scene_model *s, ray r, sweep *w, int count_naive, int crossings)
 {
     hit h;
     ray copy = r;
+    int visited = 0;
     w->rays++;
     w->misses += !bvh_intersect(&t->accel, s->prims, &copy, &h);
+    bvh_visit(&t->accel, s->prims, &r, count_crossing, &visited);
+    w->wrong_crossings += crossings > 0 && visited != crossings;
     if (!count_naive)
         return;
-    int any = 0;
-    for (int k = 0; k < s->prim_count && !any; k++) {
-        real tt;
-        any = s->prims[k].kind == PRIM_TRIANGLE && naive_triangle(s->prims[k].u.triangle.p, &r, &tt);
-    }
+    int any = 0, inclusive = 0;
+    for (int m = 0; m < s->mesh_count; m++)
+        for (int k = 0; k < s->meshes[m].geom.tri_count && (!any || inclusive <= crossings); k++) {
+            vec3 p[3];
+            real tt;
+            mesh_triangle(&s->meshes[m].geom, k, p);
+            any |= naive_triangle(p, &r, &tt);
+            inclusive += naive_woop_inclusive(p, &r);
+        }
     w->naive_misses += !any;
+    w->naive_wrong_crossings += crossings > 0 && inclusive != crossings;
 }
 
 static ray ray_through(vec3 point, vec3 from)
@@ -728,16 +740,18 @@ static ray ray_through(vec3 point, vec3 from)
     return r;
 }
 
-/* Rays through point: from the centre outward, and from three places
- * outside, 3 units away in directions that lean off the radial one. */
+/* Rays through point: from the centre outward (one crossing), and from
+ * three places outside, 3 units away in directions that lean off the
+ * radial one (in at the point, out on the far side: two).  The naive
+ * methods (brute force) run on the first. */
 static void sweep_point(const tracer *t, const scene_model *s, vec3 centre, vec3 point, sweep *w)
 {
     static const double lean[3][3] = {{0.31, -0.17, 0.05}, {-0.23, 0.11, 0.29}, {0.07, 0.37, -0.19}};
     vec3 out = vec_normalize(vec_sub(point, centre));
-    sweep_ray(t, s, ray_through(point, centre), w, 1);
+    sweep_ray(t, s, ray_through(point, centre), w, 1, 1);
     for (int k = 0; k < 3; k++) {
         vec3 away = vec_normalize(vec_add(out, vec_make(lean[k][0], lean[k][1], lean[k][2])));
-        sweep_ray(t, s, ray_through(point, vec_madd(point, away, 3)), w, 1);
+        sweep_ray(t, s, ray_through(point, vec_madd(point, away, 3)), w, 0, 2);
     }
 }
 
@@ -745,25 +759,33 @@ START_TEST(test_stress_watertight_mesh)
 {
     /* [NUM-WATERTIGHT-1] Every edge of the closed icosphere at five points
      * (its midpoint and four others) and every vertex, each from inside and
-     * from three directions outside: no ray slips through. */
+     * from three directions outside: no ray slips through, and each crosses
+     * the surface exactly as often as it should (once from the centre, twice
+     * from outside): never two triangles at one edge or vertex. */
     scene_model *s = load_stress("watertight_mesh");
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
+    const scene_trimesh *g = &s->meshes[0].geom;
     vec3 centre = vec_make(0.5, 0.25, 0.125);
     static const double at[] = {0.5, 0.1, 0.3337, 0.71, 0.9};
-    sweep w = {0, 0, 0};
-    for (int k = 0; k < s->prim_count; k++) {
-        const vec3 *p = s->prims[k].u.triangle.p;
+    sweep w;
+    memset(&w, 0, sizeof w);
+    for (int k = 0; k < g->tri_count; k++) {
+        vec3 p[3];
+        mesh_triangle(g, k, p);
         for (int e = 0; e < 3; e++) {
             sweep_point(&t, s, centre, p[e], &w);
             for (int a = 0; a < 5; a++)
                 sweep_point(&t, s, centre, vec_add(p[e], vec_scale(vec_sub(p[(e + 1) % 3], p[e]), at[a])), &w);
         }
     }
-    ck_assert_int_eq(s->prim_count, 1280);
+    ck_assert_int_eq(g->tri_count, 1280);
     ck_assert_int_eq(w.misses, 0);
-    /* The before: Moller-Trumbore lets some of the same rays through. */
+    ck_assert_int_eq(w.wrong_crossings, 0);
+    /* The befores: Moller-Trumbore lets some of the same rays through, and
+     * the inclusive Woop test counts shared edges and vertices twice. */
     ck_assert_int_gt(w.naive_misses, 0);
+    ck_assert_int_gt(w.naive_wrong_crossings, 0);
     tracer_free(&t);
     scene_free(s);
 }
@@ -774,24 +796,26 @@ START_TEST(test_stress_thin_triangles)
     scene_model *s = load_stress("thin_triangles");
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
-    sweep w = {0, 0, 0};
+    sweep w;
+    memset(&w, 0, sizeof w);
     /* The strip's diagonal (0,0,0)-(1,1e-8,0) and the fan's 63 inner spokes
      * and apex (the fan is moved by -0.5 in y), each ray straight down and
      * leaning. */
     for (int k = 0; k <= 1000; k++) {
         double f = k / 1000.0;
         vec3 p = vec_make(f, f * 1e-8, 0);
-        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0);
-        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0.3, -0.2, 1))), &w, 0);
+        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0, k > 0 && k < 1000 ? 1 : 0);
+        sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0.3, -0.2, 1))), &w, 0, k > 0 && k < 1000 ? 1 : 0);
     }
     for (int spoke = 1; spoke < 64; spoke++)
         for (int k = 0; k <= 64; k++) {
             double f = k / 64.0, a = spoke * 1e-8;
             vec3 p = vec_make(f * cos(a), f * sin(a) - 0.5, 0);
-            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0);
-            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(-0.1, 0.4, 1))), &w, 0);
+            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0, k > 0 && k < 64 ? 1 : 0);
+            sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(-0.1, 0.4, 1))), &w, 0, k > 0 && k < 64 ? 1 : 0);
         }
     ck_assert_int_eq(w.misses, 0);
+    ck_assert_int_eq(w.wrong_crossings, 0);
     /* The geometric normal of a sliver is still exactly +-z. */
     for (int k = 0; k < s->prim_count; k++) {
         ray r = ray_through(vec_make(0.9, 0.7e-8, 0), vec_make(0.9, 0.7e-8, 1));

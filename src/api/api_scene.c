@@ -123,13 +123,14 @@ static unsigned features(const scene_features *f)
 }
 
 /* rf_scene_info counts every kind of primitive: a new kind needs a field. */
-typedef char every_kind[PRIM_KINDS == 8 ? 1 : -1];
+typedef char every_kind[PRIM_KINDS == 9 ? 1 : -1];
 
 void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 {
     const scene_model *s = api_scene(scene);
-    int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes, &info->triangles, &info->disks,
-                              &info->boxes,   &info->cylinders, &info->cones, &info->tori};
+    int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes,    &info->triangles, &info->disks, &info->boxes,
+                              &info->cylinders, &info->cones, &info->tori,      &info->meshes};
+    long triangles;
     memset(info, 0, sizeof *info);
     info->width = s->image.width;
     info->height = s->image.height;
@@ -137,13 +138,33 @@ void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
     info->max_depth = s->image.max_depth;
     info->primitives = s->prim_count;
     for (int i = 0; i < s->prim_count; i++)
-        if (s->prims[i].mesh < 0)
-            (*kinds[s->prims[i].kind])++;
-    info->meshes = s->mesh_count;
-    for (int i = 0; i < s->mesh_count; i++)
-        info->mesh_triangles += s->meshes[i].count;
+        (*kinds[s->prims[i].kind])++;
+    info->mesh_bytes = scene_mesh_bytes(s, &triangles);
+    info->mesh_triangles = (int)triangles;
     info->lights = s->light_count;
     info->materials = s->material_count;
     info->features = features(&s->features);
     info->oracle = s->oracle;
+}
+
+rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info)
+{
+    const scene_model *s = api_scene(scene);
+    memset(info, 0, sizeof *info);
+    if (index < 0 || index >= s->mesh_count)
+        return RF_ERR_USAGE;
+    const scene_mesh *m = &s->meshes[index];
+    const scene_mesh_report *r = &m->report;
+    info->path = m->path;
+    info->triangles = m->geom.tri_count;
+    info->faces = r->faces;
+    info->dropped = r->dropped;
+    info->nonplanar = r->nonplanar;
+    info->fanned = r->fanned;
+    info->closed = m->geom.closed;
+    info->oriented = r->oriented;
+    info->pieces = r->components;
+    info->open_edges = r->open_edges;
+    info->crowded_edges = r->crowded_edges;
+    return RF_OK;
 }

@@ -98,6 +98,7 @@ void api_render_stats(const render_stats *s, rf_render_stats *out)
     out->bvh_nodes = s->bvh_nodes;
     out->bvh_leaves = s->bvh_leaves;
     out->bvh_depth = s->bvh_depth;
+    out->bvh_bytes = s->bvh_bytes;
     out->shadows = s->shadows;
     out->specular = s->specular;
     out->reflection = s->reflection;

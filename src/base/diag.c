@@ -37,8 +37,11 @@ static void emit(const diag *d, diag_level level, const source_file *f, size_t o
     memset(&r, 0, sizeof r);
     r.level = level;
     r.message = message;
-    if (f) {
+    if (f)
         r.path = f->path;
+    /* A mesh file's text is released once its mesh is built: a later
+     * message names the file without a line. */
+    if (f && f->text) {
         source_line_col(f, offset, &r.line, &r.column);
         if (excerpt)
             r.source_line = source_line_text(f, offset, &r.source_line_length);

@@ -21,7 +21,8 @@ typedef enum diag_level {
 typedef struct diag_record {
     diag_level level;
     const char *path;          /* the file; NULL: no location (a whole-load message) */
-    int line, column;          /* 1-based, column in bytes; 0 without a location */
+    int line, column;          /* 1-based, column in bytes; 0 without a location, or
+                                  with path alone (a mesh file whose text is gone) */
     const char *message;       /* without location or level */
     const char *source_line;   /* the line holding the span, without its terminator;
                                   NULL: nothing to show (an "included from here" note) */

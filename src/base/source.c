@@ -33,7 +33,7 @@ void source_set_init(source_set *set, const mem *m)
 static void source_file_free(const mem *m, source_file *f)
 {
     mem_free_string(m, f->path);
-    if (f->text)
+    if (f->text && !f->lent)
         mem_free(m, f->text, f->len + 1);
     mem_free(m, f->line_start, f->line_cap * sizeof *f->line_start);
     mem_free(m, f, sizeof *f);
@@ -112,9 +112,52 @@ fail:
     return -1;
 }
 
-/* Binary search for the last line starting at or before offset. */
-static size_t line_index(const source_file *file, size_t offset)
+int source_set_lend(source_set *set, const char *path, const char *text, size_t len, src_span included_from)
 {
+    source_file *f = mem_calloc(&set->mem, 1, sizeof *f);
+    if (!f || !grow_set(set) || !(f->path = mem_strdup(&set->mem, path))) {
+        mem_free(&set->mem, f, sizeof *f);
+        return -1;
+    }
+    /* Never written through: the set only reads a lent text. */
+    f->text = (char *)(text ? text : "");
+    f->len = len;
+    f->lent = 1;
+    f->included_from = included_from;
+    set->files[set->count] = f;
+    return set->count++;
+}
+
+void source_set_release(source_set *set, int file)
+{
+    source_file *f = set->files[file];
+    if (f->text && !f->lent)
+        mem_free(&set->mem, f->text, f->len + 1);
+    mem_free(&set->mem, f->line_start, f->line_cap * sizeof *f->line_start);
+    f->text = NULL;
+    f->len = 0;
+    f->line_start = NULL;
+    f->line_count = f->line_cap = 0;
+    f->lent = 0;
+}
+
+/* The line holding offset: its number from 0 and where it starts.  With
+ * the index, a binary search for the last line starting at or before
+ * offset; without (a lent file), a scan from the start. */
+static size_t line_index(const source_file *file, size_t offset, size_t *begin)
+{
+    if (!file->line_start) {
+        size_t line = 0;
+        *begin = 0;
+        for (size_t i = 0; i < offset && i < file->len; i++) {
+            char c = file->text[i];
+            if (c == '\n' || (c == '\r' && (i + 1 >= file->len || file->text[i + 1] != '\n'))) {
+                line++;
+                *begin = i + 1;
+            }
+        }
+        return line;
+    }
     size_t lo = 0, hi = file->line_count;
     while (hi - lo > 1) {
         size_t mid = lo + (hi - lo) / 2;
@@ -123,20 +166,21 @@ static size_t line_index(const source_file *file, size_t offset)
         else
             hi = mid;
     }
+    *begin = file->line_start[lo];
     return lo;
 }
 
 void source_line_col(const source_file *file, size_t offset, int *line, int *col)
 {
-    size_t i = line_index(file, offset);
+    size_t begin, i = line_index(file, offset, &begin);
     *line = (int)i + 1;
-    *col = (int)(offset - file->line_start[i]) + 1;
+    *col = (int)(offset - begin) + 1;
 }
 
 const char *source_line_text(const source_file *file, size_t offset, size_t *length)
 {
-    size_t i = line_index(file, offset);
-    size_t begin = file->line_start[i];
+    size_t begin;
+    line_index(file, offset, &begin);
     size_t end = begin;
     while (end < file->len && file->text[end] != '\n' && file->text[end] != '\r')
         end++;

@@ -20,13 +20,15 @@ typedef struct src_span {
 
 typedef struct source_file {
     char *path;            /* as the user or the include wrote it, joined to the includer's dir */
-    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them) */
+    char *text;            /* contents, NUL-terminated (NUL bytes inside are kept, len counts them)
+                              unless lent; NULL once released */
     size_t len;            /* bytes in text, not counting the terminator */
-    size_t *line_start;    /* offset of each line's first byte */
+    size_t *line_start;    /* offset of each line's first byte; NULL for a lent file */
     size_t line_count;
     size_t line_cap;       /* entries allocated in line_start */
     src_span included_from;/* the include statement that read it; file -1 for the root */
-    int is_mesh;           /* read by a mesh (an OBJ file), not by an include */
+    int is_mesh;           /* read by a mesh (an OBJ or PLY file), not by an include */
+    int lent;              /* text is the caller's (source_set_lend), not freed here */
 } source_file;
 
 typedef struct source_set {
@@ -48,6 +50,18 @@ void source_set_free(source_set *set);
  * index, or -1 when out of memory. */
 int source_set_add(source_set *set, const char *path, const char *text, size_t len,
                    src_span included_from);
+
+/* The same without a copy, for big mesh files: text[0..len) (need not be
+ * NUL-terminated) stays the caller's and must stay valid until
+ * source_set_release(set, index), which the caller must call before it
+ * frees the text.  No line index is built: a message finds its line by
+ * scanning.  Returns the index, or -1 when out of memory. */
+int source_set_lend(source_set *set, const char *path, const char *text, size_t len, src_span included_from);
+
+/* Drops the text of a file no message will point into any more (a mesh
+ * file once its mesh is built; freed unless lent); its path stays.  A span
+ * into it is then reported without a line (diag.c). */
+void source_set_release(source_set *set, int file);
 
 /* 1-based line and column (in bytes) of a byte offset. */
 void source_line_col(const source_file *file, size_t offset, int *line, int *col);

@@ -14,6 +14,9 @@ static const char check_help[] =
     "Parses and validates each scene; prints diagnostics to stderr and, for each\n"
     "valid file, one line to stdout:\n"
     "  FILE: ok: P primitives, L lights, M materials; uses: FEATURES\n"
+    "and one line per mesh:\n"
+    "  mesh PATH: T triangles from F faces, D dropped; closed|open (...);\n"
+    "  consistently oriented|not consistently oriented; K pieces\n"
     "Options: -W (no warnings) and the input limits of `refray --help`.\n";
 
 static void print_features(unsigned features)
@@ -28,6 +31,25 @@ static void print_features(unsigned features)
             printf("%s%s", any++ ? " " : "", names[i]);
     if (!any)
         printf("none");
+}
+
+/* [MESH-CHECK-1] One line per mesh: what the loader found and did. */
+static void print_mesh(const rf_mesh_info *m)
+{
+    printf("  mesh %s: %d triangle%s from %d face%s, %d dropped; ", m->path, m->triangles,
+           m->triangles == 1 ? "" : "s", m->faces, m->faces == 1 ? "" : "s", m->dropped);
+    if (m->closed)
+        printf("closed");
+    else
+        printf("open (%d open edge%s, %d edge%s of 3 or more triangles)", m->open_edges,
+               m->open_edges == 1 ? "" : "s", m->crowded_edges, m->crowded_edges == 1 ? "" : "s");
+    printf("; %s oriented; %d piece%s", m->oriented ? "consistently" : "not consistently", m->pieces,
+           m->pieces == 1 ? "" : "s");
+    if (m->nonplanar)
+        printf("; %d non-planar", m->nonplanar);
+    if (m->fanned)
+        printf("; %d fanned", m->fanned);
+    printf("\n");
 }
 
 static void print_summary(const char *path, const rf_scene *scene)
@@ -52,6 +74,11 @@ static void print_summary(const char *path, const rf_scene *scene)
     if (s.oracle)
         printf("; oracle %s", s.oracle);
     printf("\n");
+    for (int i = 0; i < s.meshes; i++) {
+        rf_mesh_info m;
+        if (rf_scene_get_mesh_info(scene, i, &m) == RF_OK)
+            print_mesh(&m);
+    }
 }
 
 int cli_check(int argc, char **argv)

@@ -199,7 +199,24 @@ static int cancel(void *ctx)
     return cli_signal_stopped();
 }
 
-void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts)
+/* [MESH-SCALE-1] Load time, and the bytes of the mesh stores and of the
+ * BVH per mesh triangle (spec/numerics.md, "Meshes at scale"). */
+static void print_memory(const rf_scene *scene, const rf_render_stats *s, double load_seconds)
+{
+    rf_scene_info info;
+    rf_scene_get_info(scene, &info);
+    long triangles = info.mesh_triangles;
+    fprintf(stderr, "  load: %.3f s; meshes: %ld triangles in %ld bytes", load_seconds, triangles, info.mesh_bytes);
+    if (triangles > 0)
+        fprintf(stderr, " (%.1f per triangle); bvh %ld bytes (%.1f per triangle)",
+                (double)info.mesh_bytes / triangles, s->bvh_bytes, (double)s->bvh_bytes / triangles);
+    else
+        fprintf(stderr, "; bvh %ld bytes", s->bvh_bytes);
+    fputc('\n', stderr);
+}
+
+void cli_render_print_stats(const render_args *a, const rf_scene *scene, const rf_render_stats *s,
+                            const rf_write_stats *w)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -211,10 +228,11 @@ void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w, i
     fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", s->light_samples,
             s->light_samples_on_surface);
     fprintf(stderr, "  passes%s: shadows %s, specular %s, reflection %s, refraction %s\n",
-            no_shortcuts ? " (every shortcut off)" : "",
+            a->render.no_shortcuts ? " (every shortcut off)" : "",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
+    print_memory(scene, s, a->load_seconds);
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
             s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, s->node_visits, s->primitive_tests);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
@@ -290,7 +308,7 @@ static int render_and_write(const render_args *a, const rf_scene *scene)
     status = cli_render_write(a, img, &written);
     rf_image_free(img);
     if (status == STATUS_OK && a->stats)
-        cli_render_print_stats(&stats, &written, a->render.no_shortcuts);
+        cli_render_print_stats(a, scene, &stats, &written);
     return status;
 }
 
@@ -309,9 +327,11 @@ int cli_render(int argc, char **argv)
     /* From here on SIGINT (SIGTERM, SIGHUP) means "stop, write nothing,
      * exit 130", while the scene loads as well as while it renders. */
     cli_signal_catch();
+    double start = render_clock();
     rf_load_options lo = cli_load_options(&a.scene);
     rf_scene *scene;
     status = (int)rf_scene_load_file(a.input, &lo, &scene);
+    a.load_seconds = render_clock() - start;
     if (!scene) {
         cli_signal_release();
         return cli_signal_stopped() ? STATUS_CANCELLED : status;

@@ -23,6 +23,7 @@ typedef struct render_args {
     int tile_index, tile_count; /* --tile I/N; tile_count 0: none */
     int jobs;             /* --jobs: 1 (default), 0: every processor */
     const char *checkpoint; /* --checkpoint DIR */
+    double load_seconds;  /* the scene's load, for --stats */
 } render_args;
 
 /* 1 when a needs the tile engine: a region or tile, workers, a checkpoint. */
@@ -37,8 +38,9 @@ rf_render_options cli_render_options(const render_args *a, cli_progress *bar);
  * budget; nl: what ends a progress bar cut short. */
 void cli_render_report(const render_args *a, int status, int overflow_x, int overflow_y, const char *nl);
 
-/* --stats; no_shortcuts: --no-shortcuts was given. */
-void cli_render_print_stats(const rf_render_stats *s, const rf_write_stats *w, int no_shortcuts);
+/* --stats of a render of scene with a's options. */
+void cli_render_print_stats(const render_args *a, const rf_scene *scene, const rf_render_stats *s,
+                            const rf_write_stats *w);
 
 /* The format of standard output, from --format. */
 rf_format cli_render_stdout_format(const char *name);

@@ -58,7 +58,7 @@ static int write_result(const render_args *a, const cli_tiles *t, const rf_image
 }
 
 /* Renders and writes with the renderer made: t->renderer. */
-static int render_region(const render_args *a, cli_tiles *t)
+static int render_region(const render_args *a, const rf_scene *scene, cli_tiles *t)
 {
     rf_image *img = NULL;
     rf_write_stats written = {0, 0};
@@ -81,7 +81,7 @@ static int render_region(const render_args *a, cli_tiles *t)
     if (status == STATUS_OK && a->checkpoint)
         cli_tiles_checkpoint_clear(t);
     if (status == STATUS_OK && a->stats)
-        cli_render_print_stats(&t->stats, &written, a->render.no_shortcuts);
+        cli_render_print_stats(a, scene, &t->stats, &written);
     rf_image_free(img);
     return status;
 }
@@ -100,7 +100,7 @@ int cli_render_tiles(const render_args *a, const rf_scene *scene)
     t.target.key = rf_renderer_fingerprint(t.renderer);
     status = pick_region(a, t.target.width, t.target.height, &t.target.region);
     if (status == 0)
-        status = render_region(a, &t);
+        status = render_region(a, scene, &t);
     rf_renderer_free(t.renderer);
     return status;
 }

@@ -284,13 +284,14 @@ static json_t *primitive(export_json_build *b, const scene_prim *p)
         set_real(b, out, "major", p->u.torus.major);
         set_real(b, out, "minor", p->u.torus.minor);
         break;
+    case PRIM_MESH: break; /* written by export_json_mesh, never here */
     }
     export_json_set(b, out, "transform", transform(b, p));
     return out;
 }
 
-/* The primitives in the scene's order; a mesh's triangles, which are
- * consecutive, as one mesh entry where its first triangle is. */
+/* The primitives in the scene's order; a mesh (one primitive) as its
+ * mesh entry. */
 static json_t *primitives(export_json_build *b, const scene_model *s, const export_json_opts *o, int *status, char *err,
                           size_t errlen)
 {
@@ -305,7 +306,6 @@ static json_t *primitives(export_json_build *b, const scene_model *s, const expo
         if (!mesh)
             break;
         export_json_append(b, out, mesh);
-        i += s->meshes[m].count - 1;
     }
     return out;
 }

@@ -177,7 +177,15 @@ static void check_light(const scene_model *s, const scene_light *l, double radiu
 /* An open cylinder or cone is a sheet, as in refray ([XCHK-MAP-QUADRIC-1]). */
 static int is_solid(const scene_prim *p)
 {
-    return scene_prim_is_solid(p) || (p->kind == PRIM_TRIANGLE && p->mesh >= 0);
+    return scene_prim_is_solid(p) || (p->kind == PRIM_MESH && p->u.mesh.closed);
+}
+
+static int is_smooth(const scene_trimesh *g)
+{
+    for (int i = 0; g->tri_normal && i < g->tri_count; i++)
+        if (g->tri_normal[i][0] >= 0)
+            return 1;
+    return 0;
 }
 
 static int is_grey(rgb c)
@@ -251,15 +259,11 @@ static void check_material(const scene_model *s, int index, const pov_opts *o, p
  * refray traces the mirror ray as it is.  A ray refracted about a vertex
  * normal can head back into the mesh too: refray then goes by the face's
  * orientation, POV-Ray by its list of interiors. */
-static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
+static void check_mesh_mirror(const scene_model *s, const scene_mesh *m, pov_notes *n)
 {
-    const scene_prim *tri = &s->prims[m->first_prim];
-    const scene_material *mat = &s->materials[tri->material];
-    int smooth = 0;
     char at[256];
-    for (int i = 0; i < m->count; i++)
-        smooth |= tri[i].u.triangle.has_normals;
-    if (!smooth || s->image.max_depth < 2 || (vec_max_component(mat->ks) <= 0 && !(mat->t > 0)))
+    const scene_material *mat = &s->materials[s->prims[m->prim].material];
+    if (!is_smooth(&m->geom) || s->image.max_depth < 2 || (vec_max_component(mat->ks) <= 0 && !(mat->t > 0)))
         return;
     where(s, m->where, at, sizeof at);
     if (vec_max_component(mat->ks) > 0)
@@ -270,6 +274,34 @@ static void check_mesh(const scene_model *s, const scene_mesh *m, pov_notes *n)
         add_note(n, "mesh at %s has vertex normals and t > 0: where a ray refracted about a vertex normal heads "
                  "back into the surface, refray follows the face's orientation and POV-Ray its list of "
                  "interiors", at);
+}
+
+/* Whether some triangle's corners have different normals: a curved
+ * surface, where Hanika's lifted point leaves the facet. */
+static int is_curved(const scene_trimesh *g)
+{
+    for (int i = 0; g->tri_normal && i < g->tri_count; i++) {
+        const int *c = g->tri_normal[i];
+        if (c[0] >= 0 && (memcmp(&g->normals[c[0]], &g->normals[c[1]], sizeof(vec3)) != 0 ||
+                          memcmp(&g->normals[c[0]], &g->normals[c[2]], sizeof(vec3)) != 0))
+            return 1;
+    }
+    return 0;
+}
+
+/* [XCHK-MAP-MESH-3] refray starts the shadow rays of a smooth mesh at
+ * Hanika's lifted point ([SHADE-TERMINATOR-1]); POV-Ray starts them on the
+ * facet, which shadows itself near the terminator. */
+static void check_mesh(const scene_model *s, const scene_mesh *m, const pov_opts *o, pov_notes *n)
+{
+    char at[256];
+    check_mesh_mirror(s, m, n);
+    if (o->facet_shadows || !s->features.shadows || !is_curved(&m->geom))
+        return;
+    where(s, m->where, at, sizeof at);
+    add_note(n, "mesh at %s has vertex normals and the scene has shadows: refray starts a smooth triangle's shadow "
+             "rays at the lifted point (no dark facets at the terminator), POV-Ray on the facet, which can shadow "
+             "itself there", at);
 }
 
 /* [XCHK-MAP-SHADOW-2] POV-Ray does not count a shadow-ray crossing within
@@ -285,9 +317,9 @@ static void check_shadow_tolerance(const scene_model *s, pov_notes *n)
         return;
     for (int i = 0; i < s->prim_count; i++) {
         const scene_prim *p = &s->prims[i];
-        int mesh = p->kind == PRIM_TRIANGLE && p->mesh >= 0, other;
+        int mesh = p->kind == PRIM_MESH, other;
         char at[256], at_other[256];
-        if (!(s->materials[p->material].t > 0) || (mesh && s->meshes[p->mesh].first_prim != i))
+        if (!(s->materials[p->material].t > 0))
             continue;
         where(s, mesh ? s->meshes[p->mesh].where : p->where, at, sizeof at);
         int edges = mesh || (scene_prim_is_solid(p) && p->kind != PRIM_SPHERE && p->kind != PRIM_TORUS);
@@ -347,7 +379,7 @@ int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
     for (int i = 0; i < s->material_count; i++)
         check_material(s, i, o, notes);
     for (int i = 0; i < s->mesh_count; i++)
-        check_mesh(s, &s->meshes[i], notes);
+        check_mesh(s, &s->meshes[i], o, notes);
     check_shadow_tolerance(s, notes);
     check_far(s, notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
@@ -728,6 +760,8 @@ static void write_shape(FILE *fp, const scene_prim *p)
         fputc('\n', fp);
         write_torus_placement(fp, p);
         break;
+    case PRIM_MESH: /* written by write_mesh */
+        break;
     case PRIM_TRIANGLE:
         fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);
         for (int i = 0; i < 3; i++) {
@@ -752,49 +786,66 @@ static void write_prim(FILE *fp, const scene_model *s, const pov_opts *o, const 
     fputs("}\n", fp);
 }
 
-/* A triangle's vertex normals, or its geometric normal at all three
- * corners when it has none (a flat face of a smooth mesh). */
-static void triangle_normals(const scene_prim *p, vec3 n[3])
+static void put_list_item(FILE *fp, vec3 v)
 {
-    vec3 g = vec_normalize(vec_cross(vec_sub(p->u.triangle.p[1], p->u.triangle.p[0]),
-                                     vec_sub(p->u.triangle.p[2], p->u.triangle.p[0])));
-    for (int i = 0; i < 3; i++)
-        n[i] = p->u.triangle.has_normals ? p->u.triangle.n[i] : g;
+    fputs(",\n    ", fp);
+    put_vec(fp, to_pov(v));
 }
 
-/* [XCHK-MAP-MESH-1] A mesh as mesh2, three vertices per triangle (no
- * sharing: the corners are written as refray holds them), with its vertex
- * normals if any triangle has them, and an inside_vector so that POV-Ray
- * treats it as a solid for refraction, as refray does. */
-static void write_mesh(FILE *fp, const scene_model *s, const pov_opts *o, const scene_mesh *m, int *nudged)
+/* normal_vectors: the mesh's normals, then one geometric normal for each
+ * flat triangle of a smooth mesh (normal_indices, after the faces as
+ * POV-Ray wants, says which each corner uses). */
+static void write_mesh_normals(FILE *fp, const scene_trimesh *g)
 {
-    const scene_prim *tri = &s->prims[m->first_prim];
-    int smooth = 0;
-    for (int i = 0; i < m->count; i++)
-        smooth |= tri[i].u.triangle.has_normals;
-    fprintf(fp, "mesh2 {\n  vertex_vectors { %d", 3 * m->count);
-    for (int i = 0; i < 3 * m->count; i++) {
-        fputs(",\n    ", fp);
-        put_vec(fp, to_pov(tri[i / 3].u.triangle.p[i % 3]));
+    int flat = 0;
+    for (int i = 0; i < g->tri_count; i++)
+        flat += g->tri_normal[i][0] < 0;
+    fprintf(fp, "  normal_vectors { %d", g->normal_count + flat);
+    for (int i = 0; i < g->normal_count; i++)
+        put_list_item(fp, g->normals[i]);
+    for (int i = 0; i < g->tri_count; i++) {
+        const int *c = g->tri[i];
+        if (g->tri_normal[i][0] < 0)
+            put_list_item(fp, vec_normalize(vec_cross(vec_sub(g->positions[c[1]], g->positions[c[0]]),
+                                                      vec_sub(g->positions[c[2]], g->positions[c[0]]))));
     }
     fputs(" }\n", fp);
-    if (smooth) {
-        fprintf(fp, "  normal_vectors { %d", 3 * m->count);
-        for (int i = 0; i < m->count; i++) {
-            vec3 n[3];
-            triangle_normals(&tri[i], n);
-            for (int j = 0; j < 3; j++) {
-                fputs(",\n    ", fp);
-                put_vec(fp, to_pov(n[j]));
-            }
-        }
-        fputs(" }\n", fp);
+}
+
+static void write_normal_indices(FILE *fp, const scene_trimesh *g)
+{
+    fprintf(fp, "  normal_indices { %d", g->tri_count);
+    for (int i = 0, flat_index = g->normal_count; i < g->tri_count; i++) {
+        int n[3] = {g->tri_normal[i][0], g->tri_normal[i][1], g->tri_normal[i][2]};
+        if (n[0] < 0)
+            n[0] = n[1] = n[2] = flat_index++;
+        fprintf(fp, ",\n    <%d, %d, %d>", n[0], n[1], n[2]);
     }
-    fprintf(fp, "  face_indices { %d", m->count);
-    for (int i = 0; i < m->count; i++)
-        fprintf(fp, ",\n    <%d, %d, %d>", 3 * i, 3 * i + 1, 3 * i + 2);
-    fputs(" }\n  inside_vector <0, 0, 1>\n", fp);
-    write_material_ref(fp, s, o, tri, nudged);
+    fputs(" }\n", fp);
+}
+
+/* [XCHK-MAP-MESH-1] A mesh as mesh2 with its shared vertices as refray
+ * holds them (world space), its vertex normals if any triangle has them,
+ * and, when it is closed, an inside_vector so that POV-Ray treats it as a
+ * solid for refraction, as refray does (an open mesh is sheets in both). */
+static void write_mesh(FILE *fp, const scene_model *s, const pov_opts *o, const scene_prim *p, int *nudged)
+{
+    const scene_trimesh *g = &p->u.mesh;
+    fprintf(fp, "mesh2 {\n  vertex_vectors { %d", g->position_count);
+    for (int i = 0; i < g->position_count; i++)
+        put_list_item(fp, g->positions[i]);
+    fputs(" }\n", fp);
+    if (is_smooth(g))
+        write_mesh_normals(fp, g);
+    fprintf(fp, "  face_indices { %d", g->tri_count);
+    for (int i = 0; i < g->tri_count; i++)
+        fprintf(fp, ",\n    <%d, %d, %d>", g->tri[i][0], g->tri[i][1], g->tri[i][2]);
+    fputs(" }\n", fp);
+    if (is_smooth(g))
+        write_normal_indices(fp, g);
+    if (g->closed)
+        fputs("  inside_vector <0, 0, 1>\n", fp);
+    write_material_ref(fp, s, o, p, nudged);
     fputs("}\n", fp);
 }
 
@@ -806,12 +857,10 @@ static void write_geometry(FILE *fp, const scene_model *s, const pov_opts *o)
     fputc('\n', fp);
     for (int i = 0; i < s->prim_count; i++) {
         const scene_prim *p = &s->prims[i];
-        if (p->kind == PRIM_TRIANGLE && p->mesh >= 0) {
-            if (s->meshes[p->mesh].first_prim == i)
-                write_mesh(fp, s, o, &s->meshes[p->mesh], &nudged);
-            continue;
-        }
-        write_prim(fp, s, o, p, &nudged);
+        if (p->kind == PRIM_MESH)
+            write_mesh(fp, s, o, p, &nudged);
+        else
+            write_prim(fp, s, o, p, &nudged);
     }
 }
 

@@ -49,6 +49,10 @@ typedef struct pov_opts {
      * [XCHK-MAP-LEVEL-1]); 0 (default): each gets its own ior
      * 1 + j POV_NUDGE, which POV-Ray counts as refray does. */
     int plain_sheets;
+    /* 1: refray's image to compare with is rendered with
+     * render_opts.facet_shadows (shadow rays of smooth meshes from the
+     * facet, as POV-Ray), so [XCHK-MAP-MESH-3] is not listed. */
+    int facet_shadows;
 } pov_opts;
 
 /* The largest max_trace_level POV-Ray 3.7 accepts (it clamps to it). */

@@ -69,6 +69,10 @@ static void extent_add_prim(extent *e, const scene_prim *p)
         extent_add_box(e, p, vec_sub(p->u.torus.center, r), vec_add(p->u.torus.center, r));
         break;
     }
+    case PRIM_MESH:
+        for (int i = 0; i < p->u.mesh.position_count; i++)
+            extent_add(e, p->u.mesh.positions[i]);
+        break;
     case PRIM_PLANE:
         break;
     }

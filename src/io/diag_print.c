@@ -53,8 +53,10 @@ static void print_excerpt(FILE *out, const diag_record *r)
 void diag_print(void *stream, const diag_record *r)
 {
     FILE *out = stream;
-    if (r->path)
+    if (r->path && r->line > 0)
         fprintf(out, "%s:%d:%d: %s: %s\n", r->path, r->line, r->column, level_name(r->level), r->message);
+    else if (r->path)
+        fprintf(out, "%s: %s: %s\n", r->path, level_name(r->level), r->message);
     else
         fprintf(out, "refray: %s: %s\n", level_name(r->level), r->message);
     if (r->path && r->source_line)

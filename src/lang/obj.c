@@ -7,8 +7,9 @@
  *   before anything else, so no byte of a token can be NUL.
  * - Tokens are spans into the text, so every message points at the exact
  *   bytes; numbers are parsed from a bounded copy of their token.
- * - Arrays grow by doubling with their limit and size_t overflow checked
- *   first; triangles never get room beyond max_triangles.
+ * - Arrays grow by doubling (here and in polymesh.c) with their limit and
+ *   size_t overflow checked first; triangles never get room beyond
+ *   max_triangles.
  * - One error per statement: after it the rest of the logical line is
  *   skipped and parsing goes on with the next, so one run reports many
  *   independent mistakes (up to the diag's limit).
@@ -19,11 +20,11 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include "lang/meshtext.h"
 #include "lang/obj.h"
 
 enum {
     NUMBER_MAX = 255,  /* longest number token accepted */
-    SHOWN_MAX = 40,    /* bytes of a token quoted in a message */
     WARNED_MAX = 8     /* distinct unknown statements warned about */
 };
 
@@ -31,49 +32,21 @@ enum {
  * so a saturated index is out of range whatever the count. */
 #define INDEX_SATURATED (1LL << 40)
 
-typedef struct corner {
-    int v;             /* 0-based position index */
-    int vn;            /* 0-based normal index, -1: none */
-} corner;
-
-typedef struct shown {
-    char s[SHOWN_MAX + 4];
-} shown;
-
 typedef struct parser {
     const char *text;
     size_t len;
     size_t pos;                  /* next byte to read */
     int file;                    /* for spans */
     diag *d;
-    obj_mesh *mesh;
-    long max_triangles;          /* clamped to [0, INT_MAX] */
+    polymesh *mesh;
     int texcoord_count;          /* vt statements seen: t indices are checked against it */
-    corner *corners;             /* the face being read */
-    int corner_cap;
+    int *corner_v, *corner_vn;   /* the face being read: position and normal indices */
+    int corner_v_cap, corner_vn_cap;
     src_span warned[WARNED_MAX]; /* keywords of the unknown statements warned about */
     int warned_count;
     int stop;                    /* a limit was hit or memory ran out: give up */
     int out_of_memory;
 } parser;
-
-static int is_blank(char c)
-{
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
-}
-
-static int is_eol(char c)
-{
-    return c == '\n' || c == '\r';
-}
-
-/* Length of the line terminator at i: 2 for CRLF, 1 for LF or a lone CR, else 0. */
-static size_t eol_length(const parser *p, size_t i)
-{
-    if (i >= p->len || !is_eol(p->text[i]))
-        return 0;
-    return p->text[i] == '\r' && i + 1 < p->len && p->text[i + 1] == '\n' ? 2 : 1;
-}
 
 /* A continuation is a backslash followed by nothing but blanks up to a line
  * terminator (or the end of the text).  Returns the offset just past it, or 0
@@ -83,11 +56,11 @@ static size_t continuation_end(const parser *p, size_t i)
     if (i >= p->len || p->text[i] != '\\')
         return 0;
     size_t j = i + 1;
-    while (j < p->len && is_blank(p->text[j]))
+    while (j < p->len && meshtext_blank(p->text[j]))
         j++;
     if (j == p->len)
         return j;
-    size_t n = eol_length(p, j);
+    size_t n = meshtext_eol_length(p->text, p->len, j);
     return n ? j + n : 0;
 }
 
@@ -96,7 +69,7 @@ static void skip_blank(parser *p)
 {
     for (;;) {
         size_t next;
-        if (p->pos < p->len && is_blank(p->text[p->pos]))
+        if (p->pos < p->len && meshtext_blank(p->text[p->pos]))
             p->pos++;
         else if ((next = continuation_end(p, p->pos)) != 0)
             p->pos = next;
@@ -108,13 +81,13 @@ static void skip_blank(parser *p)
 /* The end of a logical line: end of text, a line terminator, or a comment. */
 static int at_line_end(const parser *p)
 {
-    return p->pos >= p->len || is_eol(p->text[p->pos]) || p->text[p->pos] == '#';
+    return p->pos >= p->len || meshtext_eol(p->text[p->pos]) || p->text[p->pos] == '#';
 }
 
 static int is_token_byte(const parser *p, size_t i)
 {
     char c = p->text[i];
-    return !is_blank(c) && !is_eol(c) && c != '#' && !continuation_end(p, i);
+    return !meshtext_blank(c) && !meshtext_eol(c) && c != '#' && !continuation_end(p, i);
 }
 
 /* Reads the next token of the logical line into *tok; returns 0 at its end. */
@@ -137,34 +110,15 @@ static void skip_line(parser *p)
     src_span tok;
     while (next_token(p, &tok))
         continue;
-    while (p->pos < p->len && !is_eol(p->text[p->pos]))
+    while (p->pos < p->len && !meshtext_eol(p->text[p->pos]))
         p->pos++;
-    p->pos += eol_length(p, p->pos);
+    p->pos += meshtext_eol_length(p->text, p->len, p->pos);
 }
 
 static int token_is(const parser *p, src_span tok, const char *word)
 {
     size_t n = strlen(word);
     return tok.end - tok.begin == n && memcmp(p->text + tok.begin, word, n) == 0;
-}
-
-/* A token fit for quoting in a message: at most SHOWN_MAX bytes, control
- * bytes as '?', and "..." when cut.  Returned by value into a caller's
- * variable (a function result must not be read after the call in C99). */
-static shown show(const parser *p, src_span tok)
-{
-    shown out;
-    size_t n = tok.end - tok.begin, k = 0;
-    for (; k < n && k < SHOWN_MAX; k++) {
-        unsigned char c = (unsigned char)p->text[tok.begin + k];
-        out.s[k] = c < 0x20 || c == 0x7f ? '?' : (char)c;
-    }
-    if (k < n) {
-        memcpy(out.s + k, "...", 3);
-        k += 3;
-    }
-    out.s[k] = '\0';
-    return out;
 }
 
 static src_span span_at(const parser *p, size_t offset)
@@ -188,8 +142,8 @@ static int read_number(parser *p, src_span tok, double *out)
 {
     size_t n = tok.end - tok.begin;
     const char *s = p->text + tok.begin;
-    shown q = show(p, tok);
     if (n > NUMBER_MAX) {
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is too long (more than %d characters)",
                     q.s, NUMBER_MAX);
         return 0;
@@ -202,10 +156,12 @@ static int read_number(parser *p, src_span tok, double *out)
     buf[n] = '\0';
     double v = i == n ? strtod(buf, &end) : 0.0;
     if (i < n || end != buf + n) {
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "malformed number '%s'", q.s);
         return 0;
     }
     if (!isfinite(v)) {
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "number '%s' is not finite", q.s);
         return 0;
     }
@@ -230,7 +186,7 @@ static int read_index(parser *p, src_span tok, long long *out)
             k = k * 10 + (c - '0');
     }
     if (k < 0) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "malformed index '%s'", q.s);
         return 0;
     }
@@ -248,44 +204,23 @@ static int resolve_index(parser *p, src_span tok, int count, const char *what, i
     long long k;
     if (!read_index(p, tok, &k))
         return 0;
-    shown q = show(p, tok);
+    if (k >= -(long long)count && k <= count && k != 0) {
+        *out = k > 0 ? (int)(k - 1) : (int)(count + k);
+        return 1;
+    }
+    meshtext_shown q = meshtext_show(p->text, tok);
     if (k == 0) {
         diag_report(p->d, DIAG_ERROR, tok,
                     "index 0 is invalid: OBJ indices start at 1 (or count back from -1)");
         return 0;
     }
-    if (k > count) {
+    if (k > count)
         diag_report(p->d, DIAG_ERROR, tok, "index %s refers to a %s not yet defined (%d so far)",
                     q.s, what, count);
-        return 0;
-    }
-    if (k < -(long long)count) {
+    else
         diag_report(p->d, DIAG_ERROR, tok, "index %s reaches before the first %s (%d so far)",
                     q.s, what, count);
-        return 0;
-    }
-    *out = k > 0 ? (int)(k - 1) : (int)(count + k);
-    return 1;
-}
-
-/* Returns array grown to hold at least `need` elements of `size` bytes (its
- * capacity *cap doubling, capped at limit), or NULL when need exceeds limit,
- * the byte count would overflow, or memory runs out; array stays valid then. */
-static void *grow(const mem *m, void *array, int *cap, long need, size_t size, long limit)
-{
-    if (need <= *cap)
-        return array;
-    if (need > limit)
-        return NULL;
-    long n = *cap > 0 ? *cap : 16;
-    while (n < need)
-        n = n > limit / 2 ? limit : 2 * n;
-    if ((size_t)n > SIZE_MAX / size)
-        return NULL;
-    void *grown = mem_resize_array(m, array, (size_t)*cap, (size_t)n, size);
-    if (grown)
-        *cap = (int)n;
-    return grown;
+    return 0;
 }
 
 static void out_of_memory(parser *p, src_span where)
@@ -295,23 +230,20 @@ static void out_of_memory(parser *p, src_span where)
     p->out_of_memory = 1;
 }
 
-/* Appends v to *array (count *count, capacity *cap); reports and returns 0
- * when the count would pass INT_MAX or memory runs out. */
-static int append_vec(parser *p, vec3 **array, int *count, int *cap, vec3 v, src_span where)
+/* Reports what a polymesh_add_* call refused; returns whether it succeeded. */
+static int added(parser *p, int status, src_span where, const char *what)
 {
-    if (*count == INT_MAX) {
-        diag_report(p->d, DIAG_ERROR, where, "too many vertices in OBJ file (limit %d)", INT_MAX);
-        p->stop = 1;
-        return 0;
-    }
-    vec3 *a = grow(&p->mesh->mem, *array, cap, (long)*count + 1, sizeof *a, INT_MAX);
-    if (!a) {
+    if (status == 1)
+        return 1;
+    if (status == POLYMESH_NO_MEMORY)
         out_of_memory(p, where);
-        return 0;
-    }
-    *array = a;
-    a[(*count)++] = v;
-    return 1;
+    else if (what)
+        diag_report(p->d, DIAG_ERROR, where, "too many %s in OBJ file (limit %d)", what, INT_MAX);
+    else
+        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
+                    p->mesh->max_triangles);
+    p->stop = 1;
+    return 0;
 }
 
 /* Reads x y z into *v.  When tokens run out, reports at the end of the last
@@ -323,7 +255,7 @@ static int read_coords(parser *p, src_span kw, vec3 *v)
     for (int i = 0; i < 3; i++) {
         size_t last_end = tok.end;
         if (!next_token(p, &tok)) {
-            shown q = show(p, kw);
+            meshtext_shown q = meshtext_show(p->text, kw);
             diag_report(p->d, DIAG_ERROR, span_at(p, last_end), "'%s' needs 3 coordinates, got %d",
                         q.s, i);
             return 0;
@@ -347,7 +279,7 @@ static void parse_vertex(parser *p, src_span kw)
     while (next_token(p, &tok))
         if (!read_number(p, tok, &ignored))
             return;
-    append_vec(p, &p->mesh->positions, &p->mesh->position_count, &p->mesh->position_cap, v, kw);
+    added(p, polymesh_add_position(p->mesh, v), kw, "vertices");
 }
 
 /* vn x y z */
@@ -358,11 +290,11 @@ static void parse_normal(parser *p, src_span kw)
     if (!read_coords(p, kw, &n))
         return;
     if (next_token(p, &tok)) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
-    append_vec(p, &p->mesh->normals, &p->mesh->normal_count, &p->mesh->normal_cap, n, kw);
+    added(p, polymesh_add_normal(p->mesh, n), kw, "normals");
 }
 
 /* Splits tok at '/' into field[0..2]; returns the number of fields, or 4
@@ -389,82 +321,57 @@ static int is_empty(src_span s)
 }
 
 /* corner: i | i/t | i//n | i/t/n.  Resolves the position and normal indices
- * into *c and range-checks the texture one. */
-static int parse_corner(parser *p, src_span tok, corner *c, int *has_normal)
+ * into *v and *vn (-1: none) and range-checks the texture one. */
+static int parse_corner(parser *p, src_span tok, int *v, int *vn, int *has_normal)
 {
     src_span field[3];
     int n = split_fields(p, tok, field), ignored;
     int well_formed = n <= 3 && !is_empty(field[0]) && (n != 2 || !is_empty(field[1]))
                       && (n != 3 || !is_empty(field[2]));
     if (!well_formed) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok,
                     "malformed face vertex '%s' (expected i, i/t, i//n or i/t/n)", q.s);
         return 0;
     }
-    if (!resolve_index(p, field[0], p->mesh->position_count, "vertex", &c->v))
+    if (!resolve_index(p, field[0], p->mesh->position_count, "vertex", v))
         return 0;
     if (n >= 2 && !is_empty(field[1])
         && !resolve_index(p, field[1], p->texcoord_count, "texture coordinate", &ignored))
         return 0;
-    c->vn = -1;
+    *vn = -1;
     *has_normal = n == 3;
-    return n < 3 || resolve_index(p, field[2], p->mesh->normal_count, "normal", &c->vn);
-}
-
-/* Cuts the n corners read into the fan (c0, ck, ck+1), refusing it when the
- * mesh would pass max_triangles (checked before any room is made). */
-static void emit_fan(parser *p, int n, src_span where)
-{
-    obj_mesh *m = p->mesh;
-    long add = n - 2;
-    if (add > p->max_triangles - m->triangle_count) {
-        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
-                    p->max_triangles);
-        p->stop = 1;
-        return;
-    }
-    obj_triangle *t = grow(&m->mem, m->triangles, &m->triangle_cap, m->triangle_count + add, sizeof *t,
-                           p->max_triangles);
-    if (!t) {
-        out_of_memory(p, where);
-        return;
-    }
-    m->triangles = t;
-    for (int k = 1; k + 1 < n; k++) {
-        const corner *c[3] = {&p->corners[0], &p->corners[k], &p->corners[k + 1]};
-        obj_triangle *tri = &t[m->triangle_count++];
-        for (int i = 0; i < 3; i++) {
-            tri->v[i] = c[i]->v;
-            tri->vn[i] = c[i]->vn;
-        }
-        tri->where = where;
-    }
+    return n < 3 || resolve_index(p, field[2], p->mesh->normal_count, "normal", vn);
 }
 
 /* Reads one corner token as the face's n-th; 0 after reporting a problem. */
 static int add_corner(parser *p, src_span tok, int n, int *first_has_normal)
 {
-    corner c;
-    int has_normal;
-    if (!parse_corner(p, tok, &c, &has_normal))
+    int v, vn, has_normal;
+    if (!parse_corner(p, tok, &v, &vn, &has_normal))
         return 0;
     if (n == 0)
         *first_has_normal = has_normal;
     if (has_normal != *first_has_normal) {
-        shown q = show(p, tok);
+        meshtext_shown q = meshtext_show(p->text, tok);
         diag_report(p->d, DIAG_ERROR, tok,
                     "face vertex '%s' %s a normal index but the face's first vertex %s", q.s,
                     has_normal ? "has" : "lacks", has_normal ? "has none" : "has one");
         return 0;
     }
-    corner *all = grow(&p->mesh->mem, p->corners, &p->corner_cap, (long)n + 1, sizeof *all, INT_MAX);
-    if (!all) {
+    const mem *m = &p->mesh->mem;
+    int *cv = polymesh_grow(m, p->corner_v, &p->corner_v_cap, (long)n + 1, sizeof *cv, INT_MAX);
+    if (cv)
+        p->corner_v = cv;
+    int *cn = cv ? polymesh_grow(m, p->corner_vn, &p->corner_vn_cap, (long)n + 1, sizeof *cn, INT_MAX) : NULL;
+    if (cn)
+        p->corner_vn = cn;
+    if (!cv || !cn) {
         out_of_memory(p, tok);
         return 0;
     }
-    p->corners = all;
-    all[n] = c;
+    p->corner_v[n] = v;
+    p->corner_vn[n] = vn;
     return 1;
 }
 
@@ -483,7 +390,8 @@ static void parse_face(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, where, "face has %d vertices, needs at least 3", n);
         return;
     }
-    emit_fan(p, n, where);
+    added(p, polymesh_add_face(p->mesh, p->corner_v, first_has_normal ? p->corner_vn : NULL, n, kw.begin),
+          where, NULL);
 }
 
 /* Warns once per kind of unknown statement, for the first WARNED_MAX kinds;
@@ -500,7 +408,7 @@ static void warn_unknown(parser *p, src_span kw)
     if (p->warned_count == WARNED_MAX)
         return;
     p->warned[p->warned_count++] = kw;
-    shown q = show(p, kw);
+    meshtext_shown q = meshtext_show(p->text, kw);
     diag_report(p->d, DIAG_WARNING, kw, "unknown OBJ statement '%s' ignored%s", q.s,
                 p->warned_count == WARNED_MAX ? " (further unknown statements are not reported)"
                                               : "");
@@ -553,37 +461,27 @@ static void parse_file(parser *p)
     }
 }
 
-int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, obj_mesh *out)
+int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, polymesh *out)
 {
     assert(sources && file >= 0 && file < sources->count);
     const source_file *f = sources->files[file];
     int errors_before = d->errors;
     parser p;
     memset(&p, 0, sizeof p);
-    memset(out, 0, sizeof *out);
-    out->mem = sources->mem;
+    polymesh_init(out, max_triangles, &sources->mem);
     p.text = f->text;
     p.len = f->len;
     p.file = file;
     p.d = d;
     p.mesh = out;
-    p.max_triangles = max_triangles < 0 ? 0 : max_triangles > INT_MAX ? INT_MAX : max_triangles;
     if (check_no_nul(&p))
         parse_file(&p);
-    if (d->errors == errors_before && out->triangle_count == 0)
+    if (d->errors == errors_before && out->face_count == 0)
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
-    mem_free(&out->mem, p.corners, (size_t)p.corner_cap * sizeof *p.corners);
+    mem_free(&out->mem, p.corner_v, (size_t)p.corner_v_cap * sizeof *p.corner_v);
+    mem_free(&out->mem, p.corner_vn, (size_t)p.corner_vn_cap * sizeof *p.corner_vn);
     if (d->errors == errors_before)
         return 1;
-    obj_free(out);
+    polymesh_free(out);
     return p.out_of_memory ? -1 : 0;
-}
-
-void obj_free(obj_mesh *mesh)
-{
-    mem m = mesh->mem;
-    mem_free(&m, mesh->positions, (size_t)mesh->position_cap * sizeof *mesh->positions);
-    mem_free(&m, mesh->normals, (size_t)mesh->normal_cap * sizeof *mesh->normals);
-    mem_free(&m, mesh->triangles, (size_t)mesh->triangle_cap * sizeof *mesh->triangles);
-    memset(mesh, 0, sizeof *mesh);
 }

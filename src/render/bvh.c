@@ -1,14 +1,6 @@
 /*
- * bvh.c - build and traversal of the bounding volume hierarchy.
- *
- * Build: top-down, binned SAH (Wald, "On fast Construction of SAH-based
- * Bounding Volume Hierarchies", 2007): the centroids of a node's primitives
- * are binned along each axis and the plane between bins of least
- *   C_TRAV + (area_L n_L + area_R n_R) / area
- * wins; a node of at most MAX_LEAF primitives stays a leaf when that is not
- * cheaper than n.  When the centroids coincide, or below BVH_MEDIAN_DEPTH,
- * the node is halved at the object median instead, which bounds the depth.
- * Every choice is a deterministic function of the input.
+ * bvh.c - traversal of the bounding volume hierarchy (bvh_build.c builds
+ * it).
  *
  * Traversal: an explicit stack of BVH_MAX_DEPTH entries, nearest child
  * first, culling by the shrinking tmax (not when b->exhaustive: then every
@@ -20,346 +12,20 @@
  * update it are false for NaN.
  */
 #include <float.h>
-#include <limits.h>
-#include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 #include <assert.h>
 #include "render/bvh.h"
 
-#define BINS 32
-#define MAX_LEAF 4
-#define C_TRAV 1.0
-/* Primitive boxes are widened by this fraction of their coordinates' size,
- * so a hit computed a few ulps outside its true box is still inside. */
-#define BOUNDS_PAD 0x1p-40
 #define EXIT_PAD (4.0 * DBL_EPSILON)
-
-/* A primitive during the build: its padded box, centroid and index.  The
- * build permutes these in place, so each node's are contiguous. */
-typedef struct build_item {
-    vec3 lo, hi, centroid;
-    int index;
-} build_item;
-
-typedef struct sort_key {
-    real key;
-    int index;     /* primitive index: the tie-break that makes the order unique */
-    int position;  /* where the item was before sorting */
-} sort_key;
-
-typedef struct build_ctx {
-    bvh *b;
-    build_item *items;    /* the bounded primitives */
-    build_item *spare;    /* as many again, for median splits */
-    sort_key *keys;
-} build_ctx;
-
-typedef struct bin {
-    vec3 lo, hi;
-    int count;
-} bin;
-
-/* Comparisons, not fmin/fmax (a library call each): no NaN gets here. */
-static vec3 vmin(vec3 a, vec3 b)
-{
-    return vec_make(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
-}
-
-static vec3 vmax(vec3 a, vec3 b)
-{
-    return vec_make(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
-}
-
-static real half_area(vec3 lo, vec3 hi)
-{
-    vec3 e = vec_sub(hi, lo);
-    if (!(e.x >= 0.0 && e.y >= 0.0 && e.z >= 0.0))
-        return 0.0;
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
-static real pad(real lo, real hi)
-{
-    return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
-}
-
-/* The padded box of primitive p; 0 when it has no finite bounds. */
-static int item_of(const scene_prim *p, int index, build_item *out)
-{
-    vec3 lo, hi;
-    if (!isect_prim_bounds(p, &lo, &hi))
-        return 0;
-    vec3 e = vec_make(pad(lo.x, hi.x), pad(lo.y, hi.y), pad(lo.z, hi.z));
-    out->lo = vec_sub(lo, e);
-    out->hi = vec_add(hi, e);
-    out->centroid = vec_scale(vec_add(out->lo, out->hi), 0.5);
-    out->index = index;
-    return vec_is_finite(out->centroid);
-}
-
-/* Bounds of the boxes and of the centroids of items[begin..end). */
-static void range_bounds(const build_ctx *ctx, int begin, int end, vec3 bounds[2], vec3 cent[2])
-{
-    bounds[0] = cent[0] = vec_splat(INFINITY);
-    bounds[1] = cent[1] = vec_splat(-INFINITY);
-    for (int i = begin; i < end; i++) {
-        const build_item *it = &ctx->items[i];
-        bounds[0] = vmin(bounds[0], it->lo);
-        bounds[1] = vmax(bounds[1], it->hi);
-        cent[0] = vmin(cent[0], it->centroid);
-        cent[1] = vmax(cent[1], it->centroid);
-    }
-}
-
-/* The binning of one axis: bin = floor((c - lo) * scale), clamped. */
-typedef struct binning {
-    int axis;
-    real lo, scale;
-} binning;
-
-static int bin_of(const binning *bn, vec3 c)
-{
-    real x = (vec_component(c, bn->axis) - bn->lo) * bn->scale;
-    int k = x > 0.0 ? (int)x : 0;
-    return k < BINS ? k : BINS - 1;
-}
-
-/* The best plane on one axis: cost (area-weighted counts, not yet divided
- * by the node's area) and the number of bins on its left. */
-static real sah_axis(const build_ctx *ctx, int begin, int end, const binning *bn, int *split)
-{
-    bin bins[BINS];
-    real right_area[BINS];
-    int right_count[BINS];
-    for (int k = 0; k < BINS; k++) {
-        bins[k].lo = vec_splat(INFINITY);
-        bins[k].hi = vec_splat(-INFINITY);
-        bins[k].count = 0;
-    }
-    for (int i = begin; i < end; i++) {
-        const build_item *it = &ctx->items[i];
-        bin *bk = &bins[bin_of(bn, it->centroid)];
-        bk->lo = vmin(bk->lo, it->lo);
-        bk->hi = vmax(bk->hi, it->hi);
-        bk->count++;
-    }
-    vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
-    int count = 0;
-    for (int k = BINS - 1; k > 0; k--) {
-        lo = vmin(lo, bins[k].lo);
-        hi = vmax(hi, bins[k].hi);
-        count += bins[k].count;
-        right_area[k] = half_area(lo, hi);
-        right_count[k] = count;
-    }
-    real best = INFINITY;
-    lo = vec_splat(INFINITY);
-    hi = vec_splat(-INFINITY);
-    count = 0;
-    for (int k = 0; k < BINS - 1; k++) {
-        lo = vmin(lo, bins[k].lo);
-        hi = vmax(hi, bins[k].hi);
-        count += bins[k].count;
-        if (count == 0 || right_count[k + 1] == 0)
-            continue;
-        real cost = half_area(lo, hi) * count + right_area[k + 1] * right_count[k + 1];
-        if (cost < best) {
-            best = cost;
-            *split = k + 1;
-        }
-    }
-    return best;
-}
-
-/* Moves the items whose bin is below split to the front; returns the first
- * index of the rest. */
-static int partition_bins(const build_ctx *ctx, int begin, int end, const binning *bn, int split)
-{
-    build_item *items = ctx->items;
-    int i = begin, j = end - 1;
-    while (i <= j) {
-        if (bin_of(bn, items[i].centroid) < split) {
-            i++;
-        } else {
-            build_item s = items[i];
-            items[i] = items[j];
-            items[j--] = s;
-        }
-    }
-    return i;
-}
-
-static int compare_keys(const void *pa, const void *pb)
-{
-    const sort_key *a = pa, *b = pb;
-    if (a->key != b->key)
-        return a->key < b->key ? -1 : 1;
-    return (a->index > b->index) - (a->index < b->index);
-}
-
-/* Sorts items[begin..end) by centroid on axis, ties by primitive index (so
- * the order is unique whatever qsort does), and returns the middle. */
-static int median_split(const build_ctx *ctx, int begin, int end, int axis)
-{
-    build_item *items = ctx->items + begin;
-    int n = end - begin;
-    for (int i = 0; i < n; i++) {
-        ctx->keys[i].key = vec_component(items[i].centroid, axis);
-        ctx->keys[i].index = items[i].index;
-        ctx->keys[i].position = i;
-        ctx->spare[i] = items[i];
-    }
-    qsort(ctx->keys, (size_t)n, sizeof *ctx->keys, compare_keys);
-    for (int i = 0; i < n; i++)
-        items[i] = ctx->spare[ctx->keys[i].position];
-    return begin + n / 2;
-}
-
-static int widest_axis(vec3 lo, vec3 hi)
-{
-    vec3 e = vec_sub(hi, lo);
-    return e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
-}
-
-/* Where to split items[begin..end), or -1 for a leaf. */
-static int choose_split(const build_ctx *ctx, int begin, int end, int depth, const vec3 bounds[2],
-                        const vec3 cent[2])
-{
-    int n = end - begin, best_split = 0;
-    real best = INFINITY;
-    binning best_bn = {0, 0.0, 0.0};
-    if (n <= 1)
-        return -1;
-    for (int axis = 0; axis < 3 && depth < BVH_MEDIAN_DEPTH; axis++) {
-        real lo = vec_component(cent[0], axis), extent = vec_component(cent[1], axis) - lo;
-        binning bn = {axis, lo, BINS / extent};
-        int split = 0;
-        if (!(extent > 0.0) || !isfinite(bn.scale))
-            continue;
-        real cost = sah_axis(ctx, begin, end, &bn, &split);
-        if (cost < best) {
-            best = cost;
-            best_bn = bn;
-            best_split = split;
-        }
-    }
-    if (best == INFINITY)
-        return n <= MAX_LEAF ? -1 : median_split(ctx, begin, end, widest_axis(cent[0], cent[1]));
-    real area = half_area(bounds[0], bounds[1]);
-    real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
-    if (n <= MAX_LEAF && !(split_cost < n))
-        return -1;
-    return partition_bins(ctx, begin, end, &best_bn, best_split);
-}
-
-/* Fills node (already allocated) for items[begin..end) and its subtree.
- * The two children of a node are allocated together, side by side, so a
- * traversal step that tests both reads adjacent memory.  The recursion is
- * at most BVH_MAX_DEPTH deep (see bvh.h). */
-static void build_node(const build_ctx *ctx, int node, int begin, int end, int depth)
-{
-    bvh *b = ctx->b;
-    vec3 bounds[2], cent[2];
-    range_bounds(ctx, begin, end, bounds, cent);
-    b->nodes[node].lo = bounds[0];
-    b->nodes[node].hi = bounds[1];
-    if (depth > b->depth)
-        b->depth = depth;
-    int mid = choose_split(ctx, begin, end, depth, bounds, cent);
-    if (mid < 0) {
-        b->nodes[node].first = begin;
-        b->nodes[node].count = end - begin;
-        b->leaf_count++;
-        return;
-    }
-    assert(mid > begin && mid < end && depth < BVH_MAX_DEPTH);
-    int first = b->node_count;
-    b->node_count += 2;
-    b->nodes[node].first = first;
-    b->nodes[node].count = 0;
-    build_node(ctx, first, begin, mid, depth + 1);
-    build_node(ctx, first + 1, mid, end, depth + 1);
-}
 
 void bvh_free(bvh *b)
 {
     mem m = b->mem;
     mem_free(&m, b->nodes, (size_t)b->node_cap * sizeof *b->nodes);
-    mem_free(&m, b->items, (size_t)b->item_count * sizeof *b->items);
+    mem_free(&m, b->items, b->item_bytes);
     mem_free(&m, b->unbounded, (size_t)b->unbounded_cap * sizeof *b->unbounded);
     memset(b, 0, sizeof *b);
     b->mem = m;
-}
-
-/* Sorts primitives into build items (bounded) and b->unbounded, which is
- * then cut to its count (it was made for every primitive). */
-static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
-{
-    int bounded = 0;
-    for (int i = 0; i < count; i++) {
-        if (item_of(&prims[i], i, &items[bounded]))
-            bounded++;
-        else
-            b->unbounded[b->unbounded_count++] = i;
-    }
-    int *fit = mem_resize_array(&b->mem, b->unbounded, (size_t)b->unbounded_cap, (size_t)b->unbounded_count,
-                                sizeof *fit);
-    if (fit) {
-        b->unbounded = fit;
-        b->unbounded_cap = b->unbounded_count;
-    }
-    return bounded;
-}
-
-/* The tree over ctx->items[0..count-1]; 0 when out of memory. */
-static int build_tree(build_ctx *ctx, int count)
-{
-    bvh *b = ctx->b;
-    b->nodes = mem_calloc(&b->mem, 2 * (size_t)count, sizeof *b->nodes);
-    if (!b->nodes)
-        return 0;
-    b->node_cap = 2 * count;
-    b->items = mem_calloc(&b->mem, (size_t)count, sizeof *b->items);
-    if (!b->items)
-        return 0;
-    b->item_count = count;
-    b->node_count = 1;
-    build_node(ctx, 0, 0, count, 1);
-    for (int i = 0; i < count; i++)
-        b->items[i] = ctx->items[i].index;
-    bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
-    if (fit) {
-        b->nodes = fit;
-        b->node_cap = b->node_count;
-    }
-    return 1;
-}
-
-int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
-{
-    build_ctx ctx = {b, NULL, NULL, NULL};
-    int ok = 0;
-    memset(b, 0, sizeof *b);
-    b->mem = mem_pick(m);
-    if (count < 0 || count > INT_MAX / 2 || (size_t)count > SIZE_MAX / 2 / sizeof(build_item))
-        return 0;
-    size_t n = (size_t)count;
-    ctx.items = mem_calloc(&b->mem, n, sizeof *ctx.items);
-    ctx.spare = mem_calloc(&b->mem, n, sizeof *ctx.spare);
-    ctx.keys = mem_calloc(&b->mem, n, sizeof *ctx.keys);
-    b->unbounded = mem_calloc(&b->mem, n, sizeof *b->unbounded);
-    b->unbounded_cap = b->unbounded ? count : 0;
-    if (ctx.items && ctx.spare && ctx.keys && b->unbounded) {
-        int bounded = classify(b, prims, count, ctx.items);
-        ok = bounded == 0 || build_tree(&ctx, bounded);
-    }
-    mem_free(&b->mem, ctx.items, n * sizeof *ctx.items);
-    mem_free(&b->mem, ctx.spare, n * sizeof *ctx.spare);
-    mem_free(&b->mem, ctx.keys, n * sizeof *ctx.keys);
-    if (!ok)
-        bvh_free(b);
-    return ok;
 }
 
 /* A ray prepared for slab tests: 1/d with signed infinities for d = +-0. */
@@ -441,12 +107,20 @@ static real tie_limit(const nearest *ns)
     return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
 }
 
+/* Orders hits by primitive, then part: the tie-break of the window. */
+static int hit_order(const hit *a, const hit *b)
+{
+    if (a->prim != b->prim)
+        return a->prim < b->prim ? -1 : 1;
+    return (a->part > b->part) - (a->part < b->part);
+}
+
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
 static void nearest_add(nearest *ns, const hit *h)
 {
     if (ns->fixed) {
-        if (ns->count == 0 || h->prim < ns->cand[0].prim)
+        if (ns->count == 0 || hit_order(h, &ns->cand[0]) < 0)
             ns->cand[0] = *h;
         ns->count = 1;
         ns->rr.tmax = ns->t_near;   /* the window's end, set by the caller */
@@ -469,14 +143,14 @@ static void nearest_add(nearest *ns, const hit *h)
     ns->rr.tmax = limit;
 }
 
-static void nearest_test(nearest *ns, const scene_prim *prims, int index)
+static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
 {
     hit h;
     if (ns->stats)
         ns->stats->prims_tested++;
-    if (!isect_prim(&prims[index], &ns->rr, &h))
+    if (!isect_part(&prims[ref.prim], ref.part, &ns->rr, &h))
         return;
-    h.prim = index;
+    h.prim = ref.prim;
     nearest_add(ns, &h);
 }
 
@@ -485,7 +159,7 @@ static const hit *nearest_winner(const nearest *ns)
 {
     const hit *best = &ns->cand[0];
     for (int i = 1; i < ns->count; i++)
-        if (ns->cand[i].prim < best->prim)
+        if (hit_order(&ns->cand[i], best) < 0)
             best = &ns->cand[i];
     return best;
 }
@@ -581,15 +255,15 @@ int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)
     return bvh_intersect_stats(b, prims, r, h, NULL);
 }
 
-static int visit_prim(const scene_prim *prims, int index, const ray *r,
+static int visit_part(const scene_prim *prims, bvh_ref ref, const ray *r,
                       int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     hit out[ISECT_MAX_CROSSINGS];
     if (stats)
         stats->prims_tested++;
-    int n = isect_prim_all(&prims[index], r, out);
+    int n = isect_part_all(&prims[ref.prim], ref.part, r, out);
     for (int i = 0; i < n; i++) {
-        out[i].prim = index;
+        out[i].prim = ref.prim;
         int stop = fn(ctx, &out[i]);
         if (stop)
             return stop;
@@ -619,7 +293,7 @@ static int traverse_all(const bvh *b, const scene_prim *prims, const ray *r,
             continue;
         }
         for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_prim(prims, b->items[i], r, fn, ctx, stats);
+            int stop = visit_part(prims, b->items[i], r, fn, ctx, stats);
             if (stop)
                 return stop;
         }
@@ -631,7 +305,7 @@ int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        int stop = visit_prim(prims, b->unbounded[i], r, fn, ctx, stats);
+        int stop = visit_part(prims, b->unbounded[i], r, fn, ctx, stats);
         if (stop)
             return stop;
     }

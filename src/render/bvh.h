@@ -1,19 +1,21 @@
 /*
  * bvh.h - a bounding volume hierarchy over a scene's primitives.
  *
- * Every primitive with finite bounds goes into a binary tree of
- * axis-aligned boxes, built by the binned surface area heuristic and stored
- * as one flat node array; the two children of a node sit side by side.  Planes, and anything else without finite bounds, are kept in a list
- * beside the tree and tested on every ray.
+ * Every part of a primitive with finite bounds (each triangle of a mesh,
+ * every other primitive whole: intersect.h, "Parts") goes into a binary
+ * tree of axis-aligned boxes, built by the binned surface area heuristic
+ * and stored as one flat node array; the two children of a node sit side
+ * by side.  Planes, and anything else without finite bounds, are kept in a
+ * list beside the tree and tested on every ray.
  *
- * The tree holds indices into the prims array it was built from; the same
- * array must be passed to every query and must not change.  Building is
- * deterministic (same prims, same tree) and the nearest hit does not depend
- * on the tree's shape: among the hits within a tie window of the least t
- * (2^-46 (|t| + |origin|), a few dozen ulps: coplanar surfaces) the lowest
- * primitive index wins, so a disk lying on a plane shows whichever was
- * declared first, never a noise of both (spec/numerics.md, "Coplanar
- * surfaces").
+ * The tree holds (primitive, part) pairs of the prims array it was built
+ * from; the same array must be passed to every query and must not change.
+ * Building is deterministic (same prims, same tree) and the nearest hit
+ * does not depend on the tree's shape: among the hits within a tie window
+ * of the least t (2^-46 (|t| + |origin|), a few dozen ulps: coplanar
+ * surfaces) the lowest primitive index wins, then the lowest part, so a
+ * disk lying on a plane shows whichever was declared first, never a noise
+ * of both (spec/numerics.md, "Coplanar surfaces").
  * Queries allocate nothing and keep no state, so threads may share a tree.
  */
 #ifndef REFRAY_BVH_H
@@ -32,8 +34,13 @@ typedef struct bvh_node {
     vec3 lo, hi;       /* bounds of everything below */
     int first;         /* leaf: first slot in bvh.items; inner: the first child
                           (the second is first + 1) */
-    int count;         /* leaf: number of primitives (>= 1); inner: 0 */
+    int count;         /* leaf: number of parts (>= 1); inner: 0 */
 } bvh_node;
+
+typedef struct bvh_ref {
+    int prim;          /* index into the prims array */
+    int part;          /* which part of it (intersect.h) */
+} bvh_ref;
 
 typedef struct bvh {
     bvh_node *nodes;   /* nodes[0] is the root; NULL when nothing is bounded */
@@ -41,9 +48,10 @@ typedef struct bvh {
     int node_cap;      /* entries allocated in nodes */
     int leaf_count;
     int depth;         /* longest root-to-leaf path, in nodes */
-    int *items;        /* primitive indices, each leaf's a contiguous run */
+    bvh_ref *items;    /* the parts, each leaf's a contiguous run */
     int item_count;
-    int *unbounded;    /* planes etc.: tested linearly on every ray */
+    size_t item_bytes; /* bytes allocated at items (it was the build's array) */
+    bvh_ref *unbounded; /* parts of planes etc.: tested linearly on every ray */
     int unbounded_count;
     int exhaustive;    /* 1: no box culls a ray, every primitive is tested, in
                           the order of the tree (the shortcuts-off mode of
@@ -56,19 +64,19 @@ typedef struct bvh {
 /* What one query did, accumulated (the caller zeroes it). */
 typedef struct bvh_stats {
     long nodes_visited;    /* nodes whose box was tested */
-    long prims_tested;     /* primitive intersection tests, unbounded ones included */
+    long prims_tested;     /* part intersection tests, unbounded ones included */
 } bvh_stats;
 
-/* Builds the tree over prims[0..count-1] in memory from m (NULL: the C
- * library).  Returns 1, or 0 when out of memory or count is outside
- * [0, INT_MAX/2] (then *b is empty and bvh_free is still safe).  Nothing of
- * prims is kept but the indices. */
+/* Builds the tree over the parts of prims[0..count-1] in memory from m
+ * (NULL: the C library).  Returns 1, or 0 when out of memory, count < 0,
+ * or there are more than INT_MAX/2 parts (then *b is empty and bvh_free is
+ * still safe).  Nothing of prims is kept but the indices. */
 int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m);
 void bvh_free(bvh *b);
 
 /* The nearest hit in (r->tmin, r->tmax), ties resolved as above: shrinks
- * r->tmax to its t, fills *h including h->prim, returns 1 on a hit.  On a
- * miss *r and *h are unchanged. */
+ * r->tmax to its t, fills *h including h->prim and h->part, returns 1 on a
+ * hit.  On a miss *r and *h are unchanged. */
 int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h);
 /* The same, adding to *stats when it is not NULL. */
 int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats);
@@ -76,7 +84,7 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
 /*
  * Calls fn for every surface crossing in (r->tmin, r->tmax) (a solid
  * crossed through reports its entry and its exit), in no particular order,
- * with h->prim set.  Stops as soon as fn returns nonzero and returns that
+ * with h->prim and h->part set.  Stops as soon as fn returns nonzero and returns that
  * value; returns 0 when all crossings were reported.  Meant for shadow
  * rays through transparent occluders.
  */

@@ -19,7 +19,9 @@ static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
     h->normal = n;
     h->shading_normal = n;
     h->prim = -1;
+    h->part = 0;
     h->entering = vec_dot(dir, n) < 0.0;
+    h->b1 = h->b2 = 0.0;
 }
 
 void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
@@ -277,19 +279,64 @@ static int max_abs_axis(vec3 d)
  * The 2D edge functions at the origin are then
  *   U = e(B,C), V = e(C,A), W = e(A,B),  e(P,Q) = Qx Py - Qy Px,
  * the barycentric weights of A, B, C times their sum det.  The sheared
- * coordinates of a vertex depend only on the vertex and the ray, and
- * e(Q,P) = -e(P,Q) exactly in floating point, so two triangles sharing an
- * edge see opposite signs there: no ray slips between them (a 0 counts as
- * inside for both).  The paper's fallback for a 0 edge function in single
- * precision is to recompute it in double; here the working type is double or wider.
- * This relies on no fused multiply-add contraction, which GCC leaves off in
- * ISO C mode (-std=c99).
+ * coordinates of a vertex depend only on the vertex and the ray, and the
+ * two products of e(Q,P) are those of e(P,Q) swapped, so two triangles
+ * sharing an edge see exactly opposite values there.
+ *
+ * Exactly one crossing per surface ([NUM-WATERTIGHT-1]).  Two more steps
+ * make a ray that meets a shared edge or vertex of a closed mesh hit
+ * exactly one of the triangles there, not both (a glass face counted twice)
+ * and not none (a leak):
+ *   - the sign of each edge function is exact: fl(p - q) has the sign of
+ *     the exact products' difference whenever p = fl(Qx Py) and q =
+ *     fl(Qy Px) differ (rounding is monotone), and when they are equal the
+ *     exact remainders fma(Qx, Py, -p) and fma(Qy, Px, -q) decide.  So the
+ *     signs are those of the exact 2D geometry of the sheared vertices,
+ *     which all triangles of the mesh share;
+ *   - an edge function that is exactly 0 (the ray passes through the edge's
+ *     line) of an edge shared with another triangle of a mesh takes the
+ *     sign it would have if the ray were moved by
+ *     (delta, delta^2) in the sheared plane, delta -> 0+ ("simulation of
+ *     simplicity"): e(P,Q) + delta (Qy - Py) + delta^2 (Px - Qx), so the
+ *     sign of Qy - Py, or when that is 0 of Px - Qx, both exact.  The
+ *     moved ray lies strictly inside exactly one of the triangles around
+ *     an edge or vertex that the mesh folds flat around it, whatever their
+ *     winding; at a silhouette (the surface folds back) it meets both or
+ *     neither, an even number, as a closed surface must.
+ *   - an edge of one triangle only (a lone `triangle`, the rim of an open
+ *     mesh) counts an exact 0 as inside, as Woop et al. do: its boundary is
+ *     closed, so a ray through the rim of a sheet, or through the tip of a
+ *     fan, still hits it (where the rim meets a shared edge, a ray through
+ *     that vertex may then hit two triangles of an open mesh).
+ * The paper's fallback for a 0 edge function in single precision (recompute
+ * in double) is not needed: the working type is double or wider.  This
+ * relies on no fused multiply-add contraction of the plain products, which
+ * GCC leaves off in ISO C mode (-std=c99).  Exactness needs the products to
+ * stay normal doubles (the numeric domain above).
  */
 typedef struct tri_bary {
     real t, b[3];
 } tri_bary;
 
-static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
+/* The exact sign of a b - c d when fl(a b) == fl(c d) (so the rounded
+ * difference is 0): the sign of the remainders' difference. */
+static int remainder_sign(real a, real b, real c, real d)
+{
+    real p = a * b, q = c * d;
+    real rp = fma(a, b, -p), rq = fma(c, d, -q);
+    return (rp > rq) - (rp < rq);
+}
+
+/* The tie rule above for an edge P -> Q through the ray: the sign of
+ * Qy - Py, else of Px - Qx; 0 only when P and Q coincide in the plane. */
+static int tie_sign(real px, real py, real qx, real qy)
+{
+    if (qy != py)
+        return qy > py ? 1 : -1;
+    return (px > qx) - (px < qx);
+}
+
+static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary *out)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     real dz = vec_component(r->dir, kz);
@@ -308,12 +355,25 @@ static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
         px[i] = vec_component(a, kx) - sx * pz[i];
         py[i] = vec_component(a, ky) - sy * pz[i];
     }
-    real e[3];
-    for (int i = 0; i < 3; i++) {
+    /* e[i] = e(P, Q) for P, Q the corners after i: written out, the
+     * hottest lines of the tracer. */
+    real e[3] = {px[2] * py[1] - py[2] * px[1], px[0] * py[2] - py[0] * px[2], px[1] * py[0] - py[1] * px[0]};
+    int inside = e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0, outside = e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0;
+    /* A nonzero rounded edge function has its exact sign: only zeros need
+     * the remainders and the tie rule. */
+    if (inside && outside)
+        return 0;
+    for (int i = 0; i < 3 && (e[0] == 0.0 || e[1] == 0.0 || e[2] == 0.0); i++) {
         int p = (i + 1) % 3, q = (i + 2) % 3;
-        e[i] = px[q] * py[p] - py[q] * px[p];
+        if (e[i] != 0.0)
+            continue;
+        int sign = remainder_sign(px[q], py[p], py[q], px[p]);
+        if (sign == 0 && !(inclusive >> i & 1))
+            sign = tie_sign(px[p], py[p], px[q], py[q]);
+        inside |= sign > 0;
+        outside |= sign < 0;
     }
-    if ((e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0) && (e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0))
+    if (inside == outside)
         return 0;
     real det = e[0] + e[1] + e[2];
     if (det == 0.0)
@@ -321,17 +381,19 @@ static int triangle_solve(const vec3 v[3], const ray *r, tri_bary *out)
     /* t = the barycentric mean of the vertices' z distances, over dz.  The
      * paper's sum of e_i pz_i before dividing by det is a product of three
      * coordinates: it overflows for a triangle at 2^342 (and underflows at
-     * 2^-342) where the weights b_i = e_i / det, free of scale, do not. */
+     * 2^-342) where the weights b_i = e_i / det, free of scale, do not.
+     * An edge decided by its remainders or by the tie rule has e_i = 0,
+     * and so weight 0. */
     for (int i = 0; i < 3; i++)
         out->b[i] = e[i] / det;
     out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;
     return 1;
 }
 
-static int triangle_hits(const vec3 v[3], const vec3 *normals, const ray *r, hit *out)
+static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, const ray *r, hit *out)
 {
     tri_bary s;
-    if (!triangle_solve(v, r, &s) || !in_interval(r, s.t))
+    if (!triangle_solve(v, inclusive, r, &s) || !in_interval(r, s.t))
         return 0;
     /* The barycentric point lies in the triangle's plane to rounding of the
      * vertices, which o + t d (error relative to the origin) does not. */
@@ -340,6 +402,8 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, const ray *r, hit
     p = vec_madd(p, v[2], s.b[2]);
     vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
     hit_set(out, s.t, p, n, r->dir);
+    out->b1 = s.b[1];
+    out->b2 = s.b[2];
     if (normals) {
         vec3 sn = vec_scale(normals[0], s.b[0]);
         sn = vec_madd(sn, normals[1], s.b[1]);
@@ -351,6 +415,62 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, const ray *r, hit
     return 1;
 }
 
+/* Triangle k of a mesh: its corners, and its vertex normals when it has
+ * them (returns the normals pointer to pass on, or NULL). */
+static const vec3 *mesh_corners(const scene_trimesh *m, int k, vec3 v[3], vec3 n[3])
+{
+    const int *c = m->tri[k];
+    v[0] = m->positions[c[0]];
+    v[1] = m->positions[c[1]];
+    v[2] = m->positions[c[2]];
+    if (!m->tri_normal || m->tri_normal[k][0] < 0)
+        return NULL;
+    for (int i = 0; i < 3; i++)
+        n[i] = m->normals[m->tri_normal[k][i]];
+    return n;
+}
+
+/* The inclusive edges of triangle k (triangle_solve's numbering): its open
+ * edge from corner j to j + 1 is the one opposite corner j + 2. */
+static int open_edges(const scene_trimesh *m, int k)
+{
+    int open = m->open ? m->open[k] : 0;
+    return (open >> 1 & 1) | (open >> 2 & 1) << 1 | (open & 1) << 2;
+}
+
+static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *out)
+{
+    vec3 v[3], n[3];
+    const vec3 *normals = mesh_corners(m, k, v, n);
+    if (!triangle_hits(v, normals, open_edges(m, k), r, out))
+        return 0;
+    out->part = k;
+    return 1;
+}
+
+/* The nearest crossings of a whole mesh by testing every triangle: for
+ * callers without a BVH (tests, one-off queries).  Ties go to the lower
+ * triangle index.  Writes up to max in increasing t. */
+static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max)
+{
+    int found = 0;
+    for (int k = 0; k < m->tri_count; k++) {
+        hit h;
+        if (!mesh_triangle_hits(m, k, r, &h))
+            continue;
+        int at = found;
+        while (at > 0 && h.t < out[at - 1].t)
+            at--;
+        if (at >= max)
+            continue;
+        for (int j = found < max ? found : max - 1; j > at; j--)
+            out[j] = out[j - 1];
+        out[at] = h;
+        found += found < max;
+    }
+    return found;
+}
+
 static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
     switch (p->kind) {
@@ -359,8 +479,7 @@ static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
     case PRIM_PLANE:
         return plane_hits(p->u.plane.point, p->u.plane.normal, r, out);
     case PRIM_TRIANGLE:
-        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL,
-                             r, out);
+        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, out);
     case PRIM_DISK:
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
@@ -374,6 +493,8 @@ static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
     case PRIM_TORUS:
         return isect_torus_hits(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor, r, out,
                                 max);
+    case PRIM_MESH: /* prim_hits: a mesh has no local frame */
+        break;
     }
     return 0;
 }
@@ -387,6 +508,8 @@ static int local_hits(const scene_prim *p, const ray *r, hit *out, int max)
  */
 static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max)
 {
+    if (p->kind == PRIM_MESH)
+        return mesh_hits(&p->u.mesh, r, out, max);
     if (!p->has_xform)
         return local_hits(p, r, out, max);
     ray local = *r;
@@ -414,6 +537,33 @@ int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSING
     return prim_hits(p, r, out, ISECT_MAX_CROSSINGS);
 }
 
+int isect_part_count(const scene_prim *p)
+{
+    return p->kind == PRIM_MESH ? p->u.mesh.tri_count : 1;
+}
+
+static int part_hits(const scene_prim *p, int part, const ray *r, hit *out, int max)
+{
+    if (p->kind == PRIM_MESH)
+        return mesh_triangle_hits(&p->u.mesh, part, r, out);
+    if (!p->has_xform)
+        return local_hits(p, r, out, max);
+    return prim_hits(p, r, out, max);
+}
+
+int isect_part(const scene_prim *p, int part, ray *r, hit *h)
+{
+    if (!part_hits(p, part, r, h, 1))
+        return 0;
+    r->tmax = h->t;
+    return 1;
+}
+
+int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS])
+{
+    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS);
+}
+
 static int nearest(int found, ray *r, const hit *h)
 {
     if (found)
@@ -433,7 +583,7 @@ int isect_plane(vec3 point, vec3 normal, ray *r, hit *h)
 
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h)
 {
-    return nearest(triangle_hits(p, normals, r, h), r, h);
+    return nearest(triangle_hits(p, normals, 7, r, h), r, h);
 }
 
 int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)
@@ -507,6 +657,14 @@ static int local_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
         c = p->u.torus.center;
         isect_torus_extent(p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &e);
         break;
+    case PRIM_MESH:
+        *lo = vec_splat(INFINITY);
+        *hi = vec_splat(-INFINITY);
+        for (int i = 0; i < p->u.mesh.position_count; i++) {
+            *lo = vec_min(*lo, p->u.mesh.positions[i]);
+            *hi = vec_max(*hi, p->u.mesh.positions[i]);
+        }
+        return p->u.mesh.position_count > 0;
     default:
         return 0;
     }
@@ -538,6 +696,22 @@ int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
     return 1;
 }
 
+int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
+{
+    if (p->kind != PRIM_MESH)
+        return isect_prim_bounds(p, lo, hi);
+    vec3 v[3], n[3];
+    mesh_corners(&p->u.mesh, part, v, n);
+    *lo = vec_min(v[0], vec_min(v[1], v[2]));
+    *hi = vec_max(v[0], vec_max(v[1], v[2]));
+    return vec_is_finite(*lo) && vec_is_finite(*hi);
+}
+
+static real triangle_magnitude(const vec3 v[3])
+{
+    return fmax(max_abs(v[0]), fmax(max_abs(v[1]), max_abs(v[2])));
+}
+
 static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
@@ -546,8 +720,7 @@ static real local_magnitude(const scene_prim *p)
     case PRIM_PLANE:
         return max_abs(p->u.plane.point);
     case PRIM_TRIANGLE:
-        return fmax(max_abs(p->u.triangle.p[0]),
-                    fmax(max_abs(p->u.triangle.p[1]), max_abs(p->u.triangle.p[2])));
+        return triangle_magnitude(p->u.triangle.p);
     case PRIM_DISK:
         return max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
@@ -559,6 +732,12 @@ static real local_magnitude(const scene_prim *p)
                fmax(p->u.cone.radius[0], p->u.cone.radius[1]);
     case PRIM_TORUS:
         return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
+    case PRIM_MESH: {
+        real m = 0.0;
+        for (int i = 0; i < p->u.mesh.position_count; i++)
+            m = fmax(m, max_abs(p->u.mesh.positions[i]));
+        return m;
+    }
     }
     return 0.0;
 }
@@ -577,6 +756,53 @@ real isect_prim_magnitude(const scene_prim *p)
         shift = fmax(shift, fabs(row[3]));
     }
     return norm * m + shift;
+}
+
+real isect_part_magnitude(const scene_prim *p, int part)
+{
+    vec3 v[3], n[3];
+    if (p->kind != PRIM_MESH)
+        return isect_prim_magnitude(p);
+    mesh_corners(&p->u.mesh, part, v, n);
+    return triangle_magnitude(v);
+}
+
+/*
+ * The shadow terminator (spec/shading.md, [SHADE-TERMINATOR-1]): Hanika,
+ * "Hacking the Shadow Terminator", Ray Tracing Gems II, ch. 4, 2021.  A
+ * smooth triangle's vertex normals describe a curved surface its flat
+ * facet lies below; where a light is above the shading normal's horizon but
+ * below the facet's plane, a shadow ray from the facet runs into the
+ * neighbouring facets.  The shadow ray starts instead from the point lifted
+ * toward that curved surface: for each corner i, the hit point p is
+ * projected onto the plane through v_i normal to n_i when it lies below
+ * it, and the three projections are averaged with the barycentric weights:
+ *   p' = p - sum_i b_i min(0, (p - v_i) . n_i) n_i.
+ * (Written as a correction of p, not as the mean of the projected points,
+ * so p' keeps p's precision where the correction is 0: on flat parts and
+ * at every vertex.)  Flat triangles and other shapes return p.
+ */
+vec3 isect_shadow_point(const scene_prim *p, const hit *h)
+{
+    vec3 v[3], n[3];
+    const vec3 *normals = NULL;
+    if (p->kind == PRIM_MESH) {
+        normals = mesh_corners(&p->u.mesh, h->part, v, n);
+    } else if (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals) {
+        for (int i = 0; i < 3; i++)
+            v[i] = p->u.triangle.p[i];
+        normals = p->u.triangle.n;
+    }
+    if (!normals)
+        return h->point;
+    real b[3] = {1.0 - h->b1 - h->b2, h->b1, h->b2};
+    vec3 q = h->point;
+    for (int i = 0; i < 3; i++) {
+        real below = vec_dot(vec_sub(h->point, v[i]), normals[i]);
+        if (below < 0.0)
+            q = vec_madd(q, normals[i], -b[i] * below);
+    }
+    return q;
 }
 
 /* How far a secondary ray is pushed off a surface: SPAWN_REL of the
@@ -640,38 +866,83 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target)
     return spawn_to(point, geometric_normal, target, 0.0);
 }
 
-/* A ray that goes into an axis-aligned box starts strictly inside it, by
- * the offset, on every axis.  A hit next to an edge has its other
- * coordinates on, or an ulp beyond, the adjacent face; a mirror ray from
- * there that heads out through that face meets it at t <= 0 and leaves a
- * closed mirror box (spec/numerics.md, "Box edges").  Boxes thinner than
- * twice the offset are left alone. */
-static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
+/*
+ * A ray that goes into a box starts strictly inside it, by the offset, on
+ * every axis.  A hit next to an edge has its other coordinates on, or an
+ * ulp beyond, the adjacent face; a mirror ray from there that heads out
+ * through that face meets it at t <= 0 and leaves a closed mirror box
+ * (spec/numerics.md, "Box edges").  A turned box (local frame) is clamped
+ * in its own frame, by the offset measured there: the world distance to
+ * the face of local axis k is the local one times |row k of to_local|^-1,
+ * so a local margin of offset |row k| is offset in the world, far more than
+ * the rounding of the map back.  Boxes thinner than twice the margin are
+ * left alone along that axis.
+ */
+static vec3 clamp_inside(vec3 lo, vec3 hi, vec3 origin, vec3 margin)
 {
-    vec3 lo = p->u.box.lo, hi = p->u.box.hi;
     for (int k = 0; k < 3; k++) {
-        real o = vec_component(origin, k), a = vec_component(lo, k) + offset, b = vec_component(hi, k) - offset;
+        real o = vec_component(origin, k), m = vec_component(margin, k);
+        real a = vec_component(lo, k) + m, b = vec_component(hi, k) - m;
         if (a < b)
             origin = vec_with(origin, k, o < a ? a : o > b ? b : o);
     }
     return origin;
 }
 
+static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
+{
+    if (!p->has_xform)
+        return clamp_inside(p->u.box.lo, p->u.box.hi, origin, vec_splat(offset));
+    const double(*m)[4] = p->to_local.m;
+    vec3 margin = vec_splat(0.0);
+    for (int k = 0; k < 3; k++)
+        margin = vec_with(margin, k, offset * vec_length(vec_make(m[k][0], m[k][1], m[k][2])));
+    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, xform_point(&p->to_local, origin), margin);
+    return xform_point(&p->to_world, local);
+}
+
+/*
+ * The same for a closed mesh, which has no axes to clamp on: the point is
+ * first moved along the triangle toward its centroid by the offset (at most
+ * half way).  A hit next to an edge may lie an ulp beyond the plane of the
+ * triangle across that edge; pushed off along its own normal only, a ray
+ * from there into the solid that heads through the other triangle meets it
+ * at t <= 0 and leaves (spec/numerics.md, "Mesh edges").  Moved away from
+ * the edge by the offset it lies inside the other triangle's plane by about
+ * the offset times the sine of the angle between the faces.  Done for rays
+ * to either side: which side is inside, a closed mesh's winding does not
+ * say (trace.c).
+ */
+static vec3 off_the_edges(const scene_prim *p, const hit *h, real offset)
+{
+    vec3 v[3], n[3];
+    mesh_corners(&p->u.mesh, h->part, v, n);
+    vec3 c = vec_scale(vec_add(v[0], vec_add(v[1], v[2])), 1.0 / 3.0), to = vec_sub(c, h->point);
+    real d = vec_length(to);
+    return d > 0.0 ? vec_madd(h->point, to, fmin(offset, d / 2) / d) : h->point;
+}
+
 ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 {
-    real m = isect_prim_magnitude(p);
-    ray r = spawn(h->point, h->normal, dir, m, 0);
-    if (p->kind == PRIM_BOX && !p->has_xform && vec_dot(dir, h->normal) < 0)
+    real m = isect_part_magnitude(p, h->part);
+    vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
+    ray r = spawn(from, h->normal, dir, m, 0);
+    if (p->kind == PRIM_BOX && vec_dot(dir, h->normal) < 0)
         r.origin = keep_inside(p, r.origin, spawn_offset(h->point, m));
     return r;
 }
 
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
-    return spawn(h->point, h->normal, dir, isect_prim_magnitude(p), 1);
+    return spawn(h->point, h->normal, dir, isect_part_magnitude(p, h->part), 1);
+}
+
+int isect_smooth(const scene_prim *p)
+{
+    return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
 }
 
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
-    return spawn_to(h->point, h->normal, target, isect_prim_magnitude(p));
+    return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
 }

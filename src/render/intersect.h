@@ -11,7 +11,9 @@
  *     declared side for plane, disk and triangle),
  *     h->shading_normal the unit interpolated vertex normal of a triangle
  *     with normals, else a copy of h->normal; h->entering = dir . normal < 0;
- *   - h->prim is set to -1: the caller that knows the index (the BVH) sets it.
+ *   - h->prim is set to -1: the caller that knows the index (the BVH) sets
+ *     it; h->part is the triangle of a mesh, else 0; h->b1, h->b2 are a
+ *     triangle's barycentric weights of corners 1 and 2 (else 0).
  * r->dir need not be unit length (rays taken into a local frame are not); a
  * zero direction never hits.  Sheets (plane, disk, triangle, and an open
  * cylinder or cone) are two-sided.
@@ -28,8 +30,13 @@
  *   - box: faces are closed (a ray along a face plane hits, as does one
  *     through an edge); when entry and exit coincide (an edge or corner
  *     touched, or a flat box) it is one hit with the entry face's normal;
- *   - triangle: watertight (Woop, Benthin, Wald 2013): a ray through a
- *     shared edge or vertex of a mesh hits at least one of its triangles;
+ *   - triangle: watertight (Woop, Benthin, Wald 2013) with exact edge
+ *     signs and one tie rule: a ray through a shared edge or vertex of a
+ *     mesh hits exactly one of the triangles there where the surface does
+ *     not fold back around the ray, and an even number (0 or 2) where it
+ *     does (a silhouette): a closed mesh is crossed once per surface; an
+ *     edge of one triangle only (a lone triangle, an open mesh's rim) is
+ *     part of it, so a ray through it hits (tests/check_watertight.c);
  *   - closed cylinder and cone: like the box, one interval per ray (the
  *     rim between side and cap leaves no gap); an open one has no caps
  *     and keeps the side's crossings between the end planes (closed);
@@ -67,12 +74,14 @@ int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h);
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
  * ray into the local frame when p->has_xform (t is preserved; point and
- * normals are mapped back to the world). */
+ * normals are mapped back to the world).  A mesh is searched triangle by
+ * triangle (the BVH does better: it holds the parts below). */
 int isect_prim(const scene_prim *p, ray *r, hit *h);
 
-/* Every crossing of the surface in (r->tmin, r->tmax), in increasing t:
- * 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
- * torus: two of each).  r is not changed; each out[i].prim is -1. */
+/* The first crossings of the surface in (r->tmin, r->tmax), in increasing
+ * t: 0 to ISECT_MAX_CROSSINGS (a solid crossed through: entry and exit; a
+ * torus: two of each; a mesh: its first four).  r is not changed; each
+ * out[i].prim is -1. */
 int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
 /* World-space axis-aligned bounds of a bounded primitive (a transformed one:
@@ -84,6 +93,28 @@ int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi);
  * vertices, centre plus radius, plane point...): the hit point's rounding
  * error is relative to this, not to the point itself. */
 real isect_prim_magnitude(const scene_prim *p);
+
+/*
+ * Parts: what the BVH holds.  A mesh's parts are its triangles (part k is
+ * geom.tri[k]); every other primitive is one part, 0.  The functions are
+ * those above for one part; a hit's h->part says which.
+ */
+int isect_part_count(const scene_prim *p);
+int isect_part(const scene_prim *p, int part, ray *r, hit *h);
+int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
+int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
+real isect_part_magnitude(const scene_prim *p, int part);
+
+/* Where shadow rays from a hit should start: for a triangle with vertex
+ * normals the hit point lifted toward the curved surface those normals
+ * describe (Hanika's shadow terminator offset, spec/shading.md
+ * [SHADE-TERMINATOR-1]); for anything else the hit point itself.  The
+ * tracer passes a copy of the hit with this point to ray_spawn_hit_to and
+ * ray_spawn_hit_shadow. */
+vec3 isect_shadow_point(const scene_prim *p, const hit *h);
+/* Whether p has vertex normals (a smooth triangle or mesh), so that the
+ * lifted point can differ from the hit point. */
+int isect_smooth(const scene_prim *p);
 
 /*
  * Secondary rays (Wachter and Binder, "A Fast and Robust Method for Avoiding
@@ -112,13 +143,16 @@ ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir);
  * empty interval: nothing can stand between. */
 ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
 
-/* The same for a hit on p, with m = max(|h->point|, isect_prim_magnitude(p)):
- * what the tracer should use (a big triangle or sphere hit near the world
- * origin has an error relative to its vertices or centre, not to the point). */
+/* The same for a hit on p, with m = max(|h->point|, isect_part_magnitude(p,
+ * h->part)): what the tracer should use (a big triangle or sphere hit near
+ * the world origin has an error relative to its vertices or centre, not to
+ * the point).  A ray into a box starts inside it on every axis (see
+ * intersect.c, keep_inside). */
 ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir);
+/* Shadow rays: from h->point toward a target point, or toward a distant
+ * light (the shadow rays' tmin, the offset over |dir|, and tmax =
+ * HUGE_VAL). */
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target);
-/* A shadow ray toward a distant light: as ray_spawn_hit, with the shadow
- * rays' tmin (the offset over |dir|) and tmax = HUGE_VAL. */
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir);
 
 #endif

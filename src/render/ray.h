@@ -22,7 +22,9 @@ typedef struct hit {
                           triangle: (p1-p0)x(p2-p0)) */
     vec3 shading_normal; /* interpolated vertex normal for meshes, else = normal */
     int prim;          /* index into scene.prims */
+    int part;          /* which part of the primitive: a mesh's triangle, else 0 */
     int entering;      /* 1 when dir . normal < 0 (the ray meets the front side) */
+    real b1, b2;       /* triangles: the barycentric weights of corners 1 and 2 */
 } hit;
 
 static inline vec3 ray_at(const ray *r, real t) { return vec_madd(r->origin, r->dir, t); }

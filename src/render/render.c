@@ -56,6 +56,8 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->bvh_nodes = t->accel.node_count;
     stats->bvh_leaves = t->accel.leaf_count;
     stats->bvh_depth = t->accel.depth;
+    stats->bvh_bytes = (long)(t->accel.node_count * sizeof(bvh_node) + t->accel.item_count * sizeof(bvh_ref) +
+                              t->accel.unbounded_count * sizeof(bvh_ref));
     stats->shadows = t->shadows;
     stats->specular = t->specular;
     stats->reflection = t->reflection;
@@ -79,6 +81,8 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
     if (o && o->no_shortcuts)
         tracer_no_shortcuts(&r->tracer);
+    if (o && o->facet_shadows)
+        r->tracer.terminator_offset = 0;
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&r->tracer, stats);

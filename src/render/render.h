@@ -17,6 +17,11 @@ typedef struct render_opts {
     int light_samples;    /* > 0: samples of every distributed light; 0: each light's own */
     long max_tree_rays;   /* rays per camera ray before the render is refused; 0: no limit */
     int no_shortcuts;     /* 1: every shortcut off (tracer_no_shortcuts); same image, more work */
+    /* 1: shadow rays of smooth triangles start on the facet, the seed's
+     * way and POV-Ray's, not at Hanika's lifted point (spec/shading.md
+     * [SHADE-TERMINATOR-1]); only to compare with such a renderer
+     * (make difftest, spec/crosscheck.md [XCHK-MAP-MESH-3]). */
+    int facet_shadows;
     /* Called after every row of a region (rows_total: the region's); a
      * non-zero return stops the render (SIGINT). */
     int (*progress)(void *ctx, int rows_done, int rows_total);
@@ -26,6 +31,7 @@ typedef struct render_opts {
 typedef struct render_stats {
     trace_stats trace;
     int bvh_nodes, bvh_leaves, bvh_depth;
+    long bvh_bytes;      /* the tree's nodes, part references and plane list */
     int shadows, specular, reflection, refraction; /* passes that ran (1) or were left out (0) */
     int no_shortcuts;     /* the render ran with every shortcut off */
     int width, height, samples, max_depth;

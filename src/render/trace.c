@@ -27,6 +27,7 @@ typedef struct surface {
     const scene_material *m;
     const scene_prim *prim;
     const hit *h;
+    const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
 } surface;
@@ -36,8 +37,8 @@ int trace_solid_id(const scene_model *s, int prim)
     const scene_prim *p = &s->prims[prim];
     if (scene_prim_is_solid(p))
         return prim;
-    if (p->kind == PRIM_TRIANGLE && p->mesh >= 0)
-        return s->prim_count + p->mesh;
+    if (p->kind == PRIM_MESH && p->u.mesh.closed)
+        return prim;
     return -1;
 }
 
@@ -50,6 +51,7 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     t->specular = s->features.specular;
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
+    t->terminator_offset = 1;
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
         tracer_free(t);
@@ -101,9 +103,11 @@ static uint64_t bits_of(real x)
 
 /* Which piece of a primitive made of pieces a hit is on: a box's face (its
  * normal, constant over it), a cylinder's or cone's cap or side (a cap's
- * normal is the axis); 0 for the others. */
+ * normal is the axis), a mesh's triangle; 0 for the others. */
 static uint64_t piece_of(const scene_prim *p, const hit *h)
 {
+    if (p->kind == PRIM_MESH)
+        return (uint64_t)h->part;
     if (p->kind == PRIM_BOX)
         return bits_of(h->normal.x) ^ bits_of(h->normal.y) << 1 ^ bits_of(h->normal.z) << 2;
     if (p->kind != PRIM_CYLINDER && p->kind != PRIM_CONE)
@@ -170,8 +174,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         return;
     rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->h, l)
-                                             : ray_spawn_hit_to(s->prim, s->h, pos);
+        ray r = light->kind == LIGHT_DISTANT ? ray_spawn_hit_shadow(s->prim, s->shadow_from, l)
+                                             : ray_spawn_hit_to(s->prim, s->shadow_from, pos);
         real through = shadow_transmission(t, &r, st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
@@ -296,7 +300,7 @@ static real max_abs_diff(vec3 a, vec3 b)
 static int gather_crossing(void *ctx, const hit *h)
 {
     interface *f = ctx;
-    if (h->prim == f->self->prim && h->entering == f->self->entering)
+    if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
         return 0;
     if (f->count < INTERFACE_MAX && max_abs_diff(h->point, f->self->point) <= f->reach)
         f->h[f->count++] = *h;
@@ -307,8 +311,8 @@ static int gather_crossing(void *ctx, const hit *h)
  * twice the spawn offset, the distance a spawned ray jumps. */
 static void interface_gather(const tracer *t, const surface *s, const ray *in, interface *f, trace_stats *st)
 {
-    real m = fmax(isect_prim_magnitude(s->prim), fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y),
-                                                                               fabs(s->h->point.z))));
+    real m = fmax(isect_part_magnitude(s->prim, s->h->part),
+                  fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y), fabs(s->h->point.z))));
     ray r = *in;
     f->self = s->h;
     f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
@@ -322,19 +326,42 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
     f->spawn_hit = s->h;
     for (int k = 1; k < f->count; k++) {
         const scene_prim *p = &t->scene->prims[f->h[k].prim];
-        if (isect_prim_magnitude(p) > isect_prim_magnitude(f->spawn_prim)) {
+        if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
             f->spawn_prim = p;
             f->spawn_hit = &f->h[k];
         }
     }
 }
 
+/* What crossing k of the interface does to the medium stack: 1 enters its
+ * solid, -1 leaves it, 0 nothing (a sheet).  A sphere or box says which by
+ * its outward normal.  A closed mesh is toggled by an odd number of its
+ * crossings here (on its first one; the others do nothing): entered when it
+ * was not on the stack before, left when it was.  Its winding is not
+ * trusted (a file may wind it inward, or inconsistently). */
+static int crossing_effect(const scene_model *sc, const interface *f, const medium_stack *before, int k)
+{
+    int solid = trace_solid_id(sc, f->h[k].prim), odd = 0;
+    if (solid < 0)
+        return 0;
+    if (sc->prims[f->h[k].prim].kind != PRIM_MESH)
+        return f->h[k].entering ? 1 : -1;
+    for (int j = 0; j < f->count; j++) {
+        if (trace_solid_id(sc, f->h[j].prim) != solid)
+            continue;
+        if (j < k)
+            return 0;
+        odd ^= 1;
+    }
+    return !odd ? 0 : media_find(before, solid) >= 0 ? -1 : 1;
+}
+
 /* Crossing the interface: every solid left comes off the stack, then every
- * solid entered goes on (once).  Returns the number of solids crossed and
+ * solid entered goes on (once).  Returns the number of solid crossings and
  * sets *through to the product of the t of the surfaces crossed besides the
  * hit itself (whose t the caller applies). */
-static int interface_cross(const tracer *t, const interface *f, medium_stack *next, real *through,
-                           trace_stats *st)
+static int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
+                           real *through, trace_stats *st)
 {
     const scene_model *sc = t->scene;
     int solids = 0;
@@ -342,14 +369,13 @@ static int interface_cross(const tracer *t, const interface *f, medium_stack *ne
     for (int k = 1; k < f->count; k++)
         *through = shade_shadow_transmission(*through, sc->materials[sc->prims[f->h[k].prim].material].t);
     for (int k = 0; k < f->count; k++) {
-        int solid = trace_solid_id(sc, f->h[k].prim);
-        solids += solid >= 0;
-        if (solid >= 0 && !f->h[k].entering)
-            media_remove(next, solid);
+        solids += trace_solid_id(sc, f->h[k].prim) >= 0;
+        if (crossing_effect(sc, f, before, k) < 0)
+            media_remove(next, trace_solid_id(sc, f->h[k].prim));
     }
     for (int k = 0; k < f->count; k++) {
         int solid = trace_solid_id(sc, f->h[k].prim);
-        if (solid >= 0 && f->h[k].entering && media_find(next, solid) < 0)
+        if (crossing_effect(sc, f, before, k) > 0 && media_find(next, solid) < 0)
             media_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
     }
     return solids;
@@ -369,7 +395,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     medium_stack next = *media;
     real through;
     interface_gather(t, s, in, &f, st);
-    int solids = interface_cross(t, &f, &next, &through, st);
+    int solids = interface_cross(t, &f, media, &next, &through, st);
     if (through == 0 && !t->no_shortcuts)
         return vec_splat(0);
     ray r;
@@ -377,7 +403,8 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     int refracts = 1;
     if (solids > 0) {
         int solid = trace_solid_id(t->scene, s->h->prim);
-        real n1 = solid >= 0 && !s->h->entering && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
+        int left = solid >= 0 && s->prim->kind != PRIM_MESH && !s->h->entering;
+        real n1 = left && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
         refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
@@ -402,9 +429,15 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
                  trace_stats *st)
 {
     surface s;
+    hit lifted;
     s.prim = &t->scene->prims[h->prim];
     s.m = &t->scene->materials[s.prim->material];
-    s.h = h;
+    s.h = s.shadow_from = h;
+    if (t->terminator_offset && t->shadows && isect_smooth(s.prim)) {
+        lifted = *h;
+        lifted.point = isect_shadow_point(s.prim, h);
+        s.shadow_from = &lifted;
+    }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
     direct_sum sum = direct_light(t, &s, key, st);

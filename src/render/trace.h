@@ -63,6 +63,10 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int terminator_offset;    /* shadow rays of smooth triangles start at the
+                                 lifted point (isect_shadow_point): 1 by
+                                 default; 0 only to measure the seed's way
+                                 (spec/shading.md [SHADE-TERMINATOR-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
 } tracer;
@@ -118,8 +122,10 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
  * when the tracer has no refraction pass. */
 void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
 
-/* Identity of the solid a primitive belongs to (a mesh is one solid), or -1
- * for a sheet (plane, disk, lone triangle), which has no inside. */
+/* Identity of the solid a primitive is (sphere, box, closed cylinder or
+ * cone, torus, closed mesh: its index), or -1 for a sheet (plane, disk,
+ * lone triangle, open cylinder or cone, a mesh that is not closed), which
+ * has no inside. */
 int trace_solid_id(const scene_model *s, int prim);
 
 #endif

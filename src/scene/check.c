@@ -303,6 +303,7 @@ static int in_range(const scene_prim *prim)
     case PRIM_CYLINDER:
     case PRIM_CONE:
     case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
+    case PRIM_MESH: break; /* checked triangle by triangle (lower_mesh.c) */
     }
     return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
 }
@@ -310,7 +311,7 @@ static int in_range(const scene_prim *prim)
 /* A triangle has no area when its edges are parallel to rounding error:
  * the sine of the angle between them is at most 4 epsilon (computed on the
  * edges' directions, so the size of the triangle does not matter). */
-static int degenerate(vec3 a, vec3 b, vec3 c)
+int check_degenerate(vec3 a, vec3 b, vec3 c)
 {
     vec3 e1, e2;
     if (!loader_unit(vec_sub(b, a), &e1) || !loader_unit(vec_sub(c, a), &e2))
@@ -327,7 +328,7 @@ int check_placed(loader *L, const check_at *at, const scene_prim *prim)
         return 0;
     }
     const vec3 *q = prim->u.triangle.p;
-    if (prim->kind == PRIM_TRIANGLE && degenerate(q[0], q[1], q[2])) {
+    if (prim->kind == PRIM_TRIANGLE && check_degenerate(q[0], q[1], q[2])) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_VERTICES),
                     "degenerate triangle: its corners are on one line (no area)");
         return 0;

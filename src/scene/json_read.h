@@ -69,7 +69,7 @@ int jread_value_vec3(jreader *r, json_t *val, vec3 *out);
 int jread_value_index(jreader *r, json_t *val, int count, const char *what, int *out);
 
 /* load_json_mesh.c: the mesh object p (its material already in proto)
- * as consecutive triangle primitives. */
+ * as the scene's mesh store and one PRIM_MESH primitive. */
 int load_json_mesh(jreader *r, json_t *p, scene_prim *proto);
 
 #endif

@@ -371,6 +371,7 @@ static int prim_shape(jreader *r, json_t *p, scene_prim *prim)
                jread_number(r, p, "major", &prim->u.torus.major) && jread_number(r, p, "minor", &prim->u.torus.minor) &&
                check_unit(r->L, &at, KW_AXIS, "axis", prim->u.torus.axis) &&
                check_torus(r->L, &at, prim->u.torus.major, prim->u.torus.minor);
+    case PRIM_MESH: break; /* load_json_mesh.c */
     }
     return 0;
 }
@@ -385,8 +386,8 @@ static int use_material(jreader *r, json_t *p, int *material)
 
 static int read_prim(jreader *r, json_t *p, src_span where)
 {
-    static const char *const kinds[] = {"sphere", "plane", "triangle", "disk", "box", "cylinder", "cone", "torus",
-                                        "mesh"};
+    static const char *const kinds[PRIM_KINDS] = {"sphere", "plane", "triangle", "disk", "box",
+                                                  "cylinder", "cone", "torus", "mesh"};
     static const char *const keys[PRIM_KINDS][8] = {
         {"kind", "material", "transform", "center", "radius", NULL},
         {"kind", "material", "transform", "point", "normal", NULL},
@@ -402,9 +403,9 @@ static int read_prim(jreader *r, json_t *p, src_span where)
     memset(&prim, 0, sizeof prim);
     prim.mesh = -1;
     prim.where = where;
-    if (!jread_is_object(r, p) || !jread_enum(r, p, "kind", kinds, PRIM_KINDS + 1, &kind))
+    if (!jread_is_object(r, p) || !jread_enum(r, p, "kind", kinds, PRIM_KINDS, &kind))
         return 0;
-    if (kind == PRIM_KINDS)
+    if (kind == PRIM_MESH)
         return use_material(r, p, &prim.material) && load_json_mesh(r, p, &prim);
     prim.kind = (scene_prim_kind)kind;
     int ok = jread_known(r, p, keys[kind]) && prim_shape(r, p, &prim) &&

@@ -1,39 +1,39 @@
 /*
  * load_json_mesh.c - a JSON scene's meshes (spec/json.md, "Meshes"): inline
- * arrays of vertices, normals and triangles, or an OBJ file (as `refray
- * export --mesh-files` writes them).  Either way the triangles are in world
- * coordinates and every number is stored as read: unlike a .scene's mesh,
- * no transform is applied and no normal is normalised (one that is not
- * unit is refused).  Built only with JSON=1.
+ * arrays of vertices, normals and triangles, or an OBJ or PLY file (as
+ * `refray export --mesh-files` writes them).  Either way the mesh becomes
+ * the same store and PRIM_MESH primitive as a .scene's (lower_mesh.c), with
+ * the triangles in world coordinates and every number stored as read:
+ * unlike a .scene's mesh, no transform is applied and no normal is
+ * normalised (one that a triangle uses and that is not unit is refused).
+ * Built only with JSON=1.
  */
 #include <limits.h>
 #include <string.h>
-#include "lang/obj.h"
 #include "scene/json_read.h"
 
-/* An array of 3-vectors (normals: each unit) into *out, *cap entries
- * from the load's allocator. */
-static int read_points(jreader *r, json_t *p, const char *key, int normals, vec3 **out, int *count, int *cap)
+/* An array of 3-vectors into pm (normals: added as read, checked later). */
+static int read_points(jreader *r, json_t *p, const char *key, int normals, polymesh *pm)
 {
     json_t *list, *item;
     size_t i;
     if (!jread_array(r, p, key, &list))
         return 0;
-    size_t n = json_array_size(list) ? json_array_size(list) : 1;
-    if (n > INT_MAX || !(*out = mem_calloc(r->L->mem, n, sizeof **out))) {
+    if (json_array_size(list) > INT_MAX) {
         loader_oom(r->L);
         return 0;
     }
-    *cap = (int)n;
-    *count = (int)json_array_size(list);
     int ok = 1;
     jread_push_key(r, key);
     json_array_foreach(list, i, item) {
+        vec3 v;
         jread_push_index(r, i);
-        check_at at = jread_at(r);
-        ok = jread_value_vec3(r, item, &(*out)[i]) &&
-             (!normals || check_unit(r->L, &at, KW_NORMAL, "normal", (*out)[i]));
+        ok = jread_value_vec3(r, item, &v);
         jread_pop(r);
+        if (ok && (normals ? polymesh_add_normal(pm, v) : polymesh_add_position(pm, v)) != 1) {
+            loader_oom(r->L);
+            ok = 0;
+        }
         if (!ok)
             break;
     }
@@ -57,31 +57,57 @@ static int read_corners(jreader *r, json_t *corners, int count, const char *what
     return ok;
 }
 
-/* triangles[i] into t->v, triangle_normals[i] (when given and not null) into t->vn. */
-static int read_triangle(jreader *r, json_t *tris, json_t *tri_normals, size_t i, const obj_mesh *m, obj_triangle *t)
+/* [JSON-MESH-1] A normal that a triangle uses must be unit, as stored
+ * (reported at its entry of "normals"). */
+static int unit_normals(jreader *r, const polymesh *pm, const int vn[3])
 {
-    json_t *vn = tri_normals ? json_array_get(tri_normals, i) : NULL;
-    t->vn[0] = t->vn[1] = t->vn[2] = -1;
-    jread_push_key(r, "triangles");
-    jread_push_index(r, i);
-    int ok = read_corners(r, json_array_get(tris, i), m->position_count, "vertex", t->v);
-    jread_pop(r);
-    jread_pop(r);
-    if (!ok || !vn || json_is_null(vn))
-        return ok;
-    jread_push_key(r, "triangle_normals");
-    jread_push_index(r, i);
-    ok = read_corners(r, vn, m->normal_count, "normal", t->vn);
-    jread_pop(r);
+    int ok = 1;
+    jread_push_key(r, "normals");
+    for (int k = 0; k < 3 && ok; k++) {
+        jread_push_index(r, (size_t)vn[k]);
+        check_at at = jread_at(r);
+        ok = check_unit(r->L, &at, KW_NORMAL, "normal", pm->normals[vn[k]]);
+        jread_pop(r);
+    }
     jread_pop(r);
     return ok;
 }
 
-static int inline_mesh(jreader *r, json_t *p, obj_mesh *m)
+/* triangles[i] (and triangle_normals[i] when given and not null) into pm
+ * as one face; every face is placed at the "triangles" member (at). */
+static int read_triangle(jreader *r, json_t *tris, json_t *tri_normals, size_t i, size_t at, polymesh *pm)
+{
+    json_t *vn = tri_normals ? json_array_get(tri_normals, i) : NULL;
+    int v[3], n[3];
+    jread_push_key(r, "triangles");
+    jread_push_index(r, i);
+    int ok = read_corners(r, json_array_get(tris, i), pm->position_count, "vertex", v);
+    jread_pop(r);
+    jread_pop(r);
+    int smooth = vn && !json_is_null(vn);
+    if (ok && smooth) {
+        jread_push_key(r, "triangle_normals");
+        jread_push_index(r, i);
+        ok = read_corners(r, vn, pm->normal_count, "normal", n);
+        jread_pop(r);
+        jread_pop(r);
+        ok = ok && unit_normals(r, pm, n);
+    }
+    if (!ok)
+        return 0;
+    int added = polymesh_add_face(pm, v, smooth ? n : NULL, 3, at);
+    if (added == POLYMESH_NO_MEMORY)
+        loader_oom(r->L);
+    else if (added != 1)
+        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, "triangles"),
+                    "more than %ld triangles in one mesh (--max-mesh-triangles)", r->L->limits->max_mesh_triangles);
+    return added == 1;
+}
+
+static int inline_mesh(jreader *r, json_t *p, polymesh *pm)
 {
     json_t *tris, *tri_normals = json_object_get(p, "triangle_normals");
-    if (!read_points(r, p, "vertices", 0, &m->positions, &m->position_count, &m->position_cap) ||
-        !read_points(r, p, "normals", 1, &m->normals, &m->normal_count, &m->normal_cap) ||
+    if (!read_points(r, p, "vertices", 0, pm) || !read_points(r, p, "normals", 1, pm) ||
         !jread_array(r, p, "triangles", &tris))
         return 0;
     size_t n = json_array_size(tris);
@@ -97,88 +123,26 @@ static int inline_mesh(jreader *r, json_t *p, obj_mesh *m)
                     "expected an array with one entry per triangle (%zu)", n);
         return 0;
     }
-    m->triangles = mem_calloc(r->L->mem, n, sizeof *m->triangles);
-    if (!m->triangles) {
-        loader_oom(r->L);
-        return 0;
-    }
-    m->triangle_cap = m->triangle_count = (int)n;
-    for (size_t i = 0; i < n; i++) {
-        m->triangles[i].where = src_span_none();
-        if (!read_triangle(r, tris, json_is_array(tri_normals) ? tri_normals : NULL, i, m, &m->triangles[i]))
+    size_t at = jread_span(r, "triangles").begin;
+    for (size_t i = 0; i < n; i++)
+        if (!read_triangle(r, tris, json_is_array(tri_normals) ? tri_normals : NULL, i, at, pm))
             return 0;
-    }
     return 1;
 }
 
-static int file_mesh(jreader *r, json_t *p, obj_mesh *m)
+/* The normals the triangles of a mesh file use must be unit, as read: the
+ * message at the face's line. */
+static int file_normals_unit(jreader *r, int file, const polymesh *pm)
 {
-    const char *name;
-    int file;
-    if (!jread_string(r, p, "file", 0, &name) || !loader_read_obj(r->L, name, jread_span(r, "file"), &file))
-        return 0;
-    int parsed = obj_parse(&r->L->scene->sources, file, &r->L->diag, r->L->limits->max_mesh_triangles, m);
-    if (parsed < 0)
-        r->L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
-    return parsed > 0;
-}
-
-/* Triangle i of m as a primitive; an inline triangle reports at its entry
- * of "triangles", a file's at its `f` line. */
-static int emit_triangle(jreader *r, const obj_mesh *m, int i, const scene_prim *proto)
-{
-    const obj_triangle *t = &m->triangles[i];
-    scene_prim prim = *proto;
-    int from_file = t->where.file >= 0;
-    check_at at = check_at_fixed(&t->where);
-    if (from_file)
-        prim.where = t->where;
-    else {
-        jread_push_key(r, "triangles");
-        jread_push_index(r, (size_t)i);
-        at = jread_at(r);
-    }
-    prim.u.triangle.has_normals = t->vn[0] >= 0;
-    int ok = 1;
-    for (int k = 0; k < 3; k++) {
-        prim.u.triangle.p[k] = m->positions[t->v[k]];
-        if (prim.u.triangle.has_normals) {
-            prim.u.triangle.n[k] = m->normals[t->vn[k]];
-            ok = ok && (!from_file || check_unit(r->L, &at, KW_NORMAL, "normal", prim.u.triangle.n[k]));
+    for (int k = 0; pm->tri_normal && k < pm->triangle_count; k++)
+        for (int i = 0; i < 3; i++) {
+            int n = pm->tri_normal[k][i];
+            src_span span = {file, pm->tri_at[k], pm->tri_at[k] + 1};
+            check_at at = check_at_fixed(&span);
+            if (n >= 0 && !check_unit(r->L, &at, KW_NORMAL, "normal", pm->normals[n]))
+                return 0;
         }
-    }
-    ok = ok && check_placed(r->L, &at, &prim);
-    if (!from_file) {
-        jread_pop(r);
-        jread_pop(r);
-    }
-    scene_prim *slot = ok ? loader_add_prim(r->L, prim.where) : NULL;
-    if (slot)
-        *slot = prim;
-    return slot != NULL;
-}
-
-static int emit_mesh(jreader *r, json_t *p, const obj_mesh *m, scene_prim *proto)
-{
-    const char *source = NULL;
-    json_t *file = json_object_get(p, "file");
-    if (!jread_string(r, p, "source", 1, &source))
-        return 0;
-    scene_mesh *mesh = loader_add_mesh(r->L);
-    if (!mesh)
-        return 0;
-    const char *path = source ? source : json_is_string(file) ? json_string_value(file)
-                                                               : r->L->scene->sources.files[r->file]->path;
-    mesh->path = loader_strdup(r->L, path);
-    mesh->where = proto->where;
-    mesh->first_prim = r->L->scene->prim_count;
-    proto->kind = PRIM_TRIANGLE;
-    proto->mesh = r->L->scene->mesh_count - 1;
-    int ok = mesh->path != NULL;
-    for (int i = 0; ok && i < m->triangle_count && !diag_too_many(&r->L->diag); i++)
-        ok = emit_triangle(r, m, i, proto);
-    r->L->scene->meshes[proto->mesh].count = r->L->scene->prim_count - r->L->scene->meshes[proto->mesh].first_prim;
-    return ok;
+    return 1;
 }
 
 int load_json_mesh(jreader *r, json_t *p, scene_prim *proto)
@@ -186,12 +150,35 @@ int load_json_mesh(jreader *r, json_t *p, scene_prim *proto)
     static const char *const inline_keys[] = {"kind", "material", "source", "vertices", "normals", "triangles",
                                               "triangle_normals", NULL};
     static const char *const file_keys[] = {"kind", "material", "source", "file", NULL};
-    obj_mesh m;
-    memset(&m, 0, sizeof m);
-    m.mem = *r->L->mem;
-    int from_file = json_object_get(p, "file") != NULL;
-    int ok = jread_known(r, p, from_file ? file_keys : inline_keys) &&
-             (from_file ? file_mesh(r, p, &m) : inline_mesh(r, p, &m)) && emit_mesh(r, p, &m, proto);
-    obj_free(&m);
+    const char *source = NULL, *name = NULL;
+    int from_file = json_object_get(p, "file") != NULL, file = r->file;
+    src_span at = jread_span(r, NULL);
+    scene_source held, *hold = NULL;
+    polymesh pm;
+    polymesh_init(&pm, r->L->limits->max_mesh_triangles, r->L->mem);
+    int ok = jread_known(r, p, from_file ? file_keys : inline_keys) && jread_string(r, p, "source", 1, &source);
+    if (ok && from_file) {
+        at = jread_span(r, "file");
+        ok = jread_string(r, p, "file", 0, &name) && loader_read_mesh(r->L, name, at, &held, &file);
+        hold = ok ? &held : NULL;
+        ok = ok && lower_parse_mesh(r->L, file, &pm) && file_normals_unit(r, file, &pm);
+    } else if (ok) {
+        ok = inline_mesh(r, p, &pm);
+    }
+    /* The path the scene records: the .scene's mesh file when the export
+     * named it, else the file read, else the JSON document. */
+    ok = ok && lower_mesh(r->L, &pm, file, hold, at, proto, NULL, NULL);
+    if (ok && source) {
+        scene_mesh *m = &r->L->scene->meshes[r->L->scene->mesh_count - 1];
+        char *copy = loader_strdup(r->L, source);
+        ok = copy != NULL;
+        if (ok) {
+            mem_free_string(r->L->mem, m->path);
+            m->path = copy;
+        }
+    }
+    polymesh_free(&pm);
+    if (hold)
+        loader_release_mesh(r->L, file, hold);
     return ok;
 }

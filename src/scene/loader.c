@@ -56,8 +56,9 @@ static int grow(const mem *m, void **items, int *cap, int count, size_t size, lo
 scene_prim *loader_add_prim(loader *L, src_span where)
 {
     scene_model *s = L->scene;
-    if (s->prim_count >= L->limits->max_primitives) {
-        if (s->prim_count == L->limits->max_primitives)
+    long used = s->prim_count + L->mesh_triangles;
+    if (used >= L->limits->max_primitives) {
+        if (used == L->limits->max_primitives)
             diag_report(&L->diag, DIAG_ERROR, where, "more than %ld primitives (--max-primitives)",
                         L->limits->max_primitives);
         s->prim_count++;
@@ -154,34 +155,68 @@ void loader_trim(loader *L)
     s->meshes = p;
 }
 
-int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+/* Asks the resolver for name into *src; STATUS_OK, or another status with
+ * the reason in why (out of memory reported). */
+static int ask(loader *L, const char *name, src_span at, scene_source *src, char *why, size_t why_size)
 {
     const scene_resolver *r = L->resolver;
     const char *from = L->scene->sources.files[at.file]->path;
-    scene_source src;
-    memset(&src, 0, sizeof src);
+    memset(src, 0, sizeof *src);
     why[0] = '\0';
     int status = STATUS_NO_INPUT;
     if (r->fetch)
-        status = r->fetch(r->user, from, name, &src, why, why_size);
+        status = r->fetch(r->user, from, name, src, why, why_size);
     else
         snprintf(why, why_size, "cannot read '%s': this load reads no files", name);
-    if (status != STATUS_OK) {
-        if (status == STATUS_NO_MEMORY)
-            loader_oom(L);
+    if (status == STATUS_NO_MEMORY)
+        loader_oom(L);
+    return status;
+}
+
+static void give_back(loader *L, scene_source *src)
+{
+    if (L->resolver->release)
+        L->resolver->release(L->resolver->user, src);
+    memset(src, 0, sizeof *src);
+}
+
+int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size)
+{
+    scene_source src;
+    if (ask(L, name, at, &src, why, why_size) != STATUS_OK)
         return -1;
-    }
     int file = source_set_add(&L->scene->sources, src.path ? src.path : name, src.text, src.len, at);
     if (identity && file >= 0) {
         *identity = mem_strdup(L->mem, src.identity ? src.identity : L->scene->sources.files[file]->path);
         if (!*identity)
             file = -1;
     }
-    if (r->release)
-        r->release(r->user, &src);
+    give_back(L, &src);
     if (file < 0)
         loader_oom(L);
     return file;
+}
+
+int loader_fetch_mesh(loader *L, const char *name, src_span at, scene_source *held, char *why, size_t why_size)
+{
+    if (ask(L, name, at, held, why, why_size) != STATUS_OK)
+        return -1;
+    int file = source_set_lend(&L->scene->sources, held->path ? held->path : name, held->text, held->len, at);
+    if (file < 0) {
+        give_back(L, held);
+        loader_oom(L);
+        return -1;
+    }
+    L->scene->sources.files[file]->is_mesh = 1;
+    return file;
+}
+
+void loader_release_mesh(loader *L, int file, scene_source *held)
+{
+    if (!L->scene->sources.files[file]->lent)
+        return;
+    source_set_release(&L->scene->sources, file);
+    give_back(L, held);
 }
 
 void loader_init(loader *L, scene_model *s, const scene_load_opts *o)
@@ -212,13 +247,11 @@ void loader_free(loader *L)
 }
 
 /* Reads the OBJ file into the load's sources, so its errors point into it. */
-int loader_read_obj(loader *L, const char *name, src_span at, int *file)
+int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *held, int *file)
 {
     char why[512];
-    *file = loader_fetch(L, name, at, NULL, why, sizeof why);
-    if (*file >= 0)
-        L->scene->sources.files[*file]->is_mesh = 1;
-    else if (!L->out_of_memory)
+    *file = loader_fetch_mesh(L, name, at, held, why, sizeof why);
+    if (*file < 0 && !L->out_of_memory)
         diag_report(&L->diag, DIAG_ERROR, at, "%s", why);
     return *file >= 0;
 }

@@ -14,6 +14,7 @@
 #include "lang/keywords.h"
 #include "scene/scene.h"
 #include "lang/schema.h"
+#include "lang/polymesh.h"
 
 typedef struct loader {
     scene_model *scene;            /* being filled; owns the sources */
@@ -26,6 +27,7 @@ typedef struct loader {
     char **include_stack;       /* identities of the files being lowered, outermost first */
     int include_depth, include_cap;
     long loop_iterations;       /* over the whole load */
+    long mesh_triangles;        /* over the whole load: they count as primitives for the limit */
     int *material_uses;         /* per scene material: how many primitives use it */
     int uses_cap;               /* entries allocated in material_uses */
     src_span image_where;       /* first `image` block (file -1: none yet) */
@@ -96,6 +98,23 @@ int lower_material_ref(loader *L, const props *p);
 
 /* lower_prims.c */
 int lower_primitive(loader *L, const ast *block);
+/* Parses sources.files[file] (PLY by its name or first line, else OBJ)
+ * into *pm, which must be freed after; 1, or 0 after reporting. */
+int lower_parse_mesh(loader *L, int file, polymesh *pm);
+/* Whether the transform mirrors (negative determinant): triangles then
+ * swap two corners to keep their normal on the mirrored side. */
+int lower_mirrors(const xform *w);
+
+/* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
+ * `at`; its text held in *held, given back here once the mesh is built)
+ * becomes scene.meshes[k] and one PRIM_MESH primitive made from *proto
+ * (material set; kind, mesh and u are filled in).  Takes over (and
+ * changes) pm's arrays; pm must still be freed.  w and l NULL: the
+ * positions are in world coordinates and the normals unit already, kept
+ * bit for bit (a JSON scene's); held NULL: no mesh file text to give back.
+ * Returns 1, or 0 after reporting an error. */
+int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
+               const xform *w, const xform *l);
 /* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
 void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit
@@ -152,6 +171,9 @@ int check_torus(loader *L, const check_at *at, double major, double minor);
  * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
  * KW_VERTICES). */
 int check_placed(loader *L, const check_at *at, const scene_prim *prim);
+/* Whether a triangle has no area: its edges' directions are parallel to
+ * within 4 epsilon (the size of the triangle does not matter). */
+int check_degenerate(vec3 a, vec3 b, vec3 c);
 /* A check_at that gives *span for every field. */
 check_at check_at_fixed(const src_span *span);
 
@@ -167,6 +189,16 @@ void loader_free(loader *L);
  * identity is not NULL; or -1 with the resolver's reason in why, not
  * reported, unless memory ran out (then reported, the flag set). */
 int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size);
+/* The same for a mesh file, without copying its text (a mesh file can be
+ * tens of megabytes): the sources point into the resolver's text, held in
+ * *held, until loader_release_mesh; no line index is built (a message
+ * finds its line by scanning).  Returns the file's index or -1 as
+ * loader_fetch (nothing then held). */
+int loader_fetch_mesh(loader *L, const char *name, src_span at, scene_source *held, char *why, size_t why_size);
+/* Gives a mesh file's text back to the resolver once no message will
+ * point into it; the file keeps its name (later messages name it without
+ * a line).  Call it exactly once after loader_fetch_mesh succeeded. */
+void loader_release_mesh(loader *L, int file, scene_source *held);
 /* Shrinks the scene's arrays to their counts (the load is over). */
 void loader_trim(loader *L);
 void loader_oom(loader *L);
@@ -180,10 +212,11 @@ scene_mesh *loader_add_mesh(loader *L);
 /* A copy of text from the load's allocator, or NULL after reporting out
  * of memory. */
 char *loader_strdup(loader *L, const char *text);
-/* Asks the resolver for the OBJ file `name`, written at `at`, and adds it
- * to the load's sources as read by a mesh, so its errors point into it;
- * 1 with its index in *file, else 0 after reporting at `at`. */
-int loader_read_obj(loader *L, const char *name, src_span at, int *file);
+/* Fetches the OBJ or PLY file `name`, written at `at`, into the load's
+ * sources (loader_fetch_mesh: its text held in *held until
+ * loader_release_mesh), so its errors point into it: the one place a mesh
+ * file is read.  1 with its index in *file, else 0 after reporting at `at`. */
+int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *held, int *file);
 
 /* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
  * (spec/json.md) into the scene, with the rules of check.c. */

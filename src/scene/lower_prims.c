@@ -1,7 +1,8 @@
 /*
  * lower_prims.c - sphere, plane, triangle, disk, box and mesh statements,
  * and the shared path of every primitive (the cylinder, cone and torus
- * shapes are read in lower_quadrics.c).
+ * shapes are read in lower_quadrics.c; a mesh's file is read here,
+ * lower_mesh.c builds its store).
  *
  * Transforms are applied in the order written.  They are baked into the
  * shape's parameters whenever the transformed shape is the same kind of
@@ -13,6 +14,7 @@
 #include <string.h>
 #include "scene/loader.h"
 #include "lang/obj.h"
+#include "lang/ply.h"
 
 static int one_transform(loader *L, const ast *prop, xform *out)
 {
@@ -60,6 +62,11 @@ static double determinant(const xform *a)
     const double(*m)[4] = a->m;
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+int lower_mirrors(const xform *w)
+{
+    return determinant(w) < 0;
 }
 
 static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
@@ -142,7 +149,7 @@ static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
         if (prim->u.triangle.has_normals)
             prim->u.triangle.n[i] = lower_transformed_normal(l, prim->u.triangle.n[i]);
     }
-    if (determinant(w) < 0) {
+    if (lower_mirrors(w)) {
         vec3 t = prim->u.triangle.p[1];
         prim->u.triangle.p[1] = prim->u.triangle.p[2];
         prim->u.triangle.p[2] = t;
@@ -216,39 +223,24 @@ static scene_prim *emit(loader *L, const scene_prim *prim)
     return slot;
 }
 
-static int mesh_triangle(loader *L, const obj_mesh *obj, const obj_triangle *t, scene_prim *prim)
+/* A PLY file by its name (".ply", any case) or by its first line. */
+static int is_ply(const source_file *f)
 {
-    int normals = t->vn[0] >= 0;
-    for (int i = 0; i < 3; i++) {
-        prim->u.triangle.p[i] = obj->positions[t->v[i]];
-        if (normals) {
-            if (!loader_unit(obj->normals[t->vn[i]], &prim->u.triangle.n[i])) {
-                diag_report(&L->diag, DIAG_ERROR, t->where, "vertex normal of zero length");
-                return 0;
-            }
-        }
-    }
-    prim->u.triangle.has_normals = normals;
-    prim->where = t->where;
-    return 1;
+    size_t n = strlen(f->path);
+    const char *ext = n >= 4 ? f->path + n - 4 : "";
+    int named = ext[0] == '.' && (ext[1] | 0x20) == 'p' && (ext[2] | 0x20) == 'l' && (ext[3] | 0x20) == 'y';
+    return named || ply_is_ply(f->text, f->len);
 }
 
-static int mesh_triangles(loader *L, const obj_mesh *obj, scene_prim *proto, const xform *w, const xform *l)
+int lower_parse_mesh(loader *L, int file, polymesh *pm)
 {
-    scene_mesh *mesh = &L->scene->meshes[proto->mesh];
-    mesh->first_prim = L->scene->prim_count;
-    int ok = 1;
-    for (int i = 0; i < obj->triangle_count && ok && !diag_too_many(&L->diag); i++) {
-        scene_prim prim = *proto;
-        if (!mesh_triangle(L, obj, &obj->triangles[i], &prim))
-            continue;
-        place_triangle(&prim, w, l);
-        check_at at = check_at_fixed(&prim.where);
-        if (check_placed(L, &at, &prim))
-            ok = emit(L, &prim) != NULL;
-    }
-    mesh->count = L->scene->prim_count - mesh->first_prim;
-    return ok;
+    const source_set *sources = &L->scene->sources;
+    long limit = L->limits->max_mesh_triangles;
+    int ok = is_ply(sources->files[file]) ? ply_parse(sources, file, &L->diag, limit, pm)
+                                          : obj_parse(sources, file, &L->diag, limit, pm);
+    if (ok < 0)
+        L->out_of_memory = 1; /* the reader said so at the place it ran out */
+    return ok > 0;
 }
 
 /* `file a` with no constant a: a file name without its quotes. */
@@ -266,27 +258,17 @@ static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, co
     const char *name;
     src_span at;
     int file;
+    scene_source held;
     if (!props_require(L, p, KW_FILE) || unquoted_file(L, p) || !props_string(L, p, KW_FILE, &name, &at) ||
-        !loader_read_obj(L, name, at, &file))
+        !loader_read_mesh(L, name, at, &held, &file))
         return 0;
-    obj_mesh obj;
-    int errors = L->diag.errors;
-    int parsed = obj_parse(&L->scene->sources, file, &L->diag, L->limits->max_mesh_triangles, &obj);
-    if (parsed < 0)
-        L->out_of_memory = 1; /* obj_parse said so at the place it ran out */
-    if (parsed <= 0)
-        return 0;
-    scene_mesh *m = loader_add_mesh(L);
-    int ok = m != NULL;
-    if (m) {
-        m->path = loader_strdup(L, L->scene->sources.files[file]->path);
-        m->where = at;
-        proto->kind = PRIM_TRIANGLE;
-        proto->mesh = L->scene->mesh_count - 1;
-        ok = m->path && mesh_triangles(L, &obj, proto, w, l);
-    }
-    obj_free(&obj);
-    return ok && L->diag.errors == errors;
+    polymesh pm;
+    int ok = lower_parse_mesh(L, file, &pm) && lower_mesh(L, &pm, file, &held, at, proto, w, l);
+    polymesh_free(&pm);
+    /* Nothing points into the file after this: its text goes back (when
+     * lower_mesh has not given it back already). */
+    loader_release_mesh(L, file, &held);
+    return ok;
 }
 
 static void place(scene_prim *prim, const xform *w, const xform *l)
@@ -299,6 +281,7 @@ static void place(scene_prim *prim, const xform *w, const xform *l)
     case PRIM_CYLINDER:
     case PRIM_CONE:
     case PRIM_TORUS: lower_place_quadric(prim, w, l); break;
+    case PRIM_MESH: break; /* lower_mesh.c places every vertex */
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
         prim->u.plane.normal = lower_transformed_normal(l, prim->u.plane.normal);

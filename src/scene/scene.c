@@ -30,8 +30,10 @@ void scene_free(scene_model *s)
     mem m = s->mem;
     for (int i = 0; i < s->material_count; i++)
         mem_free_string(&m, s->materials[i].name);
-    for (int i = 0; i < s->mesh_count; i++)
+    for (int i = 0; i < s->mesh_count; i++) {
         mem_free_string(&m, s->meshes[i].path);
+        scene_trimesh_free(&m, &s->meshes[i].geom);
+    }
     mem_free(&m, s->materials, (size_t)s->material_cap * sizeof *s->materials);
     mem_free(&m, s->prims, (size_t)s->prim_cap * sizeof *s->prims);
     mem_free(&m, s->meshes, (size_t)s->mesh_cap * sizeof *s->meshes);
@@ -52,6 +54,7 @@ void scene_load_opts_init(scene_load_opts *o)
 static const char *const prim_names[PRIM_KINDS][2] = {
     {"sphere", "spheres"}, {"plane", "planes"},       {"triangle", "triangles"}, {"disk", "disks"},
     {"box", "boxes"},      {"cylinder", "cylinders"}, {"cone", "cones"},         {"torus", "tori"},
+    {"mesh", "meshes"},
 };
 
 const char *scene_prim_name(scene_prim_kind kind)
@@ -122,3 +125,28 @@ int scene_prim_self_shadows(const scene_prim *p)
 {
     return p->kind != PRIM_PLANE && p->kind != PRIM_DISK && p->kind != PRIM_TRIANGLE;
 }
+
+void scene_trimesh_free(const mem *m, scene_trimesh *g)
+{
+    mem_free(m, g->positions, (size_t)g->position_cap * sizeof *g->positions);
+    mem_free(m, g->normals, (size_t)g->normal_cap * sizeof *g->normals);
+    mem_free(m, g->tri, (size_t)g->tri_cap * sizeof *g->tri);
+    mem_free(m, g->tri_normal, (size_t)g->tri_normal_cap * sizeof *g->tri_normal);
+    mem_free(m, g->open, (size_t)g->tri_count);
+    memset(g, 0, sizeof *g);
+}
+
+long scene_mesh_bytes(const scene_model *s, long *triangles)
+{
+    long bytes = 0;
+    *triangles = 0;
+    for (int i = 0; i < s->mesh_count; i++) {
+        const scene_trimesh *g = &s->meshes[i].geom;
+        long t = g->tri_count;
+        *triangles += t;
+        bytes += (long)(g->position_count * sizeof *g->positions + g->normal_count * sizeof *g->normals);
+        bytes += t * (long)sizeof *g->tri + (g->tri_normal ? t * (long)sizeof *g->tri_normal : 0) + (g->open ? t : 0);
+    }
+    return bytes;
+}
+

@@ -36,20 +36,50 @@ typedef struct scene_material {
 typedef enum scene_prim_kind {
     PRIM_SPHERE,
     PRIM_PLANE,
-    PRIM_TRIANGLE,     /* a `triangle` statement or one triangle of a mesh */
+    PRIM_TRIANGLE,     /* a `triangle` statement */
     PRIM_DISK,
     PRIM_BOX,
     PRIM_CYLINDER,     /* closed (a solid) or open (a sheet, like a plane) */
     PRIM_CONE,         /* the same, truncated or with an apex */
-    PRIM_TORUS         /* a ring torus: a solid */
+    PRIM_TORUS,        /* a ring torus: a solid */
+    PRIM_MESH          /* a `mesh`: many triangles in one compact store */
 } scene_prim_kind;
 
-enum { PRIM_KINDS = PRIM_TORUS + 1 };
+enum { PRIM_KINDS = PRIM_MESH + 1 };
+
+/*
+ * The triangles of a mesh, in world space (the mesh's transforms baked in),
+ * stored compactly: shared vertices and three indices per triangle, about
+ * 24 bytes a triangle for a closed mesh without normals instead of a whole
+ * scene_prim.  Coordinates are the doubles the file gave, transformed:
+ * nothing is rounded to a smaller type.  The arrays come from the scene's
+ * allocator; the caps are the entries allocated (a shrink that failed
+ * leaves more than the count).
+ */
+typedef struct scene_trimesh {
+    vec3 *positions;
+    int position_count, position_cap;
+    vec3 *normals;         /* unit vertex normals, NULL when the mesh has none */
+    int normal_count, normal_cap;
+    int (*tri)[3];         /* corners of each triangle: indices into positions */
+    int (*tri_normal)[3];  /* each corner's index into normals, or -1 (a flat
+                              triangle); NULL when the mesh has no normals */
+    int tri_count, tri_cap, tri_normal_cap;
+    unsigned char *open;   /* per triangle, bit k: its edge from corner k to
+                              k + 1 belongs to it alone (the hit test counts
+                              such an edge as inside, like a lone triangle's;
+                              shared ones by the tie rule of intersect.c);
+                              NULL when no edge is open (else tri_count bytes) */
+    int closed;            /* every edge shared by exactly two triangles
+                              (src/scene/mesh_topo.h): a solid, whose inside
+                              is found by counting crossings, so its winding
+                              does not matter; else a set of sheets */
+} scene_trimesh;
 
 typedef struct scene_prim {
     scene_prim_kind kind;
     int material;          /* index into scene.materials */
-    int mesh;              /* index into scene.meshes for mesh triangles, else -1 */
+    int mesh;              /* PRIM_MESH: index into scene.meshes, else -1 */
     union {
         struct { vec3 center; double radius; } sphere;
         struct { vec3 point; vec3 normal; } plane;
@@ -67,11 +97,14 @@ typedef struct scene_prim {
         /* axis unit; 0 < minor < major: the tube of radius minor around
          * the circle of radius major about center, normal to axis */
         struct { vec3 center, axis; double major, minor; } torus;
+        /* A view of scene.meshes[mesh].geom: the arrays are that mesh's,
+         * shared, so a primitive can be intersected on its own. */
+        scene_trimesh mesh;
     } u;
     /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles and planes always; spheres,
-     * disks, cylinders, cones and tori under similarities; boxes under
-     * translate and axis scale).
+     * to the same kind of shape (triangles, meshes and planes always;
+     * spheres, disks, cylinders, cones and tori under similarities; boxes
+     * under translate and axis scale).
      * Otherwise the parameters are in the local frame and these are set. */
     int has_xform;
     xform to_world;
@@ -79,11 +112,25 @@ typedef struct scene_prim {
     src_span where;
 } scene_prim;
 
+/* What the loader found out about a mesh (`refray check` prints it;
+ * spec/language.md, section 8). */
+typedef struct scene_mesh_report {
+    int faces;             /* faces read (polygons of any size) */
+    int dropped;           /* faces with no area, and triangles with none after the transforms */
+    int nonplanar;         /* polygons whose corners are not on one plane */
+    int fanned;            /* polygons cut as a fan: not simple, or past the ear-clipping budget */
+    int oriented;          /* every shared edge runs opposite ways in its two triangles */
+    int components;        /* pieces connected through shared edges */
+    int open_edges;        /* edges of one triangle only */
+    int crowded_edges;     /* edges of three or more triangles */
+} scene_mesh_report;
+
 typedef struct scene_mesh {
-    char *path;            /* the OBJ file as resolved */
-    int first_prim;        /* its triangles are prims[first_prim .. first_prim+count-1] */
-    int count;
-    src_span where;
+    char *path;            /* the OBJ or PLY file as resolved */
+    int prim;              /* the PRIM_MESH primitive in scene.prims */
+    scene_trimesh geom;    /* owned here; the primitive holds a view */
+    scene_mesh_report report;
+    src_span where;        /* the `file` value of the mesh statement */
 } scene_mesh;
 
 typedef enum scene_falloff {
@@ -150,7 +197,7 @@ typedef struct scene_model {
     rgb ambient;               /* sum of all ambient blocks, I_a */
     scene_material *materials;
     int material_count, material_cap; /* cap: entries allocated */
-    scene_prim *prims;            /* bounded primitives and planes, mesh triangles included */
+    scene_prim *prims;            /* bounded primitives and planes; one PRIM_MESH per mesh */
     int prim_count, prim_cap;
     scene_mesh *meshes;
     int mesh_count, mesh_cap;
@@ -172,7 +219,7 @@ typedef struct scene_limits {
     long max_depth;
     long max_loop_iterations;  /* per loop, and in total over a load */
     long max_include_depth;
-    long max_file_bytes;       /* per scene or OBJ file */
+    long max_file_bytes;       /* per scene, OBJ or PLY file */
     long max_mesh_triangles;   /* per mesh */
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
@@ -196,8 +243,11 @@ typedef struct scene_source {
  * path) and fills *out, returning STATUS_OK; or it returns another status
  * with a one-line reason in why (reported as an error at the statement;
  * STATUS_NO_MEMORY ends the load as out of memory).  The loader copies the
- * text and names, then calls release (when not NULL) with the same *out.
- * The resolver enforces its own limits (io/scene_file.c: --max-file-size).
+ * text and names, then calls release (when not NULL) with the same *out;
+ * a mesh file's text is read where it is, without a copy (it may be tens
+ * of megabytes), and released once its mesh is built.  The text need not
+ * be NUL-terminated.  The resolver enforces its own limits
+ * (io/scene_file.c: --max-file-size).
  */
 typedef struct scene_resolver {
     int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,
@@ -243,8 +293,9 @@ void scene_free(scene_model *scene);
 scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status);
 int scene_json_available(void);
 
-/* Whether p is a closed solid on its own: a sphere, a box, a closed
- * cylinder or cone, a torus (mesh triangles are solid only as a mesh). */
+/* Whether p is a solid whose inside is known on its own: a sphere, a box,
+ * a closed cylinder or cone, a torus.  A closed mesh is a solid too, but
+ * its inside is found by counting crossings (render/trace.c). */
 int scene_prim_is_solid(const scene_prim *p);
 
 /* Whether point lies strictly inside the solid p (in p's own frame when it
@@ -256,9 +307,16 @@ int scene_prim_contains(const scene_prim *p, vec3 point);
  * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
 
-/* The block word of a primitive kind ("sphere", ..., "torus"), and its plural. */
+/* The block word of a primitive kind ("sphere", ..., "torus", "mesh"), and its plural. */
 const char *scene_prim_name(scene_prim_kind kind);
 const char *scene_prim_plural(scene_prim_kind kind);
+
+/* Frees a mesh store allocated from m and empties it. */
+void scene_trimesh_free(const mem *m, scene_trimesh *g);
+
+/* The bytes the meshes' stores hold (positions, normals, corner and normal
+ * indices, open-edge masks), and their triangles in *triangles. */
+long scene_mesh_bytes(const scene_model *s, long *triangles);
 
 
 #endif

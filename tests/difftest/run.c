@@ -68,6 +68,7 @@ static double sample_peak(const scene_model *s, const img_buf *ours)
     o.width = k * s->image.width;
     o.height = k * s->image.height;
     o.samples = 1;
+    o.facet_shadows = 1;
     if (render_image(s, &o, &fine, NULL) != STATUS_OK)
         return peak_of(ours) * k * k;
     double peak = peak_of(&fine);
@@ -229,6 +230,7 @@ static void against_pov(const dt_config *c, const char *name, const scene_model 
     img_buf pov;
     int width, height, k = pov_render_size(s, &width, &height);
     memset(&o, 0, sizeof o);
+    o.facet_shadows = 1;
     o.scale = r->scale;
     o.source = name;
     snprintf(path, sizeof path, "%s/%s.pov", c->work_dir, name);
@@ -253,8 +255,13 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
     pov_opts o;
     pov_notes notes;
     img_buf ours;
+    render_opts ro;
     memset(r, 0, sizeof *r);
     memset(&o, 0, sizeof o);
+    memset(&ro, 0, sizeof ro);
+    /* [XCHK-MAP-MESH-3] Smooth meshes' shadow rays from the facet, as
+     * POV-Ray's: compared as the seed has them, not listed. */
+    o.facet_shadows = ro.facet_shadows = 1;
     snprintf(path, sizeof path, "%s/%s.scene", c->work_dir, name);
     scene_model *s = scene_file_load_text(path, text, strlen(text), NULL, c->diag, 0, &status);
     if (!s) {
@@ -268,7 +275,7 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
         snprintf(r->why, sizeof r->why, "%s", notes.refused ? notes.reason : notes.text[0]);
     if (!exportable || (notes.count > 0 && !c->approximations)) {
         r->verdict = DT_DISCARDED;
-    } else if (render_image(s, NULL, &ours, NULL) != STATUS_OK) {
+    } else if (render_image(s, &ro, &ours, NULL) != STATUS_OK) {
         fail(r, "refray could not render %.250s", name);
     } else {
         r->scale = scale_for(sample_peak(s, &ours));

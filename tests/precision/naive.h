@@ -9,6 +9,7 @@
 #define REFRAY_NAIVE_H
 
 #include "render/ray.h"
+#include "scene/scene.h"
 
 /* Ray/sphere by the quadratic formula as printed in most textbooks:
  * a t^2 + b t + c = 0 with b = 2 f.d, c = f.f - R^2, disc = b^2 - 4ac,
@@ -60,6 +61,58 @@ static inline int naive_triangle(const vec3 p[3], const ray *r, real *t)
         return 0;
     *t = tt;
     return 1;
+}
+
+/* Woop, Benthin and Wald's test as the paper states it, refray's before
+ * issue 13: an edge function of exactly 0 counts as inside for both
+ * triangles that share the edge, so a ray through a shared edge or vertex
+ * hits two (or more) of them: a glass mesh is crossed twice there, and the
+ * light is attenuated twice.  Returns 1 for a hit with t in (tmin, tmax). */
+static inline int naive_woop_inclusive(const vec3 p[3], const ray *r)
+{
+    vec3 d = r->dir;
+    real ad[3] = {fabs(d.x), fabs(d.y), fabs(d.z)};
+    int kz = ad[0] >= ad[1] ? (ad[0] >= ad[2] ? 0 : 2) : (ad[1] >= ad[2] ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    real dz = vec_component(d, kz);
+    if (dz < 0) {
+        int s = kx;
+        kx = ky;
+        ky = s;
+    }
+    if (dz == 0)
+        return 0;
+    real sx = vec_component(d, kx) / dz, sy = vec_component(d, ky) / dz, px[3], py[3], pz[3], e[3];
+    for (int i = 0; i < 3; i++) {
+        vec3 a = vec_sub(p[i], r->origin);
+        pz[i] = vec_component(a, kz);
+        px[i] = vec_component(a, kx) - sx * pz[i];
+        py[i] = vec_component(a, ky) - sy * pz[i];
+    }
+    for (int i = 0; i < 3; i++)
+        e[i] = px[(i + 2) % 3] * py[(i + 1) % 3] - py[(i + 2) % 3] * px[(i + 1) % 3];
+    if ((e[0] < 0 || e[1] < 0 || e[2] < 0) && (e[0] > 0 || e[1] > 0 || e[2] > 0))
+        return 0;
+    real det = e[0] + e[1] + e[2];
+    if (det == 0)
+        return 0;
+    real t = (e[0] / det * pz[0] + e[1] / det * pz[1] + e[2] / det * pz[2]) / dz;
+    return t > r->tmin && t < r->tmax;
+}
+
+/* For the mesh sweeps of both users: the corner positions of triangle k of
+ * a mesh, and a bvh_visit callback that counts the crossings. */
+static inline void mesh_triangle(const scene_trimesh *g, int k, vec3 p[3])
+{
+    for (int i = 0; i < 3; i++)
+        p[i] = g->positions[g->tri[k][i]];
+}
+
+static inline int count_crossing(void *ctx, const hit *h)
+{
+    (void)h;
+    ++*(int *)ctx;
+    return 0;
 }
 
 /* A secondary ray pushed off the surface by a fixed distance eps along the

@@ -182,7 +182,9 @@ static void spawn_scene(const char *name, double eps, int count_leaks)
 
 /* Rays through every vertex and five points of every edge of the closed
  * icosphere, from its centre and from three places outside: misses by
- * Moller-Trumbore (brute force) and by the tracer. */
+ * Moller-Trumbore (brute force) and by the tracer, and rays whose number of
+ * crossings is not the surface's (1 from the centre, 2 from outside) by the
+ * paper's inclusive Woop test (brute force) and by the tracer's bvh_visit. */
 static void watertight_scene(void)
 {
     static const double at[] = {0.5, 0.1, 0.3337, 0.71, 0.9};
@@ -191,12 +193,14 @@ static void watertight_scene(void)
     tracer t;
     if (!tracer_init(&t, s, 0, 0))
         exit(2);
+    const scene_trimesh *g = &s->meshes[0].geom;
     vec3 centre = vec_make(0.5, 0.25, 0.125);
-    long rays = 0, miss[2] = {0, 0};
-    for (int k = 0; k < s->prim_count; k++)
+    long rays = 0, miss[2] = {0, 0}, wrong[2] = {0, 0};
+    for (int k = 0; k < g->tri_count; k++)
         for (int e = 0; e < 3; e++)
             for (int a = -1; a < 5; a++) {
-                const vec3 *p = s->prims[k].u.triangle.p;
+                vec3 p[3], q3[3];
+                mesh_triangle(g, k, p);
                 vec3 pt = a < 0 ? p[e] : vec_add(p[e], vec_scale(vec_sub(p[(e + 1) % 3], p[e]), at[a]));
                 vec3 out = vec_normalize(vec_sub(pt, centre));
                 for (int q = 0; q < 4; q++) {
@@ -205,16 +209,23 @@ static void watertight_scene(void)
                                                                                          lean[q - 1][2]))), 3);
                     ray r = make_ray(from, pt), rr = r;
                     hit hh;
-                    int naive = 0;
+                    int naive = 0, inclusive = 0, visited = 0;
                     real tn;
-                    for (int i = 0; i < s->prim_count && !naive; i++)
-                        naive = naive_triangle(s->prims[i].u.triangle.p, &r, &tn);
+                    for (int i = 0; i < g->tri_count; i++) {
+                        mesh_triangle(g, i, q3);
+                        naive += naive_triangle(q3, &r, &tn);
+                        inclusive += naive_woop_inclusive(q3, &r);
+                    }
+                    bvh_visit(&t.accel, s->prims, &r, count_crossing, &visited);
                     rays++;
                     miss[0] += !naive;
                     miss[1] += !bvh_intersect(&t.accel, s->prims, &rr, &hh);
+                    wrong[0] += inclusive != (q == 0 ? 1 : 2);
+                    wrong[1] += visited != (q == 0 ? 1 : 2);
                 }
             }
-    printf("| watertight_mesh (1280 triangles) | %ld | %ld | %ld |\n", rays, miss[0], miss[1]);
+    printf("| watertight_mesh (1280 triangles) | %ld | %ld | %ld | %ld | %ld |\n", rays, miss[0], miss[1], wrong[0],
+           wrong[1]);
     tracer_free(&t);
     scene_free(s);
 }
@@ -252,7 +263,8 @@ int main(int argc, char **argv)
     spawn_scene("acne_offset_1e8", 1e-9, 0);
     spawn_scene("acne_scale_1e6", 1e-9, 0);
     printf("\nRays through the edges and vertices of a closed mesh\n\n");
-    printf("| scene | rays | Moller-Trumbore misses | refray misses |\n|---|---|---|---|\n");
+    printf("| scene | rays | Moller-Trumbore misses | refray misses | inclusive Woop, wrong crossing count | refray, "
+           "wrong crossing count |\n|---|---|---|---|---|---|\n");
     watertight_scene();
     return bad;
 }

@@ -1,0 +1,537 @@
+/*
+ * bvh_build.c - building the bounding volume hierarchy (see bvh.h).
+ *
+ * Top-down, binned SAH (Wald, "On fast Construction of SAH-based Bounding
+ * Volume Hierarchies", 2007): the centroids of a node's parts are binned
+ * along all three axes in one pass, and the plane between bins of least
+ *   C_TRAV + (area_L c_L + area_R c_R) / area
+ * wins, c being the summed intersection cost of a side's parts (1 for a
+ * primitive, TRIANGLE_COST for a mesh triangle); a node of at most
+ * MAX_LEAF parts stays a leaf when that is not cheaper than its own cost.  A node of n parts uses min(n, BINS) bins.  The
+ * children's boxes come out of the bins exactly, and their centroids'
+ * bounds out of the partition pass, so each level reads every part twice.
+ * When the centroids coincide, or below
+ * BVH_MEDIAN_DEPTH, the node is halved at the object median instead, which
+ * bounds the depth.  Every choice is a deterministic function of the input.
+ *
+ * Memory: a part costs 56 bytes while building (its padded box and
+ * reference; the centroid is recomputed), the median splits' sort buffers
+ * are made only when one happens, and the node array grows as needed.
+ */
+#include <limits.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <assert.h>
+#include "render/bvh.h"
+
+#define BINS 32
+#define MAX_LEAF 4
+#define C_TRAV 1.0
+/* A mesh triangle is tested in about half the time of a sphere or a
+ * transformed shape, the cost scale here: leaves of three or four
+ * triangles, about half a node per triangle in a large mesh. */
+#define TRIANGLE_COST 0.5
+/* Primitive boxes are widened by this fraction of their coordinates' size,
+ * so a hit computed a few ulps outside its true box is still inside. */
+#define BOUNDS_PAD 0x1p-40
+
+/* A part during the build: its padded box and reference.  The build
+ * permutes these in place, so each node's are contiguous. */
+typedef struct build_item {
+    vec3 lo, hi;
+    bvh_ref ref;
+} build_item;
+
+/* The bounds of some parts' boxes (lo, hi) and of their centroids. */
+typedef struct range {
+    vec3 lo, hi, clo, chi;
+} range;
+
+typedef struct bin {
+    vec3 lo, hi;
+    int count;
+    real cost;        /* summed intersection cost of its parts */
+} bin;
+
+typedef struct sort_key {
+    real key;
+    bvh_ref ref;   /* the tie-break that makes the order unique */
+    int position;  /* where the item was before sorting */
+} sort_key;
+
+typedef struct build_ctx {
+    bvh *b;
+    const scene_prim *prims;
+    build_item *items;    /* the bounded parts */
+    int count;
+    build_item *spare;    /* median splits: as many again, made on first use */
+    sort_key *keys;
+    size_t item_bytes;    /* allocated at items */
+    bin bins[3][BINS];    /* the binning of the node being split */
+    int failed;           /* out of memory */
+} build_ctx;
+
+/* Comparisons, not fmin/fmax (a library call each): no NaN gets here. */
+static vec3 vmin(vec3 a, vec3 b)
+{
+    return vec_make(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
+}
+
+static vec3 vmax(vec3 a, vec3 b)
+{
+    return vec_make(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
+}
+
+static vec3 centroid(const build_item *it)
+{
+    return vec_scale(vec_add(it->lo, it->hi), 0.5);
+}
+
+static range range_empty(void)
+{
+    range r;
+    r.lo = r.clo = vec_splat(INFINITY);
+    r.hi = r.chi = vec_splat(-INFINITY);
+    return r;
+}
+
+static void range_add(range *r, const build_item *it)
+{
+    vec3 c = centroid(it);
+    r->lo = vmin(r->lo, it->lo);
+    r->hi = vmax(r->hi, it->hi);
+    r->clo = vmin(r->clo, c);
+    r->chi = vmax(r->chi, c);
+}
+
+static range range_of(const build_ctx *ctx, int begin, int end)
+{
+    range r = range_empty();
+    for (int i = begin; i < end; i++)
+        range_add(&r, &ctx->items[i]);
+    return r;
+}
+
+static real half_area(vec3 lo, vec3 hi)
+{
+    vec3 e = vec_sub(hi, lo);
+    if (!(e.x >= 0.0 && e.y >= 0.0 && e.z >= 0.0))
+        return 0.0;
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+static real pad(real lo, real hi)
+{
+    return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
+}
+
+/* The padded box of part `part` of primitive prims[index]; 0 when it has
+ * no finite bounds. */
+static int item_of(const scene_prim *p, int index, int part, build_item *out)
+{
+    vec3 lo, hi;
+    if (!isect_part_bounds(p, part, &lo, &hi))
+        return 0;
+    vec3 e = vec_make(pad(lo.x, hi.x), pad(lo.y, hi.y), pad(lo.z, hi.z));
+    out->lo = vec_sub(lo, e);
+    out->hi = vec_add(hi, e);
+    out->ref.prim = index;
+    out->ref.part = part;
+    return vec_is_finite(centroid(out));
+}
+
+/* The binning of a node: per axis, bin = floor((c - lo) * scale), clamped
+ * to the node's `bins`; scale 0 for an axis whose centroids coincide (not
+ * binned). */
+typedef struct binning {
+    real lo[3], scale[3];
+    int bins;
+} binning;
+
+static int bin_of(const binning *bn, int axis, real c)
+{
+    real x = (c - bn->lo[axis]) * bn->scale[axis];
+    int k = x > 0.0 ? (int)x : 0;
+    return k < bn->bins ? k : bn->bins - 1;
+}
+
+/* A node of more than ONE_AXIS parts is binned along the widest extent of
+ * its centroids only: for big nodes the best plane is nearly always across
+ * it, and one axis costs a third of three. */
+#define ONE_AXIS 4096
+
+static int widest_axis(vec3 lo, vec3 hi);
+
+static binning binning_of(const range *r, int n)
+{
+    binning bn;
+    int only = n > ONE_AXIS ? widest_axis(r->clo, r->chi) : -1;
+    bn.bins = n < BINS ? n : BINS;
+    for (int a = 0; a < 3; a++) {
+        real lo = vec_component(r->clo, a), extent = vec_component(r->chi, a) - lo, scale = bn.bins / extent;
+        bn.lo[a] = lo;
+        bn.scale[a] = extent > 0.0 && isfinite(scale) && (only < 0 || a == only) ? scale : 0.0;
+    }
+    return bn;
+}
+
+static real part_cost(const build_ctx *ctx, const build_item *it)
+{
+    return ctx->prims[it->ref.prim].kind == PRIM_MESH ? TRIANGLE_COST : 1.0;
+}
+
+/* One pass: every item into its bin on each binned axis.  Returns the
+ * node's own cost (as a leaf). */
+static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
+{
+    real total = 0.0;
+    for (int a = 0; a < 3; a++)
+        for (int k = 0; k < bn->bins; k++) {
+            ctx->bins[a][k].lo = vec_splat(INFINITY);
+            ctx->bins[a][k].hi = vec_splat(-INFINITY);
+            ctx->bins[a][k].count = 0;
+            ctx->bins[a][k].cost = 0.0;
+        }
+    for (int i = begin; i < end; i++) {
+        const build_item *it = &ctx->items[i];
+        vec3 c = centroid(it);
+        real cost = part_cost(ctx, it);
+        total += cost;
+        for (int a = 0; a < 3; a++) {
+            if (bn->scale[a] == 0.0)
+                continue;
+            bin *bk = &ctx->bins[a][bin_of(bn, a, vec_component(c, a))];
+            bk->lo = vmin(bk->lo, it->lo);
+            bk->hi = vmax(bk->hi, it->hi);
+            bk->count++;
+            bk->cost += cost;
+        }
+    }
+    return total;
+}
+
+/* The best plane on one axis: its cost (area-weighted counts, not yet
+ * divided by the node's area) and the number of bins on its left. */
+static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
+{
+    const bin *bins = ctx->bins[axis];
+    real right_area[BINS], right_cost[BINS], best = INFINITY, sum = 0.0;
+    int right_count[BINS], count = 0;
+    vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
+    for (int k = nb - 1; k > 0; k--) {
+        lo = vmin(lo, bins[k].lo);
+        hi = vmax(hi, bins[k].hi);
+        count += bins[k].count;
+        sum += bins[k].cost;
+        right_area[k] = half_area(lo, hi);
+        right_count[k] = count;
+        right_cost[k] = sum;
+    }
+    lo = vec_splat(INFINITY);
+    hi = vec_splat(-INFINITY);
+    count = 0;
+    sum = 0.0;
+    for (int k = 0; k < nb - 1; k++) {
+        lo = vmin(lo, bins[k].lo);
+        hi = vmax(hi, bins[k].hi);
+        count += bins[k].count;
+        sum += bins[k].cost;
+        if (count == 0 || right_count[k + 1] == 0)
+            continue;
+        real cost = half_area(lo, hi) * sum + right_area[k + 1] * right_cost[k + 1];
+        if (cost < best) {
+            best = cost;
+            *split = k + 1;
+        }
+    }
+    return best;
+}
+
+/* The children's boxes: the bins on either side of the split. */
+static void kid_boxes(const build_ctx *ctx, int axis, int nb, int split, range kids[2])
+{
+    kids[0] = kids[1] = range_empty();
+    for (int k = 0; k < nb; k++) {
+        range *r = &kids[k >= split];
+        r->lo = vmin(r->lo, ctx->bins[axis][k].lo);
+        r->hi = vmax(r->hi, ctx->bins[axis][k].hi);
+    }
+}
+
+/* Moves the items whose bin on axis is below split to the front, and
+ * gathers each side's centroid bounds into kids[0], kids[1]; returns the
+ * first index of the rest. */
+static int partition_bins(const build_ctx *ctx, int begin, int end, const binning *bn, int axis, int split,
+                          range kids[2])
+{
+    build_item *items = ctx->items;
+    int i = begin, j = end - 1;
+    while (i <= j) {
+        vec3 c = centroid(&items[i]);
+        int right = bin_of(bn, axis, vec_component(c, axis)) >= split;
+        kids[right].clo = vmin(kids[right].clo, c);
+        kids[right].chi = vmax(kids[right].chi, c);
+        if (!right) {
+            i++;
+        } else {
+            /* The item from j is read next, at i; this one is done. */
+            build_item s = items[i];
+            items[i] = items[j];
+            items[j--] = s;
+        }
+    }
+    return i;
+}
+
+/* Orders references: by primitive, then by part. */
+static int ref_order(bvh_ref a, bvh_ref b)
+{
+    if (a.prim != b.prim)
+        return a.prim < b.prim ? -1 : 1;
+    return (a.part > b.part) - (a.part < b.part);
+}
+
+static int compare_keys(const void *pa, const void *pb)
+{
+    const sort_key *a = pa, *b = pb;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return ref_order(a->ref, b->ref);
+}
+
+/* Sorts items[begin..end) by centroid on axis, ties by reference (so the
+ * order is unique whatever qsort does), and returns the middle; -1 when
+ * the sort buffers cannot be made. */
+static int median_split(build_ctx *ctx, int begin, int end, int axis)
+{
+    if (!ctx->spare) {
+        ctx->spare = mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->spare);
+        ctx->keys = ctx->spare ? mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->keys) : NULL;
+        if (!ctx->spare || !ctx->keys) {
+            ctx->failed = 1;
+            return -1;
+        }
+    }
+    build_item *items = ctx->items + begin;
+    int n = end - begin;
+    for (int i = 0; i < n; i++) {
+        ctx->keys[i].key = vec_component(centroid(&items[i]), axis);
+        ctx->keys[i].ref = items[i].ref;
+        ctx->keys[i].position = i;
+        ctx->spare[i] = items[i];
+    }
+    qsort(ctx->keys, (size_t)n, sizeof *ctx->keys, compare_keys);
+    for (int i = 0; i < n; i++)
+        items[i] = ctx->spare[ctx->keys[i].position];
+    return begin + n / 2;
+}
+
+static int widest_axis(vec3 lo, vec3 hi)
+{
+    vec3 e = vec_sub(hi, lo);
+    return e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
+}
+
+/* Where to split items[begin..end) of bounds *r, or -1 for a leaf.  The
+ * children's bounds go to kids[0], kids[1]. */
+static int choose_split(build_ctx *ctx, int begin, int end, int depth, const range *r, range kids[2])
+{
+    int n = end - begin, best_split = 0, best_axis = -1;
+    real best = INFINITY, leaf_cost = n;
+    if (n <= 1)
+        return -1;
+    binning bn = binning_of(r, n);
+    if (depth < BVH_MEDIAN_DEPTH && (bn.scale[0] != 0 || bn.scale[1] != 0 || bn.scale[2] != 0)) {
+        leaf_cost = fill_bins(ctx, begin, end, &bn);
+        for (int a = 0; a < 3; a++) {
+            int split = 0;
+            real cost = bn.scale[a] != 0.0 ? sah_axis(ctx, a, bn.bins, &split) : INFINITY;
+            if (cost < best) {
+                best = cost;
+                best_axis = a;
+                best_split = split;
+            }
+        }
+    }
+    if (best_axis < 0) {
+        if (n <= MAX_LEAF)
+            return -1;
+        int mid = median_split(ctx, begin, end, widest_axis(r->clo, r->chi));
+        if (mid < 0)
+            return -1;
+        kids[0] = range_of(ctx, begin, mid);
+        kids[1] = range_of(ctx, mid, end);
+        return mid;
+    }
+    real area = half_area(r->lo, r->hi);
+    real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
+    if (n <= MAX_LEAF && !(split_cost < leaf_cost))
+        return -1;
+    kid_boxes(ctx, best_axis, bn.bins, best_split, kids);
+    return partition_bins(ctx, begin, end, &bn, best_axis, best_split, kids);
+}
+
+/* Two adjacent nodes; their index, or -1 when out of memory. */
+static int new_pair(build_ctx *ctx)
+{
+    bvh *b = ctx->b;
+    if (b->node_count + 2 > b->node_cap) {
+        int cap = b->node_cap > INT_MAX / 2 ? INT_MAX : 2 * b->node_cap;
+        bvh_node *grown = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)cap, sizeof *grown);
+        if (!grown) {
+            ctx->failed = 1;
+            return -1;
+        }
+        b->nodes = grown;
+        b->node_cap = cap;
+    }
+    b->node_count += 2;
+    return b->node_count - 2;
+}
+
+/* Fills node (already allocated) for items[begin..end) of bounds *r and its
+ * subtree.  The two children of a node are allocated together, side by
+ * side, so a traversal step that tests both reads adjacent memory.  The
+ * recursion is at most BVH_MAX_DEPTH deep (see bvh.h). */
+static void build_node(build_ctx *ctx, int node, int begin, int end, int depth, const range *r)
+{
+    bvh *b = ctx->b;
+    range kids[2];
+    b->nodes[node].lo = r->lo;
+    b->nodes[node].hi = r->hi;
+    if (depth > b->depth)
+        b->depth = depth;
+    int mid = choose_split(ctx, begin, end, depth, r, kids);
+    int first = mid < 0 ? -1 : new_pair(ctx);
+    if (first < 0) {
+        b->nodes[node].first = begin;
+        b->nodes[node].count = end - begin;
+        b->leaf_count++;
+        return;
+    }
+    assert(mid > begin && mid < end && depth < BVH_MAX_DEPTH);
+    b->nodes[node].first = first;
+    b->nodes[node].count = 0;
+    build_node(ctx, first, begin, mid, depth + 1, &kids[0]);
+    build_node(ctx, first + 1, mid, end, depth + 1, &kids[1]);
+}
+
+static void free_sort_buffers(build_ctx *ctx)
+{
+    mem_free(&ctx->b->mem, ctx->spare, (size_t)ctx->count * sizeof *ctx->spare);
+    mem_free(&ctx->b->mem, ctx->keys, (size_t)ctx->count * sizeof *ctx->keys);
+    ctx->spare = NULL;
+    ctx->keys = NULL;
+}
+
+/* Sorts parts into build items (bounded) and b->unbounded (a part without
+ * finite bounds puts all its primitive's parts there: all of it is then
+ * tested on every ray), which is then cut to its count (it was made for
+ * every part). */
+static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
+{
+    int bounded = 0;
+    for (int i = 0; i < count; i++) {
+        int parts = isect_part_count(&prims[i]), kept = bounded;
+        for (int k = 0; k < parts; k++)
+            bounded += item_of(&prims[i], i, k, &items[bounded]);
+        if (bounded - kept == parts)
+            continue;
+        bounded = kept;
+        for (int k = 0; k < parts; k++) {
+            bvh_ref ref = {i, k};
+            b->unbounded[b->unbounded_count++] = ref;
+        }
+    }
+    bvh_ref *fit = mem_resize_array(&b->mem, b->unbounded, (size_t)b->unbounded_cap, (size_t)b->unbounded_count,
+                                    sizeof *fit);
+    if (fit) {
+        b->unbounded = fit;
+        b->unbounded_cap = b->unbounded_count;
+    }
+    return bounded;
+}
+
+/* The references of the built items, in their final order, written over
+ * the front of the items' own array (reference i goes where item i/7
+ * was, already read) and the array shrunk to them: no second array at the
+ * build's peak. */
+static void keep_references(build_ctx *ctx)
+{
+    bvh *b = ctx->b;
+    bvh_ref *refs = (bvh_ref *)(void *)ctx->items;
+    for (int i = 0; i < ctx->count; i++) {
+        bvh_ref r = ctx->items[i].ref;
+        refs[i] = r;
+    }
+    size_t want = (size_t)ctx->count * sizeof *refs;
+    bvh_ref *fit = mem_resize(&b->mem, refs, ctx->item_bytes, want);
+    b->items = fit ? fit : refs;
+    b->item_bytes = fit ? want : ctx->item_bytes;
+    b->item_count = ctx->count;
+    ctx->items = NULL;
+}
+
+/* The tree over ctx->items[0..count-1]; 0 when out of memory.  The node
+ * array starts at one node per part (leaves hold about three; untouched
+ * pages cost nothing) and shrinks to fit at the end. */
+static int build_tree(build_ctx *ctx)
+{
+    bvh *b = ctx->b;
+    b->nodes = mem_alloc(&b->mem, ((size_t)ctx->count + 1) * sizeof *b->nodes);
+    if (!b->nodes)
+        return 0;
+    b->node_cap = ctx->count + 1;
+    b->node_count = 1;
+    range all = range_of(ctx, 0, ctx->count);
+    build_node(ctx, 0, 0, ctx->count, 1, &all);
+    if (ctx->failed)
+        return 0;
+    free_sort_buffers(ctx);
+    keep_references(ctx);
+    bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
+    if (fit) {
+        b->nodes = fit;
+        b->node_cap = b->node_count;
+    }
+    return 1;
+}
+
+/* The number of parts of prims[0..count-1], or -1 past INT_MAX/2. */
+static long count_parts(const scene_prim *prims, int count)
+{
+    long parts = 0;
+    for (int i = 0; i < count && parts <= INT_MAX / 2; i++)
+        parts += isect_part_count(&prims[i]);
+    return parts <= INT_MAX / 2 ? parts : -1;
+}
+
+int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
+{
+    memset(b, 0, sizeof *b);
+    b->mem = mem_pick(m);
+    build_ctx *ctx = mem_calloc(&b->mem, 1, sizeof *ctx);
+    int ok = 0;
+    long parts = count >= 0 ? count_parts(prims, count) : -1;
+    if (!ctx || parts < 0 || (size_t)parts > SIZE_MAX / 2 / sizeof(build_item)) {
+        mem_free(&b->mem, ctx, sizeof *ctx);
+        return 0;
+    }
+    ctx->b = b;
+    ctx->prims = prims;
+    ctx->item_bytes = (size_t)parts * sizeof *ctx->items;
+    ctx->items = mem_alloc(&b->mem, ctx->item_bytes);
+    b->unbounded = mem_alloc(&b->mem, (size_t)parts * sizeof *b->unbounded);
+    b->unbounded_cap = b->unbounded ? (int)parts : 0;
+    if (ctx->items && b->unbounded) {
+        ctx->count = classify(b, prims, count, ctx->items);
+        ok = ctx->count == 0 || build_tree(ctx);
+    }
+    mem_free(&b->mem, ctx->items, ctx->item_bytes);
+    free_sort_buffers(ctx);
+    mem_free(&b->mem, ctx, sizeof *ctx);
+    if (!ok)
+        bvh_free(b);
+    return ok;
+}
