@@ -358,7 +358,8 @@ RF_API rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1,
 /*
  * A 64-bit fingerprint of everything that decides the renderer's pixels:
  * the library's version, the text of every file the scene's load read (not
- * their names), the image size, samples, max_depth and light_samples.  Two
+ * their names), its meshes as built, the image size, samples, max_depth and
+ * light_samples.  Two
  * renderers with the same fingerprint render the same pixels, so regions
  * rendered in different processes or on different machines can be put
  * together when their fingerprints agree (refray merge does).  A

@@ -126,7 +126,7 @@ START_TEST(test_api_region_float_saturates)
 }
 END_TEST
 
-/* [EMBED-API-7] A double region holds exactly what rf_render_image stores
+/* [EMBED-API-9] A double region holds exactly what rf_render_image stores
  * for its pixels, and rf_render_region's floats are those doubles rounded
  * to nearest (the demo in two regions, 12 x 8). */
 START_TEST(test_api_region_double_is_the_image)

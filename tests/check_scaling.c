@@ -395,6 +395,59 @@ START_TEST(test_scaling_json_scene)
 END_TEST
 #endif
 
+/* Copies scenes/mesh.scene and its OBJ into dir/sub, the OBJ's first
+ * vertex line ("v ...") replaced by vertex when not NULL; the scene's path
+ * into scene. */
+static void mesh_scene_copy(const char *dir, const char *sub, const char *vertex, char *scene, size_t size)
+{
+    char cmd[1400], where[300];
+    cli_path(where, sizeof where, dir, sub);
+    snprintf(cmd, sizeof cmd,
+             "mkdir -p '%s/models' && cp scenes/mesh.scene '%s/' && "
+             "awk -v v='%s' '!done && /^v / && v != \"\" { print v; done = 1; next } { print }' "
+             "scenes/models/icosahedron.obj > '%s/models/icosahedron.obj'",
+             where, where, vertex ? vertex : "", where);
+    ck_assert_int_eq(system(cmd), 0);
+    cli_path(scene, size, where, "mesh.scene");
+}
+
+/* [TILE-FILE-1] [SCALE-MERGE-2] The key covers a scene's meshes (whose
+ * file text the loader lets go once the mesh is built): tiles of the same
+ * scene text whose OBJ differs in one vertex are refused as two renders';
+ * tiles of two copies of the same files merge into the whole render. */
+START_TEST(test_scaling_mesh_in_the_key)
+{
+    char dir[64], a[300], b[300], c[300], t[3][300], whole[300], merged[300], name[32];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "scale");
+    mesh_scene_copy(dir, "a", NULL, a, sizeof a);
+    mesh_scene_copy(dir, "b", "v 0 1.2 0.2", b, sizeof b);
+    mesh_scene_copy(dir, "c", NULL, c, sizeof c);
+    const char *scenes[3] = {a, b, c}, *specs[3] = {"0/2", "1/2", "1/2"};
+    for (int i = 0; i < 3; i++) {
+        snprintf(name, sizeof name, "t%d.pfm", i);
+        const char *args[] = {"render", scenes[i], "-q", "--width", "32", "--height", "20", "--light-samples", "4",
+                              "--tile", specs[i], "-o", cli_path(t[i], sizeof t[i], dir, name), NULL};
+        cli_refray(&r, args);
+        ck_assert_msg(r.code == 0, "render: %s", r.err);
+    }
+    const char *mixed[] = {"merge", t[0], t[1], "-o", cli_path(merged, sizeof merged, dir, "x.pfm"), NULL};
+    cli_refray(&r, mixed);
+    ck_assert_msg(r.code == 65, "exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "comes from another render");
+    ck_assert(!cli_exists(merged));
+    const char *args[] = {"render", a, "-q", "--width", "32", "--height", "20", "--light-samples", "4", "-o",
+                          cli_path(whole, sizeof whole, dir, "whole.pfm"), NULL};
+    cli_refray(&r, args);
+    ck_assert_int_eq(r.code, 0);
+    const char *same[] = {"merge", t[0], t[2], "-o", merged, NULL};
+    cli_refray(&r, same);
+    ck_assert_msg(r.code == 0, "merge: %s", r.err);
+    same_bytes(whole, merged);
+    cli_remove(dir);
+}
+END_TEST
+
 /* [SCALE-TILE-2] Options that cannot give a tile are usage errors (64). */
 START_TEST(test_scaling_usage_errors)
 {
@@ -993,6 +1046,7 @@ Suite *suite_scaling(void)
     tcase_add_test(files, test_scaling_merge_writes_the_whole_renders_bytes);
     tcase_add_test(files, test_scaling_jobs_write_the_bytes_of_one);
     tcase_add_test(files, test_scaling_merge_refusals);
+    tcase_add_test(files, test_scaling_mesh_in_the_key);
 #if REFRAY_HAVE_JSON
     tcase_add_test(files, test_scaling_json_scene);
 #endif

@@ -94,6 +94,42 @@ void renderer_free(renderer *r)
     tracer_free(&r->tracer);
 }
 
+/* A coordinate as the bits of its double: a long double `real` has
+ * padding bytes, which hold nothing a process can count on. */
+static uint64_t hash_real(uint64_t h, real v)
+{
+    double d = (double)v;
+    uint64_t bits;
+    memcpy(&bits, &d, sizeof bits);
+    return hash_u64(h, bits);
+}
+
+static uint64_t hash_points(uint64_t h, const vec3 *p, int n)
+{
+    h = hash_u64(h, (uint64_t)n);
+    for (int i = 0; i < n; i++)
+        h = hash_real(hash_real(hash_real(h, p[i].x), p[i].y), p[i].z);
+    return h;
+}
+
+/* A mesh file's text is let go once its mesh is built (source.h), so a
+ * mesh counts by what was built from it: every array of its store. */
+static uint64_t hash_meshes(uint64_t h, const scene_model *s)
+{
+    for (int i = 0; i < s->mesh_count; i++) {
+        const scene_trimesh *g = &s->meshes[i].geom;
+        size_t t = (size_t)g->tri_count;
+        h = hash_points(h, g->positions, g->position_count);
+        h = hash_points(h, g->normals, g->normals ? g->normal_count : 0);
+        h = hash_u64(h, (uint64_t)t);
+        h = hash_bytes(h, g->tri, t * sizeof *g->tri);
+        h = hash_bytes(h, g->tri_normal, g->tri_normal ? t * sizeof *g->tri_normal : 0);
+        h = hash_bytes(h, g->open, g->open ? t : 0);
+        h = hash_u64(h, (uint64_t)g->closed);
+    }
+    return h;
+}
+
 uint64_t renderer_fingerprint(const renderer *r)
 {
     const source_set *src = &r->tracer.scene->sources;
@@ -103,6 +139,8 @@ uint64_t renderer_fingerprint(const renderer *r)
         h = hash_u64(h, (uint64_t)src->files[i]->len);
         h = hash_bytes(h, src->files[i]->text, src->files[i]->len);
     }
+    h = hash_meshes(h, r->tracer.scene);
+    h = hash_u64(h, (uint64_t)r->opts.facet_shadows);
     h = hash_u64(h, (uint64_t)st->width);
     h = hash_u64(h, (uint64_t)st->height);
     h = hash_u64(h, (uint64_t)st->samples);
