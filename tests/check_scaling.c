@@ -353,6 +353,52 @@ START_TEST(test_scaling_merge_refusals)
 }
 END_TEST
 
+/* [SCALE-MERGE-5] Tiles are input files like any other (spec/reliability.md):
+ * the whole image they claim is held to merge's --max-pixels before a
+ * pixel is allocated (the 40x24 image of make_tiles: 960 pixels), and a
+ * FIFO or a directory in place of a tile's file is refused at once (66),
+ * not waited on. */
+START_TEST(test_scaling_merge_limits)
+{
+    char dir[64], t[4][300], out[300], name[32], fifo[300], side[330], cmd[700];
+    cli_run r;
+    cli_scratch(dir, sizeof dir, "scale");
+    make_tiles(dir, "pfm");
+    for (int i = 0; i < 4; i++) {
+        snprintf(name, sizeof name, "t%d.pfm", i);
+        cli_path(t[i], sizeof t[i], dir, name);
+    }
+    cli_path(out, sizeof out, dir, "out.pfm");
+    const char *over[] = {"merge", t[0], t[1], t[2], t[3], "-o", out, "--max-pixels", "959", NULL};
+    cli_refray(&r, over);
+    ck_assert_msg(r.code == 65, "exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "the image is 40x24, over --max-pixels 959");
+    ck_assert(!cli_exists(out));
+    const char *at[] = {"merge", t[0], t[1], t[2], t[3], "-o", out, "--max-pixels", "960", NULL};
+    cli_refray(&r, at);
+    ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
+    ck_assert_int_eq(unlink(out), 0);
+    /* t3's pixels swapped for a FIFO nobody writes, then a directory. */
+    cli_path(fifo, sizeof fifo, dir, "f.pfm");
+    snprintf(cmd, sizeof cmd, "cp '%s' '%s'", t[3], fifo);
+    ck_assert_int_eq(system(cmd), 0);
+    snprintf(side, sizeof side, "%s.tile", fifo);
+    ck_assert_int_eq(mkfifo(side, 0600), 0);
+    const char *with_fifo[] = {"merge", t[0], t[1], t[2], fifo, "-o", out, NULL};
+    cli_refray(&r, with_fifo);
+    ck_assert_msg(r.code == 66, "exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "not a regular file");
+    ck_assert_int_eq(unlink(side), 0);
+    ck_assert_int_eq(mkdir(side, 0700), 0);
+    cli_refray(&r, with_fifo);
+    ck_assert_msg(r.code == 66, "exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "is a directory");
+    ck_assert(!cli_exists(out));
+    ck_assert_int_eq(files_with(dir, ".refray-tmp-"), 0);
+    cli_remove(dir);
+}
+END_TEST
+
 #if REFRAY_HAVE_JSON
 /* [SCALE-MERGE-1] [SCALE-MERGE-2] Tiles of a JSON scene (spec/json.md; the
  * demo exported) merge into the bytes of its whole render; the JSON's text
@@ -625,15 +671,17 @@ static void no_process_left(const pid_t *kids, int n)
 }
 
 /* [SCALE-JOBS-3] [SCALE-JOBS-4] A worker killed by SIGKILL: exit 70
- * naming it; SIGINT to refray: exit 130.  Either way no output, no
- * temporary file, no worker left. */
+ * naming it; SIGINT to refray: exit 130, SIGTERM: 143 (128 + the signal,
+ * spec/reliability.md).  Either way no output, no temporary file, no
+ * worker left. */
 START_TEST(test_scaling_killed_worker_and_sigint)
 {
     char dir[64], out[300];
     static cli_run r;
     cli_scratch(dir, sizeof dir, "scale");
     cli_path(out, sizeof out, dir, "out.pfm");
-    for (int k = 0; k < 2; k++) {
+    static const int stop[3] = {SIGKILL, SIGINT, SIGTERM};
+    for (int k = 0; k < 3; k++) {
         pid_t kids[8];
         const char *extra[] = {"--jobs", "2", "-q", "-o", out, NULL}, *args[64];
         render_args(args, SLOW, extra);
@@ -641,13 +689,13 @@ START_TEST(test_scaling_killed_worker_and_sigint)
         int n = wait_for_workers(pid, kids, 2);
         ck_assert_msg(n == 2, "refray has %d workers", n);
         nap_ms(50);
-        ck_assert_int_eq(kill(k == 0 ? kids[1] : pid, k == 0 ? SIGKILL : SIGINT), 0);
+        ck_assert_int_eq(kill(k == 0 ? kids[1] : pid, stop[k]), 0);
         finish(dir, pid, &r);
         if (k == 0) {
             ck_assert_msg(r.code == 70, "exit %d: %s", r.code, r.err);
             ASSERT_ERR_HAS(&r, "was killed by SIGKILL while rendering rows");
         } else {
-            ck_assert_msg(r.code == 130, "exit %d: %s", r.code, r.err);
+            ck_assert_msg(r.code == 128 + stop[k], "exit %d: %s", r.code, r.err);
             ASSERT_ERR_HAS(&r, "interrupted; nothing written");
         }
         no_process_left(kids, n);
@@ -1047,6 +1095,7 @@ Suite *suite_scaling(void)
     tcase_add_test(files, test_scaling_merge_writes_the_whole_renders_bytes);
     tcase_add_test(files, test_scaling_jobs_write_the_bytes_of_one);
     tcase_add_test(files, test_scaling_merge_refusals);
+    tcase_add_test(files, test_scaling_merge_limits);
     tcase_add_test(files, test_scaling_mesh_in_the_key);
 #if REFRAY_HAVE_JSON
     tcase_add_test(files, test_scaling_json_scene);

@@ -33,7 +33,7 @@ static const char merge_help[] =
     "  -q, --quiet           (accepted; merge prints nothing on success)\n"
     "exit: 0 written; 64 usage; 65 tiles that are not one render's or do not cover\n"
     "the image exactly once, or a file that is not a tile; 66 a missing tile;\n"
-    "74 OUT could not be written; 130 interrupted.\n";
+    "74 OUT could not be written; 130, 143, 129 interrupted by SIGINT, SIGTERM, SIGHUP.\n";
 
 typedef struct merge_args {
     const char **tiles;

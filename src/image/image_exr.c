@@ -23,6 +23,7 @@
  * one go, so `render -o - --format exr` works.
  */
 #include <errno.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -552,8 +553,14 @@ static int tile_header(exr_const_context_t ctx, const img_read_opts *o, tile_inf
     if (version != 1 || len != 16 || !tile_key_parse(text, &info->key))
         return img_error(err, errlen, STATUS_DATA, "a refray tile of another version (refrayTile %d)", (int)version);
     if (exr_get_storage(ctx, 0, &storage) || storage != EXR_STORAGE_SCANLINE ||
-        exr_get_display_window(ctx, 0, &disp) || exr_get_data_window(ctx, 0, &dw) || disp.min.x || disp.min.y)
+        exr_get_display_window(ctx, 0, &disp) || exr_get_data_window(ctx, 0, &dw) || disp.min.x || disp.min.y ||
+        dw.max.x == INT32_MAX || dw.max.y == INT32_MAX)
         return img_error(err, errlen, STATUS_DATA, "a refray tile with a damaged header");
+    /* The whole image against --max-pixels, in long: a header may claim
+     * a window up to INT_MAX. */
+    int rc = img_check_header((long)disp.max.x + 1, (long)disp.max.y + 1, o, err, errlen);
+    if (rc != STATUS_OK)
+        return rc;
     info->width = disp.max.x + 1;
     info->height = disp.max.y + 1;
     info->region.x0 = dw.min.x;
