@@ -20,6 +20,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "base/status.h"
+#include "cli/cli_args.h"
 #include "cli/cli_tiles.h"
 #include "io/atomic.h"
 #include "io/fileio.h"
@@ -28,10 +29,10 @@
 
 static const char manifest_name[] = "refray-checkpoint";
 
-typedef struct manifest {
+typedef struct ck_manifest {
     tile_info info;
     int bands;
-} manifest;
+} ck_manifest;
 
 /* DIR/name into buf. */
 static const char *in_dir(const cli_tiles *t, const char *name, char *buf, size_t size)
@@ -56,12 +57,12 @@ static int write_manifest(const cli_tiles *t, const char *path)
                      t->target.width, t->target.height, r->x0, r->y0, r->x1, r->y1, key, t->bands);
     int rc = file_write_bytes(path, text, (size_t)n, why, sizeof why);
     if (rc != STATUS_OK)
-        fprintf(stderr, "refray: error: checkpoint: %s\n", why);
+        cli_error("checkpoint: %s", why);
     return rc;
 }
 
 /* 1 when text is exactly a manifest, into *m. */
-static int parse_manifest(const char *text, manifest *m)
+static int parse_manifest(const char *text, ck_manifest *m)
 {
     char key[17];
     int n = -1;
@@ -84,19 +85,19 @@ static void describe(const tile_info *t, char *buf, size_t size)
 /* Reads the manifest at path into t->bands, checking it is t's render. */
 static int check_manifest(cli_tiles *t, const char *path, const char *text)
 {
-    manifest m;
+    ck_manifest m;
     char theirs[160], ours[160];
     int rows = t->target.region.y1 - t->target.region.y0;
     if (!parse_manifest(text, &m) || m.bands < 1 || m.bands > rows) {
-        fprintf(stderr, "refray: error: '%s' is not a refray checkpoint manifest (spec/scaling.md); give "
-                "another directory to --checkpoint\n", path);
+        cli_error("'%s' is not a refray checkpoint manifest (spec/scaling.md); give "
+                "another directory to --checkpoint", path);
         return STATUS_DATA;
     }
     if (!tile_info_equal(&m.info, &t->target)) {
         describe(&m.info, theirs, sizeof theirs);
         describe(&t->target, ours, sizeof ours);
-        fprintf(stderr, "refray: error: the checkpoint '%s' belongs to another render (%s), not this one (%s): "
-                "another scene, size, region or setting; remove it or give another directory\n",
+        cli_error("the checkpoint '%s' belongs to another render (%s), not this one (%s): "
+                "another scene, size, region or setting; remove it or give another directory",
                 t->checkpoint, theirs, ours);
         return STATUS_DATA;
     }
@@ -120,8 +121,8 @@ static int load_tile(cli_tiles *t, int b, unsigned char *done)
     tile_info want = t->target;
     want.region = cli_tiles_band(t, b);
     if (!tile_info_equal(&info, &want)) {
-        fprintf(stderr, "refray: error: the checkpoint tile '%s' is not band %d of this render; remove the "
-                "checkpoint '%s' or give another directory\n", path, b, t->checkpoint);
+        cli_error("the checkpoint tile '%s' is not band %d of this render; remove the "
+                "checkpoint '%s' or give another directory", path, b, t->checkpoint);
         img_free(&px);
         return STATUS_DATA;
     }
@@ -139,7 +140,7 @@ int cli_checkpoint_open(cli_tiles *t, unsigned char *done)
     size_t len = 0;
     int rc = file_make_dirs(t->checkpoint, why, sizeof why);
     if (rc != STATUS_OK) {
-        fprintf(stderr, "refray: error: checkpoint: %s\n", why);
+        cli_error("checkpoint: %s", why);
         return rc;
     }
     in_dir(t, manifest_name, path, sizeof path);
@@ -151,7 +152,7 @@ int cli_checkpoint_open(cli_tiles *t, unsigned char *done)
     else if (rc == STATUS_DATA)
         rc = check_manifest(t, path, "");
     else
-        fprintf(stderr, "refray: error: checkpoint: %s\n", why);
+        cli_error("checkpoint: %s", why);
     mem_free(NULL, text, len + 1);
     for (int b = 0; rc == STATUS_OK && b < t->bands; b++)
         rc = load_tile(t, b, done);

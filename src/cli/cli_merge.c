@@ -83,15 +83,15 @@ static int check_one_render(const merge_args *a, const tile_info *t)
     char k0[17], ki[17];
     for (int i = 1; i < a->count; i++) {
         if (t[i].width != t[0].width || t[i].height != t[0].height) {
-            fprintf(stderr, "refray: error: '%s' is a tile of a %dx%d image, '%s' of a %dx%d one; nothing written\n",
+            cli_error("'%s' is a tile of a %dx%d image, '%s' of a %dx%d one; nothing written",
                     a->tiles[i], t[i].width, t[i].height, a->tiles[0], t[0].width, t[0].height);
             return STATUS_DATA;
         }
         if (t[i].key != t[0].key) {
             tile_key_text(t[i].key, ki);
             tile_key_text(t[0].key, k0);
-            fprintf(stderr, "refray: error: '%s' comes from another render than '%s' (key %s, not %s): another "
-                    "scene, or other samples, max-depth or light samples; nothing written\n", a->tiles[i],
+            cli_error("'%s' comes from another render than '%s' (key %s, not %s): another "
+                    "scene, or other samples, max-depth or light samples; nothing written", a->tiles[i],
                     a->tiles[0], ki, k0);
             return STATUS_DATA;
         }
@@ -112,14 +112,14 @@ static int check_cover(const merge_args *a, const tile_info *t, tile_rect *regio
     for (int i = 0; i < a->count; i++)
         for (int j = i + 1; j < a->count; j++)
             if (tile_overlap(&regions[i], &regions[j], &both)) {
-                fprintf(stderr, "refray: error: the tiles '%s' (%s) and '%s' (%s) overlap in %s; nothing written\n",
+                cli_error("the tiles '%s' (%s) and '%s' (%s) overlap in %s; nothing written",
                         a->tiles[i], tile_rect_text(&regions[i], r1, sizeof r1), a->tiles[j],
                         tile_rect_text(&regions[j], r2, sizeof r2), tile_rect_text(&both, r3, sizeof r3));
                 return STATUS_DATA;
             }
     if (tile_find_gap(regions, a->count, t[0].width, t[0].height, &gap)) {
-        fprintf(stderr, "refray: error: no tile covers %s (%ld of the %dx%d image's pixels have no tile); "
-                "nothing written\n", tile_rect_text(&gap, r1, sizeof r1), (long)t[0].width * t[0].height - area,
+        cli_error("no tile covers %s (%ld of the %dx%d image's pixels have no tile); "
+                "nothing written", tile_rect_text(&gap, r1, sizeof r1), (long)t[0].width * t[0].height - area,
                 t[0].width, t[0].height);
         return STATUS_DATA;
     }
@@ -133,7 +133,7 @@ static int check_tiles(const merge_args *a, tile_info *t, tile_rect *regions)
     for (int i = 0; i < a->count; i++) {
         int status = tile_file_read(a->tiles[i], &a->read, &t[i], NULL, why, sizeof why);
         if (status != STATUS_OK) {
-            fprintf(stderr, "refray: error: %s; nothing written\n", why);
+            cli_error("%s; nothing written", why);
             return status;
         }
     }
@@ -157,7 +157,7 @@ static int gather(const merge_args *a, const tile_info *t, img_buf *img)
             status = STATUS_DATA;
         }
         if (status != STATUS_OK) {
-            fprintf(stderr, "refray: error: %s; nothing written\n", why);
+            cli_error("%s; nothing written", why);
             return status;
         }
         const tile_rect *r = &t[i].region;

@@ -14,6 +14,7 @@
 #include "base/status.h"
 #include "cli/cli_progress.h"
 #include "cli/cli_signal.h"
+#include "cli/cli_args.h"
 #include "cli/cli_tiles.h"
 #include "io/pool.h"
 #include "render/render.h"
@@ -213,7 +214,7 @@ static int run_bands(tiles_run *run, int count)
     t->stats.seconds = render_clock() - start;
     report_failure(run, rc, &fail, why);
     if (rc == STATUS_OK && run->rows_done != run->rows_total) {
-        fprintf(stderr, "refray: error: the workers rendered %ld of %ld rows; nothing written\n", run->rows_done,
+        cli_error("the workers rendered %ld of %ld rows; nothing written", run->rows_done,
                 run->rows_total);
         rc = STATUS_INTERNAL;
     }

@@ -393,7 +393,7 @@ static int run_scenes(verify_run *v, verify_result *steps)
         char why[300];
         int rc = pool_run(a->jobs, a->path_count, &ops, cli_signal_flag(), &fail, why, sizeof why);
         if (rc != STATUS_OK && rc != STATUS_CANCELLED)
-            fprintf(stderr, "refray: error: verify: %s\n", why[0] ? why : status_string(rc));
+            cli_error("verify: %s", why[0] ? why : status_string(rc));
         return rc;
     }
     for (int k = 0; k < a->path_count; k++) {
