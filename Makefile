@@ -138,10 +138,11 @@ RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' incl
 RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
 LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
 PUBLIC_LAYERS := base image lang scene render io api
-# The io layer's process runner and file writer serve `refray kit` and
-# `refray conform` only: a host's library neither starts processes nor
-# removes directories.
-PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o
+# The io layer's process runner, worker pool, file writer and tile files
+# serve the program only (kit, conform, render --jobs, merge): a host's
+# library neither starts processes nor removes directories.
+PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o $(BUILD)/obj/src/io/pool.o \
+               $(BUILD)/obj/src/io/tile_file.o
 PUBLIC_OBJS := $(filter-out $(PUBLIC_OMIT),$(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS)))                  $(BUILD)/obj/gen/%,$(LIB_OBJS)))
 PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
@@ -157,14 +158,15 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 # python3-jsonschema: the schema test of the JSON scene format (tests/json_schema.sh).
-DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
+# parallel: GNU parallel, for the test of the recipe in spec/scaling.md.
+DEBS := flex bison check pkg-config parallel $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema) \
         $(if $(findstring clang,$(CC)),clang)
 ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -191,6 +193,36 @@ check: deps
 demo: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(REFRAY) render scenes/demo.scene -o demo.png
+
+# The recipes of spec/scaling.md tried for real on this machine, each in a
+# temporary directory of its own (tests/scaling/): GNU parallel through a
+# private sshd on 127.0.0.1, and a one-node Slurm with its own MUNGE daemon
+# (root only).  Not part of `make check`: they install servers.
+SCALING_DEBS_ssh := openssh-server openssh-client rsync parallel
+SCALING_DEBS_slurm := slurm-wlm munge
+check-ssh check-slurm: deps
+	$(Q)missing=""; for p in $(SCALING_DEBS_ssh) $(if $(filter check-slurm,$@),$(SCALING_DEBS_slurm)); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "$@: installing$$missing"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)sh tests/scaling/$(if $(filter check-ssh,$@),ssh_localhost,slurm_local).sh $(REFRAY)
+
+# Figures, not tests (spec/scaling.md): --jobs 1 against --jobs N, GNU
+# parallel over tiles, the merge alone, a checkpointed render killed and
+# resumed, each output compared with --jobs 1's bytes.  SCALING_SIZE=WxH,
+# SCALING_JOBS="2 4", SCALING_OPTS="--samples 1" for other runs.  Times
+# come from GNU time (Debian's time, installed if missing).
+SCALING_SIZE ?= 1920x1080
+SCALING_JOBS ?= 2 4
+SCALING_OPTS ?=
+scaling-figures: deps
+	$(Q)[ -x /usr/bin/time ] || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "scaling-figures: installing time"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq time >/dev/null; }
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)SIZE=$(SCALING_SIZE) JOBS="$(SCALING_JOBS)" sh tests/scaling/figures.sh $(REFRAY) $(SCALING_OPTS)
 
 # Leak kinds are listed in a variable: a literal comma would split $(if ...).
 LEAK_KINDS := definite,indirect,possible

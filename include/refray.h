@@ -374,6 +374,24 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
 RF_API rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *rgb,
                                   size_t row_stride);
 
+/* The same region in double: exactly the values rf_render_image stores
+ * for those pixels (rf_render_region's floats are these, rounded to
+ * nearest).  Returns as rf_render_region. */
+RF_API rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1, int y1, double *rgb,
+                                         size_t row_stride);
+
+/*
+ * A 64-bit fingerprint of everything that decides the renderer's pixels:
+ * the library's version, the text of every file the scene's load read (not
+ * their names), its meshes as built, the image size, samples, max_depth and
+ * light_samples.  Two
+ * renderers with the same fingerprint render the same pixels, so regions
+ * rendered in different processes or on different machines can be put
+ * together when their fingerprints agree (refray merge does).  A
+ * fingerprint, not a cryptographic hash.
+ */
+RF_API unsigned long long rf_renderer_fingerprint(const rf_renderer *r);
+
 RF_API void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats);
 
 RF_API void rf_renderer_free(rf_renderer *r);

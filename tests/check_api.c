@@ -75,16 +75,23 @@ START_TEST(test_api_render_region)
 }
 END_TEST
 
+/* The demo scene, with options *o for a 12 x 8 image of it. */
+static rf_scene *load_demo_12x8(rf_render_options *o)
+{
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
+    rf_render_options_init(o);
+    o->width = 12;
+    o->height = 8;
+    return s;
+}
+
 /* A pixel does not depend on the region it is rendered in: the demo scene
  * in 2 x 2 tiles equals the demo scene in one piece, bit for bit. */
 START_TEST(test_api_regions_tile_the_image)
 {
-    rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
     rf_render_options o;
-    rf_render_options_init(&o);
-    o.width = 12;
-    o.height = 8;
+    rf_scene *s = load_demo_12x8(&o);
     rf_renderer *r;
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
     float whole[8 * 12 * 3], tiled[8 * 12 * 3];
@@ -116,6 +123,73 @@ START_TEST(test_api_region_float_saturates)
         ck_assert_float_eq(px[i], FLT_MAX);
     rf_renderer_free(r);
     rf_scene_free(s);
+}
+END_TEST
+
+/* [EMBED-API-9] A double region holds exactly what rf_render_image stores
+ * for its pixels, and rf_render_region's floats are those doubles rounded
+ * to nearest (the demo in two regions, 12 x 8). */
+START_TEST(test_api_region_double_is_the_image)
+{
+    rf_render_options o;
+    rf_scene *s = load_demo_12x8(&o);
+    rf_image *img;
+    rf_renderer *r;
+    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_OK);
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    double px[8 * 12 * 3];
+    float f[8 * 12 * 3];
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 12, 5, px, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 5, 12, 8, px + 5 * 36, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 12, 8, f, 36), RF_OK);
+    ck_assert_int_eq(memcmp(px, rf_image_pixels(img), sizeof px), 0);
+    for (int i = 0; i < 8 * 12 * 3; i++)
+        ck_assert_msg(f[i] == (float)px[i], "value %d", i);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 13, 1, px, 39), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 12, 1, NULL, 36), RF_ERR_USAGE);
+    rf_renderer_free(r);
+    rf_image_free(img);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* The fingerprint of plane_text with the given text and options. */
+static unsigned long long fingerprint(const char *name, const char *text, int width, int samples, int depth,
+                                      int light_samples)
+{
+    rf_scene *s = NULL;
+    rf_renderer *r;
+    rf_render_options o;
+    ck_assert_int_eq(rf_scene_load_memory(name, text, strlen(text), NULL, &s), RF_OK);
+    rf_render_options_init(&o);
+    o.width = width;
+    o.samples = samples;
+    o.max_depth = depth;
+    o.light_samples = light_samples;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    unsigned long long f = rf_renderer_fingerprint(r);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+    return f;
+}
+
+/* [EMBED-API-8] The fingerprint follows the scene's text and the settings
+ * that change pixels, not the scene's name. */
+START_TEST(test_api_fingerprint)
+{
+    static const char other[] = "image { width 4 height 3 }\n"
+                                "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                                "ambient { color 0.2 }\n"
+                                "distant_light { direction [0, -1, 0] power 2 }\n"
+                                "plane { material { Kd 0.5 } } # a comment\n";
+    unsigned long long base = fingerprint("a.scene", plane_text, 0, 0, 0, 0);
+    ck_assert(base == fingerprint("elsewhere/b.scene", plane_text, 0, 0, 0, 0));
+    ck_assert(base == fingerprint("a.scene", plane_text, 4, 1, 0, 0));
+    ck_assert(base != fingerprint("a.scene", other, 0, 0, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 5, 0, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 2, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 0, 1, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 0, 0, 3));
 }
 END_TEST
 
@@ -743,6 +817,8 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_null_arguments);
     tcase_add_test(tc, test_api_broken_resolver);
+    tcase_add_test(tc, test_api_region_double_is_the_image);
+    tcase_add_test(tc, test_api_fingerprint);
     tcase_add_test(tc, test_api_no_shortcuts);
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);

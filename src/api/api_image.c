@@ -85,7 +85,7 @@ void rf_write_options_init(rf_write_options *o)
     o->exr_float = d.exr_float;
 }
 
-static img_write_opts write_opts(const rf_write_options *o, img_write_stats *st, cancel_poll *cancel)
+img_write_opts api_write_opts(const rf_write_options *o, img_write_stats *st, cancel_poll *cancel)
 {
     img_write_opts w = img_write_opts_default();
     *cancel = cancel_poll_make(NULL, NULL);
@@ -127,7 +127,7 @@ rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_o
     if (!img || !path)
         return missing(message, message_size, stats, !img ? "no image to write" : "no path to write to");
     cancel_poll cancel;
-    img_write_opts w = write_opts(o, &st, &cancel);
+    img_write_opts w = api_write_opts(o, &st, &cancel);
     int status = img_write(path, &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);
@@ -140,7 +140,7 @@ rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt
     if (!img || !stream)
         return missing(message, message_size, stats, !img ? "no image to write" : "no stream to write to");
     cancel_poll cancel;
-    img_write_opts w = write_opts(o, &st, &cancel);
+    img_write_opts w = api_write_opts(o, &st, &cancel);
     int status = img_write_stream(stream, format_in(fmt), &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);

@@ -4,6 +4,7 @@
  */
 #include <string.h>
 #include "api/convert.h"
+#include "base/hash.h"
 
 void rf_render_options_init(rf_render_options *o)
 {
@@ -54,12 +55,13 @@ void rf_renderer_size(const rf_renderer *r, int *width, int *height)
     *height = r->r.stats.height;
 }
 
-rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
+/* A float or a double region (one of f32, f64 set), checked first. */
+static rf_status region(rf_renderer *r, int x0, int y0, int x1, int y1, float *f32, double *f64, size_t row_stride)
 {
     if (!r)
         return RF_ERR_USAGE;
     const render_stats *st = &r->r.stats;
-    if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || !pixels ||
+    if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || (!f32 && !f64) ||
         row_stride < 3 * (size_t)(x1 - x0))
         return RF_ERR_USAGE;
     /* The last row ends (rows - 1) * row_stride + 3 * columns floats in: a
@@ -68,8 +70,25 @@ rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float
         return RF_ERR_USAGE;
     if (r->options.cancel && r->options.cancel(r->options.user))
         return RF_ERR_CANCELLED;
-    render_target t = {x0, y0, x1, y1, pixels, NULL, row_stride};
+    render_target t = {x0, y0, x1, y1, f32, f64, row_stride};
     return api_status(renderer_region(&r->r, &t));
+}
+
+rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
+{
+    return region(r, x0, y0, x1, y1, pixels, NULL, row_stride);
+}
+
+rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1, int y1, double *pixels,
+                                  size_t row_stride)
+{
+    return region(r, x0, y0, x1, y1, NULL, pixels, row_stride);
+}
+
+unsigned long long rf_renderer_fingerprint(const rf_renderer *r)
+{
+    static const char version[] = RF_VERSION_STRING;
+    return hash_bytes(renderer_fingerprint(&r->r), version, sizeof version - 1);
 }
 
 void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats)

@@ -20,7 +20,9 @@ static const char usage_text[] =
     "\n"
     "commands:\n"
     "  check FILE...        parse and validate scenes, print a one-line summary each\n"
-    "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension)\n"
+    "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension);\n"
+    "                       --jobs N, --tile I/N, --region, --checkpoint DIR for big ones\n"
+    "  merge TILE... -o OUT put the tiles of one render together (spec/scaling.md)\n"
     "  export SCENE --to pov|json  write the scene as POV-Ray SDL or as JSON\n"
     "                       (spec/json.md; -o OUT, else stdout)\n"
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
@@ -100,5 +102,7 @@ int cli_main(int argc, char **argv)
         return cli_kit(argc - 1, argv + 1);
     if (strcmp(cmd, "conform") == 0)
         return cli_conform(argc - 1, argv + 1);
+    if (strcmp(cmd, "merge") == 0)
+        return cli_merge(argc - 1, argv + 1);
     return cli_usage_error("unknown command '%s'", cmd);
 }

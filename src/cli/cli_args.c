@@ -7,11 +7,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "api/convert.h"
 #include "base/text.h"
 #include "cli/cli_args.h"
 #include "cli/cli_signal.h"
 #include "io/diag_print.h"
+#include "io/image_io.h"
 #include "io/scene_file.h"
 
 /* "refray: error: " and the message, escaped and cut (text_escape):
@@ -297,4 +299,56 @@ int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i)
         return 0;
     }
     return 1;
+}
+
+int cli_image_option(rf_write_options *o, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i], *v;
+    if (strcmp(opt, "--linear") == 0)
+        o->linear = 1;
+    else if (strcmp(opt, "--exr-float") == 0)
+        o->exr_float = 1;
+    else if (strcmp(opt, "--exposure") == 0)
+        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &o->exposure_stops);
+    else if (strcmp(opt, "--bit-depth") == 0) {
+        long bits;
+        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
+            return 0;
+        if (bits != 8 && bits != 16) {
+            cli_usage_error("--bit-depth is 8 or 16");
+            return 0;
+        }
+        o->png_bits = (int)bits;
+    } else if (strcmp(opt, "--tone") == 0) {
+        if (!cli_take_value(argc, argv, i, &v))
+            return 0;
+        if (strcmp(v, "clamp") != 0 && strcmp(v, "reinhard") != 0) {
+            cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
+            return 0;
+        }
+        o->tone = strcmp(v, "reinhard") == 0 ? RF_TONE_REINHARD : RF_TONE_CLAMP;
+    } else {
+        return -1;
+    }
+    return 1;
+}
+
+int cli_check_output_dir(const char *path)
+{
+    char err[1024];
+    int status = img_write_check(path, err, sizeof err);
+    if (status != STATUS_OK)
+        cli_error("%s", err);
+    return status;
+}
+
+int cli_check_output_file(const char *command, const char *path)
+{
+    rf_format fmt = rf_format_from_path(path);
+    if (fmt == RF_FORMAT_UNKNOWN)
+        return cli_usage_error("%s: '%s' has no known image extension (.png .exr .pfm .ppm)", command, path);
+    if (!rf_format_available(fmt))
+        return cli_usage_error("%s: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
+                               command, path);
+    return cli_check_output_dir(path);
 }

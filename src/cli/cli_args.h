@@ -52,6 +52,17 @@ int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **
  * STATUS_USAGE after the error naming the flag that raises the limit. */
 int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
 
+/* The options of an image file (--linear --exr-float --exposure
+ * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */
+int cli_image_option(rf_write_options *o, int argc, char **argv, int *i);
+
+/* Before a long job, whether an image file can be written at path: a
+ * known extension this build writes (else the usage error, 64) in a
+ * path the atomic writer takes (else 74; io/image_io.h's img_write_check).  0 when it can; the error printed. */
+int cli_check_output_file(const char *command, const char *path);
+/* Only the path part of that (the format is checked by the caller). */
+int cli_check_output_dir(const char *path);
+
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */
 typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);

@@ -38,6 +38,7 @@ void cli_signal_install(void)
     for (size_t i = 0; i < sizeof handled / sizeof handled[0]; i++)
         if (sigaction(handled[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
             sigaction(handled[i], &sa, NULL);
+    signal(SIGXFSZ, SIG_IGN);
 }
 
 void cli_signal_cooperate(int on)

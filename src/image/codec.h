@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 #include "image/image.h"
+#include "image/tile.h"
 
 /* Each writer encodes a valid image (checked by the caller) to fp and
  * checks its own writes, asking o->cancel once per row; the caller
@@ -19,6 +20,9 @@ int img_png_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size
 int img_exr_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
 int img_exr_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen);
+int img_exr_write_tile(FILE *fp, const tile_info *t, const img_buf *img, const img_write_opts *o,
+                       img_write_stats *st, char *err, size_t errlen);
+int img_exr_read_tile(FILE *fp, const img_read_opts *o, tile_info *t, img_buf *out, char *err, size_t errlen);
 int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen);
 int img_pfm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen);

@@ -209,3 +209,47 @@ int img_check_format(const char *path, int writing, char *err, size_t errlen)
 {
     return check_format(path, img_format_from_path(path), writing, err, errlen);
 }
+
+/* ---- Tiles ---- */
+
+int img_write_exr_tile(FILE *fp, const tile_info *t, const img_buf *img, const img_write_opts *o, char *err,
+                       size_t errlen)
+{
+    img_write_opts defaults = img_write_opts_default();
+    img_write_stats st = {0, 0};
+    int rc;
+    if (!o)
+        o = &defaults;
+    if ((rc = check_write(NULL, IMG_FORMAT_EXR, img, o, err, errlen)) != STATUS_OK)
+        return rc;
+#if REFRAY_HAVE_EXR
+    rc = img_exr_write_tile(fp, t, img, o, &st, err, errlen);
+    if (rc == STATUS_OK && fflush(fp) != 0)
+        rc = img_error(err, errlen, STATUS_IO, "write error: %s", strerror(errno));
+#else
+    (void)fp;
+    (void)t;
+    rc = img_error(err, errlen, STATUS_INTERNAL, "no OpenEXR");
+#endif
+    if (o->stats)
+        *o->stats = st;
+    return rc;
+}
+
+int img_read_exr_tile(FILE *fp, const img_read_opts *o, tile_info *t, img_buf *img, char *err, size_t errlen)
+{
+    int rc = check_format(NULL, IMG_FORMAT_EXR, 0, err, errlen);
+    if (img)
+        memset(img, 0, sizeof *img);
+#if REFRAY_HAVE_EXR
+    if (rc == STATUS_OK)
+        rc = img_exr_read_tile(fp, o, t, img, err, errlen);
+#else
+    (void)fp;
+    (void)o;
+    (void)t;
+#endif
+    if (rc != STATUS_OK && img)
+        img_free(img);
+    return rc;
+}

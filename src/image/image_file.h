@@ -8,6 +8,7 @@
 
 #include <stdio.h>
 #include "image/image.h"
+#include "image/tile.h"
 
 typedef enum img_format {
     IMG_FORMAT_UNKNOWN = 0,
@@ -61,5 +62,24 @@ int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_wri
  * STATUS_IO for a read error; STATUS_NO_MEMORY when out of memory.  On
  * failure *out is empty (no pixels). */
 int img_read_stream(FILE *fp, img_format fmt, const img_read_opts *o, img_buf *out, char *err, size_t errlen);
+
+/*
+ * Tiles in OpenEXR (image/tile.h, spec/scaling.md [TILE-FILE-1]): the
+ * display window is t's whole image, the data window its region, whose
+ * pixels img holds (region-sized).  R, G, B are written as img_write
+ * writes them with o; the channels f64hi.R .. f64lo.B hold each value's
+ * double exactly; the attributes refrayKey and refrayTile hold the key and
+ * the layout's version.  To fp, which must be seekable; returns as
+ * img_write_stream, STATUS_USAGE in a build without OpenEXR.
+ */
+int img_write_exr_tile(FILE *fp, const tile_info *t, const img_buf *img, const img_write_opts *o, char *err,
+                       size_t errlen);
+
+/* Reads an OpenEXR tile from fp into *t, and, unless img is NULL, the
+ * region's exact doubles into *img (the caller frees it).  The whole
+ * image's size is held to o->max_pixels (o NULL: the default) before any
+ * pixel is decoded.  Returns as img_read; STATUS_DATA for a file that is
+ * not a refray tile or is over the limit. */
+int img_read_exr_tile(FILE *fp, const img_read_opts *o, tile_info *t, img_buf *img, char *err, size_t errlen);
 
 #endif

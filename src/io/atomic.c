@@ -115,8 +115,7 @@ int file_write_check(const char *path, file_target *t, char *why, size_t why_siz
     return rc == STATUS_OK ? check_existing(path, t, why, why_size) : rc;
 }
 
-/* ".refray-tmp-PID-XXXXXX": the pid, or -1 when name is not one. */
-static long temp_owner(const char *name)
+long file_temp_owner(const char *name)
 {
     size_t n = sizeof TEMP_PREFIX - 1;
     if (strncmp(name, TEMP_PREFIX, n) != 0)
@@ -137,7 +136,7 @@ int file_remove_stale(const char *dir)
         return 0;
     time_t now = time(NULL);
     for (struct dirent *e; (e = readdir(d)) != NULL;) {
-        long pid = temp_owner(e->d_name);
+        long pid = file_temp_owner(e->d_name);
         struct stat sb;
         if (pid < 0 || fstatat(dirfd(d), e->d_name, &sb, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(sb.st_mode) ||
             sb.st_uid != geteuid() || now - sb.st_mtime < STALE_SECONDS)

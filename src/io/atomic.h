@@ -98,4 +98,9 @@ int file_write_bytes(const char *path, const void *data, size_t len, char *why, 
 /* Removes the stale temporaries of dir (see the top); the number removed. */
 int file_remove_stale(const char *dir);
 
+/* The process id in a temporary's name ".refray-tmp-PID-XXXXXX", or -1
+ * when name is not one (for a directory refray owns, such as a
+ * checkpoint, that may remove them sooner than file_remove_stale). */
+long file_temp_owner(const char *name);
+
 #endif

@@ -10,6 +10,7 @@
 #include <time.h>
 #include "render/camera.h"
 #include "render/render.h"
+#include "base/hash.h"
 #include "base/sampler.h"
 #include "render/shade.h"
 
@@ -97,9 +98,66 @@ void renderer_free(renderer *r)
     tracer_free(&r->tracer);
 }
 
+/* A coordinate as the bits of its double: a long double `real` has
+ * padding bytes, which hold nothing a process can count on. */
+static uint64_t hash_real(uint64_t h, real v)
+{
+    double d = (double)v;
+    uint64_t bits;
+    memcpy(&bits, &d, sizeof bits);
+    return hash_u64(h, bits);
+}
+
+static uint64_t hash_points(uint64_t h, const vec3 *p, int n)
+{
+    h = hash_u64(h, (uint64_t)n);
+    for (int i = 0; i < n; i++)
+        h = hash_real(hash_real(hash_real(h, p[i].x), p[i].y), p[i].z);
+    return h;
+}
+
+/* A mesh file's text is let go once its mesh is built (source.h), so a
+ * mesh counts by what was built from it: every array of its store. */
+static uint64_t hash_meshes(uint64_t h, const scene_model *s)
+{
+    for (int i = 0; i < s->mesh_count; i++) {
+        const scene_trimesh *g = &s->meshes[i].geom;
+        size_t t = (size_t)g->tri_count;
+        h = hash_points(h, g->positions, g->position_count);
+        h = hash_points(h, g->normals, g->normals ? g->normal_count : 0);
+        h = hash_u64(h, (uint64_t)t);
+        h = hash_bytes(h, g->tri, t * sizeof *g->tri);
+        h = hash_bytes(h, g->tri_normal, g->tri_normal ? t * sizeof *g->tri_normal : 0);
+        h = hash_bytes(h, g->open, g->open ? t : 0);
+        h = hash_u64(h, (uint64_t)g->closed);
+    }
+    return h;
+}
+
+uint64_t renderer_fingerprint(const renderer *r)
+{
+    const source_set *src = &r->tracer.scene->sources;
+    const render_stats *st = &r->stats;
+    uint64_t h = hash_bytes(HASH_FNV_START, "refray pixels 1", 15);
+    for (int i = 0; i < src->count; i++) {
+        h = hash_u64(h, (uint64_t)src->files[i]->len);
+        h = hash_bytes(h, src->files[i]->text, src->files[i]->len);
+    }
+    h = hash_meshes(h, r->tracer.scene);
+    h = hash_u64(h, (uint64_t)r->opts.facet_shadows);
+    h = hash_u64(h, (uint64_t)st->width);
+    h = hash_u64(h, (uint64_t)st->height);
+    h = hash_u64(h, (uint64_t)st->samples);
+    h = hash_u64(h, (uint64_t)st->max_depth);
+    h = hash_u64(h, (uint64_t)r->opts.light_samples);
+    return hash_u64(h, (uint64_t)sizeof(real));
+}
+
 /* v as float; beyond FLT_MAX (a radiance can reach DBL_MAX) the largest
- * float, so a float target never holds an infinity. */
-static float to_float(real v)
+ * float, so a float target never holds an infinity.  From the double a
+ * double target would hold, so that a float region has the floats a whole
+ * image written as 32-bit float has (with a long double `real` too). */
+static float to_float(double v)
 {
     return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v;
 }
@@ -108,9 +166,9 @@ static void store(const render_target *target, int x, int y, rgb c)
 {
     size_t at = (size_t)(y - target->y0) * target->stride + 3 * (size_t)(x - target->x0);
     if (target->f32) {
-        target->f32[at] = to_float(c.x);
-        target->f32[at + 1] = to_float(c.y);
-        target->f32[at + 2] = to_float(c.z);
+        target->f32[at] = to_float((double)c.x);
+        target->f32[at + 1] = to_float((double)c.y);
+        target->f32[at + 2] = to_float((double)c.z);
     } else {
         target->f64[at] = (double)c.x;
         target->f64[at + 1] = (double)c.y;

@@ -84,6 +84,16 @@ int renderer_region(renderer *r, const render_target *target);
 void renderer_free(renderer *r);
 
 /*
+ * A 64-bit fingerprint of what decides r's pixels: the text of every file
+ * its scene's load read (in load order, without their names, so a scene
+ * copied to another machine keeps it), the image size, the k x k grid,
+ * max_depth, the light-sample override, and the width of `real`.  Two
+ * renderers with equal fingerprints render the same pixels (FNV-1a,
+ * base/hash.h: an accident, not an attack, is what it guards against).
+ */
+uint64_t renderer_fingerprint(const renderer *r);
+
+/*
  * Renders scene into out (created here; free it with img_free).  Returns
  * STATUS_OK, STATUS_CANCELLED when progress asked to stop,
  * STATUS_DATA when a ray tree passed max_tree_rays (stats->trace
