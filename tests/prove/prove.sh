@@ -83,15 +83,19 @@ if [ "$what" = all ] || [ "$what" = eva ] || [ "$what" = quick ]; then
     jobs=${PROVE_JOBS:-2}
     for j in $(seq 1 "$jobs"); do mkdir -p "$out/part$j"; : >"$out/part$j/boxes.h"; done
     n=0
-    { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
-      echo "BOX(0x1p1023, DBL_MAX)"; } | while read -r box; do
+    # PROVE_KMIN, PROVE_KMAX: fewer binades (tests/prove/mutants.sh: a
+    # mutant needs one box that shows it).
+    { for k in $(seq "${PROVE_KMIN:--1074}" "${PROVE_KMAX:-1022}"); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
+      [ "${PROVE_KMAX:-1022}" = 1022 ] && echo "BOX(0x1p1023, DBL_MAX)"; } | while read -r box; do
         echo "$box" >>"$out/part$((n % jobs + 1))/boxes.h"; n=$((n + 1))
     done
     # light_concentric's boxes (tests/prove/eva_render.c): s = 1/2, and
     # 1/2 -+ [2^-(m+1), 2^-m].
+    # PROVE_CONCENTRIC_M: fewer (mutants.sh).
+    cm=${PROVE_CONCENTRIC_M:-53}
     { echo "CBOX(0.5, 0.5)"
-      for m in $(seq 1 53); do echo "CBOX(0.5 - 0x1p-$m, 0.5 - 0x1p-$((m + 1)))"; done
-      for m in $(seq 1 52); do echo "CBOX(0.5 + 0x1p-$((m + 1)), 0.5 + 0x1p-$m)"; done; } >"$out/concentric.h"
+      for m in $(seq 1 "$cm"); do echo "CBOX(0.5 - 0x1p-$m, 0.5 - 0x1p-$((m + 1)))"; done
+      for m in $(seq 1 "$((cm < 52 ? cm : 52))"); do echo "CBOX(0.5 + 0x1p-$((m + 1)), 0.5 + 0x1p-$m)"; done; } >"$out/concentric.h"
     echo "== Eva (-warn-special-float non-finite)"
     runs=("shade eva_shade saturating_div,scale_indices,vec_length,vec_normalize - $src/render/shade.c tests/prove/eva_shade.c")
     # The ray spawn functions, the camera ray, the light samples
