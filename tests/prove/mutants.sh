@@ -24,7 +24,12 @@ mutant() {   # i: run mutant i, write $base/<i>/result
     mkdir -p "$dir"
     cp -r src "$dir/src"
     perl -0pi -e "$subst" "$dir/src/$file"
-    goal=${fn}_ensures$([ "$k" = 1 ] || echo "_$k")
+    # k: an ensures clause (its number), or another goal (its name's tail)
+    case $k in
+    1) goal=${fn}_ensures prop=@ensures ;;
+    [0-9]*) goal=${fn}_ensures_$k prop=@ensures ;;
+    *) goal=${fn}_$k prop= ;;
+    esac
     if cmp -s "src/$file" "$dir/src/$file"; then
         echo "MISSED|$i|$file|$fn|$goal|$bug|the substitution did not apply" >"$dir/result"
         return
@@ -32,7 +37,7 @@ mutant() {   # i: run mutant i, write $base/<i>/result
     case $how in
     wp)
         case $file in render/shade.c|base/vec.h) wp=shade ;; *) wp=rays ;; esac
-        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
+        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_WP_PROP=$prop PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
             bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
         broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | sed 's/_part[0-9]*$//' | sort -u | tr '\n' ' ')
         ;;
@@ -90,7 +95,12 @@ covered=0 clauses=0
 for f in $files; do
     while read -r fn k _ kind; do
         [ "$kind" = admitted ] && continue
-        goal=${fn}_ensures$([ "$k" = 1 ] || echo "_$k")
+        # k: an ensures clause (its number), or another goal (its name's tail)
+    case $k in
+    1) goal=${fn}_ensures prop=@ensures ;;
+    [0-9]*) goal=${fn}_ensures_$k prop=@ensures ;;
+    *) goal=${fn}_$k prop= ;;
+    esac
         clauses=$((clauses + 1))
         killers=$(grep -l "^KILLED|[0-9]*|$f|[^|]*|$goal|" "$base"/*/result 2>/dev/null | sed 's|.*/\([0-9]*\)/result|\1|' | sort -n | tr '\n' ' ')
         if [ -n "$killers" ]; then covered=$((covered + 1)); else killers="NONE"; fi
