@@ -61,6 +61,7 @@ static vec3 screen_offset(const scene_camera *cam, real half, real aspect, real 
 ray camera_ray(const scene_camera *cam, int width, int height, real x, real y)
 {
     real aspect = (real)height / (real)width;
+    /*@ assert aspect > 0; */
     real sx = 2.0 * x / width - 1.0;   /* -1 at the left edge, +1 at the right */
     real sy = 1.0 - 2.0 * y / height;  /* +1 at the top, -1 at the bottom */
     ray r;
