@@ -9,7 +9,8 @@
 # clauses no mutant kills.  Exits 1 if a mutant misses its clause.
 #   PROVE_JOBS (mutants at once, default 2), PROVE_TIMEOUT (s a goal, 5:
 #   unmutated, the slowest takes 0.5 s),
-#   PROVE_MUTANTS (only these numbers, e.g. "3 7 12").
+#   PROVE_MUTANTS (only these numbers, e.g. "3 7 12"), PROVE_KEEP_BASELINE
+#   (set: reuse the last run's list of clauses WP proves only split).
 set -u
 cd "$(dirname "$0")/../.."
 out=${PROVE_OUT:-build/prove}
@@ -37,7 +38,14 @@ mutant() {   # i: run mutant i, write $base/<i>/result
     case $how in
     wp)
         case $file in render/shade.c|base/vec.h) wp=shade ;; *) wp=rays ;; esac
-        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_WP_PROP=$prop PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
+        # One goal a clause (fast), but split where the unmutated clause
+        # needs it to be proved (the baseline's list): else a clause the
+        # provers cannot close whole would pass for killed.
+        split=
+        [ -n "$prop" ] && grep -qx "$goal" "$base/hard" && split=-wp-split
+        [ -z "$prop" ] && split=-wp-split
+        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_WP_PROP=$prop PROVE_WP_SPLIT=$split \
+            PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
             bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
         broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | sed 's/_part[0-9]*$//' | sort -u | tr '\n' ' ')
         ;;
@@ -78,6 +86,13 @@ start=$(date +%s)
 mkdir -p "$base"
 grep -v '^#' "$list" | grep -v '^ *$' >"$base/list"   # mutant i is line i
 n=$(wc -l <"$base/list")
+# Baseline: the ensures clauses WP does not prove unmutated when each is
+# one goal (not split into its conjuncts); their mutants run split.
+if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
+    PROVE_OUT=$base/baseline PROVE_WP_SPLIT= PROVE_WP_PROP=@ensures PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
+        bash tests/prove/prove.sh wp >"$base/baseline.log" 2>&1
+    sed -n 's/^ *unproved: typed_real_//p' "$base/baseline.log" | sort -u >"$base/hard"
+fi
 # shellcheck disable=SC2086 # a list of numbers
 printf '%s\n' ${PROVE_MUTANTS:-$(seq 1 "$n")} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
 missed=0 total=0

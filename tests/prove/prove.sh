@@ -15,7 +15,8 @@
 # but a loaded machine stretches wall-clock limits), PROVE_SRC (the source tree, default
 # src: tests/prove/mutants.sh points it at a mutated copy), PROVE_FCT (WP
 # only these functions, comma-separated), PROVE_WP_PROP (WP only these
-# properties, -wp-prop), PROVE_WP (which WP runs: shade,
+# properties, -wp-prop), PROVE_WP_SPLIT (empty: one goal a clause, not one
+# a conjunct), PROVE_WP (which WP runs: shade,
 # rays or both, the default), PROVE_EVA (only the Eva runs whose names it
 # lists, comma-separated).
 set -u
@@ -137,7 +138,7 @@ fi
 if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-shade}" != rays ]; then
     start=$(date +%s)
     echo "== WP (-wp-model real; Z3, CVC4; ${timeout} s a goal)"
-    fc "" "$src/render/shade.c" tests/prove/libm.c -wp -wp-model real -wp-split \
+    fc "" "$src/render/shade.c" tests/prove/libm.c -wp -wp-model real ${PROVE_WP_SPLIT--wp-split} \
         -wp-prover z3,cvc4 -wp-timeout "$timeout" -wp-par 2 ${PROVE_FCT:+-wp-fct "$PROVE_FCT"} ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} \
         >"$out/wp.log" 2>&1
     rc=$?
@@ -184,7 +185,7 @@ if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade 
     while IFS='|' read -r file list; do
         [ -n "${PROVE_FCT:-}" ] && case ",$list," in *",$PROVE_FCT,"*) list=$PROVE_FCT ;; *) continue ;; esac
         log=$out/wp_$(basename "$file" .c).log
-        fc "" "$file" tests/prove/libm.c -wp -wp-model real -wp-split -wp-prover z3,cvc4 \
+        fc "" "$file" tests/prove/libm.c -wp -wp-model real ${PROVE_WP_SPLIT--wp-split} -wp-prover z3,cvc4 \
             -wp-timeout "$timeout" -wp-par 2 -wp-fct "$list" ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
         rc=$?
         awk -v fns="${list//,/ }" '
