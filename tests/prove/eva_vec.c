@@ -1,5 +1,6 @@
 /*
- * eva_vec.c - Eva's driver for vec_length and vec_normalize (src/base/vec.h).
+ * eva_vec.c - Eva's driver for vec_length, vec_normalize and vec_length_fast
+ * (src/base/vec.h).
  *
  * Their bodies divide each component by the largest one, M: a ratio of at
  * most 1, which an analysis of intervals cannot see when M ranges over
@@ -43,12 +44,15 @@ static void binade(real lo, real hi)
     for (int axis = 0; axis < 3; axis++) {
         eva_sink = vec_normalize(largest_at(axis, 1, lo, hi));
         eva_sink = vec_normalize(largest_at(axis, -1, lo, hi));
+        eva_sink.x = vec_length_fast(largest_at(axis, 1, lo, hi));
+        eva_sink.x = vec_length_fast(largest_at(axis, -1, lo, hi));
     }
 }
 
 void eva_vec(void)
 {
     eva_sink = vec_normalize(vec_make(0, 0, 0));
+    eva_sink.x = vec_length_fast(vec_make(0, 0, 0));
 #define BOX(lo, hi) binade(lo, hi);
 #include "boxes.h"
 #undef BOX
