@@ -41,3 +41,19 @@ oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d,
     *out = sh.body;
     return ORACLE_EXACT;
 }
+
+oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, double y, rgb *out)
+{
+    oracle_frustum f = oracle_frustum_of(&v->scene->prims[0]);
+    oracle_ray ray = oracle_view_ray(v, x, y);
+    double s;
+    vec3 nrm;
+    oracle_chord_kind kind = oracle_line_frustum(&f, ray.origin, ray.dir, &s, &nrm);
+    if (kind == ORACLE_CHORD_GRAZE)
+        return ORACLE_AMBIGUOUS;
+    if (kind == ORACLE_CHORD_MISS) {
+        *out = v->scene->image.background;
+        return ORACLE_EXACT;
+    }
+    return quadric_family_shade(v, vec_add(ray.origin, vec_scale(ray.dir, s)), nrm, ray.dir, NULL, NULL, out);
+}

@@ -23,4 +23,10 @@ int quadric_family_accepts(const oracle_view *v, scene_prim_kind kind, const cha
 oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d, oracle_shadow_fn shadow,
                                    const void *ctx, rgb *out);
 
+/* The radiance of families lambert_cylinder and lambert_cone at (x, y): the
+ * view ray's first point on the closed frustum (oracle_line_frustum)
+ * shaded by quadric_family_shade, the background where it misses, and
+ * ORACLE_AMBIGUOUS where it grazes. */
+oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, double y, rgb *out);
+
 #endif
