@@ -96,23 +96,24 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
  * checked against the limits once every option is read
  * (cli_check_sizes), so that `--width 20000 --max-width 20000` and the
  * reverse order mean the same ([REL-CLI-1]). */
-int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
+static int size_option(int argc, char **argv, int *i, int *width, int *height, int *samples, int *max_depth,
+                       int *light_samples)
 {
     const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (strcmp(opt, "--no-shortcuts") == 0)
+    int *field = strcmp(opt, "--width") == 0          ? width
+                 : strcmp(opt, "--height") == 0       ? height
+                 : strcmp(opt, "--samples") == 0      ? samples
+                 : strcmp(opt, "--max-depth") == 0    ? max_depth
+                 : strcmp(opt, "--light-samples") == 0 ? light_samples
+                                                       : NULL;
+    return field ? cli_int_value(argc, argv, i, LIMIT_CEILING, field) : -1;
+}
+
+int cli_render_option(render_opts *o, int argc, char **argv, int *i)
+{
+    if (strcmp(argv[*i], "--no-shortcuts") == 0)
         return o->no_shortcuts = 1;
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth, &o->light_samples);
 }
 
 /* One sizing option against its limit; 0 after the usage error. */
@@ -246,21 +247,10 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
+int cli_view_option(verify_opts *o, int allow_light, int argc, char **argv, int *i)
 {
-    const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth,
+                       allow_light ? &o->light_samples : NULL);
 }
 
 int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size)

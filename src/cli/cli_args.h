@@ -44,9 +44,9 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
  * --light-samples) and --no-shortcuts into o; 1 consumed, 0 error, -1 not
- * one.  The sizes are checked against lim only by cli_check_sizes, after
- * every option. */
-int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
+ * one.  The sizes are checked against the limits only by cli_check_sizes,
+ * after every option. */
+int cli_render_option(render_opts *o, int argc, char **argv, int *i);
 
 /* The sizing options given (0: not given) against the limits: 0, or
  * STATUS_USAGE after the error naming the flag that raises the limit. */
@@ -102,7 +102,7 @@ int cli_usage_error(const char *fmt, ...)
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */
-int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i);
+int cli_view_option(verify_opts *o, int allow_light, int argc, char **argv, int *i);
 
 /* 1 when view v (the scene's size with the overrides) is within
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is

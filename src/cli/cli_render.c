@@ -113,7 +113,7 @@ static int render_option(void *args, int argc, char **argv, int *i)
 {
     render_args *a = args;
     const char *opt = argv[*i];
-    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    int sized = cli_render_option(&a->render, argc, argv, i);
     if (sized >= 0)
         return sized;
     if ((sized = scaling_option(a, argc, argv, i)) >= 0)

@@ -67,7 +67,7 @@ static int stab_option(void *args, int argc, char **argv, int *i)
 {
     stab_args *a = args;
     const char *opt = argv[*i], *v;
-    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    int sized = cli_render_option(&a->render, argc, argv, i);
     if (sized >= 0)
         return sized;
     if (strcmp(opt, "--threshold") == 0)

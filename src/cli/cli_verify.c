@@ -75,7 +75,7 @@ static int verify_option(verify_args *a, int argc, char **argv, int *i)
         a->jobs = jobs ? (int)jobs : pool_cpu_count();
         return 1;
     }
-    return cli_view_option(&a->view, &a->scene.limits, 1, argc, argv, i);
+    return cli_view_option(&a->view, 1, argc, argv, i);
 }
 
 /* The sweep is parsed after every option, so that a limit given after
