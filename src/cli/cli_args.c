@@ -135,8 +135,8 @@ int cli_check_sizes(int width, int height, int samples, int light_samples, int m
     return ok ? 0 : STATUS_USAGE;
 }
 
-int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
-                        const char **input, cli_option_fn option, void *args)
+int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                      cli_operand_fn operand, cli_option_fn option, void *args)
 {
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
@@ -151,9 +151,9 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
             continue;
         }
         if (argv[i][0] != '-' || !argv[i][1]) {
-            if (*input)
-                return cli_usage_error("%s: one scene at a time ('%s' and '%s')", command, *input, argv[i]);
-            *input = argv[i];
+            int status = operand(args, argv[i]);
+            if (status != 0)
+                return status;
             continue;
         }
         int r = option(args, argc, argv, &i);
@@ -162,9 +162,40 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         if (r < 0)
             return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
     }
-    if (!*input)
-        return cli_usage_error("%s: no scene given", command);
     return 0;
+}
+
+/* cli_parse_one_scene's arguments, for its operand and option. */
+typedef struct one_scene {
+    const char *command;
+    const char **input;
+    cli_option_fn option;
+    void *args;
+} one_scene;
+
+static int one_scene_operand(void *ctx, const char *arg)
+{
+    one_scene *o = ctx;
+    if (*o->input)
+        return cli_usage_error("%s: one scene at a time ('%s' and '%s')", o->command, *o->input, arg);
+    *o->input = arg;
+    return 0;
+}
+
+static int one_scene_option(void *ctx, int argc, char **argv, int *i)
+{
+    const one_scene *o = ctx;
+    return o->option(o->args, argc, argv, i);
+}
+
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args)
+{
+    one_scene o = {command, input, option, args};
+    int status = cli_parse_command(command, help, argc, argv, scene, one_scene_operand, one_scene_option, &o);
+    if (status == 0 && !*input)
+        return cli_usage_error("%s: no scene given", command);
+    return status;
 }
 
 void cli_scene_opts_init(cli_scene_opts *o)

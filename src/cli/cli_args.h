@@ -67,11 +67,23 @@ int cli_check_output_dir(const char *path);
  * already reported, -1 not one of its options. */
 typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
 
+/* What a command does with an argument that is not an option (a scene or
+ * a file): 0, or STATUS_USAGE after the error was printed. */
+typedef int (*cli_operand_fn)(void *args, const char *arg);
+
 /*
- * The argument loop of a command that reads one scene: --help (prints help,
- * returns -1), the shared scene options, one SCENE into *input, and the
- * command's own options through option.  Returns 0 to go on, -1 after help,
- * or STATUS_USAGE after the error was printed.
+ * The argument loop of a command: --help (prints help, returns -1), the
+ * shared scene options into scene, every operand ("-" included) through
+ * operand, and the command's own options through option (an unknown one
+ * is reported here).  Returns 0 to go on, -1 after help, or STATUS_USAGE
+ * after the error was printed.
+ */
+int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                      cli_operand_fn operand, cli_option_fn option, void *args);
+
+/*
+ * The argument loop of a command that reads one scene: cli_parse_command
+ * with one SCENE into *input (a second one, or none, is an error).
  */
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                         const char **input, cli_option_fn option, void *args);
