@@ -42,6 +42,18 @@ oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d,
     return ORACLE_EXACT;
 }
 
+oracle_status quadric_family_chord(const oracle_view *v, const oracle_ray *ray, oracle_chord_kind kind, double s,
+                                   vec3 n, oracle_shadow_fn shadow, const void *ctx, rgb *out)
+{
+    if (kind == ORACLE_CHORD_GRAZE)
+        return ORACLE_AMBIGUOUS;
+    if (kind == ORACLE_CHORD_MISS) {
+        *out = v->scene->image.background;
+        return ORACLE_EXACT;
+    }
+    return quadric_family_shade(v, vec_add(ray->origin, vec_scale(ray->dir, s)), n, ray->dir, shadow, ctx, out);
+}
+
 oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, double y, rgb *out)
 {
     oracle_frustum f = oracle_frustum_of(&v->scene->prims[0]);
@@ -49,11 +61,5 @@ oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, do
     double s;
     vec3 nrm;
     oracle_chord_kind kind = oracle_line_frustum(&f, ray.origin, ray.dir, &s, &nrm);
-    if (kind == ORACLE_CHORD_GRAZE)
-        return ORACLE_AMBIGUOUS;
-    if (kind == ORACLE_CHORD_MISS) {
-        *out = v->scene->image.background;
-        return ORACLE_EXACT;
-    }
-    return quadric_family_shade(v, vec_add(ray.origin, vec_scale(ray.dir, s)), nrm, ray.dir, NULL, NULL, out);
+    return quadric_family_chord(v, &ray, kind, s, nrm, NULL, NULL, out);
 }
