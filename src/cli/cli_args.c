@@ -135,6 +135,11 @@ int cli_check_sizes(int width, int height, int samples, int light_samples, int m
     return ok ? 0 : STATUS_USAGE;
 }
 
+int cli_check_render_sizes(const render_opts *r, const scene_limits *lim)
+{
+    return cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth, lim);
+}
+
 int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                       cli_operand_fn operand, cli_option_fn option, void *args)
 {

@@ -51,6 +51,8 @@ int cli_render_option(render_opts *o, int argc, char **argv, int *i);
 /* The sizing options given (0: not given) against the limits: 0, or
  * STATUS_USAGE after the error naming the flag that raises the limit. */
 int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
+/* cli_check_sizes of a render's options. */
+int cli_check_render_sizes(const render_opts *r, const scene_limits *lim);
 
 /* The options of an image file (--linear --exr-float --exposure
  * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */

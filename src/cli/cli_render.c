@@ -135,9 +135,7 @@ static int parse_args(render_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("render", render_help, argc, argv, &a->scene, &a->input, render_option, a);
     if (status != 0)
         return status;
-    const render_opts *r = &a->render;
-    if ((status = cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth,
-                                  &a->scene.limits)) != 0)
+    if ((status = cli_check_render_sizes(&a->render, &a->scene.limits)) != 0)
         return status;
     if (!a->output)
         return cli_usage_error("render: no output given (-o OUT)");
