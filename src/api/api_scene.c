@@ -102,34 +102,35 @@ static void load_opts(const rf_load_options *o, scene_load_opts *out)
     out->cancel_user = o->cancel_user;
 }
 
-rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
-                               rf_scene **out)
+/* The body of both loads: root's text when root is given, else the file at
+ * path.  A NULL out, or arguments the caller found bad, is RF_ERR_USAGE
+ * (with *out NULL when there is an out). */
+static rf_status load(const scene_source *root, const char *path, int bad, const rf_load_options *o,
+                      rf_scene **out)
 {
     scene_load_opts lo;
     int status;
     if (!out)
         return RF_ERR_USAGE;
     *out = NULL;
-    if (!name || (!text && size > 0))
+    if (bad)
         return RF_ERR_USAGE;
     load_opts(o, &lo);
-    scene_source root = {name, NULL, text, size, 0};
-    *out = (rf_scene *)(void *)scene_file_load_source(&root, &lo, &status);
+    *out = (rf_scene *)(void *)(root ? scene_file_load_source(root, &lo, &status)
+                                     : scene_file_load_with(path, &lo, &status));
     return api_status(status);
+}
+
+rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
+                               rf_scene **out)
+{
+    scene_source root = {name, NULL, text, size, 0};
+    return load(&root, NULL, !name || (!text && size > 0), o, out);
 }
 
 rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scene **out)
 {
-    scene_load_opts lo;
-    int status;
-    if (!out)
-        return RF_ERR_USAGE;
-    *out = NULL;
-    if (!path)
-        return RF_ERR_USAGE;
-    load_opts(o, &lo);
-    *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
-    return api_status(status);
+    return load(NULL, path, !path, o, out);
 }
 
 void rf_scene_free(rf_scene *scene)

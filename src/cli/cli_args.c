@@ -96,23 +96,24 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
  * checked against the limits once every option is read
  * (cli_check_sizes), so that `--width 20000 --max-width 20000` and the
  * reverse order mean the same ([REL-CLI-1]). */
-int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
+static int size_option(int argc, char **argv, int *i, int *width, int *height, int *samples, int *max_depth,
+                       int *light_samples)
 {
     const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (strcmp(opt, "--no-shortcuts") == 0)
+    int *field = strcmp(opt, "--width") == 0          ? width
+                 : strcmp(opt, "--height") == 0       ? height
+                 : strcmp(opt, "--samples") == 0      ? samples
+                 : strcmp(opt, "--max-depth") == 0    ? max_depth
+                 : strcmp(opt, "--light-samples") == 0 ? light_samples
+                                                       : NULL;
+    return field ? cli_int_value(argc, argv, i, LIMIT_CEILING, field) : -1;
+}
+
+int cli_render_option(render_opts *o, int argc, char **argv, int *i)
+{
+    if (strcmp(argv[*i], "--no-shortcuts") == 0)
         return o->no_shortcuts = 1;
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth, &o->light_samples);
 }
 
 /* One sizing option against its limit; 0 after the usage error. */
@@ -134,8 +135,13 @@ int cli_check_sizes(int width, int height, int samples, int light_samples, int m
     return ok ? 0 : STATUS_USAGE;
 }
 
-int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
-                        const char **input, cli_option_fn option, void *args)
+int cli_check_render_sizes(const render_opts *r, const scene_limits *lim)
+{
+    return cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth, lim);
+}
+
+int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                      cli_operand_fn operand, cli_option_fn option, void *args)
 {
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
@@ -150,9 +156,9 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
             continue;
         }
         if (argv[i][0] != '-' || !argv[i][1]) {
-            if (*input)
-                return cli_usage_error("%s: one scene at a time ('%s' and '%s')", command, *input, argv[i]);
-            *input = argv[i];
+            int status = operand(args, argv[i]);
+            if (status != 0)
+                return status;
             continue;
         }
         int r = option(args, argc, argv, &i);
@@ -161,9 +167,40 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         if (r < 0)
             return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
     }
-    if (!*input)
-        return cli_usage_error("%s: no scene given", command);
     return 0;
+}
+
+/* cli_parse_one_scene's arguments, for its operand and option. */
+typedef struct one_scene {
+    const char *command;
+    const char **input;
+    cli_option_fn option;
+    void *args;
+} one_scene;
+
+static int one_scene_operand(void *ctx, const char *arg)
+{
+    one_scene *o = ctx;
+    if (*o->input)
+        return cli_usage_error("%s: one scene at a time ('%s' and '%s')", o->command, *o->input, arg);
+    *o->input = arg;
+    return 0;
+}
+
+static int one_scene_option(void *ctx, int argc, char **argv, int *i)
+{
+    const one_scene *o = ctx;
+    return o->option(o->args, argc, argv, i);
+}
+
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args)
+{
+    one_scene o = {command, input, option, args};
+    int status = cli_parse_command(command, help, argc, argv, scene, one_scene_operand, one_scene_option, &o);
+    if (status == 0 && !*input)
+        return cli_usage_error("%s: no scene given", command);
+    return status;
 }
 
 void cli_scene_opts_init(cli_scene_opts *o)
@@ -246,21 +283,10 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
+int cli_view_option(verify_opts *o, int allow_light, int argc, char **argv, int *i)
 {
-    const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth,
+                       allow_light ? &o->light_samples : NULL);
 }
 
 int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size)

@@ -125,9 +125,6 @@ int lower_primitive(loader *L, const ast *block);
 /* Parses sources.files[file] (PLY by its name or first line, else OBJ)
  * into *pm, which must be freed after; 1, or 0 after reporting. */
 int lower_parse_mesh(loader *L, int file, polymesh *pm);
-/* Whether the transform mirrors (negative determinant): triangles then
- * swap two corners to keep their normal on the mirrored side. */
-int lower_mirrors(const xform *w);
 
 /* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
  * `at`; its text held in *held, given back here once the mesh is built)
@@ -139,6 +136,11 @@ int lower_mirrors(const xform *w);
  * Returns 1, or 0 after reporting an error. */
 int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
                const xform *w, const xform *l);
+
+/* lower_frame.c: a shape's transforms once they are read. */
+/* Whether the transform mirrors (negative determinant): triangles then
+ * swap two corners to keep their normal on the mirrored side. */
+int lower_mirrors(const xform *w);
 /* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
 void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit
@@ -149,8 +151,6 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n);
  * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
 int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim);
 void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
-/* 1 when every number of the placed shape is finite and in its domain. */
-int lower_quadric_in_range(const scene_prim *prim);
 
 /*
  * check.c: the rules of the scene model, shared by every front end.  Each
@@ -158,6 +158,9 @@ int lower_quadric_in_range(const scene_prim *prim);
  * check_span(at, field).
  */
 src_span check_span(const check_at *at, int field);
+/* 1 when every number of a placed cylinder, cone or torus is finite and in
+ * its domain. */
+int lower_quadric_in_range(const scene_prim *prim);
 /* lo <= x <= hi, an end exclusive when lo_open / hi_open; what names x. */
 int check_range(loader *L, const check_at *at, int field, const char *what, double x, double lo, int lo_open,
                 double hi, int hi_open);
