@@ -83,7 +83,11 @@ typedef enum rf_status {
 /* A NULL where this reference does not say one is allowed (an out pointer,
  * a scene name, its text with a size > 0, a path, a scene, a renderer, an
  * image, a stream) returns RF_ERR_USAGE, with an out pointer set to NULL;
- * rf_scene_get_info of NULL fills zeros.  Limits above INT_MAX act as
+ * rf_scene_get_info of NULL fills zeros, and so do rf_renderer_size and
+ * rf_renderer_stats of a NULL renderer (into the pointers that are not
+ * NULL); rf_renderer_fingerprint, rf_image_width and rf_image_height of
+ * NULL return 0, rf_image_pixels NULL; an init of NULL, a free of NULL and
+ * rf_diagnostic_print with a NULL stream or record do nothing.  Limits above INT_MAX act as
  * INT_MAX for the counts an int holds (width, height, samples, depth). */
 
 /* A short lower-case description of status ("out of memory"). */

@@ -10,6 +10,8 @@
 
 void rf_load_options_init(rf_load_options *o)
 {
+    if (!o)
+        return;
     memset(o, 0, sizeof *o);
     scene_limits l = scene_default_limits();
     o->limits = api_limits_out(&l);
@@ -36,6 +38,8 @@ static void to_caller(void *user, const diag_record *r)
 void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
 {
     diag_record r;
+    if (!stream || !d)
+        return;
     r.level = d->severity == RF_SEVERITY_ERROR ? DIAG_ERROR : d->severity == RF_SEVERITY_WARNING ? DIAG_WARNING
                                                                                                  : DIAG_NOTE;
     r.path = d->file;
@@ -176,8 +180,10 @@ void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info)
 {
     const scene_model *s = api_scene(scene);
+    if (!info)
+        return RF_ERR_USAGE;
     memset(info, 0, sizeof *info);
-    if (index < 0 || index >= s->mesh_count)
+    if (!s || index < 0 || index >= s->mesh_count)
         return RF_ERR_USAGE;
     const scene_mesh *m = &s->meshes[index];
     const scene_mesh_report *r = &m->report;
