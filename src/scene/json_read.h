@@ -72,5 +72,10 @@ int jread_value_index(jreader *r, json_t *val, int count, const char *what, int 
  * as the scene's mesh store and one PRIM_MESH primitive. */
 int load_json_mesh(jreader *r, json_t *p, scene_prim *proto);
 
+/* load_json_derived.c: the derived members of the document root against
+ * the scene loaded and validated from its primary ones ([JSON-DERIVED-1]);
+ * 1 when every one there agrees, else 0 after the first error. */
+int load_json_derived(jreader *r, json_t *root);
+
 #endif
 #endif
