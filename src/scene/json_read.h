@@ -26,8 +26,13 @@ typedef struct jreader {
     int depth;                        /* steps of path in use: the value being read */
 } jreader;
 
+/* An upper bound of the bytes jansson holds while it parses text (its
+ * derivation in json_read.c; [REL-MEMORY-2]). */
+double jread_tree_bound(const char *text, size_t len);
+
 /* Parses the file's text; on malformed JSON reports jansson's message at
- * its position and returns NULL. */
+ * its position and returns NULL, as it does (before jansson runs) when
+ * the tree's bound would pass --max-memory ([REL-MEMORY-2]). */
 json_t *jread_parse(loader *L, int file);
 
 /* The path: push a member or an element before reading it, pop after. */
