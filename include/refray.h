@@ -220,6 +220,16 @@ typedef struct rf_load_options {
      * NULL: never asked. */
     int (*cancel)(void *user);
     void *cancel_user;
+    /* rf_scene_load_file's own file resolver (a resolver of yours decides
+     * for itself): read_confined 1 reads include and mesh files only from
+     * the scene file's directory tree and the trees of read_dirs (a
+     * NULL-terminated list of directories, or NULL), judged by each file's
+     * real path with every symbolic link resolved; a file elsewhere is an
+     * error at the statement that names it.  0 (the default): any file the
+     * process can read.  The refray program confines its loads; its
+     * --allow-read DIR adds to read_dirs (spec/reliability.md). */
+    int read_confined;
+    const char *const *read_dirs;
 } rf_load_options;
 
 /* The default limits, warnings on, no callback, no resolver, malloc. */

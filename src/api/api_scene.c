@@ -132,7 +132,9 @@ rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scen
     if (!path)
         return RF_ERR_USAGE;
     load_opts(o, &lo);
-    *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
+    static const char *const none[] = {NULL};
+    const char *const *dirs = o && o->read_confined ? (o->read_dirs ? o->read_dirs : none) : NULL;
+    *out = (rf_scene *)(void *)scene_file_load_confined(path, &lo, dirs, &status);
     return api_status(status);
 }
 
