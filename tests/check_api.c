@@ -294,6 +294,63 @@ START_TEST(test_api_null_arguments)
 }
 END_TEST
 
+/* [EMBED-API-NULL-1] Every rf_ function, each NULL argument in turn: a
+ * call that returns a status returns RF_ERR_USAGE; one that returns a
+ * value returns 0 (NULL, RF_FORMAT_UNKNOWN); one that fills a record
+ * fills zeros; an init or free does nothing.  rf_renderer_size and
+ * rf_renderer_fingerprint of NULL crashed before; Check's fork mode turns
+ * a crash here into a failed test. */
+START_TEST(test_api_null_everywhere)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    int w = 7, h = 7;
+    rf_renderer_size(NULL, &w, &h);
+    ck_assert_int_eq(w, 0);
+    ck_assert_int_eq(h, 0);
+    rf_renderer_size(r, NULL, NULL);
+    rf_renderer_size(r, &w, NULL);
+    ck_assert_int_eq(w, 4);
+    ck_assert_uint_eq(rf_renderer_fingerprint(NULL), 0);
+    ck_assert_uint_ne(rf_renderer_fingerprint(r), 0);
+    rf_render_stats st;
+    memset(&st, 0xff, sizeof st);
+    rf_renderer_stats(NULL, &st);
+    ck_assert_int_eq(st.width, 0);
+    ck_assert_int_eq(st.camera_rays, 0);
+    rf_renderer_stats(r, NULL);
+    double dbuf[24];
+    ck_assert_int_eq(rf_render_region_double(NULL, 0, 0, 1, 1, dbuf, 3), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 1, 1, NULL, 3), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 1, 1, NULL, 3), RF_ERR_USAGE);
+    rf_renderer_free(r);
+    rf_renderer_free(NULL);
+
+    rf_mesh_info m;
+    ck_assert_int_eq(rf_scene_get_mesh_info(NULL, 0, &m), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, 0, NULL), RF_ERR_USAGE);
+    rf_scene_get_info(s, NULL);
+    rf_scene_free(s);
+    rf_scene_free(NULL);
+
+    ck_assert_int_eq(rf_image_width(NULL), 0);
+    ck_assert_int_eq(rf_image_height(NULL), 0);
+    ck_assert_ptr_null(rf_image_pixels(NULL));
+    rf_image_free(NULL);
+    ck_assert_int_eq(rf_format_from_path(NULL), RF_FORMAT_UNKNOWN);
+    rf_load_options_init(NULL);
+    rf_render_options_init(NULL);
+    rf_write_options_init(NULL);
+    rf_diagnostic_print(NULL, NULL);
+    rf_diagnostic_print(stderr, NULL);
+    ck_assert_ptr_nonnull(rf_status_string((rf_status)-1));
+    ck_assert_ptr_nonnull(rf_status_string((rf_status)1000));
+    ck_assert_int_eq(rf_image_write(NULL, NULL, NULL, NULL, NULL, 0), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_image_write_stream(NULL, NULL, RF_FORMAT_PFM, NULL, NULL, NULL, 0), RF_ERR_USAGE);
+}
+END_TEST
+
 /* The plane scene, one region, with the shortcuts on or off. */
 static void render_plane(int no_shortcuts, float *px, rf_render_stats *st)
 {
@@ -308,7 +365,7 @@ static void render_plane(int no_shortcuts, float *px, rf_render_stats *st)
     rf_scene_free(s);
 }
 
-/* [EMBED-API-7] [SHADE-SHORTCUT-OFF-1] no_shortcuts changes the work, not
+/* [EMBED-API-10] [SHADE-SHORTCUT-OFF-1] no_shortcuts changes the work, not
  * the image.  A lone plane cannot shadow itself, so with the shortcuts
  * the shadow pass is left out (0 shadow rays); without them each of the
  * 12 camera rays meets the plane once, under one light, and sends one
@@ -821,6 +878,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_null_arguments);
+    tcase_add_test(tc, test_api_null_everywhere);
     tcase_add_test(tc, test_api_broken_resolver);
     tcase_add_test(tc, test_api_region_double_is_the_image);
     tcase_add_test(tc, test_api_fingerprint);

@@ -10,6 +10,8 @@
 
 void rf_load_options_init(rf_load_options *o)
 {
+    if (!o)
+        return;
     memset(o, 0, sizeof *o);
     scene_limits l = scene_default_limits();
     o->limits = api_limits_out(&l);
@@ -36,6 +38,8 @@ static void to_caller(void *user, const diag_record *r)
 void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
 {
     diag_record r;
+    if (!stream || !d)
+        return;
     r.level = d->severity == RF_SEVERITY_ERROR ? DIAG_ERROR : d->severity == RF_SEVERITY_WARNING ? DIAG_WARNING
                                                                                                  : DIAG_NOTE;
     r.path = d->file;
@@ -116,8 +120,10 @@ static rf_status load(const scene_source *root, const char *path, int bad, const
     if (bad)
         return RF_ERR_USAGE;
     load_opts(o, &lo);
+    static const char *const none[] = {NULL};
+    const char *const *dirs = o && o->read_confined ? (o->read_dirs ? o->read_dirs : none) : NULL;
     *out = (rf_scene *)(void *)(root ? scene_file_load_source(root, &lo, &status)
-                                     : scene_file_load_with(path, &lo, &status));
+                                     : scene_file_load_confined(path, &lo, dirs, &status));
     return api_status(status);
 }
 
@@ -177,8 +183,10 @@ void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info)
 {
     const scene_model *s = api_scene(scene);
+    if (!info)
+        return RF_ERR_USAGE;
     memset(info, 0, sizeof *info);
-    if (index < 0 || index >= s->mesh_count)
+    if (!s || index < 0 || index >= s->mesh_count)
         return RF_ERR_USAGE;
     const scene_mesh *m = &s->meshes[index];
     const scene_mesh_report *r = &m->report;

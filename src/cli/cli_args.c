@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <sys/stat.h>
 #include "api/convert.h"
 #include "base/text.h"
 #include "cli/cli_args.h"
@@ -205,6 +206,7 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
 
 void cli_scene_opts_init(cli_scene_opts *o)
 {
+    memset(o, 0, sizeof *o);
     o->limits = scene_default_limits();
     o->warnings = 1;
 }
@@ -218,6 +220,8 @@ rf_load_options cli_load_options(const cli_scene_opts *o)
     lo.diagnostic = rf_diagnostic_print;
     lo.diagnostic_user = stderr;
     lo.cancel = cli_signal_cancel;
+    lo.read_confined = 1;
+    lo.read_dirs = o->allow_read;
     return lo;
 }
 
@@ -230,7 +234,7 @@ scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *stat
     lo.sink = diag_print;
     lo.sink_user = stderr;
     lo.cancel = cli_signal_cancel;
-    scene_model *s = scene_file_load_with(path, &lo, status);
+    scene_model *s = scene_file_load_confined(path, &lo, o->allow_read, status);
     if (*status == STATUS_CANCELLED)
         fputs("refray: interrupted\n", stderr);
     return s;
@@ -261,12 +265,34 @@ static const limit_flag limit_flags[] = {
 };
 
 
+/* --allow-read DIR: an existing directory, at most CLI_MAX_ALLOW_READ. */
+static int allow_read(cli_scene_opts *o, int argc, char **argv, int i)
+{
+    struct stat st;
+    if (i + 1 >= argc) {
+        cli_usage_error("--allow-read needs a directory");
+        return -1;
+    }
+    if (stat(argv[i + 1], &st) != 0 || !S_ISDIR(st.st_mode)) {
+        cli_usage_error("--allow-read: '%s' is not a directory", argv[i + 1]);
+        return -1;
+    }
+    if (o->allow_count == CLI_MAX_ALLOW_READ) {
+        cli_usage_error("--allow-read: at most %d directories", CLI_MAX_ALLOW_READ);
+        return -1;
+    }
+    o->allow_read[o->allow_count++] = argv[i + 1];
+    return 2;
+}
+
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 {
     if (strcmp(argv[i], "-W") == 0 || strcmp(argv[i], "--no-warnings") == 0) {
         o->warnings = 0;
         return 1;
     }
+    if (strcmp(argv[i], "--allow-read") == 0)
+        return allow_read(o, argc, argv, i);
     for (size_t k = 0; k < sizeof limit_flags / sizeof limit_flags[0]; k++) {
         if (strcmp(argv[i], limit_flags[k].name) != 0)
             continue;

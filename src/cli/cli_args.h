@@ -16,16 +16,22 @@
 /* Options every scene-reading command accepts: the input limits and
  * whether warnings are shown.  Returns the number of argv entries consumed
  * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
+enum { CLI_MAX_ALLOW_READ = 64 };
 typedef struct cli_scene_opts {
     scene_limits limits;
     int warnings;
+    /* --allow-read DIR, in order, NULL-terminated: where include and mesh
+     * files may come from besides the scene's directory ([REL-READ-1]) */
+    const char *allow_read[CLI_MAX_ALLOW_READ + 1];
+    int allow_count;
 } cli_scene_opts;
 
 void cli_scene_opts_init(cli_scene_opts *o);
 
 /* The public API's load options for o: its limits and warnings, the
- * diagnostics printed to stderr, files from the file system, stopped by
- * a signal (cli_signal_cancel). */
+ * diagnostics printed to stderr, files from the file system confined to
+ * the scene's directory and --allow-read's, stopped by a signal
+ * (cli_signal_cancel).  The result points into o. */
 rf_load_options cli_load_options(const cli_scene_opts *o);
 
 /* Loads the scene file path the same way through the library's own

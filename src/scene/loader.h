@@ -52,6 +52,8 @@ typedef struct loader {
     const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
     cancel_poll cancel;         /* the options' cancel, counted; diag.cancel points here */
+    void *json_root;            /* a JSON scene's parse tree (json_t), kept for loader_json_finish */
+    int json_file;              /* its text in scene->sources */
 } loader;
 
 /* Loops and includes nest at most this deep in all, counted across files
@@ -260,5 +262,10 @@ int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *hel
 /* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
  * (spec/json.md) into the scene, with the rules of check.c. */
 int loader_lower_json(loader *L, int file);
+
+/* After the load's validation (ok: it passed): checks the derived members
+ * of the JSON scene against it ([JSON-DERIVED-1]) and frees its parse
+ * tree.  Returns ok, or 0 after an error of a derived member. */
+int loader_json_finish(loader *L, int ok);
 
 #endif
