@@ -8,8 +8,9 @@
 #   JSON=0          build without jansson (no JSON scenes, kit manifests)
 #   SANITIZE=1      -fsanitize=address,undefined (own build directory)
 #   LONG_DOUBLE=1   the tracer's `real` is long double (own build directory;
-#                   `make refray-ld` copies that refray to $(BUILD)/refray-ld
-#                   for `refray stability`, spec/numerics.md)
+#                   `make` copies that refray to $(BUILD)/refray-ld for
+#                   `refray stability`, spec/numerics.md, and `make install`
+#                   installs it as $(PREFIX)/libexec/refray/refray-ld)
 #   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
 #                   make deps installs); implies EXR=0 (see below)
 #   CC=clang        clang instead of gcc (make deps installs it)
@@ -122,6 +123,7 @@ DRIVER_OBJS := $(DRIVER_SRCS:%.c=$(BUILD)/obj/%.o)
 TEST_OBJS   := $(TEST_SRCS:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/tests/difftest/gen.o
 
 REFRAY   := $(BUILD)/refray
+REFRAY_LD := $(BUILD)/refray-ld
 # The program and the tests link the internal archive (every symbol); a
 # host links the public library, which exports rf_ symbols only.
 LIBRARY  := $(BUILD)/librefray-internal.a
@@ -136,10 +138,11 @@ RF_VERSION  := $(shell sed -n 's/^\#define RF_VERSION_STRING "\(.*\)"/\1/p' incl
 RF_ABI      := $(shell sed -n 's/^\#define RF_ABI_VERSION \([0-9]*\)/\1/p' include/refray.h)
 LIB_CFLAGS  := -fPIC -fvisibility=hidden -DRF_BUILDING_LIBRARY
 PUBLIC_LAYERS := base image lang scene render io api
-# The io layer's process runner and file writer serve `refray kit` and
-# `refray conform` only: a host's library neither starts processes nor
-# removes directories.
-PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o
+# The io layer's process runner, worker pool, file writer and tile files
+# serve the program only (kit, conform, render --jobs, merge): a host's
+# library neither starts processes nor removes directories.
+PUBLIC_OMIT := $(BUILD)/obj/src/io/proc.o $(BUILD)/obj/src/io/filewrite.o $(BUILD)/obj/src/io/pool.o \
+               $(BUILD)/obj/src/io/tile_file.o
 PUBLIC_OBJS := $(filter-out $(PUBLIC_OMIT),$(filter $(addprefix $(BUILD)/obj/src/,$(addsuffix /%,$(PUBLIC_LAYERS)))                  $(BUILD)/obj/gen/%,$(LIB_OBJS)))
 PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
@@ -155,17 +158,18 @@ ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 # python3-jsonschema: the schema test of the JSON scene format (tests/json_schema.sh).
-DEBS := flex bison check pkg-config $(if $(filter 1,$(PNG)),libpng-dev) \
+# parallel: GNU parallel, for the test of the recipe in spec/scaling.md.
+DEBS := flex bison check pkg-config parallel $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema) \
         $(if $(findstring clang,$(CC)),clang)
 ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
-all: $(REFRAY) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
+all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
 
 # Installs only what is missing; as root with apt-get, otherwise with sudo.
 deps:
@@ -189,6 +193,36 @@ check: deps
 demo: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(REFRAY) render scenes/demo.scene -o demo.png
+
+# The recipes of spec/scaling.md tried for real on this machine, each in a
+# temporary directory of its own (tests/scaling/): GNU parallel through a
+# private sshd on 127.0.0.1, and a one-node Slurm with its own MUNGE daemon
+# (root only).  Not part of `make check`: they install servers.
+SCALING_DEBS_ssh := openssh-server openssh-client rsync parallel
+SCALING_DEBS_slurm := slurm-wlm munge
+check-ssh check-slurm: deps
+	$(Q)missing=""; for p in $(SCALING_DEBS_ssh) $(if $(filter check-slurm,$@),$(SCALING_DEBS_slurm)); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "$@: installing$$missing"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)sh tests/scaling/$(if $(filter check-ssh,$@),ssh_localhost,slurm_local).sh $(REFRAY)
+
+# Figures, not tests (spec/scaling.md): --jobs 1 against --jobs N, GNU
+# parallel over tiles, the merge alone, a checkpointed render killed and
+# resumed, each output compared with --jobs 1's bytes.  SCALING_SIZE=WxH,
+# SCALING_JOBS="2 4", SCALING_OPTS="--samples 1" for other runs.  Times
+# come from GNU time (Debian's time, installed if missing).
+SCALING_SIZE ?= 1920x1080
+SCALING_JOBS ?= 2 4
+SCALING_OPTS ?=
+scaling-figures: deps
+	$(Q)[ -x /usr/bin/time ] || { if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "scaling-figures: installing time"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq time >/dev/null; }
+	$(Q)$(MAKE) --no-print-directory $(REFRAY)
+	$(Q)SIZE=$(SCALING_SIZE) JOBS="$(SCALING_JOBS)" sh tests/scaling/figures.sh $(REFRAY) $(SCALING_OPTS)
 
 # Leak kinds are listed in a variable: a literal comma would split $(if ...).
 LEAK_KINDS := definite,indirect,possible
@@ -284,8 +318,9 @@ $(TERMINATOR): $(BUILD)/obj/tests/terminator/terminator.o $(LIBRARY)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(LIBRARY) $(ALL_LIBS)
 
 # The long double twin of refray for `refray stability` (spec/numerics.md),
-# built by a recursive make in its own directory and copied next to refray.
-REFRAY_LD := $(BUILD)/refray-ld
+# built by a recursive make in its own directory and copied next to refray;
+# part of `all` and of `make install`, so `refray verify --stability`
+# works after a plain `make` and after an install.
 refray-ld: $(REFRAY_LD)
 $(REFRAY_LD): FORCE
 	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
@@ -366,16 +401,18 @@ $(DIFFTEST): $(DIFFTEST_OBJS) $(LIBRARY)
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(DIFFTEST_OBJS) $(LIBRARY) $(ALL_LIBS)
 
 # Fuzzing with libFuzzer (clang, Debian clang + libclang-rt-14-dev): the
-# front end (fuzz_scene), the OBJ reader (fuzz_obj) and the PLY reader
-# (fuzz_ply).  `make fuzz FUZZ_SECONDS=600 [FUZZ_TARGETS="obj ply"]`: builds
+# front end (fuzz_scene), the OBJ reader (fuzz_obj), the PLY reader
+# (fuzz_ply) and the image readers (fuzz_image).  `make fuzz
+# FUZZ_SECONDS=600 [FUZZ_TARGETS="obj ply"]`: builds
 # everything with clang and the fuzzer's instrumentation in build/fuzz,
 # seeds each target's corpus (build/fuzz/corpus-TARGET) from the test files
 # of its kind, and runs each in turn for FUZZ_SECONDS.  Crashes are written
 # to build/fuzz/ as crash-*; each one becomes a file under
-# tests/fuzz-regressions/ (a mesh file with a .scene that reads it).
+# tests/fuzz-regressions/ (a mesh file with a .scene that reads it).  The
+# image target is seeded with tiny images refray renders in each format.
 FUZZ_SECONDS ?= 60
 FUZZ_JOBS ?= 1
-FUZZ_TARGETS ?= scene obj ply
+FUZZ_TARGETS ?= scene obj ply image
 FUZZ_DIR := build/fuzz
 FUZZ_DEBS := clang libclang-rt-14-dev
 FUZZ_SEEDS_scene = scenes/*.scene scenes/*/*.scene tests/bad/*.scene tests/bad/*.json tests/fuzz-regressions/*.scene
@@ -387,6 +424,13 @@ fuzz:
 	$(Q)missing=""; for p in $(FUZZ_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
 	  grep -q '^install ok installed' || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then apt-get install -y -qq $$missing >/dev/null; fi
+ifneq ($(filter image,$(FUZZ_TARGETS)),)
+	$(Q)$(MAKE) --no-print-directory $(REFRAY) && mkdir -p $(FUZZ_DIR)/corpus-image
+	$(Q)n=0; for f in png exr pfm ppm; do \
+	  $(REFRAY) render scenes/analytic/ambient_only.scene --width 4 --height 3 -q -o $(FUZZ_DIR)/seed.$$f \
+	    2>/dev/null && { printf "\\00$$n"; cat $(FUZZ_DIR)/seed.$$f; } > $(FUZZ_DIR)/corpus-image/seed-$$f; \
+	  n=$$((n + 1)); done
+endif
 	$(Q)$(MAKE) --no-print-directory BUILD=$(FUZZ_DIR) CC=clang SANITIZE=0 \
 	  CFLAGS="-g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" fuzz-run
 
@@ -579,13 +623,39 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(SOLO_TESTS) > $(GEN)/solo_suites.h
 	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
 
+# make prove: Frama-C's Eva and WP on the contracts of the shading formulas
+# (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: each of a set
+# of deliberate bugs makes a goal fail.  They install what they need.
+PROVE_DEBS := frama-c-base why3 z3 cvc4
+.PHONY: prove prove-mutants prove-quick prove-deps
+prove-deps:
+	$(Q)missing=""; for p in $(PROVE_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
+	  grep -q '^install ok installed' || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	  echo "prove: installing$$missing"; $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
+
+prove: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh
+
+prove-mutants: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
+
+# What CI runs (seconds): Eva on the shading formulas, four helpers taken by
+# their contracts; make prove checks those too, and runs WP.
+prove-quick: prove-deps
+	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh quick
+
 .PHONY: FORCE
 FORCE:
 
 # The public header alone, both libraries and refray.pc (in lib/pkgconfig).
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include \
+	  $(DESTDIR)$(PREFIX)/libexec/refray
 	install -m 755 $(REFRAY) $(DESTDIR)$(PREFIX)/bin/refray
+	install -m 755 $(REFRAY_LD) $(DESTDIR)$(PREFIX)/libexec/refray/refray-ld
 	install -m 644 include/refray.h $(DESTDIR)$(PREFIX)/include/refray.h
 	install -m 644 $(PUBLIC_A) $(DESTDIR)$(PREFIX)/lib/librefray.a
 	install -m 755 $(PUBLIC_SO) $(DESTDIR)$(PREFIX)/lib/librefray.so.$(RF_VERSION)
@@ -594,7 +664,7 @@ install: all
 	install -m 644 $(BUILD)/refray.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/include/refray.h \
+	rm -f $(DESTDIR)$(PREFIX)/bin/refray $(DESTDIR)$(PREFIX)/libexec/refray/refray-ld $(DESTDIR)$(PREFIX)/include/refray.h \
 	  $(DESTDIR)$(PREFIX)/lib/librefray.a $(DESTDIR)$(PREFIX)/lib/librefray.so* \
 	  $(DESTDIR)$(PREFIX)/lib/pkgconfig/refray.pc
 

@@ -80,6 +80,12 @@ typedef enum rf_status {
     RF_ERR_CHECK         /* a check did not pass (not returned by this API) */
 } rf_status;
 
+/* A NULL where this reference does not say one is allowed (an out pointer,
+ * a scene name, its text with a size > 0, a path, a scene, a renderer, an
+ * image, a stream) returns RF_ERR_USAGE, with an out pointer set to NULL;
+ * rf_scene_get_info of NULL fills zeros.  Limits above INT_MAX act as
+ * INT_MAX for the counts an int holds (width, height, samples, depth). */
+
 /* A short lower-case description of status ("out of memory"). */
 RF_API const char *rf_status_string(rf_status status);
 
@@ -97,7 +103,9 @@ RF_API const char *rf_status_string(rf_status status);
  *   - release(user, p, size): frees p; size is exactly the size p was last
  *     allocated or resized to, so a fixed arena or a counter needs no
  *     header of its own.
- * Image files (libpng, OpenEXR) allocate with the C library's allocator.
+ * Image files: the pixel planes of an EXR, and the whole file when it goes
+ * to a stream that cannot seek, come from the image's allocator; libpng
+ * and OpenEXR themselves allocate with the C library's.
  */
 typedef struct rf_allocator {
     void *(*alloc)(void *user, size_t size);
@@ -162,7 +170,9 @@ typedef struct rf_source {
  * release (when not NULL) with the same *out; a mesh file's text is read
  * where it is, without a copy, and released once its mesh is built (before
  * the load returns).  After a failure it calls nothing.  Enforce your own
- * size limits in fetch.
+ * size limits in fetch.  RF_OK with a NULL text and a size > 0 is an error
+ * at the statement, as is a failure whose message is empty (the message
+ * then names the status).
  */
 typedef struct rf_resolver {
     rf_status (*fetch)(void *user, const char *from, const char *name, rf_source *out, char *message,
@@ -181,11 +191,15 @@ typedef struct rf_limits {
     long max_depth;
     long max_loop_iterations;     /* per loop, and in total over a load */
     long max_include_depth;
-    long max_file_bytes;          /* per file read by rf_scene_load_file */
+    long max_file_bytes;          /* per file read by rf_scene_load_file (the file
+                                     resolver; a resolver of yours bounds its own) */
     long max_mesh_triangles;      /* per mesh */
     long max_primitives;          /* in all, mesh triangles included */
     long max_errors;              /* errors delivered before the load gives up */
     long max_ray_tree;            /* rays below one camera ray */
+    long max_input_bytes;         /* of all the files one load reads, each counted once */
+    long max_memory_mb;           /* MiB a scene is estimated to need, loaded and
+                                     rendered (spec/reliability.md) */
 } rf_limits;
 
 typedef struct rf_load_options {
@@ -196,6 +210,12 @@ typedef struct rf_load_options {
     rf_resolver resolver;         /* for rf_scene_load_memory; fetch NULL: the
                                      scene may not include files or load meshes */
     const rf_allocator *allocator; /* NULL: the C library (copied by the load) */
+    /* Asked every few hundred steps of the load (tokens, statements, loop
+     * passes, OBJ lines, triangles), so that a stop takes effect within a
+     * fraction of a second; non-zero stops the load with RF_ERR_CANCELLED.
+     * NULL: never asked. */
+    int (*cancel)(void *user);
+    void *cancel_user;
 } rf_load_options;
 
 /* The default limits, warnings on, no callback, no resolver, malloc. */
@@ -209,11 +229,11 @@ typedef struct rf_scene rf_scene;
  * it a JSON scene (spec/json.md, as `refray export --to json` writes it),
  * any other name a scene in the scene language (spec/language.md).  Reads
  * no file: include and mesh files come from o->resolver only.  Returns
- * RF_OK with *out set, or RF_ERR_DATA (the reasons went to o->diagnostic)
- * or RF_ERR_NO_MEMORY; RF_ERR_USAGE for a JSON scene when the library was
- * built without JSON support.  A JSON text is parsed by jansson, whose
- * own allocations (freed before the call returns) do not go through
- * o->allocator (spec/embedding.md).
+ * RF_OK with *out set, or RF_ERR_DATA (the reasons went to o->diagnostic),
+ * RF_ERR_CANCELLED or RF_ERR_NO_MEMORY; RF_ERR_USAGE for a JSON scene when
+ * the library was built without JSON support.  A JSON text is parsed by
+ * jansson, whose own allocations (freed before the call returns) do not go
+ * through o->allocator (spec/embedding.md).
  */
 RF_API rf_status rf_scene_load_memory(const char *name, const char *text, size_t size,
                                       const rf_load_options *o, rf_scene **out);
@@ -297,8 +317,11 @@ typedef struct rf_render_options {
                                max_tree_rays) grows; 0: the shortcuts */
     /* Called after each row of a region (rows_total: the region's rows). */
     void (*progress)(void *user, int rows_done, int rows_total);
-    /* Asked before the first row and after every row (after progress);
-     * non-zero stops with RF_ERR_CANCELLED. */
+    /* Asked before the first row, after every row (after progress), and
+     * every few hundred rays or light samples within a row and steps of
+     * the acceleration structure's build, so that a stop takes effect
+     * within a fraction of a second however long one pixel takes;
+     * non-zero stops with RF_ERR_CANCELLED (spec/reliability.md). */
     int (*cancel)(void *user);
     void *user;             /* for progress and cancel */
 } rf_render_options;
@@ -329,8 +352,8 @@ typedef struct rf_renderer rf_renderer;
 
 /* Prepares scene for rendering with o (NULL: the scene's settings): builds
  * the acceleration structure, in memory from the scene's allocator.  The
- * scene must outlive the renderer.  RF_OK, RF_ERR_USAGE (bad options) or
- * RF_ERR_NO_MEMORY. */
+ * scene must outlive the renderer.  RF_OK, RF_ERR_USAGE (bad options),
+ * RF_ERR_CANCELLED (o->cancel) or RF_ERR_NO_MEMORY. */
 RF_API rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out);
 
 /* The size of the image the renderer renders. */
@@ -343,11 +366,31 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
  * (in floats) is at least 3 * (x1 - x0).  A pixel's value does not depend
  * on the region it is rendered in.  Allocates nothing.  Returns RF_OK;
  * RF_ERR_USAGE for a region outside the image, empty, or a short stride;
- * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays (the
- * pixel: rf_renderer_stats).  After a failure the region is partly written.
+ * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays, or a
+ * ray was inside glass nested deeper than the tracer follows (16 solids;
+ * medium_overflows > 0 then), at the pixel of rf_renderer_stats.  After a
+ * failure the region is partly written.
  */
 RF_API rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *rgb,
                                   size_t row_stride);
+
+/* The same region in double: exactly the values rf_render_image stores
+ * for those pixels (rf_render_region's floats are these, rounded to
+ * nearest).  Returns as rf_render_region. */
+RF_API rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1, int y1, double *rgb,
+                                         size_t row_stride);
+
+/*
+ * A 64-bit fingerprint of everything that decides the renderer's pixels:
+ * the library's version, the text of every file the scene's load read (not
+ * their names), its meshes as built, the image size, samples, max_depth and
+ * light_samples.  Two
+ * renderers with the same fingerprint render the same pixels, so regions
+ * rendered in different processes or on different machines can be put
+ * together when their fingerprints agree (refray merge does).  A
+ * fingerprint, not a cryptographic hash.
+ */
+RF_API unsigned long long rf_renderer_fingerprint(const rf_renderer *r);
 
 RF_API void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats);
 
@@ -400,6 +443,11 @@ typedef struct rf_write_options {
     int linear;             /* PNG/PPM: 1 = linear codes, no sRGB curve */
     int png_bits;           /* 8 or 16 */
     int exr_float;          /* 1 = 32-bit float channels, 0 = half */
+    /* Asked as rows are encoded and before the file is put in place:
+     * non-zero stops the write with RF_ERR_CANCELLED, and nothing is left
+     * at the path.  NULL: never asked. */
+    int (*cancel)(void *user);
+    void *user;
 } rf_write_options;
 
 /* exposure 0, clamp, sRGB, 8-bit PNG, half EXR. */
@@ -413,16 +461,22 @@ typedef struct rf_write_stats {
 
 /*
  * Writes img to path in the format of its extension, atomically: nothing
- * at path changes unless the whole file was written.  o may be NULL (the
- * defaults), stats may be NULL.  Returns RF_OK; RF_ERR_USAGE for an
- * unknown extension, a format this build lacks or bad options; RF_ERR_IO;
- * RF_ERR_NO_MEMORY; with a one-line reason in message (may be NULL).
+ * at path changes unless the whole file was written (it goes to a
+ * temporary ".refray-tmp-PID-XXXXXX" beside it first).  Refused with
+ * RF_ERR_IO before anything is written: a path that is a symbolic link or
+ * not a regular file, a read-only file, another user's file, a name too
+ * long for the file system (spec/reliability.md).  The new file gets the
+ * old one's permission bits without setuid, setgid and sticky, or 0666
+ * less the umask.  o may be NULL (the defaults), stats may be NULL.
+ * Returns RF_OK; RF_ERR_USAGE for an unknown extension, a format this
+ * build lacks or bad options; RF_ERR_IO; RF_ERR_NO_MEMORY;
+ * RF_ERR_CANCELLED; with a one-line reason in message (may be NULL).
  */
 RF_API rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_options *o,
                                 rf_write_stats *stats, char *message, size_t message_size);
 
-/* The same encoding to an open stream (flushed, not closed; EXR needs a
- * seekable one). */
+/* The same encoding to an open stream (flushed, not closed; an EXR for a
+ * stream that cannot seek, such as a pipe, is built in memory first). */
 RF_API rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt,
                                        const rf_write_options *o, rf_write_stats *stats, char *message,
                                        size_t message_size);

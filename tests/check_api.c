@@ -75,16 +75,23 @@ START_TEST(test_api_render_region)
 }
 END_TEST
 
+/* The demo scene, with options *o for a 12 x 8 image of it. */
+static rf_scene *load_demo_12x8(rf_render_options *o)
+{
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
+    rf_render_options_init(o);
+    o->width = 12;
+    o->height = 8;
+    return s;
+}
+
 /* A pixel does not depend on the region it is rendered in: the demo scene
  * in 2 x 2 tiles equals the demo scene in one piece, bit for bit. */
 START_TEST(test_api_regions_tile_the_image)
 {
-    rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
     rf_render_options o;
-    rf_render_options_init(&o);
-    o.width = 12;
-    o.height = 8;
+    rf_scene *s = load_demo_12x8(&o);
     rf_renderer *r;
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
     float whole[8 * 12 * 3], tiled[8 * 12 * 3];
@@ -119,6 +126,73 @@ START_TEST(test_api_region_float_saturates)
 }
 END_TEST
 
+/* [EMBED-API-9] A double region holds exactly what rf_render_image stores
+ * for its pixels, and rf_render_region's floats are those doubles rounded
+ * to nearest (the demo in two regions, 12 x 8). */
+START_TEST(test_api_region_double_is_the_image)
+{
+    rf_render_options o;
+    rf_scene *s = load_demo_12x8(&o);
+    rf_image *img;
+    rf_renderer *r;
+    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_OK);
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    double px[8 * 12 * 3];
+    float f[8 * 12 * 3];
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 12, 5, px, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 5, 12, 8, px + 5 * 36, 36), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 12, 8, f, 36), RF_OK);
+    ck_assert_int_eq(memcmp(px, rf_image_pixels(img), sizeof px), 0);
+    for (int i = 0; i < 8 * 12 * 3; i++)
+        ck_assert_msg(f[i] == (float)px[i], "value %d", i);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 13, 1, px, 39), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 12, 1, NULL, 36), RF_ERR_USAGE);
+    rf_renderer_free(r);
+    rf_image_free(img);
+    rf_scene_free(s);
+}
+END_TEST
+
+/* The fingerprint of plane_text with the given text and options. */
+static unsigned long long fingerprint(const char *name, const char *text, int width, int samples, int depth,
+                                      int light_samples)
+{
+    rf_scene *s = NULL;
+    rf_renderer *r;
+    rf_render_options o;
+    ck_assert_int_eq(rf_scene_load_memory(name, text, strlen(text), NULL, &s), RF_OK);
+    rf_render_options_init(&o);
+    o.width = width;
+    o.samples = samples;
+    o.max_depth = depth;
+    o.light_samples = light_samples;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    unsigned long long f = rf_renderer_fingerprint(r);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+    return f;
+}
+
+/* [EMBED-API-8] The fingerprint follows the scene's text and the settings
+ * that change pixels, not the scene's name. */
+START_TEST(test_api_fingerprint)
+{
+    static const char other[] = "image { width 4 height 3 }\n"
+                                "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                                "ambient { color 0.2 }\n"
+                                "distant_light { direction [0, -1, 0] power 2 }\n"
+                                "plane { material { Kd 0.5 } } # a comment\n";
+    unsigned long long base = fingerprint("a.scene", plane_text, 0, 0, 0, 0);
+    ck_assert(base == fingerprint("elsewhere/b.scene", plane_text, 0, 0, 0, 0));
+    ck_assert(base == fingerprint("a.scene", plane_text, 4, 1, 0, 0));
+    ck_assert(base != fingerprint("a.scene", other, 0, 0, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 5, 0, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 2, 0, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 0, 1, 0));
+    ck_assert(base != fingerprint("a.scene", plane_text, 0, 0, 0, 3));
+}
+END_TEST
+
 /* Bad regions and options are refused before anything is traced. */
 START_TEST(test_api_render_region_refusals)
 {
@@ -140,6 +214,67 @@ START_TEST(test_api_render_region_refusals)
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
     ck_assert_ptr_null(r);
     rf_scene_free(s);
+}
+END_TEST
+
+/* [EMBED-API-NULL-1] A NULL the reference does not allow comes back as
+ * RF_ERR_USAGE (the out pointer, when there is one, set to NULL) instead
+ * of a crash; a stride so large that the last row's end wraps around
+ * size_t is refused like a short one; and limits above INT_MAX cannot let
+ * a width of 3e9 wrap to a negative int (every one of these crashed,
+ * passed or wrapped before). */
+START_TEST(test_api_null_arguments)
+{
+    rf_scene *s = (rf_scene *)&s;
+    rf_renderer *r = (rf_renderer *)&r;
+    rf_image *img = (rf_image *)&img;
+    char msg[64] = "x";
+    float buf[24];
+    ck_assert_int_eq(rf_scene_load_memory(NULL, plane_text, strlen(plane_text), NULL, &s), RF_ERR_USAGE);
+    ck_assert_ptr_null(s);
+    ck_assert_int_eq(rf_scene_load_memory("a.scene", NULL, 10, NULL, &s), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_scene_load_memory("a.scene", plane_text, strlen(plane_text), NULL, NULL), RF_ERR_USAGE);
+    s = (rf_scene *)&s;
+    ck_assert_int_eq(rf_scene_load_file(NULL, NULL, &s), RF_ERR_USAGE);
+    ck_assert_ptr_null(s);
+    ck_assert_int_eq(rf_scene_load_file("a.scene", NULL, NULL), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_renderer_create(NULL, NULL, &r), RF_ERR_USAGE);
+    ck_assert_ptr_null(r);
+    ck_assert_int_eq(rf_render_image(NULL, NULL, &img, NULL), RF_ERR_USAGE);
+    ck_assert_ptr_null(img);
+    ck_assert_int_eq(rf_render_region(NULL, 0, 0, 1, 1, buf, 3), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_image_create(2, 2, NULL, NULL), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_image_write(NULL, "x.pfm", NULL, NULL, msg, sizeof msg), RF_ERR_USAGE);
+    ck_assert_str_eq(msg, "no image to write");
+    rf_scene_info info;
+    info.width = 7;
+    rf_scene_get_info(NULL, &info);
+    ck_assert_int_eq(info.width, 0);
+
+    s = load(plane_text, NULL);
+    ck_assert_int_eq(rf_renderer_create(s, NULL, NULL), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_image(s, NULL, NULL, NULL), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
+    ck_assert_int_eq(rf_image_write(img, NULL, NULL, NULL, msg, sizeof msg), RF_ERR_USAGE);
+    ck_assert_str_eq(msg, "no path to write to");
+    ck_assert_int_eq(rf_image_write_stream(img, NULL, RF_FORMAT_PFM, NULL, NULL, msg, sizeof msg), RF_ERR_USAGE);
+    ck_assert_str_eq(msg, "no stream to write to");
+    rf_image_free(img);
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 2, buf, (size_t)-1), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 2, buf, 12), RF_OK);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+
+    static const char wide[] = "image { width 3000000000 height 1 }\n"
+                               "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                               "plane { }\n";
+    rf_load_options o;
+    rf_load_options_init(&o);
+    o.limits.max_width = o.limits.max_pixels = (long)(~0UL >> 1);
+    s = (rf_scene *)&s;
+    ck_assert_int_eq(rf_scene_load_memory("wide.scene", wide, strlen(wide), &o, &s), RF_ERR_DATA);
+    ck_assert_ptr_null(s);
 }
 END_TEST
 
@@ -274,6 +409,39 @@ static void collecting_options(rf_load_options *o, collected *c, const char *con
     o->resolver.fetch = memory_fetch;
     o->resolver.user = (void *)files;
 }
+
+/* A resolver that breaks its contract: RF_OK with a size but no text
+ * (mode 0), or a failure with no reason (mode 1). */
+static rf_status broken_fetch(void *user, const char *from, const char *name, rf_source *out, char *message,
+                              size_t size)
+{
+    (void)from, (void)name, (void)message, (void)size;
+    out->size = 100;
+    return *(const int *)user == 0 ? RF_OK : RF_ERR_CANCELLED;
+}
+
+/* [EMBED-API-NULL-1] The first crashed in the copy of the text; the second
+ * gave the error an empty message. */
+START_TEST(test_api_broken_resolver)
+{
+    static const char text[] = "image { width 4 height 3 }\n"
+                               "camera { orthographic eye [0, 1, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                               "include \"x.scene\"\n";
+    static const char *const want[] = {"cannot read 'x.scene': the resolver gave 100 bytes of no text",
+                                       "cannot read 'x.scene': cancelled"};
+    for (int mode = 0; mode < 2; mode++) {
+        rf_load_options o;
+        collected c;
+        rf_scene *s = NULL;
+        collecting_options(&o, &c, NULL);
+        o.resolver.fetch = broken_fetch;
+        o.resolver.user = &mode;
+        ck_assert_int_eq(rf_scene_load_memory("b.scene", text, strlen(text), &o, &s), RF_ERR_DATA);
+        ck_assert_int_ge(c.count, 1);
+        ck_assert_msg(strstr(c.text[0], want[mode]) != NULL, "mode %d: %s", mode, c.text[0]);
+    }
+}
+END_TEST
 
 /* [EMBED-API-4] Diagnostics come as records with file, line, column,
  * severity, message and the source line; an error in an included file is
@@ -647,6 +815,10 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_regions_tile_the_image);
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
+    tcase_add_test(tc, test_api_null_arguments);
+    tcase_add_test(tc, test_api_broken_resolver);
+    tcase_add_test(tc, test_api_region_double_is_the_image);
+    tcase_add_test(tc, test_api_fingerprint);
     tcase_add_test(tc, test_api_no_shortcuts);
     tcase_add_test(tc, test_api_progress_and_cancel);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);

@@ -20,7 +20,7 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "testlib.h"
 #include "verify/verify.h"
 
@@ -363,7 +363,7 @@ START_TEST(test_cli_compare_diff_and_mask)
     const char *diff[] = {"compare", pa, pb, "--diff", tmp_file(&t, "d.pfm", pd, sizeof pd), NULL};
     ck_assert_int_eq(run_refray(diff, out, err), 0);
     img_buf d;
-    ck_assert_int_eq(img_read(pd, &d, e2, sizeof e2), 0);
+    ck_assert_int_eq(img_read(pd, NULL, &d, e2, sizeof e2), 0);
     ck_assert_near(img_pixel(&d, 1, 0)[0], 0.1, 1e-6);
     ck_assert_near(img_pixel(&d, 0, 0)[0], 0, 0);
     img_free(&d);

@@ -16,7 +16,7 @@
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "cli_testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/conform.h"
 
 static char kit_root[64];
@@ -218,7 +218,7 @@ START_TEST(test_conform_downsample_and_scale)
     snprintf(kit, sizeof kit, "%s/kit", kit_root);
     ck_assert_int_eq(kit_status, 0);
     cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
-    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(src, NULL, &e, err, sizeof err), 0);
     ck_assert_int_eq(img_create(&b, 2 * e.width, 2 * e.height), 0);
     for (int y = 0; y < b.height; y++)
         for (int x = 0; x < b.width; x++)
@@ -365,7 +365,7 @@ START_TEST(test_kit_check_agrees)
     ck_assert_int_eq(kit_status, 0);
     cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
     cli_path(mask, sizeof mask, kit, "scenes/plane_point_linear/plane_point_linear.mask.pgm");
-    ck_assert_int_eq(img_read(src, &e, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(src, NULL, &e, err, sizeof err), 0);
     for (int i = 0; i < 3 * e.width * e.height / 2; i++)
         e.rgb[i] *= 1 + 3e-4;
     ck_assert_int_eq(img_write(cli_path(img, sizeof img, kit_root, "bright.pfm"), &e, NULL, err, sizeof err), 0);
@@ -384,6 +384,38 @@ START_TEST(test_kit_check_agrees)
     ck_assert_int_eq(system(cmd), 0);
     manifest_free(&m);
     img_free(&e);
+}
+END_TEST
+
+/* kit_check's exit 2 for what it cannot judge: a tolerance that is not a
+ * finite number >= 0 (an infinite one passed a picture of -1e30 everywhere,
+ * a misspelt one was read as 0), and a PFM header of 65536 x 65536 pixels,
+ * whose byte count wrapped around a 32-bit size_t into a small allocation
+ * that the rows were then written past (make check M32=1). */
+START_TEST(test_kit_check_refuses)
+{
+    const char *bin = getenv("KIT_CHECK_BIN");
+    static const char *const tolerances[] = {"inf 0", "0 inf", "1e-4x 0", "abc 0", "1e-4 -1", "nan 0"};
+    char kit[128], src[300], mask[300], big[300], cmd[2048];
+    ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    cli_path(src, sizeof src, kit, "scenes/plane_point_linear/plane_point_linear.exact.pfm");
+    cli_path(mask, sizeof mask, kit, "scenes/plane_point_linear/plane_point_linear.mask.pgm");
+    for (size_t i = 0; i < sizeof tolerances / sizeof tolerances[0]; i++) {
+        snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %s '%s' >/dev/null 2>&1", bin, src, mask, tolerances[i], src);
+        int st = system(cmd);
+        ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 2, "tolerance %s: status %d", tolerances[i], st);
+    }
+    FILE *f = fopen(cli_path(big, sizeof big, kit_root, "huge-header.pfm"), "wb");
+    ck_assert_ptr_nonnull(f);
+    fputs("PF\n65536 65536\n-1.0\n", f);
+    for (int i = 0; i < 4096; i++)
+        fputc(0, f);
+    ck_assert_int_eq(fclose(f), 0);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' 1e-4 1e-5 '%s' >/dev/null 2>&1", bin, src, mask, big);
+    int st = system(cmd);
+    ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 2, "a 65536 x 65536 header: status %d", st);
 }
 END_TEST
 
@@ -462,6 +494,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_reports);
     tcase_add_test(tc, test_conform_usage_errors);
     tcase_add_test(tc, test_kit_check_agrees);
+    tcase_add_test(tc, test_kit_check_refuses);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

@@ -111,18 +111,63 @@ START_TEST(test_diag_report_tabs_and_clipping)
 }
 END_TEST
 
-/* Control bytes, NUL among them, are shown as '?'. */
+/* [REL-ESCAPE-1] Every byte of the source line that is not printable
+ * ASCII (nor a tab) is shown as \xHH: control bytes, NUL, DEL, and the
+ * 0x80..0xff range with the C1 controls (0x9b is a one-byte CSI); the
+ * caret line makes room for each, so the caret still sits under its byte.
+ * Before, 0x80..0xff went to the terminal as they were. */
 START_TEST(test_diag_report_control_bytes)
 {
     capture c;
-    static const char text[] = "a\0b\x01" "c\x7f";
+    static const char text[] = "a\0b\x01" "c\x7f\x9b" "d\x1b[31m";
     capture_open(&c, "t.scene", text, sizeof text - 1);
     diag_report(&c.diag, DIAG_ERROR, span(0, 1, 2), "NUL");
+    diag_report(&c.diag, DIAG_ERROR, span(0, 7, 8), "d");
     capture_close(&c);
     ck_assert_str_eq(c.text, "t.scene:1:2: error: NUL\n"
-                             "    1 | a?b?c?\n"
-                             "      |  ^\n");
+                             "    1 | a\\x00b\\x01c\\x7f\\x9bd\\x1b[31m\n"
+                             "      |  ^\n"
+                             "t.scene:1:8: error: d\n"
+                             "    1 | a\\x00b\\x01c\\x7f\\x9bd\\x1b[31m\n"
+                             "      |                    ^\n");
     capture_free(&c);
+}
+END_TEST
+
+/* [REL-ESCAPE-1] What a sink receives is safe too: the message and the
+ * file name of a record hold printable ASCII only (other bytes as \xHH),
+ * however the input was spelt, and at most 1023 bytes of it, cut in the
+ * middle: a 1 MB name is not echoed whole (defect 15 of issue 12). */
+static char received[2048], received_path[2048];
+static void keep_record(void *user, const diag_record *r)
+{
+    (void)user;
+    snprintf(received, sizeof received, "%s", r->message);
+    snprintf(received_path, sizeof received_path, "%s", r->path ? r->path : "");
+}
+
+START_TEST(test_diag_record_is_escaped_and_cut)
+{
+    source_set set;
+    diag d;
+    source_set_init(&set, NULL);
+    ck_assert_int_eq(source_set_add(&set, "\x1b[31mRED\x1b[0m.scene", "x\n", 2, src_span_none()), 0);
+    diag_init(&d, &set, keep_record, NULL);
+    diag_report(&d, DIAG_ERROR, span(0, 0, 1), "cannot open '%s'", "\x1b]0;title\x07\x9b" "2J");
+    ck_assert_str_eq(received, "cannot open '\\x1b]0;title\\x07\\x9b2J'");
+    ck_assert_str_eq(received_path, "\\x1b[31mRED\\x1b[0m.scene");
+    enum { HUGE = 1 << 20 };
+    char *name = malloc(HUGE + 1);
+    ck_assert_ptr_nonnull(name);
+    memset(name, 'n', HUGE);
+    name[HUGE] = '\0';
+    diag_report(&d, DIAG_ERROR, span(0, 0, 1), "unknown constant '%s'; did you mean 'x'?", name);
+    free(name);
+    ck_assert_uint_lt(strlen(received), 1024);
+    ck_assert_msg(strncmp(received, "unknown constant 'nnn", 21) == 0, "%s", received);
+    ck_assert_msg(strstr(received, "nnn...nnn") != NULL, "%s", received);
+    ck_assert_msg(strstr(received, "'; did you mean 'x'?") != NULL, "%s", received);
+    source_set_free(&set);
 }
 END_TEST
 
@@ -300,6 +345,7 @@ Suite *suite_diag(void)
     tcase_add_test(tc, test_diag_report_without_location);
     tcase_add_test(tc, test_diag_report_tabs_and_clipping);
     tcase_add_test(tc, test_diag_report_control_bytes);
+    tcase_add_test(tc, test_diag_record_is_escaped_and_cut);
     tcase_add_test(tc, test_diag_report_long_line);
     tcase_add_test(tc, test_source_line_col_and_text);
     tcase_add_test(tc, test_src_span_join);

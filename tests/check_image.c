@@ -19,11 +19,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 
 #ifndef REFRAY_HAVE_PNG
 #define REFRAY_HAVE_PNG 0
@@ -342,7 +343,7 @@ START_TEST(test_img_write_read_pfm_bit_exact)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "b.PFM");
     ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), 0);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(back.width, 5);
     ck_assert_int_eq(back.height, 4);
     for (int i = 0; i < 60; i++)
@@ -370,7 +371,7 @@ START_TEST(test_img_write_pfm_counts_nonfinite_and_clamped)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.nonfinite, 2);
     ck_assert_uint_eq(st.clamped, 2);
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), 0);
     ck_assert(back.rgb[0] == 0.0 && back.rgb[1] == 0.0);
     ck_assert(back.rgb[2] == FLT_MAX && back.rgb[3] == -FLT_MAX);
     ck_assert(back.rgb[4] == (double)(float)img.rgb[4]);
@@ -392,7 +393,7 @@ START_TEST(test_img_read_pfm_variants)
     /* 1x2 big-endian grey: bottom 2.0 (0x40000000), top -0.5 (0xBF000000) */
     static const unsigned char grey_be[] = "Pf\n# made by hand\n1 2\n1.0\n\x40\0\0\0\xBF\0\0\0";
     put_file(path, grey_be, sizeof grey_be - 1);
-    ck_assert_msg(img_read(path, &img, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(img.width, 1);
     ck_assert_int_eq(img.height, 2);
     for (int c = 0; c < 3; c++) {
@@ -402,16 +403,51 @@ START_TEST(test_img_read_pfm_variants)
     img_free(&img);
     static const unsigned char truncated[] = "PF\n2 2\n-1.0\n\0\0\x80\x3F";
     put_file(path, truncated, sizeof truncated - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
     ck_assert_ptr_null(img.rgb);
     put_file(path, "P6\n1 1\n255\n\0\0\0", sizeof "P6\n1 1\n255\n\0\0\0" - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n-3 2\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     put_str(path, "PF\n100000 100000\n-1.0\n");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
-    ck_assert_msg(strstr(err, "too large") != NULL, "%s", err);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_msg(strstr(err, "over --max-pixels 67108864") != NULL, "%s", err);
+    tmpdir_remove(&d);
+}
+END_TEST
+
+/* A header that claims more pixels than the file holds is refused before
+ * the image is allocated: 16384 x 16384 (under IMG_MAX_PIXELS) on a 1 KB
+ * file made `refray conform` allocate and clear 6.3 GB and spend 39 s of
+ * CPU before "truncated"; the same for a PPM.  The CPU time bound is what
+ * fails if the allocation comes back. */
+START_TEST(test_img_read_short_raster_allocates_nothing)
+{
+    tmpdir d;
+    char path[256], err[256];
+    static const char *const headers[] = {"PF\n16384 16384\n-1.0\n", "P6\n16384 16384\n65535\n"};
+    tmpdir_make(&d);
+    for (int i = 0; i < 2; i++) {
+        img_buf img;
+        in_dir(path, sizeof path, &d, i ? "big.ppm" : "big.pfm");
+        FILE *f = fopen(path, "wb");
+        ck_assert_ptr_nonnull(f);
+        fputs(headers[i], f);
+        for (int k = 0; k < 1000; k++)
+            fputc(0, f);
+        ck_assert_int_eq(fclose(f), 0);
+        /* --max-pixels raised to the header's size: the raster must still fit
+         * in the file before anything is allocated. */
+        img_read_opts o = img_read_opts_default();
+        o.max_pixels = 16384L * 16384L;
+        clock_t t0 = clock();
+        ck_assert_int_eq(img_read(path, &o, &img, err, sizeof err), STATUS_DATA);
+        ck_assert_msg(strstr(err, "truncated") != NULL, "%s", err);
+        ck_assert_ptr_null(img.rgb);
+        ck_assert_msg((double)(clock() - t0) / CLOCKS_PER_SEC < 2.0, "%s: %.1f s of CPU", headers[i],
+                      (double)(clock() - t0) / CLOCKS_PER_SEC);
+    }
     tmpdir_remove(&d);
 }
 END_TEST
@@ -461,7 +497,7 @@ START_TEST(test_img_write_read_ppm)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.nonfinite, 1);
     ck_assert_uint_eq(st.clamped, 0);
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), 0);
     img.rgb[7] = 0.0;
     for (int i = 0; i < 45; i++)
         ck_assert_near(back.rgb[i], srgb_dec(expected_code(img.rgb[i], &o, 255) / 255.0), 1e-12);
@@ -481,7 +517,7 @@ START_TEST(test_img_read_ppm_16bit)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "w.ppm");
     put_file(path, ppm, sizeof ppm - 1);
-    ck_assert_msg(img_read(path, &img, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "%s", err);
     ck_assert_near(img.rgb[0], 1.0, 1e-15);
     ck_assert_near(img.rgb[1], 0.0, 0.0);
     ck_assert_near(img.rgb[2], srgb_dec(32768 / 65535.0), 1e-15);
@@ -491,7 +527,7 @@ START_TEST(test_img_read_ppm_16bit)
     img_free(&img);
     static const unsigned char over[] = "P6 1 1 200\n\xC9\0\0";
     put_file(path, over, sizeof over - 1);
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     tmpdir_remove(&d);
 }
 END_TEST
@@ -589,7 +625,7 @@ START_TEST(test_img_write_read_png_8bit)
     for (int lin = 0; lin < 2; lin++) {
         o.linear_png = lin;
         ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         ck_assert_int_eq(back.width, 7);
         ck_assert_int_eq(back.height, 5);
         for (int i = 0; i < 105; i++)
@@ -614,7 +650,7 @@ START_TEST(test_img_write_read_png_16bit)
     for (int lin = 0; lin < 2; lin++) {
         o.linear_png = lin;
         ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         for (int i = 0; i < 72; i++) {
             double got = code_of(back.rgb[i], !lin, 65535), exact = code_of(img.rgb[i], !lin, 65535);
             ck_assert_near(got, exact, 0.5 + 1e-6);
@@ -648,7 +684,7 @@ START_TEST(test_img_read_png_gamma_rules)
         patch_chunk4(g, variant == 0 ? "gAMA" : "gAMx", 50000);
         put_file(path, b, n);
         free(b);
-        ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+        ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
         for (int i = 0; i < 18; i++) {
             double code = expected_code(img.rgb[i], &o, 255) / 255.0;
             ck_assert_near(back.rgb[i], variant == 0 ? code * code : srgb_dec(code), 1e-12);
@@ -656,7 +692,7 @@ START_TEST(test_img_read_png_gamma_rules)
         img_free(&back);
     }
     put_str(path, "\x89PNG\r\n\x1A\nnonsense");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "PNG") != NULL, "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -676,7 +712,7 @@ START_TEST(test_img_write_png_compiled_out)
     ck_assert_msg(strstr(err, "this refray was built without libpng (PNG=0); write .ppm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x89PNG\r\n\x1A\n");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without libpng (PNG=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -704,7 +740,7 @@ START_TEST(test_img_write_read_exr_float_exact)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.clamped, 1);
     ck_assert_uint_eq(st.nonfinite, 1);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     ck_assert_int_eq(back.width, 9);
     ck_assert_int_eq(back.height, 37);
     ck_assert(back.rgb[0] == FLT_MAX);
@@ -747,7 +783,7 @@ START_TEST(test_img_write_read_exr_half)
     ck_assert_int_eq(img_write(path, &img, &o, err, sizeof err), 0);
     ck_assert_uint_eq(st.clamped, 2);
     ck_assert_uint_eq(st.nonfinite, 0);
-    ck_assert_msg(img_read(path, &back, err, sizeof err) == 0, "%s", err);
+    ck_assert_msg(img_read(path, NULL, &back, err, sizeof err) == 0, "%s", err);
     for (int i = 0; i < 6; i++)
         ck_assert(back.rgb[i] == exact[i]);
     ck_assert(back.rgb[6] == 65504.0 && back.rgb[7] == -65504.0);
@@ -768,7 +804,7 @@ START_TEST(test_img_read_exr_rejects_garbage)
     tmpdir_make(&d);
     in_dir(path, sizeof path, &d, "bad.exr");
     put_str(path, "\x76\x2f\x31\x01 this is not an image");
-    ck_assert_int_eq(img_read(path, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strncmp(err, "cannot read '", 13) == 0, "%s", err);
     ck_assert_ptr_null(img.rgb);
     tmpdir_remove(&d);
@@ -788,7 +824,7 @@ START_TEST(test_img_write_exr_compiled_out)
     ck_assert_msg(strstr(err, "this refray was built without OpenEXR (EXR=0); write .pfm instead"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     put_str(path, "\x76\x2f\x31\x01");
-    ck_assert_int_eq(img_read(path, &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(path, NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "built without OpenEXR (EXR=0)"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -822,7 +858,7 @@ START_TEST(test_img_write_unknown_extension_is_usage_error)
     ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, "noext"), &img, NULL, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "no file extension"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
-    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), &back, err, sizeof err), STATUS_USAGE);
+    ck_assert_int_eq(img_read(in_dir(path, sizeof path, &d, "a.tiff"), NULL, &back, err, sizeof err), STATUS_USAGE);
     ck_assert_msg(strstr(err, "unknown image format '.tiff'"), "%s", err);
     img_free(&img);
     tmpdir_remove(&d);
@@ -857,7 +893,7 @@ START_TEST(test_img_read_missing_file)
 {
     char err[256];
     img_buf img;
-    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", &img, err, sizeof err), STATUS_NO_INPUT);
+    ck_assert_int_eq(img_read("/nonexistent-refray-dir/none.pfm", NULL, &img, err, sizeof err), STATUS_NO_INPUT);
     ck_assert_msg(strstr(err, "/nonexistent-refray-dir/none.pfm") && strstr(err, strerror(ENOENT)), "%s", err);
 }
 END_TEST
@@ -880,18 +916,26 @@ START_TEST(test_img_write_into_missing_directory)
 }
 END_TEST
 
-/* A name of 250 bytes is legal, but the temporary "<name>.tmp.XXXXXX"
- * exceeds NAME_MAX (255): mkstemp fails, nothing is created. */
+/* [REL-OUT-5] A name of 250 bytes is legal and is written (the temporary
+ * ".refray-tmp-PID-XXXXXX" is short whatever the name; before, its
+ * "<name>.tmp.XXXXXX" passed NAME_MAX and the write failed after the
+ * render); a name over NAME_MAX (255 here) is refused before anything is
+ * created. */
 START_TEST(test_img_write_name_too_long)
 {
     tmpdir d;
-    char name[256], path[512], err[600];
+    char name[300], path[600], err[800];
     img_buf img = make_image(2, 2, 0.0, 1.0);
     memset(name, 'n', 246);
     strcpy(name + 246, ".pfm");
     tmpdir_make(&d);
+    ck_assert_msg(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err) == STATUS_OK, "%s", err);
+    ck_assert_int_eq(count_entries(d.path), 1);
+    ck_assert_int_eq(unlink(path), 0);
+    memset(name, 'n', 252);
+    strcpy(name + 252, ".pfm");
     ck_assert_int_eq(img_write(in_dir(path, sizeof path, &d, name), &img, NULL, err, sizeof err), STATUS_IO);
-    ck_assert_msg(strstr(err, strerror(ENAMETOOLONG)), "%s", err);
+    ck_assert_msg(strstr(err, "its name is 256 bytes, over the 255 of this file system"), "%s", err);
     ck_assert_int_eq(count_entries(d.path), 0);
     img_free(&img);
     tmpdir_remove(&d);
@@ -1044,6 +1088,7 @@ Suite *suite_image(void)
     tcase_add_test(fmt, test_img_write_read_pfm_bit_exact);
     tcase_add_test(fmt, test_img_write_pfm_counts_nonfinite_and_clamped);
     tcase_add_test(fmt, test_img_read_pfm_variants);
+    tcase_add_test(fmt, test_img_read_short_raster_allocates_nothing);
     tcase_add_test(fmt, test_img_write_ppm_bytes);
     tcase_add_test(fmt, test_img_write_read_ppm);
     tcase_add_test(fmt, test_img_read_ppm_16bit);

@@ -13,7 +13,7 @@
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "cli_testlib.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"
 #include "io/scene_file.h"
@@ -136,7 +136,7 @@ static void measure(const char *dir, const manifest_scene *s, double *peak, long
     char path[512], err[512];
     img_buf img;
     unsigned char *mask;
-    ck_assert_int_eq(img_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
+    ck_assert_int_eq(img_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_EXACT_PFM]), NULL, &img, err,
                               sizeof err), 0);
     ck_assert_int_eq(verify_mask_read(cli_path(path, sizeof path, dir, s->files[MANIFEST_FILE_MASK_PGM]), img.width,
                                       img.height, &mask, err, sizeof err), 0);
@@ -331,6 +331,16 @@ START_TEST(test_cli_kit_errors)
     cli_refray(r, over);
     ck_assert_int_eq(r->code, 64);
     ck_assert(cli_exists(path));
+    /* Nor is one that holds someone else's manifest.json (a web extension's):
+     * the name alone made it "a kit", and the directory was deleted whole. */
+    char other[300];
+    static const char ext[] = "{\"manifest_version\": 3, \"name\": \"an extension\"}\n";
+    cli_path(other, sizeof other, dir, "manifest.json");
+    ck_assert_int_eq(file_write_bytes(other, ext, sizeof ext - 1, why, sizeof why), 0);
+    cli_refray(r, over);
+    ck_assert_int_eq(r->code, 64);
+    ck_assert(cli_exists(path));
+    ck_assert(cli_exists(other));
     /* A kit is: the old one goes whole. */
     cli_remove(dir);
     cli_refray(r, over);
@@ -352,7 +362,7 @@ static void perturbed(const char *dir, const manifest_scene *s, double f, const 
 {
     char src[512], err[512];
     img_buf img;
-    ck_assert_int_eq(img_read(cli_path(src, sizeof src, dir, s->files[MANIFEST_FILE_EXACT_PFM]), &img, err,
+    ck_assert_int_eq(img_read(cli_path(src, sizeof src, dir, s->files[MANIFEST_FILE_EXACT_PFM]), NULL, &img, err,
                               sizeof err), 0);
     for (int i = 0; i < 3 * img.width * img.height; i++)
         img.rgb[i] *= 1 + f;

@@ -694,7 +694,7 @@ START_TEST(test_scene_load_mesh_errors)
     lim.max_mesh_triangles = 11;
     load_as(&l, "tests/scenes/mesh.scene", "mesh { file \"../obj/cube.obj\" }", &lim, 1);
     ck_assert_ptr_null(l.scene);
-    ck_assert_str_eq(first_line(&l), "tests/scenes/../obj/cube.obj:24:1: error: mesh exceeds the limit of 11 triangles");
+    ck_assert_str_eq(first_line(&l), "tests/scenes/../obj/cube.obj:24:1: error: mesh exceeds the limit of 11 triangles (--max-mesh-triangles)");
     loaded_done(&l);
 }
 END_TEST

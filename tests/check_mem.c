@@ -75,13 +75,15 @@ static int load_and_render(const char *path, const char *text, const mem *m, int
     o.warnings = 0;
     int status;
     scene_model *s;
-    scene_file_reader files = {-1, *m};
     if (text) {
         /* Files the text names come from beside path; a .json path makes it
          * a JSON scene. */
-        scene_source root = {path, NULL, text, strlen(text)};
+        scene_file_reader files;
+        scene_file_reader_init(&files, -1, m);
+        scene_source root = {path, NULL, text, strlen(text), 0};
         o.resolver = scene_file_resolver(&files);
         s = scene_file_load_source(&root, &o, &status);
+        scene_file_reader_free(&files);
     } else {
         s = scene_file_load_with(path, &o, &status);
     }

@@ -336,7 +336,7 @@ START_TEST(test_mesh_text_goes_back_to_the_resolver)
         o.resolver.fetch = lend_fetch;
         o.resolver.release = lend_release;
         o.resolver.user = &l;
-        scene_source root = {"t.scene", NULL, scene, sizeof scene - 1};
+        scene_source root = {"t.scene", NULL, scene, sizeof scene - 1, 0};
         int status;
         scene_model *s = scene_load_source(&root, &o, &status);
         ck_assert_int_eq(l.fetched, 1);

@@ -427,10 +427,10 @@ START_TEST(test_obj_parse_triangle_limit)
     run_parse(&r, text, 3);
     ck_assert_int_eq(r.ok, 0);
     ck_assert_int_eq(r.d.errors, 1);
-    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:6:1: error: mesh exceeds the limit of 3 triangles");
+    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:6:1: error: mesh exceeds the limit of 3 triangles (--max-mesh-triangles)");
     run_free(&r);
     run_parse(&r, text, 0);
-    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:5:1: error: mesh exceeds the limit of 0 triangles");
+    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:5:1: error: mesh exceeds the limit of 0 triangles (--max-mesh-triangles)");
     run_free(&r);
     run_parse(&r, text, -5);
     ck_assert_int_eq(r.ok, 0);
@@ -457,7 +457,7 @@ START_TEST(test_obj_parse_hostile_sizes)
     /* A 1 MB face: refused at the limit, with no room made for its triangles. */
     char *text = repeat(TRI3 "f", " -1", 400000, "\n");
     run_parse(&r, text, 1000);
-    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:4:1: error: mesh exceeds the limit of 1000 triangles");
+    ck_assert_str_eq(first_line(&r, buf, sizeof buf), "m.obj:4:1: error: mesh exceeds the limit of 1000 triangles (--max-mesh-triangles)");
     run_free(&r);
     free(text);
     /* A 1 MB number, quoted in the message only in part. */
@@ -466,6 +466,15 @@ START_TEST(test_obj_parse_hostile_sizes)
     ck_assert_str_eq(first_line(&r, buf, sizeof buf),
                      "m.obj:1:3: error: number '1111111111111111111111111111111111111111...' "
                      "is too long (more than 255 characters)");
+    run_free(&r);
+    free(text);
+    /* [REL-INPUT-3] A 'v' of a million values is refused at the eighth
+     * (x y z and w or r g b make at most 7; before: accepted whole). */
+    text = repeat("v", " 0", 1000000, "\n");
+    run_parse(&r, text, 1000);
+    ck_assert_int_eq(r.ok, 0);
+    ck_assert_str_eq(first_line(&r, buf, sizeof buf),
+                     "m.obj:1:17: error: 'v' takes at most 7 numbers (x y z, then w or r g b)");
     run_free(&r);
     free(text);
     /* A 1 MB keyword of control bytes and 100000 continuations in a row. */

@@ -122,8 +122,8 @@ static int id_listed(const id_list *l, const char *id)
     return 0;
 }
 
-/* Adds every "[PREFIX-...]" of text to l (once each); prefix is "[LANG-"
- * or "[JSON-". */
+/* Adds every "[PREFIX-...]" of text to l (once each); prefix is "[LANG-",
+ * "[JSON-" or "[REL-". */
 static void collect_ids(const char *text, const char *prefix, id_list *l)
 {
     for (const char *p = strstr(text, prefix); p; p = strstr(p + 1, prefix)) {
@@ -192,6 +192,13 @@ START_TEST(test_spec_json_defines_every_cited_id)
 }
 END_TEST
 
+/* The same for the reliability policies (spec/reliability.md). */
+START_TEST(test_spec_reliability_defines_every_cited_id)
+{
+    check_ids("spec/reliability.md", "[REL-", 25);
+}
+END_TEST
+
 Suite *suite_spec(void)
 {
     Suite *s = suite_create("spec");
@@ -201,6 +208,7 @@ Suite *suite_spec(void)
     tcase_add_test(tc, test_spec_helpers);
     tcase_add_test(tc, test_spec_defines_every_cited_id);
     tcase_add_test(tc, test_spec_json_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_reliability_defines_every_cited_id);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -23,6 +23,18 @@ START_TEST(test_vec_length_survives_huge_and_tiny_components)
 }
 END_TEST
 
+START_TEST(test_vec_length_fast_exact_and_falls_back_at_the_ends)
+{
+    /* 3-4-12 is a Pythagorean quadruple: the length is 13 exactly. */
+    ck_assert(vec_length_fast(vec_make(3, 4, 12)) == 13);
+    ck_assert(vec_length_fast(vec_make(0, 0, 0)) == 0);
+    /* a.a overflows and underflows here; the scaled form still gives 13 * 2^k. */
+    ck_assert(vec_length_fast(vec_make(3e200, 4e200, 12e200)) == vec_length(vec_make(3e200, 4e200, 12e200)));
+    ck_assert(vec_length_fast(vec_make(3e200, 4e200, 12e200)) < INFINITY);
+    ck_assert(vec_length_fast(vec_make(3e-200, 4e-200, 12e-200)) > 0);
+}
+END_TEST
+
 START_TEST(test_vec_normalize_gives_unit_length_or_zero)
 {
     vec3 n = vec_normalize(vec_make(1e-300, 2e-300, -2e-300));
@@ -46,6 +58,7 @@ Suite *suite_vec(void)
     TCase *tc = tcase_create("identities");
     tcase_add_test(tc, test_vec_cross_is_orthogonal_and_right_handed);
     tcase_add_test(tc, test_vec_length_survives_huge_and_tiny_components);
+    tcase_add_test(tc, test_vec_length_fast_exact_and_falls_back_at_the_ends);
     tcase_add_test(tc, test_vec_normalize_gives_unit_length_or_zero);
     tcase_add_test(tc, test_vec_madd_and_mul);
     suite_add_tcase(s, tc);

@@ -15,7 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "io/scene_file.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "testlib.h"
 #include "verify/verify.h"
 
@@ -70,7 +70,7 @@ END_TEST
 START_TEST(test_verify_scene_overrides)
 {
     scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
-    verify_opts o = {16, 12, 3, 1, 0, 3}; /* three timed renders: rays of one */
+    verify_opts o = {16, 12, 3, 1, 0, 3, NULL, NULL}; /* three timed renders: rays of one */
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "a", &o, &r), 0);
     ck_assert_int_eq(r.verdict, VERIFY_PASS);
@@ -388,13 +388,22 @@ END_TEST
 /* The exact text for a tiny case (binary fractions print exactly). */
 START_TEST(test_verify_json_metrics_exact_text)
 {
-    image_metrics im = {0.5, 0.25, 1, HUGE_VAL, 2, 3, 4, 1, 1, 2};
+    image_metrics im = {0.5, 0.25, 1, HUGE_VAL, 2, 3, 4, 1, 1, 2, 0, -1, -1};
     membuf m;
     mem_open(&m);
     verify_json_metrics(m.fp, &im, 0.125);
     ck_assert_str_eq(mem_close(&m), "\"compared\": 4, \"excluded\": 1, \"max_abs\": 0.5, \"rms\": 0.25, "
                                     "\"max_rel\": 1, \"psnr\": null, \"peak\": 2, \"over\": 3, "
-                                    "\"tolerance\": 0.125, \"worst\": [1, 2]");
+                                    "\"tolerance\": 0.125, \"worst\": [1, 2], \"nonfinite\": 0, "
+                                    "\"first_nonfinite\": null");
+    free(m.text);
+    /* [REL-NONFINITE-1] the count and the first position of non-finite pixels. */
+    im.nonfinite = 2;
+    im.nonfinite_x = 3;
+    im.nonfinite_y = 0;
+    mem_open(&m);
+    verify_json_metrics(m.fp, &im, 0.125);
+    ck_assert_msg(strstr(mem_close(&m), "\"nonfinite\": 2, \"first_nonfinite\": [3, 0]") != NULL, "%s", m.text);
     free(m.text);
 }
 END_TEST
@@ -629,10 +638,90 @@ START_TEST(test_cli_oracle_writes_the_exact_image)
     const char *cmp[] = {"compare", render, exact, "--mask", mask, "--tolerance", "1e-7", NULL};
     ck_assert_int_eq(run_refray(cmp, out), 0);
     img_buf img;
-    ck_assert_int_eq(img_read(exact, &img, err, sizeof err), 0);
+    ck_assert_int_eq(img_read(exact, NULL, &img, err, sizeof err), 0);
     ck_assert_near(img_pixel(&img, 16, 12)[0], 0.4, 1e-7); /* Kd * Ia, red */
     ck_assert_near(img_pixel(&img, 0, 0)[2], 0.3, 1e-7);   /* the background */
     img_free(&img);
+    remove_scenes(&f);
+}
+END_TEST
+
+/* The seconds of a verify output, which no two runs share, each made one
+ * '#' in place: the values of the JSON keys "..._seconds", the TSV's
+ * columns 18 and 19 (render and oracle seconds) of its step rows, and its
+ * fit lines of time. */
+static void mask_seconds(char *s)
+{
+    static const char key[] = "_seconds\": ";
+    size_t w = 0, klen = sizeof key - 1;
+    for (size_t i = 0; s[i];) {
+        size_t len = strcspn(s + i, "\n"), end = i + len + (s[i + len] == '\n');
+        char *seconds = strstr(s + i, "\tseconds\t");
+        int tab = 0, fit = s[i] == '#';
+        if (fit && seconds && seconds < s + i + len) {
+            s[w++] = '#';
+            i = end;
+            continue;
+        }
+        for (; i < end; i++) {
+            tab += s[i] == '\t';
+            int column = !fit && (tab == 17 || tab == 18) && s[i] != '\t';
+            int value = w >= klen && memcmp(s + w - klen, key, klen) == 0;
+            if (value || column) {
+                s[w++] = '#';
+                while (i + 1 < end && s[i + 1] != ',' && s[i + 1] != '}' && s[i + 1] != '\t')
+                    i++;
+            } else {
+                s[w++] = s[i];
+            }
+        }
+    }
+    s[w] = '\0';
+}
+
+/* The file at path into buf (size bytes), seconds masked. */
+static void read_masked(const char *path, char *buf, size_t size)
+{
+    FILE *fp = fopen(path, "rb");
+    ck_assert_ptr_nonnull(fp);
+    size_t n = fread(buf, 1, size - 1, fp);
+    buf[n] = '\0';
+    fclose(fp);
+    mask_seconds(buf);
+}
+
+/* [VERIFY-JOBS-1] --jobs 3 and --jobs 0 check the scenes on worker
+ * processes: the same objects in the order given (a bad, a refused, a
+ * missing and passing scenes mixed), the same exit code, the same sweep
+ * TSV; only the seconds differ. */
+START_TEST(test_cli_verify_jobs)
+{
+    scene_files f;
+    static char one[OUT_MAX], many[OUT_MAX], tsv_one[OUT_MAX], tsv_many[OUT_MAX];
+    char tsv[160];
+    static const char *const jobs[] = {"3", "0"};
+    make_scenes(&f);
+    const char *a1[] = {"verify", "--json", "--jobs", "1", f.good, f.plain, f.unknown, "scenes/analytic/disk_light.scene",
+                        f.missing, f.good, NULL};
+    ck_assert_int_eq(run_refray(a1, one), 66);
+    mask_seconds(one);
+    ck_assert_msg(strstr(one, "disk_light") && strstr(one, "no_such_family"), "%s", one);
+    snprintf(tsv, sizeof tsv, "%s/sweep.tsv", f.dir);
+    const char *s1[] = {"verify", "--jobs", "1", "--sweep", "samples=1,4", "--tsv", tsv, f.good,
+                        "scenes/analytic/disk_light.scene", "scenes/analytic/rect_light.scene", NULL};
+    ck_assert_int_eq(run_refray(s1, many), 0);
+    read_masked(tsv, tsv_one, sizeof tsv_one);
+    ck_assert_msg(strstr(tsv_one, "rect_light\tsamples\t4\t") && strstr(tsv_one, "\t#\t#\t"), "%s", tsv_one);
+    for (int k = 0; k < 2; k++) {
+        a1[3] = jobs[k];
+        ck_assert_int_eq(run_refray(a1, many), 66);
+        mask_seconds(many);
+        ck_assert_str_eq(many, one);
+        s1[2] = jobs[k];
+        ck_assert_int_eq(run_refray(s1, many), 0);
+        read_masked(tsv, tsv_many, sizeof tsv_many);
+        ck_assert_str_eq(tsv_many, tsv_one);
+    }
     remove_scenes(&f);
 }
 END_TEST
@@ -701,5 +790,10 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_cli_verify_usage_errors);
     tcase_add_test(tc, test_cli_oracle_exit_codes);
     suite_add_tcase(s, tc);
+    /* Nine verify runs of up to six scenes. */
+    TCase *jobs = tcase_create("jobs");
+    tcase_set_timeout(jobs, 30);
+    tcase_add_test(jobs, test_cli_verify_jobs);
+    suite_add_tcase(s, jobs);
     return s;
 }

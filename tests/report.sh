@@ -4,8 +4,11 @@
 #
 # For every scene: `refray verify --sweep` with the light samples
 # 1, 2, 4, ..., 1024 when the scene has a distributed light, else with the
-# camera grid k = 1..4; one TSV per scene under OUTDIR/tsv/ and the table
-# under OUTDIR/log/.  Then, with gnuplot, in OUTDIR:
+# camera grid k = 1..4; one verify per kind, its scenes on REPORT_JOBS
+# worker processes (default 0: one per processor; each render is still on
+# one thread, and 1 times them without a neighbour); one TSV per scene
+# under OUTDIR/tsv/ and the tables under OUTDIR/log/.  Scene paths must not
+# hold white space.  Then, with gnuplot, in OUTDIR:
 #   error_vs_n.png/.svg      sampled scenes: RMS error against light samples N
 #   error_vs_time.png/.svg   sampled scenes: RMS error against render seconds
 #   deterministic.png/.svg   exact scenes: RMS error against k*k (round-off)
@@ -26,6 +29,8 @@ shift 2
 light_steps=${REPORT_LIGHT_STEPS:-1,2,4,8,16,32,64,128,256,512,1024}
 pixel_steps=${REPORT_PIXEL_STEPS:-1,2,3,4}
 runs=${REPORT_RUNS:-3}
+jobs=${REPORT_JOBS:-0}
+[ "$jobs" != 0 ] || jobs=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 tab=$(printf '\t')
 
 case $out in
@@ -36,28 +41,46 @@ mkdir -p "$out/tsv" "$out/log"
 start=$(date +%s)
 : > "$out/sampled.list"
 : > "$out/deterministic.list"
+: > "$out/sampled.scenes"
+: > "$out/deterministic.scenes"
 failed=0
 
-# The sweep of one scene; a scene that misses its tolerance (exit 1) is
-# reported, a scene that cannot be run (65, 66, 70) stops the report.
 for scene in "$@"; do
     name=$(basename "$scene" .scene)
     if "$refray" check -W "$scene" | grep -q 'sampled-lights'; then
-        sweep="samples=$light_steps"
-        echo "$name" >> "$out/sampled.list"
+        kind=sampled
     else
-        sweep="pixel-samples=$pixel_steps"
-        echo "$name" >> "$out/deterministic.list"
+        kind=deterministic
     fi
-    printf 'report: %-40s %s\n' "$name" "$sweep"
-    status=0
-    "$refray" verify -W --runs "$runs" --sweep "$sweep" --tsv "$out/tsv/$name.tsv" "$scene" > "$out/log/$name.txt" || status=$?
-    case $status in
-        0) ;;
-        1) failed=$((failed + 1)); echo "report: $name: some step missed its tolerance (see $out/log/$name.txt)" ;;
-        *) echo "report: $name: refray verify exited $status" >&2; cat "$out/log/$name.txt" >&2; exit "$status" ;;
-    esac
+    echo "$name" >> "$out/$kind.list"
+    echo "$scene" >> "$out/$kind.scenes"
 done
+
+# The sweeps of one kind of scene, then its TSV split into one per scene
+# (a "# fit" row names its scene in field 2, a step row in field 1).  A
+# scene that misses its tolerance (exit 1) is counted, one that cannot be
+# run (65, 66, 70) stops the report.
+sweep_kind() {
+    [ -s "$out/$1.scenes" ] || return 0
+    printf 'report: %s scenes, sweep %s, %s at a time\n' "$(wc -l < "$out/$1.scenes")" "$2" "$jobs"
+    status=0
+    # shellcheck disable=SC2046
+    "$refray" verify -W --jobs "$jobs" --runs "$runs" --sweep "$2" --tsv "$out/tsv/$1.all" \
+        $(cat "$out/$1.scenes") > "$out/log/$1.txt" || status=$?
+    case $status in
+        0 | 1) ;;
+        *) echo "report: refray verify exited $status" >&2; cat "$out/log/$1.txt" >&2; exit "$status" ;;
+    esac
+    awk -F"$tab" -v dir="$out/tsv" 'NR == 1 { header = $0; next }
+        { scene = $1 == "# fit" ? $2 : $1; n = scene; sub(/.*\//, "", n); sub(/\.scene$/, "", n)
+          f = dir "/" n ".tsv"; if (!(f in seen)) { print header > f; seen[f] = 1 } print > f }' "$out/tsv/$1.all"
+    over=$(awk -F"$tab" '$1 !~ /^#/ && $21 == "FAIL" { print $1 }' "$out/tsv/$1.all" | sort -u | wc -l)
+    [ "$over" -eq 0 ] || echo "report: $over $1 scenes missed their tolerance at some step (see $out/log/$1.txt)"
+    failed=$((failed + over))
+    rm -f "$out/tsv/$1.all" "$out/$1.scenes"
+}
+sweep_kind sampled "samples=$light_steps"
+sweep_kind deterministic "pixel-samples=$pixel_steps"
 
 # A "# fit" line's field for one scene: fit FILE AGAINST FIELD
 # (fields: 6 slope, 7 standard error, 10 meaningful, 11 expected, 12 note).
@@ -148,7 +171,8 @@ agrees() {
     echo
     echo "Made by \`make report\` (tests/report.sh) on $(date -u '+%Y-%m-%d %H:%M UTC') with $refray."
     echo "Sampled scenes sweep the light samples N = $light_steps; exact scenes the camera"
-    echo "grid k = $pixel_steps (N = k*k); times are medians of $runs renders on one thread."
+    echo "grid k = $pixel_steps (N = k*k); times are medians of $runs renders on one thread, with"
+    echo "$jobs scenes checked side by side (REPORT_JOBS)."
     echo "Errors are against the exact image at the last step;"
     echo "slopes are least-squares fits of log RMS against log N (± one standard error)."
     echo "Expected for stratified light samples: -1 for a light seen whole (smooth integrand),"

@@ -3,11 +3,13 @@
  */
 #include <string.h>
 #include "api/convert.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 
 rf_status rf_image_create(int width, int height, const rf_allocator *allocator, rf_image **out)
 {
     mem m = api_mem(allocator);
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
     rf_image *img = mem_alloc(&m, sizeof *img);
     if (!img)
@@ -83,17 +85,20 @@ void rf_write_options_init(rf_write_options *o)
     o->exr_float = d.exr_float;
 }
 
-static img_write_opts write_opts(const rf_write_options *o, img_write_stats *st)
+img_write_opts api_write_opts(const rf_write_options *o, img_write_stats *st, cancel_poll *cancel)
 {
     img_write_opts w = img_write_opts_default();
+    *cancel = cancel_poll_make(NULL, NULL);
     if (o) {
         w.exposure_stops = o->exposure_stops;
         w.tone = o->tone;
         w.linear_png = o->linear;
         w.png_bits = o->png_bits;
         w.exr_float = o->exr_float;
+        *cancel = cancel_poll_make(o->cancel, o->user);
     }
     w.stats = st;
+    w.cancel = cancel;
     return w;
 }
 
@@ -105,11 +110,24 @@ static void write_stats(const img_write_stats *st, rf_write_stats *out)
     }
 }
 
+/* A NULL image, path or stream: RF_ERR_USAGE with the reason. */
+static rf_status missing(char *message, size_t message_size, rf_write_stats *stats, const char *why)
+{
+    img_write_stats none = {0, 0};
+    write_stats(&none, stats);
+    if (message && message_size > 0)
+        snprintf(message, message_size, "%s", why);
+    return RF_ERR_USAGE;
+}
+
 rf_status rf_image_write(const rf_image *img, const char *path, const rf_write_options *o, rf_write_stats *stats,
                          char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    if (!img || !path)
+        return missing(message, message_size, stats, !img ? "no image to write" : "no path to write to");
+    cancel_poll cancel;
+    img_write_opts w = api_write_opts(o, &st, &cancel);
     int status = img_write(path, &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);
@@ -119,7 +137,10 @@ rf_status rf_image_write_stream(const rf_image *img, FILE *stream, rf_format fmt
                                 rf_write_stats *stats, char *message, size_t message_size)
 {
     img_write_stats st = {0, 0};
-    img_write_opts w = write_opts(o, &st);
+    if (!img || !stream)
+        return missing(message, message_size, stats, !img ? "no image to write" : "no stream to write to");
+    cancel_poll cancel;
+    img_write_opts w = api_write_opts(o, &st, &cancel);
     int status = img_write_stream(stream, format_in(fmt), &img->buf, &w, message, message ? message_size : 0);
     write_stats(&st, stats);
     return api_status(status);

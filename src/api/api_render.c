@@ -4,6 +4,7 @@
  */
 #include <string.h>
 #include "api/convert.h"
+#include "base/hash.h"
 
 void rf_render_options_init(rf_render_options *o)
 {
@@ -23,8 +24,10 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
 {
     const scene_model *s = api_scene(scene);
     render_opts ro;
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
-    if (!api_render_opts(o, &ro))
+    if (!s || !api_render_opts(o, &ro))
         return RF_ERR_USAGE;
     rf_renderer *r = mem_alloc(&s->mem, sizeof *r);
     if (!r)
@@ -35,6 +38,8 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
         rf_render_options_init(&r->options);
     ro.progress = on_row;
     ro.progress_ctx = r;
+    ro.cancel = r->options.cancel;
+    ro.cancel_ctx = r->options.user;
     int status = renderer_init(&r->r, s, &ro);
     if (status != STATUS_OK) {
         mem_free(&s->mem, r, sizeof *r);
@@ -50,16 +55,40 @@ void rf_renderer_size(const rf_renderer *r, int *width, int *height)
     *height = r->r.stats.height;
 }
 
-rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
+/* A float or a double region (one of f32, f64 set), checked first. */
+static rf_status region(rf_renderer *r, int x0, int y0, int x1, int y1, float *f32, double *f64, size_t row_stride)
 {
+    if (!r)
+        return RF_ERR_USAGE;
     const render_stats *st = &r->r.stats;
-    if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || !pixels ||
+    if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || (!f32 && !f64) ||
         row_stride < 3 * (size_t)(x1 - x0))
+        return RF_ERR_USAGE;
+    /* The last row ends (rows - 1) * row_stride + 3 * columns floats in: a
+     * stride so large that this wraps around would write before pixels. */
+    if ((size_t)(y1 - y0 - 1) > ((size_t)-1 - 3 * (size_t)(x1 - x0)) / row_stride)
         return RF_ERR_USAGE;
     if (r->options.cancel && r->options.cancel(r->options.user))
         return RF_ERR_CANCELLED;
-    render_target t = {x0, y0, x1, y1, pixels, NULL, row_stride};
+    render_target t = {x0, y0, x1, y1, f32, f64, row_stride};
     return api_status(renderer_region(&r->r, &t));
+}
+
+rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *pixels, size_t row_stride)
+{
+    return region(r, x0, y0, x1, y1, pixels, NULL, row_stride);
+}
+
+rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1, int y1, double *pixels,
+                                  size_t row_stride)
+{
+    return region(r, x0, y0, x1, y1, NULL, pixels, row_stride);
+}
+
+unsigned long long rf_renderer_fingerprint(const rf_renderer *r)
+{
+    static const char version[] = RF_VERSION_STRING;
+    return hash_bytes(renderer_fingerprint(&r->r), version, sizeof version - 1);
 }
 
 void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats)
@@ -81,6 +110,8 @@ rf_status rf_render_image(const rf_scene *scene, const rf_render_options *o, rf_
 {
     const scene_model *s = api_scene(scene);
     rf_renderer *r;
+    if (!out)
+        return RF_ERR_USAGE;
     *out = NULL;
     if (stats)
         memset(stats, 0, sizeof *stats);

@@ -55,10 +55,20 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
     rf_source src;
     memset(&src, 0, sizeof src);
     rf_status status = r->fetch(r->user, from, name, &src, why, why_size);
+    if (status == RF_OK && !src.text && src.size > 0) {
+        /* Text that is not there: refused here, before it is read. */
+        if (r->release)
+            r->release(r->user, &src);
+        snprintf(why, why_size, "cannot read '%s': the resolver gave %zu bytes of no text", name, src.size);
+        return STATUS_DATA;
+    }
+    if (status != RF_OK && why_size > 0 && why[0] == '\0')
+        snprintf(why, why_size, "cannot read '%s': %s", name, rf_status_string(status));
     out->path = src.path;
     out->identity = src.identity;
     out->text = src.text;
     out->len = src.size;
+    out->known = 0; /* a host's resolver always gives the text */
     return (int)status;
 }
 
@@ -88,6 +98,8 @@ static void load_opts(const rf_load_options *o, scene_load_opts *out)
         out->resolver.user = (void *)&o->resolver;
     }
     out->mem = api_mem(o->allocator);
+    out->cancel = o->cancel;
+    out->cancel_user = o->cancel_user;
 }
 
 rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
@@ -95,8 +107,13 @@ rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, 
 {
     scene_load_opts lo;
     int status;
+    if (!out)
+        return RF_ERR_USAGE;
+    *out = NULL;
+    if (!name || (!text && size > 0))
+        return RF_ERR_USAGE;
     load_opts(o, &lo);
-    scene_source root = {name, NULL, text, size};
+    scene_source root = {name, NULL, text, size, 0};
     *out = (rf_scene *)(void *)scene_file_load_source(&root, &lo, &status);
     return api_status(status);
 }
@@ -105,6 +122,11 @@ rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scen
 {
     scene_load_opts lo;
     int status;
+    if (!out)
+        return RF_ERR_USAGE;
+    *out = NULL;
+    if (!path)
+        return RF_ERR_USAGE;
     load_opts(o, &lo);
     *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
     return api_status(status);
@@ -128,10 +150,14 @@ typedef char every_kind[PRIM_KINDS == 9 ? 1 : -1];
 void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 {
     const scene_model *s = api_scene(scene);
+    if (!info)
+        return;
     int *kinds[PRIM_KINDS] = {&info->spheres, &info->planes,    &info->triangles, &info->disks, &info->boxes,
                               &info->cylinders, &info->cones, &info->tori,      &info->meshes};
     long triangles;
     memset(info, 0, sizeof *info);
+    if (!s)
+        return;
     info->width = s->image.width;
     info->height = s->image.height;
     info->samples = s->image.samples;

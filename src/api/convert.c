@@ -38,6 +38,7 @@ static const struct {
     LIMIT(max_width), LIMIT(max_height), LIMIT(max_pixels), LIMIT(max_samples), LIMIT(max_light_samples),
     LIMIT(max_depth), LIMIT(max_loop_iterations), LIMIT(max_include_depth), LIMIT(max_file_bytes),
     LIMIT(max_mesh_triangles), LIMIT(max_primitives), LIMIT(max_errors), LIMIT(max_ray_tree),
+    LIMIT(max_input_bytes), LIMIT(max_memory_mb),
 };
 typedef char all_limits[sizeof limit_fields / sizeof limit_fields[0] * sizeof(long) == sizeof(scene_limits) &&
                                 sizeof(rf_limits) == sizeof(scene_limits) ? 1 : -1];

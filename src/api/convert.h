@@ -43,4 +43,9 @@ rf_limits api_limits_out(const scene_limits *l);
 int api_render_opts(const rf_render_options *o, render_opts *out);
 void api_render_stats(const render_stats *s, rf_render_stats *out);
 
+/* The write options o (NULL: the defaults) as the library's, with stats
+ * (may be NULL) to fill and o's cancel callback in *cancel, which must
+ * live as long as the result. */
+img_write_opts api_write_opts(const rf_write_options *o, img_write_stats *st, cancel_poll *cancel);
+
 #endif

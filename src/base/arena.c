@@ -25,6 +25,7 @@ void arena_init(arena *a, const mem *m)
 {
     a->head = NULL;
     a->mem = mem_pick(m);
+    a->bytes = 0;
 }
 
 void arena_free(arena *a)
@@ -34,6 +35,7 @@ void arena_free(arena *a)
         mem_free(&a->mem, a->head, sizeof *a->head + a->head->size);
         a->head = next;
     }
+    a->bytes = 0;
 }
 
 static size_t round_up(size_t n)
@@ -55,6 +57,7 @@ void *arena_alloc(arena *a, size_t size)
             return NULL;
         b->used = 0;
         b->size = cap;
+        a->bytes += sizeof *b + cap;
         b->next = a->head;
         a->head = b;
     }

@@ -13,6 +13,7 @@ typedef struct arena_block arena_block;
 typedef struct arena {
     arena_block *head;
     mem mem;          /* where the blocks come from */
+    size_t bytes;     /* held in blocks (a load's memory estimate counts them) */
 } arena;
 
 /* An empty arena whose blocks come from m (NULL: the C library). */

@@ -3,14 +3,18 @@
  *
  * The message is formatted here, into a buffer on the stack; one longer
  * than that gets a buffer from the source set's allocator, and is cut to
- * the stack buffer when even that fails, so reporting never fails.
+ * the stack buffer when even that fails, so reporting never fails.  What
+ * a record carries for display, its message and its file name, is then
+ * escaped and cut (text_escape): a sink receives printable ASCII only, at
+ * most SHOWN_BYTES of it, whatever the input held ([REL-ESCAPE-1]).
  */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "base/diag.h"
+#include "base/text.h"
 
-enum { MESSAGE_BYTES = 512 };
+enum { MESSAGE_BYTES = 512, SHOWN_BYTES = 1024 };
 
 void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_user)
 {
@@ -21,6 +25,7 @@ void diag_init(diag *d, const source_set *sources, diag_sink sink, void *sink_us
     d->warnings = 0;
     d->max_errors = 20;
     d->warnings_enabled = 1;
+    d->cancel = NULL;
     d->subject = NULL;
     d->subject_ctx = NULL;
 }
@@ -30,15 +35,23 @@ int diag_too_many(const diag *d)
     return d->max_errors > 0 && d->errors >= d->max_errors;
 }
 
+int diag_stop(const diag *d)
+{
+    return cancel_step(d->cancel) || diag_too_many(d);
+}
+
 static void emit(const diag *d, diag_level level, const source_file *f, size_t offset, const char *message,
                  size_t span_length, int excerpt)
 {
     diag_record r;
+    char path[SHOWN_BYTES];
     memset(&r, 0, sizeof r);
     r.level = level;
     r.message = message;
-    if (f)
-        r.path = f->path;
+    if (f) {
+        text_escape(f->path, strlen(f->path), path, sizeof path);
+        r.path = path;
+    }
     /* A mesh file's text is released once its mesh is built: a later
      * message names the file without a line. */
     if (f && f->text) {
@@ -55,7 +68,9 @@ static void emit(const diag *d, diag_level level, const source_file *f, size_t o
 static void emit_include_chain(const diag *d, const source_file *f)
 {
     const source_set *set = d->sources;
-    while (f->included_from.file >= 0 && f->included_from.file < set->count) {
+    /* A chain longer than the files there are would be a loop: defensive. */
+    for (int steps = 0; steps < set->count && f->included_from.file >= 0 && f->included_from.file < set->count;
+         steps++) {
         const source_file *parent = set->files[f->included_from.file];
         emit(d, DIAG_NOTE, parent, f->included_from.begin,
              f->is_mesh ? "in the mesh read here" : "included from here", 0, 0);
@@ -110,9 +125,11 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
         va_end(ap);
         message = big;
     }
-    deliver(d, level, span, message);
+    char shown[SHOWN_BYTES];
+    text_escape(message, strlen(message), shown, sizeof shown);
     if (big)
         mem_free(m, big, (size_t)n + 1);
+    deliver(d, level, span, shown);
     if (level == DIAG_ERROR && d->max_errors > 0 && d->errors == d->max_errors) {
         snprintf(local, sizeof local, "too many errors (%d), stopping", d->max_errors);
         deliver(d, DIAG_NOTE, src_span_none(), local);

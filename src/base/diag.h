@@ -9,6 +9,7 @@
 #define REFRAY_DIAG_H
 
 #include <stddef.h>
+#include "base/cancel.h"
 #include "base/source.h"
 
 typedef enum diag_level {
@@ -17,14 +18,18 @@ typedef enum diag_level {
     DIAG_NOTE
 } diag_level;
 
-/* One message.  Pointers are valid during the sink's call only. */
+/* One message.  Pointers are valid during the sink's call only.  path and
+ * message are printable ASCII (other bytes escaped as \xHH) of at most
+ * 1023 bytes; source_line is the input's own bytes, any of them, so that
+ * columns count as in the file: a sink that shows it escapes it
+ * (io/diag_print.c does; spec/reliability.md, [REL-ESCAPE-1]). */
 typedef struct diag_record {
     diag_level level;
     const char *path;          /* the file; NULL: no location (a whole-load message) */
     int line, column;          /* 1-based, column in bytes; 0 without a location, or
                                   with path alone (a mesh file whose text is gone) */
     const char *message;       /* without location or level */
-    const char *source_line;   /* the line holding the span, without its terminator;
+    const char *source_line;   /* the line holding the span, without its terminator, raw;
                                   NULL: nothing to show (an "included from here" note) */
     size_t source_line_length;
     size_t span_length;        /* bytes of the span from the column on (may pass the line end) */
@@ -40,6 +45,7 @@ typedef struct diag {
     int warnings;
     int max_errors;            /* after this many errors further ones are counted, not delivered */
     int warnings_enabled;      /* 0: warnings are counted but not delivered */
+    cancel_poll *cancel;       /* the load's: every reader asks it through diag_stop; NULL: never */
     /* Optional: what a span points at, put before the message as
      * "SUBJECT: " (a JSON scene names the value by its JSON pointer, since
      * a line and column alone do not say which field of a generated file
@@ -67,5 +73,10 @@ void diag_report(diag *d, diag_level level, src_span span, const char *fmt, ...)
 
 /* True once the error limit is reached: callers use it to stop early. */
 int diag_too_many(const diag *d);
+
+/* diag_too_many, or the load was cancelled: counts one step of d->cancel
+ * (base/cancel.h).  Every loop of the front end over input (statements,
+ * OBJ lines, tokens) asks it, so a load stops within [REL-CANCEL-1]. */
+int diag_stop(const diag *d);
 
 #endif

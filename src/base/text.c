@@ -78,3 +78,53 @@ size_t text_tail(const char *text, size_t len, int max_lines, size_t max_bytes)
     }
     return start;
 }
+
+static int printable(unsigned char c)
+{
+    return c >= 0x20 && c < 0x7f;
+}
+
+/* Escapes in[from..to) into out at *o, up to room bytes in all. */
+static void escape_range(const unsigned char *in, size_t from, size_t to, char *out, size_t *o)
+{
+    static const char hex[] = "0123456789abcdef";
+    for (size_t i = from; i < to; i++) {
+        if (printable(in[i])) {
+            out[(*o)++] = (char)in[i];
+            continue;
+        }
+        out[(*o)++] = '\\';
+        out[(*o)++] = 'x';
+        out[(*o)++] = hex[in[i] >> 4];
+        out[(*o)++] = hex[in[i] & 15];
+    }
+}
+
+size_t text_escape(const char *in, size_t len, char *out, size_t out_size)
+{
+    const unsigned char *p = (const unsigned char *)in;
+    size_t o = 0, need = 0;
+    if (out_size == 0)
+        return 0;
+    for (size_t i = 0; i < len; i++)
+        need += printable(p[i]) ? 1 : 4;
+    if (need < out_size) {
+        escape_range(p, 0, len, out, &o);
+        out[o] = '\0';
+        return o;
+    }
+    /* Too long: a head and a tail of whole escapes, "..." between. */
+    size_t room = out_size > 4 ? out_size - 4 : 0, head_room = room * 2 / 3, head = 0, tail = len, used = 0;
+    while (head < len && used + (printable(p[head]) ? 1 : 4) <= head_room)
+        used += printable(p[head++]) ? 1 : 4;
+    while (tail > head && used + (printable(p[tail - 1]) ? 1 : 4) <= room)
+        used += printable(p[--tail]) ? 1 : 4;
+    escape_range(p, 0, head, out, &o);
+    if (out_size > 4) {
+        memcpy(out + o, "...", 3);
+        o += 3;
+    }
+    escape_range(p, tail, len, out, &o);
+    out[o] = '\0';
+    return o;
+}

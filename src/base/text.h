@@ -17,6 +17,17 @@
  */
 size_t text_clean(const char *in, size_t len, char *out, size_t out_size);
 
+/*
+ * Copies len bytes of in to out (out_size bytes, always NUL-terminated)
+ * with every byte that is not printable ASCII (0x20 to 0x7e) written as
+ * \xHH: control bytes, ESC and the C1 range 0x80 to 0x9f among them, so
+ * the text cannot move a terminal's cursor or change its colours
+ * ([REL-ESCAPE-1]).  When the escaped text does not fit, its middle is
+ * cut: the first two thirds and the last third of the room are kept, with
+ * "..." between.  Returns the length written.
+ */
+size_t text_escape(const char *in, size_t len, char *out, size_t out_size);
+
 /* The last lines of text[0..len): at most max_lines lines and max_bytes
  * bytes, cut at a line start where possible.  Returns the offset in text
  * where that tail begins. */

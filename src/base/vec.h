@@ -19,7 +19,17 @@
 #define REFRAY_VEC_H
 
 #include <float.h>
+/* Frama-C's C library has no <tgmath.h> (make prove, spec/proofs.md); it
+ * analyses the double build only, where tgmath would pick the double
+ * functions of <math.h> anyway. */
+#if defined(__FRAMAC__) && !defined(REFRAY_LONG_DOUBLE)
+#include <math.h>
+#else
 #include <tgmath.h>
+#endif
+
+/* ACSL's type of mathematical reals, named before the C `real` hides it. */
+/*@ type mreal = real; */
 
 #ifdef REFRAY_LONG_DOUBLE
 typedef long double real;
@@ -47,6 +57,49 @@ typedef struct vec3 {
 /* An RGB triple of linear radiometric values; x=r, y=g, z=b. */
 typedef vec3 rgb;
 
+/*
+ * The ACSL contracts of the core (make prove, spec/proofs.md).  A clause
+ * holds of the doubles the code computes and of exact arithmetic alike,
+ * and both Eva (the doubles) and WP (exact, real-number arithmetic) check
+ * it, unless it is wrapped:
+ *   EXACT(p)    holds in exact arithmetic: WP proves and uses it; the Eva
+ *               runs (REFRAY_PROVE_EVA) read it as \true;
+ *   DOUBLES(p)  a bound on magnitudes that holds of the doubles: Eva proves
+ *               and uses it; WP reads it as \true.
+ * (The clauses of a function other analyses use in place of its body are
+ * written out, not through predicates: Eva narrows values by those only.)
+ */
+#ifdef __FRAMAC__
+#ifdef REFRAY_PROVE_EVA
+#define EXACT(p) \true
+#define DOUBLES(p) (p)
+#else
+#define EXACT(p) (p)
+#define DOUBLES(p) \true
+#endif
+#endif
+
+/*@
+  logic mreal vdot(vec3 a, vec3 b) = a.x * b.x + a.y * b.y + a.z * b.z;
+  logic mreal vnorm2(vec3 a) = vdot(a, a);
+  logic mreal vmaxabs(vec3 a) = \max(\abs(a.x), \max(\abs(a.y), \abs(a.z)));
+
+  predicate vfinite(vec3 a) = \is_finite(a.x) && \is_finite(a.y) && \is_finite(a.z);
+  predicate vbounded(vec3 a, mreal b) = \abs(a.x) <= b && \abs(a.y) <= b && \abs(a.z) <= b;
+  predicate vin(vec3 a, mreal lo, mreal hi) = lo <= a.x <= hi && lo <= a.y <= hi && lo <= a.z <= hi;
+  predicate vzero(vec3 a) = a.x == 0 && a.y == 0 && a.z == 0;
+  predicate veq(vec3 a, vec3 b) = a.x == b.x && a.y == b.y && a.z == b.z;
+  // "unit": |a|^2 within 2^-20 of 1 (what vec_normalize and the loader
+  // deliver is within a few ulps; spec/proofs.md, "Unit vectors")
+  predicate vunit(vec3 a) = \abs(vnorm2(a) - 1) <= 0x1p-20;
+  // a finite colour with no negative channel (a finite double is at most
+  // DBL_MAX: no bound is written, a 309-digit literal stalls the provers)
+  predicate vcolour(vec3 c) = vfinite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0;
+
+*/
+
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == x && \result.y == y && \result.z == z); */
 static inline vec3 vec_make(real x, real y, real z)
 {
     vec3 v;
@@ -56,32 +109,69 @@ static inline vec3 vec_make(real x, real y, real z)
     return v;
 }
 
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == s && \result.y == s && \result.z == s); */
 static inline vec3 vec_splat(real s) { return vec_make(s, s, s); }
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.x + b.x && \result.y == a.y + b.y && \result.z == a.z + b.z); */
 static inline vec3 vec_add(vec3 a, vec3 b) { return vec_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.x - b.x && \result.y == a.y - b.y && \result.z == a.z - b.z); */
 static inline vec3 vec_sub(vec3 a, vec3 b) { return vec_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == -a.x && \result.y == -a.y && \result.z == -a.z); */
 static inline vec3 vec_neg(vec3 a) { return vec_make(-a.x, -a.y, -a.z); }
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.x * s && \result.y == a.y * s && \result.z == a.z * s); */
 static inline vec3 vec_scale(vec3 a, real s) { return vec_make(a.x * s, a.y * s, a.z * s); }
 
 /* Channel-wise product: a colour filtered by a coefficient. */
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.x * b.x && \result.y == a.y * b.y && \result.z == a.z * b.z); */
 static inline vec3 vec_mul(vec3 a, vec3 b) { return vec_make(a.x * b.x, a.y * b.y, a.z * b.z); }
 
 /* a + b*s, the accumulation step of every shading sum. */
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.x + b.x * s && \result.y == a.y + b.y * s && \result.z == a.z + b.z * s); */
 static inline vec3 vec_madd(vec3 a, vec3 b, real s)
 {
     return vec_make(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
 }
 
+/*@ assigns \nothing;
+    ensures EXACT(\result == vdot(a, b)); */
 static inline real vec_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
+/*@ assigns \nothing;
+    ensures EXACT(\result.x == a.y * b.z - a.z * b.y && \result.y == a.z * b.x - a.x * b.z &&
+                  \result.z == a.x * b.y - a.y * b.x); */
 static inline vec3 vec_cross(vec3 a, vec3 b)
 {
     return vec_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 
-static inline real vec_length2(vec3 a) { return vec_dot(a, a); }
+/* a.x * a.x rather than vec_dot(a, a): the same roundings, and an analyser
+ * that sees one operand twice knows the square is not negative. */
+/*@ assigns \nothing;
+    ensures \result >= 0;
+    ensures EXACT(\result == vnorm2(a)); */
+static inline real vec_length2(vec3 a) { return a.x * a.x + a.y * a.y + a.z * a.z; }
 
-/* hypot-style length: no overflow for components near DBL_MAX/2 and no
- * underflow to 0 for denormal components, which plain sqrt(dot) suffers. */
+/*
+ * hypot-style length: no overflow for components near DBL_MAX/2 and no
+ * underflow to 0 for denormal components, which plain sqrt(dot) suffers.
+ * The bounds by the largest component M hold of the doubles (Eva, M split
+ * binade by binade: tests/prove/eva_vec.c); the exact length of the real
+ * model is what WP proves.
+ */
+/*@ requires vfinite(a) && DOUBLES(vbounded(a, 0x1p1022));
+    assigns \nothing;
+    ensures \is_finite(\result);
+    ensures DOUBLES(\max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) >= 0x1p-1072 ==>
+                    \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) / 4 <= \result);
+    ensures DOUBLES(\result <= 7 * \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))));
+    // admitted (spec/proofs.md, "Admitted"): m sqrt(sum (a/m)^2) is |a|
+    admit ensures EXACT(\result >= 0 && \result * \result == vnorm2(a)); */
 static inline real vec_length(vec3 a)
 {
     real m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
@@ -89,7 +179,7 @@ static inline real vec_length(vec3 a)
         return m;
     /* Divide rather than multiply by 1/m: 1/m overflows for denormal m. */
     a = vec_make(a.x / m, a.y / m, a.z / m);
-    return m * sqrt(vec_dot(a, a));
+    return m * sqrt(vec_length2(a));
 }
 
 /* |a| as sqrt(a.a) when a.a neither overflowed nor lost precision to
@@ -103,20 +193,45 @@ static inline real vec_length_fast(vec3 a)
 
 /* Unit vector along a; returns the zero vector for a zero input so that a
  * caller that validated its input never sees NaN from here. */
+/*@ requires vfinite(a) && DOUBLES(vbounded(a, 0x1p1022));
+    assigns \nothing;
+    ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z);
+    ensures DOUBLES(-4 <= \result.x <= 4 && -4 <= \result.y <= 4 && -4 <= \result.z <= 4);
+    ensures a.x == 0 && a.y == 0 && a.z == 0 ==> \result.x == 0 && \result.y == 0 && \result.z == 0;
+    ensures DOUBLES(a.x != 0 || a.y != 0 || a.z != 0 ==>
+                    \max(\abs(\result.x), \max(\abs(\result.y), \abs(\result.z))) >= 0.125);
+    // admitted (spec/proofs.md, "Admitted"): |a / |a|| = 1
+    admit ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1); */
 static inline vec3 vec_normalize(vec3 a)
 {
     real len = vec_length(a);
     return len > 0 ? vec_make(a.x / len, a.y / len, a.z / len) : vec_make(0, 0, 0);
 }
 
+/*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z);
+    assigns \nothing;
+    ensures EXACT(\result == \max(a.x, \max(a.y, a.z))); */
 static inline real vec_max_component(vec3 a) { return fmax(a.x, fmax(a.y, a.z)); }
+/*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z);
+    assigns \nothing;
+    ensures EXACT(\result == \min(a.x, \min(a.y, a.z))); */
 static inline real vec_min_component(vec3 a) { return fmin(a.x, fmin(a.y, a.z)); }
 
+/*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z) && !\is_NaN(b.x) && !\is_NaN(b.y) && !\is_NaN(b.z);
+    assigns \nothing;
+    ensures EXACT(\result.x == \min(a.x, b.x) && \result.y == \min(a.y, b.y) && \result.z == \min(a.z, b.z)); */
 static inline vec3 vec_min(vec3 a, vec3 b) { return vec_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+/*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z) && !\is_NaN(b.x) && !\is_NaN(b.y) && !\is_NaN(b.z);
+    assigns \nothing;
+    ensures EXACT(\result.x == \max(a.x, b.x) && \result.y == \max(a.y, b.y) && \result.z == \max(a.z, b.z)); */
 static inline vec3 vec_max(vec3 a, vec3 b) { return vec_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 
+/*@ assigns \nothing;
+    ensures EXACT(\result != 0 <==> vfinite(a)); */
 static inline int vec_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
+/*@ assigns \nothing;
+    ensures EXACT(\result == (axis == 0 ? a.x : axis == 1 ? a.y : a.z)); */
 static inline real vec_component(vec3 a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 
 #endif

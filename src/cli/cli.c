@@ -10,6 +10,7 @@
 #include "refray.h"
 #include "cli/cli.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 
 static const char usage_text[] =
@@ -19,7 +20,9 @@ static const char usage_text[] =
     "\n"
     "commands:\n"
     "  check FILE...        parse and validate scenes, print a one-line summary each\n"
-    "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension)\n"
+    "  render SCENE -o OUT  render to OUT (.png .exr .pfm .ppm, chosen by extension);\n"
+    "                       --jobs N, --tile I/N, --region, --checkpoint DIR for big ones\n"
+    "  merge TILE... -o OUT put the tiles of one render together (spec/scaling.md)\n"
     "  export SCENE --to pov|json  write the scene as POV-Ray SDL or as JSON\n"
     "                       (spec/json.md; -o OUT, else stdout)\n"
     "  verify SCENE...      render analytic scenes and compare with their exact images\n"
@@ -33,7 +36,8 @@ static const char usage_text[] =
     "  --max-width N, --max-height N, --max-pixels N, --max-samples N,\n"
     "  --max-light-samples N, --max-depth-limit N, --max-loop N,\n"
     "  --max-include-depth N, --max-file-size BYTES, --max-mesh-triangles N,\n"
-    "  --max-primitives N, --max-errors N, --max-ray-tree N\n"
+    "  --max-primitives N, --max-errors N, --max-ray-tree N,\n"
+    "  --max-input-size BYTES, --max-memory MIB\n"
     "                             raise or lower the input limits\n"
     "\n"
     "  refray --help | -h         this text\n"
@@ -42,7 +46,9 @@ static const char usage_text[] =
     "  refray COMMAND --help      the options of one command\n"
     "\n"
     "exit codes: 0 ok, 1 a check failed, 64 usage, 65 bad scene, 66 missing input,\n"
-    "74 I/O error, 130 interrupted.  The language: spec/language.md.\n";
+    "70 out of memory, 74 I/O error, 128 + N stopped by signal N (130 SIGINT,\n"
+    "143 SIGTERM, 129 SIGHUP).  The language: spec/language.md;\n"
+    "limits, signals and output files: spec/reliability.md.\n";
 
 /* One line naming the optional parts this build has, so scripts can ask
  * (`refray --features | grep -qw json`). */
@@ -66,6 +72,7 @@ static int cli_features(void)
 
 int cli_main(int argc, char **argv)
 {
+    cli_signal_install();
     if (argc < 2)
         return cli_usage_error("no command given");
     const char *cmd = argv[1];
@@ -95,5 +102,7 @@ int cli_main(int argc, char **argv)
         return cli_kit(argc - 1, argv + 1);
     if (strcmp(cmd, "conform") == 0)
         return cli_conform(argc - 1, argv + 1);
+    if (strcmp(cmd, "merge") == 0)
+        return cli_merge(argc - 1, argv + 1);
     return cli_usage_error("unknown command '%s'", cmd);
 }

@@ -7,19 +7,45 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "api/convert.h"
+#include "base/text.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
+#include "io/diag_print.h"
+#include "io/image_io.h"
+#include "io/scene_file.h"
+
+/* "refray: error: " and the message, escaped and cut (text_escape):
+ * arguments and file names are input too ([REL-ESCAPE-1]). */
+static void print_error(const char *fmt, va_list ap, const char *after)
+{
+    char text[4096], shown[1024];
+    vsnprintf(text, sizeof text, fmt, ap);
+    text_escape(text, strlen(text), shown, sizeof shown);
+    fprintf(stderr, "refray: error: %s\n%s", shown, after);
+}
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    print_error(fmt, ap, "");
+    va_end(ap);
+}
 
 int cli_usage_error(const char *fmt, ...)
 {
     va_list ap;
-    fputs("refray: error: ", stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    print_error(fmt, ap, "(see refray --help)\n");
     va_end(ap);
-    fputs("\n(see refray --help)\n", stderr);
     return STATUS_USAGE;
 }
+
+/* The hard ceiling of every limit: far beyond any real scene, and low
+ * enough that the products computed from them cannot overflow. */
+enum { LIMIT_CEILING = 1000000000 };
 
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out)
 {
@@ -66,22 +92,46 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
     return 1;
 }
 
+/* The sizing options take any value up to the ceiling here; they are
+ * checked against the limits once every option is read
+ * (cli_check_sizes), so that `--width 20000 --max-width 20000` and the
+ * reverse order mean the same ([REL-CLI-1]). */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
+    (void)lim;
     if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
     if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
     if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
     if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
     if (strcmp(opt, "--no-shortcuts") == 0)
         return o->no_shortcuts = 1;
     return -1;
+}
+
+/* One sizing option against its limit; 0 after the usage error. */
+static int within(const char *option, long value, long limit, const char *flag)
+{
+    if (value <= limit)
+        return 1;
+    cli_usage_error("%s %ld is over the limit of %ld (raise it with %s)", option, value, limit, flag);
+    return 0;
+}
+
+int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim)
+{
+    int ok = within("--width", width, lim->max_width, "--max-width") &&
+             within("--height", height, lim->max_height, "--max-height") &&
+             within("--samples", samples, lim->max_samples, "--max-samples") &&
+             within("--light-samples", light_samples, lim->max_light_samples, "--max-light-samples") &&
+             within("--max-depth", max_depth, lim->max_depth, "--max-depth-limit");
+    return ok ? 0 : STATUS_USAGE;
 }
 
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
@@ -130,7 +180,23 @@ rf_load_options cli_load_options(const cli_scene_opts *o)
     lo.warnings = o->warnings;
     lo.diagnostic = rf_diagnostic_print;
     lo.diagnostic_user = stderr;
+    lo.cancel = cli_signal_cancel;
     return lo;
+}
+
+scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *status)
+{
+    scene_load_opts lo;
+    scene_load_opts_init(&lo);
+    lo.limits = o->limits;
+    lo.warnings = o->warnings;
+    lo.sink = diag_print;
+    lo.sink_user = stderr;
+    lo.cancel = cli_signal_cancel;
+    scene_model *s = scene_file_load_with(path, &lo, status);
+    if (*status == STATUS_CANCELLED)
+        fputs("refray: interrupted\n", stderr);
+    return s;
 }
 
 typedef struct limit_flag {
@@ -153,11 +219,10 @@ static const limit_flag limit_flags[] = {
     LIMIT("--max-primitives", max_primitives),
     LIMIT("--max-errors", max_errors),
     LIMIT("--max-ray-tree", max_ray_tree),
+    LIMIT("--max-input-size", max_input_bytes),
+    LIMIT("--max-memory", max_memory_mb),
 };
 
-/* The hard ceiling of every limit: far beyond any real scene, and low
- * enough that the products computed from them cannot overflow. */
-enum { LIMIT_CEILING = 1000000000 };
 
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 {
@@ -173,7 +238,9 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
             cli_usage_error("%s needs a value", argv[i]);
             return -1;
         }
-        long lo = strcmp(argv[i], "--max-errors") == 0 ? 1 : 0;
+        /* 0 errors or a ray budget of 0 would mean nothing can be shown or
+         * traced: refused ([REL-RAYTREE-2]). */
+        long lo = strcmp(argv[i], "--max-errors") == 0 || strcmp(argv[i], "--max-ray-tree") == 0 ? 1 : 0;
         return cli_parse_long(argv[i], argv[i + 1], lo, LIMIT_CEILING, field) ? 2 : -1;
     }
     return 0;
@@ -182,16 +249,17 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
 {
     const char *opt = argv[*i];
+    (void)lim;
     if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, lim->max_width, &o->width);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
     if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, lim->max_height, &o->height);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
     if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_samples, &o->samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
     if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, lim->max_depth, &o->max_depth);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
     if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, lim->max_light_samples, &o->light_samples);
+        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
     return -1;
 }
 
@@ -231,4 +299,56 @@ int cli_adjust_option(conform_adjust *a, int argc, char **argv, int *i)
         return 0;
     }
     return 1;
+}
+
+int cli_image_option(rf_write_options *o, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i], *v;
+    if (strcmp(opt, "--linear") == 0)
+        o->linear = 1;
+    else if (strcmp(opt, "--exr-float") == 0)
+        o->exr_float = 1;
+    else if (strcmp(opt, "--exposure") == 0)
+        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &o->exposure_stops);
+    else if (strcmp(opt, "--bit-depth") == 0) {
+        long bits;
+        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
+            return 0;
+        if (bits != 8 && bits != 16) {
+            cli_usage_error("--bit-depth is 8 or 16");
+            return 0;
+        }
+        o->png_bits = (int)bits;
+    } else if (strcmp(opt, "--tone") == 0) {
+        if (!cli_take_value(argc, argv, i, &v))
+            return 0;
+        if (strcmp(v, "clamp") != 0 && strcmp(v, "reinhard") != 0) {
+            cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
+            return 0;
+        }
+        o->tone = strcmp(v, "reinhard") == 0 ? RF_TONE_REINHARD : RF_TONE_CLAMP;
+    } else {
+        return -1;
+    }
+    return 1;
+}
+
+int cli_check_output_dir(const char *path)
+{
+    char err[1024];
+    int status = img_write_check(path, err, sizeof err);
+    if (status != STATUS_OK)
+        cli_error("%s", err);
+    return status;
+}
+
+int cli_check_output_file(const char *command, const char *path)
+{
+    rf_format fmt = rf_format_from_path(path);
+    if (fmt == RF_FORMAT_UNKNOWN)
+        return cli_usage_error("%s: '%s' has no known image extension (.png .exr .pfm .ppm)", command, path);
+    if (!rf_format_available(fmt))
+        return cli_usage_error("%s: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
+                               command, path);
+    return cli_check_output_dir(path);
 }

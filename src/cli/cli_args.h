@@ -24,8 +24,15 @@ typedef struct cli_scene_opts {
 void cli_scene_opts_init(cli_scene_opts *o);
 
 /* The public API's load options for o: its limits and warnings, the
- * diagnostics printed to stderr, files from the file system. */
+ * diagnostics printed to stderr, files from the file system, stopped by
+ * a signal (cli_signal_cancel). */
 rf_load_options cli_load_options(const cli_scene_opts *o);
+
+/* Loads the scene file path the same way through the library's own
+ * interface (for the commands that need the scene model); NULL with
+ * *status on failure ("refray: interrupted" printed when a signal
+ * stopped it). */
+scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *status);
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i);
 
 /* The value after option argv[*i] (advancing *i); 0 with the usage error
@@ -36,9 +43,25 @@ int cli_take_value(int argc, char **argv, int *i, const char **value);
 int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
- * --light-samples) and --no-shortcuts into o, within lim; 1 consumed,
- * 0 error, -1 not one. */
+ * --light-samples) and --no-shortcuts into o; 1 consumed, 0 error, -1 not
+ * one.  The sizes are checked against lim only by cli_check_sizes, after
+ * every option. */
 int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
+
+/* The sizing options given (0: not given) against the limits: 0, or
+ * STATUS_USAGE after the error naming the flag that raises the limit. */
+int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
+
+/* The options of an image file (--linear --exr-float --exposure
+ * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */
+int cli_image_option(rf_write_options *o, int argc, char **argv, int *i);
+
+/* Before a long job, whether an image file can be written at path: a
+ * known extension this build writes (else the usage error, 64) in a
+ * path the atomic writer takes (else 74; io/image_io.h's img_write_check).  0 when it can; the error printed. */
+int cli_check_output_file(const char *command, const char *path);
+/* Only the path part of that (the format is checked by the caller). */
+int cli_check_output_dir(const char *path);
 
 /* One command's own options: 1 consumed (with its value), 0 an error
  * already reported, -1 not one of its options. */
@@ -57,6 +80,14 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
 int cli_parse_long(const char *option, const char *text, long lo, long hi, long *out);
 int cli_parse_double(const char *option, const char *text, double *out);
 
+/* Prints "refray: error: MESSAGE" to stderr, the message escaped and cut
+ * (base/text.h: no input byte reaches the terminal raw). */
+void cli_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
 /* Prints "refray: error: ..." for command-line mistakes, returns 64. */
 int cli_usage_error(const char *fmt, ...)
 #if defined(__GNUC__)
@@ -66,8 +97,8 @@ int cli_usage_error(const char *fmt, ...)
 
 /*
  * The view options verify and oracle share: --width, --height, --samples,
- * --max-depth and --light-samples (light only when allow_light), bounded
- * by the input limits lim.  Returns 1 when argv[*i] was one of them (its
+ * --max-depth and --light-samples (light only when allow_light), checked
+ * against the limits by cli_check_sizes.  Returns 1 when argv[*i] was one of them (its
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 
 static const char check_help[] =
@@ -101,7 +102,8 @@ int cli_check(int argc, char **argv)
     }
     if (files == 0)
         return cli_usage_error("check: no scene files given");
-    for (int i = 1; i < argc; i++) {
+    cli_signal_cooperate(1);
+    for (int i = 1; i < argc && worst != STATUS_CANCELLED; i++) {
         int used = argv[i][0] == '-' && argv[i][1] ? cli_scene_opt(&opts, argc, argv, i) : 0;
         if (used > 0) {
             i += used - 1;
@@ -112,6 +114,8 @@ int cli_check(int argc, char **argv)
         int status = (int)rf_scene_load_file(argv[i], &lo, &s);
         if (s)
             print_summary(argv[i], s);
+        else if (status == STATUS_CANCELLED)
+            fputs("refray: interrupted\n", stderr);
         rf_scene_free(s);
         worst = status_worse(worst, status);
     }

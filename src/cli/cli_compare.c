@@ -11,8 +11,9 @@
 #include <string.h>
 #include "io/fileio.h"
 #include "image/adjust.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 #include "verify/conform.h"
 
@@ -28,7 +29,8 @@ static const char compare_help[] =
     "  --diff MAP        write an error map.  .png/.ppm: e = max over channels\n"
     "                    |A - B| / (max abs), on the scale\n"
     "                      black (0, equal) - purple - red - orange - yellow - white\n"
-    "                      (1, the largest error); teal: excluded by --mask.\n"
+    "                      (1, the largest error); teal: excluded by --mask;\n"
+    "                      green: A or B not finite there.\n"
     "                    .exr/.pfm: |A - B| per channel, not scaled.\n"
     "  --grey            the map in grey levels (black 0, white the largest error)\n"
     "  --mask FILE       skip the pixels a mask marks (.pgm or an image, as\n"
@@ -43,11 +45,17 @@ static const char compare_help[] =
     "                    value of --downsample or --scale takes the scene's samples\n"
     "                    or 1 / png16_scale\n"
     "  --scene NAME      the kit's scene (default: the one whose exact image is B)\n"
-    "exit: 0; 1 some pixel over the tolerance; 64 usage; 65 unreadable images or\n"
-    "images of different sizes; 66 a missing file; 74 the map could not be written.\n";
+    "  --max-pixels N    refuse an image whose header claims more pixels (67108864)\n"
+    "A pixel where A or B is NaN or infinite always fails: it is counted, its\n"
+    "first position printed, and shown pure green in the map (the largest\n"
+    "value in an .exr/.pfm map); the other figures are over the finite pixels.\n"
+    "exit: 0; 1 some pixel over the tolerance, or a non-finite pixel; 64 usage;\n"
+    "65 unreadable images or images of different sizes (refused on their headers,\n"
+    "before decoding); 66 a missing file; 74 the map could not be written.\n";
 
 typedef struct compare_args {
     const char *a, *b, *diff, *mask, *manifest, *scene;
+    long max_pixels;                /* --max-pixels: what an image header may claim */
     double tolerance;
     int has_tolerance, grey, json;
     conform_adjust adjust;          /* downsample 1 and scale 1: A as read */
@@ -79,6 +87,8 @@ static int compare_option(compare_args *a, int argc, char **argv, int *i)
         return cli_take_value(argc, argv, i, &a->scene);
     if (strcmp(opt, "--downsample") == 0 || strcmp(opt, "--scale") == 0)
         return cli_adjust_option(&a->adjust, argc, argv, i);
+    if (strcmp(opt, "--max-pixels") == 0)
+        return cli_take_value(argc, argv, i, &v) && cli_parse_long(opt, v, 1, 1000000000, &a->max_pixels);
     if (strcmp(opt, "--tolerance") != 0)
         return -1;
     if (!cli_take_value(argc, argv, i, &v) || !cli_parse_double(opt, v, &a->tolerance))
@@ -122,13 +132,54 @@ static int parse_args(compare_args *a, int argc, char **argv)
     return 0;
 }
 
-static int read_image(const char *path, img_buf *img)
+/* Reads path, refusing on its header any size but width x height and more
+ * pixels than --max-pixels ([REL-IMAGE-1]). */
+static int read_image(const compare_args *a, const char *path, int width, int height, img_buf *img)
 {
-    char err[512];
-    int status = img_read(path, img, err, sizeof err);
+    char err[1024];
+    img_read_opts o = img_read_opts_default();
+    o.max_pixels = a->max_pixels;
+    o.width = width;
+    o.height = height;
+    int status = img_read(path, &o, img, err, sizeof err);
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
     return status;
+}
+
+/* The sizes in the headers of A and B, nothing decoded yet. */
+static int read_sizes(const compare_args *a, int size[2][2])
+{
+    const char *paths[2] = {a->a, a->b};
+    img_read_opts o = img_read_opts_default();
+    o.max_pixels = a->max_pixels;
+    for (int i = 0; i < 2; i++) {
+        char err[1024];
+        int status = img_read_size(paths[i], &o, &size[i][0], &size[i][1], err, sizeof err);
+        if (status != STATUS_OK) {
+            cli_error("%s", err);
+            return status;
+        }
+    }
+    return STATUS_OK;
+}
+
+/* A must be k times B each way (k = 1 without --downsample): refused
+ * before either image is decoded, so a small file claiming a huge size
+ * costs nothing. */
+static int check_sizes(const compare_args *a, const compare_kit *kit, int size[2][2])
+{
+    int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
+    if ((long)size[0][0] == (long)k * size[1][0] && (long)size[0][1] == (long)k * size[1][1])
+        return STATUS_OK;
+    if (k > 1)
+        cli_error("with --downsample %d, '%s' must be %ldx%ld (%d times '%s', %dx%d), not %dx%d", k, a->a,
+                  (long)k * size[1][0], (long)k * size[1][1], k, a->b, size[1][0], size[1][1], size[0][0],
+                  size[0][1]);
+    else
+        cli_error("the images differ in size: '%s' is %dx%d, '%s' is %dx%d", a->a, size[0][0], size[0][1], a->b,
+                  size[1][0], size[1][1]);
+    return STATUS_DATA;
 }
 
 static void print_text(const compare_args *a, const compare_kit *kit, const img_buf *img, const image_metrics *m)
@@ -140,11 +191,17 @@ static void print_text(const compare_args *a, const compare_kit *kit, const img_
         printf("adjusted: A averaged over %dx%d blocks, then times %.17g\n", k, k, scale);
     printf("size:     %dx%d: %ld pixels compared, %ld excluded\n", img->width, img->height, m->compared,
            m->excluded);
-    printf("max abs:  %.6e at pixel (%d, %d)\n", m->max_abs, m->worst_x, m->worst_y);
-    printf("RMS:      %.6e\n", m->rms);
-    printf("max rel:  %.6e\n", m->max_rel);
+    const char *finite = m->nonfinite ? " (finite pixels)" : "";
+    if (m->nonfinite)
+        printf("NON-FINITE: %ld pixel%s where A or B is NaN or infinite, the first at (%d, %d): each one fails\n",
+               m->nonfinite, m->nonfinite == 1 ? "" : "s", m->nonfinite_x, m->nonfinite_y);
+    printf("max abs:  %.6e at pixel (%d, %d)%s\n", m->max_abs, m->worst_x, m->worst_y, finite);
+    printf("RMS:      %.6e%s\n", m->rms, finite);
+    printf("max rel:  %.6e%s\n", m->max_rel, finite);
     if (m->psnr < 1e300)
-        printf("PSNR:     %.2f dB (peak %.6g)\n", m->psnr, m->peak);
+        printf("PSNR:     %.2f dB (peak %.6g)%s\n", m->psnr, m->peak, finite);
+    else if (m->nonfinite)
+        printf("PSNR:     not defined (non-finite pixels)\n");
     else
         printf("PSNR:     inf (the images are equal)\n");
     if (kit)
@@ -182,13 +239,17 @@ static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref
     int status = raw ? verify_abs_diff(x, ref, mask, &map) : verify_diff_map(x, ref, mask, a->grey, &map);
     char err[512] = "out of memory making the error map";
     if (status == STATUS_OK) {
+        cancel_poll cancel = cancel_poll_make(cli_signal_cancel, NULL);
         img_write_opts wo = img_write_opts_default();
         wo.exr_float = 1;
+        wo.cancel = &cancel;
+        cli_signal_cooperate(1);
         status = img_write(a->diff, &map, &wo, err, sizeof err);
+        cli_signal_cooperate(0);
         img_free(&map);
     }
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
     return status;
 }
 
@@ -201,7 +262,7 @@ static int read_mask(const compare_args *a, const compare_kit *kit, const img_bu
     const char *use = a->mask ? a->mask : path;
     int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : STATUS_OK;
     if (status != STATUS_OK)
-        fprintf(stderr, "refray: error: %s: %s\n", use, err);
+        cli_error("%s: %s", use, err);
     free(path);
     return status;
 }
@@ -209,11 +270,6 @@ static int read_mask(const compare_args *a, const compare_kit *kit, const img_bu
 /* Compares the two loaded images; returns the status. */
 static int compare_images(const compare_args *a, const compare_kit *kit, const img_buf *x, const img_buf *ref)
 {
-    if (x->width != ref->width || x->height != ref->height) {
-        fprintf(stderr, "refray: error: the images differ in size: '%s' is %dx%d, '%s' is %dx%d\n", a->a, x->width,
-                x->height, a->b, ref->width, ref->height);
-        return STATUS_DATA;
-    }
     unsigned char *mask = NULL;
     int status = read_mask(a, kit, ref, &mask);
     if (status != STATUS_OK)
@@ -231,24 +287,20 @@ static int compare_images(const compare_args *a, const compare_kit *kit, const i
         print_json(a, kit, &m);
     else
         print_text(a, kit, x, &m);
+    /* A NaN or an infinity fails with or without a tolerance. */
     if (kit)
         return m.over > 0 || m.compared == 0 ? STATUS_FAIL : STATUS_OK;
-    return a->has_tolerance && m.over > 0 ? STATUS_FAIL : STATUS_OK;
+    return (a->has_tolerance && m.over > 0) || m.nonfinite > 0 ? STATUS_FAIL : STATUS_OK;
 }
 
-/* A averaged over k x k blocks and scaled, in place; STATUS_OK or the status. */
-static int adjust_image(const compare_args *a, const compare_kit *kit, const img_buf *ref, img_buf *x)
+/* A averaged over k x k blocks and scaled, in place (the sizes are
+ * checked already); STATUS_OK or the status. */
+static int adjust_image(const compare_args *a, const compare_kit *kit, img_buf *x)
 {
     int k = kit ? conform_downsample_of(&a->adjust, kit->scene) : a->adjust.downsample;
     double scale = kit ? conform_scale_of(&a->adjust, kit->scene) : a->adjust.scale;
     if (k > 1) {
         img_buf small;
-        if (x->width != k * ref->width || x->height != k * ref->height) {
-            fprintf(stderr, "refray: error: with --downsample %d, '%s' must be %dx%d (%d times '%s', %dx%d), "
-                    "not %dx%d\n", k, a->a, k * ref->width, k * ref->height, k, a->b, ref->width, ref->height,
-                    x->width, x->height);
-            return STATUS_DATA;
-        }
         int status = img_downsample(x, k, &small);
         if (status != STATUS_OK)
             return status;
@@ -297,7 +349,7 @@ static int load_kit(compare_args *a, compare_kit *kit)
     char why[1024];
     int status = manifest_read(a->manifest, &kit->m, why, sizeof why);
     if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: compare: %s\n", why);
+        cli_error("compare: %s", why);
         return status;
     }
     kit->dir = file_dirname(NULL, a->manifest);
@@ -327,12 +379,17 @@ int cli_compare(int argc, char **argv)
         status = load_kit(&a, &kit);
     const compare_kit *k = a.manifest ? &kit : NULL;
     img_buf x = {0}, ref = {0};
+    int size[2][2];
     if (status == STATUS_OK)
-        status = read_image(a.a, &x);
+        status = read_sizes(&a, size);
     if (status == STATUS_OK)
-        status = read_image(a.b, &ref);
+        status = check_sizes(&a, k, size);
     if (status == STATUS_OK)
-        status = adjust_image(&a, k, &ref, &x);
+        status = read_image(&a, a.a, size[0][0], size[0][1], &x);
+    if (status == STATUS_OK)
+        status = read_image(&a, a.b, size[1][0], size[1][1], &ref);
+    if (status == STATUS_OK)
+        status = adjust_image(&a, k, &x);
     if (status == STATUS_OK)
         status = compare_images(&a, k, &x, &ref);
     img_free(&x);

@@ -3,13 +3,11 @@
  * conformance kit, every picture checked (verify/conform.h,
  * spec/conformance.md).
  *
- * Global state: the stop flag, a volatile sig_atomic_t, because a signal
- * handler can reach nothing else.  The renderers run in their own process
- * groups, so Ctrl-C reaches only refray; the handler sets the flag, the
- * run kills the renderer's group and stops, and nothing half done is
- * written.  The library sees only a pointer to the flag.
+ * The renderers run in their own process groups, so Ctrl-C reaches only
+ * refray; its signal flag (cli_signal.h) stops the run, which kills the
+ * renderer's group, and nothing half done is written.  The library sees
+ * only a pointer to the flag.
  */
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,17 +16,10 @@
 #include "io/filewrite.h"
 #include "base/suggest.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/conform_report.h"
-
-static volatile sig_atomic_t stop_requested;
-
-static void on_stop(int sig)
-{
-    (void)sig;
-    stop_requested = 1;
-}
 
 static const char conform_help[] =
     "usage: refray conform --cmd 'CMD' [OPTIONS]\n"
@@ -159,22 +150,22 @@ static int load_kit(const conform_args *a, char **kit_dir, manifest *m)
         return cli_usage_error("conform: %s", why);
     char *path = file_join(NULL, a->kit, "manifest.json");
     if (!path || access(path, F_OK) != 0) {
-        fprintf(stderr, "refray: error: conform: no kit at '%s' (no manifest.json); make one with `make kit` "
-                "or `refray kit -o DIR`, and name it with --kit DIR\n", a->kit);
+        cli_error("conform: no kit at '%s' (no manifest.json); make one with `make kit` "
+                "or `refray kit -o DIR`, and name it with --kit DIR", a->kit);
         free(path);
         return STATUS_NO_INPUT;
     }
     int status = manifest_read(path, m, why, sizeof why);
     free(path);
     if (status != 0) {
-        fprintf(stderr, "refray: error: conform: %s\n", why);
+        cli_error("conform: %s", why);
         return status;
     }
     /* Absolute, so the renderer may change directory and still find it. */
     *kit_dir = file_absolute(NULL, a->kit);
     if (!*kit_dir) {
         manifest_free(m);
-        fprintf(stderr, "refray: error: conform: cannot resolve '%s'\n", a->kit);
+        cli_error("conform: cannot resolve '%s'", a->kit);
         return STATUS_NO_INPUT;
     }
     return 0;
@@ -227,7 +218,7 @@ static int write_reports(const conform_args *a, const conform_report *rep)
     for (int k = 0; k < 2; k++) {
         char why[600];
         if (paths[k] && file_write_atomic(paths[k], fill_report, &files[k], why, sizeof why) != 0) {
-            fprintf(stderr, "refray: error: conform: %s\n", why);
+            cli_error("conform: %s", why);
             return STATUS_IO;
         }
     }
@@ -238,19 +229,13 @@ static int write_reports(const conform_args *a, const conform_report *rep)
 static int run_all(const conform_args *a, const conform_run *run, const manifest_scene **scenes, int count,
                    conform_result *results)
 {
-    struct sigaction sa, old[3];
-    static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_stop;
-    sigemptyset(&sa.sa_mask);
-    for (int k = 0; k < 3; k++)
-        sigaction(sigs[k], &sa, &old[k]);
+    cli_signal_cooperate(1);
     if (a->tap)
         conform_tap_plan(stdout, count);
     else if (!a->json)
         conform_text_header(stdout);
     int ran = 0;
-    for (int i = 0; i < count && !stop_requested; i++) {
+    for (int i = 0; i < count && !cli_signal_cancel(NULL); i++) {
         conform_run_scene(run, scenes[i], &results[i]);
         ran++;
         if (a->tap)
@@ -258,8 +243,6 @@ static int run_all(const conform_args *a, const conform_run *run, const manifest
         else if (!a->json)
             conform_text_row(stdout, &results[i]);
     }
-    for (int k = 0; k < 3; k++)
-        sigaction(sigs[k], &old[k], NULL);
     return ran;
 }
 
@@ -285,14 +268,14 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
     int count = 0, status = scenes && results ? select_scenes(a, m, scenes, &count) : STATUS_NO_MEMORY;
     const char *tmp = getenv("TMPDIR");
     conform_run run = {kit_dir, a->cmd, a->format, a->adjust, a->timeout, a->keep,
-                       tmp && tmp[0] == '/' ? tmp : "/tmp", &stop_requested};
+                       tmp && tmp[0] == '/' ? tmp : "/tmp", cli_signal_flag()};
     double start = render_clock();
     int ran = status == 0 ? run_all(a, &run, scenes, count, results) : 0;
     conform_report rep = {kit_dir, a->cmd, results, ran, render_clock() - start};
     if (status == 0 && count == 0) {
-        fprintf(stderr, "refray: error: conform: the kit has no scenes: nothing was checked\n");
+        cli_error("conform: the kit has no scenes: nothing was checked");
         status = STATUS_FAIL;
-    } else if (status == 0 && stop_requested) {
+    } else if (status == 0 && cli_signal_cancel(NULL)) {
         fprintf(stderr, "refray: conform: stopped after %d of %d scenes; no report written\n", ran, count);
         status = STATUS_CANCELLED;
     } else if (status == 0) {

@@ -12,6 +12,7 @@
 #include "io/fileio.h"
 #include "io/scene_file.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 #include "export/export_json.h"
 #include "export/export_pov.h"
@@ -169,11 +170,11 @@ static int export_scene(export_args *a, const scene_model *scene)
     else
         status = pov_export_write(scene, &a->pov, stdout, &notes);
     if (status == STATUS_DATA) {
-        fprintf(stderr, "refray: error: cannot export '%s' to POV-Ray: %s\n", a->input, notes.reason);
+        cli_error("cannot export '%s' to POV-Ray: %s", a->input, notes.reason);
         return status;
     }
     if (status != 0) {
-        fprintf(stderr, "refray: error: %s\n", a->output ? err : "cannot write to stdout");
+        cli_error("%s", a->output ? err : "cannot write to stdout");
         return status;
     }
     print_notes(a->input, &notes);
@@ -188,7 +189,8 @@ int cli_export(int argc, char **argv)
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? STATUS_OK : status;
-    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    cli_signal_cooperate(1);
+    scene_model *scene = cli_load_scene(&a.scene, a.input, &status);
     if (!scene)
         return status;
     status = strcmp(a.format, "json") == 0 ? export_json(&a, scene) : export_scene(&a, scene);

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "cli/cli.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 #include "verify/kit.h"
 
@@ -85,8 +86,8 @@ static int default_scenes(glob_t *g)
 {
     if (glob("scenes/analytic/*.scene", 0, NULL, g) == 0 && g->gl_pathc > 0)
         return 0;
-    fprintf(stderr, "refray: error: kit: no scenes given, and ./scenes/analytic/*.scene matches nothing "
-            "(name the scenes, or run from refray's source tree)\n");
+    cli_error("kit: no scenes given, and ./scenes/analytic/*.scene matches nothing "
+            "(name the scenes, or run from refray's source tree)");
     return STATUS_NO_INPUT;
 }
 
@@ -107,12 +108,16 @@ int cli_kit(int argc, char **argv)
         a.count = (int)g.gl_pathc;
     }
     if (status == 0) {
-        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, rf_version()};
+        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, rf_version(), cli_signal_cancel, NULL};
+        /* A signal stops the build after the scene in hand. */
+        cli_signal_cooperate(1);
         manifest m;
         char why[1024];
         status = kit_build(a.output, a.scenes, a.count, &o, &m, why, sizeof why);
-        if (status != 0)
-            fprintf(stderr, "refray: error: kit: %s\n", why);
+        if (status == STATUS_CANCELLED)
+            fputs("refray: kit: interrupted; nothing written\n", stderr);
+        else if (status != 0)
+            cli_error("kit: %s", why);
         else if (!a.quiet)
             print_table(&m, a.output);
         if (status == 0)

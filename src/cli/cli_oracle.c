@@ -8,8 +8,9 @@
 #include <string.h>
 #include <strings.h>
 #include "io/scene_file.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
 
 static const char oracle_help[] =
@@ -53,6 +54,10 @@ static int parse_args(oracle_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("oracle", oracle_help, argc, argv, &a->scene, &a->input, oracle_option, a);
     if (status != 0)
         return status;
+    const verify_opts *v = &a->view;
+    if ((status = cli_check_sizes(v->width, v->height, v->samples, v->light_samples, v->max_depth,
+                                  &a->scene.limits)) != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("oracle: no output given (-o EXACT)");
     return 0;
@@ -88,13 +93,16 @@ static int check_formats(const oracle_args *a)
 static int write_files(const oracle_args *a, const verify_exact *e)
 {
     char err[512];
+    cancel_poll cancel = cancel_poll_make(cli_signal_cancel, NULL);
     img_write_opts wo = img_write_opts_default();
     wo.exr_float = 1;
+    wo.cancel = &cancel;
+    cli_signal_cooperate(1);
     int status = img_write(a->output, &e->image, &wo, err, sizeof err);
     if (status == STATUS_OK && a->mask)
         status = verify_mask_write(a->mask, e->excluded, e->image.width, e->image.height, err, sizeof err);
     if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
         return status;
     }
     long pixels = (long)e->image.width * e->image.height;
@@ -115,12 +123,12 @@ static int exact_of(const oracle_args *a, const scene_model *s)
     int status;
     const oracle_family *f = verify_family(s, &v, &status, why, sizeof why);
     if (!f) {
-        fprintf(stderr, "refray: error: %s: %s\n", a->input, why);
+        cli_error("%s: %s", a->input, why);
         return STATUS_DATA;
     }
     verify_exact e;
     if (verify_exact_build(f, &v, &e) != STATUS_OK) {
-        fputs("refray: error: out of memory building the exact image\n", stderr);
+        cli_error("out of memory building the exact image");
         return STATUS_NO_MEMORY;
     }
     status = write_files(a, &e);
@@ -138,9 +146,12 @@ int cli_oracle(int argc, char **argv)
         return status < 0 ? STATUS_OK : status;
     if ((status = check_formats(&a)) != 0)
         return status;
-    scene_model *s = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    cli_signal_cooperate(1);
+    scene_model *s = cli_load_scene(&a.scene, a.input, &status);
     if (!s)
         return status;
+    /* The exact image is not polled: a signal now takes effect at once. */
+    cli_signal_cooperate(0);
     status = exact_of(&a, s);
     scene_free(s);
     return status;

@@ -1,37 +1,19 @@
 /*
  * cli_render.c - `refray render SCENE -o OUT`: load, trace, write atomically,
- * through the public API (refray.h).
- *
- * One of refray's two pieces of global state lives here (the other is
- * cli_conform.c's stop flag): the SIGINT flag, as a volatile sig_atomic_t,
- * because a signal handler can reach nothing else.
- * The library never sees it; it is asked through the progress callback.
+ * through the public API (refray.h).  A region, a tile, workers or a
+ * checkpoint: cli_render_tiles.c.  SIGINT, SIGTERM and SIGHUP stop the
+ * load, the render and the write within a fraction of a second, and
+ * nothing is written (cli_signal.h; the library is asked through the
+ * cancel callback, the worker pool polls the flag).
  */
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include "cli/cli_args.h"
+#include "cli/cli_render.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
-#include "io/fileio.h"
-
-static volatile sig_atomic_t interrupted;
-
-static void on_interrupt(int sig)
-{
-    (void)sig;
-    interrupted = 1;
-}
-
-typedef struct render_args {
-    cli_scene_opts scene;
-    const char *input, *output;
-    const char *format;   /* --format, for -o - (standard output) */
-    render_opts render;
-    rf_write_options image;
-    int stats, quiet;
-} render_args;
+#include "io/tile_file.h"
 
 static const char render_help[] =
     "usage: refray render SCENE -o OUT [OPTIONS]\n"
@@ -53,37 +35,76 @@ static const char render_help[] =
     "  --tone clamp|reinhard PNG/PPM: clamp to [0,1] (default) or x/(1+x)\n"
     "  --stats               print ray counts, skipped passes and timings to stderr\n"
     "  -q, --quiet           no progress bar\n"
+    "big renders (spec/scaling.md):\n"
+    "  --jobs N              N worker processes over bands of rows (default 1;\n"
+    "                        0: one per processor); the same pixels as --jobs 1\n"
+    "  --region X0 Y0 X1 Y1  only the pixels X0 <= x < X1, Y0 <= y < Y1 (y = 0 at\n"
+    "                        the top), as a tile: OUT is .exr or .pfm (+ OUT.tile)\n"
+    "  --tile I/N            tile I of N (0 <= I < N): the full-width rows y with\n"
+    "                        floor(I*H/N) <= y < floor((I+1)*H/N), as a tile;\n"
+    "                        put tiles together with refray merge\n"
+    "  --checkpoint DIR      keep every finished band in DIR; the same command\n"
+    "                        after an interruption renders only what is missing\n"
     "and -W and the input limits of `refray --help`.\n";
 
-static int image_option(render_args *a, int argc, char **argv, int *i)
+/* --region's four values. */
+static int region_option(render_args *a, int argc, char **argv, int *i)
 {
-    const char *opt = argv[*i], *v;
-    if (strcmp(opt, "--linear") == 0)
-        a->image.linear = 1;
-    else if (strcmp(opt, "--exr-float") == 0)
-        a->image.exr_float = 1;
-    else if (strcmp(opt, "--exposure") == 0)
-        return cli_take_value(argc, argv, i, &v) && cli_parse_double(opt, v, &a->image.exposure_stops);
-    else if (strcmp(opt, "--bit-depth") == 0) {
-        long bits;
-        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 8, 16, &bits))
-            return 0;
-        if (bits != 8 && bits != 16) {
-            cli_usage_error("--bit-depth is 8 or 16");
+    static const char *const names[4] = {"X0", "Y0", "X1", "Y1"};
+    for (int k = 0; k < 4; k++) {
+        long v;
+        if (*i + 1 >= argc) {
+            cli_usage_error("--region needs four values, X0 Y0 X1 Y1");
             return 0;
         }
-        a->image.png_bits = (int)bits;
-    } else if (strcmp(opt, "--tone") == 0) {
-        if (!cli_take_value(argc, argv, i, &v))
+        if (!cli_parse_long(names[k], argv[++*i], 0, 1000000000, &v))
             return 0;
-        if (strcmp(v, "clamp") != 0 && strcmp(v, "reinhard") != 0) {
-            cli_usage_error("--tone is clamp or reinhard, not '%s'", v);
-            return 0;
-        }
-        a->image.tone = strcmp(v, "reinhard") == 0 ? RF_TONE_REINHARD : RF_TONE_CLAMP;
-    } else {
-        return -1;
+        a->region[k] = (int)v;
     }
+    a->has_region = 1;
+    return 1;
+}
+
+/* --tile I/N. */
+static int tile_option(render_args *a, int argc, char **argv, int *i)
+{
+    const char *v;
+    long index, count;
+    char text[64], *slash;
+    if (!cli_take_value(argc, argv, i, &v))
+        return 0;
+    snprintf(text, sizeof text, "%s", v);
+    slash = strchr(text, '/');
+    if (!slash || strlen(v) >= sizeof text) {
+        cli_usage_error("--tile takes I/N (tile I of N, 0 <= I < N), not '%s'", v);
+        return 0;
+    }
+    *slash = '\0';
+    if (!cli_parse_long("--tile's N", slash + 1, 1, 1000000000, &count) ||
+        !cli_parse_long("--tile's I", text, 0, count - 1, &index))
+        return 0;
+    a->tile_index = (int)index;
+    a->tile_count = (int)count;
+    return 1;
+}
+
+/* The options of big renders; 1, 0 or -1 as render_option. */
+static int scaling_option(render_args *a, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i];
+    long jobs;
+    const char *v;
+    if (strcmp(opt, "--region") == 0)
+        return region_option(a, argc, argv, i);
+    if (strcmp(opt, "--tile") == 0)
+        return tile_option(a, argc, argv, i);
+    if (strcmp(opt, "--checkpoint") == 0)
+        return cli_take_value(argc, argv, i, &a->checkpoint);
+    if (strcmp(opt, "--jobs") != 0)
+        return -1;
+    if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 0, 256, &jobs))
+        return 0;
+    a->jobs = (int)jobs;
     return 1;
 }
 
@@ -95,6 +116,8 @@ static int render_option(void *args, int argc, char **argv, int *i)
     int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
     if (sized >= 0)
         return sized;
+    if ((sized = scaling_option(a, argc, argv, i)) >= 0)
+        return sized;
     if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
         return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--format") == 0)
@@ -103,7 +126,7 @@ static int render_option(void *args, int argc, char **argv, int *i)
         return a->stats = 1;
     if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
         return a->quiet = 1;
-    return image_option(a, argc, argv, i);
+    return cli_image_option(&a->image, argc, argv, i);
 }
 
 /* 0: go on; -1: help printed; else the usage exit code. */
@@ -112,13 +135,23 @@ static int parse_args(render_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("render", render_help, argc, argv, &a->scene, &a->input, render_option, a);
     if (status != 0)
         return status;
+    const render_opts *r = &a->render;
+    if ((status = cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth,
+                                  &a->scene.limits)) != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("render: no output given (-o OUT)");
+    if (a->has_region && a->tile_count)
+        return cli_usage_error("render: --region and --tile both choose the pixels; give one");
     return 0;
 }
 
-/* The format of standard output, from --format. */
-static rf_format stdout_format(const char *name)
+int cli_render_in_tiles(const render_args *a)
+{
+    return a->has_region || a->tile_count || a->jobs != 1 || a->checkpoint;
+}
+
+rf_format cli_render_stdout_format(const char *name)
 {
     char probe[16];
     if (!name || strlen(name) > 4)
@@ -127,12 +160,27 @@ static rf_format stdout_format(const char *name)
     return rf_format_from_path(probe);
 }
 
-/* Fails before the render, not after it, when OUT cannot be written. */
+/* A tile's output: a tile format, a file. */
+static int check_tile_output(const render_args *a)
+{
+    char why[300];
+    if (strcmp(a->output, "-") == 0)
+        return cli_usage_error("render: a tile is written to a file (a sidecar, or seeking), not to -o -");
+    if (!tile_file_format_ok(a->output, why, sizeof why))
+        return cli_usage_error("render: %s", why);
+    return 0;
+}
+
+/* Fails before the render, not after it, when OUT cannot be written:
+ * every check of the writer that needs no image ([REL-OUT-6]). */
 static int check_output(const render_args *a)
 {
     const char *path = a->output;
-    if (strcmp(path, "-") == 0) {
-        rf_format f = stdout_format(a->format);
+    int tile = a->has_region || a->tile_count, status;
+    if (tile && (status = check_tile_output(a)) != 0)
+        return status;
+    if (!tile && strcmp(path, "-") == 0) {
+        rf_format f = cli_render_stdout_format(a->format);
         if (f == RF_FORMAT_UNKNOWN)
             return cli_usage_error("render: -o - needs --format png, exr, pfm or ppm");
         if (!rf_format_available(f))
@@ -143,45 +191,12 @@ static int check_output(const render_args *a)
     }
     if (a->format)
         return cli_usage_error("render: --format is for -o -; a file's format follows its extension");
-    rf_format fmt = rf_format_from_path(path);
-    if (fmt == RF_FORMAT_UNKNOWN)
-        return cli_usage_error("render: '%s' has no known image extension (.png .exr .pfm .ppm)", path);
-    if (!rf_format_available(fmt))
-        return cli_usage_error("render: this refray was built without support for '%s' (see make PNG=1 EXR=1)",
-                               path);
-    char *dir = file_dirname(NULL, path);
-    int ok = dir && access(dir, W_OK) == 0;
-    if (!ok)
-        fprintf(stderr, "refray: error: cannot write into '%s': %s\n", dir ? dir : path,
-                dir ? "directory missing or not writable" : "out of memory");
-    mem_free_string(NULL, dir);
-    return ok ? 0 : STATUS_IO;
+    return tile ? cli_check_output_dir(path) : cli_check_output_file("render", path);
 }
-
-typedef struct progress_state {
-    int show;
-    double start;
-} progress_state;
 
 static void progress(void *ctx, int done, int total)
 {
-    const progress_state *p = ctx;
-    if (p->show) {
-        double elapsed = render_clock() - p->start;
-        double eta = done > 0 ? elapsed * (total - done) / done : 0;
-        int width = 40, filled = (int)((long)width * done / total);
-        fprintf(stderr, "\r[%-*.*s] %3d%%  %.1fs elapsed, ETA %.1fs ", width, filled,
-                "########################################", (int)(100L * done / total), elapsed, eta);
-        if (done == total)
-            fputc('\n', stderr);
-        fflush(stderr);
-    }
-}
-
-static int cancel(void *ctx)
-{
-    (void)ctx;
-    return interrupted != 0;
+    cli_progress_show(ctx, done, total);
 }
 
 /* [MESH-SCALE-1] Load time, and the bytes of the mesh stores and of the
@@ -200,8 +215,8 @@ static void print_memory(const rf_scene *scene, const rf_render_stats *s, double
     fputc('\n', stderr);
 }
 
-static void print_stats(const rf_scene *scene, const rf_render_stats *s, const rf_write_stats *w,
-                        double load_seconds, int no_shortcuts)
+void cli_render_print_stats(const render_args *a, const rf_scene *scene, const rf_render_stats *s,
+                            const rf_write_stats *w)
 {
     long rays = s->camera_rays + s->shadow_rays + s->reflection_rays + s->refraction_rays +
                 s->total_internal_reflection_rays;
@@ -213,19 +228,18 @@ static void print_stats(const rf_scene *scene, const rf_render_stats *s, const r
     fprintf(stderr, "  light samples: %ld (skipped on the surface: %ld)\n", s->light_samples,
             s->light_samples_on_surface);
     fprintf(stderr, "  passes%s: shadows %s, specular %s, reflection %s, refraction %s\n",
-            no_shortcuts ? " (every shortcut off)" : "",
+            a->render.no_shortcuts ? " (every shortcut off)" : "",
             s->shadows ? "on" : "skipped (nothing can occlude)", s->specular ? "on" : "skipped (every Ks is 0)",
             s->reflection ? "on" : "skipped (no Ks > 0, or max_depth 1)",
             s->refraction ? "on" : "skipped (no t > 0, or max_depth 1)");
-    print_memory(scene, s, load_seconds);
+    print_memory(scene, s, a->load_seconds);
     fprintf(stderr, "  bvh: %d nodes, %d leaves, depth %d, built in %.3f s; %ld node visits, %ld primitive tests\n",
             s->bvh_nodes, s->bvh_leaves, s->bvh_depth, s->build_seconds, s->node_visits, s->primitive_tests);
     fprintf(stderr, "  time: %.3f s, %.0f rays/s\n", s->seconds, s->seconds > 0 ? rays / s->seconds : 0.0);
-    fprintf(stderr, "  non-finite values: %ld traced, %zu written; medium stack overflows: %ld\n", s->nonfinite,
-            w->nonfinite, s->medium_overflows);
+    fprintf(stderr, "  non-finite values: %ld traced, %zu written\n", s->nonfinite, w->nonfinite);
 }
 
-static rf_render_options public_opts(const render_args *a, progress_state *p)
+rf_render_options cli_render_options(const render_args *a, cli_progress *bar)
 {
     rf_render_options o;
     rf_render_options_init(&o);
@@ -236,84 +250,113 @@ static rf_render_options public_opts(const render_args *a, progress_state *p)
     o.light_samples = a->render.light_samples;
     o.max_tree_rays = a->scene.limits.max_ray_tree;
     o.no_shortcuts = a->render.no_shortcuts;
-    o.progress = progress;
-    o.cancel = cancel;
-    o.user = p;
+    o.progress = bar ? progress : NULL;
+    o.cancel = cli_signal_cancel;
+    o.user = bar;
     return o;
 }
 
-static int render_and_write(render_args *a, const rf_scene *scene, double load_seconds)
+void cli_render_report(const render_args *a, int status, const cli_render_void *at, const char *nl)
+{
+    if (status == STATUS_DATA && at->medium)
+        fprintf(stderr, "%srefray: error: a ray of pixel (%d, %d) is inside more than 16 nested transparent solids, "
+                "more than refray follows; the image would be wrong there; nothing written\n", nl, at->x, at->y);
+    else if (status == STATUS_DATA)
+        fprintf(stderr, "%srefray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
+                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n", nl, at->x, at->y,
+                a->scene.limits.max_ray_tree);
+    else if (status == STATUS_CANCELLED && a->checkpoint)
+        fprintf(stderr, "%srefray: interrupted; nothing written but the finished tiles in '%s' (the same "
+                "command goes on from them)\n", nl, a->checkpoint);
+    else if (status == STATUS_CANCELLED)
+        fprintf(stderr, "%srefray: interrupted; nothing written\n", nl);
+    else if (status == STATUS_NO_MEMORY)
+        cli_error("out of memory rendering '%s'", a->input);
+    else
+        cli_error("%s rendering '%s'", status_string(status), a->input);
+}
+
+int cli_render_write(const render_args *a, const rf_image *img, rf_write_stats *written)
+{
+    char err[1024];
+    int status;
+    if (strcmp(a->output, "-") == 0) {
+        status = (int)rf_image_write_stream(img, stdout, cli_render_stdout_format(a->format), &a->image, written,
+                                            err, sizeof err);
+        if (status == STATUS_OK && fflush(stdout) != 0) {
+            status = STATUS_IO;
+            snprintf(err, sizeof err, "cannot write to standard output");
+        }
+    } else {
+        status = (int)rf_image_write(img, a->output, &a->image, written, err, sizeof err);
+    }
+    if (status == STATUS_CANCELLED)
+        fputs("refray: interrupted; nothing written\n", stderr);
+    else if (status != STATUS_OK)
+        cli_error("%s", err);
+    return status;
+}
+
+static int render_and_write(const render_args *a, const rf_scene *scene)
 {
     rf_image *img = NULL;
     rf_render_stats stats;
     rf_write_stats written = {0, 0};
-    progress_state p = {!a->quiet && isatty(2), render_clock()};
-    rf_render_options o = public_opts(a, &p);
-    int status = interrupted ? STATUS_CANCELLED : (int)rf_render_image(scene, &o, &img, &stats);
-    if (status == STATUS_DATA) {
-        fprintf(stderr, "refray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
-                "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n",
-                stats.overflow_x, stats.overflow_y, o.max_tree_rays);
-        return status;
-    }
-    if (status == STATUS_CANCELLED) {
-        fprintf(stderr, "%srefray: interrupted; nothing written\n", p.show ? "\n" : "");
-        return status;
-    }
+    cli_progress bar;
+    cli_progress_init(&bar, !a->quiet, 0);
+    rf_render_options o = cli_render_options(a, &bar);
+    int status = (int)rf_render_image(scene, &o, &img, &stats);
     if (status != STATUS_OK) {
-        fprintf(stderr, "refray: error: out of memory rendering '%s'\n", a->input);
+        cli_render_void at = {stats.overflow_x, stats.overflow_y, stats.medium_overflows > 0};
+        cli_render_report(a, status, &at, bar.show ? "\n" : "");
         return status;
     }
-    char err[512];
-    int wstatus;
-    if (strcmp(a->output, "-") == 0) {
-        wstatus = (int)rf_image_write_stream(img, stdout, stdout_format(a->format), &a->image, &written, err,
-                                             sizeof err);
-        if (wstatus == 0 && fflush(stdout) != 0)
-            wstatus = STATUS_IO;
-    } else {
-        wstatus = (int)rf_image_write(img, a->output, &a->image, &written, err, sizeof err);
-    }
+    status = cli_render_write(a, img, &written);
     rf_image_free(img);
-    if (wstatus != 0) {
-        fprintf(stderr, "refray: error: %s\n", err);
-        return wstatus == STATUS_USAGE ? STATUS_USAGE : STATUS_IO;
-    }
-    if (a->stats)
-        print_stats(scene, &stats, &written, load_seconds, a->render.no_shortcuts);
-    return STATUS_OK;
+    if (status == STATUS_OK && a->stats)
+        cli_render_print_stats(a, scene, &stats, &written);
+    return status;
 }
 
 int cli_render(int argc, char **argv)
 {
     render_args a;
     memset(&a, 0, sizeof a);
+    a.jobs = 1;
     cli_scene_opts_init(&a.scene);
     rf_write_options_init(&a.image);
+    a.image.cancel = cli_signal_cancel;
     int status = parse_args(&a, argc, argv);
     if (status != 0)
         return status < 0 ? STATUS_OK : status;
     if ((status = check_output(&a)) != 0)
         return status;
-    /* From here on SIGINT means "stop, write nothing, exit 130", while the
-     * scene loads as well as while it renders. */
-    signal(SIGINT, on_interrupt);
+    /* From here on a signal means "stop, write nothing", while the scene
+     * loads as well as while it renders (here or on workers) and while the
+     * file is written. */
+    cli_signal_cooperate(1);
     double start = render_clock();
     rf_load_options lo = cli_load_options(&a.scene);
     rf_scene *scene;
     status = (int)rf_scene_load_file(a.input, &lo, &scene);
-    double load_seconds = render_clock() - start;
+    a.load_seconds = render_clock() - start;
+    if (status == STATUS_CANCELLED)
+        fputs("refray: interrupted; nothing written\n", stderr);
     if (!scene)
-        return interrupted ? STATUS_CANCELLED : status;
+        return status;
     rf_scene_info info;
     rf_scene_get_info(scene, &info);
-    if ((double)(a.render.width ? a.render.width : info.width) * (a.render.height ? a.render.height : info.height) >
-        (double)a.scene.limits.max_pixels) {
+    double pixels = (double)(a.render.width ? a.render.width : info.width) *
+                    (a.render.height ? a.render.height : info.height);
+    double need = scene_memory_estimate(info.primitives, pixels, 0);
+    if (pixels > (double)a.scene.limits.max_pixels || need > (double)a.scene.limits.max_memory_mb * 1048576.0) {
         rf_scene_free(scene);
-        return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
+        if (pixels > (double)a.scene.limits.max_pixels)
+            return cli_usage_error("render: the image would be over --max-pixels %ld", a.scene.limits.max_pixels);
+        return cli_usage_error("render: the render would need about %.0f MiB, over --max-memory %ld", need / 1048576.0,
+                               a.scene.limits.max_memory_mb);
     }
-    status = render_and_write(&a, scene, load_seconds);
+    status = cli_render_in_tiles(&a) ? cli_render_tiles(&a, scene) : render_and_write(&a, scene);
     rf_scene_free(scene);
-    signal(SIGINT, SIG_DFL);
     return status;
 }

@@ -4,8 +4,9 @@
  * double twin refray-ld, compare the two images, report where and by how
  * much they differ (spec/numerics.md, "The stability tool").
  *
- * The twin is found by --ld PATH, else $REFRAY_LD, else as refray-ld next
- * to this program (`make refray-ld` puts it there).  It is run as
+ * The twin is found by --ld PATH, else $REFRAY_LD, else where `make
+ * install` puts it (../libexec/refray/refray-ld from this program), else as
+ * refray-ld next to this program (where `make` puts it).  It is run as
  *   refray-ld verify --stability --raw-dump TMP [the same options] SCENE
  * and hands its image back through TMP, a raw dump (stability.h).
  */
@@ -19,8 +20,11 @@
 #include <unistd.h>
 #include "io/scene_file.h"
 #include "cli/cli_args.h"
+#include "io/atomic.h"
+#include "io/fileio.h"
+#include "cli/cli_signal.h"
 #include "cli/commands.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/stability.h"
 
 extern char **environ;
@@ -34,9 +38,9 @@ static const char stability_help[] =
     "usage: refray stability SCENE [OPTIONS]\n"
     "       refray verify --stability SCENE [OPTIONS]\n"
     "Renders SCENE in double and in long double (the twin program refray-ld,\n"
-    "built by `make refray-ld`) and reports how much the two pictures differ:\n"
-    "the largest absolute and relative difference and where, and how many\n"
-    "pixels differ by how much.  Exit status 0 when no pixel differs by more\n"
+    "built by `make`, installed by `make install`) and reports how much the\n"
+    "two pictures differ: the largest absolute and relative difference and\n"
+    "where, and how many pixels differ by how much.  Exit status 0 when no pixel differs by more\n"
     "than the threshold, 1 when some does.\n"
     "options:\n"
     "  --threshold REL       relative difference that counts as unstable (1e-9)\n"
@@ -44,7 +48,7 @@ static const char stability_help[] =
     "                        channel (17 + log10 rel) / 17, 0 where identical\n"
     "                        (linear; .pfm or .exr keep it exactly)\n"
     "  --ld PATH             the long double program (default: $REFRAY_LD, or\n"
-    "                        refray-ld next to this program)\n"
+    "                        the installed or built refray-ld)\n"
     "  --width W --height H --samples K --max-depth D --light-samples N\n"
     "  --no-shortcuts        as for `refray render`\n"
     "and -W and the input limits of `refray --help`.\n";
@@ -85,12 +89,20 @@ static int parse_args(stab_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("stability", stability_help, argc, argv, &a->scene, &a->input, stab_option, a);
     if (status != 0)
         return status;
+    const render_opts *r = &a->render;
+    if ((status = cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth,
+                                  &a->scene.limits)) != 0)
+        return status;
     if (!(a->threshold > 0))
         return cli_usage_error("stability: --threshold must be > 0");
     return 0;
 }
 
-/* The twin's path into buf: --ld, $REFRAY_LD, or refray-ld beside us. */
+/* The twin's path into buf: --ld, $REFRAY_LD, or where the build and
+ * `make install` put it: LIBEXEC_TWIN relative to this program (an
+ * installed refray), else refray-ld beside it (the build directory).
+ * -1 when even the candidates cannot be named. */
+#define LIBEXEC_TWIN "../libexec/refray/refray-ld"
 static int find_twin(const stab_args *a, char *buf, size_t len)
 {
     const char *env = getenv("REFRAY_LD");
@@ -98,16 +110,16 @@ static int find_twin(const stab_args *a, char *buf, size_t len)
         snprintf(buf, len, "%s", a->ld ? a->ld : env);
         return 0;
     }
-    ssize_t n = readlink("/proc/self/exe", buf, len - 1);
+    char self[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0)
         return -1;
-    buf[n] = '\0';
-    char *slash = strrchr(buf, '/');
-    size_t dir = slash ? (size_t)(slash - buf) + 1 : 0;
-    if (dir + sizeof "refray-ld" > len)
-        return -1;
-    memcpy(buf + dir, "refray-ld", sizeof "refray-ld");
-    return 0;
+    self[n] = '\0';
+    char *slash = strrchr(self, '/');
+    int dir = slash ? (int)(slash - self) + 1 : 0;
+    if ((size_t)snprintf(buf, len, "%.*s%s", dir, self, LIBEXEC_TWIN) < len && access(buf, X_OK) == 0)
+        return 0;
+    return (size_t)snprintf(buf, len, "%.*srefray-ld", dir, self) < len ? 0 : -1;
 }
 
 /* The twin's argv: verify --stability --raw-dump TMP, then ours without
@@ -140,14 +152,15 @@ static char **twin_argv(const stab_args *a, const char *twin, const char *tmp)
 static int run_twin(const stab_args *a, stab_image *out)
 {
     char twin[PATH_MAX], tmp[] = "/tmp/refray-stability-XXXXXX", err[128];
+    /* A missing helper is missing input (66), not an internal error. */
     if (find_twin(a, twin, sizeof twin) != 0 || access(twin, X_OK) != 0) {
-        fprintf(stderr, "refray: error: the long double program '%s' is missing; build it with `make refray-ld`, "
-                "or name it with --ld\n", twin);
-        return STATUS_INTERNAL;
+        cli_error("the long double program '%s' is missing (`make` builds it, `make install` installs it); "
+                  "or name it with --ld", twin);
+        return STATUS_NO_INPUT;
     }
     int fd = mkstemp(tmp);
     if (fd < 0) {
-        fprintf(stderr, "refray: error: cannot create a temporary file: %s\n", strerror(errno));
+        cli_error("cannot create a temporary file: %s", strerror(errno));
         return STATUS_IO;
     }
     close(fd);
@@ -156,20 +169,21 @@ static int run_twin(const stab_args *a, stab_image *out)
     int wstatus = 0, status = STATUS_INTERNAL;
     if (argv && posix_spawn(&pid, twin, NULL, NULL, argv, environ) == 0 && waitpid(pid, &wstatus, 0) == pid) {
         if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0) {
-            FILE *f = fopen(tmp, "r");
+            char why[512];
+            FILE *f = file_fopen_read(tmp, &status, why, sizeof why);
             status = f && stability_read_raw(f, out, err, sizeof err) == 0 ? STATUS_OK : STATUS_INTERNAL;
             if (status != STATUS_OK)
-                fprintf(stderr, "refray: error: reading the long double image: %s\n", f ? err : strerror(errno));
+                cli_error("reading the long double image: %s", f ? err : why);
             if (f)
                 fclose(f);
         } else {
-            fprintf(stderr, "refray: error: the long double program failed (%s %d)\n",
+            cli_error("the long double program failed (%s %d)",
                     WIFEXITED(wstatus) ? "exit status" : "signal",
                     WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : WTERMSIG(wstatus));
             status = WIFEXITED(wstatus) && WEXITSTATUS(wstatus) != 0 ? status_from_exit_code(WEXITSTATUS(wstatus)) : STATUS_INTERNAL;
         }
     } else {
-        fprintf(stderr, "refray: error: cannot run '%s'\n", twin);
+        cli_error("cannot run '%s'", twin);
     }
     free(argv);
     unlink(tmp);
@@ -177,22 +191,23 @@ static int run_twin(const stab_args *a, stab_image *out)
 }
 
 /* The private half: render in this build's precision, dump raw. */
+static int fill_raw(FILE *f, void *img)
+{
+    return stability_write_raw(f, img) == 0 ? STATUS_OK : STATUS_IO;
+}
+
 static int dump_raw(const stab_args *a, const scene_model *scene)
 {
     stab_image img;
+    char why[1024];
     int status = stability_render(scene, &a->render, &img);
     if (status != STATUS_OK)
         return status;
-    FILE *f = fopen(a->raw_dump, "w");
-    int bad = !f || stability_write_raw(f, &img) != 0;
-    if (f && fclose(f) != 0)
-        bad = 1;
+    status = file_write_atomic(a->raw_dump, fill_raw, &img, why, sizeof why);
     stability_free(&img);
-    if (bad) {
-        fprintf(stderr, "refray: error: cannot write '%s': %s\n", a->raw_dump, strerror(errno));
-        return STATUS_IO;
-    }
-    return STATUS_OK;
+    if (status != STATUS_OK)
+        cli_error("%s", why);
+    return status;
 }
 
 static void print_report(const stab_args *a, const stab_image *d, const stab_image *ld, const stab_report *r)
@@ -220,7 +235,7 @@ static int write_map(const char *path, const img_buf *map)
     char err[512];
     o.linear_png = 1;
     if (img_write(path, map, &o, err, sizeof err) != 0) {
-        fprintf(stderr, "refray: error: %s\n", err);
+        cli_error("%s", err);
         return STATUS_IO;
     }
     return STATUS_OK;
@@ -239,7 +254,7 @@ static int compare(const stab_args *a, const scene_model *scene)
         return status;
     }
     if (stability_compare(&d, &ld, a->threshold, &r, a->map ? &map : NULL) != 0) {
-        fprintf(stderr, "refray: error: the two renders differ in size, or out of memory\n");
+        cli_error("the two renders differ in size, or out of memory");
         status = STATUS_INTERNAL;
     } else {
         print_report(a, &d, &ld, &r);
@@ -268,12 +283,14 @@ int cli_stability(int argc, char **argv)
     a.render.max_tree_rays = a.scene.limits.max_ray_tree;
     if (!a.raw_dump && sizeof(real) > sizeof(double))
         return cli_usage_error("stability: this is the long double program; run refray, the double one");
-    scene_model *scene = scene_file_load(a.input, &a.scene.limits, stderr, a.scene.warnings, &status);
+    cli_signal_cooperate(1);
+    a.render.cancel = cli_signal_cancel;
+    scene_model *scene = cli_load_scene(&a.scene, a.input, &status);
     if (!scene)
         return status;
     status = a.raw_dump ? dump_raw(&a, scene) : compare(&a, scene);
     if (status == STATUS_DATA)
-        fprintf(stderr, "refray: error: a ray tree passed --max-ray-tree %ld; nothing compared\n",
+        cli_error("a ray tree passed --max-ray-tree %ld; nothing compared",
                 a.scene.limits.max_ray_tree);
     scene_free(scene);
     return status;

@@ -3,12 +3,17 @@
  * compared with its exact image, one table row (or JSON object) per scene;
  * with --sweep, each scene rendered at rising cost with the convergence
  * order fitted.  The exit code is the largest any scene gave (verify.h).
+ * With --jobs N the scenes are checked on N worker processes (io/pool.h),
+ * each scene on one, and printed in the order given, as without.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "io/pool.h"
 #include "io/scene_file.h"
 #include "cli/cli_args.h"
+#include "cli/cli_signal.h"
+#include "io/atomic.h"
 #include "cli/commands.h"
 
 static const char verify_help[] =
@@ -26,6 +31,9 @@ static const char verify_help[] =
     "                         time per step and the order fitted in log-log\n"
     "  --tsv FILE             with --sweep: every step as a TSV row (spec/verify.md)\n"
     "  --runs R               render R times, report the median time (default 1)\n"
+    "  --jobs N               check N scenes at a time, each in a worker process of\n"
+    "                         its own (default 1; 0: one per processor); the same\n"
+    "                         output, but the render times are taken side by side\n"
     "and -W and the input limits of `refray --help`.\n"
     "table: pixels, excluded (ambiguous pixels, not compared), max abs, RMS and\n"
     "max rel error, PSNR (dB, peak = the exact image's largest value), over (pixels\n"
@@ -43,6 +51,7 @@ typedef struct verify_args {
     verify_sweep sweep;
     const char **paths;
     int path_count;
+    int jobs;
 } verify_args;
 
 
@@ -58,6 +67,14 @@ static int verify_option(verify_args *a, int argc, char **argv, int *i)
         return cli_take_value(argc, argv, i, &a->tsv_path);
     if (strcmp(opt, "--runs") == 0)
         return cli_int_value(argc, argv, i, VERIFY_RUNS_MAX, &a->view.runs);
+    if (strcmp(opt, "--jobs") == 0) {
+        const char *v;
+        long jobs;
+        if (!cli_take_value(argc, argv, i, &v) || !cli_parse_long(opt, v, 0, 256, &jobs))
+            return 0;
+        a->jobs = jobs ? (int)jobs : pool_cpu_count();
+        return 1;
+    }
     return cli_view_option(&a->view, &a->scene.limits, 1, argc, argv, i);
 }
 
@@ -69,8 +86,10 @@ static int finish_args(verify_args *a)
         return cli_usage_error("verify: no scene given");
     if (a->tsv_path && !a->sweep_text)
         return cli_usage_error("verify: --tsv needs --sweep");
-    if (!a->sweep_text)
-        return 0;
+    const verify_opts *v = &a->view;
+    int status = cli_check_sizes(v->width, v->height, v->samples, v->light_samples, v->max_depth, &a->scene.limits);
+    if (status != 0 || !a->sweep_text)
+        return status;
     int pixel = strncmp(a->sweep_text, "pixel-", 6) == 0;
     if (pixel ? a->view.samples != 0 : a->view.light_samples != 0)
         return cli_usage_error("verify: --sweep %s and --%s both set the %s samples", a->sweep_text,
@@ -195,7 +214,7 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
 {
     int status;
     memset(r, 0, sizeof *r);
-    scene_model *s = scene_file_load(path, &a->scene.limits, stderr, a->scene.warnings, &status);
+    scene_model *s = cli_load_scene(&a->scene, path, &status);
     if (!s) {
         verify_result_error(r, path, status, load_reason(status));
         return NULL;
@@ -208,30 +227,6 @@ static scene_model *load(const verify_args *a, const char *path, verify_result *
         return NULL;
     }
     return s;
-}
-
-static int verify_all(const verify_args *a, verify_result *results)
-{
-    int worst = STATUS_OK, w = name_width(a);
-    if (!a->json)
-        print_header(w);
-    for (int i = 0; i < a->path_count; i++) {
-        scene_model *s = load(a, a->paths[i], &results[i]);
-        if (s) {
-            verify_scene(s, a->paths[i], &a->view, &results[i]);
-            scene_free(s);
-        }
-        worst = status_worse(worst, results[i].status);
-        if (!a->json) {
-            print_row(&results[i], w);
-            fflush(stdout);
-        }
-    }
-    if (a->json)
-        verify_json_results(stdout, results, a->path_count);
-    else
-        print_totals(results, a->path_count);
-    return worst;
 }
 
 /* ---- Sweeps ---- */
@@ -268,63 +263,214 @@ static void print_sweep(const verify_sweep *sw, const verify_result *steps, int 
     printf("  expected order vs N: %s\n", verify_expected_order(r, sw));
 }
 
-/* Sweeps one scene; prints it; returns its worst status. */
-static int sweep_one(const verify_args *a, const char *path, verify_result *steps, FILE *tsv, int *first_json)
+/* Runs one scene's check or sweep into steps; returns its status. */
+static int check_scene(const verify_args *a, int k, verify_result *steps, int *ran)
 {
-    int ran = 0, status;
+    const char *path = a->paths[k];
+    int status;
     scene_model *s = load(a, path, &steps[0]);
-    if (s) {
-        status = verify_sweep_run(s, path, &a->view, &a->sweep, steps, &ran);
-        scene_free(s);
+    *ran = 1;
+    if (!s)
+        return steps[0].status;
+    if (a->sweep_text) {
+        status = verify_sweep_run(s, path, &a->view, &a->sweep, steps, ran);
     } else {
+        verify_scene(s, path, &a->view, &steps[0]);
         status = steps[0].status;
-        ran = 1;
     }
-    verify_order vs_n, vs_time;
-    verify_sweep_orders(&a->sweep, steps, ran, &vs_n, &vs_time);
-    if (tsv)
-        verify_tsv_sweep(tsv, &a->sweep, steps, ran, &vs_n, &vs_time);
-    if (a->json) {
-        fputs(*first_json ? "[" : ",\n ", stdout);
-        verify_json_sweep(stdout, &a->sweep, steps, ran, &vs_n, &vs_time);
-        *first_json = 0;
-    } else {
-        print_sweep(&a->sweep, steps, ran, &vs_n, &vs_time);
-    }
-    fflush(stdout);
+    scene_free(s);
     return status;
 }
 
-static int close_tsv(FILE *tsv, const char *path)
+/* ---- The run: each scene checked, then printed in the order given ---- */
+
+typedef struct verify_outcome {
+    int status, ran;
+    verify_result *steps;    /* ran of them; NULL until the scene is done */
+} verify_outcome;
+
+typedef struct verify_run {
+    const verify_args *a;
+    verify_outcome *out;
+    verify_result *results;  /* a plain check's rows, for the JSON array */
+    int printed;             /* scenes printed so far */
+    int worst;
+    int width;               /* of the scene column */
+    FILE *tsv;
+    int first_json;
+} verify_run;
+
+static void print_sweep_scene(verify_run *v, const verify_result *steps, int ran)
 {
-    if (!tsv)
-        return STATUS_OK;
-    int bad = ferror(tsv);
-    bad |= fclose(tsv) != 0;
-    if (!bad)
-        return STATUS_OK;
-    fprintf(stderr, "refray: error: could not write '%s'\n", path);
-    return STATUS_IO;
+    const verify_args *a = v->a;
+    verify_order vs_n, vs_time;
+    verify_sweep_orders(&a->sweep, steps, ran, &vs_n, &vs_time);
+    if (v->tsv)
+        verify_tsv_sweep(v->tsv, &a->sweep, steps, ran, &vs_n, &vs_time);
+    if (a->json) {
+        fputs(v->first_json ? "[" : ",\n ", stdout);
+        verify_json_sweep(stdout, &a->sweep, steps, ran, &vs_n, &vs_time);
+        v->first_json = 0;
+    } else {
+        print_sweep(&a->sweep, steps, ran, &vs_n, &vs_time);
+    }
 }
 
-static int sweep_all(const verify_args *a, verify_result *steps)
+/* Prints every finished scene whose turn has come. */
+static void print_ready(verify_run *v)
 {
-    FILE *tsv = NULL;
-    if (a->tsv_path && !(tsv = fopen(a->tsv_path, "w"))) {
-        fprintf(stderr, "refray: error: cannot write '%s'\n", a->tsv_path);
+    for (; v->printed < v->a->path_count && v->out[v->printed].steps; v->printed++) {
+        verify_outcome *o = &v->out[v->printed];
+        v->worst = status_worse(v->worst, o->status);
+        if (v->a->sweep_text) {
+            print_sweep_scene(v, o->steps, o->ran);
+        } else {
+            v->results[v->printed] = o->steps[0];
+            if (!v->a->json)
+                print_row(&o->steps[0], v->width);
+        }
+        fflush(stdout);
+        free(o->steps);
+        o->steps = NULL;
+    }
+}
+
+/* Keeps scene k's outcome: status, steps[0 .. ran). */
+static int keep(verify_run *v, int k, int status, const verify_result *steps, int ran)
+{
+    verify_outcome *o = &v->out[k];
+    o->steps = malloc((size_t)ran * sizeof *o->steps);
+    if (!o->steps) {
+        fputs("refray: error: out of memory\n", stderr);
+        return STATUS_NO_MEMORY;
+    }
+    memcpy(o->steps, steps, (size_t)ran * sizeof *steps);
+    o->status = status;
+    o->ran = ran;
+    print_ready(v);
+    return STATUS_OK;
+}
+
+/* A worker's scene: the status, the count, the steps, in one message. */
+static int work(void *ctx, int k, pool_link *link)
+{
+    const verify_run *v = ctx;
+    verify_result *steps = malloc(VERIFY_SWEEP_MAX * sizeof *steps + 2 * sizeof(int));
+    int ran = 0, head[2];
+    if (!steps)
+        return STATUS_NO_MEMORY;
+    head[0] = check_scene(v->a, k, steps, &ran);
+    head[1] = ran;
+    unsigned char *msg = (unsigned char *)steps;
+    memmove(msg + sizeof head, steps, (size_t)ran * sizeof *steps);
+    memcpy(msg, head, sizeof head);
+    int sent = pool_send(link, msg, sizeof head + (size_t)ran * sizeof *steps);
+    free(steps);
+    return sent == 0 ? STATUS_OK : STATUS_CANCELLED;
+}
+
+static int message(void *ctx, int k, const void *data, size_t len)
+{
+    int head[2];
+    memcpy(head, data, sizeof head);
+    if (head[1] < 1 || head[1] > VERIFY_SWEEP_MAX || len != sizeof head + (size_t)head[1] * sizeof(verify_result))
+        return STATUS_INTERNAL;
+    verify_result *steps = malloc((size_t)head[1] * sizeof *steps);
+    if (!steps)
+        return STATUS_NO_MEMORY;
+    memcpy(steps, (const unsigned char *)data + sizeof head, (size_t)head[1] * sizeof *steps);
+    int rc = keep(ctx, k, head[0], steps, head[1]);
+    free(steps);
+    return rc;
+}
+
+static int run_scenes(verify_run *v, verify_result *steps)
+{
+    const verify_args *a = v->a;
+    if (a->jobs > 1) {
+        pool_ops ops = {work, NULL, message, NULL, v};
+        pool_failure fail;
+        char why[300];
+        int rc = pool_run(a->jobs, a->path_count, &ops, cli_signal_flag(), &fail, why, sizeof why);
+        if (rc != STATUS_OK && rc != STATUS_CANCELLED)
+            cli_error("verify: %s", why[0] ? why : status_string(rc));
+        return rc;
+    }
+    for (int k = 0; k < a->path_count; k++) {
+        if (cli_signal_cancel(NULL))
+            return STATUS_CANCELLED;
+        int ran = 0, status = check_scene(a, k, steps, &ran);
+        int rc = keep(v, k, status, steps, ran);
+        if (rc != STATUS_OK)
+            return rc;
+    }
+    return STATUS_OK;
+}
+
+/* The TSV goes through the atomic writer: it is at its path whole, or
+ * not at all (a missing scene, a bad one, a signal: nothing), as every
+ * output of every command ([REL-OUT-1]). */
+static int finish_tsv(file_out *tsv, const char *path, int worst)
+{
+    char why[1024];
+    /* A check that failed (exit 1) is a result worth keeping; an error is not. */
+    if (worst != STATUS_OK && worst != STATUS_FAIL) {
+        file_out_abort(tsv);
+        fprintf(stderr, "refray: '%s' not written\n", path);
+        return worst;
+    }
+    int status = file_out_commit(tsv, why, sizeof why);
+    if (status != STATUS_OK && status != STATUS_CANCELLED)
+        cli_error("%s", why);
+    return status_worse(worst, status);
+}
+
+static int verify_all(const verify_args *a, verify_result *steps)
+{
+    verify_run v;
+    file_out tsv;
+    char why[1024];
+    cancel_poll cancel = cancel_poll_make(cli_signal_cancel, NULL);
+    memset(&v, 0, sizeof v);
+    v.a = a;
+    v.width = name_width(a);
+    v.first_json = 1;
+    v.out = calloc((size_t)a->path_count, sizeof *v.out);
+    v.results = malloc((size_t)a->path_count * sizeof *v.results);
+    if (!v.out || !v.results) {
+        free(v.out);
+        free(v.results);
+        cli_error("out of memory");
+        return STATUS_NO_MEMORY;
+    }
+    if (a->tsv_path && file_out_open(&tsv, a->tsv_path, &cancel, why, sizeof why) != STATUS_OK) {
+        cli_error("%s", why);
+        free(v.out);
+        free(v.results);
         return STATUS_IO;
     }
-    if (tsv)
-        verify_tsv_header(tsv);
-    int worst = STATUS_OK, first_json = 1;
-    for (int i = 0; i < a->path_count; i++) {
-        int status = sweep_one(a, a->paths[i], steps, tsv, &first_json);
-        worst = status_worse(worst, status);
-    }
-    if (a->json)
-        fputs(first_json ? "[]\n" : "]\n", stdout);
-    int status = close_tsv(tsv, a->tsv_path);
-    return status_worse(worst, status);
+    v.tsv = a->tsv_path ? tsv.fp : NULL;
+    if (v.tsv)
+        verify_tsv_header(v.tsv);
+    if (!a->json && !a->sweep_text)
+        print_header(v.width);
+    int status = run_scenes(&v, steps);
+    for (int k = 0; k < a->path_count; k++)
+        free(v.out[k].steps);
+    if (status == STATUS_OK && cli_signal_cancel(NULL))
+        status = STATUS_CANCELLED;
+    if (status == STATUS_OK && !a->sweep_text && a->json)
+        verify_json_results(stdout, v.results, a->path_count);
+    else if (status == STATUS_OK && !a->sweep_text)
+        print_totals(v.results, a->path_count);
+    else if (status == STATUS_OK && a->json)
+        fputs(v.first_json ? "[]\n" : "]\n", stdout);
+    status = status_worse(v.worst, status);
+    if (a->tsv_path)
+        status = finish_tsv(&tsv, a->tsv_path, status);
+    free(v.out);
+    free(v.results);
+    return status;
 }
 
 /* In cli_stability.c: `verify --stability SCENE` is the stability tool. */
@@ -335,16 +481,19 @@ int cli_verify(int argc, char **argv)
             return cli_stability(argc, argv);
     verify_args a;
     memset(&a, 0, sizeof a);
+    a.jobs = 1;
     cli_scene_opts_init(&a.scene);
+    cli_signal_cooperate(1);
+    a.view.cancel = cli_signal_cancel;
     a.paths = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *a.paths);
     verify_result *results = malloc((size_t)(argc > VERIFY_SWEEP_MAX ? argc : VERIFY_SWEEP_MAX) * sizeof *results);
     int status = a.paths && results ? parse_args(&a, argc, argv) : STATUS_NO_MEMORY;
     if (status == STATUS_NO_MEMORY)
-        fputs("refray: error: out of memory\n", stderr);
+        cli_error("out of memory");
     else if (status < 0)
         status = STATUS_OK;
     else if (status == 0)
-        status = a.sweep_text ? sweep_all(&a, results) : verify_all(&a, results);
+        status = verify_all(&a, results);
     free(results);
     free(a.paths);
     return status;

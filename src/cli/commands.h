@@ -14,5 +14,6 @@ int cli_compare(int argc, char **argv);
 int cli_stability(int argc, char **argv);
 int cli_kit(int argc, char **argv);
 int cli_conform(int argc, char **argv);
+int cli_merge(int argc, char **argv);
 
 #endif

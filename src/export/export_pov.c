@@ -27,8 +27,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "export/export_pov.h"
-#include "io/filewrite.h"
 #include "export/export_pov_far.h"
+#include "io/atomic.h"
 #include "render/lightsample.h"
 
 /* ---- Notes ---- */
@@ -877,7 +877,7 @@ int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_note
     return fflush(fp) != 0 || ferror(fp) ? STATUS_IO : 0;
 }
 
-/* ---- The atomic file ---- */
+/* ---- The file ---- */
 
 typedef struct pov_job {
     const scene_model *s;
@@ -895,13 +895,13 @@ int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, p
                     size_t errlen)
 {
     pov_job job = {s, o, notes};
-    char why[600];
+    char why[1024];
     if (err && errlen)
         err[0] = '\0';
     if (!pov_export_check(s, o, notes))
         return STATUS_DATA;
     int rc = file_write_atomic(path, fill_pov, &job, why, sizeof why);
-    if (rc != STATUS_OK && rc != STATUS_DATA)
+    if (rc != STATUS_OK && rc != STATUS_DATA && err && errlen)
         snprintf(err, errlen, "%s", why);
     return rc;
 }

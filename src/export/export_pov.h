@@ -88,9 +88,8 @@ int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes);
 int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_notes *notes);
 
 /*
- * The same into path, atomically: a temporary "<path>.tmp.XXXXXX" in the
- * same directory is written, flushed, synced and renamed onto path; on any
- * failure it is removed and path is left as it was.  Returns as
+ * The same into path through the atomic writer (io/atomic.h): path holds
+ * the whole export or is left as it was.  Returns as
  * pov_export_write, with a one-line reason in err (errlen bytes; err may be
  * NULL only when errlen is 0) for an I/O error.
  */

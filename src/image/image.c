@@ -52,6 +52,33 @@ void img_free(img_buf *img)
     img->width = img->height = 0;
 }
 
+int img_row_cancelled(const img_write_opts *o, const img_buf *img)
+{
+    return cancel_steps(o->cancel, 1 + img->width / 1024);
+}
+
+img_read_opts img_read_opts_default(void)
+{
+    img_read_opts o = {IMG_DEFAULT_MAX_PIXELS, 0, 0, 0};
+    return o;
+}
+
+int img_check_header(long width, long height, const img_read_opts *o, char *err, size_t errlen)
+{
+    long max = o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS;
+    if (width < 1 || height < 1 || width > INT_MAX || height > INT_MAX)
+        return img_error(err, errlen, STATUS_DATA, "bad image size %ldx%ld in the header", width, height);
+    /* A size expected (a mask for a given image) is judged first: it is
+     * the telling reason, and it bounds the pixels by itself. */
+    if (o && o->width > 0 && o->height > 0 && (width != o->width || height != o->height))
+        return img_error(err, errlen, STATUS_DATA, "the image is %ldx%ld, not the %dx%d expected", width, height,
+                         o->width, o->height);
+    if ((double)width * (double)height > (double)max)
+        return img_error(err, errlen, STATUS_DATA, "the image is %ldx%ld, over --max-pixels %ld", width, height,
+                         max);
+    return STATUS_OK;
+}
+
 img_write_opts img_write_opts_default(void)
 {
     img_write_opts o;
@@ -61,6 +88,7 @@ img_write_opts img_write_opts_default(void)
     o.png_bits = 8;
     o.exr_float = 0;
     o.stats = NULL;
+    o.cancel = NULL;
     return o;
 }
 

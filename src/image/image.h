@@ -35,12 +35,14 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "base/cancel.h"
 #include "base/mem.h"
 #include "base/status.h"
 
-/* Readers refuse headers that claim more pixels than this (a corrupt or
- * hostile header must not make us allocate gigabytes). */
-#define IMG_MAX_PIXELS (1L << 28)
+/* The readers' default limit on the pixels a header may claim, the same
+ * as the scenes' --max-pixels (a corrupt or hostile header must not make
+ * us allocate gigabytes). */
+#define IMG_DEFAULT_MAX_PIXELS (64L * 1024 * 1024)
 
 /* Linear RGB, row-major from the top row, 3 doubles per pixel. */
 typedef struct img_buf {
@@ -81,10 +83,28 @@ typedef struct img_write_opts {
     int png_bits;           /* 8 (default) or 16; PPM is always 8 */
     int exr_float;          /* 1 = EXR channels as 32-bit float, 0 = half (default) */
     img_write_stats *stats; /* optional out: filled by every write that gets to the pixels */
+    cancel_poll *cancel;    /* asked once per row encoded: a stop ends the write with
+                               STATUS_CANCELLED ([REL-CANCEL-1]); NULL: never */
 } img_write_opts;
 
-/* exposure 0, clamp, sRGB, 8-bit PNG, half EXR, no stats. */
+/* exposure 0, clamp, sRGB, 8-bit PNG, half EXR, no stats, no cancel. */
 img_write_opts img_write_opts_default(void);
+
+/* What a reader accepts, checked on the header before anything is
+ * allocated for the pixels ([REL-IMAGE-1]). */
+typedef struct img_read_opts {
+    long max_pixels;       /* a header claiming more is refused (STATUS_DATA) */
+    int width, height;     /* > 0: a header of another size is refused */
+    int header_only;       /* 1: stop after the header; *out gets the size but no pixels */
+} img_read_opts;
+
+/* IMG_DEFAULT_MAX_PIXELS, any size, the whole image. */
+img_read_opts img_read_opts_default(void);
+
+/* A header's width x height against o: STATUS_OK, or STATUS_DATA with the
+ * reason ("the image is 16384x16384, over --max-pixels 67108864", "the
+ * image is 9x9, not the 8x8 expected") in err. */
+int img_check_header(long width, long height, const img_read_opts *o, char *err, size_t errlen);
 
 /* ---- Pure conversions shared by the writers (exported for the tests) ---- */
 
@@ -105,6 +125,10 @@ float img_float_from_double(double v, int *clamped);
 double img_display_value(double v, const img_write_opts *o);
 
 /* ---- Shared by the format back ends ---- */
+
+/* One row of img about to be encoded counted into o->cancel (a step per
+ * 1024 pixels); 1: stop, the write is cancelled. */
+int img_row_cancelled(const img_write_opts *o, const img_buf *img);
 
 /* A finite v unchanged; NaN/Inf become 0 and are counted in st. */
 double img_sanitize(double v, img_write_stats *st);

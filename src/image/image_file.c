@@ -1,20 +1,14 @@
 /*
- * image_file.c - image files: dispatch by extension, the atomic write, and
- * reading.
+ * image_file.c - image streams: formats by extension, encoding to and
+ * decoding from an open stream (files themselves: io/image_io.c).
  *
  * Invariant: a back end is only ever called with a valid image (width and
  * height >= 1, pixels present) and valid options; this file checks both,
  * and checks that the format is compiled in, before any file is created.
  */
 #include <errno.h>
-#include <float.h>
-#include <limits.h>
 #include <math.h>
-#include <stdarg.h>
-#include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include "image/image.h"
 #include "image/codec.h"
 #include "image/image_file.h"
@@ -138,6 +132,12 @@ static int check_write(const char *path, img_format fmt, const img_buf *img,
     return rc;
 }
 
+int img_check_write(img_format fmt, const img_buf *img, const img_write_opts *o, char *err, size_t errlen)
+{
+    img_write_opts defaults = img_write_opts_default();
+    return check_write(NULL, fmt, img, o ? o : &defaults, err, errlen);
+}
+
 static int encode(FILE *fp, img_format fmt, const img_buf *img, const img_write_opts *o,
                   img_write_stats *st, char *why, size_t len)
 {
@@ -176,135 +176,80 @@ int img_write_stream(FILE *fp, img_format fmt, const img_buf *img, const img_wri
     return rc;
 }
 
-/* ---- The atomic write ---- */
-
-/* 0666 less the umask.  Read where Linux publishes it: asking umask(2)
- * means setting it, a process-wide change other threads could see.
- * Elsewhere the common umask 022 is assumed. */
-static mode_t new_file_mode(void)
-{
-    unsigned mask = 022;
-    FILE *f = fopen("/proc/self/status", "r");
-    char line[128];
-    while (f && fgets(line, sizeof line, f))
-        if (sscanf(line, "Umask: %o", &mask) == 1)
-            break;
-    if (f)
-        fclose(f);
-    return (mode_t)(0666 & ~mask);
-}
-
-/* mkstemp creates 0600; give the file the mode it would have had if we
- * had written path directly (keeping an existing file's mode). */
-static int set_final_mode(int fd, const char *path, char *why, size_t len)
-{
-    struct stat sb;
-    mode_t mode = stat(path, &sb) == 0 && S_ISREG(sb.st_mode) ? (sb.st_mode & 07777)
-                                                              : new_file_mode();
-    if (fchmod(fd, mode) != 0)
-        return img_error(why, len, STATUS_IO, "cannot set the file mode: %s", strerror(errno));
-    return STATUS_OK;
-}
-
-/* Encodes into the open temporary file fd and closes it, checking the
- * flush, the fsync and the close. */
-static int fill_temp(int fd, const char *path, img_format fmt, const img_buf *img,
-                     const img_write_opts *o, char *why, size_t len)
-{
-    int rc = set_final_mode(fd, path, why, len);
-    FILE *fp = rc == STATUS_OK ? fdopen(fd, "wb") : NULL;
-    if (!fp) {
-        if (rc == STATUS_OK)
-            rc = img_error(why, len, STATUS_IO, "cannot open a stream: %s", strerror(errno));
-        close(fd);
-        return rc;
-    }
-    rc = img_write_stream(fp, fmt, img, o, why, len);
-    if (rc == STATUS_OK && fsync(fileno(fp)) != 0)
-        rc = img_error(why, len, STATUS_IO, "write error: %s", strerror(errno));
-    if (fclose(fp) != 0 && rc == STATUS_OK)
-        rc = img_error(why, len, STATUS_IO, "write error: %s", strerror(errno));
-    return rc;
-}
-
-static int write_atomically(const char *path, img_format fmt, const img_buf *img,
-                            const img_write_opts *o, char *why, size_t len)
-{
-    /* The rename would replace a device, a FIFO or a directory entry that
-     * is not a plain file (as root even /dev/full): refuse instead. */
-    struct stat sb;
-    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
-        return img_error(why, len, STATUS_IO, "it exists and is not a regular file");
-    static const char suffix[] = ".tmp.XXXXXX";
-    size_t n = strlen(path) + sizeof suffix;
-    char *tmp = malloc(n);
-    if (!tmp)
-        return img_error(why, len, STATUS_NO_MEMORY, "out of memory");
-    snprintf(tmp, n, "%s%s", path, suffix);
-    int fd = mkstemp(tmp);
-    int rc = STATUS_OK;
-    if (fd < 0)
-        rc = img_error(why, len, STATUS_IO, "cannot create a temporary file: %s", strerror(errno));
-    else
-        rc = fill_temp(fd, path, fmt, img, o, why, len);
-    if (fd >= 0 && rc == STATUS_OK && rename(tmp, path) != 0)
-        rc = img_error(why, len, STATUS_IO, "cannot rename the temporary file into place: %s",
-                       strerror(errno));
-    if (fd >= 0 && rc != STATUS_OK)
-        unlink(tmp);
-    free(tmp);
-    return rc;
-}
-
-int img_write(const char *path, const img_buf *img, const img_write_opts *o, char *err,
-              size_t errlen)
-{
-    char why[REASON_MAX];
-    img_write_opts defaults = img_write_opts_default();
-    if (!o)
-        o = &defaults;
-    img_format fmt = img_format_from_path(path);
-    int rc = check_write(path, fmt, img, o, why, sizeof why);
-    if (rc == STATUS_OK)
-        rc = write_atomically(path, fmt, img, o, why, sizeof why);
-    if (rc != STATUS_OK)
-        img_error(err, errlen, rc, "cannot write '%s': %s", path ? path : "(null)", why);
-    return rc;
-}
-
 /* ---- Reading ---- */
 
-static int decode(FILE *fp, img_format fmt, img_buf *out, char *why, size_t len)
+static int decode(FILE *fp, img_format fmt, const img_read_opts *o, img_buf *out, char *why, size_t len)
 {
     switch (fmt) {
 #if REFRAY_HAVE_PNG
-    case IMG_FORMAT_PNG: return img_png_read(fp, out, why, len);
+    case IMG_FORMAT_PNG: return img_png_read(fp, o, out, why, len);
 #endif
 #if REFRAY_HAVE_EXR
-    case IMG_FORMAT_EXR: return img_exr_read(fp, out, why, len);
+    case IMG_FORMAT_EXR: return img_exr_read(fp, o, out, why, len);
 #endif
-    case IMG_FORMAT_PFM: return img_pfm_read(fp, out, why, len);
-    case IMG_FORMAT_PPM: return img_ppm_read(fp, out, why, len);
+    case IMG_FORMAT_PFM: return img_pfm_read(fp, o, out, why, len);
+    case IMG_FORMAT_PPM: return img_ppm_read(fp, o, out, why, len);
     default: return img_error(why, len, STATUS_INTERNAL, "no decoder for this format");
     }
 }
 
-int img_read(const char *path, img_buf *out, char *err, size_t errlen)
+int img_read_stream(FILE *fp, img_format fmt, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
-    char why[REASON_MAX];
-    FILE *fp = NULL;
+    img_read_opts defaults = img_read_opts_default();
     memset(out, 0, sizeof *out);
-    img_format fmt = img_format_from_path(path);
-    int rc = check_format(path, fmt, 0, why, sizeof why);
-    if (rc == STATUS_OK && !(fp = fopen(path, "rb")))
-        rc = img_error(why, sizeof why, STATUS_NO_INPUT, "%s", strerror(errno));
+    int rc = check_format(NULL, fmt, 0, err, errlen);
     if (rc == STATUS_OK)
-        rc = decode(fp, fmt, out, why, sizeof why);
-    if (fp)
-        fclose(fp);
-    if (rc != STATUS_OK) {
+        rc = decode(fp, fmt, o ? o : &defaults, out, err, errlen);
+    if (rc != STATUS_OK)
         img_free(out);
-        img_error(err, errlen, rc, "cannot read '%s': %s", path ? path : "(null)", why);
-    }
+    return rc;
+}
+
+int img_check_format(const char *path, int writing, char *err, size_t errlen)
+{
+    return check_format(path, img_format_from_path(path), writing, err, errlen);
+}
+
+/* ---- Tiles ---- */
+
+int img_write_exr_tile(FILE *fp, const tile_info *t, const img_buf *img, const img_write_opts *o, char *err,
+                       size_t errlen)
+{
+    img_write_opts defaults = img_write_opts_default();
+    img_write_stats st = {0, 0};
+    int rc;
+    if (!o)
+        o = &defaults;
+    if ((rc = check_write(NULL, IMG_FORMAT_EXR, img, o, err, errlen)) != STATUS_OK)
+        return rc;
+#if REFRAY_HAVE_EXR
+    rc = img_exr_write_tile(fp, t, img, o, &st, err, errlen);
+    if (rc == STATUS_OK && fflush(fp) != 0)
+        rc = img_error(err, errlen, STATUS_IO, "write error: %s", strerror(errno));
+#else
+    (void)fp;
+    (void)t;
+    rc = img_error(err, errlen, STATUS_INTERNAL, "no OpenEXR");
+#endif
+    if (o->stats)
+        *o->stats = st;
+    return rc;
+}
+
+int img_read_exr_tile(FILE *fp, const img_read_opts *o, tile_info *t, img_buf *img, char *err, size_t errlen)
+{
+    int rc = check_format(NULL, IMG_FORMAT_EXR, 0, err, errlen);
+    if (img)
+        memset(img, 0, sizeof *img);
+#if REFRAY_HAVE_EXR
+    if (rc == STATUS_OK)
+        rc = img_exr_read_tile(fp, o, t, img, err, errlen);
+#else
+    (void)fp;
+    (void)o;
+    (void)t;
+#endif
+    if (rc != STATUS_OK && img)
+        img_free(img);
     return rc;
 }

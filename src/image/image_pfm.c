@@ -79,18 +79,48 @@ static long parse_long(const char *s, long lo, long hi)
     return v;
 }
 
-/* Width and height tokens, each >= 1, their product <= IMG_MAX_PIXELS. */
-static int read_size(FILE *fp, int *w, int *h, char *err, size_t errlen)
+/* Width and height tokens, checked against o (img_check_header). */
+static int read_size(FILE *fp, const img_read_opts *o, int *w, int *h, char *err, size_t errlen)
 {
     char a[24], b[24];
     long wl = read_token(fp, a, sizeof a) ? -1 : parse_long(a, 1, INT_MAX);
     long hl = wl < 0 || read_token(fp, b, sizeof b) ? -1 : parse_long(b, 1, INT_MAX);
     if (wl < 0 || hl < 0)
         return img_error(err, errlen, STATUS_DATA, "bad width or height in the header");
-    if (wl > IMG_MAX_PIXELS / hl)
-        return img_error(err, errlen, STATUS_DATA, "image too large (%ldx%ld)", wl, hl);
+    int rc = img_check_header(wl, hl, o, err, errlen);
     *w = (int)wl;
     *h = (int)hl;
+    return rc;
+}
+
+/* After the header: the size alone (o->header_only), or the pixels' room. */
+static int make_target(const img_read_opts *o, int w, int h, img_buf *out, char *err, size_t errlen)
+{
+    if (o->header_only) {
+        out->width = w;
+        out->height = h;
+        return STATUS_OK;
+    }
+    int rc = img_create(out, w, h);
+    return rc == STATUS_OK ? rc : img_error(err, errlen, rc, "out of memory");
+}
+
+/* The raster's bytes, rows x bytes_per_row, fit in what the file holds
+ * after the header: a header of 16384 x 16384 on a 1 KB file must not
+ * allocate gigabytes before the first row comes up short.  A stream that
+ * cannot seek (a pipe) is read as it comes. */
+static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, char *err, size_t errlen)
+{
+    long here = ftell(fp);
+    if (here < 0 || fseek(fp, 0, SEEK_END) != 0) {
+        clearerr(fp);
+        return STATUS_OK;
+    }
+    long end = ftell(fp);
+    if (fseek(fp, here, SEEK_SET) != 0)
+        return img_error(err, errlen, STATUS_IO, "cannot seek back in the file: %s", strerror(errno));
+    if (end >= here && (size_t)(end - here) / bytes_per_row < (size_t)rows)
+        return img_error(err, errlen, STATUS_DATA, "file is truncated (the pixel data ends early)");
     return STATUS_OK;
 }
 
@@ -128,7 +158,7 @@ static void pack_float_row(unsigned char *out, const img_buf *img, int y, img_wr
 int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
-    (void)o; /* PFM stores linear values: no display options apply */
+    /* PFM stores linear values: of o, only cancel applies. */
     size_t rowlen = 12 * (size_t)img->width;
     unsigned char *row = malloc(rowlen);
     if (!row)
@@ -137,6 +167,10 @@ int img_pfm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_wri
     if (fprintf(fp, "PF\n%d %d\n-1.0\n", img->width, img->height) < 0)
         rc = write_failed(err, errlen);
     for (int y = img->height - 1; rc == STATUS_OK && y >= 0; y--) {
+        if (img_row_cancelled(o, img)) {
+            rc = img_error(err, errlen, STATUS_CANCELLED, "interrupted");
+            break;
+        }
         pack_float_row(row, img, y, st);
         if (fwrite(row, 1, rowlen, fp) != rowlen)
             rc = write_failed(err, errlen);
@@ -174,19 +208,23 @@ static int read_pfm_row(FILE *fp, img_buf *out, int y, int nch, int little, unsi
     return STATUS_OK;
 }
 
-int img_pfm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
+int img_pfm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
     char magic[4];
     int w = 0, h = 0, little = 1;
     if (read_token(fp, magic, sizeof magic) || (strcmp(magic, "PF") && strcmp(magic, "Pf")))
         return img_error(err, errlen, STATUS_DATA, "not a PFM file (it does not start with PF or Pf)");
     int nch = magic[1] == 'F' ? 3 : 1;
-    int rc = read_size(fp, &w, &h, err, errlen);
+    int rc = read_size(fp, o, &w, &h, err, errlen);
     if (rc == STATUS_OK)
         rc = read_pfm_scale(fp, &little, err, errlen);
-    if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
-        return img_error(err, errlen, rc, "out of memory");
-    unsigned char *buf = rc == STATUS_OK ? malloc(4 * (size_t)nch * (size_t)w) : NULL;
+    if (rc == STATUS_OK)
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, 4 * (size_t)nch * (size_t)w, err, errlen);
+    if (rc == STATUS_OK)
+        rc = make_target(o, w, h, out, err, errlen);
+    if (rc != STATUS_OK || o->header_only)
+        return rc;
+    unsigned char *buf = malloc(4 * (size_t)nch * (size_t)w);
     if (rc == STATUS_OK && !buf)
         rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     for (int y = h - 1; rc == STATUS_OK && y >= 0; y--)
@@ -208,6 +246,10 @@ int img_ppm_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_wri
     if (fprintf(fp, "P6\n%d %d\n255\n", img->width, img->height) < 0)
         rc = write_failed(err, errlen);
     for (int y = 0; rc == STATUS_OK && y < img->height; y++) {
+        if (img_row_cancelled(o, img)) {
+            rc = img_error(err, errlen, STATUS_CANCELLED, "interrupted");
+            break;
+        }
         const double *p = img_pixel(img, 0, y);
         for (size_t i = 0; i < rowlen; i++)
             row[i] = (unsigned char)tonemap_quantize(img_display_value(img_sanitize(p[i], st), o), 255);
@@ -235,19 +277,23 @@ static int read_ppm_row(FILE *fp, img_buf *out, int y, long maxval, unsigned cha
     return STATUS_OK;
 }
 
-int img_ppm_read(FILE *fp, img_buf *out, char *err, size_t errlen)
+int img_ppm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
     char magic[4], m[16];
     int w = 0, h = 0;
     if (read_token(fp, magic, sizeof magic) || strcmp(magic, "P6"))
         return img_error(err, errlen, STATUS_DATA, "not a binary PPM file (it does not start with P6)");
-    int rc = read_size(fp, &w, &h, err, errlen);
+    int rc = read_size(fp, o, &w, &h, err, errlen);
     long maxval = rc != STATUS_OK || read_token(fp, m, sizeof m) ? -1 : parse_long(m, 1, 65535);
     if (rc == STATUS_OK && maxval < 0)
         rc = img_error(err, errlen, STATUS_DATA, "bad maxval in the PPM header (1 to 65535)");
-    if (rc == STATUS_OK && (rc = img_create(out, w, h)) != STATUS_OK)
-        return img_error(err, errlen, rc, "out of memory");
-    unsigned char *buf = rc == STATUS_OK ? malloc(6 * (size_t)w) : NULL;
+    if (rc == STATUS_OK)
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, (maxval < 256 ? 3 : 6) * (size_t)w, err, errlen);
+    if (rc == STATUS_OK)
+        rc = make_target(o, w, h, out, err, errlen);
+    if (rc != STATUS_OK || o->header_only)
+        return rc;
+    unsigned char *buf = malloc(6 * (size_t)w);
     if (rc == STATUS_OK && !buf)
         rc = img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     for (int y = 0; rc == STATUS_OK && y < h; y++)

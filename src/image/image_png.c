@@ -24,7 +24,12 @@
 typedef struct png_failure {
     char msg[200];
     int saved_errno; /* errno when libpng gave up: why its fwrite failed */
+    int status;      /* a status other than libpng's failure (cancelled, size refused), or 0 */
 } png_failure;
+
+/* PNG allows 2^31 - 1 pixels each way; libpng's own default stops at a
+ * million, which would fail a legal image only once it is rendered. */
+#define PNG_SIDE_MAX 0x7fffffffu
 
 static void on_png_error(png_structp png, png_const_charp msg)
 {
@@ -43,14 +48,20 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 /* ---- Writing ---- */
 
 /* The display codes of the whole image, PNG byte order (16-bit samples
- * big-endian); rowbytes receives the length of one row. */
+ * big-endian); rowbytes receives the length of one row.  NULL when out of
+ * memory or cancelled (*cancelled set). */
 static unsigned char *pack_codes(const img_buf *img, const img_write_opts *o, img_write_stats *st,
-                                 size_t *rowbytes)
+                                 size_t *rowbytes, int *cancelled)
 {
-    size_t nb = o->png_bits == 16 ? 2 : 1, n = 3 * (size_t)img->width * (size_t)img->height;
+    size_t nb = o->png_bits == 16 ? 2 : 1, row = 3 * (size_t)img->width, n = row * (size_t)img->height;
     unsigned maxcode = o->png_bits == 16 ? 65535u : 255u;
     unsigned char *px = malloc(n * nb);
+    *cancelled = 0;
     for (size_t i = 0; px && i < n; i++) {
+        if (i % row == 0 && (*cancelled = img_row_cancelled(o, img)) != 0) {
+            free(px);
+            return NULL;
+        }
         unsigned code = tonemap_quantize(img_display_value(img_sanitize(img->rgb[i], st), o), maxcode);
         if (nb == 2)
             px[2 * i] = (unsigned char)(code >> 8);
@@ -75,6 +86,7 @@ static int encode_png(FILE *fp, const img_buf *img, const img_write_opts *o,
         return -1;
     }
     png_init_io(png, fp);
+    png_set_user_limits(png, PNG_SIDE_MAX, PNG_SIDE_MAX);
     png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, o->png_bits,
                  PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
@@ -83,8 +95,14 @@ static int encode_png(FILE *fp, const img_buf *img, const img_write_opts *o,
     else
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
-    for (int y = 0; y < img->height; y++)
+    for (int y = 0; y < img->height; y++) {
+        if (img_row_cancelled(o, img)) {
+            f->status = STATUS_CANCELLED;
+            png_destroy_write_struct(&png, &info);
+            return -1;
+        }
         png_write_row(png, px + (size_t)y * rowbytes);
+    }
     png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
     return 0;
@@ -93,19 +111,25 @@ static int encode_png(FILE *fp, const img_buf *img, const img_write_opts *o,
 int img_png_write(FILE *fp, const img_buf *img, const img_write_opts *o, img_write_stats *st,
                   char *err, size_t errlen)
 {
-    png_failure f = {"", 0};
+    png_failure f = {"", 0, 0};
     size_t rowbytes;
-    unsigned char *px = pack_codes(img, o, st, &rowbytes);
+    int cancelled;
+    unsigned char *px = pack_codes(img, o, st, &rowbytes, &cancelled);
     if (!px)
-        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
+        return cancelled ? img_error(err, errlen, STATUS_CANCELLED, "interrupted")
+                         : img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     int failed = encode_png(fp, img, o, px, rowbytes, &f);
     free(px);
     if (!failed)
         return STATUS_OK;
+    if (f.status == STATUS_CANCELLED)
+        return img_error(err, errlen, STATUS_CANCELLED, "interrupted");
     /* libpng's stdio writer says only "Write Error"; errno said why. */
     if (ferror(fp))
         return img_error(err, errlen, STATUS_IO, "write error: %s", strerror(f.saved_errno));
-    return img_error(err, errlen, STATUS_IO, "PNG encoder: %s", f.msg);
+    /* libpng's only failure that is not about the stream: an allocation. */
+    int oom = strstr(f.msg, "emory") != NULL;
+    return img_error(err, errlen, oom ? STATUS_NO_MEMORY : STATUS_IO, "PNG encoder: %s", f.msg);
 }
 
 /* ---- Reading ---- */
@@ -121,6 +145,7 @@ typedef struct png_decoded {
     int bits;            /* 8 or 16 after the transforms */
     png_transfer transfer;
     double file_gamma;   /* for PNG_TF_POWER: code = linear^file_gamma */
+    const img_read_opts *opts;
 } png_decoded;
 
 static void choose_transfer(png_const_structrp png, png_const_inforp info, png_decoded *d)
@@ -180,11 +205,16 @@ static int decode_png(FILE *fp, png_decoded *d, png_failure *f)
         return -1;
     }
     png_init_io(png, fp);
+    png_set_user_limits(png, PNG_SIDE_MAX, PNG_SIDE_MAX);
     png_read_info(png, info);
     d->width = png_get_image_width(png, info);
     d->height = png_get_image_height(png, info);
-    if ((double)d->width * d->height > (double)IMG_MAX_PIXELS)
-        png_error(png, "image too large");
+    /* The size is judged before a byte of pixels is decoded or allocated. */
+    f->status = img_check_header((long)d->width, (long)d->height, d->opts, f->msg, sizeof f->msg);
+    if (f->status != STATUS_OK || d->opts->header_only) {
+        png_destroy_read_struct(&png, &info, NULL);
+        return f->status != STATUS_OK ? -1 : 0;
+    }
     choose_transfer(png, info, d);
     set_rgb_transforms(png);
     png_read_update_info(png, info);
@@ -216,15 +246,22 @@ static void unpack_linear(const png_decoded *d, img_buf *out)
     }
 }
 
-int img_png_read(FILE *fp, img_buf *out, char *err, size_t errlen)
+int img_png_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
-    png_failure f = {"", 0};
+    png_failure f = {"", 0, 0};
     png_decoded d;
     memset(&d, 0, sizeof d);
+    d.opts = o;
     int rc = STATUS_OK;
     if (decode_png(fp, &d, &f) != 0)
-        rc = ferror(fp) ? img_error(err, errlen, STATUS_IO, "read error: %s", strerror(f.saved_errno))
-                        : img_error(err, errlen, STATUS_DATA, "PNG decoder: %s", f.msg);
+        rc = f.status ? img_error(err, errlen, f.status, "%s", f.msg)
+             : ferror(fp) ? img_error(err, errlen, STATUS_IO, "read error: %s", strerror(f.saved_errno))
+                          : img_error(err, errlen, STATUS_DATA, "PNG decoder: %s", f.msg);
+    if (rc == STATUS_OK && o->header_only) {
+        out->width = (int)d.width;
+        out->height = (int)d.height;
+        return STATUS_OK;
+    }
     if (rc == STATUS_OK && (rc = img_create(out, (int)d.width, (int)d.height)) != STATUS_OK)
         rc = img_error(err, errlen, rc, "out of memory");
     if (rc == STATUS_OK)

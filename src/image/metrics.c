@@ -4,14 +4,31 @@
 #include <math.h>
 #include "image/metrics.h"
 
-static double peak_of(const img_buf *b, const unsigned char *excluded)
+int metrics_pixel_finite(const img_buf *a, const img_buf *b, size_t p)
+{
+    for (int c = 0; c < 3; c++)
+        if (!isfinite(a->rgb[3 * p + c]) || !isfinite(b->rgb[3 * p + c]))
+            return 0;
+    return 1;
+}
+
+/* The largest |B| over the finite pixels compared. */
+static double peak_of(const img_buf *a, const img_buf *b, const unsigned char *excluded)
 {
     double peak = 0;
     size_t n = (size_t)b->width * (size_t)b->height;
     for (size_t p = 0; p < n; p++)
-        for (int c = 0; c < 3 && !(excluded && excluded[p]); c++)
+        for (int c = 0; c < 3 && !(excluded && excluded[p]) && metrics_pixel_finite(a, b, p); c++)
             peak = fmax(peak, fabs(b->rgb[3 * p + c]));
     return peak;
+}
+
+static void note_nonfinite(image_metrics *m, size_t p, int width)
+{
+    if (m->nonfinite++ == 0) {
+        m->nonfinite_x = (int)(p % (size_t)width);
+        m->nonfinite_y = (int)(p / (size_t)width);
+    }
 }
 
 /* A channel is over when err > rel * max(|ref|, floor_frac * peak) + abs:
@@ -25,14 +42,21 @@ static void compare(const img_buf *a, const img_buf *b, const unsigned char *exc
 {
     size_t n = (size_t)b->width * (size_t)b->height;
     double sum2 = 0;
-    m->peak = peak_of(b, excluded);
+    m->peak = peak_of(a, b, excluded);
     double floor_value = 1e-12 * m->peak, over_floor = rule.floor_frac * m->peak;
     m->max_abs = m->max_rel = 0;
-    m->over = m->compared = m->excluded = 0;
+    m->over = m->compared = m->excluded = m->nonfinite = 0;
     m->worst_x = m->worst_y = 0;
+    m->nonfinite_x = m->nonfinite_y = -1;
     for (size_t p = 0; p < n; p++) {
         if (excluded && excluded[p]) {
             m->excluded++;
+            continue;
+        }
+        m->compared++;
+        if (!metrics_pixel_finite(a, b, p)) {
+            note_nonfinite(m, p, b->width);
+            m->over++;
             continue;
         }
         int over = 0;
@@ -49,9 +73,9 @@ static void compare(const img_buf *a, const img_buf *b, const unsigned char *exc
             sum2 += err * err;
         }
         m->over += over;
-        m->compared++;
     }
-    m->rms = m->compared ? sqrt(sum2 / (3.0 * (double)m->compared)) : 0;
+    long finite = m->compared - m->nonfinite;
+    m->rms = finite ? sqrt(sum2 / (3.0 * (double)finite)) : 0;
     m->psnr = m->rms > 0 ? 20 * log10((m->peak > 0 ? m->peak : 1) / m->rms) : HUGE_VAL;
 }
 

@@ -11,6 +11,12 @@
  * floor = 1e-12 * peak keeps near-black channels from dividing by zero.
  * metrics_compare_abs counts `over` by the conformance kit's rule instead
  * (spec/conformance.md): |A - B| > rel * |B| + abs_tol.
+ *
+ * A pixel where either image holds a NaN or an infinity in some channel
+ * is counted in `nonfinite` (and in `over`, whatever the tolerance), its
+ * first position kept; it takes no part in max abs, RMS, max rel, PSNR and
+ * peak, which describe the finite pixels ([REL-NONFINITE-1]): an error
+ * that cannot be measured is never reported as no error.
  */
 #ifndef REFRAY_METRICS_H
 #define REFRAY_METRICS_H
@@ -27,7 +33,12 @@ typedef struct image_metrics {
     long compared;         /* pixels compared */
     long excluded;         /* pixels skipped by the mask */
     int worst_x, worst_y;  /* pixel of max_abs */
+    long nonfinite;        /* pixels with a NaN or infinity in A or B (also in over) */
+    int nonfinite_x, nonfinite_y; /* the first of them, row by row; -1 when none */
 } image_metrics;
+
+/* 1 when every channel of pixel p of a and of b is finite. */
+int metrics_pixel_finite(const img_buf *a, const img_buf *b, size_t p);
 
 /* a and b must have the same size.  excluded: width*height bytes, non-zero
  * to skip a pixel, or NULL.  tol: the relative tolerance for `over`. */

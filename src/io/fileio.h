@@ -7,12 +7,29 @@
 #define REFRAY_FILEIO_H
 
 #include <stddef.h>
+#include <stdio.h>
+#include <sys/stat.h>
 #include "base/mem.h"
 
 /*
- * Reads path into a NUL-terminated buffer from m (free it with *len + 1
- * bytes).  Returns STATUS_OK; otherwise STATUS_NO_INPUT (missing,
- * unreadable, a directory, not a regular file), STATUS_DATA (larger than
+ * Opens path for reading, refusing what is not a regular file without
+ * blocking on it: opened with O_NONBLOCK (a FIFO without a writer does not
+ * wait), then fstat of the open descriptor decides (nothing can be
+ * swapped in after a check).  Returns STATUS_OK with *fd open (blocking
+ * again) and *st its status; or STATUS_NO_INPUT (missing, unreadable, a
+ * directory, not a regular file) with a one-line reason in why.  Every
+ * input file of the program is opened here ([REL-FILE-1]).
+ */
+int file_open_read(const char *path, int *fd, struct stat *st, char *why, size_t why_size);
+
+/* The same as a stdio stream ("rb"); NULL with *status and why on failure. */
+FILE *file_fopen_read(const char *path, int *status, char *why, size_t why_size);
+
+/*
+ * Reads path (file_open_read) to its end into a NUL-terminated buffer
+ * from m (free it with *len + 1 bytes); the size the file system claims
+ * is not trusted (a /proc file claims 0).  Returns STATUS_OK; otherwise
+ * STATUS_NO_INPUT (as file_open_read), STATUS_DATA (larger than
  * max_bytes; max_bytes < 0: no limit), STATUS_IO (a read failed) or
  * STATUS_NO_MEMORY, with a one-line reason in why.
  */

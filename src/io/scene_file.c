@@ -7,9 +7,57 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/text.h"
 #include "io/diag_print.h"
 #include "io/fileio.h"
 #include "io/scene_file.h"
+
+static const char *delivered_name(const void *reader, int i)
+{
+    return ((const scene_file_reader *)reader)->delivered[i];
+}
+
+void scene_file_reader_init(scene_file_reader *f, long max_bytes, const mem *m)
+{
+    memset(f, 0, sizeof *f);
+    f->max_bytes = max_bytes;
+    f->mem = mem_pick(m);
+    name_index_init(&f->index, delivered_name, f, &f->mem);
+}
+
+void scene_file_reader_free(scene_file_reader *f)
+{
+    name_index_free(&f->index);
+    for (int i = 0; i < f->delivered_count; i++)
+        mem_free_string(&f->mem, f->delivered[i]);
+    mem_free(&f->mem, f->delivered, (size_t)f->delivered_cap * sizeof *f->delivered);
+    f->delivered = NULL;
+    f->delivered_count = f->delivered_cap = 0;
+}
+
+/* Records identity as delivered; 0 when out of memory. */
+static int remember(scene_file_reader *f, const char *identity)
+{
+    if (f->delivered_count == f->delivered_cap) {
+        int cap = f->delivered_cap ? 2 * f->delivered_cap : 8;
+        char **grown = mem_resize_array(&f->mem, f->delivered, (size_t)f->delivered_cap, (size_t)cap,
+                                        sizeof *grown);
+        if (!grown)
+            return 0;
+        f->delivered = grown;
+        f->delivered_cap = cap;
+    }
+    char *copy = mem_strdup(&f->mem, identity);
+    if (!copy)
+        return 0;
+    f->delivered[f->delivered_count] = copy;
+    if (!name_index_add(&f->index, f->delivered_count)) {
+        mem_free_string(&f->mem, copy);
+        return 0;
+    }
+    f->delivered_count++;
+    return 1;
+}
 
 static void release(void *user, scene_source *src)
 {
@@ -31,17 +79,27 @@ static char *identity_of(const mem *m, const char *path)
 static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
 {
     scene_file_reader *f = user;
+    int accept_known = out->known;
+    out->known = 0;
     char *dir = file_dirname(&f->mem, from);
     char *path = dir ? file_join(&f->mem, dir, name) : NULL, *text = NULL;
     mem_free_string(&f->mem, dir);
     if (!path)
         return STATUS_NO_MEMORY;
+    out->path = path;
+    if (!(out->identity = identity_of(&f->mem, path))) {
+        release(f, out);
+        return STATUS_NO_MEMORY;
+    }
+    if (accept_known && name_index_find(&f->index, out->identity) >= 0) {
+        out->known = 1;
+        return STATUS_OK;
+    }
     size_t len = 0;
     int status = file_read_all(path, f->max_bytes, &f->mem, &text, &len, why, why_size);
-    out->path = path;
     out->text = text;
     out->len = len;
-    if (status == STATUS_OK && !(out->identity = identity_of(&f->mem, path)))
+    if (status == STATUS_OK && accept_known && !remember(f, out->identity))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK)
         release(f, out);
@@ -54,13 +112,16 @@ scene_resolver scene_file_resolver(scene_file_reader *files)
     return r;
 }
 
-/* A message without location through the load's sink. */
+/* A message without location through the load's sink, escaped as every
+ * record is ([REL-ESCAPE-1]). */
 static void report(const scene_load_opts *o, const char *message)
 {
     diag_record r;
+    char shown[1024];
+    text_escape(message, strlen(message), shown, sizeof shown);
     memset(&r, 0, sizeof r);
     r.level = DIAG_ERROR;
-    r.message = message;
+    r.message = shown;
     if (o->sink)
         o->sink(o->sink_user, &r);
 }
@@ -88,7 +149,7 @@ scene_model *scene_file_load_source(const scene_source *root, const scene_load_o
 static scene_model *load_root(const char *path, const char *text, size_t len, const scene_load_opts *o,
                               const mem *m, int *status)
 {
-    scene_source root = {path, identity_of(m, path), text, len};
+    scene_source root = {path, identity_of(m, path), text, len, 0};
     scene_model *s = NULL;
     if (root.identity)
         s = scene_file_load_source(&root, o, status);
@@ -105,18 +166,28 @@ scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, in
         opts = *o;
     else
         scene_load_opts_init(&opts);
-    scene_file_reader files = {opts.limits.max_file_bytes, mem_pick(&opts.mem)};
+    scene_file_reader files;
+    mem m = mem_pick(&opts.mem);
+    scene_file_reader_init(&files, opts.limits.max_file_bytes, &m);
     if (!opts.resolver.fetch)
         opts.resolver = scene_file_resolver(&files);
     char why[512], *text = NULL;
     size_t len = 0;
-    *status = file_read_all(path, opts.limits.max_file_bytes, &files.mem, &text, &len, why, sizeof why);
-    if (*status != STATUS_OK) {
+    scene_model *s = NULL;
+    *status = file_read_all(path, opts.limits.max_file_bytes, &m, &text, &len, why, sizeof why);
+    if (*status != STATUS_OK)
         report(&opts, why);
-        return NULL;
+    else {
+        /* The root is delivered too: an include of it is known (a cycle). */
+        char *identity = identity_of(&m, path);
+        if (!identity || !remember(&files, identity))
+            *status = STATUS_NO_MEMORY;
+        mem_free_string(&m, identity);
+        if (*status == STATUS_OK)
+            s = load_root(path, text, len, &opts, &m, status);
+        mem_free(&m, text, len + 1);
     }
-    scene_model *s = load_root(path, text, len, &opts, &files.mem, status);
-    mem_free(&files.mem, text, len + 1);
+    scene_file_reader_free(&files);
     return s;
 }
 
@@ -143,7 +214,10 @@ scene_model *scene_file_load_text(const char *path, const char *text, size_t len
 {
     scene_load_opts o;
     short_opts(&o, limits, diag_out, warnings);
-    scene_file_reader files = {o.limits.max_file_bytes, mem_pick(&o.mem)};
+    scene_file_reader files;
+    scene_file_reader_init(&files, o.limits.max_file_bytes, &o.mem);
     o.resolver = scene_file_resolver(&files);
-    return load_root(path, text, len, &o, &files.mem, status);
+    scene_model *s = load_root(path, text, len, &o, &files.mem, status);
+    scene_file_reader_free(&files);
+    return s;
 }

@@ -9,20 +9,30 @@
 #define REFRAY_SCENE_FILE_H
 
 #include <stdio.h>
+#include "base/names.h"
 #include "scene/scene.h"
 
-/* The file resolver's state: the size limit and the allocator of what it
- * reads (the load's). */
+/* The file resolver's state: the size limit, the allocator of what it
+ * reads (the load's), and the identities of the files it has delivered,
+ * so that a file is read once per load ([REL-INPUT-1]). */
 typedef struct scene_file_reader {
     long max_bytes;     /* per file (--max-file-size); < 0: no limit */
     mem mem;
+    char **delivered;   /* identities given with their text so far */
+    int delivered_count, delivered_cap;
+    name_index index;   /* over delivered */
 } scene_file_reader;
+
+/* A reader for one load; must not move until scene_file_reader_free. */
+void scene_file_reader_init(scene_file_reader *f, long max_bytes, const mem *m);
+void scene_file_reader_free(scene_file_reader *f);
 
 /*
  * A resolver over the file system: `name` is read relative to the
  * directory of the including file's path (as written, not resolved), only
  * if it is a regular file of at most max_bytes; its identity is its real
- * path (realpath), so an include cycle is found under any spelling.
+ * path (realpath), so an include cycle is found under any spelling.  A
+ * file delivered before is answered as `known`, not read again.
  */
 scene_resolver scene_file_resolver(scene_file_reader *files);
 

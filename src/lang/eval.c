@@ -19,17 +19,24 @@ enum { SUGGEST_MAX = 64, EVAL_MAX_DEPTH = 1000 };
 
 static int eval_at(const env *e, diag *d, const ast *node, value *out, int depth);
 
+static const char *binding_name(const void *ctx, int i)
+{
+    return ((const env *)ctx)->items[i].name;
+}
+
 void env_init(env *e, const mem *m)
 {
     e->items = NULL;
     e->count = 0;
     e->cap = 0;
     e->mem = mem_pick(m);
+    name_index_init(&e->index, binding_name, e, &e->mem);
 }
 
 void env_free(env *e)
 {
     mem m = e->mem;
+    name_index_free(&e->index);
     mem_free(&m, e->items, (size_t)e->cap * sizeof *e->items);
     env_init(e, &m);
 }
@@ -44,25 +51,28 @@ int env_bind(env *e, const char *name, value v, src_span where)
         e->items = items;
         e->cap = cap;
     }
-    binding *b = &e->items[e->count++];
+    binding *b = &e->items[e->count];
     b->name = name;
     b->value = v;
     b->where = where;
+    if (!name_index_add(&e->index, e->count))
+        return 0;
+    e->count++;
     return 1;
 }
 
 const binding *env_find(const env *e, const char *name)
 {
-    for (int i = e->count - 1; i >= 0; i--)
-        if (strcmp(e->items[i].name, name) == 0)
-            return &e->items[i];
-    return NULL;
+    /* A lookup only counts its comparisons into the index: the scope
+     * itself does not change, hence the const interface. */
+    int i = name_index_find((name_index *)&e->index, name);
+    return i >= 0 ? &e->items[i] : NULL;
 }
 
 void env_restore(env *e, int mark)
 {
-    if (mark < e->count)
-        e->count = mark;
+    while (e->count > mark)
+        name_index_remove(&e->index, --e->count);
 }
 
 const char *env_suggest(const env *e, const char *name)

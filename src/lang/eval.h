@@ -12,6 +12,7 @@
 #include "lang/ast.h"
 #include "base/diag.h"
 #include "base/mem.h"
+#include "base/names.h"
 #include "base/vec.h"
 
 typedef enum value_kind {
@@ -34,15 +35,19 @@ typedef struct binding {
     src_span where;    /* the name in its `let` or `for` */
 } binding;
 
-/* Constants in scope, innermost last.  A scope is a mark into the array. */
+/* Constants in scope, innermost last.  A scope is a mark into the array.
+ * Names are found through a hash index (base/names.h): O(1) expected
+ * comparisons per lookup, whatever the number of constants. */
 typedef struct env {
     binding *items;
     int count;
     int cap;
     mem mem;
+    name_index index;  /* over items; its comparisons count every lookup's work */
 } env;
 
-/* An empty scope whose bindings live in memory from m (NULL: the C library). */
+/* An empty scope whose bindings live in memory from m (NULL: the C
+ * library).  e must not move while it is in use (its index points to it). */
 void env_init(env *e, const mem *m);
 void env_free(env *e);
 /* Adds a binding; 0 when out of memory. */

@@ -25,6 +25,7 @@
 
 enum {
     NUMBER_MAX = 255,  /* longest number token accepted */
+    VERTEX_VALUES_MAX = 7, /* v x y z w, or v x y z r g b */
     WARNED_MAX = 8     /* distinct unknown statements warned about */
 };
 
@@ -240,7 +241,7 @@ static int added(parser *p, int status, src_span where, const char *what)
     else if (what)
         diag_report(p->d, DIAG_ERROR, where, "too many %s in OBJ file (limit %d)", what, INT_MAX);
     else
-        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles",
+        diag_report(p->d, DIAG_ERROR, where, "mesh exceeds the limit of %ld triangles (--max-mesh-triangles)",
                     p->mesh->max_triangles);
     p->stop = 1;
     return 0;
@@ -268,7 +269,8 @@ static int read_coords(parser *p, src_span kw, vec3 *v)
 }
 
 /* v x y z [w]: w, and the r g b colours some writers append, are dropped
- * once known to be numbers. */
+ * once known to be numbers; more than VERTEX_VALUES_MAX numbers is no
+ * vertex any writer makes (a 30-million-value line must not pass). */
 static void parse_vertex(parser *p, src_span kw)
 {
     vec3 v;
@@ -276,9 +278,15 @@ static void parse_vertex(parser *p, src_span kw)
     double ignored;
     if (!read_coords(p, kw, &v))
         return;
-    while (next_token(p, &tok))
+    for (int n = 3; next_token(p, &tok); n++) {
+        if (n == VERTEX_VALUES_MAX) {
+            diag_report(p->d, DIAG_ERROR, tok, "'v' takes at most %d numbers (x y z, then w or r g b)",
+                        VERTEX_VALUES_MAX);
+            return;
+        }
         if (!read_number(p, tok, &ignored))
             return;
+    }
     added(p, polymesh_add_position(p->mesh, v), kw, "vertices");
 }
 
@@ -294,6 +302,10 @@ static void parse_normal(parser *p, src_span kw)
         diag_report(p->d, DIAG_ERROR, tok, "unexpected '%s' after the 3 coordinates of 'vn'", q.s);
         return;
     }
+    /* Checked here, so the error points at the normal, not at a face using
+     * it; the normal is still kept, so the faces' indices stay right. */
+    if (n.x == 0 && n.y == 0 && n.z == 0)
+        diag_report(p->d, DIAG_ERROR, kw, "vertex normal of zero length");
     added(p, polymesh_add_normal(p->mesh, n), kw, "normals");
 }
 
@@ -453,7 +465,7 @@ static void parse_file(parser *p)
 {
     if (p->len >= 3 && memcmp(p->text, "\xEF\xBB\xBF", 3) == 0)
         p->pos = 3;
-    while (p->pos < p->len && !p->stop && !diag_too_many(p->d)) {
+    while (p->pos < p->len && !p->stop && !diag_stop(p->d)) {
         src_span kw;
         if (next_token(p, &kw))
             parse_statement(p, kw);
@@ -480,7 +492,7 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
         diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
     mem_free(&out->mem, p.corner_v, (size_t)p.corner_v_cap * sizeof *p.corner_v);
     mem_free(&out->mem, p.corner_vn, (size_t)p.corner_vn_cap * sizeof *p.corner_vn);
-    if (d->errors == errors_before)
+    if (d->errors == errors_before && !cancel_stopped(d->cancel))
         return 1;
     polymesh_free(out);
     return p.out_of_memory ? -1 : 0;

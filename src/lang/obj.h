@@ -5,8 +5,10 @@
  *
  * Accepted statements (anything else: see obj_parse):
  *   v x y z [w]        a position; w (and the r g b colours some writers
- *                      append) are checked to be numbers and dropped
- *   vn x y z           a normal, kept as read (not normalised)
+ *                      append) are checked to be numbers and dropped; at
+ *                      most 7 numbers
+ *   vn x y z           a normal, kept as read (not normalised); a zero one
+ *                      is an error at the vn statement
  *   f c1 c2 c3 ...     a polygon of n >= 3 corners, each `i`, `i/t`,
  *                      `i//n` or `i/t/n`; indices are 1-based, or negative
  *                      for "counted back from the last one defined so far"

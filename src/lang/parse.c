@@ -119,7 +119,7 @@ ast *parse_file(arena *a, diag *d, const source_set *sources, int file)
         scn_lex_destroy(scanner);
     for (int i = 0; i < 3; i++)
         mem_free(&a->mem, ctx.stacks[i], ctx.stack_bytes[i]);
-    if ((status == 2 && !ctx.too_deep) || ctx.out_of_memory)
+    if ((status == 2 && !ctx.too_deep) || ctx.out_of_memory || ctx.cancelled)
         return NULL;
     if (!ctx.root || ctx.too_deep)
         ctx.root = ast_new(a, AST_BLOCK, src_span_none());

@@ -41,6 +41,7 @@ typedef struct parse_ctx {
     size_t offset;            /* scanner position, bytes */
     ast *root;                /* statement list being built */
     int out_of_memory;
+    int cancelled;            /* the load's cancel poll said stop (diag.cancel) */
     int too_deep;             /* the parse stopped at the nesting limit (reported) */
     const char *scan_message; /* what was wrong with the last BAD_* token */
     int bracket_depth;        /* open '{' '[' '(' not yet closed */
@@ -59,7 +60,8 @@ typedef struct parse_ctx {
  * Parses sources->files[file].  Syntax errors are reported through d (with
  * recovery, so one run reports several); the returned statement list holds
  * whatever parsed (nothing, when the nesting limit stopped the parse).
- * Returns NULL only when memory ran out.  Everything the scanner and the
+ * Returns NULL only when memory ran out, or when d->cancel said stop
+ * (cancel_stopped(d->cancel) then holds).  Everything the scanner and the
  * parser allocate comes from the arena's allocator (a->mem).
  */
 ast *parse_file(arena *a, diag *d, const source_set *sources, int file);

@@ -21,7 +21,9 @@
 #ifndef REFRAY_BVH_H
 #define REFRAY_BVH_H
 
+#include "base/cancel.h"
 #include "base/mem.h"
+#include "base/status.h"
 #include "render/intersect.h"
 
 /* The tree is at most this deep, so traversal uses a fixed stack: past
@@ -72,6 +74,9 @@ typedef struct bvh_stats {
  * or there are more than INT_MAX/2 parts (then *b is empty and bvh_free is
  * still safe).  Nothing of prims is kept but the indices. */
 int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m);
+/* The same, counting its work into cancel (NULL: never stopped): returns
+ * STATUS_OK, STATUS_NO_MEMORY or STATUS_CANCELLED (then *b is empty). */
+int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, cancel_poll *cancel);
 void bvh_free(bvh *b);
 
 /* The nearest hit in (r->tmin, r->tmax), ties resolved as above: shrinks

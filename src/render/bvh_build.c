@@ -70,6 +70,7 @@ typedef struct build_ctx {
     size_t item_bytes;    /* allocated at items */
     bin bins[3][BINS];    /* the binning of the node being split */
     int failed;           /* out of memory */
+    cancel_poll *cancel;  /* asked once per node, a step per 64 items; NULL: never */
 } build_ctx;
 
 /* Comparisons, not fmin/fmax (a library call each): no NaN gets here. */
@@ -402,7 +403,10 @@ static void build_node(build_ctx *ctx, int node, int begin, int end, int depth, 
     b->nodes[node].hi = r->hi;
     if (depth > b->depth)
         b->depth = depth;
-    int mid = choose_split(ctx, begin, end, depth, r, kids);
+    /* A stopped build still ends as a valid tree: the rest become leaves
+     * (bvh_build_polled then throws it away). */
+    int stop = cancel_steps(ctx->cancel, 1 + (end - begin) / 64);
+    int mid = stop ? -1 : choose_split(ctx, begin, end, depth, r, kids);
     int first = mid < 0 ? -1 : new_pair(ctx);
     if (first < 0) {
         b->nodes[node].first = begin;
@@ -509,6 +513,11 @@ static long count_parts(const scene_prim *prims, int count)
 
 int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
 {
+    return bvh_build_polled(b, prims, count, m, NULL) == STATUS_OK;
+}
+
+int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, cancel_poll *cancel)
+{
     memset(b, 0, sizeof *b);
     b->mem = mem_pick(m);
     build_ctx *ctx = mem_calloc(&b->mem, 1, sizeof *ctx);
@@ -516,10 +525,11 @@ int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
     long parts = count >= 0 ? count_parts(prims, count) : -1;
     if (!ctx || parts < 0 || (size_t)parts > SIZE_MAX / 2 / sizeof(build_item)) {
         mem_free(&b->mem, ctx, sizeof *ctx);
-        return 0;
+        return STATUS_NO_MEMORY;
     }
     ctx->b = b;
     ctx->prims = prims;
+    ctx->cancel = cancel;
     ctx->item_bytes = (size_t)parts * sizeof *ctx->items;
     ctx->items = mem_alloc(&b->mem, ctx->item_bytes);
     b->unbounded = mem_alloc(&b->mem, (size_t)parts * sizeof *b->unbounded);
@@ -531,7 +541,7 @@ int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m)
     mem_free(&b->mem, ctx->items, ctx->item_bytes);
     free_sort_buffers(ctx);
     mem_free(&b->mem, ctx, sizeof *ctx);
-    if (!ok)
+    if (!ok || cancel_stopped(cancel))
         bvh_free(b);
-    return ok;
+    return cancel_stopped(cancel) ? STATUS_CANCELLED : ok ? STATUS_OK : STATUS_NO_MEMORY;
 }

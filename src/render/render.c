@@ -10,6 +10,7 @@
 #include <time.h>
 #include "render/camera.h"
 #include "render/render.h"
+#include "base/hash.h"
 #include "base/sampler.h"
 #include "render/shade.h"
 
@@ -23,7 +24,7 @@ double render_clock(void)
 uint64_t render_sample_key(int width, int k, int i, int j, int a, int b)
 {
     uint64_t pixel_key = sampler_key((uint64_t)j * (uint64_t)width + (uint64_t)i, RENDER_PIXEL_SALT);
-    return sampler_key(pixel_key, (uint64_t)(b * k + a));
+    return sampler_key(pixel_key, (uint64_t)b * (uint64_t)k + (uint64_t)a);
 }
 
 double render_sample_offset(int k, int a)
@@ -43,6 +44,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
                 trace_media_at(t, r.origin, &media, st);
             st->camera_rays++;
             st->tree_rays = 0;
+            st->medium_overflow += t->eye_overflow;
             rgb c = trace_ray(t, &r, 1, &media, render_sample_key(width, k, i, j, a, b), st);
             sum = shade_saturate(vec_add(sum, c));
         }
@@ -75,8 +77,11 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     stats->height = o && o->height > 0 ? o->height : scene->image.height;
     stats->samples = o && o->samples > 0 ? o->samples : scene->image.samples;
     double start = render_clock();
-    if (!tracer_init(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0))
-        return STATUS_NO_MEMORY;
+    r->cancel = cancel_poll_make(o ? o->cancel : NULL, o ? o->cancel_ctx : NULL);
+    int status = tracer_build(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0, &r->cancel);
+    if (status != STATUS_OK)
+        return status;
+    stats->trace.cancel = &r->cancel;
     r->tracer.max_tree_rays = o ? o->max_tree_rays : 0;
     if (o && o->no_shortcuts)
         tracer_no_shortcuts(&r->tracer);
@@ -93,9 +98,66 @@ void renderer_free(renderer *r)
     tracer_free(&r->tracer);
 }
 
+/* A coordinate as the bits of its double: a long double `real` has
+ * padding bytes, which hold nothing a process can count on. */
+static uint64_t hash_real(uint64_t h, real v)
+{
+    double d = (double)v;
+    uint64_t bits;
+    memcpy(&bits, &d, sizeof bits);
+    return hash_u64(h, bits);
+}
+
+static uint64_t hash_points(uint64_t h, const vec3 *p, int n)
+{
+    h = hash_u64(h, (uint64_t)n);
+    for (int i = 0; i < n; i++)
+        h = hash_real(hash_real(hash_real(h, p[i].x), p[i].y), p[i].z);
+    return h;
+}
+
+/* A mesh file's text is let go once its mesh is built (source.h), so a
+ * mesh counts by what was built from it: every array of its store. */
+static uint64_t hash_meshes(uint64_t h, const scene_model *s)
+{
+    for (int i = 0; i < s->mesh_count; i++) {
+        const scene_trimesh *g = &s->meshes[i].geom;
+        size_t t = (size_t)g->tri_count;
+        h = hash_points(h, g->positions, g->position_count);
+        h = hash_points(h, g->normals, g->normals ? g->normal_count : 0);
+        h = hash_u64(h, (uint64_t)t);
+        h = hash_bytes(h, g->tri, t * sizeof *g->tri);
+        h = hash_bytes(h, g->tri_normal, g->tri_normal ? t * sizeof *g->tri_normal : 0);
+        h = hash_bytes(h, g->open, g->open ? t : 0);
+        h = hash_u64(h, (uint64_t)g->closed);
+    }
+    return h;
+}
+
+uint64_t renderer_fingerprint(const renderer *r)
+{
+    const source_set *src = &r->tracer.scene->sources;
+    const render_stats *st = &r->stats;
+    uint64_t h = hash_bytes(HASH_FNV_START, "refray pixels 1", 15);
+    for (int i = 0; i < src->count; i++) {
+        h = hash_u64(h, (uint64_t)src->files[i]->len);
+        h = hash_bytes(h, src->files[i]->text, src->files[i]->len);
+    }
+    h = hash_meshes(h, r->tracer.scene);
+    h = hash_u64(h, (uint64_t)r->opts.facet_shadows);
+    h = hash_u64(h, (uint64_t)st->width);
+    h = hash_u64(h, (uint64_t)st->height);
+    h = hash_u64(h, (uint64_t)st->samples);
+    h = hash_u64(h, (uint64_t)st->max_depth);
+    h = hash_u64(h, (uint64_t)r->opts.light_samples);
+    return hash_u64(h, (uint64_t)sizeof(real));
+}
+
 /* v as float; beyond FLT_MAX (a radiance can reach DBL_MAX) the largest
- * float, so a float target never holds an infinity. */
-static float to_float(real v)
+ * float, so a float target never holds an infinity.  From the double a
+ * double target would hold, so that a float region has the floats a whole
+ * image written as 32-bit float has (with a long double `real` too). */
+static float to_float(double v)
 {
     return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v;
 }
@@ -104,9 +166,9 @@ static void store(const render_target *target, int x, int y, rgb c)
 {
     size_t at = (size_t)(y - target->y0) * target->stride + 3 * (size_t)(x - target->x0);
     if (target->f32) {
-        target->f32[at] = to_float(c.x);
-        target->f32[at + 1] = to_float(c.y);
-        target->f32[at + 2] = to_float(c.z);
+        target->f32[at] = to_float((double)c.x);
+        target->f32[at + 1] = to_float((double)c.y);
+        target->f32[at + 2] = to_float((double)c.z);
     } else {
         target->f64[at] = (double)c.x;
         target->f64[at + 1] = (double)c.y;
@@ -121,15 +183,18 @@ int renderer_region(renderer *r, const render_target *target)
     int rows = target->y1 - target->y0, status = STATUS_OK;
     double start = render_clock();
     stats->trace.tree_overflow = 0;
+    stats->trace.cancel = &r->cancel;
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
-        for (int i = target->x0; i < target->x1; i++) {
+        for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
+            long media_lost = stats->trace.medium_overflow;
             rgb c = render_pixel(&r->tracer, stats->width, stats->height, stats->samples, i, j, &stats->trace);
             store(target, i, j, c);
-            if (stats->trace.tree_overflow) {
+            if (cancel_stopped(&r->cancel))
+                status = STATUS_CANCELLED;
+            else if (stats->trace.tree_overflow || stats->trace.medium_overflow > media_lost) {
                 stats->overflow_x = i;
                 stats->overflow_y = j;
                 status = STATUS_DATA;
-                break;
             }
         }
         if (status == STATUS_OK && opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))

@@ -26,6 +26,11 @@ typedef struct render_opts {
      * non-zero return stops the render (SIGINT). */
     int (*progress)(void *ctx, int rows_done, int rows_total);
     void *progress_ctx;
+    /* Asked every CANCEL_STEPS rays or light samples, and while the BVH is
+     * built (base/cancel.h); non-zero stops the render within a fraction
+     * of a second whatever a pixel costs ([REL-CANCEL-1]).  NULL: never. */
+    int (*cancel)(void *ctx);
+    void *cancel_ctx;
 } render_opts;
 
 typedef struct render_stats {
@@ -35,7 +40,8 @@ typedef struct render_stats {
     int shadows, specular, reflection, refraction; /* passes that ran (1) or were left out (0) */
     int no_shortcuts;     /* the render ran with every shortcut off */
     int width, height, samples, max_depth;
-    int overflow_x, overflow_y;  /* the pixel whose ray tree passed the budget */
+    int overflow_x, overflow_y;  /* the pixel whose ray tree passed the budget, or
+                                    whose glass nested too deep (trace.medium_overflow) */
     double seconds;      /* wall time of the traversal and tracing */
     double build_seconds; /* of the acceleration structure */
 } render_stats;
@@ -57,21 +63,35 @@ typedef struct renderer {
     tracer tracer;
     render_opts opts;
     render_stats stats;
+    cancel_poll cancel;     /* opts.cancel, counted; stats.trace.cancel points here */
 } renderer;
 
 /* Builds the tracer for scene with opts (NULL: the scene's settings) and
- * fixes the image size.  Returns STATUS_OK or STATUS_NO_MEMORY (then
- * nothing is left to free). */
+ * fixes the image size.  Returns STATUS_OK, STATUS_NO_MEMORY or
+ * STATUS_CANCELLED (then nothing is left to free).  r must not move
+ * afterwards (its statistics point into it). */
 int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts);
 
 /* Renders the region of target (inside r->stats.width x height, checked by
  * the caller) into it, adding to r->stats.  Returns STATUS_OK,
- * STATUS_CANCELLED when progress asked to stop, or STATUS_DATA when a ray
- * tree passed max_tree_rays (r->stats.overflow_x, _y say where); the
- * region's pixels are then partly written. */
+ * STATUS_CANCELLED when progress or cancel asked to stop, or STATUS_DATA
+ * when a ray tree passed max_tree_rays or a ray was inside more nested
+ * glass than the tracer follows (r->stats.overflow_x, _y say where;
+ * r->stats.trace.medium_overflow > 0 tells the second); the region's
+ * pixels are then partly written. */
 int renderer_region(renderer *r, const render_target *target);
 
 void renderer_free(renderer *r);
+
+/*
+ * A 64-bit fingerprint of what decides r's pixels: the text of every file
+ * its scene's load read (in load order, without their names, so a scene
+ * copied to another machine keeps it), the image size, the k x k grid,
+ * max_depth, the light-sample override, and the width of `real`.  Two
+ * renderers with equal fingerprints render the same pixels (FNV-1a,
+ * base/hash.h: an accident, not an attack, is what it guards against).
+ */
+uint64_t renderer_fingerprint(const renderer *r);
 
 /*
  * Renders scene into out (created here; free it with img_free).  Returns

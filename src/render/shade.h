@@ -18,6 +18,67 @@
 #include "base/vec.h"
 #include "scene/scene.h"
 
+/*
+ * The formulas in the exact (real-number) arithmetic of the contracts in
+ * shade.c (spec/proofs.md); what a lemma states WP proves once.
+ */
+/*@
+  // [SHADE-FALLOFF-1, 2]; s = d + d0 (the code caps it at DBL_MAX, [SHADE-FALLOFF-5]).
+  // (Each axiomatic block holds definitions and lemmas, no axiom: WP gives
+  // its lemmas as hypotheses only to goals that use its symbols.)
+  axiomatic Falloff {
+  logic mreal falloff_of(mreal e, mreal s, integer kind) =
+      kind == FALLOFF_LINEAR ? e / s : e / s / s;
+
+  lemma half_ratio: \forall mreal e, s; s > 0 ==> (0.5 * e) / (0.5 * s) == e / s;
+
+  lemma falloff_positive:
+      \forall mreal e, s, integer kind; e > 0 && s > 0 ==> falloff_of(e, s, kind) > 0;
+  lemma falloff_nonincreasing:
+      \forall mreal e, s1, s2, integer kind; e >= 0 && 0 < s1 <= s2 ==>
+          falloff_of(e, s2, kind) <= falloff_of(e, s1, kind);
+  }
+
+  // n2^2 cos^2 th2 (Snell, [SHADE-SNELL-2]): negative exactly on total internal reflection
+  axiomatic Snell {
+  logic mreal snell_k(mreal n1, mreal n2, mreal c) = (n1 * c) * (n1 * c) - (n1 * n1 - n2 * n2);
+
+  lemma snell_k_rescaled:
+      \forall mreal n1, n2, s1, s2, c; s1 * n2 == s2 * n1 ==>
+          snell_k(s1, s2, c) * (n1 * n1) == snell_k(n1, n2, c) * (s1 * s1);
+  lemma same_sign:
+      \forall mreal a, b, p, q; p > 0 && q > 0 && a * p == b * q ==> (a < 0 <==> b < 0);
+  lemma snell_k_scaled:
+      \forall mreal n1, n2, s1, s2, c; n1 > 0 && s1 > 0 && s1 * n2 == s2 * n1 ==>
+          (snell_k(s1, s2, c) < 0 <==> snell_k(n1, n2, c) < 0);
+  }
+
+  // cos th1 = -N.D, clamped to [0, 1]
+  logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));
+
+  // [SHADE-MIRROR-1]
+  predicate is_mirror(vec3 t, vec3 d, vec3 n) =
+      t.x == d.x - 2 * vdot(n, d) * n.x && t.y == d.y - 2 * vdot(n, d) * n.y && t.z == d.z - 2 * vdot(n, d) * n.z;
+
+  // [SHADE-LOCAL-1] with [SHADE-SAT-1]: a sum of colours is exact unless it
+  // passes DBL_MAX, and never larger than exact (in exact arithmetic a sum
+  // of reals may pass DBL_MAX where one of doubles cannot: the cap itself,
+  // and that the result is finite, are shown by Eva for the doubles)
+  predicate capped(mreal c, mreal sum) = c <= sum && (sum <= DBL_MAX ==> c == sum);
+  predicate is_local(vec3 c, vec3 body, vec3 highlight, mreal t) =
+      capped(c.x, highlight.x + (1 - t) * body.x) && capped(c.y, highlight.y + (1 - t) * body.y) &&
+      capped(c.z, highlight.z + (1 - t) * body.z);
+  // [SHADE-BLEND-1]
+  predicate blended(vec3 c, vec3 front, vec3 back, mreal t) =
+      capped(c.x, (1 - t) * front.x + t * back.x) && capped(c.y, (1 - t) * front.y + t * back.y) &&
+      capped(c.z, (1 - t) * front.z + t * back.z);
+  // [SHADE-HIT-1]
+  predicate is_combined(vec3 c, vec3 body, vec3 highlight, vec3 ks, mreal t, vec3 m, vec3 tr) =
+      capped(c.x, highlight.x + (1 - t) * body.x + ks.x * m.x + t * tr.x) &&
+      capped(c.y, highlight.y + (1 - t) * body.y + ks.y * m.y + t * tr.y) &&
+      capped(c.z, highlight.z + (1 - t) * body.z + ks.z * m.z + t * tr.z);
+*/
+
 /* One light's share of a hit's colour, kept in the two parts the
  * transparency blend treats differently (local = (1 - t) * body + highlight). */
 typedef struct shade_terms {

@@ -45,6 +45,11 @@ int trace_solid_id(const scene_model *s, int prim)
 
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
+    return tracer_build(t, s, max_depth, light_samples, NULL) == STATUS_OK;
+}
+
+int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel)
+{
     memset(t, 0, sizeof *t);
     t->scene = s;
     t->max_depth = max_depth > 0 ? max_depth : s->image.max_depth;
@@ -54,9 +59,11 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     t->refraction = s->features.refraction && t->max_depth > 1;
     t->terminator_offset = 1;
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
-    if (!t->lights || !bvh_build(&t->accel, s->prims, s->prim_count, &s->mem)) {
+    int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+                           : STATUS_NO_MEMORY;
+    if (status != STATUS_OK) {
         tracer_free(t);
-        return 0;
+        return status;
     }
     for (int i = 0; i < s->light_count; i++)
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
@@ -64,8 +71,9 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
         trace_stats none;
         memset(&none, 0, sizeof none);
         trace_media_at(t, s->camera.eye, &t->eye_media, &none);
+        t->eye_overflow = none.medium_overflow;
     }
-    return 1;
+    return STATUS_OK;
 }
 
 void tracer_no_shortcuts(tracer *t)
@@ -248,7 +256,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     rgb power = shade_sample_power(light->power, setup->samples);
-    for (int j = 0; j < setup->samples; j++)
+    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
         add_source(t, s, light, trace_light_point(light, setup, index, key, j), power, sum, st);
 }
 
@@ -489,6 +497,7 @@ enum { PROBE_MAX = 64 };
 typedef struct probe {
     const scene_model *scene;
     int count;
+    int overflow;          /* a transparent solid past PROBE_MAX was crossed */
     int solid[PROBE_MAX], prim[PROBE_MAX], crossings[PROBE_MAX];
     real first[PROBE_MAX];
 } probe;
@@ -502,8 +511,10 @@ static int probe_crossing(void *ctx, const hit *h)
     while (k < pr->count && pr->solid[k] != solid)
         k++;
     if (k == pr->count) {
-        if (k == PROBE_MAX)
+        if (k == PROBE_MAX) {
+            pr->overflow = 1;
             return 0;
+        }
         pr->count++;
         pr->solid[k] = solid;
         pr->prim[k] = h->prim;
@@ -533,6 +544,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
         return;
     pr.scene = t->scene;
     pr.count = 0;
+    pr.overflow = 0;
     /* A direction along no axis and no simple diagonal, so the probe does
      * not run along the faces and edges of boxes and axis-aligned meshes. */
     ray r;
@@ -541,6 +553,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
     r.tmin = 0;
     r.tmax = HUGE_VAL;
     bvh_visit_stats(&t->accel, t->scene->prims, &r, probe_crossing, &pr, &st->bvh);
+    st->medium_overflow += pr.overflow;
     /* Outermost first: the solid the probe leaves last goes on first. */
     for (;;) {
         int best = -1;
@@ -573,7 +586,7 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     ray nearest = *r;
     hit h;
     rgb c = t->scene->image.background;
-    if (over_budget(t, st))
+    if (over_budget(t, st) || cancel_step(st->cancel))
         return c;
     int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
     path_note(st, met ? (uint64_t)h.prim + 5 : 0);

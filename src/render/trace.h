@@ -30,7 +30,10 @@ typedef struct trace_stats {
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
-    long medium_overflow;     /* glass nested deeper than the medium stack holds */
+    long medium_overflow;     /* glass nested deeper than the medium stack holds:
+                                 the render is void ([REL-MEDIUM-1]) */
+    cancel_poll *cancel;      /* asked once per ray and light sample; NULL: never.
+                                 Once stopped, rays return the background at once */
     /* A hash of the ray tree's shape, in order: the primitive (and the face
      * of a box, the cap or side of a cylinder or cone) each ray met, which
      * side of each light the surface faced and what its shadow ray let
@@ -53,7 +56,10 @@ typedef struct light_setup {
     vec3 t1, t2;
 } light_setup;
 
-/* The transparent solids a ray is inside, innermost last (nested glass). */
+/* The transparent solids a ray is inside, innermost last (nested glass).
+ * A ray inside more than MEDIUM_MAX of them at once cannot be traced right:
+ * it counts in trace_stats.medium_overflow, and the render refuses the
+ * image (spec/reliability.md, [REL-MEDIUM-1]). */
 enum { MEDIUM_MAX = 16 };
 typedef struct medium_stack {
     int count;
@@ -76,6 +82,7 @@ typedef struct tracer {
                                  (spec/shading.md [SHADE-TERMINATOR-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
+    long eye_overflow;        /* eye_media lost solids (each camera ray counts them) */
 } tracer;
 
 
@@ -84,6 +91,9 @@ typedef struct tracer {
  * light_samples > 0 gives every distributed light that many samples instead
  * of its own (for convergence sweeps).  Returns 0 when out of memory. */
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples);
+/* The same, its BVH build counted into cancel (NULL: never stopped):
+ * STATUS_OK, STATUS_NO_MEMORY or STATUS_CANCELLED (then nothing to free). */
+int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel);
 void tracer_free(tracer *t);
 
 /*

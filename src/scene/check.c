@@ -10,6 +10,7 @@
  * scene.
  */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include "scene/loader.h"
 
@@ -55,6 +56,11 @@ int check_whole(loader *L, const check_at *at, int field, double x, long lo, lon
                 long *out)
 {
     const char *name = keyword_name((keyword_id)field);
+    /* Every such count is stored in an int (the image's size, samples and
+     * depth, a light's samples): a host's rf_limits above INT_MAX must not
+     * let 3e9 wrap to a negative width. */
+    if (hi > INT_MAX)
+        hi = INT_MAX;
     if (x != floor(x)) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, field), "%s must be a whole number, got %.17g", name, x);
         return 0;

@@ -39,6 +39,16 @@ json_t *jread_parse(loader *L, int file)
 {
     const source_file *f = L->scene->sources.files[file];
     json_error_t e;
+    /* jansson skips a NUL byte between tokens as if it were a space, and the
+     * text walker (base/jsonloc.c) does not, so a diagnostic after it would
+     * lose its place; no JSON text holds one (RFC 8259), and a .scene that
+     * does is refused the same way. */
+    const char *nul = memchr(f->text, '\0', f->len);
+    if (nul) {
+        src_span s = {file, (size_t)(nul - f->text), (size_t)(nul - f->text) + 1};
+        diag_report(&L->diag, DIAG_ERROR, s, "malformed JSON: NUL byte in the text");
+        return NULL;
+    }
     /* Every number as a double (strtod of its text): JSON has one number
      * type, and an integer too large for jansson's 64-bit integers is still
      * a number. */

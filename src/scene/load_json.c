@@ -12,6 +12,7 @@
  * camera's basis and samples, light sampling, to_local, a rectangle light's
  * normal) are not read: they are derived again.
  */
+#include <ctype.h>
 #include <math.h>
 #include <string.h>
 #include "lang/obj.h"
@@ -19,9 +20,11 @@
 
 static const char *const falloff_names[] = {"linear", "inverse_square", "none"};
 
+/* Out of memory, too many errors, or cancelled (a step of the load's
+ * cancel poll per element: [REL-CANCEL-1]). */
 static int stop(const loader *L)
 {
-    return L->out_of_memory || diag_too_many(&L->diag);
+    return loader_stop(L);
 }
 
 /* The member key of obj, read with the path on it. */
@@ -428,6 +431,16 @@ static int read_oracle(jreader *r, json_t *root)
         return 0;
     if (!name)
         return 1;
+    /* The scene language's `oracle NAME` takes a name; so does this, which
+     * also keeps control bytes out of what `refray check` prints. */
+    int word = (isalpha((unsigned char)name[0]) || name[0] == '_');
+    for (const char *c = name; word && *c; c++)
+        word = isalnum((unsigned char)*c) || *c == '_';
+    if (!word) {
+        diag_report(&r->L->diag, DIAG_ERROR, jread_span(r, "oracle"),
+                    "an oracle family is a name (a letter or _, then letters, digits and _), got '%s'", name);
+        return 0;
+    }
     r->L->scene->oracle = loader_strdup(r->L, name);
     r->L->scene->oracle_where = jread_span(r, "oracle");
     return r->L->scene->oracle != NULL;

@@ -124,8 +124,9 @@ static int inline_mesh(jreader *r, json_t *p, polymesh *pm)
         return 0;
     }
     size_t at = jread_span(r, "triangles").begin;
+    json_t *normals = json_is_array(tri_normals) ? tri_normals : NULL;
     for (size_t i = 0; i < n; i++)
-        if (!read_triangle(r, tris, json_is_array(tri_normals) ? tri_normals : NULL, i, at, pm))
+        if (loader_stop(r->L) || !read_triangle(r, tris, normals, i, at, pm))
             return 0;
     return 1;
 }

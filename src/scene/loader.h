@@ -16,6 +16,13 @@
 #include "lang/schema.h"
 #include "lang/polymesh.h"
 
+/* What the load knows of one source file, by its index in the sources. */
+typedef struct loader_file {
+    char *identity;             /* the resolver's identity of it (freed with the loader) */
+    ast *tree;                  /* its statements once parsed (kept: parsed once per load) */
+    int parse_failed;           /* parsing it reported errors: it is not lowered again */
+} loader_file;
+
 typedef struct loader {
     scene_model *scene;            /* being filled; owns the sources */
     const scene_limits *limits;
@@ -24,18 +31,35 @@ typedef struct loader {
     diag diag;
     arena arena;                /* syntax trees of every file read */
     env env;                    /* constants in scope */
+    name_index material_names;  /* over scene->materials, by name (base/names.h) */
     char **include_stack;       /* identities of the files being lowered, outermost first */
     int include_depth, include_cap;
+    int nesting;                /* loops and includes open, over every file (LOADER_MAX_NESTING) */
+    loader_file *files;         /* per source file */
+    int files_cap;
+    name_index file_names;      /* over files[].identity */
+    long input_bytes;           /* of every file read, each once (--max-input-size) */
+    int prims_refused;          /* --max-memory was passed: no more primitives, no more errors */
+    int too_deep;               /* the nesting limit was passed: no "in the pass" notes (one per level) */
     long loop_iterations;       /* over the whole load */
     long mesh_triangles;        /* over the whole load: they count as primitives for the limit */
     int *material_uses;         /* per scene material: how many primitives use it */
     int uses_cap;               /* entries allocated in material_uses */
     src_span image_where;       /* first `image` block (file -1: none yet) */
+    src_span max_depth_where;   /* its max_depth (or the block; file -1: none) */
     src_span camera_where;
     int default_material;       /* index of the implicit material, -1 until needed */
     const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
+    cancel_poll cancel;         /* the options' cancel, counted; diag.cancel points here */
 } loader;
+
+/* Loops and includes nest at most this deep in all, counted across files
+ * ([LANG-LIMIT-NEST-2]): lowering recurses once per level, so the bound
+ * keeps the C stack of a load small and known whatever the input (a few
+ * hundred bytes a level), where a bound per file let a chain of files
+ * each deep within its own limit overflow it. */
+enum { LOADER_MAX_NESTING = 256 };
 
 /* The values of one block's properties, by keyword; transforms in order. */
 enum { PROPS_MAX_XFORMS = 64 };
@@ -180,15 +204,24 @@ check_at check_at_fixed(const src_span *span);
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 
-/* loader.c: the load's state; an out-of-memory error is reported once. */
+/* loader.c: the load's state; an out-of-memory error is reported once.
+ * L must not move after loader_init (its diag points into it). */
 void loader_init(loader *L, scene_model *s, const scene_load_opts *o);
+/* Out of memory, too many errors, or cancelled: every pass stops.  Counts
+ * one step of the cancel poll. */
+int loader_stop(const loader *L);
 void loader_free(loader *L);
 /* Asks the resolver for `name`, written in the statement at `at`, and
- * adds it to the sources as included from `at`.  Returns the file's index,
- * with *identity a copy of its identity (free with mem_free_string) when
- * identity is not NULL; or -1 with the resolver's reason in why, not
- * reported, unless memory ran out (then reported, the flag set). */
+ * adds it to the sources as included from `at` (a file already read in
+ * this load is not copied again: its index is returned, its included_from
+ * moved to `at`).  Returns the file's index, with *identity a copy of its
+ * identity (free with mem_free_string) when identity is not NULL; or -1
+ * with the reason in why (the resolver's, or --max-input-size passed),
+ * not reported, unless memory ran out (then reported, the flag set). */
 int loader_fetch(loader *L, const char *name, src_span at, char **identity, char *why, size_t why_size);
+/* Records file (just added to the sources) under identity for the rest of
+ * the load, its len bytes counted; 0 after reporting when out of memory. */
+int loader_add_file(loader *L, int file, const char *identity, size_t len);
 /* The same for a mesh file, without copying its text (a mesh file can be
  * tens of megabytes): the sources point into the resolver's text, held in
  * *held, until loader_release_mesh; no line index is built (a message
@@ -204,6 +237,9 @@ void loader_trim(loader *L);
 void loader_oom(loader *L);
 /* The defaults of spec/language.md for what a scene does not say. */
 void loader_scene_defaults(scene_model *s);
+/* The bytes the load holds beside its primitives (texts, syntax trees),
+ * for scene_memory_estimate. */
+double loader_memory_extra(const loader *L);
 /* loader.c: growable arrays of the scene being built; NULL when full or out of memory. */
 scene_prim *loader_add_prim(loader *L, src_span where);
 scene_light *loader_add_light(loader *L);

@@ -10,11 +10,6 @@
 #include "lang/parse.h"
 #include "base/suggest.h"
 
-static int stop(const loader *L)
-{
-    return L->out_of_memory || diag_too_many(&L->diag);
-}
-
 static void note_first(loader *L, src_span first)
 {
     diag_report(&L->diag, DIAG_NOTE, first, "first defined here");
@@ -84,6 +79,20 @@ static int loop_count(loader *L, const ast *node, double from, double to, long *
     return 1;
 }
 
+/* Enters one more level of loops and includes; 0 after the error when
+ * that passes LOADER_MAX_NESTING. */
+static int nest(loader *L, src_span at)
+{
+    if (L->nesting >= LOADER_MAX_NESTING) {
+        diag_report(&L->diag, DIAG_ERROR, at, "nesting too deep: loops and includes nest more than %d deep in all",
+                    LOADER_MAX_NESTING);
+        L->too_deep = 1;
+        return 0;
+    }
+    L->nesting++;
+    return 1;
+}
+
 /* One pass of a loop body with the variable bound to x.  An error in the
  * body would repeat on every pass, so the loop stops at the first one, and
  * a note says which pass it was (unless the error limit hid the error). */
@@ -97,7 +106,7 @@ static int loop_pass(loader *L, const ast *node, double x)
     }
     int ok = lower_statements(L, node->first->next->next);
     env_restore(&L->env, mark);
-    if (!ok && L->diag.errors > errors && !diag_too_many(&L->diag))
+    if (!ok && L->diag.errors > errors && !diag_too_many(&L->diag) && !L->too_deep)
         diag_report(&L->diag, DIAG_NOTE, node->head, "in the pass where %s = %.17g", node->text, x);
     return ok;
 }
@@ -122,10 +131,15 @@ static int lower_for(loader *L, const ast *node)
     if (!loop_count(L, node, from, to, &count))
         return 0;
     L->loop_iterations += count;
+    if (count > 0 && !nest(L, node->head))
+        return 0;
     for (long i = 0; i < count; i++)
-        if (!loop_pass(L, node, from + (double)i))
-            return 0;
-    return 1;
+        if (!loop_pass(L, node, from + (double)i)) {
+            ok = 0;
+            break;
+        }
+    L->nesting -= count > 0;
+    return ok;
 }
 
 static int on_include_stack(const loader *L, const char *resolved)
@@ -152,9 +166,10 @@ static int lower_include(loader *L, const ast *node)
                     L->limits->max_include_depth);
     else if (file < 0)
         diag_report(&L->diag, DIAG_ERROR, node->head, "%s", why);
-    else {
+    else if (nest(L, node->head)) {
         ok = loader_lower_file(L, file, identity);
         identity = NULL;
+        L->nesting--;
     }
     mem_free_string(L->mem, identity);
     return ok;
@@ -216,9 +231,9 @@ static int lower_statement(loader *L, const ast *node)
 int lower_statements(loader *L, const ast *list)
 {
     int ok = 1;
-    for (const ast *node = list->first; node && !stop(L); node = node->next)
+    for (const ast *node = list->first; node && !loader_stop(L); node = node->next)
         ok &= lower_statement(L, node);
-    return ok && !stop(L);
+    return ok && !loader_stop(L);
 }
 
 int loader_lower_file(loader *L, int file, char *identity)
@@ -236,15 +251,21 @@ int loader_lower_file(loader *L, int file, char *identity)
         L->include_cap = cap;
     }
     L->include_stack[L->include_depth++] = identity;
-    int errors = L->diag.errors;
-    ast *tree = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
-    int ok = 0;
+    /* Each file is parsed once per load; a loop that includes it again
+     * lowers the same tree.  (L->files may move while the tree is
+     * lowered: it is indexed afresh.) */
+    if (!L->files[file].tree && !L->files[file].parse_failed) {
+        int errors = L->diag.errors;
+        ast *parsed = parse_file(&L->arena, &L->diag, &L->scene->sources, file);
+        if (!parsed && !cancel_stopped(&L->cancel))
+            loader_oom(L);
+        L->files[file].tree = parsed;
+        L->files[file].parse_failed = !parsed || L->diag.errors > errors;
+    }
+    ast *tree = L->files[file].parse_failed ? NULL : L->files[file].tree;
     const ast *includer = L->tree;
     L->tree = tree;
-    if (!tree)
-        loader_oom(L);
-    else if (L->diag.errors == errors)
-        ok = lower_statements(L, tree);
+    int ok = tree && lower_statements(L, tree);
     L->tree = includer;
     /* Nested includes may have moved the stack: index it afresh. */
     mem_free_string(L->mem, L->include_stack[--L->include_depth]);

@@ -48,6 +48,7 @@ int lower_image(loader *L, const ast *block)
     ok &= props_number(L, &p, KW_MAX_DEPTH, im->max_depth, &size[3]);
     ok &= props_color(L, &p, KW_BACKGROUND, im->background, &background);
     check_at at = props_at(&p);
+    L->max_depth_where = props_value_span(&p, KW_MAX_DEPTH);
     return check_image(L, &at, size, background, im) && ok;
 }
 
@@ -282,17 +283,14 @@ static int material_props(loader *L, const ast *block, scene_material *m)
     return check_material(L, &at, m) && ok;
 }
 
-static int find_material(const scene_model *s, const char *name)
+static int find_material(loader *L, const char *name)
 {
-    for (int i = 0; i < s->material_count; i++)
-        if (s->materials[i].name && strcmp(s->materials[i].name, name) == 0)
-            return i;
-    return -1;
+    return name_index_find(&L->material_names, name);
 }
 
 int lower_material_def(loader *L, const ast *block)
 {
-    int previous = find_material(L->scene, block->text);
+    int previous = find_material(L, block->text);
     if (previous >= 0) {
         int line, col;
         src_span first = L->scene->materials[previous].where;
@@ -310,6 +308,10 @@ int lower_material_def(loader *L, const ast *block)
     if (!slot || !(m.name = loader_strdup(L, block->text)))
         return 0;
     *slot = m;
+    if (!name_index_add(&L->material_names, L->scene->material_count - 1)) {
+        loader_oom(L);
+        return 0;
+    }
     return 1;
 }
 
@@ -378,7 +380,7 @@ static int report_defined_later(loader *L, const char *name, src_span at)
 
 static int named_material(loader *L, const char *name, src_span at)
 {
-    int index = find_material(L->scene, name);
+    int index = find_material(L, name);
     if (index >= 0)
         return index;
     const char *names[256];

@@ -20,7 +20,14 @@ scene_limits scene_default_limits(void)
     l.max_primitives = 20L * 1000 * 1000;
     l.max_errors = 20;
     l.max_ray_tree = 1000000;
+    l.max_input_bytes = 256L * 1024 * 1024;
+    l.max_memory_mb = 4096;
     return l;
+}
+
+double scene_memory_estimate(double prims, double pixels, double extra)
+{
+    return prims * (double)SCENE_BYTES_PER_PRIM + pixels * SCENE_BYTES_PER_PIXEL + extra + SCENE_BYTES_FIXED;
 }
 
 void scene_free(scene_model *s)

@@ -224,10 +224,30 @@ typedef struct scene_limits {
     long max_primitives;       /* total, mesh triangles included */
     long max_errors;           /* diagnostics printed before giving up */
     long max_ray_tree;         /* rays traced for one camera ray, all its descendants included */
+    long max_input_bytes;      /* of every file a load reads, each counted once */
+    long max_memory_mb;        /* the estimate of scene_memory_estimate, in MiB */
 } scene_limits;
 
 /* Defaults a laptop survives; every one can be raised by a CLI flag. */
 scene_limits scene_default_limits(void);
+
+/*
+ * The bytes a scene of prims primitives and pixels pixels is estimated to
+ * hold at its peak, loaded and rendered, beyond extra (the texts and
+ * syntax trees of its load): SCENE_BYTES_PER_PRIM a primitive (the
+ * primitive, the acceleration structure and the growth of the arrays) and
+ * SCENE_BYTES_PER_PIXEL a pixel (the image in double and its encoding),
+ * and SCENE_BYTES_FIXED for the small tables of a load.  The 336 bytes
+ * beside the primitive were fitted so the estimate stays above the peak
+ * RSS measured for a million spheres and a million-triangle mesh (728
+ * bytes a primitive on x86-64, against 687 and 716 measured).
+ * Measured against real peaks in spec/reliability.md ([REL-MEMORY-1]);
+ * a load is refused past --max-memory before it allocates that much.
+ */
+#define SCENE_BYTES_PER_PRIM (sizeof(scene_prim) + 336)
+#define SCENE_BYTES_PER_PIXEL 40
+#define SCENE_BYTES_FIXED (256.0 * 1024)
+double scene_memory_estimate(double prims, double pixels, double extra);
 
 /* A file's text as the loader receives it. */
 typedef struct scene_source {
@@ -235,6 +255,10 @@ typedef struct scene_source {
     const char *identity;  /* the same file under any name (include cycles); NULL: path */
     const char *text;
     size_t len;
+    int known;             /* on entry: 1 when the loader accepts a `known` answer;
+                              on return, 1: the file this resolver delivered before
+                              under identity, not read again (text NULL); the load
+                              reuses its copy */
 } scene_source;
 
 /*
@@ -246,8 +270,13 @@ typedef struct scene_source {
  * text and names, then calls release (when not NULL) with the same *out;
  * a mesh file's text is read where it is, without a copy (it may be tens
  * of megabytes), and released once its mesh is built.  The text need not
- * be NUL-terminated.  The resolver enforces its own limits
- * (io/scene_file.c: --max-file-size).
+ * be NUL-terminated.  An included file is read once per load
+ * ([REL-INPUT-1]): the loader keeps one copy per identity, and when the
+ * loader asks with out->known set (an include, never a mesh file) a
+ * resolver may answer a file it gave before with its identity and `known`
+ * set instead of the text.  The resolver enforces its own limits
+ * (io/scene_file.c: --max-file-size); the loader bounds the bytes of all
+ * files together (--max-input-size).
  */
 typedef struct scene_resolver {
     int (*fetch)(void *user, const char *from, const char *name, scene_source *out, char *why,
@@ -263,6 +292,11 @@ typedef struct scene_load_opts {
     void *sink_user;
     scene_resolver resolver;   /* fetch NULL: `include` and `mesh` are errors */
     mem mem;                   /* zeroed: the C library's allocator */
+    /* Asked every few hundred steps of the load (tokens, statements, loop
+     * passes, OBJ lines, triangles): non-zero stops it with
+     * STATUS_CANCELLED ([REL-CANCEL-1]).  NULL: never. */
+    int (*cancel)(void *user);
+    void *cancel_user;
 } scene_load_opts;
 
 /* The default limits, warnings on, no sink, no resolver, the C library. */
@@ -270,7 +304,8 @@ void scene_load_opts_init(scene_load_opts *o);
 
 /*
  * Parses, evaluates and validates the scene in root.  Returns the scene,
- * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY);
+ * or NULL with *status set (STATUS_DATA for a bad scene, STATUS_NO_MEMORY,
+ * STATUS_CANCELLED when o->cancel said stop);
  * on success *status is STATUS_OK.  Never returns a partially valid scene,
  * and frees everything it allocated when it fails.
  */

@@ -16,7 +16,8 @@ int scene_json_available(void)
 /* The root file as the scene language. */
 static int lower_language(loader *L, int file, const scene_source *root)
 {
-    char *identity = mem_strdup(L->mem, root->identity ? root->identity : root->path);
+    const char *root_id = root->identity ? root->identity : root->path;
+    char *identity = loader_add_file(L, file, root_id, root->len) ? mem_strdup(L->mem, root_id) : NULL;
     if (!identity) {
         loader_oom(L);
         return 0;
@@ -64,10 +65,16 @@ static scene_model *load(const scene_source *root, const scene_load_opts *o, int
     loader_scene_defaults(s);
     loader_init(&L, s, o);
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());
-    int ok = file >= 0 && lower_root(&L, file, root, json) && validate_scene(&L);
+    int ok = 0;
     if (file < 0)
         loader_oom(&L);
-    *status = ok ? STATUS_OK : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
+    else if ((double)root->len > (double)o->limits.max_input_bytes)
+        diag_report(&L.diag, DIAG_ERROR, src_span_none(), "'%s' is %zu bytes, over the limit of %ld bytes a load reads "
+                    "(--max-input-size)", root->path, root->len, o->limits.max_input_bytes);
+    else
+        ok = lower_root(&L, file, root, json) && validate_scene(&L) && !cancel_stopped(&L.cancel);
+    *status = ok ? STATUS_OK : cancel_stopped(&L.cancel) ? STATUS_CANCELLED
+              : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     if (ok)
         loader_trim(&L);
     loader_free(&L);

@@ -44,7 +44,7 @@ static void warn_buried_lights(loader *L)
         vec3 center = light->position;
         if (light->kind == LIGHT_RECTANGLE)
             center = vec_add(center, vec_scale(vec_add(light->edge_u, light->edge_v), 0.5));
-        for (int j = 0; j < s->prim_count; j++) {
+        for (int j = 0; j < s->prim_count && !cancel_step(&L->cancel); j++) {
             const scene_prim *prim = &s->prims[j];
             if (s->materials[prim->material].t == 0 && scene_prim_contains(prim, center)) {
                 diag_report(&L->diag, DIAG_WARNING, light->where,
@@ -54,6 +54,41 @@ static void warn_buried_lights(loader *L)
             }
         }
     }
+}
+
+/* The most rays one camera ray can branch into at the scene's max_depth:
+ * a hit on a material that both reflects (Ks > 0) and transmits (t > 0)
+ * spawns two rays, one that does either spawns one, so the tree holds at
+ * most sum over d < max_depth of b^d rays, b the largest branching of a
+ * material in use (the tracer's count, trace.c's over_budget).  When that
+ * passes --max-ray-tree the render may stop with an error: said at load,
+ * so `check` says it too ([REL-RAYTREE-1]).  Not an error: rays that
+ * leave the scene end their branch early. */
+static void warn_ray_tree(loader *L)
+{
+    const scene_model *s = L->scene;
+    long limit = L->limits->max_ray_tree;
+    int branching = 0, depth = s->image.max_depth;
+    for (int i = 0; i < s->material_count; i++) {
+        const scene_material *m = &s->materials[i];
+        int b = (vec_max_component(m->ks) > 0) + (m->t > 0);
+        if (material_used_by_scene(L, i) && b > branching)
+            branching = b;
+    }
+    if (limit <= 0 || depth <= 1 || branching == 0)
+        return;
+    /* 2^depth - 1 or depth rays; in double, as 2^1000 is. */
+    double rays = branching == 2 ? ldexp(1.0, depth) - 1 : (double)depth;
+    if (rays <= (double)limit)
+        return;
+    src_span at = L->max_depth_where.file >= 0 ? L->max_depth_where : L->image_where;
+    if (branching == 2)
+        diag_report(&L->diag, DIAG_WARNING, at, "with max_depth %d and a material that both reflects and transmits, "
+                    "one camera ray may branch into 2^%d - 1 rays, over --max-ray-tree %ld: the render stops at the "
+                    "first pixel that passes it", depth, depth, limit);
+    else
+        diag_report(&L->diag, DIAG_WARNING, at, "with max_depth %d one camera ray may be followed by %d rays, over "
+                    "--max-ray-tree %ld: the render stops at the first pixel that passes it", depth, depth, limit);
 }
 
 static void record_features(scene_model *s, const loader *L)
@@ -77,9 +112,26 @@ static void record_features(scene_model *s, const loader *L)
     f->shadows = s->light_count > 0 && (s->prim_count >= 2 || scene_prim_self_shadows(&s->prims[0]));
 }
 
+/* The whole scene against --max-memory, now that the image is known. */
+static int check_memory(loader *L)
+{
+    const scene_model *s = L->scene;
+    double need = scene_memory_estimate(s->prim_count, (double)s->image.width * s->image.height,
+                                        loader_memory_extra(L));
+    if (need <= (double)L->limits->max_memory_mb * 1048576.0)
+        return 1;
+    src_span at = L->image_where.file >= 0 ? L->image_where : src_span_none();
+    diag_report(&L->diag, DIAG_ERROR, at, "this scene would need about %.0f MiB to load and render (%d primitives, "
+                "%dx%d pixels), over --max-memory %ld MiB", need / 1048576.0, s->prim_count, s->image.width,
+                s->image.height, L->limits->max_memory_mb);
+    return 0;
+}
+
 int validate_scene(loader *L)
 {
     scene_model *s = L->scene;
+    if (!check_memory(L))
+        return 0;
     if (s->prim_count == 0) {
         src_span whole = {0, 0, 0};
         diag_report(&L->diag, DIAG_ERROR, whole, "the scene has no primitives: nothing to render");
@@ -88,6 +140,7 @@ int validate_scene(loader *L)
     warn_unused_materials(L);
     warn_energy(L);
     warn_buried_lights(L);
+    warn_ray_tree(L);
     record_features(s, L);
     return 1;
 }

@@ -17,7 +17,7 @@
 #include "base/status.h"
 #include "base/text.h"
 #include "image/adjust.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/conform.h"
 #include "verify/verify.h"
 
@@ -162,7 +162,9 @@ static void set(conform_result *r, conform_outcome o, const char *fmt, ...)
 static int png_bit_depth(const char *path)
 {
     unsigned char head[25];
-    FILE *f = fopen(path, "rb");
+    char why[512];
+    int status;
+    FILE *f = file_fopen_read(path, &status, why, sizeof why);
     size_t n = f ? fread(head, 1, sizeof head, f) : 0;
     if (f)
         fclose(f);
@@ -177,13 +179,11 @@ static int read_exact(const char *kit_dir, const manifest_scene *s, img_buf *exa
     int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
     const char *rel = s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM];
     char *path = file_join(NULL, kit_dir, rel);
-    int status = path ? img_read(path, exact, err, sizeof err) : STATUS_NO_MEMORY;
+    img_read_opts o = img_read_opts_default();
+    o.width = s->width; /* the manifest's size, checked on the header */
+    o.height = s->height;
+    int status = path ? img_read(path, &o, exact, err, sizeof err) : STATUS_NO_MEMORY;
     free(path);
-    if (status == STATUS_OK && (exact->width != s->width || exact->height != s->height)) {
-        snprintf(err, sizeof err, "the kit's exact image is %dx%d, its manifest says %dx%d", exact->width,
-                 exact->height, s->width, s->height);
-        status = STATUS_DATA;
-    }
     const char *mrel = s->files[MANIFEST_FILE_MASK_PGM];
     *mask = NULL;
     if (status == STATUS_OK && mrel[0]) {
@@ -238,17 +238,23 @@ static int read_picture(const char *out_path, const manifest_scene *s, img_buf *
         set(r, CONFORM_UNREADABLE, "{out} is not a regular file");
         return -1;
     }
+    /* The size is judged on the header, before anything is decoded: a
+     * renderer's output is input like any other ([REL-IMAGE-1]). */
     img_buf raw;
-    int status = img_read(out_path, &raw, err, sizeof err);
-    if (status != STATUS_OK) {
-        set(r, CONFORM_UNREADABLE, "its output is not a readable image: %s", err);
+    int k = r->downsample, width, height;
+    img_read_opts o = img_read_opts_default();
+    int status = img_read_size(out_path, &o, &width, &height, err, sizeof err);
+    if (status == STATUS_OK && (width != k * s->width || height != k * s->height)) {
+        set(r, CONFORM_SIZE, "its image is %dx%d; expected %dx%d (the exact image's %dx%d times --downsample %d)",
+            width, height, k * s->width, k * s->height, s->width, s->height, k);
         return -1;
     }
-    int k = r->downsample;
-    if (raw.width != k * s->width || raw.height != k * s->height) {
-        set(r, CONFORM_SIZE, "its image is %dx%d; expected %dx%d (the exact image's %dx%d times --downsample %d)",
-            raw.width, raw.height, k * s->width, k * s->height, s->width, s->height, k);
-        img_free(&raw);
+    o.width = width;
+    o.height = height;
+    if (status == STATUS_OK)
+        status = img_read(out_path, &o, &raw, err, sizeof err);
+    if (status != STATUS_OK) {
+        set(r, CONFORM_UNREADABLE, "its output is not a readable image: %s", err);
         return -1;
     }
     status = k == 1 ? STATUS_OK : img_downsample(&raw, k, img);
@@ -337,8 +343,9 @@ static void outcome_of_process(const conform_run *run, conform_result *r)
 /* The last lines of the renderer's standard error, cleaned. */
 static void read_tail(const char *path, conform_result *r)
 {
-    char buf[4 * CONFORM_TAIL_BYTES];
-    FILE *f = fopen(path, "rb");
+    char buf[4 * CONFORM_TAIL_BYTES], why[512];
+    int status;
+    FILE *f = file_fopen_read(path, &status, why, sizeof why);
     r->stderr_tail[0] = '\0';
     if (!f)
         return;

@@ -20,7 +20,7 @@
 #include "io/filewrite.h"
 #include "io/scene_file.h"
 #include "export/export_pov.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "verify/kit.h"
 #include "verify/verify.h"
 
@@ -294,13 +294,16 @@ static int replaceable(const char *dir, char *why, size_t why_size)
         snprintf(why, why_size, "cannot use '%s': %s", dir, strerror(errno));
         return errno == ENOENT;
     }
+    /* A kit is told by its manifest's "kit" member, not by the file's name:
+     * a web extension's or an app's manifest.json is not a reason to
+     * delete the directory around it. */
     char *manifest_path = path_of(dir, "manifest", ".json");
-    int kit = manifest_path && access(manifest_path, F_OK) == 0;
+    int kit = manifest_path && manifest_is_kit(manifest_path);
     free(manifest_path);
     if (S_ISDIR(sb.st_mode) && (kit || empty_dir(dir)))
         return 1;
-    snprintf(why, why_size, "'%s' exists and is not a kit (no manifest.json): give a new or empty directory",
-             dir);
+    snprintf(why, why_size,
+             "'%s' exists and is not a kit (no manifest.json of a refray kit): give a new or empty directory", dir);
     return 0;
 }
 
@@ -324,8 +327,13 @@ static int fill_kit(const char *tmp, const char *const *scenes, int count, const
                     char *why, size_t why_size)
 {
     int status = 0;
-    for (int i = 0; status == 0 && i < count; i++)
+    for (int i = 0; status == 0 && i < count; i++) {
+        if (o->cancel && o->cancel(o->cancel_user)) {
+            snprintf(why, why_size, "interrupted");
+            return STATUS_CANCELLED;
+        }
         status = build_scene(tmp, scenes[i], o, &m->scenes[i], why, why_size);
+    }
     char *readme = status == 0 ? path_of(tmp, "README", ".md") : NULL;
     char *manifest_path = status == 0 ? path_of(tmp, "manifest", ".json") : NULL;
     if (status == 0 && (!readme || !manifest_path))

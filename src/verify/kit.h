@@ -29,6 +29,9 @@ typedef struct kit_opts {
     int warnings;          /* print the scenes' warnings */
     FILE *diag;            /* the scenes' diagnostics */
     const char *version;   /* refray's version, for the manifest and README */
+    int (*cancel)(void *user); /* asked between scenes: non-zero stops the build,
+                                  STATUS_CANCELLED, nothing left; NULL: never */
+    void *cancel_user;
 } kit_opts;
 
 /*

@@ -20,6 +20,8 @@
 
 #if REFRAY_HAVE_JSON
 #include <jansson.h>
+
+static const char kit_name[] = "refray conformance kit";
 #endif
 
 static const char *const file_keys[MANIFEST_FILE_COUNT] = {
@@ -245,7 +247,7 @@ static json_t *manifest_json(writer *w, const manifest *m)
         json_decref(scenes);
         return NULL;
     }
-    put(w, o, "kit", json_string("refray conformance kit"));
+    put(w, o, "kit", json_string(kit_name));
     put(w, o, "format_version", json_integer(MANIFEST_FORMAT_VERSION));
     put(w, o, "refray_version", text(m->refray_version));
     put(w, o, "readme", json_string("README.md"));
@@ -521,6 +523,20 @@ int manifest_read(const char *path, manifest *m, char *why, size_t why_size)
     return status;
 }
 
+int manifest_is_kit(const char *path)
+{
+    char *bytes, why[8];
+    size_t len;
+    if (file_read_all(path, 1L << 28, NULL, &bytes, &len, why, sizeof why))
+        return 0;
+    json_t *root = json_loadb(bytes, len, 0, NULL);
+    free(bytes);
+    const char *kit = json_string_value(json_object_get(root, "kit"));
+    int is_kit = kit && strcmp(kit, kit_name) == 0;
+    json_decref(root);
+    return is_kit;
+}
+
 int manifest_supported(char *why, size_t why_size)
 {
     (void)why;
@@ -555,6 +571,12 @@ int manifest_read(const char *path, manifest *m, char *why, size_t why_size)
     (void)path;
     memset(m, 0, sizeof *m);
     return no_json(why, why_size);
+}
+
+int manifest_is_kit(const char *path)
+{
+    (void)path;
+    return 0;
 }
 
 #endif

@@ -111,4 +111,9 @@ int manifest_write(const char *path, const manifest *m, char *why, size_t why_si
  */
 int manifest_read(const char *path, manifest *m, char *why, size_t why_size);
 
+/* 1 when path is a JSON object whose "kit" is a refray kit's: what `refray
+ * kit` may replace (a manifest.json of anything else is someone's data);
+ * 0 otherwise and in a build without JSON. */
+int manifest_is_kit(const char *path);
+
 #endif

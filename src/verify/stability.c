@@ -47,7 +47,9 @@ static int render_rows(const tracer *t, int k, stab_image *out, trace_stats *st)
             px[0] = c.x;
             px[1] = c.y;
             px[2] = c.z;
-            if (st->tree_overflow)
+            if (cancel_stopped(st->cancel))
+                return STATUS_CANCELLED;
+            if (st->tree_overflow || st->medium_overflow > 0)
                 return STATUS_DATA;
         }
     return STATUS_OK;
@@ -60,17 +62,20 @@ int stability_render(const scene_model *scene, const render_opts *opts, stab_ima
     int width = opts && opts->width > 0 ? opts->width : scene->image.width;
     int height = opts && opts->height > 0 ? opts->height : scene->image.height;
     int k = opts && opts->samples > 0 ? opts->samples : scene->image.samples;
+    cancel_poll cancel = cancel_poll_make(opts ? opts->cancel : NULL, opts ? opts->cancel_ctx : NULL);
     memset(&st, 0, sizeof st);
+    st.cancel = &cancel;
     if (alloc_image(out, width, height) != 0)
         return STATUS_NO_MEMORY;
-    if (!tracer_init(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0)) {
+    int status = tracer_build(&t, scene, opts ? opts->max_depth : 0, opts ? opts->light_samples : 0, &cancel);
+    if (status != STATUS_OK) {
         stability_free(out);
-        return STATUS_NO_MEMORY;
+        return status;
     }
     t.max_tree_rays = opts ? opts->max_tree_rays : 0;
     if (opts && opts->no_shortcuts)
         tracer_no_shortcuts(&t);
-    int status = render_rows(&t, k, out, &st);
+    status = render_rows(&t, k, out, &st);
     tracer_free(&t);
     out->long_double = sizeof(real) > sizeof(double);
     out->nonfinite = st.nonfinite;

@@ -38,8 +38,9 @@ const char *stability_real_name(void);
 /*
  * Renders scene as render_image does (opts as there; NULL for the scene's
  * own settings) but keeps every pixel in this build's `real`, unrounded.
- * Returns STATUS_OK, STATUS_DATA when a ray tree passed the
- * budget, or STATUS_NO_MEMORY when out of memory (out is then empty).
+ * Returns STATUS_OK, STATUS_DATA when a ray tree passed the budget or
+ * glass nested too deep, STATUS_CANCELLED (opts->cancel), or
+ * STATUS_NO_MEMORY when out of memory (out is then empty).
  */
 int stability_render(const scene_model *scene, const render_opts *opts, stab_image *out);
 void stability_free(stab_image *img);

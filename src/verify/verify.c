@@ -4,14 +4,14 @@
  * compared at the very points the tracer samples; the family's tolerance
  * is asked for the light samples the render used.
  */
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "render/render.h"
 #include "verify/verify.h"
+#include "io/atomic.h"
+#include "io/fileio.h"
 
 static void copy_text(char *dst, size_t size, const char *src)
 {
@@ -163,6 +163,8 @@ int verify_render_compare(const scene_model *s, const verify_opts *o, const veri
     ro.samples = e->view.samples;
     ro.max_depth = e->view.max_depth;
     ro.light_samples = o ? o->light_samples : 0;
+    ro.cancel = o ? o->cancel : NULL;
+    ro.cancel_ctx = o ? o->cancel_user : NULL;
     img_buf img = {0};
     render_stats st;
     memset(&st, 0, sizeof st);
@@ -170,7 +172,8 @@ int verify_render_compare(const scene_model *s, const verify_opts *o, const veri
     r->oracle_seconds = e->seconds;
     if (status != STATUS_OK) {
         verify_result_error(r, r->scene, status, status == STATUS_NO_MEMORY ? "out of memory while rendering"
-                                                                                : "the render was stopped");
+                                                 : status == STATUS_CANCELLED ? "interrupted"
+                                                                              : "the render was stopped");
         return status;
     }
     r->rays = rays_of(&st.trace);
@@ -462,6 +465,12 @@ void verify_json_metrics(FILE *fp, const image_metrics *m, double tolerance)
     json_num(fp, "tolerance", tolerance);
     json_key(fp, "worst", 0);
     fprintf(fp, "[%d, %d]", m->worst_x, m->worst_y);
+    json_long(fp, "nonfinite", m->nonfinite);
+    json_key(fp, "first_nonfinite", 0);
+    if (m->nonfinite)
+        fprintf(fp, "[%d, %d]", m->nonfinite_x, m->nonfinite_y);
+    else
+        fputs("null", fp);
 }
 
 static const char *verdict_name(verify_verdict v)
@@ -668,7 +677,9 @@ int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mas
     size_t n = (size_t)a->width * (size_t)a->height;
     for (size_t p = 0; status == STATUS_OK && p < n; p++)
         for (int c = 0; c < 3; c++)
-            out->rgb[3 * p + c] = excluded_at(mask, p) ? 0 : fabs(a->rgb[3 * p + c] - b->rgb[3 * p + c]);
+            out->rgb[3 * p + c] = excluded_at(mask, p) ? 0
+                                  : !metrics_pixel_finite(a, b, p) ? VERIFY_MAP_NONFINITE
+                                                                   : fabs(a->rgb[3 * p + c] - b->rgb[3 * p + c]);
     return status;
 }
 
@@ -682,11 +693,13 @@ int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mas
     size_t n = (size_t)a->width * (size_t)a->height;
     double max_abs = 0;
     for (size_t p = 0; p < n; p++)
-        if (!excluded_at(mask, p))
+        if (!excluded_at(mask, p) && metrics_pixel_finite(a, b, p))
             max_abs = fmax(max_abs, pixel_error(a, b, p));
     for (size_t p = 0; p < n; p++) {
-        rgb c = excluded_at(mask, p) ? vec_make(0, 0.5, 0.5)
-                                     : verify_map_colour(max_abs > 0 ? pixel_error(a, b, p) / max_abs : 0, style);
+        rgb c = excluded_at(mask, p)                ? vec_make(0, 0.5, 0.5)
+                : !metrics_pixel_finite(a, b, p) ? vec_make(0, 1, 0)
+                                                  : verify_map_colour(max_abs > 0 ? pixel_error(a, b, p) / max_abs : 0,
+                                                                      style);
         out->rgb[3 * p] = srgb_to_linear(c.x);
         out->rgb[3 * p + 1] = srgb_to_linear(c.y);
         out->rgb[3 * p + 2] = srgb_to_linear(c.z);
@@ -708,38 +721,29 @@ static int has_extension(const char *path, const char *ext)
 }
 
 /* The PGM bytes into fp: header, then one byte per pixel. */
-static int pgm_fill(FILE *fp, const unsigned char *mask, int width, int height)
+typedef struct pgm_image {
+    const unsigned char *mask;
+    int width, height;
+} pgm_image;
+
+static int pgm_fill(FILE *fp, void *ctx)
 {
-    if (fprintf(fp, "P5\n%d %d\n255\n", width, height) < 0)
-        return 0;
-    size_t n = (size_t)width * (size_t)height;
+    const pgm_image *g = ctx;
+    if (fprintf(fp, "P5\n%d %d\n255\n", g->width, g->height) < 0)
+        return STATUS_IO;
+    size_t n = (size_t)g->width * (size_t)g->height;
     for (size_t p = 0; p < n; p++)
-        if (fputc(mask[p] ? 255 : 0, fp) == EOF)
-            return 0;
-    return fflush(fp) == 0 && fsync(fileno(fp)) == 0;
+        if (fputc(g->mask[p] ? 255 : 0, fp) == EOF)
+            return STATUS_IO;
+    return STATUS_OK;
 }
 
-/* Written to "<path>.tmp.<pid>" and renamed into place, so that path is
- * never left half written; open(2) applies the umask to 0666. */
 static int pgm_write(const char *path, const unsigned char *mask, int width, int height, char *err, size_t errlen)
 {
-    size_t len = strlen(path) + 32;
-    char *tmp = malloc(len);
-    if (!tmp)
-        return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
-    snprintf(tmp, len, "%s.tmp.%ld", path, (long)getpid());
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    FILE *fp = fd >= 0 ? fdopen(fd, "wb") : NULL;
-    int ok = fp && pgm_fill(fp, mask, width, height);
-    if (fp)
-        ok = fclose(fp) == 0 && ok;
-    else if (fd >= 0)
-        close(fd);
-    ok = ok && rename(tmp, path) == 0;
-    if (!ok && fd >= 0)
-        unlink(tmp);
-    free(tmp);
-    return ok ? STATUS_OK : img_error(err, errlen, STATUS_IO, "cannot write '%s'", path);
+    pgm_image g = {mask, width, height};
+    char why[1024];
+    int status = file_write_atomic(path, pgm_fill, &g, why, sizeof why);
+    return status == STATUS_OK ? status : img_error(err, errlen, status, "%s", why);
 }
 
 int verify_mask_write(const char *path, const unsigned char *mask, int width, int height, char *err,
@@ -802,12 +806,13 @@ static int mask_from_image(const char *path, int width, int height, unsigned cha
                            size_t errlen)
 {
     img_buf img;
-    int status = img_read(path, &img, err, errlen);
+    /* The size is refused on the header, before any pixel is decoded. */
+    img_read_opts o = img_read_opts_default();
+    o.width = width;
+    o.height = height;
+    int status = img_read(path, &o, &img, err, errlen);
     if (status != STATUS_OK)
         return status;
-    if (img.width != width || img.height != height)
-        status = img_error(err, errlen, STATUS_DATA, "the mask is %dx%d, the images %dx%d", img.width, img.height,
-                           width, height);
     size_t n = (size_t)width * (size_t)height;
     for (size_t p = 0; status == STATUS_OK && p < n; p++)
         mask[p] = img.rgb[3 * p] > 0.5 || img.rgb[3 * p + 1] > 0.5 || img.rgb[3 * p + 2] > 0.5;
@@ -822,9 +827,9 @@ int verify_mask_read(const char *path, int width, int height, unsigned char **ma
         return img_error(err, errlen, STATUS_NO_MEMORY, "out of memory");
     int status;
     if (has_extension(path, "pgm")) {
-        FILE *fp = fopen(path, "rb");
-        status = fp ? pgm_read(fp, width, height, *mask, err, errlen)
-                    : img_error(err, errlen, STATUS_NO_INPUT, "cannot open '%s'", path);
+        char why[1024];
+        FILE *fp = file_fopen_read(path, &status, why, sizeof why);
+        status = fp ? pgm_read(fp, width, height, *mask, err, errlen) : img_error(err, errlen, status, "%s", why);
         if (fp)
             fclose(fp);
     } else {

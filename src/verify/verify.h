@@ -19,9 +19,10 @@
 #define REFRAY_VERIFY_H
 
 #include <stddef.h>
+#include <float.h>
 #include <stdio.h>
 #include "verify/fit.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "image/metrics.h"
 #include "oracle/oracle.h"
 #include "scene/scene.h"
@@ -33,6 +34,8 @@ typedef struct verify_opts {
     int max_depth;
     int light_samples;  /* samples of every distributed light */
     int runs;           /* renders timed, the median reported; 0 or 1: one */
+    int (*cancel)(void *user); /* stops a render (render_opts.cancel); NULL: never */
+    void *cancel_user;
 } verify_opts;
 
 /* Most renders --runs may ask for. */
@@ -202,12 +205,18 @@ void verify_tsv_sweep(FILE *fp, const verify_sweep *sw, const verify_result *ste
 
 enum { VERIFY_MAP_COLOUR = 0, VERIFY_MAP_GREY = 1 };
 
+/* What a raw map holds where A or B is not finite: the largest double,
+ * which the writers store as the largest value of the file's number type
+ * (a map never holds a NaN, and 0 would read as "no error"). */
+#define VERIFY_MAP_NONFINITE DBL_MAX
+
 /*
  * The error map of a against b: e = max over channels |a - b| / max_abs,
  * (max_abs over the pixels not excluded; e = 0 everywhere when it is 0),
  * shown as a grey level or on the false-colour scale black - purple - red -
  * orange - yellow - white ([VERIFY-MAP-1]); excluded pixels (mask non-zero,
- * mask may be NULL) are teal.  The colours are display (sRGB-encoded)
+ * mask may be NULL) are teal; a pixel where a or b is not finite is pure
+ * green, off the scale, and takes no part in max_abs ([REL-NONFINITE-1]).  The colours are display (sRGB-encoded)
  * values; out holds them made linear, so that an 8-bit PNG written with the
  * default options stores exactly these display colours.  Returns 0 or
  * STATUS_NO_MEMORY / STATUS_INTERNAL (sizes differ).
@@ -217,7 +226,8 @@ int verify_diff_map(const img_buf *a, const img_buf *b, const unsigned char *mas
 /* The display colour of e in [0, 1] on the scale of style. */
 rgb verify_map_colour(double e, int style);
 
-/* |a - b| per channel (excluded pixels 0): the raw error, for EXR/PFM maps. */
+/* |a - b| per channel (excluded pixels 0; VERIFY_MAP_NONFINITE where a or
+ * b is not finite): the raw error, for EXR/PFM maps. */
 int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mask, img_buf *out);
 
 /*

@@ -12,7 +12,8 @@
  * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
  * number; masked pixels (mask byte non-zero) are skipped.  Prints
  * "N of M pixels over"; exit 0 when none is over and at least one pixel
- * was compared, 1 when some are, 2 when a file cannot be read.
+ * was compared, 1 when some are, 2 when a file cannot be read or a
+ * tolerance is not a finite number >= 0.
  */
 #include <math.h>
 #include <stdio.h>
@@ -60,6 +61,13 @@ static int read_pfm(const char *path, picture *p)
     p->width = ok ? strtol(w, NULL, 10) : 0;
     p->height = ok ? strtol(h, NULL, 10) : 0;
     if (!ok || p->width < 1 || p->height < 1 || p->width > 65536 || p->height > 65536) {
+        fclose(f);
+        return 0;
+    }
+    /* At most 2^28 pixels (refray's own bound): 65536 x 65536 pixels of 12
+     * bytes wrapped a 32-bit size_t into a small allocation, and asked a
+     * 64-bit host for 51 GB before the short file was noticed. */
+    if (p->width > (1L << 28) / p->height) {
         fclose(f);
         return 0;
     }
@@ -113,6 +121,16 @@ static unsigned char *read_pgm(const char *path, long width, long height)
     return mask;
 }
 
+/* A tolerance: the whole argument a finite number >= 0.  An infinite one
+ * would pass any finite picture, and a misspelt one read as 0 would fail
+ * every pixel for no reason the user could see. */
+static int tolerance(const char *arg, double *out)
+{
+    char *end;
+    *out = strtod(arg, &end);
+    return end != arg && *end == '\0' && *out >= 0 && *out <= 1e300;
+}
+
 int main(int argc, char **argv)
 {
     picture exact, mine;
@@ -120,19 +138,31 @@ int main(int argc, char **argv)
         fputs("usage: kit_check EXACT.pfm MASK.pgm RELATIVE ABSOLUTE MINE.pfm\n", stderr);
         return 2;
     }
-    double rel = strtod(argv[3], NULL), abs_tol = strtod(argv[4], NULL);
-    if (!read_pfm(argv[1], &exact) || !read_pfm(argv[5], &mine)) {
+    double rel, abs_tol;
+    if (!tolerance(argv[3], &rel) || !tolerance(argv[4], &abs_tol)) {
+        fprintf(stderr, "kit_check: RELATIVE and ABSOLUTE must be finite numbers >= 0, not '%s' '%s'\n", argv[3],
+                argv[4]);
+        return 2;
+    }
+    int have_exact = read_pfm(argv[1], &exact);
+    if (!have_exact || !read_pfm(argv[5], &mine)) {
+        if (have_exact)
+            free(exact.rgb);
         fprintf(stderr, "kit_check: cannot read %s or %s as PFM\n", argv[1], argv[5]);
         return 2;
     }
     if (mine.width != exact.width || mine.height != exact.height) {
         printf("the image is %ldx%ld, the exact image %ldx%ld\n", mine.width, mine.height, exact.width,
                exact.height);
+        free(exact.rgb);
+        free(mine.rgb);
         return 1;
     }
     unsigned char *mask = read_pgm(argv[2], exact.width, exact.height);
     if (!mask) {
         fprintf(stderr, "kit_check: %s is not a %ldx%ld binary PGM\n", argv[2], exact.width, exact.height);
+        free(exact.rgb);
+        free(mine.rgb);
         return 2;
     }
     long over = 0, compared = 0;

@@ -19,7 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "dt.h"
-#include "image/image_file.h"
+#include "io/image_io.h"
 #include "io/scene_file.h"
 #include "render/camera.h"
 #include "render/render.h"
@@ -136,7 +136,7 @@ int dt_read_pov(const dt_config *c, const char *name, int k, double scale, img_b
     char path[PATH_LEN], err[512];
     img_buf raw;
     snprintf(path, sizeof path, "%s/%s.png", c->work_dir, name);
-    if (img_read(path, &raw, err, sizeof err) != 0) {
+    if (img_read(path, NULL, &raw, err, sizeof err) != 0) {
         fail(r, "cannot read POV-Ray's picture: %.250s", err);
         return -1;
     }
