@@ -108,9 +108,9 @@ Q := @
 endif
 
 DRIVER_SRCS := $(wildcard src/cli/*.c)
-JSON_SRCS   := src/scene/json_read.c src/scene/load_json.c src/scene/load_json_mesh.c \
+JSON_SRCS   := src/scene/json_read.c src/scene/load_json.c src/scene/load_json_mesh.c src/scene/load_json_derived.c \
                src/export/export_json_doc.c src/export/export_json_conv.c src/export/export_json_mesh.c \
-               src/export/export_json_print.c
+               src/export/export_json_print.c src/export/export_json_build.c
 OPTIONAL_SRCS := $(if $(filter 1,$(PNG)),,src/image/image_png.c) $(if $(filter 1,$(EXR)),,src/image/image_exr.c) \
                  $(if $(filter 1,$(JSON)),,$(JSON_SRCS))
 LIB_SRCS    := $(filter-out $(DRIVER_SRCS) $(OPTIONAL_SRCS),$(wildcard src/*/*.c))
