@@ -42,14 +42,14 @@ extern "C" {
 /* ---- Version ---------------------------------------------------------- */
 
 #define RF_VERSION_MAJOR 0
-#define RF_VERSION_MINOR 1
+#define RF_VERSION_MINOR 2
 #define RF_VERSION_PATCH 0
-#define RF_VERSION_STRING "0.1.0"
+#define RF_VERSION_STRING "0.2.0"
 /* MAJOR * 10000 + MINOR * 100 + PATCH */
-#define RF_VERSION_NUMBER 100
+#define RF_VERSION_NUMBER 200
 
 /* The shared library's ABI: its SONAME is librefray.so.RF_ABI_VERSION. */
-#define RF_ABI_VERSION 0
+#define RF_ABI_VERSION 1
 
 /* Marks the functions the library exports (it is built with everything
  * else hidden). */
