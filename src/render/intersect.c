@@ -10,24 +10,8 @@
 #include <float.h>
 #include "render/intersect.h"
 #include "render/intersect_shapes.h"
+#include "render/isect_common.h"
 #include "base/xform.h"
-
-static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
-{
-    h->t = t;
-    h->point = p;
-    h->normal = n;
-    h->shading_normal = n;
-    h->prim = -1;
-    h->part = 0;
-    h->entering = vec_dot(dir, n) < 0.0;
-    h->b1 = h->b2 = 0.0;
-}
-
-void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
-{
-    hit_set(h, t, p, n, dir);
-}
 
 static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
 
@@ -53,59 +37,6 @@ static real max_abs(vec3 v)
 
 
 /*
- * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
- * a = d.d, b = f.d, c = f.f - R^2.  Following Haines, Guenther and
- * Akenine-Moller, "Precision Improvements for Ray/Sphere Intersection"
- * (Ray Tracing Gems I, ch. 7):
- *   - the quarter discriminant b^2 - a c equals a (R^2 - |l|^2) with
- *     l = f - (b/a) d the vector from the centre to the line's nearest
- *     point; |l| is computed directly, so the small difference is not lost
- *     between two huge squares (a small sphere seen from far away);
- *   - c is formed as (|f| - R)(|f| + R), exact to rounding near the surface;
- *   - q = -(b + sign(b) sqrt(disc)) has no cancellation, and the roots are
- *     c/q and q/a (the product of the roots is c/a).
- * Writes the roots in increasing order; returns their number (1 when the
- * discriminant is exactly 0, |l| = R: a graze).
- */
-static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
-{
-    real a = vec_dot(d, d);
-    if (!(a > 0.0))
-        return 0;
-    real b = vec_dot(f, d);
-    vec3 l = vec_madd(f, d, -b / a);
-    /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
-     * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
-     * after its rounding, so the test below would fail too. */
-    real rr = radius * radius, l2 = vec_dot(l, l);
-    if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
-        return 0;
-    real ll = vec_length_fast(l);
-    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
-     * underflows to -0 for a sphere below about 1e-154 and would pass for a
-     * graze.  The square root is taken factor by factor for the same reason. */
-    if (!(ll <= radius))
-        return 0;
-    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
-    if (root == 0.0) {
-        t[0] = -b / a;
-        return 1;
-    }
-    real lf = vec_length_fast(f);
-    real c = (lf - radius) * (lf + radius);
-    real q = -(b + copysign(root, b));
-    real t0 = c / q, t1 = q / a;
-    t[0] = t0 < t1 ? t0 : t1;
-    t[1] = t0 < t1 ? t1 : t0;
-    return 2;
-}
-
-int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
-{
-    return sphere_roots(f, d, radius, t);
-}
-
-/*
  * The point o + t d has an absolute error of about eps |o| + eps |t d|,
  * which for a small sphere far from the origin is huge relative to its
  * radius.  One Newton-like restart fixes it: solve again from o' = o + t d,
@@ -118,7 +49,7 @@ static real sphere_refine(vec3 center, real radius, const ray *r, real t, int up
 {
     vec3 o2 = ray_at(r, t);
     real t2[2];
-    int n = sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
+    int n = isect_sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
     if (n == 0) {
         *point = o2;
         return t;
@@ -143,7 +74,7 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
 {
     vec3 f = vec_sub(r->origin, center);
     real t[2];
-    int roots = sphere_roots(f, r->dir, radius, t), found = 0;
+    int roots = isect_sphere_roots(f, r->dir, radius, t), found = 0;
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
@@ -162,7 +93,7 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
         if (bare)
             out[found++].t = ti;
         else
-            hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
+            isect_hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
     }
     return found;
 }
@@ -198,7 +129,7 @@ static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out, int bare)
         return plane_t(p0, n, r, &out->t);
     if (!plane_point(p0, n, r, &t, &p))
         return 0;
-    hit_set(out, t, p, vec_normalize(n), r->dir);
+    isect_hit_set(out, t, p, vec_normalize(n), r->dir);
     return 1;
 }
 
@@ -211,7 +142,7 @@ static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
         return 0;
     if (!(vec_length2(vec_sub(p, center)) <= radius * radius))
         return 0;
-    hit_set(out, t, p, vec_normalize(n), r->dir);
+    isect_hit_set(out, t, p, vec_normalize(n), r->dir);
     return 1;
 }
 
@@ -267,7 +198,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit
     int positive = (vec_component(r->dir, k) > 0.0) == exit; /* the hi face */
     vec3 p = vec_with(ray_at(r, t), k, vec_component(positive ? hi : lo, k));
     vec3 n = vec_with(vec_make(0.0, 0.0, 0.0), k, positive ? 1.0 : -1.0);
-    hit_set(h, t, p, n, r->dir);
+    isect_hit_set(h, t, p, n, r->dir);
 }
 
 static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
@@ -427,7 +358,7 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, co
     p = vec_madd(p, v[1], s.b[1]);
     p = vec_madd(p, v[2], s.b[2]);
     vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
-    hit_set(out, s.t, p, n, r->dir);
+    isect_hit_set(out, s.t, p, n, r->dir);
     out->b1 = s.b[1];
     out->b2 = s.b[2];
     if (normals) {
