@@ -624,9 +624,10 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
 
 # make prove: Frama-C's Eva and WP on the contracts of the shading formulas
+# and the hit tests, and Gappa's rounding bounds
 # (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: each of a set
 # of deliberate bugs makes a goal fail.  They install what they need.
-PROVE_DEBS := frama-c-base why3 z3 cvc4
+PROVE_DEBS := frama-c-base why3 z3 cvc4 gappa
 .PHONY: prove prove-mutants prove-quick prove-deps
 prove-deps:
 	$(Q)missing=""; for p in $(PROVE_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
@@ -642,7 +643,7 @@ prove: prove-deps
 prove-mutants: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
 
-# What CI runs (seconds): Eva on the shading formulas, four helpers taken by
+# What CI runs (seconds): Gappa's bounds and Eva on the shading formulas, four helpers taken by
 # their contracts; make prove checks those too, and runs WP.
 prove-quick: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh quick

@@ -185,6 +185,10 @@ static inline real vec_length(vec3 a)
 /* |a| as sqrt(a.a) when a.a neither overflowed nor lost precision to
  * underflow (one square root, no divisions), else vec_length's scaled form;
  * the two may differ in the last bit. */
+/*@ requires vfinite(a) && DOUBLES(vbounded(a, 0x1p1022));
+    assigns \nothing;
+    ensures \is_finite(\result) && \result >= 0;
+    ensures EXACT(\result * \result == vdot(a, a)); */
 static inline real vec_length_fast(vec3 a)
 {
     real d = vec_dot(a, a);

@@ -13,6 +13,9 @@
 #include "render/isect_common.h"
 #include "base/xform.h"
 
+/*@ requires \valid_read(r);
+    assigns \nothing;
+    ensures \result != 0 <==> r->tmin < t < r->tmax; */
 static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
 
 static vec3 vec_with(vec3 v, int axis, real value)
@@ -103,15 +106,34 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
  * The point is projected back onto the plane, so its error is relative to
  * |p| and |p0|, not to the ray origin (a camera far away).
  */
+/*@ requires \valid_read(r) && \valid(t) && \separated(t, r);
+    requires vfinite(p0) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n);   // check_is_unit (scene/check.c, in_range)
+    assigns *t;
+    ensures \result != 0 ==> r->tmin < *t < r->tmax;
+    ensures EXACT(\result != 0 ==> n.x * (r->origin.x + *t * r->dir.x - p0.x) +
+                  n.y * (r->origin.y + *t * r->dir.y - p0.y) + n.z * (r->origin.z + *t * r->dir.z - p0.z) == 0);
+    ensures \result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax); */
 static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
         return 0;
-    *t = vec_dot(n, vec_sub(p0, r->origin)) / dn;
+    vec3 w = vec_sub(p0, r->origin);
+    *t = vec_dot(n, w) / dn;
+    /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
+    /*@ assert EXACT(*t * dn == vdot(n, w)); */
+    /* admitted (spec/proofs.md, "Admitted"): the dot product written out */
+    /*@ admit EXACT(vdot(n, w) == n.x * (p0.x - r->origin.x) + n.y * (p0.y - r->origin.y) +
+                    n.z * (p0.z - r->origin.z)); */
     return in_interval(r, *t);
 }
 
+/*@ requires \valid_read(r) && \valid(t) && \valid(p) && \separated(t, p, r);
+    requires vfinite(p0) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n);
+    assigns *t, *p;
+    ensures \result != 0 ==> r->tmin < *t < r->tmax; */
 static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
 {
     if (!plane_t(p0, n, r, t))
@@ -134,14 +156,22 @@ static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out, int bare)
 }
 
 /* Disk: the plane hit, kept when within the radius (boundary included). */
+/*@ requires \valid_read(r) && \valid(out) && \separated(out, r);
+    requires vfinite(center) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n) && \is_finite(radius) && radius > 0;   // check_is_unit, check_radius
+    assigns *out;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \old(r->tmin) < out->t < \old(r->tmax); */
 static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
 {
     real t;
     vec3 p;
     if (!plane_point(center, n, r, &t, &p))
         return 0;
-    if (!(vec_length2(vec_sub(p, center)) <= radius * radius))
+    vec3 w = vec_sub(p, center);
+    if (!(vec_length2(w) <= radius * radius))
         return 0;
+    /*@ assert EXACT(w.x * w.x + w.y * w.y + w.z * w.z <= radius * radius);   // |p - c| <= R */
     isect_hit_set(out, t, p, vec_normalize(n), r->dir);
     return 1;
 }
@@ -154,11 +184,25 @@ static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
  * non-zero one is divided by, never multiplied by an infinite inverse.
  * Ties between axes go to the lower axis.
  */
+/*@ requires \valid_read(r) && \valid(tt + (0 .. 1)) && \valid(axis + (0 .. 1));
+    requires \separated(tt + (0 .. 1), axis + (0 .. 1), r);
+    requires vfinite(lo) && vfinite(hi) && vfinite(r->origin) && vfinite(r->dir);
+    assigns tt[0 .. 1], axis[0 .. 1];
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> tt[0] <= tt[1] && r->tmin < tt[1] && tt[0] < r->tmax;
+    ensures \result == 1 ==> 0 <= axis[0] <= 2; */
 static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
 {
     tt[0] = -INFINITY;
     tt[1] = INFINITY;
     axis[0] = axis[1] = -1;
+    //@ ghost int seen = 0;
+    /*@ loop invariant 0 <= k <= 3;
+        loop invariant -1 <= axis[0] < k;
+        loop invariant axis[0] >= 0 ==> seen == 1;
+        loop invariant seen == 1 ==> tt[0] <= tt[1] && r->tmin < tt[1] && tt[0] < r->tmax;
+        loop assigns k, tt[0 .. 1], axis[0 .. 1], seen;
+        loop variant 3 - k; */
     for (int k = 0; k < 3; k++) {
         real o = vec_component(r->origin, k), d = vec_component(r->dir, k);
         real l = vec_component(lo, k), h = vec_component(hi, k);
@@ -187,6 +231,7 @@ static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
          * are saved. */
         if (tt[0] > tt[1] || tt[1] <= r->tmin || tt[0] >= r->tmax)
             return 0;
+        //@ ghost seen = 1;
     }
     return axis[0] >= 0 && tt[0] <= tt[1];
 }
@@ -289,6 +334,12 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
+/*@ requires \valid_read(r) && \valid_read(v + (0 .. 2)) && \valid(out) && \separated(out, r, v + (0 .. 2));
+    requires vfinite(v[0]) && vfinite(v[1]) && vfinite(v[2]) && vfinite(r->origin) && vfinite(r->dir);
+    assigns *out;
+    ensures \result == 0 || \result == 1;
+    ensures EXACT(\result == 1 ==> out->b[0] + out->b[1] + out->b[2] == 1);
+    ensures EXACT(\result == 1 ==> out->b[0] >= 0 && out->b[1] >= 0 && out->b[2] >= 0); */
 static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary *out)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
@@ -302,6 +353,9 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
         return 0;
     real sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
     real px[3], py[3], pz[3];
+    /*@ loop invariant 0 <= i <= 3;
+        loop assigns i, px[0 .. 2], py[0 .. 2], pz[0 .. 2];
+        loop variant 3 - i; */
     for (int i = 0; i < 3; i++) {
         vec3 a = vec_sub(v[i], r->origin);
         pz[i] = vec_component(a, kz);
@@ -316,6 +370,9 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
      * the remainders and the tie rule. */
     if (inside && outside)
         return 0;
+    /*@ loop invariant 0 <= i <= 3;
+        loop assigns i, inside, outside;
+        loop variant 3 - i; */
     for (int i = 0; i < 3 && (e[0] == 0.0 || e[1] == 0.0 || e[2] == 0.0); i++) {
         int p = (i + 1) % 3, q = (i + 2) % 3;
         if (e[i] != 0.0)
@@ -337,6 +394,10 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
      * 2^-342) where the weights b_i = e_i / det, free of scale, do not.
      * An edge decided by its remainders or by the tie rule has e_i = 0,
      * and so weight 0. */
+    /*@ loop invariant 0 <= i <= 3;
+        loop invariant \forall integer j; 0 <= j < i ==> out->b[j] == e[j] / det;
+        loop assigns i, out->b[0 .. 2];
+        loop variant 3 - i; */
     for (int i = 0; i < 3; i++)
         out->b[i] = e[i] / det;
     out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;

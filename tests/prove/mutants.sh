@@ -9,7 +9,8 @@ cd "$(dirname "$0")/../.."
 base=${PROVE_OUT:-build/prove}/mutants
 survivors=0
 
-# function | perl substitution on shade.c (one line, -0: may span lines) | bug
+# function | perl substitution (one line, -0: may span lines) | bug [| file
+# under src/, render/shade.c when left out]
 mutants=$(cat <<'LIST'
 shade_lambert|s/(real c = vec_dot\(n, l\);\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the N.L > 0 gate removed
 shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (0) {/|the TIR test removed
@@ -29,24 +30,44 @@ shade_local|s/saturating_sum\(highlight, vec_scale\(body, 1\.0 - t\)\)/saturatin
 shade_combine|s/vec_mul\(ks, mirrored\)/mirrored/|mirror term without Ks
 saturate1|s/return x > DBL_MAX \? DBL_MAX : x;/return x;/|no cap in shade_saturate's channel
 shade_shadow_transmission|s/return carried \* t_occluder;/return carried + t_occluder;/|sum for product
+isect_sphere_roots|s/    return 2;\n\}/    return 3;\n}/|three roots|render/isect_common.c
+isect_sphere_roots|s/t\[0\] = t0 < t1 \? t0 : t1;/t[0] = t0 < t1 ? t1 : t0;/|roots in decreasing order|render/isect_common.c
+isect_sphere_roots|s/t\[0\] = -b \/ a;/t[0] = b \/ a;/|a graze on the wrong side|render/isect_common.c
+isect_hit_set|s/h->shading_normal = n;/h->shading_normal = p;/|the point for the shading normal|render/isect_common.c
+isect_hit_set|s/h->prim = -1;/h->prim = 0;/|prim 0|render/isect_common.c
+isect_hit_set|s/vec_dot\(dir, n\) < 0\.0;/vec_dot(dir, n) <= 0.0;/|a grazing ray counted as entering|render/isect_common.c
+in_interval|s/return t > r->tmin &&/return t >= r->tmin \&\&/|closed at tmin|render/intersect.c
+plane_t|s/\*t = vec_dot\(n, w\) \/ dn;/*t = vec_dot(n, w) \/ (2 * dn);/|t halved|render/intersect.c
+plane_t|s/return in_interval\(r, \*t\);/return in_interval(r, *t) \&\& *t > 1;/|hits before t = 1 dropped|render/intersect.c
+plane_t|s/return in_interval\(r, \*t\);/return 1;/|no interval test|render/intersect.c
+plane_point|s/if \(!plane_t\(p0, n, r, t\)\)\n        return 0;\n//|plane_t's answer ignored|render/intersect.c
+disk_hits|s/if \(!\(vec_length2\(w\) <= radius \* radius\)\)/if (!(vec_length2(w) <= 2 * radius * radius))/|radius sqrt 2|render/intersect.c
+disk_hits|s/(radius \* radius\); \*\/\n    isect_hit_set\(out, )t,/$1t + 1,/|t moved after the test|render/intersect.c
+box_slabs|s/ \|\| tt\[1\] <= r->tmin//|exit before tmin kept|render/intersect.c
+box_slabs|s/return axis\[0\] >= 0 && tt\[0\] <= tt\[1\];/return tt[0] <= tt[1];/|a ray with no slab crossed|render/intersect.c
+triangle_solve|s/if \(inside == outside\)/if (!inside \&\& !outside)/|mixed edge signs accepted|render/intersect.c
+triangle_solve|s/out->b\[i\] = e\[i\] \/ det;/out->b[i] = e[i] \/ (2 * det);/|weights halved|render/intersect.c
 LIST
 )
 
 i=0
-while IFS='|' read -r fn subst bug; do
+while IFS='|' read -r fn subst bug file; do
+    file=${file:-render/shade.c}
+    mode=wp
+    [ "$file" = render/shade.c ] || mode=isect
     i=$((i + 1))
     dir=$base/$i
     rm -rf "$dir"
     mkdir -p "$dir"
     cp -r src "$dir/src"
-    perl -0pi -e "$subst" "$dir/src/render/shade.c"
-    if cmp -s src/render/shade.c "$dir/src/render/shade.c"; then
+    perl -0pi -e "$subst" "$dir/src/$file"
+    if cmp -s "src/$file" "$dir/src/$file"; then
         echo "mutant $i ($fn): the substitution did not apply"
         survivors=$((survivors + 1))
         continue
     fi
     PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
-        bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
+        bash tests/prove/prove.sh "$mode" >"$dir/prove.log" 2>&1
     broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | tr '\n' ' ')
     if [ -n "$broken" ]; then
         echo "mutant $i killed: $fn, $bug: $broken"
