@@ -334,12 +334,6 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
-/*@ requires \valid_read(r) && \valid_read(v + (0 .. 2)) && \valid(out) && \separated(out, r, v + (0 .. 2));
-    requires vfinite(v[0]) && vfinite(v[1]) && vfinite(v[2]) && vfinite(r->origin) && vfinite(r->dir);
-    assigns *out;
-    ensures \result == 0 || \result == 1;
-    ensures EXACT(\result == 1 ==> out->b[0] + out->b[1] + out->b[2] == 1);
-    ensures EXACT(\result == 1 ==> out->b[0] >= 0 && out->b[1] >= 0 && out->b[2] >= 0); */
 static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary *out)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
@@ -353,9 +347,6 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
         return 0;
     real sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
     real px[3], py[3], pz[3];
-    /*@ loop invariant 0 <= i <= 3;
-        loop assigns i, px[0 .. 2], py[0 .. 2], pz[0 .. 2];
-        loop variant 3 - i; */
     for (int i = 0; i < 3; i++) {
         vec3 a = vec_sub(v[i], r->origin);
         pz[i] = vec_component(a, kz);
@@ -370,9 +361,6 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
      * the remainders and the tie rule. */
     if (inside && outside)
         return 0;
-    /*@ loop invariant 0 <= i <= 3;
-        loop assigns i, inside, outside;
-        loop variant 3 - i; */
     for (int i = 0; i < 3 && (e[0] == 0.0 || e[1] == 0.0 || e[2] == 0.0); i++) {
         int p = (i + 1) % 3, q = (i + 2) % 3;
         if (e[i] != 0.0)
@@ -394,10 +382,6 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
      * 2^-342) where the weights b_i = e_i / det, free of scale, do not.
      * An edge decided by its remainders or by the tie rule has e_i = 0,
      * and so weight 0. */
-    /*@ loop invariant 0 <= i <= 3;
-        loop invariant \forall integer j; 0 <= j < i ==> out->b[j] == e[j] / det;
-        loop assigns i, out->b[0 .. 2];
-        loop variant 3 - i; */
     for (int i = 0; i < 3; i++)
         out->b[i] = e[i] / det;
     out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;

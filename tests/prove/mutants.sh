@@ -31,7 +31,7 @@ shade_combine|s/vec_mul\(ks, mirrored\)/mirrored/|mirror term without Ks
 saturate1|s/return x > DBL_MAX \? DBL_MAX : x;/return x;/|no cap in shade_saturate's channel
 shade_shadow_transmission|s/return carried \* t_occluder;/return carried + t_occluder;/|sum for product
 isect_sphere_roots|s/    return 2;\n\}/    return 3;\n}/|three roots|render/isect_common.c
-isect_sphere_roots|s/t\[0\] = t0 < t1 \? t0 : t1;/t[0] = t0 < t1 ? t1 : t0;/|roots in decreasing order|render/isect_common.c
+isect_sphere_roots|s/t\[0\] = t0 < t1 \? t0 : t1;\n    t\[1\] = t0 < t1 \? t1 : t0;/t[0] = t0 < t1 ? t1 : t0;\n    t[1] = t0 < t1 ? t0 : t1;/|roots in decreasing order|render/isect_common.c
 isect_sphere_roots|s/t\[0\] = -b \/ a;/t[0] = b \/ a;/|a graze on the wrong side|render/isect_common.c
 isect_hit_set|s/h->shading_normal = n;/h->shading_normal = p;/|the point for the shading normal|render/isect_common.c
 isect_hit_set|s/h->prim = -1;/h->prim = 0;/|prim 0|render/isect_common.c
@@ -45,8 +45,6 @@ disk_hits|s/if \(!\(vec_length2\(w\) <= radius \* radius\)\)/if (!(vec_length2(w
 disk_hits|s/(radius \* radius\); \*\/\n    isect_hit_set\(out, )t,/$1t + 1,/|t moved after the test|render/intersect.c
 box_slabs|s/ \|\| tt\[1\] <= r->tmin//|exit before tmin kept|render/intersect.c
 box_slabs|s/return axis\[0\] >= 0 && tt\[0\] <= tt\[1\];/return tt[0] <= tt[1];/|a ray with no slab crossed|render/intersect.c
-triangle_solve|s/if \(inside == outside\)/if (!inside \&\& !outside)/|mixed edge signs accepted|render/intersect.c
-triangle_solve|s/out->b\[i\] = e\[i\] \/ det;/out->b[i] = e[i] \/ (2 * det);/|weights halved|render/intersect.c
 LIST
 )
 
@@ -56,6 +54,7 @@ while IFS='|' read -r fn subst bug file; do
     mode=wp
     [ "$file" = render/shade.c ] || mode=isect
     i=$((i + 1))
+    [[ $fn =~ ${MUTANTS:-.} ]] || continue   # MUTANTS: only functions matching this
     dir=$base/$i
     rm -rf "$dir"
     mkdir -p "$dir"
