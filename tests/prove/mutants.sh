@@ -9,8 +9,8 @@ cd "$(dirname "$0")/../.."
 base=${PROVE_OUT:-build/prove}/mutants
 survivors=0
 
-# function | perl substitution (one line, -0: may span lines) | bug [| file
-# under src/, render/shade.c when left out]
+# function | perl substitution (one line, -0: may span lines; \x7c for a
+# bar) | bug [| file under src/, render/shade.c when left out]
 mutants=$(cat <<'LIST'
 shade_lambert|s/(real c = vec_dot\(n, l\);\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the N.L > 0 gate removed
 shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (0) {/|the TIR test removed
@@ -42,8 +42,8 @@ plane_t|s/return in_interval\(r, \*t\);/return in_interval(r, *t) \&\& *t > 1;/|
 plane_t|s/return in_interval\(r, \*t\);/return 1;/|no interval test|render/intersect.c
 plane_point|s/if \(!plane_t\(p0, n, r, t\)\)\n        return 0;\n//|plane_t's answer ignored|render/intersect.c
 disk_hits|s/if \(!\(vec_length2\(w\) <= radius \* radius\)\)/if (!(vec_length2(w) <= 2 * radius * radius))/|radius sqrt 2|render/intersect.c
-disk_hits|s/(radius \* radius\); \*\/\n    isect_hit_set\(out, )t,/$1t + 1,/|t moved after the test|render/intersect.c
-box_slabs|s/ \|\| tt\[1\] <= r->tmin//|exit before tmin kept|render/intersect.c
+disk_hits|s/(<= R \*\/\n    isect_hit_set\(out, )t,/$1t + 1,/|t moved after the test|render/intersect.c
+box_slabs|s/ \x7c\x7c tt\[1\] <= r->tmin//|exit before tmin kept|render/intersect.c
 box_slabs|s/return axis\[0\] >= 0 && tt\[0\] <= tt\[1\];/return tt[0] <= tt[1];/|a ray with no slab crossed|render/intersect.c
 LIST
 )
