@@ -88,6 +88,25 @@ START_TEST(test_trace_point_light_falloffs)
 }
 END_TEST
 
+START_TEST(test_trace_light_a_subnormal_distance_away)
+{
+    /* [SHADE-DIFFUSE-1] A light 1e-310 above the hit point (the origin):
+     * L = (0, 1, 0), N.L = 1, falloff none, so the pixel is Kd * E = 0.5.
+     * L must not be formed as to * (1/d): 1/d overflows for d < 2^-1024,
+     * and that L (Inf and NaN) dropped the light (shade_diffuse's
+     * precondition: L finite). */
+    const char *where[] = {"[0, 1e-310, 0]", "[0, 5e-324, 0]", "[0, 1e-300, 0]"};
+    for (int k = 0; k < 3; k++) {
+        char text[512];
+        snprintf(text, sizeof text, LOOK_DOWN "point_light { position %s power 1 falloff none }\n"
+                                              "plane { material { Kd 0.5 } }\n", where[k]);
+        scene_model *s = load(text);
+        ck_assert_vec_near(pixel(s, 0, 0, NULL), vec_splat(0.5), 1e-15);   /* L to rounding */
+        scene_free(s);
+    }
+}
+END_TEST
+
 START_TEST(test_trace_light_below_the_horizon_adds_nothing)
 {
     /* The light is under the plane: N.L < 0 on the side the camera sees. */
@@ -333,6 +352,7 @@ Suite *suite_trace(void)
     TCase *whole = tcase_create("whole renders");
     tcase_add_test(whole, test_trace_renders_are_bit_identical);
     tcase_add_test(whole, test_trace_diffuse_scene_skips_passes);
+    tcase_add_test(whole, test_trace_light_a_subnormal_distance_away);
     tcase_add_test(whole, test_render_image_stops_when_asked);
     tcase_add_test(whole, test_render_image_refuses_an_exploding_ray_tree);
     suite_add_tcase(s, whole);

@@ -267,7 +267,13 @@ real shade_phong_lobe(vec3 v, vec3 r, real shininess)
     ensures vcolour(\result);
     ensures EXACT(vdot(n, l) <= 0 ==> vzero(\result));
     ensures EXACT(0 <= \result.x <= ks.x * intensity.x && 0 <= \result.y <= ks.y * intensity.y &&
-                  0 <= \result.z <= ks.z * intensity.z); */
+                  0 <= \result.z <= ks.z * intensity.z);
+    // the lobe is taken about R = 2(N.L)N - L ([SHADE-SPEC-1], [SHADE-PHONG-3]):
+    // nothing where V.R <= 0, Ks I in full for n = 0 where V.R > 0
+    ensures EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) <= 0 ==> vzero(\result));
+    ensures EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) > 0 && shininess == 0 ==>
+                  \result.x == ks.x * intensity.x && \result.y == ks.y * intensity.y &&
+                  \result.z == ks.z * intensity.z); */
 rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, real shininess)
 {
     if (!(vec_dot(n, l) > 0.0))

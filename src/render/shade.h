@@ -56,6 +56,11 @@
   // cos th1 = -N.D, clamped to [0, 1]
   logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));
 
+  // [SHADE-REFLECT-1] R = 2(N.L)N - L
+  logic vec3 reflected(vec3 l, vec3 n) =
+      {l \with .x = (real)(2 * vdot(n, l) * n.x - l.x), .y = (real)(2 * vdot(n, l) * n.y - l.y),
+                .z = (real)(2 * vdot(n, l) * n.z - l.z)};
+
   // [SHADE-MIRROR-1]
   predicate is_mirror(vec3 t, vec3 d, vec3 n) =
       t.x == d.x - 2 * vdot(n, d) * n.x && t.y == d.y - 2 * vdot(n, d) * n.y && t.z == d.z - 2 * vdot(n, d) * n.z;

@@ -202,7 +202,11 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
             st->lights_on_surface++;
             return;
         }
-        l = vec_scale(to, 1.0 / d);
+        /* Defensive: 1/d overflows for d below 2^-1024 (a light 1e-310 from
+         * the point), and to * Inf is no direction (shade_direct's L must be
+         * finite); to / d is, as |to_i| <= d. */
+        real inv = 1.0 / d;
+        l = inv <= REAL_MAX ? vec_scale(to, inv) : vec_make(to.x / d, to.y / d, to.z / d);
     }
     int lit = vec_dot(s->n, l) > 0;
     path_note(st, (uint64_t)lit + 1);

@@ -114,7 +114,16 @@ int lower_ambient(loader *L, const ast *block)
     check_at at = props_at(&p);
     if (!check_ambient(L, &at, color))
         return 0;
-    L->scene->ambient = vec_add(L->scene->ambient, color);
+    /* Each block is finite, their sum need not be: an infinite Ia would give
+     * Kd * Ia = 0 * Inf = NaN for a zero channel of Kd (shade_ambient's
+     * precondition, spec/proofs.md). */
+    rgb sum = vec_add(L->scene->ambient, color);
+    if (!vec_is_finite(sum)) {
+        diag_report(&L->diag, DIAG_ERROR, props_value_span(&p, KW_COLOR),
+                    "the ambient colours add up beyond the largest number (about 1.8e308)");
+        return 0;
+    }
+    L->scene->ambient = sum;
     return 1;
 }
 

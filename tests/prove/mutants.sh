@@ -17,6 +17,7 @@ shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (0) {/|the TIR test removed
 shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (!(k > 0x1p-20)) {/|TIR also for 0 <= k <= 2^-20
 shade_phong_lobe|s/(real c = vec_dot\(v, r\), rel;\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the V.R > 0 gate removed
 shade_specular|s/if \(!\(vec_dot\(n, l\) > 0\.0\)\)/if (0)/|the N.L > 0 gate removed
+shade_specular|s/vec3 r = shade_reflect_about\(l, n\);/vec3 r = l;/|the lobe taken about L, not R
 shade_falloff|s/s = d \+ d0;/s = d + d0 + 1;/|d0 counted twice
 shade_ambient|s/return vec_mul\(kd, ia\);/return vec_add(kd, ia);/|Kd + Ia for Kd Ia
 shade_diffuse|s/vec_scale\(vec_mul\(kd, intensity\), shade_lambert\(n, l\)\)/vec_scale(vec_mul(kd, intensity), vec_dot(n, l))/|N.L unclamped
