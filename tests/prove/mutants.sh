@@ -8,6 +8,7 @@ set -u
 cd "$(dirname "$0")/../.."
 base=${PROVE_OUT:-build/prove}/mutants
 survivors=0
+tried=0
 
 # function | perl substitution (one line, -0: may span lines; \x7c for a
 # bar) | bug [| file under src/, render/shade.c when left out]
@@ -56,6 +57,7 @@ while IFS='|' read -r fn subst bug file; do
     [ "$file" = render/shade.c ] || mode=isect
     i=$((i + 1))
     [[ $fn =~ ${MUTANTS:-.} ]] || continue   # MUTANTS: only functions matching this
+    tried=$((tried + 1))
     dir=$base/$i
     rm -rf "$dir"
     mkdir -p "$dir"
@@ -77,5 +79,5 @@ while IFS='|' read -r fn subst bug file; do
     fi
 done <<<"$mutants"
 
-[ $survivors = 0 ] && echo "prove-mutants: OK ($i killed)" || echo "prove-mutants: $survivors of $i survived"
+[ $survivors = 0 ] && echo "prove-mutants: OK ($tried killed)" || echo "prove-mutants: $survivors of $tried survived"
 [ $survivors = 0 ]
