@@ -42,14 +42,14 @@ extern "C" {
 /* ---- Version ---------------------------------------------------------- */
 
 #define RF_VERSION_MAJOR 0
-#define RF_VERSION_MINOR 1
+#define RF_VERSION_MINOR 2
 #define RF_VERSION_PATCH 0
-#define RF_VERSION_STRING "0.1.0"
+#define RF_VERSION_STRING "0.2.0"
 /* MAJOR * 10000 + MINOR * 100 + PATCH */
-#define RF_VERSION_NUMBER 100
+#define RF_VERSION_NUMBER 200
 
 /* The shared library's ABI: its SONAME is librefray.so.RF_ABI_VERSION. */
-#define RF_ABI_VERSION 0
+#define RF_ABI_VERSION 1
 
 /* Marks the functions the library exports (it is built with everything
  * else hidden). */
@@ -83,7 +83,11 @@ typedef enum rf_status {
 /* A NULL where this reference does not say one is allowed (an out pointer,
  * a scene name, its text with a size > 0, a path, a scene, a renderer, an
  * image, a stream) returns RF_ERR_USAGE, with an out pointer set to NULL;
- * rf_scene_get_info of NULL fills zeros.  Limits above INT_MAX act as
+ * rf_scene_get_info of NULL fills zeros, and so do rf_renderer_size and
+ * rf_renderer_stats of a NULL renderer (into the pointers that are not
+ * NULL); rf_renderer_fingerprint, rf_image_width and rf_image_height of
+ * NULL return 0, rf_image_pixels NULL; an init of NULL, a free of NULL and
+ * rf_diagnostic_print with a NULL stream or record do nothing.  Limits above INT_MAX act as
  * INT_MAX for the counts an int holds (width, height, samples, depth). */
 
 /* A short lower-case description of status ("out of memory"). */
@@ -216,6 +220,16 @@ typedef struct rf_load_options {
      * NULL: never asked. */
     int (*cancel)(void *user);
     void *cancel_user;
+    /* rf_scene_load_file's own file resolver (a resolver of yours decides
+     * for itself): read_confined 1 reads include and mesh files only from
+     * the scene file's directory tree and the trees of read_dirs (a
+     * NULL-terminated list of directories, or NULL), judged by each file's
+     * real path with every symbolic link resolved; a file elsewhere is an
+     * error at the statement that names it.  0 (the default): any file the
+     * process can read.  The refray program confines its loads; its
+     * --allow-read DIR adds to read_dirs (spec/reliability.md). */
+    int read_confined;
+    const char *const *read_dirs;
 } rf_load_options;
 
 /* The default limits, warnings on, no callback, no resolver, malloc. */

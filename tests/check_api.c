@@ -21,12 +21,35 @@ static const char plane_text[] =
     "distant_light { direction [0, -1, 0] power 2 }\n"
     "plane { material { Kd 0.5 } }\n";
 
-static rf_scene *load(const char *text, const rf_load_options *o)
+/* Scene `name` from text under options o (NULL: defaults); the load must
+ * succeed. */
+static rf_scene *load_named(const char *name, const char *text, const rf_load_options *o)
 {
     rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_memory("api.scene", text, strlen(text), o, &s), RF_OK);
+    ck_assert_int_eq(rf_scene_load_memory(name, text, strlen(text), o, &s), RF_OK);
     ck_assert_ptr_nonnull(s);
     return s;
+}
+
+static rf_scene *load(const char *text, const rf_load_options *o)
+{
+    return load_named("api.scene", text, o);
+}
+
+/* A renderer of s under options o (NULL: defaults); it must be made. */
+static rf_renderer *renderer(const rf_scene *s, const rf_render_options *o)
+{
+    rf_renderer *r = NULL;
+    ck_assert_int_eq(rf_renderer_create(s, o, &r), RF_OK);
+    return r;
+}
+
+/* The summary of s. */
+static rf_scene_info info_of(const rf_scene *s)
+{
+    rf_scene_info i;
+    rf_scene_get_info(s, &i);
+    return i;
 }
 
 /* [EMBED-API-1] The version macros and calls agree; every status has its
@@ -52,8 +75,7 @@ END_TEST
 START_TEST(test_api_render_region)
 {
     rf_scene *s = load(plane_text, NULL);
-    rf_renderer *r;
-    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    rf_renderer *r = renderer(s, NULL);
     int w, h;
     rf_renderer_size(r, &w, &h);
     ck_assert_int_eq(w, 4);
@@ -92,8 +114,7 @@ START_TEST(test_api_regions_tile_the_image)
 {
     rf_render_options o;
     rf_scene *s = load_demo_12x8(&o);
-    rf_renderer *r;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer *r = renderer(s, &o);
     float whole[8 * 12 * 3], tiled[8 * 12 * 3];
     ck_assert_int_eq(rf_render_region(r, 0, 0, 12, 8, whole, 36), RF_OK);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 5, 3, tiled, 36), RF_OK);
@@ -115,9 +136,8 @@ START_TEST(test_api_region_float_saturates)
                                "distant_light { direction [0, -1, 0] power 1e300 }\n"
                                "plane { material { Kd 0.5 } }\n";
     rf_scene *s = load(text, NULL);
-    rf_renderer *r;
+    rf_renderer *r = renderer(s, NULL);
     float px[6];
-    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 2, 1, px, 6), RF_OK);
     for (int i = 0; i < 6; i++)
         ck_assert_float_eq(px[i], FLT_MAX);
@@ -134,9 +154,8 @@ START_TEST(test_api_region_double_is_the_image)
     rf_render_options o;
     rf_scene *s = load_demo_12x8(&o);
     rf_image *img;
-    rf_renderer *r;
     ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_OK);
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer *r = renderer(s, &o);
     double px[8 * 12 * 3];
     float f[8 * 12 * 3];
     ck_assert_int_eq(rf_render_region_double(r, 0, 0, 12, 5, px, 36), RF_OK);
@@ -157,16 +176,14 @@ END_TEST
 static unsigned long long fingerprint(const char *name, const char *text, int width, int samples, int depth,
                                       int light_samples)
 {
-    rf_scene *s = NULL;
-    rf_renderer *r;
+    rf_scene *s = load_named(name, text, NULL);
     rf_render_options o;
-    ck_assert_int_eq(rf_scene_load_memory(name, text, strlen(text), NULL, &s), RF_OK);
     rf_render_options_init(&o);
     o.width = width;
     o.samples = samples;
     o.max_depth = depth;
     o.light_samples = light_samples;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer *r = renderer(s, &o);
     unsigned long long f = rf_renderer_fingerprint(r);
     rf_renderer_free(r);
     rf_scene_free(s);
@@ -197,9 +214,8 @@ END_TEST
 START_TEST(test_api_render_region_refusals)
 {
     rf_scene *s = load(plane_text, NULL);
-    rf_renderer *r;
+    rf_renderer *r = renderer(s, NULL);
     float buf[64];
-    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 5, 1, buf, 15), RF_ERR_USAGE);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 4, buf, 12), RF_ERR_USAGE);
     ck_assert_int_eq(rf_render_region(r, 2, 0, 2, 1, buf, 12), RF_ERR_USAGE);
@@ -260,7 +276,7 @@ START_TEST(test_api_null_arguments)
     ck_assert_int_eq(rf_image_write_stream(img, NULL, RF_FORMAT_PFM, NULL, NULL, msg, sizeof msg), RF_ERR_USAGE);
     ck_assert_str_eq(msg, "no stream to write to");
     rf_image_free(img);
-    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    r = renderer(s, NULL);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 2, buf, (size_t)-1), RF_ERR_USAGE);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 2, buf, 12), RF_OK);
     rf_renderer_free(r);
@@ -278,22 +294,78 @@ START_TEST(test_api_null_arguments)
 }
 END_TEST
 
+/* [EMBED-API-NULL-1] Every rf_ function, each NULL argument in turn: a
+ * call that returns a status returns RF_ERR_USAGE; one that returns a
+ * value returns 0 (NULL, RF_FORMAT_UNKNOWN); one that fills a record
+ * fills zeros; an init or free does nothing.  rf_renderer_size and
+ * rf_renderer_fingerprint of NULL crashed before; Check's fork mode turns
+ * a crash here into a failed test. */
+START_TEST(test_api_null_everywhere)
+{
+    rf_scene *s = load(plane_text, NULL);
+    rf_renderer *r;
+    ck_assert_int_eq(rf_renderer_create(s, NULL, &r), RF_OK);
+    int w = 7, h = 7;
+    rf_renderer_size(NULL, &w, &h);
+    ck_assert_int_eq(w, 0);
+    ck_assert_int_eq(h, 0);
+    rf_renderer_size(r, NULL, NULL);
+    rf_renderer_size(r, &w, NULL);
+    ck_assert_int_eq(w, 4);
+    ck_assert_uint_eq(rf_renderer_fingerprint(NULL), 0);
+    ck_assert_uint_ne(rf_renderer_fingerprint(r), 0);
+    rf_render_stats st;
+    memset(&st, 0xff, sizeof st);
+    rf_renderer_stats(NULL, &st);
+    ck_assert_int_eq(st.width, 0);
+    ck_assert_int_eq(st.camera_rays, 0);
+    rf_renderer_stats(r, NULL);
+    double dbuf[24];
+    ck_assert_int_eq(rf_render_region_double(NULL, 0, 0, 1, 1, dbuf, 3), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region_double(r, 0, 0, 1, 1, NULL, 3), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_render_region(r, 0, 0, 1, 1, NULL, 3), RF_ERR_USAGE);
+    rf_renderer_free(r);
+    rf_renderer_free(NULL);
+
+    rf_mesh_info m;
+    ck_assert_int_eq(rf_scene_get_mesh_info(NULL, 0, &m), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_scene_get_mesh_info(s, 0, NULL), RF_ERR_USAGE);
+    rf_scene_get_info(s, NULL);
+    rf_scene_free(s);
+    rf_scene_free(NULL);
+
+    ck_assert_int_eq(rf_image_width(NULL), 0);
+    ck_assert_int_eq(rf_image_height(NULL), 0);
+    ck_assert_ptr_null(rf_image_pixels(NULL));
+    rf_image_free(NULL);
+    ck_assert_int_eq(rf_format_from_path(NULL), RF_FORMAT_UNKNOWN);
+    rf_load_options_init(NULL);
+    rf_render_options_init(NULL);
+    rf_write_options_init(NULL);
+    rf_diagnostic_print(NULL, NULL);
+    rf_diagnostic_print(stderr, NULL);
+    ck_assert_ptr_nonnull(rf_status_string((rf_status)-1));
+    ck_assert_ptr_nonnull(rf_status_string((rf_status)1000));
+    ck_assert_int_eq(rf_image_write(NULL, NULL, NULL, NULL, NULL, 0), RF_ERR_USAGE);
+    ck_assert_int_eq(rf_image_write_stream(NULL, NULL, RF_FORMAT_PFM, NULL, NULL, NULL, 0), RF_ERR_USAGE);
+}
+END_TEST
+
 /* The plane scene, one region, with the shortcuts on or off. */
 static void render_plane(int no_shortcuts, float *px, rf_render_stats *st)
 {
     rf_scene *s = load(plane_text, NULL);
     rf_render_options o;
-    rf_renderer *r;
     rf_render_options_init(&o);
     o.no_shortcuts = no_shortcuts;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer *r = renderer(s, &o);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, px, 12), RF_OK);
     rf_renderer_stats(r, st);
     rf_renderer_free(r);
     rf_scene_free(s);
 }
 
-/* [EMBED-API-7] [SHADE-SHORTCUT-OFF-1] no_shortcuts changes the work, not
+/* [EMBED-API-10] [SHADE-SHORTCUT-OFF-1] no_shortcuts changes the work, not
  * the image.  A lone plane cannot shadow itself, so with the shortcuts
  * the shadow pass is left out (0 shadow rays); without them each of the
  * 12 camera rays meets the plane once, under one light, and sends one
@@ -344,9 +416,8 @@ START_TEST(test_api_progress_and_cancel)
     o.progress = on_progress;
     o.cancel = on_cancel;
     o.user = &seen;
-    rf_renderer *r;
+    rf_renderer *r = renderer(s, &o);
     float buf[36];
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
     ck_assert_int_eq(rf_render_region(r, 1, 1, 3, 3, buf, 6), RF_OK);
     ck_assert_int_eq(seen.calls, 2);
     ck_assert_int_eq(seen.last_done, 2);
@@ -472,9 +543,8 @@ START_TEST(test_api_diagnostics_and_resolver)
                                 "include \"nowhere.scene\"|15");
     o.resolver.fetch = memory_fetch;
     static const char good[] = "mesh { file \"tri.obj\" }\nsphere { center [0, 0, -3] }\n";
-    ck_assert_int_eq(rf_scene_load_memory("main.scene", good, strlen(good), &o, &s), RF_OK);
-    rf_scene_info info;
-    rf_scene_get_info(s, &info);
+    s = load_named("main.scene", good, &o);
+    rf_scene_info info = info_of(s);
     ck_assert_int_eq(info.meshes, 1);
     ck_assert_int_eq(info.mesh_triangles, 1);
     ck_assert_int_eq(info.spheres, 1);
@@ -511,7 +581,7 @@ START_TEST(test_api_json_scenes)
     rf_scene *s;
     snprintf(text, sizeof text, plane_json, "");
 #ifdef REFRAY_HAVE_JSON
-    ck_assert_int_eq(rf_scene_load_memory("plane.JSON", text, strlen(text), &o, &s), RF_OK);
+    s = load_named("plane.JSON", text, &o);
     rf_image *img;
     ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
     for (int i = 0; i < 3 * 4 * 3; i++)
@@ -520,9 +590,8 @@ START_TEST(test_api_json_scenes)
     rf_scene_free(s);
     snprintf(text, sizeof text, plane_json,
              ",\n {\"kind\": \"mesh\", \"material\": 0, \"source\": null, \"file\": \"tri.obj\"}");
-    ck_assert_int_eq(rf_scene_load_memory("plane.json", text, strlen(text), &o, &s), RF_OK);
-    rf_scene_info info;
-    rf_scene_get_info(s, &info);
+    s = load_named("plane.json", text, &o);
+    rf_scene_info info = info_of(s);
     ck_assert_int_eq(info.planes, 1);
     ck_assert_int_eq(info.mesh_triangles, 1);
     rf_scene_free(s);
@@ -574,8 +643,7 @@ START_TEST(test_api_scene_info)
 {
     rf_scene *s;
     ck_assert_int_eq(rf_scene_load_file("scenes/demo.scene", NULL, &s), RF_OK);
-    rf_scene_info i;
-    rf_scene_get_info(s, &i);
+    rf_scene_info i = info_of(s);
     ck_assert_int_eq(i.width, 640);
     ck_assert_int_eq(i.height, 400);
     ck_assert_int_eq(i.samples, 2);
@@ -605,10 +673,8 @@ START_TEST(test_api_scene_info_quadrics)
         "torus { center [0, 0, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
         "torus { center [0, 2, -6] axis [0, 1, 0] major 1 minor 0.2 }\n"
         "torus { center [0, 4, -6] axis [1, 0, 0] major 1 minor 0.2 }\n";
-    rf_scene *s;
-    ck_assert_int_eq(rf_scene_load_memory("q.scene", text, strlen(text), NULL, &s), RF_OK);
-    rf_scene_info i;
-    rf_scene_get_info(s, &i);
+    rf_scene *s = load_named("q.scene", text, NULL);
+    rf_scene_info i = info_of(s);
     ck_assert_int_eq(i.primitives, 7);
     ck_assert_int_eq(i.spheres, 1);
     ck_assert_int_eq(i.cylinders, 1);
@@ -635,10 +701,8 @@ START_TEST(test_api_scene_info_meshes)
     rf_load_options_init(&o);
     o.resolver.fetch = memory_fetch;
     o.resolver.user = (void *)files;
-    rf_scene *s;
-    ck_assert_int_eq(rf_scene_load_memory("m.scene", text, strlen(text), &o, &s), RF_OK);
-    rf_scene_info i;
-    rf_scene_get_info(s, &i);
+    rf_scene *s = load_named("m.scene", text, &o);
+    rf_scene_info i = info_of(s);
     ck_assert_int_eq(i.primitives, 3);
     ck_assert_int_eq(i.meshes, 2);
     ck_assert_int_eq(i.spheres, 1);
@@ -703,8 +767,7 @@ START_TEST(test_api_fixed_arena)
     rf_load_options o;
     rf_load_options_init(&o);
     o.allocator = &a;
-    rf_scene *s = NULL;
-    ck_assert_int_eq(rf_scene_load_memory("api.scene", plane_text, strlen(plane_text), &o, &s), RF_OK);
+    rf_scene *s = load(plane_text, &o);
     rf_image *img;
     ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
     ck_assert_double_eq_tol(rf_image_pixels(img)[0], 1.1, 1e-15);
@@ -749,8 +812,7 @@ START_TEST(test_api_counting_allocator)
     ro.height = 6;
     ck_assert_int_eq(rf_render_image(s, &ro, &img, NULL), RF_OK);
     rf_image_free(img);
-    rf_renderer *r;
-    ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_OK);
+    rf_renderer *r = renderer(s, &ro);
     long calls = c.calls;
     size_t live = c.live;
     float px[8 * 6 * 3];
@@ -816,6 +878,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_null_arguments);
+    tcase_add_test(tc, test_api_null_everywhere);
     tcase_add_test(tc, test_api_broken_resolver);
     tcase_add_test(tc, test_api_region_double_is_the_image);
     tcase_add_test(tc, test_api_fingerprint);

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "cli_testlib.h"
@@ -298,6 +299,52 @@ START_TEST(test_conform_reports)
 }
 END_TEST
 
+/* [CONF-REPORT-3] A report path that cannot be written is refused before
+ * the first render: the renderer (which leaves a mark) never runs, exit
+ * 74, the reason names the path, and no temporary is left.  Before: every
+ * scene ran and the error came at the end. */
+START_TEST(test_conform_report_path_checked_first)
+{
+    char kit[128], cmd[900], mark[300], exact[512], dir[300], bad_md[300];
+    cli_run *r = malloc(sizeof *r);
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    cli_path(mark, sizeof mark, kit_root, "ran");
+    snprintf(cmd, sizeof cmd, "touch %s; %s", mark, fake(exact, sizeof exact, "exact"));
+    /* A directory at the --markdown path: not a file refray may replace. */
+    cli_path(dir, sizeof dir, kit_root, "adir");
+    ck_assert_int_eq(mkdir(dir, 0777), 0);
+    snprintf(bad_md, sizeof bad_md, "%s", dir);
+    const char *junit[] = {"conform", "--kit", kit, "--format", "pfm", "--only", "plane_point_linear", "--junit",
+                           "/nonexistent/dir/j.xml", "--cmd", cmd, NULL};
+    const char *md[] = {"conform", "--kit", kit, "--format", "pfm", "--tap", "--only", "plane_point_linear",
+                        "--markdown", bad_md, "--cmd", cmd, NULL};
+    const char *const *cases[] = {junit, md};
+    const char *names[] = {"/nonexistent/dir/j.xml", bad_md};
+    for (int i = 0; i < 2; i++) {
+        cli_refray(r, cases[i]);
+        ck_assert_msg(r->code == 74, "case %d: exit %d, stderr %s", i, r->code, r->err);
+        ck_assert_msg(strstr(r->err, names[i]) != NULL, "case %d: stderr %s", i, r->err);
+        ck_assert_msg(!cli_exists(mark), "case %d: the renderer ran before the report path was checked", i);
+        ck_assert_msg(r->out[0] == '\0', "case %d: stdout %s", i, r->out);
+    }
+    /* The good path next to a bad one: neither is written, the good one's
+     * temporary is gone. */
+    char good[300];
+    cli_path(good, sizeof good, kit_root, "good.xml");
+    const char *both[] = {"conform", "--kit", kit, "--format", "pfm", "--only", "plane_point_linear", "--junit",
+                          good, "--markdown", bad_md, "--cmd", cmd, NULL};
+    cli_refray(r, both);
+    ck_assert_int_eq(r->code, 74);
+    ck_assert(!cli_exists(mark) && !cli_exists(good));
+    char check[700];
+    snprintf(check, sizeof check, "ls -a %s | grep -q refray-tmp", kit_root);
+    ck_assert_msg(system(check) != 0, "a temporary was left in %s", kit_root);
+    ck_assert_int_eq(rmdir(dir), 0);
+    free(r);
+}
+END_TEST
+
 START_TEST(test_conform_usage_errors)
 {
     char kit[128], work[64], path[300], why[128];
@@ -493,6 +540,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_missing_input);
     tcase_add_test(tc, test_conform_reports);
     tcase_add_test(tc, test_conform_usage_errors);
+    tcase_add_test(tc, test_conform_report_path_checked_first);
     tcase_add_test(tc, test_kit_check_agrees);
     tcase_add_test(tc, test_kit_check_refuses);
 #else

@@ -5,47 +5,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "testlib.h"
-#include "io/scene_file.h"
-#include "scene/scene.h"
+#include "loadlib.h"
 
 #define INC "tests/scenes/include/"
 
-typedef struct loaded {
-    scene_model *scene;
-    int status;
-    char *messages;
-    size_t size;
-} loaded;
-
-static void load_file(loaded *l, const char *path, const scene_limits *limits)
-{
-    FILE *out = open_memstream(&l->messages, &l->size);
-    ck_assert_ptr_nonnull(out);
-    l->scene = scene_file_load(path, limits, out, 1, &l->status);
-    fclose(out);
-}
-
 static void load_text(loaded *l, const char *text, const scene_limits *limits)
 {
-    FILE *out = open_memstream(&l->messages, &l->size);
-    ck_assert_ptr_nonnull(out);
-    l->scene = scene_file_load_text("t.scene", text, strlen(text), limits, out, 1, &l->status);
-    fclose(out);
-}
-
-static void loaded_done(loaded *l)
-{
-    scene_free(l->scene);
-    free(l->messages);
-}
-
-static const char *first_line(loaded *l)
-{
-    char *nl = strchr(l->messages, '\n');
-    if (nl)
-        *nl = '\0';
-    return l->messages;
+    load_as(l, "t.scene", text, limits, 1);
 }
 
 /* [LANG-INCLUDE-1] a path is relative to the directory of the file that

@@ -203,6 +203,277 @@ START_TEST(test_no_include_circle)
 }
 END_TEST
 
+/*
+ * Circles of calls between modules.  A module is a .c file with the header
+ * of the same name ("cli/cli_tiles.c" and "cli/cli_tiles.h"); module A
+ * uses module B when A's .c calls a function that B's .c defines, through
+ * whichever header declares it (the include circles of files are
+ * test_no_include_circle's).  No module may come back to itself that way:
+ * files that call each other in a circle share a part that belongs in a
+ * module below them all.
+ */
+enum { MAX_DEFS = 8192, DEF_LEN = 64 };
+
+typedef struct module_graph {
+    int count;
+    char name[MAX_FILES][NAME_LEN];            /* "cli/cli_tiles" */
+    unsigned char uses[MAX_FILES][MAX_FILES];
+    char why[MAX_FILES][MAX_FILES][DEF_LEN];   /* the first name called */
+    int def_count;
+    char def_name[MAX_DEFS][DEF_LEN];
+    int def_module[MAX_DEFS];
+} module_graph;
+
+/* Modules that are known to call each other and are being untied on
+ * another branch; a circle made of these alone is not reported. */
+static const char *const KNOWN_CIRCLE[] = {"render/intersect", "render/intersect_quadric", "render/intersect_torus",
+                                           NULL};
+
+static int module_of(module_graph *g, const char *path)
+{
+    size_t n = strlen(path) - 2;   /* without ".c" or ".h" */
+    for (int i = 0; i < g->count; i++)
+        if (strlen(g->name[i]) == n && strncmp(g->name[i], path, n) == 0)
+            return i;
+    ck_assert_int_lt(g->count, MAX_FILES);
+    snprintf(g->name[g->count], NAME_LEN, "%.*s", (int)n, path);
+    return g->count++;
+}
+
+/* Blanks the comments and the string and character literals of t, so
+ * that a name in them is not read as a call; lines stay where they were. */
+static void blank_code(char *t)
+{
+    for (char *p = t; *p; p++) {
+        char *end = NULL;
+        if (p[0] == '/' && p[1] == '*') {
+            end = strstr(p + 2, "*/");
+            end = end ? end + 2 : p + strlen(p);
+        } else if (p[0] == '/' && p[1] == '/') {
+            end = p + strcspn(p, "\n");
+        } else if (*p == '"' || *p == '\'') {
+            for (end = p + 1; *end && *end != *p && *end != '\n'; end++)
+                end += end[0] == '\\' && end[1] != '\0';
+            end += *end == *p;
+        }
+        for (; end && p < end; p++)
+            *p = *p == '\n' ? '\n' : ' ';
+        if (end)
+            p--;
+    }
+}
+
+/* The text of src/path, blanked (blank_code; malloc'd). */
+static char *code_text(const char *path)
+{
+    char full[NAME_LEN + 8];
+    snprintf(full, sizeof full, "src/%s", path);
+    FILE *fp = fopen(full, "rb");
+    ck_assert_msg(fp != NULL, "cannot open %s", full);
+    ck_assert_int_eq(fseek(fp, 0, SEEK_END), 0);
+    long n = ftell(fp);
+    rewind(fp);
+    char *t = malloc((size_t)n + 1);
+    ck_assert_ptr_nonnull(t);
+    t[fread(t, 1, (size_t)n, fp)] = '\0';
+    fclose(fp);
+    blank_code(t);
+    return t;
+}
+
+static int is_name_char(char c)
+{
+    return c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+}
+
+/* The name before the '(' at paren, into out; 0 when there is none. */
+static int name_before(const char *text, const char *paren, char *out)
+{
+    const char *e = paren;
+    while (e > text && (e[-1] == ' ' || e[-1] == '\t'))
+        e--;
+    const char *b = e;
+    while (b > text && is_name_char(b[-1]))
+        b--;
+    if (b == e || (size_t)(e - b) >= DEF_LEN || (*b >= '0' && *b <= '9'))
+        return 0;
+    snprintf(out, DEF_LEN, "%.*s", (int)(e - b), b);
+    return 1;
+}
+
+/* The functions that the blanked text of a .c file defines with external
+ * linkage: a line that starts a declaration in column 0 (not static, not a
+ * preprocessor line) whose first parenthesis closes right before a '{'. */
+static void read_definitions(module_graph *g, int module, const char *text)
+{
+    for (const char *line = text; *line; line += strcspn(line, "\n"), line += *line == '\n') {
+        if (!is_name_char(*line) || strncmp(line, "static", 6) == 0 || strncmp(line, "typedef", 7) == 0)
+            continue;
+        const char *paren = line + strcspn(line, "(;{=\n");
+        if (*paren != '(')
+            continue;
+        const char *p = paren;
+        for (int depth = 0; *p; p++) {
+            depth += (*p == '(') - (*p == ')');
+            if (depth == 0)
+                break;
+        }
+        if (!*p)
+            continue;
+        for (p++; *p == ' ' || *p == '\t' || *p == '\n';)
+            p++;
+        char name[DEF_LEN];
+        if (*p != '{' || !name_before(line, paren, name))
+            continue;
+        ck_assert_int_lt(g->def_count, MAX_DEFS);
+        memcpy(g->def_name[g->def_count], name, DEF_LEN);
+        g->def_module[g->def_count++] = module;
+    }
+}
+
+static void use(module_graph *g, int from, int to, const char *why)
+{
+    if (from == to || g->uses[from][to])
+        return;
+    g->uses[from][to] = 1;
+    snprintf(g->why[from][to], DEF_LEN, "%s", why);
+}
+
+/* Every name followed by '(' in the blanked text of a .c file that another
+ * module defines. */
+static void read_calls(module_graph *g, int module, const char *text)
+{
+    for (const char *p = strchr(text, '('); p; p = strchr(p + 1, '(')) {
+        char name[DEF_LEN];
+        if (!name_before(text, p, name))
+            continue;
+        for (int d = 0; d < g->def_count; d++)
+            if (strcmp(g->def_name[d], name) == 0)
+                use(g, module, g->def_module[d], name);
+    }
+}
+
+static void build_module_graph(const tree *t, module_graph *g)
+{
+    char *texts[MAX_FILES] = {NULL};
+    memset(g, 0, sizeof *g);
+    for (int i = 0; i < t->count; i++) {
+        int m = module_of(g, t->files[i].path);
+        const char *path = t->files[i].path;
+        if (path[strlen(path) - 1] == 'c') {
+            texts[i] = code_text(path);
+            read_definitions(g, m, texts[i]);
+        }
+    }
+    for (int i = 0; i < t->count; i++) {
+        if (texts[i])
+            read_calls(g, module_of(g, t->files[i].path), texts[i]);
+        free(texts[i]);
+    }
+}
+
+static int known(const char *module)
+{
+    for (int i = 0; KNOWN_CIRCLE[i]; i++)
+        if (strcmp(KNOWN_CIRCLE[i], module) == 0)
+            return 1;
+    return 0;
+}
+
+/* Depth-first from at over the modules; on a circle (one not all of
+ * KNOWN_CIRCLE) its path "a -(name)-> b ..." is written into trail. */
+static int find_module_cycle(const module_graph *g, int at, int *state, int *stack, int depth, char *trail,
+                             size_t trail_len)
+{
+    state[at] = 1;
+    stack[depth] = at;
+    for (int to = 0; to < g->count; to++) {
+        if (!g->uses[at][to] || state[to] == 2)
+            continue;
+        if (state[to] == 1) {
+            int from = depth, all_known = 1;
+            while (stack[from] != to)
+                from--;
+            for (int k = from; k <= depth; k++)
+                all_known &= known(g->name[stack[k]]);
+            if (all_known)
+                continue;
+            for (int k = from; k <= depth; k++) {
+                int next = k < depth ? stack[k + 1] : to;
+                size_t used = strlen(trail);
+                snprintf(trail + used, trail_len - used, " %s -(%s)->", g->name[stack[k]], g->why[stack[k]][next]);
+            }
+            size_t used = strlen(trail);
+            snprintf(trail + used, trail_len - used, " %s", g->name[to]);
+            return 1;
+        }
+        if (find_module_cycle(g, to, state, stack, depth + 1, trail, trail_len))
+            return 1;
+    }
+    state[at] = 2;
+    return 0;
+}
+
+static int module_circle(const module_graph *g, char *trail, size_t trail_len)
+{
+    static int state[MAX_FILES], stack[MAX_FILES];
+    memset(state, 0, sizeof state);
+    trail[0] = '\0';
+    for (int i = 0; i < g->count; i++)
+        if (state[i] == 0 && find_module_cycle(g, i, state, stack, 0, trail, trail_len))
+            return 1;
+    return 0;
+}
+
+START_TEST(test_no_module_circle)
+{
+    static tree t;
+    static module_graph g;
+    char trail[4096];
+    scan_tree(&t);
+    build_module_graph(&t, &g);
+    ck_assert_int_gt(g.def_count, 500);
+    ck_assert_msg(!module_circle(&g, trail, sizeof trail), "modules in a circle:%s", trail);
+}
+END_TEST
+
+/* The module reader on made-up code: definitions with their parameters
+ * on two lines are found, static ones and prototypes are not, and a call
+ * in a comment or a string is no call; the circle finder sees a circle of
+ * calls and lets one of KNOWN_CIRCLE alone pass. */
+START_TEST(test_module_reader_sees_calls)
+{
+    static module_graph g;
+    memset(&g, 0, sizeof g);
+    int a = module_of(&g, "base/a.c"), b = module_of(&g, "base/b.c");
+    ck_assert_int_eq(module_of(&g, "base/a.h"), a);
+    char text_a[] = "int a_one(int x,\n          int y)\n{\n    return b_two(x) /* a_one(y) */;\n}\n"
+                    "static int hidden(void)\n{\n    return 0;\n}\nint a_proto(void);\n";
+    char text_b[] = "int b_two(int x)\n{\n    puts(\"a_one(1)\");\n    return x;\n}\n";
+    blank_code(text_a);
+    blank_code(text_b);
+    read_definitions(&g, a, text_a);
+    read_definitions(&g, b, text_b);
+    ck_assert_int_eq(g.def_count, 2);
+    ck_assert_str_eq(g.def_name[0], "a_one");
+    ck_assert_str_eq(g.def_name[1], "b_two");
+    read_calls(&g, a, text_a);
+    read_calls(&g, b, text_b);
+    ck_assert(g.uses[a][b] && !g.uses[b][a]);
+    char trail[512];
+    ck_assert_int_eq(module_circle(&g, trail, sizeof trail), 0);
+    use(&g, b, a, "a_one");
+    ck_assert_int_eq(module_circle(&g, trail, sizeof trail), 1);
+    ck_assert_msg(strstr(trail, "base/a -(b_two)-> base/b -(a_one)-> base/a") != NULL, "%s", trail);
+    memset(&g, 0, sizeof g);
+    a = module_of(&g, "render/intersect.c");
+    b = module_of(&g, "render/intersect_torus.c");
+    use(&g, a, b, "x");
+    use(&g, b, a, "y");
+    ck_assert_int_eq(module_circle(&g, trail, sizeof trail), 0);
+}
+END_TEST
+
 /* The test's own reading, on a file made to break each rule. */
 START_TEST(test_reader_sees_includes)
 {
@@ -335,6 +606,8 @@ Suite *suite_layers(void)
     tcase_add_test(tc, test_no_include_runs_up);
     tcase_add_test(tc, test_no_include_circle);
     tcase_add_test(tc, test_cycle_finder_sees_circle);
+    tcase_add_test(tc, test_no_module_circle);
+    tcase_add_test(tc, test_module_reader_sees_calls);
     tcase_add_test(tc, test_includes_written_plainly);
     tcase_add_test(tc, test_public_header_standard_only);
     suite_add_tcase(s, tc);

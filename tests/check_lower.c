@@ -7,42 +7,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "testlib.h"
-#include "io/scene_file.h"
-#include "scene/scene.h"
-
-typedef struct loaded {
-    scene_model *scene;
-    int status;
-    char *messages;        /* every diagnostic printed */
-    size_t size;
-} loaded;
-
-static void load_as(loaded *l, const char *path, const char *text, const scene_limits *limits, int warnings)
-{
-    FILE *out = open_memstream(&l->messages, &l->size);
-    ck_assert_ptr_nonnull(out);
-    l->scene = scene_file_load_text(path, text, strlen(text), limits, out, warnings, &l->status);
-    fclose(out);
-}
+#include "loadlib.h"
 
 static void load(loaded *l, const char *text)
 {
     load_as(l, "t.scene", text, NULL, 1);
-}
-
-static void loaded_done(loaded *l)
-{
-    scene_free(l->scene);
-    free(l->messages);
-}
-
-static const char *first_line(loaded *l)
-{
-    char *nl = strchr(l->messages, '\n');
-    if (nl)
-        *nl = '\0';
-    return l->messages;
 }
 
 /* Loads text that must be valid and print nothing. */

@@ -7,65 +7,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "io/diag_print.h"
-#include "testlib.h"
-#include "base/diag.h"
+#include "meshrun.h"
 #include "lang/obj.h"
-#include "base/source.h"
-
-typedef struct run {
-    source_set set;
-    diag d;
-    FILE *out;         /* NULL: diagnostics only counted */
-    char *log;
-    size_t log_size;
-    polymesh mesh;
-    int ok;
-} run;
 
 static void run_parse_len(run *r, const char *text, size_t len, long max_triangles, int logged)
 {
-    static const char scene[] = "mesh \"m.obj\"\n";
-    memset(r, 0, sizeof *r);
-    source_set_init(&r->set, NULL);
-    int root = source_set_add(&r->set, "s.scene", scene, sizeof scene - 1, src_span_none());
-    src_span from = {root, 0, 4};
-    int file = source_set_add(&r->set, "m.obj", text, len, from);
-    ck_assert_int_eq(file, 1);
-    if (logged) {
-        r->out = open_memstream(&r->log, &r->log_size);
-        ck_assert_ptr_nonnull(r->out);
-    }
-    diag_init(&r->d, &r->set, r->out ? diag_print : NULL, r->out);
-    r->ok = obj_parse(&r->set, file, &r->d, max_triangles, &r->mesh);
-    if (r->out)
-        fflush(r->out);
+    meshrun_parse(r, "m.obj", obj_parse, text, len, max_triangles, logged);
 }
 
 static void run_parse(run *r, const char *text, long max_triangles)
 {
     run_parse_len(r, text, strlen(text), max_triangles, 1);
-}
-
-static void run_free(run *r)
-{
-    if (r->out)
-        fclose(r->out);
-    free(r->log);
-    polymesh_free(&r->mesh);
-    source_set_free(&r->set);
-}
-
-/* The first line of the diagnostics, without its newline ("" if none). */
-static const char *first_line(run *r, char *buf, size_t size)
-{
-    const char *log = r->log ? r->log : "";
-    size_t n = strcspn(log, "\n");
-    if (n >= size)
-        n = size - 1;
-    memcpy(buf, log, n);
-    buf[n] = '\0';
-    return buf;
 }
 
 static void assert_triangle(const polymesh *m, int i, int a, int b, int c)

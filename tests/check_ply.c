@@ -8,61 +8,21 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "io/diag_print.h"
 #include "io/scene_file.h"
-#include "testlib.h"
-#include "base/diag.h"
+#include "meshrun.h"
 #include "lang/obj.h"
 #include "lang/ply.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
-typedef struct run {
-    source_set set;
-    diag d;
-    FILE *out;
-    char *log;
-    size_t log_size;
-    polymesh mesh;
-    int ok;
-} run;
-
 static void run_parse_len(run *r, const char *text, size_t len, long max_triangles)
 {
-    static const char scene[] = "mesh \"m.ply\"\n";
-    memset(r, 0, sizeof *r);
-    source_set_init(&r->set, NULL);
-    int root = source_set_add(&r->set, "s.scene", scene, sizeof scene - 1, src_span_none());
-    src_span from = {root, 0, 4};
-    int file = source_set_add(&r->set, "m.ply", text, len, from);
-    r->out = open_memstream(&r->log, &r->log_size);
-    ck_assert_ptr_nonnull(r->out);
-    diag_init(&r->d, &r->set, diag_print, r->out);
-    r->ok = ply_parse(&r->set, file, &r->d, max_triangles, &r->mesh);
-    fflush(r->out);
+    meshrun_parse(r, "m.ply", ply_parse, text, len, max_triangles, 1);
 }
 
 static void run_parse(run *r, const char *text)
 {
     run_parse_len(r, text, strlen(text), 1000);
-}
-
-static void run_free(run *r)
-{
-    fclose(r->out);
-    free(r->log);
-    polymesh_free(&r->mesh);
-    source_set_free(&r->set);
-}
-
-static const char *first_line(run *r, char *buf, size_t size)
-{
-    const char *log = r->log ? r->log : "";
-    size_t n = strcspn(log, "\n");
-    n = n < size ? n : size - 1;
-    memcpy(buf, log, n);
-    buf[n] = '\0';
-    return buf;
 }
 
 #define HEAD "ply\nformat ascii 1.0\n"

@@ -19,6 +19,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "memcheck.h"
 #include "testlib.h"
 #include "refray.h"
 #include "base/names.h"
@@ -143,44 +144,13 @@ START_TEST(test_load_name_comparisons_are_linear)
 }
 END_TEST
 
-/* ---- A counting allocator, through the public API ---- */
-
-typedef struct counter {
-    size_t live, peak;
-    size_t fail_after;   /* allocations fail once live would pass this (0: never) */
-} counter;
-
-typedef union header {
-    size_t size;
-    long double align;
-} header;
-
-static void *count_alloc(void *user, size_t size)
+/* Load options whose allocator a counts into c (memcheck.h). */
+static void counting_options(memcheck *c, rf_allocator *a, rf_load_options *o)
 {
-    counter *c = user;
-    if (c->fail_after && c->live + size > c->fail_after)
-        return NULL;
-    header *h = malloc(sizeof *h + size);
-    if (!h)
-        return NULL;
-    h->size = size;
-    c->live += size;
-    c->peak = c->live > c->peak ? c->live : c->peak;
-    return h + 1;
-}
-
-static void count_release(void *user, void *p, size_t size)
-{
-    counter *c = user;
-    c->live -= size;
-    free((header *)p - 1);
-}
-
-static rf_allocator counting(counter *c)
-{
-    rf_allocator a = {count_alloc, NULL, count_release, c};
-    memset(c, 0, sizeof *c);
-    return a;
+    memcheck_init(c);
+    *a = (rf_allocator){memcheck_alloc, NULL, memcheck_release, c};
+    rf_load_options_init(o);
+    o->allocator = a;
 }
 
 /* Writes dir/name: a comment line of n bytes after its '#', the path into
@@ -207,11 +177,10 @@ START_TEST(test_file_read_once_per_load)
     put_comment(dir, "big.scene", BIG, big, sizeof big);
     static const char scene[] = "for i in 1..50 { include \"big.scene\" }\nsphere { }\n";
     put(dir, "loop.scene", scene, sizeof scene - 1, path, sizeof path);
-    counter c;
-    rf_allocator a = counting(&c);
+    memcheck c;
+    rf_allocator a;
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.allocator = &a;
+    counting_options(&c, &a, &o);
     rf_scene *s;
     ck_assert_int_eq(rf_scene_load_file(path, &o, &s), RF_OK);
     rf_scene_free(s);
@@ -303,11 +272,10 @@ START_TEST(test_memory_estimate_refuses_before_allocating)
 {
     static const char text[] = "image { width 8 height 8 }\n"
                                "for i in 0..99999 { sphere { center [i, 0, 0] radius 0.4 } }\n";
-    counter c;
-    rf_allocator a = counting(&c);
+    memcheck c;
+    rf_allocator a;
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.allocator = &a;
+    counting_options(&c, &a, &o);
     o.limits.max_memory_mb = 8;
     rf_scene *s;
     ck_assert_int_eq(rf_scene_load_memory("m.scene", text, sizeof text - 1, &o, &s), RF_ERR_DATA);
@@ -720,21 +688,20 @@ START_TEST(test_exr_write_out_of_memory_is_no_memory)
 #if REFRAY_HAVE_EXR
     char dir[64], path[128], err[512];
     static const char text[] = "image { width 64 height 64 }\nsphere { }\n";
-    counter c;
-    rf_allocator a = counting(&c);
+    memcheck c;
+    rf_allocator a;
     rf_load_options o;
-    rf_load_options_init(&o);
-    o.allocator = &a;
+    counting_options(&c, &a, &o);
     rf_scene *s;
     rf_image *img;
     ck_assert_int_eq(rf_scene_load_memory("e.scene", text, sizeof text - 1, &o, &s), RF_OK);
     ck_assert_int_eq(rf_render_image(s, NULL, &img, NULL), RF_OK);
-    c.fail_after = c.live + 1;
+    c.max_live = c.live + 1;
     scratch(dir, sizeof dir);
     snprintf(path, sizeof path, "%s/out.exr", dir);
     ck_assert_int_eq(rf_image_write(img, path, NULL, NULL, err, sizeof err), RF_ERR_NO_MEMORY);
     ck_assert_int_eq(entries(dir), 0);
-    c.fail_after = 0;
+    c.max_live = 0;
     rf_image_free(img);
     rf_scene_free(s);
     rm_tree(dir);

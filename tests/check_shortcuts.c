@@ -188,7 +188,7 @@ static size_t file_bytes(const char *path, char *buf, size_t size)
     return n;
 }
 
-/* [SHADE-SHORTCUT-OFF-1] [EMBED-API-7] `refray render --no-shortcuts`
+/* [SHADE-SHORTCUT-OFF-1] [EMBED-API-10] `refray render --no-shortcuts`
  * reaches the tracer through the public API: on a lone plane under a
  * point light the shadow pass, skipped with the shortcuts, runs (one
  * shadow ray for each of the 8 x 6 x 2 x 2 camera rays, all of which meet

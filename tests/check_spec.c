@@ -138,13 +138,12 @@ static void collect_ids(const char *text, const char *prefix, id_list *l)
     }
 }
 
-/* The IDs cited by the test sources tests/check_NAME.c and the test
- * scripts tests/NAME.sh. */
-static void cited_ids(const char *prefix, id_list *l)
+/* The IDs cited by the test sources check_NAME.c and the test scripts
+ * NAME.sh of directory dir, added to l. */
+static void cited_ids_in(const char *dir_path, const char *prefix, id_list *l)
 {
-    DIR *dir = opendir(TESTS);
+    DIR *dir = opendir(dir_path);
     ck_assert_ptr_nonnull(dir);
-    l->count = 0;
     for (struct dirent *e = readdir(dir); e; e = readdir(dir)) {
         size_t n = strlen(e->d_name);
         int script = n > 3 && strcmp(e->d_name + n - 3, ".sh") == 0;
@@ -152,12 +151,20 @@ static void cited_ids(const char *prefix, id_list *l)
                         strcmp(e->d_name, "check_spec.c") == 0))
             continue;
         char path[512];
-        snprintf(path, sizeof path, "%s/%s", TESTS, e->d_name);
+        snprintf(path, sizeof path, "%s/%s", dir_path, e->d_name);
         char *text = read_text(path);
         collect_ids(text, prefix, l);
         free(text);
     }
     closedir(dir);
+}
+
+/* The IDs cited by tests/ and by the embedding examples' script. */
+static void cited_ids(const char *prefix, id_list *l)
+{
+    l->count = 0;
+    cited_ids_in(TESTS, prefix, l);
+    cited_ids_in(TESTS "/embed", prefix, l);
 }
 
 /* Every ID of spec_path with prefix is cited by a test, and every one a
@@ -199,6 +206,66 @@ START_TEST(test_spec_reliability_defines_every_cited_id)
 }
 END_TEST
 
+/* The same for the embedding guarantees (spec/embedding.md). */
+START_TEST(test_spec_embedding_defines_every_cited_id)
+{
+    check_ids("spec/embedding.md", "[EMBED-", 20);
+}
+END_TEST
+
+/* The first ID defined twice in text: a definition is the bold
+ * "**[ID]**"; NULL when none is.  id gets the ID. */
+static const char *duplicate_definition(const char *text, char *id, size_t size)
+{
+    for (const char *p = strstr(text, "**["); p; p = strstr(p + 1, "**[")) {
+        const char *end = strstr(p + 3, "]**");
+        size_t n = end ? (size_t)(end - p) + 3 : 0;
+        if (!end || n >= size || strspn(p + 3, "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-") != n - 6)
+            continue;
+        memcpy(id, p, n);
+        id[n] = '\0';
+        if (strstr(end, id))
+            return p;
+    }
+    return NULL;
+}
+
+/* No statement ID is defined twice in the spec: a citation must name one
+ * statement.  All spec/ files are read as one text, since an ID belongs to
+ * one file only. */
+START_TEST(test_spec_no_id_defined_twice)
+{
+    char id[64];
+    ck_assert_ptr_nonnull(duplicate_definition("**[A-1]** x **[B-1]** y **[A-1]**", id, sizeof id));
+    ck_assert_str_eq(id, "**[A-1]**");
+    ck_assert_ptr_null(duplicate_definition("**[A-1]** x [A-1] **[A-10]** **[B-1]**", id, sizeof id));
+    DIR *dir = opendir("spec");
+    ck_assert_ptr_nonnull(dir);
+    size_t len = 0, files = 0;
+    char *all = calloc(1, 1);
+    for (struct dirent *e = readdir(dir); e; e = readdir(dir)) {
+        size_t n = strlen(e->d_name);
+        if (n < 4 || strcmp(e->d_name + n - 3, ".md") != 0)
+            continue;
+        char path[512];
+        snprintf(path, sizeof path, "spec/%s", e->d_name);
+        char *text = read_text(path);
+        size_t add = strlen(text);
+        all = realloc(all, len + add + 2);
+        ck_assert_ptr_nonnull(all);
+        memcpy(all + len, text, add);
+        all[len + add] = '\n';
+        all[len += add + 1] = '\0';
+        free(text);
+        files++;
+    }
+    closedir(dir);
+    ck_assert_uint_ge(files, 10);
+    ck_assert_msg(duplicate_definition(all, id, sizeof id) == NULL, "%s is defined twice in spec/", id);
+    free(all);
+}
+END_TEST
+
 Suite *suite_spec(void)
 {
     Suite *s = suite_create("spec");
@@ -209,6 +276,8 @@ Suite *suite_spec(void)
     tcase_add_test(tc, test_spec_defines_every_cited_id);
     tcase_add_test(tc, test_spec_json_defines_every_cited_id);
     tcase_add_test(tc, test_spec_reliability_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_embedding_defines_every_cited_id);
+    tcase_add_test(tc, test_spec_no_id_defined_twice);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -1,6 +1,7 @@
 #!/bin/sh
 # tests/check_symbols.sh - what the library shows a host, read with nm,
-# readelf and size ([EMBED-SYM-1..4], spec/embedding.md):
+# readelf and size ([EMBED-SYM-1] [EMBED-SYM-2] [EMBED-SYM-3]
+# [EMBED-SYM-4], spec/embedding.md):
 #   1. the installed librefray.a and librefray.so define no global symbol
 #      without the rf_ / RF_ prefix, and the .so has SONAME librefray.so.ABI;
 #   2. the library holds no writable global or static data (.data, .bss,

@@ -25,17 +25,17 @@ rf_status rf_image_create(int width, int height, const rf_allocator *allocator, 
 
 int rf_image_width(const rf_image *img)
 {
-    return img->buf.width;
+    return img ? img->buf.width : 0;
 }
 
 int rf_image_height(const rf_image *img)
 {
-    return img->buf.height;
+    return img ? img->buf.height : 0;
 }
 
 double *rf_image_pixels(rf_image *img)
 {
-    return img->buf.rgb;
+    return img ? img->buf.rgb : NULL;
 }
 
 void rf_image_free(rf_image *img)
@@ -77,6 +77,8 @@ int rf_format_available(rf_format fmt)
 void rf_write_options_init(rf_write_options *o)
 {
     img_write_opts d = img_write_opts_default();
+    if (!o)
+        return;
     memset(o, 0, sizeof *o);
     o->exposure_stops = d.exposure_stops;
     o->tone = d.tone;

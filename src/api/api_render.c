@@ -8,7 +8,8 @@
 
 void rf_render_options_init(rf_render_options *o)
 {
-    memset(o, 0, sizeof *o);
+    if (o)
+        memset(o, 0, sizeof *o);
 }
 
 /* The renderer's progress hook: the caller's progress, then cancel. */
@@ -51,8 +52,10 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
 
 void rf_renderer_size(const rf_renderer *r, int *width, int *height)
 {
-    *width = r->r.stats.width;
-    *height = r->r.stats.height;
+    if (width)
+        *width = r ? r->r.stats.width : 0;
+    if (height)
+        *height = r ? r->r.stats.height : 0;
 }
 
 /* A float or a double region (one of f32, f64 set), checked first. */
@@ -88,11 +91,19 @@ rf_status rf_render_region_double(rf_renderer *r, int x0, int y0, int x1, int y1
 unsigned long long rf_renderer_fingerprint(const rf_renderer *r)
 {
     static const char version[] = RF_VERSION_STRING;
+    if (!r)
+        return 0;
     return hash_bytes(renderer_fingerprint(&r->r), version, sizeof version - 1);
 }
 
 void rf_renderer_stats(const rf_renderer *r, rf_render_stats *stats)
 {
+    if (!stats)
+        return;
+    if (!r) {
+        memset(stats, 0, sizeof *stats);
+        return;
+    }
     api_render_stats(&r->r.stats, stats);
 }
 

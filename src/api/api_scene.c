@@ -10,6 +10,8 @@
 
 void rf_load_options_init(rf_load_options *o)
 {
+    if (!o)
+        return;
     memset(o, 0, sizeof *o);
     scene_limits l = scene_default_limits();
     o->limits = api_limits_out(&l);
@@ -36,6 +38,8 @@ static void to_caller(void *user, const diag_record *r)
 void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
 {
     diag_record r;
+    if (!stream || !d)
+        return;
     r.level = d->severity == RF_SEVERITY_ERROR ? DIAG_ERROR : d->severity == RF_SEVERITY_WARNING ? DIAG_WARNING
                                                                                                  : DIAG_NOTE;
     r.path = d->file;
@@ -102,34 +106,37 @@ static void load_opts(const rf_load_options *o, scene_load_opts *out)
     out->cancel_user = o->cancel_user;
 }
 
-rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
-                               rf_scene **out)
+/* The body of both loads: root's text when root is given, else the file at
+ * path.  A NULL out, or arguments the caller found bad, is RF_ERR_USAGE
+ * (with *out NULL when there is an out). */
+static rf_status load(const scene_source *root, const char *path, int bad, const rf_load_options *o,
+                      rf_scene **out)
 {
     scene_load_opts lo;
     int status;
     if (!out)
         return RF_ERR_USAGE;
     *out = NULL;
-    if (!name || (!text && size > 0))
+    if (bad)
         return RF_ERR_USAGE;
     load_opts(o, &lo);
-    scene_source root = {name, NULL, text, size, 0};
-    *out = (rf_scene *)(void *)scene_file_load_source(&root, &lo, &status);
+    static const char *const none[] = {NULL};
+    const char *const *dirs = o && o->read_confined ? (o->read_dirs ? o->read_dirs : none) : NULL;
+    *out = (rf_scene *)(void *)(root ? scene_file_load_source(root, &lo, &status)
+                                     : scene_file_load_confined(path, &lo, dirs, &status));
     return api_status(status);
+}
+
+rf_status rf_scene_load_memory(const char *name, const char *text, size_t size, const rf_load_options *o,
+                               rf_scene **out)
+{
+    scene_source root = {name, NULL, text, size, 0};
+    return load(&root, NULL, !name || (!text && size > 0), o, out);
 }
 
 rf_status rf_scene_load_file(const char *path, const rf_load_options *o, rf_scene **out)
 {
-    scene_load_opts lo;
-    int status;
-    if (!out)
-        return RF_ERR_USAGE;
-    *out = NULL;
-    if (!path)
-        return RF_ERR_USAGE;
-    load_opts(o, &lo);
-    *out = (rf_scene *)(void *)scene_file_load_with(path, &lo, &status);
-    return api_status(status);
+    return load(NULL, path, !path, o, out);
 }
 
 void rf_scene_free(rf_scene *scene)
@@ -176,8 +183,10 @@ void rf_scene_get_info(const rf_scene *scene, rf_scene_info *info)
 rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mesh_info *info)
 {
     const scene_model *s = api_scene(scene);
+    if (!info)
+        return RF_ERR_USAGE;
     memset(info, 0, sizeof *info);
-    if (index < 0 || index >= s->mesh_count)
+    if (!s || index < 0 || index >= s->mesh_count)
         return RF_ERR_USAGE;
     const scene_mesh *m = &s->meshes[index];
     const scene_mesh_report *r = &m->report;

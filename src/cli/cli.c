@@ -39,6 +39,8 @@ static const char usage_text[] =
     "  --max-primitives N, --max-errors N, --max-ray-tree N,\n"
     "  --max-input-size BYTES, --max-memory MIB\n"
     "                             raise or lower the input limits\n"
+    "  --allow-read DIR           let include and mesh files come from DIR too\n"
+    "                             (by default only from the scene's directory tree)\n"
     "\n"
     "  refray --help | -h         this text\n"
     "  refray --version           the version\n"

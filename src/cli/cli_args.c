@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <sys/stat.h>
 #include "api/convert.h"
 #include "base/text.h"
 #include "cli/cli_args.h"
@@ -96,23 +97,24 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out)
  * checked against the limits once every option is read
  * (cli_check_sizes), so that `--width 20000 --max-width 20000` and the
  * reverse order mean the same ([REL-CLI-1]). */
-int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i)
+static int size_option(int argc, char **argv, int *i, int *width, int *height, int *samples, int *max_depth,
+                       int *light_samples)
 {
     const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (strcmp(opt, "--no-shortcuts") == 0)
+    int *field = strcmp(opt, "--width") == 0          ? width
+                 : strcmp(opt, "--height") == 0       ? height
+                 : strcmp(opt, "--samples") == 0      ? samples
+                 : strcmp(opt, "--max-depth") == 0    ? max_depth
+                 : strcmp(opt, "--light-samples") == 0 ? light_samples
+                                                       : NULL;
+    return field ? cli_int_value(argc, argv, i, LIMIT_CEILING, field) : -1;
+}
+
+int cli_render_option(render_opts *o, int argc, char **argv, int *i)
+{
+    if (strcmp(argv[*i], "--no-shortcuts") == 0)
         return o->no_shortcuts = 1;
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth, &o->light_samples);
 }
 
 /* One sizing option against its limit; 0 after the usage error. */
@@ -134,8 +136,13 @@ int cli_check_sizes(int width, int height, int samples, int light_samples, int m
     return ok ? 0 : STATUS_USAGE;
 }
 
-int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
-                        const char **input, cli_option_fn option, void *args)
+int cli_check_render_sizes(const render_opts *r, const scene_limits *lim)
+{
+    return cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth, lim);
+}
+
+int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                      cli_operand_fn operand, cli_option_fn option, void *args)
 {
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
@@ -150,9 +157,9 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
             continue;
         }
         if (argv[i][0] != '-' || !argv[i][1]) {
-            if (*input)
-                return cli_usage_error("%s: one scene at a time ('%s' and '%s')", command, *input, argv[i]);
-            *input = argv[i];
+            int status = operand(args, argv[i]);
+            if (status != 0)
+                return status;
             continue;
         }
         int r = option(args, argc, argv, &i);
@@ -161,13 +168,45 @@ int cli_parse_one_scene(const char *command, const char *help, int argc, char **
         if (r < 0)
             return cli_usage_error("%s: unknown option '%s'", command, argv[i]);
     }
-    if (!*input)
-        return cli_usage_error("%s: no scene given", command);
     return 0;
+}
+
+/* cli_parse_one_scene's arguments, for its operand and option. */
+typedef struct one_scene {
+    const char *command;
+    const char **input;
+    cli_option_fn option;
+    void *args;
+} one_scene;
+
+static int one_scene_operand(void *ctx, const char *arg)
+{
+    one_scene *o = ctx;
+    if (*o->input)
+        return cli_usage_error("%s: one scene at a time ('%s' and '%s')", o->command, *o->input, arg);
+    *o->input = arg;
+    return 0;
+}
+
+static int one_scene_option(void *ctx, int argc, char **argv, int *i)
+{
+    const one_scene *o = ctx;
+    return o->option(o->args, argc, argv, i);
+}
+
+int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                        const char **input, cli_option_fn option, void *args)
+{
+    one_scene o = {command, input, option, args};
+    int status = cli_parse_command(command, help, argc, argv, scene, one_scene_operand, one_scene_option, &o);
+    if (status == 0 && !*input)
+        return cli_usage_error("%s: no scene given", command);
+    return status;
 }
 
 void cli_scene_opts_init(cli_scene_opts *o)
 {
+    memset(o, 0, sizeof *o);
     o->limits = scene_default_limits();
     o->warnings = 1;
 }
@@ -181,6 +220,8 @@ rf_load_options cli_load_options(const cli_scene_opts *o)
     lo.diagnostic = rf_diagnostic_print;
     lo.diagnostic_user = stderr;
     lo.cancel = cli_signal_cancel;
+    lo.read_confined = 1;
+    lo.read_dirs = o->allow_read;
     return lo;
 }
 
@@ -193,7 +234,7 @@ scene_model *cli_load_scene(const cli_scene_opts *o, const char *path, int *stat
     lo.sink = diag_print;
     lo.sink_user = stderr;
     lo.cancel = cli_signal_cancel;
-    scene_model *s = scene_file_load_with(path, &lo, status);
+    scene_model *s = scene_file_load_confined(path, &lo, o->allow_read, status);
     if (*status == STATUS_CANCELLED)
         fputs("refray: interrupted\n", stderr);
     return s;
@@ -224,12 +265,34 @@ static const limit_flag limit_flags[] = {
 };
 
 
+/* --allow-read DIR: an existing directory, at most CLI_MAX_ALLOW_READ. */
+static int allow_read(cli_scene_opts *o, int argc, char **argv, int i)
+{
+    struct stat st;
+    if (i + 1 >= argc) {
+        cli_usage_error("--allow-read needs a directory");
+        return -1;
+    }
+    if (stat(argv[i + 1], &st) != 0 || !S_ISDIR(st.st_mode)) {
+        cli_usage_error("--allow-read: '%s' is not a directory", argv[i + 1]);
+        return -1;
+    }
+    if (o->allow_count == CLI_MAX_ALLOW_READ) {
+        cli_usage_error("--allow-read: at most %d directories", CLI_MAX_ALLOW_READ);
+        return -1;
+    }
+    o->allow_read[o->allow_count++] = argv[i + 1];
+    return 2;
+}
+
 int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
 {
     if (strcmp(argv[i], "-W") == 0 || strcmp(argv[i], "--no-warnings") == 0) {
         o->warnings = 0;
         return 1;
     }
+    if (strcmp(argv[i], "--allow-read") == 0)
+        return allow_read(o, argc, argv, i);
     for (size_t k = 0; k < sizeof limit_flags / sizeof limit_flags[0]; k++) {
         if (strcmp(argv[i], limit_flags[k].name) != 0)
             continue;
@@ -246,21 +309,10 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
     return 0;
 }
 
-int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i)
+int cli_view_option(verify_opts *o, int allow_light, int argc, char **argv, int *i)
 {
-    const char *opt = argv[*i];
-    (void)lim;
-    if (strcmp(opt, "--width") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->width);
-    if (strcmp(opt, "--height") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->height);
-    if (strcmp(opt, "--samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->samples);
-    if (strcmp(opt, "--max-depth") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->max_depth);
-    if (allow_light && strcmp(opt, "--light-samples") == 0)
-        return cli_int_value(argc, argv, i, LIMIT_CEILING, &o->light_samples);
-    return -1;
+    return size_option(argc, argv, i, &o->width, &o->height, &o->samples, &o->max_depth,
+                       allow_light ? &o->light_samples : NULL);
 }
 
 int cli_view_fits(const oracle_view *v, const scene_limits *lim, char *why, size_t why_size)

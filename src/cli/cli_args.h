@@ -16,16 +16,22 @@
 /* Options every scene-reading command accepts: the input limits and
  * whether warnings are shown.  Returns the number of argv entries consumed
  * at argv[i] (0 when argv[i] is not one of them, -1 on a bad value). */
+enum { CLI_MAX_ALLOW_READ = 64 };
 typedef struct cli_scene_opts {
     scene_limits limits;
     int warnings;
+    /* --allow-read DIR, in order, NULL-terminated: where include and mesh
+     * files may come from besides the scene's directory ([REL-READ-1]) */
+    const char *allow_read[CLI_MAX_ALLOW_READ + 1];
+    int allow_count;
 } cli_scene_opts;
 
 void cli_scene_opts_init(cli_scene_opts *o);
 
 /* The public API's load options for o: its limits and warnings, the
- * diagnostics printed to stderr, files from the file system, stopped by
- * a signal (cli_signal_cancel). */
+ * diagnostics printed to stderr, files from the file system confined to
+ * the scene's directory and --allow-read's, stopped by a signal
+ * (cli_signal_cancel).  The result points into o. */
 rf_load_options cli_load_options(const cli_scene_opts *o);
 
 /* Loads the scene file path the same way through the library's own
@@ -44,13 +50,15 @@ int cli_int_value(int argc, char **argv, int *i, long hi, int *out);
 
 /* The options that size a render (--width --height --samples --max-depth
  * --light-samples) and --no-shortcuts into o; 1 consumed, 0 error, -1 not
- * one.  The sizes are checked against lim only by cli_check_sizes, after
- * every option. */
-int cli_render_option(render_opts *o, const scene_limits *lim, int argc, char **argv, int *i);
+ * one.  The sizes are checked against the limits only by cli_check_sizes,
+ * after every option. */
+int cli_render_option(render_opts *o, int argc, char **argv, int *i);
 
 /* The sizing options given (0: not given) against the limits: 0, or
  * STATUS_USAGE after the error naming the flag that raises the limit. */
 int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
+/* cli_check_sizes of a render's options. */
+int cli_check_render_sizes(const render_opts *r, const scene_limits *lim);
 
 /* The options of an image file (--linear --exr-float --exposure
  * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */
@@ -67,11 +75,23 @@ int cli_check_output_dir(const char *path);
  * already reported, -1 not one of its options. */
 typedef int (*cli_option_fn)(void *args, int argc, char **argv, int *i);
 
+/* What a command does with an argument that is not an option (a scene or
+ * a file): 0, or STATUS_USAGE after the error was printed. */
+typedef int (*cli_operand_fn)(void *args, const char *arg);
+
 /*
- * The argument loop of a command that reads one scene: --help (prints help,
- * returns -1), the shared scene options, one SCENE into *input, and the
- * command's own options through option.  Returns 0 to go on, -1 after help,
- * or STATUS_USAGE after the error was printed.
+ * The argument loop of a command: --help (prints help, returns -1), the
+ * shared scene options into scene, every operand ("-" included) through
+ * operand, and the command's own options through option (an unknown one
+ * is reported here).  Returns 0 to go on, -1 after help, or STATUS_USAGE
+ * after the error was printed.
+ */
+int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
+                      cli_operand_fn operand, cli_option_fn option, void *args);
+
+/*
+ * The argument loop of a command that reads one scene: cli_parse_command
+ * with one SCENE into *input (a second one, or none, is an error).
  */
 int cli_parse_one_scene(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,
                         const char **input, cli_option_fn option, void *args);
@@ -102,7 +122,7 @@ int cli_usage_error(const char *fmt, ...)
  * value consumed, *i moved onto it), 0 after printing a usage error, -1
  * when argv[*i] is not one of them.
  */
-int cli_view_option(verify_opts *o, const scene_limits *lim, int allow_light, int argc, char **argv, int *i);
+int cli_view_option(verify_opts *o, int allow_light, int argc, char **argv, int *i);
 
 /* 1 when view v (the scene's size with the overrides) is within
  * lim->max_pixels; else 0 with the reason in why.  The scene's own size is

@@ -21,7 +21,7 @@
 #include <unistd.h>
 #include "base/status.h"
 #include "cli/cli_args.h"
-#include "cli/cli_tiles.h"
+#include "cli/cli_checkpoint.h"
 #include "io/atomic.h"
 #include "io/fileio.h"
 #include "io/filewrite.h"

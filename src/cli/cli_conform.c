@@ -199,30 +199,53 @@ static int select_scenes(const conform_args *a, const manifest *m, const manifes
     return 0;
 }
 
-typedef struct report_file {
-    const conform_report *rep;
-    int (*write)(FILE *fp, const conform_report *rep);
-} report_file;
+/* The report files, --junit then --markdown: fp NULL when not asked. */
+enum { REPORT_FILES = 2 };
 
-static int fill_report(FILE *fp, void *ctx)
+/* [CONF-REPORT-3] Each report file's temporary is made beside it before
+ * the first render, so a path that cannot be written fails at once, not
+ * after every scene has run.  STATUS_OK, or the writer's status after the
+ * message (nothing left open). */
+static int open_reports(const conform_args *a, file_out out[REPORT_FILES])
 {
-    const report_file *f = ctx;
-    return f->write(fp, f->rep);
-}
-
-/* --junit and --markdown, each atomically; STATUS_OK or STATUS_IO. */
-static int write_reports(const conform_args *a, const conform_report *rep)
-{
-    const char *paths[2] = {a->junit, a->markdown};
-    report_file files[2] = {{rep, conform_junit_write}, {rep, conform_markdown_write}};
-    for (int k = 0; k < 2; k++) {
+    const char *paths[REPORT_FILES] = {a->junit, a->markdown};
+    memset(out, 0, REPORT_FILES * sizeof *out);
+    for (int k = 0; k < REPORT_FILES; k++) {
         char why[600];
-        if (paths[k] && file_write_atomic(paths[k], fill_report, &files[k], why, sizeof why) != 0) {
+        int status = paths[k] ? file_out_open(&out[k], paths[k], NULL, why, sizeof why) : STATUS_OK;
+        if (status != STATUS_OK) {
             cli_error("conform: %s", why);
-            return STATUS_IO;
+            for (int j = 0; j < k; j++)
+                if (out[j].fp)
+                    file_out_abort(&out[j]);
+            memset(out, 0, REPORT_FILES * sizeof *out);
+            return status;
         }
     }
-    return 0;
+    return STATUS_OK;
+}
+
+/* Fills and renames the report files (rep NULL: abandons them, leaving
+ * every path as it was).  STATUS_OK or STATUS_IO. */
+static int close_reports(file_out out[REPORT_FILES], const conform_report *rep)
+{
+    int (*const write[REPORT_FILES])(FILE *, const conform_report *) = {conform_junit_write, conform_markdown_write};
+    int status = STATUS_OK;
+    for (int k = 0; k < REPORT_FILES; k++) {
+        char why[600];
+        if (!out[k].fp)
+            continue;
+        if (!rep || status != STATUS_OK || write[k](out[k].fp, rep) != 0) {
+            if (rep && status == STATUS_OK)
+                cli_error("conform: cannot write '%s': write error", out[k].path);
+            file_out_abort(&out[k]);
+            status = rep ? STATUS_IO : status;
+        } else if (file_out_commit(&out[k], why, sizeof why) != STATUS_OK) {
+            cli_error("conform: %s", why);
+            status = STATUS_IO;
+        }
+    }
+    return status;
 }
 
 /* Runs the scenes, streaming the table or TAP; returns how many ran. */
@@ -267,6 +290,11 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
     conform_result *results = calloc((size_t)m->scene_count + 1, sizeof *results);
     int count = 0, status = scenes && results ? select_scenes(a, m, scenes, &count) : STATUS_NO_MEMORY;
     const char *tmp = getenv("TMPDIR");
+    file_out reports[REPORT_FILES];
+    if (status == 0)
+        status = open_reports(a, reports);
+    else
+        memset(reports, 0, sizeof reports);
     conform_run run = {kit_dir, a->cmd, a->format, a->adjust, a->timeout, a->keep,
                        tmp && tmp[0] == '/' ? tmp : "/tmp", cli_signal_flag()};
     double start = render_clock();
@@ -284,10 +312,11 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
         else if (!a->json && !a->tap)
             conform_text_summary(stdout, &rep);
         if (status == 0)
-            status = write_reports(a, &rep);
+            status = close_reports(reports, &rep);
         if (status == 0)
             status = verdict_status(&rep);
     }
+    close_reports(reports, NULL);
     free(scenes);
     free(results);
     return status;

@@ -34,30 +34,29 @@ typedef struct kit_args {
     int count, quiet;
 } kit_args;
 
+static int kit_operand(void *args, const char *arg)
+{
+    kit_args *a = args;
+    a->scenes[a->count++] = arg;
+    return 0;
+}
+
+static int kit_option(void *args, int argc, char **argv, int *i)
+{
+    kit_args *a = args;
+    const char *opt = argv[*i];
+    if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0)
+        return cli_take_value(argc, argv, i, &a->output);
+    if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0)
+        return a->quiet = 1;
+    return -1;
+}
+
 static int parse_args(kit_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        const char *opt = argv[i];
-        if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
-            fputs(kit_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return STATUS_USAGE;
-        if (used > 0) {
-            i += used - 1;
-        } else if (strcmp(opt, "-o") == 0 || strcmp(opt, "--output") == 0) {
-            if (!cli_take_value(argc, argv, &i, &a->output))
-                return STATUS_USAGE;
-        } else if (strcmp(opt, "-q") == 0 || strcmp(opt, "--quiet") == 0) {
-            a->quiet = 1;
-        } else if (opt[0] == '-' && opt[1]) {
-            return cli_usage_error("kit: unknown option '%s'", opt);
-        } else {
-            a->scenes[a->count++] = opt;
-        }
-    }
+    int status = cli_parse_command("kit", kit_help, argc, argv, &a->scene, kit_operand, kit_option, a);
+    if (status != 0)
+        return status;
     if (!a->output)
         return cli_usage_error("kit: no directory given (-o DIR)");
     return 0;

@@ -45,7 +45,7 @@ static int oracle_option(void *args, int argc, char **argv, int *i)
         return cli_take_value(argc, argv, i, &a->output);
     if (strcmp(opt, "--mask") == 0)
         return cli_take_value(argc, argv, i, &a->mask);
-    return cli_view_option(&a->view, &a->scene.limits, 0, argc, argv, i);
+    return cli_view_option(&a->view, 0, argc, argv, i);
 }
 
 /* 0: go on; -1: help printed; else the usage exit code. */

@@ -8,7 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 #include "api/convert.h"
-#include "cli/cli_render.h"
+#include "cli/cli_checkpoint.h"
+#include "cli/cli_render_tiles.h"
 #include "cli/cli_tiles.h"
 #include "io/pool.h"
 #include "io/tile_file.h"

@@ -67,7 +67,7 @@ static int stab_option(void *args, int argc, char **argv, int *i)
 {
     stab_args *a = args;
     const char *opt = argv[*i], *v;
-    int sized = cli_render_option(&a->render, &a->scene.limits, argc, argv, i);
+    int sized = cli_render_option(&a->render, argc, argv, i);
     if (sized >= 0)
         return sized;
     if (strcmp(opt, "--threshold") == 0)
@@ -89,9 +89,7 @@ static int parse_args(stab_args *a, int argc, char **argv)
     int status = cli_parse_one_scene("stability", stability_help, argc, argv, &a->scene, &a->input, stab_option, a);
     if (status != 0)
         return status;
-    const render_opts *r = &a->render;
-    if ((status = cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth,
-                                  &a->scene.limits)) != 0)
+    if ((status = cli_check_render_sizes(&a->render, &a->scene.limits)) != 0)
         return status;
     if (!(a->threshold > 0))
         return cli_usage_error("stability: --threshold must be > 0");

@@ -15,6 +15,7 @@
 #include "cli/cli_progress.h"
 #include "cli/cli_signal.h"
 #include "cli/cli_args.h"
+#include "cli/cli_checkpoint.h"
 #include "cli/cli_tiles.h"
 #include "io/pool.h"
 #include "render/render.h"
@@ -32,21 +33,6 @@ typedef struct tiles_run {
     int stats_seen;
     char why[400];       /* a callback's reason for stopping the run */
 } tiles_run;
-
-int cli_tiles_band_count(int rows, int jobs)
-{
-    long n = 4L * jobs;
-    if (n < 64)
-        n = 64;
-    return n > rows ? rows : (int)n;
-}
-
-tile_rect cli_tiles_band(const cli_tiles *t, int b)
-{
-    tile_rect r = t->target.region;
-    tile_band(t->target.region.y0, t->target.region.y1, t->bands, b, &r.y0, &r.y1);
-    return r;
-}
 
 static size_t region_width(const cli_tiles *t)
 {

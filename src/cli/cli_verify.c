@@ -56,8 +56,9 @@ typedef struct verify_args {
 
 
 /* 1: consumed, 0: error (reported), -1: not a verify option. */
-static int verify_option(verify_args *a, int argc, char **argv, int *i)
+static int verify_option(void *args, int argc, char **argv, int *i)
 {
+    verify_args *a = args;
     const char *opt = argv[*i];
     if (strcmp(opt, "--json") == 0)
         return a->json = 1;
@@ -75,7 +76,7 @@ static int verify_option(verify_args *a, int argc, char **argv, int *i)
         a->jobs = jobs ? (int)jobs : pool_cpu_count();
         return 1;
     }
-    return cli_view_option(&a->view, &a->scene.limits, 1, argc, argv, i);
+    return cli_view_option(&a->view, 1, argc, argv, i);
 }
 
 /* The sweep is parsed after every option, so that a limit given after
@@ -101,31 +102,17 @@ static int finish_args(verify_args *a)
     return 0;
 }
 
+static int verify_operand(void *args, const char *arg)
+{
+    verify_args *a = args;
+    a->paths[a->path_count++] = arg;
+    return 0;
+}
+
 static int parse_args(verify_args *a, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            fputs(verify_help, stdout);
-            return -1;
-        }
-        int used = cli_scene_opt(&a->scene, argc, argv, i);
-        if (used < 0)
-            return STATUS_USAGE;
-        if (used > 0) {
-            i += used - 1;
-            continue;
-        }
-        if (argv[i][0] != '-' || !argv[i][1]) {
-            a->paths[a->path_count++] = argv[i];
-            continue;
-        }
-        int r = verify_option(a, argc, argv, &i);
-        if (r == 0)
-            return STATUS_USAGE;
-        if (r < 0)
-            return cli_usage_error("verify: unknown option '%s'", argv[i]);
-    }
-    return finish_args(a);
+    int status = cli_parse_command("verify", verify_help, argc, argv, &a->scene, verify_operand, verify_option, a);
+    return status != 0 ? status : finish_args(a);
 }
 
 /* ---- The table ---- */

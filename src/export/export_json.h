@@ -16,7 +16,7 @@
 
 typedef struct export_json_opts {
     const char *source;     /* the scene's path, written as "source"; NULL: null */
-    const char *generator;  /* written as format.generator (e.g. "refray 0.1.0"); NULL: left out */
+    const char *generator;  /* written as format.generator (e.g. "refray 0.2.0"); NULL: left out */
     /* Non-NULL: each mesh goes to an OBJ file instead of inline arrays.  Its
      * "file" member is mesh_dir/NAME.obj, a path relative to the JSON
      * file's directory (as the loader resolves it; absolute when mesh_dir

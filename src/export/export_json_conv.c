@@ -43,6 +43,13 @@ static json_t *material(export_json_build *b)
     return m;
 }
 
+/* The loader checks a document's constants against scene.h's copies. */
+typedef char same_key_constants[RENDER_PIXEL_SALT == SCENE_JSON_PIXEL_SALT && TRACE_KEY_MIRROR == SCENE_JSON_KEY_MIRROR &&
+                                        TRACE_KEY_REFRACT == SCENE_JSON_KEY_TRANSMITTED &&
+                                        TRACE_KEY_LIGHT == SCENE_JSON_KEY_LIGHT
+                                    ? 1
+                                    : -1];
+
 static json_t *constants(export_json_build *b)
 {
     json_t *c = json_object();

@@ -14,30 +14,6 @@
 /* How many sample points a light's worked example lists. */
 enum { EXAMPLE_POINTS = 16 };
 
-void export_json_set(export_json_build *b, json_t *obj, const char *key, json_t *v)
-{
-    if (json_object_set_new(obj, key, v) != 0)
-        b->failed = 1;
-}
-
-void export_json_append(export_json_build *b, json_t *array, json_t *v)
-{
-    if (json_array_append_new(array, v) != 0)
-        b->failed = 1;
-}
-
-json_t *export_json_vec3(vec3 v)
-{
-    return json_pack("[fff]", (double)v.x, (double)v.y, (double)v.z);
-}
-
-json_t *export_json_hex(unsigned long long x)
-{
-    char buf[24];
-    snprintf(buf, sizeof buf, "0x%llx", x);
-    return json_string(buf);
-}
-
 static void set_vec(export_json_build *b, json_t *obj, const char *key, vec3 v)
 {
     export_json_set(b, obj, key, export_json_vec3(v));

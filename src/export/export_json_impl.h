@@ -1,30 +1,17 @@
 /*
  * export_json_impl.h - the parts of the JSON export (export_json.h), for
- * its own files only: the document of the model (export_json_doc.c), the
- * conventions header (export_json_conv.c), meshes (export_json_mesh.c) and
- * the printer (export_json_print.c).  JSON=1 builds only.
+ * its own files only: the builder's helpers (export_json_build.h), the
+ * document of the model (export_json_doc.c), the conventions header
+ * (export_json_conv.c), meshes (export_json_mesh.c) and the printer
+ * (export_json_print.c).  JSON=1 builds only.
  */
 #ifndef REFRAY_EXPORT_JSON_IMPL_H
 #define REFRAY_EXPORT_JSON_IMPL_H
 
 #ifdef REFRAY_HAVE_JSON
 
-#include <jansson.h>
 #include "export/export_json.h"
-
-/* A document being built: one flag for every allocation that failed, so
- * the builders need no error path of their own. */
-typedef struct export_json_build {
-    int failed;
-} export_json_build;
-
-/* obj[key] = v (v's reference taken; NULL v or obj marks a failure). */
-void export_json_set(export_json_build *b, json_t *obj, const char *key, json_t *v);
-void export_json_append(export_json_build *b, json_t *array, json_t *v);
-json_t *export_json_vec3(vec3 v);
-/* A 64-bit constant as "0x..." (JSON numbers do not carry 64 bits exactly
- * in most readers). */
-json_t *export_json_hex(unsigned long long x);
+#include "export/export_json_build.h"
 
 /* The header of conventions (spec/json.md, "conventions"). */
 json_t *export_json_conventions(export_json_build *b);

@@ -418,14 +418,6 @@ static void put_comment_text(FILE *fp, const char *text)
         fputc(*c < 0x20 || *c == 0x7f ? '?' : *c, fp);
 }
 
-int pov_render_size(const scene_model *s, int *width, int *height)
-{
-    int k = s->image.samples;
-    *width = s->image.width * k;
-    *height = s->image.height * k;
-    return k;
-}
-
 static void write_header(FILE *fp, const scene_model *s, const pov_opts *o, const pov_notes *n)
 {
     int w, h, k = pov_render_size(s, &w, &h);

@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 #include <stdio.h>
+#include "export/export_pov_far.h"
 #include "scene/scene.h"
 
 enum { POV_NOTE_MAX = 24, POV_NOTE_LEN = 320 };
@@ -95,10 +96,5 @@ int pov_export_write(const scene_model *s, const pov_opts *o, FILE *fp, pov_note
  */
 int pov_export_file(const scene_model *s, const pov_opts *o, const char *path, pov_notes *notes, char *err,
                     size_t errlen);
-
-/* The size POV-Ray must render: k times the scene's image for a k x k
- * pixel grid (whose sub-pixel centres are then POV-Ray's pixel centres).
- * Returns k. */
-int pov_render_size(const scene_model *s, int *width, int *height);
 
 #endif

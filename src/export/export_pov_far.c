@@ -8,10 +8,17 @@
  * can meet.
  */
 #include <math.h>
-#include "export/export_pov.h"
 #include "export/export_pov_far.h"
 #include "render/camera.h"
 #include "render/intersect.h"
+
+int pov_render_size(const scene_model *s, int *width, int *height)
+{
+    int k = s->image.samples;
+    *width = s->image.width * k;
+    *height = s->image.height * k;
+    return k;
+}
 
 typedef struct extent {
     vec3 lo, hi;

@@ -19,6 +19,11 @@
 /* POV-Ray's MAX_DISTANCE (source/backend/configbackend.h). */
 #define POV_MAX_DISTANCE 1e7
 
+/* The size POV-Ray must render: k times the scene's image for a k x k
+ * pixel grid (whose sub-pixel centres are then POV-Ray's pixel centres).
+ * Returns k. */
+int pov_render_size(const scene_model *s, int *width, int *height);
+
 /* Centre and radius of a ball holding every camera ray's origin, the
  * positional lights and every bounded primitive (planes are left out). */
 typedef struct pov_bounds {

@@ -63,9 +63,14 @@ img_read_opts img_read_opts_default(void)
     return o;
 }
 
+long img_max_pixels(const img_read_opts *o)
+{
+    return o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS;
+}
+
 int img_check_header(long width, long height, const img_read_opts *o, char *err, size_t errlen)
 {
-    long max = o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS;
+    long max = img_max_pixels(o);
     if (width < 1 || height < 1 || width > INT_MAX || height > INT_MAX)
         return img_error(err, errlen, STATUS_DATA, "bad image size %ldx%ld in the header", width, height);
     /* A size expected (a mask for a given image) is judged first: it is

@@ -101,6 +101,10 @@ typedef struct img_read_opts {
 /* IMG_DEFAULT_MAX_PIXELS, any size, the whole image. */
 img_read_opts img_read_opts_default(void);
 
+/* The pixels an image header may claim under o: o->max_pixels, or
+ * IMG_DEFAULT_MAX_PIXELS when o is NULL or sets none. */
+long img_max_pixels(const img_read_opts *o);
+
 /* A header's width x height against o: STATUS_OK, or STATUS_DATA with the
  * reason ("the image is 16384x16384, over --max-pixels 67108864", "the
  * image is 9x9, not the 8x8 expected") in err. */

@@ -568,7 +568,7 @@ static int tile_header(exr_const_context_t ctx, const img_read_opts *o, tile_inf
     info->region.x1 = dw.max.x + 1;
     info->region.y1 = dw.max.y + 1;
     char why[200];
-    if (!tile_info_valid(info, o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS, why, sizeof why))
+    if (!tile_info_valid(info, img_max_pixels(o), why, sizeof why))
         return img_error(err, errlen, STATUS_DATA, "a refray tile with a bad header: %s", why);
     t->width = info->region.x1 - info->region.x0;
     t->height = info->region.y1 - info->region.y0;

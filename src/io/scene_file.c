@@ -27,6 +27,11 @@ void scene_file_reader_init(scene_file_reader *f, long max_bytes, const mem *m)
 
 void scene_file_reader_free(scene_file_reader *f)
 {
+    for (int i = 0; i < f->root_count; i++)
+        mem_free_string(&f->mem, f->roots[i]);
+    mem_free(&f->mem, f->roots, (size_t)(f->root_count + 1) * sizeof *f->roots);
+    f->roots = NULL;
+    f->root_count = 0;
     name_index_free(&f->index);
     for (int i = 0; i < f->delivered_count; i++)
         mem_free_string(&f->mem, f->delivered[i]);
@@ -76,6 +81,77 @@ static char *identity_of(const mem *m, const char *path)
     return mem_strdup(m, realpath(path, resolved) ? resolved : path);
 }
 
+/* The real path of path, or, when it does not exist, its directory's real
+ * path joined with its last name; NULL when neither resolves (or out of
+ * memory: *oom set). */
+static char *real_or_parent(const mem *m, const char *path, int *oom)
+{
+    char resolved[PATH_MAX];
+    if (realpath(path, resolved))
+        return mem_strdup(m, resolved);
+    char *dir = file_dirname(m, path), *joined = NULL;
+    if (!dir) {
+        *oom = 1;
+        return NULL;
+    }
+    const char *slash = strrchr(path, '/');
+    if (realpath(dir, resolved) && !(joined = file_join(m, resolved, slash ? slash + 1 : path)))
+        *oom = 1;
+    mem_free_string(m, dir);
+    return joined;
+}
+
+int scene_file_reader_confine(scene_file_reader *f, const char *scene_path, const char *const *dirs)
+{
+    int n = 1, oom = 0;
+    for (int i = 0; dirs && dirs[i]; i++)
+        n++;
+    f->roots = mem_calloc(&f->mem, (size_t)n + 1, sizeof *f->roots);
+    if (!f->roots)
+        return STATUS_NO_MEMORY;
+    char resolved[PATH_MAX], *dir = file_dirname(&f->mem, scene_path);
+    if (!dir)
+        return STATUS_NO_MEMORY;
+    for (int i = 0; i < n && !oom; i++) {
+        const char *d = i == 0 ? dir : dirs[i - 1];
+        if (realpath(d, resolved) && !(f->roots[f->root_count++] = mem_strdup(&f->mem, resolved)))
+            oom = 1;
+    }
+    mem_free_string(&f->mem, dir);
+    return oom ? STATUS_NO_MEMORY : STATUS_OK;
+}
+
+/* Whether resolved_path lies in root's tree (root itself included). */
+static int within(const char *resolved_path, const char *root)
+{
+    size_t n = strlen(root);
+    if (n == 1 && root[0] == '/')
+        return resolved_path[0] == '/';
+    return strncmp(resolved_path, root, n) == 0 && (resolved_path[n] == '/' || resolved_path[n] == '\0');
+}
+
+/* [REL-READ-1] STATUS_OK when path may be read under f's confinement,
+ * else STATUS_DATA with the reason (or STATUS_NO_MEMORY). */
+static int may_read(scene_file_reader *f, const char *name, const char *path, char *why, size_t why_size)
+{
+    int oom = 0;
+    char *resolved_path = f->roots ? real_or_parent(&f->mem, path, &oom) : NULL;
+    if (!f->roots || oom || !resolved_path) {
+        /* Neither it nor its directory exists: reading it fails anyway. */
+        mem_free_string(&f->mem, resolved_path);
+        return oom ? STATUS_NO_MEMORY : STATUS_OK;
+    }
+    int ok = 0;
+    for (int i = 0; i < f->root_count && !ok; i++)
+        ok = within(resolved_path, f->roots[i]);
+    if (!ok)
+        snprintf(why, why_size, "cannot read '%s': its real path '%s' is outside the directories this load may "
+                 "read (the scene's own, '%s', and %d given with --allow-read); allow another with --allow-read DIR",
+                 name, resolved_path, f->root_count > 0 ? f->roots[0] : "?", f->root_count > 0 ? f->root_count - 1 : 0);
+    mem_free_string(&f->mem, resolved_path);
+    return ok ? STATUS_OK : STATUS_DATA;
+}
+
 static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
 {
     scene_file_reader *f = user;
@@ -96,7 +172,12 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
         return STATUS_OK;
     }
     size_t len = 0;
-    int status = file_read_all(path, f->max_bytes, &f->mem, &text, &len, why, why_size);
+    int status = may_read(f, name, path, why, why_size);
+    if (status != STATUS_OK) {
+        release(f, out);
+        return status;
+    }
+    status = file_read_all(path, f->max_bytes, &f->mem, &text, &len, why, why_size);
     out->text = text;
     out->len = len;
     if (status == STATUS_OK && accept_known && !remember(f, out->identity))
@@ -161,6 +242,12 @@ static scene_model *load_root(const char *path, const char *text, size_t len, co
 
 scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status)
 {
+    return scene_file_load_confined(path, o, NULL, status);
+}
+
+scene_model *scene_file_load_confined(const char *path, const scene_load_opts *o, const char *const *read_dirs,
+                                      int *status)
+{
     scene_load_opts opts;
     if (o)
         opts = *o;
@@ -174,7 +261,11 @@ scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, in
     char why[512], *text = NULL;
     size_t len = 0;
     scene_model *s = NULL;
-    *status = file_read_all(path, opts.limits.max_file_bytes, &m, &text, &len, why, sizeof why);
+    *status = read_dirs ? scene_file_reader_confine(&files, path, read_dirs) : STATUS_OK;
+    if (*status == STATUS_OK)
+        *status = file_read_all(path, opts.limits.max_file_bytes, &m, &text, &len, why, sizeof why);
+    else
+        snprintf(why, sizeof why, "out of memory");
     if (*status != STATUS_OK)
         report(&opts, why);
     else {

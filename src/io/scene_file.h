@@ -21,11 +21,25 @@ typedef struct scene_file_reader {
     char **delivered;   /* identities given with their text so far */
     int delivered_count, delivered_cap;
     name_index index;   /* over delivered */
+    char **roots;       /* real paths of the directories files may come
+                           from ([REL-READ-1]); NULL: anywhere */
+    int root_count;
 } scene_file_reader;
 
 /* A reader for one load; must not move until scene_file_reader_free. */
 void scene_file_reader_init(scene_file_reader *f, long max_bytes, const mem *m);
 void scene_file_reader_free(scene_file_reader *f);
+
+/*
+ * Confines f to the directory tree of scene_path and of each of dirs (a
+ * NULL-terminated list; NULL: none) ([REL-READ-1]): a file is read only
+ * when its real path (every symbolic link resolved; for a file that does
+ * not exist, its directory's) lies in one of them; otherwise the fetch
+ * fails with STATUS_DATA and a reason naming the real path and the
+ * --allow-read option.  A directory that does not resolve is left out.
+ * STATUS_OK or STATUS_NO_MEMORY.
+ */
+int scene_file_reader_confine(scene_file_reader *f, const char *scene_path, const char *const *dirs);
 
 /*
  * A resolver over the file system: `name` is read relative to the
@@ -53,6 +67,12 @@ scene_model *scene_file_load_source(const scene_source *root, const scene_load_o
  * STATUS_NO_MEMORY).  Otherwise as scene_file_load_source.
  */
 scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status);
+
+/* scene_file_load_with whose file resolver (when o has none) is confined
+ * to path's directory tree and those of read_dirs (scene_file_reader_confine;
+ * read_dirs NULL: not confined). */
+scene_model *scene_file_load_confined(const char *path, const scene_load_opts *o, const char *const *read_dirs,
+                                      int *status);
 
 /*
  * The short forms the program and the tests use: the default options but

@@ -187,7 +187,7 @@ static int read_sidecar(FILE *fp, const char *path, const img_read_opts *o, tile
         return read_error(why, why_size, STATUS_DATA, path, "not a refray tile sidecar (its header is not "
                           "the five lines of spec/scaling.md)");
     if (img_check_header(t->width, t->height, o, reason, sizeof reason) != STATUS_OK ||
-        !tile_info_valid(t, o && o->max_pixels > 0 ? o->max_pixels : IMG_DEFAULT_MAX_PIXELS, reason, sizeof reason))
+        !tile_info_valid(t, img_max_pixels(o), reason, sizeof reason))
         return read_error(why, why_size, STATUS_DATA, path, reason);
     long header = ftell(fp);
     double want = (double)header + 24.0 * (double)tile_area(&t->region);

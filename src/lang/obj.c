@@ -488,12 +488,8 @@ int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     p.mesh = out;
     if (check_no_nul(&p))
         parse_file(&p);
-    if (d->errors == errors_before && out->face_count == 0)
-        diag_report(d, DIAG_ERROR, span_at(&p, 0), "mesh has no faces");
     mem_free(&out->mem, p.corner_v, (size_t)p.corner_v_cap * sizeof *p.corner_v);
     mem_free(&out->mem, p.corner_vn, (size_t)p.corner_vn_cap * sizeof *p.corner_vn);
-    if (d->errors == errors_before && !cancel_stopped(d->cancel))
-        return 1;
-    polymesh_free(out);
-    return p.out_of_memory ? -1 : 0;
+    src_span start = span_at(&p, 0);
+    return polymesh_finish(out, d, errors_before, &start, cancel_stopped(d->cancel), p.out_of_memory);
 }

@@ -754,13 +754,9 @@ int ply_parse(const source_set *sources, int file, diag *d, long max_triangles, 
     r.vertex_element = r.face_element = -1;
     if (parse_header(&r))
         parse_body(&r);
-    if (d->errors == errors_before && out->face_count == 0)
-        diag_report(d, DIAG_ERROR, r.elements[r.face_element].decl, "mesh has no faces");
     for (int k = 0; k < r.element_count; k++)
         mem_free(&out->mem, elements[k].props, (size_t)elements[k].prop_cap * sizeof *elements[k].props);
     mem_free(&out->mem, r.corners, (size_t)r.corner_cap * sizeof *r.corners);
-    if (d->errors == errors_before)
-        return 1;
-    polymesh_free(out);
-    return r.out_of_memory ? -1 : 0;
+    const src_span *faces = r.face_element >= 0 ? &elements[r.face_element].decl : NULL;
+    return polymesh_finish(out, d, errors_before, faces, 0, r.out_of_memory);
 }

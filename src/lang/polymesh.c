@@ -37,6 +37,17 @@ void polymesh_free(polymesh *m)
     m->mem = mm;
 }
 
+int polymesh_finish(polymesh *m, diag *d, int errors_before, const src_span *no_faces_at, int stopped,
+                    int out_of_memory)
+{
+    if (d->errors == errors_before && m->face_count == 0 && no_faces_at)
+        diag_report(d, DIAG_ERROR, *no_faces_at, "mesh has no faces");
+    if (d->errors == errors_before && !stopped)
+        return 1;
+    polymesh_free(m);
+    return out_of_memory ? -1 : 0;
+}
+
 void *polymesh_grow(const mem *m, void *array, int *cap, long need, size_t size, long limit)
 {
     if (need < 1)

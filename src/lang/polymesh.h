@@ -14,6 +14,7 @@
 #define REFRAY_POLYMESH_H
 
 #include <stddef.h>
+#include "base/diag.h"
 #include "base/mem.h"
 #include "base/vec.h"
 #include "lang/polygon.h"
@@ -64,6 +65,14 @@ void *polymesh_grow(const mem *m, void *array, int *cap, long need, size_t size,
 
 /* Frees everything and leaves an empty mesh; safe to call twice. */
 void polymesh_free(polymesh *m);
+
+/* The end of a reader's parse into m (obj.h, ply.h): "mesh has no faces"
+ * at *no_faces_at when no face was read and no error reported since
+ * errors_before (NULL: the reader has reported why already).  Returns 1
+ * when no error was reported and the reader was not stopped; else frees m
+ * and returns -1 after running out of memory, 0 otherwise. */
+int polymesh_finish(polymesh *m, diag *d, int errors_before, const src_span *no_faces_at, int stopped,
+                    int out_of_memory);
 
 /* What polymesh_add_* return besides 1 (done). */
 enum {

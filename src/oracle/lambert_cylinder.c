@@ -29,23 +29,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
     return quadric_family_accepts(v, PRIM_CYLINDER, "cylinder", c, r, 0, FAMILY, why, n);
 }
 
-static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
-{
-    oracle_frustum f = oracle_frustum_of(&v->scene->prims[0]);
-    oracle_ray ray = oracle_view_ray(v, x, y);
-    double s;
-    vec3 nrm;
-    oracle_chord_kind kind = oracle_line_frustum(&f, ray.origin, ray.dir, &s, &nrm);
-    if (kind == ORACLE_CHORD_GRAZE)
-        return ORACLE_AMBIGUOUS;
-    if (kind == ORACLE_CHORD_MISS) {
-        *out = v->scene->image.background;
-        return ORACLE_EXACT;
-    }
-    return quadric_family_shade(v, vec_add(ray.origin, vec_scale(ray.dir, s)), nrm, ray.dir, NULL, NULL, out);
-}
-
 const oracle_family oracle_lambert_cylinder = {
     "lambert_cylinder", "Lambert cylinder with its caps, orthographic view: Kd (Ia + E max(0, N.L))", 0,
-    accepts, radiance, oracle_tolerance_exact,
+    accepts, quadric_family_frustum_radiance, oracle_tolerance_exact,
 };

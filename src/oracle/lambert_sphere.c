@@ -35,25 +35,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
            oracle_accept_ortho_in_front(s, sphere->u.sphere.center, sphere->u.sphere.radius, FAMILY, why, n);
 }
 
-static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
-{
-    const scene_model *s = v->scene;
-    vec3 p, n, toward;
-    oracle_chord_kind kind = oracle_view_sphere(v, x, y, &s->prims[0], &p, &n, &toward);
-    if (kind == ORACLE_CHORD_GRAZE)
-        return ORACLE_AMBIGUOUS;
-    if (kind == ORACLE_CHORD_MISS) {
-        *out = s->image.background;
-        return ORACLE_EXACT;
-    }
-    oracle_shading sh;
-    if (oracle_shade_direct(s, oracle_material(s, 0), p, n, toward, NULL, NULL, &sh) != ORACLE_EXACT)
-        return ORACLE_AMBIGUOUS;
-    *out = sh.body;
-    return ORACLE_EXACT;
-}
-
 const oracle_family oracle_lambert_sphere = {
     "lambert_sphere", "Lambert sphere, orthographic view: Kd (Ia + E max(0, N.L)) (slides 11, 17)", 0,
-    accepts, radiance, oracle_tolerance_exact,
+    accepts, oracle_view_lambert, oracle_tolerance_exact,
 };

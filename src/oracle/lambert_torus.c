@@ -44,13 +44,7 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     double s;
     vec3 nrm;
     oracle_chord_kind kind = oracle_line_ring(&t, ray.origin, ray.dir, &s, &nrm);
-    if (kind == ORACLE_CHORD_GRAZE)
-        return ORACLE_AMBIGUOUS;
-    if (kind == ORACLE_CHORD_MISS) {
-        *out = v->scene->image.background;
-        return ORACLE_EXACT;
-    }
-    return quadric_family_shade(v, vec_add(ray.origin, vec_scale(ray.dir, s)), nrm, ray.dir, shadow, &t, out);
+    return quadric_family_chord(v, &ray, kind, s, nrm, shadow, &t, out);
 }
 
 const oracle_family oracle_lambert_torus = {

@@ -159,6 +159,52 @@ int oracle_view_plane(const oracle_view *v, double x, double y, const scene_prim
     return 1;
 }
 
+oracle_status oracle_view_shade(const oracle_view *v, double x, double y, oracle_shading *sh, rgb *out, int *seen)
+{
+    const scene_model *s = v->scene;
+    vec3 p, n, toward;
+    int met;
+    if (s->prims[0].kind == PRIM_SPHERE) {
+        oracle_chord_kind kind = oracle_view_sphere(v, x, y, &s->prims[0], &p, &n, &toward);
+        met = kind == ORACLE_CHORD_GRAZE ? -1 : kind == ORACLE_CHORD_HIT;
+    } else {
+        met = oracle_view_plane(v, x, y, &s->prims[0], &p, &n, &toward);
+    }
+    *seen = met > 0;
+    if (met < 0)
+        return ORACLE_AMBIGUOUS;
+    if (met == 0) {
+        *out = s->image.background;
+        return ORACLE_EXACT;
+    }
+    if (oracle_shade_direct(s, oracle_material(s, 0), p, n, toward, NULL, NULL, sh) != ORACLE_EXACT)
+        return ORACLE_AMBIGUOUS;
+    return ORACLE_EXACT;
+}
+
+oracle_status oracle_view_lambert(const oracle_view *v, double x, double y, rgb *out)
+{
+    oracle_shading sh;
+    int seen;
+    oracle_status status = oracle_view_shade(v, x, y, &sh, out, &seen);
+    if (status == ORACLE_EXACT && seen)
+        *out = sh.body;
+    return status;
+}
+
+oracle_status oracle_view_phong(const oracle_view *v, double x, double y, rgb *out)
+{
+    oracle_shading sh;
+    int seen;
+    oracle_status status = oracle_view_shade(v, x, y, &sh, out, &seen);
+    if (status != ORACLE_EXACT || !seen)
+        return status;
+    *out = vec_add(sh.body, sh.highlight);
+    if (v->max_depth > 1)
+        *out = vec_add(*out, vec_mul(oracle_material(v->scene, 0)->ks, v->scene->image.background));
+    return ORACLE_EXACT;
+}
+
 vec3 oracle_phong_sphere_peak(vec3 c, double r, vec3 l, vec3 v)
 {
     return vec_add(c, vec_scale(vec_normalize(vec_add(l, v)), r));

@@ -111,6 +111,23 @@ oracle_chord_kind oracle_view_sphere(const oracle_view *v, double x, double y, c
 int oracle_view_plane(const oracle_view *v, double x, double y, const scene_prim *plane, vec3 *p, vec3 *n,
                       vec3 *toward_viewer);
 
+/* The direct shading (oracle_shade_direct, nothing in the way) of what the
+ * view ray through (x, y) meets on the scene's one primitive, a sphere or
+ * a plane: ORACLE_EXACT with *seen 1 and *sh set, or with *seen 0 and *out
+ * the background where the ray misses it; ORACLE_AMBIGUOUS where it grazes
+ * or the shading is not exact. */
+oracle_status oracle_view_shade(const oracle_view *v, double x, double y, oracle_shading *sh, rgb *out, int *seen);
+
+/* The radiance of a matte sphere or plane alone (families lambert_sphere
+ * and plane_point): the body of oracle_view_shade's shading. */
+oracle_status oracle_view_lambert(const oracle_view *v, double x, double y, rgb *out);
+
+/* The radiance of a Phong sphere or plane alone (families phong_sphere and
+ * phong_plane): body and highlight of oracle_view_shade's shading, plus
+ * Ks times the background that the mirror direction sees when max_depth
+ * lets a reflection ray leave. */
+oracle_status oracle_view_phong(const oracle_view *v, double x, double y, rgb *out);
+
 /* Where the Phong lobe of a distant light peaks on a sphere seen along v
  * (unit, toward the viewer): N = normalize(l + v), the point c + r N. */
 vec3 oracle_phong_sphere_peak(vec3 c, double r, vec3 l, vec3 v);

@@ -33,28 +33,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
     return oracle_accept_lights(s, FAMILY, why, n) && oracle_accept_off_plane(s, &s->prims[0], FAMILY, why, n);
 }
 
-static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
-{
-    const scene_model *s = v->scene;
-    const scene_material *m = oracle_material(s, 0);
-    vec3 p, normal, toward;
-    int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
-    if (seen < 0)
-        return ORACLE_AMBIGUOUS;
-    if (seen == 0) {
-        *out = s->image.background;
-        return ORACLE_EXACT;
-    }
-    oracle_shading sh;
-    if (oracle_shade_direct(s, m, p, normal, toward, NULL, NULL, &sh) != ORACLE_EXACT)
-        return ORACLE_AMBIGUOUS;
-    *out = vec_add(sh.body, sh.highlight);
-    if (v->max_depth > 1)
-        *out = vec_add(*out, vec_mul(m->ks, s->image.background));
-    return ORACLE_EXACT;
-}
-
 const oracle_family oracle_phong_plane = {
     "phong_plane", "Phong highlight on a plane: Ks I max(0, V.R)^n, peak at the light's mirror point (slides 24-28)",
-    0, accepts, radiance, oracle_tolerance_exact,
+    0, accepts, oracle_view_phong, oracle_tolerance_exact,
 };

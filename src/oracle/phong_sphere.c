@@ -35,28 +35,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
            oracle_accept_ortho_in_front(s, sphere->u.sphere.center, sphere->u.sphere.radius, FAMILY, why, n);
 }
 
-static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
-{
-    const scene_model *s = v->scene;
-    const scene_material *m = oracle_material(s, 0);
-    vec3 p, n, toward;
-    oracle_chord_kind kind = oracle_view_sphere(v, x, y, &s->prims[0], &p, &n, &toward);
-    if (kind == ORACLE_CHORD_GRAZE)
-        return ORACLE_AMBIGUOUS;
-    if (kind == ORACLE_CHORD_MISS) {
-        *out = s->image.background;
-        return ORACLE_EXACT;
-    }
-    oracle_shading sh;
-    if (oracle_shade_direct(s, m, p, n, toward, NULL, NULL, &sh) != ORACLE_EXACT)
-        return ORACLE_AMBIGUOUS;
-    *out = vec_add(sh.body, sh.highlight);
-    if (v->max_depth > 1)
-        *out = vec_add(*out, vec_mul(m->ks, s->image.background));
-    return ORACLE_EXACT;
-}
-
 const oracle_family oracle_phong_sphere = {
     "phong_sphere", "Phong highlight on a sphere, orthographic view: Ks I max(0, V.R)^n (slides 24-28)", 0,
-    accepts, radiance, oracle_tolerance_exact,
+    accepts, oracle_view_phong, oracle_tolerance_exact,
 };

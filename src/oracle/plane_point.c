@@ -29,25 +29,7 @@ static int accepts(const oracle_view *v, char *why, size_t n)
            oracle_accept_lights(s, FAMILY, why, n) && oracle_accept_off_plane(s, &s->prims[0], FAMILY, why, n);
 }
 
-static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
-{
-    const scene_model *s = v->scene;
-    vec3 p, normal, toward;
-    int seen = oracle_view_plane(v, x, y, &s->prims[0], &p, &normal, &toward);
-    if (seen < 0)
-        return ORACLE_AMBIGUOUS;
-    if (seen == 0) {
-        *out = s->image.background;
-        return ORACLE_EXACT;
-    }
-    oracle_shading sh;
-    if (oracle_shade_direct(s, oracle_material(s, 0), p, normal, toward, NULL, NULL, &sh) != ORACLE_EXACT)
-        return ORACLE_AMBIGUOUS;
-    *out = sh.body;
-    return ORACLE_EXACT;
-}
-
 const oracle_family oracle_plane_point = {
     "plane_point", "plane under a point light: Kd (Ia + falloff(E, d) cos theta) (slides 15-18)", 0,
-    accepts, radiance, oracle_tolerance_exact,
+    accepts, oracle_view_lambert, oracle_tolerance_exact,
 };

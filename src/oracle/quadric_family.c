@@ -41,3 +41,25 @@ oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d,
     *out = sh.body;
     return ORACLE_EXACT;
 }
+
+oracle_status quadric_family_chord(const oracle_view *v, const oracle_ray *ray, oracle_chord_kind kind, double s,
+                                   vec3 n, oracle_shadow_fn shadow, const void *ctx, rgb *out)
+{
+    if (kind == ORACLE_CHORD_GRAZE)
+        return ORACLE_AMBIGUOUS;
+    if (kind == ORACLE_CHORD_MISS) {
+        *out = v->scene->image.background;
+        return ORACLE_EXACT;
+    }
+    return quadric_family_shade(v, vec_add(ray->origin, vec_scale(ray->dir, s)), n, ray->dir, shadow, ctx, out);
+}
+
+oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, double y, rgb *out)
+{
+    oracle_frustum f = oracle_frustum_of(&v->scene->prims[0]);
+    oracle_ray ray = oracle_view_ray(v, x, y);
+    double s;
+    vec3 nrm;
+    oracle_chord_kind kind = oracle_line_frustum(&f, ray.origin, ray.dir, &s, &nrm);
+    return quadric_family_chord(v, &ray, kind, s, nrm, NULL, NULL, out);
+}

@@ -23,4 +23,16 @@ int quadric_family_accepts(const oracle_view *v, scene_prim_kind kind, const cha
 oracle_status quadric_family_shade(const oracle_view *v, vec3 p, vec3 n, vec3 d, oracle_shadow_fn shadow,
                                    const void *ctx, rgb *out);
 
+/* What a view ray's meeting with the shape (kind, at distance s with
+ * normal n) shows: ORACLE_AMBIGUOUS where it grazes, the background where
+ * it misses, else quadric_family_shade at its point. */
+oracle_status quadric_family_chord(const oracle_view *v, const oracle_ray *ray, oracle_chord_kind kind, double s,
+                                   vec3 n, oracle_shadow_fn shadow, const void *ctx, rgb *out);
+
+/* The radiance of families lambert_cylinder and lambert_cone at (x, y): the
+ * view ray's first point on the closed frustum (oracle_line_frustum)
+ * shaded by quadric_family_shade, the background where it misses, and
+ * ORACLE_AMBIGUOUS where it grazes. */
+oracle_status quadric_family_frustum_radiance(const oracle_view *v, double x, double y, rgb *out);
+
 #endif

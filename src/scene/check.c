@@ -355,3 +355,25 @@ check_at check_at_fixed(const src_span *span)
     at.ctx = span;
     return at;
 }
+
+static int ends_in_range(vec3 from, vec3 to)
+{
+    vec3 d = vec_sub(to, from);
+    return vec_is_finite(from) && vec_is_finite(to) && vec_is_finite(d) && vec_length(d) > 0;
+}
+
+int lower_quadric_in_range(const scene_prim *prim)
+{
+    switch (prim->kind) {
+    case PRIM_CYLINDER:
+        return ends_in_range(prim->u.cylinder.from, prim->u.cylinder.to) && isfinite(prim->u.cylinder.radius) &&
+               prim->u.cylinder.radius > 0;
+    case PRIM_CONE:
+        return ends_in_range(prim->u.cone.from, prim->u.cone.to) && isfinite(prim->u.cone.radius[0]) &&
+               isfinite(prim->u.cone.radius[1]);
+    default:
+        return vec_is_finite(prim->u.torus.center) && fabs(vec_length(prim->u.torus.axis) - 1) < 1e-9 &&
+               isfinite(prim->u.torus.major) && prim->u.torus.minor > 0 &&
+               prim->u.torus.minor < prim->u.torus.major;
+    }
+}

@@ -35,6 +35,84 @@ static src_span syntax_span(int file, const source_file *f, const json_error_t *
     return s;
 }
 
+/* What one walk of the text counts: enough to bound jansson's tree. */
+typedef struct jread_census {
+    double numbers, strings, string_bytes, longest, literals, arrays, objects, members;
+} jread_census;
+
+/* Counts the values of text without parsing it: a string is skipped to
+ * its closing quote (escapes included), a number or a literal to its last
+ * character; a member is a ':' outside strings.  Malformed text gives some
+ * counts, and jansson refuses it afterwards. */
+static void census(const char *t, size_t len, jread_census *c)
+{
+    memset(c, 0, sizeof *c);
+    for (size_t i = 0; i < len; i++) {
+        char ch = t[i];
+        if (ch == '"') {
+            size_t j = i + 1;
+            while (j < len && t[j] != '"')
+                j += t[j] == '\\' ? 2 : 1;
+            double n = (double)((j < len ? j : len) - i - 1);
+            c->strings++;
+            c->string_bytes += n;
+            c->longest = n > c->longest ? n : c->longest;
+            i = j;
+        } else if (ch == '[' || ch == '{' || ch == ':') {
+            *(ch == '[' ? &c->arrays : ch == '{' ? &c->objects : &c->members) += 1;
+        } else if (ch == '-' || (ch >= '0' && ch <= '9')) {
+            c->numbers++;
+            while (i + 1 < len && t[i + 1] != '\0' && strchr("0123456789+-.eE", t[i + 1]))
+                i++;
+        } else if (ch >= 'a' && ch <= 'z') {
+            c->literals++;
+            while (i + 1 < len && t[i + 1] >= 'a' && t[i + 1] <= 'z')
+                i++;
+        }
+    }
+}
+
+/* An upper bound of the bytes jansson 2.14 holds at once while it parses a
+ * document of census c, glibc's 8-byte chunk headers and 16-byte rounding
+ * included (spec/reliability.md [REL-MEMORY-2] measures each term): a
+ * number 32; a string value 72 + its bytes; an array 128 (its first table
+ * of 8 slots) and 24 per element (a table of up to twice the elements,
+ * and the old one beside the new while it grows); an object 224 (its
+ * first 8 buckets) and 120 + the key's bytes per member (the pair, buckets
+ * of up to twice the members, old and new while they grow); true, false
+ * and null are shared, 0; the token buffer 3 times the longest string; 64
+ * KiB of the parser's own.  Every value but the root is an element or a
+ * member's value. */
+double jread_tree_bound(const char *text, size_t len)
+{
+    jread_census c;
+    census(text, len, &c);
+    double value_strings = c.strings > c.members ? c.strings - c.members : 0;
+    double values = c.numbers + value_strings + c.literals + c.arrays + c.objects;
+    double elements = values - c.members - 1 > 0 ? values - c.members - 1 : 0;
+    return 32 * c.numbers + 72 * value_strings + c.string_bytes + 128 * c.arrays + 24 * elements + 224 * c.objects +
+           120 * c.members + 3 * c.longest + 65536;
+}
+
+/* [REL-MEMORY-2] jansson has no streaming parser and its allocator is the
+ * process's (json_set_alloc_funcs is global), so the load's allocator and
+ * its --max-memory cannot see the tree: the bound is judged before jansson
+ * starts.  1 when it fits beside what the load holds, else 0 after the
+ * error at 1:1. */
+static int tree_fits(loader *L, int file, const source_file *f)
+{
+    double need = jread_tree_bound(f->text, f->len), budget = (double)L->limits->max_memory_mb * 1048576.0;
+    if (need + loader_memory_extra(L) <= budget)
+        return 1;
+    src_span s = {file, 0, f->len > 0 ? 1 : 0};
+    diag_report(&L->diag, DIAG_ERROR, s,
+                "parsing this JSON document would take up to %.0f MiB (jansson holds the whole document as a tree, "
+                "about 32 to 230 bytes a value), over --max-memory %ld MiB; write big meshes as OBJ or PLY files "
+                "(refray export --to json --mesh-files DIR) or raise --max-memory",
+                need / 1048576.0, L->limits->max_memory_mb);
+    return 0;
+}
+
 json_t *jread_parse(loader *L, int file)
 {
     const source_file *f = L->scene->sources.files[file];
@@ -49,6 +127,8 @@ json_t *jread_parse(loader *L, int file)
         diag_report(&L->diag, DIAG_ERROR, s, "malformed JSON: NUL byte in the text");
         return NULL;
     }
+    if (!tree_fits(L, file, f))
+        return NULL;
     /* Every number as a double (strtod of its text): JSON has one number
      * type, and an integer too large for jansson's 64-bit integers is still
      * a number. */

@@ -26,8 +26,13 @@ typedef struct jreader {
     int depth;                        /* steps of path in use: the value being read */
 } jreader;
 
+/* An upper bound of the bytes jansson holds while it parses text (its
+ * derivation in json_read.c; [REL-MEMORY-2]). */
+double jread_tree_bound(const char *text, size_t len);
+
 /* Parses the file's text; on malformed JSON reports jansson's message at
- * its position and returns NULL. */
+ * its position and returns NULL, as it does (before jansson runs) when
+ * the tree's bound would pass --max-memory ([REL-MEMORY-2]). */
 json_t *jread_parse(loader *L, int file);
 
 /* The path: push a member or an element before reading it, pop after. */
@@ -71,6 +76,11 @@ int jread_value_index(jreader *r, json_t *val, int count, const char *what, int 
 /* load_json_mesh.c: the mesh object p (its material already in proto)
  * as the scene's mesh store and one PRIM_MESH primitive. */
 int load_json_mesh(jreader *r, json_t *p, scene_prim *proto);
+
+/* load_json_derived.c: the derived members of the document root against
+ * the scene loaded and validated from its primary ones ([JSON-DERIVED-1]);
+ * 1 when every one there agrees, else 0 after the first error. */
+int load_json_derived(jreader *r, json_t *root);
 
 #endif
 #endif

@@ -10,7 +10,8 @@
  * refused when it breaks a rule.  That is what makes export -> load give
  * the same scene.  The members refray derives (conventions, features, the
  * camera's basis and samples, light sampling, to_local, a rectangle light's
- * normal) are not read: they are derived again.
+ * normal) are not read: they are derived again, and checked against the
+ * document's when it has them (load_json_derived.c, [JSON-DERIVED-1]).
  */
 #include <ctype.h>
 #include <math.h>
@@ -486,6 +487,24 @@ int loader_lower_json(loader *L, int file)
     r.L = L;
     r.file = file;
     int ok = read_scene(&r, root);
-    json_decref(root);
+    /* The tree is kept for the check of the derived members, which needs
+     * the scene validated (its features). */
+    L->json_root = root;
+    L->json_file = file;
     return ok && !stop(L);
+}
+
+int loader_json_finish(loader *L, int ok)
+{
+    json_t *root = L->json_root;
+    if (root && ok) {
+        jreader r;
+        memset(&r, 0, sizeof r);
+        r.L = L;
+        r.file = L->json_file;
+        ok = load_json_derived(&r, root);
+    }
+    json_decref(root);
+    L->json_root = NULL;
+    return ok;
 }

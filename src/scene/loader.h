@@ -52,6 +52,8 @@ typedef struct loader {
     const ast *tree;            /* statements of the file being lowered (for "defined later") */
     int out_of_memory;
     cancel_poll cancel;         /* the options' cancel, counted; diag.cancel points here */
+    void *json_root;            /* a JSON scene's parse tree (json_t), kept for loader_json_finish */
+    int json_file;              /* its text in scene->sources */
 } loader;
 
 /* Loops and includes nest at most this deep in all, counted across files
@@ -125,9 +127,6 @@ int lower_primitive(loader *L, const ast *block);
 /* Parses sources.files[file] (PLY by its name or first line, else OBJ)
  * into *pm, which must be freed after; 1, or 0 after reporting. */
 int lower_parse_mesh(loader *L, int file, polymesh *pm);
-/* Whether the transform mirrors (negative determinant): triangles then
- * swap two corners to keep their normal on the mirrored side. */
-int lower_mirrors(const xform *w);
 
 /* lower_mesh.c: the mesh read from sources.files[file] (its `file` value at
  * `at`; its text held in *held, given back here once the mesh is built)
@@ -139,6 +138,11 @@ int lower_mirrors(const xform *w);
  * Returns 1, or 0 after reporting an error. */
 int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span at, scene_prim *proto,
                const xform *w, const xform *l);
+
+/* lower_frame.c: a shape's transforms once they are read. */
+/* Whether the transform mirrors (negative determinant): triangles then
+ * swap two corners to keep their normal on the mirrored side. */
+int lower_mirrors(const xform *w);
 /* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
 void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit
@@ -149,8 +153,6 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n);
  * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
 int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim);
 void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
-/* 1 when every number of the placed shape is finite and in its domain. */
-int lower_quadric_in_range(const scene_prim *prim);
 
 /*
  * check.c: the rules of the scene model, shared by every front end.  Each
@@ -158,6 +160,9 @@ int lower_quadric_in_range(const scene_prim *prim);
  * check_span(at, field).
  */
 src_span check_span(const check_at *at, int field);
+/* 1 when every number of a placed cylinder, cone or torus is finite and in
+ * its domain. */
+int lower_quadric_in_range(const scene_prim *prim);
 /* lo <= x <= hi, an end exclusive when lo_open / hi_open; what names x. */
 int check_range(loader *L, const check_at *at, int field, const char *what, double x, double lo, int lo_open,
                 double hi, int hi_open);
@@ -257,5 +262,10 @@ int loader_read_mesh(loader *L, const char *name, src_span at, scene_source *hel
 /* load_json.c (JSON=1 builds): reads sources.files[file] as a JSON scene
  * (spec/json.md) into the scene, with the rules of check.c. */
 int loader_lower_json(loader *L, int file);
+
+/* After the load's validation (ok: it passed): checks the derived members
+ * of the JSON scene against it ([JSON-DERIVED-1]) and frees its parse
+ * tree.  Returns ok, or 0 after an error of a derived member. */
+int loader_json_finish(loader *L, int ok);
 
 #endif

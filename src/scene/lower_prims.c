@@ -57,18 +57,6 @@ static int transforms(loader *L, const props *p, xform *to_world, xform *to_loca
     return check_invert(L, &at, to_world, to_local);
 }
 
-static double determinant(const xform *a)
-{
-    const double(*m)[4] = a->m;
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-int lower_mirrors(const xform *w)
-{
-    return determinant(w) < 0;
-}
-
 static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, vec3 *out)
 {
     if (!props_vector(L, p, kw, fallback, out))
@@ -77,23 +65,6 @@ static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, 
         return 1;
     diag_report(&L->diag, DIAG_ERROR, props_value_span(p, kw), "%s must not be a zero-length vector", keyword_name(kw));
     return 0;
-}
-
-/* A normal taken through the inverse transpose, made unit.  When that is
- * impossible the raw result (zero or not finite) is kept, and in_range
- * refuses the primitive. */
-vec3 lower_transformed_normal(const xform *to_local, vec3 n)
-{
-    vec3 raw = xform_normal(to_local, n), unit;
-    return loader_unit(raw, &unit) ? unit : raw;
-}
-
-/* Keeps the local frame when the shape cannot absorb the transform. */
-void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
-{
-    prim->has_xform = 1;
-    prim->to_world = *to_world;
-    prim->to_local = *to_local;
 }
 
 static void place_sphere(scene_prim *prim, const xform *w, const xform *l)

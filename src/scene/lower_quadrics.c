@@ -1,7 +1,7 @@
 /*
  * lower_quadrics.c - the cylinder, cone and torus statements: reading their
- * properties with the defaults of spec/language.md, placing them under
- * their transforms, and the range check of the placed shape.
+ * properties with the defaults of spec/language.md and placing them under
+ * their transforms (the range check of the placed shape is in check.c).
  *
  * A similarity (rotation, mirror, uniform scale, translation) maps each of
  * them to the same kind of shape: the end centres or the centre are moved,
@@ -140,27 +140,5 @@ void lower_place_quadric(scene_prim *prim, const xform *w, const xform *l)
         prim->u.torus.axis = lower_transformed_normal(l, prim->u.torus.axis);
         prim->u.torus.major *= s;
         prim->u.torus.minor *= s;
-    }
-}
-
-static int ends_in_range(vec3 from, vec3 to)
-{
-    vec3 d = vec_sub(to, from);
-    return vec_is_finite(from) && vec_is_finite(to) && vec_is_finite(d) && vec_length(d) > 0;
-}
-
-int lower_quadric_in_range(const scene_prim *prim)
-{
-    switch (prim->kind) {
-    case PRIM_CYLINDER:
-        return ends_in_range(prim->u.cylinder.from, prim->u.cylinder.to) && isfinite(prim->u.cylinder.radius) &&
-               prim->u.cylinder.radius > 0;
-    case PRIM_CONE:
-        return ends_in_range(prim->u.cone.from, prim->u.cone.to) && isfinite(prim->u.cone.radius[0]) &&
-               isfinite(prim->u.cone.radius[1]);
-    default:
-        return vec_is_finite(prim->u.torus.center) && fabs(vec_length(prim->u.torus.axis) - 1) < 1e-9 &&
-               isfinite(prim->u.torus.major) && prim->u.torus.minor > 0 &&
-               prim->u.torus.minor < prim->u.torus.major;
     }
 }

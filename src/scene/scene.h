@@ -325,6 +325,15 @@ void scene_free(scene_model *scene);
  */
 #define SCENE_JSON_FORMAT "refray-scene"
 #define SCENE_JSON_VERSION 1
+/* The counters of the light-sampling keys a JSON scene's
+ * conventions.light_samples.constants state ([JSON-SAMPLES-1]): the
+ * renderer's RENDER_PIXEL_SALT and TRACE_KEY_*, which export_json_conv.c
+ * checks at compile time to be these; the JSON reader checks a document
+ * against them ([JSON-DERIVED-1]). */
+#define SCENE_JSON_PIXEL_SALT 0x5eedu
+#define SCENE_JSON_KEY_MIRROR 1u
+#define SCENE_JSON_KEY_TRANSMITTED 2u
+#define SCENE_JSON_KEY_LIGHT 0x100u
 scene_model *scene_load_json_source(const scene_source *root, const scene_load_opts *o, int *status);
 int scene_json_available(void);
 

@@ -73,6 +73,9 @@ static scene_model *load(const scene_source *root, const scene_load_opts *o, int
                     "(--max-input-size)", root->path, root->len, o->limits.max_input_bytes);
     else
         ok = lower_root(&L, file, root, json) && validate_scene(&L) && !cancel_stopped(&L.cancel);
+#ifdef REFRAY_HAVE_JSON
+    ok = loader_json_finish(&L, ok);
+#endif
     *status = ok ? STATUS_OK : cancel_stopped(&L.cancel) ? STATUS_CANCELLED
               : L.out_of_memory ? STATUS_NO_MEMORY : STATUS_DATA;
     if (ok)

@@ -14,49 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <refray.h>
-
-typedef struct counter {
-    size_t live, peak;
-    long calls;
-} counter;
-
-typedef union header {
-    size_t size;
-    long double align;
-} header;
-
-static void *count_alloc(void *user, size_t size)
-{
-    counter *c = user;
-    header *h = malloc(sizeof *h + size);
-    if (!h)
-        return NULL;
-    h->size = size;
-    c->calls++;
-    c->live += size;
-    c->peak = c->live > c->peak ? c->live : c->peak;
-    return h + 1;
-}
-
-static void *count_resize(void *user, void *p, size_t old_size, size_t new_size)
-{
-    counter *c = user;
-    header *h = realloc((header *)p - 1, sizeof *h + new_size);
-    if (!h)
-        return NULL;
-    h->size = new_size;
-    c->calls++;
-    c->live = c->live - old_size + new_size;
-    c->peak = c->live > c->peak ? c->live : c->peak;
-    return h + 1;
-}
-
-static void count_release(void *user, void *p, size_t size)
-{
-    counter *c = user;
-    c->live -= size;
-    free((header *)p - 1);
-}
+#include "../memcheck.h"
 
 /* Bytes held after the load, after the renderer is made (the scene and
  * everything a render needs), and at the peak of both. */
@@ -78,8 +36,9 @@ static rf_status obj_fetch(void *user, const char *from, const char *name, rf_so
 
 static held measure(const char *name, const char *text, const char *path, const char *obj)
 {
-    counter c = {0, 0, 0};
-    rf_allocator a = {count_alloc, count_resize, count_release, &c};
+    memcheck c;
+    memcheck_init(&c);
+    rf_allocator a = {memcheck_alloc, memcheck_resize, memcheck_release, &c};
     rf_load_options o;
     rf_load_options_init(&o);
     o.allocator = &a;

@@ -1,12 +1,12 @@
 /*
- * cli_render.h - what the two halves of `refray render` share: its
- * arguments, its options for the library, and the reports at a render's
- * end.  cli_render.c parses and renders an image in one piece;
- * cli_render_tiles.c renders a region or tile, on worker processes, with
- * a checkpoint (spec/scaling.md).
+ * cli_render_out.h - what the two halves of `refray render` share: its
+ * arguments, its options for the library, and the reports and the write
+ * at a render's end.  cli_render.c parses and renders an image in one
+ * piece; cli_render_tiles.c renders a region or tile, on worker processes,
+ * with a checkpoint (spec/scaling.md).
  */
-#ifndef REFRAY_CLI_RENDER_H
-#define REFRAY_CLI_RENDER_H
+#ifndef REFRAY_CLI_RENDER_OUT_H
+#define REFRAY_CLI_RENDER_OUT_H
 
 #include "cli/cli_args.h"
 #include "cli/cli_progress.h"
@@ -25,9 +25,6 @@ typedef struct render_args {
     const char *checkpoint; /* --checkpoint DIR */
     double load_seconds;  /* the scene's load, for --stats */
 } render_args;
-
-/* 1 when a needs the tile engine: a region or tile, workers, a checkpoint. */
-int cli_render_in_tiles(const render_args *a);
 
 /* The library's options for a: sizes, limits, the stop flag as cancel;
  * progress through bar when bar is not NULL. */
@@ -54,8 +51,5 @@ rf_format cli_render_stdout_format(const char *name);
 /* Writes img to a->output (or standard output), stopped by a signal
  * (a->image.cancel); prints why not; the writer's status. */
 int cli_render_write(const render_args *a, const rf_image *img, rf_write_stats *written);
-
-/* The render of a region, tile, on workers, with a checkpoint. */
-int cli_render_tiles(const render_args *a, const rf_scene *scene);
 
 #endif

@@ -1,0 +1,169 @@
+/*
+ * check_read_paths.c - where a scene's include and mesh files may come
+ * from ([REL-READ-1], spec/reliability.md): the refray program reads them
+ * only inside the scene's directory tree and --allow-read's, judged by
+ * real path; the library's file loader reads anywhere unless the host
+ * confines it.
+ *
+ * The layout, in a scratch directory W:
+ *   W/other/o.scene, W/other/m.obj       outside the scene's tree
+ *   W/sub/inner/b.scene                  inside
+ *   W/sub/inner/link.scene -> ../../other/o.scene
+ *   W/sub/NAME.scene                     the scenes run
+ */
+/* realpath is an XSI function. */
+#define _XOPEN_SOURCE 700
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "cli_testlib.h"
+#include "refray.h"
+
+static char w[64];
+
+static void put(const char *name, const char *text)
+{
+    char path[300];
+    FILE *f = fopen(cli_path(path, sizeof path, w, name), "w");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_int_eq(fputs(text, f) >= 0, 1);
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+static void layout(void)
+{
+    char cmd[400];
+    cli_scratch(w, sizeof w, "readpaths");
+    snprintf(cmd, sizeof cmd, "mkdir -p '%s/other' '%s/sub/inner' && ln -s ../../other/o.scene '%s/sub/inner/link.scene'",
+             w, w, w);
+    ck_assert_int_eq(system(cmd), 0);
+    put("other/o.scene", "sphere { center [0, 0, -5] }\n");
+    put("other/m.obj", "v 0 0 -3\nv 1 0 -3\nv 0 1 -3\nf 1 2 3\n");
+    put("sub/inner/b.scene", "sphere { center [0, 0, -5] }\n");
+    put("sub/up.scene", "include \"../other/o.scene\"\n");
+    put("sub/link.scene", "include \"inner/link.scene\"\n");
+    put("sub/mesh.scene", "image { width 4 height 3 }\nmesh { file \"../other/m.obj\" }\n");
+    put("sub/ok.scene", "image { width 4 height 3 }\ninclude \"inner/b.scene\"\ninclude \"./inner/../inner/b.scene\"\n");
+    put("sub/missing.scene", "include \"inner/none.scene\"\n");
+    char text[400];
+    snprintf(text, sizeof text, "include \"%s/other/o.scene\"\n", w);
+    put("sub/abs.scene", text);
+}
+
+static char *real_of(const char *name)
+{
+    char path[300];
+    char *real_path = realpath(cli_path(path, sizeof path, w, name), NULL);
+    ck_assert_ptr_nonnull(real_path);
+    return real_path;
+}
+
+/* [REL-READ-1] Out of the scene's tree by "..", by an absolute path, by a
+ * symbolic link inside the tree, and a mesh file: each refused (65) at its
+ * statement with the caret, naming the real path and --allow-read; with
+ * --allow-read naming the other directory, each loads. */
+START_TEST(test_read_paths_outside_refused)
+{
+    static const char *const scenes[] = {"sub/up.scene", "sub/abs.scene", "sub/link.scene", "sub/mesh.scene"};
+    static const char *const targets[] = {"other/o.scene", "other/o.scene", "other/o.scene", "other/m.obj"};
+    cli_run *r = malloc(sizeof *r);
+    layout();
+    char other[300];
+    cli_path(other, sizeof other, w, "other");
+    char *sub_real = real_of("sub");
+    for (int i = 0; i < 4; i++) {
+        char scene[300], want[700];
+        cli_path(scene, sizeof scene, w, scenes[i]);
+        const char *args[] = {"check", scene, NULL};
+        cli_refray(r, args);
+        ck_assert_msg(r->code == 65, "%s: exit %d, stderr %s", scenes[i], r->code, r->err);
+        char *target = real_of(targets[i]);
+        snprintf(want, sizeof want, "': its real path '%s' is outside the directories this load may read (the "
+                 "scene's own, '%s', and 0 given with --allow-read); allow another with --allow-read DIR\n", target,
+                 sub_real);
+        ck_assert_msg(strstr(r->err, want) != NULL, "%s: stderr %s\nwant %s", scenes[i], r->err, want);
+        ck_assert_msg(strstr(r->err, scene) == r->err && strstr(r->err, " ^~~") != NULL,
+                      "%s: %s", scenes[i], r->err);
+        free(target);
+        const char *allowed[] = {"check", scene, "--allow-read", other, NULL};
+        cli_refray(r, allowed);
+        ck_assert_msg(r->code == 0, "%s --allow-read: exit %d, stderr %s", scenes[i], r->code, r->err);
+    }
+    /* render goes through the public API's loader: the same rule. */
+    char out[300], scene[300];
+    cli_path(out, sizeof out, w, "o.pfm");
+    cli_path(scene, sizeof scene, w, "sub/mesh.scene");
+    const char *render[] = {"render", scene, "-o", out, "-q", NULL};
+    cli_refray(r, render);
+    ck_assert_int_eq(r->code, 65);
+    ck_assert(!cli_exists(out));
+    free(sub_real);
+    cli_remove(w);
+    free(r);
+}
+END_TEST
+
+/* [REL-READ-1] Inside the tree (also through "./" and ".." that stay in
+ * it) loads; a missing file inside is still "cannot open"; --allow-read
+ * takes only a directory (64). */
+START_TEST(test_read_paths_inside_and_usage)
+{
+    cli_run *r = malloc(sizeof *r);
+    layout();
+    char scene[300], file[300];
+    cli_path(scene, sizeof scene, w, "sub/ok.scene");
+    const char *ok[] = {"check", scene, NULL};
+    cli_refray(r, ok);
+    ck_assert_msg(r->code == 0, "exit %d, stderr %s", r->code, r->err);
+    cli_path(scene, sizeof scene, w, "sub/missing.scene");
+    const char *missing[] = {"check", scene, NULL};
+    cli_refray(r, missing);
+    ck_assert_int_eq(r->code, 65);
+    ck_assert_msg(strstr(r->err, "cannot open") && strstr(r->err, "No such file"), "%s", r->err);
+    cli_path(file, sizeof file, w, "other/o.scene");
+    const char *not_dir[] = {"check", scene, "--allow-read", file, NULL};
+    cli_refray(r, not_dir);
+    ck_assert_int_eq(r->code, 64);
+    ck_assert_msg(strstr(r->err, "--allow-read: '") && strstr(r->err, "' is not a directory"), "%s", r->err);
+    cli_remove(w);
+    free(r);
+}
+END_TEST
+
+/* [REL-READ-1] The library's choice is the host's: rf_scene_load_file
+ * reads outside the tree by default, and refuses with read_confined; an
+ * entry of read_dirs lets it through. */
+START_TEST(test_read_paths_library_is_the_hosts_choice)
+{
+    layout();
+    char scene[300], other[300];
+    cli_path(scene, sizeof scene, w, "sub/up.scene");
+    cli_path(other, sizeof other, w, "other");
+    rf_load_options o;
+    rf_load_options_init(&o);
+    rf_scene *s = NULL;
+    ck_assert_int_eq(rf_scene_load_file(scene, &o, &s), RF_OK);
+    rf_scene_free(s);
+    o.read_confined = 1;
+    ck_assert_int_eq(rf_scene_load_file(scene, &o, &s), RF_ERR_DATA);
+    ck_assert_ptr_null(s);
+    const char *dirs[] = {other, NULL};
+    o.read_dirs = dirs;
+    ck_assert_int_eq(rf_scene_load_file(scene, &o, &s), RF_OK);
+    rf_scene_free(s);
+    cli_remove(w);
+}
+END_TEST
+
+Suite *suite_read_paths(void)
+{
+    Suite *s = suite_create("read_paths");
+    TCase *tc = tcase_create("read_paths");
+    tcase_set_timeout(tc, 10);
+    tcase_add_test(tc, test_read_paths_outside_refused);
+    tcase_add_test(tc, test_read_paths_inside_and_usage);
+    tcase_add_test(tc, test_read_paths_library_is_the_hosts_choice);
+    suite_add_tcase(s, tc);
+    return s;
+}
