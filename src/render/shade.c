@@ -153,11 +153,9 @@ real shade_lambert(vec3 n, vec3 l)
     ensures EXACT(0 <= \result.x <= kd.x * intensity.x && 0 <= \result.y <= kd.y * intensity.y &&
                   0 <= \result.z <= kd.z * intensity.z);
     ensures EXACT(vdot(n, l) <= 0 ==> vzero(\result));
-    // admitted (spec/proofs.md, "Admitted"): a(bc) = (ab)c, which WP's
-    // simplifier flattens into a goal the provers do not close
-    admit ensures EXACT(0 < vdot(n, l) <= 1 ==>
-                  \result.x == vdot(n, l) * (intensity.x * kd.x) && \result.y == vdot(n, l) * (intensity.y * kd.y) &&
-                  \result.z == vdot(n, l) * (intensity.z * kd.z)); */
+    // [SHADE-DIFFUSE-1] in the code's order of products (CVC4's strings mode closes it)
+    ensures EXACT(0 < vdot(n, l) <= 1 ==> \result.x == kd.x * intensity.x * vdot(n, l) &&
+                  \result.y == kd.y * intensity.y * vdot(n, l) && \result.z == kd.z * intensity.z * vdot(n, l)); */
 rgb shade_diffuse(rgb kd, rgb intensity, vec3 n, vec3 l)
 {
     return vec_scale(vec_mul(kd, intensity), shade_lambert(n, l));

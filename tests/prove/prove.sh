@@ -180,7 +180,7 @@ wp_run() {
 
 # Every goal of shade.c and of the vec.h functions it uses.
 if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-shade}" != rays ]; then
-    wp_run wp z3,cvc4 "" "$src/render/shade.c" || status=1
+    wp_run wp z3,cvc4,cvc4-strings "" "$src/render/shade.c" || status=1
 fi
 
 # The hit tests (spec/proofs.md, "Hit tests"): CVC4 in its strings mode
