@@ -136,7 +136,7 @@ int check_prim_extent(loader *L, const check_at *at, const scene_prim *prim)
     extent_fault f;
     if (!prim_out(prim, &f))
         return 1;
-    report(L, check_span(at, CHECK_BLOCK), "this", scene_prim_name(prim->kind), &f);
+    report(L, at->span(at->ctx, CHECK_BLOCK), "this", scene_prim_name(prim->kind), &f);
     return 0;
 }
 
@@ -153,15 +153,15 @@ int check_camera_extent(loader *L, const check_at *at, const scene_camera *cam)
 {
     extent_fault f;
     if (coord_out(cam->eye, "eye", &f)) {
-        report(L, check_span(at, KW_EYE), "the camera", "", &f);
+        report(L, at->span(at->ctx, KW_EYE), "the camera", "", &f);
         return 0;
     }
     if (coord_out(cam->look_at, "look_at", &f)) {
-        report(L, check_span(at, KW_LOOK_AT), "the camera", "", &f);
+        report(L, at->span(at->ctx, KW_LOOK_AT), "the camera", "", &f);
         return 0;
     }
     if (cam->kind == CAMERA_ORTHOGRAPHIC && big_out(cam->width, "width", &f)) {
-        report(L, check_span(at, KW_WIDTH), "the camera", "", &f);
+        report(L, at->span(at->ctx, KW_WIDTH), "the camera", "", &f);
         return 0;
     }
     return 1;
@@ -175,22 +175,22 @@ int check_light_extent(loader *L, const check_at *at, const scene_light *light)
     case LIGHT_POINT:
         if (!coord_out(c, "position", &f))
             return 1;
-        report(L, check_span(at, KW_POSITION), "this light", "", &f);
+        report(L, at->span(at->ctx, KW_POSITION), "this light", "", &f);
         return 0;
     case LIGHT_DISK:
         if (coord_out(c, "center", &f)) {
-            report(L, check_span(at, KW_CENTER), "this light", "", &f);
+            report(L, at->span(at->ctx, KW_CENTER), "this light", "", &f);
             return 0;
         }
         if (big_out(light->radius, "radius", &f)) {
-            report(L, check_span(at, KW_RADIUS), "this light", "", &f);
+            report(L, at->span(at->ctx, KW_RADIUS), "this light", "", &f);
             return 0;
         }
         return 1;
     case LIGHT_RECTANGLE: /* its points are between its corners */
         if (coord_out(c, "corner", &f) || coord_out(vec_add(c, u), "corner", &f) ||
             coord_out(vec_add(c, v), "corner", &f) || coord_out(vec_add(vec_add(c, u), v), "corner", &f)) {
-            report(L, check_span(at, CHECK_RECT_EXTENT), "this light", "", &f);
+            report(L, at->span(at->ctx, CHECK_RECT_EXTENT), "this light", "", &f);
             return 0;
         }
         return 1;
