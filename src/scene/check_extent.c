@@ -63,8 +63,8 @@ static int big_out(double s, const char *what, extent_fault *f)
     return fabs(s) > EXTENT_MAX && size_out(s, what, f);
 }
 
-/* Ends within the extent, then the length between them (within 2^501 * 3
- * once the ends are, so vec_length is safe). */
+/* Ends within the extent, then the length between them (each component of
+ * the difference within 2^501 once the ends are: vec_length is safe). */
 static int segment_out(vec3 a, vec3 b, const char *ends, const char *length, extent_fault *f)
 {
     return coord_out(a, ends, f) || coord_out(b, ends, f) || size_out((double)vec_length(vec_sub(b, a)), length, f);
