@@ -627,9 +627,11 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(SOLO_TESTS) > $(GEN)/solo_suites.h
 	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
 
-# make prove: Frama-C's Eva and WP on the contracts of the shading formulas
-# (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: each of a set
-# of deliberate bugs makes a goal fail.  They install what they need.
+# make prove: Frama-C's Eva and WP on the contracts of the shading formulas,
+# the ray spawn functions, the camera ray and the light samples
+# (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: one deliberate
+# bug per ensures clause (tests/prove/mutants.txt) makes its goal fail.
+# They install what they need.
 PROVE_DEBS := frama-c-base why3 z3 cvc4
 .PHONY: prove prove-mutants prove-quick prove-deps
 prove-deps:
@@ -647,7 +649,8 @@ prove-mutants: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
 
 # What CI runs (seconds): Eva on the shading formulas, four helpers taken by
-# their contracts; make prove checks those too, and runs WP.
+# their contracts, and on the rays and light samples but light_concentric's
+# 11,449 boxes; make prove checks those too, and runs WP.
 prove-quick: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh quick
 

@@ -76,6 +76,30 @@ START_TEST(test_xform_invert_by_hand)
 }
 END_TEST
 
+START_TEST(test_xform_invert_identity)
+{
+    /* The identity (the shortcut for untransformed primitives) gives what
+     * the adjugate formula gives: the identity, with translations
+     * -(1 * 0 + 0 * 0 + 0 * 0) = -0; the same with a -0 off the diagonal,
+     * which takes the general path. */
+    xform id = xform_identity(), inv, minus = xform_identity(), inv2;
+    memset(&inv, 0x55, sizeof inv);
+    ck_assert(xform_invert(&id, &inv));
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            ck_assert(inv.m[i][j] == (i == j ? 1.0 : 0.0));
+            ck_assert(!signbit(inv.m[i][j]));
+        }
+        ck_assert(inv.m[i][3] == 0.0 && signbit(inv.m[i][3]));
+    }
+    minus.m[0][1] = -0.0;
+    ck_assert(xform_invert(&minus, &inv2));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            ck_assert(inv2.m[i][j] == inv.m[i][j]);
+}
+END_TEST
+
 START_TEST(test_xform_invert_refuses_singular)
 {
     xform inv = xform_identity(), keep = inv;
@@ -218,6 +242,7 @@ Suite *suite_xform(void)
     tcase_add_test(tc, test_xform_compose_matches_applying_in_turn);
     tcase_add_test(tc, test_xform_invert_round_trip);
     tcase_add_test(tc, test_xform_invert_by_hand);
+    tcase_add_test(tc, test_xform_invert_identity);
     tcase_add_test(tc, test_xform_invert_refuses_singular);
     tcase_add_test(tc, test_xform_invert_huge_and_tiny_scales);
     tcase_add_test(tc, test_xform_normal_stays_perpendicular);

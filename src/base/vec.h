@@ -212,6 +212,7 @@ static inline real vec_length_fast(vec3 a)
     ensures a.x == 0 && a.y == 0 && a.z == 0 ==> \result.x == 0 && \result.y == 0 && \result.z == 0;
     ensures DOUBLES(a.x != 0 || a.y != 0 || a.z != 0 ==>
                     \max(\abs(\result.x), \max(\abs(\result.y), \abs(\result.z))) >= 0.125);
+    ensures EXACT(!vzero(a) ==> vdot(\result, a) > 0);   // not turned round
     // admitted (spec/proofs.md, "Admitted"): |a / |a|| = 1
     admit ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1); */
 static inline vec3 vec_normalize(vec3 a)

@@ -151,11 +151,30 @@ static void scale_rows(const xform *a, xform *m, int e[3])
  * when L is singular: det M is 0, the rows are dependent to rounding
  * (SINGULAR_RATIO), or an entry of the inverse overflows.
  */
+/* Whether a is the identity to the bit (+0 off the diagonal). */
+static int exact_identity(const xform *a)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            if (a->m[i][j] != (i == j ? 1.0 : 0.0) || signbit(a->m[i][j]))
+                return 0;
+    return 1;
+}
+
 int xform_invert(const xform *a, xform *inverse)
 {
     xform r, m;
     double cof[3][3];
     int e[3];
+    /* Every untransformed primitive (each of the 100 000 spheres of a big
+     * scene) comes here with the identity: its inverse is what the steps
+     * below give for it, the identity with translations -(0 + 0 + 0) = -0. */
+    if (exact_identity(a)) {
+        *inverse = *a;
+        for (int i = 0; i < 3; i++)
+            inverse->m[i][3] = -0.0;
+        return 1;
+    }
     scale_rows(a, &m, e);
     for (int i = 0; i < 3; i++) {
         int i1 = (i + 1) % 3, i2 = (i + 2) % 3;

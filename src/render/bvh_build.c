@@ -14,8 +14,8 @@
  * BVH_MEDIAN_DEPTH, the node is halved at the object median instead, which
  * bounds the depth.  Every choice is a deterministic function of the input.
  *
- * Memory: a part costs 56 bytes while building (its padded box and
- * reference; the centroid is recomputed), the median splits' sort buffers
+ * Memory: a part costs 64 bytes while building (its padded box,
+ * reference and cost; the centroid is recomputed), the median splits' sort buffers
  * are made only when one happens, and the node array grows as needed.
  */
 #include <limits.h>
@@ -36,11 +36,14 @@
  * so a hit computed a few ulps outside its true box is still inside. */
 #define BOUNDS_PAD 0x1p-40
 
-/* A part during the build: its padded box and reference.  The build
- * permutes these in place, so each node's are contiguous. */
+/* A part during the build: its padded box, reference and intersection
+ * cost (kept here: reading it from the primitive would be a cache miss per
+ * part per level).  The build permutes these in place, so each node's are
+ * contiguous. */
 typedef struct build_item {
     vec3 lo, hi;
     bvh_ref ref;
+    real cost;
 } build_item;
 
 /* The bounds of some parts' boxes (lo, hi) and of their centroids. */
@@ -139,6 +142,7 @@ static int item_of(const scene_prim *p, int index, int part, build_item *out)
     out->hi = vec_add(hi, e);
     out->ref.prim = index;
     out->ref.part = part;
+    out->cost = p->kind == PRIM_MESH ? TRIANGLE_COST : 1.0;
     return vec_is_finite(centroid(out));
 }
 
@@ -177,10 +181,6 @@ static binning binning_of(const range *r, int n)
     return bn;
 }
 
-static real part_cost(const build_ctx *ctx, const build_item *it)
-{
-    return ctx->prims[it->ref.prim].kind == PRIM_MESH ? TRIANGLE_COST : 1.0;
-}
 
 /* One pass: every item into its bin on each binned axis.  Returns the
  * node's own cost (as a leaf). */
@@ -197,7 +197,7 @@ static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
     for (int i = begin; i < end; i++) {
         const build_item *it = &ctx->items[i];
         vec3 c = centroid(it);
-        real cost = part_cost(ctx, it);
+        real cost = it->cost;
         total += cost;
         for (int a = 0; a < 3; a++) {
             if (bn->scale[a] == 0.0)
@@ -458,7 +458,7 @@ static int classify(bvh *b, const scene_prim *prims, int count, build_item *item
 }
 
 /* The references of the built items, in their final order, written over
- * the front of the items' own array (reference i goes where item i/7
+ * the front of the items' own array (reference i goes where item i/8
  * was, already read) and the array shrunk to them: no second array at the
  * build's peak. */
 static void keep_references(build_ctx *ctx)

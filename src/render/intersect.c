@@ -44,6 +44,10 @@ static vec3 vec_with(vec3 v, int axis, real value)
 
 /* Plain comparisons rather than fmax: these run per ray and fmax is a
  * library call on x86-64; the inputs are never NaN. */
+/*@ requires !\is_NaN(v.x) && !\is_NaN(v.y) && !\is_NaN(v.z);
+    assigns \nothing;
+    ensures \result >= 0;
+    ensures EXACT(\result == vmaxabs(v)); */
 static real max_abs(vec3 v)
 {
     real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
@@ -837,18 +841,58 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
     return q;
 }
 
+/*@ // o is p moved by offset along n, to the side of toward (make prove)
+  predicate is_spawned(vec3 o, vec3 p, vec3 n, vec3 toward, mreal offset) =
+    \let s = vdot(toward, n) >= 0 ? offset : -offset;
+    o.x == p.x + s * n.x && o.y == p.y + s * n.y && o.z == p.z + s * n.z;
+*/
+
 /* How far a secondary ray is pushed off a surface: SPAWN_REL of the
- * magnitude its point's rounding is relative to, plus the floor. */
+ * magnitude its point's rounding is relative to, plus the floor.
+ * Defensive: a primitive's magnitude passes DBL_MAX (+Inf) when its data
+ * nears it (a sphere at 1e308 of radius 1e308); it is capped there, so the
+ * offset stays finite (at most 2^-42 DBL_MAX) and no other ray changes. */
+/*@ requires vfinite(point);
+    requires !\is_NaN(magnitude) && magnitude >= 0;  // isect_part_magnitude: max |data| (+Inf past DBL_MAX)
+    assigns \nothing;
+    ensures \is_finite(\result) && \result >= SPAWN_ABS && DOUBLES(\result <= 0x1p983);
+    ensures EXACT(magnitude <= DBL_MAX ==>
+                  \result == SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS); */
 static real spawn_offset(vec3 point, real magnitude)
 {
-    return SPAWN_REL * fmax(magnitude, max_abs(point)) + SPAWN_ABS;
+    real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
+    return SPAWN_REL * fmax(m, max_abs(point)) + SPAWN_ABS;
+}
+
+/* p + step without forming an infinity: a coordinate at or past 2^1023 (a
+ * hit on a plane 9e307 away) is moved by halves, which round as p + step
+ * does, and held at DBL_MAX where that passes it. */
+/*@ requires \is_finite(p) && \is_finite(step) && DOUBLES(\abs(step) <= 0x1p990);
+    assigns \nothing;
+    ensures \is_finite(\result);
+    ensures EXACT(\abs(p + step) <= 0x1p1023 ==> \result == p + step); */
+static real offset_coord(real p, real step)
+{
+    if (p < 0x1p1023 && p > -0x1p1023)
+        return p + step;
+    real h = 0.5 * p + 0.5 * step;
+    return h > 0.5 * DBL_MAX ? DBL_MAX : h < -0.5 * DBL_MAX ? -DBL_MAX : 2 * h;
 }
 
 /* The origin moved off the surface by offset to the side of toward: +n
  * when toward . n >= 0, else -n. */
+/*@ requires vfinite(point);
+    requires vfinite(normal) && vbounded(normal, 4);    // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(toward) && vbounded(toward, 0x1p1020);
+    requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);  // spawn_offset
+    assigns \nothing;
+    ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z);
+    ensures EXACT(vbounded(point, 0x1p1022) && offset <= 0x1p983 ==> is_spawned(\result, point, normal, toward, offset)); */
 static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
 {
-    return vec_madd(point, normal, vec_dot(toward, normal) >= 0.0 ? offset : -offset);
+    real s = vec_dot(toward, normal) >= 0.0 ? offset : -offset;
+    return vec_make(offset_coord(point.x, normal.x * s), offset_coord(point.y, normal.y * s),
+                    offset_coord(point.z, normal.z * s));
 }
 
 /* A shadow ray's tmin: the offset again, along the ray.  A surface closer
@@ -858,12 +902,32 @@ static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
  * "Concave corners").  Mirror and refracted rays keep tmin = 0: inside a
  * closed mirror box one that leaves a face next to an edge must still meet
  * the adjacent face, 1e-14 away. */
+/*@ requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);  // spawn_offset
+    requires vfinite(dir) && vbounded(dir, 4);  // a unit direction (add_source: L)
+    requires DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    assigns \nothing;
+    ensures \is_finite(\result) && \result >= 0;
+    ensures EXACT(vzero(dir) ==> \result == 0);
+    ensures EXACT(!vzero(dir) ==> \result * \result * vnorm2(dir) == offset * offset); */
 static real shadow_tmin(real offset, vec3 dir)
 {
     real len = vec_length(dir);
+    /*@ assert EXACT(len > 0 ==> (offset / len) * len == offset); */
     return len > 0 ? offset / len : 0;
 }
 
+/*@ requires vfinite(point);
+    requires vfinite(normal) && vbounded(normal, 4);
+    requires vfinite(dir) && vbounded(dir, 4);
+    requires shadow ==> DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);
+    assigns \nothing;
+    ensures vfinite(\result.origin);
+    ensures EXACT(vbounded(point, 0x1p1022) && offset <= 0x1p983 ==> is_spawned(\result.origin, point, normal, dir, offset));
+    ensures EXACT(veq(\result.dir, dir));
+    ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
+    ensures EXACT(!shadow ==> \result.tmin == 0);
+    ensures EXACT(shadow && !vzero(dir) ==> \result.tmin * \result.tmin * vnorm2(dir) == offset * offset); */
 static ray spawn_by(vec3 point, vec3 normal, vec3 dir, real offset, int shadow)
 {
     ray r;
@@ -874,6 +938,17 @@ static ray spawn_by(vec3 point, vec3 normal, vec3 dir, real offset, int shadow)
     return r;
 }
 
+/*@ requires vfinite(point);
+    requires vfinite(normal) && vbounded(normal, 4);
+    requires vfinite(dir) && vbounded(dir, 4);
+    requires shadow ==> DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    requires !\is_NaN(magnitude) && magnitude >= 0;
+    assigns \nothing;
+    ensures vfinite(\result.origin) && \is_finite(\result.tmin) && \result.tmin >= 0;
+    ensures EXACT(vbounded(point, 0x1p1022) && magnitude <= 0x1p1022 ==>
+                  is_spawned(\result.origin, point, normal, dir,
+                             SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS));
+    ensures EXACT(veq(\result.dir, dir) && (!shadow ==> \result.tmin == 0)); */
 static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
 {
     return spawn_by(point, normal, dir, spawn_offset(point, magnitude), shadow);
@@ -896,6 +971,14 @@ static ray spawn_to(vec3 point, vec3 normal, vec3 target, real magnitude)
     return spawn_to_by(point, normal, target, spawn_offset(point, magnitude));
 }
 
+/*@ requires vfinite(point);
+    requires vfinite(geometric_normal) && vbounded(geometric_normal, 4);
+    requires vfinite(dir) && vbounded(dir, 4);
+    assigns \nothing;
+    ensures vfinite(\result.origin);
+    ensures EXACT(vbounded(point, 0x1p1022) ==>
+                  is_spawned(\result.origin, point, geometric_normal, dir, SPAWN_REL * vmaxabs(point) + SPAWN_ABS));
+    ensures EXACT(veq(\result.dir, dir) && \result.tmin == 0); */
 ray ray_spawn(vec3 point, vec3 geometric_normal, vec3 dir)
 {
     return spawn(point, geometric_normal, dir, 0.0, 0);
@@ -1001,6 +1084,18 @@ ray ray_shadow_to(const shadow_start *st, vec3 target)
     return spawn_to_by(st->point, st->normal, target, st->offset);
 }
 
+/*@ requires \valid_read(st);
+    requires vfinite(st->point);
+    requires vfinite(st->normal) && vbounded(st->normal, 4);
+    requires \is_finite(st->offset) && st->offset > 0 && DOUBLES(st->offset <= 0x1p983);  // ray_shadow_start (spawn_offset)
+    requires vfinite(dir) && vbounded(dir, 4);  // L of add_source: -direction ([LANG-VALID-2])
+    requires DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    assigns \nothing;
+    ensures vfinite(\result.origin) && \is_finite(\result.tmin) && \result.tmin >= 0;
+    ensures EXACT(vbounded(st->point, 0x1p1022) && st->offset <= 0x1p983 ==>
+                  is_spawned(\result.origin, st->point, st->normal, dir, st->offset));
+    ensures EXACT(veq(\result.dir, dir));
+    ensures EXACT(!vzero(dir) ==> \result.tmin * \result.tmin * vnorm2(dir) == st->offset * st->offset); */
 ray ray_shadow_along(const shadow_start *st, vec3 dir)
 {
     return spawn_by(st->point, st->normal, dir, st->offset, 1);

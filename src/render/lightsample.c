@@ -8,10 +8,23 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/*
+ * Contracts (make prove, spec/proofs.md).  samples >= 1: [LANG-DIST-1]
+ * (1 .. --max-light-samples, distributed_shape) or the --light-samples of
+ * cli_check_sizes; index in 0 .. samples - 1 (add_distributed); u1, u2 in
+ * [0, 1) (sampler_uniform, base/sampler.h).
+ */
+/*@ requires 1 <= samples <= 1000000000;
+    assigns \nothing;
+    ensures \result.rows >= 1 && EXACT(\result.cols >= 1);
+    ensures EXACT(\result.rows * \result.cols == samples); */
 light_grid light_grid_for(int samples)
 {
     light_grid g;
     int rows = (int)floor(sqrt((double)samples));
+    /*@ loop invariant EXACT(rows <= \at(rows, LoopEntry));
+        loop assigns rows;
+        loop variant rows; */
     while (rows > 1 && samples % rows != 0)
         rows--;
     g.rows = rows < 1 ? 1 : rows;
@@ -19,6 +32,14 @@ light_grid light_grid_for(int samples)
     return g;
 }
 
+/*@ requires 1 <= g.rows <= 1000000000 && 1 <= g.cols <= 1000000000;
+    requires 0 <= index <= 1000000000 && EXACT(index / g.cols < g.rows);   // index < rows * cols = samples
+    requires \is_finite(u1) && 0 <= u1 < 1 && \is_finite(u2) && 0 <= u2 < 1;
+    requires \valid(s) && \valid(t) && \separated(s, t);
+    assigns *s, *t;
+    ensures \is_finite(*s) && \is_finite(*t) && *s >= 0 && *t >= 0;
+    ensures EXACT(*s < 1 && *t < 1);
+    ensures EXACT(*s == (index % g.cols + u1) / g.cols && *t == (index / g.cols + u2) / g.rows); */
 void light_cell_point(light_grid g, int index, double u1, double u2, double *s, double *t)
 {
     int row = index / g.cols, col = index % g.cols;
@@ -26,6 +47,11 @@ void light_cell_point(light_grid g, int index, double u1, double u2, double *s, 
     *t = (row + u2) / g.rows;
 }
 
+/*@ requires \is_finite(s) && 0 <= s <= 1 && \is_finite(t) && 0 <= t <= 1;  // light_cell_point
+    requires \valid(x) && \valid(y) && \separated(x, y);
+    assigns *x, *y;
+    ensures \is_finite(*x) && \is_finite(*y) && DOUBLES(-1 <= *x <= 1 && -1 <= *y <= 1);
+    ensures EXACT(s == 0.5 && t == 0.5 ==> *x == 0 && *y == 0); */
 void light_concentric(double s, double t, double *x, double *y)
 {
     double a = 2 * s - 1, b = 2 * t - 1, r, phi;

@@ -13,7 +13,8 @@
  * and POV-Ray (`+WT1 -A`, the options of make difftest), the order
  * alternating from pair to pair.  A process's CPU time is its user plus
  * system time from getrusage (threads included).  Printed per scene: the
- * median of each, the median of the pairs' ratios, refray's ray count, and
+ * median of each, the median of the pairs' ratios, both ray counts and the
+ * ratio per ray (the median ratio times POV-Ray's rays over refray's), and
  * the comparison of the last POV-Ray picture with refray's image by make
  * difftest's rule (tests/difftest/run.c): pixels over 1 step of 1/65535,
  * sorted into edge pixels (the ray tree changes within 1/8 pixel) and
@@ -245,8 +246,12 @@ static int bench_one(const options *o, const entry *e)
     double mean = mean_difference(&ours, &pov);
     img_free(&pov);
     snprintf(log, sizeof log, "%.700s/%.200s.log", o->dir, e->name);
-    printf("| %s | %dx%d, %dx%d | %ld | %ld | %.2f | %.2f | **%.2f** | %d / %d / %d, %.0f | %.2g%% | %d |\n", e->path,
-           s->image.width, s->image.height, k, k, total_rays(&st.trace), pov_rays(log), rf_s, pov_s, ratio,
+    long rf_rays = total_rays(&st.trace), pv_rays = pov_rays(log);
+    /* The ray counts are the same in every run, so the per-ray ratio is
+     * the paired median scaled by them (0 when a count is missing). */
+    double per_ray = rf_rays > 0 && pv_rays > 0 ? ratio * (double)pv_rays / (double)rf_rays : 0;
+    printf("| %s | %dx%d, %dx%d | %ld | %ld | %.2f | %.2f | **%.2f** | %.2f | %d / %d / %d, %.0f | %.2g%% | %d |\n",
+           e->path, s->image.width, s->image.height, k, k, rf_rays, pv_rays, rf_s, pov_s, ratio, per_ray,
            r.pixels - r.edge - r.interior, r.edge, r.interior, r.max_steps, 100 * mean, notes.count);
     fflush(stdout);
     failed = 0;
@@ -285,9 +290,11 @@ int main(int argc, char **argv)
     printf("CPU seconds (user + system) of the whole process, median of %d paired runs; POV-Ray 3.7 +WT1 -A.\n"
            "Rays: refray's total; POV-Ray's rays plus shadow ray tests.  Pixels: within 1 step of 1/65535 / "
            "edge / interior over it, largest difference in steps.\nMean: mean |refray - POV-Ray| over mean "
-           "POV-Ray.  Approx.: approximations the export lists (refray export --to pov).\n\n", o.runs);
-    printf("| scene | size, grid | refray rays | POV-Ray rays | refray s | POV-Ray s | refray / POV-Ray | pixels "
-           "| mean | approx. |\n|---|---|---|---|---|---|---|---|---|---|\n");
+           "POV-Ray.  Approx.: approximations the export lists (refray export --to pov).\n"
+           "Per ray: the ratio of CPU time per ray, (refray s / refray rays) / (POV-Ray s / POV-Ray rays).\n\n",
+           o.runs);
+    printf("| scene | size, grid | refray rays | POV-Ray rays | refray s | POV-Ray s | refray / POV-Ray | per ray "
+           "| pixels | mean | approx. |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (; i < argc; i++) {
         entry e;
         if (parse_entry(argv[i], &e) != 0) {

@@ -73,10 +73,12 @@ extern double nextafter(double x, double y);
 extern double hypot(double x, double y);
 
 /* tan on [0, pi/2): the double nearest pi/2 is below it, so tan stays
- * finite: at most 1.7e16.  Positive on (0, pi/2). */
-/*@ requires 0 < x < 0x1.921fb54442d18p+0;
+ * finite: at most 1.7e16.  tan(0) = 0 (F.9.1.7), positive on (0, pi/2);
+ * in exact arithmetic the bound is pi/2 (the 36 digits of REAL_PI). */
+/*@ requires 0 <= x && DOUBLES(x < 0x1.921fb54442d18p+0) && EXACT(x < 1.57079632679489661923132169163975144);
     assigns \result \from x;
-    ensures \is_finite(\result) && 0 < \result <= 0x1p54;
+    ensures \is_finite(\result) && 0 <= \result && DOUBLES(\result <= 0x1p54);
+    ensures x > 0 ==> \result > 0;
     ensures EXACT(\result == \tan(x)); */
 extern double tan(double x);
 

@@ -1,61 +1,126 @@
 #!/usr/bin/env bash
-# make prove-mutants (spec/proofs.md, "Mutants"): the contracts are not
-# vacuous.  Each mutant is one deliberate bug in one function of
-# src/render/shade.c (a copy under build/prove/mutants); WP on that function
-# must then leave at least one goal unproved.  Prints the goals each mutant
-# breaks; exits 1 if a mutant survives (every goal still proved).
+# make prove-mutants (spec/proofs.md, "Mutants"): no contract is vacuous.
+# Each line of tests/prove/mutants.txt is one deliberate bug in one
+# function (a copy of src/ under build/prove/mutants/<i>) aimed at one of
+# its ensures clauses: WP on that function alone (wp), or the Eva run named
+# (eva:<run>, on fewer boxes), must then fail that clause's goal.  Prints,
+# per mutant, the clause aimed at and every goal that fails; then, per
+# ensures clause of the files listed, the mutant that kills it, and the
+# clauses no mutant kills.  Exits 1 if a mutant misses its clause.
+#   PROVE_JOBS (mutants at once, default 2), PROVE_TIMEOUT (s a goal, 5:
+#   unmutated, the slowest takes 0.5 s),
+#   PROVE_MUTANTS (only these numbers, e.g. "3 7 12"), PROVE_KEEP_BASELINE
+#   (set: reuse the last run's list of clauses WP proves only split).
 set -u
 cd "$(dirname "$0")/../.."
-base=${PROVE_OUT:-build/prove}/mutants
-survivors=0
+out=${PROVE_OUT:-build/prove}
+base=$out/mutants
+list=tests/prove/mutants.txt
 
-# function | perl substitution on shade.c (one line, -0: may span lines) | bug
-mutants=$(cat <<'LIST'
-shade_lambert|s/(real c = vec_dot\(n, l\);\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the N.L > 0 gate removed
-shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (0) {/|the TIR test removed
-shade_refract|s/if \(!\(k >= 0\.0\)\) \{/if (!(k > 0x1p-20)) {/|TIR also for 0 <= k <= 2^-20
-shade_phong_lobe|s/(real c = vec_dot\(v, r\), rel;\n)    if \(!\(c > 0\.0\)\)\n        return 0\.0;\n/$1/|the V.R > 0 gate removed
-shade_specular|s/if \(!\(vec_dot\(n, l\) > 0\.0\)\)/if (0)/|the N.L > 0 gate removed
-shade_specular|s/vec3 r = shade_reflect_about\(l, n\);/vec3 r = l;/|the lobe taken about L, not R
-shade_falloff|s/s = d \+ d0;/s = d + d0 + 1;/|d0 counted twice
-shade_ambient|s/return vec_mul\(kd, ia\);/return vec_add(kd, ia);/|Kd + Ia for Kd Ia
-shade_diffuse|s/vec_scale\(vec_mul\(kd, intensity\), shade_lambert\(n, l\)\)/vec_scale(vec_mul(kd, intensity), vec_dot(n, l))/|N.L unclamped
-shade_face_forward|s/vec_dot\(n, v\) < 0\.0 \?/vec_dot(n, v) > 0.0 ?/|flipped the wrong way
-shade_mirror|s/vec_madd\(d, n, -2\.0 \* vec_dot\(n, d\)\)/vec_madd(d, n, -1.0 * vec_dot(n, d))/|half the normal part
-shade_reflect_about|s/vec_scale\(n, 2\.0 \* vec_dot\(n, l\)\)/vec_scale(n, vec_dot(n, l))/|half the normal part
-shade_sample_power|s/power\.y \/ samples/power.y \/ (samples + 1)/|one sample too many
-shade_critical_angle_cos|s/c = below;/c = 0.5 * below;/|steps past the critical cosine
-shade_transmit_blend|s/vec_scale\(front, 1\.0 - t\)/vec_scale(front, t)/|front weighted by t
-shade_local|s/saturating_sum\(highlight, vec_scale\(body, 1\.0 - t\)\)/saturating_sum(highlight, body)/|body not scaled by 1 - t
-shade_combine|s/vec_mul\(ks, mirrored\)/mirrored/|mirror term without Ks
-saturate1|s/return x > DBL_MAX \? DBL_MAX : x;/return x;/|no cap in shade_saturate's channel
-shade_shadow_transmission|s/return carried \* t_occluder;/return carried + t_occluder;/|sum for product
-LIST
-)
-
-i=0
-while IFS='|' read -r fn subst bug; do
-    i=$((i + 1))
+mutant() {   # i: run mutant i, write $base/<i>/result
+    local i=$1 file fn k how subst bug dir broken goal
+    IFS='|' read -r file fn k how subst bug < <(sed -n "${i}p" "$base/list")
     dir=$base/$i
     rm -rf "$dir"
     mkdir -p "$dir"
     cp -r src "$dir/src"
-    perl -0pi -e "$subst" "$dir/src/render/shade.c"
-    if cmp -s src/render/shade.c "$dir/src/render/shade.c"; then
-        echo "mutant $i ($fn): the substitution did not apply"
-        survivors=$((survivors + 1))
-        continue
+    perl -0pi -e "$subst" "$dir/src/$file"
+    # k: an ensures clause (its number), or another goal (its name's tail)
+    case $k in
+    1) goal=${fn}_ensures prop=@ensures ;;
+    [0-9]*) goal=${fn}_ensures_$k prop=@ensures ;;
+    *) goal=${fn}_$k prop= ;;
+    esac
+    if cmp -s "src/$file" "$dir/src/$file"; then
+        echo "MISSED|$i|$file|$fn|$goal|$bug|the substitution did not apply" >"$dir/result"
+        return
     fi
-    PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
-        bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
-    broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | tr '\n' ' ')
-    if [ -n "$broken" ]; then
-        echo "mutant $i killed: $fn, $bug: $broken"
+    case $how in
+    wp)
+        case $file in render/shade.c|base/vec.h) wp=shade ;; *) wp=rays ;; esac
+        # One goal a clause (fast), but split where the unmutated clause
+        # needs it to be proved (the baseline's list): else a clause the
+        # provers cannot close whole would pass for killed.
+        split=
+        [ -n "$prop" ] && grep -qx "$goal" "$base/hard" && split=-wp-split
+        [ -z "$prop" ] && split=-wp-split
+        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_WP_PROP=$prop PROVE_WP_SPLIT=$split \
+            PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
+            bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
+        broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | sed 's/_part[0-9]*$//' | sort -u | tr '\n' ' ')
+        ;;
+    eva:*)
+        run=${how#eva:}
+        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_EVA=${run}1,$run PROVE_JOBS=1 PROVE_KMIN=-4 PROVE_KMAX=4 \
+            PROVE_CONCENTRIC_M=2 bash tests/prove/prove.sh eva >"$dir/prove.log" 2>&1
+        # Eva's clauses that fail, as WP names them (by their line), and alarms
+        broken=$(awk -F'\t' -v fn="$fn" -v base="$(basename "$file")" '
+            NR == FNR { if ($1 == fn) k[$3] = $2; next }
+            $1 ~ /(^|\/)src(\/|$)/ && $6 !~ /^(Valid|Dead|Considered valid)/ {
+                if ($2 == base && $4 == fn && $5 == "postcondition" && ($3 in k)) print fn "_ensures" (k[$3] == 1 ? "" : "_" k[$3])
+                else if ($2 == base && $4 == fn || $5 == "is_nan_or_infinite") print $4 "_" $5 "@" $3
+            }' <(awk -f tests/prove/ensures.awk "$dir/src/$file" | tr ' ' '\t') "$dir"/eva_*.csv 2>/dev/null |
+            sort -u | tr '\n' ' ')
+        ;;
+    esac
+    # An alarm (the runs have none) is where Eva cannot show a double
+    # finite: it kills the clause that says the result is finite.
+    clause=$(awk -f tests/prove/ensures.awk "$dir/src/$file" | awk -v fn="$fn" -v k="$k" '$1 == fn && $2 == k {print $3}')
+    if [[ $how == eva:* && " $broken " == *_is_nan_or_infinite@* ]] &&
+        sed -n "${clause:-0}p" "$dir/src/$file" | grep -q 'finite\|vcolour'; then
+        broken="$goal(by the alarm) $broken"
+    fi
+    if [ -n "$broken" ] && [[ " $broken " == *" $goal"[\ \(]* ]]; then
+        echo "KILLED|$i|$file|$fn|$goal|$bug|$broken" >"$dir/result"
     else
-        echo "mutant $i SURVIVED: $fn, $bug (see $dir/prove.log)"
-        survivors=$((survivors + 1))
+        echo "MISSED|$i|$file|$fn|$goal|$bug|${broken:-nothing fails} (see $dir/prove.log)" >"$dir/result"
     fi
-done <<<"$mutants"
+}
 
-[ $survivors = 0 ] && echo "prove-mutants: OK ($i killed)" || echo "prove-mutants: $survivors of $i survived"
-[ $survivors = 0 ]
+if [ "${1:-}" = --one ]; then
+    mutant "$2"
+    exit 0
+fi
+
+start=$(date +%s)
+mkdir -p "$base"
+grep -v '^#' "$list" | grep -v '^ *$' >"$base/list"   # mutant i is line i
+n=$(wc -l <"$base/list")
+# Baseline: the ensures clauses WP does not prove unmutated when each is
+# one goal (not split into its conjuncts); their mutants run split.
+if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
+    PROVE_OUT=$base/baseline PROVE_WP_SPLIT= PROVE_WP_PROP=@ensures PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
+        bash tests/prove/prove.sh wp >"$base/baseline.log" 2>&1
+    sed -n 's/^ *unproved: typed_real_//p' "$base/baseline.log" | sort -u >"$base/hard"
+fi
+# shellcheck disable=SC2086 # a list of numbers
+printf '%s\n' ${PROVE_MUTANTS:-$(seq 1 "$n")} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
+missed=0 total=0
+for i in ${PROVE_MUTANTS:-$(seq 1 "$n")}; do
+    IFS='|' read -r verdict _ file fn goal bug broken <"$base/$i/result"
+    total=$((total + 1))
+    [ "$verdict" = KILLED ] || missed=$((missed + 1))
+    printf 'mutant %3d %s: %s %s (%s): %s\n' "$i" "$verdict" "$file" "$goal" "$bug" "$broken"
+done
+# Coverage: every ensures clause (admitted ones have no goal) of the files
+# that have mutants, and the mutant that kills it.
+echo "== ensures clauses and their mutants"
+files=$(grep -v '^#' "$list" | grep -v '^ *$' | cut -d'|' -f1 | sort -u)
+covered=0 clauses=0
+for f in $files; do
+    while read -r fn k _ kind; do
+        [ "$kind" = admitted ] && continue
+        # k: an ensures clause (its number), or another goal (its name's tail)
+    case $k in
+    1) goal=${fn}_ensures prop=@ensures ;;
+    [0-9]*) goal=${fn}_ensures_$k prop=@ensures ;;
+    *) goal=${fn}_$k prop= ;;
+    esac
+        clauses=$((clauses + 1))
+        killers=$(grep -l "^KILLED|[0-9]*|$f|[^|]*|$goal|" "$base"/*/result 2>/dev/null | sed 's|.*/\([0-9]*\)/result|\1|' | sort -n | tr '\n' ' ')
+        if [ -n "$killers" ]; then covered=$((covered + 1)); else killers="NONE"; fi
+        printf '  %-24s %-34s %-7s mutant %s\n' "$f" "$goal" "$kind" "$killers"
+    done < <(awk -f tests/prove/ensures.awk "src/$f")
+done
+echo "prove-mutants: $((total - missed)) of $total mutants kill their clause; $covered of $clauses ensures clauses killed ($(( $(date +%s) - start )) s)"
+[ $missed = 0 ]

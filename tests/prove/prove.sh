@@ -14,7 +14,11 @@
 # a prover gets per goal, default 30: the slowest goal takes 0.5 s alone,
 # but a loaded machine stretches wall-clock limits), PROVE_SRC (the source tree, default
 # src: tests/prove/mutants.sh points it at a mutated copy), PROVE_FCT (WP
-# only these functions, comma-separated).
+# only these functions, comma-separated), PROVE_WP_PROP (WP only these
+# properties, -wp-prop), PROVE_WP_SPLIT (empty: one goal a clause, not one
+# a conjunct), PROVE_WP (which WP runs: shade,
+# rays or both, the default), PROVE_EVA (only the Eva runs whose names it
+# lists, comma-separated).
 set -u
 cd "$(dirname "$0")/../.."
 out=${PROVE_OUT:-build/prove}
@@ -58,7 +62,8 @@ eva_run() {   # name main skip cpp files... [-- options]; skip: functions used b
     awk -F'\t' -v run="$name" -v skip=",$skip," -v total="$alarms" -v badf="$out/eva_$name.bad" '
         BEGIN { alarm_kinds = "^(is_nan|division_by_zero|mem_access|index_bound|.*overflow|float_to_int|initialization|dangling|pointer_value|separation|bool_value|shift|.*pointer)" }
         NR > 1 && $1 ~ /^src/ && $4 != "" && index(skip, "," $4 ",") == 0 {
-            f = $4; seen[f] = 1; good = $6 ~ /^(Valid|Dead|Considered valid)/
+            f = $4; good = $6 ~ /^(Valid|Dead|Considered valid)/
+            if ($6 !~ /^Dead/) seen[f] = 1   # a function never reached is not listed
             if ($5 ~ alarm_kinds) { al[f]++; if (good) alok[f]++; else print > badf }
             else { n[f]++; if (good) ok[f]++; else print > badf }
         }
@@ -80,16 +85,37 @@ if [ "$what" = all ] || [ "$what" = eva ] || [ "$what" = quick ]; then
     jobs=${PROVE_JOBS:-2}
     for j in $(seq 1 "$jobs"); do mkdir -p "$out/part$j"; : >"$out/part$j/boxes.h"; done
     n=0
-    { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
-      echo "BOX(0x1p1023, DBL_MAX)"; } | while read -r box; do
+    # PROVE_KMIN, PROVE_KMAX: fewer binades (tests/prove/mutants.sh: a
+    # mutant needs one box that shows it).
+    { for k in $(seq "${PROVE_KMIN:--1074}" "${PROVE_KMAX:-1022}"); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
+      [ "${PROVE_KMAX:-1022}" = 1022 ] && echo "BOX(0x1p1023, DBL_MAX)"; } | while read -r box; do
         echo "$box" >>"$out/part$((n % jobs + 1))/boxes.h"; n=$((n + 1))
     done
+    # light_concentric's boxes (tests/prove/eva_render.c): s = 1/2, and
+    # 1/2 -+ [2^-(m+1), 2^-m].
+    # PROVE_CONCENTRIC_M: fewer (mutants.sh).
+    cm=${PROVE_CONCENTRIC_M:-53}
+    { echo "CBOX(0.5, 0.5)"
+      for m in $(seq 1 "$cm"); do echo "CBOX(0.5 - 0x1p-$m, 0.5 - 0x1p-$((m + 1)))"; done
+      for m in $(seq 1 "$((cm < 52 ? cm : 52))"); do echo "CBOX(0.5 + 0x1p-$((m + 1)), 0.5 + 0x1p-$m)"; done; } >"$out/concentric.h"
     echo "== Eva (-warn-special-float non-finite)"
     runs=("shade eva_shade saturating_div,scale_indices,vec_length,vec_normalize - $src/render/shade.c tests/prove/eva_shade.c")
+    # The ray spawn functions, the camera ray, the light samples
+    # (eva_render.c): helpers and samples; the functions returning a ray
+    # (tmax = +Inf by design: NaN is the alarm there, every other field's
+    # finiteness a clause), helpers by contract.
+    runs+=("render eva_render vec_length,vec_normalize - tests/prove/eva_render.c $src/render/lightsample.c"
+           "rays eva_rays vec_length,vec_normalize,spawn_offset,spawn_origin,shadow_tmin,screen_offset - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan")
     [ "$what" = quick ] && jobs=0
+    [ "$what" = quick ] || runs+=("concentric eva_concentric vec_length,vec_normalize - tests/prove/eva_render.c $src/render/lightsample.c")
     for j in $(seq 1 "$jobs"); do
         runs+=("split$j eva_split - -I$out/part$j tests/prove/eva_split.c" "vec$j eva_vec - -I$out/part$j tests/prove/eva_vec.c")
     done
+    if [ -n "${PROVE_EVA:-}" ]; then
+        kept=()
+        for r in "${runs[@]}"; do case ",$PROVE_EVA," in *",${r%% *},"*) kept+=("$r") ;; esac; done
+        runs=("${kept[@]}")
+    fi
     while read -r name main skip cpp files; do
         [ "$skip" = - ] && skip=""; [ "$cpp" = - ] && cpp=""
         # shellcheck disable=SC2086 # files is a list
@@ -109,11 +135,11 @@ fi
 # WP: every goal of shade.c and of the vec.h functions it uses, in the real
 # model (floating-point operations as exact real ones; the doubles are
 # Eva's).  Goal names are typed_real_<function>_<clause>, typed_real_lemma_<name>.
-if [ "$what" = all ] || [ "$what" = wp ]; then
+if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-shade}" != rays ]; then
     start=$(date +%s)
     echo "== WP (-wp-model real; Z3, CVC4; ${timeout} s a goal)"
-    fc "" "$src/render/shade.c" tests/prove/libm.c -wp -wp-model real -wp-split \
-        -wp-prover z3,cvc4 -wp-timeout "$timeout" -wp-par 2 ${PROVE_FCT:+-wp-fct "$PROVE_FCT"} \
+    fc "" "$src/render/shade.c" tests/prove/libm.c -wp -wp-model real ${PROVE_WP_SPLIT--wp-split} \
+        -wp-prover z3,cvc4 -wp-timeout "$timeout" -wp-par 2 ${PROVE_FCT:+-wp-fct "$PROVE_FCT"} ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} \
         >"$out/wp.log" 2>&1
     rc=$?
     fns=$(grep -ho '^[a-z][a-z0-9_ ]* \**[a-z_][a-z0-9_]*(' "$src/render/shade.c" "$src/base/vec.h" |
@@ -141,6 +167,47 @@ if [ "$what" = all ] || [ "$what" = wp ]; then
         echo "wp: unproved goals or frama-c failed (exit $rc), see $out/wp.log"
         status=1
     fi
+fi
+
+# WP on the ray spawn functions (intersect.c), the camera ray (camera.c) and
+# the light samples (lightsample.c): only these functions of each file (the
+# hit tests of intersect.c have their own run).
+wp_fcts() {   # the functions proved in each file: file|functions
+    cat <<LIST
+$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along
+$src/render/camera.c|screen_offset,camera_ray
+$src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric
+LIST
+}
+if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade ]; then
+    start=$(date +%s)
+    echo "== WP, rays and lights (-wp-model real; Z3, CVC4; ${timeout} s a goal)"
+    while IFS='|' read -r file list; do
+        [ -n "${PROVE_FCT:-}" ] && case ",$list," in *",$PROVE_FCT,"*) list=$PROVE_FCT ;; *) continue ;; esac
+        log=$out/wp_$(basename "$file" .c).log
+        fc "" "$file" tests/prove/libm.c -wp -wp-model real ${PROVE_WP_SPLIT--wp-split} -wp-prover z3,cvc4 \
+            -wp-timeout "$timeout" -wp-par 2 -wp-fct "$list" ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
+        rc=$?
+        awk -v fns="${list//,/ }" '
+            BEGIN { split(fns, names, " ") }
+            /^\[wp\] \[[^]]*\] Goal / {
+                match($0, /Goal [^ ]+/); name = substr($0, RSTART + 5, RLENGTH - 5)
+                g = name; sub(/^typed_real_/, "", g); best = ""
+                for (i in names) if (index(g, names[i] "_") == 1 && length(names[i]) > length(best)) best = names[i]
+                if (best == "") best = "(other)"
+                total[best]++
+                if ($0 ~ / : Valid/) ok[best]++; else failed = failed "    unproved: " name "\n"
+            }
+            END { for (f in total) printf "  wp  %-30s goals %3d/%-3d\n", f, ok[f], total[f]; printf "%s", failed }' "$log" | sort
+        summary=$(grep 'Proved goals:' "$log")
+        read -r proved _ all <<<"${summary#*Proved goals:}"
+        echo "  wp  $(basename "$file"): ${summary#*Proved goals:}"
+        if [ $rc -ne 0 ] || [ -z "$summary" ] || [ "$proved" != "$all" ]; then
+            echo "wp: unproved goals or frama-c failed (exit $rc), see $log"
+            status=1
+        fi
+    done < <(wp_fcts)
+    echo "   ($(( $(date +%s) - start )) s)"
 fi
 
 # Admitted clauses are assumed, not proved: listed so that none hides.
