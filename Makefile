@@ -628,11 +628,11 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 	$(Q)$(CC) $(CPPFLAGS) -DSUITES_HEADER='"solo_suites.h"' $(WARN) $(CFLAGS) $(CHECK_CFLAGS) -c -o $@ $<
 
 # make prove: Frama-C's Eva and WP on the contracts of the shading formulas,
-# the ray spawn functions, the camera ray and the light samples
-# (spec/proofs.md, tests/prove/prove.sh); make prove-mutants: one deliberate
-# bug per ensures clause (tests/prove/mutants.txt) makes its goal fail.
-# They install what they need.
-PROVE_DEBS := frama-c-base why3 z3 cvc4
+# the hit tests, the ray spawn functions, the camera ray and the light
+# samples, and Gappa's rounding bounds (spec/proofs.md, tests/prove/prove.sh);
+# make prove-mutants: one deliberate bug per ensures clause
+# (tests/prove/mutants.txt) makes its goal fail.  They install what they need.
+PROVE_DEBS := frama-c-base why3 z3 cvc4 gappa
 .PHONY: prove prove-mutants prove-quick prove-deps
 prove-deps:
 	$(Q)missing=""; for p in $(PROVE_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
@@ -648,9 +648,9 @@ prove: prove-deps
 prove-mutants: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
 
-# What CI runs (seconds): Eva on the shading formulas, four helpers taken by
-# their contracts, and on the rays and light samples but light_concentric's
-# 11,449 boxes; make prove checks those too, and runs WP.
+# What CI runs (seconds): Gappa's bounds, Eva on the shading formulas, four
+# helpers taken by their contracts, and on the rays and light samples but
+# light_concentric's 11,449 boxes; make prove checks those too, and runs WP.
 prove-quick: prove-deps
 	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh quick
 

@@ -10,25 +10,12 @@
 #include <float.h>
 #include "render/intersect.h"
 #include "render/intersect_shapes.h"
+#include "render/isect_common.h"
 #include "base/xform.h"
 
-static void hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
-{
-    h->t = t;
-    h->point = p;
-    h->normal = n;
-    h->shading_normal = n;
-    h->prim = -1;
-    h->part = 0;
-    h->entering = vec_dot(dir, n) < 0.0;
-    h->b1 = h->b2 = 0.0;
-}
-
-void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
-{
-    hit_set(h, t, p, n, dir);
-}
-
+/*@ requires \valid_read(r);
+    assigns \nothing;
+    ensures \result != 0 <==> r->tmin < t < r->tmax; */
 static int in_interval(const ray *r, real t) { return t > r->tmin && t < r->tmax; }
 
 static vec3 vec_with(vec3 v, int axis, real value)
@@ -57,59 +44,6 @@ static real max_abs(vec3 v)
 
 
 /*
- * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
- * a = d.d, b = f.d, c = f.f - R^2.  Following Haines, Guenther and
- * Akenine-Moller, "Precision Improvements for Ray/Sphere Intersection"
- * (Ray Tracing Gems I, ch. 7):
- *   - the quarter discriminant b^2 - a c equals a (R^2 - |l|^2) with
- *     l = f - (b/a) d the vector from the centre to the line's nearest
- *     point; |l| is computed directly, so the small difference is not lost
- *     between two huge squares (a small sphere seen from far away);
- *   - c is formed as (|f| - R)(|f| + R), exact to rounding near the surface;
- *   - q = -(b + sign(b) sqrt(disc)) has no cancellation, and the roots are
- *     c/q and q/a (the product of the roots is c/a).
- * Writes the roots in increasing order; returns their number (1 when the
- * discriminant is exactly 0, |l| = R: a graze).
- */
-static int sphere_roots(vec3 f, vec3 d, real radius, real t[2])
-{
-    real a = vec_dot(d, d);
-    if (!(a > 0.0))
-        return 0;
-    real b = vec_dot(f, d);
-    vec3 l = vec_madd(f, d, -b / a);
-    /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
-     * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
-     * after its rounding, so the test below would fail too. */
-    real rr = radius * radius, l2 = vec_dot(l, l);
-    if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
-        return 0;
-    real ll = vec_length_fast(l);
-    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
-     * underflows to -0 for a sphere below about 1e-154 and would pass for a
-     * graze.  The square root is taken factor by factor for the same reason. */
-    if (!(ll <= radius))
-        return 0;
-    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
-    if (root == 0.0) {
-        t[0] = -b / a;
-        return 1;
-    }
-    real lf = vec_length_fast(f);
-    real c = (lf - radius) * (lf + radius);
-    real q = -(b + copysign(root, b));
-    real t0 = c / q, t1 = q / a;
-    t[0] = t0 < t1 ? t0 : t1;
-    t[1] = t0 < t1 ? t1 : t0;
-    return 2;
-}
-
-int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
-{
-    return sphere_roots(f, d, radius, t);
-}
-
-/*
  * The point o + t d has an absolute error of about eps |o| + eps |t d|,
  * which for a small sphere far from the origin is huge relative to its
  * radius.  One Newton-like restart fixes it: solve again from o' = o + t d,
@@ -122,7 +56,7 @@ static real sphere_refine(vec3 center, real radius, const ray *r, real t, int up
 {
     vec3 o2 = ray_at(r, t);
     real t2[2];
-    int n = sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
+    int n = isect_sphere_roots(vec_sub(o2, center), r->dir, radius, t2);
     if (n == 0) {
         *point = o2;
         return t;
@@ -147,7 +81,7 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
 {
     vec3 f = vec_sub(r->origin, center);
     real t[2];
-    int roots = sphere_roots(f, r->dir, radius, t), found = 0;
+    int roots = isect_sphere_roots(f, r->dir, radius, t), found = 0;
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
@@ -166,7 +100,7 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
         if (bare)
             out[found++].t = ti;
         else
-            hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
+            isect_hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
     }
     return found;
 }
@@ -176,15 +110,34 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
  * The point is projected back onto the plane, so its error is relative to
  * |p| and |p0|, not to the ray origin (a camera far away).
  */
+/*@ requires \valid_read(r) && \valid(t) && \separated(t, r);
+    requires vfinite(p0) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n);   // check_is_unit (scene/check.c, in_range)
+    assigns *t;
+    ensures \result != 0 ==> r->tmin < *t < r->tmax;
+    ensures EXACT(\result != 0 ==> n.x * (r->origin.x + *t * r->dir.x - p0.x) +
+                  n.y * (r->origin.y + *t * r->dir.y - p0.y) + n.z * (r->origin.z + *t * r->dir.z - p0.z) == 0);
+    ensures \result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax); */
 static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
         return 0;
-    *t = vec_dot(n, vec_sub(p0, r->origin)) / dn;
+    vec3 w = vec_sub(p0, r->origin);
+    *t = vec_dot(n, w) / dn;
+    /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
+    /*@ assert EXACT(*t * dn == vdot(n, w)); */
+    /* admitted (spec/proofs.md, "Admitted"): the dot product written out */
+    /*@ admit EXACT(vdot(n, w) == n.x * (p0.x - r->origin.x) + n.y * (p0.y - r->origin.y) +
+                    n.z * (p0.z - r->origin.z)); */
     return in_interval(r, *t);
 }
 
+/*@ requires \valid_read(r) && \valid(t) && \valid(p) && \separated(t, p, r);
+    requires vfinite(p0) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n);
+    assigns *t, *p;
+    ensures \result != 0 ==> r->tmin < *t < r->tmax; */
 static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
 {
     if (!plane_t(p0, n, r, t))
@@ -202,20 +155,28 @@ static int plane_hits(vec3 p0, vec3 n, const ray *r, hit *out, int bare)
         return plane_t(p0, n, r, &out->t);
     if (!plane_point(p0, n, r, &t, &p))
         return 0;
-    hit_set(out, t, p, vec_normalize(n), r->dir);
+    isect_hit_set(out, t, p, vec_normalize(n), r->dir);
     return 1;
 }
 
 /* Disk: the plane hit, kept when within the radius (boundary included). */
+/*@ requires \valid_read(r) && \valid(out) && \separated(out, r);
+    requires vfinite(center) && vfinite(r->origin) && vfinite(r->dir);
+    requires vunit(n) && \is_finite(radius) && radius > 0;   // check_is_unit, check_radius
+    assigns *out;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \old(r->tmin) < out->t < \old(r->tmax); */
 static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
 {
     real t;
     vec3 p;
     if (!plane_point(center, n, r, &t, &p))
         return 0;
-    if (!(vec_length2(vec_sub(p, center)) <= radius * radius))
+    vec3 w = vec_sub(p, center);
+    if (!(vec_length2(w) <= radius * radius))
         return 0;
-    hit_set(out, t, p, vec_normalize(n), r->dir);
+    /*@ assert EXACT(w.x * w.x + w.y * w.y + w.z * w.z <= radius * radius);   // |p - c| <= R */
+    isect_hit_set(out, t, p, vec_normalize(n), r->dir);
     return 1;
 }
 
@@ -227,11 +188,25 @@ static int disk_hits(vec3 center, vec3 n, real radius, const ray *r, hit *out)
  * non-zero one is divided by, never multiplied by an infinite inverse.
  * Ties between axes go to the lower axis.
  */
+/*@ requires \valid_read(r) && \valid(tt + (0 .. 1)) && \valid(axis + (0 .. 1));
+    requires \separated(tt + (0 .. 1), axis + (0 .. 1), r);
+    requires vfinite(lo) && vfinite(hi) && vfinite(r->origin) && vfinite(r->dir);
+    assigns tt[0 .. 1], axis[0 .. 1];
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> tt[0] <= tt[1] && r->tmin < tt[1] && tt[0] < r->tmax;
+    ensures \result == 1 ==> 0 <= axis[0] <= 2; */
 static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
 {
     tt[0] = -INFINITY;
     tt[1] = INFINITY;
     axis[0] = axis[1] = -1;
+    //@ ghost int seen = 0;
+    /*@ loop invariant 0 <= k <= 3;
+        loop invariant -1 <= axis[0] < k;
+        loop invariant axis[0] >= 0 ==> seen == 1;
+        loop invariant seen == 1 ==> tt[0] <= tt[1] && r->tmin < tt[1] && tt[0] < r->tmax;
+        loop assigns k, tt[0 .. 1], axis[0 .. 1], seen;
+        loop variant 3 - k; */
     for (int k = 0; k < 3; k++) {
         real o = vec_component(r->origin, k), d = vec_component(r->dir, k);
         real l = vec_component(lo, k), h = vec_component(hi, k);
@@ -260,6 +235,7 @@ static int box_slabs(vec3 lo, vec3 hi, const ray *r, real tt[2], int axis[2])
          * are saved. */
         if (tt[0] > tt[1] || tt[1] <= r->tmin || tt[0] >= r->tmax)
             return 0;
+        //@ ghost seen = 1;
     }
     return axis[0] >= 0 && tt[0] <= tt[1];
 }
@@ -271,7 +247,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit
     int positive = (vec_component(r->dir, k) > 0.0) == exit; /* the hi face */
     vec3 p = vec_with(ray_at(r, t), k, vec_component(positive ? hi : lo, k));
     vec3 n = vec_with(vec_make(0.0, 0.0, 0.0), k, positive ? 1.0 : -1.0);
-    hit_set(h, t, p, n, r->dir);
+    isect_hit_set(h, t, p, n, r->dir);
 }
 
 static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
@@ -431,7 +407,7 @@ static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, co
     p = vec_madd(p, v[1], s.b[1]);
     p = vec_madd(p, v[2], s.b[2]);
     vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
-    hit_set(out, s.t, p, n, r->dir);
+    isect_hit_set(out, s.t, p, n, r->dir);
     out->b1 = s.b[1];
     out->b2 = s.b[2];
     if (normals) {

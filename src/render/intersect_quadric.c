@@ -20,12 +20,12 @@
  * s = k dz, is a t^2 + 2 b t + c = 0 with
  *     a = |dp|^2 - s^2,  b = fp.dp - rho0 s,  c = |fp|^2 - rho0^2.
  * For the cylinder (s = 0) it is the sphere's equation in the plane across
- * the axis, solved by sphere_roots' perpendicular foot (intersect.c).  For
- * the cone, a and c are formed as products of a difference and a sum
- * (exact to rounding near the surface), and the discriminant b^2 - a c
- * with both products' rounding errors recovered by fma, so that a ray
- * along a generator or just grazing the side is decided from the exact
- * sign of the rounded coefficients.  a may be negative (a ray steeper
+ * the axis, solved by isect_sphere_roots' perpendicular foot
+ * (isect_common.c).  For the cone, a and c are formed as products of a
+ * difference and a sum (exact to rounding near the surface), and the
+ * discriminant b^2 - a c with both products' rounding errors recovered by
+ * fma, so that a ray along a generator or just grazing the side is decided
+ * from the exact sign of the rounded coefficients.  a may be negative (a ray steeper
  * than the side): then the line is inside the double cone outside its
  * roots, and the slab keeps the one nappe between the ends.
  *
@@ -36,6 +36,7 @@
  * their plane.
  */
 #include "render/intersect_shapes.h"
+#include "render/isect_common.h"
 
 /* The ray seen along the axis. */
 typedef struct axial {
@@ -320,12 +321,4 @@ int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r
 {
     quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};
     return quadric_hits(&s, open, r, out, max);
-}
-
-/* A disk of radius R across the unit axis a spans R sqrt(1 - a_k^2) about
- * its centre along axis k. */
-void isect_disk_extent(vec3 a, real radius, vec3 *e)
-{
-    *e = vec_make(radius * sqrt(fmax(0.0, 1.0 - a.x * a.x)), radius * sqrt(fmax(0.0, 1.0 - a.y * a.y)),
-                  radius * sqrt(fmax(0.0, 1.0 - a.z * a.z)));
 }

@@ -20,7 +20,7 @@
  *
  * Three steps keep it robust at the scales of scenes/stress:
  *   1. the line is met with the bounding sphere (radius R + r, by
- *      sphere_roots' perpendicular foot); p0 is the middle of that chord,
+ *      isect_sphere_roots' perpendicular foot); p0 is the middle of that chord,
  *      the point of the line nearest the centre, and lengths are divided by
  *      R + r: the coefficients are of order 1 and the roots lie in
  *      [-h, h], h <= 1, however far the ray starts;
@@ -42,6 +42,7 @@
  * spec/numerics.md ("The torus") has the measured errors.
  */
 #include "render/intersect_shapes.h"
+#include "render/isect_common.h"
 
 enum { DEGREE = 4, ROOTS_MAX = 4 };
 

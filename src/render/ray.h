@@ -27,6 +27,10 @@ typedef struct hit {
     real b1, b2;       /* triangles: the barycentric weights of corners 1 and 2 */
 } hit;
 
+/*@ requires \valid_read(r);
+    assigns \nothing;
+    ensures EXACT(\result.x == r->origin.x + r->dir.x * t && \result.y == r->origin.y + r->dir.y * t &&
+                  \result.z == r->origin.z + r->dir.z * t); */
 static inline vec3 ray_at(const ray *r, real t) { return vec_madd(r->origin, r->dir, t); }
 
 #endif

@@ -29,6 +29,7 @@ mutant() {   # i: run mutant i, write $base/<i>/result
     case $k in
     1) goal=${fn}_ensures prop=@ensures ;;
     [0-9]*) goal=${fn}_ensures_$k prop=@ensures ;;
+    any) goal=$fn prop= ;;   # any goal of the function
     *) goal=${fn}_$k prop= ;;
     esac
     if cmp -s "src/$file" "$dir/src/$file"; then
@@ -47,6 +48,12 @@ mutant() {   # i: run mutant i, write $base/<i>/result
         PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_WP=$wp PROVE_WP_PROP=$prop PROVE_WP_SPLIT=$split \
             PROVE_TIMEOUT=${PROVE_TIMEOUT:-5} \
             bash tests/prove/prove.sh wp >"$dir/prove.log" 2>&1
+        broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | sed 's/_part[0-9]*$//' | sort -u | tr '\n' ' ')
+        ;;
+    isect)
+        # The hit tests' run (prove.sh isect: CVC4's strings mode too).
+        PROVE_SRC=$dir/src PROVE_OUT=$dir PROVE_FCT=$fn PROVE_TIMEOUT=${PROVE_TIMEOUT:-10} \
+            bash tests/prove/prove.sh isect >"$dir/prove.log" 2>&1
         broken=$(sed -n 's/^ *unproved: typed_real_//p' "$dir/prove.log" | sed 's/_part[0-9]*$//' | sort -u | tr '\n' ' ')
         ;;
     eva:*)
@@ -70,7 +77,8 @@ mutant() {   # i: run mutant i, write $base/<i>/result
         sed -n "${clause:-0}p" "$dir/src/$file" | grep -q 'finite\|vcolour'; then
         broken="$goal(by the alarm) $broken"
     fi
-    if [ -n "$broken" ] && [[ " $broken " == *" $goal"[\ \(]* ]]; then
+    if [ -n "$broken" ] && { [[ " $broken " == *" $goal"[\ \(]* ]] ||
+        { [ "$k" = any ] && [[ " $broken " == *" ${fn}_"* ]]; }; }; then
         echo "KILLED|$i|$file|$fn|$goal|$bug|$broken" >"$dir/result"
     else
         echo "MISSED|$i|$file|$fn|$goal|$bug|${broken:-nothing fails} (see $dir/prove.log)" >"$dir/result"

@@ -1,0 +1,72 @@
+/*
+ * isect_common.c - what the hit tests share (isect_common.h).
+ */
+#include "render/isect_common.h"
+
+void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
+{
+    h->t = t;
+    h->point = p;
+    h->normal = n;
+    h->shading_normal = n;
+    h->prim = -1;
+    h->part = 0;
+    h->entering = vec_dot(dir, n) < 0.0;
+    h->b1 = h->b2 = 0.0;
+}
+
+/*
+ * Sphere.  With f = o - c, |f + t d|^2 = R^2 is a t^2 + 2 b t + c = 0 with
+ * a = d.d, b = f.d, c = f.f - R^2.  Following Haines, Guenther and
+ * Akenine-Moller, "Precision Improvements for Ray/Sphere Intersection"
+ * (Ray Tracing Gems I, ch. 7):
+ *   - the quarter discriminant b^2 - a c equals a (R^2 - |l|^2) with
+ *     l = f - (b/a) d the vector from the centre to the line's nearest
+ *     point; |l| is computed directly, so the small difference is not lost
+ *     between two huge squares (a small sphere seen from far away);
+ *   - c is formed as (|f| - R)(|f| + R), exact to rounding near the surface;
+ *   - q = -(b + sign(b) sqrt(disc)) has no cancellation, and the roots are
+ *     c/q and q/a (the product of the roots is c/a).
+ * Writes the roots in increasing order; returns their number (1 when the
+ * discriminant is exactly 0, |l| = R: a graze).
+ */
+int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
+{
+    real a = vec_dot(d, d);
+    if (!(a > 0.0))
+        return 0;
+    real b = vec_dot(f, d);
+    vec3 l = vec_madd(f, d, -b / a);
+    /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
+     * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
+     * after its rounding, so the test below would fail too. */
+    real rr = radius * radius, l2 = vec_dot(l, l);
+    if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
+        return 0;
+    real ll = vec_length_fast(l);
+    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
+     * underflows to -0 for a sphere below about 1e-154 and would pass for a
+     * graze.  The square root is taken factor by factor for the same reason. */
+    if (!(ll <= radius))
+        return 0;
+    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
+    if (root == 0.0) {
+        t[0] = -b / a;
+        return 1;
+    }
+    real lf = vec_length_fast(f);
+    real c = (lf - radius) * (lf + radius);
+    real q = -(b + copysign(root, b));
+    real t0 = c / q, t1 = q / a;
+    t[0] = t0 < t1 ? t0 : t1;
+    t[1] = t0 < t1 ? t1 : t0;
+    return 2;
+}
+
+/* A disk of radius R across the unit axis a spans R sqrt(1 - a_k^2) about
+ * its centre along axis k. */
+void isect_disk_extent(vec3 a, real radius, vec3 *e)
+{
+    *e = vec_make(radius * sqrt(fmax(0.0, 1.0 - a.x * a.x)), radius * sqrt(fmax(0.0, 1.0 - a.y * a.y)),
+                  radius * sqrt(fmax(0.0, 1.0 - a.z * a.z)));
+}

@@ -1,0 +1,48 @@
+/*
+ * isect_common.h - the pieces the hit tests share (intersect.c,
+ * intersect_quadric.c, intersect_torus.c): below all three, so that each
+ * includes it and none includes another's.  Internal to the render layer.
+ */
+#ifndef REFRAY_ISECT_COMMON_H
+#define REFRAY_ISECT_COMMON_H
+
+#include "render/ray.h"
+
+/*@
+  // |f + t d|^2: the squared distance from the centre of the point at t,
+  // for f = o - c (make prove, spec/proofs.md "Hit tests")
+  logic mreal vdist2(vec3 f, vec3 d, mreal t) =
+    (f.x + t * d.x) * (f.x + t * d.x) + (f.y + t * d.y) * (f.y + t * d.y) +
+    (f.z + t * d.z) * (f.z + t * d.z);
+*/
+
+/* The roots of |f + t d| = radius, in increasing order; their number (0, 1
+ * for a graze, or 2).  Used by the sphere, the cylinder (across its axis)
+ * and the torus (its bounding sphere). */
+/*@ requires \valid(t + (0 .. 1));
+    // finite centre and radius > 0: check_radius, in_range (scene/check.c);
+    // f = o - c, d the ray's (or a part of it): finite (spec/proofs.md, "Hit tests")
+    requires vfinite(f) && vfinite(d) && \is_finite(radius) && radius > 0;
+    assigns t[0 .. 1];
+    ensures 0 <= \result <= 2;
+    ensures \result == 2 ==> t[0] <= t[1];
+    ensures EXACT(\result == 1 ==> t[0] == -vdot(f, d) / vnorm2(d));
+    // admitted (spec/proofs.md, "Admitted"): the roots of the quadratic,
+    // a (R^2 - |l|^2) = b^2 - a c and (q + b)^2 = b^2 - a c give it
+    admit ensures EXACT(\result >= 1 ==> vdist2(f, d, t[0]) == radius * radius);
+    admit ensures EXACT(\result == 2 ==> vdist2(f, d, t[1]) == radius * radius); */
+int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
+/* Fills a hit: prim -1, part 0, no barycentrics, shading normal = n,
+ * entering = dir . n < 0. */
+/*@ requires \valid(h);
+    requires vfinite(n) && vfinite(dir);
+    assigns *h;
+    ensures h->t == t && veq(h->point, p) && veq(h->normal, n) && veq(h->shading_normal, n);
+    ensures h->prim == -1 && h->part == 0 && h->b1 == 0 && h->b2 == 0;
+    ensures EXACT(h->entering == (vdot(dir, n) < 0 ? 1 : 0)); */
+void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir);
+/* The box around a disk of radius R across the unit axis (cylinder and
+ * cone ends, the torus's ring). */
+void isect_disk_extent(vec3 unit_axis, real radius, vec3 *e);
+
+#endif
