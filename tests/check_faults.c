@@ -351,6 +351,13 @@ static pid_t spawn(const char *const *args)
     pid_t pid = fork();
     ck_assert_int_ge(pid, 0);
     if (pid == 0) {
+        /* A harness run under nohup (or with SIGINT ignored, as a shell
+         * does for background jobs) passes SIG_IGN on, and refray rightly
+         * keeps an ignored signal ignored: the program under test gets the
+         * dispositions a user's shell would give it. */
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
+        signal(SIGHUP, SIG_DFL);
         int null = open("/dev/null", O_WRONLY);
         dup2(null, 1);
         dup2(null, 2);
