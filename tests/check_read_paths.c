@@ -156,6 +156,34 @@ START_TEST(test_read_paths_library_is_the_hosts_choice)
 }
 END_TEST
 
+/* [REL-READ-1] Every command that loads scenes confines them: kit,
+ * verify, export and oracle too, each refusing "../" (65) with the rule's
+ * message before reading a byte of the file outside. */
+START_TEST(test_read_paths_every_command)
+{
+    cli_run *r = malloc(sizeof *r);
+    layout();
+    char scene[300], out[300], kit[300];
+    cli_path(scene, sizeof scene, w, "sub/up.scene");
+    cli_path(out, sizeof out, w, "o.pfm");
+    cli_path(kit, sizeof kit, w, "kit");
+    const char *const commands[][7] = {
+        {"kit", "-o", kit, scene, NULL},
+        {"verify", scene, NULL},
+        {"export", scene, "--to", "json", NULL},
+        {"oracle", scene, "-o", out, NULL},
+    };
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        cli_refray(r, commands[i]);
+        ck_assert_msg(r->code == 65, "%s: exit %d, stderr %s", commands[i][0], r->code, r->err);
+        ck_assert_msg(strstr(r->err, "is outside the directories this load may read") != NULL
+                      && strstr(r->err, "other/o.scene:1:") == NULL, "%s: stderr %s", commands[i][0], r->err);
+    }
+    cli_remove(w);
+    free(r);
+}
+END_TEST
+
 Suite *suite_read_paths(void)
 {
     Suite *s = suite_create("read_paths");
@@ -163,6 +191,7 @@ Suite *suite_read_paths(void)
     tcase_set_timeout(tc, 10);
     tcase_add_test(tc, test_read_paths_outside_refused);
     tcase_add_test(tc, test_read_paths_inside_and_usage);
+    tcase_add_test(tc, test_read_paths_every_command);
     tcase_add_test(tc, test_read_paths_library_is_the_hosts_choice);
     suite_add_tcase(s, tc);
     return s;
