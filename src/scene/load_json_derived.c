@@ -162,7 +162,10 @@ static int member_hex(jreader *r, json_t *obj, const char *key, uint64_t want, c
         return 1;
     if (!jread_string(r, obj, key, 0, &got))
         return 0;
-    int hex = got[0] == '0' && (got[1] == 'x' || got[1] == 'X') && got[2] != '\0' && got[2] != '-' && got[2] != '+';
+    /* Hex digits only after the 0x: strtoull alone would also take spaces,
+     * a sign and a second "0x". */
+    int hex = got[0] == '0' && (got[1] == 'x' || got[1] == 'X') && got[2] != '\0' &&
+              strspn(got + 2, "0123456789abcdefABCDEF") == strlen(got + 2);
     unsigned long long v = hex ? strtoull(got + 2, &end, 16) : 0;
     if (hex && *end == '\0' && v == want)
         return 1;
