@@ -431,11 +431,13 @@ START_TEST(test_json_export_lights_materials_transforms)
 END_TEST
 
 /* [JSON-NUMBER-1] Doubles are written with 17 significant digits and read
- * back to the same bits: 0.1, a subnormal, the largest double, -0. */
+ * back to the same bits: 0.1, a subnormal, the largest double (a power:
+ * a position is within 2^500, [LANG-EXTENT-1], the largest one here), -0. */
 START_TEST(test_json_export_numbers_round_trip)
 {
     static const char text[] = "ambient { color [0.1, 4.9406564584124654e-324, 0] }\n"
-                               "point_light { position [1.7976931348623157e308, -0, 0.30000000000000004] }\n"
+                               "point_light { position [3.2733906078961419e150, -0, 0.30000000000000004]\n"
+                               "              power [1.7976931348623157e308, 1, 1] }\n"
                                "sphere {}\n";
     int status;
     scene_model *s = load_quiet("t.scene", text, strlen(text), &status);
@@ -445,7 +447,8 @@ START_TEST(test_json_export_numbers_round_trip)
     size_t len;
     char *out = export_text(s, &o, &len);
     ck_assert(strstr(out, "\"ambient\": [0.10000000000000001, 4.9406564584124654e-324, 0.0]"));
-    ck_assert(strstr(out, "\"position\": [1.7976931348623157e308, -0.0, 0.30000000000000004]"));
+    ck_assert(strstr(out, "\"position\": [3.2733906078961419e150, -0.0, 0.30000000000000004]"));
+    ck_assert(strstr(out, "\"power\": [1.7976931348623157e308, 1.0, 1.0]"));
     scene_model *back = round_trip(s, &o, "t.json");
     double want[3] = {strtod("0.1", NULL), strtod("4.9406564584124654e-324", NULL), 0};
     ck_assert(memcmp(&back->ambient.x, &want[0], sizeof(double)) == 0);

@@ -674,16 +674,62 @@ START_TEST(test_scene_load_huge_but_finite)
 {
     loaded l;
     const scene_model *s = load_ok(&l, "plane { normal [1.5e308, 1.5e308, 0] }\n"
-                                    "sphere { radius 1e300 center [1e308, -1e308, 0] }\n"
+                                    "sphere { radius 3e150 center [3e150, -3e150, 0] }\n"
                                     "distant_light { direction [1e308, 1e308, 1e308] }\n"
-                                    "triangle { vertices [1e200, 0, 0] [0, 1e200, 0] [0, 0, 1e200] }\n"
-                                    "camera { eye [1.5e308, 0, 0] look_at [-1.5e308, 0, 0] }\n"
+                                    "triangle { vertices [1e150, 0, 0] [0, 1e150, 0] [0, 0, 1e150] }\n"
+                                    "camera { eye [3e150, 0, 0] look_at [-3e150, 0, 0] up [0, 1e308, 1e308] }\n"
                                     "plane { normal [4.9e-324, 0, 0] }\n");
     double k = 1 / sqrt(2), c = 1 / sqrt(3);
     ck_assert_vec_near(s->prims[0].u.plane.normal, vec_make(k, k, 0), 1e-15);
     ck_assert_vec_near(s->lights[0].direction, vec_make(c, c, c), 1e-15);
     ck_assert_vec_near(s->camera.forward, vec_make(-1, 0, 0), 0);
+    ck_assert_vec_near(s->camera.true_up, vec_make(0, k, k), 1e-15);
     ck_assert_vec_near(s->prims[3].u.plane.normal, vec_make(1, 0, 0), 0);
+    loaded_done(&l);
+}
+END_TEST
+
+/* [LANG-EXTENT-1] What test_scene_load_huge_but_finite placed before the
+ * scene had an extent is refused, each with the value and the bound; the
+ * bounds themselves pass: 2^500 = 3.2733906078961419e150 as a coordinate
+ * and a size, 2^-500 = 3.0549363634996047e-151 as a size, and a subnormal
+ * coordinate (coordinates have no least magnitude). */
+START_TEST(test_scene_load_refuses_beyond_the_extent)
+{
+    static const struct {
+        const char *text, *message;
+    } refused[] = {
+        {"sphere { radius 1e300 center [1e308, -1e308, 0] }",
+         "t.scene:1:1: error: this sphere is outside the scene's extent: its center has a coordinate of 1e+308"},
+        {"triangle { vertices [1e200, 0, 0] [0, 1e200, 0] [0, 0, 1e200] }",
+         "t.scene:1:1: error: this triangle is outside the scene's extent: its vertex has a coordinate of "
+         "9.9999999999999997e+199, beyond 2^500"},
+        {"camera { eye [1.5e308, 0, 0] look_at [-1.5e308, 0, 0] }\nsphere {}",
+         "t.scene:1:14: error: the camera is outside the scene's extent: its eye has a coordinate of 1.5e+308"},
+        {"sphere { center [2^500 * (1 + 2^-52), 0, 0] }", "coordinate of 3.2733906078961426e+150, beyond 2^500"},
+        {"sphere { radius 2^500 * (1 + 2^-52) }", "its radius is 3.2733906078961426e+150, beyond 2^500"},
+        {"sphere { radius 2^-500 * (1 - 2^-53) }", "its radius is 3.0549363634996043e-151, below 2^-500"},
+        {"cylinder { from [0, 0, 0] to [0, 1e-160, 0] }", "its length is 9.9999999999999999e-161, below 2^-500"},
+        {"torus { major 1 minor 1e-160 }", "its minor radius is 9.9999999999999999e-161, below 2^-500"},
+        {"box { from [0, 0, 0] to [1, 1e-160, 1] }", "its height is 9.9999999999999999e-161, below 2^-500"},
+        {"sphere {}\ndistributed_light { disk [0, 0, 0] [0, 1, 0] 1e200 }", "its radius is 9.9999999999999997e+199"},
+        {"sphere {}\ndistributed_light { rectangle [3e150, 0, 0] [1e150, 0, 0] [0, 0, 1] }",
+         "t.scene:2:31: error: this light is outside the scene's extent: its corner has a coordinate of 3.9999999999999999e+150"},
+    };
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        loaded l;
+        load(&l, refused[i].text);
+        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", refused[i].text);
+        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", refused[i].text, l.messages);
+        loaded_done(&l);
+    }
+    loaded l;
+    const scene_model *s = load_ok(&l, "sphere { center [2^500, -2^500, 4.9e-324] radius 2^500 }\n"
+                                    "sphere { radius 2^-500 }\n"
+                                    "cone { from [0, 0, 0] to [0, 1, 0] radii 1 0 }\n");
+    ck_assert(s->prims[0].u.sphere.center.x == 3.2733906078961419e150);
+    ck_assert(s->prims[0].u.sphere.radius == 3.2733906078961419e150);
+    ck_assert(s->prims[1].u.sphere.radius == 3.0549363634996047e-151);
     loaded_done(&l);
 }
 END_TEST
@@ -777,6 +823,7 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh);
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
+    tcase_add_test(tc, test_scene_load_refuses_beyond_the_extent);
     tcase_add_test(tc, test_scene_load_quadrics);
     tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);

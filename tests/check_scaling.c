@@ -553,6 +553,7 @@ static pid_t spawn(const char *dir, const char *const *args, long limit)
         dup2(null, 0);
         dup2(null, 1);
         dup2(fd, 2);
+        cli_signals_default();
         execv(argv[0], (char *const *)argv);
         _exit(127);
     }
@@ -730,6 +731,7 @@ static void run_on_terminal(const char *const *args, char *buf, size_t size)
         dup2(null, 1);
         dup2(tty, 2);
         close(master);
+        cli_signals_default();
         execv(argv[0], (char *const *)argv);
         _exit(127);
     }

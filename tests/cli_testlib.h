@@ -9,6 +9,7 @@
 #define REFRAY_CLI_TESTLIB_H
 
 #include <dirent.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +28,18 @@ typedef struct cli_run {
     char out[CLI_OUT_MAX];    /* standard output, cut at CLI_OUT_MAX - 1 */
     char err[CLI_OUT_MAX];    /* standard error */
 } cli_run;
+
+/* In a child about to exec refray: the signal dispositions a user's shell
+ * gives a program.  A harness under nohup, or a background job of a
+ * non-interactive shell, passes SIGHUP or SIGINT on ignored, and refray
+ * rightly keeps an ignored signal ignored, so a test that sends one would
+ * wait for a render to end by itself. */
+static inline void cli_signals_default(void)
+{
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGHUP, SIG_DFL);
+}
 
 static inline const char *cli_refray_bin(void)
 {

@@ -490,9 +490,12 @@ END_TEST
 
 START_TEST(test_stress_scale_invariance)
 {
-    /* [NUM-SCALE-1] Power-of-two scales 2^400 and 2^-400: bit for bit. */
+    /* [NUM-SCALE-1] Power-of-two scales 2^400 and 2^-400: bit for bit.
+     * [LANG-EXTENT-1] So at 2^490 and 2^-490, near the extent's bounds. */
     assert_renders_equal("scale_2p400", "scale_1", 0);
     assert_renders_equal("scale_2m400", "scale_1", 0);
+    assert_renders_equal("scale_2p490", "scale_1", 0);
+    assert_renders_equal("scale_2m490", "scale_1", 0);
 }
 END_TEST
 
@@ -1245,8 +1248,9 @@ END_TEST
 
 /* End to end through the command with the long double twin that `make
  * test` builds next to the refray under test (make refray-ld): a stable
- * scene passes, and the huge-coordinates scene (outside the documented
- * domain) is reported unstable with exit status 1.  A missing twin fails. */
+ * scene passes, and acne_offset_1e8 (a unit sphere 1.7e8 from the origin,
+ * where a coordinate carries 1e-8 of rounding) is reported unstable with
+ * exit status 1.  A missing twin fails. */
 START_TEST(test_stability_command_end_to_end)
 {
     const char *bin = getenv("REFRAY_BIN");
@@ -1258,7 +1262,7 @@ START_TEST(test_stability_command_end_to_end)
     ck_assert_msg(access(twin, X_OK) == 0, "%s is missing: build it with make refray-ld", twin);
     snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/ortho_far_sphere.scene >/dev/null 2>&1", bin);
     ck_assert_int_eq(system(cmd), 0);
-    snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/huge_coordinates.scene >/dev/null 2>&1", bin);
+    snprintf(cmd, sizeof cmd, "%s verify --stability scenes/stress/acne_offset_1e8.scene >/dev/null 2>&1", bin);
     int status = system(cmd);
     ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 1);
 }

@@ -43,11 +43,13 @@
  *   - torus: up to 4 crossings; a ray that only touches it (a double root
  *     of its quartic) may be a hit or a miss, as a sphere's graze.
  * Numeric domain: hit/miss decisions multiply two coordinates together, so
- * they are exact in sign only while such products stay normal doubles: keep
- * coordinates and sizes within about 1e-150 .. 1e150 (the sphere test alone
- * is guarded against underflow).  No computation multiplies three, so a
- * scene scaled by a power of two within that range renders bit for bit the
- * same (tests/test_stability.c, scale_*.scene).  Nothing here checks it.
+ * they are exact in sign only while such products stay normal doubles:
+ * coordinates and sizes within 2^500 (about 3.3e150), non-zero sizes at
+ * least 2^-500 (the sphere test alone is guarded against underflow).  No
+ * computation multiplies three, so a scene scaled by a power of two within
+ * that range renders bit for bit the same (tests/test_stability.c,
+ * scale_*.scene).  Validation refuses scenes outside it ([LANG-EXTENT-1],
+ * src/scene/check_extent.c); nothing here checks it again.
  */
 #ifndef REFRAY_INTERSECT_H
 #define REFRAY_INTERSECT_H

@@ -148,7 +148,8 @@ int check_camera_basis(loader *L, const check_at *at, scene_camera *cam)
 int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam)
 {
     int ok = check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
-    return check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0) && ok;
+    ok &= check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0);
+    return ok && check_camera_extent(L, at, cam);
 }
 
 int check_camera(loader *L, const check_at *at, scene_camera *cam)
@@ -167,7 +168,8 @@ int check_light(loader *L, const check_at *at, const scene_light *light)
     int ok = check_color(L, at, KW_POWER, "power", light->power, 0, HUGE_VAL);
     if (light->kind != LIGHT_DISTANT)
         ok &= check_range(L, at, KW_D0, "d0", light->d0, 0, 0, HUGE_VAL, 0);
-    return ok;
+    /* A distributed light's shape is checked with the shape (its spans). */
+    return light->kind == LIGHT_POINT ? check_light_extent(L, at, light) && ok : ok;
 }
 
 int check_light_samples(loader *L, const check_at *at, double x, int *out)
@@ -195,7 +197,7 @@ int check_rectangle(loader *L, const check_at *at, scene_light *light)
                     "the rectangle reaches beyond the largest number (about 1.8e308)");
         return 0;
     }
-    return 1;
+    return check_light_extent(L, at, light);
 }
 
 int check_material(loader *L, const check_at *at, const scene_material *m)
@@ -339,7 +341,7 @@ int check_placed(loader *L, const check_at *at, const scene_prim *prim)
                     "degenerate triangle: its corners are on one line (no area)");
         return 0;
     }
-    return 1;
+    return check_prim_extent(L, at, prim);
 }
 
 static src_span fixed_span(const void *ctx, int field)

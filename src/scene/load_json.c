@@ -220,7 +220,8 @@ static int light_shape(jreader *r, json_t *l, scene_light *light)
     case LIGHT_DISK:
         return jread_vec3(r, l, "center", &light->position) && jread_vec3(r, l, "normal", &light->normal) &&
                jread_number(r, l, "radius", &light->radius) && light_samples(r, l, light) &&
-               check_unit(r->L, &at, KW_NORMAL, "normal", light->normal) && check_radius(r->L, &at, light->radius);
+               check_unit(r->L, &at, KW_NORMAL, "normal", light->normal) && check_radius(r->L, &at, light->radius) &&
+               check_light_extent(r->L, &at, light);
     }
     return 0;
 }

@@ -206,6 +206,17 @@ int check_degenerate(vec3 a, vec3 b, vec3 c);
 /* A check_at that gives *span for every field. */
 check_at check_at_fixed(const src_span *span);
 
+/* check_extent.c: the scene's extent [LANG-EXTENT-1]: every coordinate
+ * and size within 2^500, every non-zero size at least 2^-500.  A placed
+ * primitive (at CHECK_BLOCK; a mesh's faces by check_face_extent, at the
+ * face), the camera's eye, look_at and width, a light (a point light at
+ * KW_POSITION, a disk light at KW_CENTER / KW_RADIUS, a rectangle at
+ * CHECK_RECT_EXTENT; a distant light has none). */
+int check_prim_extent(loader *L, const check_at *at, const scene_prim *prim);
+int check_face_extent(loader *L, src_span at, const vec3 p[3]);
+int check_camera_extent(loader *L, const check_at *at, const scene_camera *cam);
+int check_light_extent(loader *L, const check_at *at, const scene_light *light);
+
 /* validate.c: whole-scene checks after lowering, and the feature record. */
 int validate_scene(loader *L);
 

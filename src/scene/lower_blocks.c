@@ -173,6 +173,7 @@ static src_span shape_field_span(const void *ctx, int field)
     switch (field) {
     case CHECK_RECT_EDGES: return src_span_join(sp->value[1], sp->value[2]);
     case CHECK_RECT_EXTENT: return src_span_join(sp->value[0], sp->value[2]);
+    case KW_CENTER: return sp->value[0];
     case KW_RADIUS: return sp->value[2];
     default: {
         check_at whole = props_at(sp->p);
@@ -221,7 +222,7 @@ static int disk_light(loader *L, const props *p, shape_props *sp, scene_light *l
     light->kind = LIGHT_DISK;
     light->position = center.vector;
     light->radius = radius.number;
-    return 1;
+    return check_light_extent(L, &at, light);
 }
 
 static int distributed_shape(loader *L, const props *p, scene_light *light)

@@ -110,7 +110,8 @@ static void keep_triangles(loader *L, polymesh *pm, int file, int mirrored, scen
                 dropped->first_at = pm->tri_at[k];
             continue;
         }
-        if (bad_normal(L, file, pm, g, k))
+        const vec3 corners[3] = {g->positions[c[0]], g->positions[c[1]], g->positions[c[2]]};
+        if (!check_face_extent(L, face_span(file, pm->tri_at[k]), corners) || bad_normal(L, file, pm, g, k))
             continue;
         memmove(pm->tri[kept], pm->tri[k], sizeof pm->tri[k]);
         if (pm->tri_normal)
