@@ -340,6 +340,18 @@ START_TEST(test_conform_report_path_checked_first)
     char check[700];
     snprintf(check, sizeof check, "ls -a %s | grep -q refray-tmp", kit_root);
     ck_assert_msg(system(check) != 0, "a temporary was left in %s", kit_root);
+    /* --junit and --markdown naming one file (also as ./NAME beside NAME):
+     * both renamed onto it would leave only the Markdown; refused (64)
+     * before the renderer runs.  Before: exit 1, the JUnit file lost. */
+    char same[300], same_dot[310];
+    cli_path(same, sizeof same, kit_root, "same.xml");
+    snprintf(same_dot, sizeof same_dot, "%s/./same.xml", kit_root);
+    const char *one[] = {"conform", "--kit", kit, "--format", "pfm", "--only", "plane_point_linear", "--junit",
+                         same_dot, "--markdown", same, "--cmd", cmd, NULL};
+    cli_refray(r, one);
+    ck_assert_msg(r->code == 64, "one file: exit %d, stderr %s", r->code, r->err);
+    ck_assert_msg(strstr(r->err, "--junit and --markdown name one file") != NULL, "%s", r->err);
+    ck_assert(!cli_exists(mark) && !cli_exists(same));
     ck_assert_int_eq(rmdir(dir), 0);
     free(r);
 }

@@ -169,6 +169,29 @@ START_TEST(test_json_derived_exact_members)
     ck_assert_int_eq(load_doc(copy, first, sizeof first), STATUS_DATA);
     ck_assert_msg(strstr(first, "error: /camera/basis/fwd: unknown field 'fwd'"), "%s", first);
     json_decref(copy);
+    /* The sampling constants are an object of their members only, as every
+     * derived object: an unknown constant or a number in their place was
+     * taken silently before. */
+    copy = json_deep_copy(doc);
+    json_object_set_new(testjson_at(copy, "conventions/light_samples/constants"), "mul3", json_string("0x1"));
+    ck_assert_int_eq(load_doc(copy, first, sizeof first), STATUS_DATA);
+    ck_assert_msg(strstr(first, "error: /conventions/light_samples/constants/mul3: unknown field 'mul3'"), "%s", first);
+    json_decref(copy);
+    /* A hex constant is hex digits after 0x: "0x0x5eed" and "0x 5eed" (which
+     * strtoull reads as 0x5eed) loaded before. */
+    static const char *const not_hex[] = {"0x0x5eed", "0x 5eed", "0x-5eed"};
+    for (int i = 0; i < 3; i++) {
+        copy = json_deep_copy(doc);
+        json_object_set_new(testjson_at(copy, "conventions/light_samples/constants"), "pixel_salt",
+                            json_string(not_hex[i]));
+        ck_assert_msg(load_doc(copy, first, sizeof first) == STATUS_DATA, "%s loaded", not_hex[i]);
+        json_decref(copy);
+    }
+    copy = json_deep_copy(doc);
+    json_object_set_new(testjson_at(copy, "conventions/light_samples"), "constants", json_integer(5));
+    ck_assert_int_eq(load_doc(copy, first, sizeof first), STATUS_DATA);
+    ck_assert_msg(strstr(first, "error: /conventions/light_samples/constants: expected an object"), "%s", first);
+    json_decref(copy);
     json_decref(doc);
 }
 END_TEST

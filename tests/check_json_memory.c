@@ -115,6 +115,26 @@ START_TEST(test_json_tree_bound_holds)
 }
 END_TEST
 
+/* [REL-MEMORY-2] jansson's lexer buffers a number's text as it does a
+ * string's (its buffer doubling up to twice the token), so a number of a
+ * million digits holds about 2 MiB; the bound counts the longest token of
+ * any kind, not only strings (it gave 64 KiB here). */
+START_TEST(test_json_tree_bound_long_number)
+{
+    static const long digits[] = {1000, 100000, 1000000};
+    for (size_t k = 0; k < sizeof digits / sizeof digits[0]; k++) {
+        text t = {NULL, 0, 0};
+        put(&t, "[0.", 0, 0, 0);
+        for (long i = 0; i < digits[k]; i++)
+            put(&t, "1", 0, 0, 0);
+        put(&t, "]", 0, 0, 0);
+        double got = jansson_peak(t.s), bound = jread_tree_bound(t.s, t.len);
+        ck_assert_msg(bound >= got, "%ld digits: bound %.0f < jansson's %.0f", digits[k], bound, got);
+        free(t.s);
+    }
+}
+END_TEST
+
 /* A JSON scene of a mesh of n x n vertices, inline. */
 static char *mesh_scene(long n)
 {
@@ -187,6 +207,7 @@ Suite *suite_json_memory(void)
     tcase_set_timeout(tc, 20);
 #ifdef REFRAY_HAVE_JSON
     tcase_add_test(tc, test_json_tree_bound_holds);
+    tcase_add_test(tc, test_json_tree_bound_long_number);
     tcase_add_test(tc, test_json_tree_refused_over_max_memory);
 #endif
     suite_add_tcase(s, tc);

@@ -156,6 +156,60 @@ START_TEST(test_read_paths_library_is_the_hosts_choice)
 }
 END_TEST
 
+/* [REL-READ-1] Every command that loads scenes confines them: kit,
+ * verify, export and oracle too, each refusing "../" (65) with the rule's
+ * message before reading a byte of the file outside. */
+START_TEST(test_read_paths_every_command)
+{
+    cli_run *r = malloc(sizeof *r);
+    layout();
+    char scene[300], out[300], kit[300];
+    cli_path(scene, sizeof scene, w, "sub/up.scene");
+    cli_path(out, sizeof out, w, "o.pfm");
+    cli_path(kit, sizeof kit, w, "kit");
+    const char *const commands[][7] = {
+        {"kit", "-o", kit, scene, NULL},
+        {"verify", scene, NULL},
+        {"export", scene, "--to", "json", NULL},
+        {"oracle", scene, "-o", out, NULL},
+    };
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        cli_refray(r, commands[i]);
+        ck_assert_msg(r->code == 65, "%s: exit %d, stderr %s", commands[i][0], r->code, r->err);
+        ck_assert_msg(strstr(r->err, "is outside the directories this load may read") != NULL
+                      && strstr(r->err, "other/o.scene:1:") == NULL, "%s: stderr %s", commands[i][0], r->err);
+    }
+    cli_remove(w);
+    free(r);
+}
+END_TEST
+
+/* [REL-READ-1] A link in the tree whose resolution passes PATH_MAX on
+ * the way (h1/h2 lead 25 names of 200 bytes deep, then ../ back out to
+ * other/o.scene): realpath fails where open succeeds, so the file cannot be
+ * judged and is refused (65), not read as if it were missing. */
+START_TEST(test_read_paths_unresolvable_link)
+{
+    cli_run *r = malloc(sizeof *r);
+    layout();
+    char cmd[1400];
+    snprintf(cmd, sizeof cmd, "cd '%s/sub' && A=$(printf '%%0200d' 0 | tr 0 A) && "
+             "h=$A && up=../ && i=1 && while [ $i -lt 12 ]; do h=$h/$A; i=$((i+1)); done && mkdir -p $h && "
+             "ln -s $h h1 && (cd $h && mkdir -p $A/$h && ln -s $A/$h h2) && i=1 && while [ $i -lt 25 ]; do up=$up../; i=$((i+1)); done && "
+             "ln -s h1/h2/${up}../other/o.scene long.scene && cat long.scene >/dev/null", w);
+    ck_assert_int_eq(system(cmd), 0);
+    put("sub/long_link.scene", "include \"long.scene\"\n");
+    char scene[300];
+    cli_path(scene, sizeof scene, w, "sub/long_link.scene");
+    const char *args[] = {"check", scene, NULL};
+    cli_refray(r, args);
+    ck_assert_msg(r->code == 65, "exit %d, stderr %s", r->code, r->err);
+    ck_assert_msg(strstr(r->err, "cannot read 'long.scene': its real path cannot be found") != NULL, "%s", r->err);
+    cli_remove(w);
+    free(r);
+}
+END_TEST
+
 Suite *suite_read_paths(void)
 {
     Suite *s = suite_create("read_paths");
@@ -163,6 +217,8 @@ Suite *suite_read_paths(void)
     tcase_set_timeout(tc, 10);
     tcase_add_test(tc, test_read_paths_outside_refused);
     tcase_add_test(tc, test_read_paths_inside_and_usage);
+    tcase_add_test(tc, test_read_paths_every_command);
+    tcase_add_test(tc, test_read_paths_unresolvable_link);
     tcase_add_test(tc, test_read_paths_library_is_the_hosts_choice);
     suite_add_tcase(s, tc);
     return s;

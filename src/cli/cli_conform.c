@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include "io/fileio.h"
 #include "io/filewrite.h"
@@ -118,6 +119,37 @@ static int check_format(const conform_args *a)
     return 0;
 }
 
+/* Stats the directory part of path (".": none) into st; 0 when it cannot. */
+static int dir_stat(const char *path, struct stat *st)
+{
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    if (!slash)
+        return stat(".", st) == 0;
+    size_t n = slash == path ? 1 : (size_t)(slash - path);
+    if (n >= sizeof dir)
+        return 0;
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+    return stat(dir, st) == 0;
+}
+
+/* Whether paths p and q name one file: the same existing file, or the
+ * same last name in the same directory.  Two reports renamed onto one
+ * path would leave only the last. */
+static int same_file(const char *p, const char *q)
+{
+    struct stat a, b;
+    if (strcmp(p, q) == 0)
+        return 1;
+    if (stat(p, &a) == 0 && stat(q, &b) == 0)
+        return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+    const char *pn = strrchr(p, '/'), *qn = strrchr(q, '/');
+    pn = pn ? pn + 1 : p;
+    qn = qn ? qn + 1 : q;
+    return strcmp(pn, qn) == 0 && dir_stat(p, &a) && dir_stat(q, &b) && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
 /* 0: go on; -1: help printed; else the usage exit code. */
 static int parse_args(conform_args *a, int argc, char **argv)
 {
@@ -139,6 +171,8 @@ static int parse_args(conform_args *a, int argc, char **argv)
         return cli_usage_error("conform: %s", why);
     if (a->json && a->tap)
         return cli_usage_error("conform: --json and --tap both write stdout: choose one");
+    if (a->junit && a->markdown && same_file(a->junit, a->markdown))
+        return cli_usage_error("conform: --junit and --markdown name one file, '%s': give each its own", a->markdown);
     return check_format(a);
 }
 

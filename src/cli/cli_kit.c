@@ -107,7 +107,8 @@ int cli_kit(int argc, char **argv)
         a.count = (int)g.gl_pathc;
     }
     if (status == 0) {
-        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, rf_version(), cli_signal_cancel, NULL};
+        kit_opts o = {a.scene.limits, a.scene.warnings, stderr, rf_version(), cli_signal_cancel, NULL,
+                      a.scene.allow_read};
         /* A signal stops the build after the scene in hand. */
         cli_signal_cooperate(1);
         manifest m;

@@ -4,9 +4,11 @@
 /* realpath is an XSI function: it needs more than _POSIX_C_SOURCE. */
 #define _XOPEN_SOURCE 700
 #include <ctype.h>
+#include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "base/text.h"
 #include "io/diag_print.h"
 #include "io/fileio.h"
@@ -83,12 +85,19 @@ static char *identity_of(const mem *m, const char *path)
 
 /* The real path of path, or, when it does not exist, its directory's real
  * path joined with its last name; NULL when neither resolves (or out of
- * memory: *oom set). */
-static char *real_or_parent(const mem *m, const char *path, int *oom)
+ * memory: *oom set).  When path exists but realpath fails (a resolution
+ * longer than PATH_MAX, a link to a pipe or a deleted file through /proc)
+ * the open could still reach a file anywhere: NULL with *unresolved set. */
+static char *real_or_parent(const mem *m, const char *path, int *oom, int *unresolved)
 {
     char resolved[PATH_MAX];
+    struct stat st;
     if (realpath(path, resolved))
         return mem_strdup(m, resolved);
+    if (errno != ENOENT || lstat(path, &st) == 0 || errno != ENOENT) {
+        *unresolved = errno ? errno : ENOENT;
+        return NULL;
+    }
     char *dir = file_dirname(m, path), *joined = NULL;
     if (!dir) {
         *oom = 1;
@@ -134,8 +143,13 @@ static int within(const char *resolved_path, const char *root)
  * else STATUS_DATA with the reason (or STATUS_NO_MEMORY). */
 static int may_read(scene_file_reader *f, const char *name, const char *path, char *why, size_t why_size)
 {
-    int oom = 0;
-    char *resolved_path = f->roots ? real_or_parent(&f->mem, path, &oom) : NULL;
+    int oom = 0, unresolved = 0;
+    char *resolved_path = f->roots ? real_or_parent(&f->mem, path, &oom, &unresolved) : NULL;
+    if (unresolved) {
+        snprintf(why, why_size, "cannot read '%s': its real path cannot be found (%s), so it cannot be judged "
+                 "inside the directories this load may read", name, strerror(unresolved));
+        return STATUS_DATA;
+    }
     if (!f->roots || oom || !resolved_path) {
         /* Neither it nor its directory exists: reading it fails anyway. */
         mem_free_string(&f->mem, resolved_path);

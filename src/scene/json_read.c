@@ -61,13 +61,18 @@ static void census(const char *t, size_t len, jread_census *c)
         } else if (ch == '[' || ch == '{' || ch == ':') {
             *(ch == '[' ? &c->arrays : ch == '{' ? &c->objects : &c->members) += 1;
         } else if (ch == '-' || (ch >= '0' && ch <= '9')) {
+            size_t start = i;
             c->numbers++;
             while (i + 1 < len && t[i + 1] != '\0' && strchr("0123456789+-.eE", t[i + 1]))
                 i++;
+            /* jansson's lexer buffers a number's text as it does a string's. */
+            c->longest = (double)(i + 1 - start) > c->longest ? (double)(i + 1 - start) : c->longest;
         } else if (ch >= 'a' && ch <= 'z') {
+            size_t start = i;
             c->literals++;
             while (i + 1 < len && t[i + 1] >= 'a' && t[i + 1] <= 'z')
                 i++;
+            c->longest = (double)(i + 1 - start) > c->longest ? (double)(i + 1 - start) : c->longest;
         }
     }
 }
@@ -80,7 +85,8 @@ static void census(const char *t, size_t len, jread_census *c)
  * and the old one beside the new while it grows); an object 224 (its
  * first 8 buckets) and 120 + the key's bytes per member (the pair, buckets
  * of up to twice the members, old and new while they grow); true, false
- * and null are shared, 0; the token buffer 3 times the longest string; 64
+ * and null are shared, 0; the token buffer 3 times the longest token
+ * (string, number or word: the lexer buffers each); 64
  * KiB of the parser's own.  Every value but the root is an element or a
  * member's value. */
 double jread_tree_bound(const char *text, size_t len)

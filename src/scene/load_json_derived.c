@@ -162,7 +162,10 @@ static int member_hex(jreader *r, json_t *obj, const char *key, uint64_t want, c
         return 1;
     if (!jread_string(r, obj, key, 0, &got))
         return 0;
-    int hex = got[0] == '0' && (got[1] == 'x' || got[1] == 'X') && got[2] != '\0' && got[2] != '-' && got[2] != '+';
+    /* Hex digits only after the 0x: strtoull alone would also take spaces,
+     * a sign and a second "0x". */
+    int hex = got[0] == '0' && (got[1] == 'x' || got[1] == 'X') && got[2] != '\0' &&
+              strspn(got + 2, "0123456789abcdefABCDEF") == strlen(got + 2);
     unsigned long long v = hex ? strtoull(got + 2, &end, 16) : 0;
     if (hex && *end == '\0' && v == want)
         return 1;
@@ -297,13 +300,19 @@ static int features(jreader *r, json_t *root)
 static int conventions(jreader *r, json_t *root)
 {
     static const char from[] = "the sampling rule this refray renders with";
-    json_t *c = present(present(present(root, "conventions"), "light_samples"), "constants");
-    if (!c)
+    static const char *const keys[] = {"gamma", "mul1", "mul2", "shift1", "shift2", "shift3", "pixel_salt", "mirror",
+                                       "transmitted", "light", NULL};
+    json_t *ls = present(present(root, "conventions"), "light_samples");
+    int ok = 1;
+    if (!present(ls, "constants"))
         return 1;
     jread_push_key(r, "conventions");
     jread_push_key(r, "light_samples");
-    jread_push_key(r, "constants");
-    int ok = member_hex(r, c, "gamma", SAMPLER_GAMMA, from) && member_hex(r, c, "mul1", SAMPLER_MUL1, from) &&
+    /* The constants are data a reader may take (unlike the prose around
+     * them): an object of these members only, as every derived object. */
+    json_t *c = enter(r, ls, "constants", keys, &ok);
+    if (c) {
+        ok = member_hex(r, c, "gamma", SAMPLER_GAMMA, from) && member_hex(r, c, "mul1", SAMPLER_MUL1, from) &&
              member_hex(r, c, "mul2", SAMPLER_MUL2, from) && member_number(r, c, "shift1", SAMPLER_SHIFT1, from) &&
              member_number(r, c, "shift2", SAMPLER_SHIFT2, from) &&
              member_number(r, c, "shift3", SAMPLER_SHIFT3, from) &&
@@ -311,7 +320,8 @@ static int conventions(jreader *r, json_t *root)
              member_number(r, c, "mirror", SCENE_JSON_KEY_MIRROR, from) &&
              member_number(r, c, "transmitted", SCENE_JSON_KEY_TRANSMITTED, from) &&
              member_hex(r, c, "light", SCENE_JSON_KEY_LIGHT, from);
-    jread_pop(r);
+        jread_pop(r);
+    }
     jread_pop(r);
     jread_pop(r);
     return ok;

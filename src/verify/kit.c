@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "export/export_json.h"
+#include "io/diag_print.h"
 #include "io/fileio.h"
 #include "io/filewrite.h"
 #include "io/scene_file.h"
@@ -195,7 +196,13 @@ static int load_exact(const char *path, const kit_opts *o, scene_model **s, veri
                       size_t why_size)
 {
     int status;
-    *s = scene_file_load(path, &o->limits, o->diag, o->warnings, &status);
+    scene_load_opts lo;
+    scene_load_opts_init(&lo);
+    lo.limits = o->limits;
+    lo.warnings = o->warnings;
+    lo.sink = o->diag ? diag_print : NULL;
+    lo.sink_user = o->diag;
+    *s = scene_file_load_confined(path, &lo, o->read_dirs, &status);
     if (!*s) {
         snprintf(why, why_size, "cannot load '%s' (see the messages above)", path);
         return status;

@@ -32,6 +32,9 @@ typedef struct kit_opts {
     int (*cancel)(void *user); /* asked between scenes: non-zero stops the build,
                                   STATUS_CANCELLED, nothing left; NULL: never */
     void *cancel_user;
+    const char *const *read_dirs; /* [REL-READ-1] NULL-ended directories a scene's
+                                     include and mesh files may come from beside
+                                     the scene's own tree; NULL: read anywhere */
 } kit_opts;
 
 /*
