@@ -189,11 +189,32 @@ if [ "$what" = all ] || [ "$what" = isect ]; then
     wp_run wp_isect z3,cvc4,cvc4-strings "$ISECT_FCT" "$src/render/isect_common.c" "$src/render/intersect.c" || status=1
 fi
 
-# Eva on the hit tests: open alarms (spec/proofs.md, "Hit tests"), so not
-# part of all or quick yet.
-if [ "$what" = isect-eva ]; then
+# Eva on the hit tests (spec/proofs.md, "Hit tests"; tests/prove/eva_isect.c):
+# the tests with isect_quotient by its contract, and isect_quotient over
+# every binade of its divisor.  isect-tri: triangle_solve, whose alarms are
+# open (not in all or quick).
+if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ]; then
+    start=$(date +%s)
+    { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
+      echo "BOX(0x1p1023, DBL_MAX)"; } >"$out/isect_boxes.h"
+    for k in $(seq -535 3 1); do echo "SBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/sphere_boxes.h"
+    echo "SBOX(4, 4)" >>"$out/sphere_boxes.h"
     echo "== Eva, hit tests (-warn-special-float non-finite)"
-    eva_run isect eva_isect "" "" tests/prove/eva_isect.c || status=1
+    if [ "$what" = isect-tri ]; then
+        eva_run isect_tri eva_isect_triangle vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
+            tests/prove/eva_isect.c || status=1
+    else
+        # PROVE_EVA (names, comma-separated) keeps some of them.
+        while read -r name main skip; do
+            case ",${PROVE_EVA:-$name}," in *",$name,"*) ;; *) continue ;; esac
+            eva_run "$name" "$main" "${skip#-}" "" tests/prove/eva_isect.c || status=1
+        done <<RUNS
+isect eva_isect isect_quotient,vec_length,vec_length_fast,vec_normalize
+quotient eva_isect_quotient -
+sphere eva_isect_sphere held_root,vec_length,vec_length_fast,vec_normalize
+RUNS
+    fi
+    echo "   ($(( $(date +%s) - start )) s)"
 fi
 
 # Gappa: rounding bounds of the doubles (spec/proofs.md, "Rounding bounds").
