@@ -119,10 +119,8 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
     ensures \result != 0 ==> \is_finite(*t) && EXACT(r->tmin < *t < r->tmax);   // doubles too
     ensures EXACT(\result != 0 ==> n.x * (r->origin.x + *t * r->dir.x - p0.x) +
                   n.y * (r->origin.y + *t * r->dir.y - p0.y) + n.z * (r->origin.z + *t * r->dir.z - p0.z) == 0);
-    // no hit: parallel, t outside (tmin, tmax), or |t| at least 2^1020 (isect_quotient)
-    ensures EXACT(\result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax) ||
-                  \abs(n.x * (p0.x - r->origin.x) + n.y * (p0.y - r->origin.y) + n.z * (p0.z - r->origin.z)) >=
-                  \abs(vdot(n, r->dir)) * 0x1p1020); */
+    // no hit: parallel, t outside (tmin, tmax), or t past 2^1020, held there (isect_quotient)
+    ensures EXACT(\result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax) || \abs(*t) == isect_held); */
 static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
@@ -136,6 +134,7 @@ static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
      * rejected): no hit. */
     if (!isect_quotient(vec_dot(n, w), dn, t))
         return 0;
+    /*@ assert EXACT(*t == vdot(n, w) / dn); */
     /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
     /*@ assert EXACT(*t * dn == vdot(n, w)); */
     return in_interval(r, *t);
