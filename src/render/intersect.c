@@ -132,10 +132,9 @@ static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
                     n.z * (p0.z - r->origin.z)); */
     /* Nearly parallel, t past 2^1020 (it was an infinity the interval
      * rejected): no hit. */
+    /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
     if (!isect_quotient(vec_dot(n, w), dn, t))
         return 0;
-    /*@ assert EXACT(*t == vdot(n, w) / dn); */
-    /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
     /*@ assert EXACT(*t * dn == vdot(n, w)); */
     return in_interval(r, *t);
 }

@@ -37,7 +37,7 @@
     assigns \result \from num, den;
     ensures \result == 0 || \result == 1;
     ensures \initialized(q) && \is_finite(*q) && DOUBLES(\abs(*q) <= 0x1p1021);
-    ensures EXACT(\result == 1 ==> den != 0 && *q == num / den);
+    ensures EXACT(\result == 1 ==> den != 0 && *q == num / den && *q * den == num);
     ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * isect_held && \abs(*q) == isect_held);
     ensures EXACT(\result == 0 ==> (*q > 0 <==> (num < 0 <==> den < 0))); */
 int isect_quotient(real num, real den, real *q);

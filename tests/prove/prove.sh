@@ -6,9 +6,10 @@
 # through Why3.  Prints, per function, WP goals proved / total and the Eva
 # alarms and unproved clauses; exits 1 on any alarm, unproved clause or goal.
 #
-#   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-tri|gappa]
-#   (all but isect-tri when no argument; isect: WP on the hit tests alone,
-#   isect-eva: Eva on them, isect-tri: Eva on triangle_solve, alarms open)
+#   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-sphere|isect-tri|gappa]
+#   (all but isect-sphere and isect-tri when no argument; isect: WP on the
+#   hit tests alone, isect-eva: Eva on them; isect-sphere, isect-tri: Eva on
+#   isect_sphere_roots, triangle_solve, whose alarms are open)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
@@ -192,9 +193,10 @@ fi
 
 # Eva on the hit tests (spec/proofs.md, "Hit tests"; tests/prove/eva_isect.c):
 # the tests with isect_quotient by its contract, and isect_quotient over
-# every binade of its divisor.  isect-tri: triangle_solve, whose alarms are
-# open (not in all or quick).
-if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ]; then
+# every binade of its divisor.  isect-sphere, isect-tri: isect_sphere_roots
+# and triangle_solve, whose alarms are open (not in all or quick).
+if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ] ||
+    [ "$what" = isect-sphere ]; then
     start=$(date +%s)
     { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
       echo "BOX(0x1p1023, DBL_MAX)"; } >"$out/isect_boxes.h"
@@ -206,11 +208,13 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
             tests/prove/eva_isect.c || status=1
     else
         # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
-        # isect alone (seconds): the binade splits take minutes.
-        keep=${PROVE_EVA:-}
-        [ "$what" = quick ] && keep=${keep:-isect}
+        # isect alone (seconds): the binade split takes minutes.  sphere
+        # (isect-sphere) has open alarms: not in all or quick.
+        keep=${PROVE_EVA:-isect,quotient}
+        [ "$what" = quick ] && keep=${PROVE_EVA:-isect}
+        [ "$what" = isect-sphere ] && keep=sphere
         while read -r name main skip; do
-            case ",${keep:-$name}," in *",$name,"*) ;; *) continue ;; esac
+            case ",$keep," in *",$name,"*) ;; *) continue ;; esac
             eva_run "$name" "$main" "${skip#-}" "" tests/prove/eva_isect.c || status=1
         done <<RUNS
 isect eva_isect isect_quotient,vec_length,vec_length_fast,vec_normalize
