@@ -53,8 +53,8 @@ int isect_quotient(real num, real den, real *q)
 /*@ requires \is_finite(num) && \is_finite(den) && DOUBLES(\abs(num) <= 0x1p1017);
     assigns \nothing;
     ensures \is_finite(\result) && DOUBLES(\abs(\result) <= 0x1p1021);
-    ensures EXACT(\abs(num) < \abs(den) * isect_held ==> \result == num / den);
-    ensures EXACT(\abs(num) >= \abs(den) * isect_held ==> \abs(\result) >= isect_held); */
+    ensures EXACT(\abs(num) < \abs(den) * 0x1p1020 ==> \result == num / den);
+    ensures EXACT(\abs(num) >= \abs(den) * 0x1p1020 ==> \abs(\result) >= 0x1p1020); */
 static real held_root(real num, real den)
 {
     real q;

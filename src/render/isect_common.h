@@ -16,13 +16,6 @@
     (f.z + t * d.z) * (f.z + t * d.z);
 */
 
-/*@ // 2^1020, named: its 308 digits in a goal's hypotheses stall the provers
-  axiomatic IsectHeld {
-    logic mreal isect_held;
-    axiom isect_held_value: isect_held == 0x1p1020;
-  }
-*/
-
 /* The ray parameters the hit tests return are at most 2^1020 in magnitude
  * (spec/proofs.md, "Hit tests"): num/den, or 2^1020 with the sign of
  * num/den where that passes it, decided before dividing so that no
@@ -38,7 +31,7 @@
     ensures \result == 0 || \result == 1;
     ensures \initialized(q) && \is_finite(*q) && DOUBLES(\abs(*q) <= 0x1p1021);
     ensures EXACT(\result == 1 ==> den != 0 && *q == num / den && *q * den == num);
-    ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * isect_held && \abs(*q) == isect_held);
+    ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * 0x1p1020 && \abs(*q) == 0x1p1020);
     ensures EXACT(\result == 0 ==> (*q > 0 <==> (num < 0 <==> den < 0))); */
 int isect_quotient(real num, real den, real *q);
 
