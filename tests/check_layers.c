@@ -575,6 +575,29 @@ START_TEST(test_includes_written_plainly)
 }
 END_TEST
 
+/* [REL-CANCEL-1] A caller's cancel callback is asked only through
+ * base/cancel.h (cancel_poll: one rule for when it is asked and for a stop
+ * that sticks): no file under src/ calls a `cancel` member itself
+ * ("->cancel(" or ".cancel("). */
+START_TEST(test_cancel_through_helper)
+{
+    static tree t;
+    scan_tree(&t);
+    for (int i = 0; i < t.count; i++) {
+        char full[NAME_LEN + 8], line[512];
+        snprintf(full, sizeof full, "src/%s", t.files[i].path);
+        if (strcmp(t.files[i].path, "base/cancel.h") == 0)
+            continue;
+        FILE *fp = fopen(full, "r");
+        ck_assert_ptr_nonnull(fp);
+        for (int n = 1; fgets(line, sizeof line, fp); n++)
+            ck_assert_msg(!strstr(line, "->cancel(") && !strstr(line, ".cancel("),
+                          "src/%s:%d asks a cancel callback itself; use base/cancel.h: %s", t.files[i].path, n, line);
+        fclose(fp);
+    }
+}
+END_TEST
+
 Suite *suite_layers(void)
 {
     Suite *s = suite_create("layers");
@@ -587,6 +610,7 @@ Suite *suite_layers(void)
     tcase_add_test(tc, test_module_reader_sees_calls);
     tcase_add_test(tc, test_includes_written_plainly);
     tcase_add_test(tc, test_public_header_standard_only);
+    tcase_add_test(tc, test_cancel_through_helper);
     suite_add_tcase(s, tc);
     return s;
 }
