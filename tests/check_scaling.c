@@ -780,13 +780,15 @@ END_TEST
  * first tiles keeps them and writes nothing; the same command renders
  * only the other bands (the checkpoint's split, [TILE-SPLIT-2], though
  * --jobs changed) and
- * writes the bytes of an uninterrupted render; the checkpoint is gone. */
+ * writes the bytes of an uninterrupted render; the checkpoint is gone.
+ * The checkpoint's name holds a line feed and an ESC sequence, which both
+ * messages naming it print escaped ([REL-ESCAPE-1]). */
 START_TEST(test_scaling_resume)
 {
-    char dir[64], ck[300], out[300], plain[300], note[200];
+    char dir[64], ck[300], out[300], plain[300], note[400];
     static cli_run r;
     cli_scratch(dir, sizeof dir, "scale");
-    cli_path(ck, sizeof ck, dir, "ck");
+    cli_path(ck, sizeof ck, dir, "ck\n\033[31m");
     snprintf(note, sizeof note, "out.%s", display_ext());
     cli_path(out, sizeof out, dir, note);
     const char *first[] = {"--jobs", "20", "-q", "--checkpoint", ck, "-o", out, NULL}, *args[64];
@@ -801,7 +803,9 @@ START_TEST(test_scaling_resume)
     ck_assert_int_eq(kill(pid, SIGINT), 0);
     finish(dir, pid, &r);
     ck_assert_msg(r.code == 130, "exit %d: %s", r.code, r.err);
-    ASSERT_ERR_HAS(&r, "nothing written but the finished tiles in");
+    snprintf(note, sizeof note, "nothing written but the finished tiles in '%s/ck\\x0a\\x1b[31m' (", dir);
+    ASSERT_ERR_HAS(&r, note);
+    ck_assert_msg(strchr(r.err, '\033') == NULL, "%s", r.err);
     ck_assert(!cli_exists(out));
     kept = files_with(ck, ".pfm.tile");
     /* 80 rows, 20 workers: min(80, max(64, 4 x 20)) = 80 bands. */
@@ -812,8 +816,10 @@ START_TEST(test_scaling_resume)
     render_args(args, SLOW, again);
     cli_refray(&r, args);
     ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
-    snprintf(note, sizeof note, "%d of 80 tiles are done", kept);
+    snprintf(note, sizeof note, "refray: resuming from '%s/ck\\x0a\\x1b[31m': %d of 80 tiles are done\n", dir,
+             kept);
     ASSERT_ERR_HAS(&r, note);
+    ck_assert_msg(strchr(r.err, '\033') == NULL, "%s", r.err);
     ck_assert(!cli_exists(ck));
     snprintf(note, sizeof note, "plain.%s", display_ext());
     const char *whole[] = {"-q", "-o", cli_path(plain, sizeof plain, dir, note), NULL};
