@@ -233,6 +233,49 @@ START_TEST(test_api_render_region_refusals)
 }
 END_TEST
 
+/* [EMBED-API-11] An image size a host overrides is held to the limits the
+ * scene was loaded with, as the scene's own size was: over max_pixels,
+ * max_width or max_height the renderer is refused (RF_ERR_USAGE, no
+ * renderer, no image); at the limits it is made.  With the default limits
+ * 8192 x 8192 is exactly the 67,108,864 pixels allowed, 8193 x 8192 one
+ * row over. */
+START_TEST(test_api_size_override_limits)
+{
+    rf_load_options lo;
+    rf_load_options_init(&lo);
+    rf_scene *s = load(plane_text, &lo);
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.width = 8193;
+    o.height = 8192;
+    rf_renderer *r = (rf_renderer *)&o;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
+    ck_assert_ptr_null(r);
+    rf_image *img = (rf_image *)&o;
+    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_USAGE);
+    ck_assert_ptr_null(img);
+    rf_scene_free(s);
+    lo.limits.max_pixels = 100;
+    lo.limits.max_width = 20;
+    lo.limits.max_height = 10;
+    s = load(plane_text, &lo);
+    static const int sizes[][3] = {
+        /* width, height, made */
+        {10, 10, 1}, {20, 5, 1}, {0, 0, 1}, {11, 10, 0}, {21, 1, 0}, {1, 11, 0}, {0, 34, 0}, {25, 0, 0}, {0, 10, 1},
+    };
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        o.width = sizes[i][0];
+        o.height = sizes[i][1];
+        r = NULL;
+        ck_assert_msg(rf_renderer_create(s, &o, &r) == (sizes[i][2] ? RF_OK : RF_ERR_USAGE), "%dx%d", o.width,
+                      o.height);
+        ck_assert_int_eq(r != NULL, sizes[i][2]);
+        rf_renderer_free(r);
+    }
+    rf_scene_free(s);
+}
+END_TEST
+
 /* [EMBED-API-NULL-1] A NULL the reference does not allow comes back as
  * RF_ERR_USAGE (the out pointer, when there is one, set to NULL) instead
  * of a crash; a stride so large that the last row's end wraps around
@@ -877,6 +920,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_regions_tile_the_image);
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
+    tcase_add_test(tc, test_api_size_override_limits);
     tcase_add_test(tc, test_api_null_arguments);
     tcase_add_test(tc, test_api_null_everywhere);
     tcase_add_test(tc, test_api_broken_resolver);

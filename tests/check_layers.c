@@ -548,7 +548,9 @@ START_TEST(test_public_header_standard_only)
 }
 END_TEST
 
-START_TEST(test_includes_written_plainly)
+/* check(path, n, line) for every line n of every source file under src/
+ * (path relative to src/). */
+static void each_source_line(void (*check)(const char *path, int n, const char *line))
 {
     static tree t;
     scan_tree(&t);
@@ -557,21 +559,46 @@ START_TEST(test_includes_written_plainly)
         snprintf(full, sizeof full, "src/%s", t.files[i].path);
         FILE *fp = fopen(full, "r");
         ck_assert_ptr_nonnull(fp);
-        while (fgets(line, sizeof line, fp)) {
-            const char *p = line;
-            while (*p == ' ' || *p == '\t')
-                p++;
-            if (*p != '#')
-                continue;
-            p++;
-            while (*p == ' ' || *p == '\t')
-                p++;
-            if (strncmp(p, "include", 7) == 0)
-                ck_assert_msg(line[0] == '#' && strncmp(line, "#include", 8) == 0,
-                              "src/%s: write includes as \"#include\" at the line start: %s", t.files[i].path, line);
-        }
+        for (int n = 1; fgets(line, sizeof line, fp); n++)
+            check(t.files[i].path, n, line);
         fclose(fp);
     }
+}
+
+static void include_written_plainly(const char *path, int n, const char *line)
+{
+    const char *p = line;
+    while (*p == ' ' || *p == '\t')
+        p++;
+    if (*p != '#')
+        return;
+    p++;
+    while (*p == ' ' || *p == '\t')
+        p++;
+    if (strncmp(p, "include", 7) == 0)
+        ck_assert_msg(line[0] == '#' && strncmp(line, "#include", 8) == 0,
+                      "src/%s:%d: write includes as \"#include\" at the line start: %s", path, n, line);
+}
+
+START_TEST(test_includes_written_plainly)
+{
+    each_source_line(include_written_plainly);
+}
+END_TEST
+
+/* [REL-CANCEL-1] A caller's cancel callback is asked only through
+ * base/cancel.h (cancel_poll: one rule for when it is asked and for a stop
+ * that sticks): no file under src/ calls a `cancel` member itself
+ * ("->cancel(" or ".cancel("). */
+static void cancel_through_helper(const char *path, int n, const char *line)
+{
+    ck_assert_msg(strcmp(path, "base/cancel.h") == 0 || (!strstr(line, "->cancel(") && !strstr(line, ".cancel(")),
+                  "src/%s:%d asks a cancel callback itself; use base/cancel.h: %s", path, n, line);
+}
+
+START_TEST(test_cancel_through_helper)
+{
+    each_source_line(cancel_through_helper);
 }
 END_TEST
 
@@ -587,6 +614,7 @@ Suite *suite_layers(void)
     tcase_add_test(tc, test_module_reader_sees_calls);
     tcase_add_test(tc, test_includes_written_plainly);
     tcase_add_test(tc, test_public_header_standard_only);
+    tcase_add_test(tc, test_cancel_through_helper);
     suite_add_tcase(s, tc);
     return s;
 }

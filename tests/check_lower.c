@@ -597,14 +597,15 @@ START_TEST(test_scene_load_image_limits)
 }
 END_TEST
 
-/* Meshes read through `mesh`, relative to the scene file's directory. */
+/* Meshes read through `mesh`, relative to the scene file's directory (and
+ * in its tree, [REL-READ-1]). */
 START_TEST(test_scene_load_mesh)
 {
     loaded l;
-    load_as(&l, "tests/scenes/mesh.scene",
-            "mesh { file \"../obj/cube.obj\" }\n"
-            "mesh { file \"../obj/quad.obj\" translate [0, 0, 5] scale 2 material { Kd 0.5 } }\n"
-            "mesh { file \"../obj/tetrahedron.obj\" }", NULL, 1);
+    load_as(&l, "tests/mesh.scene",
+            "mesh { file \"obj/cube.obj\" }\n"
+            "mesh { file \"obj/quad.obj\" translate [0, 0, 5] scale 2 material { Kd 0.5 } }\n"
+            "mesh { file \"./obj/tetrahedron.obj\" }", NULL, 1);
     ck_assert_msg(l.scene != NULL, "%s", l.messages);
     const scene_model *s = l.scene;
     ck_assert_int_eq(s->mesh_count, 3);
@@ -612,7 +613,7 @@ START_TEST(test_scene_load_mesh)
     ck_assert_int_eq(s->meshes[0].geom.tri_count, 12);
     ck_assert_int_eq(s->meshes[1].geom.tri_count, 2);
     ck_assert_int_eq(s->meshes[2].geom.tri_count, 4);
-    ck_assert_str_eq(s->meshes[0].path, "tests/scenes/../obj/cube.obj");
+    ck_assert_str_eq(s->meshes[0].path, "tests/obj/cube.obj");
     ck_assert(s->features.meshes);
     for (int i = 0; i < s->prim_count; i++) {
         ck_assert_int_eq(s->prims[i].kind, PRIM_MESH);
@@ -646,9 +647,9 @@ END_TEST
 START_TEST(test_scene_load_mesh_errors)
 {
     loaded l;
-    load_as(&l, "tests/scenes/mesh.scene", "mesh { file \"../obj/none.obj\" }", NULL, 1);
+    load_as(&l, "tests/scenes/mesh.scene", "mesh { file \"../scenes/none.obj\" }", NULL, 1);
     ck_assert_str_eq(first_line(&l),
-                     "tests/scenes/mesh.scene:1:13: error: cannot open 'tests/scenes/../obj/none.obj': "
+                     "tests/scenes/mesh.scene:1:13: error: cannot open 'tests/scenes/../scenes/none.obj': "
                      "No such file or directory");
     ck_assert_int_eq(l.status, STATUS_DATA);
     loaded_done(&l);
@@ -661,9 +662,9 @@ START_TEST(test_scene_load_mesh_errors)
     /* The triangle limit is the OBJ reader's, at the face that passes it. */
     scene_limits lim = scene_default_limits();
     lim.max_mesh_triangles = 11;
-    load_as(&l, "tests/scenes/mesh.scene", "mesh { file \"../obj/cube.obj\" }", &lim, 1);
+    load_as(&l, "tests/mesh.scene", "mesh { file \"obj/cube.obj\" }", &lim, 1);
     ck_assert_ptr_null(l.scene);
-    ck_assert_str_eq(first_line(&l), "tests/scenes/../obj/cube.obj:24:1: error: mesh exceeds the limit of 11 triangles (--max-mesh-triangles)");
+    ck_assert_str_eq(first_line(&l), "tests/obj/cube.obj:24:1: error: mesh exceeds the limit of 11 triangles (--max-mesh-triangles)");
     loaded_done(&l);
 }
 END_TEST

@@ -82,7 +82,8 @@ static int load_and_render(const char *path, const char *text, const mem *m, int
         scene_file_reader_init(&files, -1, m);
         scene_source root = {path, NULL, text, strlen(text), 0};
         o.resolver = scene_file_resolver(&files);
-        s = scene_file_load_source(&root, &o, &status);
+        status = scene_file_reader_confine(&files, path, NULL);
+        s = status == STATUS_OK ? scene_file_load_source(&root, &o, &status) : NULL;
         scene_file_reader_free(&files);
     } else {
         s = scene_file_load_with(path, &o, &status);

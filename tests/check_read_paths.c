@@ -18,6 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "cli_testlib.h"
+#include "io/scene_file.h"
 #include "refray.h"
 
 static char w[64];
@@ -156,9 +157,45 @@ START_TEST(test_read_paths_library_is_the_hosts_choice)
 }
 END_TEST
 
-/* [REL-READ-1] Every command that loads scenes confines them: kit,
- * verify, export and oracle too, each refusing "../" (65) with the rule's
- * message before reading a byte of the file outside. */
+/* The commands of the program's dispatch (src/cli/cli.c's
+ * `strcmp(cmd, "NAME")`) that are neither in loads[] nor in none[]; the
+ * count of them, their names joined in out. */
+static int unclassified(const char *const *loads, size_t n_loads, const char *const *none, size_t n_none,
+                        char *out, size_t size)
+{
+    FILE *f = fopen("src/cli/cli.c", "r");
+    ck_assert_ptr_nonnull(f);
+    char line[400];
+    int found = 0, missing = 0;
+    out[0] = '\0';
+    while (fgets(line, sizeof line, f)) {
+        const char *p = strstr(line, "strcmp(cmd, \"");
+        char name[64];
+        if (!p || sscanf(p + 13, "%63[a-z]\"", name) != 1)
+            continue; /* none, or an option ("--help") */
+        found++;
+        int known = 0;
+        for (size_t i = 0; i < n_loads; i++)
+            known |= strcmp(name, loads[i]) == 0;
+        for (size_t i = 0; i < n_none; i++)
+            known |= strcmp(name, none[i]) == 0;
+        if (!known && strlen(out) + strlen(name) + 2 < size) {
+            strcat(out, " ");
+            strcat(out, name);
+        }
+        missing += !known;
+    }
+    fclose(f);
+    ck_assert_int_ge(found, 9);
+    return missing;
+}
+
+/* [REL-READ-1] Every command that loads scenes confines them: check,
+ * render, kit, verify (and verify --stability), export and oracle, each
+ * refusing "../" (65) with the rule's message before reading a byte of
+ * the file outside.  Every command of the program is either run here or
+ * named as one that loads no scene, so a new command must be added to
+ * one list or the other. */
 START_TEST(test_read_paths_every_command)
 {
     cli_run *r = malloc(sizeof *r);
@@ -169,10 +206,21 @@ START_TEST(test_read_paths_every_command)
     cli_path(kit, sizeof kit, w, "kit");
     const char *const commands[][7] = {
         {"kit", "-o", kit, scene, NULL},
+        {"check", scene, NULL},
+        {"render", scene, "-o", out, "-q", NULL},
         {"verify", scene, NULL},
+        {"verify", "--stability", scene, NULL},
         {"export", scene, "--to", "pov", NULL},
         {"oracle", scene, "-o", out, NULL},
     };
+    static const char *const loads[] = {"kit", "check", "render", "verify", "export", "oracle"};
+    /* compare and merge read images, conform a kit's manifest and runs
+     * another renderer on its scenes. */
+    static const char *const none[] = {"compare", "conform", "merge"};
+    char names[400];
+    ck_assert_msg(unclassified(loads, sizeof loads / sizeof loads[0], none, sizeof none / sizeof none[0], names,
+                               sizeof names) == 0,
+                  "commands neither tested here nor named as loading no scene:%s", names);
     size_t first = 0;
     if (!REFRAY_HAVE_JSON) {
         /* Without jansson kit refuses before it loads anything. */
@@ -186,9 +234,52 @@ START_TEST(test_read_paths_every_command)
         ck_assert_msg(r->code == 65, "%s: exit %d, stderr %s", commands[i][0], r->code, r->err);
         ck_assert_msg(strstr(r->err, "is outside the directories this load may read") != NULL
                       && strstr(r->err, "other/o.scene:1:") == NULL, "%s: stderr %s", commands[i][0], r->err);
+        ck_assert(!cli_exists(out));
     }
     cli_remove(w);
     free(r);
+}
+END_TEST
+
+/* [REL-READ-1] The file loaders of src/io confine by default, so a new
+ * command cannot forget it: the short forms and scene_file_load_confined
+ * without --allow-read directories keep to the scene's tree, a reader
+ * nobody confined reads nothing, and only scene_file_load_anywhere (the
+ * library host's opt-out) reads outside. */
+START_TEST(test_read_paths_io_confined_by_default)
+{
+    layout();
+    char up[300], ok[300];
+    cli_path(up, sizeof up, w, "sub/up.scene");
+    cli_path(ok, sizeof ok, w, "sub/ok.scene");
+    static const char text[] = "include \"inner/b.scene\"\n";
+    int status = -1;
+    ck_assert_ptr_null(scene_file_load(up, NULL, NULL, 0, &status));
+    ck_assert_int_eq(status, STATUS_DATA);
+    status = -1;
+    ck_assert_ptr_null(scene_file_load_confined(up, NULL, NULL, &status));
+    ck_assert_int_eq(status, STATUS_DATA);
+    status = -1;
+    ck_assert_ptr_null(scene_file_load_text(up, "include \"../other/o.scene\"\n", 27, NULL, NULL, 0, &status));
+    ck_assert_int_eq(status, STATUS_DATA);
+    scene_model *s = scene_file_load(ok, NULL, NULL, 0, &status);
+    ck_assert_msg(s != NULL, "status %d", status);
+    scene_free(s);
+    s = scene_file_load_anywhere(up, NULL, &status);
+    ck_assert_msg(s != NULL, "status %d", status);
+    scene_free(s);
+    /* A bare reader: not told where it may read, it reads nothing. */
+    scene_file_reader files;
+    scene_file_reader_init(&files, -1, NULL);
+    scene_load_opts o;
+    scene_load_opts_init(&o);
+    o.resolver = scene_file_resolver(&files);
+    scene_source root = {ok, NULL, text, sizeof text - 1, 0};
+    status = -1;
+    ck_assert_ptr_null(scene_file_load_source(&root, &o, &status));
+    ck_assert_int_eq(status, STATUS_DATA);
+    scene_file_reader_free(&files);
+    cli_remove(w);
 }
 END_TEST
 
@@ -228,6 +319,7 @@ Suite *suite_read_paths(void)
     tcase_add_test(tc, test_read_paths_every_command);
     tcase_add_test(tc, test_read_paths_unresolvable_link);
     tcase_add_test(tc, test_read_paths_library_is_the_hosts_choice);
+    tcase_add_test(tc, test_read_paths_io_confined_by_default);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -399,6 +399,35 @@ START_TEST(test_scaling_merge_limits)
 }
 END_TEST
 
+/* Renders tile 0/2 of scenes[0] and 1/2 of scenes[1] and scenes[2] at
+ * width x height with light_samples into dir/t0.pfm .. t2.pfm (paths into t). */
+static void render_tiles(const char *dir, const char *const *scenes, const char *width, const char *height,
+                         const char *light_samples, char t[3][300])
+{
+    static const char *const specs[3] = {"0/2", "1/2", "1/2"};
+    static cli_run r;
+    char name[32];
+    for (int i = 0; i < 3; i++) {
+        snprintf(name, sizeof name, "t%d.pfm", i);
+        const char *args[] = {"render", scenes[i], "-q", "--width", width, "--height", height, "--light-samples",
+                              light_samples, "--tile", specs[i], "-o", cli_path(t[i], sizeof t[i], dir, name), NULL};
+        cli_refray(&r, args);
+        ck_assert_msg(r.code == 0, "render: %s", r.err);
+    }
+}
+
+/* [SCALE-MERGE-2] Merging tiles a and b into dir/x.pfm (its path into
+ * merged) is refused (65) as two renders', writing nothing. */
+static void merge_refused(const char *dir, const char *a, const char *b, char *merged, size_t size)
+{
+    static cli_run r;
+    const char *mixed[] = {"merge", a, b, "-o", cli_path(merged, size, dir, "x.pfm"), NULL};
+    cli_refray(&r, mixed);
+    ck_assert_msg(r.code == 65, "exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "comes from another render");
+    ck_assert(!cli_exists(merged));
+}
+
 #if REFRAY_HAVE_JSON
 /* [SCALE-MERGE-1] [SCALE-MERGE-2] Tiles of a JSON scene (spec/json.md; the
  * demo exported) merge into the bytes of its whole render; the JSON's text
@@ -414,14 +443,8 @@ START_TEST(test_scaling_json_scene)
     ck_assert_msg(r.code == 0, "export: %s", r.err);
     snprintf(cmd, sizeof cmd, "{ cat '%s'; echo ' '; } > '%s'", json, cli_path(edited, sizeof edited, dir, "e.json"));
     ck_assert_int_eq(system(cmd), 0);
-    const char *which[3] = {json, json, edited}, *specs[3] = {"0/2", "1/2", "1/2"};
-    for (int i = 0; i < 3; i++) {
-        snprintf(name, sizeof name, "t%d.pfm", i);
-        const char *args[] = {"render", which[i], "-q", "--width", "40", "--height", "24", "--light-samples", "8",
-                              "--tile", specs[i], "-o", cli_path(t[i], sizeof t[i], dir, name), NULL};
-        cli_refray(&r, args);
-        ck_assert_msg(r.code == 0, "render: %s", r.err);
-    }
+    const char *which[3] = {json, json, edited};
+    render_tiles(dir, which, "40", "24", "8", t);
     snprintf(name, sizeof name, "whole.%s", display_ext());
     const char *args[] = {"render", json, "-q", "--width", "40", "--height", "24", "--light-samples", "8", "-o",
                           cli_path(whole, sizeof whole, dir, name), NULL};
@@ -432,11 +455,7 @@ START_TEST(test_scaling_json_scene)
     cli_refray(&r, merge);
     ck_assert_msg(r.code == 0, "merge: %s", r.err);
     same_bytes(whole, merged);
-    const char *mixed[] = {"merge", t[0], t[2], "-o", cli_path(merged, sizeof merged, dir, "x.pfm"), NULL};
-    cli_refray(&r, mixed);
-    ck_assert_int_eq(r.code, 65);
-    ASSERT_ERR_HAS(&r, "comes from another render");
-    ck_assert(!cli_exists(merged));
+    merge_refused(dir, t[0], t[2], merged, sizeof merged);
     cli_remove(dir);
 }
 END_TEST
@@ -464,25 +483,15 @@ static void mesh_scene_copy(const char *dir, const char *sub, const char *vertex
  * tiles of two copies of the same files merge into the whole render. */
 START_TEST(test_scaling_mesh_in_the_key)
 {
-    char dir[64], a[300], b[300], c[300], t[3][300], whole[300], merged[300], name[32];
+    char dir[64], a[300], b[300], c[300], t[3][300], whole[300], merged[300];
     static cli_run r;
     cli_scratch(dir, sizeof dir, "scale");
     mesh_scene_copy(dir, "a", NULL, a, sizeof a);
     mesh_scene_copy(dir, "b", "v 0 1.2 0.2", b, sizeof b);
     mesh_scene_copy(dir, "c", NULL, c, sizeof c);
-    const char *scenes[3] = {a, b, c}, *specs[3] = {"0/2", "1/2", "1/2"};
-    for (int i = 0; i < 3; i++) {
-        snprintf(name, sizeof name, "t%d.pfm", i);
-        const char *args[] = {"render", scenes[i], "-q", "--width", "32", "--height", "20", "--light-samples", "4",
-                              "--tile", specs[i], "-o", cli_path(t[i], sizeof t[i], dir, name), NULL};
-        cli_refray(&r, args);
-        ck_assert_msg(r.code == 0, "render: %s", r.err);
-    }
-    const char *mixed[] = {"merge", t[0], t[1], "-o", cli_path(merged, sizeof merged, dir, "x.pfm"), NULL};
-    cli_refray(&r, mixed);
-    ck_assert_msg(r.code == 65, "exit %d: %s", r.code, r.err);
-    ASSERT_ERR_HAS(&r, "comes from another render");
-    ck_assert(!cli_exists(merged));
+    const char *scenes[3] = {a, b, c};
+    render_tiles(dir, scenes, "32", "20", "4", t);
+    merge_refused(dir, t[0], t[1], merged, sizeof merged);
     const char *args[] = {"render", a, "-q", "--width", "32", "--height", "20", "--light-samples", "4", "-o",
                           cli_path(whole, sizeof whole, dir, "whole.pfm"), NULL};
     cli_refray(&r, args);
@@ -780,13 +789,15 @@ END_TEST
  * first tiles keeps them and writes nothing; the same command renders
  * only the other bands (the checkpoint's split, [TILE-SPLIT-2], though
  * --jobs changed) and
- * writes the bytes of an uninterrupted render; the checkpoint is gone. */
+ * writes the bytes of an uninterrupted render; the checkpoint is gone.
+ * The checkpoint's name holds a line feed and an ESC sequence, which both
+ * messages naming it print escaped ([REL-ESCAPE-1]). */
 START_TEST(test_scaling_resume)
 {
-    char dir[64], ck[300], out[300], plain[300], note[200];
+    char dir[64], ck[300], out[300], plain[300], note[400];
     static cli_run r;
     cli_scratch(dir, sizeof dir, "scale");
-    cli_path(ck, sizeof ck, dir, "ck");
+    cli_path(ck, sizeof ck, dir, "ck\n\033[31m");
     snprintf(note, sizeof note, "out.%s", display_ext());
     cli_path(out, sizeof out, dir, note);
     const char *first[] = {"--jobs", "20", "-q", "--checkpoint", ck, "-o", out, NULL}, *args[64];
@@ -801,7 +812,9 @@ START_TEST(test_scaling_resume)
     ck_assert_int_eq(kill(pid, SIGINT), 0);
     finish(dir, pid, &r);
     ck_assert_msg(r.code == 130, "exit %d: %s", r.code, r.err);
-    ASSERT_ERR_HAS(&r, "nothing written but the finished tiles in");
+    snprintf(note, sizeof note, "nothing written but the finished tiles in '%s/ck\\x0a\\x1b[31m' (", dir);
+    ASSERT_ERR_HAS(&r, note);
+    ck_assert_msg(strchr(r.err, '\033') == NULL, "%s", r.err);
     ck_assert(!cli_exists(out));
     kept = files_with(ck, ".pfm.tile");
     /* 80 rows, 20 workers: min(80, max(64, 4 x 20)) = 80 bands. */
@@ -812,8 +825,10 @@ START_TEST(test_scaling_resume)
     render_args(args, SLOW, again);
     cli_refray(&r, args);
     ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
-    snprintf(note, sizeof note, "%d of 80 tiles are done", kept);
+    snprintf(note, sizeof note, "refray: resuming from '%s/ck\\x0a\\x1b[31m': %d of 80 tiles are done\n", dir,
+             kept);
     ASSERT_ERR_HAS(&r, note);
+    ck_assert_msg(strchr(r.err, '\033') == NULL, "%s", r.err);
     ck_assert(!cli_exists(ck));
     snprintf(note, sizeof note, "plain.%s", display_ext());
     const char *whole[] = {"-q", "-o", cli_path(plain, sizeof plain, dir, note), NULL};

@@ -39,11 +39,12 @@ static const solid solids[] = {
 
 enum { SOLIDS = sizeof solids / sizeof solids[0] };
 
-/* Loads a scene written here as if it were tests/obj/t.scene. */
+/* Loads a scene written here as if it were ./t.scene, so that its tree
+ * (where its files may come from, [REL-READ-1]) is the repository's. */
 static scene_model *load(const char *text)
 {
     int status;
-    scene_model *s = scene_file_load_text("tests/obj/t.scene", text, strlen(text), NULL, stderr, 0, &status);
+    scene_model *s = scene_file_load_text("t.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
     return s;
 }
@@ -54,7 +55,7 @@ static scene_model *load_solid(const solid *so, const char *material, const char
     snprintf(text, sizeof text,
              "image { width 8 height 8 max_depth 8 background 1 }\n"
              "distant_light { direction [-1, -2, -3] power 1 }\n"
-             "mesh { file \"%s\" material { %s } %s }\n",
+             "mesh { file \"tests/obj/%s\" material { %s } %s }\n",
              so->file, material, xforms);
     return load(text);
 }
@@ -169,7 +170,7 @@ START_TEST(test_watertight_prism_pixels_on_the_diagonal)
      * pixels darker by t (0.9). */
     scene_model *s = load("image { width 16 height 16 max_depth 8 background 1 }\n"
                        "camera { orthographic eye [-10, 0, 0] look_at [0, 0, 0] up [0, 1, 0] width 2 }\n"
-                       "mesh { file \"prism.obj\" material { Kd 0 t 0.9 ior 1.5 } }\n");
+                       "mesh { file \"tests/obj/prism.obj\" material { Kd 0 t 0.9 ior 1.5 } }\n");
     img_buf img = render(s);
     double first = img_pixel(&img, 0, 15)[0];
     int on_diagonal = 0;
@@ -217,7 +218,7 @@ START_TEST(test_watertight_cube_head_on_equals_box)
                                 "distant_light { direction [1, -2, -3] power 0.7 }\n"
                                 "%s { %s material { Kd [0.2, 0.3, 0.4] Ks 0.1 n 20 t 0.8 ior 1.5 } }\n";
     char text[1024];
-    snprintf(text, sizeof text, scene, "mesh", "file \"cube.obj\"");
+    snprintf(text, sizeof text, scene, "mesh", "file \"tests/obj/cube.obj\"");
     scene_model *m = load(text);
     snprintf(text, sizeof text, scene, "box", "from [-1, -1, -1] to [1, 1, 1]");
     scene_model *b = load(text);
@@ -242,7 +243,7 @@ static void mesh_against_box(const char *material, double rel)
         "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd [0.8, 0.7, 0.6] } }\n"
         "%s { %s rotate [0, 30, 0] rotate [20, 0, 0] translate [0, 0.5, 0] material { %s } }\n";
     char text[1024];
-    snprintf(text, sizeof text, scene, "mesh", "file \"cube.obj\"", material);
+    snprintf(text, sizeof text, scene, "mesh", "file \"tests/obj/cube.obj\"", material);
     scene_model *m = load(text);
     snprintf(text, sizeof text, scene, "box", "from [-1, -1, -1] to [1, 1, 1]", material);
     scene_model *b = load(text);
@@ -320,8 +321,8 @@ START_TEST(test_watertight_mirror_mesh_keeps_the_light)
 {
     /* [NUM-MESH-EDGE-1] The cube as a mesh, axis-aligned and turned: a ray
      * spawned from it starts off the triangle's edges, so none escapes. */
-    assert_mirror_keeps_light("mesh { file \"cube.obj\"", 200);
-    assert_mirror_keeps_light("mesh { file \"cube.obj\" rotate [17, 29, 41]", 200);
+    assert_mirror_keeps_light("mesh { file \"tests/obj/cube.obj\"", 200);
+    assert_mirror_keeps_light("mesh { file \"tests/obj/cube.obj\" rotate [17, 29, 41]", 200);
 }
 END_TEST
 
@@ -355,7 +356,7 @@ START_TEST(test_watertight_shadow_rays_through_edges)
      * point inside it: each is attenuated by t^2 (in and out), never t^3 or
      * t^4 (an edge counted twice), never t or 1 (a leak). */
     scene_model *s = load("point_light { position [0, 10, 0] power 1 }\n"
-                       "mesh { file \"cube.obj\" rotate [17, 29, 41] material { Kd 0 t 0.5 ior 1.5 } }\n");
+                       "mesh { file \"tests/obj/cube.obj\" rotate [17, 29, 41] material { Kd 0 t 0.5 ior 1.5 } }\n");
     tracer t;
     ck_assert(tracer_init(&t, s, 0, 0));
     const scene_trimesh *g = &s->meshes[0].geom;

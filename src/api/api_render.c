@@ -4,6 +4,7 @@
  */
 #include <string.h>
 #include "api/convert.h"
+#include "base/cancel.h"
 #include "base/hash.h"
 
 void rf_render_options_init(rf_render_options *o)
@@ -12,13 +13,29 @@ void rf_render_options_init(rf_render_options *o)
         memset(o, 0, sizeof *o);
 }
 
+/* Whether the caller's cancel says stop, asked now (base/cancel.h). */
+static int stop_asked(const rf_render_options *o)
+{
+    cancel_poll c = cancel_poll_make(o->cancel, o->user);
+    return cancel_now(&c);
+}
+
 /* The renderer's progress hook: the caller's progress, then cancel. */
 static int on_row(void *ctx, int done, int total)
 {
     const rf_render_options *o = &((const rf_renderer *)ctx)->options;
     if (o->progress)
         o->progress(o->user, done, total);
-    return o->cancel && o->cancel(o->user);
+    return stop_asked(o);
+}
+
+/* [EMBED-API-11] Whether the image size ro overrides keeps to the limits
+ * the scene was loaded with, as the scene's own size had to. */
+static int size_fits(const scene_model *s, const render_opts *ro)
+{
+    double w = ro->width ? ro->width : s->image.width, h = ro->height ? ro->height : s->image.height;
+    return w <= (double)s->max_image.width && h <= (double)s->max_image.height &&
+           w * h <= (double)s->max_image.pixels;
 }
 
 rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out)
@@ -28,7 +45,7 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
     if (!out)
         return RF_ERR_USAGE;
     *out = NULL;
-    if (!s || !api_render_opts(o, &ro))
+    if (!s || !api_render_opts(o, &ro) || !size_fits(s, &ro))
         return RF_ERR_USAGE;
     rf_renderer *r = mem_alloc(&s->mem, sizeof *r);
     if (!r)
@@ -71,7 +88,7 @@ static rf_status region(rf_renderer *r, int x0, int y0, int x1, int y1, float *f
      * stride so large that this wraps around would write before pixels. */
     if ((size_t)(y1 - y0 - 1) > ((size_t)-1 - 3 * (size_t)(x1 - x0)) / row_stride)
         return RF_ERR_USAGE;
-    if (r->options.cancel && r->options.cancel(r->options.user))
+    if (stop_asked(&r->options))
         return RF_ERR_CANCELLED;
     render_target t = {x0, y0, x1, y1, f32, f64, row_stride};
     return api_status(renderer_region(&r->r, &t));
@@ -132,7 +149,7 @@ rf_status rf_render_image(const rf_scene *scene, const rf_render_options *o, rf_
     rf_image *img = mem_alloc(&s->mem, sizeof *img);
     if (!img || img_create_mem(&img->buf, r->r.stats.width, r->r.stats.height, &s->mem) != STATUS_OK)
         status = RF_ERR_NO_MEMORY;
-    if (status == RF_OK && !(r->options.cancel && r->options.cancel(r->options.user))) {
+    if (status == RF_OK && !stop_asked(&r->options)) {
         render_target all = {0, 0, img->buf.width, img->buf.height, NULL, img->buf.rgb, 3 * (size_t)img->buf.width};
         status = api_status(renderer_region(&r->r, &all));
     } else if (status == RF_OK) {

@@ -120,10 +120,13 @@ static rf_status load(const scene_source *root, const char *path, int bad, const
     if (bad)
         return RF_ERR_USAGE;
     load_opts(o, &lo);
-    static const char *const none[] = {NULL};
-    const char *const *dirs = o && o->read_confined ? (o->read_dirs ? o->read_dirs : none) : NULL;
-    *out = (rf_scene *)(void *)(root ? scene_file_load_source(root, &lo, &status)
-                                     : scene_file_load_confined(path, &lo, dirs, &status));
+    /* [REL-READ-1] The library reads anywhere unless the host confines it. */
+    if (root)
+        *out = (rf_scene *)(void *)scene_file_load_source(root, &lo, &status);
+    else if (o && o->read_confined)
+        *out = (rf_scene *)(void *)scene_file_load_confined(path, &lo, o->read_dirs, &status);
+    else
+        *out = (rf_scene *)(void *)scene_file_load_anywhere(path, &lo, &status);
     return api_status(status);
 }
 

@@ -17,14 +17,27 @@
 #include "io/image_io.h"
 #include "io/scene_file.h"
 
-/* "refray: error: " and the message, escaped and cut (text_escape):
- * arguments and file names are input too ([REL-ESCAPE-1]). */
-static void print_error(const char *fmt, va_list ap, const char *after)
+/* before, "refray: ", label and the message, escaped and cut
+ * (text_escape): arguments and file names are input too ([REL-ESCAPE-1]). */
+static void print_escaped(const char *before, const char *label, const char *fmt, va_list ap, const char *after)
 {
     char text[4096], shown[1024];
     vsnprintf(text, sizeof text, fmt, ap);
     text_escape(text, strlen(text), shown, sizeof shown);
-    fprintf(stderr, "refray: error: %s\n%s", shown, after);
+    fprintf(stderr, "%srefray: %s%s\n%s", before, label, shown, after);
+}
+
+static void print_error(const char *fmt, va_list ap, const char *after)
+{
+    print_escaped("", "error: ", fmt, ap, after);
+}
+
+void cli_note(const char *before, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    print_escaped(before, "", fmt, ap, "");
+    va_end(ap);
 }
 
 void cli_error(const char *fmt, ...)

@@ -108,6 +108,15 @@ void cli_error(const char *fmt, ...)
 #endif
     ;
 
+/* Prints before (as it is: "" or the line feed that ends a progress bar),
+ * then "refray: MESSAGE" to stderr, the message escaped and cut like
+ * cli_error's. */
+void cli_note(const char *before, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
 /* Prints "refray: error: ..." for command-line mistakes, returns 64. */
 int cli_usage_error(const char *fmt, ...)
 #if defined(__GNUC__)

@@ -115,7 +115,7 @@ static int load_tile(cli_tiles *t, int b, unsigned char *done)
     if (rc == STATUS_NO_INPUT)
         return STATUS_OK;
     if (rc != STATUS_OK) {
-        fprintf(stderr, "refray: warning: checkpoint: %s; rendering that tile again\n", why);
+        cli_note("", "warning: checkpoint: %s; rendering that tile again", why);
         return STATUS_OK;
     }
     tile_info want = t->target;

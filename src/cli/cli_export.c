@@ -156,7 +156,7 @@ static void print_notes(const char *input, const pov_notes *n)
     for (int i = 0; i < n->count && i < POV_NOTE_MAX; i++)
         fprintf(stderr, "refray: approximation: %s\n", n->text[i]);
     if (n->count > POV_NOTE_MAX)
-        fprintf(stderr, "refray: approximation: ... and %d more in '%s'\n", n->count - POV_NOTE_MAX, input);
+        cli_note("", "approximation: ... and %d more in '%s'", n->count - POV_NOTE_MAX, input);
 }
 
 static int export_scene(export_args *a, const scene_model *scene)

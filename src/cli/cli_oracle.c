@@ -85,8 +85,8 @@ static int check_formats(const oracle_args *a)
     }
     img_format out = img_format_from_path(a->output);
     if (out == IMG_FORMAT_PNG || out == IMG_FORMAT_PPM)
-        fprintf(stderr, "refray: warning: '%s' quantises the exact image to 8 bits (sRGB, clamped to [0,1]); "
-                "write .exr or .pfm to keep the exact values\n", a->output);
+        cli_note("", "warning: '%s' quantises the exact image to 8 bits (sRGB, clamped to [0,1]); write .exr or "
+                 ".pfm to keep the exact values", a->output);
     return 0;
 }
 

@@ -87,8 +87,8 @@ void cli_render_report(const render_args *a, int status, const cli_render_void *
                 "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n", nl, at->x, at->y,
                 a->scene.limits.max_ray_tree);
     else if (status == STATUS_CANCELLED && a->checkpoint)
-        fprintf(stderr, "%srefray: interrupted; nothing written but the finished tiles in '%s' (the same "
-                "command goes on from them)\n", nl, a->checkpoint);
+        cli_note(nl, "interrupted; nothing written but the finished tiles in '%s' (the same command goes on "
+                 "from them)", a->checkpoint);
     else if (status == STATUS_CANCELLED)
         fprintf(stderr, "%srefray: interrupted; nothing written\n", nl);
     else if (status == STATUS_NO_MEMORY)

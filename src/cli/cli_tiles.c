@@ -181,10 +181,9 @@ static void report_failure(const tiles_run *run, int rc, const pool_failure *f, 
     const char *nl = cli_progress_break(&run->bar);
     if (f->job >= 0) {
         tile_rect r = cli_tiles_band(run->t, run->pending[f->job]);
-        fprintf(stderr, "%srefray: error: %s while rendering rows %d..%d; nothing written\n", nl, why, r.y0,
-                r.y1 - 1);
+        cli_note(nl, "error: %s while rendering rows %d..%d; nothing written", why, r.y0, r.y1 - 1);
     } else {
-        fprintf(stderr, "%srefray: error: %s; nothing written\n", nl, why);
+        cli_note(nl, "error: %s; nothing written", why);
     }
 }
 
@@ -229,8 +228,7 @@ int cli_tiles_render(cli_tiles *t)
     if (rc == STATUS_OK) {
         int count = list_pending(t, done_band, run.pending, &run.rows_done);
         if (t->checkpoint && count < t->bands && !t->quiet)
-            fprintf(stderr, "refray: resuming from '%s': %d of %d tiles are done\n", t->checkpoint,
-                    t->bands - count, t->bands);
+            cli_note("", "resuming from '%s': %d of %d tiles are done", t->checkpoint, t->bands - count, t->bands);
         cli_progress_init(&run.bar, !t->quiet, run.rows_done);
         rc = run_bands(&run, count);
         if (rc == STATUS_CANCELLED || rc == STATUS_DATA)

@@ -403,7 +403,7 @@ static int finish_tsv(file_out *tsv, const char *path, int worst)
     /* A check that failed (exit 1) is a result worth keeping; an error is not. */
     if (worst != STATUS_OK && worst != STATUS_FAIL) {
         file_out_abort(tsv);
-        fprintf(stderr, "refray: '%s' not written\n", path);
+        cli_note("", "'%s' not written", path);
         return worst;
     }
     int status = file_out_commit(tsv, why, sizeof why);

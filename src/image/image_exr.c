@@ -513,11 +513,13 @@ static void free_planes(exr_target *t)
         free(t->plane[c]);
 }
 
-/* Decodes the first part into *out once the context is open. */
-static int decode_exr(exr_const_context_t ctx, exr_stream *s, const img_read_opts *o, img_buf *out, char *err,
-                      size_t errlen)
+/* Decodes the first part into *out once the context is open (info: unused,
+ * the shape of read_exr's decode). */
+static int decode_exr(exr_const_context_t ctx, exr_stream *s, const img_read_opts *o, tile_info *info,
+                      img_buf *out, char *err, size_t errlen)
 {
     exr_target t;
+    (void)info;
     memset(&t, 0, sizeof t);
     int rc = check_layout(ctx, o, &t, err, errlen);
     if (rc == STATUS_OK && o->header_only) {
@@ -624,46 +626,36 @@ static int decode_tile(exr_const_context_t ctx, exr_stream *s, const img_read_op
     return rc;
 }
 
-/* Opens the file of s for reading: a context, or NULL with rc set. */
-static exr_context_t start_read(exr_stream *s, int *rc, char *err, size_t errlen)
+/* Reads the OpenEXR file fp through decode, which sees the open context:
+ * a plain image or a tile.  Returns decode's status, or the open's. */
+static int read_exr(FILE *fp,
+                    int (*decode)(exr_const_context_t ctx, exr_stream *s, const img_read_opts *o, tile_info *info,
+                                  img_buf *out, char *err, size_t errlen),
+                    const img_read_opts *o, tile_info *info, img_buf *out, char *err, size_t errlen)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
-    init.user_data = s;
+    exr_stream s;
+    memset(&s, 0, sizeof s);
+    s.fp = fp;
+    init.user_data = &s;
     init.read_fn = stream_read;
     init.size_fn = stream_size;
     init.error_handler_fn = on_exr_error;
     exr_result_t rv = exr_start_read(&ctx, "image.exr", &init);
-    *rc = rv == EXR_ERR_SUCCESS ? STATUS_OK : exr_failure(s, rv, STATUS_DATA, "read", err, errlen);
-    if (*rc != STATUS_OK && ctx)
+    int rc = rv == EXR_ERR_SUCCESS ? decode(ctx, &s, o, info, out, err, errlen)
+                                   : exr_failure(&s, rv, STATUS_DATA, "read", err, errlen);
+    if (ctx)
         exr_finish(&ctx);
-    return *rc == STATUS_OK ? ctx : NULL;
+    return rc;
 }
 
 int img_exr_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size_t errlen)
 {
-    exr_stream s;
-    int rc;
-    memset(&s, 0, sizeof s);
-    s.fp = fp;
-    exr_context_t ctx = start_read(&s, &rc, err, errlen);
-    if (ctx) {
-        rc = decode_exr(ctx, &s, o, out, err, errlen);
-        exr_finish(&ctx);
-    }
-    return rc;
+    return read_exr(fp, decode_exr, o, NULL, out, err, errlen);
 }
 
 int img_exr_read_tile(FILE *fp, const img_read_opts *o, tile_info *info, img_buf *out, char *err, size_t errlen)
 {
-    exr_stream s;
-    int rc;
-    memset(&s, 0, sizeof s);
-    s.fp = fp;
-    exr_context_t ctx = start_read(&s, &rc, err, errlen);
-    if (ctx) {
-        rc = decode_tile(ctx, &s, o, info, out, err, errlen);
-        exr_finish(&ctx);
-    }
-    return rc;
+    return read_exr(fp, decode_tile, o, info, out, err, errlen);
 }

@@ -31,9 +31,9 @@ void scene_file_reader_free(scene_file_reader *f)
 {
     for (int i = 0; i < f->root_count; i++)
         mem_free_string(&f->mem, f->roots[i]);
-    mem_free(&f->mem, f->roots, (size_t)(f->root_count + 1) * sizeof *f->roots);
+    mem_free(&f->mem, f->roots, (size_t)f->root_cap * sizeof *f->roots);
     f->roots = NULL;
-    f->root_count = 0;
+    f->root_count = f->root_cap = 0;
     name_index_free(&f->index);
     for (int i = 0; i < f->delivered_count; i++)
         mem_free_string(&f->mem, f->delivered[i]);
@@ -110,6 +110,11 @@ static char *real_or_parent(const mem *m, const char *path, int *oom, int *unres
     return joined;
 }
 
+void scene_file_reader_anywhere(scene_file_reader *f)
+{
+    f->anywhere = 1;
+}
+
 int scene_file_reader_confine(scene_file_reader *f, const char *scene_path, const char *const *dirs)
 {
     int n = 1, oom = 0;
@@ -118,6 +123,7 @@ int scene_file_reader_confine(scene_file_reader *f, const char *scene_path, cons
     f->roots = mem_calloc(&f->mem, (size_t)n + 1, sizeof *f->roots);
     if (!f->roots)
         return STATUS_NO_MEMORY;
+    f->root_cap = n + 1;
     char resolved[PATH_MAX], *dir = file_dirname(&f->mem, scene_path);
     if (!dir)
         return STATUS_NO_MEMORY;
@@ -144,13 +150,21 @@ static int within(const char *resolved_path, const char *root)
 static int may_read(scene_file_reader *f, const char *name, const char *path, char *why, size_t why_size)
 {
     int oom = 0, unresolved = 0;
-    char *resolved_path = f->roots ? real_or_parent(&f->mem, path, &oom, &unresolved) : NULL;
+    if (f->anywhere)
+        return STATUS_OK;
+    if (!f->roots) {
+        /* Nobody chose where this reader may read: it reads nothing. */
+        snprintf(why, why_size, "cannot read '%s': this load may read no files (no directory was given to it)",
+                 name);
+        return STATUS_DATA;
+    }
+    char *resolved_path = real_or_parent(&f->mem, path, &oom, &unresolved);
     if (unresolved) {
         snprintf(why, why_size, "cannot read '%s': its real path cannot be found (%s), so it cannot be judged "
                  "inside the directories this load may read", name, strerror(unresolved));
         return STATUS_DATA;
     }
-    if (!f->roots || oom || !resolved_path) {
+    if (oom || !resolved_path) {
         /* Neither it nor its directory exists: reading it fails anyway. */
         mem_free_string(&f->mem, resolved_path);
         return oom ? STATUS_NO_MEMORY : STATUS_OK;
@@ -254,13 +268,29 @@ static scene_model *load_root(const char *path, const char *text, size_t len, co
     return s;
 }
 
+static scene_model *load_file(const char *path, const scene_load_opts *o, int anywhere,
+                              const char *const *read_dirs, int *status);
+
 scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, int *status)
 {
-    return scene_file_load_confined(path, o, NULL, status);
+    return load_file(path, o, 0, NULL, status);
 }
 
 scene_model *scene_file_load_confined(const char *path, const scene_load_opts *o, const char *const *read_dirs,
                                       int *status)
+{
+    return load_file(path, o, 0, read_dirs, status);
+}
+
+scene_model *scene_file_load_anywhere(const char *path, const scene_load_opts *o, int *status)
+{
+    return load_file(path, o, 1, NULL, status);
+}
+
+/* The body of the file loads: f confined to path's tree and read_dirs',
+ * or reading anywhere. */
+static scene_model *load_file(const char *path, const scene_load_opts *o, int anywhere,
+                              const char *const *read_dirs, int *status)
 {
     scene_load_opts opts;
     if (o)
@@ -275,7 +305,11 @@ scene_model *scene_file_load_confined(const char *path, const scene_load_opts *o
     char why[512], *text = NULL;
     size_t len = 0;
     scene_model *s = NULL;
-    *status = read_dirs ? scene_file_reader_confine(&files, path, read_dirs) : STATUS_OK;
+    *status = STATUS_OK;
+    if (anywhere)
+        scene_file_reader_anywhere(&files);
+    else
+        *status = scene_file_reader_confine(&files, path, read_dirs);
     if (*status == STATUS_OK)
         *status = file_read_all(path, opts.limits.max_file_bytes, &m, &text, &len, why, sizeof why);
     else
@@ -322,7 +356,10 @@ scene_model *scene_file_load_text(const char *path, const char *text, size_t len
     scene_file_reader files;
     scene_file_reader_init(&files, o.limits.max_file_bytes, &o.mem);
     o.resolver = scene_file_resolver(&files);
-    scene_model *s = load_root(path, text, len, &o, &files.mem, status);
+    scene_model *s = NULL;
+    *status = scene_file_reader_confine(&files, path, NULL);
+    if (*status == STATUS_OK)
+        s = load_root(path, text, len, &o, &files.mem, status);
     scene_file_reader_free(&files);
     return s;
 }

@@ -22,13 +22,23 @@ typedef struct scene_file_reader {
     int delivered_count, delivered_cap;
     name_index index;   /* over delivered */
     char **roots;       /* real paths of the directories files may come
-                           from ([REL-READ-1]); NULL: anywhere */
-    int root_count;
+                           from ([REL-READ-1]) */
+    int root_count, root_cap;
+    int anywhere;       /* 1: read anywhere, roots unused (the host's
+                           explicit choice, scene_file_reader_anywhere) */
 } scene_file_reader;
 
-/* A reader for one load; must not move until scene_file_reader_free. */
+/* A reader for one load; must not move until scene_file_reader_free.
+ * It starts confined to no directory at all ([REL-READ-1]): it reads
+ * nothing until scene_file_reader_confine gives it its directories or
+ * scene_file_reader_anywhere lets it read anywhere, so a caller that
+ * forgets to choose gets an error, not an unconfined load. */
 void scene_file_reader_init(scene_file_reader *f, long max_bytes, const mem *m);
 void scene_file_reader_free(scene_file_reader *f);
+
+/* Lets f read any file the process can: the library's default, a host's
+ * choice (rf_load_options.read_confined 0); never the program's. */
+void scene_file_reader_anywhere(scene_file_reader *f);
 
 /*
  * Confines f to the directory tree of scene_path and of each of dirs (a
@@ -61,7 +71,7 @@ scene_model *scene_file_load_source(const scene_source *root, const scene_load_o
 /*
  * Reads the scene file path and loads it with o (NULL: the defaults); when
  * o has no resolver, includes and meshes come from files (with o's
- * --max-file-size).  A file that cannot be read is reported through
+ * --max-file-size), confined to path's directory tree ([REL-READ-1]).  A file that cannot be read is reported through
  * o->sink without a location, and *status is file_read_all's
  * (STATUS_NO_INPUT, STATUS_DATA over the size limit, STATUS_IO,
  * STATUS_NO_MEMORY).  Otherwise as scene_file_load_source.
@@ -70,16 +80,20 @@ scene_model *scene_file_load_with(const char *path, const scene_load_opts *o, in
 
 /* scene_file_load_with whose file resolver (when o has none) is confined
  * to path's directory tree and those of read_dirs (scene_file_reader_confine;
- * read_dirs NULL: not confined). */
+ * read_dirs NULL: none besides path's). */
 scene_model *scene_file_load_confined(const char *path, const scene_load_opts *o, const char *const *read_dirs,
                                       int *status);
+
+/* scene_file_load_with whose file resolver reads anywhere: only for a
+ * library host that did not ask for confinement (rf_load_options). */
+scene_model *scene_file_load_anywhere(const char *path, const scene_load_opts *o, int *status);
 
 /*
  * The short forms the program and the tests use: the default options but
  * limits (NULL: the defaults) and warnings, diagnostics printed to diag_out
- * (NULL: none), includes and meshes from files.  scene_file_load_text
- * takes the root's text from memory; path names it in messages and is
- * where its includes are looked for.
+ * (NULL: none), includes and meshes from files in path's directory tree.
+ * scene_file_load_text takes the root's text from memory; path names it in
+ * messages and is where its includes are looked for (and its tree).
  */
 scene_model *scene_file_load(const char *path, const scene_limits *limits, FILE *diag_out, int warnings,
                              int *status);

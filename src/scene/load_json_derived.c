@@ -435,26 +435,38 @@ static int sampling(jreader *r, json_t *l, const light_rule *u)
     return ok;
 }
 
-static int lights(jreader *r, json_t *root)
+/* one(r, element, i) for the first count elements of the array root[key]
+ * (those it has), each under its JSON pointer; 1 while every one is. */
+static int each_element(jreader *r, json_t *root, const char *key, int count,
+                        int (*one)(jreader *r, json_t *element, int i))
 {
-    const scene_model *s = r->L->scene;
-    json_t *list = present(root, "lights");
+    json_t *list = present(root, key);
     int ok = 1;
-    jread_push_key(r, "lights");
-    for (int i = 0; ok && i < s->light_count && (size_t)i < json_array_size(list); i++) {
-        const scene_light *light = &s->lights[i];
-        json_t *l = json_array_get(list, (size_t)i);
-        if (light->kind != LIGHT_RECTANGLE && light->kind != LIGHT_DISK)
-            continue;
+    jread_push_key(r, key);
+    for (int i = 0; ok && i < count && (size_t)i < json_array_size(list); i++) {
         jread_push_index(r, (size_t)i);
-        light_rule u = rule_for(s, i);
-        if (light->kind == LIGHT_RECTANGLE)
-            ok = member_vec(r, l, "normal", light->normal, "edge_u, edge_v");
-        ok = ok && sampling(r, l, &u);
+        ok = one(r, json_array_get(list, (size_t)i), i);
         jread_pop(r);
     }
     jread_pop(r);
     return ok;
+}
+
+/* Light i's derived members, for a rectangle or a disk. */
+static int light_derived(jreader *r, json_t *l, int i)
+{
+    const scene_model *s = r->L->scene;
+    const scene_light *light = &s->lights[i];
+    if (light->kind != LIGHT_RECTANGLE && light->kind != LIGHT_DISK)
+        return 1;
+    light_rule u = rule_for(s, i);
+    int ok = light->kind != LIGHT_RECTANGLE || member_vec(r, l, "normal", light->normal, "edge_u, edge_v");
+    return ok && sampling(r, l, &u);
+}
+
+static int lights(jreader *r, json_t *root)
+{
+    return each_element(r, root, "lights", r->L->scene->light_count, light_derived);
 }
 
 /* ---- primitives ---- */
@@ -469,25 +481,22 @@ static int matrix_row(jreader *r, json_t *val, size_t i, const void *ctx)
     return numbers(r, val, want, 4, "to_world (its inverse)");
 }
 
-static int primitives(jreader *r, json_t *root)
+/* Primitive i's transform.to_local, when it has a transform. */
+static int primitive_derived(jreader *r, json_t *element, int i)
 {
-    const scene_model *s = r->L->scene;
-    json_t *list = present(root, "primitives");
-    int ok = 1;
-    jread_push_key(r, "primitives");
-    for (int i = 0; ok && i < s->prim_count && (size_t)i < json_array_size(list); i++) {
-        const scene_prim *p = &s->prims[i];
-        json_t *t = present(json_array_get(list, (size_t)i), "transform");
-        if (!p->has_xform || !json_is_object(t))
-            continue;
-        jread_push_index(r, (size_t)i);
-        jread_push_key(r, "transform");
-        ok = member_list(r, t, "to_local", 4, "rows", matrix_row, &p->to_local);
-        jread_pop(r);
-        jread_pop(r);
-    }
+    const scene_prim *p = &r->L->scene->prims[i];
+    json_t *t = present(element, "transform");
+    if (!p->has_xform || !json_is_object(t))
+        return 1;
+    jread_push_key(r, "transform");
+    int ok = member_list(r, t, "to_local", 4, "rows", matrix_row, &p->to_local);
     jread_pop(r);
     return ok;
+}
+
+static int primitives(jreader *r, json_t *root)
+{
+    return each_element(r, root, "primitives", r->L->scene->prim_count, primitive_derived);
 }
 
 int load_json_derived(jreader *r, json_t *root)

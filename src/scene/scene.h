@@ -208,6 +208,11 @@ typedef struct scene_model {
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
     mem mem;                   /* the allocator everything above came from */
+    /* The load's --max-width, --max-height and --max-pixels, which a
+     * renderer's size overrides are held to as the scene's own size was. */
+    struct {
+        long width, height, pixels;
+    } max_image;
 } scene_model;
 
 /* Limits on what an input may ask for, enforced before allocation. */

@@ -62,6 +62,9 @@ static scene_model *load(const scene_source *root, const scene_load_opts *o, int
         return NULL;
     }
     s->mem = m;
+    s->max_image.width = o->limits.max_width;
+    s->max_image.height = o->limits.max_height;
+    s->max_image.pixels = o->limits.max_pixels;
     loader_scene_defaults(s);
     loader_init(&L, s, o);
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());

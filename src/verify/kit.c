@@ -15,6 +15,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "base/cancel.h"
 #include "export/export_json.h"
 #include "io/diag_print.h"
 #include "io/fileio.h"
@@ -334,8 +335,9 @@ static int fill_kit(const char *tmp, const char *const *scenes, int count, const
                     char *why, size_t why_size)
 {
     int status = 0;
+    cancel_poll stop = cancel_poll_make(o->cancel, o->cancel_user);
     for (int i = 0; status == 0 && i < count; i++) {
-        if (o->cancel && o->cancel(o->cancel_user)) {
+        if (cancel_now(&stop)) {
             snprintf(why, why_size, "interrupted");
             return STATUS_CANCELLED;
         }

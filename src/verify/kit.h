@@ -34,7 +34,7 @@ typedef struct kit_opts {
     void *cancel_user;
     const char *const *read_dirs; /* [REL-READ-1] NULL-ended directories a scene's
                                      include and mesh files may come from beside
-                                     the scene's own tree; NULL: read anywhere */
+                                     the scene's own tree; NULL: none */
 } kit_opts;
 
 /*
