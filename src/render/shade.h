@@ -53,6 +53,37 @@
           (snell_k(s1, s2, c) < 0 <==> snell_k(n1, n2, c) < 0);
   }
 
+  // k grows with the cosine (snell_k written out: the block has no symbol
+  // of Snell's, so its goals do not carry Snell's lemmas, which stall Z3):
+  // below a cosine that reflects, every one reflects
+  axiomatic SnellMonotone {
+  lemma square_monotone: \forall mreal a, b; 0 <= a <= b ==> a * a <= b * b;
+  lemma scaled_monotone: \forall mreal x, p, q; p <= q ==> (x * x) * p <= (x * x) * q;
+  lemma snell_k_monotone:
+      \forall mreal n1, n2, a, b; 0 <= a <= b ==>
+          (n1 * a) * (n1 * a) - (n1 * n1 - n2 * n2) <= (n1 * b) * (n1 * b) - (n1 * n1 - n2 * n2);
+  }
+
+  // [SHADE-PHONG-1..4] x^y, kept abstract: no axiom, and outside Why3's
+  // power theory, whose presence stalls Z3 and CVC4 on the callers' goals
+  // (spec/proofs.md).  tests/prove/libm.c declares it too (the same block)
+  // and ties pow to it; the lobe is (V.R)^n, the cosine at most 1, flushed
+  // to 0 below DBL_MIN and capped at 1 as the code does.
+  axiomatic RealPow {
+  logic mreal real_pow(mreal x, mreal y);
+  }
+  logic mreal phong_of(mreal c, mreal n) =
+      real_pow(\min(c, 1), n) >= DBL_MIN ? \min(real_pow(\min(c, 1), n), 1) : 0;
+
+  axiomatic Unit {
+  // |V - R|^2 = 2 - 2 V.R for unit V, R: lobe_cosine's h is then 1 - V.R
+  // (written out: through vnorm2 and vdot the provers do not close it)
+  lemma unit_difference:
+      \forall vec3 d, v, r; d.x == v.x - r.x && d.y == v.y - r.y && d.z == v.z - r.z &&
+          v.x * v.x + v.y * v.y + v.z * v.z == 1 && r.x * r.x + r.y * r.y + r.z * r.z == 1 ==>
+          d.x * d.x + d.y * d.y + d.z * d.z == 2 - 2 * (v.x * r.x + v.y * r.y + v.z * r.z);
+  }
+
   // cos th1 = -N.D, clamped to [0, 1]
   logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));
 
