@@ -296,7 +296,11 @@ rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, real shininess
     /* For the last clause: the lobe's arguments are those of the clause. */
     /*@ assert spec_unit: EXACT(vnorm2(reflected(l, n)) == 1 ==> vnorm2(r) == 1); */
     /*@ assert spec_dot: EXACT(vdot(v, r) == vdot(v, reflected(l, n))); */
-    return vec_scale(vec_mul(ks, intensity), shade_phong_lobe(v, r, shininess));
+    real lobe = shade_phong_lobe(v, r, shininess);
+    /*@ assert spec_lobe: EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) > 0 && shininess > 0 &&
+                                vnorm2(v) == 1 && vnorm2(reflected(l, n)) == 1 ==>
+                                lobe == phong_of(vdot(v, reflected(l, n)), shininess)); */
+    return vec_scale(vec_mul(ks, intensity), lobe);
 }
 
 /*@ requires vin(kd, 0, 1) && vin(ks, 0, 1);
