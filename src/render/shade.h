@@ -23,6 +23,17 @@
  * shade.c (spec/proofs.md); what a lemma states WP proves once.
  */
 /*@
+  // First: a lemma is proved with the lemmas before it as hypotheses, and
+  // quantified ones keep Z3 from its nonlinear procedure.
+  axiomatic Unit {
+  // |V - R|^2 = 2 - 2 V.R for unit V, R: lobe_cosine's h is then 1 - V.R
+  // (written out: through vnorm2 and vdot the provers do not close it)
+  lemma unit_difference:
+      \forall vec3 d, v, r; d.x == v.x - r.x && d.y == v.y - r.y && d.z == v.z - r.z &&
+          v.x * v.x + v.y * v.y + v.z * v.z == 1 && r.x * r.x + r.y * r.y + r.z * r.z == 1 ==>
+          d.x * d.x + d.y * d.y + d.z * d.z == 2 - 2 * (v.x * r.x + v.y * r.y + v.z * r.z);
+  }
+
   // [SHADE-FALLOFF-1, 2]; s = d + d0 (the code caps it at DBL_MAX, [SHADE-FALLOFF-5]).
   // (Each axiomatic block holds definitions and lemmas, no axiom: WP gives
   // its lemmas as hypotheses only to goals that use its symbols.)
@@ -74,15 +85,6 @@
   }
   logic mreal phong_of(mreal c, mreal n) =
       real_pow(\min(c, 1), n) >= DBL_MIN ? \min(real_pow(\min(c, 1), n), 1) : 0;
-
-  axiomatic Unit {
-  // |V - R|^2 = 2 - 2 V.R for unit V, R: lobe_cosine's h is then 1 - V.R
-  // (written out: through vnorm2 and vdot the provers do not close it)
-  lemma unit_difference:
-      \forall vec3 d, v, r; d.x == v.x - r.x && d.y == v.y - r.y && d.z == v.z - r.z &&
-          v.x * v.x + v.y * v.y + v.z * v.z == 1 && r.x * r.x + r.y * r.y + r.z * r.z == 1 ==>
-          d.x * d.x + d.y * d.y + d.z * d.z == 2 - 2 * (v.x * r.x + v.y * r.y + v.z * r.z);
-  }
 
   // cos th1 = -N.D, clamped to [0, 1]
   logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));
