@@ -220,7 +220,7 @@ static real lobe_cosine(vec3 v, vec3 r, real c, real *rel)
     real h = den >= 0.5 ? vec_length2(d) / den : 1;
     /* For the last clause: unit V, R give den = 2 and h = 1 - V.R. */
     /*@ assert lobe_den: EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> den == 2); */
-    /*@ assert lobe_d: EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> vnorm2(d) == 2 - 2 * c); */
+    /*@ assert lobe_d: EXACT(unit_pair(v, r) ==> vnorm2(d) == 2 - 2 * c); */
     /*@ assert lobe_h: EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> h == 1 - c); */
     if (h < 0.25) {
         real c_hi = 1 - h;
@@ -546,7 +546,7 @@ int shade_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
     ensures EXACT(snell_k(n1, n2, \result) >= 0);
     // the least such cosine, to one step of nextafter (libm.c): a cosine
     // that much below the result is total internal reflection
-    ensures EXACT(n1 > n2 ==> snell_k(n1, n2, \max(0, \result - 0x1p-52 * \result - 0x1p-1074)) < 0); */
+    ensures EXACT(n1 > n2 ==> snell_k(n1, n2, step_below(\result)) < 0); */
 real shade_critical_angle_cos(real n1, real n2)
 {
     assert(n1 > 0.0 && n2 > 0.0 && isfinite(n1) && isfinite(n2));
@@ -577,6 +577,7 @@ real shade_critical_angle_cos(real n1, real n2)
      * down reflects. */
     /*@ assert crit_c: EXACT(c > 0); */
     /*@ assert crit_below: EXACT(snell_k(n1, n2, below) < 0); */
+    /*@ assert crit_step: EXACT(0 <= step_below(c) <= below); */
     return c;
 }
 

@@ -24,8 +24,11 @@
  */
 /*@
   // First: a lemma is proved with the lemmas before it as hypotheses, and
-  // quantified ones keep Z3 from its nonlinear procedure.
+  // quantified ones keep Z3 from its nonlinear procedure.  Every block has
+  // a symbol of its own: WP gives a block's lemmas only to the goals that
+  // use one of its symbols, and those of a block without any to every goal.
   axiomatic Unit {
+  predicate unit_pair(vec3 v, vec3 r) = vnorm2(v) == 1 && vnorm2(r) == 1;
   // |V - R|^2 = 2 - 2 V.R for unit V, R: lobe_cosine's h is then 1 - V.R
   // (written out: through vnorm2 and vdot the provers do not close it)
   lemma unit_difference:
@@ -64,15 +67,15 @@
           (snell_k(s1, s2, c) < 0 <==> snell_k(n1, n2, c) < 0);
   }
 
-  // k grows with the cosine (snell_k written out: the block has no symbol
-  // of Snell's, so its goals do not carry Snell's lemmas, which stall Z3):
-  // below a cosine that reflects, every one reflects
+  // k grows with the cosine: below a cosine that reflects, every one
+  // reflects (the two helpers close it among Snell's lemmas).  step_below(c): at
+  // most one nextafter step below c (tests/prove/libm.c), or 0.
   axiomatic SnellMonotone {
+  logic mreal step_below(mreal c) = \max(0, c - 0x1p-52 * c - 0x1p-1074);
   lemma square_monotone: \forall mreal a, b; 0 <= a <= b ==> a * a <= b * b;
   lemma scaled_monotone: \forall mreal x, p, q; p <= q ==> (x * x) * p <= (x * x) * q;
   lemma snell_k_monotone:
-      \forall mreal n1, n2, a, b; 0 <= a <= b ==>
-          (n1 * a) * (n1 * a) - (n1 * n1 - n2 * n2) <= (n1 * b) * (n1 * b) - (n1 * n1 - n2 * n2);
+      \forall mreal n1, n2, a, b; 0 <= a <= b ==> snell_k(n1, n2, a) <= snell_k(n1, n2, b);
   }
 
   // [SHADE-PHONG-1..4] x^y, kept abstract: no axiom, and outside Why3's
