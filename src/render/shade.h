@@ -68,12 +68,16 @@
   }
 
   // k grows with the cosine: below a cosine that reflects, every one
-  // reflects (the two helpers close it among Snell's lemmas).  step_below(c): at
+  // reflects (written out first: among Snell's lemmas the provers do not
+  // close it from the helpers).  step_below(c): at
   // most one nextafter step below c (tests/prove/libm.c), or 0.
   axiomatic SnellMonotone {
   logic mreal step_below(mreal c) = \max(0, c - 0x1p-52 * c - 0x1p-1074);
   lemma square_monotone: \forall mreal a, b; 0 <= a <= b ==> a * a <= b * b;
   lemma scaled_monotone: \forall mreal x, p, q; p <= q ==> (x * x) * p <= (x * x) * q;
+  lemma snell_poly_monotone:
+      \forall mreal n1, n2, a, b; 0 <= a <= b ==>
+          (n1 * a) * (n1 * a) - (n1 * n1 - n2 * n2) <= (n1 * b) * (n1 * b) - (n1 * n1 - n2 * n2);
   lemma snell_k_monotone:
       \forall mreal n1, n2, a, b; 0 <= a <= b ==> snell_k(n1, n2, a) <= snell_k(n1, n2, b);
   }
