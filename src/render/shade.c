@@ -206,15 +206,22 @@ vec3 shade_mirror(vec3 d, vec3 n)
     requires vfinite(r) && DOUBLES(vbounded(r, 1024));
     requires \is_finite(c) && 0 < c;
     requires \valid(rel);
+    requires EXACT(c == vdot(v, r));
     assigns *rel \from v, r, c;
     ensures \is_finite(\result) && 0 < \result <= 1;
     ensures \is_finite(*rel) && DOUBLES(-0.5 <= *rel <= 0.5);
-    ensures EXACT(*rel == 0); */
+    ensures EXACT(*rel == 0);
+    // for unit V, R (h = 1 - V.R) both branches give the cosine
+    ensures EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> \result == \min(c, 1)); */
 static real lobe_cosine(vec3 v, vec3 r, real c, real *rel)
 {
     vec3 d = vec_sub(v, r);
     real den = 2 * sqrt(vec_length2(v) * vec_length2(r));
     real h = den >= 0.5 ? vec_length2(d) / den : 1;
+    /* For the last clause: unit V, R give den = 2 and h = 1 - V.R. */
+    /*@ assert lobe_den: EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> den == 2); */
+    /*@ assert lobe_d: EXACT(unit_pair(v, r) ==> vnorm2(d) == 2 - 2 * c); */
+    /*@ assert lobe_h: EXACT(vnorm2(v) == 1 && vnorm2(r) == 1 ==> h == 1 - c); */
     if (h < 0.25) {
         real c_hi = 1 - h;
         *rel = ((1 - c_hi) - h) / c_hi;   /* c_lo: exact, 1 - c_hi is (Sterbenz) */
@@ -238,7 +245,10 @@ static real lobe_cosine(vec3 v, vec3 r, real c, real *rel)
     assigns errno;   // pow and exp may set ERANGE on underflow
     ensures 0 <= \result <= 1;
     ensures EXACT(vdot(v, r) <= 0 ==> \result == 0);
-    ensures EXACT(vdot(v, r) > 0 && shininess == 0 ==> \result == 1); */
+    ensures EXACT(vdot(v, r) > 0 && shininess == 0 ==> \result == 1);
+    // the value (V.R)^n for unit V, R ([SHADE-PHONG-1]), x^y abstract
+    ensures EXACT(vdot(v, r) > 0 && shininess > 0 && vnorm2(v) == 1 && vnorm2(r) == 1 ==>
+                  \result == phong_of(vdot(v, r), shininess)); */
 real shade_phong_lobe(vec3 v, vec3 r, real shininess)
 {
     assert(shininess >= 0.0);
@@ -271,13 +281,26 @@ real shade_phong_lobe(vec3 v, vec3 r, real shininess)
     ensures EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) <= 0 ==> vzero(\result));
     ensures EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) > 0 && shininess == 0 ==>
                   \result.x == ks.x * intensity.x && \result.y == ks.y * intensity.y &&
-                  \result.z == ks.z * intensity.z); */
+                  \result.z == ks.z * intensity.z);
+    // the highlight's value Ks I (V.R)^n for unit V and R (R is unit when N, L are)
+    ensures EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) > 0 && shininess > 0 &&
+                  vnorm2(v) == 1 && vnorm2(reflected(l, n)) == 1 ==>
+                  \result.x == ks.x * intensity.x * phong_of(vdot(v, reflected(l, n)), shininess) &&
+                  \result.y == ks.y * intensity.y * phong_of(vdot(v, reflected(l, n)), shininess) &&
+                  \result.z == ks.z * intensity.z * phong_of(vdot(v, reflected(l, n)), shininess)); */
 rgb shade_specular(rgb ks, rgb intensity, vec3 v, vec3 n, vec3 l, real shininess)
 {
     if (!(vec_dot(n, l) > 0.0))
         return vec_splat(0.0);
     vec3 r = shade_reflect_about(l, n);
-    return vec_scale(vec_mul(ks, intensity), shade_phong_lobe(v, r, shininess));
+    /* For the last clause: the lobe's arguments are those of the clause. */
+    /*@ assert spec_unit: EXACT(vnorm2(reflected(l, n)) == 1 ==> vnorm2(r) == 1); */
+    /*@ assert spec_dot: EXACT(vdot(v, r) == vdot(v, reflected(l, n))); */
+    real lobe = shade_phong_lobe(v, r, shininess);
+    /*@ assert spec_lobe: EXACT(vdot(n, l) > 0 && vdot(v, reflected(l, n)) > 0 && shininess > 0 &&
+                                vnorm2(v) == 1 && vnorm2(reflected(l, n)) == 1 ==>
+                                lobe == phong_of(vdot(v, reflected(l, n)), shininess)); */
+    return vec_scale(vec_mul(ks, intensity), lobe);
 }
 
 /*@ requires vin(kd, 0, 1) && vin(ks, 0, 1);
@@ -520,7 +543,10 @@ int shade_refract(vec3 d, vec3 n, real n1, real n2, vec3 *t)
     assigns \nothing;
     ensures \is_finite(\result) && 0 <= \result <= 1;
     ensures EXACT(n1 <= n2 ==> \result == 0);
-    ensures EXACT(snell_k(n1, n2, \result) >= 0); */
+    ensures EXACT(snell_k(n1, n2, \result) >= 0);
+    // the least such cosine, to one step of nextafter (libm.c): a cosine
+    // that much below the result is total internal reflection
+    ensures EXACT(n1 > n2 ==> snell_k(n1, n2, step_below(\result)) < 0); */
 real shade_critical_angle_cos(real n1, real n2)
 {
     assert(n1 > 0.0 && n2 > 0.0 && isfinite(n1) && isfinite(n2));
@@ -528,6 +554,11 @@ real shade_critical_angle_cos(real n1, real n2)
         return 0.0;
     real s1, s2;
     real m = scale_indices(n1, n2, &s1, &s2);   /* s1 here */
+    /* For the last clause: the cosine 0 reflects (s1 > s2 as n1 > n2). */
+    /*@ assert crit_s2: EXACT(s2 * n1 > s2 * n2); */
+    /*@ assert crit_s: EXACT(s1 > s2); */
+    /*@ assert crit_sq: EXACT(s1 * s1 > s1 * s2 && s1 * s2 > s2 * s2); */
+    /*@ assert crit_k0: EXACT(snell_k(s1, s2, 0) < 0); */
     real c = fmin(sqrt(fmax((s1 - s2) * (s1 + s2), 0)) / m, 1.0);   /* fmax: s1 >= s2, so never taken */
     /*@ loop invariant 0 <= c <= 1;
         loop assigns c; */
@@ -536,11 +567,17 @@ real shade_critical_angle_cos(real n1, real n2)
     real below = nextafter(c, 0.0);
     /*@ loop invariant 0 <= below <= 1 && 0 <= c <= 1;
         loop invariant EXACT(snell_k(s1, s2, c) >= 0);
+        loop invariant EXACT(below >= c - 0x1p-52 * c - 0x1p-1074);
         loop assigns c, below; */
     while (c > 0.0 && refract_discriminant(s1, s2, below, 0) >= 0.0) {
         c = below;
         below = nextafter(c, 0.0);
     }
+    /* The loop stopped at a c > 0 (c = 0 reflects) whose next cosine
+     * down reflects. */
+    /*@ assert crit_c: EXACT(c > 0); */
+    /*@ assert crit_below: EXACT(snell_k(n1, n2, below) < 0); */
+    /*@ assert crit_step: EXACT(0 <= step_below(c) <= below); */
     return c;
 }
 

@@ -23,6 +23,20 @@
  * shade.c (spec/proofs.md); what a lemma states WP proves once.
  */
 /*@
+  // First: a lemma is proved with the lemmas before it as hypotheses, and
+  // quantified ones keep Z3 from its nonlinear procedure.  Every block has
+  // a symbol of its own: WP gives a block's lemmas only to the goals that
+  // use one of its symbols, and those of a block without any to every goal.
+  axiomatic Unit {
+  predicate unit_pair(vec3 v, vec3 r) = vnorm2(v) == 1 && vnorm2(r) == 1;
+  // |V - R|^2 = 2 - 2 V.R for unit V, R: lobe_cosine's h is then 1 - V.R
+  // (written out: through vnorm2 and vdot the provers do not close it)
+  lemma unit_difference:
+      \forall vec3 d, v, r; d.x == v.x - r.x && d.y == v.y - r.y && d.z == v.z - r.z &&
+          v.x * v.x + v.y * v.y + v.z * v.z == 1 && r.x * r.x + r.y * r.y + r.z * r.z == 1 ==>
+          d.x * d.x + d.y * d.y + d.z * d.z == 2 - 2 * (v.x * r.x + v.y * r.y + v.z * r.z);
+  }
+
   // [SHADE-FALLOFF-1, 2]; s = d + d0 (the code caps it at DBL_MAX, [SHADE-FALLOFF-5]).
   // (Each axiomatic block holds definitions and lemmas, no axiom: WP gives
   // its lemmas as hypotheses only to goals that use its symbols.)
@@ -52,6 +66,32 @@
       \forall mreal n1, n2, s1, s2, c; n1 > 0 && s1 > 0 && s1 * n2 == s2 * n1 ==>
           (snell_k(s1, s2, c) < 0 <==> snell_k(n1, n2, c) < 0);
   }
+
+  // k grows with the cosine: below a cosine that reflects, every one
+  // reflects (written out first: among Snell's lemmas the provers do not
+  // close it from the helpers).  step_below(c): at
+  // most one nextafter step below c (tests/prove/libm.c), or 0.
+  axiomatic SnellMonotone {
+  logic mreal step_below(mreal c) = \max(0, c - 0x1p-52 * c - 0x1p-1074);
+  lemma square_monotone: \forall mreal a, b; 0 <= a <= b ==> a * a <= b * b;
+  lemma scaled_monotone: \forall mreal x, p, q; p <= q ==> (x * x) * p <= (x * x) * q;
+  lemma snell_poly_monotone:
+      \forall mreal n1, n2, a, b; 0 <= a <= b ==>
+          (n1 * a) * (n1 * a) - (n1 * n1 - n2 * n2) <= (n1 * b) * (n1 * b) - (n1 * n1 - n2 * n2);
+  lemma snell_k_monotone:
+      \forall mreal n1, n2, a, b; 0 <= a <= b ==> snell_k(n1, n2, a) <= snell_k(n1, n2, b);
+  }
+
+  // [SHADE-PHONG-1..4] x^y, kept abstract: no axiom, and outside Why3's
+  // power theory, whose presence stalls Z3 and CVC4 on the callers' goals
+  // (spec/proofs.md).  tests/prove/libm.c declares it too (the same block)
+  // and ties pow to it; the lobe is (V.R)^n, the cosine at most 1, flushed
+  // to 0 below DBL_MIN and capped at 1 as the code does.
+  axiomatic RealPow {
+  logic mreal real_pow(mreal x, mreal y);
+  }
+  logic mreal phong_of(mreal c, mreal n) =
+      real_pow(\min(c, 1), n) >= DBL_MIN ? \min(real_pow(\min(c, 1), n), 1) : 0;
 
   // cos th1 = -N.D, clamped to [0, 1]
   logic mreal incidence(vec3 d, vec3 n) = \max(0, \min(1, -vdot(n, d)));

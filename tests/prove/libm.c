@@ -55,14 +55,16 @@ extern double fma(double x, double y, double z);
       ensures \result == 1; */
 extern int __finite(double d);
 
-/* The neighbour of x toward y: between x and y, at most x's ulp away. */
+/* The neighbour of x toward y: between x and y, at most x's ulp away (an
+ * ulp of a normal x is at most 2^-52 |x|, of a subnormal one 2^-1074). */
 /*@ requires \is_finite(x) && \is_finite(y);
     assigns \result \from x, y;
     ensures \is_finite(\result);
     ensures \min(x, y) <= \result <= \max(x, y);
     ensures x < y ==> x < \result <= y;
     ensures x > y ==> y <= \result < x;
-    ensures x == y ==> \result == y; */
+    ensures x == y ==> \result == y;
+    ensures EXACT(x != y ==> \abs(\result - x) <= 0x1p-52 * \abs(x) + 0x1p-1074); */
 extern double nextafter(double x, double y);
 
 /*@ requires \is_finite(x) && \is_finite(y);
@@ -96,8 +98,15 @@ extern double cos(double x);
 extern double sin(double x);
 
 /* pow(1, y) is 1 for every y, pow(x, y) in [0, 1] for x in [0, 1] and
- * y >= 0 (C99 F.9.4.4; monotony of x^y). Merged with Frama-C's contract. */
+ * y >= 0 (C99 F.9.4.4; monotony of x^y). Merged with Frama-C's contract.
+ * In exact arithmetic it is x^y, the abstract real_pow of
+ * src/render/shade.h (the same block: Frama-C merges the two). */
+/*@ type mreal = real; */
+/*@ axiomatic RealPow {
+  logic mreal real_pow(mreal x, mreal y);
+  } */
 /*@ assigns errno, \result \from x, y;
     ensures x == 1 ==> \result == 1;
-    ensures 0 <= x <= 1 && y >= 0 ==> 0 <= \result <= 1; */
+    ensures 0 <= x <= 1 && y >= 0 ==> 0 <= \result <= 1;
+    ensures EXACT(0 < x <= 1 && y >= 0 ==> \result == real_pow(x, y)); */
 extern double pow(double x, double y);
