@@ -338,7 +338,7 @@ START_TEST(test_shortcuts_blocker_tried_first)
 END_TEST
 
 /* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
- * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1]
+ * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1] [SHADE-SHORTCUT-LOBE-1]
  * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
