@@ -31,6 +31,8 @@ typedef struct surface {
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
     int highlight;   /* the Phong lobe is evaluated: Ks > 0 (or no shortcuts) */
+    int no_body;     /* Kd = 0: a light adds its highlight alone */
+    real lobe_floor; /* V.R at or below it: the lobe is 0 ([SHADE-SHORTCUT-LOBE-2]) */
     shadow_start from; /* where its shadow rays start */
 } surface;
 
@@ -215,6 +217,13 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     path_note(st, (uint64_t)lit + 1);
     /* [SHADE-SHORTCUT-GATE-1] Where N.L <= 0 both terms are 0: no shadow ray. */
     if (!lit && !t->no_shortcuts)
+        return;
+    /* [SHADE-SHORTCUT-LOBE-2] Where Kd = 0 a light adds its highlight alone,
+     * Ks I lobe: a sample whose lobe is surely 0 (V.R, formed as
+     * shade_phong_lobe forms it, at or below lobe_floor) adds +0 whatever
+     * its shadow ray would find, so it sends none. */
+    if (s->no_body && !t->no_shortcuts &&
+        (!s->highlight || vec_dot(s->v, shade_reflect_about(l, s->n)) <= s->lobe_floor))
         return;
     /* The shadow ray first: a blocked sample needs no falloff (a pure
      * function, so computing it after changes no bit). */
@@ -499,6 +508,13 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     int ks = s.m->ks.x > 0 || s.m->ks.y > 0 || s.m->ks.z > 0;
     /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
     s.highlight = t->specular && (ks || t->no_shortcuts);
+    s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
+    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
+     * lobe's correction (within 1e-10 of 1), less than DBL_MIN: the lobe
+     * flushes it to 0.  c_hi is V.R or 1 - h, which for near-unit V and R
+     * is at most V.R (1 + 2^-40); the factor 1 - 2^-30 covers that and
+     * exp2's rounding (spec/shading.md). */
+    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-30) : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     direct_sum sum = direct_light(t, &s, key, st);
