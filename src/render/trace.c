@@ -510,7 +510,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.highlight = t->specular && (ks || t->no_shortcuts);
     s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
     /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
-     * lobe's correction (within 1e-10 of 1), less than DBL_MIN: the lobe
+     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
      * flushes it to 0.  c_hi is V.R or 1 - h, which for near-unit V and R
      * is at most V.R (1 + 2^-40); the factor 1 - 2^-30 covers that and
      * exp2's rounding (spec/shading.md). */
