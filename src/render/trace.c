@@ -511,10 +511,10 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
     /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
      * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
-     * flushes it to 0.  c_hi is V.R or 1 - h, which for near-unit V and R
-     * is at most V.R (1 + 2^-40); the factor 1 - 2^-30 covers that and
-     * exp2's rounding (spec/shading.md). */
-    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-30) : 0;
+     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
+     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
+     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md). */
+    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-18) : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     direct_sum sum = direct_light(t, &s, key, st);
