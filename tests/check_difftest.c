@@ -87,6 +87,7 @@ static uint64_t path_at(const tracer *t, double x, double y)
 {
     trace_stats st;
     memset(&st, 0, sizeof st);
+    st.record_path = 1;
     ray r = camera_ray(&t->scene->camera, t->scene->image.width, t->scene->image.height, x, y);
     (void)trace_ray(t, &r, 1, &t->eye_media, 0, &st);
     return st.path;
@@ -117,6 +118,37 @@ START_TEST(test_trace_path_tells_what_rays_met)
 }
 END_TEST
 
+/* [XCHK-DIFF-EDGE-2] The hash is kept only when asked (record_path): a
+ * render leaves trace_stats.path as it found it, and the colour of a ray
+ * does not depend on whether its tree was hashed. */
+START_TEST(test_trace_path_only_when_asked)
+{
+    scene_model *s = load("image { width 10 height 10 }\n"
+                          "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, -1] width 10 }\n"
+                          "distant_light { direction [-1, -1, 0] }\n"
+                          "box { from [-1, 0, -1] to [1, 2, 1] }\n"
+                          "cylinder { from [2, 0, 2] to [2, 1, 2] radius 0.5 }\n"
+                          "disk { radius 4 }\n");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    for (double x = 0.5; x < 10; x += 1) {
+        trace_stats off, on;
+        memset(&off, 0, sizeof off);
+        memset(&on, 0, sizeof on);
+        off.path = 12345;
+        on.path = 12345;
+        on.record_path = 1;
+        ray r = camera_ray(&s->camera, 10, 10, x, 0.37 * x + 1);
+        rgb a = trace_ray(&t, &r, 1, &t.eye_media, 0, &off), b = trace_ray(&t, &r, 1, &t.eye_media, 0, &on);
+        ck_assert(memcmp(&a, &b, sizeof a) == 0);
+        ck_assert(off.path == 12345);
+        ck_assert(on.path != 12345);
+    }
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_difftest(void)
 {
     Suite *s = suite_create("difftest");
@@ -126,6 +158,7 @@ Suite *suite_difftest(void)
     tcase_add_test(tc, test_dtgen_subset);
     tcase_add_test(tc, test_dtgen_exact_scenes_export_exactly);
     tcase_add_test(tc, test_trace_path_tells_what_rays_met);
+    tcase_add_test(tc, test_trace_path_only_when_asked);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -337,8 +337,46 @@ START_TEST(test_shortcuts_blocker_tried_first)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-LOBE-1] [SHADE-SHORTCUT-LOBE-2] A glass ball (Kd 0) over
+ * a floor under a 16-sample area light, for shininess 0, 1, 30, 1000 and
+ * 1e6 and for a ball with Ks 0 too: the same bits with the shortcuts on
+ * and off, and with them on fewer shadow rays (the samples whose lobe is 0
+ * send none; for Ks 0, none at all from the ball).  max_depth 1 and no
+ * ambient: the ball's pixels are its highlights alone, so a lobe of 1e-300
+ * left out would show.
+ */
+START_TEST(test_shortcuts_lobe_gate_on_glass)
+{
+    static const char *const materials[] = {"Kd 0 Ks 0.5 n 0 t 0.5 ior 1.5", "Kd 0 Ks 0.5 n 1 t 0.5 ior 1.5",
+                                            "Kd 0 Ks 0.5 n 30 t 0.5 ior 1.5", "Kd 0 Ks 0.5 n 1000 t 0.5 ior 1.5",
+                                            "Kd 0 Ks [0, 0.5, 0] n 1e6 t 0.5 ior 1.5", "Kd 0 Ks 0 t 0.7 ior 1.3"};
+    for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "image { width 16 height 16 max_depth 1 }\n"
+                 "camera { eye [0.3, 2, 4] look_at [0, 1, 0] fov 40 }\n"
+                 "distributed_light { rectangle [-0.5, 4, -0.5] [1, 0, 0] [0, 0, 1] power 3 samples 16 }\n"
+                 "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+                 "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
+                 materials[i]);
+        scene_model *s = load(text);
+        img_buf on, off;
+        render_stats st_on, st_off;
+        render(s, 0, &on, &st_on);
+        render(s, 1, &off, &st_off);
+        ck_assert_msg(memcmp(on.rgb, off.rgb, sizeof(double) * 3 * 256) == 0, "%s: the images differ", materials[i]);
+        ck_assert_msg(st_on.trace.shadow_rays < st_off.trace.shadow_rays, "%s: %ld shadow rays, %ld without shortcuts",
+                      materials[i], st_on.trace.shadow_rays, st_off.trace.shadow_rays);
+        img_free(&on);
+        img_free(&off);
+        scene_free(s);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
- * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1]
+ * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1] [SHADE-SHORTCUT-LOBE-1]
  * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
@@ -358,6 +396,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);
+    tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,

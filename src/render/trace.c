@@ -30,6 +30,9 @@ typedef struct surface {
     const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
+    int highlight;   /* the Phong lobe is evaluated: Ks > 0 (or no shortcuts) */
+    int no_body;     /* Kd = 0: a light adds its highlight alone */
+    real lobe_floor; /* V.R at or below it: the lobe is 0 ([SHADE-SHORTCUT-LOBE-2]) */
     shadow_start from; /* where its shadow rays start */
 } surface;
 
@@ -96,10 +99,12 @@ void tracer_free(tracer *t)
     t->lights = NULL;
 }
 
-/* Folds v into st->path (FNV-1a over 64-bit words). */
+/* Folds v into st->path (FNV-1a over 64-bit words) when the caller asked
+ * for the hash (st->record_path); a render does not, and pays one test. */
 static void path_note(trace_stats *st, uint64_t v)
 {
-    st->path = (st->path ^ v) * 0x100000001b3u;
+    if (st->record_path)
+        st->path = (st->path ^ v) * 0x100000001b3u;
 }
 
 static uint64_t bits_of(real x)
@@ -213,16 +218,27 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     /* [SHADE-SHORTCUT-GATE-1] Where N.L <= 0 both terms are 0: no shadow ray. */
     if (!lit && !t->no_shortcuts)
         return;
-    rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
+    /* [SHADE-SHORTCUT-LOBE-2] Where Kd = 0 a light adds its highlight alone,
+     * Ks I lobe: a sample whose lobe is surely 0 (V.R, formed as
+     * shade_phong_lobe forms it, at or below lobe_floor) adds +0 whatever
+     * its shadow ray would find, so it sends none. */
+    if (s->no_body && !t->no_shortcuts &&
+        (!s->highlight || vec_dot(s->v, shade_reflect_about(l, s->n)) <= s->lobe_floor))
+        return;
+    /* The shadow ray first: a blocked sample needs no falloff (a pure
+     * function, so computing it after changes no bit). */
+    real through = 1;
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
-        real through = shadow_transmission(t, &r, (int)(light - t->scene->lights), st);
+        through = shadow_transmission(t, &r, (int)(light - t->scene->lights), st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
-        intensity = vec_scale(intensity, through);
     }
-    if (t->specular) {
+    rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
+    if (t->shadows)
+        intensity = vec_scale(intensity, through);
+    if (s->highlight) {
         shade_terms terms = shade_direct(s->m->kd, s->m->ks, s->m->n, intensity, s->n, l, s->v);
         sum->body = shade_saturate(vec_add(sum->body, terms.body));
         sum->highlight = shade_saturate(vec_add(sum->highlight, terms.highlight));
@@ -236,21 +252,29 @@ light_setup trace_light_setup(const scene_light *light, int samples)
     light_setup setup;
     memset(&setup, 0, sizeof setup);
     setup.samples = samples;
-    if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK)
+    if (light->kind == LIGHT_RECTANGLE || light->kind == LIGHT_DISK) {
         setup.grid = light_grid_for(samples);
+        setup.power = shade_sample_power(light->power, samples);
+    }
     if (light->kind == LIGHT_DISK)
         light_frame(light->normal, &setup.t1, &setup.t2);
     return setup;
 }
 
-vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j)
+/* Sample j of a light whose key at this hit is light_key:
+ * sampler_key(key, TRACE_KEY_LIGHT + index), the same for every sample. */
+static vec3 light_point_keyed(const scene_light *light, const light_setup *setup, uint64_t light_key, int j)
 {
-    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
     double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
     double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
     double a, b;   /* the sample's place in the light's unit square: model data, double */
     light_cell_point(setup->grid, j, u1, u2, &a, &b);
     return light_point(light, setup->t1, setup->t2, a, b);
+}
+
+vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j)
+{
+    return light_point_keyed(light, setup, sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index), j);
 }
 
 /* The samples of a distributed light, each a point source of E/samples. */
@@ -259,9 +283,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
 {
     const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
-    rgb power = shade_sample_power(light->power, setup->samples);
+    uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
     for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
-        add_source(t, s, light, trace_light_point(light, setup, index, key, j), power, sum, st);
+        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, sum, st);
 }
 
 static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
@@ -480,13 +504,24 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
+    /* Ks is in [0, 1] ([LANG-MAT-1]): these are vec_max_component(Ks) > 0. */
+    int ks = s.m->ks.x > 0 || s.m->ks.y > 0 || s.m->ks.z > 0;
+    /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
+    s.highlight = t->specular && (ks || t->no_shortcuts);
+    s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
+    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
+     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
+     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
+     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
+     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md). */
+    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-18) : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
-        if (t->reflection && (vec_max_component(s.m->ks) > 0 || t->no_shortcuts))
+        if (t->reflection && (ks || t->no_shortcuts))
             mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
             through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), st);
@@ -594,7 +629,7 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
         return c;
     int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
     path_note(st, met ? (uint64_t)h.prim + 5 : 0);
-    if (met)
+    if (met && st->record_path)
         path_note(st, piece_of(&t->scene->prims[h.prim], &h));
     if (met)
         c = shade(t, &nearest, &h, depth, media, key, st);

@@ -41,6 +41,9 @@ typedef struct trace_stats {
      * the same hash met the same things (make difftest tells edge pixels by
      * it); the image never depends on it. */
     uint64_t path;
+    int record_path;          /* 1: fold the ray tree into path (make difftest
+                                 sets it); 0: path stays as it is and costs
+                                 nothing */
     bvh_stats bvh;
     /* Per light (its index mod TRACE_BLOCKERS): the opaque part that
      * stopped its last shadow ray, prim 1 + its index (0: none).  A hint
@@ -52,6 +55,7 @@ typedef struct trace_stats {
 /* Per-light data computed once: the stratification and a disk's frame. */
 typedef struct light_setup {
     int samples;        /* point sources this render uses for the light */
+    rgb power;          /* each source's: shade_sample_power(power, samples) */
     light_grid grid;
     vec3 t1, t2;
 } light_setup;
