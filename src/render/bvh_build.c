@@ -438,6 +438,8 @@ static int classify(bvh *b, const scene_prim *prims, int count, build_item *item
     int bounded = 0;
     for (int i = 0; i < count; i++) {
         int parts = isect_part_count(&prims[i]), kept = bounded;
+        if (prims[i].kind == PRIM_MESH || prims[i].kind == PRIM_TRIANGLE)
+            b->triangles = 1;
         for (int k = 0; k < parts; k++)
             bounded += item_of(&prims[i], i, k, &items[bounded]);
         if (bounded - kept == parts)
@@ -477,6 +479,40 @@ static void keep_references(build_ctx *ctx)
     ctx->items = NULL;
 }
 
+/* The hot records of b->items (bvh.h), in their order; 0 when out of
+ * memory. */
+static int keep_hot(bvh *b, const scene_prim *prims)
+{
+    enum { ALIGN = 32 };
+    real g[ISECT_HOT_REALS];
+    size_t reals = 0;
+    b->hot = mem_alloc(&b->mem, (size_t)b->item_count * sizeof *b->hot);
+    if (!b->hot)
+        return 0;
+    for (int i = 0; i < b->item_count; i++) {
+        int n = 0;
+        b->hot[i].code = isect_hot_make(&prims[b->items[i].prim], b->items[i].part, g, &n);
+        b->hot[i].at = b->hot[i].code == ISECT_HOT_NONE || reals > INT_MAX - ISECT_HOT_REALS ? -1 : (int)reals;
+        if (b->hot[i].at < 0)
+            b->hot[i].code = ISECT_HOT_NONE;
+        else
+            reals += (size_t)n;
+    }
+    if (reals == 0)
+        return 1;
+    b->hot_block_bytes = reals * sizeof(real) + ALIGN;
+    b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
+    if (!b->hot_block)
+        return 0;
+    b->hot_reals = (real *)(void *)((char *)b->hot_block + (ALIGN - (uintptr_t)b->hot_block % ALIGN) % ALIGN);
+    for (int i = 0; i < b->item_count; i++) {
+        int n;
+        if (b->hot[i].code != ISECT_HOT_NONE)
+            isect_hot_make(&prims[b->items[i].prim], b->items[i].part, b->hot_reals + b->hot[i].at, &n);
+    }
+    return 1;
+}
+
 /* The tree over ctx->items[0..count-1]; 0 when out of memory.  The node
  * array starts at one node per part (leaves hold about three; untouched
  * pages cost nothing) and shrinks to fit at the end. */
@@ -494,6 +530,8 @@ static int build_tree(build_ctx *ctx)
         return 0;
     free_sort_buffers(ctx);
     keep_references(ctx);
+    if (!keep_hot(b, ctx->prims))
+        return 0;
     bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
     if (fit) {
         b->nodes = fit;
