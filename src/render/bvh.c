@@ -355,33 +355,50 @@ static int visit_item(const bvh *b, const walk *w, int i)
     return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
 }
 
-/* Depth-first over every node the ray meets; the stack holds at most one
- * pending sibling per level plus the node being expanded. */
+/* Depth-first over every node the ray meets, the first child first.  Both
+ * children of an inner node are tested together (adjacent in memory, so
+ * their loads overlap) and only those met are entered; the stack holds at
+ * most one pending sibling per level. */
 static int traverse_all(const bvh *b, const walk *w)
 {
-    int stack[BVH_MAX_DEPTH + 1], sp = 0;
+    int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
+    real tmin = w->r->tmin, tmax = w->r->tmax, enter;
     slab_ray s = slab_make(w->r);
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const bvh_node *nd = &b->nodes[stack[--sp]];
-        real enter;
-        if (w->stats)
-            w->stats->nodes_visited++;
-        if (!node_hit(nd, &s, w->r->tmin, w->r->tmax, &enter) && !b->exhaustive)
-            continue;
+    if (w->stats)
+        w->stats->nodes_visited++;
+    if (!node_hit(&b->nodes[0], &s, tmin, tmax, &enter) && !b->exhaustive)
+        return 0;
+    for (;;) {
+        const bvh_node *nd = &b->nodes[node];
         if (nd->count == 0) {
-            assert(sp + 2 <= BVH_MAX_DEPTH + 1);
-            stack[sp++] = nd->first + 1;
-            stack[sp++] = nd->first;
-            continue;
+            int a = nd->first;
+            int ha = node_hit(&b->nodes[a], &s, tmin, tmax, &enter) || b->exhaustive;
+            int hc = node_hit(&b->nodes[a + 1], &s, tmin, tmax, &enter) || b->exhaustive;
+            if (w->stats)
+                w->stats->nodes_visited += 2;
+            if (ha) {
+                if (hc) {
+                    assert(sp < BVH_MAX_DEPTH);
+                    stack[sp++] = a + 1;
+                }
+                node = a;
+                continue;
+            }
+            if (hc) {
+                node = a + 1;
+                continue;
+            }
+        } else {
+            for (int i = nd->first; i < nd->first + nd->count; i++) {
+                int stop = visit_item(b, w, i);
+                if (stop)
+                    return stop;
+            }
         }
-        for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_item(b, w, i);
-            if (stop)
-                return stop;
-        }
+        if (sp == 0)
+            return 0;
+        node = stack[--sp];
     }
-    return 0;
 }
 
 static int walk_all(const bvh *b, const walk *w)

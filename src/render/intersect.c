@@ -677,6 +677,17 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
         *reals = 4;
         return ISECT_HOT_SPHERE;
     }
+    if (p->kind == PRIM_BOX && !p->has_xform) {
+        g[0] = p->u.box.lo.x;
+        g[1] = p->u.box.lo.y;
+        g[2] = p->u.box.lo.z;
+        g[3] = p->u.box.hi.x;
+        g[4] = p->u.box.hi.y;
+        g[5] = p->u.box.hi.z;
+        g[6] = g[7] = 0.0;
+        *reals = 8;
+        return ISECT_HOT_BOX;
+    }
     if (p->kind == PRIM_MESH) {
         mesh_corners(&p->u.mesh, part, v, n);
         code = ISECT_HOT_TRIANGLE | open_edges(&p->u.mesh, part) << 2;
@@ -702,6 +713,8 @@ static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
         return sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, out, max, 1);
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
+        return box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, out, max, 1);
     vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
     return triangle_hits(v, NULL, code >> 2, r, sh, out, 1);
 }

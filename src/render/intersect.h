@@ -128,8 +128,8 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
 
 /*
  * Hot records: what the hit test of a sphere without a transform (centre,
- * radius: 4 reals) or of a triangle (its three corners: 9 reals, padded to
- * 12) reads, copied out of the scene_prim (392 bytes, the mesh's corner
+ * radius: 4 reals), of a box without one (8) or of a triangle (its three
+ * corners: 9 reals, padded to 12) reads, copied out of the scene_prim (392 bytes, the mesh's corner
  * indices) so that the BVH can keep them in its leaves' order.  The
  * record's code says which test it is and a mesh triangle's inclusive
  * edges; the tests are the shapes' own (bare: t only), so they give the
@@ -138,7 +138,8 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
 enum {
     ISECT_HOT_NONE = 0,     /* no record: test through the scene_prim */
     ISECT_HOT_SPHERE = 1,
-    ISECT_HOT_TRIANGLE = 2
+    ISECT_HOT_TRIANGLE = 2,
+    ISECT_HOT_BOX = 3       /* lo, hi: 6 reals, padded to 8 */
 };
 #define ISECT_HOT_KIND(code) ((code) & 3)
 #define ISECT_HOT_REALS 12  /* the most a record takes */
