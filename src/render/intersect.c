@@ -708,6 +708,15 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
     return code;
 }
 
+int isect_hot_reals(const scene_prim *p)
+{
+    if (p->kind == PRIM_SPHERE && !p->has_xform)
+        return 4;
+    if (p->kind == PRIM_BOX && !p->has_xform)
+        return 8;
+    return p->kind == PRIM_MESH || (p->kind == PRIM_TRIANGLE && !p->has_xform) ? 12 : 0;
+}
+
 /* The record's crossings, bare (up to max). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {

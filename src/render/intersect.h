@@ -147,6 +147,8 @@ enum {
  * ISECT_HOT_NONE (g untouched) when p has no hot record; *reals is how many
  * of g it takes (a multiple of 4). */
 int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *reals);
+/* The *reals that isect_hot_make gives for each part of p (0: none). */
+int isect_hot_reals(const scene_prim *p);
 /* isect_part_crossings of the record's part (sh: r's shear when the record
  * is a triangle). */
 int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh);
