@@ -523,8 +523,13 @@ static int keep_hot(build_ctx *ctx)
     if (ctx->hot_used > 0) {
         b->hot_block_bytes = ctx->hot_used * sizeof(real) + ALIGN;
         b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
-        if (!b->hot_block)
+        if (!b->hot_block) {
+            /* b->item_count, which bvh_free sizes b->hot by, is not set yet */
+            mem_free(&b->mem, b->hot, (size_t)ctx->count * sizeof *b->hot);
+            b->hot = NULL;
+            b->hot_block_bytes = 0;
             return 0;
+        }
         b->hot_reals = (real *)(void *)((char *)b->hot_block + (ALIGN - (uintptr_t)b->hot_block % ALIGN) % ALIGN);
     }
     for (int i = 0; i < ctx->count; i++) {
