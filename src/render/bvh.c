@@ -182,6 +182,17 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
     if (ns->stats)
         ns->stats->prims_tested++;
     hit h = {0};
+    /* A sphere or box makes its full hit at once, as isect_part (a winner
+     * made again would cost a second test); only a triangle defers it. */
+    ray at = ns->rr;
+    int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &at, &h);
+    if (met >= 0) {
+        if (met) {
+            h.prim = b->items[i].prim;
+            nearest_add(ns, &h, 0);
+        }
+        return;
+    }
     if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, ns->sh, &h.t))
         return;
     h.prim = b->items[i].prim;

@@ -155,6 +155,10 @@ int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear
 /* The nearest crossing's t in (r->tmin, r->tmax), as isect_part finds it:
  * returns 1 and sets *t, or 0. */
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t);
+/* For a sphere's or a box's record: exactly isect_part (the full hit, r->tmax
+ * shrunk); returns -1 for a triangle's, which needs the scene_prim (its
+ * vertex normals) for a full hit. */
+int isect_hot_hit(int code, const real *g, ray *r, hit *h);
 
 /* Where shadow rays from a hit should start: for a triangle with vertex
  * normals the hit point lifted toward the curved surface those normals
