@@ -564,11 +564,9 @@ $(BUILD)/refray.pc: src/api/refray.pc.in include/refray.h Makefile
 	$(Q)sed -e 's|@VERSION@|$(RF_VERSION)|' -e 's|@REQUIRES_PRIVATE@|$(strip $(PC_REQUIRES_PRIVATE))|' \
 	  -e 's|@LIBS_PRIVATE@|$(strip $(PC_LIBS_PRIVATE))|' $< > $@
 
-# The program's allocator (src/cli/cli_alloc.c) is tested on its own too.
-TEST_CLI_OBJS := $(BUILD)/obj/src/cli/cli_alloc.o
-$(TESTBIN): $(TEST_OBJS) $(TEST_CLI_OBJS) $(LIBRARY)
+$(TESTBIN): $(TEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $(TEST_OBJS) $(TEST_CLI_OBJS) $(LIBRARY) $(ALL_LIBS) $(CHECK_LIBS)
+	$(Q)$(CC) $(LDFLAGS) -o $@ $(TEST_OBJS) $(LIBRARY) $(ALL_LIBS) $(CHECK_LIBS)
 
 $(GEN)/scene.tab.c $(GEN)/scene.tab.h: grammar/scene.y
 	@mkdir -p $(GEN)

@@ -10,7 +10,6 @@
 #include <unistd.h>
 #include <sys/stat.h>
 #include "api/convert.h"
-#include "cli/cli_alloc.h"
 #include "base/text.h"
 #include "cli/cli_args.h"
 #include "cli/cli_signal.h"
@@ -223,7 +222,6 @@ rf_load_options cli_load_options(const cli_scene_opts *o)
     lo.cancel = cli_signal_cancel;
     lo.read_confined = 1;
     lo.read_dirs = o->allow_read;
-    lo.allocator = cli_allocator();
     return lo;
 }
 
