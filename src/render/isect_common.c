@@ -30,13 +30,48 @@ void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir)
  * Writes the roots in increasing order; returns their number (1 when the
  * discriminant is exactly 0, |l| = R: a graze).
  */
+/* |num| < |den| 2^1020 is decided by a product of den with a power of
+ * two, exact below |den| = 2^-3; from there on the quotient is within the
+ * bound whenever |num| <= 2^1017.  The strict test keeps 0/0 out.  The
+ * quotient is formed from the magnitudes, where Eva sees the test's bound:
+ * the same double as num/den (the rounding is symmetric) but for the sign
+ * of a zero, which no open interval (tmin >= 0, t) tells apart. */
+int isect_quotient(real num, real den, real *q)
+{
+    real an = fabs(num), ad = fabs(den);
+    if (ad >= 0x1p-3 || an < ad * 0x1p1020) {
+        real m = an / ad;
+        *q = (num < 0) != (den < 0) ? -m : m;
+        return 1;
+    }
+    *q = (num < 0) == (den < 0) ? 0x1p1020 : -0x1p1020;
+    return 0;
+}
+
+/* A root of the quadratic, c/q or q/a: held at 2^1020 with its sign past
+ * it (the half chord over a tiny |d|). */
+/*@ requires \is_finite(num) && \is_finite(den) && DOUBLES(\abs(num) <= 0x1p1017);
+    assigns \nothing;
+    ensures \is_finite(\result) && DOUBLES(\abs(\result) <= 0x1p1021);
+    ensures EXACT(\abs(num) < \abs(den) * 0x1p1020 ==> \result == num / den);
+    ensures EXACT(\abs(num) >= \abs(den) * 0x1p1020 ==> \abs(\result) >= 0x1p1020); */
+static real held_root(real num, real den)
+{
+    real q;
+    isect_quotient(num, den, &q);
+    return q;
+}
+
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
 {
     real a = vec_dot(d, d);
     if (!(a > 0.0))
         return 0;
-    real b = vec_dot(f, d);
-    vec3 l = vec_madd(f, d, -b / a);
+    real b = vec_dot(f, d), foot;
+    /* -b/a past 2^1020: |d| is below 2^-519 beside |f| (2^501 at most). */
+    if (!isect_quotient(-b, a, &foot))
+        return 0;
+    vec3 l = vec_madd(f, d, foot);
     /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
      * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
      * after its rounding, so the test below would fail too. */
@@ -44,20 +79,22 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
         return 0;
     real ll = vec_length_fast(l);
-    /* Decide hit or miss on ll <= R itself: the product (R - ll)(R + ll)
-     * underflows to -0 for a sphere below about 1e-154 and would pass for a
-     * graze.  The square root is taken factor by factor for the same reason. */
-    if (!(ll <= radius))
+    /* Decide hit or miss on ll <= R itself (R - ll >= 0 is the same test
+     * for doubles): the product (R - ll)(R + ll) underflows to -0 for a
+     * sphere below about 1e-154 and would pass for a graze.  The square
+     * root is taken factor by factor for the same reason. */
+    real gap = radius - ll;
+    if (!(gap >= 0.0))
         return 0;
-    real root = sqrt(a * (radius - ll)) * sqrt(radius + ll);
+    real root = sqrt(a * gap) * sqrt(radius + ll);
     if (root == 0.0) {
-        t[0] = -b / a;
+        t[0] = foot;
         return 1;
     }
     real lf = vec_length_fast(f);
     real c = (lf - radius) * (lf + radius);
     real q = -(b + copysign(root, b));
-    real t0 = c / q, t1 = q / a;
+    real t0 = held_root(c, q), t1 = held_root(q, a);
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;

@@ -16,28 +16,56 @@
     (f.z + t * d.z) * (f.z + t * d.z);
 */
 
+/* The ray parameters the hit tests return are at most 2^1020 in magnitude
+ * (spec/proofs.md, "Hit tests"): num/den, or 2^1020 with the sign of
+ * num/den where that passes it, decided before dividing so that no
+ * infinity is formed (a direction nearly along a plane, a slab or a
+ * cylinder's axis); returns 1 when *q is num/den (never for den = 0).  The bound on num holds
+ * within the scene's extent ([LANG-EXTENT-1]: differences of coordinates
+ * and their dot products with unit vectors). */
+/*@ requires \valid(q);
+    requires \is_finite(num) && \is_finite(den);
+    requires DOUBLES(\abs(num) <= 0x1p1017);
+    assigns *q \from num, den;
+    assigns \result \from num, den;
+    ensures \result == 0 || \result == 1;
+    ensures \initialized(q) && \is_finite(*q) && DOUBLES(\abs(*q) <= 0x1p1021);
+    ensures EXACT(\result == 1 ==> den != 0 && *q == num / den && *q * den == num);
+    ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * 0x1p1020 && \abs(*q) == 0x1p1020);
+    ensures EXACT(\result == 0 ==> (*q > 0 <==> (num < 0 <==> den < 0))); */
+int isect_quotient(real num, real den, real *q);
+
 /* The roots of |f + t d| = radius, in increasing order; their number (0, 1
  * for a graze, or 2).  Used by the sphere, the cylinder (across its axis)
- * and the torus (its bounding sphere). */
+ * and the torus (its bounding sphere).  A line whose nearest point to the
+ * centre is past t = 2^1020 has no roots; a root past 2^1020 is returned as
+ * 2^1020 with its sign (isect_quotient): |d| far below |f| (a line nearly
+ * along a cylinder's axis). */
 /*@ requires \valid(t + (0 .. 1));
     // finite centre and radius > 0: check_radius, in_range (scene/check.c);
     // f = o - c, d the ray's (or a part of it): finite (spec/proofs.md, "Hit tests")
     requires vfinite(f) && vfinite(d) && \is_finite(radius) && radius > 0;
+    // within the scene's extent ([LANG-EXTENT-1]): |f| <= 2^501, |R| <= 2^500
+    requires DOUBLES(vbounded(f, 0x1p501) && radius <= 0x1p500 && vbounded(d, 4));
     assigns t[0 .. 1];
     ensures 0 <= \result <= 2;
-    ensures \result == 2 ==> t[0] <= t[1];
+    ensures \result >= 1 ==> \is_finite(t[0]) && DOUBLES(\abs(t[0]) <= 0x1p1021);
+    ensures \result == 2 ==> \is_finite(t[1]) && DOUBLES(\abs(t[1]) <= 0x1p1021);
+    ensures EXACT(\result == 2 ==> t[0] <= t[1]);   // doubles too: ordered by a comparison
     ensures EXACT(\result == 1 ==> t[0] == -vdot(f, d) / vnorm2(d));
     // admitted (spec/proofs.md, "Admitted"): the roots of the quadratic,
-    // a (R^2 - |l|^2) = b^2 - a c and (q + b)^2 = b^2 - a c give it
-    admit ensures EXACT(\result >= 1 ==> vdist2(f, d, t[0]) == radius * radius);
-    admit ensures EXACT(\result == 2 ==> vdist2(f, d, t[1]) == radius * radius); */
+    // a (R^2 - |l|^2) = b^2 - a c and (q + b)^2 = b^2 - a c give it, unless
+    // held at 2^1020
+    admit ensures EXACT(\result >= 1 && \abs(t[0]) < 0x1p1020 ==> vdist2(f, d, t[0]) == radius * radius);
+    admit ensures EXACT(\result == 2 && \abs(t[1]) < 0x1p1020 ==> vdist2(f, d, t[1]) == radius * radius); */
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
 /* Fills a hit: prim -1, part 0, no barycentrics, shading normal = n,
  * entering = dir . n < 0. */
 /*@ requires \valid(h);
     requires vfinite(n) && vfinite(dir);
     assigns *h;
-    ensures h->t == t && veq(h->point, p) && veq(h->normal, n) && veq(h->shading_normal, n);
+    // a copy (doubles too; Eva does not compare the ranges it keeps)
+    ensures EXACT(h->t == t && veq(h->point, p) && veq(h->normal, n) && veq(h->shading_normal, n));
     ensures h->prim == -1 && h->part == 0 && h->b1 == 0 && h->b2 == 0;
     ensures EXACT(h->entering == (vdot(dir, n) < 0 ? 1 : 0)); */
 void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir);

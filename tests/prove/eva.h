@@ -16,6 +16,21 @@ static vec3 any_dir(void) { return any_vec(-4, 4); }
 static rgb any_colour(void) { return any_vec(0, DBL_MAX); }
 static rgb any_coefficient(void) { return any_vec(0, 1); }
 
+/* Component axis in sign * [lo, hi], the others in [-hi, hi]: the vectors
+ * whose largest component is in [lo, hi] (eva_vec.c, eva_isect.c). */
+static vec3 largest_at(int axis, real sign, real lo, real hi)
+{
+    vec3 v = any_vec(-hi, hi);
+    real m = sign > 0 ? any(lo, hi) : any(-hi, -lo);
+    if (axis == 0)
+        v.x = m;
+    else if (axis == 1)
+        v.y = m;
+    else
+        v.z = m;
+    return v;
+}
+
 /* The largest double below hi = 2^j (a binade [2^(j-1), 2^j) ends there),
  * and DBL_MAX itself, which ends the last one. */
 static real binade_top(real hi)

@@ -1,12 +1,31 @@
 /*
- * eva_isect.c - Eva's driver for the hit tests (src/render/isect_common.c,
- * src/render/intersect.c), not yet part of make prove: its alarms are open
- * (spec/proofs.md, "Hit tests"; tests/prove/prove.sh isect-eva runs it).
- * Each call covers its function's precondition, with coordinates in
- * [-2^500, 2^500] (inside intersect.h's numeric domain) and a ray's
- * direction as the box of vec_normalize's bound.  intersect.c's static
- * functions are reached by including it; box_slabs comes last, as the sure
- * alarm of its infinite sentinels ends the analysis there.
+ * eva_isect.c - Eva's drivers for the hit tests (src/render/isect_common.c,
+ * src/render/intersect.c; spec/proofs.md, "Hit tests"; tests/prove/prove.sh
+ * isect-eva runs them).  Coordinates are in [-2^500, 2^500] (the scene's
+ * extent, [LANG-EXTENT-1]), f = o - c in [-2^501, 2^501], radii in
+ * [2^-500, 2^500], a ray's direction in the box of vec_normalize's bound,
+ * [-4, 4].  intersect.c's static functions are reached by including it.
+ *
+ * Four entry points:
+ *   eva_isect_sphere: isect_sphere_roots (with isect_quotient's body, so
+ *     that each box keeps the range of the foot -b/a), held_root and the
+ *     vec.h lengths by their contracts.  It divides b = f.d by a = d.d, whose ratio to |d|
+ *     an analysis of intervals loses when |d| ranges from 2^-1074 to 4; so
+ *     d is split as in eva_vec.c, its largest component in one box
+ *     [2^k, 2^(k+3)) (k = -535, -532, .., then 4 itself: a factor 8 keeps
+ *     l = f - (b/a) d within 2^511, its square finite), one box for every
+ *     smaller d (where a is 0 or below DBL_MIN and the foot past 2^1020,
+ *     or l within 2^501), and the zero vector.
+ *   eva_isect: isect_hit_set, plane_t, box_slabs, with isect_quotient by
+ *     its contract.
+ *   eva_isect_quotient: isect_quotient and held_root, the divisor in each
+ *     binade of either sign and 0, the dividend anywhere their precondition
+ *     allows.
+ *   eva_isect_triangle: triangle_solve (-DEVA_ISECT_TRIANGLE; not in make
+ *     prove: its alarms are open, spec/proofs.md).
+ * The boxes come from isect_boxes.h (BOX(2^k, 2^(k+1)), k = -1074 ..
+ * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(2^k, 2^(k+3))),
+ * which prove.sh writes.
  */
 #include "eva.h"
 #include "render/isect_common.c"
@@ -23,26 +42,78 @@ static ray any_ray(void)
     r.origin = any_point();
     r.dir = any_dir();
     r.tmin = any(0, 0x1p500);
-    r.tmax = any(0, DBL_MAX);
+    r.tmax = any(0, DBL_MAX);   /* +Inf compares as DBL_MAX: every t is within 2^1021 */
     return r;
 }
 
-void eva_isect(void)
+static void sphere_roots(vec3 d)
 {
-    real t[2];
-    ray r = any_ray();
-    hit h;
-    int n = isect_sphere_roots(any_point(), any_dir(), any(0x1p-500, 0x1p500), t);
+    real t[2] = {0, 0};
+    int n = isect_sphere_roots(any_vec(-0x1p501, 0x1p501), d, any(0x1p-500, 0x1p500), t);
     if (n >= 1)
         eva_isect_real = t[0];
     if (n == 2)
         eva_isect_real = t[1];
+}
+
+static void sphere_box(real lo, real hi)
+{
+    for (int axis = 0; axis < 3; axis++) {
+        sphere_roots(largest_at(axis, 1, lo, hi));
+        sphere_roots(largest_at(axis, -1, lo, hi));
+    }
+}
+
+void eva_isect_sphere(void)
+{
+    sphere_roots(vec_make(0, 0, 0));
+    sphere_box(0x1p-1074, binade_top(0x1p-535));
+#define SBOX(lo, hi) sphere_box(lo, lo == 4 ? lo : binade_top(hi));
+#include "sphere_boxes.h"
+#undef SBOX
+}
+
+void eva_isect(void)
+{
+    ray r = any_ray();
+    hit h;
+    real t;
     isect_hit_set(&h, any(-DBL_MAX, DBL_MAX), any_point(), any_dir(), any_dir());
-    eva_isect_int = plane_t(any_point(), any_dir(), &r, t);
-    vec3 v[3] = {any_point(), any_point(), any_point()};
-    tri_bary s;
-    eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &s);
+    eva_isect_int = plane_t(any_point(), any_dir(), &r, &t);
     real tt[2];
     int axis[2];
     eva_isect_int = box_slabs(any_point(), any_point(), &r, tt, axis);
 }
+
+static void quotient_binade(real lo, real hi)
+{
+    real q;
+    hi = binade_top(hi);
+    eva_isect_int = isect_quotient(any(-0x1p1017, 0x1p1017), any(lo, hi), &q);
+    eva_isect_real = q;
+    eva_isect_int = isect_quotient(any(-0x1p1017, 0x1p1017), any(-hi, -lo), &q);
+    eva_isect_real = q;
+    eva_isect_real = held_root(any(-0x1p1017, 0x1p1017), any(lo, hi));
+    eva_isect_real = held_root(any(-0x1p1017, 0x1p1017), any(-hi, -lo));
+}
+
+void eva_isect_quotient(void)
+{
+    real q;
+    eva_isect_int = isect_quotient(any(-0x1p1017, 0x1p1017), any(-0.0, 0.0), &q);
+    eva_isect_real = q;
+    eva_isect_real = held_root(any(-0x1p1017, 0x1p1017), any(-0.0, 0.0));
+#define BOX(lo, hi) quotient_binade(lo, hi);
+#include "isect_boxes.h"
+#undef BOX
+}
+
+#ifdef EVA_ISECT_TRIANGLE
+void eva_isect_triangle(void)
+{
+    ray r = any_ray();
+    vec3 v[3] = {any_point(), any_point(), any_point()};
+    tri_bary s;
+    eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &s);
+}
+#endif

@@ -20,20 +20,6 @@
 
 volatile vec3 eva_sink;
 
-/* Component axis in sign * [lo, hi], the others in [-hi, hi]. */
-static vec3 largest_at(int axis, real sign, real lo, real hi)
-{
-    vec3 v = any_vec(-hi, hi);
-    real m = sign > 0 ? any(lo, hi) : any(-hi, -lo);
-    if (axis == 0)
-        v.x = m;
-    else if (axis == 1)
-        v.y = m;
-    else
-        v.z = m;
-    return v;
-}
-
 static void binade(real lo, real hi)
 {
     if (lo > 0x1p1022)

@@ -6,8 +6,10 @@
 # through Why3.  Prints, per function, WP goals proved / total and the Eva
 # alarms and unproved clauses; exits 1 on any alarm, unproved clause or goal.
 #
-#   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|gappa]   (all but
-#   isect-eva when no argument; isect: WP on the hit tests alone)
+#   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-sphere|isect-tri|gappa]
+#   (all but isect-sphere and isect-tri when no argument; isect: WP on the
+#   hit tests alone, isect-eva: Eva on them; isect-sphere, isect-tri: Eva on
+#   isect_sphere_roots, triangle_solve, whose alarms are open)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
@@ -35,7 +37,7 @@ fi
 fc() { frama-c -cpp-extra-args="-I$src -I$out -Itests/prove -DNDEBUG $1" "${@:2}"; }
 status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
-ISECT_FCT=isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs
+ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs
 
 # Eva: one driver a run.  An alarm is an assertion Eva adds; a clause is one
 # of the contracts' properties in src/ that the run analyses (its status is
@@ -189,11 +191,38 @@ if [ "$what" = all ] || [ "$what" = isect ]; then
     wp_run wp_isect z3,cvc4,cvc4-strings "$ISECT_FCT" "$src/render/isect_common.c" "$src/render/intersect.c" || status=1
 fi
 
-# Eva on the hit tests: open alarms (spec/proofs.md, "Hit tests"), so not
-# part of all or quick yet.
-if [ "$what" = isect-eva ]; then
+# Eva on the hit tests (spec/proofs.md, "Hit tests"; tests/prove/eva_isect.c):
+# the tests with isect_quotient by its contract, and isect_quotient over
+# every binade of its divisor.  isect-sphere, isect-tri: isect_sphere_roots
+# and triangle_solve, whose alarms are open (not in all or quick).
+if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ] ||
+    [ "$what" = isect-sphere ]; then
+    start=$(date +%s)
+    { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
+      echo "BOX(0x1p1023, DBL_MAX)"; } >"$out/isect_boxes.h"
+    for k in $(seq -535 3 1); do echo "SBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/sphere_boxes.h"
+    echo "SBOX(4, 4)" >>"$out/sphere_boxes.h"
     echo "== Eva, hit tests (-warn-special-float non-finite)"
-    eva_run isect eva_isect "" "" tests/prove/eva_isect.c || status=1
+    if [ "$what" = isect-tri ]; then
+        eva_run isect_tri eva_isect_triangle vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
+            tests/prove/eva_isect.c || status=1
+    else
+        # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
+        # isect alone (seconds): the binade split takes minutes.  sphere
+        # (isect-sphere) has open alarms: not in all or quick.
+        keep=${PROVE_EVA:-isect,quotient}
+        [ "$what" = quick ] && keep=${PROVE_EVA:-isect}
+        [ "$what" = isect-sphere ] && keep=sphere
+        while read -r name main skip; do
+            case ",$keep," in *",$name,"*) ;; *) continue ;; esac
+            eva_run "$name" "$main" "${skip#-}" "" tests/prove/eva_isect.c || status=1
+        done <<RUNS
+isect eva_isect isect_quotient,vec_length,vec_length_fast,vec_normalize
+quotient eva_isect_quotient -
+sphere eva_isect_sphere held_root,vec_length,vec_length_fast,vec_normalize
+RUNS
+    fi
+    echo "   ($(( $(date +%s) - start )) s)"
 fi
 
 # Gappa: rounding bounds of the doubles (spec/proofs.md, "Rounding bounds").
