@@ -24,6 +24,8 @@ void bvh_free(bvh *b)
     mem_free(&m, b->nodes, (size_t)b->node_cap * sizeof *b->nodes);
     mem_free(&m, b->items, b->item_bytes);
     mem_free(&m, b->unbounded, (size_t)b->unbounded_cap * sizeof *b->unbounded);
+    mem_free(&m, b->hot, (size_t)b->item_count * sizeof *b->hot);
+    mem_free(&m, b->hot_block, b->hot_block_bytes);
     memset(b, 0, sizeof *b);
     b->mem = m;
 }
@@ -93,12 +95,18 @@ enum { TIE_MAX = 8 };
 typedef struct nearest {
     ray rr;
     hit cand[TIE_MAX];  /* the hits within the window of t_near */
+    /* A candidate found by its hot record has only t, prim and part: its
+     * full hit is made once it has won, by the scene_prim's test on the
+     * ray as it was then (tmax included), which gives the same bits. */
+    int deferred[TIE_MAX];
+    real cand_tmax[TIE_MAX];
     int count;
     int overflow;       /* more than TIE_MAX candidates at once */
     int fixed;          /* second pass: rr.tmax is the final window's end */
     real t_near;        /* the least t found; in the second pass the window's end */
     real slack;         /* TIE_REL * |origin| */
     bvh_stats *stats;
+    const isect_shear *sh; /* the ray's triangle shear, NULL without triangles */
 } nearest;
 
 static real tie_limit(const nearest *ns)
@@ -117,11 +125,15 @@ static int hit_order(const hit *a, const hit *b)
 
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
-static void nearest_add(nearest *ns, const hit *h)
+static void nearest_add(nearest *ns, const hit *h, int deferred)
 {
+    real tmax = ns->rr.tmax;
     if (ns->fixed) {
-        if (ns->count == 0 || hit_order(h, &ns->cand[0]) < 0)
+        if (ns->count == 0 || hit_order(h, &ns->cand[0]) < 0) {
             ns->cand[0] = *h;
+            ns->deferred[0] = deferred;
+            ns->cand_tmax[0] = tmax;
+        }
         ns->count = 1;
         ns->rr.tmax = ns->t_near;   /* the window's end, set by the caller */
         return;
@@ -131,12 +143,17 @@ static void nearest_add(nearest *ns, const hit *h)
     real limit = tie_limit(ns);
     int kept = 0;
     for (int i = 0; i < ns->count; i++)
-        if (ns->cand[i].t <= limit)
+        if (ns->cand[i].t <= limit) {
+            ns->deferred[kept] = ns->deferred[i];
+            ns->cand_tmax[kept] = ns->cand_tmax[i];
             ns->cand[kept++] = ns->cand[i];
+        }
     if (h->t <= limit) {
-        if (kept < TIE_MAX)
+        if (kept < TIE_MAX) {
+            ns->deferred[kept] = deferred;
+            ns->cand_tmax[kept] = tmax;
             ns->cand[kept++] = *h;
-        else
+        } else
             ns->overflow = 1;
     }
     ns->count = kept;
@@ -148,20 +165,59 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
     hit h;
     if (ns->stats)
         ns->stats->prims_tested++;
-    if (!isect_part(&prims[ref.prim], ref.part, &ns->rr, &h))
+    if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, ns->sh, &h))
         return;
     h.prim = ref.prim;
-    nearest_add(ns, &h);
+    nearest_add(ns, &h, 0);
+}
+
+/* Item i of the tree: by its hot record when it has one. */
+static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims, int i)
+{
+    bvh_hot hr = b->hot[i];
+    if (hr.code == ISECT_HOT_NONE) {
+        nearest_test(ns, prims, b->items[i]);
+        return;
+    }
+    if (ns->stats)
+        ns->stats->prims_tested++;
+    hit h = {0};
+    /* A sphere or box makes its full hit at once, as isect_part (a winner
+     * made again would cost a second test); only a triangle defers it. */
+    ray at = ns->rr;
+    int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &at, &h);
+    if (met >= 0) {
+        if (met) {
+            h.prim = b->items[i].prim;
+            nearest_add(ns, &h, 0);
+        }
+        return;
+    }
+    if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, ns->sh, &h.t))
+        return;
+    h.prim = b->items[i].prim;
+    h.part = b->items[i].part;
+    nearest_add(ns, &h, 1);
 }
 
 /* The lowest-index candidate: the nearest hit (see above). */
-static const hit *nearest_winner(const nearest *ns)
+static int nearest_winner(const nearest *ns)
 {
-    const hit *best = &ns->cand[0];
+    int best = 0;
     for (int i = 1; i < ns->count; i++)
-        if (hit_order(&ns->cand[i], best) < 0)
-            best = &ns->cand[i];
+        if (hit_order(&ns->cand[i], &ns->cand[best]) < 0)
+            best = i;
     return best;
+}
+
+/* The ray's triangle shear in *sh when the tree holds a triangle, else
+ * NULL (nothing would read it). */
+static const isect_shear *shear_of(const bvh *b, const ray *r, isect_shear *sh)
+{
+    if (!b->triangles)
+        return NULL;
+    isect_shear_make(r, sh);
+    return sh;
 }
 
 typedef struct stack_entry {
@@ -204,7 +260,7 @@ static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
         const bvh_node *nd = &b->nodes[node];
         if (nd->count > 0) {
             for (int i = nd->first; i < nd->first + nd->count; i++)
-                nearest_test(ns, prims, b->items[i]);
+                nearest_test_item(ns, b, prims, i);
             node = -1;
         } else {
             node = descend(b, node, &s, ns, stack, &sp);
@@ -235,6 +291,8 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     ns.t_near = r->tmax;
     ns.slack = TIE_REL * fmax(fabs(r->origin.x), fmax(fabs(r->origin.y), fabs(r->origin.z)));
     ns.stats = stats;
+    isect_shear sh;
+    ns.sh = shear_of(b, r, &sh);
     nearest_pass(b, prims, &ns);
     if (ns.overflow) {
         ns.rr = *r;
@@ -245,7 +303,17 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     }
     if (ns.count == 0)
         return 0;
-    *h = *nearest_winner(&ns);
+    int w = nearest_winner(&ns);
+    if (ns.deferred[w]) {
+        ray at = *r;
+        at.tmax = ns.cand_tmax[w];
+        int met = isect_part_sheared(&prims[ns.cand[w].prim], ns.cand[w].part, &at, ns.sh, h);
+        assert(met && h->t == ns.cand[w].t);
+        (void)met;
+        h->prim = ns.cand[w].prim;
+    } else {
+        *h = ns.cand[w];
+    }
     r->tmax = h->t;
     return 1;
 }
@@ -264,6 +332,7 @@ typedef struct walk {
     int (*count_fn)(void *ctx, bvh_ref ref, int crossings);
     void *ctx;
     bvh_stats *stats;
+    const isect_shear *sh;
 } walk;
 
 static int visit_part(const walk *w, bvh_ref ref)
@@ -272,10 +341,10 @@ static int visit_part(const walk *w, bvh_ref ref)
     if (w->stats)
         w->stats->prims_tested++;
     if (w->count_fn) {
-        int n = isect_part_crossings(&w->prims[ref.prim], ref.part, w->r);
+        int n = isect_part_crossings_sheared(&w->prims[ref.prim], ref.part, w->r, w->sh);
         return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
     }
-    int n = isect_part_all(&w->prims[ref.prim], ref.part, w->r, out);
+    int n = isect_part_all_sheared(&w->prims[ref.prim], ref.part, w->r, w->sh, out);
     for (int i = 0; i < n; i++) {
         out[i].prim = ref.prim;
         int stop = w->fn(w->ctx, &out[i]);
@@ -285,33 +354,62 @@ static int visit_part(const walk *w, bvh_ref ref)
     return 0;
 }
 
-/* Depth-first over every node the ray meets; the stack holds at most one
- * pending sibling per level plus the node being expanded. */
+/* Item i of the tree: a count walk uses its hot record when it has one. */
+static int visit_item(const bvh *b, const walk *w, int i)
+{
+    bvh_hot hr = b->hot[i];
+    if (!w->count_fn || hr.code == ISECT_HOT_NONE)
+        return visit_part(w, b->items[i]);
+    if (w->stats)
+        w->stats->prims_tested++;
+    int n = isect_hot_crossings(hr.code, b->hot_reals + hr.at, w->r, w->sh);
+    return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
+}
+
+/* Depth-first over every node the ray meets, the first child first.  Both
+ * children of an inner node are tested together (adjacent in memory, so
+ * their loads overlap) and only those met are entered; the stack holds at
+ * most one pending sibling per level. */
 static int traverse_all(const bvh *b, const walk *w)
 {
-    int stack[BVH_MAX_DEPTH + 1], sp = 0;
+    int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
+    real tmin = w->r->tmin, tmax = w->r->tmax, enter;
     slab_ray s = slab_make(w->r);
-    stack[sp++] = 0;
-    while (sp > 0) {
-        const bvh_node *nd = &b->nodes[stack[--sp]];
-        real enter;
-        if (w->stats)
-            w->stats->nodes_visited++;
-        if (!node_hit(nd, &s, w->r->tmin, w->r->tmax, &enter) && !b->exhaustive)
-            continue;
+    if (w->stats)
+        w->stats->nodes_visited++;
+    if (!node_hit(&b->nodes[0], &s, tmin, tmax, &enter) && !b->exhaustive)
+        return 0;
+    for (;;) {
+        const bvh_node *nd = &b->nodes[node];
         if (nd->count == 0) {
-            assert(sp + 2 <= BVH_MAX_DEPTH + 1);
-            stack[sp++] = nd->first + 1;
-            stack[sp++] = nd->first;
-            continue;
+            int a = nd->first;
+            int ha = node_hit(&b->nodes[a], &s, tmin, tmax, &enter) || b->exhaustive;
+            int hc = node_hit(&b->nodes[a + 1], &s, tmin, tmax, &enter) || b->exhaustive;
+            if (w->stats)
+                w->stats->nodes_visited += 2;
+            if (ha) {
+                if (hc) {
+                    assert(sp < BVH_MAX_DEPTH);
+                    stack[sp++] = a + 1;
+                }
+                node = a;
+                continue;
+            }
+            if (hc) {
+                node = a + 1;
+                continue;
+            }
+        } else {
+            for (int i = nd->first; i < nd->first + nd->count; i++) {
+                int stop = visit_item(b, w, i);
+                if (stop)
+                    return stop;
+            }
         }
-        for (int i = nd->first; i < nd->first + nd->count; i++) {
-            int stop = visit_part(w, b->items[i]);
-            if (stop)
-                return stop;
-        }
+        if (sp == 0)
+            return 0;
+        node = stack[--sp];
     }
-    return 0;
 }
 
 static int walk_all(const bvh *b, const walk *w)
@@ -327,7 +425,8 @@ static int walk_all(const bvh *b, const walk *w)
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
-    walk w = {prims, r, fn, NULL, ctx, stats};
+    isect_shear sh;
+    walk w = {prims, r, fn, NULL, ctx, stats, shear_of(b, r, &sh)};
     return walk_all(b, &w);
 }
 
@@ -340,6 +439,7 @@ int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
 int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
                      int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
 {
-    walk w = {prims, r, NULL, fn, ctx, stats};
+    isect_shear sh;
+    walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
     return walk_all(b, &w);
 }

@@ -44,6 +44,14 @@ typedef struct bvh_ref {
     int part;          /* which part of it (intersect.h) */
 } bvh_ref;
 
+/* Item i's hot record (intersect.h): its code, and where its reals start
+ * in bvh.hot_reals.  The records lie in the items' order, so a leaf's are
+ * contiguous, each aligned to 32 bytes (a sphere's in one cache line). */
+typedef struct bvh_hot {
+    int code;          /* ISECT_HOT_NONE: test through the scene_prim */
+    int at;
+} bvh_hot;
+
 typedef struct bvh {
     bvh_node *nodes;   /* nodes[0] is the root; NULL when nothing is bounded */
     int node_count;
@@ -60,6 +68,12 @@ typedef struct bvh {
                           spec/shading.md, [SHADE-SHORTCUT-BVH-1]); 0 after
                           bvh_build */
     int unbounded_cap;
+    int triangles;     /* 1: some part is a triangle (queries make the ray's
+                          triangle shear once, isect_shear_make) */
+    bvh_hot *hot;      /* item_count records, beside items */
+    real *hot_reals;   /* inside hot_block, aligned to 32 bytes */
+    void *hot_block;
+    size_t hot_block_bytes;
     mem mem;           /* where the arrays live */
 } bvh;
 

@@ -15,7 +15,8 @@
  * bounds the depth.  Every choice is a deterministic function of the input.
  *
  * Memory: a part costs 64 bytes while building (its padded box,
- * reference and cost; the centroid is recomputed), the median splits' sort buffers
+ * reference, cost and hot record's index; the centroid is recomputed),
+ * plus its hot record in the parts' order, the median splits' sort buffers
  * are made only when one happens, and the node array grows as needed.
  */
 #include <limits.h>
@@ -43,7 +44,8 @@
 typedef struct build_item {
     vec3 lo, hi;
     bvh_ref ref;
-    real cost;
+    float cost;        /* 1 or TRIANGLE_COST: exact in a float */
+    int hot;           /* its record in build_ctx.hot, or -1 */
 } build_item;
 
 /* The bounds of some parts' boxes (lo, hi) and of their centroids. */
@@ -71,6 +73,14 @@ typedef struct build_ctx {
     build_item *spare;    /* median splits: as many again, made on first use */
     sort_key *keys;
     size_t item_bytes;    /* allocated at items */
+    /* The hot records made in the parts' order (classify reads each
+     * primitive once, in order), copied into the items' final order at the
+     * end: reading the primitives in the tree's order was a cache miss or
+     * two per part. */
+    bvh_hot *hot;
+    real *hot_reals;
+    size_t hot_count, hot_reals_size;  /* allocated */
+    size_t hot_used;                   /* reals used at hot_reals */
     bin bins[3][BINS];    /* the binning of the node being split */
     int failed;           /* out of memory */
     cancel_poll *cancel;  /* asked once per node, a step per 64 items; NULL: never */
@@ -142,7 +152,8 @@ static int item_of(const scene_prim *p, int index, int part, build_item *out)
     out->hi = vec_add(hi, e);
     out->ref.prim = index;
     out->ref.part = part;
-    out->cost = p->kind == PRIM_MESH ? TRIANGLE_COST : 1.0;
+    out->cost = p->kind == PRIM_MESH ? (float)TRIANGLE_COST : 1.0f;
+    out->hot = -1;
     return vec_is_finite(centroid(out));
 }
 
@@ -429,19 +440,41 @@ static void free_sort_buffers(build_ctx *ctx)
     ctx->keys = NULL;
 }
 
+/* The hot record of part k of p into ctx's (prim-order) arrays. */
+static void hot_add(build_ctx *ctx, const scene_prim *p, int k, build_item *it)
+{
+    size_t want = (size_t)isect_hot_reals(p);
+    int n = 0;
+    if (want == 0 || ctx->hot_used + want > ctx->hot_reals_size)
+        return;
+    int code = isect_hot_make(p, k, ctx->hot_reals + ctx->hot_used, &n);
+    if (code == ISECT_HOT_NONE)
+        return;
+    it->hot = (int)(it - ctx->items);
+    ctx->hot[it->hot].code = code;
+    ctx->hot[it->hot].at = (int)ctx->hot_used;   /* < INT_MAX: see bvh_build_polled */
+    ctx->hot_used += (size_t)n;
+}
+
 /* Sorts parts into build items (bounded) and b->unbounded (a part without
  * finite bounds puts all its primitive's parts there: all of it is then
  * tested on every ray), which is then cut to its count (it was made for
  * every part). */
-static int classify(bvh *b, const scene_prim *prims, int count, build_item *items)
+static int classify(build_ctx *ctx, const scene_prim *prims, int count, build_item *items)
 {
+    bvh *b = ctx->b;
     int bounded = 0;
     for (int i = 0; i < count; i++) {
         int parts = isect_part_count(&prims[i]), kept = bounded;
+        if (prims[i].kind == PRIM_MESH || prims[i].kind == PRIM_TRIANGLE)
+            b->triangles = 1;
         for (int k = 0; k < parts; k++)
             bounded += item_of(&prims[i], i, k, &items[bounded]);
-        if (bounded - kept == parts)
+        if (bounded - kept == parts) {
+            for (int k = 0; k < parts && ctx->hot; k++)
+                hot_add(ctx, &prims[i], k, &items[kept + k]);
             continue;
+        }
         bounded = kept;
         for (int k = 0; k < parts; k++) {
             bvh_ref ref = {i, k};
@@ -477,6 +510,43 @@ static void keep_references(build_ctx *ctx)
     ctx->items = NULL;
 }
 
+/* The hot records of b->items (bvh.h), in their order; 0 when out of
+ * memory. */
+static int keep_hot(build_ctx *ctx)
+{
+    enum { ALIGN = 32 };
+    bvh *b = ctx->b;
+    size_t at = 0;
+    b->hot = mem_alloc(&b->mem, (size_t)ctx->count * sizeof *b->hot);
+    if (!b->hot)
+        return 0;
+    if (ctx->hot_used > 0) {
+        b->hot_block_bytes = ctx->hot_used * sizeof(real) + ALIGN;
+        b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
+        if (!b->hot_block) {
+            /* b->item_count, which bvh_free sizes b->hot by, is not set yet */
+            mem_free(&b->mem, b->hot, (size_t)ctx->count * sizeof *b->hot);
+            b->hot = NULL;
+            b->hot_block_bytes = 0;
+            return 0;
+        }
+        b->hot_reals = (real *)(void *)((char *)b->hot_block + (ALIGN - (uintptr_t)b->hot_block % ALIGN) % ALIGN);
+    }
+    for (int i = 0; i < ctx->count; i++) {
+        int k = ctx->items[i].hot;
+        b->hot[i].code = k < 0 ? ISECT_HOT_NONE : ctx->hot[k].code;
+        b->hot[i].at = (int)at;
+        if (k < 0)
+            continue;
+        int n = ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_SPHERE ? 4
+                : ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_BOX  ? 8
+                                                                      : 12;
+        memcpy(b->hot_reals + at, ctx->hot_reals + ctx->hot[k].at, (size_t)n * sizeof(real));
+        at += (size_t)n;
+    }
+    return 1;
+}
+
 /* The tree over ctx->items[0..count-1]; 0 when out of memory.  The node
  * array starts at one node per part (leaves hold about three; untouched
  * pages cost nothing) and shrinks to fit at the end. */
@@ -493,6 +563,8 @@ static int build_tree(build_ctx *ctx)
     if (ctx->failed)
         return 0;
     free_sort_buffers(ctx);
+    if (!keep_hot(ctx))
+        return 0;
     keep_references(ctx);
     bvh_node *fit = mem_resize_array(&b->mem, b->nodes, (size_t)b->node_cap, (size_t)b->node_count, sizeof *fit);
     if (fit) {
@@ -502,12 +574,17 @@ static int build_tree(build_ctx *ctx)
     return 1;
 }
 
-/* The number of parts of prims[0..count-1], or -1 past INT_MAX/2. */
-static long count_parts(const scene_prim *prims, int count)
+/* The number of parts of prims[0..count-1], or -1 past INT_MAX/2; *reals
+ * is their hot records' size (isect_hot_reals). */
+static long count_parts(const scene_prim *prims, int count, size_t *reals)
 {
     long parts = 0;
-    for (int i = 0; i < count && parts <= INT_MAX / 2; i++)
-        parts += isect_part_count(&prims[i]);
+    *reals = 0;
+    for (int i = 0; i < count && parts <= INT_MAX / 2; i++) {
+        int n = isect_part_count(&prims[i]);
+        parts += n;
+        *reals += (size_t)n * (size_t)isect_hot_reals(&prims[i]);
+    }
     return parts <= INT_MAX / 2 ? parts : -1;
 }
 
@@ -522,7 +599,8 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
     b->mem = mem_pick(m);
     build_ctx *ctx = mem_calloc(&b->mem, 1, sizeof *ctx);
     int ok = 0;
-    long parts = count >= 0 ? count_parts(prims, count) : -1;
+    size_t reals = 0;
+    long parts = count >= 0 ? count_parts(prims, count, &reals) : -1;
     if (!ctx || parts < 0 || (size_t)parts > SIZE_MAX / 2 / sizeof(build_item)) {
         mem_free(&b->mem, ctx, sizeof *ctx);
         return STATUS_NO_MEMORY;
@@ -534,11 +612,21 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
     ctx->items = mem_alloc(&b->mem, ctx->item_bytes);
     b->unbounded = mem_alloc(&b->mem, (size_t)parts * sizeof *b->unbounded);
     b->unbounded_cap = b->unbounded ? (int)parts : 0;
-    if (ctx->items && b->unbounded) {
-        ctx->count = classify(b, prims, count, ctx->items);
+    /* Past INT_MAX reals (a 16 GB array) no hot records are made: every
+     * part is then tested through its scene_prim. */
+    if (reals > 0 && reals <= (size_t)INT_MAX) {
+        ctx->hot_count = (size_t)parts;
+        ctx->hot_reals_size = reals;
+        ctx->hot = mem_alloc(&b->mem, ctx->hot_count * sizeof *ctx->hot);
+        ctx->hot_reals = mem_alloc(&b->mem, reals * sizeof *ctx->hot_reals);
+    }
+    if (ctx->items && b->unbounded && (reals == 0 || reals > (size_t)INT_MAX || (ctx->hot && ctx->hot_reals))) {
+        ctx->count = classify(ctx, prims, count, ctx->items);
         ok = ctx->count == 0 || build_tree(ctx);
     }
     mem_free(&b->mem, ctx->items, ctx->item_bytes);
+    mem_free(&b->mem, ctx->hot, ctx->hot_count * sizeof *ctx->hot);
+    mem_free(&b->mem, ctx->hot_reals, ctx->hot_reals_size * sizeof *ctx->hot_reals);
     free_sort_buffers(ctx);
     mem_free(&b->mem, ctx, sizeof *ctx);
     if (!ok || cancel_stopped(cancel))

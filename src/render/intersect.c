@@ -360,7 +360,7 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
-static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary *out)
+void isect_shear_make(const ray *r, isect_shear *sh)
 {
     int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     real dz = vec_component(r->dir, kz);
@@ -369,37 +369,89 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
         kx = ky;
         ky = s;
     }
+    sh->kx = kx;
+    sh->ky = ky;
+    sh->kz = kz;
+    sh->dz = dz;
+    sh->sx = sh->sy = 0.0;
+    if (dz == 0.0)
+        return;
+    sh->sx = vec_component(r->dir, kx) / dz;
+    sh->sy = vec_component(r->dir, ky) / dz;
+}
+
+/* A corner translated to the ray origin, permuted and sheared: (x, y) in
+ * the sheared plane, z the distance along the permuted axis. */
+static inline vec3 triangle_corner(vec3 v, vec3 o, real sx, real sy, int kx, int ky, int kz)
+{
+    vec3 a = vec_sub(v, o);
+    real z = vec_component(a, kz);
+    return vec_make(vec_component(a, kx) - sx * z, vec_component(a, ky) - sy * z, z);
+}
+
+/* The three corners, one case per permutation: with the axes as constants
+ * the coordinates stay in registers (a loop over arrays indexed by the
+ * axes went through the stack, and its 16-byte reloads of two 8-byte
+ * stores stalled).  The same operations in the same order. */
+#define TRIANGLE_CORNERS(kx, ky, kz)                                \
+    do {                                                            \
+        q0 = triangle_corner(v[0], o, sx, sy, kx, ky, kz);          \
+        q1 = triangle_corner(v[1], o, sx, sy, kx, ky, kz);          \
+        q2 = triangle_corner(v[2], o, sx, sy, kx, ky, kz);          \
+    } while (0)
+
+/* sh: the ray's permutation and shear (isect_shear_make of r). */
+static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, const isect_shear *sh, tri_bary *out)
+{
+    real dz = sh->dz;
     if (dz == 0.0)
         return 0;
-    real sx = vec_component(r->dir, kx) / dz, sy = vec_component(r->dir, ky) / dz;
-    real px[3], py[3], pz[3];
-    for (int i = 0; i < 3; i++) {
-        vec3 a = vec_sub(v[i], r->origin);
-        pz[i] = vec_component(a, kz);
-        px[i] = vec_component(a, kx) - sx * pz[i];
-        py[i] = vec_component(a, ky) - sy * pz[i];
+    real sx = sh->sx, sy = sh->sy;
+    vec3 o = r->origin, q0, q1, q2;
+    switch (sh->kz * 3 + sh->kx) {
+    case 0 * 3 + 1:
+        TRIANGLE_CORNERS(1, 2, 0);
+        break;
+    case 0 * 3 + 2:
+        TRIANGLE_CORNERS(2, 1, 0);
+        break;
+    case 1 * 3 + 2:
+        TRIANGLE_CORNERS(2, 0, 1);
+        break;
+    case 1 * 3 + 0:
+        TRIANGLE_CORNERS(0, 2, 1);
+        break;
+    case 2 * 3 + 0:
+        TRIANGLE_CORNERS(0, 1, 2);
+        break;
+    default:
+        TRIANGLE_CORNERS(1, 0, 2);
+        break;
     }
-    /* e[i] = e(P, Q) for P, Q the corners after i: written out, the
+    /* e_i = e(P, Q) for P, Q the corners after i: written out, the
      * hottest lines of the tracer. */
-    real e[3] = {px[2] * py[1] - py[2] * px[1], px[0] * py[2] - py[0] * px[2], px[1] * py[0] - py[1] * px[0]};
-    int inside = e[0] > 0.0 || e[1] > 0.0 || e[2] > 0.0, outside = e[0] < 0.0 || e[1] < 0.0 || e[2] < 0.0;
+    real e0 = q2.x * q1.y - q2.y * q1.x, e1 = q0.x * q2.y - q0.y * q2.x, e2 = q1.x * q0.y - q1.y * q0.x;
+    int inside = e0 > 0.0 || e1 > 0.0 || e2 > 0.0, outside = e0 < 0.0 || e1 < 0.0 || e2 < 0.0;
     /* A nonzero rounded edge function has its exact sign: only zeros need
      * the remainders and the tie rule. */
     if (inside && outside)
         return 0;
-    for (int i = 0; i < 3 && (e[0] == 0.0 || e[1] == 0.0 || e[2] == 0.0); i++) {
-        int p = (i + 1) % 3, q = (i + 2) % 3;
-        if (e[i] != 0.0)
-            continue;
-        int sign = remainder_sign(px[q], py[p], py[q], px[p]);
-        if (sign == 0 && !(inclusive >> i & 1))
-            sign = tie_sign(px[p], py[p], px[q], py[q]);
-        inside |= sign > 0;
-        outside |= sign < 0;
+    if (e0 == 0.0 || e1 == 0.0 || e2 == 0.0) {
+        real e[3] = {e0, e1, e2}, px[3] = {q0.x, q1.x, q2.x}, py[3] = {q0.y, q1.y, q2.y};
+        for (int i = 0; i < 3; i++) {
+            int p = (i + 1) % 3, q = (i + 2) % 3;
+            if (e[i] != 0.0)
+                continue;
+            int sign = remainder_sign(px[q], py[p], py[q], px[p]);
+            if (sign == 0 && !(inclusive >> i & 1))
+                sign = tie_sign(px[p], py[p], px[q], py[q]);
+            inside |= sign > 0;
+            outside |= sign < 0;
+        }
     }
     if (inside == outside)
         return 0;
-    real det = e[0] + e[1] + e[2];
+    real det = e0 + e1 + e2;
     if (det == 0.0)
         return 0;
     /* t = the barycentric mean of the vertices' z distances, over dz.  The
@@ -408,16 +460,18 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, tri_bary
      * 2^-342) where the weights b_i = e_i / det, free of scale, do not.
      * An edge decided by its remainders or by the tie rule has e_i = 0,
      * and so weight 0. */
-    for (int i = 0; i < 3; i++)
-        out->b[i] = e[i] / det;
-    out->t = (out->b[0] * pz[0] + out->b[1] * pz[1] + out->b[2] * pz[2]) / dz;
+    out->b[0] = e0 / det;
+    out->b[1] = e1 / det;
+    out->b[2] = e2 / det;
+    out->t = (out->b[0] * q0.z + out->b[1] * q1.z + out->b[2] * q2.z) / dz;
     return 1;
 }
 
-static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, const ray *r, hit *out, int bare)
+static int triangle_hits(const vec3 v[3], const vec3 *normals, int inclusive, const ray *r, const isect_shear *sh,
+                         hit *out, int bare)
 {
     tri_bary s;
-    if (!triangle_solve(v, inclusive, r, &s) || !in_interval(r, s.t))
+    if (!triangle_solve(v, inclusive, r, sh, &s) || !in_interval(r, s.t))
         return 0;
     if (bare) {
         out->t = s.t;
@@ -466,11 +520,12 @@ static int open_edges(const scene_trimesh *m, int k)
     return (open >> 1 & 1) | (open >> 2 & 1) << 1 | (open & 1) << 2;
 }
 
-static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *out, int bare)
+static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, const isect_shear *sh, hit *out,
+                              int bare)
 {
     vec3 v[3], n[3];
     const vec3 *normals = mesh_corners(m, k, v, n);
-    if (!triangle_hits(v, normals, open_edges(m, k), r, out, bare))
+    if (!triangle_hits(v, normals, open_edges(m, k), r, sh, out, bare))
         return 0;
     out->part = k;
     return 1;
@@ -482,9 +537,11 @@ static int mesh_triangle_hits(const scene_trimesh *m, int k, const ray *r, hit *
 static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max, int bare)
 {
     int found = 0;
+    isect_shear sh;
+    isect_shear_make(r, &sh);
     for (int k = 0; k < m->tri_count; k++) {
         hit h;
-        if (!mesh_triangle_hits(m, k, r, &h, bare))
+        if (!mesh_triangle_hits(m, k, r, &sh, &h, bare))
             continue;
         int at = found;
         while (at > 0 && h.t < out[at - 1].t)
@@ -499,15 +556,22 @@ static int mesh_hits(const scene_trimesh *m, const ray *r, hit *out, int max, in
     return found;
 }
 
-static int local_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
+/* sh: r's shear, or NULL to compute it here (a triangle needs it). */
+static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, hit *out, int max, int bare)
 {
+    isect_shear own;
     switch (p->kind) {
     case PRIM_SPHERE:
         return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, max, bare);
     case PRIM_PLANE:
         return plane_hits(p->u.plane.point, p->u.plane.normal, r, out, bare);
     case PRIM_TRIANGLE:
-        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, out, bare);
+        if (!sh) {
+            isect_shear_make(r, &own);
+            sh = &own;
+        }
+        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, sh, out,
+                             bare);
     case PRIM_DISK:
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
@@ -539,11 +603,11 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     if (p->kind == PRIM_MESH)
         return mesh_hits(&p->u.mesh, r, out, max, bare);
     if (!p->has_xform)
-        return local_hits(p, r, out, max, bare);
+        return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
     local.origin = xform_point(&p->to_local, r->origin);
     local.dir = xform_vector(&p->to_local, r->dir);
-    int n = local_hits(p, &local, out, max, bare);
+    int n = local_hits(p, &local, NULL, out, max, bare);
     for (int i = 0; i < n && !bare; i++) {
         out[i].point = xform_point(&p->to_world, out[i].point);
         out[i].normal = vec_normalize(xform_normal(&p->to_local, out[i].normal));
@@ -570,18 +634,32 @@ int isect_part_count(const scene_prim *p)
     return p->kind == PRIM_MESH ? p->u.mesh.tri_count : 1;
 }
 
-static int part_hits(const scene_prim *p, int part, const ray *r, hit *out, int max, int bare)
+/* sh: r's shear (the world ray's: a transformed primitive makes its own
+ * for its local ray), or NULL. */
+static int part_hits(const scene_prim *p, int part, const ray *r, const isect_shear *sh, hit *out, int max,
+                     int bare)
 {
-    if (p->kind == PRIM_MESH)
-        return mesh_triangle_hits(&p->u.mesh, part, r, out, bare);
+    isect_shear own;
+    if (p->kind == PRIM_MESH) {
+        if (!sh) {
+            isect_shear_make(r, &own);
+            sh = &own;
+        }
+        return mesh_triangle_hits(&p->u.mesh, part, r, sh, out, bare);
+    }
     if (!p->has_xform)
-        return local_hits(p, r, out, max, bare);
+        return local_hits(p, r, sh, out, max, bare);
     return prim_hits(p, r, out, max, bare);
 }
 
 int isect_part(const scene_prim *p, int part, ray *r, hit *h)
 {
-    if (!part_hits(p, part, r, h, 1, 0))
+    return isect_part_sheared(p, part, r, NULL, h);
+}
+
+int isect_part_sheared(const scene_prim *p, int part, ray *r, const isect_shear *sh, hit *h)
+{
+    if (!part_hits(p, part, r, sh, h, 1, 0))
         return 0;
     r->tmax = h->t;
     return 1;
@@ -589,13 +667,113 @@ int isect_part(const scene_prim *p, int part, ray *r, hit *h)
 
 int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS])
 {
-    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS, 0);
+    return isect_part_all_sheared(p, part, r, NULL, out);
+}
+
+int isect_part_all_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh,
+                           hit out[ISECT_MAX_CROSSINGS])
+{
+    return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 0);
 }
 
 int isect_part_crossings(const scene_prim *p, int part, const ray *r)
 {
+    return isect_part_crossings_sheared(p, part, r, NULL);
+}
+
+int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
+{
     hit out[ISECT_MAX_CROSSINGS];
-    return part_hits(p, part, r, out, ISECT_MAX_CROSSINGS, 1);
+    return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 1);
+}
+
+int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *reals)
+{
+    vec3 v[3], n[3];
+    int code;
+    if (p->kind == PRIM_SPHERE && !p->has_xform) {
+        g[0] = p->u.sphere.center.x;
+        g[1] = p->u.sphere.center.y;
+        g[2] = p->u.sphere.center.z;
+        g[3] = p->u.sphere.radius;
+        *reals = 4;
+        return ISECT_HOT_SPHERE;
+    }
+    if (p->kind == PRIM_BOX && !p->has_xform) {
+        g[0] = p->u.box.lo.x;
+        g[1] = p->u.box.lo.y;
+        g[2] = p->u.box.lo.z;
+        g[3] = p->u.box.hi.x;
+        g[4] = p->u.box.hi.y;
+        g[5] = p->u.box.hi.z;
+        g[6] = g[7] = 0.0;
+        *reals = 8;
+        return ISECT_HOT_BOX;
+    }
+    if (p->kind == PRIM_MESH) {
+        mesh_corners(&p->u.mesh, part, v, n);
+        code = ISECT_HOT_TRIANGLE | open_edges(&p->u.mesh, part) << 2;
+    } else if (p->kind == PRIM_TRIANGLE && !p->has_xform) {
+        for (int i = 0; i < 3; i++)
+            v[i] = p->u.triangle.p[i];
+        code = ISECT_HOT_TRIANGLE | 7 << 2;
+    } else {
+        return ISECT_HOT_NONE;
+    }
+    for (int i = 0; i < 3; i++) {
+        g[3 * i] = v[i].x;
+        g[3 * i + 1] = v[i].y;
+        g[3 * i + 2] = v[i].z;
+    }
+    g[9] = g[10] = g[11] = 0.0;
+    *reals = 12;
+    return code;
+}
+
+int isect_hot_reals(const scene_prim *p)
+{
+    if (p->kind == PRIM_SPHERE && !p->has_xform)
+        return 4;
+    if (p->kind == PRIM_BOX && !p->has_xform)
+        return 8;
+    return p->kind == PRIM_MESH || (p->kind == PRIM_TRIANGLE && !p->has_xform) ? 12 : 0;
+}
+
+/* The record's crossings, bare (up to max). */
+static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
+{
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
+        return sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, out, max, 1);
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
+        return box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, out, max, 1);
+    vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
+    return triangle_hits(v, NULL, code >> 2, r, sh, out, 1);
+}
+
+int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    return hot_hits(code, g, r, sh, out, ISECT_MAX_CROSSINGS);
+}
+
+int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t)
+{
+    hit out[1];
+    if (!hot_hits(code, g, r, sh, out, 1))
+        return 0;
+    *t = out[0].t;
+    return 1;
+}
+
+static int nearest(int found, ray *r, const hit *h);
+
+int isect_hot_hit(int code, const real *g, ray *r, hit *h)
+{
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
+        return nearest(sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, h, 1, 0), r, h);
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
+        return nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
+    return -1;
 }
 
 static int nearest(int found, ray *r, const hit *h)
@@ -617,7 +795,9 @@ int isect_plane(vec3 point, vec3 normal, ray *r, hit *h)
 
 int isect_triangle(const vec3 p[3], const vec3 *normals, ray *r, hit *h)
 {
-    return nearest(triangle_hits(p, normals, 7, r, h, 0), r, h);
+    isect_shear sh;
+    isect_shear_make(r, &sh);
+    return nearest(triangle_hits(p, normals, 7, r, &sh, h, 0), r, h);
 }
 
 int isect_disk(vec3 center, vec3 normal, real radius, ray *r, hit *h)

@@ -110,6 +110,56 @@ real isect_part_magnitude(const scene_prim *p, int part);
  * without their points and normals (a shadow ray needs only the count). */
 int isect_part_crossings(const scene_prim *p, int part, const ray *r);
 
+/* The ray's share of the watertight triangle test (Woop et al.: the axis
+ * permutation, dz and the shear sx, sy), which depends on the direction
+ * alone: a walk that tests many triangles with one ray makes it once.
+ * The _sheared forms take it (sh made by isect_shear_make of this r's
+ * direction, or NULL to make it per call) and give the same bits as the
+ * plain ones. */
+typedef struct isect_shear {
+    real sx, sy, dz;
+    int kx, ky, kz;
+} isect_shear;
+void isect_shear_make(const ray *r, isect_shear *sh);
+int isect_part_sheared(const scene_prim *p, int part, ray *r, const isect_shear *sh, hit *h);
+int isect_part_all_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh,
+                           hit out[ISECT_MAX_CROSSINGS]);
+int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh);
+
+/*
+ * Hot records: what the hit test of a sphere without a transform (centre,
+ * radius: 4 reals), of a box without one (8) or of a triangle (its three
+ * corners: 9 reals, padded to 12) reads, copied out of the scene_prim (392 bytes, the mesh's corner
+ * indices) so that the BVH can keep them in its leaves' order.  The
+ * record's code says which test it is and a mesh triangle's inclusive
+ * edges; the tests are the shapes' own (bare: t only), so they give the
+ * same bits as isect_part_crossings and the t of isect_part.
+ */
+enum {
+    ISECT_HOT_NONE = 0,     /* no record: test through the scene_prim */
+    ISECT_HOT_SPHERE = 1,
+    ISECT_HOT_TRIANGLE = 2,
+    ISECT_HOT_BOX = 3       /* lo, hi: 6 reals, padded to 8 */
+};
+#define ISECT_HOT_KIND(code) ((code) & 3)
+#define ISECT_HOT_REALS 12  /* the most a record takes */
+/* Fills g (up to ISECT_HOT_REALS) for part of p and returns its code, or
+ * ISECT_HOT_NONE (g untouched) when p has no hot record; *reals is how many
+ * of g it takes (a multiple of 4). */
+int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *reals);
+/* The *reals that isect_hot_make gives for each part of p (0: none). */
+int isect_hot_reals(const scene_prim *p);
+/* isect_part_crossings of the record's part (sh: r's shear when the record
+ * is a triangle). */
+int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh);
+/* The nearest crossing's t in (r->tmin, r->tmax), as isect_part finds it:
+ * returns 1 and sets *t, or 0. */
+int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t);
+/* For a sphere's or a box's record: exactly isect_part (the full hit, r->tmax
+ * shrunk); returns -1 for a triangle's, which needs the scene_prim (its
+ * vertex normals) for a full hit. */
+int isect_hot_hit(int code, const real *g, ray *r, hit *h);
+
 /* Where shadow rays from a hit should start: for a triangle with vertex
  * normals the hit point lifted toward the curved surface those normals
  * describe (Hanika's shadow terminator offset, spec/shading.md
