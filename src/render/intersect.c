@@ -1132,6 +1132,21 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
     return spawn_by(point, normal, dir, spawn_offset(point, magnitude), shadow);
 }
 
+/* A shadow ray toward target: the origin pushed off to the target's side,
+ * tmin the offset, tmax >= 0, a zero dir where tmax is 0.  Open
+ * (spec/proofs.md, "Rays and lights"): dir along target - origin (WP), and
+ * Eva: 1/dist overflows for a target within 2^-1024 of the origin. */
+/*@ requires vfinite(point) && vbounded(point, 0x1p1019);  // [LANG-EXTENT-1] (check_extent.c): a bounded shape's hit within 2^502; a plane's: open (spec/proofs.md)
+    requires vfinite(normal) && vbounded(normal, 4);         // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(target) && vbounded(target, 0x1p503);   // [LANG-EXTENT-1]: light_point within 2^503
+    requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);  // spawn_offset
+    assigns \nothing;
+    ensures \result.tmin == offset;
+    ensures EXACT(offset <= 0x1p983 ==> \let s = vdot(target, normal) >= vdot(point, normal) ? offset : -offset;
+                  \result.origin.x == point.x + s * normal.x && \result.origin.y == point.y + s * normal.y &&
+                  \result.origin.z == point.z + s * normal.z);
+    ensures \result.tmax >= 0;
+    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir)); */
 static ray spawn_to_by(vec3 point, vec3 normal, vec3 target, real offset)
 {
     ray r;

@@ -244,7 +244,7 @@ fi
 # hit tests of intersect.c have their own run).
 wp_fcts() {   # the functions proved in each file: file|functions
     cat <<LIST
-$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along
+$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,spawn_to_by
 $src/render/camera.c|screen_offset,camera_ray
 $src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric
 LIST
