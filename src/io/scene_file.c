@@ -351,13 +351,20 @@ scene_model *scene_file_load(const char *path, const scene_limits *limits, FILE 
 scene_model *scene_file_load_text(const char *path, const char *text, size_t len, const scene_limits *limits,
                                   FILE *diag_out, int warnings, int *status)
 {
+    return scene_file_load_text_confined(path, text, len, limits, diag_out, warnings, NULL, status);
+}
+
+scene_model *scene_file_load_text_confined(const char *path, const char *text, size_t len,
+                                           const scene_limits *limits, FILE *diag_out, int warnings,
+                                           const char *const *read_dirs, int *status)
+{
     scene_load_opts o;
     short_opts(&o, limits, diag_out, warnings);
     scene_file_reader files;
     scene_file_reader_init(&files, o.limits.max_file_bytes, &o.mem);
     o.resolver = scene_file_resolver(&files);
     scene_model *s = NULL;
-    *status = scene_file_reader_confine(&files, path, NULL);
+    *status = scene_file_reader_confine(&files, path, read_dirs);
     if (*status == STATUS_OK)
         s = load_root(path, text, len, &o, &files.mem, status);
     scene_file_reader_free(&files);

@@ -100,4 +100,11 @@ scene_model *scene_file_load(const char *path, const scene_limits *limits, FILE 
 scene_model *scene_file_load_text(const char *path, const char *text, size_t len, const scene_limits *limits,
                                   FILE *diag_out, int warnings, int *status);
 
+/* scene_file_load_text whose files may also come from the trees of
+ * read_dirs (NULL-terminated; NULL: none), as --allow-read gives the
+ * program: a generated scene naming meshes kept elsewhere. */
+scene_model *scene_file_load_text_confined(const char *path, const char *text, size_t len,
+                                           const scene_limits *limits, FILE *diag_out, int warnings,
+                                           const char *const *read_dirs, int *status);
+
 #endif

@@ -372,6 +372,10 @@ int main(int argc, char **argv)
         return 1;
     }
     o.obj_dir = objs;
+    /* The generated scenes name the OBJ files where they are, outside the
+     * work directory the scenes are written to. */
+    const char *mesh_dirs[] = {objs, NULL};
+    o.run.read_dirs = mesh_dirs;
     if (o.scene) {
         o.run.approximations = 1;
         return one_file(&o, o.scene);

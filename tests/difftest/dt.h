@@ -22,6 +22,8 @@ typedef struct dt_config {
     int timeout;            /* seconds for one POV-Ray render */
     int approximations;     /* 1: compare a scene whose export lists approximations too */
     FILE *diag;             /* where a scene's load diagnostics go */
+    const char *const *read_dirs; /* besides a scene's own tree, where its meshes may be read
+                                     (NULL-terminated; NULL: none) [REL-READ-1] */
 } dt_config;
 
 typedef enum dt_verdict {

@@ -272,7 +272,8 @@ dt_verdict dt_run(const dt_config *c, const char *name, const char *text, dt_res
      * POV-Ray's: compared as the seed has them, not listed. */
     o.facet_shadows = ro.facet_shadows = 1;
     snprintf(path, sizeof path, "%s/%s.scene", c->work_dir, name);
-    scene_model *s = scene_file_load_text(path, text, strlen(text), NULL, c->diag, 0, &status);
+    scene_model *s = scene_file_load_text_confined(path, text, strlen(text), NULL, c->diag, 0, c->read_dirs,
+                                                   &status);
     if (!s) {
         fail(r, "%.250s does not load", name);
         return r->verdict;
