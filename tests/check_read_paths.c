@@ -262,6 +262,19 @@ START_TEST(test_read_paths_io_confined_by_default)
     status = -1;
     ck_assert_ptr_null(scene_file_load_text(up, "include \"../other/o.scene\"\n", 27, NULL, NULL, 0, &status));
     ck_assert_int_eq(status, STATUS_DATA);
+    /* The text form with extra directories (the difftest's meshes): a mesh
+     * outside the tree loads once its directory is allowed, not before. */
+    static const char mesh_text[] = "mesh { file \"../other/m.obj\" }\n";
+    char other[300];
+    const char *allowed[] = {cli_path(other, sizeof other, w, "other"), NULL};
+    status = -1;
+    ck_assert_ptr_null(scene_file_load_text_confined(up, mesh_text, sizeof mesh_text - 1, NULL, NULL, 0, NULL,
+                                                     &status));
+    ck_assert_int_eq(status, STATUS_DATA);
+    scene_model *m = scene_file_load_text_confined(up, mesh_text, sizeof mesh_text - 1, NULL, NULL, 0, allowed,
+                                                   &status);
+    ck_assert_msg(m != NULL, "status %d", status);
+    scene_free(m);
     scene_model *s = scene_file_load(ok, NULL, NULL, 0, &status);
     ck_assert_msg(s != NULL, "status %d", status);
     scene_free(s);
