@@ -198,8 +198,12 @@ static inline real vec_length_fast(vec3 a)
     /* Decided on the largest component, before squaring: a.a formed an
      * infinity past 2^512 (not returned, but an infinity all the same, and
      * an alarm of make prove).  Within these powers of two a.a is in
-     * [REAL_MIN, REAL_MAX]. */
-    real m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+     * [REAL_MIN, REAL_MAX].  The largest by comparisons, not fmax: the
+     * components are finite (no NaN for fmax to skip) and |.| >= +0, so the
+     * same double, without fmax's two calls into libm a light sample. */
+    real ax = fabs(a.x), ay = fabs(a.y), az = fabs(a.z);
+    real m = ax > ay ? ax : ay;
+    m = m > az ? m : az;
     return m >= 0x1p-511 && m < 0x1p511 ? sqrt(vec_length2(a)) : vec_length(a);
 }
 
