@@ -182,6 +182,8 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, trace_
     if (w.carried == 0 && w.opaque.prim >= 0) {
         slot->prim = w.opaque.prim + 1;
         slot->part = w.opaque.part;
+    } else {
+        slot->prim = 0;
     }
     return w.carried;
 }
