@@ -338,6 +338,43 @@ START_TEST(test_shortcuts_blocker_tried_first)
 END_TEST
 
 /*
+ * [SHADE-SHORTCUT-BLOCKER-1] The hint is the last shadow ray's blocker, or
+ * none once a shadow ray reached the light.  A 1x1 orthographic view
+ * straight down at the floor's origin, a point light at (0, 4, 0) straight
+ * above it, and a ball at (5, 1, 5) of radius 0.5, off that shadow ray
+ * (the ray runs along x = z = 0).  The hint is set to the ball by hand, as
+ * if it had stopped the last ray: the first pixel's shadow ray tests it,
+ * misses and reaches the light; the same pixel again makes the same tests
+ * less that one, and both pixels are the same lit value.
+ */
+START_TEST(test_shortcuts_open_ray_clears_the_blocker)
+{
+    scene_model *s = load("image { width 1 height 1 max_depth 1 }\n"
+                          "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, 1] width 1 }\n"
+                          "point_light { position [0, 4, 0] power 1 }\n"
+                          "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+                          "sphere { center [5, 1, 5] radius 0.5 material { Kd 0.5 } }\n");
+    ck_assert_int_eq(s->prims[1].kind, PRIM_SPHERE);
+    tracer t;
+    trace_stats st;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    memset(&st, 0, sizeof st);
+    st.blocker[0].prim = 1 + 1;
+    st.blocker[0].part = 0;
+    rgb first = render_pixel(&t, 1, 1, 1, 0, 0, &st);
+    long tested = st.bvh.prims_tested;
+    ck_assert_int_eq(st.shadow_rays, 1);
+    ck_assert_int_eq(st.blocker[0].prim, 0);
+    rgb second = render_pixel(&t, 1, 1, 1, 0, 0, &st);
+    ck_assert_int_eq(st.shadow_rays, 2);
+    ck_assert_int_eq(st.bvh.prims_tested - tested, tested - 1);
+    ck_assert(first.x > 0 && memcmp(&first, &second, sizeof first) == 0);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
+/*
  * [SHADE-SHORTCUT-LOBE-1] [SHADE-SHORTCUT-LOBE-2] A glass ball (Kd 0) over
  * a floor under a 16-sample area light, for shininess 0, 1, 30, 1000 and
  * 1e6 and for a ball with Ks 0 too: the same bits with the shortcuts on
@@ -396,6 +433,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);
+    tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
