@@ -458,6 +458,41 @@ START_TEST(test_bvh_identical_prims_tie_to_lowest_index)
 }
 END_TEST
 
+START_TEST(test_bvh_tie_window_end_order_free)
+{
+    /* [BVH-TIE-ORDER-1] The window's far end belongs to it: a hit at exactly
+     * t_near + 2^-46 (|t_near| + |origin|) is a candidate whatever was
+     * tested first.  Index 1, a plane (tested before the tree), meets the
+     * ray at t = 1; index 0, a box in the tree, at t = 1 + 2^-46, the
+     * window's end (origin 0): brute force gives index 0.  A walk that
+     * shrank tmax to the window's end would reject t < tmax for the box. */
+    scene_prim prims[2];
+    real end = 1.0 + 0x1p-46;
+    prims[0] = prim_blank(PRIM_BOX);
+    prims[0].u.box.lo = vec_make(end, -1, -1);
+    prims[0].u.box.hi = vec_make(end + 1, 1, 1);
+    prims[1] = prim_blank(PRIM_PLANE);
+    prims[1].u.plane.point = vec_make(1, 0, 0);
+    prims[1].u.plane.normal = vec_make(-1, 0, 0);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, 2, NULL));
+    ray r = {{0, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL}, rb = r;
+    hit h, hb;
+    ck_assert(brute_nearest(prims, 2, &rb, &hb));
+    ck_assert_int_eq(hb.prim, 0);
+    ck_assert(bvh_intersect(&b, prims, &r, &h));
+    ck_assert_int_eq(h.prim, 0);
+    ck_assert(h.t == end);
+    /* The caller's tmax still bounds the window: with tmax = end the box's
+     * hit is outside (tmin, tmax), so the plane wins. */
+    ray s = {{0, 0, 0}, {1, 0, 0}, 0.0, end};
+    ck_assert(bvh_intersect(&b, prims, &s, &h));
+    ck_assert_int_eq(h.prim, 1);
+    ck_assert(h.t == 1.0);
+    bvh_free(&b);
+}
+END_TEST
+
 START_TEST(test_bvh_deterministic_and_well_formed)
 {
     int n = 3000;
@@ -615,6 +650,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_empty_scene);
     tcase_add_test(tc, test_bvh_one_prim_and_planes_only);
     tcase_add_test(tc, test_bvh_identical_prims_tie_to_lowest_index);
+    tcase_add_test(tc, test_bvh_tie_window_end_order_free);
     tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
