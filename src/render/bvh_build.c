@@ -224,7 +224,13 @@ static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 }
 
 /* The best plane on one axis: its cost (area-weighted counts, not yet
- * divided by the node's area) and the number of bins on its left. */
+ * divided by the node's area) and the number of bins on its left.
+ * An empty bin changes neither side's box, count nor cost (its box is the
+ * empty one, its sums 0), so the plane after it costs exactly what the
+ * plane before it did, which was tried first and wins the tie: only the
+ * planes after a non-empty bin are tried, and the right side's sums are
+ * carried over empty bins instead of made again (small nodes have nb = n
+ * bins, most of them empty). */
 static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
 {
     const bin *bins = ctx->bins[axis];
@@ -232,6 +238,12 @@ static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
     int right_count[BINS], count = 0;
     vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
     for (int k = nb - 1; k > 0; k--) {
+        if (bins[k].count == 0 && k < nb - 1) {
+            right_area[k] = right_area[k + 1];
+            right_count[k] = right_count[k + 1];
+            right_cost[k] = right_cost[k + 1];
+            continue;
+        }
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
@@ -245,11 +257,13 @@ static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
     count = 0;
     sum = 0.0;
     for (int k = 0; k < nb - 1; k++) {
+        if (bins[k].count == 0)
+            continue;
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
         sum += bins[k].cost;
-        if (count == 0 || right_count[k + 1] == 0)
+        if (right_count[k + 1] == 0)
             continue;
         real cost = half_area(lo, hi) * sum + right_area[k + 1] * right_cost[k + 1];
         if (cost < best) {
@@ -345,6 +359,47 @@ static int widest_axis(vec3 lo, vec3 hi)
     return e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
 }
 
+/* choose_split for two parts, the same result without the bins (half the
+ * inner nodes of a big tree have two parts).  With n = 2 each axis the
+ * binning takes has two bins, the part of the lower centroid in the first:
+ * every such axis offers the same single plane at the same cost
+ *   half_area(lower) cost(lower) + half_area(upper) cost(upper)
+ * (the sum of the same two products), so the first such axis wins; the
+ * partition then puts the lower part first, and each child's bounds are
+ * its part's box and centroid. */
+static int split_pair(build_ctx *ctx, int begin, const range *r, range kids[2])
+{
+    build_item *it = &ctx->items[begin];
+    int axis = -1;
+    for (int a = 0; a < 3 && axis < 0; a++) {
+        real extent = vec_component(r->chi, a) - vec_component(r->clo, a), scale = 2 / extent;
+        if (extent > 0.0 && isfinite(scale))
+            axis = a;
+    }
+    if (axis < 0)
+        return -1;
+    vec3 c0 = centroid(&it[0]), c1 = centroid(&it[1]);
+    int swap = vec_component(c0, axis) > vec_component(c1, axis);
+    const build_item *low = &it[swap], *high = &it[!swap];
+    real best = half_area(low->lo, low->hi) * (0.0 + low->cost) + half_area(high->lo, high->hi) * (0.0 + high->cost);
+    real leaf_cost = 0.0 + it[0].cost + it[1].cost, area = half_area(r->lo, r->hi);
+    real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
+    if (!(split_cost < leaf_cost))
+        return -1;
+    kids[0].lo = low->lo;
+    kids[0].hi = low->hi;
+    kids[0].clo = kids[0].chi = swap ? c1 : c0;
+    kids[1].lo = high->lo;
+    kids[1].hi = high->hi;
+    kids[1].clo = kids[1].chi = swap ? c0 : c1;
+    if (swap) {
+        build_item s = it[0];
+        it[0] = it[1];
+        it[1] = s;
+    }
+    return begin + 1;
+}
+
 /* Where to split items[begin..end) of bounds *r, or -1 for a leaf.  The
  * children's bounds go to kids[0], kids[1]. */
 static int choose_split(build_ctx *ctx, int begin, int end, int depth, const range *r, range kids[2])
@@ -353,6 +408,8 @@ static int choose_split(build_ctx *ctx, int begin, int end, int depth, const ran
     real best = INFINITY, leaf_cost = n;
     if (n <= 1)
         return -1;
+    if (n == 2 && depth < BVH_MEDIAN_DEPTH && MAX_LEAF >= 2)
+        return split_pair(ctx, begin, r, kids);
     binning bn = binning_of(r, n);
     if (depth < BVH_MEDIAN_DEPTH && (bn.scale[0] != 0 || bn.scale[1] != 0 || bn.scale[2] != 0)) {
         leaf_cost = fill_bins(ctx, begin, end, &bn);
