@@ -16,7 +16,7 @@
  *
  * Memory: a part costs 64 bytes while building (its padded box,
  * reference, cost and hot record's index; the centroid is recomputed),
- * plus its hot record in the parts' order, the median splits' sort buffers
+ * plus its hot record in the parts' order (kept by the tree), the median splits' sort buffers
  * are made only when one happens, and the node array grows as needed.
  */
 #include <limits.h>
@@ -36,6 +36,8 @@
 /* Primitive boxes are widened by this fraction of their coordinates' size,
  * so a hit computed a few ulps outside its true box is still inside. */
 #define BOUNDS_PAD 0x1p-40
+/* The hot records' alignment: a sphere's 4 reals in one cache line. */
+#define HOT_ALIGN 32
 
 /* A part during the build: its padded box, reference and intersection
  * cost (kept here: reading it from the primitive would be a cache miss per
@@ -74,11 +76,12 @@ typedef struct build_ctx {
     sort_key *keys;
     size_t item_bytes;    /* allocated at items */
     /* The hot records made in the parts' order (classify reads each
-     * primitive once, in order), copied into the items' final order at the
-     * end: reading the primitives in the tree's order was a cache miss or
-     * two per part. */
+     * primitive once, in order: reading the primitives in the tree's order
+     * was a cache miss or two per part); their reals stay there, in
+     * b->hot_block, and only the codes and offsets are put into the items'
+     * final order at the end. */
     bvh_hot *hot;
-    real *hot_reals;
+    real *hot_reals;   /* inside b->hot_block */
     size_t hot_count, hot_reals_size;  /* allocated */
     size_t hot_used;                   /* reals used at hot_reals */
     bin bins[3][BINS];    /* the binning of the node being split */
@@ -568,38 +571,19 @@ static void keep_references(build_ctx *ctx)
 }
 
 /* The hot records of b->items (bvh.h), in their order; 0 when out of
- * memory. */
+ * memory.  Their reals stay where classify made them, in the parts' order
+ * (b->hot_block from the start): only the short code and offset move. */
 static int keep_hot(build_ctx *ctx)
 {
-    enum { ALIGN = 32 };
     bvh *b = ctx->b;
-    size_t at = 0;
     b->hot = mem_alloc(&b->mem, (size_t)ctx->count * sizeof *b->hot);
     if (!b->hot)
         return 0;
-    if (ctx->hot_used > 0) {
-        b->hot_block_bytes = ctx->hot_used * sizeof(real) + ALIGN;
-        b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
-        if (!b->hot_block) {
-            /* b->item_count, which bvh_free sizes b->hot by, is not set yet */
-            mem_free(&b->mem, b->hot, (size_t)ctx->count * sizeof *b->hot);
-            b->hot = NULL;
-            b->hot_block_bytes = 0;
-            return 0;
-        }
-        b->hot_reals = (real *)(void *)((char *)b->hot_block + (ALIGN - (uintptr_t)b->hot_block % ALIGN) % ALIGN);
-    }
+    b->hot_reals = ctx->hot_used > 0 ? ctx->hot_reals : NULL;
     for (int i = 0; i < ctx->count; i++) {
         int k = ctx->items[i].hot;
         b->hot[i].code = k < 0 ? ISECT_HOT_NONE : ctx->hot[k].code;
-        b->hot[i].at = (int)at;
-        if (k < 0)
-            continue;
-        int n = ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_SPHERE ? 4
-                : ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_BOX  ? 8
-                                                                      : 12;
-        memcpy(b->hot_reals + at, ctx->hot_reals + ctx->hot[k].at, (size_t)n * sizeof(real));
-        at += (size_t)n;
+        b->hot[i].at = k < 0 ? 0 : ctx->hot[k].at;
     }
     return 1;
 }
@@ -675,7 +659,14 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
         ctx->hot_count = (size_t)parts;
         ctx->hot_reals_size = reals;
         ctx->hot = mem_alloc(&b->mem, ctx->hot_count * sizeof *ctx->hot);
-        ctx->hot_reals = mem_alloc(&b->mem, reals * sizeof *ctx->hot_reals);
+        /* The tree's own block (bvh_free releases it), the records aligned
+         * to 32 bytes: each is 4, 8 or 12 reals. */
+        b->hot_block_bytes = reals * sizeof(real) + HOT_ALIGN;
+        b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
+        b->hot_block_bytes = b->hot_block ? b->hot_block_bytes : 0;
+        if (b->hot_block)
+            ctx->hot_reals = (real *)(void *)((char *)b->hot_block +
+                                              (HOT_ALIGN - (uintptr_t)b->hot_block % HOT_ALIGN) % HOT_ALIGN);
     }
     if (ctx->items && b->unbounded && (reals == 0 || reals > (size_t)INT_MAX || (ctx->hot && ctx->hot_reals))) {
         ctx->count = classify(ctx, prims, count, ctx->items);
@@ -683,7 +674,6 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
     }
     mem_free(&b->mem, ctx->items, ctx->item_bytes);
     mem_free(&b->mem, ctx->hot, ctx->hot_count * sizeof *ctx->hot);
-    mem_free(&b->mem, ctx->hot_reals, ctx->hot_reals_size * sizeof *ctx->hot_reals);
     free_sort_buffers(ctx);
     mem_free(&b->mem, ctx, sizeof *ctx);
     if (!ok || cancel_stopped(cancel))
