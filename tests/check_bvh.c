@@ -493,6 +493,44 @@ START_TEST(test_bvh_tie_window_end_order_free)
 }
 END_TEST
 
+START_TEST(test_bvh_two_parts_split_by_hand)
+{
+    /* The SAH of a node of two parts, worked by hand ([BVH-BUILD-PAIR-1]):
+     * splitting costs C_TRAV + (A_0 + A_1) / A (half areas, cost 1 each),
+     * a leaf costs 2.  Two unit spheres 0.1 apart: 1 + (12 + 12) / 12.4 =
+     * 2.94, a leaf, items in the given order.  Five apart along x, or
+     * along y only: 1 + 24 / 32 = 1.75, split on the first axis along
+     * which the centroids differ, the lower centroid's part first. */
+    static const double centres[3][2][3] = {
+        {{0.1, 0, 0}, {0, 0, 0}}, {{5, 0, 0}, {0, 0, 0}}, {{0, 5, 0}, {0, 0, 0}}};
+    for (int c = 0; c < 3; c++) {
+        scene_prim prims[2];
+        for (int i = 0; i < 2; i++)
+            prims[i] = prim_sphere(vec_make(centres[c][i][0], centres[c][i][1], centres[c][i][2]), 1);
+        bvh b;
+        ck_assert(bvh_build(&b, prims, 2, NULL));
+        ck_assert_int_eq(b.item_count, 2);
+        if (c == 0) {
+            ck_assert_int_eq(b.node_count, 1);
+            ck_assert_int_eq(b.nodes[0].count, 2);
+            ck_assert_int_eq(b.items[0].prim, 0);
+        } else {
+            ck_assert_int_eq(b.node_count, 3);
+            ck_assert_int_eq(b.nodes[0].count, 0);
+            ck_assert_int_eq(b.nodes[1].count, 1);
+            ck_assert_int_eq(b.nodes[2].count, 1);
+            ck_assert_int_eq(b.items[b.nodes[1].first].prim, 1);
+            ck_assert_int_eq(b.items[b.nodes[2].first].prim, 0);
+            /* each child's box is its sphere's, padded by 2^-40 of its size */
+            ck_assert_double_le(b.nodes[1].lo.x, -1.0);
+            ck_assert_double_ge(b.nodes[1].lo.x, -1.0 - 0x1p-38);
+            ck_assert_double_ge(b.nodes[2].hi.x + b.nodes[2].hi.y, 6.0);
+        }
+        bvh_free(&b);
+    }
+}
+END_TEST
+
 START_TEST(test_bvh_deterministic_and_well_formed)
 {
     int n = 3000;
@@ -651,6 +689,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_one_prim_and_planes_only);
     tcase_add_test(tc, test_bvh_identical_prims_tie_to_lowest_index);
     tcase_add_test(tc, test_bvh_tie_window_end_order_free);
+    tcase_add_test(tc, test_bvh_two_parts_split_by_hand);
     tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
