@@ -1132,28 +1132,60 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
     return spawn_by(point, normal, dir, spawn_offset(point, magnitude), shadow);
 }
 
+/* The unit vector along to (a shadow ray's direction), the zero vector for
+ * a zero to, and |to| (vec_length_fast) in *dist.  1/|to| overflows for
+ * |to| <= 2^-1024 (a light 1e-316 from the spawned origin), and to * Inf
+ * is NaN where a component of to is 0: there each component is divided by
+ * |to| instead (|to_i| <= |to|).  d > 1/REAL_MAX (which rounds to 2^-1024,
+ * 2^-16384 for long double) holds exactly when 1/d is finite, so every
+ * other direction is to * (1/d) as before, the same bits (trace.c
+ * add_source's inv <= REAL_MAX guard, decided without forming the
+ * infinity, which Eva counts as an alarm). */
+/*@ requires vfinite(to) && DOUBLES(vbounded(to, 0x1p1022));   // vec_length_fast's: spawn_to_by's to
+    requires \valid(dist);
+    assigns *dist \from to;
+    assigns \result \from to;
+    ensures \initialized(dist) && \is_finite(*dist) && *dist >= 0;
+    ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z) &&
+            DOUBLES(-8 <= \result.x <= 8 && -8 <= \result.y <= 8 && -8 <= \result.z <= 8);
+    ensures EXACT(*dist == 0 ==> vzero(\result));
+    ensures EXACT(*dist > 0 ==> \result.x * *dist == to.x && \result.y * *dist == to.y && \result.z * *dist == to.z); */
+static vec3 unit_toward(vec3 to, real *dist)
+{
+    real d = vec_length_fast(to);
+    *dist = d;
+    if (d > 1 / REAL_MAX)
+        return vec_scale(to, 1.0 / d);
+    return d > 0.0 ? vec_make(to.x / d, to.y / d, to.z / d) : vec_make(0.0, 0.0, 0.0);
+}
+
 /* A shadow ray toward target: the origin pushed off to the target's side,
- * tmin the offset, tmax >= 0, a zero dir where tmax is 0.  Open
- * (spec/proofs.md, "Rays and lights"): dir along target - origin (WP), and
- * Eva: 1/dist overflows for a target within 2^-1024 of the origin. */
+ * tmin the offset, tmax >= 0, a zero dir where tmax is 0, else dir along
+ * target - origin, reaching it at tmax / (1 - SPAWN_SHADOW_SHRINK).  Open
+ * (spec/proofs.md, "Rays and lights"): dir of unit length (WP). */
 /*@ requires vfinite(point) && vbounded(point, 0x1p1019);  // [LANG-EXTENT-1] (check_extent.c): a bounded shape's hit within 2^502; a plane's: open (spec/proofs.md)
     requires vfinite(normal) && vbounded(normal, 4);         // [LANG-VALID-2]: unit normals (isect_*)
     requires vfinite(target) && vbounded(target, 0x1p503);   // [LANG-EXTENT-1]: light_point within 2^503
     requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);  // spawn_offset
     assigns \nothing;
-    ensures \result.tmin == offset;
+    ensures EXACT(\result.tmin == offset);   // Eva: the interval, no relation (the clause below)
     ensures EXACT(offset <= 0x1p983 ==> \let s = vdot(target, normal) >= vdot(point, normal) ? offset : -offset;
                   \result.origin.x == point.x + s * normal.x && \result.origin.y == point.y + s * normal.y &&
                   \result.origin.z == point.z + s * normal.z);
     ensures \result.tmax >= 0;
-    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir)); */
+    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir));
+    ensures vfinite(\result.origin) && vfinite(\result.dir) && \is_finite(\result.tmax) &&
+            \is_finite(\result.tmin) && \result.tmin > 0 && DOUBLES(vbounded(\result.dir, 8));
+    ensures EXACT(\result.tmax > 0 ==> \let k = 1 - SPAWN_SHADOW_SHRINK;
+                  \result.dir.x * \result.tmax == (target.x - \result.origin.x) * k &&
+                  \result.dir.y * \result.tmax == (target.y - \result.origin.y) * k &&
+                  \result.dir.z * \result.tmax == (target.z - \result.origin.z) * k); */
 static ray spawn_to_by(vec3 point, vec3 normal, vec3 target, real offset)
 {
     ray r;
     r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
-    vec3 to = vec_sub(target, r.origin);
-    real dist = vec_length_fast(to);
-    r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
+    real dist;
+    r.dir = unit_toward(vec_sub(target, r.origin), &dist);
     r.tmin = offset;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);
     return r;

@@ -54,6 +54,20 @@ static void spawn_helpers(void)
     eva_render_vec = screen_offset(&cam, any(0, 0x1p54), (real)h / (real)w, sx, sy);
 }
 
+/* Shadow rays toward a point (a light's, within 2^503) from a hit within
+ * 2^1019: spawn_to_by's precondition.  unit_toward is used by its
+ * contract, checked binade by binade by eva_toward.c. */
+static void spawns_to(void)
+{
+    eva_render_ray = spawn_to_by(any_vec(-0x1p1019, 0x1p1019), any_dir(), any_vec(-0x1p503, 0x1p503), any_offset());
+    eva_render_ray = ray_spawn_to(any_vec(-0x1p1019, 0x1p1019), any_dir(), any_vec(-0x1p503, 0x1p503));
+    shadow_start st;
+    st.point = any_vec(-0x1p1019, 0x1p1019);
+    st.normal = any_dir();
+    st.offset = any_offset();
+    eva_render_ray = ray_shadow_to(&st, any_vec(-0x1p503, 0x1p503));
+}
+
 static void spawns(void)
 {
     eva_render_ray = spawn_by(any_point(), any_dir(), any_dir(), any_offset(), 0);
@@ -102,6 +116,7 @@ static void lights(void)
 void eva_render(void)
 {
     spawn_helpers();
+    spawns_to();
     lights();
 }
 
