@@ -1154,8 +1154,12 @@ static vec3 unit_toward(vec3 to, real *dist)
 {
     real d = vec_length_fast(to);
     *dist = d;
-    if (d > 1 / REAL_MAX)
-        return vec_scale(to, 1.0 / d);
+    if (d > 1 / REAL_MAX) {
+        real inv = 1.0 / d;
+        /*@ assert EXACT(inv * d == 1); */
+        /*@ assert EXACT((to.x * inv) * d == to.x && (to.y * inv) * d == to.y && (to.z * inv) * d == to.z); */
+        return vec_scale(to, inv);
+    }
     return d > 0.0 ? vec_make(to.x / d, to.y / d, to.z / d) : vec_make(0.0, 0.0, 0.0);
 }
 
