@@ -52,6 +52,8 @@ static void spawn_helpers(void)
     cam.true_up = any_dir();
     real sx = 2.0 * any(0, 1e9) / w - 1.0, sy = 1.0 - 2.0 * any(0, 1e9) / h;
     eva_render_vec = screen_offset(&cam, any(0, 0x1p54), (real)h / (real)w, sx, sy);
+    /* An orthographic camera's half width, above the perspective's 2^54. */
+    eva_render_vec = screen_offset(&cam, any(0x1.0000000000001p54, 0x1p499), (real)h / (real)w, sx, sy);
 }
 
 /* Shadow rays toward a point (a light's, within 2^503) from a hit within
@@ -99,6 +101,11 @@ static void camera(void)
     cam.width = 0;
     int w = Frama_C_int_interval(1, 1000000000), h = Frama_C_int_interval(1, 1000000000);
     eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
+    /* Orthographic: eye and width within the scene's extent (2^500). */
+    cam.kind = CAMERA_ORTHOGRAPHIC;
+    cam.eye = any_vec(-0x1p500, 0x1p500);
+    cam.width = any(0x1p-1074, 0x1p500);
+    eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
 }
 
 static void lights(void)
@@ -111,6 +118,10 @@ static void lights(void)
     light_cell_point(g, Frama_C_int_interval(0, 1000000000), any(0, 0x1.fffffffffffffp-1),
                      any(0, 0x1.fffffffffffffp-1), &s, &t);
     eva_render_real = s + t;
+    vec3 t1, t2;
+    light_frame(any_dir(), &t1, &t2);
+    eva_render_vec = t1;
+    eva_render_vec = t2;
 }
 
 void eva_render(void)

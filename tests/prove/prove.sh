@@ -247,7 +247,7 @@ wp_fcts() {   # the functions proved in each file: file|functions
     cat <<LIST
 $src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by
 $src/render/camera.c|screen_offset,camera_ray
-$src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric
+$src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric,light_frame
 LIST
 }
 if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade ]; then
