@@ -972,6 +972,13 @@ real isect_prim_magnitude(const scene_prim *p)
     return norm * m + shift;
 }
 
+/* The contract other functions' proofs take (assumed, not itself proved: it walks
+ * every kind of primitive and a mesh's arrays): a maximum of magnitudes and
+ * sizes, >= 0 (finite data, radii > 0: [LANG-VALID-2]), +Inf past DBL_MAX,
+ * never NaN (a transform's linear part is invertible, so its norm is > 0). */
+/*@ requires \valid_read(p);
+    assigns \result \from *p, part;
+    ensures (\is_finite(\result) && \result >= 0) || \is_plus_infinity(\result);   // admit (assumed, listed by make prove; +Inf allowed: spawn_offset caps it) */
 real isect_part_magnitude(const scene_prim *p, int part)
 {
     vec3 v[3], n[3];
@@ -1035,7 +1042,8 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
     assigns \nothing;
     ensures \is_finite(\result) && \result >= SPAWN_ABS && DOUBLES(\result <= 0x1p983);
     ensures EXACT(magnitude <= DBL_MAX ==>
-                  \result == SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS); */
+                  \result == SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS);
+    ensures EXACT(vbounded(point, 0x1p1022) ==> \result <= 0x1p983); */
 static real spawn_offset(vec3 point, real magnitude)
 {
     real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
@@ -1284,9 +1292,26 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
+/* Contracts of the hit's spawn functions (make prove, spec/proofs.md): the
+ * hit's point finite (the hit tests' contracts), its geometric normal a
+ * unit one ([LANG-VALID-2]; vec_normalize's box to Eva), the primitive's
+ * magnitude as isect_part_magnitude's contract gives it.  The origin is
+ * pushed to the side the ray leaves toward: (origin - point).normal has
+ * the sign of dir.normal (of (target - point).normal). */
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(dir) && vbounded(dir, 4);                  // add_source's L: vec_normalize's or -direction
+    requires DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    assigns \nothing;
+    ensures vfinite(\result.origin) && \is_finite(\result.tmin) && \result.tmin >= 0;
+    ensures EXACT(veq(\result.dir, dir));
+    ensures EXACT(vbounded(h->point, 0x1p1022) ==>
+                  (vdot(dir, h->normal) >= 0 ? vdot(\result.origin, h->normal) >= vdot(h->point, h->normal)
+                                             : vdot(\result.origin, h->normal) <= vdot(h->point, h->normal))); */
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
-    return spawn(h->point, h->normal, dir, isect_part_magnitude(p, h->part), 1);
+    return spawn_by(h->point, h->normal, dir, spawn_offset(h->point, isect_part_magnitude(p, h->part)), 1);
 }
 
 int isect_smooth(const scene_prim *p)
@@ -1294,11 +1319,29 @@ int isect_smooth(const scene_prim *p)
     return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
 }
 
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point) && vbounded(h->point, 0x1p1019);  // spawn_to_by's: [LANG-EXTENT-1], a plane's hit open
+    requires vfinite(h->normal) && vbounded(h->normal, 4);       // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(target) && vbounded(target, 0x1p503);       // [LANG-EXTENT-1]: light_point within 2^503
+    assigns \nothing;
+    ensures vfinite(\result.origin) && vfinite(\result.dir) && \is_finite(\result.tmax) && \result.tmax >= 0 &&
+            \is_finite(\result.tmin) && \result.tmin > 0;
+    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir));
+    ensures EXACT(vdot(target, h->normal) >= vdot(h->point, h->normal) ?
+                  vdot(\result.origin, h->normal) >= vdot(h->point, h->normal) :
+                  vdot(\result.origin, h->normal) <= vdot(h->point, h->normal)); */
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
-    return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
+    return spawn_to_by(h->point, h->normal, target, spawn_offset(h->point, isect_part_magnitude(p, h->part)));
 }
 
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    assigns \nothing;
+    ensures EXACT(veq(\result.point, h->point) && veq(\result.normal, h->normal));
+    ensures \is_finite(\result.offset) && \result.offset >= SPAWN_ABS && DOUBLES(\result.offset <= 0x1p983);
+    ensures EXACT(vbounded(h->point, 0x1p1022) ==> \result.offset <= 0x1p983); */
 shadow_start ray_shadow_start(const scene_prim *p, const hit *h)
 {
     shadow_start st;

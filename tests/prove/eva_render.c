@@ -70,6 +70,27 @@ static void spawns_to(void)
     eva_render_ray = ray_shadow_to(&st, any_vec(-0x1p503, 0x1p503));
 }
 
+/* From a hit: eva_hits, a run of its own, with isect_part_magnitude by its
+ * contract (p is not read), which passes +Inf past DBL_MAX by design
+ * (spawn_offset caps it): NaN is the alarm there, as in eva_rays, and the
+ * finiteness of each field a clause; spawn_offset and spawn_origin are
+ * analysed, so the origin keeps its bound. */
+void eva_hits(void)
+{
+    scene_prim p;
+    hit h;
+    h.point = any_vec(-0x1p1019, 0x1p1019);
+    h.normal = any_dir();
+    h.part = 0;
+    eva_render_ray = ray_spawn_hit_to(&p, &h, any_vec(-0x1p503, 0x1p503));
+    h.point = any_point();
+    shadow_start st = ray_shadow_start(&p, &h);
+    eva_render_real = st.offset;
+    for (int axis = 0; axis < 3; axis++)
+        for (int sign = -1; sign <= 1; sign += 2)
+            eva_render_ray = ray_spawn_hit_shadow(&p, &h, long_dir(axis, sign));
+}
+
 static void spawns(void)
 {
     eva_render_ray = spawn_by(any_point(), any_dir(), any_dir(), any_offset(), 0);

@@ -110,7 +110,8 @@ if [ "$what" = all ] || [ "$what" = eva ] || [ "$what" = quick ]; then
     # (tmax = +Inf by design: NaN is the alarm there, every other field's
     # finiteness a clause), helpers by contract.
     runs+=("render eva_render vec_length,vec_normalize,unit_toward - tests/prove/eva_render.c $src/render/lightsample.c"
-           "rays eva_rays vec_length,vec_normalize,spawn_offset,spawn_origin,shadow_tmin,screen_offset - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan")
+           "rays eva_rays vec_length,vec_normalize,spawn_offset,spawn_origin,shadow_tmin,screen_offset - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan"
+           "hits eva_hits vec_length,vec_normalize,unit_toward,isect_part_magnitude - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan")
     [ "$what" = quick ] && jobs=0
     [ "$what" = quick ] || runs+=("concentric eva_concentric vec_length,vec_normalize - tests/prove/eva_render.c $src/render/lightsample.c")
     for j in $(seq 1 "$jobs"); do
@@ -245,7 +246,7 @@ fi
 # hit tests of intersect.c have their own run).
 wp_fcts() {   # the functions proved in each file: file|functions
     cat <<LIST
-$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by
+$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by,ray_spawn_hit_shadow,ray_spawn_hit_to,ray_shadow_start
 $src/render/camera.c|screen_offset,camera_ray
 $src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric,light_frame
 LIST
