@@ -1295,9 +1295,11 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 /* Contracts of the hit's spawn functions (make prove, spec/proofs.md): the
  * hit's point finite (the hit tests' contracts), its geometric normal a
  * unit one ([LANG-VALID-2]; vec_normalize's box to Eva), the primitive's
- * magnitude as isect_part_magnitude's contract gives it.  The origin is
- * pushed to the side the ray leaves toward: (origin - point).normal has
- * the sign of dir.normal (of (target - point).normal). */
+ * magnitude as isect_part_magnitude's contract gives it.  Toward a
+ * target, the origin is point + tmin normal on the target's side (tmin the
+ * offset, > 0).  Along dir, the side is ray_shadow_along's clause (the
+ * same ray from ray_shadow_start's offset); stated here, with the offset
+ * unnamed, the provers do not close it (spec/proofs.md). */
 /*@ requires \valid_read(p) && \valid_read(h);
     requires vfinite(h->point);                                 // a hit's point (isect_*)
     requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
@@ -1305,10 +1307,7 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     requires DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
     assigns \nothing;
     ensures vfinite(\result.origin) && \is_finite(\result.tmin) && \result.tmin >= 0;
-    ensures EXACT(veq(\result.dir, dir));
-    ensures EXACT(vbounded(h->point, 0x1p1022) ==>
-                  (vdot(dir, h->normal) >= 0 ? vdot(\result.origin, h->normal) >= vdot(h->point, h->normal)
-                                             : vdot(\result.origin, h->normal) <= vdot(h->point, h->normal))); */
+    ensures EXACT(veq(\result.dir, dir)); */
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
     return spawn_by(h->point, h->normal, dir, spawn_offset(h->point, isect_part_magnitude(p, h->part)), 1);
@@ -1327,9 +1326,9 @@ int isect_smooth(const scene_prim *p)
     ensures vfinite(\result.origin) && vfinite(\result.dir) && \is_finite(\result.tmax) && \result.tmax >= 0 &&
             \is_finite(\result.tmin) && \result.tmin > 0;
     ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir));
-    ensures EXACT(vdot(target, h->normal) >= vdot(h->point, h->normal) ?
-                  vdot(\result.origin, h->normal) >= vdot(h->point, h->normal) :
-                  vdot(\result.origin, h->normal) <= vdot(h->point, h->normal)); */
+    ensures EXACT(\let s = vdot(target, h->normal) >= vdot(h->point, h->normal) ? \result.tmin : -\result.tmin;
+                  \result.origin.x == h->point.x + s * h->normal.x && \result.origin.y == h->point.y + s * h->normal.y &&
+                  \result.origin.z == h->point.z + s * h->normal.z); */
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
     return spawn_to_by(h->point, h->normal, target, spawn_offset(h->point, isect_part_magnitude(p, h->part)));
