@@ -73,9 +73,9 @@ void light_concentric(double s, double t, double *x, double *y)
 /*
  * The frame of Duff et al., "Building an Orthonormal Basis, Revisited"
  * (JCGT 6(1), 2017).  n is a disk or rectangle light's normal, loader_unit's
- * vec_normalize result (lower_light, check_light: [LANG-VALID-2]): finite,
+ * vec_normalize result (disk_light, check_rectangle: [LANG-VALID-2]): finite,
  * every component within 4 (vec_normalize's bound), of unit length within
- * 2^-20 (vunit).  |sign + n.z| = 1 + |n.z| >= 1, so a is in [-1, 0).  For
+ * 2^-20 (vunit).  |sign + n.z| = 1 + |n.z| >= 1, so |a| <= 1.  For
  * e = |n|^2 - 1 the frame is off by e alone (exact arithmetic):
  * t1.n = -n.x e / (1 + |n.z|), t2.n = -sign n.y e / (1 + |n.z|),
  * |t1|^2 - 1 = n.x^2 e / (1 + |n.z|)^2, |t2|^2 - 1 = n.y^2 e / (1 + |n.z|)^2,
