@@ -71,6 +71,36 @@ START_TEST(test_spawn_far_infinite_magnitude)
 }
 END_TEST
 
+/* A shadow ray toward a light less than 2^-1024 from its spawned origin
+ * (issue 17; spec/proofs.md, "Rays and lights"): 1/dist is +Inf there and
+ * to * (1/dist) made 0 * Inf = NaN components.  The hit is the origin on
+ * the plane y = 0 (normal +y), so the origin is pushed to (0, SPAWN_ABS, 0)
+ * (magnitude 0: the offset is SPAWN_ABS); the light one double above it
+ * lies straight up, the other one on the least double along +x: the
+ * direction is exactly the axis, the length of the step the distance. */
+START_TEST(test_spawn_near_target_direction_is_unit)
+{
+    vec3 n = vec_make(0, 1, 0);
+    double above = nextafter(SPAWN_ABS, 1);
+    ray r = ray_spawn_to(vec_make(0, 0, 0), n, vec_make(0, above, 0));
+    ck_assert(r.origin.x == 0 && r.origin.y == SPAWN_ABS && r.origin.z == 0);
+    ck_assert_msg(r.dir.x == 0 && r.dir.y == 1 && r.dir.z == 0, "dir (%g, %g, %g)", r.dir.x, r.dir.y, r.dir.z);
+    ck_assert(r.tmin == SPAWN_ABS);
+    ck_assert(r.tmax > 0 && r.tmax <= above - SPAWN_ABS);
+    shadow_start st;
+    st.point = vec_make(0, 0, 0);
+    st.normal = n;
+    st.offset = SPAWN_ABS;
+    ray s = ray_shadow_to(&st, vec_make(0x1p-1074, SPAWN_ABS, 0));
+    ck_assert(s.origin.y == SPAWN_ABS);
+    ck_assert_msg(s.dir.x == 1 && s.dir.y == 0 && s.dir.z == 0, "dir (%g, %g, %g)", s.dir.x, s.dir.y, s.dir.z);
+    ck_assert(s.tmax > 0 && s.tmax <= 0x1p-1074);
+    /* Both unit (and finite: NaN fails every comparison). */
+    ck_assert(r.dir.x * r.dir.x + r.dir.y * r.dir.y + r.dir.z * r.dir.z == 1);
+    ck_assert(s.dir.x * s.dir.x + s.dir.y * s.dir.y + s.dir.z * s.dir.z == 1);
+}
+END_TEST
+
 Suite *suite_spawn_far(void)
 {
     Suite *s = suite_create("spawn_far");
@@ -78,6 +108,7 @@ Suite *suite_spawn_far(void)
     tcase_add_test(tc, test_spawn_far_origin_held_at_dbl_max);
     tcase_add_test(tc, test_spawn_far_origin_rounds_as_the_sum);
     tcase_add_test(tc, test_spawn_far_infinite_magnitude);
+    tcase_add_test(tc, test_spawn_near_target_direction_is_unit);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -13,14 +13,18 @@
  * aspect along true_up, from the screen's centre. */
 /*@ requires \valid_read(cam);
     requires vfinite(cam->right) && vbounded(cam->right, 4) && vfinite(cam->true_up) && vbounded(cam->true_up, 4);
-    requires \is_finite(half) && half >= 0 && DOUBLES(half <= 0x1p54);
+    // half: tan(fov/2) <= 2^54 for a perspective camera, width/2 <= 2^499 for an
+    // orthographic one (check_camera_extent: [LANG-EXTENT-1])
+    requires \is_finite(half) && half >= 0 && DOUBLES(half <= 0x1p499);
     requires \is_finite(aspect) && aspect > 0 && DOUBLES(aspect <= 0x1p31);
     requires \is_finite(sx) && \is_finite(sy) && DOUBLES(\abs(sx) <= 0x1p32 && \abs(sy) <= 0x1p32);
     assigns \nothing;
     ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z);
-    ensures DOUBLES(-0x1p122 <= \result.x <= 0x1p122 && -0x1p122 <= \result.y <= 0x1p122 &&
+    ensures DOUBLES(half <= 0x1p54 ==> -0x1p122 <= \result.x <= 0x1p122 && -0x1p122 <= \result.y <= 0x1p122 &&
                     -0x1p122 <= \result.z <= 0x1p122);
-    ensures EXACT(is_screen_point(\result, cam->right, cam->true_up, half, aspect, sx, sy)); */
+    ensures EXACT(is_screen_point(\result, cam->right, cam->true_up, half, aspect, sx, sy));
+    ensures DOUBLES(-0x1p565 <= \result.x <= 0x1p565 && -0x1p565 <= \result.y <= 0x1p565 &&
+                    -0x1p565 <= \result.z <= 0x1p565); */
 static vec3 screen_offset(const scene_camera *cam, real half, real aspect, real sx, real sy)
 {
     return vec_add(vec_scale(cam->right, sx * half), vec_scale(cam->true_up, sy * half * aspect));
@@ -47,6 +51,8 @@ static vec3 screen_offset(const scene_camera *cam, real half, real aspect, real 
     requires vfinite(cam->true_up) && vbounded(cam->true_up, 4);
     requires cam->kind == CAMERA_PERSPECTIVE ==> \is_finite(cam->fov) && 0 < cam->fov < 180;
     requires cam->kind == CAMERA_ORTHOGRAPHIC ==> \is_finite(cam->width) && cam->width > 0;
+    // the eye and the orthographic width within 2^500: check_camera_extent, [LANG-EXTENT-1]
+    requires cam->kind == CAMERA_ORTHOGRAPHIC ==> DOUBLES(cam->width <= 0x1p500 && vbounded(cam->eye, 0x1p500));
     requires 1 <= width <= 1000000000 && 1 <= height <= 1000000000;
     // Eva takes x, y anywhere in [0, 10^9]: a box, wider than the relation
     requires \is_finite(x) && 0 <= x <= 1000000000 && \is_finite(y) && 0 <= y <= 1000000000;
@@ -57,7 +63,9 @@ static vec3 screen_offset(const scene_camera *cam, real half, real aspect, real 
                                                 DOUBLES(vbounded(\result.dir, 4));
     ensures EXACT(vzero(\result.dir) || vunit(\result.dir));
     ensures EXACT(cam->kind == CAMERA_PERSPECTIVE ==> veq(\result.origin, cam->eye));
-    ensures EXACT(cam->kind == CAMERA_ORTHOGRAPHIC ==> veq(\result.dir, cam->forward)); */
+    ensures EXACT(cam->kind == CAMERA_ORTHOGRAPHIC ==> veq(\result.dir, cam->forward));
+    ensures cam->kind == CAMERA_ORTHOGRAPHIC ==> vfinite(\result.origin) && vfinite(\result.dir) &&
+                                                 DOUBLES(vbounded(\result.dir, 4)); */
 ray camera_ray(const scene_camera *cam, int width, int height, real x, real y)
 {
     real aspect = (real)height / (real)width;

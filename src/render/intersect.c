@@ -972,6 +972,13 @@ real isect_prim_magnitude(const scene_prim *p)
     return norm * m + shift;
 }
 
+/* The contract other functions' proofs take (assumed, not itself proved: it walks
+ * every kind of primitive and a mesh's arrays): a maximum of magnitudes and
+ * sizes, >= 0 (finite data, radii > 0: [LANG-VALID-2]), +Inf past DBL_MAX,
+ * never NaN (a transform's linear part is invertible, so its norm is > 0). */
+/*@ requires \valid_read(p);
+    assigns \result \from *p, part;
+    ensures (\is_finite(\result) && \result >= 0) || \is_plus_infinity(\result);   // admit (assumed, listed by make prove; +Inf allowed: spawn_offset caps it) */
 real isect_part_magnitude(const scene_prim *p, int part)
 {
     vec3 v[3], n[3];
@@ -1035,7 +1042,8 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
     assigns \nothing;
     ensures \is_finite(\result) && \result >= SPAWN_ABS && DOUBLES(\result <= 0x1p983);
     ensures EXACT(magnitude <= DBL_MAX ==>
-                  \result == SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS); */
+                  \result == SPAWN_REL * \max(magnitude, vmaxabs(point)) + SPAWN_ABS);
+    ensures EXACT(vbounded(point, 0x1p1022) ==> \result <= 0x1p983); */
 static real spawn_offset(vec3 point, real magnitude)
 {
     real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
@@ -1132,28 +1140,64 @@ static ray spawn(vec3 point, vec3 normal, vec3 dir, real magnitude, int shadow)
     return spawn_by(point, normal, dir, spawn_offset(point, magnitude), shadow);
 }
 
+/* The unit vector along to (a shadow ray's direction), the zero vector for
+ * a zero to, and |to| (vec_length_fast) in *dist.  1/|to| overflows for
+ * |to| <= 2^-1024 (a light 1e-316 from the spawned origin), and to * Inf
+ * is NaN where a component of to is 0: there each component is divided by
+ * |to| instead (|to_i| <= |to|).  d > 1/REAL_MAX (which rounds to 2^-1024,
+ * 2^-16384 for long double) holds exactly when 1/d is finite, so every
+ * other direction is to * (1/d) as before, the same bits (trace.c
+ * add_source's inv <= REAL_MAX guard, decided without forming the
+ * infinity, which Eva counts as an alarm). */
+/*@ requires vfinite(to) && DOUBLES(vbounded(to, 0x1p1022));   // vec_length_fast's: spawn_to_by's to
+    requires \valid(dist);
+    assigns *dist \from to;
+    assigns \result \from to;
+    ensures \initialized(dist) && \is_finite(*dist) && *dist >= 0;
+    ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z) &&
+            DOUBLES(-8 <= \result.x <= 8 && -8 <= \result.y <= 8 && -8 <= \result.z <= 8);
+    ensures EXACT(*dist == 0 ==> vzero(\result));
+    ensures EXACT(*dist > 0 ==> \result.x * *dist == to.x && \result.y * *dist == to.y && \result.z * *dist == to.z); */
+static vec3 unit_toward(vec3 to, real *dist)
+{
+    real d = vec_length_fast(to);
+    *dist = d;
+    if (d > 1 / REAL_MAX) {
+        real inv = 1.0 / d;
+        /*@ assert EXACT(inv * d == 1); */
+        /*@ assert EXACT((to.x * inv) * d == to.x && (to.y * inv) * d == to.y && (to.z * inv) * d == to.z); */
+        return vec_scale(to, inv);
+    }
+    return d > 0.0 ? vec_make(to.x / d, to.y / d, to.z / d) : vec_make(0.0, 0.0, 0.0);
+}
+
 /* A shadow ray toward target: the origin pushed off to the target's side,
- * tmin the offset, tmax >= 0, a zero dir where tmax is 0.  Open
- * (spec/proofs.md, "Rays and lights"): dir along target - origin (WP), and
- * Eva: 1/dist overflows for a target within 2^-1024 of the origin. */
+ * tmin the offset, tmax >= 0, a zero dir where tmax is 0, else dir along
+ * target - origin, reaching it at tmax / (1 - SPAWN_SHADOW_SHRINK).  Open
+ * (spec/proofs.md, "Rays and lights"): dir of unit length (WP). */
 /*@ requires vfinite(point) && vbounded(point, 0x1p1019);  // [LANG-EXTENT-1] (check_extent.c): a bounded shape's hit within 2^502; a plane's: open (spec/proofs.md)
     requires vfinite(normal) && vbounded(normal, 4);         // [LANG-VALID-2]: unit normals (isect_*)
     requires vfinite(target) && vbounded(target, 0x1p503);   // [LANG-EXTENT-1]: light_point within 2^503
     requires \is_finite(offset) && offset > 0 && DOUBLES(offset <= 0x1p983);  // spawn_offset
     assigns \nothing;
-    ensures \result.tmin == offset;
+    ensures EXACT(\result.tmin == offset);   // Eva: the interval, no relation (the clause below)
     ensures EXACT(offset <= 0x1p983 ==> \let s = vdot(target, normal) >= vdot(point, normal) ? offset : -offset;
                   \result.origin.x == point.x + s * normal.x && \result.origin.y == point.y + s * normal.y &&
                   \result.origin.z == point.z + s * normal.z);
     ensures \result.tmax >= 0;
-    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir)); */
+    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir));
+    ensures vfinite(\result.origin) && vfinite(\result.dir) && \is_finite(\result.tmax) &&
+            \is_finite(\result.tmin) && \result.tmin > 0 && DOUBLES(vbounded(\result.dir, 8));
+    ensures EXACT(\result.tmax > 0 ==> \let k = 1 - SPAWN_SHADOW_SHRINK;
+                  \result.dir.x * \result.tmax == (target.x - \result.origin.x) * k &&
+                  \result.dir.y * \result.tmax == (target.y - \result.origin.y) * k &&
+                  \result.dir.z * \result.tmax == (target.z - \result.origin.z) * k); */
 static ray spawn_to_by(vec3 point, vec3 normal, vec3 target, real offset)
 {
     ray r;
     r.origin = spawn_origin(point, normal, vec_sub(target, point), offset);
-    vec3 to = vec_sub(target, r.origin);
-    real dist = vec_length_fast(to);
-    r.dir = dist > 0.0 ? vec_scale(to, 1.0 / dist) : vec_make(0.0, 0.0, 0.0);
+    real dist;
+    r.dir = unit_toward(vec_sub(target, r.origin), &dist);
     r.tmin = offset;
     r.tmax = dist * (1.0 - SPAWN_SHADOW_SHRINK);
     return r;
@@ -1248,9 +1292,25 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     return r;
 }
 
+/* Contracts of the hit's spawn functions (make prove, spec/proofs.md): the
+ * hit's point finite (the hit tests' contracts), its geometric normal a
+ * unit one ([LANG-VALID-2]; vec_normalize's box to Eva), the primitive's
+ * magnitude as isect_part_magnitude's contract gives it.  Toward a
+ * target, the origin is point + tmin normal on the target's side (tmin the
+ * offset, > 0).  Along dir, the side is ray_shadow_along's clause (the
+ * same ray from ray_shadow_start's offset); stated here, with the offset
+ * unnamed, the provers do not close it (spec/proofs.md). */
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(dir) && vbounded(dir, 4);                  // add_source's L: vec_normalize's or -direction
+    requires DOUBLES(\abs(dir.x) >= 0.125 || \abs(dir.y) >= 0.125 || \abs(dir.z) >= 0.125);
+    assigns \nothing;
+    ensures vfinite(\result.origin) && \is_finite(\result.tmin) && \result.tmin >= 0;
+    ensures EXACT(veq(\result.dir, dir)); */
 ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 {
-    return spawn(h->point, h->normal, dir, isect_part_magnitude(p, h->part), 1);
+    return spawn_by(h->point, h->normal, dir, spawn_offset(h->point, isect_part_magnitude(p, h->part)), 1);
 }
 
 int isect_smooth(const scene_prim *p)
@@ -1258,11 +1318,29 @@ int isect_smooth(const scene_prim *p)
     return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
 }
 
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point) && vbounded(h->point, 0x1p1019);  // spawn_to_by's: [LANG-EXTENT-1], a plane's hit open
+    requires vfinite(h->normal) && vbounded(h->normal, 4);       // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(target) && vbounded(target, 0x1p503);       // [LANG-EXTENT-1]: light_point within 2^503
+    assigns \nothing;
+    ensures vfinite(\result.origin) && vfinite(\result.dir) && \is_finite(\result.tmax) && \result.tmax >= 0 &&
+            \is_finite(\result.tmin) && \result.tmin > 0;
+    ensures EXACT(\result.tmax == 0 ==> vzero(\result.dir));
+    ensures EXACT(\let s = vdot(target, h->normal) >= vdot(h->point, h->normal) ? \result.tmin : -\result.tmin;
+                  \result.origin.x == h->point.x + s * h->normal.x && \result.origin.y == h->point.y + s * h->normal.y &&
+                  \result.origin.z == h->point.z + s * h->normal.z); */
 ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
 {
-    return spawn_to(h->point, h->normal, target, isect_part_magnitude(p, h->part));
+    return spawn_to_by(h->point, h->normal, target, spawn_offset(h->point, isect_part_magnitude(p, h->part)));
 }
 
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    assigns \nothing;
+    ensures EXACT(veq(\result.point, h->point) && veq(\result.normal, h->normal));
+    ensures \is_finite(\result.offset) && \result.offset >= SPAWN_ABS && DOUBLES(\result.offset <= 0x1p983);
+    ensures EXACT(vbounded(h->point, 0x1p1022) ==> \result.offset <= 0x1p983); */
 shadow_start ray_shadow_start(const scene_prim *p, const hit *h)
 {
     shadow_start st;

@@ -70,10 +70,35 @@ void light_concentric(double s, double t, double *x, double *y)
     *y = r * sin(phi);
 }
 
+/*
+ * The frame of Duff et al., "Building an Orthonormal Basis, Revisited"
+ * (JCGT 6(1), 2017).  n is a disk or rectangle light's normal, loader_unit's
+ * vec_normalize result (disk_light, check_rectangle: [LANG-VALID-2]): finite,
+ * every component within 4 (vec_normalize's bound), of unit length within
+ * 2^-20 (vunit).  |sign + n.z| = 1 + |n.z| >= 1, so |a| <= 1.  For
+ * e = |n|^2 - 1 the frame is off by e alone (exact arithmetic):
+ * t1.n = -n.x e / (1 + |n.z|), t2.n = -sign n.y e / (1 + |n.z|),
+ * |t1|^2 - 1 = n.x^2 e / (1 + |n.z|)^2, |t2|^2 - 1 = n.y^2 e / (1 + |n.z|)^2,
+ * t1.t2 = sign n.x n.y e / (1 + |n.z|)^2: exactly orthonormal for e = 0,
+ * within 2^-19 for vunit's |e| <= 2^-20 (n.x^2, n.y^2 <= |n|^2 <= 2).
+ * The contract states what Eva shows (finite, each component within 17);
+ * the frame identities are not clauses: WP's provers do not close them
+ * (spec/proofs.md, "light_frame"); tests/check_lightsample.c checks them.
+ */
+/*@ requires vfinite(n) && DOUBLES(vbounded(n, 4));   // loader_unit (vec_normalize's bound): [LANG-VALID-2]
+    requires \valid(t1) && \valid(t2) && \separated(t1, t2);
+    assigns *t1 \from n;
+    assigns *t2 \from n;
+    ensures DOUBLES(vfinite(*t1) && vfinite(*t2));
+    ensures DOUBLES(vbounded(*t1, 17) && vbounded(*t2, 17)); */
 void light_frame(vec3 n, vec3 *t1, vec3 *t2)
 {
     real sign = copysign((real)1, n.z);
-    real a = -1 / (sign + n.z);
+    /*@ assert EXACT(sign * sign == 1 && sign * n.z == \abs(n.z)); */
+    /* -1 / (sign + n.z), the same double: sign + n.z is sign (1 + |n.z|),
+     * rounded alike; a divisor of at least 1 to a box analysis (Eva). */
+    real a = -sign / (1 + fabs(n.z));
+    /*@ assert EXACT(a * (1 + \abs(n.z)) == -sign); */
     real b = n.x * n.y * a;
     *t1 = vec_make(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
     *t2 = vec_make(b, sign + n.y * n.y * a, -n.y);

@@ -52,6 +52,43 @@ static void spawn_helpers(void)
     cam.true_up = any_dir();
     real sx = 2.0 * any(0, 1e9) / w - 1.0, sy = 1.0 - 2.0 * any(0, 1e9) / h;
     eva_render_vec = screen_offset(&cam, any(0, 0x1p54), (real)h / (real)w, sx, sy);
+    /* An orthographic camera's half width, above the perspective's 2^54. */
+    eva_render_vec = screen_offset(&cam, any(0x1.0000000000001p54, 0x1p499), (real)h / (real)w, sx, sy);
+}
+
+/* Shadow rays toward a point (a light's, within 2^503) from a hit within
+ * 2^1019: spawn_to_by's precondition.  unit_toward is used by its
+ * contract, checked binade by binade by eva_toward.c. */
+static void spawns_to(void)
+{
+    eva_render_ray = spawn_to_by(any_vec(-0x1p1019, 0x1p1019), any_dir(), any_vec(-0x1p503, 0x1p503), any_offset());
+    eva_render_ray = ray_spawn_to(any_vec(-0x1p1019, 0x1p1019), any_dir(), any_vec(-0x1p503, 0x1p503));
+    shadow_start st;
+    st.point = any_vec(-0x1p1019, 0x1p1019);
+    st.normal = any_dir();
+    st.offset = any_offset();
+    eva_render_ray = ray_shadow_to(&st, any_vec(-0x1p503, 0x1p503));
+}
+
+/* From a hit: eva_hits, a run of its own, with isect_part_magnitude by its
+ * contract (p is not read), which passes +Inf past DBL_MAX by design
+ * (spawn_offset caps it): NaN is the alarm there, as in eva_rays, and the
+ * finiteness of each field a clause; spawn_offset and spawn_origin are
+ * analysed, so the origin keeps its bound. */
+void eva_hits(void)
+{
+    scene_prim p;
+    hit h;
+    h.point = any_vec(-0x1p1019, 0x1p1019);
+    h.normal = any_dir();
+    h.part = 0;
+    eva_render_ray = ray_spawn_hit_to(&p, &h, any_vec(-0x1p503, 0x1p503));
+    h.point = any_point();
+    shadow_start st = ray_shadow_start(&p, &h);
+    eva_render_real = st.offset;
+    for (int axis = 0; axis < 3; axis++)
+        for (int sign = -1; sign <= 1; sign += 2)
+            eva_render_ray = ray_spawn_hit_shadow(&p, &h, long_dir(axis, sign));
 }
 
 static void spawns(void)
@@ -85,6 +122,11 @@ static void camera(void)
     cam.width = 0;
     int w = Frama_C_int_interval(1, 1000000000), h = Frama_C_int_interval(1, 1000000000);
     eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
+    /* Orthographic: eye and width within the scene's extent (2^500). */
+    cam.kind = CAMERA_ORTHOGRAPHIC;
+    cam.eye = any_vec(-0x1p500, 0x1p500);
+    cam.width = any(0x1p-1074, 0x1p500);
+    eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
 }
 
 static void lights(void)
@@ -97,11 +139,16 @@ static void lights(void)
     light_cell_point(g, Frama_C_int_interval(0, 1000000000), any(0, 0x1.fffffffffffffp-1),
                      any(0, 0x1.fffffffffffffp-1), &s, &t);
     eva_render_real = s + t;
+    vec3 t1, t2;
+    light_frame(any_dir(), &t1, &t2);
+    eva_render_vec = t1;
+    eva_render_vec = t2;
 }
 
 void eva_render(void)
 {
     spawn_helpers();
+    spawns_to();
     lights();
 }
 

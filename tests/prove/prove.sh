@@ -109,12 +109,14 @@ if [ "$what" = all ] || [ "$what" = eva ] || [ "$what" = quick ]; then
     # (eva_render.c): helpers and samples; the functions returning a ray
     # (tmax = +Inf by design: NaN is the alarm there, every other field's
     # finiteness a clause), helpers by contract.
-    runs+=("render eva_render vec_length,vec_normalize - tests/prove/eva_render.c $src/render/lightsample.c"
-           "rays eva_rays vec_length,vec_normalize,spawn_offset,spawn_origin,shadow_tmin,screen_offset - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan")
+    runs+=("render eva_render vec_length,vec_normalize,unit_toward - tests/prove/eva_render.c $src/render/lightsample.c"
+           "rays eva_rays vec_length,vec_normalize,spawn_offset,spawn_origin,shadow_tmin,screen_offset - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan"
+           "hits eva_hits vec_length,vec_normalize,unit_toward,isect_part_magnitude - tests/prove/eva_render.c $src/render/lightsample.c -- -warn-special-float nan")
     [ "$what" = quick ] && jobs=0
     [ "$what" = quick ] || runs+=("concentric eva_concentric vec_length,vec_normalize - tests/prove/eva_render.c $src/render/lightsample.c")
     for j in $(seq 1 "$jobs"); do
-        runs+=("split$j eva_split - -I$out/part$j tests/prove/eva_split.c" "vec$j eva_vec - -I$out/part$j tests/prove/eva_vec.c")
+        runs+=("split$j eva_split - -I$out/part$j tests/prove/eva_split.c" "vec$j eva_vec - -I$out/part$j tests/prove/eva_vec.c"
+               "toward$j eva_toward vec_length,vec_length_fast,vec_normalize -I$out/part$j tests/prove/eva_toward.c")
     done
     if [ -n "${PROVE_EVA:-}" ]; then
         kept=()
@@ -244,9 +246,9 @@ fi
 # hit tests of intersect.c have their own run).
 wp_fcts() {   # the functions proved in each file: file|functions
     cat <<LIST
-$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,spawn_to_by
+$src/render/intersect.c|max_abs,spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by,ray_spawn_hit_shadow,ray_spawn_hit_to,ray_shadow_start
 $src/render/camera.c|screen_offset,camera_ray
-$src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric
+$src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric,light_frame
 LIST
 }
 if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade ]; then
