@@ -11,11 +11,13 @@
  *     that each box keeps the range of the foot -b/a), held_root and the
  *     vec.h lengths by their contracts.  It divides b = f.d by a = d.d, whose ratio to |d|
  *     an analysis of intervals loses when |d| ranges from 2^-1074 to 4; so
- *     d is split as in eva_vec.c, its largest component in one box
- *     [2^k, 2^(k+3)) (k = -535, -532, .., then 4 itself: a factor 8 keeps
- *     l = f - (b/a) d within 2^511, its square finite), one box for every
- *     smaller d (where a is 0 or below DBL_MIN and the foot past 2^1020,
- *     or l within 2^501), and the zero vector.
+ *     d is split as in eva_vec.c, its largest component in one binade
+ *     [2^k, 2^(k+1)) for k = -538 .. -509 (there the foot's test bounds
+ *     it, by 2^1020 times the spread of a in the box), then in one box
+ *     [2^k, 2^(k+3)) (k = -508, -505, .., -1, then 4 itself: a factor 8
+ *     keeps l = f - (b/a) d within 2^511, its square finite), one box for
+ *     every smaller d (each square rounds to 0, so a = 0), and the zero
+ *     vector: 1213 calls.
  *   eva_isect: isect_hit_set, plane_t, box_slabs, with isect_quotient by
  *     its contract.
  *   eva_isect_quotient: isect_quotient and held_root, the divisor in each
@@ -24,7 +26,7 @@
  *   eva_isect_triangle: triangle_solve (-DEVA_ISECT_TRIANGLE; not in make
  *     prove: its alarms are open, spec/proofs.md).
  * The boxes come from isect_boxes.h (BOX(2^k, 2^(k+1)), k = -1074 ..
- * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(2^k, 2^(k+3))),
+ * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(lo, hi)),
  * which prove.sh writes.
  */
 #include "eva.h"
@@ -67,7 +69,7 @@ static void sphere_box(real lo, real hi)
 void eva_isect_sphere(void)
 {
     sphere_roots(vec_make(0, 0, 0));
-    sphere_box(0x1p-1074, binade_top(0x1p-535));
+    sphere_box(0x1p-1074, binade_top(0x1p-538));
 #define SBOX(lo, hi) sphere_box(lo, lo == 4 ? lo : binade_top(hi));
 #include "sphere_boxes.h"
 #undef SBOX
