@@ -23,8 +23,9 @@
  *   eva_isect_quotient: isect_quotient and held_root, the divisor in each
  *     binade of either sign and 0, the dividend anywhere their precondition
  *     allows.
- *   eva_isect_triangle: triangle_solve (-DEVA_ISECT_TRIANGLE; not in make
- *     prove: its alarms are open, spec/proofs.md).
+ *   eva_isect_triangle: isect_shear_make, and triangle_solve given the
+ *     shear's ranges (-DEVA_ISECT_TRIANGLE; not in make prove: its alarms
+ *     are open, spec/proofs.md).
  * The boxes come from isect_boxes.h (BOX(2^k, 2^(k+1)), k = -1074 ..
  * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(lo, hi)),
  * which prove.sh writes.
@@ -111,11 +112,32 @@ void eva_isect_quotient(void)
 }
 
 #ifdef EVA_ISECT_TRIANGLE
+/* The ray's shear (isect_shear_make) over every direction of the box, and
+ * triangle_solve given the ranges the shear has: sx, sy in [-1, 1] (the
+ * ratios of the other components to the largest), dz nonzero of either
+ * sign, each of the six axis permutations. */
+static const int eva_isect_perm[6][3] = {{1, 2, 0}, {2, 1, 0}, {2, 0, 1}, {0, 2, 1}, {0, 1, 2}, {1, 0, 2}};
+
 void eva_isect_triangle(void)
 {
     ray r = any_ray();
-    vec3 v[3] = {any_point(), any_point(), any_point()};
-    tri_bary s;
-    eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &s);
+    isect_shear sh;
+    isect_shear_make(&r, &sh);
+    eva_isect_real = sh.sx;
+    eva_isect_real = sh.sy;
+    for (int p = 0; p < 6; p++)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            sh.kx = eva_isect_perm[p][0];
+            sh.ky = eva_isect_perm[p][1];
+            sh.kz = eva_isect_perm[p][2];
+            sh.dz = sign > 0 ? any(0x1p-1074, 4) : any(-4, -0x1p-1074);
+            sh.sx = any(-1, 1);
+            sh.sy = any(-1, 1);
+            vec3 v[3] = {any_point(), any_point(), any_point()};
+            tri_bary s = {0, {0, 0, 0}};
+            eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &sh, &s);
+            eva_isect_real = s.t;
+            eva_isect_real = s.b[0];
+        }
 }
 #endif
