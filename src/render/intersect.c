@@ -289,12 +289,6 @@ static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
     return found;
 }
 
-static int max_abs_axis(vec3 d)
-{
-    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
-    return x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
-}
-
 /*
  * Triangle: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
  * JCGT 2(1), 2013.  Translate the vertices to the ray origin, permute the
@@ -360,24 +354,50 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
-void isect_shear_make(const ray *r, isect_shear *sh)
+/* num/den from the magnitudes an = |num|, ad = |den| > 0, with the sign
+ * IEEE division gives (num's, zeros included, turned for a negative den):
+ * the same double as num/den.  Eva sees the quotient of the magnitudes
+ * the caller's comparisons bounded (an <= ad), which it loses for num/den. */
+static real shear_ratio(real num, real an, real den, real ad)
 {
-    int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    real dz = vec_component(r->dir, kz);
-    if (dz < 0.0) {
-        int s = kx;
-        kx = ky;
-        ky = s;
-    }
-    sh->kx = kx;
-    sh->ky = ky;
+    real m = copysign(an / ad, num);
+    return den < 0.0 ? -m : m;
+}
+
+/* The shear for the largest component dz on axis kz (az = |dz|); d1, d2
+ * (a1, a2 their magnitudes) are the components on axes kz + 1 and kz + 2
+ * (mod 3), swapped when dz is negative to keep the winding. */
+static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a1, real d2, real a2)
+{
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3, turn = dz < 0.0;
+    sh->kx = turn ? ky : kx;
+    sh->ky = turn ? kx : ky;
     sh->kz = kz;
     sh->dz = dz;
     sh->sx = sh->sy = 0.0;
     if (dz == 0.0)
         return;
-    sh->sx = vec_component(r->dir, kx) / dz;
-    sh->sy = vec_component(r->dir, ky) / dz;
+    real s1 = shear_ratio(d1, a1, dz, az), s2 = shear_ratio(d2, a2, dz, az);
+    sh->sx = turn ? s2 : s1;
+    sh->sy = turn ? s1 : s2;
+}
+
+/* kz: the axis of the largest magnitude, x on a tie, then y; each case
+ * its own call, so that its comparisons bound the magnitudes it divides. */
+void isect_shear_make(const ray *r, isect_shear *sh)
+{
+    vec3 d = r->dir;
+    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
+    if (x >= y) {
+        if (x >= z)
+            shear_set(sh, 0, d.x, x, d.y, y, d.z, z);
+        else
+            shear_set(sh, 2, d.z, z, d.x, x, d.y, y);
+    } else if (y >= z) {
+        shear_set(sh, 1, d.y, y, d.z, z, d.x, x);
+    } else {
+        shear_set(sh, 2, d.z, z, d.x, x, d.y, y);
+    }
 }
 
 /* A corner translated to the ray origin, permuted and sheared: (x, y) in

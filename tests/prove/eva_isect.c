@@ -112,19 +112,38 @@ void eva_isect_quotient(void)
 }
 
 #ifdef EVA_ISECT_TRIANGLE
-/* The ray's shear (isect_shear_make) over every direction of the box, and
- * triangle_solve given the ranges the shear has: sx, sy in [-1, 1] (the
- * ratios of the other components to the largest), dz nonzero of either
- * sign, each of the six axis permutations. */
+/* The ray's shear (isect_shear_make) over every direction of the box, its
+ * largest component in one box [2^k, 2^(k+3)) (shear_boxes.h: k = -1074,
+ * -1071, .., the last one cut at 4), then 4 itself, and the zero vector;
+ * and triangle_solve given the ranges the shear has: sx, sy in [-1, 1]
+ * (the ratios of the other components to the largest: Eva shows them
+ * finite, within 8 in these boxes), dz nonzero of either sign, each of the
+ * six axis permutations. */
 static const int eva_isect_perm[6][3] = {{1, 2, 0}, {2, 1, 0}, {2, 0, 1}, {0, 2, 1}, {0, 1, 2}, {1, 0, 2}};
+
+static void shear_box(real lo, real hi)
+{
+    for (int axis = 0; axis < 3; axis++)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            ray r = any_ray();
+            isect_shear sh;
+            r.dir = largest_at(axis, sign, lo, hi);
+            isect_shear_make(&r, &sh);
+            eva_isect_real = sh.sx;
+            eva_isect_real = sh.sy;
+        }
+}
 
 void eva_isect_triangle(void)
 {
     ray r = any_ray();
     isect_shear sh;
+    r.dir = vec_make(0, 0, 0);
     isect_shear_make(&r, &sh);
-    eva_isect_real = sh.sx;
-    eva_isect_real = sh.sy;
+#define TBOX(lo, hi) shear_box(lo, binade_top(hi > 4 ? 4 : hi));
+#include "shear_boxes.h"
+#undef TBOX
+    shear_box(4, 4);
     for (int p = 0; p < 6; p++)
         for (int sign = -1; sign <= 1; sign += 2) {
             sh.kx = eva_isect_perm[p][0];
