@@ -66,7 +66,7 @@ eva_run() {   # name main skip cpp files... [-- options]; skip: functions used b
     # the alarms, the assertions Eva adds where it cannot exclude an error.
     awk -F'\t' -v run="$name" -v skip=",$skip," -v total="$alarms" -v badf="$out/eva_$name.bad" '
         BEGIN { alarm_kinds = "^(is_nan|division_by_zero|mem_access|index_bound|.*overflow|float_to_int|initialization|dangling|pointer_value|separation|bool_value|shift|.*pointer)" }
-        NR > 1 && $1 ~ /^src/ && $4 != "" && index(skip, "," $4 ",") == 0 {
+        NR > 1 && $1 ~ /(^|\/)src(\/|$)/ && $4 != "" && index(skip, "," $4 ",") == 0 {
             f = $4; good = $6 ~ /^(Valid|Dead|Considered valid)/
             if ($6 !~ /^Dead/) seen[f] = 1   # a function never reached is not listed
             if ($5 ~ alarm_kinds) { al[f]++; if (good) alok[f]++; else print > badf }
