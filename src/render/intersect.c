@@ -358,6 +358,10 @@ static int tie_sign(real px, real py, real qx, real qy)
  * IEEE division gives (num's, zeros included, turned for a negative den):
  * the same double as num/den.  Eva sees the quotient of the magnitudes
  * the caller's comparisons bounded (an <= ad), which it loses for num/den. */
+/*@ requires \is_finite(num) && \is_finite(den) && an == \abs(num) && ad == \abs(den) && ad > 0;
+    assigns \nothing;
+    ensures \is_finite(\result);
+    ensures EXACT(\result == num / den); */
 static real shear_ratio(real num, real an, real den, real ad)
 {
     real m = copysign(an / ad, num);
@@ -367,6 +371,16 @@ static real shear_ratio(real num, real an, real den, real ad)
 /* The shear for the largest component dz on axis kz (az = |dz|); d1, d2
  * (a1, a2 their magnitudes) are the components on axes kz + 1 and kz + 2
  * (mod 3), swapped when dz is negative to keep the winding. */
+/*@ requires \valid(sh) && 0 <= kz <= 2;
+    requires \is_finite(dz) && \is_finite(d1) && \is_finite(d2);
+    requires az == \abs(dz) && a1 == \abs(d1) && a2 == \abs(d2);
+    requires EXACT(a1 <= az && a2 <= az);   // dz is the largest (doubles too: comparisons)
+    assigns *sh;
+    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && sh->kz == kz && sh->dz == dz;
+    ensures EXACT(dz < 0 ? sh->kx == (kz + 2) % 3 && sh->ky == (kz + 1) % 3
+                         : sh->kx == (kz + 1) % 3 && sh->ky == (kz + 2) % 3);
+    ensures EXACT(sh->sx * dz == (dz < 0 ? d2 : d1) && sh->sy * dz == (dz < 0 ? d1 : d2));
+    ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
 static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a1, real d2, real a2)
 {
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3, turn = dz < 0.0;
@@ -384,6 +398,21 @@ static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a
 
 /* kz: the axis of the largest magnitude, x on a tie, then y; each case
  * its own call, so that its comparisons bound the magnitudes it divides. */
+/*@ logic mreal vcomp(vec3 a, integer k) = k == 0 ? a.x : k == 1 ? a.y : a.z; */
+/*@ requires \valid_read(r) && \valid(sh) && \separated(r, sh);
+    requires vfinite(r->dir);
+    assigns *sh;
+    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && 0 <= sh->kz <= 2;
+    ensures \is_finite(sh->sx) && \is_finite(sh->sy);
+    // kz the largest magnitude's axis, (kx, ky, kz) a rotation of (0, 1, 2) for dz >= 0 and
+    // turned (the winding kept) for dz < 0 (doubles too: a choice by comparisons)
+    ensures EXACT(sh->dz == vcomp(r->dir, sh->kz) && \abs(sh->dz) == vmaxabs(r->dir) &&
+                  (sh->dz < 0 ? sh->kx == (sh->kz + 2) % 3 && sh->ky == (sh->kz + 1) % 3
+                              : sh->kx == (sh->kz + 1) % 3 && sh->ky == (sh->kz + 2) % 3));
+    // the shear: d_kx - sx dz = 0, d_ky - sy dz = 0 (the ray along +z), |sx|, |sy| <= 1
+    // (triangle_solve's Eva driver takes that box)
+    ensures EXACT(sh->sx * sh->dz == vcomp(r->dir, sh->kx) && sh->sy * sh->dz == vcomp(r->dir, sh->ky));
+    ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
 void isect_shear_make(const ray *r, isect_shear *sh)
 {
     vec3 d = r->dir;
