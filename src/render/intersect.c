@@ -358,7 +358,8 @@ static int tie_sign(real px, real py, real qx, real qy)
  * IEEE division gives (num's, zeros included, turned for a negative den):
  * the same double as num/den.  Eva sees the quotient of the magnitudes
  * the caller's comparisons bounded (an <= ad), which it loses for num/den. */
-/*@ requires \is_finite(num) && \is_finite(den) && an == \abs(num) && ad == \abs(den) && ad > 0;
+/*@ requires \is_finite(num) && \is_finite(den) && ad > 0;
+    requires EXACT(an == \abs(num) && ad == \abs(den));   // doubles too: fabs is exact
     assigns \nothing;
     ensures \is_finite(\result);
     ensures EXACT(\result == num / den); */
@@ -373,8 +374,9 @@ static real shear_ratio(real num, real an, real den, real ad)
  * (mod 3), swapped when dz is negative to keep the winding. */
 /*@ requires \valid(sh) && 0 <= kz <= 2;
     requires \is_finite(dz) && \is_finite(d1) && \is_finite(d2);
-    requires az == \abs(dz) && a1 == \abs(d1) && a2 == \abs(d2);
-    requires EXACT(a1 <= az && a2 <= az);   // dz is the largest (doubles too: comparisons)
+    // doubles too: fabs is exact, and the caller compared them
+    requires EXACT(az == \abs(dz) && a1 == \abs(d1) && a2 == \abs(d2));
+    requires EXACT(a1 <= az && a2 <= az);   // dz is the largest
     assigns *sh;
     ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && sh->kz == kz && sh->dz == dz;
     ensures EXACT(dz < 0 ? sh->kx == (kz + 2) % 3 && sh->ky == (kz + 1) % 3
