@@ -378,7 +378,7 @@ static real shear_ratio(real num, real an, real den, real ad)
     requires EXACT(az == \abs(dz) && a1 == \abs(d1) && a2 == \abs(d2));
     requires EXACT(a1 <= az && a2 <= az);   // dz is the largest
     assigns *sh;
-    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && sh->kz == kz && sh->dz == dz;
+    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && EXACT(sh->kz == kz && sh->dz == dz);   // copies
     ensures EXACT(dz < 0 ? sh->kx == (kz + 2) % 3 && sh->ky == (kz + 1) % 3
                          : sh->kx == (kz + 1) % 3 && sh->ky == (kz + 2) % 3);
     ensures EXACT(sh->sx * dz == (dz < 0 ? d2 : d1) && sh->sy * dz == (dz < 0 ? d1 : d2));
