@@ -458,6 +458,79 @@ START_TEST(test_bvh_identical_prims_tie_to_lowest_index)
 }
 END_TEST
 
+START_TEST(test_bvh_tie_window_end_order_free)
+{
+    /* [BVH-TIE-ORDER-1] The window's far end belongs to it: a hit at exactly
+     * t_near + 2^-46 (|t_near| + |origin|) is a candidate whatever was
+     * tested first.  Index 1, a plane (tested before the tree), meets the
+     * ray at t = 1; index 0, a box in the tree, at t = 1 + 2^-46, the
+     * window's end (origin 0): brute force gives index 0.  A walk that
+     * shrank tmax to the window's end would reject t < tmax for the box. */
+    scene_prim prims[2];
+    real end = 1.0 + 0x1p-46;
+    prims[0] = prim_blank(PRIM_BOX);
+    prims[0].u.box.lo = vec_make(end, -1, -1);
+    prims[0].u.box.hi = vec_make(end + 1, 1, 1);
+    prims[1] = prim_blank(PRIM_PLANE);
+    prims[1].u.plane.point = vec_make(1, 0, 0);
+    prims[1].u.plane.normal = vec_make(-1, 0, 0);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, 2, NULL));
+    ray r = {{0, 0, 0}, {1, 0, 0}, 0.0, HUGE_VAL}, rb = r;
+    hit h, hb;
+    ck_assert(brute_nearest(prims, 2, &rb, &hb));
+    ck_assert_int_eq(hb.prim, 0);
+    ck_assert(bvh_intersect(&b, prims, &r, &h));
+    ck_assert_int_eq(h.prim, 0);
+    ck_assert(h.t == end);
+    /* The caller's tmax still bounds the window: with tmax = end the box's
+     * hit is outside (tmin, tmax), so the plane wins. */
+    ray s = {{0, 0, 0}, {1, 0, 0}, 0.0, end};
+    ck_assert(bvh_intersect(&b, prims, &s, &h));
+    ck_assert_int_eq(h.prim, 1);
+    ck_assert(h.t == 1.0);
+    bvh_free(&b);
+}
+END_TEST
+
+START_TEST(test_bvh_two_parts_split_by_hand)
+{
+    /* The SAH of a node of two parts, worked by hand ([BVH-BUILD-PAIR-1]):
+     * splitting costs C_TRAV + (A_0 + A_1) / A (half areas, cost 1 each),
+     * a leaf costs 2.  Two unit spheres 0.1 apart: 1 + (12 + 12) / 12.4 =
+     * 2.94, a leaf, items in the given order.  Five apart along x, or
+     * along y only: 1 + 24 / 32 = 1.75, split on the first axis along
+     * which the centroids differ, the lower centroid's part first. */
+    static const double centres[3][2][3] = {
+        {{0.1, 0, 0}, {0, 0, 0}}, {{5, 0, 0}, {0, 0, 0}}, {{0, 5, 0}, {0, 0, 0}}};
+    for (int c = 0; c < 3; c++) {
+        scene_prim prims[2];
+        for (int i = 0; i < 2; i++)
+            prims[i] = prim_sphere(vec_make(centres[c][i][0], centres[c][i][1], centres[c][i][2]), 1);
+        bvh b;
+        ck_assert(bvh_build(&b, prims, 2, NULL));
+        ck_assert_int_eq(b.item_count, 2);
+        if (c == 0) {
+            ck_assert_int_eq(b.node_count, 1);
+            ck_assert_int_eq(b.nodes[0].count, 2);
+            ck_assert_int_eq(b.items[0].prim, 0);
+        } else {
+            ck_assert_int_eq(b.node_count, 3);
+            ck_assert_int_eq(b.nodes[0].count, 0);
+            ck_assert_int_eq(b.nodes[1].count, 1);
+            ck_assert_int_eq(b.nodes[2].count, 1);
+            ck_assert_int_eq(b.items[b.nodes[1].first].prim, 1);
+            ck_assert_int_eq(b.items[b.nodes[2].first].prim, 0);
+            /* each child's box is its sphere's, padded by 2^-40 of its size */
+            ck_assert_double_le(b.nodes[1].lo.x, -1.0);
+            ck_assert_double_ge(b.nodes[1].lo.x, -1.0 - 0x1p-38);
+            ck_assert_double_ge(b.nodes[2].hi.x + b.nodes[2].hi.y, 6.0);
+        }
+        bvh_free(&b);
+    }
+}
+END_TEST
+
 START_TEST(test_bvh_deterministic_and_well_formed)
 {
     int n = 3000;
@@ -615,6 +688,8 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_empty_scene);
     tcase_add_test(tc, test_bvh_one_prim_and_planes_only);
     tcase_add_test(tc, test_bvh_identical_prims_tie_to_lowest_index);
+    tcase_add_test(tc, test_bvh_tie_window_end_order_free);
+    tcase_add_test(tc, test_bvh_two_parts_split_by_hand);
     tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);

@@ -85,9 +85,11 @@ static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, rea
  * 64 ulps of the larger of the distance and the origin's magnitude, the
  * size of t's own rounding.  The candidates are pruned as the nearest t
  * falls, so the winner does not depend on the order of the tests; rr.tmax
- * stays at the window's far end so that no candidate is culled.  When more
- * than TIE_MAX surfaces tie, a second pass over the now known window finds
- * the lowest index among all of them.
+ * stays one ulp past the window's far end (a primitive accepts t < tmax,
+ * and the end belongs to the window), never past the caller's tmax, so
+ * that no candidate is culled or rejected whatever was tested before it
+ * ([BVH-TIE-ORDER-1]).  When more than TIE_MAX surfaces tie, a second pass
+ * over the now known window finds the lowest index among all of them.
  */
 #define TIE_REL 0x1p-46
 enum { TIE_MAX = 8 };
@@ -105,6 +107,7 @@ typedef struct nearest {
     int fixed;          /* second pass: rr.tmax is the final window's end */
     real t_near;        /* the least t found; in the second pass the window's end */
     real slack;         /* TIE_REL * |origin| */
+    real tmax0;         /* the caller's tmax */
     bvh_stats *stats;
     const isect_shear *sh; /* the ray's triangle shear, NULL without triangles */
 } nearest;
@@ -113,6 +116,13 @@ static real tie_limit(const nearest *ns)
 {
     real limit = ns->t_near + (TIE_REL * fabs(ns->t_near) + ns->slack);
     return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
+}
+
+/* The tmax that accepts every t <= limit the caller's ray accepts. */
+static real window_tmax(const nearest *ns, real limit)
+{
+    real past = nextafter(limit, (real)INFINITY);
+    return past < ns->tmax0 ? past : ns->tmax0;
 }
 
 /* Orders hits by primitive, then part: the tie-break of the window. */
@@ -135,7 +145,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
             ns->cand_tmax[0] = tmax;
         }
         ns->count = 1;
-        ns->rr.tmax = ns->t_near;   /* the window's end, set by the caller */
+        ns->rr.tmax = window_tmax(ns, ns->t_near);   /* t_near: the window's end, set by the caller */
         return;
     }
     if (ns->count == 0 || h->t < ns->t_near)
@@ -157,7 +167,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
             ns->overflow = 1;
     }
     ns->count = kept;
-    ns->rr.tmax = limit;
+    ns->rr.tmax = window_tmax(ns, limit);
 }
 
 static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
@@ -288,7 +298,7 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     nearest ns;
     ns.rr = *r;
     ns.count = ns.overflow = ns.fixed = 0;
-    ns.t_near = r->tmax;
+    ns.t_near = ns.tmax0 = r->tmax;
     ns.slack = TIE_REL * fmax(fabs(r->origin.x), fmax(fabs(r->origin.y), fabs(r->origin.z)));
     ns.stats = stats;
     isect_shear sh;
@@ -296,7 +306,8 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     nearest_pass(b, prims, &ns);
     if (ns.overflow) {
         ns.rr = *r;
-        ns.rr.tmax = ns.t_near = tie_limit(&ns);
+        ns.t_near = tie_limit(&ns);
+        ns.rr.tmax = window_tmax(&ns, ns.t_near);
         ns.count = 0;
         ns.fixed = 1;
         nearest_pass(b, prims, &ns);

@@ -45,8 +45,8 @@ typedef struct bvh_ref {
 } bvh_ref;
 
 /* Item i's hot record (intersect.h): its code, and where its reals start
- * in bvh.hot_reals.  The records lie in the items' order, so a leaf's are
- * contiguous, each aligned to 32 bytes (a sphere's in one cache line). */
+ * in bvh.hot_reals.  The reals lie in the parts' order (the primitives'),
+ * each record aligned to 32 bytes (a sphere's in one cache line). */
 typedef struct bvh_hot {
     int code;          /* ISECT_HOT_NONE: test through the scene_prim */
     int at;

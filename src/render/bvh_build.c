@@ -16,7 +16,7 @@
  *
  * Memory: a part costs 64 bytes while building (its padded box,
  * reference, cost and hot record's index; the centroid is recomputed),
- * plus its hot record in the parts' order, the median splits' sort buffers
+ * plus its hot record in the parts' order (kept by the tree), the median splits' sort buffers
  * are made only when one happens, and the node array grows as needed.
  */
 #include <limits.h>
@@ -36,6 +36,8 @@
 /* Primitive boxes are widened by this fraction of their coordinates' size,
  * so a hit computed a few ulps outside its true box is still inside. */
 #define BOUNDS_PAD 0x1p-40
+/* The hot records' alignment: a sphere's 4 reals in one cache line. */
+#define HOT_ALIGN 32
 
 /* A part during the build: its padded box, reference and intersection
  * cost (kept here: reading it from the primitive would be a cache miss per
@@ -74,11 +76,12 @@ typedef struct build_ctx {
     sort_key *keys;
     size_t item_bytes;    /* allocated at items */
     /* The hot records made in the parts' order (classify reads each
-     * primitive once, in order), copied into the items' final order at the
-     * end: reading the primitives in the tree's order was a cache miss or
-     * two per part. */
+     * primitive once, in order: reading the primitives in the tree's order
+     * was a cache miss or two per part); their reals stay there, in
+     * b->hot_block, and only the codes and offsets are put into the items'
+     * final order at the end. */
     bvh_hot *hot;
-    real *hot_reals;
+    real *hot_reals;   /* inside b->hot_block */
     size_t hot_count, hot_reals_size;  /* allocated */
     size_t hot_used;                   /* reals used at hot_reals */
     bin bins[3][BINS];    /* the binning of the node being split */
@@ -224,7 +227,13 @@ static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 }
 
 /* The best plane on one axis: its cost (area-weighted counts, not yet
- * divided by the node's area) and the number of bins on its left. */
+ * divided by the node's area) and the number of bins on its left.
+ * An empty bin changes neither side's box, count nor cost (its box is the
+ * empty one, its sums 0), so the plane after it costs exactly what the
+ * plane before it did, which was tried first and wins the tie: only the
+ * planes after a non-empty bin are tried, and the right side's sums are
+ * carried over empty bins instead of made again (small nodes have nb = n
+ * bins, most of them empty). */
 static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
 {
     const bin *bins = ctx->bins[axis];
@@ -232,6 +241,12 @@ static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
     int right_count[BINS], count = 0;
     vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
     for (int k = nb - 1; k > 0; k--) {
+        if (bins[k].count == 0 && k < nb - 1) {
+            right_area[k] = right_area[k + 1];
+            right_count[k] = right_count[k + 1];
+            right_cost[k] = right_cost[k + 1];
+            continue;
+        }
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
@@ -245,11 +260,13 @@ static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
     count = 0;
     sum = 0.0;
     for (int k = 0; k < nb - 1; k++) {
+        if (bins[k].count == 0)
+            continue;
         lo = vmin(lo, bins[k].lo);
         hi = vmax(hi, bins[k].hi);
         count += bins[k].count;
         sum += bins[k].cost;
-        if (count == 0 || right_count[k + 1] == 0)
+        if (right_count[k + 1] == 0)
             continue;
         real cost = half_area(lo, hi) * sum + right_area[k + 1] * right_cost[k + 1];
         if (cost < best) {
@@ -345,6 +362,47 @@ static int widest_axis(vec3 lo, vec3 hi)
     return e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
 }
 
+/* choose_split for two parts, the same result without the bins (half the
+ * inner nodes of a big tree have two parts).  With n = 2 each axis the
+ * binning takes has two bins, the part of the lower centroid in the first:
+ * every such axis offers the same single plane at the same cost
+ *   half_area(lower) cost(lower) + half_area(upper) cost(upper)
+ * (the sum of the same two products), so the first such axis wins; the
+ * partition then puts the lower part first, and each child's bounds are
+ * its part's box and centroid. */
+static int split_pair(build_ctx *ctx, int begin, const range *r, range kids[2])
+{
+    build_item *it = &ctx->items[begin];
+    int axis = -1;
+    for (int a = 0; a < 3 && axis < 0; a++) {
+        real extent = vec_component(r->chi, a) - vec_component(r->clo, a), scale = 2 / extent;
+        if (extent > 0.0 && isfinite(scale))
+            axis = a;
+    }
+    if (axis < 0)
+        return -1;
+    vec3 c0 = centroid(&it[0]), c1 = centroid(&it[1]);
+    int swap = vec_component(c0, axis) > vec_component(c1, axis);
+    const build_item *low = &it[swap], *high = &it[!swap];
+    real best = half_area(low->lo, low->hi) * (0.0 + low->cost) + half_area(high->lo, high->hi) * (0.0 + high->cost);
+    real leaf_cost = 0.0 + it[0].cost + it[1].cost, area = half_area(r->lo, r->hi);
+    real split_cost = area > 0.0 ? C_TRAV + best / area : C_TRAV;
+    if (!(split_cost < leaf_cost))
+        return -1;
+    kids[0].lo = low->lo;
+    kids[0].hi = low->hi;
+    kids[0].clo = kids[0].chi = swap ? c1 : c0;
+    kids[1].lo = high->lo;
+    kids[1].hi = high->hi;
+    kids[1].clo = kids[1].chi = swap ? c0 : c1;
+    if (swap) {
+        build_item s = it[0];
+        it[0] = it[1];
+        it[1] = s;
+    }
+    return begin + 1;
+}
+
 /* Where to split items[begin..end) of bounds *r, or -1 for a leaf.  The
  * children's bounds go to kids[0], kids[1]. */
 static int choose_split(build_ctx *ctx, int begin, int end, int depth, const range *r, range kids[2])
@@ -353,6 +411,8 @@ static int choose_split(build_ctx *ctx, int begin, int end, int depth, const ran
     real best = INFINITY, leaf_cost = n;
     if (n <= 1)
         return -1;
+    if (n == 2 && depth < BVH_MEDIAN_DEPTH && MAX_LEAF >= 2)
+        return split_pair(ctx, begin, r, kids);
     binning bn = binning_of(r, n);
     if (depth < BVH_MEDIAN_DEPTH && (bn.scale[0] != 0 || bn.scale[1] != 0 || bn.scale[2] != 0)) {
         leaf_cost = fill_bins(ctx, begin, end, &bn);
@@ -511,38 +571,19 @@ static void keep_references(build_ctx *ctx)
 }
 
 /* The hot records of b->items (bvh.h), in their order; 0 when out of
- * memory. */
+ * memory.  Their reals stay where classify made them, in the parts' order
+ * (b->hot_block from the start): only the short code and offset move. */
 static int keep_hot(build_ctx *ctx)
 {
-    enum { ALIGN = 32 };
     bvh *b = ctx->b;
-    size_t at = 0;
     b->hot = mem_alloc(&b->mem, (size_t)ctx->count * sizeof *b->hot);
     if (!b->hot)
         return 0;
-    if (ctx->hot_used > 0) {
-        b->hot_block_bytes = ctx->hot_used * sizeof(real) + ALIGN;
-        b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
-        if (!b->hot_block) {
-            /* b->item_count, which bvh_free sizes b->hot by, is not set yet */
-            mem_free(&b->mem, b->hot, (size_t)ctx->count * sizeof *b->hot);
-            b->hot = NULL;
-            b->hot_block_bytes = 0;
-            return 0;
-        }
-        b->hot_reals = (real *)(void *)((char *)b->hot_block + (ALIGN - (uintptr_t)b->hot_block % ALIGN) % ALIGN);
-    }
+    b->hot_reals = ctx->hot_used > 0 ? ctx->hot_reals : NULL;
     for (int i = 0; i < ctx->count; i++) {
         int k = ctx->items[i].hot;
         b->hot[i].code = k < 0 ? ISECT_HOT_NONE : ctx->hot[k].code;
-        b->hot[i].at = (int)at;
-        if (k < 0)
-            continue;
-        int n = ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_SPHERE ? 4
-                : ISECT_HOT_KIND(ctx->hot[k].code) == ISECT_HOT_BOX  ? 8
-                                                                      : 12;
-        memcpy(b->hot_reals + at, ctx->hot_reals + ctx->hot[k].at, (size_t)n * sizeof(real));
-        at += (size_t)n;
+        b->hot[i].at = k < 0 ? 0 : ctx->hot[k].at;
     }
     return 1;
 }
@@ -618,7 +659,14 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
         ctx->hot_count = (size_t)parts;
         ctx->hot_reals_size = reals;
         ctx->hot = mem_alloc(&b->mem, ctx->hot_count * sizeof *ctx->hot);
-        ctx->hot_reals = mem_alloc(&b->mem, reals * sizeof *ctx->hot_reals);
+        /* The tree's own block (bvh_free releases it), the records aligned
+         * to 32 bytes: each is 4, 8 or 12 reals. */
+        b->hot_block_bytes = reals * sizeof(real) + HOT_ALIGN;
+        b->hot_block = mem_alloc(&b->mem, b->hot_block_bytes);
+        b->hot_block_bytes = b->hot_block ? b->hot_block_bytes : 0;
+        if (b->hot_block)
+            ctx->hot_reals = (real *)(void *)((char *)b->hot_block +
+                                              (HOT_ALIGN - (uintptr_t)b->hot_block % HOT_ALIGN) % HOT_ALIGN);
     }
     if (ctx->items && b->unbounded && (reals == 0 || reals > (size_t)INT_MAX || (ctx->hot && ctx->hot_reals))) {
         ctx->count = classify(ctx, prims, count, ctx->items);
@@ -626,7 +674,6 @@ int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, c
     }
     mem_free(&b->mem, ctx->items, ctx->item_bytes);
     mem_free(&b->mem, ctx->hot, ctx->hot_count * sizeof *ctx->hot);
-    mem_free(&b->mem, ctx->hot_reals, ctx->hot_reals_size * sizeof *ctx->hot_reals);
     free_sort_buffers(ctx);
     mem_free(&b->mem, ctx, sizeof *ctx);
     if (!ok || cancel_stopped(cancel))
