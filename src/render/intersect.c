@@ -289,12 +289,6 @@ static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
     return found;
 }
 
-static int max_abs_axis(vec3 d)
-{
-    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
-    return x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
-}
-
 /*
  * Triangle: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection",
  * JCGT 2(1), 2013.  Translate the vertices to the ray origin, permute the
@@ -360,24 +354,81 @@ static int tie_sign(real px, real py, real qx, real qy)
     return (px > qx) - (px < qx);
 }
 
-void isect_shear_make(const ray *r, isect_shear *sh)
+/* num/den from the magnitudes an = |num|, ad = |den| > 0, with the sign
+ * IEEE division gives (num's, zeros included, turned for a negative den):
+ * the same double as num/den.  Eva sees the quotient of the magnitudes
+ * the caller's comparisons bounded (an <= ad), which it loses for num/den. */
+/*@ requires \is_finite(num) && \is_finite(den) && ad > 0;
+    requires EXACT(an == \abs(num) && ad == \abs(den));   // doubles too: fabs is exact
+    assigns \nothing;
+    ensures \is_finite(\result);
+    ensures EXACT(\result == num / den); */
+static real shear_ratio(real num, real an, real den, real ad)
 {
-    int kz = max_abs_axis(r->dir), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    real dz = vec_component(r->dir, kz);
-    if (dz < 0.0) {
-        int s = kx;
-        kx = ky;
-        ky = s;
-    }
-    sh->kx = kx;
-    sh->ky = ky;
+    real m = copysign(an / ad, num);
+    return den < 0.0 ? -m : m;
+}
+
+/* The shear for the largest component dz on axis kz (az = |dz|); d1, d2
+ * (a1, a2 their magnitudes) are the components on axes kz + 1 and kz + 2
+ * (mod 3), swapped when dz is negative to keep the winding. */
+/*@ requires \valid(sh) && 0 <= kz <= 2;
+    requires \is_finite(dz) && \is_finite(d1) && \is_finite(d2);
+    // doubles too: fabs is exact, and the caller compared them
+    requires EXACT(az == \abs(dz) && a1 == \abs(d1) && a2 == \abs(d2));
+    requires EXACT(a1 <= az && a2 <= az);   // dz is the largest
+    assigns *sh;
+    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && EXACT(sh->kz == kz && sh->dz == dz);   // copies
+    ensures EXACT(dz < 0 ? sh->kx == (kz + 2) % 3 && sh->ky == (kz + 1) % 3
+                         : sh->kx == (kz + 1) % 3 && sh->ky == (kz + 2) % 3);
+    ensures EXACT(sh->sx * dz == (dz < 0 ? d2 : d1) && sh->sy * dz == (dz < 0 ? d1 : d2));
+    ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
+static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a1, real d2, real a2)
+{
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3, turn = dz < 0.0;
+    sh->kx = turn ? ky : kx;
+    sh->ky = turn ? kx : ky;
     sh->kz = kz;
     sh->dz = dz;
     sh->sx = sh->sy = 0.0;
     if (dz == 0.0)
         return;
-    sh->sx = vec_component(r->dir, kx) / dz;
-    sh->sy = vec_component(r->dir, ky) / dz;
+    real s1 = shear_ratio(d1, a1, dz, az), s2 = shear_ratio(d2, a2, dz, az);
+    sh->sx = turn ? s2 : s1;
+    sh->sy = turn ? s1 : s2;
+}
+
+/* kz: the axis of the largest magnitude, x on a tie, then y; each case
+ * its own call, so that its comparisons bound the magnitudes it divides. */
+/*@ logic mreal vcomp(vec3 a, integer k) = k == 0 ? a.x : k == 1 ? a.y : a.z; */
+/*@ requires \valid_read(r) && \valid(sh) && \separated(r, sh);
+    requires vfinite(r->dir);
+    assigns *sh;
+    ensures 0 <= sh->kx <= 2 && 0 <= sh->ky <= 2 && 0 <= sh->kz <= 2;
+    ensures \is_finite(sh->sx) && \is_finite(sh->sy);
+    // kz the largest magnitude's axis, (kx, ky, kz) a rotation of (0, 1, 2) for dz >= 0 and
+    // turned (the winding kept) for dz < 0 (doubles too: a choice by comparisons)
+    ensures EXACT(sh->dz == vcomp(r->dir, sh->kz) && \abs(sh->dz) == vmaxabs(r->dir) &&
+                  (sh->dz < 0 ? sh->kx == (sh->kz + 2) % 3 && sh->ky == (sh->kz + 1) % 3
+                              : sh->kx == (sh->kz + 1) % 3 && sh->ky == (sh->kz + 2) % 3));
+    // the shear: d_kx - sx dz = 0, d_ky - sy dz = 0 (the ray along +z), |sx|, |sy| <= 1
+    // (triangle_solve's Eva driver takes that box)
+    ensures EXACT(sh->sx * sh->dz == vcomp(r->dir, sh->kx) && sh->sy * sh->dz == vcomp(r->dir, sh->ky));
+    ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
+void isect_shear_make(const ray *r, isect_shear *sh)
+{
+    vec3 d = r->dir;
+    real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
+    if (x >= y) {
+        if (x >= z)
+            shear_set(sh, 0, d.x, x, d.y, y, d.z, z);
+        else
+            shear_set(sh, 2, d.z, z, d.x, x, d.y, y);
+    } else if (y >= z) {
+        shear_set(sh, 1, d.y, y, d.z, z, d.x, x);
+    } else {
+        shear_set(sh, 2, d.z, z, d.x, x, d.y, y);
+    }
 }
 
 /* A corner translated to the ray origin, permuted and sheared: (x, y) in

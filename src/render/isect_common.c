@@ -41,6 +41,12 @@ int isect_quotient(real num, real den, real *q)
     real an = fabs(num), ad = fabs(den);
     if (ad >= 0x1p-3 || an < ad * 0x1p1020) {
         real m = an / ad;
+        /* Below 2^-3 the test bounds m by 2^1020 (an exact product, a
+         * monotone rounding), so this never changes m; it is written out
+         * for Eva, which keeps no relation between an and ad and would
+         * bound m only by 2^1020 times the spread of ad in a box. */
+        if (ad < 0x1p-3 && m > 0x1p1020)
+            m = 0x1p1020;
         *q = (num < 0) != (den < 0) ? -m : m;
         return 1;
     }
@@ -52,7 +58,8 @@ int isect_quotient(real num, real den, real *q)
  * it (the half chord over a tiny |d|). */
 /*@ requires \is_finite(num) && \is_finite(den) && DOUBLES(\abs(num) <= 0x1p1017);
     assigns \nothing;
-    ensures \is_finite(\result) && DOUBLES(\abs(\result) <= 0x1p1021);
+    // the bound as two comparisons: Eva narrows a caller's value by them, not by \abs
+    ensures \is_finite(\result) && DOUBLES(-0x1p1021 <= \result <= 0x1p1021);
     ensures EXACT(\abs(num) < \abs(den) * 0x1p1020 ==> \result == num / den);
     ensures EXACT(\abs(num) >= \abs(den) * 0x1p1020 ==> \abs(\result) >= 0x1p1020); */
 static real held_root(real num, real den)
@@ -64,7 +71,10 @@ static real held_root(real num, real den)
 
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
 {
-    real a = vec_dot(d, d);
+    /* vec_length2, not vec_dot(d, d): the same roundings, but Eva sees
+     * squares, so a keeps the largest component's square as its lower
+     * bound (vec_dot's two copies of d give products of either sign). */
+    real a = vec_length2(d);
     if (!(a > 0.0))
         return 0;
     real b = vec_dot(f, d), foot;
@@ -75,7 +85,7 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     /* A quick miss without the square root: with R^2 normal, |l|^2 > R^2
      * (1 + 4 eps) (each side rounded) gives sqrt(|l|^2) > R (1 + 2u) even
      * after its rounding, so the test below would fail too. */
-    real rr = radius * radius, l2 = vec_dot(l, l);
+    real rr = radius * radius, l2 = vec_length2(l);
     if (rr >= REAL_MIN && l2 > rr * (1.0 + 4.0 * REAL_EPSILON))
         return 0;
     real ll = vec_length_fast(l);

@@ -11,20 +11,23 @@
  *     that each box keeps the range of the foot -b/a), held_root and the
  *     vec.h lengths by their contracts.  It divides b = f.d by a = d.d, whose ratio to |d|
  *     an analysis of intervals loses when |d| ranges from 2^-1074 to 4; so
- *     d is split as in eva_vec.c, its largest component in one box
- *     [2^k, 2^(k+3)) (k = -535, -532, .., then 4 itself: a factor 8 keeps
- *     l = f - (b/a) d within 2^511, its square finite), one box for every
- *     smaller d (where a is 0 or below DBL_MIN and the foot past 2^1020,
- *     or l within 2^501), and the zero vector.
+ *     d is split as in eva_vec.c, its largest component in one binade
+ *     [2^k, 2^(k+1)) for k = -538 .. -509 (there the foot's test bounds
+ *     it, by 2^1020 times the spread of a in the box), then in one box
+ *     [2^k, 2^(k+3)) (k = -508, -505, .., -1, then 4 itself: a factor 8
+ *     keeps l = f - (b/a) d within 2^511, its square finite), one box for
+ *     every smaller d (each square rounds to 0, so a = 0), and the zero
+ *     vector: 1213 calls.
  *   eva_isect: isect_hit_set, plane_t, box_slabs, with isect_quotient by
  *     its contract.
  *   eva_isect_quotient: isect_quotient and held_root, the divisor in each
  *     binade of either sign and 0, the dividend anywhere their precondition
  *     allows.
- *   eva_isect_triangle: triangle_solve (-DEVA_ISECT_TRIANGLE; not in make
- *     prove: its alarms are open, spec/proofs.md).
+ *   eva_isect_triangle: isect_shear_make, and triangle_solve given the
+ *     shear's ranges (-DEVA_ISECT_TRIANGLE; not in make prove: its alarms
+ *     are open, spec/proofs.md).
  * The boxes come from isect_boxes.h (BOX(2^k, 2^(k+1)), k = -1074 ..
- * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(2^k, 2^(k+3))),
+ * 1022, then BOX(2^1023, DBL_MAX)) and sphere_boxes.h (SBOX(lo, hi)),
  * which prove.sh writes.
  */
 #include "eva.h"
@@ -67,7 +70,7 @@ static void sphere_box(real lo, real hi)
 void eva_isect_sphere(void)
 {
     sphere_roots(vec_make(0, 0, 0));
-    sphere_box(0x1p-1074, binade_top(0x1p-535));
+    sphere_box(0x1p-1074, binade_top(0x1p-538));
 #define SBOX(lo, hi) sphere_box(lo, lo == 4 ? lo : binade_top(hi));
 #include "sphere_boxes.h"
 #undef SBOX
@@ -109,11 +112,51 @@ void eva_isect_quotient(void)
 }
 
 #ifdef EVA_ISECT_TRIANGLE
+/* The ray's shear (isect_shear_make) over every direction of the box, its
+ * largest component in one box [2^k, 2^(k+3)) (shear_boxes.h: k = -1074,
+ * -1071, .., the last one cut at 4), then 4 itself, and the zero vector;
+ * and triangle_solve given the ranges the shear has: sx, sy in [-1, 1]
+ * (the ratios of the other components to the largest: Eva shows them
+ * finite, within 8 in these boxes), dz nonzero of either sign, each of the
+ * six axis permutations. */
+static const int eva_isect_perm[6][3] = {{1, 2, 0}, {2, 1, 0}, {2, 0, 1}, {0, 2, 1}, {0, 1, 2}, {1, 0, 2}};
+
+static void shear_box(real lo, real hi)
+{
+    for (int axis = 0; axis < 3; axis++)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            ray r = any_ray();
+            isect_shear sh;
+            r.dir = largest_at(axis, sign, lo, hi);
+            isect_shear_make(&r, &sh);
+            eva_isect_real = sh.sx;
+            eva_isect_real = sh.sy;
+        }
+}
+
 void eva_isect_triangle(void)
 {
     ray r = any_ray();
-    vec3 v[3] = {any_point(), any_point(), any_point()};
-    tri_bary s;
-    eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &s);
+    isect_shear sh;
+    r.dir = vec_make(0, 0, 0);
+    isect_shear_make(&r, &sh);
+#define TBOX(lo, hi) shear_box(lo, binade_top(hi > 4 ? 4 : hi));
+#include "shear_boxes.h"
+#undef TBOX
+    shear_box(4, 4);
+    for (int p = 0; p < 6; p++)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            sh.kx = eva_isect_perm[p][0];
+            sh.ky = eva_isect_perm[p][1];
+            sh.kz = eva_isect_perm[p][2];
+            sh.dz = sign > 0 ? any(0x1p-1074, 4) : any(-4, -0x1p-1074);
+            sh.sx = any(-1, 1);
+            sh.sy = any(-1, 1);
+            vec3 v[3] = {any_point(), any_point(), any_point()};
+            tri_bary s = {0, {0, 0, 0}};
+            eva_isect_int = triangle_solve(v, Frama_C_int_interval(0, 7), &r, &sh, &s);
+            eva_isect_real = s.t;
+            eva_isect_real = s.b[0];
+        }
 }
 #endif

@@ -7,9 +7,9 @@
 # alarms and unproved clauses; exits 1 on any alarm, unproved clause or goal.
 #
 #   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-sphere|isect-tri|gappa]
-#   (all but isect-sphere and isect-tri when no argument; isect: WP on the
-#   hit tests alone, isect-eva: Eva on them; isect-sphere, isect-tri: Eva on
-#   isect_sphere_roots, triangle_solve, whose alarms are open)
+#   (all but isect-tri when no argument; isect: WP on the hit tests alone,
+#   isect-eva: Eva on them; isect-sphere: Eva on isect_sphere_roots alone;
+#   isect-tri: Eva on triangle_solve, whose alarms are open)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
@@ -37,7 +37,7 @@ fi
 fc() { frama-c -cpp-extra-args="-I$src -I$out -Itests/prove -DNDEBUG $1" "${@:2}"; }
 status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
-ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs
+ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make
 
 # Eva: one driver a run.  An alarm is an assertion Eva adds; a clause is one
 # of the contracts' properties in src/ that the run analyses (its status is
@@ -66,7 +66,7 @@ eva_run() {   # name main skip cpp files... [-- options]; skip: functions used b
     # the alarms, the assertions Eva adds where it cannot exclude an error.
     awk -F'\t' -v run="$name" -v skip=",$skip," -v total="$alarms" -v badf="$out/eva_$name.bad" '
         BEGIN { alarm_kinds = "^(is_nan|division_by_zero|mem_access|index_bound|.*overflow|float_to_int|initialization|dangling|pointer_value|separation|bool_value|shift|.*pointer)" }
-        NR > 1 && $1 ~ /^src/ && $4 != "" && index(skip, "," $4 ",") == 0 {
+        NR > 1 && $1 ~ /(^|\/)src(\/|$)/ && $4 != "" && index(skip, "," $4 ",") == 0 {
             f = $4; good = $6 ~ /^(Valid|Dead|Considered valid)/
             if ($6 !~ /^Dead/) seen[f] = 1   # a function never reached is not listed
             if ($5 ~ alarm_kinds) { al[f]++; if (good) alok[f]++; else print > badf }
@@ -195,24 +195,28 @@ fi
 
 # Eva on the hit tests (spec/proofs.md, "Hit tests"; tests/prove/eva_isect.c):
 # the tests with isect_quotient by its contract, and isect_quotient over
-# every binade of its divisor.  isect-sphere, isect-tri: isect_sphere_roots
-# and triangle_solve, whose alarms are open (not in all or quick).
+# every binade of its divisor, and isect_sphere_roots over binades of its
+# direction (isect-sphere: that run alone).  isect-tri: triangle_solve,
+# whose alarms are open (not in all or quick).
 if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ] ||
     [ "$what" = isect-sphere ]; then
     start=$(date +%s)
     { for k in $(seq -1074 1022); do echo "BOX(0x1p$k, 0x1p$((k + 1)))"; done
       echo "BOX(0x1p1023, DBL_MAX)"; } >"$out/isect_boxes.h"
-    for k in $(seq -535 3 1); do echo "SBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/sphere_boxes.h"
-    echo "SBOX(4, 4)" >>"$out/sphere_boxes.h"
+    # isect_sphere_roots' d: one binade a box where the foot's test, not
+    # the extent, bounds it (k <= -509), then a factor 8, then 4 alone.
+    { for k in $(seq -538 -509); do echo "SBOX(0x1p$k, 0x1p$((k + 1)))"; done
+      for k in $(seq -508 3 -1); do echo "SBOX(0x1p$k, 0x1p$((k + 3)))"; done
+      echo "SBOX(4, 4)"; } >"$out/sphere_boxes.h"
     echo "== Eva, hit tests (-warn-special-float non-finite)"
     if [ "$what" = isect-tri ]; then
+        for k in $(seq -1074 3 1); do echo "TBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/shear_boxes.h"
         eva_run isect_tri eva_isect_triangle vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
             tests/prove/eva_isect.c || status=1
     else
         # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
-        # isect alone (seconds): the binade split takes minutes.  sphere
-        # (isect-sphere) has open alarms: not in all or quick.
-        keep=${PROVE_EVA:-isect,quotient}
+        # isect alone (seconds): the binade splits take minutes.
+        keep=${PROVE_EVA:-isect,quotient,sphere}
         [ "$what" = quick ] && keep=${PROVE_EVA:-isect}
         [ "$what" = isect-sphere ] && keep=sphere
         while read -r name main skip; do
