@@ -415,6 +415,42 @@ END_TEST
 /* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
  * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1] [SHADE-SHORTCUT-LOBE-1]
  * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
+/* [SHADE-SHORTCUT-OFF-1] A glass ball (t 0.5, radius 4) around three
+ * shells of six coincident opaque balls each (radii 3, 2, 1; six, so that
+ * each shell is one interface of the tracer), seen from outside: 19 solids.
+ * With the shortcuts on no ray goes through an opaque shell.  With them off
+ * the transmitted rays of weight 0 go in through all of them, more solids
+ * than the stack holds (MEDIUM_MAX); that cannot change the image, so the
+ * render must not be refused for it: both ways render, to the same bits.
+ * (Before, the shortcuts-off render stopped with STATUS_DATA.) */
+START_TEST(test_shortcuts_off_weightless_ray_overflow_not_refused)
+{
+    char text[4096];
+    int len = snprintf(text, sizeof text, "image { width 3 height 3 max_depth 6 }\n"
+                                          "camera { perspective eye [0, 0, 10] look_at [0, 0, 0] up [0, 1, 0] fov 20 }\n"
+                                          "point_light { position [3, 4, 5] power 1 }\n"
+                                          "sphere { radius 4 material { Kd 0.2 t 0.5 ior 1.5 } }\n");
+    for (int radius = 3; radius >= 1; radius--)
+        for (int k = 0; k < 6; k++)
+            len += snprintf(text + len, sizeof text - (size_t)len, "sphere { radius %d material { Kd 0.5 } }\n",
+                            radius);
+    ck_assert_int_gt(1 + 3 * 6, MEDIUM_MAX);
+    ck_assert_int_lt(len, (int)sizeof text);
+    scene_model *s = load(text);
+    img_buf on, off;
+    render_stats st_on, st_off;
+    render(s, 0, &on, &st_on);
+    render(s, 1, &off, &st_off);
+    ck_assert_int_gt(st_off.trace.refraction_rays, st_on.trace.refraction_rays);
+    ck_assert_int_eq(st_on.trace.medium_overflow, 0);
+    ck_assert_int_eq(st_off.trace.medium_overflow, 0);
+    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * 9 * sizeof on.rgb[0]), 0);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
     for (int k = 0; k < RANDOM_BATCH; k++)
@@ -435,6 +471,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);
     tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
+    tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,

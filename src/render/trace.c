@@ -447,6 +447,17 @@ static int interface_cross(const tracer *t, const interface *f, const medium_sta
     return solids;
 }
 
+/* With the shortcuts off a ray of weight 0 (Ks = 0, or t = 0 on the
+ * interface) is traced too, and its colour, finite, is multiplied by 0.
+ * A medium stack overflow inside it cannot make the image wrong, so it is
+ * not counted: the render refuses exactly where the default one does
+ * ([SHADE-SHORTCUT-OFF-1]). */
+static void forgive_weightless(trace_stats *st, long overflow_before, int weightless)
+{
+    if (weightless)
+        st->medium_overflow = overflow_before;
+}
+
 /*
  * The transmitted ray: straight on through a sheet, bent by Snell's law
  * where the interface changes the medium (n1 the medium before, the top of
@@ -475,20 +486,28 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
     path_note(st, (uint64_t)refracts + 3);
+    long overflow_before = st->medium_overflow;
+    rgb c;
     if (refracts) {
         st->refraction_rays++;
-        return vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
+        c = vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
+    } else {
+        st->tir_rays++;
+        c = vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
     }
-    st->tir_rays++;
-    return vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
+    forgive_weightless(st, overflow_before, through == 0 || s->m->t == 0);
+    return c;
 }
 
 static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
-                    uint64_t key, trace_stats *st)
+                    uint64_t key, int weightless, trace_stats *st)
 {
     ray r = ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
     st->reflection_rays++;
-    return trace_ray(t, &r, depth + 1, media, key, st);
+    long overflow_before = st->medium_overflow;
+    rgb c = trace_ray(t, &r, depth + 1, media, key, st);
+    forgive_weightless(st, overflow_before, weightless);
+    return c;
 }
 
 static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const medium_stack *media, uint64_t key,
@@ -524,7 +543,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
         if (t->reflection && (ks || t->no_shortcuts))
-            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), st);
+            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), !ks, st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
             through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), st);
     }
