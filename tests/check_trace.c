@@ -328,6 +328,69 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
 }
 END_TEST
 
+/* Nine coincident balls seen from outside, one surface crossing each at
+ * the same point: the tracer keeps eight crossings of an interface.  The
+ * hit is ball 0 (the lowest index of a tie), glass with Kd = Ks = 0 and no
+ * ambient, so the pixel is what comes through; ball 8 is opaque, and an
+ * opaque surface on the way lets nothing through ([SHADE-SHADOW-1]): the
+ * pixel is 0, with the shortcuts on and off.  (Before, the ninth crossing
+ * was dropped and the light behind came through: 1.85 in each channel.) */
+static const char nine_balls_one_opaque[] =
+    "image { width 1 height 1 max_depth 4 background [0.2, 0.3, 0.4] }\n"
+    "camera { eye [0, 0, 10] look_at [0, 0, 0] fov 5 }\n"
+    "ambient { color 0 }\n"
+    "material g { Kd 0 t 0.9 ior 1 }\n"
+    "sphere { material g }\nsphere { material g }\nsphere { material g }\nsphere { material g }\n"
+    "sphere { material g }\nsphere { material g }\nsphere { material g }\nsphere { material g }\n"
+    "sphere { material { Kd 0.5 } }\n"
+    "plane { point [0, 0, -5] normal [0, 0, 1] material { Kd 1 } }\n"
+    "point_light { position [0, 0, -3] power 10 falloff none }\n";
+
+START_TEST(test_trace_ninth_coincident_opaque_surface_stops_light)
+{
+    scene_model *s = load(nine_balls_one_opaque);
+    ck_assert_int_eq(s->prim_count, 10);
+    for (int off = 0; off <= 1; off++) {
+        render_opts o;
+        memset(&o, 0, sizeof o);
+        o.no_shortcuts = off;
+        img_buf img = {0};
+        render_stats st;
+        ck_assert_int_eq(render_image(s, &o, &img, &st), STATUS_OK);
+        for (int c = 0; c < 3; c++)
+            ck_assert_msg(img.rgb[c] == 0, "shortcuts %s: channel %d is %.17g, not 0", off ? "off" : "on", c,
+                          img.rgb[c]);
+        img_free(&img);
+    }
+    scene_free(s);
+}
+END_TEST
+
+/* [REL-MEDIUM-2] Nine coincident glass balls: the ray going in crosses nine
+ * solids at one interface, more than the tracer keeps (eight); the medium
+ * stack would miss one, so the render is refused as on the stack's own
+ * overflow ([REL-MEDIUM-1]), not rendered with the wrong media. */
+START_TEST(test_render_image_refuses_nine_coincident_glass_solids)
+{
+    char text[1024];
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 max_depth 4 }\n"
+                                          "camera { eye [0, 0, 10] look_at [0, 0, 0] fov 5 }\n");
+    for (int k = 0; k < 9; k++)
+        len += snprintf(text + len, sizeof text - (size_t)len, "sphere { material { Kd 0.1 t 0.5 ior %d.5 } }\n",
+                        1 + k % 2);
+    ck_assert_int_lt(len, (int)sizeof text);
+    scene_model *s = load(text);
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    img_buf img = {0};
+    render_stats st;
+    ck_assert_int_eq(render_image(s, &o, &img, &st), STATUS_DATA);
+    ck_assert_ptr_null(img.rgb);
+    ck_assert_int_gt(st.trace.medium_overflow, 0);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_trace(void)
 {
     Suite *s = suite_create("trace");
@@ -355,6 +418,8 @@ Suite *suite_trace(void)
     tcase_add_test(whole, test_trace_light_a_subnormal_distance_away);
     tcase_add_test(whole, test_render_image_stops_when_asked);
     tcase_add_test(whole, test_render_image_refuses_an_exploding_ray_tree);
+    tcase_add_test(whole, test_trace_ninth_coincident_opaque_surface_stops_light);
+    tcase_add_test(whole, test_render_image_refuses_nine_coincident_glass_solids);
     suite_add_tcase(s, whole);
     return s;
 }

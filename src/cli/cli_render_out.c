@@ -81,7 +81,8 @@ void cli_render_report(const render_args *a, int status, const cli_render_void *
 {
     if (status == STATUS_DATA && at->medium)
         fprintf(stderr, "%srefray: error: a ray of pixel (%d, %d) is inside more than 16 nested transparent solids, "
-                "more than refray follows; the image would be wrong there; nothing written\n", nl, at->x, at->y);
+                "or crosses more than 8 coincident surfaces at once, more than refray follows; the image "
+                "would be wrong there; nothing written\n", nl, at->x, at->y);
     else if (status == STATUS_DATA)
         fprintf(stderr, "%srefray: error: the rays of pixel (%d, %d) branch into more than %ld rays "
                 "(--max-ray-tree); lower max_depth or raise the limit; nothing written\n", nl, at->x, at->y,

@@ -349,10 +349,17 @@ static int media_find(const medium_stack *media, int solid)
  */
 enum { INTERFACE_MAX = 8 };
 typedef struct interface {
+    const scene_model *scene;
     const hit *self;     /* the hit being shaded: h[0] */
     real reach;          /* a crossing whose point is this close belongs to it */
     int count;
     hit h[INTERFACE_MAX];
+    /* The product of the t of every crossing besides the hit, in the walk's
+     * order, those past INTERFACE_MAX included: a ninth coincident surface
+     * that is opaque still stops the ray.  The solids among those not kept
+     * are counted: the medium stack cannot follow them. */
+    real through;
+    int solids_lost;
     const scene_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
     const hit *spawn_hit;
 } interface;
@@ -368,8 +375,14 @@ static int gather_crossing(void *ctx, const hit *h)
     interface *f = ctx;
     if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
         return 0;
-    if (f->count < INTERFACE_MAX && max_abs_diff(h->point, f->self->point) <= f->reach)
+    if (!(max_abs_diff(h->point, f->self->point) <= f->reach))
+        return 0;
+    const scene_prim *p = &f->scene->prims[h->prim];
+    f->through = shade_shadow_transmission(f->through, f->scene->materials[p->material].t);
+    if (f->count < INTERFACE_MAX)
         f->h[f->count++] = *h;
+    else
+        f->solids_lost += trace_solid_id(f->scene, h->prim) >= 0;
     return 0;
 }
 
@@ -380,8 +393,11 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
     real m = fmax(isect_part_magnitude(s->prim, s->h->part),
                   fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y), fabs(s->h->point.z))));
     ray r = *in;
+    f->scene = t->scene;
     f->self = s->h;
     f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
+    f->through = 1;
+    f->solids_lost = 0;
     f->count = 1;
     f->h[0] = *s->h;
     /* The crossings' t may differ from the hit's by the rounding of t itself,
@@ -431,9 +447,7 @@ static int interface_cross(const tracer *t, const interface *f, const medium_sta
 {
     const scene_model *sc = t->scene;
     int solids = 0;
-    *through = 1;
-    for (int k = 1; k < f->count; k++)
-        *through = shade_shadow_transmission(*through, sc->materials[sc->prims[f->h[k].prim].material].t);
+    *through = f->through;
     for (int k = 0; k < f->count; k++) {
         solids += trace_solid_id(sc, f->h[k].prim) >= 0;
         if (crossing_effect(sc, f, before, k) < 0)
@@ -487,6 +501,10 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
     path_note(st, (uint64_t)refracts + 3);
     long overflow_before = st->medium_overflow;
+    /* Solids crossed here past INTERFACE_MAX are missing from the stack: the
+     * media of this ray would be wrong, so the render refuses, as on the
+     * stack's own overflow. */
+    st->medium_overflow += f.solids_lost > 0;
     rgb c;
     if (refracts) {
         st->refraction_rays++;
