@@ -451,6 +451,47 @@ START_TEST(test_shortcuts_off_weightless_ray_overflow_not_refused)
 }
 END_TEST
 
+/* The camera inside 16 concentric glass shells (t 0.9), the stack full,
+ * looking at a ball at z = -5 made of the coincident balls `balls`. */
+static void inside_sixteen_shells_both_ways(const char *balls)
+{
+    char text[4096];
+    int len = snprintf(text, sizeof text, "image { width 6 height 4 max_depth 4 }\n"
+                                          "camera { eye [0, 0, 0] look_at [0, 0, -1] fov 40 }\n"
+                                          "point_light { position [0, 0, 0] power 10 falloff none }\n"
+                                          "material shell { Kd 0.1 t 0.9 ior 1 }\n");
+    for (int k = 0; k < MEDIUM_MAX; k++)
+        len += snprintf(text + len, sizeof text - (size_t)len, "sphere { radius %d material shell }\n", 50 + k);
+    len += snprintf(text + len, sizeof text - (size_t)len, "%s", balls);
+    ck_assert_int_lt(len, (int)sizeof text);
+    scene_model *s = load(text);
+    img_buf on, off;
+    render_stats st_on, st_off;
+    render(s, 0, &on, &st_on);
+    render(s, 1, &off, &st_off);
+    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * 24 * sizeof on.rgb[0]), 0);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+
+/* [SHADE-SHORTCUT-OFF-1] With the stack full, an opaque ball: only the
+ * shortcuts-off render sends a transmitted ray (weight 0) into it, and
+ * pushing the ball overflowed the stack before that ray's own count began
+ * (the render was refused).  A glass ball and an opaque one in the same
+ * place: no ray goes in (the interface lets 0 through), yet the default
+ * render was refused when the glass line came first.  Both render, the
+ * same bits both ways.  (Found by an outside attack.) */
+START_TEST(test_shortcuts_full_stack_weightless_crossing_not_refused)
+{
+    inside_sixteen_shells_both_ways("sphere { center [0, 0, -5] material { Kd [0.9, 0.5, 0.1] } }\n");
+    inside_sixteen_shells_both_ways("sphere { center [0, 0, -5] material { Kd 0.1 t 0.5 ior 1.5 } }\n"
+                                    "sphere { center [0, 0, -5] material { Kd [0.9, 0.5, 0.1] } }\n");
+    inside_sixteen_shells_both_ways("sphere { center [0, 0, -5] material { Kd [0.9, 0.5, 0.1] } }\n"
+                                    "sphere { center [0, 0, -5] material { Kd 0.1 t 0.5 ior 1.5 } }\n");
+}
+END_TEST
+
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
     for (int k = 0; k < RANDOM_BATCH; k++)
@@ -472,6 +513,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
+    tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,

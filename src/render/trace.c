@@ -463,12 +463,13 @@ static int interface_cross(const tracer *t, const interface *f, const medium_sta
 
 /* With the shortcuts off a ray of weight 0 (Ks = 0, or t = 0 on the
  * interface) is traced too, and its colour, finite, is multiplied by 0.
- * A medium stack overflow inside it cannot make the image wrong, so it is
- * not counted: the render refuses exactly where the default one does
+ * A medium stack overflow inside it (or in a stack no ray goes on with)
+ * cannot make the image wrong, so it is forgotten: the stack's overflow
+ * refuses a render exactly where it refuses the default one
  * ([SHADE-SHORTCUT-OFF-1]). */
-static void forgive_weightless(trace_stats *st, long overflow_before, int weightless)
+static void forget_overflow(trace_stats *st, long overflow_before, int harmless)
 {
-    if (weightless)
+    if (harmless)
         st->medium_overflow = overflow_before;
 }
 
@@ -485,10 +486,19 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     interface f;
     medium_stack next = *media;
     real through;
+    /* An overflow of `next` (the stack past the interface) matters only
+     * to a ray that goes on with it and carries weight. */
+    long overflow_before = st->medium_overflow;
     interface_gather(t, s, in, &f, st);
     int solids = interface_cross(t, &f, media, &next, &through, st);
-    if (through == 0 && !t->no_shortcuts)
+    /* Solids crossed here past INTERFACE_MAX are missing from `next`: the
+     * media of the ray would be wrong, so the render refuses, as on the
+     * stack's own overflow. */
+    st->medium_overflow += f.solids_lost > 0;
+    if (through == 0 && !t->no_shortcuts) {
+        forget_overflow(st, overflow_before, 1);
         return vec_splat(0);
+    }
     ray r;
     vec3 dir = in->dir;
     int refracts = 1;
@@ -500,20 +510,17 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
     }
     r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
     path_note(st, (uint64_t)refracts + 3);
-    long overflow_before = st->medium_overflow;
-    /* Solids crossed here past INTERFACE_MAX are missing from the stack: the
-     * media of this ray would be wrong, so the render refuses, as on the
-     * stack's own overflow. */
-    st->medium_overflow += f.solids_lost > 0;
     rgb c;
     if (refracts) {
         st->refraction_rays++;
         c = vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
     } else {
+        /* Totally reflected, the ray stays in `media`: `next` is not used. */
+        forget_overflow(st, overflow_before, 1);
         st->tir_rays++;
         c = vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
     }
-    forgive_weightless(st, overflow_before, through == 0 || s->m->t == 0);
+    forget_overflow(st, overflow_before, through == 0 || s->m->t == 0);
     return c;
 }
 
@@ -524,7 +531,7 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
     st->reflection_rays++;
     long overflow_before = st->medium_overflow;
     rgb c = trace_ray(t, &r, depth + 1, media, key, st);
-    forgive_weightless(st, overflow_before, weightless);
+    forget_overflow(st, overflow_before, weightless);
     return c;
 }
 
