@@ -211,7 +211,7 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
     echo "== Eva, hit tests (-warn-special-float non-finite)"
     if [ "$what" = isect-tri ]; then
         for k in $(seq -1074 3 1); do echo "TBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/shear_boxes.h"
-        eva_run isect_tri eva_isect_triangle vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
+        eva_run isect_tri eva_isect_triangle isect_quotient,vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
             tests/prove/eva_isect.c || status=1
     else
         # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
