@@ -451,6 +451,22 @@ static inline vec3 triangle_corner(vec3 v, vec3 o, real sx, real sy, int kx, int
         q2 = triangle_corner(v[2], o, sx, sy, kx, ky, kz);          \
     } while (0)
 
+/* e / det, for e zero or of det's sign with |e| <= |det| (det = e0 + e1 +
+ * e2 of edge functions of one sign: monotone rounding): in [0, 1] for these
+ * doubles, a relation Eva's intervals lose.  For |det| >= 2^-16 the
+ * quotient is finite in intervals too (|e| <= 2^1005 within the extent);
+ * below, isect_quotient divides the magnitudes (the same double; a zero e
+ * gets the sign IEEE division gives, the product's).  The clamp never
+ * fires: it holds the weight in [0, 1] where Eva sees it. */
+static real triangle_weight_small(real e, real det)
+{
+    real b;
+    isect_quotient(e, det, &b);
+    return e == 0.0 ? e * det : b;
+}
+
+static inline real triangle_weight_held(real b) { return b > 1.0 ? 1.0 : b < 0.0 ? 0.0 : b; }
+
 /* sh: the ray's permutation and shear (isect_shear_make of r). */
 static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, const isect_shear *sh, tri_bary *out)
 {
@@ -511,10 +527,39 @@ static int triangle_solve(const vec3 v[3], int inclusive, const ray *r, const is
      * 2^-342) where the weights b_i = e_i / det, free of scale, do not.
      * An edge decided by its remainders or by the tie rule has e_i = 0,
      * and so weight 0. */
-    out->b[0] = e0 / det;
-    out->b[1] = e1 / det;
-    out->b[2] = e2 / det;
-    out->t = (out->b[0] * q0.z + out->b[1] * q1.z + out->b[2] * q2.z) / dz;
+    /* Each sign of det (and of dz below) in its own branch: Eva narrows
+     * it by each test, not by their disjunction. */
+    real b0, b1, b2;
+    if (det >= 0x1p-16) {
+        b0 = e0 / det, b1 = e1 / det, b2 = e2 / det;
+    } else if (det <= -0x1p-16) {
+        b0 = e0 / det, b1 = e1 / det, b2 = e2 / det;
+    } else {
+        b0 = triangle_weight_small(e0, det);
+        b1 = triangle_weight_small(e1, det);
+        b2 = triangle_weight_small(e2, det);
+    }
+    out->b[0] = triangle_weight_held(b0);
+    out->b[1] = triangle_weight_held(b1);
+    out->b[2] = triangle_weight_held(b2);
+    /* num is within 3 2^501 (the weights in [0, 1], the corners' distances
+     * within the extent): finite over |dz| >= 2^-500.  Below, t past 2^1020
+     * is no hit: a hit point within the extent ([LANG-EXTENT-1]) is at
+     * |t| <= 2^502 / |world d|, a transform keeps t, and a world ray's
+     * direction has its largest component >= 1/8; only a degenerate local
+     * direction passes 2^1020, where the quotient was +Inf or a t no hit
+     * can have. */
+    real num = out->b[0] * q0.z + out->b[1] * q1.z + out->b[2] * q2.z;
+    if (dz >= 0x1p-500) {
+        out->t = num / dz;
+    } else if (dz <= -0x1p-500) {
+        out->t = num / dz;
+    } else {
+        if (!isect_quotient(num, dz, &out->t))
+            return 0;
+        if (num == 0.0)
+            out->t = num * dz; /* num / dz's zero: its sign is the product's */
+    }
     return 1;
 }
 

@@ -9,7 +9,7 @@
 #   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-sphere|isect-tri|gappa]
 #   (all but isect-tri when no argument; isect: WP on the hit tests alone,
 #   isect-eva: Eva on them; isect-sphere: Eva on isect_sphere_roots alone;
-#   isect-tri: Eva on triangle_solve, whose alarms are open)
+#   isect-tri: Eva on triangle_solve, a run of minutes)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
@@ -196,8 +196,8 @@ fi
 # Eva on the hit tests (spec/proofs.md, "Hit tests"; tests/prove/eva_isect.c):
 # the tests with isect_quotient by its contract, and isect_quotient over
 # every binade of its divisor, and isect_sphere_roots over binades of its
-# direction (isect-sphere: that run alone).  isect-tri: triangle_solve,
-# whose alarms are open (not in all or quick).
+# direction (isect-sphere: that run alone).  isect-tri: triangle_solve
+# and the shear over factor-8 boxes, minutes (not in all or quick).
 if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$what" = isect-tri ] ||
     [ "$what" = isect-sphere ]; then
     start=$(date +%s)
@@ -211,7 +211,7 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
     echo "== Eva, hit tests (-warn-special-float non-finite)"
     if [ "$what" = isect-tri ]; then
         for k in $(seq -1074 3 1); do echo "TBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/shear_boxes.h"
-        eva_run isect_tri eva_isect_triangle vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
+        eva_run isect_tri eva_isect_triangle isect_quotient,vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
             tests/prove/eva_isect.c || status=1
     else
         # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
