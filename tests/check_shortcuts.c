@@ -415,6 +415,21 @@ END_TEST
 /* [SHADE-SHORTCUT-OFF-1] [SHADE-SHORTCUT-PASS-1] [SHADE-SHORTCUT-RAYS-1]
  * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1] [SHADE-SHORTCUT-LOBE-1]
  * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
+/* Loads text and renders it with the shortcuts on and off: both render
+ * (render() asserts it), to the same bits; the stats of each go back. */
+static void same_both_ways(const char *text, render_stats *st_on, render_stats *st_off)
+{
+    scene_model *s = load(text);
+    img_buf on, off;
+    render(s, 0, &on, st_on);
+    render(s, 1, &off, st_off);
+    ck_assert_int_eq(on.width * on.height, off.width * off.height);
+    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * (size_t)(on.width * on.height) * sizeof on.rgb[0]), 0);
+    img_free(&on);
+    img_free(&off);
+    scene_free(s);
+}
+
 /* [SHADE-SHORTCUT-OFF-1] A glass ball (t 0.5, radius 4) around three
  * shells of six coincident opaque balls each (radii 3, 2, 1; six, so that
  * each shell is one interface of the tracer), seen from outside: 19 solids.
@@ -436,18 +451,11 @@ START_TEST(test_shortcuts_off_weightless_ray_overflow_not_refused)
                             radius);
     ck_assert_int_gt(1 + 3 * 6, MEDIUM_MAX);
     ck_assert_int_lt(len, (int)sizeof text);
-    scene_model *s = load(text);
-    img_buf on, off;
     render_stats st_on, st_off;
-    render(s, 0, &on, &st_on);
-    render(s, 1, &off, &st_off);
+    same_both_ways(text, &st_on, &st_off);
     ck_assert_int_gt(st_off.trace.refraction_rays, st_on.trace.refraction_rays);
     ck_assert_int_eq(st_on.trace.medium_overflow, 0);
     ck_assert_int_eq(st_off.trace.medium_overflow, 0);
-    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * 9 * sizeof on.rgb[0]), 0);
-    img_free(&on);
-    img_free(&off);
-    scene_free(s);
 }
 END_TEST
 
@@ -464,15 +472,8 @@ static void inside_sixteen_shells_both_ways(const char *balls)
         len += snprintf(text + len, sizeof text - (size_t)len, "sphere { radius %d material shell }\n", 50 + k);
     len += snprintf(text + len, sizeof text - (size_t)len, "%s", balls);
     ck_assert_int_lt(len, (int)sizeof text);
-    scene_model *s = load(text);
-    img_buf on, off;
     render_stats st_on, st_off;
-    render(s, 0, &on, &st_on);
-    render(s, 1, &off, &st_off);
-    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * 24 * sizeof on.rgb[0]), 0);
-    img_free(&on);
-    img_free(&off);
-    scene_free(s);
+    same_both_ways(text, &st_on, &st_off);
 }
 
 /* [SHADE-SHORTCUT-OFF-1] With the stack full, an opaque ball: only the
