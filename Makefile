@@ -470,7 +470,9 @@ KIT_CHECK := $(BUILD)/kit_check
 # decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh), on
 # the other core while the suite runs; their report follows the suite's.
 SCHEMA_LOG := $(BUILD)/json-schema.log
-test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK) $(GEN_BINS)
+# The bench-pov driver is built (not run) in the default configuration, so
+# a change of the difftest code it shares cannot break `make bench-pov` unseen.
+test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK) $(GEN_BINS) $(if $(VARIANT),,$(BENCH_POV))
 	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ { sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && \
 	  sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry; } > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
 	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) GEN_BIN_DIR=$(BUILD) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \

@@ -217,7 +217,7 @@ static int bench_one(const options *o, const entry *e)
         s->image.samples = e->samples;
     img_buf ours, pov;
     render_stats st;
-    dt_config c = {o->dir, o->povray, 1, 0.125, 0, 1, stderr};
+    dt_config c = {o->dir, o->povray, 1, 0.125, 0, 1, stderr, NULL};
     dt_result r;
     pov_opts po;
     pov_notes notes;
