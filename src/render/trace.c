@@ -439,15 +439,13 @@ static int crossing_effect(const scene_model *sc, const interface *f, const medi
 }
 
 /* Crossing the interface: every solid left comes off the stack, then every
- * solid entered goes on (once).  Returns the number of solid crossings and
- * sets *through to the product of the t of the surfaces crossed besides the
- * hit itself (whose t the caller applies). */
+ * solid entered goes on (once).  Returns the number of solid crossings (the
+ * product of the t of the crossings besides the hit is f->through). */
 static int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
-                           real *through, trace_stats *st)
+                           trace_stats *st)
 {
     const scene_model *sc = t->scene;
     int solids = 0;
-    *through = f->through;
     for (int k = 0; k < f->count; k++) {
         solids += trace_solid_id(sc, f->h[k].prim) >= 0;
         if (crossing_effect(sc, f, before, k) < 0)
@@ -485,18 +483,18 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
 {
     interface f;
     medium_stack next = *media;
-    real through;
     /* An overflow of `next` (the stack past the interface) matters only
      * to a ray that goes on with it and carries weight. */
     long overflow_before = st->medium_overflow;
     interface_gather(t, s, in, &f, st);
-    int solids = interface_cross(t, &f, media, &next, &through, st);
+    int solids = interface_cross(t, &f, media, &next, st);
+    real through = f.through;
     /* Solids crossed here past INTERFACE_MAX are missing from `next`: the
      * media of the ray would be wrong, so the render refuses, as on the
      * stack's own overflow. */
     st->medium_overflow += f.solids_lost > 0;
     if (through == 0 && !t->no_shortcuts) {
-        forget_overflow(st, overflow_before, 1);
+        st->medium_overflow = overflow_before;
         return vec_splat(0);
     }
     ray r;
@@ -516,7 +514,7 @@ static rgb transmitted(const tracer *t, const surface *s, const ray *in, int dep
         c = vec_scale(trace_ray(t, &r, depth + 1, &next, key, st), through);
     } else {
         /* Totally reflected, the ray stays in `media`: `next` is not used. */
-        forget_overflow(st, overflow_before, 1);
+        st->medium_overflow = overflow_before;
         st->tir_rays++;
         c = vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
     }
