@@ -51,6 +51,12 @@ static real max_abs(vec3 v)
  * new solve nearest to the crossing (the lower one for the entry, the
  * upper one for the exit).  Returns the refined t and sets *point.
  */
+/*@ requires \valid_read(r) && \valid(point) && \separated(point, r);
+    requires vfinite(center) && \is_finite(radius) && radius > 0;   // check_radius, in_range
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(t);
+    assigns *point;
+    // Not stated: the point on the ray at the returned t, and on the sphere
+    // (spec/proofs.md, "Round 6": the provers did not close them). */
 static real sphere_refine(vec3 center, real radius, const ray *r, real t, int upper,
                             vec3 *point)
 {

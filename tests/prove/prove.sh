@@ -38,7 +38,7 @@ fi
 fc() { frama-c -cpp-extra-args="-I$src -I$out -Itests/prove -DNDEBUG $1" "${@:2}"; }
 status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
-ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make
+ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,sphere_refine,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make
 # The cylinder, cone and torus (intersect_quadric.c, intersect_torus.c):
 # the entry points and the helpers they call (their assigns clauses), but
 # torus_distance and torus_quartic, whose calls of hypot need bounds WP
