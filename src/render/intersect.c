@@ -51,6 +51,12 @@ static real max_abs(vec3 v)
  * new solve nearest to the crossing (the lower one for the entry, the
  * upper one for the exit).  Returns the refined t and sets *point.
  */
+/*@ requires \valid_read(r) && \valid(point) && \separated(point, r);
+    requires vfinite(center) && \is_finite(radius) && radius > 0;   // check_radius, in_range
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(t);
+    assigns *point;
+    // Not stated: the point on the ray at the returned t, and on the sphere
+    // (spec/proofs.md, "Round 6": the provers did not close them). */
 static real sphere_refine(vec3 center, real radius, const ray *r, real t, int upper,
                             vec3 *point)
 {
@@ -1073,7 +1079,7 @@ real isect_prim_magnitude(const scene_prim *p)
  * sizes, >= 0 (finite data, radii > 0: [LANG-VALID-2]), +Inf past DBL_MAX,
  * never NaN (a transform's linear part is invertible, so its norm is > 0). */
 /*@ requires \valid_read(p);
-    assigns \result \from *p, part;
+    assigns \result \from indirect: *p, indirect: part;
     ensures (\is_finite(\result) && \result >= 0) || \is_plus_infinity(\result);   // admit (assumed, listed by make prove; +Inf allowed: spawn_offset caps it) */
 real isect_part_magnitude(const scene_prim *p, int part)
 {
@@ -1345,6 +1351,8 @@ static vec3 clamp_inside(vec3 lo, vec3 hi, vec3 origin, vec3 margin)
     return origin;
 }
 
+/*@ requires \valid_read(p);
+    assigns \nothing;   // not proved (spec/proofs.md): returns a value, writes no memory */
 static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
 {
     if (!p->has_xform)
@@ -1369,15 +1377,40 @@ static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
  * to either side: which side is inside, a closed mesh's winding does not
  * say (trace.c).
  */
+/*@ requires \valid_read(p) && \valid_read(h);
+    assigns \nothing;   // not proved (spec/proofs.md): returns a value, writes no memory */
 static vec3 off_the_edges(const scene_prim *p, const hit *h, real offset)
 {
     vec3 v[3], n[3];
     mesh_corners(&p->u.mesh, h->part, v, n);
     vec3 c = vec_scale(vec_add(v[0], vec_add(v[1], v[2])), 1.0 / 3.0), to = vec_sub(c, h->point);
-    real d = vec_length(to);
-    return d > 0.0 ? vec_madd(h->point, to, fmin(offset, d / 2) / d) : h->point;
+    real d = vec_length(to), q;
+    if (!(d > 0.0))
+        return h->point;
+    /* fmin(offset, d/2)/d, in [0, 1]: isect_quotient never holds it and
+     * gives the same double (num >= 0, den > 0, so +0 for 0); the clamp to
+     * [0, 1] changes nothing and is where Eva, which keeps no relation
+     * between num and den, sees the bound (spec/proofs.md, "The hit's
+     * mirror and refracted rays"). */
+    isect_quotient(fmin(offset, d / 2), d, &q);
+    return vec_madd(h->point, to, fmax(0.0, fmin(q, 1.0)));
 }
 
+/* Contract (make prove, spec/proofs.md "The hit's mirror and refracted
+ * rays"): the direction kept, tmin = 0, tmax = +Inf; the origin finite
+ * (Eva) but for a box with a local frame, whose matrices validation does
+ * not bound ([LANG-EXTENT-1] checks such a box in its own frame). */
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    // a closed mesh's and a box's hit: within the extent ([LANG-EXTENT-1], check_extent.c: 2^502)
+    requires p->kind == PRIM_BOX || p->kind == PRIM_MESH ==> DOUBLES(vbounded(h->point, 0x1p1019));
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(dir) && vbounded(dir, 4);                  // a unit direction (shade_mirror, shade_refract of unit ones), as ray_spawn's
+    assigns \nothing;
+    ensures !(p->kind == PRIM_BOX && p->has_xform) ==> vfinite(\result.origin);
+    ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
+    ensures EXACT(veq(\result.dir, dir));
+    ensures EXACT(\result.tmin == 0); */
 ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 {
     real m = isect_part_magnitude(p, h->part);

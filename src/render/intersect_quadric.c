@@ -46,6 +46,9 @@ typedef struct axial {
     vec3 fp, dp;     /* the parts of o - from and of d across the axis */
 } axial;
 
+/*@ requires \valid(x);
+    requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
+    assigns *x; */
 static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
 {
     vec3 w = vec_sub(to, from), f = vec_sub(o, from);
@@ -72,6 +75,7 @@ typedef struct tspan {
 } tspan;
 
 /* b^2 - a c with the rounding of both products recovered by fma. */
+/*@ assigns \nothing; */
 static real discriminant(real a, real b, real c)
 {
     real p = b * b, q = a * c;
@@ -82,6 +86,8 @@ typedef struct side_eq {
     real a, b, c;
 } side_eq;
 
+/*@ requires \valid_read(s) && \valid_read(x);
+    assigns \nothing; */
 static side_eq cone_equation(const quadric *s, const axial *x)
 {
     side_eq e;
@@ -96,6 +102,11 @@ static side_eq cone_equation(const quadric *s, const axial *x)
 /* The roots of the side's equation, increasing; their number (0 to 2).
  * *all: the equation holds nowhere or everywhere without roots (a = 0, a
  * cylinder's axis direction): set to 1 when the line is inside throughout. */
+/*@ requires \valid_read(s) && \valid_read(x) && \valid(t + (0 .. 1)) && \valid(eq);
+    requires \separated(t + (0 .. 1), eq, s, x) && \separated(eq, s, x);
+    requires !s->cone ==> s->r0 > 0;   // check_radius: a cylinder's radius > 0
+    assigns t[0 .. 1], *eq;
+    ensures 0 <= \result <= 2; */
 static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
 {
     if (!s->cone) {
@@ -129,6 +140,10 @@ static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
  * with a > 0 between the roots; a cone with a < 0 outside them; a = 0
  * on one side of the single root; no roots: nowhere or everywhere by the
  * sign of the equation (c for the cylinder's axis direction). */
+/*@ requires \valid_read(s) && \valid_read(x) && \valid(out) && \separated(out, s, x);
+    requires !s->cone ==> s->r0 > 0;
+    assigns *out;
+    ensures 0 <= out->count <= 2; */
 static void side_span(const quadric *s, const axial *x, tspan *out)
 {
     real t[2];
@@ -167,6 +182,10 @@ static void side_span(const quadric *s, const axial *x, tspan *out)
 
 /* The t between the end planes, [*lo, *hi]; 0 when never (parallel and
  * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to). */
+/*@ requires \valid_read(x) && \valid(lo) && \valid(hi) && \valid(lo_end);
+    requires \separated(lo, hi, lo_end, x);
+    assigns *lo, *hi, *lo_end;
+    ensures *lo_end == 0 || *lo_end == 1; */
 static int slab(const axial *x, real *lo, real *hi, int *lo_end)
 {
     if (x->dz == 0) {
@@ -194,6 +213,10 @@ enum { SURFACE_SIDE = 2 };
 /* The closed solid: the slab's interval met with the side's (by
  * convexity at most one of the side's pieces meets the slab in more than a
  * point; near the apex, where both may touch it, the longer one is kept). */
+/*@ requires \valid_read(s) && \valid_read(x) && \valid(c + (0 .. 1)) && \separated(c + (0 .. 1), s, x);
+    requires !s->cone ==> s->r0 > 0;
+    assigns c[0 .. 1];
+    ensures 0 <= \result <= 2; */
 static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
 {
     real slo, shi;
@@ -204,6 +227,8 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     side_span(s, x, &side);
     int best = -1;
     real best_len = -1;
+    /*@ loop invariant 0 <= i <= side.count && -1 <= best < i;
+        loop assigns i, best, best_len; */
     for (int i = 0; i < side.count; i++) {
         real lo = side.lo[i] > slo ? side.lo[i] : slo, hi = side.hi[i] < shi ? side.hi[i] : shi;
         if (lo <= hi && hi - lo > best_len) {
@@ -223,17 +248,25 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
 }
 
 /* The open side: its finite crossings whose height is between the ends. */
+/*@ requires \valid_read(s) && \valid_read(x) && \valid(c + (0 .. 1)) && \separated(c + (0 .. 1), s, x);
+    requires !s->cone ==> s->r0 > 0;
+    assigns c[0 .. 1];
+    ensures 0 <= \result <= 2; */
 static int open_crossings(const quadric *s, const axial *x, crossing c[2])
 {
     tspan side;
     real t[4];
     int n = 0, found = 0;
     side_span(s, x, &side);
+    /*@ loop invariant 0 <= i <= side.count && 0 <= n <= 2 * i;
+        loop assigns i, n, t[0 .. 3]; */
     for (int i = 0; i < side.count; i++) {
         t[n++] = side.lo[i];
         if (side.hi[i] != side.lo[i])
             t[n++] = side.hi[i];
     }
+    /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
+        loop assigns i, found, c[0 .. 1]; */
     for (int i = 0; i < n && found < 2; i++) {
         real z = x->z0 + t[i] * x->dz;
         if (isfinite(t[i]) && z >= 0 && z <= x->len) {
@@ -246,6 +279,9 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
 
 /* t moved onto the side: the equation solved again from o' = o + t d; its
  * root of least magnitude is the step.  Returns the refined t, *p the point. */
+/*@ requires \valid_read(s) && \valid_read(r) && \valid(p) && \separated(p, s, r);
+    requires !s->cone ==> s->r0 > 0;
+    assigns *p; */
 static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
 {
     axial x;
@@ -264,6 +300,8 @@ static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
 
 /* The outward normal of the side at p (a cone's apex: along the axis,
  * away from the cone). */
+/*@ requires \valid_read(s);
+    assigns \nothing; */
 static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
 {
     vec3 q = vec_sub(p, s->from);
@@ -274,6 +312,9 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
     return vec_normalize(vec_madd(vec_scale(across, 1.0 / l), a, -s->k));
 }
 
+/*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
+    requires !s->cone ==> s->r0 > 0;
+    assigns *h; */
 static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
 {
     vec3 p, n;
@@ -290,6 +331,15 @@ static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossin
     isect_hit_set(h, t, p, n, r->dir);
 }
 
+/*@ requires \valid_read(s) && \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1));
+    requires \separated(out + (0 .. max - 1), s, r);
+    requires !s->cone ==> s->r0 > 0;   // check_radius
+    requires vfinite(s->from) && vfinite(s->to) && vfinite(r->origin) && vfinite(r->dir);
+    assigns out[0 .. max - 1];
+    ensures 0 <= \result <= max;
+    // doubles too (comparisons of the returned t): tmin >= 0 and t < tmax <= +Inf, so t is finite
+    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
+    ensures \result == 2 ==> out[0].t <= out[1].t; */
 static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int max)
 {
     axial x;
@@ -297,6 +347,10 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
     hit h[2];
     axial_of(s->from, s->to, r->origin, r->dir, &x);
     int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;
+    /*@ loop invariant 0 <= i <= n && 0 <= kept <= i;
+        loop invariant \forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax;
+        loop assigns i, kept, h[0 .. 1];
+        loop variant n - i; */
     for (int i = 0; i < n; i++) {
         crossing_hit(s, &x, r, c[i], &h[kept]);
         kept += h[kept].t > r->tmin && h[kept].t < r->tmax;
@@ -306,17 +360,41 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         h[0] = h[1];
         h[1] = swap;
     }
+    /*@ loop invariant 0 <= i <= kept && i <= max;
+        loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
+        loop assigns i, out[0 .. max - 1];
+        loop variant kept - i; */
     for (int i = 0; i < kept && i < max; i++)
         out[i] = h[i];
     return kept < max ? kept : max;
 }
 
+/* Contracts (make prove, spec/proofs.md "Hit tests: cylinder, cone,
+ * torus"): what validation guarantees ([LANG-VALID-2]: finite data;
+ * check_radius: radius > 0; [LANG-EXTENT-1], check_extent.c: from != to),
+ * and the hits: at most max, each t in (tmin, tmax), increasing. */
+/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
+    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires \is_finite(radius) && radius > 0;                     // check_radius
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns out[0 .. max - 1];
+    ensures 0 <= \result <= max;
+    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
+    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, radius, radius, 0, 0};
     return quadric_hits(&s, open, r, out, max);
 }
 
+/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
+    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires \is_finite(r0) && \is_finite(r1) && r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0);   // check.c: not both 0
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns out[0 .. max - 1];
+    ensures 0 <= \result <= max;
+    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
+    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};

@@ -47,16 +47,25 @@
 enum { DEGREE = 4, ROOTS_MAX = 4 };
 
 /* p[0] + p[1] u + ... + p[deg] u^deg by Horner's rule. */
+/*@ requires 0 <= deg && \valid_read(p + (0 .. deg));
+    assigns \nothing; */
 static real poly_eval(const real *p, int deg, real u)
 {
     real v = p[deg];
+    /*@ loop invariant -1 <= i < deg;
+        loop assigns i, v; */
     for (int i = deg - 1; i >= 0; i--)
         v = v * u + p[i];
     return v;
 }
 
+/*@ requires 1 <= deg && \valid_read(p + (0 .. deg)) && \valid(dp + (0 .. deg - 1));
+    requires \separated(dp + (0 .. deg - 1), p + (0 .. deg));
+    assigns dp[0 .. deg - 1]; */
 static void poly_derive(const real *p, int deg, real *dp)
 {
+    /*@ loop invariant 1 <= i <= deg + 1;
+        loop assigns i, dp[0 .. deg - 1]; */
     for (int i = 1; i <= deg; i++)
         dp[i - 1] = (real)i * p[i];
 }
@@ -65,9 +74,13 @@ static void poly_derive(const real *p, int deg, real *dp)
  * (fa = p(a)): Newton from the middle, falling back to bisection whenever
  * a step would leave the bracket; stops when the bracket or the step is
  * below 2^-50 (lengths here are of order 1). */
+/*@ requires 1 <= deg && \valid_read(p + (0 .. deg)) && \valid_read(dp + (0 .. deg - 1));
+    assigns \nothing; */
 static real monotone_root(const real *p, const real *dp, int deg, real a, real b, real fa)
 {
     real x = 0.5 * (a + b);
+    /*@ loop invariant 0 <= i <= 200;
+        loop assigns i, x, a, b; */
     for (int i = 0; i < 200; i++) {
         real fx = poly_eval(p, deg, x);
         if (fx == 0)
@@ -87,6 +100,10 @@ static real monotone_root(const real *p, const real *dp, int deg, real a, real b
 }
 
 /* The real roots of p (degree deg >= 1) in [lo, hi], increasing; their number. */
+/*@ requires 1 <= deg <= DEGREE && \valid_read(p + (0 .. deg)) && \valid(roots + (0 .. deg - 1));
+    requires \separated(roots + (0 .. deg - 1), p + (0 .. deg));
+    assigns roots[0 .. deg - 1];
+    ensures 0 <= \result <= deg; */
 static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
 {
     if (deg == 1) {
@@ -99,6 +116,8 @@ static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
     int ncut = poly_roots(dp, deg - 1, lo, hi, ends + 1), found = 0;
     ends[0] = lo;
     ends[ncut + 1] = hi;
+    /*@ loop invariant 0 <= i <= ncut + 1 && 0 <= found <= i;
+        loop assigns i, found, roots[0 .. deg - 1]; */
     for (int i = 0; i <= ncut; i++) {
         real a = ends[i], b = ends[i + 1], fa = poly_eval(p, deg, a), fb = poly_eval(p, deg, b);
         if (fa == 0) {
@@ -120,6 +139,8 @@ typedef struct torus {
 
 /* The distance from the core circle at p and its gradient, the outward
  * unit normal; 0 on the axis or the circle itself, where neither exists. */
+/*@ requires \valid_read(tr) && \valid(d) && \valid(n) && \separated(d, n, tr);
+    assigns *d, *n; */
 static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
 {
     vec3 q = vec_sub(p, tr->c);
@@ -135,11 +156,15 @@ static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
 
 /* Polishes the root t (step 3); *p and *n are the point and the normal.
  * limit: the largest move in t that is still the same root. */
+/*@ requires \valid_read(tr) && \valid_read(r) && \valid(p) && \valid(n) && \separated(p, n, tr, r);
+    assigns *p, *n; */
 static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 *p, vec3 *n)
 {
     vec3 x = ray_at(r, t);
     real tt = t, d, dl = vec_length(r->dir);
     vec3 nn;
+    /*@ loop invariant 0 <= i <= 8;
+        loop assigns i, x, tt, d, nn; */
     for (int i = 0; i < 8 && torus_distance(tr, x, &d, &nn); i++) {
         real slope = vec_dot(nn, r->dir);
         if (slope == 0)
@@ -162,6 +187,8 @@ static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3
 
 /* The quartic's coefficients about p0 (lengths divided by the bounding
  * radius; e unit), leading coefficient 1 in c[4]. */
+/*@ requires \valid_read(tr) && \valid(c + (0 .. DEGREE)) && \separated(c + (0 .. DEGREE), tr);
+    assigns c[0 .. DEGREE]; */
 static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[DEGREE + 1])
 {
     real big = tr->major / scale, small = tr->minor / scale;
@@ -176,6 +203,18 @@ static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[D
     c[0] = (d0 - small) * (d0 + small) * ((rho0 + big) * (rho0 + big) + z0 * z0 - small * small);
 }
 
+/* Contract (make prove, spec/proofs.md "Hit tests: cylinder, cone,
+ * torus"): what validation guarantees ([LANG-VALID-2]: finite data, a unit
+ * axis; check.c: 0 < minor < major), and the hits: at most max, each t in
+ * (tmin, tmax) (doubles too: the comparison that keeps a root; with
+ * tmin >= 0 and t < tmax <= +Inf, t is finite). */
+/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
+    requires vfinite(center) && vfinite(axis);                               // [LANG-VALID-2]
+    requires \is_finite(major) && \is_finite(minor) && 0 < minor < major;     // a ring torus (check.c)
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns out[0 .. max - 1];
+    ensures 0 <= \result <= max;
+    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax); */
 int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max)
 {
     torus tr = {center, axis, major, minor};
@@ -195,6 +234,9 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
     half += 0x1p-20;
     int n = poly_roots(c, DEGREE, -half, half, u), found = 0;
     hit h[ROOTS_MAX];
+    /*@ loop invariant 0 <= i <= n && 0 <= found <= i;
+        loop invariant \forall integer j; 0 <= j < found ==> r->tmin < h[j].t < r->tmax;
+        loop assigns i, found, h[0 .. ROOTS_MAX - 1]; */
     for (int i = 0; i < n; i++) {
         real t = tm + u[i] * scale / dl;
         /* The same root until halfway to its neighbours (or 1e-3 of the
@@ -207,12 +249,21 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
         if (t > r->tmin && t < r->tmax)
             isect_hit_set(&h[found++], t, p, nn, r->dir);
     }
+    /*@ loop invariant 1 <= i <= found || (found == 0 && i == 1);
+        loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
+        loop assigns i, h[0 .. ROOTS_MAX - 1]; */
     for (int i = 1; i < found; i++)
+        /*@ loop invariant 0 <= j <= i;
+            loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
+            loop assigns j, h[0 .. ROOTS_MAX - 1]; */
         for (int j = i; j > 0 && h[j].t < h[j - 1].t; j--) {
             hit s = h[j];
             h[j] = h[j - 1];
             h[j - 1] = s;
         }
+    /*@ loop invariant 0 <= i <= found && i <= max;
+        loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
+        loop assigns i, out[0 .. max - 1]; */
     for (int i = 0; i < found && i < max; i++)
         out[i] = h[i];
     return found < max ? found : max;

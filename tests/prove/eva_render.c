@@ -75,6 +75,43 @@ static void spawns_to(void)
  * (spawn_offset caps it): NaN is the alarm there, as in eva_rays, and the
  * finiteness of each field a clause; spawn_offset and spawn_origin are
  * analysed, so the origin keeps its bound. */
+/* ray_spawn_hit (mirror and refracted rays) on each of its paths: a
+ * primitive that is neither a box nor a closed mesh (the hit point
+ * anywhere), a box without a local frame and a closed mesh of one
+ * triangle (their corners within the extent, [LANG-EXTENT-1], the hit
+ * within 2^1019 as the contract asks).  A box with a local frame is not
+ * driven: validation does not bound its matrices (spec/proofs.md). */
+static void spawn_hits(void)
+{
+    scene_prim p;
+    hit h;
+    h.part = 0;
+    h.normal = any_dir();
+    p.kind = PRIM_SPHERE;
+    h.point = any_point();
+    eva_render_ray = ray_spawn_hit(&p, &h, any_dir());
+    p.kind = PRIM_BOX;
+    p.has_xform = 0;
+    p.u.box.lo = any_vec(-0x1p500, 0x1p500);
+    p.u.box.hi = any_vec(-0x1p500, 0x1p500);
+    h.point = any_vec(-0x1p1019, 0x1p1019);
+    eva_render_ray = ray_spawn_hit(&p, &h, any_dir());
+    static vec3 corners[3];
+    static int tri[1][3] = {{0, 1, 2}};
+    for (int i = 0; i < 3; i++)
+        corners[i] = any_vec(-0x1p500, 0x1p500);
+    p.kind = PRIM_MESH;
+    p.has_xform = 0;
+    p.u.mesh.positions = corners;
+    p.u.mesh.position_count = 3;
+    p.u.mesh.tri = tri;
+    p.u.mesh.tri_count = 1;
+    p.u.mesh.tri_normal = 0;
+    p.u.mesh.normals = 0;
+    p.u.mesh.closed = Frama_C_int_interval(0, 1);
+    eva_render_ray = ray_spawn_hit(&p, &h, any_dir());
+}
+
 void eva_hits(void)
 {
     scene_prim p;
@@ -89,6 +126,7 @@ void eva_hits(void)
     for (int axis = 0; axis < 3; axis++)
         for (int sign = -1; sign <= 1; sign += 2)
             eva_render_ray = ray_spawn_hit_shadow(&p, &h, long_dir(axis, sign));
+    spawn_hits();
 }
 
 static void spawns(void)
