@@ -14,6 +14,8 @@
 #   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
 #                   make deps installs); implies EXR=0 (see below)
 #   CC=clang        clang instead of gcc (make deps installs it)
+#   LTO=0           no link-time optimisation of build/refray (on by default
+#                   with gcc outside SANITIZE=1; see below)
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
@@ -76,6 +78,26 @@ endif
 ifeq ($(SANITIZE),1)
 CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 LDFLAGS += -fsanitize=address,undefined
+endif
+
+# Link-time optimisation of the refray program (spec/performance.md, sixth
+# round: the hot path crosses trace.c, shade.c, intersect.c, bvh*.c, whose
+# calls LTO inlines).  gcc only: the library's and the program's objects are
+# fat (LTO bytecode and ordinary code), refray is linked with -flto and
+# CFLAGS (so -ffp-contract=off and M32's -mfpmath=sse hold when the code is
+# generated at link time), and every other link, the public libraries' too,
+# takes the ordinary code (-fno-lto; the static library's bytecode sections
+# are removed).  Off for clang (clang 14 has no fat objects) and under the
+# sanitizers; LTO=0 turns it off.
+ifeq ($(if $(findstring clang,$(CC)),1,$(SANITIZE)),0)
+LTO ?= 1
+else
+LTO ?= 0
+endif
+ifeq ($(LTO),1)
+LTO_CFLAGS := -flto -ffat-lto-objects
+LTO_LINK   := -flto=auto
+override LDFLAGS += -fno-lto
 endif
 
 # pkg-config is read lazily (=, not :=): on a fresh machine the packages are
@@ -152,11 +174,12 @@ PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
 PUBLIC_LIBS := $(PUBLIC_A) $(PUBLIC_SO)
 $(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
+$(LIB_OBJS) $(DRIVER_OBJS): OBJ_CFLAGS += $(LTO_CFLAGS)
 
 # Objects depend on the flags they are compiled with: a build directory
 # made with other flags (say, before the library's -fPIC) is rebuilt.
 FLAGS_STAMP := $(BUILD)/obj/flags
-FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS) $(LTO_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 # The public library reads JSON scenes with jansson (src/scene/load_json*.c).
 PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
@@ -517,7 +540,8 @@ fixtures: $(GEN_BINS)
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
+	$(Q)$(CC) $(if $(LTO_LINK),$(filter-out -fno-lto,$(LDFLAGS)) $(CFLAGS) $(LTO_LINK),$(LDFLAGS)) \
+	  -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
 
 $(FLAGS_STAMP): FORCE
 	@mkdir -p $(dir $@)
@@ -542,7 +566,7 @@ $(PUBLIC_A): $(PUBLIC_OBJS)
 	@mkdir -p $(dir $@)
 	@echo "  AR      $@"
 	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -r -nostdlib -o $(BUILD)/lib/refray.o $^
-	$(Q)objcopy --localize-hidden $(BUILD)/lib/refray.o
+	$(Q)objcopy --localize-hidden --remove-section='.gnu.lto_*' --remove-section='.gnu.debuglto_*' $(BUILD)/lib/refray.o
 	$(Q)objcopy $$(nm $(BUILD)/lib/refray.o | awk '$$3 ~ /^__x86\.get_pc_thunk\./ { print "--globalize-symbol=" $$3 }' | \
 	  sort -u) $(BUILD)/lib/refray.o
 	$(Q)rm -f $@ && ar rcs $@ $(BUILD)/lib/refray.o
