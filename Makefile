@@ -347,10 +347,11 @@ $(TERMINATOR): $(BUILD)/obj/tests/terminator/terminator.o $(LIBRARY)
 # The long double twin of refray for `refray stability` (spec/numerics.md),
 # built by a recursive make in its own directory and copied next to refray;
 # part of `all` and of `make install`, so `refray verify --stability`
-# works after a plain `make` and after an install.
+# works after a plain `make` and after an install.  Without LTO: the twin is
+# not the one timed, and its LTO link would cost make check another 15 s of CPU.
 refray-ld: $(REFRAY_LD)
 $(REFRAY_LD): FORCE
-	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
+	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 LTO=0 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
 	$(Q)cp $(BUILD)/ld/refray $@
 
 # The conformance kit (spec/conformance.md): every analytic scene with its
