@@ -43,7 +43,7 @@ endif
 
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
+VARIANT := $(if $(filter 1,$(PGO)),-pgo)$(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
@@ -99,6 +99,23 @@ LTO_CFLAGS := -flto -ffat-lto-objects
 LTO_LINK   := -flto=auto
 override LDFLAGS += -fno-lto
 endif
+
+# Profile-guided optimisation, opt-in (spec/performance.md, sixth round):
+# `make pgo` builds an instrumented refray in $(BUILD) (PGO=1 gives the
+# directory its own name), renders PGO_TRAIN with it, then builds everything
+# again there with the profile.  Trained on scenes outside make bench-pov's
+# set.  Both stages share the directory: gcc names a profile after its object.
+PGO ?= 0
+ifeq ($(PGO),1)
+PGO_PROFILE = $(abspath $(BUILD))/pgo-profile
+ifeq ($(PGO_STAGE),gen)
+override CFLAGS += -fprofile-generate=$(PGO_PROFILE) -fprofile-update=single
+override LDFLAGS += -fprofile-generate=$(PGO_PROFILE)
+else
+override CFLAGS += -fprofile-use=$(PGO_PROFILE) -Wno-missing-profile
+endif
+endif
+PGO_TRAIN ?= $(wildcard scenes/stress/*.scene scenes/analytic/*.scene)
 
 # pkg-config is read lazily (=, not :=): on a fresh machine the packages are
 # installed by `deps` in the same command, after this file was parsed.
@@ -193,7 +210,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check pgo check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -257,6 +274,15 @@ BENCH := $(BUILD)/bench
 BENCH_SCENES ?= scenes/bench/grid1k.scene scenes/bench/grid10k.scene scenes/bench/grid100k.scene scenes/demo.scene
 BENCH_RUNS ?= 5
 BENCH_WIDTH ?= 320
+
+# `make pgo` (above): the directory PGO=1 builds in, or BUILD when given.
+PGO_BUILD = $(if $(filter command line,$(origin BUILD))$(filter 1,$(PGO)),$(BUILD),build/variant-pgo$(VARIANT))
+pgo:
+	$(Q)rm -rf $(PGO_BUILD)/pgo-profile
+	$(Q)$(MAKE) --no-print-directory PGO=1 PGO_STAGE=gen BUILD=$(PGO_BUILD) $(PGO_BUILD)/refray
+	$(Q)for s in $(PGO_TRAIN); do $(PGO_BUILD)/refray render $$s -o $(PGO_BUILD)/pgo-train.pfm -q \
+	  --width 64 --height 48 2>/dev/null; done; true
+	$(Q)$(MAKE) --no-print-directory PGO=1 BUILD=$(PGO_BUILD) all
 
 # Figures, not tests: rays per second and how they fall with scene size.
 bench: $(BENCH)
