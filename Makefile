@@ -16,6 +16,7 @@
 #   CC=clang        clang instead of gcc (make deps installs it)
 #   LTO=0           no link-time optimisation of build/refray (on by default
 #                   with gcc outside SANITIZE=1; see below)
+#   make pgo        an opt-in profile-guided build in build/variant-pgo*
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
