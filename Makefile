@@ -14,6 +14,9 @@
 #   M32=1           a 32-bit build (gcc -m32 and Debian's i386 packages, which
 #                   make deps installs); implies EXR=0 (see below)
 #   CC=clang        clang instead of gcc (make deps installs it)
+#   LTO=0           no link-time optimisation of build/refray (on by default
+#                   with gcc outside SANITIZE=1; see below)
+#   make pgo        an opt-in profile-guided build in build/variant-pgo*
 #   VALGRIND=1      run the test suite under valgrind memcheck
 #   V=1             show full commands
 #   PREFIX, DESTDIR for `make install`
@@ -41,7 +44,7 @@ endif
 
 # Each non-default configuration builds into its own directory so objects of
 # different flag sets never mix.
-VARIANT := $(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
+VARIANT := $(if $(filter 1,$(PGO)),-pgo)$(if $(filter 1,$(M32)),-m32)$(if $(findstring clang,$(CC)),-clang)$(if $(filter 1,$(SANITIZE)),-san)$(if $(filter 1,$(LONG_DOUBLE)),-ld)$(if $(filter 0,$(PNG)),-nopng)$(if $(filter 0,$(EXR)),-noexr)$(if $(filter 0,$(JSON)),-nojson)
 BUILD   ?= build$(if $(VARIANT),/variant$(VARIANT))
 GEN     := $(BUILD)/gen
 
@@ -77,6 +80,43 @@ ifeq ($(SANITIZE),1)
 CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 LDFLAGS += -fsanitize=address,undefined
 endif
+
+# Link-time optimisation of the refray program (spec/performance.md, sixth
+# round: the hot path crosses trace.c, shade.c, intersect.c, bvh*.c, whose
+# calls LTO inlines).  gcc only: the library's and the program's objects are
+# fat (LTO bytecode and ordinary code), refray is linked with -flto and
+# CFLAGS (so -ffp-contract=off and M32's -mfpmath=sse hold when the code is
+# generated at link time), and every other link, the public libraries' too,
+# takes the ordinary code (-fno-lto; the static library's bytecode sections
+# are removed).  Off for clang (clang 14 has no fat objects) and under the
+# sanitizers; LTO=0 turns it off.
+ifeq ($(if $(findstring clang,$(CC)),1,$(SANITIZE)),0)
+LTO ?= 1
+else
+LTO ?= 0
+endif
+ifeq ($(LTO),1)
+LTO_CFLAGS := -flto -ffat-lto-objects
+LTO_LINK   := -flto=auto
+override LDFLAGS += -fno-lto
+endif
+
+# Profile-guided optimisation, opt-in (spec/performance.md, sixth round):
+# `make pgo` builds an instrumented refray in $(BUILD) (PGO=1 gives the
+# directory its own name), renders PGO_TRAIN with it, then builds everything
+# again there with the profile.  Trained on scenes outside make bench-pov's
+# set.  Both stages share the directory: gcc names a profile after its object.
+PGO ?= 0
+ifeq ($(PGO),1)
+PGO_PROFILE = $(abspath $(BUILD))/pgo-profile
+ifeq ($(PGO_STAGE),gen)
+override CFLAGS += -fprofile-generate=$(PGO_PROFILE) -fprofile-update=single
+override LDFLAGS += -fprofile-generate=$(PGO_PROFILE)
+else
+override CFLAGS += -fprofile-use=$(PGO_PROFILE) -Wno-missing-profile
+endif
+endif
+PGO_TRAIN ?= $(wildcard scenes/stress/*.scene scenes/analytic/*.scene)
 
 # pkg-config is read lazily (=, not :=): on a fresh machine the packages are
 # installed by `deps` in the same command, after this file was parsed.
@@ -152,11 +192,12 @@ PUBLIC_A    := $(BUILD)/lib/librefray.a
 PUBLIC_SO   := $(BUILD)/lib/librefray.so.$(RF_VERSION)
 PUBLIC_LIBS := $(PUBLIC_A) $(PUBLIC_SO)
 $(LIB_OBJS): OBJ_CFLAGS += $(LIB_CFLAGS)
+$(LIB_OBJS) $(DRIVER_OBJS): OBJ_CFLAGS += $(LTO_CFLAGS)
 
 # Objects depend on the flags they are compiled with: a build directory
 # made with other flags (say, before the library's -fPIC) is rebuilt.
 FLAGS_STAMP := $(BUILD)/obj/flags
-FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS)
+FLAGS_NOW   := $(CC) $(CPPFLAGS) $(CFLAGS) $(LIB_CFLAGS) $(LTO_CFLAGS)
 ALL_LIBS  = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 # The public library reads JSON scenes with jansson (src/scene/load_json*.c).
 PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
@@ -170,7 +211,7 @@ ifeq ($(M32),1)
 DEBS += gcc-multilib check:i386 $(if $(filter 1,$(PNG)),libpng-dev:i386) $(if $(filter 1,$(JSON)),libjansson-dev:i386)
 endif
 
-.PHONY: all deps check check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
+.PHONY: all deps check pgo check-ssh check-slurm scaling-figures test embed memory arena-min demo bench bench-pov precision terminator fixtures refray-ld report kit crosscheck mitsuba-venv difftest fuzz fuzz-run clean install uninstall solo
 .DEFAULT_GOAL := all
 
 all: $(REFRAY) $(REFRAY_LD) $(LIBRARY) $(PUBLIC_LIBS) $(BUILD)/refray.pc
@@ -234,6 +275,15 @@ BENCH := $(BUILD)/bench
 BENCH_SCENES ?= scenes/bench/grid1k.scene scenes/bench/grid10k.scene scenes/bench/grid100k.scene scenes/demo.scene
 BENCH_RUNS ?= 5
 BENCH_WIDTH ?= 320
+
+# `make pgo` (above): the directory PGO=1 builds in, or BUILD when given.
+PGO_BUILD = $(if $(filter command line,$(origin BUILD))$(filter 1,$(PGO)),$(BUILD),build/variant-pgo$(VARIANT))
+pgo:
+	$(Q)rm -rf $(PGO_BUILD)/pgo-profile
+	$(Q)$(MAKE) --no-print-directory PGO=1 PGO_STAGE=gen BUILD=$(PGO_BUILD) $(PGO_BUILD)/refray
+	$(Q)for s in $(PGO_TRAIN); do $(PGO_BUILD)/refray render $$s -o $(PGO_BUILD)/pgo-train.pfm -q \
+	  --width 64 --height 48 2>/dev/null; done; true
+	$(Q)$(MAKE) --no-print-directory PGO=1 BUILD=$(PGO_BUILD) all
 
 # Figures, not tests: rays per second and how they fall with scene size.
 bench: $(BENCH)
@@ -324,10 +374,11 @@ $(TERMINATOR): $(BUILD)/obj/tests/terminator/terminator.o $(LIBRARY)
 # The long double twin of refray for `refray stability` (spec/numerics.md),
 # built by a recursive make in its own directory and copied next to refray;
 # part of `all` and of `make install`, so `refray verify --stability`
-# works after a plain `make` and after an install.
+# works after a plain `make` and after an install.  Without LTO: the twin is
+# not the one timed, and its LTO link would cost make check another 15 s of CPU.
 refray-ld: $(REFRAY_LD)
 $(REFRAY_LD): FORCE
-	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
+	$(Q)$(MAKE) --no-print-directory LONG_DOUBLE=1 LTO=0 BUILD=$(BUILD)/ld $(BUILD)/ld/refray
 	$(Q)cp $(BUILD)/ld/refray $@
 
 # The conformance kit (spec/conformance.md): every analytic scene with its
@@ -517,7 +568,8 @@ fixtures: $(GEN_BINS)
 
 $(REFRAY): $(DRIVER_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(LDFLAGS) -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
+	$(Q)$(CC) $(if $(LTO_LINK),$(filter-out -fno-lto,$(LDFLAGS)) $(CFLAGS) $(LTO_LINK),$(LDFLAGS)) \
+	  -o $@ $(DRIVER_OBJS) $(LIBRARY) $(ALL_LIBS)
 
 $(FLAGS_STAMP): FORCE
 	@mkdir -p $(dir $@)
@@ -542,7 +594,7 @@ $(PUBLIC_A): $(PUBLIC_OBJS)
 	@mkdir -p $(dir $@)
 	@echo "  AR      $@"
 	$(Q)$(CC) $(CFLAGS) $(LDFLAGS) -r -nostdlib -o $(BUILD)/lib/refray.o $^
-	$(Q)objcopy --localize-hidden $(BUILD)/lib/refray.o
+	$(Q)objcopy --localize-hidden --remove-section='.gnu.lto_*' --remove-section='.gnu.debuglto_*' $(BUILD)/lib/refray.o
 	$(Q)objcopy $$(nm $(BUILD)/lib/refray.o | awk '$$3 ~ /^__x86\.get_pc_thunk\./ { print "--globalize-symbol=" $$3 }' | \
 	  sort -u) $(BUILD)/lib/refray.o
 	$(Q)rm -f $@ && ar rcs $@ $(BUILD)/lib/refray.o
