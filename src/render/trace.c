@@ -295,12 +295,13 @@ static void light_ball(const scene_light *light, light_setup *setup)
  * ([SHADE-SHORTCUT-GATE-1]) for every sample, or, where Kd = 0, V.R <=
  * lobe_floor ([SHADE-SHORTCUT-LOBE-2]) for every sample.  A sample L is
  * (p - P)/|p - P| with p in the light's ball (centre C, reach R), and
- * V.R = L.M exactly for M = 2(N.V)N - V; so with D = C - P, for a unit
- * vector along a fixed w, w.L <= (D.w + R|w|) / |p - P|, |p - P| in
- * [|D| - R, |D| + R].  The sample's own rounding (its L from p - P, the
- * dot products) moves its w.L by less than 2^-30 where |D| - R >= 2^-16 of
- * the coordinates' size; the margin E = 2^-20 covers it, and the rounding
- * of this bound, many times over.
+ * V.R = L.M exactly for M = 2(N.V)N - V; so with D = C - P, for a fixed
+ * w (N or M), w.L <= (D.w + R|w|) / |p - P|, |p - P| in [|D| - R,
+ * |D| + R].  The sample's own rounding (its L from p - P, the dot
+ * products) moves its w.L by less than 2^-40; the margin E = 2^-20 covers
+ * it, and the rounding of this bound, formed only where |D| - R >= 2^-16
+ * of the coordinates' size (so |D| - R is known to 2^-30 of itself), many
+ * times over.
  */
 static int light_dark(const surface *s, const light_setup *setup)
 {
