@@ -299,6 +299,61 @@ START_TEST(test_bvh_visit_matches_brute_force)
 }
 END_TEST
 
+typedef struct count_list {
+    int per_prim[2100];
+    long calls;
+} count_list;
+
+static int count_into(void *ctx, bvh_ref ref, int crossings)
+{
+    count_list *l = ctx;
+    ck_assert_int_gt(crossings, 0);
+    l->per_prim[ref.prim] += crossings;
+    l->calls++;
+    return 0;
+}
+
+/* The count walk (bvh_visit_counts: the shadow rays') gives every part the
+ * number of crossings isect_prim_all finds, the two planes (unbounded,
+ * counted by isect_plane_crossings at once) and a third plane moved by a
+ * transform (counted through its local frame) included. */
+START_TEST(test_bvh_visit_counts_match_brute_force)
+{
+    int n = 2000;
+    scene_prim *prims = random_scene(310, n, 2);
+    prims = realloc(prims, (size_t)(n + 3) * sizeof *prims);
+    ck_assert_ptr_nonnull(prims);
+    prims[n + 2] = prims[n];
+    prims[n + 2].has_xform = 1;
+    prims[n + 2].to_world = xform_translate(vec_make(0, 4, 0));
+    ck_assert(xform_invert(&prims[n + 2].to_world, &prims[n + 2].to_local));
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n + 3, NULL));
+    ck_assert_int_eq(b.unbounded_count, 3);
+    rng g = {311, 0};
+    long planes = 0;
+    for (int i = 0; i < 3000; i++) {
+        ray r = random_ray(&g, prims, n + 3, i);
+        if (i % 2)
+            r.tmax = 0.5 + 20 * rng_uniform(&g);
+        static count_list got;
+        memset(&got, 0, sizeof got);
+        bvh_stats st = {0, 0};
+        bvh_visit_counts(&b, prims, &r, count_into, &got, &st);
+        for (int k = 0; k < n + 3; k++) {
+            hit out[ISECT_MAX_CROSSINGS];
+            int want = isect_prim_all(&prims[k], &r, out);
+            ck_assert_msg(got.per_prim[k] == want, "ray %d part %d: %d crossings counted, %d found", i, k,
+                          got.per_prim[k], want);
+            planes += k >= n ? want : 0;
+        }
+    }
+    ck_assert_msg(planes > 1000, "the planes crossed only %ld times", planes);
+    bvh_free(&b);
+    free(prims);
+}
+END_TEST
+
 static int stop_with_seven(void *ctx, const hit *h)
 {
     int *calls = ctx;
@@ -683,6 +738,7 @@ Suite *suite_bvh(void)
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, test_bvh_intersect_matches_brute_force);
     tcase_add_test(tc, test_bvh_visit_matches_brute_force);
+    tcase_add_test(tc, test_bvh_visit_counts_match_brute_force);
     tcase_add_test(tc, test_bvh_visit_stops_early);
     tcase_add_test(tc, test_bvh_parallel_ray_in_flat_box_plane);
     tcase_add_test(tc, test_bvh_empty_scene);

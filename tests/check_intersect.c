@@ -1010,6 +1010,61 @@ START_TEST(test_isect_prim_magnitude)
 }
 END_TEST
 
+/* The count of a plane's crossings (isect_part_crossings: the shadow
+ * walk's, which goes to plane_t at once for a plane in the world frame)
+ * is the number of full hits (isect_prim_all: through plane_point): by
+ * hand on y = 0 from (0, 1, 0) straight down (t = 1, open at both ends of
+ * (tmin, tmax)), then for 2000 random planes and rays, each also with its
+ * interval closed onto the hit's t from either side. */
+START_TEST(test_isect_plane_crossings_match_full_hits)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    scene_prim p = prim_plane(vec_make(0, 0, 0), vec_make(0, 1, 0));
+    ray r = make_ray(vec_make(0, 1, 0), vec_make(0, -1, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
+    r.tmax = 1;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r.tmax = nextafter(1.0, 2.0);
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
+    r.tmin = 1;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r = make_ray(vec_make(0, 1, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    /* Moved up to y = 5 by its transform: above the ray going down from
+     * y = 1, met by the one going up at t = 4. */
+    prim_set_xform(&p, xform_translate(vec_make(0, 5, 0)));
+    r = make_ray(vec_make(0, 1, 0), vec_make(0, -1, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r = make_ray(vec_make(0, 1, 0), vec_make(0, 1, 0));
+    r.tmax = 4;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r.tmax = 4.5;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
+    rng g = {77, 0};
+    for (int i = 0; i < 2000; i++) {
+        p = prim_plane(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
+                       rng_unit(&g));
+        r = make_ray(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
+                     rng_unit(&g));
+        r.tmin = rng_uniform(&g) < 0.5 ? 0 : 1e-3 * rng_uniform(&g);
+        int full = isect_prim_all(&p, &r, out);
+        ck_assert_int_eq(isect_part_crossings(&p, 0, &r), full);
+        if (!full)
+            continue;
+        double t = out[0].t;
+        double ends[4][2] = {{r.tmin, t}, {r.tmin, nextafter(t, HUGE_VAL)}, {t, HUGE_VAL},
+                             {nextafter(t, -HUGE_VAL), HUGE_VAL}};
+        for (int k = 0; k < 4; k++) {
+            r.tmin = ends[k][0];
+            r.tmax = ends[k][1];
+            int n = isect_prim_all(&p, &r, out);
+            ck_assert_int_eq(n, k % 2);
+            ck_assert_int_eq(isect_part_crossings(&p, 0, &r), n);
+        }
+    }
+}
+END_TEST
+
 Suite *suite_intersect(void)
 {
     Suite *s = suite_create("intersect");
@@ -1027,6 +1082,7 @@ Suite *suite_intersect(void)
     suite_add_tcase(s, sphere);
     TCase *sheet = tcase_create("plane_disk");
     tcase_add_test(sheet, test_isect_plane_hit_by_hand);
+    tcase_add_test(sheet, test_isect_plane_crossings_match_full_hits);
     tcase_add_test(sheet, test_isect_plane_parallel_and_behind_miss);
     tcase_add_test(sheet, test_isect_plane_point_on_plane_from_far);
     tcase_add_test(sheet, test_isect_disk_radius_inclusive);

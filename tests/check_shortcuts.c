@@ -430,6 +430,78 @@ static void same_both_ways(const char *text, render_stats *st_on, render_stats *
     scene_free(s);
 }
 
+/*
+ * [SHADE-SHORTCUT-DARK-1] The ball of a distributed light (trace_light_setup's
+ * centre and reach) holds every sample point trace_light_point makes: a
+ * tilted disk and a skewed rectangle far from the origin, 20 000 keys of 64
+ * samples each.  Its reach is the disk's radius and the rectangle's half
+ * diagonal, to within 2^-20 (a ball of reach 0, the light's centre alone,
+ * or of half the true size would fail the first loop).
+ */
+START_TEST(test_shortcuts_dark_light_ball_holds_samples)
+{
+    scene_model *s = load("image { width 1 height 1 }\n"
+                          "camera { eye [0, 0, 5] look_at [0, 0, 0] }\n"
+                          "distributed_light { disk [1000.5, -3, 7] [0.3, -1, 0.6] 2.5 power 1 samples 64 }\n"
+                          "distributed_light { rectangle [-20, 4, 1e4] [3, 0.5, 0] [1, 0, 2] power 1 samples 64 }\n"
+                          "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n");
+    ck_assert_int_eq(s->light_count, 2);
+    /* The diagonals of the rectangle: |(4, 0.5, 2)| and |(2, 0.5, -2)|. */
+    const double expect[2] = {2.5, 0.5 * sqrt(16 + 0.25 + 4)};
+    for (int li = 0; li < 2; li++) {
+        light_setup setup = trace_light_setup(&s->lights[li], 64);
+        ck_assert_msg(setup.reach >= expect[li] && setup.reach <= expect[li] * (1 + 0x1p-20), "light %d: reach %.17g",
+                      li, setup.reach);
+        double far = 0;
+        for (uint64_t key = 0; key < 20000; key++)
+            for (int j = 0; j < 64; j++) {
+                vec3 p = trace_light_point(&s->lights[li], &setup, li, key, j);
+                double d = vec_length(vec_sub(p, setup.centre));
+                ck_assert_msg(d <= setup.reach, "light %d key %d sample %d: %.17g from the centre, reach %.17g", li,
+                              (int)key, j, d, setup.reach);
+                far = d > far ? d : far;
+            }
+        /* The samples reach out to the rim: the ball is not loose by much. */
+        ck_assert_msg(far > 0.95 * expect[li], "light %d: farthest sample %.17g", li, far);
+    }
+    scene_free(s);
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-DARK-1] Whole lights left out at a point: a ball under a
+ * disk light and a rectangle light (each large: a ball of reach 0 would
+ * leave out samples near the terminator and the highlights' rims), an
+ * opaque ball (its lower half faces away from both lights) and a glass
+ * ball (Kd 0) for shininess 0, 30, 1000 and 1e6 and for Ks 0.  The same
+ * bits with the shortcuts on and off, and lights were left out whole
+ * (dark_lights > 0).  max_depth 1 and no ambient: the glass pixels are
+ * highlights alone.
+ */
+START_TEST(test_shortcuts_dark_lights_both_ways)
+{
+    static const char *const materials[] = {"Kd 0.6 Ks 0.3 n 50", "Kd 0 Ks 0.5 n 0 t 0.5 ior 1.5",
+                                            "Kd 0 Ks 0.5 n 30 t 0.5 ior 1.5", "Kd 0 Ks 0.5 n 1000 t 0.5 ior 1.5",
+                                            "Kd 0 Ks [0, 0.5, 0] n 1e6 t 0.5 ior 1.5", "Kd 0 Ks 0 t 0.7 ior 1.3"};
+    for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "image { width 40 height 40 max_depth 1 }\n"
+                 "camera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n"
+                 "distributed_light { disk [-1.5, 3.5, 1] [0.5, -1, 0] 1.2 power 3 samples 9 }\n"
+                 "distributed_light { rectangle [1, 2.2, -1] [1.5, 0, 0] [0, 0.4, 1.5] power 3 samples 12 }\n"
+                 "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+                 "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
+                 materials[i]);
+        render_stats st_on, st_off;
+        same_both_ways(text, &st_on, &st_off);
+        ck_assert_msg(st_on.trace.dark_lights > 0, "%s: no light left out", materials[i]);
+        ck_assert_int_eq(st_off.trace.dark_lights, 0);
+        ck_assert_int_eq(st_on.trace.light_samples, st_off.trace.light_samples);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-OFF-1] A glass ball (t 0.5, radius 4) around three
  * shells of six coincident opaque balls each (radii 3, 2, 1; six, so that
  * each shell is one interface of the tracer), seen from outside: 19 solids.
@@ -513,6 +585,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);
     tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
+    tcase_add_test(tc, test_shortcuts_dark_light_ball_holds_samples);
+    tcase_add_test(tc, test_shortcuts_dark_lights_both_ways);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);

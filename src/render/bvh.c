@@ -423,10 +423,24 @@ static int traverse_all(const bvh *b, const walk *w)
     }
 }
 
+/* An unbounded part (every walk tests it): a plane in the world frame is
+ * counted by isect_plane_crossings at once, as isect_part_crossings would
+ * count it, without visit_part's frame for hits. */
+static int visit_unbounded(const walk *w, bvh_ref ref)
+{
+    const scene_prim *p = &w->prims[ref.prim];
+    if (!w->count_fn || p->kind != PRIM_PLANE || p->has_xform)
+        return visit_part(w, ref);
+    if (w->stats)
+        w->stats->prims_tested++;
+    int n = isect_plane_crossings(p->u.plane.point, p->u.plane.normal, w->r);
+    return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
+}
+
 static int walk_all(const bvh *b, const walk *w)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
-        int stop = visit_part(w, b->unbounded[i]);
+        int stop = visit_unbounded(w, b->unbounded[i]);
         if (stop)
             return stop;
     }

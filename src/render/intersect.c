@@ -783,9 +783,19 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
     return isect_part_crossings_sheared(p, part, r, NULL);
 }
 
+int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
+{
+    real t;
+    return plane_t(point, normal, r, &t);
+}
+
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
+    /* A plane in the world frame (the unbounded parts every walk tests):
+     * plane_hits' bare count, without the dispatch through part_hits. */
+    if (p->kind == PRIM_PLANE && !p->has_xform)
+        return isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r);
     return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 1);
 }
 

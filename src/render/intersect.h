@@ -125,6 +125,9 @@ int isect_part_sheared(const scene_prim *p, int part, ray *r, const isect_shear 
 int isect_part_all_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh,
                            hit out[ISECT_MAX_CROSSINGS]);
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh);
+/* isect_part_crossings of a plane without a transform (point, unit
+ * normal): 0 or 1. */
+int isect_plane_crossings(vec3 point, vec3 normal, const ray *r);
 
 /*
  * Hot records: what the hit test of a sphere without a transform (centre,

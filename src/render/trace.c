@@ -249,6 +249,82 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     }
 }
 
+static real max_abs(vec3 a)
+{
+    real m = fabs(a.x) > fabs(a.y) ? fabs(a.x) : fabs(a.y);
+    return m > fabs(a.z) ? m : fabs(a.z);
+}
+
+/*
+ * [SHADE-SHORTCUT-DARK-1] The ball around a distributed light that holds
+ * every point light_point returns.  A disk's point is position + t1 (x r) +
+ * t2 (y r) with x^2 + y^2 <= 1 (+ a few ulps: r cos, r sin of libm), so
+ * |t1 x + t2 y|^2 <= (x^2 + y^2) (max(|t1|^2, |t2|^2) + |t1.t2|) (from
+ * 2|xy| <= x^2 + y^2); a rectangle's point is within half its longer
+ * diagonal of its centre.  The factor 1 + 2^-30 and the term 2^-40 of the
+ * coordinates' size cover the rounding of the bound and of the point (a
+ * few ulps each).  Coordinates past 2^400: no ball (reach -1).
+ */
+static void light_ball(const scene_light *light, light_setup *setup)
+{
+    real size;
+    setup->reach = -1;
+    if (light->kind == LIGHT_DISK) {
+        real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
+        real spread = (t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2));
+        size = max_abs(light->position) + light->radius;
+        setup->centre = light->position;
+        setup->reach = light->radius * sqrt(spread);
+    } else if (light->kind == LIGHT_RECTANGLE) {
+        vec3 across = vec_add(light->edge_u, light->edge_v), along = vec_sub(light->edge_u, light->edge_v);
+        real a = vec_length2(across), b = vec_length2(along);
+        size = max_abs(light->position) + max_abs(light->edge_u) + max_abs(light->edge_v);
+        setup->centre = vec_add(light->position, vec_scale(across, 0.5));
+        setup->reach = 0.5 * sqrt(a > b ? a : b);
+    } else {
+        return;
+    }
+    setup->reach = setup->reach * (1 + 0x1p-30) + 0x1p-40 * 4 * size;
+    if (!(size < 0x1p400 && setup->reach < 0x1p400))
+        setup->reach = -1;
+}
+
+/*
+ * [SHADE-SHORTCUT-DARK-1] Whether every sample of a distributed light is
+ * surely skipped at this point by add_source's own gates: N.L <= 0
+ * ([SHADE-SHORTCUT-GATE-1]) for every sample, or, where Kd = 0, V.R <=
+ * lobe_floor ([SHADE-SHORTCUT-LOBE-2]) for every sample.  A sample L is
+ * (p - P)/|p - P| with p in the light's ball (centre C, reach R), and
+ * V.R = L.M exactly for M = 2(N.V)N - V; so with D = C - P, for a fixed
+ * w (N or M), w.L <= (D.w + R|w|) / |p - P|, |p - P| in [|D| - R,
+ * |D| + R].  The sample's own rounding (its L from p - P, the dot
+ * products) moves its w.L by less than 2^-40; the margin E = 2^-20 covers
+ * it, and the rounding of this bound, formed only where |D| - R >= 2^-16
+ * of the coordinates' size (so |D| - R is known to 2^-30 of itself), many
+ * times over.
+ */
+static int light_dark(const surface *s, const light_setup *setup)
+{
+    const real e = 0x1p-20;
+    vec3 p = s->h->point;
+    real size = max_abs(p) + max_abs(setup->centre) + setup->reach;
+    if (!(setup->reach >= 0 && size < 0x1p400))
+        return 0;
+    vec3 d = vec_sub(setup->centre, p);
+    real dist = sqrt(vec_length2(d)), gap = dist - setup->reach;
+    if (!(gap >= 0x1p-16 * size))
+        return 0;
+    if (vec_dot(d, s->n) + setup->reach * sqrt(vec_length2(s->n)) <= -e * (dist + setup->reach))
+        return 1;
+    if (!s->no_body)
+        return 0;
+    if (!s->highlight)
+        return 1;
+    vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
+    real top = vec_dot(d, m) + setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
+    return top <= floor * (floor >= 0 ? gap : dist + setup->reach);
+}
+
 light_setup trace_light_setup(const scene_light *light, int samples)
 {
     light_setup setup;
@@ -260,6 +336,7 @@ light_setup trace_light_setup(const scene_light *light, int samples)
     }
     if (light->kind == LIGHT_DISK)
         light_frame(light->normal, &setup.t1, &setup.t2);
+    light_ball(light, &setup);
     return setup;
 }
 
@@ -286,6 +363,15 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
     uint64_t light_key = sampler_key(key, TRACE_KEY_LIGHT + (uint64_t)index);
+    /* [SHADE-SHORTCUT-DARK-1] Every sample would add nothing and send no
+     * shadow ray: none is made.  The ray-tree hash notes each sample's side
+     * of the light, so it takes them one by one. */
+    if (!t->no_shortcuts && !st->record_path && light_dark(s, setup)) {
+        st->light_samples += setup->samples;
+        st->dark_lights++;
+        cancel_steps(st->cancel, setup->samples);
+        return;
+    }
     for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
         add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, sum, st);
 }

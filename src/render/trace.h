@@ -27,6 +27,7 @@ typedef struct trace_stats {
     long tir_rays;            /* mirror rays taken on total internal reflection */
     long light_samples;       /* point-source evaluations, distributed samples each */
     long lights_on_surface;   /* samples skipped: the light sits on the shaded point */
+    long dark_lights;
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
@@ -58,6 +59,11 @@ typedef struct light_setup {
     rgb power;          /* each source's: shade_sample_power(power, samples) */
     light_grid grid;
     vec3 t1, t2;
+    /* A ball holding every sample point light_point can return (rounding
+     * included): centre and reach, reach < 0 where none is known
+     * ([SHADE-SHORTCUT-DARK-1]). */
+    vec3 centre;
+    real reach;
 } light_setup;
 
 /* The transparent solids a ray is inside, innermost last (nested glass).
