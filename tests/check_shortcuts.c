@@ -519,7 +519,14 @@ START_TEST(test_shortcuts_dark_light_subnormal_distance)
                        "distributed_light { disk [0, 1e-160, 1e-160] [0, -1, 0] 1e-175 power 1e300 samples 1 "
                        "falloff inverse_square }\n"
                        "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 1000000 } }\n";
+    /* A rectangle light 1e-170 across, 2e-161 away, n 1e7: 42 channels. */
+    const char *rect = "image { width 64 height 64 samples 1 max_depth 1 background 0 }\n"
+                       "camera { perspective eye [0, 2e-161, -2e-161] look_at [0, 0, 0] up [0, 1, 0] fov 8 }\n"
+                       "distributed_light { rectangle [0, 2e-161, 2e-161] [1e-170, 0, 0] [0, 0, 1e-170] power 1 "
+                       "samples 4 falloff inverse_square }\n"
+                       "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 1e7 } }\n";
     render_stats st_on, st_off;
+    same_both_ways(rect, &st_on, &st_off);
     same_both_ways(text, &st_on, &st_off);
 }
 END_TEST
