@@ -502,6 +502,35 @@ START_TEST(test_shortcuts_dark_lights_both_ways)
 }
 END_TEST
 
+/* [SHADE-SHORTCUT-DARK-1] (found by an outside attack) A scene 1e-160
+ * across: a mirror-like plane (Kd 0, Ks 1, n 1e6, lobe floor 0.9993) under a
+ * disk light of radius 1e-175 near the mirror direction, power 1e300 (its
+ * intensity saturates).  light_dark's |D| = sqrt(vec_length2(D)) squares
+ * components near 1e-160: |D|^2 is a subnormal near 2^-1062 with some 12
+ * bits, so |D| - R (the gap) can be 2^-13 of itself too large, past the
+ * margin E = 2^-20 of the lobe test; pixels on the rim of the highlight
+ * (V.R just above the floor, lobe up to 2^-1022 times 1e300) are left dark
+ * with the shortcuts on (12 pixels of 64x64 differ, e.g. 592 against 0).
+ * Expected: the same bits both ways. */
+START_TEST(test_shortcuts_dark_light_subnormal_distance)
+{
+    const char *text = "image { width 64 height 64 samples 1 max_depth 1 background 0 }\n"
+                       "camera { perspective eye [0, 1e-160, -1e-160] look_at [0, 0, 0] up [0, 1, 0] fov 4 }\n"
+                       "distributed_light { disk [0, 1e-160, 1e-160] [0, -1, 0] 1e-175 power 1e300 samples 1 "
+                       "falloff inverse_square }\n"
+                       "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 1000000 } }\n";
+    /* A rectangle light 1e-170 across, 2e-161 away, n 1e7: 42 channels. */
+    const char *rect = "image { width 64 height 64 samples 1 max_depth 1 background 0 }\n"
+                       "camera { perspective eye [0, 2e-161, -2e-161] look_at [0, 0, 0] up [0, 1, 0] fov 8 }\n"
+                       "distributed_light { rectangle [0, 2e-161, 2e-161] [1e-170, 0, 0] [0, 0, 1e-170] power 1 "
+                       "samples 4 falloff inverse_square }\n"
+                       "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 1e7 } }\n";
+    render_stats st_on, st_off;
+    same_both_ways(rect, &st_on, &st_off);
+    same_both_ways(text, &st_on, &st_off);
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-OFF-1] A glass ball (t 0.5, radius 4) around three
  * shells of six coincident opaque balls each (radii 3, 2, 1; six, so that
  * each shell is one interface of the tracer), seen from outside: 19 solids.
@@ -587,6 +616,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_test(tc, test_shortcuts_dark_light_ball_holds_samples);
     tcase_add_test(tc, test_shortcuts_dark_lights_both_ways);
+    tcase_add_test(tc, test_shortcuts_dark_light_subnormal_distance);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
