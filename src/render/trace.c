@@ -277,10 +277,12 @@ static void light_ball(const scene_light *light, light_setup *setup)
         setup->reach = light->radius * sqrt(spread);
     } else if (light->kind == LIGHT_RECTANGLE) {
         vec3 across = vec_add(light->edge_u, light->edge_v), along = vec_sub(light->edge_u, light->edge_v);
-        real a = vec_length2(across), b = vec_length2(along);
+        /* The scaled length: a squared length below 2^-1022 is subnormal
+         * and its square root off by up to 2^-13 of itself. */
+        real a = vec_length(across), b = vec_length(along);
         size = max_abs(light->position) + max_abs(light->edge_u) + max_abs(light->edge_v);
         setup->centre = vec_add(light->position, vec_scale(across, 0.5));
-        setup->reach = 0.5 * sqrt(a > b ? a : b);
+        setup->reach = 0.5 * (a > b ? a : b);
     } else {
         return;
     }
@@ -298,10 +300,14 @@ static void light_ball(const scene_light *light, light_setup *setup)
  * V.R = L.M exactly for M = 2(N.V)N - V; so with D = C - P, for a fixed
  * w (N or M), w.L <= (D.w + R|w|) / |p - P|, |p - P| in [|D| - R,
  * |D| + R].  The sample's own rounding (its L from p - P, the dot
- * products) moves its w.L by less than 2^-40; the margin E = 2^-20 covers
- * it, and the rounding of this bound, formed only where |D| - R >= 2^-16
- * of the coordinates' size (so |D| - R is known to 2^-30 of itself), many
- * times over.
+ * products) moves its w.L by less than 2^-32: p - P is off by a few ulps
+ * of the coordinates' size, at most 2^-16 of |p - P| >= |D| - R, and
+ * |D| - R >= 2^-400 keeps |p - P|^2, of which add_source takes the square
+ * root, out of the subnormal range (where it has as few as 2^-13 of
+ * relative precision: a scene 1e-160 across lost highlight pixels to this
+ * shortcut before, test_shortcuts_dark_light_subnormal_distance).  The
+ * margin E = 2^-20 covers it, and the rounding of this bound (|D| from the
+ * scaled length) many times over.
  */
 static int light_dark(const surface *s, const light_setup *setup)
 {
@@ -311,8 +317,8 @@ static int light_dark(const surface *s, const light_setup *setup)
     if (!(setup->reach >= 0 && size < 0x1p400))
         return 0;
     vec3 d = vec_sub(setup->centre, p);
-    real dist = sqrt(vec_length2(d)), gap = dist - setup->reach;
-    if (!(gap >= 0x1p-16 * size))
+    real dist = vec_length(d), gap = dist - setup->reach;
+    if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
         return 0;
     if (vec_dot(d, s->n) + setup->reach * sqrt(vec_length2(s->n)) <= -e * (dist + setup->reach))
         return 1;
