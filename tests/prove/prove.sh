@@ -37,7 +37,7 @@ fi
 fc() { frama-c -cpp-extra-args="-I$src -I$out -Itests/prove -DNDEBUG $1" "${@:2}"; }
 status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
-ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make
+ISECT_FCT=isect_quotient,held_root,isect_sphere_roots,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make,lemma_dot_difference,lemma_plane_gap
 
 # Eva: one driver a run.  An alarm is an assertion Eva adds; a clause is one
 # of the contracts' properties in src/ that the run analyses (its status is
