@@ -482,6 +482,108 @@ static real incidence_cos(vec3 d, vec3 n, real *lo)
 }
 
 /*
+ * Lemma functions of Snell's law for shade_refract's direction (ghost code,
+ * make prove only: see the block in base/vec.h).  For unit d and n with
+ * d.n <= 0: c = -d.n, along = d + c n is orthogonal to n with |along|^2 =
+ * 1 - c^2, so w = s1 along - sqrt(k) n has |w|^2 = s1^2 (1 - c^2) + k =
+ * s2^2; the unit u along w with u.w > 0 is w/s2, and u x n = (s1/s2) d x n:
+ * n2 (t x n) = n1 (d x n), the vector form of n1 sin th1 = n2 sin th2.
+ */
+/*@ ghost
+  /@ assigns \nothing;
+     ensures EXACT(vnorm2(n) * vnorm2(d) - vdot(n, d) * vdot(n, d) ==
+                   (n.y * d.z - n.z * d.y) * (n.y * d.z - n.z * d.y) + (n.z * d.x - n.x * d.z) * (n.z * d.x - n.x * d.z) +
+                   (n.x * d.y - n.y * d.x) * (n.x * d.y - n.y * d.x)); @/
+  static void lemma_lagrange(vec3 n, vec3 d) { }
+
+  /@ requires EXACT(vnorm2(n) == 1 && vnorm2(d) == 1);
+     assigns \nothing;
+     ensures EXACT(vdot(n, d) * vdot(n, d) <= 1); @/
+  static void lemma_cauchy(vec3 n, vec3 d)
+  {
+      lemma_lagrange(n, d);
+  }
+
+  /@ requires EXACT(x * x <= 1);
+     assigns \nothing;
+     ensures EXACT(-1 <= x <= 1); @/
+  static void lemma_square_below_one(real x) { }
+
+  /@ requires EXACT(vnorm2(d) == 1 && vnorm2(n) == 1 && c == -vdot(n, d));
+     requires EXACT(al.x == d.x + n.x * c && al.y == d.y + n.y * c && al.z == d.z + n.z * c);
+     assigns \nothing;
+     ensures EXACT(vdot(al, n) == 0 && vnorm2(al) == 1 - c * c); @/
+  static void lemma_along(vec3 d, vec3 n, vec3 al, real c) { }
+
+  /@ requires EXACT(w == a * s + m * (-g));
+     assigns \nothing;
+     ensures EXACT(w * w == s * s * (a * a) - 2 * s * g * (a * m) + g * g * (m * m)); @/
+  static void lemma_square_combo(real w, real a, real m, real s, real g) { }
+
+  /@ requires EXACT(w.x == al.x * s1 + n.x * (-g) && w.y == al.y * s1 + n.y * (-g) && w.z == al.z * s1 + n.z * (-g));
+     assigns \nothing;
+     ensures EXACT(vnorm2(w) == s1 * s1 * vnorm2(al) - 2 * s1 * g * vdot(al, n) + g * g * vnorm2(n)); @/
+  static void lemma_norm_combo(vec3 w, vec3 al, vec3 n, real s1, real g)
+  {
+      lemma_square_combo(w.x, al.x, n.x, s1, g);
+      lemma_square_combo(w.y, al.y, n.y, s1, g);
+      lemma_square_combo(w.z, al.z, n.z, s1, g);
+  }
+
+  /@ requires EXACT(vdot(al, n) == 0 && vnorm2(al) == 1 - c * c && vnorm2(n) == 1);
+     requires EXACT(g * g == k && k == snell_k(s1, s2, c));
+     requires EXACT(w.x == al.x * s1 + n.x * (-g) && w.y == al.y * s1 + n.y * (-g) && w.z == al.z * s1 + n.z * (-g));
+     assigns \nothing;
+     ensures EXACT(vnorm2(w) == s2 * s2); @/
+  static void lemma_refract_length(vec3 al, vec3 n, vec3 w, real s1, real s2, real c, real g, real k)
+  {
+      lemma_norm_combo(w, al, n, s1, g);
+  }
+
+  /@ requires EXACT(ux * wy == uy * wx && uz * wx == ux * wz);
+     assigns \nothing;
+     ensures EXACT((wx * wx + wy * wy + wz * wz) * ux == (ux * wx + uy * wy + uz * wz) * wx); @/
+  static void lemma_parallel_component(real ux, real uy, real uz, real wx, real wy, real wz) { }
+
+  /@ requires EXACT(u.x * w.y == u.y * w.x && u.y * w.z == u.z * w.y && u.z * w.x == u.x * w.z);
+     assigns \nothing;
+     ensures EXACT(vdot(u, w) * vdot(u, w) == vnorm2(u) * vnorm2(w)); @/
+  static void lemma_parallel_dot(vec3 u, vec3 w)
+  {
+      lemma_lagrange(u, w);
+  }
+
+  /@ requires EXACT(s > 0 && p > 0 && p * p == s * s);
+     assigns \nothing;
+     ensures EXACT(p == s); @/
+  static void lemma_positive_root(real p, real s) { }
+
+  /@ requires EXACT(s > 0 && vnorm2(w) == s * s && vnorm2(u) == 1 && vdot(u, w) > 0);
+     requires EXACT(u.x * w.y == u.y * w.x && u.y * w.z == u.z * w.y && u.z * w.x == u.x * w.z);
+     assigns \nothing;
+     ensures EXACT(u.x * s == w.x && u.y * s == w.y && u.z * s == w.z); @/
+  static void lemma_parallel_scale(vec3 u, vec3 w, real s)
+  {
+      lemma_parallel_component(u.x, u.y, u.z, w.x, w.y, w.z);
+      lemma_parallel_component(u.y, u.z, u.x, w.y, w.z, w.x);
+      lemma_parallel_component(u.z, u.x, u.y, w.z, w.x, w.y);
+      lemma_parallel_dot(u, w);
+      lemma_positive_root(u.x * w.x + u.y * w.y + u.z * w.z, s);
+  }
+
+  /@ requires EXACT(s2 > 0 && s1 * n2 == s2 * n1);
+     requires EXACT(u.x * s2 == w.x && u.y * s2 == w.y && u.z * s2 == w.z);
+     requires EXACT(w.x == al.x * s1 + n.x * (-g) && w.y == al.y * s1 + n.y * (-g) && w.z == al.z * s1 + n.z * (-g));
+     requires EXACT(al.x == d.x + n.x * c && al.y == d.y + n.y * c && al.z == d.z + n.z * c);
+     assigns \nothing;
+     ensures EXACT(n2 * (u.y * n.z - u.z * n.y) == n1 * (d.y * n.z - d.z * n.y) &&
+                   n2 * (u.z * n.x - u.x * n.z) == n1 * (d.z * n.x - d.x * n.z) &&
+                   n2 * (u.x * n.y - u.y * n.x) == n1 * (d.x * n.y - d.y * n.x)); @/
+  static void lemma_snell_cross(vec3 d, vec3 n, vec3 al, vec3 w, vec3 u, real c, real g, real s1, real s2,
+                                real n1, real n2) { }
+*/
+
+/*
  * With c = cos th1, the part of d along the surface is d + c n (length
  * sin th1).  Snell keeps its direction and scales it by eta = n1/n2; the
  * part along -n has length cos th2 = sqrt(k)/n2 (see refract_discriminant):
