@@ -241,13 +241,31 @@ static real held_root(real num, real den)
   }
 
   // a graze (root = 0): |l| = R, and the foot is on the sphere
-  /@ requires EXACT(a > 0 && r > 0 && ll >= 0 && ll * ll == vnorm2(l));
+  /@ requires EXACT(p == x * y && p == 0 && y * y > 0);
+     assigns \nothing;
+     ensures EXACT(x == 0); @/
+  static void lemma_product_zero(real x, real y, real p) { }
+
+  /@ requires EXACT(a > 0 && ag == a * gap && sa * sa == ag && sa == 0);
+     assigns \nothing;
+     ensures EXACT(gap == 0); @/
+  static void lemma_zero_gap(real a, real gap, real ag, real sa) { }
+
+  /@ requires EXACT(x == y);
+     assigns \nothing;
+     ensures EXACT(x * x == y * y); @/
+  static void lemma_equal_square(real x, real y) { }
+
+  /@ requires EXACT(a > 0 && r > 0 && ll >= 0);
      requires EXACT(gap == r - ll && ag == a * gap && rl == r + ll && sa * sa == ag && sb * sb == rl);
      requires EXACT(root == sa * sb && root == 0);
      assigns \nothing;
-     ensures EXACT(ll * ll == r * r); @/
-  static void lemma_graze_scalar(vec3 l, real r, real a, real ll, real gap, real ag, real rl, real sa, real sb,
-                                 real root) { }
+     ensures EXACT(ll == r); @/
+  static void lemma_graze_scalar(real r, real a, real ll, real gap, real ag, real rl, real sa, real sb, real root)
+  {
+      lemma_product_zero(sa, sb, root);
+      lemma_zero_gap(a, gap, ag, sa);
+  }
 
   /@ requires EXACT(a > 0 && r > 0 && ll >= 0 && ll * ll == vnorm2(l));
      requires EXACT(l.x == f.x + d.x * s && l.y == f.y + d.y * s && l.z == f.z + d.z * s);
@@ -260,7 +278,8 @@ static real held_root(real num, real den)
   {
       lemma_sqrt_square(sa, ag);
       lemma_sqrt_square(sb, rl);
-      lemma_graze_scalar(l, r, a, ll, gap, ag, rl, sa, sb, root);
+      lemma_graze_scalar(r, a, ll, gap, ag, rl, sa, sb, root);
+      lemma_equal_square(ll, r);
       lemma_dist_line(f, d, l, s);
   }
 */
