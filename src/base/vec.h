@@ -139,6 +139,11 @@ typedef vec3 rgb;
      ensures EXACT(m * r >= 0 && (m * r) * (m * r) == vnorm2(a)); @/
   static void lemma_scaled_root(vec3 a, real m, real r, real s2) { }
 
+  /@ requires EXACT(i * d == 1);
+     assigns \nothing;
+     ensures EXACT((x * i) * d == x); @/
+  static void lemma_inverse_back(real x, real i, real d) { }
+
   /@ requires EXACT(l > 0 && l * l * vnorm2(u) == l * l);
      assigns \nothing;
      ensures EXACT(vnorm2(u) == 1); @/

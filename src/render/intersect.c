@@ -1285,6 +1285,9 @@ static vec3 unit_toward(vec3 to, real *dist)
     if (d > 1 / REAL_MAX) {
         real inv = 1.0 / d;
         /*@ assert EXACT(inv * d == 1); */
+        /* with vec_length_fast's d^2 = |to|^2 among the hypotheses the
+         * provers no longer close the z part alone (round 6) */
+        /*@ ghost lemma_inverse_back(to.x, inv, d); lemma_inverse_back(to.y, inv, d); lemma_inverse_back(to.z, inv, d); */
         /*@ assert EXACT((to.x * inv) * d == to.x && (to.y * inv) * d == to.y && (to.z * inv) * d == to.z); */
         return vec_scale(to, inv);
     }
