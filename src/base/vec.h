@@ -98,6 +98,71 @@ typedef vec3 rgb;
 
 */
 
+/*
+ * Lemma functions (ghost code: make prove only, the compiler sees a
+ * comment; spec/proofs.md, "Admitted", round 6).  Each states one nonlinear
+ * step of exact arithmetic; WP proves it alone, from its own requires, and
+ * a ghost call puts its instance into the proof that needs it.  The
+ * provers, given the whole goal, neither find such an instance of a lemma
+ * nor take two such steps in one goal (a substitution into a product, a
+ * quotient by a positive divisor).  Eva reads every clause as \true; a
+ * ghost call passes variables only, so Eva finds no arithmetic in it.
+ */
+/*@ ghost
+  /@ requires EXACT(m > 0 && s == x / m);
+     assigns \nothing;
+     ensures EXACT(m * m * (s * s) == x * x); @/
+  static void lemma_square_quotient(real x, real m, real s) { }
+
+  /@ requires EXACT(m != 0 && s == x / m && t == y / m);
+     assigns \nothing;
+     ensures EXACT(s * y == t * x); @/
+  static void lemma_quotient_cross(real x, real y, real m, real s, real t) { }
+
+  /@ requires EXACT(m > 0 && s.x == a.x / m && s.y == a.y / m && s.z == a.z / m);
+     assigns \nothing;
+     ensures EXACT(m * m * vnorm2(s) == vnorm2(a)); @/
+  static void lemma_norm_quotient(vec3 a, real m, vec3 s)
+  {
+      lemma_square_quotient(a.x, m, s.x);
+      lemma_square_quotient(a.y, m, s.y);
+      lemma_square_quotient(a.z, m, s.z);
+  }
+
+  /@ requires EXACT(s2 >= 0 && r == \sqrt(s2));
+     assigns \nothing;
+     ensures EXACT(r >= 0 && r * r == s2); @/
+  static void lemma_sqrt_square(real r, real s2) { }
+
+  /@ requires EXACT(r >= 0 && r * r == s2 && m > 0 && m * m * s2 == vnorm2(a));
+     assigns \nothing;
+     ensures EXACT(m * r >= 0 && (m * r) * (m * r) == vnorm2(a)); @/
+  static void lemma_scaled_root(vec3 a, real m, real r, real s2) { }
+
+  /@ requires EXACT(i * d == 1);
+     assigns \nothing;
+     ensures EXACT((x * i) * d == x); @/
+  static void lemma_inverse_back(real x, real i, real d) { }
+
+  /@ requires EXACT(l > 0 && l * l * vnorm2(u) == l * l);
+     assigns \nothing;
+     ensures EXACT(vnorm2(u) == 1); @/
+  static void lemma_cancel_square(real l, vec3 u) { }
+
+  /@ requires EXACT(l > 0 && l * l == vnorm2(a) && u.x == a.x / l && u.y == a.y / l && u.z == a.z / l);
+     assigns \nothing;
+     ensures EXACT(vnorm2(u) == 1);
+     ensures EXACT(u.x * a.y == u.y * a.x && u.y * a.z == u.z * a.y && u.z * a.x == u.x * a.z); @/
+  static void lemma_unit_quotient(vec3 a, real l, vec3 u)
+  {
+      lemma_norm_quotient(a, l, u);
+      lemma_cancel_square(l, u);
+      lemma_quotient_cross(a.x, a.y, l, u.x, u.y);
+      lemma_quotient_cross(a.y, a.z, l, u.y, u.z);
+      lemma_quotient_cross(a.z, a.x, l, u.z, u.x);
+  }
+*/
+
 /*@ assigns \nothing;
     ensures EXACT(\result.x == x && \result.y == y && \result.z == z); */
 static inline vec3 vec_make(real x, real y, real z)
@@ -170,16 +235,18 @@ static inline real vec_length2(vec3 a) { return a.x * a.x + a.y * a.y + a.z * a.
     ensures DOUBLES(\max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) >= 0x1p-1072 ==>
                     \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) / 4 <= \result);
     ensures DOUBLES(\result <= 7 * \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))));
-    // admitted (spec/proofs.md, "Admitted"): m sqrt(sum (a/m)^2) is |a|
-    admit ensures EXACT(\result >= 0 && \result * \result == vnorm2(a)); */
+    // m sqrt(sum (a/m)^2) is |a|: the lemma functions above (proved 2026-12-02)
+    ensures EXACT(\result >= 0 && \result * \result == vnorm2(a)); */
 static inline real vec_length(vec3 a)
 {
     real m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (m == 0 || !isfinite(m))
         return m;
     /* Divide rather than multiply by 1/m: 1/m overflows for denormal m. */
-    a = vec_make(a.x / m, a.y / m, a.z / m);
-    return m * sqrt(vec_length2(a));
+    vec3 s = vec_make(a.x / m, a.y / m, a.z / m);
+    real s2 = vec_length2(s), r = sqrt(s2);
+    /*@ ghost lemma_norm_quotient(a, m, s); lemma_sqrt_square(r, s2); lemma_scaled_root(a, m, r, s2); */
+    return m * r;
 }
 
 /* |a| as sqrt(a.a) when a.a can neither overflow nor lose precision to
@@ -192,7 +259,8 @@ static inline real vec_length(vec3 a)
     ensures \is_finite(\result) && \result >= 0;
     ensures DOUBLES(\max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) >= 0x1p-1072 ==>
                     \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))) / 4 <= \result);
-    ensures DOUBLES(\result <= 7 * \max(\abs(a.x), \max(\abs(a.y), \abs(a.z)))); */
+    ensures DOUBLES(\result <= 7 * \max(\abs(a.x), \max(\abs(a.y), \abs(a.z))));
+    ensures EXACT(\result * \result == vnorm2(a));   // either way |a| (2026-12-02) */
 static inline real vec_length_fast(vec3 a)
 {
     /* Decided on the largest component, before squaring: a.a formed an
@@ -204,7 +272,11 @@ static inline real vec_length_fast(vec3 a)
     real ax = fabs(a.x), ay = fabs(a.y), az = fabs(a.z);
     real m = ax > ay ? ax : ay;
     m = m > az ? m : az;
-    return m >= 0x1p-511 && m < 0x1p511 ? sqrt(vec_length2(a)) : vec_length(a);
+    if (!(m >= 0x1p-511 && m < 0x1p511))
+        return vec_length(a);
+    real s2 = vec_length2(a), r = sqrt(s2);
+    /*@ ghost lemma_sqrt_square(r, s2); */
+    return r;
 }
 
 /* Unit vector along a; returns the zero vector for a zero input so that a
@@ -217,12 +289,19 @@ static inline real vec_length_fast(vec3 a)
     ensures DOUBLES(a.x != 0 || a.y != 0 || a.z != 0 ==>
                     \max(\abs(\result.x), \max(\abs(\result.y), \abs(\result.z))) >= 0.125);
     ensures EXACT(!vzero(a) ==> vdot(\result, a) > 0);   // not turned round
-    // admitted (spec/proofs.md, "Admitted"): |a / |a|| = 1
-    admit ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1); */
+    // |a / |a|| = 1 (lemma_unit_quotient; admitted before 2026-12-02)
+    ensures EXACT(!vzero(a) ==> vnorm2(\result) == 1);
+    // along a: every 2x2 minor of (result, a) is 0 (lemma_unit_quotient)
+    ensures EXACT(\result.x * a.y == \result.y * a.x && \result.y * a.z == \result.z * a.y &&
+                  \result.z * a.x == \result.x * a.z); */
 static inline vec3 vec_normalize(vec3 a)
 {
     real len = vec_length(a);
-    return len > 0 ? vec_make(a.x / len, a.y / len, a.z / len) : vec_make(0, 0, 0);
+    if (!(len > 0))
+        return vec_make(0, 0, 0);
+    vec3 u = vec_make(a.x / len, a.y / len, a.z / len);
+    /*@ ghost lemma_unit_quotient(a, len, u); */
+    return u;
 }
 
 /*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z);

@@ -116,6 +116,28 @@ static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max
  * The point is projected back onto the plane, so its error is relative to
  * |p| and |p0|, not to the ray origin (a camera far away).
  */
+/* Lemma functions of plane_t (ghost code, make prove only: see the block
+ * in base/vec.h): a dot product with a difference written out, and the
+ * ring identity that puts t n.d = n.(p0 - o) on the plane. */
+/*@ ghost
+  /@ requires EXACT(w.x == p.x - o.x && w.y == p.y - o.y && w.z == p.z - o.z);
+     assigns \nothing;
+     ensures EXACT(vdot(n, w) == n.x * (p.x - o.x) + n.y * (p.y - o.y) + n.z * (p.z - o.z)); @/
+  static void lemma_dot_difference(vec3 n, vec3 w, vec3 p, vec3 o) { }
+
+  /@ requires EXACT(dn == n.x * dx + n.y * dy + n.z * dz);
+     requires EXACT(w.x == p.x - ox && w.y == p.y - oy && w.z == p.z - oz);
+     assigns \nothing;
+     ensures EXACT(n.x * (ox + t * dx - p.x) + n.y * (oy + t * dy - p.y) + n.z * (oz + t * dz - p.z) ==
+                   t * dn - vdot(n, w)); @/
+  static void lemma_plane_gap(vec3 n, vec3 p, vec3 w, real ox, real oy, real oz, real dx, real dy, real dz,
+                              real t, real dn)
+  {
+      vec3 o = { ox, oy, oz };
+      lemma_dot_difference(n, w, p, o);
+  }
+*/
+
 /*@ requires \valid_read(r) && \valid(t) && \separated(t, r);
     requires vfinite(p0) && vfinite(r->origin) && vfinite(r->dir);
     // within the scene's extent ([LANG-EXTENT-1]; spec/proofs.md, "Hit tests")
@@ -133,8 +155,9 @@ static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
     if (dn == 0.0)
         return 0;
     vec3 w = vec_sub(p0, r->origin);
-    /* admitted (spec/proofs.md, "Admitted"): the dot product written out */
-    /*@ admit EXACT(vdot(n, w) == n.x * (p0.x - r->origin.x) + n.y * (p0.y - r->origin.y) +
+    /* the dot product written out (admitted before 2026-12-02) */
+    /*@ ghost lemma_dot_difference(n, w, p0, r->origin); */
+    /*@ assert EXACT(vdot(n, w) == n.x * (p0.x - r->origin.x) + n.y * (p0.y - r->origin.y) +
                     n.z * (p0.z - r->origin.z)); */
     /* Nearly parallel, t past 2^1020 (it was an infinity the interval
      * rejected): no hit. */
@@ -143,11 +166,12 @@ static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
         return 0;
     /*@ assert EXACT(dn == n.x * r->dir.x + n.y * r->dir.y + n.z * r->dir.z); */
     /*@ assert EXACT(*t * dn == vdot(n, w)); */
-    /* admitted (spec/proofs.md, "Admitted"): a ring identity, dn and
-     * vdot(n, w) being written out above; the provers closed the clause it
-     * gives before isect_quotient's contract came into the context, and do
-     * not close it with it */
-    /*@ admit EXACT(n.x * (r->origin.x + *t * r->dir.x - p0.x) + n.y * (r->origin.y + *t * r->dir.y - p0.y) +
+    /* a ring identity, dn and w written out (admitted before 2026-12-02:
+     * the provers do not close it with isect_quotient's contract in the
+     * context, and close the lemma's instance alone; the ray passed field
+     * by field, read as the clause reads it, after *t is written) */
+    /*@ ghost lemma_plane_gap(n, p0, w, r->origin.x, r->origin.y, r->origin.z, r->dir.x, r->dir.y, r->dir.z, *t, dn); */
+    /*@ assert EXACT(n.x * (r->origin.x + *t * r->dir.x - p0.x) + n.y * (r->origin.y + *t * r->dir.y - p0.y) +
                     n.z * (r->origin.z + *t * r->dir.z - p0.z) == *t * dn - vdot(n, w)); */
     return in_interval(r, *t);
 }
@@ -1277,6 +1301,9 @@ static vec3 unit_toward(vec3 to, real *dist)
     if (d > 1 / REAL_MAX) {
         real inv = 1.0 / d;
         /*@ assert EXACT(inv * d == 1); */
+        /* with vec_length_fast's d^2 = |to|^2 among the hypotheses the
+         * provers no longer close the z part alone (round 6) */
+        /*@ ghost lemma_inverse_back(to.x, inv, d); lemma_inverse_back(to.y, inv, d); lemma_inverse_back(to.z, inv, d); */
         /*@ assert EXACT((to.x * inv) * d == to.x && (to.y * inv) * d == to.y && (to.z * inv) * d == to.z); */
         return vec_scale(to, inv);
     }

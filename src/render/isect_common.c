@@ -69,6 +69,220 @@ static real held_root(real num, real den)
     return q;
 }
 
+/* Lemma functions of isect_sphere_roots' roots on the sphere (ghost code,
+ * make prove only: see the block in base/vec.h).  The derivation of the
+ * comment above, one nonlinear step a lemma: with F = |f|^2, the foot
+ * l = f + s d (s = -b/a) has a |l|^2 = a F - b^2; root^2 = a (R - |l|)
+ * (R + |l|) = a R^2 - a |l|^2; c = F - R^2; (q + b)^2 = root^2; hence
+ * q^2 + 2 b q + a c = 0, and |f + t d|^2 - R^2 = c + 2 t b + t^2 a is 0 at
+ * t = q/a and at t = c/q. */
+/*@ ghost
+  /@ requires EXACT(a == vnorm2(d) && b == vdot(f, d));
+     assigns \nothing;
+     ensures EXACT(vdist2(f, d, t) == vnorm2(f) + 2 * t * b + t * t * a); @/
+  static void lemma_dist_expand(vec3 f, vec3 d, real t, real a, real b) { }
+
+  /@ requires EXACT(u == x + y * s);
+     assigns \nothing;
+     ensures EXACT((x + s * y) * (x + s * y) == u * u); @/
+  static void lemma_square_line(real u, real x, real y, real s) { }
+
+  /@ requires EXACT(l.x == f.x + d.x * s && l.y == f.y + d.y * s && l.z == f.z + d.z * s);
+     assigns \nothing;
+     ensures EXACT(vdist2(f, d, s) == vnorm2(l)); @/
+  static void lemma_dist_line(vec3 f, vec3 d, vec3 l, real s)
+  {
+      lemma_square_line(l.x, f.x, d.x, s);
+      lemma_square_line(l.y, f.y, d.y, s);
+      lemma_square_line(l.z, f.z, d.z, s);
+  }
+
+  /@ requires EXACT(a > 0 && s == -b / a);
+     assigns \nothing;
+     ensures EXACT(a * (vnorm2(f) + 2 * s * b + s * s * a) == a * vnorm2(f) - b * b); @/
+  static void lemma_foot_scalar(vec3 f, real a, real b, real s) { }
+
+  /@ requires EXACT(a > 0 && a == vnorm2(d) && b == vdot(f, d) && s == -b / a);
+     requires EXACT(l.x == f.x + d.x * s && l.y == f.y + d.y * s && l.z == f.z + d.z * s);
+     assigns \nothing;
+     ensures EXACT(a * vnorm2(l) == a * vnorm2(f) - b * b); @/
+  static void lemma_foot_norm(vec3 f, vec3 d, vec3 l, real s, real a, real b)
+  {
+      lemma_dist_line(f, d, l, s);
+      lemma_dist_expand(f, d, s, a, b);
+      lemma_foot_scalar(f, a, b, s);
+  }
+
+  /@ requires EXACT(sa * sa == x && sb * sb == y && root == sa * sb);
+     assigns \nothing;
+     ensures EXACT(root * root == x * y); @/
+  static void lemma_product_square(real root, real sa, real sb, real x, real y) { }
+
+  /@ requires EXACT(\abs(x) == \abs(y));
+     assigns \nothing;
+     ensures EXACT(x * x == y * y); @/
+  static void lemma_abs_square(real x, real y) { }
+
+  /@ requires EXACT(lf * lf == vnorm2(f) && c == (lf - r) * (lf + r));
+     assigns \nothing;
+     ensures EXACT(c == vnorm2(f) - r * r); @/
+  static void lemma_c_norm(vec3 f, real lf, real r, real c) { }
+
+  /@ requires EXACT(a * vnorm2(l) == a * vnorm2(f) - b * b && ll * ll == vnorm2(l) && lf * lf == vnorm2(f));
+     assigns \nothing;
+     ensures EXACT(a * (ll * ll) == a * (lf * lf) - b * b); @/
+  static void lemma_norms_scalar(vec3 f, vec3 l, real a, real b, real ll, real lf) { }
+
+  /@ requires EXACT(a * (ll * ll) == a * (lf * lf) - b * b && ag == a * (r - ll) && rl == r + ll);
+     requires EXACT(root * root == ag * rl && c == (lf - r) * (lf + r) && cs * cs == root * root && q == -(b + cs));
+     assigns \nothing;
+     ensures EXACT(q * q + 2 * b * q + a * c == 0); @/
+  static void lemma_quadratic_scalar(real a, real b, real r, real ll, real lf, real ag, real rl, real root,
+                                     real c, real cs, real q) { }
+
+  /@ requires EXACT(den != 0 && t == num / den);
+     assigns \nothing;
+     ensures EXACT(t * den == num); @/
+  static void lemma_quotient_times(real num, real den, real t) { }
+
+  /@ requires EXACT(a > 0 && t == q / a && q * q + 2 * b * q + a * c == 0);
+     assigns \nothing;
+     ensures EXACT(c + 2 * t * b + t * t * a == 0); @/
+  static void lemma_root_qa(real a, real b, real c, real q, real t)
+  {
+      lemma_quotient_times(q, a, t);
+  }
+
+  /@ requires EXACT(t * q == c);
+     assigns \nothing;
+     ensures EXACT(q * q * (c + 2 * t * b + t * t * a) == c * (q * q + 2 * b * q + a * c)); @/
+  static void lemma_root_cq_ring(real a, real b, real c, real q, real t) { }
+
+  /@ requires EXACT(q != 0 && q * q * (c + 2 * t * b + t * t * a) == c * (q * q + 2 * b * q + a * c));
+     requires EXACT(q * q + 2 * b * q + a * c == 0);
+     assigns \nothing;
+     ensures EXACT(c + 2 * t * b + t * t * a == 0); @/
+  static void lemma_root_cq_cancel(real a, real b, real c, real q, real t) { }
+
+  /@ requires EXACT(q != 0 && t == c / q && q * q + 2 * b * q + a * c == 0);
+     assigns \nothing;
+     ensures EXACT(c + 2 * t * b + t * t * a == 0); @/
+  static void lemma_root_cq(real a, real b, real c, real q, real t)
+  {
+      lemma_quotient_times(c, q, t);
+      lemma_root_cq_ring(a, b, c, q, t);
+      lemma_root_cq_cancel(a, b, c, q, t);
+  }
+
+  /@ requires EXACT(a == vnorm2(d) && b == vdot(f, d) && c == vnorm2(f) - r * r && c + 2 * t * b + t * t * a == 0);
+     assigns \nothing;
+     ensures EXACT(vdist2(f, d, t) == r * r); @/
+  static void lemma_on_sphere(vec3 f, vec3 d, real r, real a, real b, real c, real t)
+  {
+      lemma_dist_expand(f, d, t, a, b);
+  }
+
+  // held_root's two cases: a root below 2^1020 in magnitude is the quotient
+  /@ requires EXACT(a > 0 && a == vnorm2(d) && b == vdot(f, d) && c == vnorm2(f) - r * r);
+     requires EXACT(q * q + 2 * b * q + a * c == 0);
+     requires EXACT(\abs(q) < \abs(a) * 0x1p1020 ==> t == q / a);
+     requires EXACT(\abs(q) >= \abs(a) * 0x1p1020 ==> \abs(t) >= 0x1p1020);
+     assigns \nothing;
+     ensures EXACT(\abs(t) < 0x1p1020 ==> vdist2(f, d, t) == r * r); @/
+  static void lemma_held_qa(vec3 f, vec3 d, real r, real a, real b, real c, real q, real t)
+  {
+      if (t < 0x1p1020 && t > -0x1p1020) {
+          lemma_root_qa(a, b, c, q, t);
+          lemma_on_sphere(f, d, r, a, b, c, t);
+      }
+  }
+
+  /@ requires EXACT(a == vnorm2(d) && b == vdot(f, d) && c == vnorm2(f) - r * r);
+     requires EXACT(q * q + 2 * b * q + a * c == 0);
+     requires EXACT(\abs(c) < \abs(q) * 0x1p1020 ==> t == c / q);
+     requires EXACT(\abs(c) >= \abs(q) * 0x1p1020 ==> \abs(t) >= 0x1p1020);
+     assigns \nothing;
+     ensures EXACT(\abs(t) < 0x1p1020 ==> vdist2(f, d, t) == r * r); @/
+  static void lemma_held_cq(vec3 f, vec3 d, real r, real a, real b, real c, real q, real t)
+  {
+      if (t < 0x1p1020 && t > -0x1p1020) {
+          lemma_root_cq(a, b, c, q, t);
+          lemma_on_sphere(f, d, r, a, b, c, t);
+      }
+  }
+
+  // the two roots (root > 0)
+  /@ requires EXACT(a > 0 && a == vnorm2(d) && b == vdot(f, d) && s == -b / a);
+     requires EXACT(l.x == f.x + d.x * s && l.y == f.y + d.y * s && l.z == f.z + d.z * s);
+     requires EXACT(ll * ll == vnorm2(l) && gap == r - ll && ag == a * gap && rl == r + ll);
+     requires EXACT(ag >= 0 && rl >= 0 && sa == \sqrt(ag) && sb == \sqrt(rl) && root == sa * sb);
+     requires EXACT(lf * lf == vnorm2(f) && c == (lf - r) * (lf + r) && \abs(cs) == \abs(root) && q == -(b + cs));
+     requires EXACT(\abs(c) < \abs(q) * 0x1p1020 ==> t0 == c / q);
+     requires EXACT(\abs(c) >= \abs(q) * 0x1p1020 ==> \abs(t0) >= 0x1p1020);
+     requires EXACT(\abs(q) < \abs(a) * 0x1p1020 ==> t1 == q / a);
+     requires EXACT(\abs(q) >= \abs(a) * 0x1p1020 ==> \abs(t1) >= 0x1p1020);
+     assigns \nothing;
+     ensures EXACT(\abs(t0) < 0x1p1020 ==> vdist2(f, d, t0) == r * r);
+     ensures EXACT(\abs(t1) < 0x1p1020 ==> vdist2(f, d, t1) == r * r); @/
+  static void lemma_sphere_roots(vec3 f, vec3 d, vec3 l, real r, real a, real b, real s, real ll, real gap,
+                                 real ag, real rl, real sa, real sb, real root, real lf, real c, real cs,
+                                 real q, real t0, real t1)
+  {
+      lemma_foot_norm(f, d, l, s, a, b);
+      lemma_norms_scalar(f, l, a, b, ll, lf);
+      lemma_sqrt_square(sa, ag);
+      lemma_sqrt_square(sb, rl);
+      lemma_product_square(root, sa, sb, ag, rl);
+      lemma_abs_square(cs, root);
+      lemma_quadratic_scalar(a, b, r, ll, lf, ag, rl, root, c, cs, q);
+      lemma_c_norm(f, lf, r, c);
+      lemma_held_cq(f, d, r, a, b, c, q, t0);
+      lemma_held_qa(f, d, r, a, b, c, q, t1);
+  }
+
+  // a graze (root = 0): |l| = R, and the foot is on the sphere
+  /@ requires EXACT(p == x * y && p == 0 && y * y > 0);
+     assigns \nothing;
+     ensures EXACT(x == 0); @/
+  static void lemma_product_zero(real x, real y, real p) { }
+
+  /@ requires EXACT(a > 0 && ag == a * gap && sa * sa == ag && sa == 0);
+     assigns \nothing;
+     ensures EXACT(gap == 0); @/
+  static void lemma_zero_gap(real a, real gap, real ag, real sa) { }
+
+  /@ requires EXACT(x == y);
+     assigns \nothing;
+     ensures EXACT(x * x == y * y); @/
+  static void lemma_equal_square(real x, real y) { }
+
+  /@ requires EXACT(a > 0 && r > 0 && ll >= 0);
+     requires EXACT(gap == r - ll && ag == a * gap && rl == r + ll && sa * sa == ag && sb * sb == rl);
+     requires EXACT(root == sa * sb && root == 0);
+     assigns \nothing;
+     ensures EXACT(ll == r); @/
+  static void lemma_graze_scalar(real r, real a, real ll, real gap, real ag, real rl, real sa, real sb, real root)
+  {
+      lemma_product_zero(sa, sb, root);
+      lemma_zero_gap(a, gap, ag, sa);
+  }
+
+  /@ requires EXACT(a > 0 && r > 0 && ll >= 0 && ll * ll == vnorm2(l));
+     requires EXACT(l.x == f.x + d.x * s && l.y == f.y + d.y * s && l.z == f.z + d.z * s);
+     requires EXACT(gap == r - ll && ag == a * gap && rl == r + ll);
+     requires EXACT(ag >= 0 && rl >= 0 && sa == \sqrt(ag) && sb == \sqrt(rl) && root == sa * sb && root == 0);
+     assigns \nothing;
+     ensures EXACT(vdist2(f, d, s) == r * r); @/
+  static void lemma_sphere_graze(vec3 f, vec3 d, vec3 l, real s, real r, real a, real ll, real gap, real ag,
+                                 real rl, real sa, real sb, real root)
+  {
+      lemma_sqrt_square(sa, ag);
+      lemma_sqrt_square(sb, rl);
+      lemma_graze_scalar(r, a, ll, gap, ag, rl, sa, sb, root);
+      lemma_equal_square(ll, r);
+      lemma_dist_line(f, d, l, s);
+  }
+*/
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
 {
     /* vec_length2, not vec_dot(d, d): the same roundings, but Eva sees
@@ -96,15 +310,19 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     real gap = radius - ll;
     if (!(gap >= 0.0))
         return 0;
-    real root = sqrt(a * gap) * sqrt(radius + ll);
+    /* Each value a name, for the lemma calls (the same operations). */
+    real ag = a * gap, rl = radius + ll, sa = sqrt(ag), sb = sqrt(rl);
+    real root = sa * sb;
     if (root == 0.0) {
+        /*@ ghost lemma_sphere_graze(f, d, l, foot, radius, a, ll, gap, ag, rl, sa, sb, root); */
         t[0] = foot;
         return 1;
     }
     real lf = vec_length_fast(f);
     real c = (lf - radius) * (lf + radius);
-    real q = -(b + copysign(root, b));
+    real cs = copysign(root, b), q = -(b + cs);
     real t0 = held_root(c, q), t1 = held_root(q, a);
+    /*@ ghost lemma_sphere_roots(f, d, l, radius, a, b, foot, ll, gap, ag, rl, sa, sb, root, lf, c, cs, q, t0, t1); */
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;

@@ -53,11 +53,11 @@ int isect_quotient(real num, real den, real *q);
     ensures \result == 2 ==> \is_finite(t[1]) && DOUBLES(\abs(t[1]) <= 0x1p1021);
     ensures EXACT(\result == 2 ==> t[0] <= t[1]);   // doubles too: ordered by a comparison
     ensures EXACT(\result == 1 ==> t[0] == -vdot(f, d) / vnorm2(d));
-    // admitted (spec/proofs.md, "Admitted"): the roots of the quadratic,
-    // a (R^2 - |l|^2) = b^2 - a c and (q + b)^2 = b^2 - a c give it, unless
-    // held at 2^1020
-    admit ensures EXACT(\result >= 1 && \abs(t[0]) < 0x1p1020 ==> vdist2(f, d, t[0]) == radius * radius);
-    admit ensures EXACT(\result == 2 && \abs(t[1]) < 0x1p1020 ==> vdist2(f, d, t[1]) == radius * radius); */
+    // the roots of the quadratic, unless held at 2^1020: a (R^2 - |l|^2) =
+    // b^2 - a c and (q + b)^2 = b^2 - a c give it (lemma_sphere_roots,
+    // lemma_sphere_graze in isect_common.c; admitted before 2026-12-02)
+    ensures EXACT(\result >= 1 && \abs(t[0]) < 0x1p1020 ==> vdist2(f, d, t[0]) == radius * radius);
+    ensures EXACT(\result == 2 && \abs(t[1]) < 0x1p1020 ==> vdist2(f, d, t[1]) == radius * radius); */
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
 /* Fills a hit: prim -1, part 0, no barycentrics, shading normal = n,
  * entering = dir . n < 0. */
