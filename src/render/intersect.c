@@ -13,6 +13,20 @@
 #include "render/isect_common.h"
 #include "base/xform.h"
 
+/* Inlines every call a function makes, recursively, where the body is
+ * visible (with LTO, across files).  For sphere_hits (spec/performance.md,
+ * "Sixth round: the build"): left to itself, gcc's LTO keeps
+ * isect_sphere_roots a call, and the f it passes by value (24 bytes, on the
+ * stack) is stored as three doubles and read back as a 16-byte load, which
+ * the store cannot forward.  Only an inlining hint: the code computed is the
+ * same (-ffp-contract=off), so no bit changes.  gcc and clang (which defines
+ * __GNUC__) know the attribute; Frama-C need not see it. */
+#if defined(__GNUC__) && !defined(__FRAMAC__)
+#define ISECT_FLATTEN __attribute__((flatten))
+#else
+#define ISECT_FLATTEN
+#endif
+
 /*@ requires \valid_read(r);
     assigns \nothing;
     ensures EXACT(\result != 0 <==> r->tmin < t < r->tmax);   // doubles too: the comparisons */
@@ -83,7 +97,8 @@ static int sphere_root_possible(const ray *r, real t)
 
 /* bare: only each hit's t (and a mesh triangle's part) is written: a
  * shadow ray needs no more; the same for every shape below. */
-static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max, int bare)
+ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max,
+                                      int bare)
 {
     vec3 f = vec_sub(r->origin, center);
     real t[2];
