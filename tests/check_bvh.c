@@ -46,7 +46,6 @@ static scene_prim prim_blank(scene_prim_kind kind)
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
-    p.to_world = p.to_local = xform_identity();
     return p;
 }
 
@@ -58,8 +57,9 @@ static scene_prim prim_sphere(vec3 c, double radius)
     return p;
 }
 
-/* One random primitive near c of size about s; kind chosen by k. */
-static scene_prim random_prim(rng *g, int k, vec3 c, double s)
+/* One random primitive near c of size about s; kind chosen by k; a local
+ * frame goes to *frame. */
+static scene_prim random_prim(rng *g, int k, vec3 c, double s, scene_frame *frame)
 {
     scene_prim p;
     switch (k % 7) {
@@ -94,21 +94,26 @@ static scene_prim random_prim(rng *g, int k, vec3 c, double s)
         xform rot = xform_rotate_xyz(rng_box(g, 0, 360)), mv = xform_translate(c);
         xform rs = xform_compose(&rot, &sc);
         p.has_xform = 1;
-        p.to_world = xform_compose(&mv, &rs);
-        ck_assert(xform_invert(&p.to_world, &p.to_local));
+        frame->to_world = xform_compose(&mv, &rs);
+        ck_assert(xform_invert(&frame->to_world, &frame->to_local));
+        p.frame = frame;
         return p;
     }
     }
 }
 
-/* count primitives in [0,10]^3 plus two planes at the end. */
-static scene_prim *random_scene(uint64_t seed, int count, int planes)
+/* count primitives in [0,10]^3 plus two planes at the end; their local
+ * frames in *frames (to be freed with them), which has one spare entry at
+ * count. */
+static scene_prim *random_scene(uint64_t seed, int count, int planes, scene_frame **frames)
 {
     rng g = {seed, 0};
     scene_prim *prims = calloc((size_t)count + 2, sizeof *prims);
+    *frames = calloc((size_t)count + 1, sizeof **frames);
     ck_assert_ptr_nonnull(prims);
+    ck_assert_ptr_nonnull(*frames);
     for (int i = 0; i < count; i++)
-        prims[i] = random_prim(&g, (int)(rng_uniform(&g) * 7), rng_box(&g, 0, 10), 0.6);
+        prims[i] = random_prim(&g, (int)(rng_uniform(&g) * 7), rng_box(&g, 0, 10), 0.6, &(*frames)[i]);
     /* Every tenth is a copy of a recent one: exact ties in t, which must go
      * to the lower index whatever order the tree visits them in. */
     for (int i = 9; i < count; i += 10)
@@ -256,7 +261,8 @@ START_TEST(test_bvh_intersect_matches_brute_force)
     static const int sizes[] = {1, 2, 3, 7, 40, 500, 3000};
     for (int s = 0; s < 7; s++) {
         int n = sizes[s];
-        scene_prim *prims = random_scene(100 + (uint64_t)s, n, 2);
+        scene_frame *frames;
+        scene_prim *prims = random_scene(100 + (uint64_t)s, n, 2, &frames);
         bvh b;
         ck_assert(bvh_build(&b, prims, n + 2, NULL));
         ck_assert_int_eq(b.unbounded_count, 2);
@@ -265,6 +271,7 @@ START_TEST(test_bvh_intersect_matches_brute_force)
         ck_assert_msg(hits > 600, "too few hits (%d) for the test to mean much", hits);
         bvh_free(&b);
         free(prims);
+        free(frames);
     }
 }
 END_TEST
@@ -272,7 +279,8 @@ END_TEST
 START_TEST(test_bvh_visit_matches_brute_force)
 {
     int n = 2000;
-    scene_prim *prims = random_scene(300, n, 2);
+    scene_frame *frames;
+    scene_prim *prims = random_scene(300, n, 2, &frames);
     bvh b;
     ck_assert(bvh_build(&b, prims, n + 2, NULL));
     rng g = {301, 0};
@@ -296,6 +304,7 @@ START_TEST(test_bvh_visit_matches_brute_force)
     ck_assert_msg(solids_twice > 100, "solids crossed twice only %ld times", solids_twice);
     bvh_free(&b);
     free(prims);
+    free(frames);
 }
 END_TEST
 
@@ -320,13 +329,15 @@ static int count_into(void *ctx, bvh_ref ref, int crossings)
 START_TEST(test_bvh_visit_counts_match_brute_force)
 {
     int n = 2000;
-    scene_prim *prims = random_scene(310, n, 2);
+    scene_frame *frames;
+    scene_prim *prims = random_scene(310, n, 2, &frames);
     prims = realloc(prims, (size_t)(n + 3) * sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     prims[n + 2] = prims[n];
     prims[n + 2].has_xform = 1;
-    prims[n + 2].to_world = xform_translate(vec_make(0, 4, 0));
-    ck_assert(xform_invert(&prims[n + 2].to_world, &prims[n + 2].to_local));
+    frames[n].to_world = xform_translate(vec_make(0, 4, 0));
+    ck_assert(xform_invert(&frames[n].to_world, &frames[n].to_local));
+    prims[n + 2].frame = &frames[n];
     bvh b;
     ck_assert(bvh_build(&b, prims, n + 3, NULL));
     ck_assert_int_eq(b.unbounded_count, 3);
@@ -351,6 +362,7 @@ START_TEST(test_bvh_visit_counts_match_brute_force)
     ck_assert_msg(planes > 1000, "the planes crossed only %ld times", planes);
     bvh_free(&b);
     free(prims);
+    free(frames);
 }
 END_TEST
 
@@ -589,7 +601,8 @@ END_TEST
 START_TEST(test_bvh_deterministic_and_well_formed)
 {
     int n = 3000;
-    scene_prim *prims = random_scene(400, n, 2);
+    scene_frame *frames;
+    scene_prim *prims = random_scene(400, n, 2, &frames);
     bvh a, b;
     ck_assert(bvh_build(&a, prims, n + 2, NULL));
     ck_assert(bvh_build(&b, prims, n + 2, NULL));
@@ -638,6 +651,7 @@ START_TEST(test_bvh_deterministic_and_well_formed)
     bvh_free(&a);
     bvh_free(&b);
     free(prims);
+    free(frames);
 }
 END_TEST
 

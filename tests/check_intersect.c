@@ -49,7 +49,6 @@ static scene_prim prim_blank(scene_prim_kind kind)
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
-    p.to_world = p.to_local = xform_identity();
     return p;
 }
 
@@ -86,11 +85,13 @@ static scene_prim prim_box(vec3 lo, vec3 hi)
     return p;
 }
 
-static void prim_set_xform(scene_prim *p, xform to_world)
+/* Gives p the local frame to_world, kept in *f (which must outlive p). */
+static void prim_set_xform(scene_prim *p, scene_frame *f, xform to_world)
 {
     p->has_xform = 1;
-    p->to_world = to_world;
-    ck_assert(xform_invert(&to_world, &p->to_local));
+    f->to_world = to_world;
+    ck_assert(xform_invert(&to_world, &f->to_local));
+    p->frame = f;
 }
 
 /* ---- sphere ---- */
@@ -471,8 +472,7 @@ START_TEST(test_isect_triangle_shading_normal_interpolated)
     ck_assert_vec_near(h.shading_normal, vec_scale(vec_make(1, 1, 2), 1 / sqrt(6.0)), 1e-15);
     ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 0.0);
     scene_prim p = prim_triangle(v[0], v[1], v[2]);
-    p.u.triangle.has_normals = 1;
-    memcpy(p.u.triangle.n, n, sizeof n);
+    p.u.triangle.n = n;
     r = make_ray(vec_make(0.25, 0.25, 2), vec_make(0, 0, -1));
     ck_assert(isect_prim(&p, &r, &h));
     ck_assert_vec_near(h.shading_normal, vec_scale(vec_make(1, 1, 2), 1 / sqrt(6.0)), 1e-15);
@@ -692,7 +692,8 @@ START_TEST(test_isect_prim_ellipsoid)
      * t = 10 - sqrt 3, normal along the gradient (x/4, y, 0) =
      * (-sqrt3/4, 1/2, 0). */
     scene_prim e = prim_sphere(vec_make(0, 0, 0), 1);
-    prim_set_xform(&e, xform_scale(vec_make(2, 1, 1)));
+    scene_frame e_frame;
+    prim_set_xform(&e, &e_frame, xform_scale(vec_make(2, 1, 1)));
     hit h, out[ISECT_MAX_CROSSINGS];
     ray r = make_ray(vec_make(-10, 0, 0), vec_make(1, 0, 0));
     ck_assert(isect_prim(&e, &r, &h));
@@ -723,7 +724,8 @@ START_TEST(test_isect_prim_rotated_box)
     /* Box [-1,1]x[-.5,.5]x[-.5,.5] turned 90 degrees about z spans
      * [-.5,.5]x[-1,1]: up +y from (0,-5,0) it is met at y = -1, t = 4. */
     scene_prim bx = prim_box(vec_make(-1, -0.5, -0.5), vec_make(1, 0.5, 0.5));
-    prim_set_xform(&bx, xform_rotate_xyz(vec_make(0, 0, 90)));
+    scene_frame bx_frame;
+    prim_set_xform(&bx, &bx_frame, xform_rotate_xyz(vec_make(0, 0, 90)));
     hit h;
     ray r = make_ray(vec_make(0, -5, 0), vec_make(0, 1, 0));
     ck_assert(isect_prim(&bx, &r, &h));
@@ -736,7 +738,8 @@ START_TEST(test_isect_prim_rotated_box)
      * y' = 1, x = 0.2 - sqrt 2, so t = 5.2 - sqrt 2 from x = -5; the face
      * y' = 1 has world normal (-1,1,0)/sqrt 2. */
     scene_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
-    prim_set_xform(&cube, xform_rotate_xyz(vec_make(0, 0, 45)));
+    scene_frame cube_frame;
+    prim_set_xform(&cube, &cube_frame, xform_rotate_xyz(vec_make(0, 0, 45)));
     r = make_ray(vec_make(-5, 0.2, 0), vec_make(1, 0, 0));
     ck_assert(isect_prim(&cube, &r, &h));
     ck_assert_near(h.t, 5.2 - sqrt(2.0), 1e-14);
@@ -753,7 +756,8 @@ START_TEST(test_isect_prim_translated_scaled_disk)
     d.u.disk.normal = vec_make(0, 0, 1);
     d.u.disk.radius = 1;
     xform s = xform_scale(vec_make(3, 3, 3)), t = xform_translate(vec_make(0, 0, 2));
-    prim_set_xform(&d, xform_compose(&t, &s));
+    scene_frame d_frame;
+    prim_set_xform(&d, &d_frame, xform_compose(&t, &s));
     hit h;
     ray r = make_ray(vec_make(2.9, 0, 10), vec_make(0, 0, -1));
     ck_assert(isect_prim(&d, &r, &h));
@@ -782,7 +786,8 @@ START_TEST(test_isect_prim_bounds)
     ck_assert_vec_near(hi, vec_make(2, 2, 0), 0.0);
     /* The 45-degree cube: corners reach sqrt 2 in x and y. */
     scene_prim cube = prim_box(vec_make(-1, -1, -1), vec_make(1, 1, 1));
-    prim_set_xform(&cube, xform_rotate_xyz(vec_make(0, 0, 45)));
+    scene_frame cube_frame;
+    prim_set_xform(&cube, &cube_frame, xform_rotate_xyz(vec_make(0, 0, 45)));
     ck_assert(isect_prim_bounds(&cube, &lo, &hi));
     ck_assert_vec_near(hi, vec_make(sqrt(2.0), sqrt(2.0), 1), 1e-15);
 }
@@ -937,11 +942,13 @@ START_TEST(test_ray_spawn_ellipsoid_and_box)
     /* Transformed primitives: an ellipsoid and a rotated box at scale 1e3. */
     scene_prim e = prim_sphere(vec_make(0, 0, 0), 1);
     xform sc = xform_scale(vec_make(2e3, 1e3, 0.5e3)), mv = xform_translate(vec_make(5e3, 0, 0));
-    prim_set_xform(&e, xform_compose(&mv, &sc));
+    scene_frame e_frame;
+    prim_set_xform(&e, &e_frame, xform_compose(&mv, &sc));
     scene_prim bx = prim_box(vec_make(-1, -2, -3), vec_make(1, 2, 3));
     xform rot = xform_rotate_xyz(vec_make(10, 20, 30)), big = xform_scale(vec_make(1e3, 1e3, 1e3));
     xform rb = xform_compose(&rot, &big);
-    prim_set_xform(&bx, xform_compose(&mv, &rb));
+    scene_frame bx_frame;
+    prim_set_xform(&bx, &bx_frame, xform_compose(&mv, &rb));
     const scene_prim *prims[2] = {&e, &bx};
     rng g = {44, 0};
     for (int k = 0; k < 2; k++) {
@@ -1005,7 +1012,8 @@ START_TEST(test_isect_prim_magnitude)
     ck_assert_near(isect_prim_magnitude(&t), 40.0, 0.0);
     /* Scaled by 10 and moved by (0,0,-100): |L|inf 10, so 10 * 9 + 100. */
     xform sc = xform_scale(vec_make(10, 10, 10)), mv = xform_translate(vec_make(0, 0, -100));
-    prim_set_xform(&s, xform_compose(&mv, &sc));
+    scene_frame s_frame;
+    prim_set_xform(&s, &s_frame, xform_compose(&mv, &sc));
     ck_assert_near(isect_prim_magnitude(&s), 190.0, 0.0);
 }
 END_TEST
@@ -1032,7 +1040,8 @@ START_TEST(test_isect_plane_crossings_match_full_hits)
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
     /* Moved up to y = 5 by its transform: above the ray going down from
      * y = 1, met by the one going up at t = 4. */
-    prim_set_xform(&p, xform_translate(vec_make(0, 5, 0)));
+    scene_frame p_frame;
+    prim_set_xform(&p, &p_frame, xform_translate(vec_make(0, 5, 0)));
     r = make_ray(vec_make(0, 1, 0), vec_make(0, -1, 0));
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
     r = make_ray(vec_make(0, 1, 0), vec_make(0, 1, 0));

@@ -396,8 +396,8 @@ START_TEST(test_scene_load_baking_rules)
     ck_assert_int_eq(s->prim_count, 11);
     ck_assert_int_eq(p[0].has_xform, 1);
     ck_assert_vec_near(p[0].u.sphere.center, vec_make(0, 0, 0), 0);
-    ck_assert_vec_near(xform_point(&p[0].to_world, vec_make(0, 1, 0)), vec_make(5, 2, 0), 0);
-    ck_assert_vec_near(xform_point(&p[0].to_local, vec_make(5, 2, 0)), vec_make(0, 1, 0), 0);
+    ck_assert_vec_near(xform_point(&p[0].frame->to_world, vec_make(0, 1, 0)), vec_make(5, 2, 0), 0);
+    ck_assert_vec_near(xform_point(&p[0].frame->to_local, vec_make(5, 2, 0)), vec_make(0, 1, 0), 0);
     ck_assert_int_eq(p[1].has_xform, 1);
     ck_assert_int_eq(p[2].has_xform, 0);
     ck_assert_vec_near(p[2].u.box.lo, vec_make(1, 0, 0), 0);

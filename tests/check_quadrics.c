@@ -29,7 +29,6 @@ static scene_prim blank(scene_prim_kind kind)
     memset(&p, 0, sizeof p);
     p.kind = kind;
     p.mesh = -1;
-    p.to_world = p.to_local = xform_identity();
     return p;
 }
 
@@ -193,9 +192,11 @@ START_TEST(test_torus_transformed)
 {
     scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     xform w = xform_scale(vec_make(1, 1, 2));
+    scene_frame f;
     t.has_xform = 1;
-    t.to_world = w;
-    ck_assert(xform_invert(&w, &t.to_local));
+    f.to_world = w;
+    ck_assert(xform_invert(&w, &f.to_local));
+    t.frame = &f;
     ray r = make_ray(vec_make(2, 0, 5), vec_make(0, 0, -1));
     hit h;
     ck_assert(isect_prim(&t, &r, &h));

@@ -26,9 +26,10 @@ START_TEST(test_terminator_flat_triangle_is_not_lifted)
     p.u.triangle.p[0] = vec_make(0.3, -1, 2);
     p.u.triangle.p[1] = vec_make(2, 0.5, 2);
     p.u.triangle.p[2] = vec_make(-0.7, 1.1, 2);
-    p.u.triangle.has_normals = 1;
+    vec3 n[3];
     for (int i = 0; i < 3; i++)
-        p.u.triangle.n[i] = vec_make(0, 0, 1);
+        n[i] = vec_make(0, 0, 1);
+    p.u.triangle.n = n;
     ray r = {vec_make(0.4, 0.2, 5), vec_make(0.01, -0.02, -1), 0, HUGE_VAL};
     hit h;
     ck_assert(isect_prim(&p, &r, &h));
@@ -48,13 +49,14 @@ START_TEST(test_terminator_lift_on_a_sphere_facet)
     memset(&p, 0, sizeof p);
     p.kind = PRIM_TRIANGLE;
     p.mesh = -1;
-    p.u.triangle.has_normals = 1;
     static const double corner[3][3] = {{0.8, 0.6, 0}, {0.6, 0.8, 0}, {0.6, 0.6, 0.5291502622129181}};
+    vec3 normals[3];
     for (int i = 0; i < 3; i++) {
         vec3 v = vec_make(corner[i][0], corner[i][1], corner[i][2]);
         p.u.triangle.p[i] = vec_normalize(v);
-        p.u.triangle.n[i] = vec_normalize(v);
+        normals[i] = vec_normalize(v);
     }
+    p.u.triangle.n = normals;
     vec3 c = vec_scale(vec_add(p.u.triangle.p[0], vec_add(p.u.triangle.p[1], p.u.triangle.p[2])), 1.0 / 3);
     ray r = {vec_scale(c, 3), vec_normalize(vec_neg(c)), 0, HUGE_VAL};
     hit h;

@@ -302,7 +302,7 @@ static void assert_mirror_keeps_light(const char *shape, int depth)
                 for (int q = 0; axes && q < 3 && (q == 0 || a != b); q++) {
                     vec3 target = vec_add(corner[a], vec_scale(vec_sub(corner[b], corner[a]), at[q]));
                     if (p->has_xform)
-                        target = xform_point(&p->to_world, target);
+                        target = xform_point(&p->frame->to_world, target);
                     ray r = ray_from_to(vec_make(origins[o][0], origins[o][1], origins[o][2]), target);
                     trace_stats st;
                     memset(&st, 0, sizeof st);

@@ -208,8 +208,8 @@ static json_t *transform(export_json_build *b, const scene_prim *p)
     if (!p->has_xform)
         return json_null();
     json_t *out = json_object();
-    export_json_set(b, out, "to_world", matrix(&p->to_world));
-    export_json_set(b, out, "to_local", matrix(&p->to_local));
+    export_json_set(b, out, "to_world", matrix(&p->frame->to_world));
+    export_json_set(b, out, "to_local", matrix(&p->frame->to_local));
     return out;
 }
 

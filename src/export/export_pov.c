@@ -755,10 +755,10 @@ static void write_shape(FILE *fp, const scene_prim *p)
     case PRIM_MESH: /* written by write_mesh */
         break;
     case PRIM_TRIANGLE:
-        fputs(p->u.triangle.has_normals ? "smooth_triangle {\n  " : "triangle {\n  ", fp);
+        fputs(p->u.triangle.n ? "smooth_triangle {\n  " : "triangle {\n  ", fp);
         for (int i = 0; i < 3; i++) {
             put_vec(fp, to_pov(p->u.triangle.p[i]));
-            if (p->u.triangle.has_normals) {
+            if (p->u.triangle.n) {
                 fputs(", ", fp);
                 put_vec(fp, to_pov(p->u.triangle.n[i]));
             }
@@ -774,7 +774,7 @@ static void write_prim(FILE *fp, const scene_model *s, const pov_opts *o, const 
     write_shape(fp, p);
     write_material_ref(fp, s, o, p, nudged);
     if (p->has_xform)
-        write_matrix(fp, &p->to_world);
+        write_matrix(fp, &p->frame->to_world);
     fputs("}\n", fp);
 }
 

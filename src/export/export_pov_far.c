@@ -37,7 +37,7 @@ static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
 {
     for (int i = 0; i < 8; i++) {
         vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-        extent_add(e, p->has_xform ? xform_point(&p->to_world, c) : c);
+        extent_add(e, p->has_xform ? xform_point(&p->frame->to_world, c) : c);
     }
 }
 

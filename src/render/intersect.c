@@ -711,8 +711,7 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
             isect_shear_make(r, &own);
             sh = &own;
         }
-        return triangle_hits(p->u.triangle.p, p->u.triangle.has_normals ? p->u.triangle.n : NULL, 7, r, sh, out,
-                             bare);
+        return triangle_hits(p->u.triangle.p, p->u.triangle.n, 7, r, sh, out, bare);
     case PRIM_DISK:
         return disk_hits(p->u.disk.center, p->u.disk.normal, p->u.disk.radius, r, out);
     case PRIM_BOX:
@@ -746,13 +745,13 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     if (!p->has_xform)
         return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
-    local.origin = xform_point(&p->to_local, r->origin);
-    local.dir = xform_vector(&p->to_local, r->dir);
+    local.origin = xform_point(&p->frame->to_local, r->origin);
+    local.dir = xform_vector(&p->frame->to_local, r->dir);
     int n = local_hits(p, &local, NULL, out, max, bare);
     for (int i = 0; i < n && !bare; i++) {
-        out[i].point = xform_point(&p->to_world, out[i].point);
-        out[i].normal = vec_normalize(xform_normal(&p->to_local, out[i].normal));
-        out[i].shading_normal = vec_normalize(xform_normal(&p->to_local, out[i].shading_normal));
+        out[i].point = xform_point(&p->frame->to_world, out[i].point);
+        out[i].normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].normal));
+        out[i].shading_normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].shading_normal));
     }
     return n;
 }
@@ -1047,7 +1046,7 @@ int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
         vec3 wl = vec_splat(INFINITY), wh = vec_splat(-INFINITY);
         for (int i = 0; i < 8; i++) {
             vec3 corner = vec_make(i & 1 ? h.x : l.x, i & 2 ? h.y : l.y, i & 4 ? h.z : l.z);
-            vec3 w = xform_point(&p->to_world, corner);
+            vec3 w = xform_point(&p->frame->to_world, corner);
             wl = vec_min(wl, w);
             wh = vec_max(wh, w);
         }
@@ -1116,7 +1115,7 @@ real isect_prim_magnitude(const scene_prim *p)
         return m;
     real norm = 0.0, shift = 0.0;
     for (int i = 0; i < 3; i++) {
-        const double *row = p->to_world.m[i];
+        const double *row = p->frame->to_world.m[i];
         norm = fmax(norm, fabs(row[0]) + fabs(row[1]) + fabs(row[2]));
         shift = fmax(shift, fabs(row[3]));
     }
@@ -1160,7 +1159,7 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
     const vec3 *normals = NULL;
     if (p->kind == PRIM_MESH) {
         normals = mesh_corners(&p->u.mesh, h->part, v, n);
-    } else if (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals) {
+    } else if (p->kind == PRIM_TRIANGLE && p->u.triangle.n) {
         for (int i = 0; i < 3; i++)
             v[i] = p->u.triangle.p[i];
         normals = p->u.triangle.n;
@@ -1409,12 +1408,12 @@ static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
 {
     if (!p->has_xform)
         return clamp_inside(p->u.box.lo, p->u.box.hi, origin, vec_splat(offset));
-    const double(*m)[4] = p->to_local.m;
+    const double(*m)[4] = p->frame->to_local.m;
     vec3 margin = vec_splat(0.0);
     for (int k = 0; k < 3; k++)
         margin = vec_with(margin, k, offset * vec_length(vec_make(m[k][0], m[k][1], m[k][2])));
-    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, xform_point(&p->to_local, origin), margin);
-    return xform_point(&p->to_world, local);
+    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, xform_point(&p->frame->to_local, origin), margin);
+    return xform_point(&p->frame->to_world, local);
 }
 
 /*
@@ -1496,7 +1495,7 @@ ray ray_spawn_hit_shadow(const scene_prim *p, const hit *h, vec3 dir)
 
 int isect_smooth(const scene_prim *p)
 {
-    return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.has_normals);
+    return (p->kind == PRIM_MESH && p->u.mesh.tri_normal) || (p->kind == PRIM_TRIANGLE && p->u.triangle.n);
 }
 
 /*@ requires \valid_read(p) && \valid_read(h);

@@ -290,7 +290,7 @@ static int triangle_in_range(const scene_prim *prim)
     int ok = vec_is_finite(q[0]) && vec_is_finite(q[1]) && vec_is_finite(q[2]) &&
              vec_is_finite(vec_sub(q[1], q[0])) && vec_is_finite(vec_sub(q[2], q[0])) &&
              vec_is_finite(vec_sub(q[2], q[1]));
-    return ok && (!prim->u.triangle.has_normals ||
+    return ok && (!n ||
                   (check_is_unit(n[0]) && check_is_unit(n[1]) && check_is_unit(n[2])));
 }
 
@@ -313,7 +313,7 @@ static int in_range(const scene_prim *prim)
     case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
     case PRIM_MESH: break; /* checked triangle by triangle (lower_mesh.c) */
     }
-    return ok && (!prim->has_xform || (xform_finite(&prim->to_world) && xform_finite(&prim->to_local)));
+    return ok && (!prim->has_xform || (xform_finite(&prim->frame->to_world) && xform_finite(&prim->frame->to_local)));
 }
 
 /* A triangle has no area when its edges are parallel to rounding error:

@@ -88,7 +88,7 @@ static int box_out(vec3 lo, vec3 hi, extent_fault *f)
  * position of the frame's origin (its translation) as a coordinate. */
 static int prim_out(const scene_prim *p, extent_fault *f)
 {
-    const xform *w = &p->to_world;
+    const xform *w = &p->frame->to_world;
     if (p->has_xform && coord_out(vec_make(w->m[0][3], w->m[1][3], w->m[2][3]), "translation", f))
         return 1;
     switch (p->kind) {

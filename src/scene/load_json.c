@@ -292,11 +292,12 @@ static int read_transform(jreader *r, json_t *p, scene_prim *prim)
     if (json_is_null(t))
         return 1;
     jread_push_key(r, "transform");
-    int ok = jread_is_object(r, t) && jread_known(r, t, keys) && read_matrix(r, t, &prim->to_world);
+    scene_frame f;
+    int ok = jread_is_object(r, t) && jread_known(r, t, keys) && read_matrix(r, t, &f.to_world);
     jread_pop(r);
     check_at at = jread_at(r);
-    prim->has_xform = 1;
-    return ok && check_invert(r->L, &at, &prim->to_world, &prim->to_local);
+    return ok && check_invert(r->L, &at, &f.to_world, &f.to_local) &&
+           lower_keep_frame(r->L, prim, &f.to_world, &f.to_local);
 }
 
 static int read_vertices(jreader *r, json_t *p, scene_prim *prim)

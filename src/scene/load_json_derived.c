@@ -489,7 +489,7 @@ static int primitive_derived(jreader *r, json_t *element, int i)
     if (!p->has_xform || !json_is_object(t))
         return 1;
     jread_push_key(r, "transform");
-    int ok = member_list(r, t, "to_local", 4, "rows", matrix_row, &p->to_local);
+    int ok = member_list(r, t, "to_local", 4, "rows", matrix_row, &p->frame->to_local);
     jread_pop(r);
     return ok;
 }

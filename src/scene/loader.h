@@ -143,8 +143,10 @@ int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span a
 /* Whether the transform mirrors (negative determinant): triangles then
  * swap two corners to keep their normal on the mirrored side. */
 int lower_mirrors(const xform *w);
-/* Keeps a shape's local parameters with the matrix pair (to_world, to_local). */
-void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local);
+/* Keeps a shape's local parameters with the matrix pair (to_world,
+ * to_local), the pair out of line (scene_keep); 0 when out of memory
+ * (reported). */
+int lower_keep_frame(loader *L, scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit
  * (or left zero or non-finite when it cannot be, for the range check). */
 vec3 lower_transformed_normal(const xform *to_local, vec3 n);
@@ -152,7 +154,8 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n);
 /* lower_quadrics.c: cylinder, cone and torus (block is KW_CYLINDER,
  * KW_CONE or KW_TORUS); each returns 1 or reports and returns 0. */
 int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim);
-void lower_place_quadric(scene_prim *prim, const xform *to_world, const xform *to_local);
+/* The transforms baked in or the frame kept; 0 when out of memory. */
+int lower_place_quadric(loader *L, scene_prim *prim, const xform *to_world, const xform *to_local);
 
 /*
  * check.c: the rules of the scene model, shared by every front end.  Each

@@ -28,9 +28,16 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 }
 
 /* Keeps the local frame when the shape cannot absorb the transform. */
-void lower_keep_frame(scene_prim *prim, const xform *to_world, const xform *to_local)
+int lower_keep_frame(loader *L, scene_prim *prim, const xform *to_world, const xform *to_local)
 {
+    scene_frame *f = scene_keep(L->scene, sizeof *f);
+    if (!f) {
+        loader_oom(L);
+        return 0;
+    }
+    f->to_world = *to_world;
+    f->to_local = *to_local;
     prim->has_xform = 1;
-    prim->to_world = *to_world;
-    prim->to_local = *to_local;
+    prim->frame = f;
+    return 1;
 }

@@ -67,31 +67,29 @@ static int unit_vector(loader *L, const props *p, keyword_id kw, vec3 fallback, 
     return 0;
 }
 
-static void place_sphere(scene_prim *prim, const xform *w, const xform *l)
+static int place_sphere(loader *L, scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
-        return;
-    if (xform_is_similarity(w, &s)) {
-        prim->u.sphere.center = xform_point(w, prim->u.sphere.center);
-        prim->u.sphere.radius *= s;
-    } else {
-        lower_keep_frame(prim, w, l);
-    }
+        return 1;
+    if (!xform_is_similarity(w, &s))
+        return lower_keep_frame(L, prim, w, l);
+    prim->u.sphere.center = xform_point(w, prim->u.sphere.center);
+    prim->u.sphere.radius *= s;
+    return 1;
 }
 
-static void place_disk(scene_prim *prim, const xform *w, const xform *l)
+static int place_disk(loader *L, scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
-        return;
-    if (xform_is_similarity(w, &s)) {
-        prim->u.disk.center = xform_point(w, prim->u.disk.center);
-        prim->u.disk.normal = lower_transformed_normal(l, prim->u.disk.normal);
-        prim->u.disk.radius *= s;
-    } else {
-        lower_keep_frame(prim, w, l);
-    }
+        return 1;
+    if (!xform_is_similarity(w, &s))
+        return lower_keep_frame(L, prim, w, l);
+    prim->u.disk.center = xform_point(w, prim->u.disk.center);
+    prim->u.disk.normal = lower_transformed_normal(l, prim->u.disk.normal);
+    prim->u.disk.radius *= s;
+    return 1;
 }
 
 static int is_axis_aligned(const xform *w)
@@ -100,33 +98,27 @@ static int is_axis_aligned(const xform *w)
            w->m[2][1] == 0;
 }
 
-static void place_box(scene_prim *prim, const xform *w, const xform *l)
+static int place_box(loader *L, scene_prim *prim, const xform *w, const xform *l)
 {
-    if (!is_axis_aligned(w)) {
-        lower_keep_frame(prim, w, l);
-        return;
-    }
+    if (!is_axis_aligned(w))
+        return lower_keep_frame(L, prim, w, l);
     vec3 a = xform_point(w, prim->u.box.lo), b = xform_point(w, prim->u.box.hi);
     prim->u.box.lo = vec_min(a, b);
     prim->u.box.hi = vec_max(a, b);
+    return 1;
 }
 
 /* Vertices in world space; a mirroring transform would turn the winding
- * (and so the normal) inside out, so two corners are swapped back. */
-static void place_triangle(scene_prim *prim, const xform *w, const xform *l)
+ * (and so the normal) inside out, so two corners are swapped back.  (A
+ * triangle statement gives no vertex normals: u.triangle.n stays NULL.) */
+static void place_triangle(scene_prim *prim, const xform *w)
 {
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3; i++)
         prim->u.triangle.p[i] = xform_point(w, prim->u.triangle.p[i]);
-        if (prim->u.triangle.has_normals)
-            prim->u.triangle.n[i] = lower_transformed_normal(l, prim->u.triangle.n[i]);
-    }
     if (lower_mirrors(w)) {
         vec3 t = prim->u.triangle.p[1];
         prim->u.triangle.p[1] = prim->u.triangle.p[2];
         prim->u.triangle.p[2] = t;
-        t = prim->u.triangle.n[1];
-        prim->u.triangle.n[1] = prim->u.triangle.n[2];
-        prim->u.triangle.n[2] = t;
     }
 }
 
@@ -242,16 +234,17 @@ static int mesh(loader *L, const props *p, scene_prim *proto, const xform *w, co
     return ok;
 }
 
-static void place(scene_prim *prim, const xform *w, const xform *l)
+/* The transforms baked in or the frame kept; 0 when out of memory. */
+static int place(loader *L, scene_prim *prim, const xform *w, const xform *l)
 {
     switch (prim->kind) {
-    case PRIM_SPHERE: place_sphere(prim, w, l); break;
-    case PRIM_DISK: place_disk(prim, w, l); break;
-    case PRIM_BOX: place_box(prim, w, l); break;
-    case PRIM_TRIANGLE: place_triangle(prim, w, l); break;
+    case PRIM_SPHERE: return place_sphere(L, prim, w, l);
+    case PRIM_DISK: return place_disk(L, prim, w, l);
+    case PRIM_BOX: return place_box(L, prim, w, l);
+    case PRIM_TRIANGLE: place_triangle(prim, w); break;
     case PRIM_CYLINDER:
     case PRIM_CONE:
-    case PRIM_TORUS: lower_place_quadric(prim, w, l); break;
+    case PRIM_TORUS: return lower_place_quadric(L, prim, w, l);
     case PRIM_MESH: break; /* lower_mesh.c places every vertex */
     case PRIM_PLANE:
         prim->u.plane.point = xform_point(w, prim->u.plane.point);
@@ -264,6 +257,7 @@ static void place(scene_prim *prim, const xform *w, const xform *l)
                                         vec_dot(prim->u.plane.normal, prim->u.plane.point));
         break;
     }
+    return 1;
 }
 
 int lower_primitive(loader *L, const ast *block)
@@ -295,9 +289,8 @@ int lower_primitive(loader *L, const ast *block)
     ok &= transforms(L, &p, &w, &l);
     if (block->keyword == KW_MESH)
         return ok && mesh(L, &p, &prim, &w, &l);
-    if (!ok)
+    if (!ok || !place(L, &prim, &w, &l))
         return 0;
-    place(&prim, &w, &l);
     check_at at = props_at(&p);
     return check_placed(L, &at, &prim) && emit(L, &prim) != NULL;
 }

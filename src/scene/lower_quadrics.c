@@ -114,15 +114,13 @@ int lower_quadric(loader *L, const props *p, keyword_id block, scene_prim *prim)
     }
 }
 
-void lower_place_quadric(scene_prim *prim, const xform *w, const xform *l)
+int lower_place_quadric(loader *L, scene_prim *prim, const xform *w, const xform *l)
 {
     double s;
     if (xform_is_identity(w))
-        return;
-    if (!xform_is_similarity(w, &s)) {
-        lower_keep_frame(prim, w, l);
-        return;
-    }
+        return 1;
+    if (!xform_is_similarity(w, &s))
+        return lower_keep_frame(L, prim, w, l);
     switch (prim->kind) {
     case PRIM_CYLINDER:
         prim->u.cylinder.from = xform_point(w, prim->u.cylinder.from);
@@ -141,4 +139,5 @@ void lower_place_quadric(scene_prim *prim, const xform *w, const xform *l)
         prim->u.torus.major *= s;
         prim->u.torus.minor *= s;
     }
+    return 1;
 }

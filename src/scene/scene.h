@@ -76,17 +76,37 @@ typedef struct scene_trimesh {
                               does not matter; else a set of sheets */
 } scene_trimesh;
 
+/* The matrix pair of a shape that keeps its local frame (see scene_prim). */
+typedef struct scene_frame {
+    xform to_world;
+    xform to_local;
+} scene_frame;
+
+/*
+ * A primitive: 128 bytes on x86-64 (it was 392 with the matrix pair and a
+ * triangle's normals inline: a scene of 100 000 spheres touched 39 MB for
+ * them, spec/performance.md section 5), so what few primitives have is
+ * kept out of line, in blocks the scene owns (scene_keep).
+ */
 typedef struct scene_prim {
     scene_prim_kind kind;
     int material;          /* index into scene.materials */
     int mesh;              /* PRIM_MESH: index into scene.meshes, else -1 */
+    /* Transforms are baked into the parameters in u whenever the shape maps
+     * to the same kind of shape (triangles, meshes and planes always;
+     * spheres, disks, cylinders, cones and tori under similarities; boxes
+     * under translate and axis scale).  Otherwise the parameters are in
+     * the local frame, has_xform is 1 and frame holds the matrix pair. */
+    int has_xform;
+    const scene_frame *frame;  /* set exactly when has_xform, else NULL */
     union {
         struct { vec3 center; double radius; } sphere;
         struct { vec3 point; vec3 normal; } plane;
         struct {
             vec3 p[3];
-            vec3 n[3];     /* per-vertex shading normals, unit, when has_normals */
-            int has_normals;
+            /* The three per-vertex shading normals, unit, out of line (few
+             * triangles have them: scene_keep); NULL: none. */
+            const vec3 *n;
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
         struct { vec3 lo; vec3 hi; } box;
@@ -101,14 +121,6 @@ typedef struct scene_prim {
          * shared, so a primitive can be intersected on its own. */
         scene_trimesh mesh;
     } u;
-    /* Transforms are baked into the parameters above whenever the shape maps
-     * to the same kind of shape (triangles, meshes and planes always;
-     * spheres, disks, cylinders, cones and tori under similarities; boxes
-     * under translate and axis scale).
-     * Otherwise the parameters are in the local frame and these are set. */
-    int has_xform;
-    xform to_world;
-    xform to_local;
     src_span where;
 } scene_prim;
 
@@ -207,6 +219,7 @@ typedef struct scene_model {
     char *oracle;              /* `oracle NAME`, or NULL */
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
+    struct scene_kept *kept;   /* the blocks of scene_keep: frames, triangle normals */
     mem mem;                   /* the allocator everything above came from */
     /* The load's --max-width, --max-height and --max-pixels, which a
      * renderer's size overrides are held to as the scene's own size was. */
@@ -245,11 +258,13 @@ scene_limits scene_default_limits(void);
  * and SCENE_BYTES_FIXED for the small tables of a load.  The 336 bytes
  * beside the primitive were fitted so the estimate stays above the peak
  * RSS measured for a million spheres and a million-triangle mesh (728
- * bytes a primitive on x86-64, against 687 and 716 measured).
+ * bytes a primitive on x86-64, against 687 and 716 measured), when a
+ * scene_prim was 392 bytes (368 on 32-bit targets); the figure stays that
+ * since scene_prim shrank, as a mesh's triangles never were scene_prims.
  * Measured against real peaks in spec/reliability.md ([REL-MEMORY-1]);
  * a load is refused past --max-memory before it allocates that much.
  */
-#define SCENE_BYTES_PER_PRIM (sizeof(scene_prim) + 336)
+#define SCENE_BYTES_PER_PRIM ((size_t)(sizeof(void *) == 8 ? 392 + 336 : 368 + 336))
 #define SCENE_BYTES_PER_PIXEL 40
 #define SCENE_BYTES_FIXED (256.0 * 1024)
 double scene_memory_estimate(double prims, double pixels, double extra);
@@ -359,6 +374,12 @@ int scene_prim_self_shadows(const scene_prim *p);
 /* The block word of a primitive kind ("sphere", ..., "torus", "mesh"), and its plural. */
 const char *scene_prim_name(scene_prim_kind kind);
 const char *scene_prim_plural(scene_prim_kind kind);
+
+/* size bytes that stay where they are until scene_free, aligned for a
+ * double (or NULL when out of memory): what a primitive keeps out of line
+ * (its frame, a triangle's normals), so that copying a scene_prim copies a
+ * pointer and growing scene.prims moves nothing it points to. */
+void *scene_keep(scene_model *s, size_t size);
 
 /* Frees a mesh store allocated from m and empties it. */
 void scene_trimesh_free(const mem *m, scene_trimesh *g);
