@@ -46,6 +46,15 @@ static int one_transform(loader *L, const ast *prop, xform *out)
 static int transforms(loader *L, const props *p, xform *to_world, xform *to_local)
 {
     *to_world = xform_identity();
+    if (p->xform_count == 0) {
+        /* Most primitives (100 000 spheres of a big grid): the inverse
+         * xform_invert gives the identity, its translations -0, made here
+         * without testing the matrix entry by entry. */
+        *to_local = *to_world;
+        for (int i = 0; i < 3; i++)
+            to_local->m[i][3] = -0.0;
+        return 1;
+    }
     for (int i = 0; i < p->xform_count; i++) {
         xform step;
         if (!one_transform(L, p->xforms[i], &step))
