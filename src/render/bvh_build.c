@@ -20,6 +20,7 @@
  * are made only when one happens, and the node array grows as needed.
  */
 #include <limits.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -196,8 +197,35 @@ static binning binning_of(const range *r, int n)
 }
 
 
-/* One pass: every item into its bin on each binned axis.  Returns the
- * node's own cost (as a leaf). */
+/* Coordinate `at` (offsetof vec3's x, y or z) of *v: one load, where
+ * vec_component chooses by branches. */
+static real coordinate(const vec3 *v, size_t at)
+{
+    return *(const real *)(const void *)((const char *)v + at);
+}
+
+/* Every item into its bin on one axis: only that coordinate of the
+ * centroid is made (the same operations as centroid's), and no axis is
+ * chosen per item.  Each bin takes its items in their order, as when the
+ * three axes were binned in one pass: the same bits. */
+static void bin_axis(build_ctx *ctx, int begin, int end, const binning *bn, int axis)
+{
+    static const size_t at[3] = {offsetof(vec3, x), offsetof(vec3, y), offsetof(vec3, z)};
+    bin *bins = ctx->bins[axis];
+    size_t off = at[axis];
+    for (int i = begin; i < end; i++) {
+        const build_item *it = &ctx->items[i];
+        real c = (coordinate(&it->lo, off) + coordinate(&it->hi, off)) * 0.5;
+        bin *bk = &bins[bin_of(bn, axis, c)];
+        bk->lo = vmin(bk->lo, it->lo);
+        bk->hi = vmax(bk->hi, it->hi);
+        bk->count++;
+        bk->cost += it->cost;
+    }
+}
+
+/* Every item into its bin on each binned axis, an axis at a time.
+ * Returns the node's own cost (as a leaf). */
 static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 {
     real total = 0.0;
@@ -208,21 +236,14 @@ static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
             ctx->bins[a][k].count = 0;
             ctx->bins[a][k].cost = 0.0;
         }
-    for (int i = begin; i < end; i++) {
-        const build_item *it = &ctx->items[i];
-        vec3 c = centroid(it);
-        real cost = it->cost;
-        total += cost;
-        for (int a = 0; a < 3; a++) {
-            if (bn->scale[a] == 0.0)
-                continue;
-            bin *bk = &ctx->bins[a][bin_of(bn, a, vec_component(c, a))];
-            bk->lo = vmin(bk->lo, it->lo);
-            bk->hi = vmax(bk->hi, it->hi);
-            bk->count++;
-            bk->cost += cost;
-        }
-    }
+    for (int i = begin; i < end; i++)
+        total += ctx->items[i].cost;
+    if (bn->scale[0] != 0.0)
+        bin_axis(ctx, begin, end, bn, 0);
+    if (bn->scale[1] != 0.0)
+        bin_axis(ctx, begin, end, bn, 1);
+    if (bn->scale[2] != 0.0)
+        bin_axis(ctx, begin, end, bn, 2);
     return total;
 }
 
@@ -294,22 +315,31 @@ static void kid_boxes(const build_ctx *ctx, int axis, int nb, int split, range k
 static int partition_bins(const build_ctx *ctx, int begin, int end, const binning *bn, int axis, int split,
                           range kids[2])
 {
+    static const size_t at[3] = {offsetof(vec3, x), offsetof(vec3, y), offsetof(vec3, z)};
     build_item *items = ctx->items;
+    size_t off = at[axis];
+    vec3 lo[2] = {kids[0].clo, kids[1].clo}, hi[2] = {kids[0].chi, kids[1].chi};
     int i = begin, j = end - 1;
     while (i <= j) {
         vec3 c = centroid(&items[i]);
-        int right = bin_of(bn, axis, vec_component(c, axis)) >= split;
-        kids[right].clo = vmin(kids[right].clo, c);
-        kids[right].chi = vmax(kids[right].chi, c);
-        if (!right) {
+        real ca = (coordinate(&items[i].lo, off) + coordinate(&items[i].hi, off)) * 0.5;  /* c's, as bin_axis */
+        if (bin_of(bn, axis, ca) < split) {
+            lo[0] = vmin(lo[0], c);
+            hi[0] = vmax(hi[0], c);
             i++;
         } else {
+            lo[1] = vmin(lo[1], c);
+            hi[1] = vmax(hi[1], c);
             /* The item from j is read next, at i; this one is done. */
             build_item s = items[i];
             items[i] = items[j];
             items[j--] = s;
         }
     }
+    kids[0].clo = lo[0];
+    kids[0].chi = hi[0];
+    kids[1].clo = lo[1];
+    kids[1].chi = hi[1];
     return i;
 }
 

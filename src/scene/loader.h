@@ -68,7 +68,7 @@ enum { PROPS_MAX_XFORMS = 64 };
 typedef struct props {
     const ast *block;                   /* the block itself, for "needs 'x'" errors */
     const ast *by_keyword[KEYWORD_COUNT];
-    const ast *xforms[PROPS_MAX_XFORMS];
+    const ast *xforms[PROPS_MAX_XFORMS];  /* the first xform_count are set */
     int xform_count;
 } props;
 
