@@ -19,13 +19,13 @@
  * rounding and the inverse would be noise. */
 #define SINGULAR_RATIO (64.0 * DBL_EPSILON)
 
+/* The identity, +0 off the diagonal: made by every primitive's load, so a
+ * copy of a constant rather than twelve choices. */
+static const xform identity = {{{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}}};
+
 xform xform_identity(void)
 {
-    xform a;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            a.m[i][j] = i == j ? 1.0 : 0.0;
-    return a;
+    return identity;
 }
 
 xform xform_translate(vec3 t)
@@ -156,7 +156,7 @@ static int exact_identity(const xform *a)
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 4; j++)
-            if (a->m[i][j] != (i == j ? 1.0 : 0.0) || signbit(a->m[i][j]))
+            if (a->m[i][j] != identity.m[i][j] || signbit(a->m[i][j]))
                 return 0;
     return 1;
 }
@@ -230,7 +230,7 @@ int xform_is_identity(const xform *a)
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 4; j++)
-            if (a->m[i][j] != (i == j ? 1.0 : 0.0))
+            if (a->m[i][j] != identity.m[i][j])
                 return 0;
     return 1;
 }
