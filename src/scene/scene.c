@@ -41,16 +41,19 @@ struct scene_kept {
  * more on every target. */
 #define KEEP_ALIGN 16
 #define KEEP_HEAD ((sizeof(struct scene_kept) + KEEP_ALIGN - 1) / KEEP_ALIGN * KEEP_ALIGN)
-/* Bytes a block holds at least: a scene with a frame per primitive takes
- * a block per 85 frames, not an allocation each. */
-#define KEEP_BLOCK 16384
+/* Blocks double from KEEP_FIRST bytes up to KEEP_LAST: a scene with one
+ * transformed shape holds a few hundred bytes for it, one with a frame per
+ * primitive an allocation per 341 frames. */
+#define KEEP_FIRST 512
+#define KEEP_LAST 65536
 
 void *scene_keep(scene_model *s, size_t size)
 {
     struct scene_kept *b = s->kept;
     size = (size + KEEP_ALIGN - 1) / KEEP_ALIGN * KEEP_ALIGN;
     if (!b || b->size - b->used < size) {
-        size_t want = size > KEEP_BLOCK ? size : KEEP_BLOCK;
+        size_t next = !b ? KEEP_FIRST : b->size < KEEP_LAST ? 2 * b->size : KEEP_LAST;
+        size_t want = size > next ? size : next;
         if (want > (size_t)-1 - KEEP_HEAD)
             return NULL;
         b = mem_alloc(&s->mem, KEEP_HEAD + want);
