@@ -396,11 +396,19 @@ static double uncancelled_load_cpu(const char *name, const char *text, size_t le
  * CPU time, teardown included).  A fixed bound cannot do this: on a quiet
  * machine the whole load took 0.05 s and the whole build 0.1 s, under a
  * 0.2 s bound, while under the sanitizers at load 9 a stopped build's
- * teardown alone once took 0.28 s. */
-static void assert_stopped_early(const char *what, double stopped, double whole)
+ * teardown alone once took 0.28 s.  A loaded machine only ever adds CPU
+ * time (page faults, the allocator's returns to the system), so the best of
+ * three stopped attempts is the one compared: in CI a single attempt once
+ * took 0.232 s of a whole of 0.686 s where a quiet one takes 0.007 s. */
+enum { STOP_ATTEMPTS = 3 };
+
+static void assert_stopped_early(const char *what, const double stopped[STOP_ATTEMPTS], double whole)
 {
-    ck_assert_msg(stopped < whole / 4, "%s asked to stop took %.3f s of CPU, the whole %.3f s", what,
-                  stopped, whole);
+    double best = stopped[0];
+    for (int i = 1; i < STOP_ATTEMPTS; i++)
+        best = stopped[i] < best ? stopped[i] : best;
+    ck_assert_msg(best < whole / 4, "%s asked to stop took %.3f s of CPU at best (%.3f, %.3f, %.3f), the whole %.3f s",
+                  what, best, stopped[0], stopped[1], stopped[2], whole);
 }
 
 /* A load of ten million loop passes and the build of the tree over 200 000
@@ -414,29 +422,38 @@ START_TEST(test_cancel_inside_a_load_and_a_build)
     rf_load_options o;
     rf_load_options_init(&o);
     o.limits.max_loop_iterations = 10000000;
-    stopwatch w = watch(0.0);
-    o.cancel = stop_later;
-    o.cancel_user = &w;
-    double t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
-    ck_assert_int_eq(rf_scene_load_memory("l.scene", long_load, sizeof long_load - 1, &o, &s), RF_ERR_CANCELLED);
-    assert_stopped_early("load", clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - t0, whole_load);
-    ck_assert_ptr_null(s);
+    double stopped[STOP_ATTEMPTS];
+    stopwatch w;
+    for (int i = 0; i < STOP_ATTEMPTS; i++) {
+        w = watch(0.0);
+        o.cancel = stop_later;
+        o.cancel_user = &w;
+        double t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+        ck_assert_int_eq(rf_scene_load_memory("l.scene", long_load, sizeof long_load - 1, &o, &s),
+                         RF_ERR_CANCELLED);
+        stopped[i] = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - t0;
+        ck_assert_ptr_null(s);
+    }
+    assert_stopped_early("load", stopped, whole_load);
     static const char many[] = "for i in 0..199999 { sphere { center [i, 0, 0] radius 0.4 } }\n";
     uncancelled_load_cpu("b.scene", many, sizeof many - 1, &s);
     rf_render_options ro;
     rf_render_options_init(&ro);
     rf_renderer *r;
-    t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+    double t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
     ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_OK);
     rf_renderer_free(r);
     double whole_build = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - t0;
-    w = watch(0.0);
-    ro.cancel = stop_later;
-    ro.user = &w;
-    t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
-    ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_ERR_CANCELLED);
-    assert_stopped_early("build", clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - t0, whole_build);
-    ck_assert_ptr_null(r);
+    for (int i = 0; i < STOP_ATTEMPTS; i++) {
+        w = watch(0.0);
+        ro.cancel = stop_later;
+        ro.user = &w;
+        t0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+        ck_assert_int_eq(rf_renderer_create(s, &ro, &r), RF_ERR_CANCELLED);
+        stopped[i] = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - t0;
+        ck_assert_ptr_null(r);
+    }
+    assert_stopped_early("build", stopped, whole_build);
     rf_scene_free(s);
 }
 END_TEST
