@@ -279,26 +279,32 @@ START_TEST(test_shortcuts_mesh_scenes_bit_identical)
 }
 END_TEST
 
-/* Scene index of the random generator, rendered both ways and compared;
- * the failing scene's text is printed. */
-static void check_random_scene(int index)
+/* A generated scene (kind, index: for the message) rendered both ways and
+ * compared; the failing scene's text is printed. */
+static void check_generated_scene(const dtgen_scene *g, const char *kind, int index)
 {
-    static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
-    dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
     int status;
-    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
-    ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", index, status, g.text);
+    scene_model *s = scene_file_load_text("random.scene", g->text, g->len, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "%s scene %d did not load (status %d):\n%s", kind, index, status, g->text);
     img_buf on, off;
     render(s, 0, &on, NULL);
     render(s, 1, &off, NULL);
     size_t n = 3 * (size_t)on.width * (size_t)on.height;
     for (size_t i = 0; i < n; i++)
         ck_assert_msg(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0,
-                      "scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", index, i, on.rgb[i],
-                      off.rgb[i], g.text);
+                      "%s scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", kind, index, i,
+                      on.rgb[i], off.rgb[i], g->text);
     img_free(&on);
     img_free(&off);
     scene_free(s);
+}
+
+/* Scene index of the random generator, rendered both ways and compared. */
+static void check_random_scene(int index)
+{
+    static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
+    dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
+    check_generated_scene(&g, "generated", index);
 }
 
 /* The placements of the random scenes at extreme magnitudes: far from the
@@ -320,20 +326,7 @@ static void check_placed_scene(int index, int p)
 {
     static dtgen_scene g;
     dtgen_make_placed(&g, (uint64_t)index, DTGEN_ANY, "tests/obj", placements[p].scale, placements[p].offset);
-    int status;
-    scene_model *s = scene_file_load_text("placed.scene", g.text, g.len, NULL, stderr, 0, &status);
-    ck_assert_msg(s != NULL, "placed scene %d did not load (status %d):\n%s", index, status, g.text);
-    img_buf on, off;
-    render(s, 0, &on, NULL);
-    render(s, 1, &off, NULL);
-    size_t n = 3 * (size_t)on.width * (size_t)on.height;
-    for (size_t i = 0; i < n; i++)
-        ck_assert_msg(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0,
-                      "placed scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", index, i,
-                      on.rgb[i], off.rgb[i], g.text);
-    img_free(&on);
-    img_free(&off);
-    scene_free(s);
+    check_generated_scene(&g, "placed", index);
 }
 
 /*
