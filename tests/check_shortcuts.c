@@ -279,26 +279,54 @@ START_TEST(test_shortcuts_mesh_scenes_bit_identical)
 }
 END_TEST
 
-/* Scene index of the random generator, rendered both ways and compared;
- * the failing scene's text is printed. */
-static void check_random_scene(int index)
+/* A generated scene (kind, index: for the message) rendered both ways and
+ * compared; the failing scene's text is printed. */
+static void check_generated_scene(const dtgen_scene *g, const char *kind, int index)
 {
-    static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
-    dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
     int status;
-    scene_model *s = scene_file_load_text("random.scene", g.text, g.len, NULL, stderr, 0, &status);
-    ck_assert_msg(s != NULL, "generated scene %d did not load (status %d):\n%s", index, status, g.text);
+    scene_model *s = scene_file_load_text("random.scene", g->text, g->len, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "%s scene %d did not load (status %d):\n%s", kind, index, status, g->text);
     img_buf on, off;
     render(s, 0, &on, NULL);
     render(s, 1, &off, NULL);
     size_t n = 3 * (size_t)on.width * (size_t)on.height;
     for (size_t i = 0; i < n; i++)
         ck_assert_msg(memcmp(&on.rgb[i], &off.rgb[i], sizeof on.rgb[i]) == 0,
-                      "scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", index, i, on.rgb[i],
-                      off.rgb[i], g.text);
+                      "%s scene %d, value %zu: %.17g with the shortcuts, %.17g without:\n%s", kind, index, i,
+                      on.rgb[i], off.rgb[i], g->text);
     img_free(&on);
     img_free(&off);
     scene_free(s);
+}
+
+/* Scene index of the random generator, rendered both ways and compared. */
+static void check_random_scene(int index)
+{
+    static dtgen_scene g;   /* 16 kB: off the stack of the forked test */
+    dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
+    check_generated_scene(&g, "generated", index);
+}
+
+/* The placements of the random scenes at extreme magnitudes: far from the
+ * origin (coordinates 1e7, ulps of 2e-9), far and tiny (sizes 1e-6 there:
+ * a few hundred ulps across), tiny at the origin, and huge. */
+static const struct placement {
+    double scale, offset[3];
+} placements[] = {
+    {1, {1e7, -3e6, 7e6}},
+    {1e-6, {-6e6, 1e7, 2e6}},
+    {1e-6, {0, 0, 0}},
+    {1e6, {3e7, 0, -1e7}},
+};
+enum { PLACED_BATCH = 25 };
+
+/* [SHADE-SHORTCUT-OFF-1] Scene index of the random generator, moved to
+ * placement p, rendered both ways and compared. */
+static void check_placed_scene(int index, int p)
+{
+    static dtgen_scene g;
+    dtgen_make_placed(&g, (uint64_t)index, DTGEN_ANY, "tests/obj", placements[p].scale, placements[p].offset);
+    check_generated_scene(&g, "placed", index);
 }
 
 /*
@@ -601,6 +629,17 @@ START_TEST(test_shortcuts_random_scenes_bit_identical)
 }
 END_TEST
 
+/* The random scenes far away, tiny and huge: the bounds behind the
+ * shortcuts (the light's ball, the BVH boxes, the blocker's test) are
+ * relative to the coordinates' size, and an outside attack found images
+ * that changed at such magnitudes. */
+START_TEST(test_shortcuts_placed_random_scenes_bit_identical)
+{
+    for (int k = 0; k < PLACED_BATCH; k++)
+        check_placed_scene(1000 + _i * PLACED_BATCH + k, _i % (int)(sizeof placements / sizeof placements[0]));
+}
+END_TEST
+
 Suite *suite_shortcuts(void)
 {
     Suite *s = suite_create("shortcuts");
@@ -620,6 +659,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
+    tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,
                         (int)(sizeof mesh_scenes / sizeof mesh_scenes[0]));

@@ -42,6 +42,9 @@ typedef struct gen {
     int nballs;
     double plane_point[PLANE_MAX][3], plane_normal[PLANE_MAX][3];
     int planes;
+    /* dtgen_make_placed: the whole scene moved to offset + scale x */
+    int placed;
+    double scale, offset[3];
 } gen;
 
 static double uniform(gen *g)
@@ -93,6 +96,21 @@ static int begin(gen *g)
 static void put_vec(gen *g, const double v[3])
 {
     put(g, "[%.17g, %.17g, %.17g]", v[0], v[1], v[2]);
+}
+
+/* A point of the scene as placed (dtgen_make_placed). */
+static void put_point(gen *g, const double v[3])
+{
+    double p[3];
+    for (int i = 0; i < 3; i++)
+        p[i] = g->placed ? g->offset[i] + g->scale * v[i] : v[i];
+    put_vec(g, p);
+}
+
+/* A length of the scene as placed. */
+static double placed_length(const gen *g, double x)
+{
+    return g->placed ? g->scale * x : x;
 }
 
 static void random_point(gen *g, double half, double out[3])
@@ -460,18 +478,18 @@ static void put_point_light(gen *g)
     else
         random_point(g, 5, p);
     put(g, "point_light { position ");
-    put_vec(g, p);
+    put_point(g, p);
     put(g, " power ");
     int kind = pick(g, exact(g) ? 2 : 4);
     put_colour(g, kind == 0 ? 0.5 : 3, kind == 0 ? 2 : 12);
     if (kind == 0)
         put(g, " falloff none }");
     else if (kind == 1)
-        put(g, " d0 %.17g falloff linear }", range(g, 0.5, 5));
+        put(g, " d0 %.17g falloff linear }", placed_length(g, range(g, 0.5, 5)));
     else if (kind == 2)
         put(g, " falloff linear }");
     else
-        put(g, " d0 %.17g falloff inverse_square }", chance(g, 0.5) ? 0 : range(g, 0.5, 2));
+        put(g, " d0 %.17g falloff inverse_square }", placed_length(g, chance(g, 0.5) ? 0 : range(g, 0.5, 2)));
 }
 
 static void put_distant_light(gen *g)
@@ -492,7 +510,21 @@ static void put_distributed_light(gen *g)
     double c[3], n[3];
     random_point(g, 4, c);
     random_direction(g, n);
-    if (chance(g, 0.5))
+    if (g->placed) {
+        /* Draws in statements of their own (the unplaced branch draws two
+         * in one argument list, in the compiler's order): a placed scene
+         * need not repeat an unplaced one's numbers. */
+        if (chance(g, 0.5)) {
+            double u = range(g, 0.2, 1), v = range(g, 0.2, 1);
+            put(g, "distributed_light { rectangle ");
+            put_point(g, c);
+            put(g, " [%.17g, 0, 0] [0, 0, %.17g]", placed_length(g, u), placed_length(g, v));
+        } else {
+            put(g, "distributed_light { disk ");
+            put_point(g, c);
+            put(g, " [%.17g, %.17g, %.17g] %.17g", n[0], n[1], n[2], placed_length(g, range(g, 0.1, 0.8)));
+        }
+    } else if (chance(g, 0.5))
         put(g, "distributed_light { rectangle [%.17g, %.17g, %.17g] [%.17g, 0, 0] [0, 0, %.17g]", c[0], c[1], c[2],
             range(g, 0.2, 1), range(g, 0.2, 1));
     else
@@ -562,12 +594,12 @@ static void put_camera(gen *g)
             eye[i] = at[i] + dist * dir[i];
     }
     put(g, "camera { %s eye ", ortho ? "orthographic" : "perspective");
-    put_vec(g, eye);
+    put_point(g, eye);
     put(g, " look_at ");
-    put_vec(g, at);
+    put_point(g, at);
     put(g, fabs(dir[1]) > 0.95 ? " up [0, 0, 1]" : " up [0, 1, 0]");
     if (ortho)
-        put(g, " width %.17g }", range(g, 3, 6));
+        put(g, " width %.17g }", placed_length(g, range(g, 3, 6)));
     else
         put(g, " fov %.17g }", range(g, 35, 75));
 }
@@ -588,10 +620,37 @@ static void assemble(const gen *g, dtgen_scene *out)
     out->start[out->count] = out->len;
 }
 
+/* A primitive's statement (every one ends in its transforms and " }"): the
+ * placement's scale and translation go last, so its local shape is scaled
+ * and moved with the rest. */
+static void place_primitive(gen *g, char *line)
+{
+    static const char *const kinds[] = {"sphere ", "box ", "mesh ", "cylinder ", "cone ", "torus ",
+                                        "disk ", "triangle ", "plane "};
+    size_t len = strlen(line);
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+        if (strncmp(line, kinds[k], strlen(kinds[k])) != 0 || len < 2)
+            continue;
+        snprintf(line + len - 2, LINE_MAX_LEN - (len - 2), " scale %.17g translate [%.17g, %.17g, %.17g] }",
+                 g->scale, g->offset[0], g->offset[1], g->offset[2]);
+        return;
+    }
+}
+
 void dtgen_make(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const char *obj_dir)
+{
+    static const double origin[3] = {0, 0, 0};
+    dtgen_make_placed(out, seed, profile, obj_dir, 1, origin);
+}
+
+void dtgen_make_placed(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const char *obj_dir, double scale,
+                       const double offset[3])
 {
     static gen g;   /* 40 kB of lines: not on the stack of a forked test */
     memset(&g, 0, sizeof g);
+    g.placed = scale != 1 || offset[0] != 0 || offset[1] != 0 || offset[2] != 0;
+    g.scale = scale;
+    memcpy(g.offset, offset, sizeof g.offset);
     g.key = sampler_key(0x64696666u, seed);
     g.profile = profile;
     g.obj_dir = obj_dir;
@@ -608,6 +667,8 @@ void dtgen_make(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const ch
     put_image(&g);
     put_camera(&g);
     g.lines = lines;
+    for (int i = 2; i < g.lines && g.placed; i++)
+        place_primitive(&g, g.line[i]);
     assemble(&g, out);
 }
 

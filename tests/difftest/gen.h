@@ -41,6 +41,14 @@ typedef struct dtgen_scene {
  * scene file's directory, or absolute). */
 void dtgen_make(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const char *obj_dir);
 
+/* The scene of dtgen_make moved as a whole to offset + scale x (every
+ * point, length, light and the camera; the objects by a trailing `scale`
+ * and `translate`): the same scene far from the origin or tiny, for the
+ * shortcuts-on/off test at extreme magnitudes.  Scale 1 and offset 0 give
+ * dtgen_make's text. */
+void dtgen_make_placed(dtgen_scene *out, uint64_t seed, dtgen_profile profile, const char *obj_dir, double scale,
+                       const double offset[3]);
+
 /* The statements i with keep[i] != 0 (statements 0 and 1 always) into buf
  * (size bytes, NUL-terminated); returns the length, or 0 when it does not
  * fit. */
