@@ -85,6 +85,15 @@ extern double hypot(double x, double y);
     ensures EXACT(\result == \tan(x)); */
 extern double tan(double x);
 
+/* The largest integer not above x (F.9.6.2: exact).  Frama-C's own says
+ * only "finite"; light_grid_for converts the result to int. */
+/*@ requires \is_finite(x);
+    assigns \result \from x;
+    ensures \is_finite(\result);
+    ensures \result <= x < \result + 1;
+    ensures EXACT(\result == \floor(x)); */
+extern double floor(double x);
+
 /*@ requires \is_finite(x);
     assigns \result \from x;
     ensures \is_finite(\result) && -1 <= \result <= 1;
