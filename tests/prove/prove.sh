@@ -31,10 +31,18 @@ src=${PROVE_SRC:-src}
 timeout=${PROVE_TIMEOUT:-30}
 what=${1:-all}
 mkdir -p "$out"
-# cancel.h's polls come with the headers but are no function this proves
-# (their int countdown is the caller's business: spec/proofs.md, "Not proved").
 rte=()
-[ -n "${PROVE_RTE--wp-rte}" ] && rte=(${PROVE_RTE--wp-rte} -wp-skip-fct cancel_steps,cancel_now,cancel_stopped)
+[ -n "${PROVE_RTE--wp-rte}" ] && rte=(${PROVE_RTE--wp-rte})
+# rte_for FILES: the -wp-rte options for WP on FILES.  cancel.h's polls come
+# with some headers but are no function this proves (their int countdown is
+# the caller's business: spec/proofs.md, "Not proved"); Frama-C stops on a
+# -wp-skip-fct of a function the files do not have.
+rte_for() {
+    rte_opts=("${rte[@]}")
+    [ ${#rte[@]} -gt 0 ] && cc -E -I"$src" -I"$out" -Itests/prove -DNDEBUG "$@" 2>/dev/null | grep -q 'cancel_stopped' &&
+        rte_opts+=(-wp-skip-fct cancel_steps,cancel_now,cancel_stopped)
+    return 0
+}
 
 if ! why3 config list-provers 2>/dev/null | grep -q '^Z3'; then
     why3 config detect >/dev/null 2>&1
@@ -160,7 +168,8 @@ wp_run() {
     start=$(date +%s)
     echo "== WP $name (-wp-model real; $provers; ${timeout} s a goal${rte:+; ${rte[0]}})"
     fct=${PROVE_FCT:-$fct}
-    fc "" "$@" tests/prove/libm.c -wp "${rte[@]}" -wp-model real ${PROVE_WP_SPLIT--wp-split} \
+    rte_for "$@"
+    fc "" "$@" tests/prove/libm.c -wp "${rte_opts[@]}" -wp-model real ${PROVE_WP_SPLIT--wp-split} \
         -wp-prover "$provers" -wp-timeout "$timeout" -wp-par 2 ${fct:+-wp-fct "$fct"} \
         ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
     local rc=$?
@@ -299,7 +308,8 @@ if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade 
         # load of 11 with -wp-rte's assertions among its hypotheses.
         ft=
         case ",$list," in *,spawn_to_by,*) ft=spawn_to_by:$((3 * timeout)) ;; esac
-        fc "" "$file" tests/prove/libm.c -wp "${rte[@]}" -wp-model real ${PROVE_WP_SPLIT--wp-split} -wp-prover z3,cvc4 \
+        rte_for "$file"
+        fc "" "$file" tests/prove/libm.c -wp "${rte_opts[@]}" -wp-model real ${PROVE_WP_SPLIT--wp-split} -wp-prover z3,cvc4 \
             -wp-timeout "$timeout" ${ft:+-wp-fct-timeout "$ft"} -wp-par 2 -wp-fct "$list" ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
         rc=$?
         awk -v fns="${list//,/ }" '
