@@ -7,10 +7,10 @@
 # alarms and unproved clauses; exits 1 on any alarm, unproved clause or goal.
 #
 #   tests/prove/prove.sh [wp|eva|quick|isect|isect-eva|isect-sphere|isect-tri|isect-shapes|gappa]
-#   (all but isect-tri when no argument; isect: WP on the hit tests alone,
+#   (all but isect-shapes when no argument; isect: WP on the hit tests alone,
 #   isect-eva: Eva on them; isect-sphere: Eva on isect_sphere_roots alone;
-#   isect-tri: Eva on triangle_solve, a run of minutes; isect-shapes: Eva
-#   on the cylinder, cone and torus, whose alarms are open)
+#   isect-tri: Eva on triangle_solve and the shear alone, a run of minutes;
+#   isect-shapes: Eva on the cylinder, cone and torus, whose alarms are open)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts
 # (seconds; what CI runs), without the runs that check those four.
@@ -245,10 +245,17 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
       for k in $(seq -508 3 -1); do echo "SBOX(0x1p$k, 0x1p$((k + 3)))"; done
       echo "SBOX(4, 4)"; } >"$out/sphere_boxes.h"
     echo "== Eva, hit tests (-warn-special-float non-finite)"
-    if [ "$what" = isect-tri ]; then
+    # triangle_solve and the shear (minutes): isect-tri, and all and
+    # isect-eva unless PROVE_EVA leaves out tri.
+    tri=0
+    case "$what,${PROVE_EVA:-tri}," in isect-tri,* | all,*,tri,* | isect-eva,*,tri,* | all,tri,* | isect-eva,tri,*) tri=1 ;; esac
+    if [ $tri = 1 ]; then
         for k in $(seq -1074 3 1); do echo "TBOX(0x1p$k, 0x1p$((k + 3)))"; done >"$out/shear_boxes.h"
         eva_run isect_tri eva_isect_triangle isect_quotient,vec_length,vec_length_fast,vec_normalize -DEVA_ISECT_TRIANGLE \
             tests/prove/eva_isect.c || status=1
+    fi
+    if [ "$what" = isect-tri ]; then
+        :
     elif [ "$what" = isect-shapes ]; then
         # The cylinder, cone and torus (tests/prove/eva_quadric.c): not in
         # make prove, their alarms are open (spec/proofs.md).
