@@ -311,10 +311,14 @@ if { [ "$what" = all ] || [ "$what" = wp ]; } && [ "${PROVE_WP:-rays}" != shade 
     while IFS='|' read -r file list; do
         [ -n "${PROVE_FCT:-}" ] && case ",$list," in *",$PROVE_FCT,"*) list=$PROVE_FCT ;; *) continue ;; esac
         log=$out/wp_$(basename "$file" .c).log
-        # spawn_to_by's origin clause: 4 s of CVC4 alone, past 30 s once at a
-        # load of 11 with -wp-rte's assertions among its hypotheses.
+        # Three times the timeout where a clause took 4 s of CVC4 alone and
+        # went past 30 s under load (a load of 10 to 17, -wp-rte's
+        # assertions among its hypotheses): spawn_to_by's origin,
+        # ray_spawn_hit_to's direction.
         ft=
-        case ",$list," in *,spawn_to_by,*) ft=spawn_to_by:$((3 * timeout)) ;; esac
+        for f in spawn_to_by ray_spawn_hit_to; do
+            case ",$list," in *,$f,*) ft=${ft:+$ft,}$f:$((3 * timeout)) ;; esac
+        done
         rte_for "$file"
         fc "" "$file" tests/prove/libm.c -wp "${rte_opts[@]}" -wp-model real ${PROVE_WP_SPLIT--wp-split} -wp-prover z3,cvc4 \
             -wp-timeout "$timeout" ${ft:+-wp-fct-timeout "$ft"} -wp-par 2 -wp-fct "$list" ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
