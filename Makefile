@@ -687,6 +687,10 @@ $(BUILD)/obj/solo_main.o: tests/main.c FORCE
 # make prove-mutants: one deliberate bug per ensures clause
 # (tests/prove/mutants.txt) makes its goal fail.  They install what they need.
 PROVE_DEBS := frama-c-base why3 z3 cvc4 gappa
+# WP also proves the absence of run-time errors (-wp-rte: overflow of int
+# arithmetic, out-of-bounds and invalid accesses, division by zero) in the
+# functions it proves; PROVE_RTE= leaves those goals out.
+PROVE_RTE ?= -wp-rte
 .PHONY: prove prove-mutants prove-quick prove-deps
 prove-deps:
 	$(Q)missing=""; for p in $(PROVE_DEBS); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | \
@@ -697,10 +701,10 @@ prove-deps:
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing >/dev/null; fi
 
 prove: prove-deps
-	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/prove.sh
+	$(Q)PROVE_OUT=$(BUILD)/prove PROVE_RTE='$(PROVE_RTE)' bash tests/prove/prove.sh
 
 prove-mutants: prove-deps
-	$(Q)PROVE_OUT=$(BUILD)/prove bash tests/prove/mutants.sh
+	$(Q)PROVE_OUT=$(BUILD)/prove PROVE_RTE='$(PROVE_RTE)' bash tests/prove/mutants.sh
 
 # What CI runs (seconds): Gappa's bounds, Eva on the shading formulas, four
 # helpers taken by their contracts, and on the rays and light samples but

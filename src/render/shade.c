@@ -560,15 +560,20 @@ real shade_critical_angle_cos(real n1, real n2)
     /*@ assert crit_sq: EXACT(s1 * s1 > s1 * s2 && s1 * s2 > s2 * s2); */
     /*@ assert crit_k0: EXACT(snell_k(s1, s2, 0) < 0); */
     real c = fmin(sqrt(fmax((s1 - s2) * (s1 + s2), 0)) / m, 1.0);   /* fmax: s1 >= s2, so never taken */
+    /* The variants count steps of the least subnormal, the least a
+     * nextafter step moves (libm.c). */
     /*@ loop invariant 0 <= c <= 1;
-        loop assigns c; */
+        loop assigns c;
+        loop variant \floor((1 - c) / 0x1p-1074); */
     while (c < 1.0 && !(refract_discriminant(s1, s2, c, 0) >= 0.0))
         c = nextafter(c, 1.0);
     real below = nextafter(c, 0.0);
     /*@ loop invariant 0 <= below <= 1 && 0 <= c <= 1;
         loop invariant EXACT(snell_k(s1, s2, c) >= 0);
         loop invariant EXACT(below >= c - 0x1p-52 * c - 0x1p-1074);
-        loop assigns c, below; */
+        loop invariant EXACT(c > 0 ==> below <= c - 0x1p-1074);
+        loop assigns c, below;
+        loop variant \floor(c / 0x1p-1074); */
     while (c > 0.0 && refract_discriminant(s1, s2, below, 0) >= 0.0) {
         c = below;
         below = nextafter(c, 0.0);

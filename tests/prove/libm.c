@@ -56,7 +56,8 @@ extern double fma(double x, double y, double z);
 extern int __finite(double d);
 
 /* The neighbour of x toward y: between x and y, at most x's ulp away (an
- * ulp of a normal x is at most 2^-52 |x|, of a subnormal one 2^-1074). */
+ * ulp of a normal x is at most 2^-52 |x|, of a subnormal one 2^-1074),
+ * at least the least subnormal's. */
 /*@ requires \is_finite(x) && \is_finite(y);
     assigns \result \from x, y;
     ensures \is_finite(\result);
@@ -64,7 +65,10 @@ extern int __finite(double d);
     ensures x < y ==> x < \result <= y;
     ensures x > y ==> y <= \result < x;
     ensures x == y ==> \result == y;
-    ensures EXACT(x != y ==> \abs(\result - x) <= 0x1p-52 * \abs(x) + 0x1p-1074); */
+    ensures EXACT(x != y ==> \abs(\result - x) <= 0x1p-52 * \abs(x) + 0x1p-1074);
+    // and at least 2^-1074 away: every double is a multiple of 2^-1074 (so
+    // a loop of steps toward y ends)
+    ensures EXACT(x != y ==> \abs(\result - x) >= 0x1p-1074); */
 extern double nextafter(double x, double y);
 
 /*@ requires \is_finite(x) && \is_finite(y);
@@ -84,6 +88,15 @@ extern double hypot(double x, double y);
     ensures x > 0 ==> \result > 0;
     ensures EXACT(\result == \tan(x)); */
 extern double tan(double x);
+
+/* The largest integer not above x (F.9.6.2: exact).  Frama-C's own says
+ * only "finite"; light_grid_for converts the result to int. */
+/*@ requires \is_finite(x);
+    assigns \result \from x;
+    ensures \is_finite(\result);
+    ensures \result <= x < \result + 1;
+    ensures EXACT(\result == \floor(x)); */
+extern double floor(double x);
 
 /*@ requires \is_finite(x);
     assigns \result \from x;

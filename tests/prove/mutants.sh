@@ -95,8 +95,12 @@ fi
 
 start=$(date +%s)
 mkdir -p "$base"
-grep -v '^#' "$list" | grep -v '^ *$' >"$base/list"   # mutant i is line i
-n=$(wc -l <"$base/list")
+# Mutant i is line i of the list: the mutants in file order, but a line
+# "#= N" numbers the next one N (empty lines fill the gap), so that two
+# branches adding mutants in their own ranges never renumber each other's.
+awk '/^#= *[0-9]+ *$/ { sub(/^#= */, ""); while (n < $0 - 1) { print ""; n++ }; next }
+     /^#/ || /^ *$/ { next } { print; n++ }' "$list" >"$base/list"
+numbers=$(grep -vn '^$' "$base/list" | cut -d: -f1 | tr '\n' ' ')
 # Baseline: the ensures clauses WP does not prove unmutated when each is
 # one goal (not split into its conjuncts); their mutants run split.
 if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
@@ -105,9 +109,9 @@ if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
     sed -n 's/^ *unproved: typed_real_//p' "$base/baseline.log" | sort -u >"$base/hard"
 fi
 # shellcheck disable=SC2086 # a list of numbers
-printf '%s\n' ${PROVE_MUTANTS:-$(seq 1 "$n")} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
+printf '%s\n' ${PROVE_MUTANTS:-$numbers} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
 missed=0 total=0
-for i in ${PROVE_MUTANTS:-$(seq 1 "$n")}; do
+for i in ${PROVE_MUTANTS:-$numbers}; do
     IFS='|' read -r verdict _ file fn goal bug broken <"$base/$i/result"
     total=$((total + 1))
     [ "$verdict" = KILLED ] || missed=$((missed + 1))
