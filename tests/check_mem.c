@@ -9,6 +9,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "memcheck.h"
+#include "base/arena.h"
 #include "base/mem.h"
 #include "io/scene_file.h"
 #include "render/render.h"
@@ -62,6 +63,54 @@ START_TEST(test_mem_default_and_zero_sizes)
     mem_free(&m, p, 0);
     ck_assert_int_eq(c.bad_sizes, 0);
     ck_assert_int_eq(c.blocks, 0);
+}
+END_TEST
+
+/* The sizes of the blocks an arena takes, each less the first: the
+ * header a block carries cancels, whatever its size on the target. */
+static void arena_steps(size_t first, size_t last, size_t piece, int count, size_t *step)
+{
+    memcheck c;
+    memcheck_init(&c);
+    mem m = checked(&c);
+    arena a;
+    arena_init_growing(&a, &m, first, last);
+    size_t before = 0, one = 0;
+    char *kept = NULL;
+    for (int k = 0; k < count;) {
+        char *p = arena_alloc(&a, piece);
+        ck_assert_ptr_nonnull(p);
+        if (!kept)
+            kept = memset(p, 'k', piece);
+        if ((long)k + 1 == c.blocks) {
+            if (k == 0)
+                one = c.live;
+            step[k++] = c.live - before - one;
+            before = c.live;
+        }
+    }
+    ck_assert_int_eq(kept[0], 'k');
+    ck_assert_int_eq(kept[piece - 1], 'k');
+    ck_assert_uint_eq(a.bytes, c.live);
+    arena_free(&a);
+    ck_assert(c.live == 0 && c.blocks == 0 && c.bad_sizes == 0);
+}
+
+/* Blocks double from first to last and stay there; a request larger than
+ * a block gets one of its own; what was handed out stays where it was. */
+START_TEST(test_arena_growing_blocks)
+{
+    size_t step[5];
+    arena_steps(512, 2048, 8, 5, step);
+    ck_assert_uint_eq(step[0], 0);
+    ck_assert_uint_eq(step[1], 1024 - 512);
+    ck_assert_uint_eq(step[2], 2048 - 512);
+    ck_assert_uint_eq(step[3], 2048 - 512);
+    ck_assert_uint_eq(step[4], 2048 - 512);
+    arena_steps(512, 2048, 4096, 2, step);
+    ck_assert_uint_eq(step[1], 0);
+    arena_steps(0, 0, 100, 3, step);
+    ck_assert_uint_eq(step[2], 0);
 }
 END_TEST
 
@@ -214,6 +263,7 @@ Suite *suite_mem(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, test_memcheck_sees_mistakes);
     tcase_add_test(tc, test_mem_default_and_zero_sizes);
+    tcase_add_test(tc, test_arena_growing_blocks);
     tcase_add_test(tc, test_mem_whole_life);
     tcase_add_loop_test(tc, test_mem_fail_everywhere, 0, (int)(sizeof scenes / sizeof scenes[0]));
     tcase_add_test(tc, test_mem_fail_parser_and_diagnostics);

@@ -23,9 +23,24 @@ struct arena_block {
 
 void arena_init(arena *a, const mem *m)
 {
+    arena_init_growing(a, m, BLOCK_BYTES, BLOCK_BYTES);
+}
+
+void arena_init_growing(arena *a, const mem *m, size_t first, size_t last)
+{
     a->head = NULL;
     a->mem = mem_pick(m);
     a->bytes = 0;
+    a->first = first;
+    a->last = last;
+}
+
+/* The size of the next block: first, then twice the last one up to last. */
+static size_t next_block(const arena *a)
+{
+    if (!a->head)
+        return a->first;
+    return a->head->size < a->last / 2 ? 2 * a->head->size : a->last;
 }
 
 void arena_free(arena *a)
@@ -51,7 +66,7 @@ void *arena_alloc(arena *a, size_t size)
     size = round_up(size ? size : 1);
     arena_block *b = a->head;
     if (!b || b->size - b->used < size) {
-        size_t cap = size > BLOCK_BYTES ? size : BLOCK_BYTES;
+        size_t next = next_block(a), cap = size > next ? size : next;
         b = cap <= SIZE_MAX - sizeof *b ? mem_alloc(&a->mem, sizeof *b + cap) : NULL;
         if (!b)
             return NULL;

@@ -197,8 +197,11 @@ static binning binning_of(const range *r, int n)
 }
 
 
-/* Coordinate `at` (offsetof vec3's x, y or z) of *v: one load, where
- * vec_component chooses by branches. */
+/* Where axis 0, 1, 2 lies in a vec3, for coordinate. */
+static const size_t axis_at[3] = {offsetof(vec3, x), offsetof(vec3, y), offsetof(vec3, z)};
+
+/* Coordinate `at` (axis_at[axis]) of *v: one load, where vec_component
+ * chooses by branches. */
 static real coordinate(const vec3 *v, size_t at)
 {
     return *(const real *)(const void *)((const char *)v + at);
@@ -210,9 +213,8 @@ static real coordinate(const vec3 *v, size_t at)
  * three axes were binned in one pass: the same bits. */
 static void bin_axis(build_ctx *ctx, int begin, int end, const binning *bn, int axis)
 {
-    static const size_t at[3] = {offsetof(vec3, x), offsetof(vec3, y), offsetof(vec3, z)};
     bin *bins = ctx->bins[axis];
-    size_t off = at[axis];
+    size_t off = axis_at[axis];
     for (int i = begin; i < end; i++) {
         const build_item *it = &ctx->items[i];
         real c = (coordinate(&it->lo, off) + coordinate(&it->hi, off)) * 0.5;
@@ -315,9 +317,8 @@ static void kid_boxes(const build_ctx *ctx, int axis, int nb, int split, range k
 static int partition_bins(const build_ctx *ctx, int begin, int end, const binning *bn, int axis, int split,
                           range kids[2])
 {
-    static const size_t at[3] = {offsetof(vec3, x), offsetof(vec3, y), offsetof(vec3, z)};
     build_item *items = ctx->items;
-    size_t off = at[axis];
+    size_t off = axis_at[axis];
     vec3 lo[2] = {kids[0].clo, kids[1].clo}, hi[2] = {kids[0].chi, kids[1].chi};
     int i = begin, j = end - 1;
     while (i <= j) {

@@ -18,9 +18,10 @@
  * "Sixth round: the build"): left to itself, gcc's LTO keeps
  * isect_sphere_roots a call, and the f it passes by value (24 bytes, on the
  * stack) is stored as three doubles and read back as a 16-byte load, which
- * the store cannot forward.  Only an inlining hint: the code computed is the
- * same (-ffp-contract=off), so no bit changes.  gcc and clang (which defines
- * __GNUC__) know the attribute; Frama-C need not see it. */
+ * the store cannot forward.  box_hits, plane_t and plane_point take it too
+ * (spec/performance.md, eighth round).  Only an inlining hint: the code
+ * computed is the same (-ffp-contract=off), so no bit changes.  gcc and
+ * clang (which defines __GNUC__) know the attribute; Frama-C need not see it. */
 #if defined(__GNUC__) && !defined(__FRAMAC__)
 #define ISECT_FLATTEN __attribute__((flatten))
 #else
@@ -88,10 +89,11 @@ static real sphere_refine(vec3 center, real radius, const ray *r, real t, int up
 
 /* Whether a root, before refinement, could still land in (tmin, tmax).  The
  * refinement moves t by the rounding error of o + t d over |d|, a few ulps
- * of |o|/|d| + |t|; the slack is 1e-9 of that, a million times wider. */
-static int sphere_root_possible(const ray *r, real t)
+ * of |o|/|d| + |t|; the slack is 1e-9 of that, a million times wider.
+ * reach is |o|/|d| (max norms), divided once per sphere, not per root. */
+static int sphere_root_possible(const ray *r, real reach, real t)
 {
-    real slack = 1e-9 * (fabs(t) + max_abs(r->origin) / max_abs(r->dir));
+    real slack = 1e-9 * (fabs(t) + reach);
     return t + slack > r->tmin && t - slack < r->tmax;
 }
 
@@ -106,11 +108,12 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
+    real reach = refine ? max_abs(r->origin) / max_abs(r->dir) : 0.0;
     for (int i = 0; i < roots && found < max; i++) {
         real ti = t[i];
         vec3 p;
         if (refine) {
-            if (!sphere_root_possible(r, ti))
+            if (!sphere_root_possible(r, reach, ti))
                 continue;
             ti = sphere_refine(center, radius, r, ti, i == 1, &p);
         } else {
@@ -164,7 +167,7 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
                   n.y * (r->origin.y + *t * r->dir.y - p0.y) + n.z * (r->origin.z + *t * r->dir.z - p0.z) == 0);
     // no hit: parallel, t outside (tmin, tmax), or t past 2^1020, held there (isect_quotient)
     ensures EXACT(\result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax) || \abs(*t) == 0x1p1020); */
-static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
+ISECT_FLATTEN static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
@@ -196,7 +199,7 @@ static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
     requires vunit(n);
     assigns *t, *p;
     ensures \result != 0 ==> r->tmin < *t < r->tmax; */
-static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
+ISECT_FLATTEN static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
 {
     if (!plane_t(p0, n, r, t))
         return 0;
@@ -317,7 +320,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit
     isect_hit_set(h, t, p, n, r->dir);
 }
 
-static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
+ISECT_FLATTEN static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
 {
     real tt[2];
     int axis[2], found = 0;
@@ -1071,9 +1074,17 @@ int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
     return vec_is_finite(*lo) && vec_is_finite(*hi);
 }
 
+/* fmax(a, b) for magnitudes, a comparison instead of a library call per
+ * hit: they are built from fabs and sizes >= 0, so never NaN and never -0,
+ * and where a == b the two are the same bits, so either is fmax's. */
+static real larger(real a, real b)
+{
+    return a > b ? a : b;
+}
+
 static real triangle_magnitude(const vec3 v[3])
 {
-    return fmax(max_abs(v[0]), fmax(max_abs(v[1]), max_abs(v[2])));
+    return larger(max_abs(v[0]), larger(max_abs(v[1]), max_abs(v[2])));
 }
 
 static real local_magnitude(const scene_prim *p)
@@ -1088,18 +1099,18 @@ static real local_magnitude(const scene_prim *p)
     case PRIM_DISK:
         return max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
-        return fmax(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+        return larger(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
     case PRIM_CYLINDER:
-        return fmax(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
+        return larger(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
     case PRIM_CONE:
-        return fmax(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
-               fmax(p->u.cone.radius[0], p->u.cone.radius[1]);
+        return larger(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
+               larger(p->u.cone.radius[0], p->u.cone.radius[1]);
     case PRIM_TORUS:
         return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
     case PRIM_MESH: {
         real m = 0.0;
         for (int i = 0; i < p->u.mesh.position_count; i++)
-            m = fmax(m, max_abs(p->u.mesh.positions[i]));
+            m = larger(m, max_abs(p->u.mesh.positions[i]));
         return m;
     }
     }
@@ -1116,8 +1127,8 @@ real isect_prim_magnitude(const scene_prim *p)
     real norm = 0.0, shift = 0.0;
     for (int i = 0; i < 3; i++) {
         const double *row = p->frame->to_world.m[i];
-        norm = fmax(norm, fabs(row[0]) + fabs(row[1]) + fabs(row[2]));
-        shift = fmax(shift, fabs(row[3]));
+        norm = larger(norm, fabs(row[0]) + fabs(row[1]) + fabs(row[2]));
+        shift = larger(shift, fabs(row[3]));
     }
     return norm * m + shift;
 }

@@ -456,18 +456,12 @@ typedef struct interface {
     const hit *spawn_hit;
 } interface;
 
-static real max_abs_diff(vec3 a, vec3 b)
-{
-    vec3 d = vec_sub(a, b);
-    return fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
-}
-
 static int gather_crossing(void *ctx, const hit *h)
 {
     interface *f = ctx;
     if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
         return 0;
-    if (!(max_abs_diff(h->point, f->self->point) <= f->reach))
+    if (!(max_abs(vec_sub(h->point, f->self->point)) <= f->reach))
         return 0;
     const scene_prim *p = &f->scene->prims[h->prim];
     f->through = shade_shadow_transmission(f->through, f->scene->materials[p->material].t);
@@ -482,8 +476,10 @@ static int gather_crossing(void *ctx, const hit *h)
  * twice the spawn offset, the distance a spawned ray jumps. */
 static void interface_gather(const tracer *t, const surface *s, const ray *in, interface *f, trace_stats *st)
 {
-    real m = fmax(isect_part_magnitude(s->prim, s->h->part),
-                  fmax(fabs(s->h->point.x), fmax(fabs(s->h->point.y), fabs(s->h->point.z))));
+    /* Comparisons, not fmax calls: of these (never NaN, never -0) they
+     * take the same value. */
+    real m = isect_part_magnitude(s->prim, s->h->part), at = max_abs(s->h->point);
+    m = m > at ? m : at;
     ray r = *in;
     f->scene = t->scene;
     f->self = s->h;

@@ -144,7 +144,7 @@ int lower_mesh(loader *L, polymesh *pm, int file, scene_source *held, src_span a
  * swap two corners to keep their normal on the mirrored side. */
 int lower_mirrors(const xform *w);
 /* Keeps a shape's local parameters with the matrix pair (to_world,
- * to_local), the pair out of line (scene_keep); 0 when out of memory
+ * to_local), the pair out of line (scene.kept); 0 when out of memory
  * (reported). */
 int lower_keep_frame(loader *L, scene_prim *prim, const xform *to_world, const xform *to_local);
 /* A normal or axis n taken to the world by the inverse transpose, made unit

@@ -30,7 +30,7 @@ vec3 lower_transformed_normal(const xform *to_local, vec3 n)
 /* Keeps the local frame when the shape cannot absorb the transform. */
 int lower_keep_frame(loader *L, scene_prim *prim, const xform *to_world, const xform *to_local)
 {
-    scene_frame *f = scene_keep(L->scene, sizeof *f);
+    scene_frame *f = arena_alloc(&L->scene->kept, sizeof *f);
     if (!f) {
         loader_oom(L);
         return 0;

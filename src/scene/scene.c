@@ -30,55 +30,12 @@ double scene_memory_estimate(double prims, double pixels, double extra)
     return prims * (double)SCENE_BYTES_PER_PRIM + pixels * SCENE_BYTES_PER_PIXEL + extra + SCENE_BYTES_FIXED;
 }
 
-/* A block of scene_keep's: this header, then size bytes, used of them
- * handed out.  Blocks never move, so what a primitive points to stays. */
-struct scene_kept {
-    struct scene_kept *next;
-    size_t size, used;
-};
-
-/* The header and every piece rounded up to this: a double's alignment and
- * more on every target. */
-#define KEEP_ALIGN 16
-#define KEEP_HEAD ((sizeof(struct scene_kept) + KEEP_ALIGN - 1) / KEEP_ALIGN * KEEP_ALIGN)
-/* Blocks double from KEEP_FIRST bytes up to KEEP_LAST: a scene with one
- * transformed shape holds a few hundred bytes for it, one with a frame per
- * primitive an allocation per 341 frames. */
-#define KEEP_FIRST 512
-#define KEEP_LAST 65536
-
-void *scene_keep(scene_model *s, size_t size)
-{
-    struct scene_kept *b = s->kept;
-    size = (size + KEEP_ALIGN - 1) / KEEP_ALIGN * KEEP_ALIGN;
-    if (!b || b->size - b->used < size) {
-        size_t next = !b ? KEEP_FIRST : b->size < KEEP_LAST ? 2 * b->size : KEEP_LAST;
-        size_t want = size > next ? size : next;
-        if (want > (size_t)-1 - KEEP_HEAD)
-            return NULL;
-        b = mem_alloc(&s->mem, KEEP_HEAD + want);
-        if (!b)
-            return NULL;
-        b->next = s->kept;
-        b->size = want;
-        b->used = 0;
-        s->kept = b;
-    }
-    void *p = (char *)b + KEEP_HEAD + b->used;
-    b->used += size;
-    return p;
-}
-
 void scene_free(scene_model *s)
 {
     if (!s)
         return;
     mem m = s->mem;
-    while (s->kept) {
-        struct scene_kept *b = s->kept;
-        s->kept = b->next;
-        mem_free(&m, b, KEEP_HEAD + b->size);
-    }
+    arena_free(&s->kept);
     for (int i = 0; i < s->material_count; i++)
         mem_free_string(&m, s->materials[i].name);
     for (int i = 0; i < s->mesh_count; i++) {

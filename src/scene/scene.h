@@ -16,6 +16,7 @@
 #define REFRAY_SCENE_H
 
 #include <stddef.h>
+#include "base/arena.h"
 #include "base/diag.h"
 #include "base/mem.h"
 #include "base/vec.h"
@@ -86,7 +87,7 @@ typedef struct scene_frame {
  * A primitive: 128 bytes on x86-64 (it was 392 with the matrix pair and a
  * triangle's normals inline: a scene of 100 000 spheres touched 39 MB for
  * them, spec/performance.md section 5), so what few primitives have is
- * kept out of line, in blocks the scene owns (scene_keep).
+ * kept out of line, in blocks the scene owns (scene.kept).
  */
 typedef struct scene_prim {
     scene_prim_kind kind;
@@ -105,7 +106,7 @@ typedef struct scene_prim {
         struct {
             vec3 p[3];
             /* The three per-vertex shading normals, unit, out of line (few
-             * triangles have them: scene_keep); NULL: none. */
+             * triangles have them: scene.kept); NULL: none. */
             const vec3 *n;
         } triangle;
         struct { vec3 center; vec3 normal; double radius; } disk;
@@ -203,6 +204,12 @@ typedef struct scene_features {
     int meshes;            /* some mesh */
 } scene_features;
 
+/* scene.kept's blocks: a scene with one transformed shape holds a few
+ * hundred bytes for it, one with a frame per primitive takes an
+ * allocation per 341 frames. */
+#define SCENE_KEPT_FIRST 512
+#define SCENE_KEPT_LAST 65536
+
 typedef struct scene_model {
     scene_image_spec image;
     scene_camera camera;
@@ -219,7 +226,11 @@ typedef struct scene_model {
     char *oracle;              /* `oracle NAME`, or NULL */
     src_span oracle_where;
     source_set sources;        /* every file read, so later passes can point into them */
-    struct scene_kept *kept;   /* the blocks of scene_keep: frames, triangle normals */
+    /* What a primitive keeps out of line (its frame, a triangle's normals):
+     * blocks never move, so copying a scene_prim copies a pointer and
+     * growing prims moves nothing it points to.  From mem; blocks double
+     * from SCENE_KEPT_FIRST bytes to SCENE_KEPT_LAST. */
+    arena kept;
     mem mem;                   /* the allocator everything above came from */
     /* The load's --max-width, --max-height and --max-pixels, which a
      * renderer's size overrides are held to as the scene's own size was. */
@@ -374,12 +385,6 @@ int scene_prim_self_shadows(const scene_prim *p);
 /* The block word of a primitive kind ("sphere", ..., "torus", "mesh"), and its plural. */
 const char *scene_prim_name(scene_prim_kind kind);
 const char *scene_prim_plural(scene_prim_kind kind);
-
-/* size bytes that stay where they are until scene_free, aligned for a
- * double (or NULL when out of memory): what a primitive keeps out of line
- * (its frame, a triangle's normals), so that copying a scene_prim copies a
- * pointer and growing scene.prims moves nothing it points to. */
-void *scene_keep(scene_model *s, size_t size);
 
 /* Frees a mesh store allocated from m and empties it. */
 void scene_trimesh_free(const mem *m, scene_trimesh *g);

@@ -62,6 +62,7 @@ static scene_model *load(const scene_source *root, const scene_load_opts *o, int
         return NULL;
     }
     s->mem = m;
+    arena_init_growing(&s->kept, &s->mem, SCENE_KEPT_FIRST, SCENE_KEPT_LAST);
     s->max_image.width = o->limits.max_width;
     s->max_image.height = o->limits.max_height;
     s->max_image.pixels = o->limits.max_pixels;
