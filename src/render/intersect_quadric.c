@@ -369,32 +369,12 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
     return kept < max ? kept : max;
 }
 
-/* Contracts (make prove, spec/proofs.md "Hit tests: cylinder, cone,
- * torus"): what validation guarantees ([LANG-VALID-2]: finite data;
- * check_radius: radius > 0; [LANG-EXTENT-1], check_extent.c: from != to),
- * and the hits: at most max, each t in (tmin, tmax), increasing. */
-/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
-    requires \is_finite(radius) && radius > 0;                     // check_radius
-    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
-    assigns out[0 .. max - 1];
-    ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, radius, radius, 0, 0};
     return quadric_hits(&s, open, r, out, max);
 }
 
-/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
-    requires \is_finite(r0) && \is_finite(r1) && r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0);   // check.c: not both 0
-    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
-    assigns out[0 .. max - 1];
-    ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};

@@ -19,31 +19,51 @@
 volatile int eva_quadric_int;
 volatile real eva_quadric_real;
 
-static void quadric_box(int axis, real sign)
+/* The ray and the ends of one box: the axis's largest component on axis
+ * `axis` with sign `sign`. */
+static vec3 quadric_setup(ray *r, int axis, real sign, vec3 *from)
+{
+    r->origin = any_vec(-0x1p500, 0x1p500);
+    r->dir = any_dir();
+    r->tmin = any(0, 0x1p500);
+    r->tmax = any(0, DBL_MAX);
+    *from = any_vec(-0x1p500, 0x1p500);
+    return vec_add(*from, largest_at(axis, sign, 0x1p-251, 0x1p501));
+}
+
+static void cylinder_box(int axis, real sign)
 {
     ray r;
     hit out[2];
-    r.origin = any_vec(-0x1p500, 0x1p500);
-    r.dir = any_dir();
-    r.tmin = any(0, 0x1p500);
-    r.tmax = any(0, DBL_MAX);
-    vec3 from = any_vec(-0x1p500, 0x1p500);
-    vec3 w = largest_at(axis, sign, 0x1p-251, 0x1p501);
-    vec3 to = vec_add(from, w);
-    int open = Frama_C_int_interval(0, 1);
-    int n = isect_cylinder_hits(from, to, any(0x1p-500, 0x1p500), open, &r, out, 2);
-    if (n >= 1)
-        eva_quadric_real = out[0].t;
-    n = isect_cone_hits(from, to, any(0, 0x1p500), any(0, 0x1p500), open, &r, out, 2);
+    vec3 from, to = quadric_setup(&r, axis, sign, &from);
+    int n = isect_cylinder_hits(from, to, any(0x1p-500, 0x1p500), Frama_C_int_interval(0, 1), &r, out, 2);
     if (n >= 1)
         eva_quadric_real = out[0].t;
 }
 
-void eva_quadric(void)
+static void cone_box(int axis, real sign)
+{
+    ray r;
+    hit out[2];
+    vec3 from, to = quadric_setup(&r, axis, sign, &from);
+    int n = isect_cone_hits(from, to, any(0, 0x1p500), any(0, 0x1p500), Frama_C_int_interval(0, 1), &r, out, 2);
+    if (n >= 1)
+        eva_quadric_real = out[0].t;
+}
+
+void eva_cylinder(void)
 {
     for (int axis = 0; axis < 3; axis++) {
-        quadric_box(axis, 1);
-        quadric_box(axis, -1);
+        cylinder_box(axis, 1);
+        cylinder_box(axis, -1);
+    }
+}
+
+void eva_cone(void)
+{
+    for (int axis = 0; axis < 3; axis++) {
+        cone_box(axis, 1);
+        cone_box(axis, -1);
     }
 }
 

@@ -38,7 +38,7 @@ fi
 fc() { frama-c -cpp-extra-args="-I$src -I$out -Itests/prove -DNDEBUG $1" "${@:2}"; }
 status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
-ISECT_FCT=ray_at,isect_quotient,held_root,isect_sphere_roots,sphere_refine,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make,lemma_dot_difference,lemma_plane_gap,lemma_dist_expand,lemma_square_line,lemma_dist_line,lemma_foot_scalar,lemma_foot_norm,lemma_product_square,lemma_abs_square,lemma_c_norm,lemma_norms_scalar,lemma_quadratic_scalar,lemma_quotient_times,lemma_root_qa,lemma_root_cq_ring,lemma_root_cq_cancel,lemma_root_cq,lemma_on_sphere,lemma_held_qa,lemma_held_cq,lemma_sphere_roots,lemma_product_zero,lemma_zero_gap,lemma_equal_square,lemma_graze_scalar,lemma_sphere_graze
+ISECT_FCT=ray_at,nearest,isect_cylinder,isect_cone,isect_torus,isect_quotient,held_root,isect_sphere_roots,sphere_refine,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make,lemma_dot_difference,lemma_plane_gap,lemma_dist_expand,lemma_square_line,lemma_dist_line,lemma_foot_scalar,lemma_foot_norm,lemma_product_square,lemma_abs_square,lemma_c_norm,lemma_norms_scalar,lemma_quadratic_scalar,lemma_quotient_times,lemma_root_qa,lemma_root_cq_ring,lemma_root_cq_cancel,lemma_root_cq,lemma_on_sphere,lemma_held_qa,lemma_held_cq,lemma_sphere_roots,lemma_product_zero,lemma_zero_gap,lemma_equal_square,lemma_graze_scalar,lemma_sphere_graze
 # The cylinder, cone and torus (intersect_quadric.c, intersect_torus.c):
 # the entry points and the helpers they call (their assigns clauses), but
 # torus_distance and torus_quartic, whose calls of hypot need bounds WP
@@ -238,7 +238,7 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
     elif [ "$what" = isect-shapes ]; then
         # The cylinder, cone and torus (tests/prove/eva_quadric.c): not in
         # make prove, their alarms are open (spec/proofs.md).
-        for run in quadric torus; do
+        for run in ${PROVE_EVA_SHAPES:-cylinder cone torus}; do
             eva_run "$run" "eva_$run" isect_sphere_roots,held_root,vec_length,vec_length_fast,vec_normalize "" \
                 tests/prove/eva_quadric.c || status=1
         done
