@@ -46,6 +46,15 @@ typedef struct axial {
     vec3 fp, dp;     /* the parts of o - from and of d across the axis */
 } axial;
 
+/* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
+ * the same vec_length of the same difference), so the hold below never
+ * changes it; nor that of a component of the unit axis, at most 1 up to
+ * rounding (vec_length is at least the largest component).  Both state a
+ * bound for Eva (make prove), which keeps no relation between w and its
+ * length: 1/len and w/len are then finite and bounded however close
+ * `from` and `to` are in its boxes. */
+static real unit_held(real c) { return c > 2 ? 2 : c < -2 ? -2 : c; }
+
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
     assigns *x; */
@@ -53,7 +62,10 @@ static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
 {
     vec3 w = vec_sub(to, from), f = vec_sub(o, from);
     x->len = vec_length(w);
+    if (x->len < 0x1p-501)
+        x->len = 0x1p-501;
     x->a = vec_scale(w, 1.0 / x->len);
+    x->a = vec_make(unit_held(x->a.x), unit_held(x->a.y), unit_held(x->a.z));
     x->z0 = vec_dot(f, x->a);
     x->dz = vec_dot(d, x->a);
     x->fp = vec_madd(f, x->a, -x->z0);
@@ -68,7 +80,13 @@ typedef struct quadric {
     int cone;        /* 0: the cylinder's perpendicular-foot solve */
 } quadric;
 
-/* Up to two closed intervals of t; lo may be -inf and hi +inf. */
+/* An unbounded end of an interval: finite (make prove: Eva takes every
+ * non-finite double for an alarm), beyond every t a solve returns
+ * (isect_quotient's and isect_sphere_roots' are at most 2^1021), and such
+ * that the difference of two ends is finite. */
+#define SPAN_FAR 0x1p1022
+
+/* Up to two closed intervals of t; lo may be -SPAN_FAR and hi SPAN_FAR. */
 typedef struct tspan {
     int count;
     real lo[2], hi[2];
@@ -146,22 +164,22 @@ static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
     ensures 0 <= out->count <= 2; */
 static void side_span(const quadric *s, const axial *x, tspan *out)
 {
-    real t[2];
+    real t[2] = {0, 0};
     side_eq eq;
     int n = side_roots(s, x, t, &eq);
     out->count = 0;
     if (n == 0) {
         int inside = s->cone ? eq.a < 0 || (eq.a == 0 && eq.b == 0 && eq.c <= 0) : eq.a == 0 && eq.c <= 0;
         if (inside) {
-            out->lo[0] = -INFINITY;
-            out->hi[0] = INFINITY;
+            out->lo[0] = -SPAN_FAR;
+            out->hi[0] = SPAN_FAR;
             out->count = 1;
         }
         return;
     }
     if (n == 1 && s->cone && eq.a == 0) {
-        out->lo[0] = eq.b > 0 ? -INFINITY : t[0];
-        out->hi[0] = eq.b > 0 ? t[0] : INFINITY;
+        out->lo[0] = eq.b > 0 ? -SPAN_FAR : t[0];
+        out->hi[0] = eq.b > 0 ? t[0] : SPAN_FAR;
         out->count = 1;
         return;
     }
@@ -173,15 +191,17 @@ static void side_span(const quadric *s, const axial *x, tspan *out)
         out->count = 1;
         return;
     }
-    out->lo[0] = -INFINITY;
+    out->lo[0] = -SPAN_FAR;
     out->hi[0] = t[0];
     out->lo[1] = t[1];
-    out->hi[1] = INFINITY;
+    out->hi[1] = SPAN_FAR;
     out->count = 2;
 }
 
 /* The t between the end planes, [*lo, *hi]; 0 when never (parallel and
- * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to). */
+ * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to).  A
+ * crossing past 2^1020 (isect_quotient holds it: a direction nearly across
+ * the axis) is no crossing, an unbounded end, as its infinity was. */
 /*@ requires \valid_read(x) && \valid(lo) && \valid(hi) && \valid(lo_end);
     requires \separated(lo, hi, lo_end, x);
     assigns *lo, *hi, *lo_end;
@@ -189,12 +209,16 @@ static void side_span(const quadric *s, const axial *x, tspan *out)
 static int slab(const axial *x, real *lo, real *hi, int *lo_end)
 {
     if (x->dz == 0) {
-        *lo = -INFINITY;
-        *hi = INFINITY;
+        *lo = -SPAN_FAR;
+        *hi = SPAN_FAR;
         *lo_end = 0;
         return x->z0 >= 0 && x->z0 <= x->len;
     }
-    real t0 = -x->z0 / x->dz, t1 = (x->len - x->z0) / x->dz;
+    real t0, t1;
+    if (!isect_quotient(-x->z0, x->dz, &t0))
+        t0 = copysign(SPAN_FAR, t0);
+    if (!isect_quotient(x->len - x->z0, x->dz, &t1))
+        t1 = copysign(SPAN_FAR, t1);
     *lo_end = x->dz > 0 ? 0 : 1;
     *lo = x->dz > 0 ? t0 : t1;
     *hi = x->dz > 0 ? t1 : t0;
@@ -221,7 +245,7 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
 {
     real slo, shi;
     int end;
-    tspan side;
+    tspan side = {0, {0, 0}, {0, 0}};
     if (!slab(x, &slo, &shi, &end))
         return 0;
     side_span(s, x, &side);
@@ -242,7 +266,7 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     c[0].t = side.lo[best] >= slo ? side.lo[best] : slo;
     c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
     c[1].t = side.hi[best] <= shi ? side.hi[best] : shi;
-    if (!isfinite(c[0].t) || !isfinite(c[1].t))
+    if (!(fabs(c[0].t) < SPAN_FAR) || !(fabs(c[1].t) < SPAN_FAR))
         return 0;
     return c[0].t == c[1].t ? 1 : 2;
 }
@@ -254,8 +278,8 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     ensures 0 <= \result <= 2; */
 static int open_crossings(const quadric *s, const axial *x, crossing c[2])
 {
-    tspan side;
-    real t[4];
+    tspan side = {0, {0, 0}, {0, 0}};
+    real t[4] = {0, 0, 0, 0};
     int n = 0, found = 0;
     side_span(s, x, &side);
     /*@ loop invariant 0 <= i <= side.count && 0 <= n <= 2 * i;
@@ -268,8 +292,10 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
     /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
         loop assigns i, found, c[0 .. 1]; */
     for (int i = 0; i < n && found < 2; i++) {
+        if (!(fabs(t[i]) < SPAN_FAR))
+            continue;
         real z = x->z0 + t[i] * x->dz;
-        if (isfinite(t[i]) && z >= 0 && z <= x->len) {
+        if (z >= 0 && z <= x->len) {
             c[found].t = t[i];
             c[found++].surface = SURFACE_SIDE;
         }
@@ -286,7 +312,7 @@ static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
 {
     axial x;
     side_eq eq;
-    real roots[2];
+    real roots[2] = {0, 0};
     vec3 o2 = ray_at(r, t);
     axial_of(s->from, s->to, o2, r->dir, &x);
     int n = side_roots(s, &x, roots, &eq);
@@ -343,7 +369,7 @@ static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossin
 static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int max)
 {
     axial x;
-    crossing c[2];
+    crossing c[2] = {{0, 0}, {0, 0}};
     hit h[2];
     axial_of(s->from, s->to, r->origin, r->dir, &x);
     int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;

@@ -24,7 +24,7 @@
 /* intersect_quadric.c: a cylinder from `from` to `to` of radius r, a cone
  * with radius r0 at from and r1 at to; open: no end caps (a sheet). */
 /*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires vfinite(from) && vfinite(to) && EXACT(!veq(from, to));   // [LANG-VALID-2], [LANG-EXTENT-1]; Eva: any (axial_of)
     requires \is_finite(radius) && radius > 0;                     // check_radius
     requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
     assigns out[0 .. max - 1];
@@ -33,7 +33,7 @@
     ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max);
 /*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires vfinite(from) && vfinite(to) && EXACT(!veq(from, to));   // [LANG-VALID-2], [LANG-EXTENT-1]; Eva: any (axial_of)
     requires \is_finite(r0) && \is_finite(r1) && r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0);   // check.c: not both 0
     requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
     assigns out[0 .. max - 1];
