@@ -53,6 +53,7 @@ typedef struct axial {
  * bound for Eva (make prove), which keeps no relation between w and its
  * length: 1/len and w/len are then finite and bounded however close
  * `from` and `to` are in its boxes. */
+/*@ assigns \nothing; */
 static real unit_held(real c) { return c > 2 ? 2 : c < -2 ? -2 : c; }
 
 /*@ requires \valid(x);

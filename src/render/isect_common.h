@@ -29,7 +29,8 @@
     assigns *q \from num, den;
     assigns \result \from num, den;
     ensures \result == 0 || \result == 1;
-    ensures \initialized(q) && \is_finite(*q) && DOUBLES(\abs(*q) <= 0x1p1021);
+    // the bound as two comparisons: Eva narrows a caller's value by them, not by \abs
+    ensures \initialized(q) && \is_finite(*q) && DOUBLES(-0x1p1021 <= *q <= 0x1p1021);
     ensures EXACT(\result == 1 ==> den != 0 && *q == num / den && *q * den == num);
     ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * 0x1p1020 && \abs(*q) == 0x1p1020);
     ensures EXACT(\result == 0 ==> (*q > 0 <==> (num < 0 <==> den < 0))); */
@@ -55,8 +56,8 @@ int isect_quotient(real num, real den, real *q);
     ensures 0 <= \result <= 2;
     // both written, 0 where no root: Eva does not split a caller's state
     // by the result, so the bounds hold whatever it is
-    ensures \is_finite(t[0]) && DOUBLES(\abs(t[0]) <= 0x1p1021);
-    ensures \is_finite(t[1]) && DOUBLES(\abs(t[1]) <= 0x1p1021);
+    ensures \is_finite(t[0]) && DOUBLES(-0x1p1021 <= t[0] <= 0x1p1021);
+    ensures \is_finite(t[1]) && DOUBLES(-0x1p1021 <= t[1] <= 0x1p1021);
     ensures EXACT(\result == 2 ==> t[0] <= t[1]);   // doubles too: ordered by a comparison
     ensures EXACT(\result == 1 ==> t[0] == -vdot(f, d) / vnorm2(d));
     // the roots of the quadratic, unless held at 2^1020: a (R^2 - |l|^2) =
