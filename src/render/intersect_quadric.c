@@ -48,13 +48,14 @@ typedef struct axial {
 
 /* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
  * the same vec_length of the same difference), so the hold below never
- * changes it; nor that of a component of the unit axis, at most 1 up to
- * rounding (vec_length is at least the largest component).  Both state a
+ * changes it; nor that of a component of the unit axis at 1 + 2^-20: it
+ * is w_i (1/len) with len >= |w_i| (vec_length is m sqrt(s), s >= 1), at
+ * most 1 + 2^-52.  Both state a
  * bound for Eva (make prove), which keeps no relation between w and its
  * length: 1/len and w/len are then finite and bounded however close
  * `from` and `to` are in its boxes. */
 /*@ assigns \nothing; */
-static real unit_held(real c) { return c > 2 ? 2 : c < -2 ? -2 : c; }
+static real unit_held(real c) { return c > 0x1.00001p0 ? 0x1.00001p0 : c < -0x1.00001p0 ? -0x1.00001p0 : c; }
 
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
@@ -304,24 +305,49 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
     return found;
 }
 
+/* Whether *p is within 2^502 of the shape's end `from` in each coordinate:
+ * every point of a valid cylinder or cone is ([LANG-EXTENT-1]: |to - from|
+ * within 2^501 a coordinate, the radii within 2^500), so a crossing whose
+ * point o + t d is not lies off the shape by more than 2^500, which the
+ * rounding of o + t d reaches only from an origin past about 2^550 (no
+ * origin Eva's boxes hold, make prove).  *p is held to that box: the same
+ * point where the result is 1, and a bound Eva sees (it keeps none
+ * between o, t and d). */
+/*@ assigns \nothing; */
+static real box_held(real v, real c) { return v < c - 0x1p502 ? c - 0x1p502 : v > c + 0x1p502 ? c + 0x1p502 : v; }
+
+/*@ requires \valid_read(s) && \valid(p) && \separated(s, p);
+    assigns *p; */
+static int near_shape(const quadric *s, vec3 *p)
+{
+    vec3 q = vec_make(box_held(p->x, s->from.x), box_held(p->y, s->from.y), box_held(p->z, s->from.z));
+    int in = q.x == p->x && q.y == p->y && q.z == p->z;
+    *p = q;
+    return in;
+}
+
 /* t moved onto the side: the equation solved again from o' = o + t d; its
- * root of least magnitude is the step.  Returns the refined t, *p the point. */
+ * root of least magnitude is the step (o2 = o + t d, near_shape).
+ * Returns the refined t, *p the point; a step that would leave the shape's box (near_shape: never one
+ * onto the side) is not taken. */
 /*@ requires \valid_read(s) && \valid_read(r) && \valid(p) && \separated(p, s, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *p; */
-static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
+static real side_refine(const quadric *s, const ray *r, real t, vec3 o2, vec3 *p)
 {
     axial x;
     side_eq eq;
     real roots[2] = {0, 0};
-    vec3 o2 = ray_at(r, t);
     axial_of(s->from, s->to, o2, r->dir, &x);
     int n = side_roots(s, &x, roots, &eq);
     *p = o2;
     if (n == 0)
         return t;
     real step = n == 2 && fabs(roots[1]) < fabs(roots[0]) ? roots[1] : roots[0];
-    *p = vec_madd(o2, r->dir, step);
+    vec3 moved = vec_madd(o2, r->dir, step);
+    if (!near_shape(s, &moved))
+        return t;
+    *p = moved;
     return t + step;
 }
 
@@ -342,20 +368,23 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *h; */
-static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
+static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
 {
-    vec3 p, n;
+    vec3 p = ray_at(r, c.t), n;
     real t = c.t;
+    h->t = t;   /* written on every path (Eva: the caller reads it after a 0 too) */
+    if (!near_shape(s, &p))
+        return 0;
     if (c.surface == SURFACE_SIDE) {
-        t = side_refine(s, r, t, &p);
+        t = side_refine(s, r, t, p, &p);
         n = side_normal(s, x->a, p);
     } else {
         vec3 plane = c.surface == 0 ? s->from : s->to;
-        p = ray_at(r, t);
         p = vec_madd(p, x->a, -vec_dot(vec_sub(p, plane), x->a));
         n = c.surface == 0 ? vec_neg(x->a) : x->a;
     }
     isect_hit_set(h, t, p, n, r->dir);
+    return 1;
 }
 
 /*@ requires \valid_read(s) && \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1));
@@ -379,8 +408,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        crossing_hit(s, &x, r, c[i], &h[kept]);
-        kept += h[kept].t > r->tmin && h[kept].t < r->tmax;
+        kept += crossing_hit(s, &x, r, c[i], &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
     }
     if (kept == 2 && h[1].t < h[0].t) {
         hit swap = h[0];
