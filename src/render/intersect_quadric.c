@@ -48,14 +48,20 @@ typedef struct axial {
 
 /* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
  * the same vec_length of the same difference), so the hold below never
- * changes it; nor that of a component of the unit axis at 1 + 2^-20: it
+ * changes it; nor that of a component of the unit axis at UNIT_HELD: it
  * is w_i (1/len) with len >= |w_i| (vec_length is m sqrt(s), s >= 1), at
  * most 1 + 2^-52.  Both state a
  * bound for Eva (make prove), which keeps no relation between w and its
  * length: 1/len and w/len are then finite and bounded however close
  * `from` and `to` are in its boxes. */
+/* A bound on the components of a unit vector computed as w (1/|w|). */
+#define UNIT_HELD 0x1.00001p0
+
 /*@ assigns \nothing; */
-static real unit_held(real c) { return c > 0x1.00001p0 ? 0x1.00001p0 : c < -0x1.00001p0 ? -0x1.00001p0 : c; }
+static real held(real c, real m) { return c > m ? m : c < -m ? -m : c; }
+
+/*@ assigns \nothing; */
+static vec3 vec_held(vec3 u, real m) { return vec_make(held(u.x, m), held(u.y, m), held(u.z, m)); }
 
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
@@ -67,7 +73,7 @@ static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
     if (x->len < 0x1p-501)
         x->len = 0x1p-501;
     x->a = vec_scale(w, 1.0 / x->len);
-    x->a = vec_make(unit_held(x->a.x), unit_held(x->a.y), unit_held(x->a.z));
+    x->a = vec_held(x->a, UNIT_HELD);
     x->z0 = vec_dot(f, x->a);
     x->dz = vec_dot(d, x->a);
     x->fp = vec_madd(f, x->a, -x->z0);
@@ -84,9 +90,12 @@ typedef struct quadric {
 
 /* An unbounded end of an interval: finite (make prove: Eva takes every
  * non-finite double for an alarm), beyond every t a solve returns
- * (isect_quotient's and isect_sphere_roots' are at most 2^1021), and such
- * that the difference of two ends is finite. */
+ * (isect_quotient's and isect_sphere_roots' are at most CROSSING_MAX), and
+ * such that the difference of two ends is finite.  A crossing past
+ * CROSSING_MAX (a cone's root) is none, as an infinite one was: o + t d
+ * stays finite for |d| <= 4. */
 #define SPAN_FAR 0x1p1022
+#define CROSSING_MAX 0x1p1021
 
 /* Up to two closed intervals of t; lo may be -SPAN_FAR and hi SPAN_FAR. */
 typedef struct tspan {
@@ -264,13 +273,16 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     }
     if (best < 0)
         return 0;
-    c[0].surface = side.lo[best] >= slo ? SURFACE_SIDE : end;
-    c[0].t = side.lo[best] >= slo ? side.lo[best] : slo;
-    c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
-    c[1].t = side.hi[best] <= shi ? side.hi[best] : shi;
-    if (!(fabs(c[0].t) < SPAN_FAR) || !(fabs(c[1].t) < SPAN_FAR))
+    real t0 = side.lo[best] >= slo ? side.lo[best] : slo, t1 = side.hi[best] <= shi ? side.hi[best] : shi;
+    /* Two comparisons each, and c written only past them: Eva narrows by
+     * them (not by fabs), and a caller's state then holds no other t. */
+    if (!(t0 >= -CROSSING_MAX && t0 <= CROSSING_MAX && t1 >= -CROSSING_MAX && t1 <= CROSSING_MAX))
         return 0;
-    return c[0].t == c[1].t ? 1 : 2;
+    c[0].surface = side.lo[best] >= slo ? SURFACE_SIDE : end;
+    c[0].t = t0;
+    c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
+    c[1].t = t1;
+    return t0 == t1 ? 1 : 2;
 }
 
 /* The open side: its finite crossings whose height is between the ends. */
@@ -294,11 +306,17 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
     /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
         loop assigns i, found, c[0 .. 1]; */
     for (int i = 0; i < n && found < 2; i++) {
-        if (!(fabs(t[i]) < SPAN_FAR))
+        real ti = t[i];
+        if (!(ti >= -CROSSING_MAX && ti <= CROSSING_MAX))
             continue;
-        real z = x->z0 + t[i] * x->dz;
+        /* |t dz| past 2^1019 puts z far beyond both ends (|z0| and len
+         * are within 2^505): decided before the product, which could
+         * overflow. */
+        if ((x->dz < -1 || x->dz > 1) && (ti < -0x1p1019 || ti > 0x1p1019))
+            continue;
+        real z = x->z0 + ti * x->dz;
         if (z >= 0 && z <= x->len) {
-            c[found].t = t[i];
+            c[found].t = ti;
             c[found++].surface = SURFACE_SIDE;
         }
     }
@@ -362,7 +380,19 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
     real l = vec_length(across);
     if (!(l > 0))
         return s->k > 0 ? vec_neg(a) : a;
-    return vec_normalize(vec_madd(vec_scale(across, 1.0 / l), a, -s->k));
+    /* |across_i| <= l (vec_length is at least the largest component), so
+     * the hold at 2l never binds, nor that at UNIT_HELD; below a length of 2^-500
+     * both are scaled by 2^600 (exact: the same quotients wherever 1/l is
+     * finite, and no +Inf for a subnormal l).  They bound across (1/l)
+     * for Eva (make prove), which keeps no relation between a vector and
+     * its length. */
+    if (l < 0x1p-500) {
+        across = vec_scale(vec_held(across, 2 * l), 0x1p600);
+        l *= 0x1p600;
+    } else {
+        across = vec_held(across, 2 * l);
+    }
+    return vec_normalize(vec_madd(vec_held(vec_scale(across, 1.0 / l), UNIT_HELD), a, -s->k));
 }
 
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);

@@ -35,7 +35,7 @@ static void quadric_setup(ray *r, vec3 *from, vec3 *to)
 void eva_cylinder(void)
 {
     ray r;
-    hit out[2];
+    hit out[2] = {{0}, {0}};
     vec3 from, to;
     quadric_setup(&r, &from, &to);
     int n = isect_cylinder_hits(from, to, any(0x1p-500, 0x1p500), Frama_C_int_interval(0, 1), &r, out, 2);
@@ -46,7 +46,7 @@ void eva_cylinder(void)
 void eva_cone(void)
 {
     ray r;
-    hit out[2];
+    hit out[2] = {{0}, {0}};
     vec3 from, to;
     quadric_setup(&r, &from, &to);
     int n = isect_cone_hits(from, to, any(0, 0x1p500), any(0, 0x1p500), Frama_C_int_interval(0, 1), &r, out, 2);

@@ -43,7 +43,7 @@ ISECT_FCT=ray_at,nearest,isect_cylinder,isect_cone,isect_torus,isect_quotient,he
 # the entry points and the helpers they call (their assigns clauses), but
 # torus_distance and torus_quartic, whose calls of hypot need bounds WP
 # does not have (spec/proofs.md, "Hit tests: cylinder, cone, torus").
-SHAPES_FCT=unit_held,axial_of,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_polish,isect_torus_hits
+SHAPES_FCT=held,vec_held,axial_of,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_polish,isect_torus_hits
 
 # Eva: one driver a run.  An alarm is an assertion Eva adds; a clause is one
 # of the contracts' properties in src/ that the run analyses (its status is
