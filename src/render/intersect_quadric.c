@@ -423,9 +423,10 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing
     requires vfinite(s->from) && vfinite(s->to) && vfinite(r->origin) && vfinite(r->dir);
     assigns out[0 .. max - 1];
     ensures 0 <= \result <= max;
-    // doubles too (comparisons of the returned t): tmin >= 0 and t < tmax <= +Inf, so t is finite
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
+    // doubles too (comparisons of the returned t): tmin >= 0 and t < tmax <= +Inf, so t is finite;
+    // EXACT: WP's (relations between two doubles, which Eva's intervals do not keep)
+    ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax));
+    ensures EXACT(\result == 2 ==> out[0].t <= out[1].t); */
 static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int max)
 {
     axial x;
@@ -434,7 +435,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
     axial_of(s->from, s->to, r->origin, r->dir, &x);
     int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;
     /*@ loop invariant 0 <= i <= n && 0 <= kept <= i;
-        loop invariant \forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax;
+        loop invariant EXACT(\forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax);
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
@@ -446,7 +447,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         h[1] = swap;
     }
     /*@ loop invariant 0 <= i <= kept && i <= max;
-        loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
+        loop invariant EXACT(\forall integer j; 0 <= j < i ==> out[j].t == h[j].t);
         loop assigns i, out[0 .. max - 1];
         loop variant kept - i; */
     for (int i = 0; i < kept && i < max; i++)

@@ -14,7 +14,9 @@
  * check_extent.c: from != to; check.c: a cone's radii not both 0, a ring
  * torus), and the hits: at most max, each t in (tmin, tmax) (doubles too:
  * the comparisons that keep a hit; with tmin >= 0 and t < tmax <= +Inf, t
- * is finite), a quadric's two in order.
+ * is finite), a quadric's two in order.  The relations between two doubles
+ * are EXACT: WP proves them (comparisons and copies, the same for the
+ * doubles), Eva's intervals keep no relation to show them by.
  */
 #ifndef REFRAY_INTERSECT_SHAPES_H
 #define REFRAY_INTERSECT_SHAPES_H
@@ -29,8 +31,8 @@
     requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
     assigns out[0 .. max - 1];
     ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
+    ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax));
+    ensures EXACT(\result == 2 ==> out[0].t <= out[1].t); */
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max);
 /*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
     requires vfinite(from) && vfinite(to) && EXACT(!veq(from, to));   // [LANG-VALID-2], [LANG-EXTENT-1]; Eva: any (axial_of)
@@ -38,8 +40,8 @@ int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r,
     requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
     assigns out[0 .. max - 1];
     ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
+    ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax));
+    ensures EXACT(\result == 2 ==> out[0].t <= out[1].t); */
 int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max);
 
 /* intersect_torus.c: up to 4 crossings. */
