@@ -95,8 +95,15 @@ fi
 
 start=$(date +%s)
 mkdir -p "$base"
-grep -v '^#' "$list" | grep -v '^ *$' >"$base/list"   # mutant i is line i
-n=$(wc -l <"$base/list")
+# Mutant i is line i; a line @N numbers the next one N, the lines between
+# reserved (sessions working side by side each take their own numbers).
+grep -v '^#' "$list" | grep -v '^ *$' | awk '
+    /^@[0-9]+$/ { want = substr($0, 2) - 1
+                  if (n > want) { print "mutants.txt: " $0 " but " n " mutants before it" > "/dev/stderr"; exit 1 }
+                  while (n < want) { print "-|-|-|reserved|-|-"; n++ }
+                  next }
+    { print; n++ }' >"$base/list" || exit 1
+numbers=$(grep -vn '^-|-|-|reserved|' "$base/list" | cut -d: -f1 | tr '\n' ' ')
 # Baseline: the ensures clauses WP does not prove unmutated when each is
 # one goal (not split into its conjuncts); their mutants run split.
 if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
@@ -105,9 +112,9 @@ if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
     sed -n 's/^ *unproved: typed_real_//p' "$base/baseline.log" | sort -u >"$base/hard"
 fi
 # shellcheck disable=SC2086 # a list of numbers
-printf '%s\n' ${PROVE_MUTANTS:-$(seq 1 "$n")} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
+printf '%s\n' ${PROVE_MUTANTS:-$numbers} | xargs -P "${PROVE_JOBS:-2}" -I{} bash "$0" --one {}
 missed=0 total=0
-for i in ${PROVE_MUTANTS:-$(seq 1 "$n")}; do
+for i in ${PROVE_MUTANTS:-$numbers}; do
     IFS='|' read -r verdict _ file fn goal bug broken <"$base/$i/result"
     total=$((total + 1))
     [ "$verdict" = KILLED ] || missed=$((missed + 1))
@@ -116,7 +123,7 @@ done
 # Coverage: every ensures clause (admitted ones have no goal) of the files
 # that have mutants, and the mutant that kills it.
 echo "== ensures clauses and their mutants"
-files=$(grep -v '^#' "$list" | grep -v '^ *$' | cut -d'|' -f1 | sort -u)
+files=$(grep -v '^#' "$list" | grep -v '^ *$' | grep -v '^@' | cut -d'|' -f1 | sort -u)
 covered=0 clauses=0
 for f in $files; do
     while read -r fn k _ kind; do
