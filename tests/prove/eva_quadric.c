@@ -1,8 +1,10 @@
 /*
- * eva_quadric.c - Eva's driver for the cylinder and cone hit tests
- * (src/render/intersect_quadric.c; spec/proofs.md, "Hit tests: cylinder,
- * cone, torus"; tests/prove/prove.sh isect-shapes runs it, not make
- * prove: its alarms are open).  Coordinates within 2^500 ([LANG-EXTENT-1]),
+ * eva_quadric.c - Eva's drivers for the cylinder, cone and torus hit
+ * tests (src/render/intersect_quadric.c, intersect_torus.c; spec/proofs.md,
+ * "Hit tests: cylinder, cone, torus"): eva_cylinder in make prove and
+ * make prove-quick (0 alarms); eva_cone and eva_torus by
+ * tests/prove/prove.sh isect-shapes, not make prove: their alarms are
+ * open.  Coordinates within 2^500 ([LANG-EXTENT-1]),
  * radii in [2^-500, 2^500] (a cone's in [0, 2^500]), the ray's direction in
  * vec_normalize's box [-4, 4], tmin in [0, 2^500]; the ends anywhere in
  * the extent, independently (the length's hold in axial_of makes the
