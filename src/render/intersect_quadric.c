@@ -46,15 +46,10 @@ typedef struct axial {
     vec3 fp, dp;     /* the parts of o - from and of d across the axis */
 } axial;
 
-/* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
- * the same vec_length of the same difference), so the hold below never
- * changes it; nor that of a component of the unit axis at UNIT_HELD: it
- * is w_i (1/len) with len >= |w_i| (vec_length is m sqrt(s), s >= 1), at
- * most 1 + 2^-52.  Both state a
- * bound for Eva (make prove), which keeps no relation between w and its
- * length: 1/len and w/len are then finite and bounded however close
- * `from` and `to` are in its boxes. */
-/* A bound on the components of a unit vector computed as w (1/|w|). */
+/* Holds: bounds a value already keeps, stated for Eva (make prove), which
+ * keeps no relation between a vector and its length.  UNIT_HELD bounds a
+ * component of w (1/l) with l = vec_length(w) >= |w_i| (m sqrt(s) with
+ * s >= 1): at most 1 + 2^-52. */
 #define UNIT_HELD 0x1.00001p0
 
 /*@ assigns \nothing; */
@@ -63,6 +58,10 @@ static real held(real c, real m) { return c > m ? m : c < -m ? -m : c; }
 /*@ assigns \nothing; */
 static vec3 vec_held(vec3 u, real m) { return vec_make(held(u.x, m), held(u.y, m), held(u.z, m)); }
 
+/* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
+ * the same vec_length of the same difference), so its hold never changes
+ * it, nor does the unit axis's: 1/len and a are then bounded however
+ * close `from` and `to` are in Eva's boxes. */
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
     assigns *x; */
@@ -344,10 +343,10 @@ static int near_shape(const quadric *s, vec3 *p)
     return in;
 }
 
-/* t moved onto the side: the equation solved again from o' = o + t d; its
- * root of least magnitude is the step (o2 = o + t d, near_shape).
- * Returns the refined t, *p the point; a step that would leave the shape's box (near_shape: never one
- * onto the side) is not taken. */
+/* t moved onto the side: the equation solved again from o2 = o + t d
+ * (near_shape); its root of least magnitude is the step.  Returns the
+ * refined t, *p the point; a step that would leave the shape's box
+ * (near_shape: never one onto the side) is not taken. */
 /*@ requires \valid_read(s) && \valid_read(r) && \valid(p) && \separated(p, s, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *p; */
@@ -380,12 +379,10 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
     real l = vec_length(across);
     if (!(l > 0))
         return s->k > 0 ? vec_neg(a) : a;
-    /* |across_i| <= l (vec_length is at least the largest component), so
-     * the hold at 2l never binds, nor that at UNIT_HELD; below a length of 2^-500
-     * both are scaled by 2^600 (exact: the same quotients wherever 1/l is
-     * finite, and no +Inf for a subnormal l).  They bound across (1/l)
-     * for Eva (make prove), which keeps no relation between a vector and
-     * its length. */
+    /* |across_i| <= l, so the holds at 2l and UNIT_HELD never bind; below
+     * a length of 2^-500 both are scaled by 2^600 (exact: the same
+     * quotients wherever 1/l is finite, and no +Inf for a subnormal l).
+     * They bound across (1/l) for Eva. */
     if (l < 0x1p-500) {
         across = vec_scale(vec_held(across, 2 * l), 0x1p600);
         l *= 0x1p600;
