@@ -918,6 +918,15 @@ int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *
     return 1;
 }
 
+/* A hit (found != 0, its t in (tmin, tmax)) shrinks the ray's tmax to
+ * it; a miss leaves tmax alone: testing primitives one after another keeps
+ * the nearest (ray.h). */
+/*@ requires \valid(r) && \valid_read(h) && \separated(r, h);
+    requires found != 0 ==> r->tmin < h->t < r->tmax;
+    assigns r->tmax;
+    ensures \result == found;
+    ensures found != 0 ==> r->tmax == h->t && \old(r->tmin) < h->t < \old(r->tmax);
+    ensures found == 0 ==> r->tmax == \old(r->tmax); */
 static int nearest(int found, ray *r, const hit *h);
 
 int isect_hot_hit(int code, const real *g, ray *r, hit *h)
@@ -963,16 +972,40 @@ int isect_box(vec3 lo, vec3 hi, ray *r, hit *h)
     return nearest(box_hits(lo, hi, r, h, 1, 0), r, h);
 }
 
+/*@ requires \valid(r) && \valid(h) && \separated(r, h);
+    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires \is_finite(radius) && radius > 0;                     // check_radius
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns *h, r->tmax;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \old(r->tmin) < h->t < \old(r->tmax) && r->tmax == h->t;
+    ensures \result == 0 ==> r->tmax == \old(r->tmax); */
 int isect_cylinder(vec3 from, vec3 to, real radius, int open, ray *r, hit *h)
 {
     return nearest(isect_cylinder_hits(from, to, radius, open, r, h, 1), r, h);
 }
 
+/*@ requires \valid(r) && \valid(h) && \separated(r, h);
+    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
+    requires \is_finite(r0) && \is_finite(r1) && r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0);   // check.c: not both 0
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns *h, r->tmax;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \old(r->tmin) < h->t < \old(r->tmax) && r->tmax == h->t;
+    ensures \result == 0 ==> r->tmax == \old(r->tmax); */
 int isect_cone(vec3 from, vec3 to, real r0, real r1, int open, ray *r, hit *h)
 {
     return nearest(isect_cone_hits(from, to, r0, r1, open, r, h, 1), r, h);
 }
 
+/*@ requires \valid(r) && \valid(h) && \separated(r, h);
+    requires vfinite(center) && vfinite(axis);                               // [LANG-VALID-2]
+    requires \is_finite(major) && \is_finite(minor) && 0 < minor < major;     // a ring torus (check.c)
+    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
+    assigns *h, r->tmax;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \old(r->tmin) < h->t < \old(r->tmax) && r->tmax == h->t;
+    ensures \result == 0 ==> r->tmax == \old(r->tmax); */
 int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h)
 {
     return nearest(isect_torus_hits(center, axis, major, minor, r, h, 1), r, h);

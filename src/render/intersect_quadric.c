@@ -46,6 +46,22 @@ typedef struct axial {
     vec3 fp, dp;     /* the parts of o - from and of d across the axis */
 } axial;
 
+/* Holds: bounds a value already keeps, stated for Eva (make prove), which
+ * keeps no relation between a vector and its length.  UNIT_HELD bounds a
+ * component of w (1/l) with l = vec_length(w) >= |w_i| (m sqrt(s) with
+ * s >= 1): at most 1 + 2^-52. */
+#define UNIT_HELD 0x1.00001p0
+
+/*@ assigns \nothing; */
+static real held(real c, real m) { return c > m ? m : c < -m ? -m : c; }
+
+/*@ assigns \nothing; */
+static vec3 vec_held(vec3 u, real m) { return vec_make(held(u.x, m), held(u.y, m), held(u.z, m)); }
+
+/* The axis's length is at least 2^-500 ([LANG-EXTENT-1], check_extent.c:
+ * the same vec_length of the same difference), so its hold never changes
+ * it, nor does the unit axis's: 1/len and a are then bounded however
+ * close `from` and `to` are in Eva's boxes. */
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
     assigns *x; */
@@ -53,7 +69,10 @@ static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
 {
     vec3 w = vec_sub(to, from), f = vec_sub(o, from);
     x->len = vec_length(w);
+    if (x->len < 0x1p-501)
+        x->len = 0x1p-501;
     x->a = vec_scale(w, 1.0 / x->len);
+    x->a = vec_held(x->a, UNIT_HELD);
     x->z0 = vec_dot(f, x->a);
     x->dz = vec_dot(d, x->a);
     x->fp = vec_madd(f, x->a, -x->z0);
@@ -68,7 +87,16 @@ typedef struct quadric {
     int cone;        /* 0: the cylinder's perpendicular-foot solve */
 } quadric;
 
-/* Up to two closed intervals of t; lo may be -inf and hi +inf. */
+/* An unbounded end of an interval: finite (make prove: Eva takes every
+ * non-finite double for an alarm), beyond every t a solve returns
+ * (isect_quotient's and isect_sphere_roots' are at most CROSSING_MAX), and
+ * such that the difference of two ends is finite.  A crossing past
+ * CROSSING_MAX (a cone's root) is none, as an infinite one was: o + t d
+ * stays finite for |d| <= 4. */
+#define SPAN_FAR 0x1p1022
+#define CROSSING_MAX 0x1p1021
+
+/* Up to two closed intervals of t; lo may be -SPAN_FAR and hi SPAN_FAR. */
 typedef struct tspan {
     int count;
     real lo[2], hi[2];
@@ -146,22 +174,22 @@ static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
     ensures 0 <= out->count <= 2; */
 static void side_span(const quadric *s, const axial *x, tspan *out)
 {
-    real t[2];
+    real t[2] = {0, 0};
     side_eq eq;
     int n = side_roots(s, x, t, &eq);
     out->count = 0;
     if (n == 0) {
         int inside = s->cone ? eq.a < 0 || (eq.a == 0 && eq.b == 0 && eq.c <= 0) : eq.a == 0 && eq.c <= 0;
         if (inside) {
-            out->lo[0] = -INFINITY;
-            out->hi[0] = INFINITY;
+            out->lo[0] = -SPAN_FAR;
+            out->hi[0] = SPAN_FAR;
             out->count = 1;
         }
         return;
     }
     if (n == 1 && s->cone && eq.a == 0) {
-        out->lo[0] = eq.b > 0 ? -INFINITY : t[0];
-        out->hi[0] = eq.b > 0 ? t[0] : INFINITY;
+        out->lo[0] = eq.b > 0 ? -SPAN_FAR : t[0];
+        out->hi[0] = eq.b > 0 ? t[0] : SPAN_FAR;
         out->count = 1;
         return;
     }
@@ -173,15 +201,17 @@ static void side_span(const quadric *s, const axial *x, tspan *out)
         out->count = 1;
         return;
     }
-    out->lo[0] = -INFINITY;
+    out->lo[0] = -SPAN_FAR;
     out->hi[0] = t[0];
     out->lo[1] = t[1];
-    out->hi[1] = INFINITY;
+    out->hi[1] = SPAN_FAR;
     out->count = 2;
 }
 
 /* The t between the end planes, [*lo, *hi]; 0 when never (parallel and
- * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to). */
+ * outside).  *lo_end: the end plane crossed at *lo (0: from, 1: to).  A
+ * crossing past 2^1020 (isect_quotient holds it: a direction nearly across
+ * the axis) is no crossing, an unbounded end, as its infinity was. */
 /*@ requires \valid_read(x) && \valid(lo) && \valid(hi) && \valid(lo_end);
     requires \separated(lo, hi, lo_end, x);
     assigns *lo, *hi, *lo_end;
@@ -189,12 +219,16 @@ static void side_span(const quadric *s, const axial *x, tspan *out)
 static int slab(const axial *x, real *lo, real *hi, int *lo_end)
 {
     if (x->dz == 0) {
-        *lo = -INFINITY;
-        *hi = INFINITY;
+        *lo = -SPAN_FAR;
+        *hi = SPAN_FAR;
         *lo_end = 0;
         return x->z0 >= 0 && x->z0 <= x->len;
     }
-    real t0 = -x->z0 / x->dz, t1 = (x->len - x->z0) / x->dz;
+    real t0, t1;
+    if (!isect_quotient(-x->z0, x->dz, &t0))
+        t0 = copysign(SPAN_FAR, t0);
+    if (!isect_quotient(x->len - x->z0, x->dz, &t1))
+        t1 = copysign(SPAN_FAR, t1);
     *lo_end = x->dz > 0 ? 0 : 1;
     *lo = x->dz > 0 ? t0 : t1;
     *hi = x->dz > 0 ? t1 : t0;
@@ -221,7 +255,7 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
 {
     real slo, shi;
     int end;
-    tspan side;
+    tspan side = {0, {0, 0}, {0, 0}};
     if (!slab(x, &slo, &shi, &end))
         return 0;
     side_span(s, x, &side);
@@ -238,13 +272,16 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     }
     if (best < 0)
         return 0;
-    c[0].surface = side.lo[best] >= slo ? SURFACE_SIDE : end;
-    c[0].t = side.lo[best] >= slo ? side.lo[best] : slo;
-    c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
-    c[1].t = side.hi[best] <= shi ? side.hi[best] : shi;
-    if (!isfinite(c[0].t) || !isfinite(c[1].t))
+    real t0 = side.lo[best] >= slo ? side.lo[best] : slo, t1 = side.hi[best] <= shi ? side.hi[best] : shi;
+    /* Two comparisons each, and c written only past them: Eva narrows by
+     * them (not by fabs), and a caller's state then holds no other t. */
+    if (!(t0 >= -CROSSING_MAX && t0 <= CROSSING_MAX && t1 >= -CROSSING_MAX && t1 <= CROSSING_MAX))
         return 0;
-    return c[0].t == c[1].t ? 1 : 2;
+    c[0].surface = side.lo[best] >= slo ? SURFACE_SIDE : end;
+    c[0].t = t0;
+    c[1].surface = side.hi[best] <= shi ? SURFACE_SIDE : 1 - end;
+    c[1].t = t1;
+    return t0 == t1 ? 1 : 2;
 }
 
 /* The open side: its finite crossings whose height is between the ends. */
@@ -254,8 +291,8 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     ensures 0 <= \result <= 2; */
 static int open_crossings(const quadric *s, const axial *x, crossing c[2])
 {
-    tspan side;
-    real t[4];
+    tspan side = {0, {0, 0}, {0, 0}};
+    real t[4] = {0, 0, 0, 0};
     int n = 0, found = 0;
     side_span(s, x, &side);
     /*@ loop invariant 0 <= i <= side.count && 0 <= n <= 2 * i;
@@ -268,33 +305,66 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
     /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
         loop assigns i, found, c[0 .. 1]; */
     for (int i = 0; i < n && found < 2; i++) {
-        real z = x->z0 + t[i] * x->dz;
-        if (isfinite(t[i]) && z >= 0 && z <= x->len) {
-            c[found].t = t[i];
+        real ti = t[i];
+        if (!(ti >= -CROSSING_MAX && ti <= CROSSING_MAX))
+            continue;
+        /* |t dz| past 2^1019 puts z far beyond both ends (|z0| and len
+         * are within 2^505): decided before the product, which could
+         * overflow. */
+        if ((x->dz < -1 || x->dz > 1) && (ti < -0x1p1019 || ti > 0x1p1019))
+            continue;
+        real z = x->z0 + ti * x->dz;
+        if (z >= 0 && z <= x->len) {
+            c[found].t = ti;
             c[found++].surface = SURFACE_SIDE;
         }
     }
     return found;
 }
 
-/* t moved onto the side: the equation solved again from o' = o + t d; its
- * root of least magnitude is the step.  Returns the refined t, *p the point. */
+/* Whether *p is within 2^502 of the shape's end `from` in each coordinate:
+ * every point of a valid cylinder or cone is ([LANG-EXTENT-1]: |to - from|
+ * within 2^501 a coordinate, the radii within 2^500), so a crossing whose
+ * point o + t d is not lies off the shape by more than 2^500, which the
+ * rounding of o + t d reaches only from an origin past about 2^550 (no
+ * origin Eva's boxes hold, make prove).  *p is held to that box: the same
+ * point where the result is 1, and a bound Eva sees (it keeps none
+ * between o, t and d). */
+/*@ assigns \nothing; */
+static real box_held(real v, real c) { return v < c - 0x1p502 ? c - 0x1p502 : v > c + 0x1p502 ? c + 0x1p502 : v; }
+
+/*@ requires \valid_read(s) && \valid(p) && \separated(s, p);
+    assigns *p; */
+static int near_shape(const quadric *s, vec3 *p)
+{
+    vec3 q = vec_make(box_held(p->x, s->from.x), box_held(p->y, s->from.y), box_held(p->z, s->from.z));
+    int in = q.x == p->x && q.y == p->y && q.z == p->z;
+    *p = q;
+    return in;
+}
+
+/* t moved onto the side: the equation solved again from o2 = o + t d
+ * (near_shape); its root of least magnitude is the step.  Returns the
+ * refined t, *p the point; a step that would leave the shape's box
+ * (near_shape: never one onto the side) is not taken. */
 /*@ requires \valid_read(s) && \valid_read(r) && \valid(p) && \separated(p, s, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *p; */
-static real side_refine(const quadric *s, const ray *r, real t, vec3 *p)
+static real side_refine(const quadric *s, const ray *r, real t, vec3 o2, vec3 *p)
 {
     axial x;
     side_eq eq;
-    real roots[2];
-    vec3 o2 = ray_at(r, t);
+    real roots[2] = {0, 0};
     axial_of(s->from, s->to, o2, r->dir, &x);
     int n = side_roots(s, &x, roots, &eq);
     *p = o2;
     if (n == 0)
         return t;
     real step = n == 2 && fabs(roots[1]) < fabs(roots[0]) ? roots[1] : roots[0];
-    *p = vec_madd(o2, r->dir, step);
+    vec3 moved = vec_madd(o2, r->dir, step);
+    if (!near_shape(s, &moved))
+        return t;
+    *p = moved;
     return t + step;
 }
 
@@ -309,26 +379,39 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
     real l = vec_length(across);
     if (!(l > 0))
         return s->k > 0 ? vec_neg(a) : a;
-    return vec_normalize(vec_madd(vec_scale(across, 1.0 / l), a, -s->k));
+    /* |across_i| <= l, so the holds at 2l and UNIT_HELD never bind; below
+     * a length of 2^-500 both are scaled by 2^600 (exact: the same
+     * quotients wherever 1/l is finite, and no +Inf for a subnormal l).
+     * They bound across (1/l) for Eva. */
+    if (l < 0x1p-500) {
+        across = vec_scale(vec_held(across, 2 * l), 0x1p600);
+        l *= 0x1p600;
+    } else {
+        across = vec_held(across, 2 * l);
+    }
+    return vec_normalize(vec_madd(vec_held(vec_scale(across, 1.0 / l), UNIT_HELD), a, -s->k));
 }
 
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *h; */
-static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
+static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
 {
-    vec3 p, n;
+    vec3 p = ray_at(r, c.t), n;
     real t = c.t;
+    h->t = t;   /* written on every path (Eva: the caller reads it after a 0 too) */
+    if (!near_shape(s, &p))
+        return 0;
     if (c.surface == SURFACE_SIDE) {
-        t = side_refine(s, r, t, &p);
+        t = side_refine(s, r, t, p, &p);
         n = side_normal(s, x->a, p);
     } else {
         vec3 plane = c.surface == 0 ? s->from : s->to;
-        p = ray_at(r, t);
         p = vec_madd(p, x->a, -vec_dot(vec_sub(p, plane), x->a));
         n = c.surface == 0 ? vec_neg(x->a) : x->a;
     }
     isect_hit_set(h, t, p, n, r->dir);
+    return 1;
 }
 
 /*@ requires \valid_read(s) && \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1));
@@ -337,23 +420,23 @@ static void crossing_hit(const quadric *s, const axial *x, const ray *r, crossin
     requires vfinite(s->from) && vfinite(s->to) && vfinite(r->origin) && vfinite(r->dir);
     assigns out[0 .. max - 1];
     ensures 0 <= \result <= max;
-    // doubles too (comparisons of the returned t): tmin >= 0 and t < tmax <= +Inf, so t is finite
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
+    // doubles too (comparisons of the returned t): tmin >= 0 and t < tmax <= +Inf, so t is finite;
+    // EXACT: WP's (relations between two doubles, which Eva's intervals do not keep)
+    ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax));
+    ensures EXACT(\result == 2 ==> out[0].t <= out[1].t); */
 static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int max)
 {
     axial x;
-    crossing c[2];
+    crossing c[2] = {{0, 0}, {0, 0}};
     hit h[2];
     axial_of(s->from, s->to, r->origin, r->dir, &x);
     int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;
     /*@ loop invariant 0 <= i <= n && 0 <= kept <= i;
-        loop invariant \forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax;
+        loop invariant EXACT(\forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax);
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        crossing_hit(s, &x, r, c[i], &h[kept]);
-        kept += h[kept].t > r->tmin && h[kept].t < r->tmax;
+        kept += crossing_hit(s, &x, r, c[i], &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
     }
     if (kept == 2 && h[1].t < h[0].t) {
         hit swap = h[0];
@@ -361,7 +444,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         h[1] = swap;
     }
     /*@ loop invariant 0 <= i <= kept && i <= max;
-        loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
+        loop invariant EXACT(\forall integer j; 0 <= j < i ==> out[j].t == h[j].t);
         loop assigns i, out[0 .. max - 1];
         loop variant kept - i; */
     for (int i = 0; i < kept && i < max; i++)
@@ -369,32 +452,12 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
     return kept < max ? kept : max;
 }
 
-/* Contracts (make prove, spec/proofs.md "Hit tests: cylinder, cone,
- * torus"): what validation guarantees ([LANG-VALID-2]: finite data;
- * check_radius: radius > 0; [LANG-EXTENT-1], check_extent.c: from != to),
- * and the hits: at most max, each t in (tmin, tmax), increasing. */
-/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
-    requires \is_finite(radius) && radius > 0;                     // check_radius
-    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
-    assigns out[0 .. max - 1];
-    ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, radius, radius, 0, 0};
     return quadric_hits(&s, open, r, out, max);
 }
 
-/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(from) && vfinite(to) && !veq(from, to);      // [LANG-VALID-2], [LANG-EXTENT-1]
-    requires \is_finite(r0) && \is_finite(r1) && r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0);   // check.c: not both 0
-    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
-    assigns out[0 .. max - 1];
-    ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax);
-    ensures \result == 2 ==> out[0].t <= out[1].t; */
 int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max)
 {
     quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};

@@ -59,7 +59,7 @@ static real poly_eval(const real *p, int deg, real u)
     return v;
 }
 
-/*@ requires 1 <= deg && \valid_read(p + (0 .. deg)) && \valid(dp + (0 .. deg - 1));
+/*@ requires 1 <= deg <= DEGREE && \valid_read(p + (0 .. deg)) && \valid(dp + (0 .. deg - 1));
     requires \separated(dp + (0 .. deg - 1), p + (0 .. deg));
     assigns dp[0 .. deg - 1]; */
 static void poly_derive(const real *p, int deg, real *dp)
@@ -203,18 +203,6 @@ static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[D
     c[0] = (d0 - small) * (d0 + small) * ((rho0 + big) * (rho0 + big) + z0 * z0 - small * small);
 }
 
-/* Contract (make prove, spec/proofs.md "Hit tests: cylinder, cone,
- * torus"): what validation guarantees ([LANG-VALID-2]: finite data, a unit
- * axis; check.c: 0 < minor < major), and the hits: at most max, each t in
- * (tmin, tmax) (doubles too: the comparison that keeps a root; with
- * tmin >= 0 and t < tmax <= +Inf, t is finite). */
-/*@ requires \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1)) && \separated(out + (0 .. max - 1), r);
-    requires vfinite(center) && vfinite(axis);                               // [LANG-VALID-2]
-    requires \is_finite(major) && \is_finite(minor) && 0 < minor < major;     // a ring torus (check.c)
-    requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
-    assigns out[0 .. max - 1];
-    ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax); */
 int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max)
 {
     torus tr = {center, axis, major, minor};

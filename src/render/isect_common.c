@@ -289,6 +289,7 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
      * squares, so a keeps the largest component's square as its lower
      * bound (vec_dot's two copies of d give products of either sign). */
     real a = vec_length2(d);
+    t[0] = t[1] = 0;
     if (!(a > 0.0))
         return 0;
     real b = vec_dot(f, d), foot;

@@ -29,7 +29,8 @@
     assigns *q \from num, den;
     assigns \result \from num, den;
     ensures \result == 0 || \result == 1;
-    ensures \initialized(q) && \is_finite(*q) && DOUBLES(\abs(*q) <= 0x1p1021);
+    // the bound as two comparisons: Eva narrows a caller's value by them, not by \abs
+    ensures \initialized(q) && \is_finite(*q) && DOUBLES(-0x1p1021 <= *q <= 0x1p1021);
     ensures EXACT(\result == 1 ==> den != 0 && *q == num / den && *q * den == num);
     ensures EXACT(\result == 0 ==> \abs(num) >= \abs(den) * 0x1p1020 && \abs(*q) == 0x1p1020);
     ensures EXACT(\result == 0 ==> (*q > 0 <==> (num < 0 <==> den < 0))); */
@@ -40,17 +41,23 @@ int isect_quotient(real num, real den, real *q);
  * and the torus (its bounding sphere).  A line whose nearest point to the
  * centre is past t = 2^1020 has no roots; a root past 2^1020 is returned as
  * 2^1020 with its sign (isect_quotient): |d| far below |f| (a line nearly
- * along a cylinder's axis). */
+ * along a cylinder's axis).  t[0] and t[1] beyond the roots are 0. */
 /*@ requires \valid(t + (0 .. 1));
     // finite centre and radius > 0: check_radius, in_range (scene/check.c);
     // f = o - c, d the ray's (or a part of it): finite (spec/proofs.md, "Hit tests")
     requires vfinite(f) && vfinite(d) && \is_finite(radius) && radius > 0;
-    // within the scene's extent ([LANG-EXTENT-1]): |f| <= 2^501, |R| <= 2^500
-    requires DOUBLES(vbounded(f, 0x1p501) && radius <= 0x1p500 && vbounded(d, 4));
+    // within the scene's extent ([LANG-EXTENT-1]): a sphere's |f| <= 2^501,
+    // R <= 2^500, |d| <= 4; wider for the callers Eva bounds less closely:
+    // the torus's bounding sphere (R = major + minor <= 2^501), the
+    // cylinder's parts across its axis (|f| <= 2^505, |d| <= 64 to Eva,
+    // spec/proofs.md "Hit tests: cylinder, cone, torus")
+    requires DOUBLES(vbounded(f, 0x1p505) && radius <= 0x1p501 && vbounded(d, 64));
     assigns t[0 .. 1];
     ensures 0 <= \result <= 2;
-    ensures \result >= 1 ==> \is_finite(t[0]) && DOUBLES(\abs(t[0]) <= 0x1p1021);
-    ensures \result == 2 ==> \is_finite(t[1]) && DOUBLES(\abs(t[1]) <= 0x1p1021);
+    // both written, 0 where no root: Eva does not split a caller's state
+    // by the result, so the bounds hold whatever it is
+    ensures \is_finite(t[0]) && DOUBLES(-0x1p1021 <= t[0] <= 0x1p1021);
+    ensures \is_finite(t[1]) && DOUBLES(-0x1p1021 <= t[1] <= 0x1p1021);
     ensures EXACT(\result == 2 ==> t[0] <= t[1]);   // doubles too: ordered by a comparison
     ensures EXACT(\result == 1 ==> t[0] == -vdot(f, d) / vnorm2(d));
     // the roots of the quadratic, unless held at 2^1020: a (R^2 - |l|^2) =

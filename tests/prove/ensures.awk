@@ -10,7 +10,7 @@ incontract && /^[ \t]*(\/\*@)?[ \t]*(admit[ \t]+)?ensures/ {
                  $0 ~ /ensures[ \t]+DOUBLES\(/ ? "doubles" : "both"
 }
 incontract && /\*\// { incontract = 0; pending = n }
-!incontract && pending && /^[a-z][a-z0-9_ ]*[ *]+[a-z_][a-z0-9_]*\(/ && $0 !~ /;[ \t]*$/ {
+!incontract && pending && /^[a-z][a-z0-9_ ]*[ *]+[a-z_][a-z0-9_]*\(/ {
     name = $0; sub(/\(.*/, "", name); sub(/.*[ *]/, "", name)
     for (k = 1; k <= pending; k++) printf "%s %d %d %s\n", name, k, cl[k], kind_of[k]
     pending = 0

@@ -2,22 +2,23 @@
  * eva_isect.c - Eva's drivers for the hit tests (src/render/isect_common.c,
  * src/render/intersect.c; spec/proofs.md, "Hit tests"; tests/prove/prove.sh
  * isect-eva runs them).  Coordinates are in [-2^500, 2^500] (the scene's
- * extent, [LANG-EXTENT-1]), f = o - c in [-2^501, 2^501], radii in
- * [2^-500, 2^500], a ray's direction in the box of vec_normalize's bound,
+ * extent, [LANG-EXTENT-1]), f = o - c in [-2^501, 2^501] (wider for
+ * isect_sphere_roots, below), radii in [2^-500, 2^500], a ray's direction in the box of vec_normalize's bound,
  * [-4, 4].  intersect.c's static functions are reached by including it.
  *
  * Four entry points:
  *   eva_isect_sphere: isect_sphere_roots (with isect_quotient's body, so
  *     that each box keeps the range of the foot -b/a), held_root and the
- *     vec.h lengths by their contracts.  It divides b = f.d by a = d.d, whose ratio to |d|
- *     an analysis of intervals loses when |d| ranges from 2^-1074 to 4; so
- *     d is split as in eva_vec.c, its largest component in one binade
- *     [2^k, 2^(k+1)) for k = -538 .. -509 (there the foot's test bounds
- *     it, by 2^1020 times the spread of a in the box), then in one box
- *     [2^k, 2^(k+3)) (k = -508, -505, .., -1, then 4 itself: a factor 8
- *     keeps l = f - (b/a) d within 2^511, its square finite), one box for
- *     every smaller d (each square rounds to 0, so a = 0), and the zero
- *     vector: 1213 calls.
+ *     vec.h lengths by their contracts, over its precondition's box (f
+ *     within 2^505, R in [2^-500, 2^501], d within 64: the cylinder's
+ *     and the torus's calls).  It divides b = f.d by a = d.d, whose ratio
+ *     to |d| an analysis of intervals loses when |d| ranges from 2^-1074
+ *     to 64; so d is split as in eva_vec.c, its largest component in one
+ *     binade [2^k, 2^(k+1)) for k = -538 .. 5 (below 2^-509 the foot's
+ *     test bounds it, by 2^1020 times the spread of a in the box; above,
+ *     one binade keeps l = f - (b/a) d within 13 |f|, 2^509, its square
+ *     finite), then 64 itself, one box for every smaller d (each square
+ *     rounds to 0, so a = 0), and the zero vector: 3278 calls.
  *   eva_isect: isect_hit_set, plane_t, box_slabs, with isect_quotient by
  *     its contract.
  *   eva_isect_quotient: isect_quotient and held_root, the divisor in each
@@ -52,7 +53,7 @@ static ray any_ray(void)
 static void sphere_roots(vec3 d)
 {
     real t[2] = {0, 0};
-    int n = isect_sphere_roots(any_vec(-0x1p501, 0x1p501), d, any(0x1p-500, 0x1p500), t);
+    int n = isect_sphere_roots(any_vec(-0x1p505, 0x1p505), d, any(0x1p-500, 0x1p501), t);
     if (n >= 1)
         eva_isect_real = t[0];
     if (n == 2)
@@ -71,7 +72,7 @@ void eva_isect_sphere(void)
 {
     sphere_roots(vec_make(0, 0, 0));
     sphere_box(0x1p-1074, binade_top(0x1p-538));
-#define SBOX(lo, hi) sphere_box(lo, lo == 4 ? lo : binade_top(hi));
+#define SBOX(lo, hi) sphere_box(lo, lo == 64 ? lo : binade_top(hi));
 #include "sphere_boxes.h"
 #undef SBOX
 }

@@ -95,12 +95,15 @@ fi
 
 start=$(date +%s)
 mkdir -p "$base"
-# Mutant i is line i of the list: the mutants in file order, but a line
-# "#= N" numbers the next one N (empty lines fill the gap), so that two
-# branches adding mutants in their own ranges never renumber each other's.
-awk '/^#= *[0-9]+ *$/ { sub(/^#= */, ""); while (n < $0 - 1) { print ""; n++ }; next }
-     /^#/ || /^ *$/ { next } { print; n++ }' "$list" >"$base/list"
-numbers=$(grep -vn '^$' "$base/list" | cut -d: -f1 | tr '\n' ' ')
+# Mutant i is line i; a line @N numbers the next one N, the lines between
+# reserved (sessions working side by side each take their own numbers).
+grep -v '^#' "$list" | grep -v '^ *$' | awk '
+    /^@[0-9]+$/ { want = substr($0, 2) - 1
+                  if (n > want) { print "mutants.txt: " $0 " but " n " mutants before it" > "/dev/stderr"; exit 1 }
+                  while (n < want) { print "-|-|-|reserved|-|-"; n++ }
+                  next }
+    { print; n++ }' >"$base/list" || exit 1
+numbers=$(grep -vn '^-|-|-|reserved|' "$base/list" | cut -d: -f1 | tr '\n' ' ')
 # Baseline: the ensures clauses WP does not prove unmutated when each is
 # one goal (not split into its conjuncts); their mutants run split.
 if [ ! -f "$base/hard" ] || [ -z "${PROVE_KEEP_BASELINE:-}" ]; then
@@ -120,7 +123,7 @@ done
 # Coverage: every ensures clause (admitted ones have no goal) of the files
 # that have mutants, and the mutant that kills it.
 echo "== ensures clauses and their mutants"
-files=$(grep -v '^#' "$list" | grep -v '^ *$' | cut -d'|' -f1 | sort -u)
+files=$(grep -v '^#' "$list" | grep -v '^ *$' | grep -v '^@' | cut -d'|' -f1 | sort -u)
 covered=0 clauses=0
 for f in $files; do
     while read -r fn k _ kind; do
