@@ -262,7 +262,8 @@ static int solid_crossings(const quadric *s, const axial *x, crossing c[2])
     int best = -1;
     real best_len = -1;
     /*@ loop invariant 0 <= i <= side.count && -1 <= best < i;
-        loop assigns i, best, best_len; */
+        loop assigns i, best, best_len;
+        loop variant side.count - i; */
     for (int i = 0; i < side.count; i++) {
         real lo = side.lo[i] > slo ? side.lo[i] : slo, hi = side.hi[i] < shi ? side.hi[i] : shi;
         if (lo <= hi && hi - lo > best_len) {
@@ -296,14 +297,16 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
     int n = 0, found = 0;
     side_span(s, x, &side);
     /*@ loop invariant 0 <= i <= side.count && 0 <= n <= 2 * i;
-        loop assigns i, n, t[0 .. 3]; */
+        loop assigns i, n, t[0 .. 3];
+        loop variant side.count - i; */
     for (int i = 0; i < side.count; i++) {
         t[n++] = side.lo[i];
         if (side.hi[i] != side.lo[i])
             t[n++] = side.hi[i];
     }
     /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
-        loop assigns i, found, c[0 .. 1]; */
+        loop assigns i, found, c[0 .. 1];
+        loop variant n - i; */
     for (int i = 0; i < n && found < 2; i++) {
         real ti = t[i];
         if (!(ti >= -CROSSING_MAX && ti <= CROSSING_MAX))

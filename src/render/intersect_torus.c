@@ -53,7 +53,8 @@ static real poly_eval(const real *p, int deg, real u)
 {
     real v = p[deg];
     /*@ loop invariant -1 <= i < deg;
-        loop assigns i, v; */
+        loop assigns i, v;
+        loop variant i + 1; */
     for (int i = deg - 1; i >= 0; i--)
         v = v * u + p[i];
     return v;
@@ -65,7 +66,8 @@ static real poly_eval(const real *p, int deg, real u)
 static void poly_derive(const real *p, int deg, real *dp)
 {
     /*@ loop invariant 1 <= i <= deg + 1;
-        loop assigns i, dp[0 .. deg - 1]; */
+        loop assigns i, dp[0 .. deg - 1];
+        loop variant deg + 1 - i; */
     for (int i = 1; i <= deg; i++)
         dp[i - 1] = (real)i * p[i];
 }
@@ -80,7 +82,8 @@ static real monotone_root(const real *p, const real *dp, int deg, real a, real b
 {
     real x = 0.5 * (a + b);
     /*@ loop invariant 0 <= i <= 200;
-        loop assigns i, x, a, b; */
+        loop assigns i, x, a, b;
+        loop variant 200 - i; */
     for (int i = 0; i < 200; i++) {
         real fx = poly_eval(p, deg, x);
         if (fx == 0)
@@ -102,6 +105,7 @@ static real monotone_root(const real *p, const real *dp, int deg, real a, real b
 /* The real roots of p (degree deg >= 1) in [lo, hi], increasing; their number. */
 /*@ requires 1 <= deg <= DEGREE && \valid_read(p + (0 .. deg)) && \valid(roots + (0 .. deg - 1));
     requires \separated(roots + (0 .. deg - 1), p + (0 .. deg));
+    decreases deg;
     assigns roots[0 .. deg - 1];
     ensures 0 <= \result <= deg; */
 static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
@@ -117,7 +121,8 @@ static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
     ends[0] = lo;
     ends[ncut + 1] = hi;
     /*@ loop invariant 0 <= i <= ncut + 1 && 0 <= found <= i;
-        loop assigns i, found, roots[0 .. deg - 1]; */
+        loop assigns i, found, roots[0 .. deg - 1];
+        loop variant ncut + 1 - i; */
     for (int i = 0; i <= ncut; i++) {
         real a = ends[i], b = ends[i + 1], fa = poly_eval(p, deg, a), fb = poly_eval(p, deg, b);
         if (fa == 0) {
@@ -164,7 +169,8 @@ static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3
     real tt = t, d, dl = vec_length(r->dir);
     vec3 nn;
     /*@ loop invariant 0 <= i <= 8;
-        loop assigns i, x, tt, d, nn; */
+        loop assigns i, x, tt, d, nn;
+        loop variant 8 - i; */
     for (int i = 0; i < 8 && torus_distance(tr, x, &d, &nn); i++) {
         real slope = vec_dot(nn, r->dir);
         if (slope == 0)
@@ -224,7 +230,8 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
     hit h[ROOTS_MAX];
     /*@ loop invariant 0 <= i <= n && 0 <= found <= i;
         loop invariant \forall integer j; 0 <= j < found ==> r->tmin < h[j].t < r->tmax;
-        loop assigns i, found, h[0 .. ROOTS_MAX - 1]; */
+        loop assigns i, found, h[0 .. ROOTS_MAX - 1];
+        loop variant n - i; */
     for (int i = 0; i < n; i++) {
         real t = tm + u[i] * scale / dl;
         /* The same root until halfway to its neighbours (or 1e-3 of the
@@ -239,11 +246,13 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
     }
     /*@ loop invariant 1 <= i <= found || (found == 0 && i == 1);
         loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
-        loop assigns i, h[0 .. ROOTS_MAX - 1]; */
+        loop assigns i, h[0 .. ROOTS_MAX - 1];
+        loop variant found - i; */
     for (int i = 1; i < found; i++)
         /*@ loop invariant 0 <= j <= i;
             loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
-            loop assigns j, h[0 .. ROOTS_MAX - 1]; */
+            loop assigns j, h[0 .. ROOTS_MAX - 1];
+            loop variant j; */
         for (int j = i; j > 0 && h[j].t < h[j - 1].t; j--) {
             hit s = h[j];
             h[j] = h[j - 1];
@@ -251,7 +260,8 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
         }
     /*@ loop invariant 0 <= i <= found && i <= max;
         loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
-        loop assigns i, out[0 .. max - 1]; */
+        loop assigns i, out[0 .. max - 1];
+        loop variant found - i; */
     for (int i = 0; i < found && i < max; i++)
         out[i] = h[i];
     return found < max ? found : max;
