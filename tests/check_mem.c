@@ -225,6 +225,22 @@ START_TEST(test_mem_fail_parser_and_diagnostics)
 }
 END_TEST
 
+/* The build's median split (parts whose centroids coincide, where no
+ * binned plane separates them) under the same sweep: two such clusters, so
+ * a second split follows one whose sort buffers failed to allocate.  Its
+ * keys failing after its spare buffer was made once left spare held, and
+ * the next split wrote through the missing keys (an outside attack's
+ * finding: SIGSEGV through the public API). */
+START_TEST(test_mem_fail_median_split)
+{
+    static const char text[] = "for i in 0..39 {\n"
+                               "  sphere { center [0, 0, 0] radius 1 + i / 100 }\n"
+                               "  sphere { center [10, 0, 0] radius 1 + i / 100 }\n"
+                               "}\n";
+    sweep("median.scene", text, STATUS_OK);
+}
+END_TEST
+
 #ifdef REFRAY_HAVE_JSON
 /* [EMBED-MEM-2] for the JSON reader (spec/json.md): its own allocations
  * (element spans, inline mesh arrays, names, an OBJ file's mesh) fail in
@@ -267,6 +283,7 @@ Suite *suite_mem(void)
     tcase_add_test(tc, test_mem_whole_life);
     tcase_add_loop_test(tc, test_mem_fail_everywhere, 0, (int)(sizeof scenes / sizeof scenes[0]));
     tcase_add_test(tc, test_mem_fail_parser_and_diagnostics);
+    tcase_add_test(tc, test_mem_fail_median_split);
 #ifdef REFRAY_HAVE_JSON
     tcase_add_test(tc, test_mem_fail_json);
 #endif

@@ -365,10 +365,14 @@ static int compare_keys(const void *pa, const void *pb)
  * the sort buffers cannot be made. */
 static int median_split(build_ctx *ctx, int begin, int end, int axis)
 {
-    if (!ctx->spare) {
-        ctx->spare = mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->spare);
+    /* Both buffers or none: a failed keys allocation leaves spare held, and
+     * the build goes on making leaves, so the next call must try again
+     * rather than take spare's presence for both. */
+    if (!ctx->keys) {
+        if (!ctx->spare)
+            ctx->spare = mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->spare);
         ctx->keys = ctx->spare ? mem_alloc(&ctx->b->mem, (size_t)ctx->count * sizeof *ctx->keys) : NULL;
-        if (!ctx->spare || !ctx->keys) {
+        if (!ctx->keys) {
             ctx->failed = 1;
             return -1;
         }
