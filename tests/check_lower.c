@@ -282,6 +282,18 @@ START_TEST(test_scene_load_validation_errors)
         {"plane { point [-1e308, 0, 0] translate [-1e308, 0, 0] }",
          "t.scene:1:1: error: this plane is out of range: a coordinate or size passes the largest number "
          "(about 1.8e308)"},
+        /* a positive size a transform takes below the smallest double (an
+         * outside attack's finding: `refray check` said ok, the JSON loader
+         * refused the export) */
+        {"sphere { radius 1e-300 scale 1e-100 }",
+         "t.scene:1:1: error: this sphere's size is 0 after its transforms: it passes below the smallest "
+         "number (about 4.9e-324)"},
+        {"disk { radius 1e-300 scale 1e-100 }",
+         "t.scene:1:1: error: this disk's size is 0 after its transforms: it passes below the smallest "
+         "number (about 4.9e-324)"},
+        {"cone { from [0, 0, 0] to [0, 1e100, 0] radii 0 1e-300 scale 1e-100 }",
+         "t.scene:1:1: error: this cone's size is 0 after its transforms: it passes below the smallest "
+         "number (about 4.9e-324)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         loaded l;

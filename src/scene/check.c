@@ -316,6 +316,21 @@ static int in_range(const scene_prim *prim)
     return ok && (!prim->has_xform || (xform_finite(&prim->frame->to_world) && xform_finite(&prim->frame->to_local)));
 }
 
+/* A transform can take a positive size below the smallest double: the
+ * shape is then gone, and the hit tests' preconditions (a sphere's and a
+ * disk's radius > 0, a cone's r0 > 0 || r1 > 0: intersect_shapes.h,
+ * intersect.c) would not hold.  The cylinder's and torus's are in
+ * lower_quadric_in_range. */
+static int size_kept(const scene_prim *prim)
+{
+    switch (prim->kind) {
+    case PRIM_SPHERE: return prim->u.sphere.radius > 0;
+    case PRIM_DISK: return prim->u.disk.radius > 0;
+    case PRIM_CONE: return prim->u.cone.radius[0] > 0 || prim->u.cone.radius[1] > 0;
+    default: return 1;
+    }
+}
+
 /* A triangle has no area when its edges are parallel to rounding error:
  * the sine of the angle between them is at most 4 epsilon (computed on the
  * edges' directions, so the size of the triangle does not matter). */
@@ -332,6 +347,13 @@ int check_placed(loader *L, const check_at *at, const scene_prim *prim)
     if (!in_range(prim)) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_BLOCK),
                     "this %s is out of range: a coordinate or size passes the largest number (about 1.8e308)",
+                    scene_prim_name(prim->kind));
+        return 0;
+    }
+    if (!size_kept(prim)) {
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_BLOCK),
+                    "this %s's size is 0 after its transforms: it passes below the smallest number "
+                    "(about 4.9e-324)",
                     scene_prim_name(prim->kind));
         return 0;
     }
