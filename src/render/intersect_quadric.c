@@ -185,7 +185,11 @@ static side_eq cone_equation(const quadric *s, const axial *x)
 {
     side_eq e;
     real rho0 = s->r0 * s->mu + s->k * x->z0, sig = s->k * x->dz;
-    real lf = vec_length(x->fp) * s->mu, ld = vec_length(x->dp) * s->mu;
+    real lf = vec_length(x->fp), ld = vec_length(x->dp);
+    /* Both >= 0 already (vec_length's exact clause), stated for Eva,
+     * whose bounds on vec_length hold of magnitudes only. */
+    lf = (lf > 0 ? lf : 0) * s->mu;
+    ld = (ld > 0 ? ld : 0) * s->mu;
     e.a = (ld - fabs(sig)) * (ld + fabs(sig));
     e.b = vec_dot(x->fp, x->dp) * s->mu * s->mu - rho0 * sig;
     e.c = (lf - fabs(rho0)) * (lf + fabs(rho0));
