@@ -367,7 +367,9 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
         if (side.hi[i] != side.lo[i])
             t[n++] = side.hi[i];
     }
-    /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
+    /* Unrolled for Eva (n <= 4), which otherwise widens i past n. */
+    /*@ loop unroll 4;
+        loop invariant 0 <= i <= n && 0 <= found <= 2;
         loop assigns i, found, c[0 .. 1]; */
     for (int i = 0; i < n && found < 2; i++) {
         real ti = t[i];
