@@ -146,6 +146,26 @@ START_TEST(test_cone_by_hand)
 }
 END_TEST
 
+/* The steepest valid cone ([LANG-EXTENT-1]): radius 2^500 at z = 0, its
+ * apex 2^-500 above, slope k = -2^1000.  A ray down the line x = 2^499
+ * from z = 2^30 meets the side where the radius is 2^499, at z = 2^-501:
+ * t = 2^30 - 2^-501, which is 2^30 in doubles; the normal (x^ - k z^)
+ * normalised is +z to 2^-1000, entering.  Unscaled, k z0 = -2^1030
+ * overflowed and the cone was missed (spec/proofs.md, "Round 8d"). */
+START_TEST(test_cone_steepest)
+{
+    for (int open = 0; open <= 1; open++) {
+        scene_prim c = cone(vec_make(0, 0, 0), 0x1p500, vec_make(0, 0, 0x1p-500), 0, open);
+        ray r = make_ray(vec_make(0x1p499, 0, 0x1p30), vec_make(0, 0, -1));
+        hit h;
+        ck_assert_int_eq(isect_prim(&c, &r, &h), 1);
+        ck_assert_near(h.t, 0x1p30, 0);
+        ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 1e-15);
+        ck_assert_int_eq(h.entering, 1);
+    }
+}
+END_TEST
+
 /* Torus about z, major 2, minor 0.5.  Along -x in its plane: the tube is
  * crossed at x = 2.5, 1.5, -1.5, -2.5 (t = 2.5, 3.5, 6.5, 7.5) with outward
  * normals +x, -x, +x, -x.  Down through the tube at x = 2: z = +-0.5
@@ -442,6 +462,7 @@ Suite *suite_quadrics(void)
     TCase *tc = tcase_create("quadrics");
     tcase_add_test(tc, test_cylinder_by_hand);
     tcase_add_test(tc, test_cone_by_hand);
+    tcase_add_test(tc, test_cone_steepest);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_transformed);

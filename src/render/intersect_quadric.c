@@ -6,7 +6,10 @@
  * dz = d.a) and the part across the axis fp + t dp.  The side is where
  * |fp + t dp| equals the radius at that height, rho(z) = r0 + k z with
  * k = (r1 - r0)/len (k = 0: a cylinder); the ends are the planes z = 0 and
- * z = len (the slab).
+ * z = len (the slab).  The cone's equation is formed scaled by a power of
+ * two mu (quadric.mu, cone_slope): exact, so the same roots, but k mu and
+ * the lengths times mu are small enough that no term overflows, where k
+ * itself reaches 2^1001 (a cone 2^-500 long and 2^500 wide).
  *
  * A closed one is a convex solid: the points of the slab inside the side.
  * The line meets it in one interval (Kay and Kajiya's slabs, "Ray Tracing
@@ -62,15 +65,22 @@ static vec3 vec_held(vec3 u, real m) { return vec_make(held(u.x, m), held(u.y, m
  * the same vec_length of the same difference), so its hold never changes
  * it, nor does the unit axis's: 1/len and a are then bounded however
  * close `from` and `to` are in Eva's boxes. */
+/*@ requires vfinite(from) && vfinite(to);
+    assigns \nothing;
+    ensures \is_finite(\result) && \result >= 0x1p-501; */
+static real axis_length(vec3 from, vec3 to)
+{
+    real len = vec_length(vec_sub(to, from));
+    return len < 0x1p-501 ? 0x1p-501 : len;
+}
+
 /*@ requires \valid(x);
     requires vfinite(from) && vfinite(to) && vfinite(o) && vfinite(d);
     assigns *x; */
 static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
 {
     vec3 w = vec_sub(to, from), f = vec_sub(o, from);
-    x->len = vec_length(w);
-    if (x->len < 0x1p-501)
-        x->len = 0x1p-501;
+    x->len = axis_length(from, to);
     x->a = vec_scale(w, 1.0 / x->len);
     x->a = vec_held(x->a, UNIT_HELD);
     x->z0 = vec_dot(f, x->a);
@@ -83,9 +93,50 @@ static void axial_of(vec3 from, vec3 to, vec3 o, vec3 d, axial *x)
 typedef struct quadric {
     vec3 from, to;
     real r0, r1;
-    real k;          /* (r1 - r0)/len */
+    real k;          /* (r1 - r0)/len times mu */
     int cone;        /* 0: the cylinder's perpendicular-foot solve */
+    real mu;         /* the cone's scale, a power of two (1: the cylinder) */
 } quadric;
+
+/* The cone's scale mu: a power of two with |k mu| <= 1/4 and mu <= 1/4,
+ * k mu returned.  Then rho0 mu = r0 mu + (k mu) z0 is within 2^502 and
+ * the terms of a, b, c (times mu^2) and of the discriminant within
+ * 2^1019 (make prove: Eva's cone run).  Every step is by a power of two,
+ * so the roots are the unscaled equation's, bit for bit, unless a scaled
+ * term falls below 2^-1022 (spec/proofs.md, "Round 8d"). */
+/*@ requires \valid(k) && \valid(mu) && \separated(k, mu);
+    requires \is_finite(*k) && \is_finite(*mu) && 0 <= *mu <= 1;
+    requires 2 <= e <= 0x1p512;
+    assigns *k, *mu;
+    ensures \is_finite(*k) && \is_finite(*mu) && 0 <= *mu <= 1; */
+static void slope_step(real *k, real *mu, real e)
+{
+    /* two comparisons on k: Eva narrows k by them (not by fabs) */
+    if (*k > 0.5 * e || *k < -0.5 * e) {
+        *k /= e;
+        *mu /= e;
+    }
+}
+
+/*@ requires \valid(mu) && \is_finite(k);
+    assigns *mu;
+    ensures \is_finite(\result) && \is_finite(*mu) && 0 <= *mu <= 1; */
+static real cone_slope(real k, real *mu)
+{
+    *mu = 1;
+    slope_step(&k, mu, 0x1p512);
+    slope_step(&k, mu, 0x1p256);
+    slope_step(&k, mu, 0x1p128);
+    slope_step(&k, mu, 0x1p64);
+    slope_step(&k, mu, 0x1p32);
+    slope_step(&k, mu, 0x1p16);
+    slope_step(&k, mu, 0x1p8);
+    slope_step(&k, mu, 0x1p4);
+    slope_step(&k, mu, 0x1p2);
+    slope_step(&k, mu, 0x1p1);
+    *mu *= 0x1p-2;
+    return k * 0x1p-2;
+}
 
 /* An unbounded end of an interval: finite (make prove: Eva takes every
  * non-finite double for an alarm), beyond every t a solve returns
@@ -101,6 +152,20 @@ typedef struct tspan {
     int count;
     real lo[2], hi[2];
 } tspan;
+
+/* num/den, or +-SPAN_FAR where isect_quotient holds it (past 2^1020: no
+ * crossing, an unbounded end, as the infinity or the huge quotient was; a
+ * step that long leaves near_shape's box).  A slab's end, a cone's root. */
+/*@ requires \is_finite(num) && \is_finite(den) && DOUBLES(\abs(num) <= 0x1p1017);
+    assigns \nothing;
+    ensures \is_finite(\result) && DOUBLES(-SPAN_FAR <= \result <= SPAN_FAR); */
+static real far_quotient(real num, real den)
+{
+    real q;
+    if (!isect_quotient(num, den, &q))
+        q = copysign(SPAN_FAR, q);
+    return q;
+}
 
 /* b^2 - a c with the rounding of both products recovered by fma. */
 /*@ assigns \nothing; */
@@ -119,10 +184,14 @@ typedef struct side_eq {
 static side_eq cone_equation(const quadric *s, const axial *x)
 {
     side_eq e;
-    real rho0 = s->r0 + s->k * x->z0, sig = s->k * x->dz;
+    real rho0 = s->r0 * s->mu + s->k * x->z0, sig = s->k * x->dz;
     real lf = vec_length(x->fp), ld = vec_length(x->dp);
+    /* Both >= 0 already (vec_length's exact clause), stated for Eva,
+     * whose bounds on vec_length hold of magnitudes only. */
+    lf = (lf > 0 ? lf : 0) * s->mu;
+    ld = (ld > 0 ? ld : 0) * s->mu;
     e.a = (ld - fabs(sig)) * (ld + fabs(sig));
-    e.b = vec_dot(x->fp, x->dp) - rho0 * sig;
+    e.b = vec_dot(x->fp, x->dp) * s->mu * s->mu - rho0 * sig;
     e.c = (lf - fabs(rho0)) * (lf + fabs(rho0));
     return e;
 }
@@ -147,7 +216,7 @@ static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
     if (eq->a == 0) {
         if (eq->b == 0)
             return 0;
-        t[0] = -eq->c / (2 * eq->b);
+        t[0] = far_quotient(-eq->c, 2 * eq->b);
         return 1;
     }
     real disc = discriminant(eq->a, eq->b, eq->c);
@@ -158,7 +227,7 @@ static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
         t[0] = 0;
         return 1;
     }
-    real t0 = q / eq->a, t1 = eq->c / q;
+    real t0 = far_quotient(q, eq->a), t1 = far_quotient(eq->c, q);
     t[0] = t0 < t1 ? t0 : t1;
     t[1] = t0 < t1 ? t1 : t0;
     return 2;
@@ -224,11 +293,7 @@ static int slab(const axial *x, real *lo, real *hi, int *lo_end)
         *lo_end = 0;
         return x->z0 >= 0 && x->z0 <= x->len;
     }
-    real t0, t1;
-    if (!isect_quotient(-x->z0, x->dz, &t0))
-        t0 = copysign(SPAN_FAR, t0);
-    if (!isect_quotient(x->len - x->z0, x->dz, &t1))
-        t1 = copysign(SPAN_FAR, t1);
+    real t0 = far_quotient(-x->z0, x->dz), t1 = far_quotient(x->len - x->z0, x->dz);
     *lo_end = x->dz > 0 ? 0 : 1;
     *lo = x->dz > 0 ? t0 : t1;
     *hi = x->dz > 0 ? t1 : t0;
@@ -304,7 +369,9 @@ static int open_crossings(const quadric *s, const axial *x, crossing c[2])
         if (side.hi[i] != side.lo[i])
             t[n++] = side.hi[i];
     }
-    /*@ loop invariant 0 <= i <= n && 0 <= found <= 2;
+    /* Unrolled for Eva (n <= 4), which otherwise widens i past n. */
+    /*@ loop unroll 4;
+        loop invariant 0 <= i <= n && 0 <= found <= 2;
         loop assigns i, found, c[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n && found < 2; i++) {
@@ -364,6 +431,8 @@ static real side_refine(const quadric *s, const ray *r, real t, vec3 o2, vec3 *p
     if (n == 0)
         return t;
     real step = n == 2 && fabs(roots[1]) < fabs(roots[0]) ? roots[1] : roots[0];
+    if (!(step >= -CROSSING_MAX && step <= CROSSING_MAX))
+        return t;   /* a held root: no crossing, and far off the shape's box */
     vec3 moved = vec_madd(o2, r->dir, step);
     if (!near_shape(s, &moved))
         return t;
@@ -392,7 +461,8 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
     } else {
         across = vec_held(across, 2 * l);
     }
-    return vec_normalize(vec_madd(vec_held(vec_scale(across, 1.0 / l), UNIT_HELD), a, -s->k));
+    /* u - k a scaled by the cone's mu (its k is k mu): the same direction */
+    return vec_normalize(vec_madd(vec_scale(vec_held(vec_scale(across, 1.0 / l), UNIT_HELD), s->mu), a, -s->k));
 }
 
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
@@ -457,12 +527,13 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
 
 int isect_cylinder_hits(vec3 from, vec3 to, real radius, int open, const ray *r, hit *out, int max)
 {
-    quadric s = {from, to, radius, radius, 0, 0};
+    quadric s = {from, to, radius, radius, 0, 0, 1};
     return quadric_hits(&s, open, r, out, max);
 }
 
 int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r, hit *out, int max)
 {
-    quadric s = {from, to, r0, r1, (r1 - r0) / vec_length(vec_sub(to, from)), 1};
+    quadric s = {from, to, r0, r1, 0, 1, 1};
+    s.k = cone_slope((r1 - r0) / axis_length(from, to), &s.mu);
     return quadric_hits(&s, open, r, out, max);
 }

@@ -2,10 +2,10 @@
  * eva_quadric.c - Eva's drivers for the cylinder, cone and torus hit
  * tests (src/render/intersect_quadric.c, intersect_torus.c; spec/proofs.md,
  * "Hit tests: cylinder, cone, torus"): eva_cylinder in make prove and
- * make prove-quick (0 alarms); eva_cone and eva_torus by
- * tests/prove/prove.sh isect-shapes, not make prove: their alarms are
+ * make prove-quick, eva_cone in make prove (0 alarms each); eva_torus by
+ * tests/prove/prove.sh isect-shapes, not make prove: its alarms are
  * open.  Coordinates within 2^500 ([LANG-EXTENT-1]),
- * radii in [2^-500, 2^500] (a cone's in [0, 2^500]), the ray's direction in
+ * radii in [2^-500, 2^500] (a cone's: 0 or in that range, not both 0), the ray's direction in
  * vec_normalize's box [-4, 4], tmin in [0, 2^500]; the ends anywhere in
  * the extent, independently (the length's hold in axial_of makes the
  * relation check_extent.c gives, |to - from| >= 2^-500, unneeded).
@@ -51,7 +51,14 @@ void eva_cone(void)
     hit out[2] = {{0}, {0}};
     vec3 from, to;
     quadric_setup(&r, &from, &to);
-    int n = isect_cone_hits(from, to, any(0, 0x1p500), any(0, 0x1p500), Frama_C_int_interval(0, 1), &r, out, 2);
+    /* Two boxes: r0 > 0 and any r1, or r0 = 0 and r1 > 0 (check.c: not
+     * both 0; a non-zero radius at least 2^-500, check_extent.c). */
+    real r0 = 0, r1 = any(0x1p-500, 0x1p500);
+    if (Frama_C_int_interval(0, 1)) {
+        r0 = any(0x1p-500, 0x1p500);
+        r1 = any(0, 0x1p500);
+    }
+    int n = isect_cone_hits(from, to, r0, r1, Frama_C_int_interval(0, 1), &r, out, 2);
     if (n >= 1)
         eva_quadric_real = out[0].t;
 }
