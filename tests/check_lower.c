@@ -747,6 +747,50 @@ START_TEST(test_scene_load_refuses_beyond_the_extent)
 }
 END_TEST
 
+/* [LANG-EXTENT-1] A shape that keeps its local frame is bounded in the
+ * world too: the world images of its local box's corners within 2^500.
+ * The cone of tests/attack8/cone_frame_huge.scene has the local box
+ * x, z in [-2^499, 2^499] (the larger radius), y in [-2^500, 2^500] (the
+ * ends and that radius); scaled by [2^522, 2^522, 2^521] its first corner
+ * is (-2^1021, -2^1022, -2^1020), and x is checked first.  A unit sphere
+ * stretched 2^501 along x reaches x = -2^501; stretched 2^500 it is at the
+ * bound and loads, as does a box 2^500 long turned 45 degrees (its far
+ * corner at about 0.71 * 2^500 on x and y) and a shape squeezed 2^-400
+ * (the frame's matrix itself is not bounded). */
+START_TEST(test_scene_load_refuses_a_kept_frame_beyond_the_extent)
+{
+    static const struct {
+        const char *text, *message;
+    } refused[] = {
+        {"cone { from [0, -2 ^ 499, 0] to [0, 2 ^ 499, 0] radii 2 ^ 499 2 ^ 498 scale [2 ^ 522, 2 ^ 522, 2 ^ 521] }",
+         "t.scene:1:1: error: this cone is outside the scene's extent: its world box has a coordinate of "
+         "-2.2471164185778949e+307, beyond 2^500"},
+        {"sphere { radius 1 scale [2 ^ 501, 1, 1] }",
+         "t.scene:1:1: error: this sphere is outside the scene's extent: its world box has a coordinate of "
+         "-6.5467812157922837e+150, beyond 2^500"},
+        {"torus { major 2^499 minor 1 scale [1, 1, 4] }", "its world box has a coordinate of"},
+        {"cylinder { radius 2^499 scale [1, 1e300, 1] }", "its world box has a coordinate of"},
+        {"box { from [0, 0, 0] to [2^500, 1, 1] rotate [0, 0, 45] scale [4, 1, 1] }", "its world box"},
+        {"disk { radius 2^499 scale [1, 1, 1e10] }", "its world box"},
+    };
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        loaded l;
+        load(&l, refused[i].text);
+        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", refused[i].text);
+        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", refused[i].text, l.messages);
+        loaded_done(&l);
+    }
+    loaded l;
+    const scene_model *s = load_ok(&l, "sphere { radius 1 scale [2 ^ 500, 1, 1] }\n"
+                                    "box { from [0, 0, 0] to [2^500, 1, 1] rotate [0, 0, 45] }\n"
+                                    "cone { radii 2^499 0 scale [2^-400, 1, 1] }\n");
+    ck_assert_int_eq(s->prim_count, 3);
+    for (int i = 0; i < 3; i++)
+        ck_assert_msg(s->prims[i].has_xform, "primitive %d keeps its frame", i);
+    loaded_done(&l);
+}
+END_TEST
+
 /* [LANG-CAMERA-2] Every mistake of a camera is reported, in one run: the
  * kind and a value out of range, then look_at at the eye and a zero up. */
 START_TEST(test_scene_load_camera_reports_everything)
@@ -837,6 +881,7 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_mesh_errors);
     tcase_add_test(tc, test_scene_load_huge_but_finite);
     tcase_add_test(tc, test_scene_load_refuses_beyond_the_extent);
+    tcase_add_test(tc, test_scene_load_refuses_a_kept_frame_beyond_the_extent);
     tcase_add_test(tc, test_scene_load_quadrics);
     tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);
