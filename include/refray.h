@@ -192,7 +192,9 @@ typedef struct rf_limits {
     long max_pixels;
     long max_samples;             /* k of the k x k camera rays per pixel */
     long max_light_samples;
-    long max_depth;
+    long max_depth;               /* at most 1000 whatever is set here: the tracer
+                                     recurses once a bounce, about 1.4 KiB of stack
+                                     a level (spec/embedding.md, [EMBED-STACK-1]) */
     long max_loop_iterations;     /* per loop, and in total over a load */
     long max_include_depth;
     long max_file_bytes;          /* per file read by rf_scene_load_file (the file
@@ -319,7 +321,7 @@ RF_API rf_status rf_scene_get_mesh_info(const rf_scene *scene, int index, rf_mes
 typedef struct rf_render_options {
     int width, height;      /* 0: the scene's */
     int samples;            /* k of the k x k camera rays per pixel; 0: the scene's */
-    int max_depth;          /* 0: the scene's */
+    int max_depth;          /* 0: the scene's; over 1000: RF_ERR_USAGE ([EMBED-STACK-1]) */
     int light_samples;      /* > 0: samples of every distributed light; 0: each light's own */
     long max_tree_rays;     /* rays below one camera ray before the render is
                                refused with RF_ERR_DATA; 0: no limit */

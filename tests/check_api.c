@@ -229,6 +229,14 @@ START_TEST(test_api_render_region_refusals)
     r = (rf_renderer *)&o;
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
     ck_assert_ptr_null(r);
+    /* [EMBED-STACK-1] max_depth's ceiling (1000), and the ceiling itself. */
+    rf_render_options_init(&o);
+    o.max_depth = 1001;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
+    ck_assert_ptr_null(r);
+    o.max_depth = 1000;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer_free(r);
     rf_scene_free(s);
 }
 END_TEST

@@ -729,6 +729,28 @@ START_TEST(test_faults_option_order_does_not_matter)
 }
 END_TEST
 
+/* [REL-STACK-1] max_depth's ceiling at the command line: the limit flag
+ * stops at 1000, and an override over it names the ceiling, not a flag
+ * that cannot raise it (before: --max-depth-limit took 10^9, and 4000
+ * overflowed the stack, tests/attack9 finding 2). */
+START_TEST(test_faults_max_depth_has_a_ceiling)
+{
+    char scene[512], out[512];
+    make_work_dir();
+    put_file_at(scene, sizeof scene, "s.scene", tiny_scene);
+    path_in(out, sizeof out, "w.pfm");
+    const char *a1[] = {"render", scene, "-o", out, "-q", "--max-depth-limit", "1001", NULL};
+    expect(NULL, a1, 64, "--max-depth-limit takes a whole number from 0 to 1000, not '1001'");
+    const char *a2[] = {"render", scene, "-o", out, "-q", "--max-depth", "1001", NULL};
+    expect(NULL, a2, 64, "--max-depth 1001 is over the ceiling of 1000 (the tracer's stack");
+    const char *a3[] = {"render", scene, "-o", out, "-q", "--max-depth-limit", "7", "--max-depth", "8", NULL};
+    expect(NULL, a3, 64, "--max-depth 8 is over the limit of 7 (raise it with --max-depth-limit)");
+    const char *a4[] = {"render", scene, "-o", out, "-q", "--max-depth", "1000", NULL};
+    expect(NULL, a4, 0, NULL);
+    remove_work_dir();
+}
+END_TEST
+
 static const char facing_mirrors[] = "image { width 4 height 4 max_depth 1000 }\n"
                                      "material mirror { Kd 0 Ks 1 }\n"
                                      "material glass { Kd 0 Ks 0.1 t 0.9 ior 1.5 }\n"
@@ -886,6 +908,7 @@ Suite *suite_faults(void)
     tcase_add_test(attack, test_faults_fifos_and_directories_are_not_read);
     tcase_add_test(attack, test_faults_proc_file_is_read_to_its_end);
     tcase_add_test(attack, test_faults_option_order_does_not_matter);
+    tcase_add_test(attack, test_faults_max_depth_has_a_ceiling);
     tcase_add_test(attack, test_faults_ray_tree_limit_is_told_at_check);
     tcase_add_test(attack, test_faults_compare_fails_on_nan);
     tcase_add_test(attack, test_faults_compare_sizes_before_decoding);

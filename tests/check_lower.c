@@ -606,6 +606,25 @@ START_TEST(test_scene_load_image_limits)
     load(&l, "sphere {} image { max_depth 2.5 }");
     ck_assert_str_eq(first_line(&l), "t.scene:1:29: error: max_depth must be a whole number, got 2.5");
     loaded_done(&l);
+    /* [REL-STACK-1] max_depth's ceiling holds whatever a library caller's
+     * limits say, with a note why; below it the limit is the caller's. */
+    lim = scene_default_limits();
+    lim.max_depth = 5000;
+    load_as(&l, "t.scene", "sphere {} image { max_depth 1001 }", &lim, 1);
+    /* (first_line cuts the messages at the first line's end) */
+    ck_assert_msg(strstr(l.messages, "note: 1000 is the ceiling: the tracer recurses once a bounce") != NULL, "%s",
+                  l.messages);
+    ck_assert_str_eq(first_line(&l), "t.scene:1:29: error: max_depth of 1001 is over the limit of 1000");
+    loaded_done(&l);
+    load_as(&l, "t.scene", "sphere {} image { max_depth 1000 }", &lim, 1);
+    ck_assert_ptr_nonnull(l.scene);
+    ck_assert_int_eq(l.scene->image.max_depth, 1000);
+    loaded_done(&l);
+    lim.max_depth = 7;
+    load_as(&l, "t.scene", "sphere {} image { max_depth 8 }", &lim, 1);
+    ck_assert_str_eq(first_line(&l),
+                     "t.scene:1:29: error: max_depth of 8 is over the limit of 7 (raise it with --max-depth-limit)");
+    loaded_done(&l);
 }
 END_TEST
 

@@ -7,6 +7,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include "testlib.h"
 #include "render/render.h"
 #include "io/scene_file.h"
@@ -328,6 +331,77 @@ START_TEST(test_render_image_refuses_an_exploding_ray_tree)
 }
 END_TEST
 
+/* [REL-STACK-1] The recursion's stack at the ceiling of max_depth (1000):
+ * a chain of 1000 mirror bounces and one of 999 total internal reflections
+ * render on a stack limited to 2 MiB, a common thread's default (8 MiB
+ * under AddressSanitizer, whose redzones widen every frame: the main
+ * stack's default).  Before the interface's hits and the BVH walk's stack
+ * left the recursion's frame, the chains needed 2.5 MiB and died with
+ * SIGSEGV (tests/attack9, finding 2).  The corridor's value: each of the
+ * 1000 hits adds Kd Ia = 0.001 times Ks^k after k bounces, so
+ * 0.001 (1 - 0.999^1000) / (1 - 0.999) = 1 - 0.999^1000.  The cube's ray
+ * runs along (1, 1, 1): every face meets it at 54.7 degrees, past the
+ * critical angle of ior 1.5 (41.8), so every bounce is a total reflection. */
+#if defined(__SANITIZE_ADDRESS__)
+#define DEEP_STACK_BYTES (8L << 20)
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define DEEP_STACK_BYTES (8L << 20)
+#endif
+#endif
+#ifndef DEEP_STACK_BYTES
+#define DEEP_STACK_BYTES (2L << 20)
+#endif
+
+static const char mirror_corridor_1000[] =
+    "image { width 1 height 1 max_depth 1000 }\n"
+    "camera { eye [0, 0, 0] look_at [0, 0, -1] fov 1 }\n"
+    "ambient { color 1 }\n"
+    "plane { point [0, 0, -1] normal [0, 0, 1] material { Kd 0.001 Ks 0.999 } }\n"
+    "plane { point [0, 0, 1] normal [0, 0, -1] material { Kd 0.001 Ks 0.999 } }\n";
+static const char tir_cube_1000[] =
+    "image { width 1 height 1 max_depth 1000 }\n"
+    "camera { eye [0, 0, 0] look_at [1, 1, 1] fov 0.001 }\n"
+    "ambient { color 1 }\n"
+    "box { from [-1, -1, -1] to [1, 1, 1] material { Kd 0.001 Ks 0 t 0.999 ior 1.5 } }\n";
+
+/* In a child on the limited stack: 0 when the chain rendered as it must. */
+static int deep_chain_on_small_stack(const char *text, int tir)
+{
+    struct rlimit lim;
+    if (getrlimit(RLIMIT_STACK, &lim) != 0)
+        return 2;
+    lim.rlim_cur = (rlim_t)DEEP_STACK_BYTES;
+    if (setrlimit(RLIMIT_STACK, &lim) != 0)
+        return 3;
+    scene_model *s = load(text);
+    trace_stats st;
+    memset(&st, 0, sizeof st);
+    rgb c = pixel(s, 0, 0, &st);
+    scene_free(s);
+    if (tir)
+        return st.tir_rays == 999 && st.reflection_rays == 0 && vec_is_finite(c) ? 0 : 4;
+    double want = 1 - pow(0.999, 1000);
+    return st.reflection_rays == 999 && fabs(c.x - want) <= 1e-12 * want ? 0 : 5;
+}
+
+START_TEST(test_trace_depth_1000_fits_a_small_stack)
+{
+    const char *texts[2] = {mirror_corridor_1000, tir_cube_1000};
+    for (int k = 0; k < 2; k++) {
+        pid_t child = fork();
+        ck_assert_int_ge(child, 0);
+        if (child == 0)
+            _exit(deep_chain_on_small_stack(texts[k], k));
+        int status;
+        ck_assert_int_eq(waitpid(child, &status, 0), child);
+        ck_assert_msg(!WIFSIGNALED(status), "chain %d: killed by signal %d on a stack of %ld bytes", k,
+                      WIFSIGNALED(status) ? WTERMSIG(status) : 0, DEEP_STACK_BYTES);
+        ck_assert_msg(WIFEXITED(status) && WEXITSTATUS(status) == 0, "chain %d: exit %d", k, WEXITSTATUS(status));
+    }
+}
+END_TEST
+
 /* Nine coincident balls seen from outside, one surface crossing each at
  * the same point: the tracer keeps eight crossings of an interface.  The
  * hit is ball 0 (the lowest index of a tie), glass with Kd = Ks = 0 and no
@@ -418,6 +492,7 @@ Suite *suite_trace(void)
     tcase_add_test(whole, test_trace_light_a_subnormal_distance_away);
     tcase_add_test(whole, test_render_image_stops_when_asked);
     tcase_add_test(whole, test_render_image_refuses_an_exploding_ray_tree);
+    tcase_add_test(whole, test_trace_depth_1000_fits_a_small_stack);
     tcase_add_test(whole, test_trace_ninth_coincident_opaque_surface_stops_light);
     tcase_add_test(whole, test_render_image_refuses_nine_coincident_glass_solids);
     suite_add_tcase(s, whole);

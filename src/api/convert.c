@@ -64,8 +64,8 @@ int api_render_opts(const rf_render_options *o, render_opts *out)
     memset(out, 0, sizeof *out);
     if (!o)
         return 1;
-    if (o->width < 0 || o->height < 0 || o->samples < 0 || o->max_depth < 0 || o->light_samples < 0 ||
-        o->max_tree_rays < 0)
+    if (o->width < 0 || o->height < 0 || o->samples < 0 || o->max_depth < 0 ||
+        o->max_depth > SCENE_DEPTH_CEILING || o->light_samples < 0 || o->max_tree_rays < 0)
         return 0;
     out->width = o->width;
     out->height = o->height;

@@ -135,7 +135,11 @@ static int within(const char *option, long value, long limit, const char *flag)
 {
     if (value <= limit)
         return 1;
-    cli_usage_error("%s %ld is over the limit of %ld (raise it with %s)", option, value, limit, flag);
+    if (strcmp(flag, "--max-depth-limit") == 0 && limit >= SCENE_DEPTH_CEILING)
+        cli_usage_error("%s %ld is over the ceiling of %d (the tracer's stack: spec/reliability.md, [REL-STACK-1])",
+                        option, value, (int)SCENE_DEPTH_CEILING);
+    else
+        cli_usage_error("%s %ld is over the limit of %ld (raise it with %s)", option, value, limit, flag);
     return 0;
 }
 
@@ -317,7 +321,8 @@ int cli_scene_opt(cli_scene_opts *o, int argc, char **argv, int i)
         /* 0 errors or a ray budget of 0 would mean nothing can be shown or
          * traced: refused ([REL-RAYTREE-2]). */
         long lo = strcmp(argv[i], "--max-errors") == 0 || strcmp(argv[i], "--max-ray-tree") == 0 ? 1 : 0;
-        return cli_parse_long(argv[i], argv[i + 1], lo, LIMIT_CEILING, field) ? 2 : -1;
+        long hi = field == &o->limits.max_depth ? SCENE_DEPTH_CEILING : LIMIT_CEILING;
+        return cli_parse_long(argv[i], argv[i + 1], lo, hi, field) ? 2 : -1;
     }
     return 0;
 }

@@ -22,6 +22,15 @@
 #include "render/trace.h"
 #include "base/xform.h"
 
+/* [REL-STACK-1] Not inlined into the recursion's frame (trace_ray, shade,
+ * mirrored): only an inlining hint, the code computed is the same.  gcc and
+ * clang (which defines __GNUC__) know the attribute; Frama-C need not. */
+#if defined(__GNUC__) && !defined(__FRAMAC__)
+#define TRACE_OUTLINE __attribute__((noinline))
+#else
+#define TRACE_OUTLINE
+#endif
+
 /* What shade() knows about the point it shades. */
 typedef struct surface {
     const scene_material *m;
@@ -56,6 +65,8 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
     memset(t, 0, sizeof *t);
     t->scene = s;
     t->max_depth = max_depth > 0 ? max_depth : s->image.max_depth;
+    if (t->max_depth > SCENE_DEPTH_CEILING) /* the front doors refuse it first, with a message */
+        return STATUS_USAGE;
     t->shadows = s->features.shadows;
     t->specular = s->features.specular;
     t->reflection = s->features.reflection && t->max_depth > 1;
@@ -566,35 +577,59 @@ static void forget_overflow(trace_stats *st, long overflow_before, int harmless)
  * A solid left that the stack does not hold (its overflow) keeps its own
  * ior as n1.
  */
-static rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
-                       uint64_t key, trace_stats *st)
+/* The transmitted ray's setup, in a frame of its own: the interface's
+ * INTERFACE_MAX hits (about 1.2 KiB) are not needed once the ray is spawned,
+ * so they stay off the recursion's stack, which holds a frame a bounce
+ * ([REL-STACK-1]).  Returns 0 where [SHADE-SHORTCUT-RAYS-1]'s zero weight
+ * leaves the ray out, with the overflow count restored. */
+static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const ray *in, const medium_stack *media,
+                                        medium_stack *next, ray *r, real *through, int *refracts, trace_stats *st)
 {
     interface f;
-    medium_stack next = *media;
-    /* An overflow of `next` (the stack past the interface) matters only
-     * to a ray that goes on with it and carries weight. */
     long overflow_before = st->medium_overflow;
     interface_gather(t, s, in, &f, st);
-    int solids = interface_cross(t, &f, media, &next, st);
-    real through = f.through;
+    int solids = interface_cross(t, &f, media, next, st);
+    *through = f.through;
     /* Solids crossed here past INTERFACE_MAX are missing from `next`: the
      * media of the ray would be wrong, so the render refuses, as on the
      * stack's own overflow. */
     st->medium_overflow += f.solids_lost > 0;
-    if (through == 0 && !t->no_shortcuts) {
+    if (*through == 0 && !t->no_shortcuts) {
         st->medium_overflow = overflow_before;
-        return vec_splat(0);
+        return 0;
     }
-    ray r;
     vec3 dir = in->dir;
-    int refracts = 1;
+    *refracts = 1;
     if (solids > 0) {
         int solid = trace_solid_id(t->scene, s->h->prim);
         int left = solid >= 0 && s->prim->kind != PRIM_MESH && !s->h->entering;
         real n1 = left && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
-        refracts = shade_refract(in->dir, s->n, n1, top_ior(&next), &dir);
+        *refracts = shade_refract(in->dir, s->n, n1, top_ior(next), &dir);
     }
-    r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    *r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    return 1;
+}
+
+/*
+ * The transmitted ray: straight on through a sheet, bent by Snell's law
+ * where the interface changes the medium (n1 the medium before, the top of
+ * the stack; n2 the one after), or mirrored on total internal reflection.
+ * A solid left that the stack does not hold (its overflow) keeps its own
+ * ior as n1.  Kept out of shade (TRACE_OUTLINE): `next` is in its frame,
+ * which only a transmitted bounce then pays for.
+ */
+static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth,
+                                     const medium_stack *media, uint64_t key, trace_stats *st)
+{
+    medium_stack next = *media;
+    /* An overflow of `next` (the stack past the interface) matters only
+     * to a ray that goes on with it and carries weight. */
+    long overflow_before = st->medium_overflow;
+    ray r;
+    real through;
+    int refracts;
+    if (!transmit_setup(t, s, in, media, &next, &r, &through, &refracts, st))
+        return vec_splat(0);
     path_note(st, (uint64_t)refracts + 3);
     rgb c;
     if (refracts) {
@@ -752,6 +787,14 @@ static int over_budget(const tracer *t, trace_stats *st)
     return st->tree_overflow;
 }
 
+/* The nearest hit, in a frame of its own: the BVH walk's stack (BVH_MAX_DEPTH
+ * entries, 1.5 KiB) is not needed once the hit is found, so it stays off
+ * the recursion's stack ([REL-STACK-1]). */
+static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, trace_stats *st)
+{
+    return bvh_intersect_stats(&t->accel, t->scene->prims, nearest, h, &st->bvh);
+}
+
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
 {
     ray nearest = *r;
@@ -759,7 +802,7 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     rgb c = t->scene->image.background;
     if (over_budget(t, st) || cancel_step(st->cancel))
         return c;
-    int met = bvh_intersect_stats(&t->accel, t->scene->prims, &nearest, &h, &st->bvh);
+    int met = nearest_hit(t, &nearest, &h, st);
     path_note(st, met ? (uint64_t)h.prim + 5 : 0);
     if (met && st->record_path)
         path_note(st, piece_of(&t->scene->prims[h.prim], &h));

@@ -100,7 +100,17 @@ int check_image(loader *L, const check_at *at, const double size[4], rgb backgro
     int ok = check_whole(L, at, KW_WIDTH, size[0], 1, lim->max_width, "--max-width", &w);
     ok &= check_whole(L, at, KW_HEIGHT, size[1], 1, lim->max_height, "--max-height", &h);
     ok &= check_whole(L, at, KW_SAMPLES, size[2], 1, lim->max_samples, "--max-samples", &k);
-    ok &= check_whole(L, at, KW_MAX_DEPTH, size[3], 1, lim->max_depth, "--max-depth-limit", &depth);
+    /* A library caller's limits may say more than the ceiling: it holds. */
+    int at_ceiling = lim->max_depth >= SCENE_DEPTH_CEILING;
+    long depth_limit = at_ceiling ? SCENE_DEPTH_CEILING : lim->max_depth;
+    if (!check_whole(L, at, KW_MAX_DEPTH, size[3], 1, depth_limit, at_ceiling ? NULL : "--max-depth-limit", &depth)) {
+        ok = 0;
+        if (at_ceiling && size[3] > SCENE_DEPTH_CEILING)
+            diag_report(&L->diag, DIAG_NOTE, check_span(at, KW_MAX_DEPTH),
+                        "%d is the ceiling: the tracer recurses once a bounce, and its C stack is sized for that "
+                        "many (spec/reliability.md, [REL-STACK-1])",
+                        (int)SCENE_DEPTH_CEILING);
+    }
     ok &= check_color(L, at, KW_BACKGROUND, "background", background, 0, HUGE_VAL);
     if (ok && (double)w * (double)h > (double)lim->max_pixels) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, CHECK_BLOCK),

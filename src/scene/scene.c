@@ -12,7 +12,7 @@ scene_limits scene_default_limits(void)
     l.max_pixels = 64L * 1024 * 1024;
     l.max_samples = 64;
     l.max_light_samples = 4096;
-    l.max_depth = 1000;
+    l.max_depth = SCENE_DEPTH_CEILING;
     l.max_loop_iterations = 1000000;
     l.max_include_depth = 32;
     l.max_file_bytes = 64L * 1024 * 1024;

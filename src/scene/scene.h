@@ -257,7 +257,16 @@ typedef struct scene_limits {
     long max_memory_mb;        /* the estimate of scene_memory_estimate, in MiB */
 } scene_limits;
 
-/* Defaults a laptop survives; every one can be raised by a CLI flag. */
+/* [REL-STACK-1] The deepest trace a render takes, whatever the limits say:
+ * the tracer recurses once a bounce (trace_ray -> shade -> a reflected or
+ * transmitted trace_ray), so max_depth sets the C stack a render needs
+ * (spec/reliability.md gives the bytes a level), and a depth past this
+ * overflowed the 8 MiB main stack of a Linux process with a SIGSEGV
+ * (tests/attack9, finding 2). */
+enum { SCENE_DEPTH_CEILING = 1000 };
+
+/* Defaults a laptop survives; every one but max_depth (SCENE_DEPTH_CEILING)
+ * can be raised by a CLI flag. */
 scene_limits scene_default_limits(void);
 
 /*
