@@ -147,11 +147,13 @@ END_TEST
 
 /* ---- Files ---- */
 
-/* A 4 x 3 region of a 7 x 5 image holding doubles no float holds. */
+/* A 4 x 3 region of a 7 x 5 image holding doubles no float holds (and -0,
+ * DBL_MAX-sized ones: whatever a render can write; a negative or
+ * non-finite value it never writes, and a read refuses it). */
 static tile_info sample_tile(img_buf *px)
 {
     static const double values[] = {0.1, 1e-310, -0.0, 1e300, 3.0000000000000004, 3 * DBL_MIN,
-                                    1.0 / 3.0, 65504.000000001, 2.5e-8, 1e-40, 7.0, -2.75};
+                                    1.0 / 3.0, 65504.000000001, 2.5e-8, 1e-40, 7.0, DBL_MAX / 2};
     tile_info t = {7, 5, {2, 1, 6, 4}, 0x9e3779b97f4a7c15ULL};
     ck_assert_int_eq(img_create(px, 4, 3), 0);
     for (size_t i = 0; i < 36; i++)
@@ -262,6 +264,27 @@ START_TEST(test_tile_file_refusals)
     expect_refusal(exr, REFRAY_HAVE_EXR ? STATUS_NO_INPUT : STATUS_USAGE, REFRAY_HAVE_EXR ? "No such" : "EXR=0");
     cli_path(exr, sizeof exr, dir, "t.png");
     expect_refusal(exr, STATUS_USAGE, "display codes");
+    /* A value no render writes, over the first double of a whole sidecar
+     * (tests/attack9 finding 7: merged as 0, 0 and -1 before). */
+    static const double damaged[] = {-1, HUGE_VAL, -HUGE_VAL, NAN, -DBL_MIN};
+    for (size_t k = 0; k < sizeof damaged / sizeof damaged[0]; k++) {
+        ck_assert_int_eq(tile_file_write(pfm, &t, &px, NULL, why, sizeof why), STATUS_OK);
+        FILE *g = fopen(side, "r+b");
+        ck_assert_ptr_nonnull(g);
+        char line[128];
+        for (int i = 0; i < 5; i++)
+            ck_assert_ptr_nonnull(fgets(line, sizeof line, g));
+        unsigned char le[8];
+        uint64_t bits;
+        memcpy(&bits, &damaged[k], sizeof bits);
+        for (int i = 0; i < 8; i++)
+            le[i] = (unsigned char)(bits >> (8 * i));
+        ck_assert_int_eq(fseek(g, ftell(g), SEEK_SET), 0);
+        ck_assert_int_eq(fwrite(le, 1, 8, g), 8);
+        fclose(g);
+        expect_refusal(pfm, STATUS_DATA, "pixel (2, 1) of the tile holds");
+        expect_refusal(pfm, STATUS_DATA, "a value no render writes");
+    }
     ck_assert_int_eq(tile_file_write(exr, &t, &px, NULL, why, sizeof why), STATUS_USAGE);
     img_free(&px);
     cli_remove(dir);

@@ -2,6 +2,7 @@
  * tile_file.c - see tile_file.h.
  */
 #include <errno.h>
+#include <float.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -166,9 +167,19 @@ static int read_doubles(FILE *fp, const char *path, const tile_info *t, img_buf 
                             ferror(fp) ? strerror(errno) : "the tile's pixels end early");
             break;
         }
-        for (size_t i = 0; i < row; i++) {
+        for (size_t i = 0; rc == STATUS_OK && i < row; i++) {
             uint64_t bits = get_le64(buf + 8 * i);
-            memcpy(img_pixel(px, 0, y) + i, &bits, sizeof bits);
+            double *v = img_pixel(px, 0, y) + i;
+            memcpy(v, &bits, sizeof bits);
+            /* A render writes finite, non-negative values only (a non-finite
+             * radiance is counted and written as 0): anything else is a
+             * damaged file, which must not reach a merged image. */
+            if (!(*v >= 0 && *v <= DBL_MAX)) {
+                char what[160];
+                snprintf(what, sizeof what, "pixel (%d, %d) of the tile holds %.17g, a value no render writes "
+                         "(damaged)", r->x0 + (int)(i / 3), r->y0 + y, *v);
+                rc = read_error(why, why_size, STATUS_DATA, path, what);
+            }
         }
     }
     free(buf);
