@@ -44,19 +44,6 @@ static vec3 vec_with(vec3 v, int axis, real value)
     return v;
 }
 
-/* Plain comparisons rather than fmax: these run per ray and fmax is a
- * library call on x86-64; the inputs are never NaN. */
-/*@ requires !\is_NaN(v.x) && !\is_NaN(v.y) && !\is_NaN(v.z);
-    assigns \nothing;
-    ensures \result >= 0;
-    ensures EXACT(\result == vmaxabs(v)); */
-static real max_abs(vec3 v)
-{
-    real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
-    real m = x > y ? x : y;
-    return m > z ? m : z;
-}
-
 
 /*
  * The point o + t d has an absolute error of about eps |o| + eps |t d|,
@@ -108,7 +95,7 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
-    real reach = refine ? max_abs(r->origin) / max_abs(r->dir) : 0.0;
+    real reach = refine ? vec_max_abs(r->origin) / vec_max_abs(r->dir) : 0.0;
     for (int i = 0; i < roots && found < max; i++) {
         real ti = t[i];
         vec3 p;
@@ -1117,33 +1104,33 @@ static real larger(real a, real b)
 
 static real triangle_magnitude(const vec3 v[3])
 {
-    return larger(max_abs(v[0]), larger(max_abs(v[1]), max_abs(v[2])));
+    return larger(vec_max_abs(v[0]), larger(vec_max_abs(v[1]), vec_max_abs(v[2])));
 }
 
 static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
-        return max_abs(p->u.sphere.center) + p->u.sphere.radius;
+        return vec_max_abs(p->u.sphere.center) + p->u.sphere.radius;
     case PRIM_PLANE:
-        return max_abs(p->u.plane.point);
+        return vec_max_abs(p->u.plane.point);
     case PRIM_TRIANGLE:
         return triangle_magnitude(p->u.triangle.p);
     case PRIM_DISK:
-        return max_abs(p->u.disk.center) + p->u.disk.radius;
+        return vec_max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
-        return larger(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+        return larger(vec_max_abs(p->u.box.lo), vec_max_abs(p->u.box.hi));
     case PRIM_CYLINDER:
-        return larger(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
+        return larger(vec_max_abs(p->u.cylinder.from), vec_max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
     case PRIM_CONE:
-        return larger(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
+        return larger(vec_max_abs(p->u.cone.from), vec_max_abs(p->u.cone.to)) +
                larger(p->u.cone.radius[0], p->u.cone.radius[1]);
     case PRIM_TORUS:
-        return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
+        return vec_max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
     case PRIM_MESH: {
         real m = 0.0;
         for (int i = 0; i < p->u.mesh.position_count; i++)
-            m = larger(m, max_abs(p->u.mesh.positions[i]));
+            m = larger(m, vec_max_abs(p->u.mesh.positions[i]));
         return m;
     }
     }
@@ -1241,7 +1228,7 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
 static real spawn_offset(vec3 point, real magnitude)
 {
     real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
-    return SPAWN_REL * fmax(m, max_abs(point)) + SPAWN_ABS;
+    return SPAWN_REL * fmax(m, vec_max_abs(point)) + SPAWN_ABS;
 }
 
 /* p + step without forming an infinity: a coordinate at or past 2^1023 (a
