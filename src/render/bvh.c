@@ -429,7 +429,7 @@ static int traverse_all(const bvh *b, const walk *w)
 static int visit_unbounded(const walk *w, bvh_ref ref)
 {
     const scene_prim *p = &w->prims[ref.prim];
-    if (!w->count_fn || p->kind != PRIM_PLANE || p->has_xform)
+    if (!w->count_fn || p->kind != PRIM_PLANE || p->frame)
         return visit_part(w, ref);
     if (w->stats)
         w->stats->prims_tested++;

@@ -128,7 +128,7 @@ static uint64_t piece_of(const scene_prim *p, const hit *h)
         return 0;
     vec3 a = p->kind == PRIM_CYLINDER ? vec_sub(p->u.cylinder.to, p->u.cylinder.from)
                                       : vec_sub(p->u.cone.to, p->u.cone.from);
-    real c = vec_dot(h->normal, vec_normalize(p->has_xform ? xform_vector(&p->frame->to_world, a) : a));
+    real c = vec_dot(h->normal, vec_normalize(p->frame ? xform_vector(&p->frame->to_world, a) : a));
     return c > 1 - 1e-9 ? 1 : c < -(1 - 1e-9) ? 2 : 3;
 }
 
