@@ -88,9 +88,11 @@ static int box_out(vec3 lo, vec3 hi, extent_fault *f)
  * position of the frame's origin (its translation) as a coordinate. */
 static int prim_out(const scene_prim *p, extent_fault *f)
 {
-    const xform *w = &p->frame->to_world;
-    if (p->frame && coord_out(vec_make(w->m[0][3], w->m[1][3], w->m[2][3]), "translation", f))
-        return 1;
+    if (p->frame) {
+        const xform *w = &p->frame->to_world;
+        if (coord_out(vec_make(w->m[0][3], w->m[1][3], w->m[2][3]), "translation", f))
+            return 1;
+    }
     switch (p->kind) {
     case PRIM_SPHERE: return coord_out(p->u.sphere.center, "center", f) || size_out(p->u.sphere.radius, "radius", f);
     case PRIM_PLANE: return coord_out(p->u.plane.point, "point", f);
