@@ -93,7 +93,6 @@ static scene_prim random_prim(rng *g, int k, vec3 c, double s, scene_frame *fram
         xform sc = xform_scale(vec_scale(rng_box(g, 0.2, 1), s));
         xform rot = xform_rotate_xyz(rng_box(g, 0, 360)), mv = xform_translate(c);
         xform rs = xform_compose(&rot, &sc);
-        p.has_xform = 1;
         frame->to_world = xform_compose(&mv, &rs);
         ck_assert(xform_invert(&frame->to_world, &frame->to_local));
         p.frame = frame;
@@ -154,9 +153,9 @@ static ray random_ray(rng *g, const scene_prim *prims, int count, int i)
         vec3 aim = r.origin;
         if (p->kind == PRIM_TRIANGLE)
             aim = p->u.triangle.p[(int)(rng_uniform(g) * 3)];
-        else if (p->kind == PRIM_BOX && !p->has_xform)
+        else if (p->kind == PRIM_BOX && !p->frame)
             aim = p->u.box.hi;
-        else if (p->kind == PRIM_SPHERE && !p->has_xform)
+        else if (p->kind == PRIM_SPHERE && !p->frame)
             aim = vec_add(p->u.sphere.center, vec_make(0, p->u.sphere.radius, 0));
         if (vec_length2(vec_sub(aim, r.origin)) > 0)
             r.dir = vec_normalize(vec_sub(aim, r.origin));
@@ -334,7 +333,6 @@ START_TEST(test_bvh_visit_counts_match_brute_force)
     prims = realloc(prims, (size_t)(n + 3) * sizeof *prims);
     ck_assert_ptr_nonnull(prims);
     prims[n + 2] = prims[n];
-    prims[n + 2].has_xform = 1;
     frames[n].to_world = xform_translate(vec_make(0, 4, 0));
     ck_assert(xform_invert(&frames[n].to_world, &frames[n].to_local));
     prims[n + 2].frame = &frames[n];

@@ -88,7 +88,6 @@ static scene_prim prim_box(vec3 lo, vec3 hi)
 /* Gives p the local frame to_world, kept in *f (which must outlive p). */
 static void prim_set_xform(scene_prim *p, scene_frame *f, xform to_world)
 {
-    p->has_xform = 1;
     f->to_world = to_world;
     ck_assert(xform_invert(&to_world, &f->to_local));
     p->frame = f;

@@ -125,8 +125,8 @@ static void same_name(const char *a, const char *b, const char *name, const char
 static void same_prim(const scene_prim *a, const scene_prim *b, const char *name, int i)
 {
     ck_assert_msg(a->kind == b->kind && a->material == b->material && a->mesh == b->mesh &&
-                      a->has_xform == b->has_xform,
-                  "%s: primitive %d: kind, material, mesh or transform flag differs", name, i);
+                      (a->frame != NULL) == (b->frame != NULL),
+                  "%s: primitive %d: kind, material, mesh or frame presence differs", name, i);
     switch (a->kind) {
     case PRIM_SPHERE: SAME_BITS(a->u.sphere, b->u.sphere, "sphere", i); break;
     case PRIM_PLANE: SAME_BITS(a->u.plane, b->u.plane, "plane", i); break;
@@ -154,7 +154,7 @@ static void same_prim(const scene_prim *a, const scene_prim *b, const char *name
         break;
     case PRIM_MESH: break; /* a view of its mesh's store: same_mesh */
     }
-    if (a->has_xform) {
+    if (a->frame) {
         SAME_BITS(a->frame->to_world, b->frame->to_world, "to_world of primitive", i);
         SAME_BITS(a->frame->to_local, b->frame->to_local, "to_local of primitive", i);
     }

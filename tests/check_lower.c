@@ -54,7 +54,7 @@ START_TEST(test_scene_load_defaults_of_an_almost_empty_scene)
     ck_assert_int_eq(s->prims[0].kind, PRIM_SPHERE);
     ck_assert_vec_near(s->prims[0].u.sphere.center, vec_make(0, 0, 0), 0);
     ck_assert_near(s->prims[0].u.sphere.radius, 1, 0);
-    ck_assert_int_eq(s->prims[0].has_xform, 0);
+    ck_assert_ptr_null(s->prims[0].frame);
     ck_assert_int_eq(s->prims[0].mesh, -1);
     /* The implicit material: Kd 0.8, Ks 0, n 1, t 0, ior 1, no name. */
     ck_assert_int_eq(s->material_count, 1);
@@ -329,7 +329,7 @@ static vec3 sphere_center(const char *text, double *radius)
 {
     loaded l;
     const scene_model *s = load_ok(&l, text);
-    ck_assert_int_eq(s->prims[0].has_xform, 0);
+    ck_assert_ptr_null(s->prims[0].frame);
     vec3 c = s->prims[0].u.sphere.center;
     *radius = s->prims[0].u.sphere.radius;
     loaded_done(&l);
@@ -406,29 +406,29 @@ START_TEST(test_scene_load_baking_rules)
         "triangle { vertices [0, 0, 0] [1, 0, 0] [0, 1, 0] rotate [0, 0, 90] scale [1, 2, 3] }\n");
     const scene_prim *p = s->prims;
     ck_assert_int_eq(s->prim_count, 11);
-    ck_assert_int_eq(p[0].has_xform, 1);
+    ck_assert_ptr_nonnull(p[0].frame);
     ck_assert_vec_near(p[0].u.sphere.center, vec_make(0, 0, 0), 0);
     ck_assert_vec_near(xform_point(&p[0].frame->to_world, vec_make(0, 1, 0)), vec_make(5, 2, 0), 0);
     ck_assert_vec_near(xform_point(&p[0].frame->to_local, vec_make(5, 2, 0)), vec_make(0, 1, 0), 0);
-    ck_assert_int_eq(p[1].has_xform, 1);
-    ck_assert_int_eq(p[2].has_xform, 0);
+    ck_assert_ptr_nonnull(p[1].frame);
+    ck_assert_ptr_null(p[2].frame);
     ck_assert_vec_near(p[2].u.box.lo, vec_make(1, 0, 0), 0);
     ck_assert_vec_near(p[2].u.box.hi, vec_make(3, 3, 4), 0);
-    ck_assert_int_eq(p[3].has_xform, 0);
+    ck_assert_ptr_null(p[3].frame);
     ck_assert_vec_near(p[3].u.box.lo, vec_make(-1, -1, -1), 0);
     ck_assert_vec_near(p[3].u.box.hi, vec_make(0, 0, 0), 0);
-    ck_assert_int_eq(p[4].has_xform, 1);
+    ck_assert_ptr_nonnull(p[4].frame);
     ck_assert_vec_near(p[4].u.box.hi, vec_make(1, 1, 1), 0);
     /* The disk's normal (0,1,0) turned about x by 90: (0,0,1); radius 2 x 0.5. */
-    ck_assert_int_eq(p[5].has_xform, 0);
+    ck_assert_ptr_null(p[5].frame);
     ck_assert_vec_near(p[5].u.disk.normal, vec_make(0, 0, 1), 1e-15);
     ck_assert_vec_near(p[5].u.disk.center, vec_make(0, 0, 3), 1e-15);
     ck_assert_near(p[5].u.disk.radius, 1, 1e-15);
-    ck_assert_int_eq(p[6].has_xform, 1);
+    ck_assert_ptr_nonnull(p[6].frame);
     /* Point (0,1,0) -> (0,1,0); normal through the inverse transpose
      * diag(1/2, 1, 1): (0.5, 1, 0) / sqrt(1.25).  The plane is then stored
      * by its point nearest the origin, (n.p) n = (0.5, 1, 0) / 1.25. */
-    ck_assert_int_eq(p[7].has_xform, 0);
+    ck_assert_ptr_null(p[7].frame);
     ck_assert_vec_near(p[7].u.plane.point, vec_make(0.4, 0.8, 0), 1e-15);
     ck_assert_vec_near(p[7].u.plane.normal, vec_make(0.5 / sqrt(1.25), 1 / sqrt(1.25), 0), 1e-15);
     /* (0,1,0) about z by 90: (-1, 0, 0). */
@@ -436,7 +436,7 @@ START_TEST(test_scene_load_baking_rules)
     /* Mirrored corners (0,0,0) (-1,0,0) (0,1,0), the last two swapped so
      * that (p1-p0) x (p2-p0) = (0,1,0) x (-1,0,0) = (0,0,1) still faces +z
      * as the mirror image of the normal does. */
-    ck_assert_int_eq(p[9].has_xform, 0);
+    ck_assert_ptr_null(p[9].frame);
     ck_assert_vec_near(p[9].u.triangle.p[0], vec_make(0, 0, 0), 0);
     ck_assert_vec_near(p[9].u.triangle.p[1], vec_make(0, 1, 0), 0);
     ck_assert_vec_near(p[9].u.triangle.p[2], vec_make(-1, 0, 0), 0);
@@ -805,7 +805,7 @@ START_TEST(test_scene_load_refuses_a_kept_frame_beyond_the_extent)
                                     "cone { radii 2^499 0 scale [2^-400, 1, 1] }\n");
     ck_assert_int_eq(s->prim_count, 3);
     for (int i = 0; i < 3; i++)
-        ck_assert_msg(s->prims[i].has_xform, "primitive %d keeps its frame", i);
+        ck_assert_msg(s->prims[i].frame != NULL, "primitive %d keeps its frame", i);
     loaded_done(&l);
 }
 END_TEST
@@ -856,20 +856,20 @@ START_TEST(test_scene_load_quadrics)
     ck_assert_vec_near(p[2].u.torus.axis, vec_make(0, 1, 0), 0);
     ck_assert_near(p[2].u.torus.major, 1, 0);
     ck_assert_near(p[2].u.torus.minor, 0.25, 0);
-    ck_assert_int_eq(p[3].has_xform, 0);
+    ck_assert_ptr_null(p[3].frame);
     ck_assert_vec_near(p[3].u.cylinder.from, vec_make(1, 0, 0), 1e-15);
     ck_assert_vec_near(p[3].u.cylinder.to, vec_make(1, -2, 0), 1e-15);
     ck_assert_near(p[3].u.cylinder.radius, 2, 1e-15);
-    ck_assert_int_eq(p[4].has_xform, 0);
+    ck_assert_ptr_null(p[4].frame);
     ck_assert_vec_near(p[4].u.cone.to, vec_make(0, 0, 2), 1e-15);
     ck_assert_near(p[4].u.cone.radius[0], 1, 1e-15);
     ck_assert_near(p[4].u.cone.radius[1], 0.5, 1e-15);
-    ck_assert_int_eq(p[5].has_xform, 0);
+    ck_assert_ptr_null(p[5].frame);
     ck_assert_vec_near(p[5].u.torus.center, vec_make(0, 0, 2), 1e-15);
     ck_assert_vec_near(p[5].u.torus.axis, vec_make(0, 0, 1), 1e-15);
     ck_assert_near(p[5].u.torus.major, 4, 1e-15);
     ck_assert_near(p[5].u.torus.minor, 1, 1e-15);
-    ck_assert_int_eq(p[6].has_xform, 1);
+    ck_assert_ptr_nonnull(p[6].frame);
     ck_assert_near(p[7].u.cylinder.radius, 3, 0);
     ck_assert_int_eq(p[7].u.cylinder.open, 1);
     ck_assert_near(p[8].u.torus.minor, 0.1, 0);

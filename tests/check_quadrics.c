@@ -215,7 +215,6 @@ START_TEST(test_torus_transformed)
     scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 2, 0.5);
     xform w = xform_scale(vec_make(1, 1, 2));
     scene_frame f;
-    t.has_xform = 1;
     f.to_world = w;
     ck_assert(xform_invert(&w, &f.to_local));
     t.frame = &f;

@@ -247,7 +247,7 @@ static void mesh_against_box(const char *material, double rel)
     scene_model *m = load(text);
     snprintf(text, sizeof text, scene, "box", "from [-1, -1, -1] to [1, 1, 1]", material);
     scene_model *b = load(text);
-    ck_assert(b->prims[1].has_xform);
+    ck_assert_ptr_nonnull(b->prims[1].frame);
     img_buf im = render(m), ib = render(b);
     int differ = 0;
     for (int j = 0; j < im.height; j++)
@@ -301,7 +301,7 @@ static void assert_mirror_keeps_light(const char *shape, int depth)
                 int axes = (a ^ b) == 1 || (a ^ b) == 2 || (a ^ b) == 4 || a == b;
                 for (int q = 0; axes && q < 3 && (q == 0 || a != b); q++) {
                     vec3 target = vec_add(corner[a], vec_scale(vec_sub(corner[b], corner[a]), at[q]));
-                    if (p->has_xform)
+                    if (p->frame)
                         target = xform_point(&p->frame->to_world, target);
                     ray r = ray_from_to(vec_make(origins[o][0], origins[o][1], origins[o][2]), target);
                     trace_stats st;

@@ -181,7 +181,7 @@ static sphere_check check_sphere_scene(const char *name, ld edge, ld tol)
     img_buf img;
     scene_model *s = load_stress(name);
     const scene_prim *p = &s->prims[0];
-    ck_assert(p->kind == PRIM_SPHERE && !p->has_xform);
+    ck_assert(p->kind == PRIM_SPHERE && !p->frame);
     render_checked(s, &img, &st);
     for (int j = 0; j < img.height; j++) {
         for (int i = 0; i < img.width; i++) {
@@ -956,7 +956,7 @@ static int exact_shape(const scene_prim *p, lvec o, lvec d, lvec *n, ld *margin)
     qv qo = {o.x, o.y, o.z}, qd = {d.x, d.y, d.z}, normal = {0, 0, 0};
     ld t, cosine;
     int found;
-    ck_assert(!p->has_xform);
+    ck_assert(!p->frame);
     if (p->kind == PRIM_TORUS) {
         qtorus tr = qtorus_of(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor);
         found = qtorus_ref_q(&tr, qo, qd, 0, &t, margin, &cosine, &normal);

@@ -304,6 +304,26 @@ static inline vec3 vec_normalize(vec3 a)
     return u;
 }
 
+/* The max norm, max |v_i|: the scale of a point's rounding (spawn
+ * offsets, the BVH's tie slack, the tracer's light and crossing bounds).
+ * By comparisons, not fmax: it runs per ray and per hit, and fmax is a
+ * call into libm on x86-64.  The two give the same double here: fabs is
+ * never -0 and, for the operands the contract admits, never NaN, and where
+ * two magnitudes are equal they are the same bits.  (A NaN, outside the
+ * contract, fmax would skip and this would not; the copies in intersect.c,
+ * trace.c and bvh.c it replaces were this expression, so every image is
+ * the same either way.) */
+/*@ requires !\is_NaN(v.x) && !\is_NaN(v.y) && !\is_NaN(v.z);
+    assigns \nothing;
+    ensures \result >= 0;
+    ensures EXACT(\result == vmaxabs(v)); */
+static inline real vec_max_abs(vec3 v)
+{
+    real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
+    real m = x > y ? x : y;
+    return m > z ? m : z;
+}
+
 /*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z);
     assigns \nothing;
     ensures EXACT(\result == \max(a.x, \max(a.y, a.z))); */

@@ -205,7 +205,7 @@ static json_t *matrix(const xform *a)
 
 static json_t *transform(export_json_build *b, const scene_prim *p)
 {
-    if (!p->has_xform)
+    if (!p->frame)
         return json_null();
     json_t *out = json_object();
     export_json_set(b, out, "to_world", matrix(&p->frame->to_world));

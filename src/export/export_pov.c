@@ -773,7 +773,7 @@ static void write_prim(FILE *fp, const scene_model *s, const pov_opts *o, const 
 {
     write_shape(fp, p);
     write_material_ref(fp, s, o, p, nudged);
-    if (p->has_xform)
+    if (p->frame)
         write_matrix(fp, &p->frame->to_world);
     fputs("}\n", fp);
 }

@@ -37,7 +37,7 @@ static void extent_add_box(extent *e, const scene_prim *p, vec3 lo, vec3 hi)
 {
     for (int i = 0; i < 8; i++) {
         vec3 c = vec_make(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-        extent_add(e, p->has_xform ? xform_point(&p->frame->to_world, c) : c);
+        extent_add(e, p->frame ? xform_point(&p->frame->to_world, c) : c);
     }
 }
 
@@ -243,7 +243,7 @@ static int ball_near(const scene_prim *a, const scene_prim *b, double gap)
     double r = a->u.sphere.radius;
     if (b->kind == PRIM_PLANE)
         return fabs(vec_dot(b->u.plane.normal, vec_sub(c, b->u.plane.point))) <= r + gap;
-    if (b->kind == PRIM_SPHERE && !b->has_xform) {
+    if (b->kind == PRIM_SPHERE && !b->frame) {
         double d = vec_length(vec_sub(b->u.sphere.center, c));
         return d <= r + b->u.sphere.radius + gap && d >= fabs(r - b->u.sphere.radius) - gap;
     }
@@ -261,7 +261,7 @@ int pov_far_near_solid(const scene_model *s, int solid, double gap)
         int near;
         if (i == solid)
             continue;
-        if (a->kind == PRIM_SPHERE && !a->has_xform)
+        if (a->kind == PRIM_SPHERE && !a->frame)
             near = ball_near(a, b, gap);
         else if (b->kind == PRIM_PLANE)
             near = plane_near_box(b, alo, ahi, gap);

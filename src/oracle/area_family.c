@@ -51,7 +51,7 @@ static int read_prims(const oracle_view *v, const area_kind *k, area_setup *s, c
         const scene_prim *p = &sc->prims[i];
         if (p->kind == PRIM_PLANE && !s->floor)
             s->floor = p;
-        else if (p->kind == PRIM_DISK && k->occluded && !s->occluder && !p->has_xform)
+        else if (p->kind == PRIM_DISK && k->occluded && !s->occluder && !p->frame)
             s->occluder = p;
         else
             return oracle_refuse(why, n, "%s: primitive %d is not the family's (one plane%s)", k->family, i + 1,

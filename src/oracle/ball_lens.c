@@ -42,7 +42,7 @@ static int find_parts(const scene_model *s, ball_setup *b)
     int ball = s->prims[0].kind == PRIM_SPHERE ? 0 : 1;
     b->ball = &s->prims[ball];
     b->screen = &s->prims[1 - ball];
-    if (b->ball->kind != PRIM_SPHERE || b->ball->has_xform || b->screen->kind != PRIM_PLANE)
+    if (b->ball->kind != PRIM_SPHERE || b->ball->frame || b->screen->kind != PRIM_PLANE)
         return 0;
     b->glass = &s->materials[b->ball->material];
     b->paint = &s->materials[b->screen->material];

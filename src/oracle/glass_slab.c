@@ -55,7 +55,7 @@ static int find_parts(const scene_model *s, slab_setup *g)
     int box = s->prims[0].kind == PRIM_BOX ? 0 : 1;
     g->box = &s->prims[box];
     g->floor = &s->prims[1 - box];
-    if (g->box->kind != PRIM_BOX || g->box->has_xform || g->floor->kind != PRIM_PLANE)
+    if (g->box->kind != PRIM_BOX || g->box->frame || g->floor->kind != PRIM_PLANE)
         return 0;
     g->glass = &s->materials[g->box->material];
     g->ground = &s->materials[g->floor->material];

@@ -315,7 +315,7 @@ int oracle_accept_lights(const scene_model *s, const char *family, char *why, si
 int oracle_accept_untransformed(const scene_model *s, const char *family, char *why, size_t n)
 {
     for (int i = 0; i < s->prim_count; i++)
-        if (s->prims[i].has_xform)
+        if (s->prims[i].frame)
             return oracle_refuse(why, n,
                                  "%s: primitive %d keeps a transform (an ellipsoid, a mirrored or turned shape)",
                                  family, i + 1);

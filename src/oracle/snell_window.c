@@ -66,7 +66,7 @@ static int inside_box(const scene_prim *box, vec3 p, int mask)
 
 static int accepts_scene(const scene_model *s, char *why, size_t n)
 {
-    if (s->prim_count != 1 || s->prims[0].kind != PRIM_BOX || s->prims[0].has_xform)
+    if (s->prim_count != 1 || s->prims[0].kind != PRIM_BOX || s->prims[0].frame)
         return oracle_refuse(why, n, "snell_window: the scene must be one box (not rotated)");
     const scene_material *m = &s->materials[s->prims[0].material];
     if (!(m->t > 0))

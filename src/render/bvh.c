@@ -299,11 +299,7 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     ns.rr = *r;
     ns.count = ns.overflow = ns.fixed = 0;
     ns.t_near = ns.tmax0 = r->tmax;
-    /* |origin|, max norm, by comparisons: fmax is a library call per ray,
-     * and of these (fabs: never NaN, never -0) it takes the same value. */
-    real ox = fabs(r->origin.x), oy = fabs(r->origin.y), oz = fabs(r->origin.z);
-    real o = ox > oy ? ox : oy;
-    ns.slack = TIE_REL * (o > oz ? o : oz);
+    ns.slack = TIE_REL * vec_max_abs(r->origin);
     ns.stats = stats;
     isect_shear sh;
     ns.sh = shear_of(b, r, &sh);
@@ -433,7 +429,7 @@ static int traverse_all(const bvh *b, const walk *w)
 static int visit_unbounded(const walk *w, bvh_ref ref)
 {
     const scene_prim *p = &w->prims[ref.prim];
-    if (!w->count_fn || p->kind != PRIM_PLANE || p->has_xform)
+    if (!w->count_fn || p->kind != PRIM_PLANE || p->frame)
         return visit_part(w, ref);
     if (w->stats)
         w->stats->prims_tested++;

@@ -44,19 +44,6 @@ static vec3 vec_with(vec3 v, int axis, real value)
     return v;
 }
 
-/* Plain comparisons rather than fmax: these run per ray and fmax is a
- * library call on x86-64; the inputs are never NaN. */
-/*@ requires !\is_NaN(v.x) && !\is_NaN(v.y) && !\is_NaN(v.z);
-    assigns \nothing;
-    ensures \result >= 0;
-    ensures EXACT(\result == vmaxabs(v)); */
-static real max_abs(vec3 v)
-{
-    real x = fabs(v.x), y = fabs(v.y), z = fabs(v.z);
-    real m = x > y ? x : y;
-    return m > z ? m : z;
-}
-
 
 /*
  * The point o + t d has an absolute error of about eps |o| + eps |t d|,
@@ -108,7 +95,7 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
     /* Refine only when the origin is far (|f| > 2R): nearer, o + t d is
      * already as exact as the centre's own coordinates allow. */
     int refine = roots == 2 && vec_length2(f) > 4.0 * radius * radius;
-    real reach = refine ? max_abs(r->origin) / max_abs(r->dir) : 0.0;
+    real reach = refine ? vec_max_abs(r->origin) / vec_max_abs(r->dir) : 0.0;
     for (int i = 0; i < roots && found < max; i++) {
         real ti = t[i];
         vec3 p;
@@ -745,7 +732,7 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
 {
     if (p->kind == PRIM_MESH)
         return mesh_hits(&p->u.mesh, r, out, max, bare);
-    if (!p->has_xform)
+    if (!p->frame)
         return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
     local.origin = xform_point(&p->frame->to_local, r->origin);
@@ -790,7 +777,7 @@ static int part_hits(const scene_prim *p, int part, const ray *r, const isect_sh
         }
         return mesh_triangle_hits(&p->u.mesh, part, r, sh, out, bare);
     }
-    if (!p->has_xform)
+    if (!p->frame)
         return local_hits(p, r, sh, out, max, bare);
     return prim_hits(p, r, out, max, bare);
 }
@@ -835,7 +822,7 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
     hit out[ISECT_MAX_CROSSINGS];
     /* A plane in the world frame (the unbounded parts every walk tests):
      * plane_hits' bare count, without the dispatch through part_hits. */
-    if (p->kind == PRIM_PLANE && !p->has_xform)
+    if (p->kind == PRIM_PLANE && !p->frame)
         return isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r);
     return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 1);
 }
@@ -844,7 +831,7 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
 {
     vec3 v[3], n[3];
     int code;
-    if (p->kind == PRIM_SPHERE && !p->has_xform) {
+    if (p->kind == PRIM_SPHERE && !p->frame) {
         g[0] = p->u.sphere.center.x;
         g[1] = p->u.sphere.center.y;
         g[2] = p->u.sphere.center.z;
@@ -852,7 +839,7 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
         *reals = 4;
         return ISECT_HOT_SPHERE;
     }
-    if (p->kind == PRIM_BOX && !p->has_xform) {
+    if (p->kind == PRIM_BOX && !p->frame) {
         g[0] = p->u.box.lo.x;
         g[1] = p->u.box.lo.y;
         g[2] = p->u.box.lo.z;
@@ -866,7 +853,7 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
     if (p->kind == PRIM_MESH) {
         mesh_corners(&p->u.mesh, part, v, n);
         code = ISECT_HOT_TRIANGLE | open_edges(&p->u.mesh, part) << 2;
-    } else if (p->kind == PRIM_TRIANGLE && !p->has_xform) {
+    } else if (p->kind == PRIM_TRIANGLE && !p->frame) {
         for (int i = 0; i < 3; i++)
             v[i] = p->u.triangle.p[i];
         code = ISECT_HOT_TRIANGLE | 7 << 2;
@@ -885,11 +872,11 @@ int isect_hot_make(const scene_prim *p, int part, real g[ISECT_HOT_REALS], int *
 
 int isect_hot_reals(const scene_prim *p)
 {
-    if (p->kind == PRIM_SPHERE && !p->has_xform)
+    if (p->kind == PRIM_SPHERE && !p->frame)
         return 4;
-    if (p->kind == PRIM_BOX && !p->has_xform)
+    if (p->kind == PRIM_BOX && !p->frame)
         return 8;
-    return p->kind == PRIM_MESH || (p->kind == PRIM_TRIANGLE && !p->has_xform) ? 12 : 0;
+    return p->kind == PRIM_MESH || (p->kind == PRIM_TRIANGLE && !p->frame) ? 12 : 0;
 }
 
 /* The record's crossings, bare (up to max). */
@@ -1078,7 +1065,7 @@ int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
     vec3 l, h;
     if (!local_bounds(p, &l, &h))
         return 0;
-    if (p->has_xform) {
+    if (p->frame) {
         vec3 wl = vec_splat(INFINITY), wh = vec_splat(-INFINITY);
         for (int i = 0; i < 8; i++) {
             vec3 corner = vec_make(i & 1 ? h.x : l.x, i & 2 ? h.y : l.y, i & 4 ? h.z : l.z);
@@ -1117,33 +1104,33 @@ static real larger(real a, real b)
 
 static real triangle_magnitude(const vec3 v[3])
 {
-    return larger(max_abs(v[0]), larger(max_abs(v[1]), max_abs(v[2])));
+    return larger(vec_max_abs(v[0]), larger(vec_max_abs(v[1]), vec_max_abs(v[2])));
 }
 
 static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
-        return max_abs(p->u.sphere.center) + p->u.sphere.radius;
+        return vec_max_abs(p->u.sphere.center) + p->u.sphere.radius;
     case PRIM_PLANE:
-        return max_abs(p->u.plane.point);
+        return vec_max_abs(p->u.plane.point);
     case PRIM_TRIANGLE:
         return triangle_magnitude(p->u.triangle.p);
     case PRIM_DISK:
-        return max_abs(p->u.disk.center) + p->u.disk.radius;
+        return vec_max_abs(p->u.disk.center) + p->u.disk.radius;
     case PRIM_BOX:
-        return larger(max_abs(p->u.box.lo), max_abs(p->u.box.hi));
+        return larger(vec_max_abs(p->u.box.lo), vec_max_abs(p->u.box.hi));
     case PRIM_CYLINDER:
-        return larger(max_abs(p->u.cylinder.from), max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
+        return larger(vec_max_abs(p->u.cylinder.from), vec_max_abs(p->u.cylinder.to)) + p->u.cylinder.radius;
     case PRIM_CONE:
-        return larger(max_abs(p->u.cone.from), max_abs(p->u.cone.to)) +
+        return larger(vec_max_abs(p->u.cone.from), vec_max_abs(p->u.cone.to)) +
                larger(p->u.cone.radius[0], p->u.cone.radius[1]);
     case PRIM_TORUS:
-        return max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
+        return vec_max_abs(p->u.torus.center) + p->u.torus.major + p->u.torus.minor;
     case PRIM_MESH: {
         real m = 0.0;
         for (int i = 0; i < p->u.mesh.position_count; i++)
-            m = larger(m, max_abs(p->u.mesh.positions[i]));
+            m = larger(m, vec_max_abs(p->u.mesh.positions[i]));
         return m;
     }
     }
@@ -1155,7 +1142,7 @@ static real local_magnitude(const scene_prim *p)
 real isect_prim_magnitude(const scene_prim *p)
 {
     real m = local_magnitude(p);
-    if (!p->has_xform)
+    if (!p->frame)
         return m;
     real norm = 0.0, shift = 0.0;
     for (int i = 0; i < 3; i++) {
@@ -1241,7 +1228,7 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
 static real spawn_offset(vec3 point, real magnitude)
 {
     real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
-    return SPAWN_REL * fmax(m, max_abs(point)) + SPAWN_ABS;
+    return SPAWN_REL * fmax(m, vec_max_abs(point)) + SPAWN_ABS;
 }
 
 /* p + step without forming an infinity: a coordinate at or past 2^1023 (a
@@ -1450,7 +1437,7 @@ static vec3 clamp_inside(vec3 lo, vec3 hi, vec3 origin, vec3 margin)
     assigns \nothing;   // not proved (spec/proofs.md): returns a value, writes no memory */
 static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
 {
-    if (!p->has_xform)
+    if (!p->frame)
         return clamp_inside(p->u.box.lo, p->u.box.hi, origin, vec_splat(offset));
     const double(*m)[4] = p->frame->to_local.m;
     vec3 margin = vec_splat(0.0);
@@ -1502,7 +1489,7 @@ static vec3 off_the_edges(const scene_prim *p, const hit *h, real offset)
     requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
     requires vfinite(dir) && vbounded(dir, 4);                  // a unit direction (shade_mirror, shade_refract of unit ones), as ray_spawn's
     assigns \nothing;
-    ensures !(p->kind == PRIM_BOX && p->has_xform) ==> vfinite(\result.origin);
+    ensures !(p->kind == PRIM_BOX && p->frame != \null) ==> vfinite(\result.origin);
     ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
     ensures EXACT(veq(\result.dir, dir));
     ensures EXACT(\result.tmin == 0); */

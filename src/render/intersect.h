@@ -75,7 +75,7 @@ int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h);
 #define ISECT_MAX_CROSSINGS 4
 
 /* The nearest hit of one primitive, dispatching on p->kind and taking the
- * ray into the local frame when p->has_xform (t is preserved; point and
+ * ray into the local frame when p->frame is set (t is preserved; point and
  * normals are mapped back to the world).  A mesh is searched triangle by
  * triangle (the BVH does better: it holds the parts below). */
 int isect_prim(const scene_prim *p, ray *r, hit *h);

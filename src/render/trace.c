@@ -139,7 +139,7 @@ static uint64_t piece_of(const scene_prim *p, const hit *h)
         return 0;
     vec3 a = p->kind == PRIM_CYLINDER ? vec_sub(p->u.cylinder.to, p->u.cylinder.from)
                                       : vec_sub(p->u.cone.to, p->u.cone.from);
-    real c = vec_dot(h->normal, vec_normalize(p->has_xform ? xform_vector(&p->frame->to_world, a) : a));
+    real c = vec_dot(h->normal, vec_normalize(p->frame ? xform_vector(&p->frame->to_world, a) : a));
     return c > 1 - 1e-9 ? 1 : c < -(1 - 1e-9) ? 2 : 3;
 }
 
@@ -260,12 +260,6 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     }
 }
 
-static real max_abs(vec3 a)
-{
-    real m = fabs(a.x) > fabs(a.y) ? fabs(a.x) : fabs(a.y);
-    return m > fabs(a.z) ? m : fabs(a.z);
-}
-
 /*
  * [SHADE-SHORTCUT-DARK-1] The ball around a distributed light that holds
  * every point light_point returns.  A disk's point is position + t1 (x r) +
@@ -283,7 +277,7 @@ static void light_ball(const scene_light *light, light_setup *setup)
     if (light->kind == LIGHT_DISK) {
         real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
         real spread = (t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2));
-        size = max_abs(light->position) + light->radius;
+        size = vec_max_abs(light->position) + light->radius;
         setup->centre = light->position;
         setup->reach = light->radius * sqrt(spread);
     } else if (light->kind == LIGHT_RECTANGLE) {
@@ -291,7 +285,7 @@ static void light_ball(const scene_light *light, light_setup *setup)
         /* The scaled length: a squared length below 2^-1022 is subnormal
          * and its square root off by up to 2^-13 of itself. */
         real a = vec_length(across), b = vec_length(along);
-        size = max_abs(light->position) + max_abs(light->edge_u) + max_abs(light->edge_v);
+        size = vec_max_abs(light->position) + vec_max_abs(light->edge_u) + vec_max_abs(light->edge_v);
         setup->centre = vec_add(light->position, vec_scale(across, 0.5));
         setup->reach = 0.5 * (a > b ? a : b);
     } else {
@@ -324,7 +318,7 @@ static int light_dark(const surface *s, const light_setup *setup)
 {
     const real e = 0x1p-20;
     vec3 p = s->h->point;
-    real size = max_abs(p) + max_abs(setup->centre) + setup->reach;
+    real size = vec_max_abs(p) + vec_max_abs(setup->centre) + setup->reach;
     if (!(setup->reach >= 0 && size < 0x1p400))
         return 0;
     vec3 d = vec_sub(setup->centre, p);
@@ -472,7 +466,7 @@ static int gather_crossing(void *ctx, const hit *h)
     interface *f = ctx;
     if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
         return 0;
-    if (!(max_abs(vec_sub(h->point, f->self->point)) <= f->reach))
+    if (!(vec_max_abs(vec_sub(h->point, f->self->point)) <= f->reach))
         return 0;
     const scene_prim *p = &f->scene->prims[h->prim];
     f->through = shade_shadow_transmission(f->through, f->scene->materials[p->material].t);
@@ -489,7 +483,7 @@ static void interface_gather(const tracer *t, const surface *s, const ray *in, i
 {
     /* Comparisons, not fmax calls: of these (never NaN, never -0) they
      * take the same value. */
-    real m = isect_part_magnitude(s->prim, s->h->part), at = max_abs(s->h->point);
+    real m = isect_part_magnitude(s->prim, s->h->part), at = vec_max_abs(s->h->point);
     m = m > at ? m : at;
     ray r = *in;
     f->scene = t->scene;

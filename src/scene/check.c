@@ -323,7 +323,7 @@ static int in_range(const scene_prim *prim)
     case PRIM_TORUS: ok = lower_quadric_in_range(prim); break;
     case PRIM_MESH: break; /* checked triangle by triangle (lower_mesh.c) */
     }
-    return ok && (!prim->has_xform || (xform_finite(&prim->frame->to_world) && xform_finite(&prim->frame->to_local)));
+    return ok && (!prim->frame || (xform_finite(&prim->frame->to_world) && xform_finite(&prim->frame->to_local)));
 }
 
 /* A transform can take a positive size below the smallest double: the

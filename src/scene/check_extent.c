@@ -155,14 +155,14 @@ static int prim_local_out(const scene_prim *p, extent_fault *f)
  * its world box. */
 static int prim_out(const scene_prim *p, extent_fault *f)
 {
-    if (p->has_xform) {
+    if (p->frame) {
         const xform *w = &p->frame->to_world;
         if (coord_out(vec_make(w->m[0][3], w->m[1][3], w->m[2][3]), "translation", f))
             return 1;
     }
     if (prim_local_out(p, f))
         return 1;
-    return p->has_xform && world_box_out(p, f);
+    return p->frame && world_box_out(p, f);
 }
 
 /* "<subject> <name> is outside the scene's extent: ..." (name may be ""). */

@@ -486,7 +486,7 @@ static int primitive_derived(jreader *r, json_t *element, int i)
 {
     const scene_prim *p = &r->L->scene->prims[i];
     json_t *t = present(element, "transform");
-    if (!p->has_xform || !json_is_object(t))
+    if (!p->frame || !json_is_object(t))
         return 1;
     jread_push_key(r, "transform");
     int ok = member_list(r, t, "to_local", 4, "rows", matrix_row, &p->frame->to_local);

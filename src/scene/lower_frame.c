@@ -37,7 +37,6 @@ int lower_keep_frame(loader *L, scene_prim *prim, const xform *to_world, const x
     }
     f->to_world = *to_world;
     f->to_local = *to_local;
-    prim->has_xform = 1;
     prim->frame = f;
     return 1;
 }

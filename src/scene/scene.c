@@ -107,7 +107,7 @@ static int inside_cone(vec3 from, vec3 to, real r0, real r1, vec3 q)
 
 int scene_prim_contains(const scene_prim *p, vec3 point)
 {
-    vec3 q = p->has_xform ? xform_point(&p->frame->to_local, point) : point;
+    vec3 q = p->frame ? xform_point(&p->frame->to_local, point) : point;
     if (!scene_prim_is_solid(p))
         return 0;
     switch (p->kind) {

@@ -97,9 +97,8 @@ typedef struct scene_prim {
      * to the same kind of shape (triangles, meshes and planes always;
      * spheres, disks, cylinders, cones and tori under similarities; boxes
      * under translate and axis scale).  Otherwise the parameters are in
-     * the local frame, has_xform is 1 and frame holds the matrix pair. */
-    int has_xform;
-    const scene_frame *frame;  /* set exactly when has_xform, else NULL */
+     * the local frame and frame holds the matrix pair; NULL: no frame. */
+    const scene_frame *frame;
     union {
         struct { vec3 center; double radius; } sphere;
         struct { vec3 point; vec3 normal; } plane;

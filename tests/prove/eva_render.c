@@ -91,7 +91,7 @@ static void spawn_hits(void)
     h.point = any_point();
     eva_render_ray = ray_spawn_hit(&p, &h, any_dir());
     p.kind = PRIM_BOX;
-    p.has_xform = 0;
+    p.frame = NULL;
     p.u.box.lo = any_vec(-0x1p500, 0x1p500);
     p.u.box.hi = any_vec(-0x1p500, 0x1p500);
     h.point = any_vec(-0x1p1019, 0x1p1019);
@@ -101,7 +101,7 @@ static void spawn_hits(void)
     for (int i = 0; i < 3; i++)
         corners[i] = any_vec(-0x1p500, 0x1p500);
     p.kind = PRIM_MESH;
-    p.has_xform = 0;
+    p.frame = NULL;
     p.u.mesh.positions = corners;
     p.u.mesh.position_count = 3;
     p.u.mesh.tri = tri;
