@@ -115,7 +115,7 @@ static int poly_roots(const real *p, int deg, real lo, real hi, real *roots)
         roots[0] = u;
         return p[1] != 0 && u >= lo && u <= hi;
     }
-    real dp[DEGREE], ends[ROOTS_MAX + 2];
+    real dp[DEGREE], ends[ROOTS_MAX + 2] = {0, 0, 0, 0, 0, 0};
     poly_derive(p, deg, dp);
     int ncut = poly_roots(dp, deg - 1, lo, hi, ends + 1), found = 0;
     ends[0] = lo;
@@ -212,7 +212,9 @@ static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[D
 int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max)
 {
     torus tr = {center, axis, major, minor};
-    real scale = major + minor, tb[2], c[DEGREE + 1], u[ROOTS_MAX];
+    /* Every array written before it is read (Eva reads them on paths it
+     * cannot tell are dead). */
+    real scale = major + minor, tb[2] = {0, 0}, c[DEGREE + 1], u[ROOTS_MAX] = {0, 0, 0, 0};
     vec3 f = vec_sub(r->origin, center);
     /* A line that only touches the bounding sphere touches the torus at
      * most on its outer equator: a graze, counted as a miss. */
@@ -227,9 +229,9 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
      * point of the torus is there), so a margin adds no root. */
     half += 0x1p-20;
     int n = poly_roots(c, DEGREE, -half, half, u), found = 0;
-    hit h[ROOTS_MAX];
+    hit h[ROOTS_MAX] = {0};
     /*@ loop invariant 0 <= i <= n && 0 <= found <= i;
-        loop invariant \forall integer j; 0 <= j < found ==> r->tmin < h[j].t < r->tmax;
+        loop invariant EXACT(\forall integer j; 0 <= j < found ==> r->tmin < h[j].t < r->tmax);
         loop assigns i, found, h[0 .. ROOTS_MAX - 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
@@ -245,12 +247,12 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
             isect_hit_set(&h[found++], t, p, nn, r->dir);
     }
     /*@ loop invariant 1 <= i <= found || (found == 0 && i == 1);
-        loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
+        loop invariant EXACT(\forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax);
         loop assigns i, h[0 .. ROOTS_MAX - 1];
         loop variant found - i; */
     for (int i = 1; i < found; i++)
         /*@ loop invariant 0 <= j <= i;
-            loop invariant \forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax;
+            loop invariant EXACT(\forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax);
             loop assigns j, h[0 .. ROOTS_MAX - 1];
             loop variant j; */
         for (int j = i; j > 0 && h[j].t < h[j - 1].t; j--) {
@@ -259,7 +261,7 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
             h[j - 1] = s;
         }
     /*@ loop invariant 0 <= i <= found && i <= max;
-        loop invariant \forall integer j; 0 <= j < i ==> out[j].t == h[j].t;
+        loop invariant EXACT(\forall integer j; 0 <= j < i ==> out[j].t == h[j].t);
         loop assigns i, out[0 .. max - 1];
         loop variant found - i; */
     for (int i = 0; i < found && i < max; i++)

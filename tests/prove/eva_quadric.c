@@ -66,13 +66,22 @@ void eva_cone(void)
 void eva_torus(void)
 {
     ray r;
-    hit out[4];
+    hit out[4] = {{0}, {0}, {0}, {0}};
     r.origin = any_vec(-0x1p500, 0x1p500);
     r.dir = any_dir();
     r.tmin = any(0, 0x1p500);
     r.tmax = any(0, DBL_MAX);
-    int n = isect_torus_hits(any_vec(-0x1p500, 0x1p500), any_dir(), any(0x1p-499, 0x1p500), any(0x1p-500, 0x1p499), &r,
-                             out, 4);
+    /* check.c, lower_quadric_in_range: |axis| within 1e-9 of 1, so each
+     * component within 1 + 2^-29 (vec_length(axis) >= |axis_i|). */
+    vec3 axis = any_vec(-1 - 0x1p-29, 1 + 0x1p-29);
+    /* check_extent.c: both radii in [2^-500, 2^500]; check_torus: minor <
+     * major (a relation Eva's intervals do not keep: the call's
+     * precondition is WP's, prove.sh runs it after Eva, hence the builtin's
+     * contract in place of any()). */
+    real major = Frama_C_double_interval(0x1p-500, 0x1p500), minor = Frama_C_double_interval(0x1p-500, 0x1p500);
+    if (!(minor < major))
+        return;
+    int n = isect_torus_hits(any_vec(-0x1p500, 0x1p500), axis, major, minor, &r, out, 4);
     if (n >= 1)
         eva_quadric_real = out[0].t;
 }
