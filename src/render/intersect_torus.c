@@ -46,6 +46,35 @@
 
 enum { DEGREE = 4, ROOTS_MAX = 4 };
 
+/*
+ * Bounds for make prove's Eva run (spec/proofs.md, "Round 9"): values the
+ * code keeps already, stated where Eva, which keeps no relation between two
+ * values, can use them, or cases that are no hit.
+ *   T_FAR: a ray parameter (the chord's middle and half length, a root, a
+ *     polish step).  A hit within the extent ([LANG-EXTENT-1]) is at
+ *     |t| <= 2^506 (a world ray's direction has a component >= 1/8, a
+ *     transform keeps t): past 2^1012 none is.
+ *   P_FAR: the chord's middle o + tm d - c, within R (1 + 2^-50) of the
+ *     centre and the rounding of tm d (2^-52 |f| <= 2^450).
+ *   MIDDLE_FAR: the chord's middle p0 and its half length, in units of the
+ *     bounding radius R: 1 at most for the exact chord; past 2 only where
+ *     the rounding of tm d (2^-52 |f|) exceeds R, an origin more than 2^50
+ *     times the torus's size from it, whose rays the doubles do not place
+ *     on the torus (its hits were rounding noise).
+ *   UNIT_MAX: a component of a unit vector formed as d (1/|d|).
+ */
+#define T_FAR 0x1p1012
+#define P_FAR 0x1p510
+#define MIDDLE_FAR 2.0
+#define UNIT_MAX 0x1.00001p0
+
+/* Two comparisons in the caller's test: Eva narrows v by them (not by a
+ * function's result, nor by fabs). */
+#define WITHIN(v, m) ((v) <= (m) && (v) >= -(m))
+/* v, or the end of [lo, hi] it passes (two comparisons: Eva narrows by them). */
+/*@ assigns \nothing; */
+static real in_range(real v, real lo, real hi) { return v > hi ? hi : v < lo ? lo : v; }
+
 /* p[0] + p[1] u + ... + p[deg] u^deg by Horner's rule. */
 /*@ requires 0 <= deg && \valid_read(p + (0 .. deg));
     assigns \nothing; */
@@ -92,7 +121,11 @@ static real monotone_root(const real *p, const real *dp, int deg, real a, real b
             a = x;
         else
             b = x;
-        real slope = poly_eval(dp, deg - 1, x), next = x - fx / slope;
+        /* A quotient isect_quotient holds (past 2^1020, or slope 0) puts
+         * next far outside [a, b], as the huge or infinite one did. */
+        real slope = poly_eval(dp, deg - 1, x), step;
+        isect_quotient(fx, slope, &step);
+        real next = x - step;
         if (!(next > a && next < b))
             next = 0.5 * (a + b);
         if (fabs(next - x) <= 0x1p-50 || b - a <= 0x1p-50)
@@ -197,11 +230,14 @@ static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3
     assigns c[0 .. DEGREE]; */
 static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[DEGREE + 1])
 {
-    real big = tr->major / scale, small = tr->minor / scale;
+    /* major <= scale (minor > 0, a monotone rounding) and 2 minor < scale
+     * (minor < major): the holds never change big or small. */
+    real big = in_range(tr->major / scale, 0, 1), small = in_range(tr->minor / scale, 0, 0.5);
     real z0 = vec_dot(p0, tr->a), ez = vec_dot(e, tr->a);
     vec3 p0x = vec_madd(p0, tr->a, -z0), ex = vec_madd(e, tr->a, -ez);
     real alpha = vec_dot(p0, e), m = vec_length2(p0), beta = m + (big - small) * (big + small);
-    real rho0 = vec_length(p0x), d0 = hypot(rho0 - big, z0);
+    /* |p0x| <= |p0| (1 + 2^-29) <= 2 sqrt(3) (1 + 2^-29): never held. */
+    real rho0 = in_range(vec_length(p0x), 0, 4), d0 = hypot(rho0 - big, z0);
     c[4] = 1;
     c[3] = 4 * alpha;
     c[2] = 4 * alpha * alpha + 2 * beta - 4 * big * big * vec_length2(ex);
@@ -220,8 +256,22 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
      * most on its outer equator: a graze, counted as a miss. */
     if (isect_sphere_roots(f, r->dir, scale, tb) < 2)
         return 0;
-    real dl = vec_length(r->dir), tm = 0.5 * (tb[0] + tb[1]), half = 0.5 * (tb[1] - tb[0]) * dl / scale;
-    vec3 e = vec_scale(r->dir, 1.0 / dl), p0 = vec_scale(vec_madd(f, r->dir, tm), 1.0 / scale);
+    /* Two roots: some d_i^2 > 0, so |d_i| >= 2^-538 and vec_length (m
+     * sqrt(s), s >= 1) at least that: the hold never changes dl. */
+    real dl = vec_length(r->dir), tm = 0.5 * (tb[0] + tb[1]), w = 0.5 * (tb[1] - tb[0]), half;
+    dl = dl < 0x1p-540 ? 0x1p-540 : dl;
+    if (!(WITHIN(tm, T_FAR) && WITHIN(w, T_FAR)))
+        return 0;
+    vec3 e = vec_scale(r->dir, 1.0 / dl), mid = vec_madd(f, r->dir, tm);
+    if (!(WITHIN(mid.x, P_FAR) && WITHIN(mid.y, P_FAR) && WITHIN(mid.z, P_FAR)))
+        return 0;
+    vec3 p0 = vec_scale(mid, 1.0 / scale);
+    if (!isect_quotient(w * dl, scale, &half) || !WITHIN(half, MIDDLE_FAR) || !WITHIN(p0.x, MIDDLE_FAR) ||
+        !WITHIN(p0.y, MIDDLE_FAR) || !WITHIN(p0.z, MIDDLE_FAR))
+        return 0;
+    /* |e_i| = |d_i| (1/dl) with dl >= |d_i|: never held. */
+    e = vec_make(in_range(e.x, -UNIT_MAX, UNIT_MAX), in_range(e.y, -UNIT_MAX, UNIT_MAX),
+                 in_range(e.z, -UNIT_MAX, UNIT_MAX));
     torus_quartic(&tr, scale, p0, e, c);
     /* The torus touches its bounding sphere along the outer equator: a ray
      * entering there has a root at the chord's very end, which rounding may
