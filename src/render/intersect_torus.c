@@ -62,11 +62,14 @@ enum { DEGREE = 4, ROOTS_MAX = 4 };
  *     times the torus's size from it, whose rays the doubles do not place
  *     on the torus (its hits were rounding noise).
  *   UNIT_MAX: a component of a unit vector formed as d (1/|d|).
+ *   X_FAR: a point the polish visits, within 7.5 R (p0 and u within 2 R,
+ *     a move within limit, 2 R) of a centre within 2^500.
  */
 #define T_FAR 0x1p1012
 #define P_FAR 0x1p510
 #define MIDDLE_FAR 2.0
 #define UNIT_MAX 0x1.00001p0
+#define X_FAR 0x1p505
 
 /* Two comparisons in the caller's test: Eva narrows v by them (not by a
  * function's result, nor by fabs). */
@@ -192,26 +195,33 @@ static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
     return 1;
 }
 
-/* Polishes the root t (step 3); *p and *n are the point and the normal.
- * limit: the largest move in t that is still the same root. */
+/* Polishes the root t (step 3) from x, its point ray_at(r, t); *p and *n
+ * are the point and the normal.  limit: the largest move in t that is
+ * still the same root. */
 /*@ requires \valid_read(tr) && \valid_read(r) && \valid(p) && \valid(n) && \separated(p, n, tr, r);
     assigns *p, *n; */
-static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 *p, vec3 *n)
+static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 x, vec3 *p, vec3 *n)
 {
-    vec3 x = ray_at(r, t);
     real tt = t, d, dl = vec_length(r->dir);
-    vec3 nn;
-    /*@ loop invariant 0 <= i <= 8;
+    vec3 nn = tr->a;
+    /*@ loop unroll 8;
+        loop invariant 0 <= i <= 8;
         loop assigns i, x, tt, d, nn;
         loop variant 8 - i; */
     for (int i = 0; i < 8 && torus_distance(tr, x, &d, &nn); i++) {
-        real slope = vec_dot(nn, r->dir);
+        real slope = vec_dot(nn, r->dir), step;
         if (slope == 0)
             break;
-        real step = -(d - tr->minor) / slope;
+        /* A step held (past 2^1020) or past 2 T_FAR is farther than limit
+         * (<= T_FAR, as |tt - t|): the test below refused it. */
+        if (!isect_quotient(-(d - tr->minor), slope, &step) || !WITHIN(step, 2 * T_FAR))
+            break;
         if (!(fabs(tt + step - t) <= limit))
             break;
-        x = vec_madd(x, r->dir, step);
+        vec3 next = vec_madd(x, r->dir, step);
+        if (!(WITHIN(next.x, X_FAR) && WITHIN(next.y, X_FAR) && WITHIN(next.z, X_FAR)))
+            break;
+        x = next;
         tt += step;
         /* Done when the move is below the rounding of the point itself. */
         vec3 ax = vec_make(fabs(x.x), fabs(x.y), fabs(x.z));
@@ -285,14 +295,22 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
         loop assigns i, found, h[0 .. ROOTS_MAX - 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        real t = tm + u[i] * scale / dl;
         /* The same root until halfway to its neighbours (or 1e-3 of the
          * chord past the outer ones). */
         real below = i > 0 ? 0.5 * (u[i] - u[i - 1]) : 1e-3 * half;
         real above = i + 1 < n ? 0.5 * (u[i + 1] - u[i]) : 1e-3 * half;
-        real limit = (below < above ? below : above) * scale / dl;
-        vec3 p, nn;
-        t = torus_polish(&tr, r, t, limit, &p, &nn);
+        /* u scale / dl and limit past 2^1020 (isect_quotient holds them),
+         * or t past T_FAR: no hit. */
+        real du, limit;
+        if (!isect_quotient(u[i] * scale, dl, &du) || !isect_quotient((below < above ? below : above) * scale, dl, &limit))
+            continue;
+        real t = tm + du;
+        if (!(WITHIN(t, T_FAR) && WITHIN(limit, T_FAR)))
+            continue;
+        vec3 x = ray_at(r, t), p, nn;
+        if (!(WITHIN(x.x, X_FAR) && WITHIN(x.y, X_FAR) && WITHIN(x.z, X_FAR)))
+            continue;
+        t = torus_polish(&tr, r, t, limit, x, &p, &nn);
         if (t > r->tmin && t < r->tmax)
             isect_hit_set(&h[found++], t, p, nn, r->dir);
     }
