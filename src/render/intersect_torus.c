@@ -64,12 +64,14 @@ enum { DEGREE = 4, ROOTS_MAX = 4 };
  *   UNIT_MAX: a component of a unit vector formed as d (1/|d|).
  *   X_FAR: a point the polish visits, within 7.5 R (p0 and u within 2 R,
  *     a move within limit, 2 R) of a centre within 2^500.
+ *   R_FAR: such a point's distance from the axis.
  */
 #define T_FAR 0x1p1012
 #define P_FAR 0x1p510
 #define MIDDLE_FAR 2.0
 #define UNIT_MAX 0x1.00001p0
 #define X_FAR 0x1p505
+#define R_FAR 0x1p506
 
 /* Two comparisons in the caller's test: Eva narrows v by them (not by a
  * function's result, nor by fabs). */
@@ -179,7 +181,8 @@ typedef struct torus {
 } torus;
 
 /* The distance from the core circle at p and its gradient, the outward
- * unit normal; 0 on the axis or the circle itself, where neither exists. */
+ * unit normal; 0 on the axis or the circle itself, where neither exists
+ * (*n is then the axis). */
 /*@ requires \valid_read(tr) && \valid(d) && \valid(n) && \separated(d, n, tr);
     assigns *d, *n; */
 static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
@@ -187,22 +190,40 @@ static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
     vec3 q = vec_sub(p, tr->c);
     real z = vec_dot(q, tr->a);
     vec3 across = vec_madd(q, tr->a, -z);
-    real rho = vec_length(across), dr = rho - tr->major;
+    /* |across| <= |q| (|a|^2 <= 2): rho within R_FAR for p within X_FAR. */
+    real rho = in_range(vec_length(across), 0, R_FAR), dr = rho - tr->major, k, zd;
     *d = hypot(dr, z);
-    if (!(rho > 0) || !(*d > 0))
+    *n = tr->a;
+    /* k = dr / (d rho), held only within 2^-1020 of the axis (|dr| <= d,
+     * hypot): taken as the axis itself.  z / d is a zero's own sign. */
+    if (!(rho > 0) || !(*d > 0) || !isect_quotient(dr, *d * rho, &k))
         return 0;
-    *n = vec_madd(vec_scale(across, dr / (*d * rho)), tr->a, z / *d);
+    if (z == 0)
+        zd = z;
+    else
+        isect_quotient(z, *d, &zd);
+    /* |across_i| <= rho (vec_length is m sqrt(s), s >= 1) and |dr| <= d,
+     * |z| <= d: |k| <= 1/rho, |across_i k| <= 1 and |z / d| <= 1 to a few
+     * ulps.  The holds state that for Eva, apart for rho < 1 and >= 1. */
+    if (rho >= 1)
+        k = in_range(k, -2, 2);
+    across = vec_make(in_range(across.x, -2 * rho, 2 * rho), in_range(across.y, -2 * rho, 2 * rho),
+                      in_range(across.z, -2 * rho, 2 * rho));
+    vec3 side = vec_scale(across, k);
+    side = vec_make(in_range(side.x, -UNIT_MAX, UNIT_MAX), in_range(side.y, -UNIT_MAX, UNIT_MAX),
+                    in_range(side.z, -UNIT_MAX, UNIT_MAX));
+    *n = vec_madd(side, tr->a, in_range(zd, -1, 1));
     return 1;
 }
 
 /* Polishes the root t (step 3) from x, its point ray_at(r, t); *p and *n
- * are the point and the normal.  limit: the largest move in t that is
- * still the same root. */
+ * are the point and the normal.  dl: |r->dir|; limit: the largest move in
+ * t that is still the same root. */
 /*@ requires \valid_read(tr) && \valid_read(r) && \valid(p) && \valid(n) && \separated(p, n, tr, r);
     assigns *p, *n; */
-static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3 x, vec3 *p, vec3 *n)
+static real torus_polish(const torus *tr, const ray *r, real dl, real t, real limit, vec3 x, vec3 *p, vec3 *n)
 {
-    real tt = t, d, dl = vec_length(r->dir);
+    real tt = t, d;
     vec3 nn = tr->a;
     /*@ loop unroll 8;
         loop invariant 0 <= i <= 8;
@@ -228,8 +249,7 @@ static real torus_polish(const torus *tr, const ray *r, real t, real limit, vec3
         if (fabs(step) * dl <= REAL_EPSILON * (vec_max_component(ax) + tr->major))
             break;
     }
-    if (!torus_distance(tr, x, &d, n))
-        *n = tr->a;
+    torus_distance(tr, x, &d, n);
     *p = x;
     return tt;
 }
@@ -310,9 +330,14 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
         vec3 x = ray_at(r, t), p, nn;
         if (!(WITHIN(x.x, X_FAR) && WITHIN(x.y, X_FAR) && WITHIN(x.z, X_FAR)))
             continue;
-        t = torus_polish(&tr, r, t, limit, x, &p, &nn);
-        if (t > r->tmin && t < r->tmax)
-            isect_hit_set(&h[found++], t, p, nn, r->dir);
+        t = torus_polish(&tr, r, dl, t, limit, x, &p, &nn);
+        /* Set in a local, copied: Eva shows isect_hit_set's clauses of
+         * one hit, not of h[found], an index it does not pin. */
+        if (t > r->tmin && t < r->tmax) {
+            hit one;
+            isect_hit_set(&one, t, p, nn, r->dir);
+            h[found++] = one;
+        }
     }
     /*@ loop invariant 1 <= i <= found || (found == 0 && i == 1);
         loop invariant EXACT(\forall integer k; 0 <= k < found ==> r->tmin < h[k].t < r->tmax);
