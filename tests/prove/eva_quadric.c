@@ -1,17 +1,16 @@
 /*
  * eva_quadric.c - Eva's drivers for the cylinder, cone and torus hit
  * tests (src/render/intersect_quadric.c, intersect_torus.c; spec/proofs.md,
- * "Hit tests: cylinder, cone, torus"): eva_cylinder in make prove and
- * make prove-quick, eva_cone in make prove (0 alarms each); eva_torus by
- * tests/prove/prove.sh isect-shapes, not make prove: its alarms are
- * open.  Coordinates within 2^500 ([LANG-EXTENT-1]),
+ * "Hit tests: cylinder, cone, torus"): eva_cylinder, eva_cone and
+ * eva_torus in make prove and make prove-quick (0 alarms each).
+ * Coordinates within 2^500 ([LANG-EXTENT-1]),
  * radii in [2^-500, 2^500] (a cone's: 0 or in that range, not both 0), the ray's direction in
  * vec_normalize's box [-4, 4], tmin in [0, 2^500]; the ends anywhere in
  * the extent, independently (the length's hold in axial_of makes the
  * relation check_extent.c gives, |to - from| >= 2^-500, unneeded).
- * eva_torus: the torus, centre within 2^500, a unit axis (vec_normalize's
- * box), 0 < minor < major within 2^500 (the box of each: minor in
- * [2^-500, 2^499], major in [2^-499, 2^500]).
+ * eva_torus: the torus, centre within 2^500 ([LANG-EXTENT-1]), an axis of
+ * length within 1e-9 of 1 (check.c, lower_quadric_in_range), both radii in
+ * [2^-500, 2^500] (check_extent.c) with minor < major (check_torus).
  */
 #include "eva.h"
 #include "render/isect_common.c"

@@ -10,11 +10,11 @@
 #   (all but isect-shapes when no argument; isect: WP on the hit tests alone,
 #   isect-eva: Eva on them; isect-sphere: Eva on isect_sphere_roots alone;
 #   isect-tri: Eva on triangle_solve and the shear alone, a run of minutes;
-#   isect-shapes: Eva on the torus, whose alarms are open;
-#   PROVE_EVA_SHAPES: which of cylinder, cone, torus it runs)
+#   isect-shapes: Eva on the cylinder, cone and torus alone;
+#   PROVE_EVA_SHAPES: which of them it runs, default the torus)
 # quick: the one Eva run of the shading formulas that uses vec_length,
 # vec_normalize, saturating_div and scale_indices through their contracts,
-# and the hit tests', the cylinder's and the cone's (seconds; what CI runs), without
+# and the hit tests', the cylinder's, the cone's and the torus's (seconds; what CI runs), without
 # the runs that check the functions they use by contract.
 # Environment: PROVE_OUT (logs, default build/prove), PROVE_TIMEOUT (seconds
 # a prover gets per goal, default 30: the slowest goal takes 0.5 s alone,
@@ -58,7 +58,7 @@ ISECT_FCT=ray_at,nearest,isect_cylinder,isect_cone,isect_torus,isect_quotient,he
 # the entry points and the helpers they call (their assigns clauses), but
 # torus_distance and torus_quartic, whose calls of hypot need bounds WP
 # does not have (spec/proofs.md, "Hit tests: cylinder, cone, torus").
-SHAPES_FCT=held,vec_held,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_polish,isect_torus_hits
+SHAPES_FCT=held,vec_held,in_range,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_polish,isect_torus_hits
 
 # What the shapes' Eva runs (eva_quadric.c) use by contract: proved by the
 # quotient and sphere runs and eva_vec.c.
@@ -272,16 +272,15 @@ if [ "$what" = all ] || [ "$what" = quick ] || [ "$what" = isect-eva ] || [ "$wh
     if [ "$what" = isect-tri ]; then
         :
     elif [ "$what" = isect-shapes ]; then
-        # The torus (tests/prove/eva_quadric.c): not in make prove, its
-        # alarms are open (spec/proofs.md); the cylinder and cone are.
+        # The shapes' runs alone (tests/prove/eva_quadric.c), as below.
         for run in ${PROVE_EVA_SHAPES:-torus}; do
             eva_run "$run" "eva_$run" "$SHAPES_SPEC" "" tests/prove/eva_quadric.c -- $(shape_opts "$run") || status=1
         done
     else
         # PROVE_EVA (names, comma-separated) keeps some of them; quick runs
         # isect alone (seconds): the binade splits take minutes.
-        keep=${PROVE_EVA:-isect,quotient,sphere,cylinder,cone}
-        [ "$what" = quick ] && keep=${PROVE_EVA:-isect,cylinder,cone}
+        keep=${PROVE_EVA:-isect,quotient,sphere,cylinder,cone,torus}
+        [ "$what" = quick ] && keep=${PROVE_EVA:-isect,cylinder,cone,torus}
         [ "$what" = isect-sphere ] && keep=sphere
         while read -r name main skip; do
             case ",$keep," in *",$name,"*) ;; *) continue ;; esac
@@ -291,11 +290,13 @@ isect eva_isect isect_quotient,vec_length,vec_length_fast,vec_normalize
 quotient eva_isect_quotient -
 sphere eva_isect_sphere held_root,vec_length,vec_length_fast,vec_normalize
 RUNS
-        # The cylinder and cone (tests/prove/eva_quadric.c, seconds each):
-        # 0 alarms since round 8 (the cone's since round 8d).
-        for run in cylinder cone; do
+        # The cylinder, cone and torus (tests/prove/eva_quadric.c, seconds
+        # each): 0 alarms since round 8 (the cone's since round 8d, the
+        # torus's since round 9).
+        for run in cylinder cone torus; do
             case ",$keep," in
-            *,"$run",*) eva_run "$run" "eva_$run" "$SHAPES_SPEC" "" tests/prove/eva_quadric.c || status=1 ;;
+            *,"$run",*) eva_run "$run" "eva_$run" "$SHAPES_SPEC" "" tests/prove/eva_quadric.c -- $(shape_opts "$run") ||
+                status=1 ;;
             esac
         done
     fi
