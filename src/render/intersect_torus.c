@@ -76,8 +76,13 @@ enum { DEGREE = 4, ROOTS_MAX = 4 };
 /* Two comparisons in the caller's test: Eva narrows v by them (not by a
  * function's result, nor by fabs). */
 #define WITHIN(v, m) ((v) <= (m) && (v) >= -(m))
-/* v, or the end of [lo, hi] it passes (two comparisons: Eva narrows by them). */
-/*@ assigns \nothing; */
+/* v, or the end of [lo, hi] it passes (two comparisons: Eva narrows by
+ * them).  Its clauses are comparisons and copies of the doubles: WP's
+ * proof holds of them (EXACT: Eva's intervals keep no relation to show
+ * them by, and it narrows by the code itself). */
+/*@ assigns \nothing;
+    ensures EXACT(lo <= hi ==> lo <= \result <= hi);
+    ensures EXACT(lo <= v <= hi ==> \result == v); */
 static real in_range(real v, real lo, real hi) { return v > hi ? hi : v < lo ? lo : v; }
 
 /* p[0] + p[1] u + ... + p[deg] u^deg by Horner's rule. */
@@ -188,10 +193,13 @@ typedef struct torus {
 static int torus_distance(const torus *tr, vec3 p, real *d, vec3 *n)
 {
     vec3 q = vec_sub(p, tr->c);
-    real z = vec_dot(q, tr->a);
+    /* For p within X_FAR, a centre within 2^500 and |a_i| <= 1 + 2^-29
+     * (check.c): |z| <= 3 (2^505 + 2^500) (1 + 2^-29) < 2^508; |across| <=
+     * |q| (|a|^2 <= 2), so rho within R_FAR; major <= 2^500, so |dr| <
+     * 2^507.  Never held, stated for WP (hypot's bounds) and Eva. */
+    real z = in_range(vec_dot(q, tr->a), -0x1p508, 0x1p508);
     vec3 across = vec_madd(q, tr->a, -z);
-    /* |across| <= |q| (|a|^2 <= 2): rho within R_FAR for p within X_FAR. */
-    real rho = in_range(vec_length(across), 0, R_FAR), dr = rho - tr->major, k, zd;
+    real rho = in_range(vec_length(across), 0, R_FAR), dr = in_range(rho - tr->major, -0x1p507, 0x1p507), k, zd;
     *d = hypot(dr, z);
     *n = tr->a;
     /* k = dr / (d rho), held only within 2^-1020 of the axis (|dr| <= d,
@@ -263,7 +271,8 @@ static void torus_quartic(const torus *tr, real scale, vec3 p0, vec3 e, real c[D
     /* major <= scale (minor > 0, a monotone rounding) and 2 minor < scale
      * (minor < major): the holds never change big or small. */
     real big = in_range(tr->major / scale, 0, 1), small = in_range(tr->minor / scale, 0, 0.5);
-    real z0 = vec_dot(p0, tr->a), ez = vec_dot(e, tr->a);
+    /* |p0_i| <= 2, |a_i| <= 1 + 2^-29 (check.c): never held; for WP. */
+    real z0 = in_range(vec_dot(p0, tr->a), -8, 8), ez = vec_dot(e, tr->a);
     vec3 p0x = vec_madd(p0, tr->a, -z0), ex = vec_madd(e, tr->a, -ez);
     real alpha = vec_dot(p0, e), m = vec_length2(p0), beta = m + (big - small) * (big + small);
     /* |p0x| <= |p0| (1 + 2^-29) <= 2 sqrt(3) (1 + 2^-29): never held. */

@@ -55,10 +55,10 @@ status=0
 # The hit tests WP checks (their contracts: src/render/isect_common.h, intersect.c).
 ISECT_FCT=ray_at,nearest,isect_cylinder,isect_cone,isect_torus,isect_quotient,held_root,isect_sphere_roots,sphere_refine,isect_hit_set,in_interval,plane_t,plane_point,disk_hits,box_slabs,shear_ratio,shear_set,isect_shear_make,lemma_dot_difference,lemma_plane_gap,lemma_dist_expand,lemma_square_line,lemma_dist_line,lemma_foot_scalar,lemma_foot_norm,lemma_product_square,lemma_abs_square,lemma_c_norm,lemma_norms_scalar,lemma_quadratic_scalar,lemma_quotient_times,lemma_root_qa,lemma_root_cq_ring,lemma_root_cq_cancel,lemma_root_cq,lemma_on_sphere,lemma_held_qa,lemma_held_cq,lemma_sphere_roots,lemma_product_zero,lemma_zero_gap,lemma_equal_square,lemma_graze_scalar,lemma_sphere_graze
 # The cylinder, cone and torus (intersect_quadric.c, intersect_torus.c):
-# the entry points and the helpers they call (their assigns clauses), but
-# torus_distance and torus_quartic, whose calls of hypot need bounds WP
-# does not have (spec/proofs.md, "Hit tests: cylinder, cone, torus").
-SHAPES_FCT=held,vec_held,in_range,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_polish,isect_torus_hits
+# the entry points and the helpers they call (their assigns clauses);
+# torus_distance and torus_quartic since round 9, whose calls of hypot
+# have their bounds from in_range (spec/proofs.md, "Round 9").
+SHAPES_FCT=held,vec_held,in_range,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_distance,torus_polish,torus_quartic,isect_torus_hits
 
 # What the shapes' Eva runs (eva_quadric.c) use by contract: proved by the
 # quotient and sphere runs and eva_vec.c.
