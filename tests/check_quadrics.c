@@ -3,6 +3,7 @@
  * (scene_prim_contains).  Every expected t, point and normal is worked out by
  * hand in the comment next to it, or checked by another route (the distance
  * to the surface computed from its definition). */
+#include <fenv.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -205,6 +206,31 @@ START_TEST(test_torus_thin_far)
     ck_assert_vec_near(h.normal, vec_make(0, 0, 1), 1e-9);
     ck_assert_near(h.point.x, 1e6 + 1, 2.4e-10);
     ck_assert_near(h.point.z, 1e-3, 1e-15);
+}
+END_TEST
+
+/* A torus 2^-298 across seen from 2^100 (within the extent,
+ * [LANG-EXTENT-1]) along a line 2 minor above its plane: no point of the
+ * line is on it (every point of the torus has |z| <= minor).  The chord's
+ * middle is formed with an error of about 2^48 (2^-52 of the distance),
+ * 2^346 times the bounding radius: before round 9 the quartic's
+ * coefficients, of that to the fourth power, overflowed (FE_OVERFLOW; the
+ * infinities then gave no root).  Now that middle is no hit before any of
+ * it is formed (spec/proofs.md, "Round 9").  From 2^-290 (a distance of
+ * 2^8 radii) the same line in the plane hits the tube at x = major + minor. */
+START_TEST(test_torus_far_tiny_forms_no_infinity)
+{
+    scene_prim t = torus(vec_make(0, 0, 0), vec_make(0, 0, 1), 0x1p-298, 0x1p-301);
+    ray r = make_ray(vec_make(0x1.a200000000004p+100, 0, 0x1p-300), vec_make(-1, 0, 0));
+    hit h;
+    feclearexcept(FE_ALL_EXCEPT);
+    int found = isect_prim(&t, &r, &h);
+    ck_assert(!fetestexcept(FE_OVERFLOW | FE_INVALID | FE_DIVBYZERO));
+    ck_assert_int_eq(found, 0);
+    ray near = make_ray(vec_make(0x1.8p-290, 0, 0), vec_make(-1, 0, 0));
+    ck_assert_int_eq(isect_prim(&t, &near, &h), 1);
+    ck_assert(h.t == 0x1.8p-290 - (0x1p-298 + 0x1p-301));
+    ck_assert_vec_near(h.normal, vec_make(1, 0, 0), 1e-15);
 }
 END_TEST
 
@@ -511,6 +537,7 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_cone_apex_subnormal_width);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
+    tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);
     tcase_add_test(tc, test_torus_transformed);
     tcase_add_test(tc, test_rim_is_closed);
     tcase_add_test(tc, test_quadric_bounds_and_magnitude);

@@ -51,7 +51,7 @@ int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r
     requires vfinite(r->origin) && vfinite(r->dir) && \is_finite(r->tmin) && r->tmin >= 0;   // [NUM-FINITE-1]
     assigns out[0 .. max - 1];
     ensures 0 <= \result <= max;
-    ensures \forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax); */
+    ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax)); */
 int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max);
 
 /* Local bounds: the box around the ring (torus). */

@@ -1,17 +1,16 @@
 /*
  * eva_quadric.c - Eva's drivers for the cylinder, cone and torus hit
  * tests (src/render/intersect_quadric.c, intersect_torus.c; spec/proofs.md,
- * "Hit tests: cylinder, cone, torus"): eva_cylinder in make prove and
- * make prove-quick, eva_cone in make prove (0 alarms each); eva_torus by
- * tests/prove/prove.sh isect-shapes, not make prove: its alarms are
- * open.  Coordinates within 2^500 ([LANG-EXTENT-1]),
+ * "Hit tests: cylinder, cone, torus"): eva_cylinder, eva_cone and
+ * eva_torus in make prove and make prove-quick (0 alarms each).
+ * Coordinates within 2^500 ([LANG-EXTENT-1]),
  * radii in [2^-500, 2^500] (a cone's: 0 or in that range, not both 0), the ray's direction in
  * vec_normalize's box [-4, 4], tmin in [0, 2^500]; the ends anywhere in
  * the extent, independently (the length's hold in axial_of makes the
  * relation check_extent.c gives, |to - from| >= 2^-500, unneeded).
- * eva_torus: the torus, centre within 2^500, a unit axis (vec_normalize's
- * box), 0 < minor < major within 2^500 (the box of each: minor in
- * [2^-500, 2^499], major in [2^-499, 2^500]).
+ * eva_torus: the torus, centre within 2^500 ([LANG-EXTENT-1]), an axis of
+ * length within 1e-9 of 1 (check.c, lower_quadric_in_range), both radii in
+ * [2^-500, 2^500] (check_extent.c) with minor < major (check_torus).
  */
 #include "eva.h"
 #include "render/isect_common.c"
@@ -66,13 +65,22 @@ void eva_cone(void)
 void eva_torus(void)
 {
     ray r;
-    hit out[4];
+    hit out[4] = {{0}, {0}, {0}, {0}};
     r.origin = any_vec(-0x1p500, 0x1p500);
     r.dir = any_dir();
     r.tmin = any(0, 0x1p500);
     r.tmax = any(0, DBL_MAX);
-    int n = isect_torus_hits(any_vec(-0x1p500, 0x1p500), any_dir(), any(0x1p-499, 0x1p500), any(0x1p-500, 0x1p499), &r,
-                             out, 4);
+    /* check.c, lower_quadric_in_range: |axis| within 1e-9 of 1, so each
+     * component within 1 + 2^-29 (vec_length(axis) >= |axis_i|). */
+    vec3 axis = any_vec(-1 - 0x1p-29, 1 + 0x1p-29);
+    /* check_extent.c: both radii in [2^-500, 2^500]; check_torus: minor <
+     * major (a relation Eva's intervals do not keep: the call's
+     * precondition is WP's, prove.sh runs it after Eva, hence the builtin's
+     * contract in place of any()). */
+    real major = Frama_C_double_interval(0x1p-500, 0x1p500), minor = Frama_C_double_interval(0x1p-500, 0x1p500);
+    if (!(minor < major))
+        return;
+    int n = isect_torus_hits(any_vec(-0x1p500, 0x1p500), axis, major, minor, &r, out, 4);
     if (n >= 1)
         eva_quadric_real = out[0].t;
 }
