@@ -276,6 +276,37 @@ START_TEST(test_api_size_override_limits)
 }
 END_TEST
 
+/* [LANG-EXTENT-1] [EMBED-API-11] A size a host overrides is held to the
+ * scene's extent as the scene's own size was: an orthographic camera 2^487
+ * wide (eye 0, up (0, 1, 0)) reaches 2^500 exactly at 1 x 16384 pixels and
+ * passes it at 1 x 16385 (with --max-height raised), where the renderer is
+ * refused with RF_ERR_DATA and nothing is made. */
+START_TEST(test_api_size_override_keeps_the_view_in_the_extent)
+{
+    static const char text[] = "image { width 1 height 1 }\n"
+                               "camera { orthographic eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] width 2 ^ 487 }\n"
+                               "plane { point [0, 0, -1] normal [0, 0, 1] }\n";
+    rf_load_options lo;
+    rf_load_options_init(&lo);
+    lo.limits.max_height = 20000;
+    rf_scene *s = load(text, &lo);
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.width = 1;
+    o.height = 16385;
+    rf_renderer *r = (rf_renderer *)&o;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_DATA);
+    ck_assert_ptr_null(r);
+    rf_image *img = (rf_image *)&o;
+    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_DATA);
+    ck_assert_ptr_null(img);
+    o.height = 16384;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer_free(r);
+    rf_scene_free(s);
+}
+END_TEST
+
 /* [EMBED-API-NULL-1] A NULL the reference does not allow comes back as
  * RF_ERR_USAGE (the out pointer, when there is one, set to NULL) instead
  * of a crash; a stride so large that the last row's end wraps around
@@ -921,6 +952,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_size_override_limits);
+    tcase_add_test(tc, test_api_size_override_keeps_the_view_in_the_extent);
     tcase_add_test(tc, test_api_null_arguments);
     tcase_add_test(tc, test_api_null_everywhere);
     tcase_add_test(tc, test_api_broken_resolver);

@@ -791,6 +791,48 @@ START_TEST(test_scene_load_refuses_a_kept_frame_beyond_the_extent)
 }
 END_TEST
 
+/* [LANG-EXTENT-1] An orthographic camera's view is width wide and width
+ * times height/width (the image's aspect) tall, and its rays start
+ * anywhere on it: every corner, eye +- right w/2 +- up (w/2)(h/w), is held
+ * within 2^500.  With the eye at 0, right (1, 0, 0) and up (0, 1, 0), a
+ * camera 2^500 wide on an image 1 x 16384 has the corner (-2^499, -2^513, 0)
+ * (tests/attack9, finding 1: it loaded, and rays started 2^513 away); one
+ * 2^487 wide has (-2^486, -2^500, 0), exactly at the bound, and loads, and
+ * one 2^487 (1 + 2^-52) wide is one step over. */
+START_TEST(test_scene_load_refuses_an_orthographic_view_beyond_the_extent)
+{
+    static const char *const form = "image { width 1 height 16384 }\n"
+                                    "camera { orthographic eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] width %s }\n"
+                                    "plane { point [0, 0, -1] normal [0, 0, 1] }";
+    static const struct {
+        const char *width, *message;
+    } refused[] = {
+        {"2 ^ 500", "t.scene:2:75: error: the camera is outside the scene's extent: its view on an image of 1 x 16384 "
+                    "pixels (width 3.2733906078961419e+150, height 5.3631231719770388e+154) has a corner with a "
+                    "coordinate of -2.6815615859885194e+154, beyond 2^500"},
+        {"2 ^ 487 * (1 + 2 ^ -52)", "has a corner with a coordinate of -3.2733906078961426e+150"},
+    };
+    char text[512];
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        loaded l;
+        snprintf(text, sizeof text, form, refused[i].width);
+        load(&l, text);
+        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", text);
+        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", text, l.messages);
+        loaded_done(&l);
+    }
+    loaded l;
+    snprintf(text, sizeof text, form, "2 ^ 487");
+    const scene_model *s = load_ok(&l, text);
+    double c = 0;
+    ck_assert_int_eq(scene_view_out(&s->camera, 1, 16384, &c), 0);
+    ck_assert_int_eq(scene_view_out(&s->camera, 1, 16385, &c), 1);
+    ck_assert_double_eq(c, -0x1p500 * (16385.0 / 16384));
+    ck_assert_int_eq(scene_view_out(&s->camera, 2, 16384, &c), 0);
+    loaded_done(&l);
+}
+END_TEST
+
 /* [LANG-CAMERA-2] Every mistake of a camera is reported, in one run: the
  * kind and a value out of range, then look_at at the eye and a zero up. */
 START_TEST(test_scene_load_camera_reports_everything)
@@ -882,6 +924,7 @@ Suite *suite_lower(void)
     tcase_add_test(tc, test_scene_load_huge_but_finite);
     tcase_add_test(tc, test_scene_load_refuses_beyond_the_extent);
     tcase_add_test(tc, test_scene_load_refuses_a_kept_frame_beyond_the_extent);
+    tcase_add_test(tc, test_scene_load_refuses_an_orthographic_view_beyond_the_extent);
     tcase_add_test(tc, test_scene_load_quadrics);
     tcase_add_test(tc, test_scene_load_camera_reports_everything);
     suite_add_tcase(s, tc);

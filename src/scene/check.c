@@ -145,8 +145,9 @@ int check_camera_basis(loader *L, const check_at *at, scene_camera *cam)
     return 1;
 }
 
-int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam)
+int check_camera_ranges(loader *L, const check_at *at, scene_camera *cam)
 {
+    cam->width_where = check_span(at, KW_WIDTH);
     int ok = check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
     ok &= check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0);
     return ok && check_camera_extent(L, at, cam);
