@@ -198,7 +198,9 @@ int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to
 int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
 /* A cone's radii: each >= 0 (at CHECK_CONE_RADIUS0, 1), one > 0 (at KW_RADII). */
 int check_cone_radii(loader *L, const check_at *at, const double radius[2]);
-/* major > 0, minor > 0, minor < major (at KW_MINOR). */
+/* major > 0, minor > 0, minor < major, minor >= major * TORUS_THINNEST
+ * (at KW_MINOR). */
+#define TORUS_THINNEST 0x1p-16
 int check_torus(loader *L, const check_at *at, double major, double minor);
 /* A primitive as the tracer gets it: finite, unit normals, finite
  * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
