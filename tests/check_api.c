@@ -233,6 +233,18 @@ START_TEST(test_api_render_region_refusals)
 }
 END_TEST
 
+/* Neither a renderer nor an image is made for scene with o: want, and the
+ * out pointers (set to something else first) NULL. */
+static void assert_not_made(const rf_scene *scene, const rf_render_options *o, rf_status want)
+{
+    rf_renderer *r = (rf_renderer *)&r;
+    ck_assert_int_eq(rf_renderer_create(scene, o, &r), want);
+    ck_assert_ptr_null(r);
+    rf_image *img = (rf_image *)&img;
+    ck_assert_int_eq(rf_render_image(scene, o, &img, NULL), want);
+    ck_assert_ptr_null(img);
+}
+
 /* [EMBED-API-11] An image size a host overrides is held to the limits the
  * scene was loaded with, as the scene's own size was: over max_pixels,
  * max_width or max_height the renderer is refused (RF_ERR_USAGE, no
@@ -248,12 +260,7 @@ START_TEST(test_api_size_override_limits)
     rf_render_options_init(&o);
     o.width = 8193;
     o.height = 8192;
-    rf_renderer *r = (rf_renderer *)&o;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
-    ck_assert_ptr_null(r);
-    rf_image *img = (rf_image *)&o;
-    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_USAGE);
-    ck_assert_ptr_null(img);
+    assert_not_made(s, &o, RF_ERR_USAGE);
     rf_scene_free(s);
     lo.limits.max_pixels = 100;
     lo.limits.max_width = 20;
@@ -266,7 +273,7 @@ START_TEST(test_api_size_override_limits)
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         o.width = sizes[i][0];
         o.height = sizes[i][1];
-        r = NULL;
+        rf_renderer *r = NULL;
         ck_assert_msg(rf_renderer_create(s, &o, &r) == (sizes[i][2] ? RF_OK : RF_ERR_USAGE), "%dx%d", o.width,
                       o.height);
         ck_assert_int_eq(r != NULL, sizes[i][2]);
@@ -294,13 +301,9 @@ START_TEST(test_api_size_override_keeps_the_view_in_the_extent)
     rf_render_options_init(&o);
     o.width = 1;
     o.height = 16385;
-    rf_renderer *r = (rf_renderer *)&o;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_DATA);
-    ck_assert_ptr_null(r);
-    rf_image *img = (rf_image *)&o;
-    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_DATA);
-    ck_assert_ptr_null(img);
+    assert_not_made(s, &o, RF_ERR_DATA);
     o.height = 16384;
+    rf_renderer *r = NULL;
     ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
     rf_renderer_free(r);
     rf_scene_free(s);

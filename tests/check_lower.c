@@ -23,6 +23,17 @@ static scene_model *load_ok(loaded *l, const char *text)
     return l->scene;
 }
 
+/* Loads text that must be refused (STATUS_DATA, no scene) with message
+ * among what it printed. */
+static void assert_refused(const char *text, const char *message)
+{
+    loaded l;
+    load(&l, text);
+    ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", text);
+    ck_assert_msg(strstr(l.messages, message) != NULL, "%s: %s", text, l.messages);
+    loaded_done(&l);
+}
+
 /* [LANG-IMAGE-1] [LANG-CAMERA-1] [LANG-AMBIENT-1] [LANG-MAT-DEFAULT-1]
  * [LANG-SPHERE-1]: what a scene that says nothing else gets. */
 START_TEST(test_scene_load_defaults_of_an_almost_empty_scene)
@@ -729,13 +740,8 @@ START_TEST(test_scene_load_refuses_beyond_the_extent)
         {"sphere {}\ndistributed_light { rectangle [3e150, 0, 0] [1e150, 0, 0] [0, 0, 1] }",
          "t.scene:2:31: error: this light is outside the scene's extent: its corner has a coordinate of 3.9999999999999999e+150"},
     };
-    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
-        loaded l;
-        load(&l, refused[i].text);
-        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", refused[i].text);
-        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", refused[i].text, l.messages);
-        loaded_done(&l);
-    }
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++)
+        assert_refused(refused[i].text, refused[i].message);
     loaded l;
     const scene_model *s = load_ok(&l, "sphere { center [2^500, -2^500, 4.9e-324] radius 2^500 }\n"
                                     "sphere { radius 2^-500 }\n"
@@ -773,13 +779,8 @@ START_TEST(test_scene_load_refuses_a_kept_frame_beyond_the_extent)
         {"box { from [0, 0, 0] to [2^500, 1, 1] rotate [0, 0, 45] scale [4, 1, 1] }", "its world box"},
         {"disk { radius 2^499 scale [1, 1, 1e10] }", "its world box"},
     };
-    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
-        loaded l;
-        load(&l, refused[i].text);
-        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", refused[i].text);
-        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", refused[i].text, l.messages);
-        loaded_done(&l);
-    }
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++)
+        assert_refused(refused[i].text, refused[i].message);
     loaded l;
     const scene_model *s = load_ok(&l, "sphere { radius 1 scale [2 ^ 500, 1, 1] }\n"
                                     "box { from [0, 0, 0] to [2^500, 1, 1] rotate [0, 0, 45] }\n"
@@ -814,12 +815,8 @@ START_TEST(test_scene_load_refuses_an_orthographic_view_beyond_the_extent)
     };
     char text[512];
     for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
-        loaded l;
         snprintf(text, sizeof text, form, refused[i].width);
-        load(&l, text);
-        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", text);
-        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", text, l.messages);
-        loaded_done(&l);
+        assert_refused(text, refused[i].message);
     }
     loaded l;
     snprintf(text, sizeof text, form, "2 ^ 487");
@@ -849,13 +846,8 @@ START_TEST(test_scene_load_refuses_a_torus_thinner_than_its_quartic_resolves)
         {"torus { major 1 minor 2^-16 * (1 - 2^-53) }", "got minor 1.5258789062499998e-05 and major 1"},
         {"torus { major 2^100 minor 2^83 }", "minor must be at least major / 65536"},
     };
-    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
-        loaded l;
-        load(&l, refused[i].text);
-        ck_assert_msg(l.scene == NULL && l.status == STATUS_DATA, "%s: loaded", refused[i].text);
-        ck_assert_msg(strstr(l.messages, refused[i].message) != NULL, "%s: %s", refused[i].text, l.messages);
-        loaded_done(&l);
-    }
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++)
+        assert_refused(refused[i].text, refused[i].message);
     loaded l;
     const scene_model *s = load_ok(&l, "torus { major 1 minor 2^-16 }\ntorus { major 2^100 minor 2^84 }\n");
     ck_assert_int_eq(s->prim_count, 2);
