@@ -370,7 +370,10 @@ typedef struct rf_renderer rf_renderer;
  * the acceleration structure, in memory from the scene's allocator.  The
  * scene must outlive the renderer.  RF_OK, RF_ERR_USAGE (bad options, or
  * an image size over the max_width, max_height or max_pixels the scene was
- * loaded with), RF_ERR_CANCELLED (o->cancel) or RF_ERR_NO_MEMORY. */
+ * loaded with), RF_ERR_DATA (an image size that puts an orthographic
+ * camera's view, width times height/width tall, outside the scene's
+ * extent: spec/language.md [LANG-EXTENT-1]), RF_ERR_CANCELLED (o->cancel)
+ * or RF_ERR_NO_MEMORY. */
 RF_API rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out);
 
 /* The size of the image the renderer renders. */

@@ -241,6 +241,18 @@ START_TEST(test_api_render_region_refusals)
 }
 END_TEST
 
+/* Neither a renderer nor an image is made for scene with o: want, and the
+ * out pointers (set to something else first) NULL. */
+static void assert_not_made(const rf_scene *scene, const rf_render_options *o, rf_status want)
+{
+    rf_renderer *r = (rf_renderer *)&r;
+    ck_assert_int_eq(rf_renderer_create(scene, o, &r), want);
+    ck_assert_ptr_null(r);
+    rf_image *img = (rf_image *)&img;
+    ck_assert_int_eq(rf_render_image(scene, o, &img, NULL), want);
+    ck_assert_ptr_null(img);
+}
+
 /* [EMBED-API-11] An image size a host overrides is held to the limits the
  * scene was loaded with, as the scene's own size was: over max_pixels,
  * max_width or max_height the renderer is refused (RF_ERR_USAGE, no
@@ -256,12 +268,7 @@ START_TEST(test_api_size_override_limits)
     rf_render_options_init(&o);
     o.width = 8193;
     o.height = 8192;
-    rf_renderer *r = (rf_renderer *)&o;
-    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_ERR_USAGE);
-    ck_assert_ptr_null(r);
-    rf_image *img = (rf_image *)&o;
-    ck_assert_int_eq(rf_render_image(s, &o, &img, NULL), RF_ERR_USAGE);
-    ck_assert_ptr_null(img);
+    assert_not_made(s, &o, RF_ERR_USAGE);
     rf_scene_free(s);
     lo.limits.max_pixels = 100;
     lo.limits.max_width = 20;
@@ -274,12 +281,39 @@ START_TEST(test_api_size_override_limits)
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         o.width = sizes[i][0];
         o.height = sizes[i][1];
-        r = NULL;
+        rf_renderer *r = NULL;
         ck_assert_msg(rf_renderer_create(s, &o, &r) == (sizes[i][2] ? RF_OK : RF_ERR_USAGE), "%dx%d", o.width,
                       o.height);
         ck_assert_int_eq(r != NULL, sizes[i][2]);
         rf_renderer_free(r);
     }
+    rf_scene_free(s);
+}
+END_TEST
+
+/* [LANG-EXTENT-1] [EMBED-API-11] A size a host overrides is held to the
+ * scene's extent as the scene's own size was: an orthographic camera 2^487
+ * wide (eye 0, up (0, 1, 0)) reaches 2^500 exactly at 1 x 16384 pixels and
+ * passes it at 1 x 16385 (with --max-height raised), where the renderer is
+ * refused with RF_ERR_DATA and nothing is made. */
+START_TEST(test_api_size_override_keeps_the_view_in_the_extent)
+{
+    static const char text[] = "image { width 1 height 1 }\n"
+                               "camera { orthographic eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] width 2 ^ 487 }\n"
+                               "plane { point [0, 0, -1] normal [0, 0, 1] }\n";
+    rf_load_options lo;
+    rf_load_options_init(&lo);
+    lo.limits.max_height = 20000;
+    rf_scene *s = load(text, &lo);
+    rf_render_options o;
+    rf_render_options_init(&o);
+    o.width = 1;
+    o.height = 16385;
+    assert_not_made(s, &o, RF_ERR_DATA);
+    o.height = 16384;
+    rf_renderer *r = NULL;
+    ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+    rf_renderer_free(r);
     rf_scene_free(s);
 }
 END_TEST
@@ -929,6 +963,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_region_float_saturates);
     tcase_add_test(tc, test_api_render_region_refusals);
     tcase_add_test(tc, test_api_size_override_limits);
+    tcase_add_test(tc, test_api_size_override_keeps_the_view_in_the_extent);
     tcase_add_test(tc, test_api_null_arguments);
     tcase_add_test(tc, test_api_null_everywhere);
     tcase_add_test(tc, test_api_broken_resolver);

@@ -198,6 +198,35 @@ START_TEST(test_faults_output_directory_missing_is_74_and_nothing_is_written)
 }
 END_TEST
 
+/* [LANG-EXTENT-1] A size on the command line that puts an orthographic
+ * camera's view outside the extent is a data error at the camera's width,
+ * before any pixel (exit 65, no file; with workers too): a camera 2^487
+ * wide, eye at 0, reaches 2^500 at 1 x 16384 pixels and passes it at
+ * 1 x 16385, which --max-height 20000 lets through the size limits. */
+START_TEST(test_faults_size_override_keeps_the_view_in_the_extent)
+{
+    char scene[512], out[512];
+    make_work_dir();
+    put_file_at(scene, sizeof scene, "o.scene",
+                "image { width 1 height 1 }\n"
+                "camera { orthographic eye [0, 0, 0] look_at [0, 0, -1] up [0, 1, 0] width 2 ^ 487 }\n"
+                "plane { point [0, 0, -1] normal [0, 0, 1] }\n");
+    path_in(out, sizeof out, "out.pfm");
+    const char *over[] = {"render", scene, "-q", "--width", "1", "--height", "16385", "--max-height", "20000",
+                          "-o", out, NULL};
+    expect(NULL, over, 65, "o.scene:2:75: error: the camera is outside the scene's extent: its view on an image of "
+                           "1 x 16385 pixels");
+    const char *jobs[] = {"render", scene, "-q", "--width", "1", "--height", "16385", "--max-height", "20000",
+                          "--jobs", "2", "-o", out, NULL};
+    expect(NULL, jobs, 65, "o.scene:2:75: error: the camera is outside");
+    ck_assert_int_eq(count_files("out"), 0);
+    const char *at[] = {"render", scene, "-q", "--width", "1", "--height", "16384", "-o", out, NULL};
+    expect(NULL, at, 0, NULL);
+    ck_assert_int_eq(count_files("out.pfm"), 1);
+    remove_work_dir();
+}
+END_TEST
+
 START_TEST(test_faults_output_onto_a_non_file_is_refused)
 {
     /* A directory named like the output must not be replaced. */
@@ -890,6 +919,7 @@ Suite *suite_faults(void)
     tcase_set_timeout(outputs, 30);
     tcase_add_test(outputs, test_faults_output_directory_missing_is_74_and_nothing_is_written);
     tcase_add_test(outputs, test_faults_output_onto_a_non_file_is_refused);
+    tcase_add_test(outputs, test_faults_size_override_keeps_the_view_in_the_extent);
     tcase_add_test(outputs, test_faults_full_disk_is_74);
     tcase_add_test(outputs, test_faults_sigint_leaves_no_file_and_exits_130);
     suite_add_tcase(s, outputs);

@@ -59,6 +59,10 @@ int cli_render_option(render_opts *o, int argc, char **argv, int *i);
 int cli_check_sizes(int width, int height, int samples, int light_samples, int max_depth, const scene_limits *lim);
 /* cli_check_sizes of a render's options. */
 int cli_check_render_sizes(const render_opts *r, const scene_limits *lim);
+/* [LANG-EXTENT-1] The image size r overrides (if any) against scene's
+ * orthographic view (scene_check_view): 0, or STATUS_DATA after the error
+ * at the camera's width, before anything is rendered or written. */
+int cli_check_view(const rf_scene *scene, const render_opts *r);
 
 /* The options of an image file (--linear --exr-float --exposure
  * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */

@@ -243,7 +243,8 @@ int cli_render(int argc, char **argv)
         return cli_usage_error("render: the render would need about %.0f MiB, over --max-memory %ld", need / 1048576.0,
                                a.scene.limits.max_memory_mb);
     }
-    status = in_tiles(&a) ? cli_render_tiles(&a, scene) : render_and_write(&a, scene);
+    if ((status = cli_check_view(scene, &a.render)) == 0)
+        status = in_tiles(&a) ? cli_render_tiles(&a, scene) : render_and_write(&a, scene);
     rf_scene_free(scene);
     return status;
 }

@@ -76,6 +76,9 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     stats->width = o && o->width > 0 ? o->width : scene->image.width;
     stats->height = o && o->height > 0 ? o->height : scene->image.height;
     stats->samples = o && o->samples > 0 ? o->samples : scene->image.samples;
+    double beyond;
+    if (scene_view_out(&scene->camera, stats->width, stats->height, &beyond))
+        return STATUS_DATA; /* a size override took the view out of the extent ([LANG-EXTENT-1]) */
     double start = render_clock();
     r->cancel = cancel_poll_make(o ? o->cancel : NULL, o ? o->cancel_ctx : NULL);
     int status = tracer_build(&r->tracer, scene, o ? o->max_depth : 0, o ? o->light_samples : 0, &r->cancel);

@@ -67,8 +67,10 @@ typedef struct renderer {
 } renderer;
 
 /* Builds the tracer for scene with opts (NULL: the scene's settings) and
- * fixes the image size.  Returns STATUS_OK, STATUS_NO_MEMORY or
- * STATUS_CANCELLED (then nothing is left to free).  r must not move
+ * fixes the image size.  Returns STATUS_OK, STATUS_NO_MEMORY,
+ * STATUS_CANCELLED, or STATUS_DATA when the size puts an orthographic
+ * camera's view outside the scene's extent (scene_view_out; the load
+ * checked the scene's own size) (then nothing is left to free).  r must not move
  * afterwards (its statistics point into it). */
 int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts);
 

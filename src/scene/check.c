@@ -155,8 +155,9 @@ int check_camera_basis(loader *L, const check_at *at, scene_camera *cam)
     return 1;
 }
 
-int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam)
+int check_camera_ranges(loader *L, const check_at *at, scene_camera *cam)
 {
+    cam->width_where = check_span(at, KW_WIDTH);
     int ok = check_range(L, at, KW_FOV, "fov", cam->fov, 0, 1, 180, 1);
     ok &= check_range(L, at, KW_WIDTH, "width", cam->width, 0, 1, HUGE_VAL, 0);
     return ok && check_camera_extent(L, at, cam);
@@ -271,6 +272,15 @@ int check_torus(loader *L, const check_at *at, double major, double minor)
     if (ok && !(minor < major)) {
         diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_MINOR),
                     "minor must be less than major (a ring torus), got minor %.17g and major %.17g", minor, major);
+        ok = 0;
+    } else if (ok && !(minor >= major * TORUS_THINNEST)) {
+        /* [LANG-TORUS-2] The quartic, of coefficients of order 1, must
+         * resolve a tube whose signal is of order (minor/major)^2: past
+         * 2^-22 roots were lost and hits reported off the surface, and the
+         * BVH's box test then changed the image (spec/numerics.md 2.15). */
+        diag_report(&L->diag, DIAG_ERROR, check_span(at, KW_MINOR),
+                    "minor must be at least major / 65536 (2^-16): a thinner tube is beyond what the torus's hit "
+                    "test resolves, got minor %.17g and major %.17g (ratio %.3g)", minor, major, minor / major);
         ok = 0;
     }
     return ok;

@@ -221,6 +221,43 @@ int check_camera_extent(loader *L, const check_at *at, const scene_camera *cam)
     return 1;
 }
 
+/* In the order camera.c computes a ray's origin (screen_offset at sx, sy =
+ * +-1, the values it takes at x = 0 and x = width), so a corner the check
+ * passes is the origin's own bits. */
+int scene_view_out(const scene_camera *cam, int width, int height, double *coordinate)
+{
+    extent_fault f;
+    if (cam->kind != CAMERA_ORTHOGRAPHIC)
+        return 0;
+    real half = 0.5 * cam->width, aspect = (real)height / (real)width;
+    for (int corner = 0; corner < 4; corner++) {
+        real sx = corner & 1 ? 1.0 : -1.0, sy = corner & 2 ? 1.0 : -1.0;
+        vec3 offset = vec_add(vec_scale(cam->right, sx * half), vec_scale(cam->true_up, sy * half * aspect));
+        if (coord_out(vec_add(cam->eye, offset), "view", &f)) {
+            *coordinate = f.value;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int scene_check_view(const scene_model *s, int width, int height, diag *d)
+{
+    double c;
+    if (!scene_view_out(&s->camera, width, height, &c))
+        return 1;
+    diag_report(d, DIAG_ERROR, s->camera.width_where,
+                "the camera is outside the scene's extent: its view on an image of %d x %d pixels (width %.17g, "
+                "height %.17g) has a corner with a coordinate of %.17g, beyond 2^500 (about 3.3e150)",
+                width, height, s->camera.width, s->camera.width * ((double)height / width), c);
+    return 0;
+}
+
+int check_view_extent(loader *L, const scene_model *s)
+{
+    return scene_check_view(s, s->image.width, s->image.height, &L->diag);
+}
+
 int check_light_extent(loader *L, const check_at *at, const scene_light *light)
 {
     extent_fault f;

@@ -39,6 +39,7 @@ void loader_scene_defaults(scene_model *s)
     s->camera.right = vec_make(1, 0, 0);
     s->camera.true_up = vec_make(0, 1, 0);
     s->camera.where = src_span_none();
+    s->camera.width_where = src_span_none();
     s->oracle_where = src_span_none();
     source_set_init(&s->sources, &s->mem);
 }

@@ -177,9 +177,10 @@ int check_is_unit(vec3 v);
 int check_unit(loader *L, const check_at *at, int field, const char *what, vec3 v);
 /* size: width, height, samples, max_depth as read; fills *im. */
 int check_image(loader *L, const check_at *at, const double size[4], rgb background, scene_image_spec *im);
-/* fov and width in range; the orthonormal basis derived from eye, look_at
- * and up (a zero view and a zero up both reported); check_camera: both. */
-int check_camera_ranges(loader *L, const check_at *at, const scene_camera *cam);
+/* fov and width in range (and where width is kept in cam->width_where, for
+ * check_view_extent); the orthonormal basis derived from eye, look_at and
+ * up (a zero view and a zero up both reported); check_camera: both. */
+int check_camera_ranges(loader *L, const check_at *at, scene_camera *cam);
 int check_camera_basis(loader *L, const check_at *at, scene_camera *cam);
 int check_camera(loader *L, const check_at *at, scene_camera *cam);
 int check_ambient(loader *L, const check_at *at, rgb color);
@@ -197,7 +198,9 @@ int check_invert(loader *L, const check_at *at, const xform *to_world, xform *to
 int check_ends(loader *L, const check_at *at, vec3 from, vec3 to);
 /* A cone's radii: each >= 0 (at CHECK_CONE_RADIUS0, 1), one > 0 (at KW_RADII). */
 int check_cone_radii(loader *L, const check_at *at, const double radius[2]);
-/* major > 0, minor > 0, minor < major (at KW_MINOR). */
+/* major > 0, minor > 0, minor < major, minor >= major * TORUS_THINNEST
+ * (at KW_MINOR). */
+#define TORUS_THINNEST 0x1p-16
 int check_torus(loader *L, const check_at *at, double major, double minor);
 /* A primitive as the tracer gets it: finite, unit normals, finite
  * matrices (else an error at CHECK_BLOCK), a triangle with area (else at
@@ -218,6 +221,9 @@ check_at check_at_fixed(const src_span *span);
 int check_prim_extent(loader *L, const check_at *at, const scene_prim *prim);
 int check_face_extent(loader *L, src_span at, const vec3 p[3]);
 int check_camera_extent(loader *L, const check_at *at, const scene_camera *cam);
+/* The orthographic view on the scene's own image (scene_view_out), once
+ * both the camera and the image are known: at the camera's width. */
+int check_view_extent(loader *L, const scene_model *s);
 int check_light_extent(loader *L, const check_at *at, const scene_light *light);
 
 /* validate.c: whole-scene checks after lowering, and the feature record. */

@@ -184,6 +184,7 @@ typedef struct scene_camera {
     double width;           /* orthographic: horizontal extent of the view in scene units */
     vec3 forward, right, true_up; /* orthonormal basis derived at load time */
     src_span where;
+    src_span width_where;   /* the `width` value (the block when not written) */
 } scene_camera;
 
 typedef struct scene_image_spec {
@@ -389,6 +390,20 @@ int scene_prim_contains(const scene_prim *p, vec3 point);
  * disk, triangle), whose shadow rays never meet them again.  A torus or an
  * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
+
+/* [LANG-EXTENT-1] Whether an orthographic camera's view on an image of
+ * width x height pixels leaves the scene's extent: the corners eye +-
+ * right w/2 +- true_up (w/2) (height/width), where the camera's rays start,
+ * each have every coordinate within 2^500 (0), or not (1, with the first
+ * coordinate beyond in *coordinate).  A perspective camera's rays start at
+ * its eye: always 0.  The image's aspect reaches 2^30 with --max-height
+ * raised, so a width within 2^500 alone let rays start 2^530 away
+ * (tests/attack9, finding 1).  In check_extent.c. */
+int scene_view_out(const scene_camera *cam, int width, int height, double *coordinate);
+/* The same, reported to d at the camera's width as an error when the view
+ * leaves the extent (0), else 1: the load with the scene's image, the
+ * refray program with its --width and --height. */
+int scene_check_view(const scene_model *s, int width, int height, diag *d);
 
 /* The block word of a primitive kind ("sphere", ..., "torus", "mesh"), and its plural. */
 const char *scene_prim_name(scene_prim_kind kind);

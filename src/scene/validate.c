@@ -130,7 +130,7 @@ static int check_memory(loader *L)
 int validate_scene(loader *L)
 {
     scene_model *s = L->scene;
-    if (!check_memory(L))
+    if (!check_memory(L) || !check_view_extent(L, s))
         return 0;
     if (s->prim_count == 0) {
         src_span whole = {0, 0, 0};
