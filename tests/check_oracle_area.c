@@ -691,6 +691,43 @@ START_TEST(test_area_tolerance_falls_with_samples)
 }
 END_TEST
 
+/* The exact image of a scene at w x h, one point per pixel. */
+static img_buf exact_image(const char *path, int w, int h)
+{
+    scene_model *s = load_file(path);
+    const oracle_family *f = family_of(s);
+    oracle_view v = {s, w, h, 1, s->image.max_depth};
+    img_buf out;
+    ck_assert_int_eq(oracle_image(f, &v, &out, NULL, NULL), STATUS_OK);
+    scene_free(s);
+    return out;
+}
+
+START_TEST(test_oracle_camera_up_of_any_length)
+{
+    /* Attack 9, finding 5: up [0, 1, 1e200] is up [0, 0, 1] to 1e-200, so
+     * the two cameras are one and the exact images must be the same doubles
+     * (the huge up's unit vector is formed after scaling by 1e200, exact
+     * here: [0, 1e-200, 1] has length 1 in doubles).  Before, v.v was +Inf,
+     * up and right came out 0 and every pixel was the centre's (max abs
+     * 1.874 apart at 80 x 60). */
+    img_buf huge = exact_image("tests/attack9/oracle_up_huge.scene", 20, 15);
+    img_buf small = exact_image("tests/attack9/oracle_up_small.scene", 20, 15);
+    double centre = img_pixel(&small, 10, 7)[0];
+    int differ = 0, off_centre = 0;
+    for (int y = 0; y < 15; y++)
+        for (int x = 0; x < 20; x++)
+            for (int c = 0; c < 3; c++) {
+                differ += img_pixel(&huge, x, y)[c] != img_pixel(&small, x, y)[c];
+                off_centre += c == 0 && img_pixel(&small, x, y)[0] != centre;
+            }
+    ck_assert_msg(differ == 0, "%d channels differ", differ);
+    ck_assert_int_gt(off_centre, 200); /* the image is not one colour */
+    img_free(&huge);
+    img_free(&small);
+}
+END_TEST
+
 Suite *suite_oracle_area(void)
 {
     Suite *s = suite_create("oracle_area");
@@ -722,6 +759,7 @@ Suite *suite_oracle_area(void)
     tcase_add_test(fam, test_area_convergence_slope_smooth);
     tcase_add_test(fam, test_area_convergence_slope_occluded);
     tcase_add_test(fam, test_area_tolerance_falls_with_samples);
+    tcase_add_test(fam, test_oracle_camera_up_of_any_length);
     /* Whole renders of up to 1024 light samples a pixel: about 1 s each alone,
      * several times that beside other builds on a shared 2-core machine. */
     tcase_set_timeout(fam, 20);
