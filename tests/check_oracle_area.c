@@ -277,6 +277,43 @@ START_TEST(test_area_disk_solid_angle_paxton)
 }
 END_TEST
 
+START_TEST(test_area_disk_mean_far_against_the_2d_route)
+{
+    /* The exterior series against the nested 2-D quadrature about the
+     * disk's centre (a positive integrand: no cancellation at any size),
+     * over pi a^2, for disks from 1 to 1e-12 and points from over the centre
+     * to grazing (h/R = 2e-4); at a/R = AREA_DISK_FAR it meets Paxton. */
+    const double hs[] = {1.5, 1e-3}, r0s[] = {0, 0.5, 3, 7, 40}, as[] = {1, 0.3, 1e-3, 1e-6, 1e-12};
+    int tried = 0;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 5; j++)
+            for (int l = 0; l < 5; l++) {
+                double h = hs[i], r0 = r0s[j], a = as[l];
+                if (a > AREA_DISK_FAR * hypot(h, r0))
+                    continue;
+                area_kernel k = {h, 0, FALLOFF_INVERSE_SQUARE};
+                double want = brute_disk(&k, r0, 0, a) / (M_PI * a * a), got = area_disk_mean_far(h, r0, a);
+                ck_assert_msg(fabs(got - want) <= 1e-12 * want, "h %g r0 %g a %g: %.17g, 2-D %.17g", h, r0, a, got,
+                              want);
+                tried++;
+            }
+    ck_assert_int_ge(tried, 30);
+    double h = 1.5, a = 1, r0 = sqrt(16 - h * h);  /* a / R = 1/4 */
+    ck_assert_rel(area_disk_mean_far(h, r0, a), area_disk_solid_angle(h, r0, a) / M_PI, 1e-13);
+    /* The quadrature about the centre (any falloff) against the series,
+     * and for linear falloff against the contour where it keeps its digits
+     * (a = 0.3, r0 = 3: it cancels one). */
+    area_kernel inv = {1.5, 0, FALLOFF_INVERSE_SQUARE}, lin = {1.5, 0.3, FALLOFF_LINEAR};
+    ck_assert_rel(area_disk_mean_far_quadrature(&inv, 3, 1e-6), area_disk_mean_far(1.5, 3, 1e-6), 1e-13);
+    ck_assert_rel(area_disk_mean_far_quadrature(&inv, 0.5, 0.3), area_disk_mean_far(1.5, 0.5, 0.3), 1e-13);
+    ck_assert_rel(area_disk_mean_far_quadrature(&lin, 3, 0.3), area_disk(&lin, 3, 0, 0.3) / (M_PI * 0.09), 1e-11);
+    /* its limit at a -> 0: phi at the centre, g(d) h/d */
+    ck_assert_rel(area_disk_mean_far_quadrature(&lin, 3, 1e-12), area_phi(&lin, hypot(1.5, 3)), 1e-13);
+    /* Paxton's form there at a = 1e-6: its 1e-16 absolute over pi a^2 */
+    ck_assert_rel(area_disk_mean_far(1.5, 3, 1e-6), 1.5 / pow(hypot(1.5, 3), 3), 1e-11);
+}
+END_TEST
+
 START_TEST(test_area_disk_on_axis_closed_forms)
 {
     /* The issue's linear form 2 pi h ln((sqrt(h^2+a^2)+d0)/(h+d0)) and none's
@@ -691,6 +728,66 @@ START_TEST(test_area_tolerance_falls_with_samples)
 }
 END_TEST
 
+/* The exact image of a scene at w x h, one point per pixel. */
+static img_buf exact_image(const char *path, int w, int h)
+{
+    scene_model *s = load_file(path);
+    const oracle_family *f = family_of(s);
+    oracle_view v = {s, w, h, 1, s->image.max_depth};
+    img_buf out;
+    ck_assert_int_eq(oracle_image(f, &v, &out, NULL, NULL), STATUS_OK);
+    scene_free(s);
+    return out;
+}
+
+START_TEST(test_disk_light_small_is_the_point_light)
+{
+    /* Attack 9, finding 4: a disk light of radius 1e-12 is the point light
+     * at its centre to 1e-24 relative, whose exact image is another family's
+     * (plane_point: E g(d) cos).  Before, Paxton's form gave +-1e10 here
+     * (inverse square), the contour 3.5e-3 off (linear, d0 0.3). */
+    static const char *const pairs[][2] = {
+        {"tests/attack9/oracle_disk_small.scene", "tests/attack9/oracle_disk_small_point.scene"},
+        {"tests/attack9/disk_small_linear.scene", "tests/attack9/disk_small_linear_point.scene"}};
+    img_buf disk = exact_image(pairs[_i][0], 20, 15);
+    img_buf point = exact_image(pairs[_i][1], 20, 15);
+    for (int y = 0; y < 15; y++)
+        for (int x = 0; x < 20; x++)
+            for (int c = 0; c < 3; c++) {
+                double got = img_pixel(&disk, x, y)[c], want = img_pixel(&point, x, y)[c];
+                ck_assert_msg(want > 0 && fabs(got - want) <= 1e-13 * want, "(%d, %d, %d): %.17g, point %.17g", x,
+                              y, c, got, want);
+            }
+    img_free(&disk);
+    img_free(&point);
+}
+END_TEST
+
+START_TEST(test_oracle_camera_up_of_any_length)
+{
+    /* Attack 9, finding 5: up [0, 1, 1e200] is up [0, 0, 1] to 1e-200, so
+     * the two cameras are one and the exact images must be the same doubles
+     * (the huge up's unit vector is formed after scaling by 1e200, exact
+     * here: [0, 1e-200, 1] has length 1 in doubles).  Before, v.v was +Inf,
+     * up and right came out 0 and every pixel was the centre's (max abs
+     * 1.874 apart at 80 x 60). */
+    img_buf huge = exact_image("tests/attack9/oracle_up_huge.scene", 20, 15);
+    img_buf small = exact_image("tests/attack9/oracle_up_small.scene", 20, 15);
+    double centre = img_pixel(&small, 10, 7)[0];
+    int differ = 0, off_centre = 0;
+    for (int y = 0; y < 15; y++)
+        for (int x = 0; x < 20; x++)
+            for (int c = 0; c < 3; c++) {
+                differ += img_pixel(&huge, x, y)[c] != img_pixel(&small, x, y)[c];
+                off_centre += c == 0 && img_pixel(&small, x, y)[0] != centre;
+            }
+    ck_assert_msg(differ == 0, "%d channels differ", differ);
+    ck_assert_int_gt(off_centre, 200); /* the image is not one colour */
+    img_free(&huge);
+    img_free(&small);
+}
+END_TEST
+
 Suite *suite_oracle_area(void)
 {
     Suite *s = suite_create("oracle_area");
@@ -707,6 +804,7 @@ Suite *suite_oracle_area(void)
     tcase_add_test(area, test_area_polygon_matches_corner_form_and_2d);
     tcase_add_test(area, test_area_polygon_linear_against_references);
     tcase_add_test(area, test_area_disk_solid_angle_paxton);
+    tcase_add_test(area, test_area_disk_mean_far_against_the_2d_route);
     tcase_add_test(area, test_area_disk_on_axis_closed_forms);
     tcase_add_test(area, test_area_contour_weight_limit_and_slope);
     tcase_add_test(area, test_area_disk_minus_disk_against_polar_route);
@@ -722,6 +820,8 @@ Suite *suite_oracle_area(void)
     tcase_add_test(fam, test_area_convergence_slope_smooth);
     tcase_add_test(fam, test_area_convergence_slope_occluded);
     tcase_add_test(fam, test_area_tolerance_falls_with_samples);
+    tcase_add_test(fam, test_oracle_camera_up_of_any_length);
+    tcase_add_loop_test(fam, test_disk_light_small_is_the_point_light, 0, 2);
     /* Whole renders of up to 1024 light samples a pixel: about 1 s each alone,
      * several times that beside other builds on a shared 2-core machine. */
     tcase_set_timeout(fam, 20);

@@ -9,6 +9,7 @@
  * 0.25] * [0.5, 0.6, 0.7] = [0.4, 0.3, 0.175], the rest the background.
  */
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -102,6 +103,98 @@ START_TEST(test_verify_render_compare_detects_an_error)
     ck_assert_near(r.metrics.max_abs, 1e-6, 1e-15);
     ck_assert_msg(strstr(r.reason, "1 pixel over") != NULL, "reason: %s", r.reason);
     verify_exact_free(&e);
+    scene_free(s);
+}
+END_TEST
+
+/* ambient_only with the tolerance or the radiance of a broken formula
+ * (attack 9, finding 4: a disk light of radius 1e-12 gave +-1e10 and a
+ * tolerance of +Inf, and verify passed it): one function per value, the
+ * family's functions having no context. */
+#define BROKEN(name, value)                                                              \
+    static double tolerance_##name(const oracle_view *v, int light_samples)              \
+    {                                                                                    \
+        (void)v;                                                                         \
+        (void)light_samples;                                                             \
+        return value;                                                                    \
+    }                                                                                    \
+    static oracle_status radiance_##name(const oracle_view *v, double x, double y, rgb *out) \
+    {                                                                                    \
+        oracle_status st = oracle_find("ambient_only")->radiance(v, x, y, out);          \
+        if (x > 16 && x < 17 && y > 12 && y < 13)                                        \
+            out->y = value;                                                              \
+        return st;                                                                       \
+    }
+BROKEN(inf, INFINITY)
+BROKEN(nan, NAN)
+BROKEN(one, 1)
+BROKEN(big, 1e10)
+BROKEN(neg, -1e10)
+BROKEN(tiny_neg, -1e-300)
+BROKEN(zero, 0)
+BROKEN(half, 0.5)
+
+START_TEST(test_verify_never_passes_on_an_unusable_tolerance)
+{
+    double (*const bad[])(const oracle_view *, int) = {tolerance_inf, tolerance_nan, tolerance_neg,
+                                                       tolerance_tiny_neg};
+    oracle_family broken = *oracle_find("ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
+    oracle_view v = verify_view(s, NULL);
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        verify_exact e;
+        verify_result r;
+        memset(&r, 0, sizeof r);
+        broken.tolerance = bad[i];
+        ck_assert_int_eq(verify_exact_build(&broken, &v, &e), 0);
+        ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), STATUS_FAIL);
+        ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
+        ck_assert_msg(strncmp(r.reason, VERIFY_INEXACT, strlen(VERIFY_INEXACT)) == 0, "reason: %s", r.reason);
+        verify_exact_free(&e);
+    }
+    /* Any finite bound is one (1e10: a render of one light sample). */
+    double (*const good[])(const oracle_view *, int) = {tolerance_zero, tolerance_half, tolerance_one, tolerance_big};
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
+        ck_assert(verify_tolerance_usable(good[i](&v, 0)));
+    scene_free(s);
+}
+END_TEST
+
+START_TEST(test_verify_exact_refuses_a_negative_or_infinite_radiance)
+{
+    oracle_status (*const bad[])(const oracle_view *, double, double, rgb *) = {radiance_neg, radiance_tiny_neg,
+                                                                               radiance_inf, radiance_nan};
+    oracle_family broken = *oracle_find("ambient_only");
+    scene_model *s = load_scene(AMBIENT_BODY, "ambient_only");
+    oracle_view v = verify_view(s, NULL);
+    verify_exact e;
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        broken.radiance = bad[i];
+        ck_assert_int_eq(verify_exact_build(&broken, &v, &e), STATUS_FAIL);
+        ck_assert_ptr_null(e.image.rgb);
+    }
+    oracle_status (*const good[])(const oracle_view *, double, double, rgb *) = {radiance_zero, radiance_half,
+                                                                                radiance_one, radiance_big};
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+        broken.radiance = good[i];
+        ck_assert_int_eq(verify_exact_build(&broken, &v, &e), 0);
+        verify_exact_free(&e);
+    }
+    scene_free(s);
+    /* Through verify_scene: refused, with the reason, never passed.  The
+     * rectangle 1e-9 on a side (tests/attack9): its corner form subtracts
+     * solid angles of ~1 to get ~1e-18 and writes -3.2e3 .. 4.3e3. */
+    int status;
+    s = scene_file_load("tests/attack9/oracle_rect_small.scene", NULL, stderr, 0, &status);
+    ck_assert_ptr_nonnull(s);
+    verify_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = 24;
+    o.height = 18;
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "rect_small.scene", &o, &r), STATUS_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_REFUSED);
+    ck_assert_msg(strncmp(r.reason, VERIFY_INEXACT, strlen(VERIFY_INEXACT)) == 0, "reason: %s", r.reason);
     scene_free(s);
 }
 END_TEST
@@ -774,6 +867,8 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_scene_overrides);
     tcase_add_test(tc, test_verify_render_compare_detects_an_error);
     tcase_add_test(tc, test_verify_family_refused);
+    tcase_add_test(tc, test_verify_never_passes_on_an_unusable_tolerance);
+    tcase_add_test(tc, test_verify_exact_refuses_a_negative_or_infinite_radiance);
     tcase_add_test(tc, test_verify_family_unknown_and_missing);
     tcase_add_test(tc, test_verify_sweep_parse);
     tcase_add_test(tc, test_verify_sweep_run_deterministic);

@@ -127,9 +127,9 @@ static int exact_of(const oracle_args *a, const scene_model *s)
         return STATUS_DATA;
     }
     verify_exact e;
-    if (verify_exact_build(f, &v, &e) != STATUS_OK) {
-        cli_error("out of memory building the exact image");
-        return STATUS_NO_MEMORY;
+    if ((status = verify_exact_build(f, &v, &e)) != STATUS_OK) {
+        cli_error("%s: %s", a->input, verify_exact_error(status));
+        return status == STATUS_FAIL ? STATUS_DATA : status;  /* refused, like a family's refusal */
     }
     status = write_files(a, &e);
     verify_exact_free(&e);

@@ -27,6 +27,9 @@
  * quadrature applies when the contour's parts cancel). */
 #define AREA_REL_TOL 1e-13
 
+/* More than the series of area_disk_mean_far needs at q = 1/16 (17). */
+#define AREA_FAR_TERMS 40
+
 double area_phi(const area_kernel *k, double d)
 {
     double s = d + k->d0;
@@ -179,6 +182,66 @@ static double corner(double h, double a, double b)
 double area_rect_solid_angle(double h, double x0, double x1, double y0, double y1)
 {
     return corner(h, x1, y1) - corner(h, x0, y1) - corner(h, x1, y0) + corner(h, x0, y0);
+}
+
+/* The exterior series (spec/analytic.md, "A small disk"): with R the
+ * distance to the centre, x = h/R, q = (a/R)^2 and c_k = C(2k,k)/4^k,
+ *   Omega / (pi a^2) = (2/R^2) sum_{k>=1} (-1)^(k+1) c_k q^(k-1) P_{2k-1}(x).
+ * For q <= 1/16 the terms after the first add at most 0.45 of it (|P_n(x)|
+ * <= |x| n(n+1)/2 for odd n), so the sum keeps its digits at every x; the
+ * loop stops when the bound on what is left, c_k q^k k(2k+1) |x| / (1 - q),
+ * is below 2^-60 of the first term.  Legendre's recurrence is forward
+ * stable on [-1, 1]. */
+double area_disk_mean_far(double h, double r0, double a)
+{
+    double big = hypot(h, r0), x = h / big, ratio = a / big, q = ratio * ratio;
+    double p_prev = 1, p = x, c = 0.5, qk = 1, sum = 0, sign = 1;
+    int n = 1;
+    for (int k = 1; k <= AREA_FAR_TERMS; k++) {
+        sum += sign * c * qk * p;
+        c *= (2.0 * k + 1) / (2.0 * k + 2);
+        qk *= q;
+        if (c * qk * (k + 1) * (2.0 * k + 1) / (1 - q) <= 0x1p-60 * 0.5)
+            break;
+        for (int step = 0; step < 2; step++, n++) {
+            double next = ((2 * n + 1) * x * p - n * p_prev) / (n + 1);
+            p_prev = p;
+            p = next;
+        }
+        sign = -sign;
+    }
+    return 2 / big * (sum / big);
+}
+
+typedef struct far_ctx {
+    const area_kernel *k;
+    double c, a, s;   /* the centre's distance from the foot; radius; current s */
+} far_ctx;
+
+/* phi at the point a s (cos t, sin t) of the disk turned to centre (c, 0). */
+static double far_inner(void *ctx, double t)
+{
+    const far_ctx *f = ctx;
+    double x = f->c + f->a * f->s * cos(t), y = f->a * f->s * sin(t);
+    return area_phi(f->k, hypot(f->k->h, hypot(x, y)));
+}
+
+static double far_outer(void *ctx, double s)
+{
+    far_ctx *f = ctx;
+    quad_result res;
+    f->s = s;
+    return s * quad_interval(far_inner, f, 0, M_PI, 0, AREA_REL_TOL, &res);
+}
+
+/* In polar coordinates about the centre, rho = a s: the mean is
+ * (2/pi) int_0^1 s int_0^pi phi dt ds, a positive integrand smooth on the
+ * disk (d >= h > 0), a^2 never formed. */
+double area_disk_mean_far_quadrature(const area_kernel *k, double r0, double a)
+{
+    far_ctx f = {k, r0, a, 0};
+    quad_result res;
+    return 2 / M_PI * quad_interval(far_outer, &f, 0, 1, 0, AREA_REL_TOL, &res);
 }
 
 /* Paxton (1959): with R1, Rmax the nearest and farthest rim distances from

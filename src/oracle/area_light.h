@@ -68,6 +68,23 @@ double area_disk_on_axis(const area_kernel *k, double a);
  * integral of phi for inverse_square with d0 = 0. */
 double area_rect_solid_angle(double h, double x0, double x1, double y0, double y1);
 
+/* A disk is far when its radius is at most this part of the distance from
+ * the point to its centre: area_disk_mean_far's series then keeps its digits. */
+#define AREA_DISK_FAR 0.25
+
+/* The solid angle of a disk of radius a at distance h whose centre is r0 off
+ * the perpendicular, over the disk's area pi a^2 (the mean of h/d^3 over
+ * it), by its exterior series in Legendre polynomials, without the
+ * cancellation of Paxton's form (1e-16 / a^2 absolute); for a <=
+ * AREA_DISK_FAR hypot(h, r0). */
+double area_disk_mean_far(double h, double r0, double a);
+
+/* The mean of phi over a disk of radius a whose centre is r0 from the foot,
+ * for any falloff, by nested Gauss-Kronrod about the disk's centre: the
+ * contour form of area_disk cancels terms of the order of r0/a, so it is
+ * used for a <= AREA_DISK_FAR hypot(h, r0) in its place. */
+double area_disk_mean_far_quadrature(const area_kernel *k, double r0, double a);
+
 /* The solid angle of a disk of radius a at distance h whose centre is r0
  * off the perpendicular, in complete elliptic integrals (Paxton 1959). */
 double area_disk_solid_angle(double h, double r0, double a);

@@ -35,7 +35,16 @@ const oracle_family *oracle_find(const char *name)
     return NULL;
 }
 
-/* The mean of the k x k cell centres of pixel (i, j); 0 if any is ambiguous. */
+/* A radiance is finite with no negative channel: anything else is a
+ * formula that lost its accuracy (attack 9, finding 4: a disk of radius
+ * 1e-12 gave +-1e10), never an image to bet on. */
+static int admissible(rgb c)
+{
+    return vec_is_finite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0;
+}
+
+/* The mean of the k x k cell centres of pixel (i, j); 0 if any is
+ * ambiguous, -1 if any is not admissible. */
 static int exact_pixel(const oracle_family *f, const oracle_view *v, int i, int j, rgb *out)
 {
     rgb sum = vec_splat(0);
@@ -45,6 +54,8 @@ static int exact_pixel(const oracle_family *f, const oracle_view *v, int i, int 
             rgb c;
             if (f->radiance(v, i + (a + 0.5) / k, j + (b + 0.5) / k, &c) != ORACLE_EXACT)
                 return 0;
+            if (!admissible(c))
+                return -1;
             sum = vec_add(sum, c);
         }
     }
@@ -62,6 +73,10 @@ int oracle_image(const oracle_family *f, const oracle_view *v, img_buf *out, uns
         for (int i = 0; i < v->width; i++) {
             rgb c = vec_splat(0);
             int ok = exact_pixel(f, v, i, j, &c);
+            if (ok < 0) {
+                img_free(out);
+                return STATUS_FAIL;
+            }
             double *px = img_pixel(out, i, j);
             px[0] = ok ? c.x : 0;
             px[1] = ok ? c.y : 0;

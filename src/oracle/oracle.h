@@ -59,7 +59,9 @@ const oracle_family *oracle_find(const char *name);
  * The exact image of view v: each pixel the mean of the k x k sample
  * points.  excluded (width*height bytes, may be NULL) marks pixels with an
  * ambiguous sample point; *excluded_count counts them (their value in out
- * is 0).  Returns 0, or STATUS_NO_MEMORY when out of memory.
+ * is 0).  Returns 0, STATUS_NO_MEMORY when out of memory, or STATUS_FAIL
+ * when the family gave a point a non-finite or negative radiance (it cannot
+ * give this image; out is then empty).
  */
 int oracle_image(const oracle_family *f, const oracle_view *v, img_buf *out, unsigned char *excluded,
                  long *excluded_count);

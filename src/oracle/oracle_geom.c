@@ -7,6 +7,11 @@
  * is orthonormal, so the unit direction is that point over that length.
  * An orthographic camera moves the origin by (sx*width/2) right and
  * (sy*width/2 * H/W) up and keeps forward.
+ *
+ * up is any non-zero finite vector ([LANG-VALID-2]): 1e200 long, v.v is
+ * +Inf and v/sqrt(v.v) is 0 (attack 9, finding 5).  oracle_tame scales a
+ * vector by its largest component first; within 2^+-511 it returns v
+ * itself, so every frame the old unit could form keeps its bits.
  */
 #include <math.h>
 #include "oracle/oracle_geom.h"
@@ -15,8 +20,17 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+vec3 oracle_tame(vec3 v)
+{
+    double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    if (m >= 0x1p-511 && m < 0x1p511)
+        return v;
+    return vec_make(v.x / m, v.y / m, v.z / m);
+}
+
 static vec3 unit(vec3 v)
 {
+    v = oracle_tame(v);
     double len = sqrt(vec_dot(v, v));
     return vec_make(v.x / len, v.y / len, v.z / len);
 }
@@ -24,7 +38,8 @@ static vec3 unit(vec3 v)
 void oracle_camera_frame(const scene_camera *c, vec3 *forward, vec3 *right, vec3 *up)
 {
     *forward = unit(vec_sub(c->look_at, c->eye));
-    *up = unit(vec_sub(c->up, vec_scale(*forward, vec_dot(c->up, *forward))));
+    vec3 u = oracle_tame(c->up);
+    *up = unit(vec_sub(u, vec_scale(*forward, vec_dot(u, *forward))));
     *right = vec_cross(*forward, *up);
 }
 

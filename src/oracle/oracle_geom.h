@@ -13,6 +13,12 @@ typedef struct oracle_ray {
     vec3 dir;      /* unit */
 } oracle_ray;
 
+/* v itself when its largest component is within [2^-511, 2^511) (v.v
+ * neither overflows nor loses digits to underflow), else v over that
+ * component: the same direction, for a unit vector or a length formed
+ * without overflow.  v finite and non-zero. */
+vec3 oracle_tame(vec3 v);
+
 /* The camera's frame: forward from eye to look_at; up made perpendicular
  * to it by Gram-Schmidt; right = forward x up (right-handed). */
 void oracle_camera_frame(const scene_camera *c, vec3 *forward, vec3 *right, vec3 *up);

@@ -5,12 +5,18 @@
  */
 #include <math.h>
 #include "oracle/oracle_quadric.h"
+#include "oracle/oracle_geom.h"
 
 #define TWO_PI 6.283185307179586
 
 static double sq(double x) { return x * x; }
 
-static vec3 unit(vec3 v) { return vec_scale(v, 1 / sqrt(vec_dot(v, v))); }
+/* Scaled first (oracle_tame): a tiny shape's p - V squares to 0. */
+static vec3 unit(vec3 v)
+{
+    v = oracle_tame(v);
+    return vec_scale(v, 1 / sqrt(vec_dot(v, v)));
+}
 
 /* ---- frustum ------------------------------------------------------------ */
 
@@ -20,7 +26,7 @@ oracle_frustum oracle_frustum_of(const scene_prim *p)
     int cone = p->kind == PRIM_CONE;
     vec3 to = cone ? p->u.cone.to : p->u.cylinder.to;
     f.from = cone ? p->u.cone.from : p->u.cylinder.from;
-    f.len = sqrt(vec_dot(vec_sub(to, f.from), vec_sub(to, f.from)));
+    f.len = vec_length_fast(vec_sub(to, f.from));
     f.a = vec_scale(vec_sub(to, f.from), 1 / f.len);
     f.r0 = cone ? p->u.cone.radius[0] : p->u.cylinder.radius;
     f.r1 = cone ? p->u.cone.radius[1] : p->u.cylinder.radius;

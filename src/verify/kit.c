@@ -220,9 +220,9 @@ static int load_exact(const char *path, const kit_opts *o, scene_model **s, veri
         snprintf(why, why_size, "'%s' has no exact image: %s", path, reason);
         return STATUS_DATA;
     }
-    if (verify_exact_build(f, &v, e) != 0) {
-        snprintf(why, why_size, "out of memory building the exact image of '%s'", path);
-        return STATUS_NO_MEMORY;
+    if ((status = verify_exact_build(f, &v, e)) != 0) {
+        snprintf(why, why_size, "'%s': %s", path, verify_exact_error(status));
+        return status;
     }
     return 0;
 }
@@ -271,6 +271,13 @@ static int build_scene(const char *root, const char *path, const kit_opts *o, ma
     int status = load_exact(path, o, &s, &e, why, why_size);
     if (status == 0) {
         describe(s, &e, m);
+        if (!verify_tolerance_usable(m->relative)) {
+            snprintf(why, why_size, "'%s': %s (its error bound, relative, is %.3g)", path, VERIFY_INEXACT,
+                     m->relative);
+            verify_exact_free(&e);
+            scene_free(s);
+            return STATUS_FAIL;
+        }
         kit_job job = {m->name, s, &e, m};
         status = write_files(root, &job, why, why_size);
         verify_exact_free(&e);

@@ -85,12 +85,25 @@ int verify_exact_build(const oracle_family *f, const oracle_view *v, verify_exac
     e->view = *v;
     e->excluded = calloc((size_t)v->width * (size_t)v->height, 1);
     double start = render_clock();
-    if (!e->excluded || oracle_image(f, v, &e->image, e->excluded, &e->excluded_count) != 0) {
+    int status = e->excluded ? oracle_image(f, v, &e->image, e->excluded, &e->excluded_count) : STATUS_NO_MEMORY;
+    if (status != STATUS_OK) {
         verify_exact_free(e);
-        return STATUS_NO_MEMORY;
+        return status;
     }
     e->seconds = render_clock() - start;
     return STATUS_OK;
+}
+
+const char *verify_exact_error(int status)
+{
+    return status == STATUS_OK   ? NULL
+           : status == STATUS_FAIL ? VERIFY_INEXACT " (a point's exact value came out negative or not finite)"
+                                   : "out of memory building the exact image";
+}
+
+int verify_tolerance_usable(double tolerance)
+{
+    return isfinite(tolerance) && tolerance >= 0;
 }
 
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason)
@@ -178,6 +191,13 @@ int verify_render_compare(const scene_model *s, const verify_opts *o, const veri
     }
     r->rays = rays_of(&st.trace);
     r->tolerance = e->family->tolerance(&e->view, ro.light_samples);
+    if (!verify_tolerance_usable(r->tolerance)) {
+        img_free(&img);
+        char why[sizeof r->reason];
+        snprintf(why, sizeof why, "%s (its error bound, relative, is %.3g)", VERIFY_INEXACT, r->tolerance);
+        verify_result_error(r, r->scene, STATUS_FAIL, why);
+        return r->status;
+    }
     metrics_compare(&img, &e->image, e->excluded, r->tolerance, &r->metrics);
     img_free(&img);
     judge(r);
@@ -216,8 +236,9 @@ int verify_scene(const scene_model *s, const char *path, const verify_opts *o, v
         return r->status;
     verify_exact e;
     oracle_view v = verify_view(s, o);
-    if (verify_exact_build(f, &v, &e) != STATUS_OK) {
-        verify_result_error(r, path, STATUS_NO_MEMORY, "out of memory building the exact image");
+    int status = verify_exact_build(f, &v, &e);
+    if (status != STATUS_OK) {
+        verify_result_error(r, path, status, verify_exact_error(status));
         return r->status;
     }
     verify_render_compare(s, o, &e, r);
@@ -310,9 +331,10 @@ int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *
             have_exact = 0;
         }
         oracle_view v = verify_view(s, &so);
-        if (!have_exact && verify_exact_build(f, &v, &e) != STATUS_OK) {
-            verify_result_error(&steps[i], path, STATUS_NO_MEMORY, "out of memory building the exact image");
-            return STATUS_NO_MEMORY;
+        int status = have_exact ? STATUS_OK : verify_exact_build(f, &v, &e);
+        if (status != STATUS_OK) {
+            verify_result_error(&steps[i], path, status, verify_exact_error(status));
+            return status_worse(worst, status);
         }
         have_exact = 1;
         worst = status_worse(worst, verify_render_compare(s, &so, &e, &steps[i]));

@@ -84,11 +84,25 @@ oracle_view verify_view(const scene_model *s, const verify_opts *o);
  * reason in why and *status STATUS_DATA (no `oracle` statement) or STATUS_FAIL (no family of
  * that name, or the family refused the scene: its own reason).
  */
+/* The reason every tool gives for a scene whose exact image the oracle
+ * cannot vouch for (spec/verify.md, "Refusals"). */
+#define VERIFY_INEXACT "the oracle cannot give this scene's image to the stated accuracy"
+
+/* The message for verify_exact_build's status (0: none). */
+const char *verify_exact_error(int status);
+
+/* 1 when a relative tolerance is a bound at all: finite and not negative.
+ * (A bound above 1 is honest for a render of few light samples: verify
+ * --sweep samples=1 asks for it.) */
+int verify_tolerance_usable(double tolerance);
+
 const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
                                    size_t why_size);
 
-/* Builds (and times) the exact image of f for v into e.  Returns 0 or STATUS_NO_MEMORY
- * (out of memory; e is then empty).  Free e with verify_exact_free. */
+/* Builds (and times) the exact image of f for v into e.  Returns 0,
+ * STATUS_NO_MEMORY (out of memory) or STATUS_FAIL (the family gave a point
+ * a non-finite or negative radiance: VERIFY_INEXACT); e is then empty.
+ * Free e with verify_exact_free. */
 int verify_exact_build(const oracle_family *f, const oracle_view *v, verify_exact *e);
 void verify_exact_free(verify_exact *e);
 
