@@ -381,18 +381,18 @@ static int visit_item(const bvh *b, const walk *w, int i)
     return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
 }
 
-/* Depth-first over every node the ray meets, the first child first.  Both
- * children of an inner node are tested together (adjacent in memory, so
- * their loads overlap) and only those met are entered; the stack holds at
- * most one pending sibling per level. */
-static int traverse_all(const bvh *b, const walk *w)
+/* Depth-first over every node below `node` (itself included) the ray
+ * meets, the first child first.  Both children of an inner node are tested
+ * together (adjacent in memory, so their loads overlap) and only those met
+ * are entered; the stack holds at most one pending sibling per level. */
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, int node)
 {
-    int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
+    int stack[BVH_MAX_DEPTH], sp = 0;
     real tmin = w->r->tmin, tmax = w->r->tmax, enter;
-    slab_ray s = slab_make(w->r);
+    slab_ray s = *sr;
     if (w->stats)
         w->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], &s, tmin, tmax, &enter) && !b->exhaustive)
+    if (!node_hit(&b->nodes[node], &s, tmin, tmax, &enter) && !b->exhaustive)
         return 0;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
@@ -441,14 +441,25 @@ static int visit_unbounded(const walk *w, bvh_ref ref)
     return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
 }
 
-static int walk_all(const bvh *b, const walk *w)
+static int walk_unbounded(const bvh *b, const walk *w)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
         int stop = visit_unbounded(w, b->unbounded[i]);
         if (stop)
             return stop;
     }
-    return b->node_count > 0 ? traverse_all(b, w) : 0;
+    return 0;
+}
+
+static int walk_all(const bvh *b, const walk *w)
+{
+    int stop = walk_unbounded(b, w);
+    if (stop)
+        return stop;
+    if (b->node_count == 0)
+        return 0;
+    slab_ray s = slab_make(w->r);
+    return traverse_from(b, w, &s, 0);
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
@@ -471,4 +482,31 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
     isect_shear sh;
     walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
     return walk_all(b, &w);
+}
+
+/*
+ * [SHADE-SHORTCUT-BUNDLE-1] The walk of bvh_visit_counts over the kept
+ * nodes alone.  A box that holds another gets through the slab test
+ * whenever the inner one does (each slab bound is a rounded product of a
+ * rounded difference, monotone in the plane's coordinate; a NaN bound
+ * narrows nothing), and a child's box lies inside its parent's (both are
+ * min and max of the parts' boxes), so the whole walk reaches a node
+ * exactly when the node's own box passes.  The nodes left out are ones no
+ * ray of the bundle passes, and the kept ones come in depth-first order:
+ * the same parts are tested in the same order.
+ */
+int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
+                            int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
+{
+    if (!bundle || bundle->count < 0)
+        return bvh_visit_counts(b, prims, r, fn, ctx, stats);
+    isect_shear sh;
+    walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
+    int stop = walk_unbounded(b, &w);
+    if (stop || bundle->count == 0)
+        return stop;
+    slab_ray s = slab_make(r);
+    for (int k = 0; k < bundle->count && !stop; k++)
+        stop = traverse_from(b, &w, &s, bundle->node[k]);
+    return stop;
 }
