@@ -385,21 +385,20 @@ static int visit_item(const bvh *b, const walk *w, int i)
  * meets, the first child first.  Both children of an inner node are tested
  * together (adjacent in memory, so their loads overlap) and only those met
  * are entered; the stack holds at most one pending sibling per level. */
-static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, int node)
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *s, int node)
 {
     int stack[BVH_MAX_DEPTH], sp = 0;
     real tmin = w->r->tmin, tmax = w->r->tmax, enter;
-    slab_ray s = *sr;
     if (w->stats)
         w->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[node], &s, tmin, tmax, &enter) && !b->exhaustive)
+    if (!node_hit(&b->nodes[node], s, tmin, tmax, &enter) && !b->exhaustive)
         return 0;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
         if (nd->count == 0) {
             int a = nd->first;
-            int ha = node_hit(&b->nodes[a], &s, tmin, tmax, &enter) || b->exhaustive;
-            int hc = node_hit(&b->nodes[a + 1], &s, tmin, tmax, &enter) || b->exhaustive;
+            int ha = node_hit(&b->nodes[a], s, tmin, tmax, &enter) || b->exhaustive;
+            int hc = node_hit(&b->nodes[a + 1], s, tmin, tmax, &enter) || b->exhaustive;
             if (w->stats)
                 w->stats->nodes_visited += 2;
             if (ha) {

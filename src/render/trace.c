@@ -181,7 +181,10 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, const 
         if (isect_part_crossings(&t->scene->prims[hint], slot->part, r) > 0)
             return 0;
     }
-    bvh_visit_counts_bundle(&t->accel, t->scene->prims, r, bundle, shadow_crossing, &w, &st->bvh);
+    if (bundle && bundle->count >= 0)
+        bvh_visit_counts_bundle(&t->accel, t->scene->prims, r, bundle, shadow_crossing, &w, &st->bvh);
+    else
+        bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
     if (w.carried == 0 && w.opaque.prim >= 0) {
         slot->prim = w.opaque.prim + 1;
         slot->part = w.opaque.part;
