@@ -104,7 +104,7 @@ START_TEST(test_bundle_keeps_a_box_the_slab_test_lets_through)
 }
 END_TEST
 
-/* A random point of the ball (centre c, reach R), on its rim often. */
+/* The random numbers of the bundles below: splitmix64. */
 typedef struct rng {
     uint64_t state;
 } rng;
@@ -119,14 +119,11 @@ static double uniform(rng *g)
 
 static double range(rng *g, double lo, double hi) { return lo + (hi - lo) * uniform(g); }
 
+/* Uniform on the sphere (Archimedes: z uniform, the angle around z too). */
 static vec3 unit(rng *g)
 {
-    for (;;) {
-        vec3 v = vec_make(range(g, -1, 1), range(g, -1, 1), range(g, -1, 1));
-        double l2 = vec_length2(v);
-        if (l2 > 0.01 && l2 <= 1)
-            return vec_normalize(v);
-    }
+    double z = range(g, -1, 1), a = range(g, 0, 6.283185307179586), r = sqrt(1 - z * z);
+    return vec_make(r * cos(a), r * sin(a), z);
 }
 
 /*
