@@ -385,10 +385,13 @@ static int visit_item(const bvh *b, const walk *w, int i)
  * meets, the first child first.  Both children of an inner node are tested
  * together (adjacent in memory, so their loads overlap) and only those met
  * are entered; the stack holds at most one pending sibling per level. */
-static int traverse_from(const bvh *b, const walk *w, const slab_ray *s, int node)
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, int node)
 {
     int stack[BVH_MAX_DEPTH], sp = 0;
     real tmin = w->r->tmin, tmax = w->r->tmax, enter;
+    /* A copy: through the pointer each test would load it again, the
+     * callback being opaque to the compiler. */
+    const slab_ray copy = *sr, *s = &copy;
     if (w->stats)
         w->stats->nodes_visited++;
     if (!node_hit(&b->nodes[node], s, tmin, tmax, &enter) && !b->exhaustive)
@@ -440,25 +443,24 @@ static int visit_unbounded(const walk *w, bvh_ref ref)
     return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
 }
 
-static int walk_unbounded(const bvh *b, const walk *w)
+/* The unbounded parts, then the tree: from its root, or (bundle) from the
+ * nodes a bundle kept, in their order. */
+static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
         int stop = visit_unbounded(w, b->unbounded[i]);
         if (stop)
             return stop;
     }
-    return 0;
-}
-
-static int walk_all(const bvh *b, const walk *w)
-{
-    int stop = walk_unbounded(b, w);
-    if (stop)
-        return stop;
-    if (b->node_count == 0)
+    if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
     slab_ray s = slab_make(w->r);
-    return traverse_from(b, w, &s, 0);
+    if (!bundle)
+        return traverse_from(b, w, &s, 0);
+    int stop = 0;
+    for (int k = 0; k < bundle->count && !stop; k++)
+        stop = traverse_from(b, w, &s, bundle->node[k]);
+    return stop;
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
@@ -466,7 +468,7 @@ int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
 {
     isect_shear sh;
     walk w = {prims, r, fn, NULL, ctx, stats, shear_of(b, r, &sh)};
-    return walk_all(b, &w);
+    return walk_all(b, &w, NULL);
 }
 
 int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
@@ -480,7 +482,7 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
 {
     isect_shear sh;
     walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
-    return walk_all(b, &w);
+    return walk_all(b, &w, NULL);
 }
 
 /*
@@ -501,11 +503,5 @@ int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r,
         return bvh_visit_counts(b, prims, r, fn, ctx, stats);
     isect_shear sh;
     walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
-    int stop = walk_unbounded(b, &w);
-    if (stop || bundle->count == 0)
-        return stop;
-    slab_ray s = slab_make(r);
-    for (int k = 0; k < bundle->count && !stop; k++)
-        stop = traverse_from(b, &w, &s, bundle->node[k]);
-    return stop;
+    return walk_all(b, &w, bundle);
 }
