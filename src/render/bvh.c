@@ -377,25 +377,27 @@ static int visit_item(const bvh *b, const walk *w, int i)
     return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
 }
 
-/* Depth-first over every node the ray meets, the first child first.  Both
- * children of an inner node are tested together (adjacent in memory, so
- * their loads overlap) and only those met are entered; the stack holds at
- * most one pending sibling per level. */
-static int traverse_all(const bvh *b, const walk *w)
+/* Depth-first over every node below `node` (itself included) the ray
+ * meets, the first child first.  Both children of an inner node are tested
+ * together (adjacent in memory, so their loads overlap) and only those met
+ * are entered; the stack holds at most one pending sibling per level. */
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, int node)
 {
-    int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
+    int stack[BVH_MAX_DEPTH], sp = 0;
     real tmin = w->r->tmin, tmax = w->r->tmax, enter;
-    slab_ray s = slab_make(w->r);
+    /* A copy: through the pointer each test would load it again, the
+     * callback being opaque to the compiler. */
+    const slab_ray copy = *sr, *s = &copy;
     if (w->stats)
         w->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], &s, tmin, tmax, &enter) && !b->exhaustive)
+    if (!node_hit(&b->nodes[node], s, tmin, tmax, &enter) && !b->exhaustive)
         return 0;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
         if (nd->count == 0) {
             int a = nd->first;
-            int ha = node_hit(&b->nodes[a], &s, tmin, tmax, &enter) || b->exhaustive;
-            int hc = node_hit(&b->nodes[a + 1], &s, tmin, tmax, &enter) || b->exhaustive;
+            int ha = node_hit(&b->nodes[a], s, tmin, tmax, &enter) || b->exhaustive;
+            int hc = node_hit(&b->nodes[a + 1], s, tmin, tmax, &enter) || b->exhaustive;
             if (w->stats)
                 w->stats->nodes_visited += 2;
             if (ha) {
@@ -437,14 +439,24 @@ static int visit_unbounded(const walk *w, bvh_ref ref)
     return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
 }
 
-static int walk_all(const bvh *b, const walk *w)
+/* The unbounded parts, then the tree: from its root, or (bundle) from the
+ * nodes a bundle kept, in their order. */
+static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
 {
     for (int i = 0; i < b->unbounded_count; i++) {
         int stop = visit_unbounded(w, b->unbounded[i]);
         if (stop)
             return stop;
     }
-    return b->node_count > 0 ? traverse_all(b, w) : 0;
+    if (b->node_count == 0 || (bundle && bundle->count == 0))
+        return 0;
+    slab_ray s = slab_make(w->r);
+    if (!bundle)
+        return traverse_from(b, w, &s, 0);
+    int stop = 0;
+    for (int k = 0; k < bundle->count && !stop; k++)
+        stop = traverse_from(b, w, &s, bundle->node[k]);
+    return stop;
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
@@ -452,7 +464,7 @@ int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
 {
     isect_shear sh;
     walk w = {prims, r, fn, NULL, ctx, stats, shear_of(b, r, &sh)};
-    return walk_all(b, &w);
+    return walk_all(b, &w, NULL);
 }
 
 int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
@@ -466,5 +478,26 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
 {
     isect_shear sh;
     walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
-    return walk_all(b, &w);
+    return walk_all(b, &w, NULL);
+}
+
+/*
+ * [SHADE-SHORTCUT-BUNDLE-1] The walk of bvh_visit_counts over the kept
+ * nodes alone.  A box that holds another gets through the slab test
+ * whenever the inner one does (each slab bound is a rounded product of a
+ * rounded difference, monotone in the plane's coordinate; a NaN bound
+ * narrows nothing), and a child's box lies inside its parent's (both are
+ * min and max of the parts' boxes), so the whole walk reaches a node
+ * exactly when the node's own box passes.  The nodes left out are ones no
+ * ray of the bundle passes, and the kept ones come in depth-first order:
+ * the same parts are tested in the same order.
+ */
+int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
+                            int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
+{
+    if (!bundle || bundle->count < 0)
+        return bvh_visit_counts(b, prims, r, fn, ctx, stats);
+    isect_shear sh;
+    walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
+    return walk_all(b, &w, bundle);
 }

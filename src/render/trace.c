@@ -72,6 +72,7 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
     t->reflection = s->features.reflection && t->max_depth > 1;
     t->refraction = s->features.refraction && t->max_depth > 1;
     t->terminator_offset = 1;
+    t->bundles = 1;
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
@@ -95,6 +96,7 @@ void tracer_no_shortcuts(tracer *t)
     t->no_shortcuts = 1;
     t->shadows = t->specular = t->reflection = t->refraction = 1;
     t->accel.exhaustive = 1;
+    t->bundles = 0;
     if (t->scene->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
         memset(&none, 0, sizeof none);
@@ -177,7 +179,8 @@ static int shadow_crossing(void *ctx, bvh_ref ref, int crossings)
  * carry 0 whatever else it met, so 0 is the answer without the walk.  Off
  * in the shortcuts-off mode.
  */
-static real shadow_transmission(const tracer *t, const ray *r, int light, trace_stats *st)
+static real shadow_transmission(const tracer *t, const ray *r, int light, const bvh_bundle *bundle,
+                                trace_stats *st)
 {
     shadow_walk w = {t->scene, 1.0, t->no_shortcuts, {-1, 0}};
     bvh_ref *slot = &st->blocker[light % TRACE_BLOCKERS];
@@ -189,7 +192,10 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, trace_
         if (isect_part_crossings(&t->scene->prims[hint], slot->part, r) > 0)
             return 0;
     }
-    bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+    if (bundle && bundle->count >= 0)
+        bvh_visit_counts_bundle(&t->accel, t->scene->prims, r, bundle, shadow_crossing, &w, &st->bvh);
+    else
+        bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
     if (w.carried == 0 && w.opaque.prim >= 0) {
         slot->prim = w.opaque.prim + 1;
         slot->part = w.opaque.part;
@@ -204,9 +210,30 @@ typedef struct direct_sum {
     rgb highlight;
 } direct_sum;
 
-/* One point source at pos (distant: at infinity along -direction). */
+/*
+ * [SHADE-SHORTCUT-BUNDLE-1] The nodes of the tree the shadow rays from this
+ * point toward a distributed light may reach, made at its first shadow ray
+ * (bvh_bundle_make): each ray starts at one of the two origins spawn_origin
+ * makes, within offset * max |n_a| <= offset (|n_x| + |n_y| + |n_z|) of
+ * the point, and is aimed at a sample inside the light's ball
+ * ([SHADE-SHORTCUT-DARK-1]).
+ */
+static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const scene_light *light,
+                                      bvh_bundle *bundle, trace_stats *st)
+{
+    if (bundle && bundle->count == BVH_BUNDLE_UNMADE) {
+        const light_setup *setup = &t->lights[light - t->scene->lights];
+        vec3 n = s->from.normal;
+        bvh_bundle_make(&t->accel, s->from.point, s->from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)),
+                        setup->centre, setup->reach, bundle, &st->bvh);
+    }
+    return bundle;
+}
+
+/* One point source at pos (distant: at infinity along -direction); bundle:
+ * the distributed light's (NULL for the others). */
 static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
-                       direct_sum *sum, trace_stats *st)
+                       bvh_bundle *bundle, direct_sum *sum, trace_stats *st)
 {
     vec3 l;
     real d = HUGE_VAL;
@@ -243,7 +270,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     real through = 1;
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
-        through = shadow_transmission(t, &r, (int)(light - t->scene->lights), st);
+        through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -383,8 +410,10 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
         cancel_steps(st->cancel, setup->samples);
         return;
     }
+    bvh_bundle bundle;
+    bundle.count = t->bundles ? BVH_BUNDLE_UNMADE : -1;
     for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
-        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, sum, st);
+        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, &bundle, sum, st);
 }
 
 static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
@@ -393,7 +422,7 @@ static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, 
     for (int i = 0; i < t->scene->light_count; i++) {
         const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
-            add_source(t, s, light, light->position, light->power, &sum, st);
+            add_source(t, s, light, light->position, light->power, NULL, &sum, st);
         else
             add_distributed(t, s, i, key, &sum, st);
     }

@@ -91,6 +91,10 @@ typedef struct tracer {
                                  default; 0 only to measure the seed's way
                                  (spec/shading.md [SHADE-TERMINATOR-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
+    int bundles;              /* shadow rays toward a distributed light walk
+                                 only the nodes their bundle may reach
+                                 ([SHADE-SHORTCUT-BUNDLE-1]): 1 by default,
+                                 0 with the shortcuts off or to compare */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
     long eye_overflow;        /* eye_media lost solids (each camera ray counts them) */
 } tracer;

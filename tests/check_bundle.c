@@ -1,0 +1,253 @@
+/*
+ * [SHADE-SHORTCUT-BUNDLE-1] Bundles of shadow rays (spec/shading.md): the
+ * shadow rays from one point toward a distributed light walk only the BVH
+ * nodes their hull may reach (bvh_bundle_make, bvh_visit_counts_bundle).
+ * The reference is the whole walk, bvh_visit_counts: the same parts must
+ * be tested (the count of primitive tests) and reported in the same order,
+ * and a render the same bits with the bundles on and off.
+ */
+#include <stdio.h>
+#include <string.h>
+#include "testlib.h"
+#include "difftest/gen.h"
+#include "io/scene_file.h"
+#include "render/bvh.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+static scene_model *load(const char *text, size_t len)
+{
+    int status;
+    scene_model *s = scene_file_load_text("test.scene", text, len, NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "scene did not load (status %d):\n%s", status, text);
+    return s;
+}
+
+/* The crossings a walk reported, in order. */
+enum { EVENTS_MAX = 512 };
+typedef struct events {
+    int count;
+    int prim[EVENTS_MAX], part[EVENTS_MAX], n[EVENTS_MAX];
+} events;
+
+static int record(void *ctx, bvh_ref ref, int crossings)
+{
+    events *e = ctx;
+    ck_assert_int_lt(e->count, EVENTS_MAX);
+    e->prim[e->count] = ref.prim;
+    e->part[e->count] = ref.part;
+    e->n[e->count++] = crossings;
+    return 0;
+}
+
+/* r walked whole and through the bundle: the same crossings in the same
+ * order and the same primitive tests.  Returns the primitive tests. */
+static long same_walks(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle)
+{
+    events whole, part;
+    bvh_stats sw = {0, 0}, sp = {0, 0};
+    whole.count = part.count = 0;
+    bvh_visit_counts(b, prims, r, record, &whole, &sw);
+    bvh_visit_counts_bundle(b, prims, r, bundle, record, &part, &sp);
+    ck_assert_msg(sw.prims_tested == sp.prims_tested, "%ld primitive tests by the whole walk, %ld by the bundle's",
+                  sw.prims_tested, sp.prims_tested);
+    ck_assert_int_eq(whole.count, part.count);
+    for (int i = 0; i < whole.count; i++)
+        ck_assert(whole.prim[i] == part.prim[i] && whole.part[i] == part.part[i] && whole.n[i] == part.n[i]);
+    return sw.prims_tested;
+}
+
+/*
+ * Near the margin.  A ray from the origin passes k ulps left of the top
+ * left corner (lo.x, hi.y) of a sphere's leaf box: at height hi.y it is at
+ * x = lo.x - k ulps, below that further left, above it over the box, so it
+ * misses the box, but the slab test's enlarged exit (4 eps of the exit's
+ * t) lets the box through for small k, and the sphere is tested.  The
+ * bundle of that one ray (apex the origin, a ball of reach 0 at its
+ * target) must keep the leaf.  With the hull test's margin shrunk to 0 the
+ * cone of cubes is that segment alone, which misses the box, and this
+ * test fails (spec/performance.md, ninth round).
+ */
+START_TEST(test_bundle_keeps_a_box_the_slab_test_lets_through)
+{
+    const char *text = "image { width 1 height 1 }\n"
+                       "camera { eye [0, 0, 10] look_at [0, 0, 0] }\n"
+                       "sphere { center [3, 3, 0] radius 1 material { Kd 0.5 } }\n";
+    scene_model *s = load(text, strlen(text));
+    bvh b;
+    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    ck_assert_int_eq(b.node_count, 1);
+    vec3 lo = b.nodes[0].lo, hi = b.nodes[0].hi;
+    shadow_start from = {vec_make(0, 0, 0), vec_make(0, 0, 1), 1e-300};
+    int grazed = 0;
+    double x = lo.x;
+    for (int k = 1; k <= 64; k++) {
+        x = nextafter(x, -INFINITY);
+        vec3 q = vec_make(2 * x, 2 * hi.y, 0);
+        ray r = ray_shadow_to(&from, q);
+        events e = {0};
+        bvh_stats st = {0, 0};
+        bvh_visit_counts(&b, s->prims, &r, record, &e, &st);
+        if (st.prims_tested == 0)
+            continue;
+        ck_assert_int_eq(e.count, 0);   /* the sphere itself is missed */
+        grazed++;
+        bvh_bundle bundle;
+        bvh_bundle_make(&b, from.point, from.offset, q, 0, &bundle, NULL);
+        ck_assert_int_eq(bundle.count, 1);
+        ck_assert_int_eq(same_walks(&b, s->prims, &r, &bundle), 1);
+    }
+    /* The slab test lets the box through for a ray that misses it. */
+    ck_assert_int_gt(grazed, 0);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
+/* The random numbers of the bundles below: splitmix64. */
+typedef struct rng {
+    uint64_t state;
+} rng;
+
+static double uniform(rng *g)
+{
+    uint64_t z = (g->state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
+}
+
+static double range(rng *g, double lo, double hi) { return lo + (hi - lo) * uniform(g); }
+
+/* Uniform on the sphere (Archimedes: z uniform, the angle around z too). */
+static vec3 unit(rng *g)
+{
+    double z = range(g, -1, 1), a = range(g, 0, 6.283185307179586), r = sqrt(1 - z * z);
+    return vec_make(r * cos(a), r * sin(a), z);
+}
+
+/*
+ * Random bundles over 60 spheres and 20 boxes in a cube of side 20 (and
+ * the same scaled by 1e-6 and moved to 1e7): apex anywhere, balls of
+ * reach 0 to 5, targets inside the ball and near its rim (0.999999 of
+ * the reach), origins spawned by ray_shadow_to: every ray's whole walk and
+ * bundle walk agree, and the bundles leave nodes out.
+ */
+START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
+{
+    static char text[16384];
+    rng g = {(uint64_t)_i + 1};
+    double scale = _i % 2 ? 1e-6 : 1, off = _i % 2 ? 1e7 : 0;
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    for (int i = 0; i < 60; i++)
+        len += snprintf(text + len, sizeof text - (size_t)len,
+                        "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0.5 t %.3g } }\n",
+                        off + scale * range(&g, -10, 10), off + scale * range(&g, -10, 10),
+                        off + scale * range(&g, -10, 10), scale * range(&g, 0.1, 1.5), range(&g, 0, 1));
+    for (int i = 0; i < 20; i++) {
+        double x = range(&g, -10, 10), y = range(&g, -10, 10), z = range(&g, -10, 10);
+        len += snprintf(text + len, sizeof text - (size_t)len,
+                        "box { from [%.17g, %.17g, %.17g] to [%.17g, %.17g, %.17g] material { Kd 0.5 t 0.5 } }\n",
+                        off + scale * x, off + scale * y, off + scale * z, off + scale * (x + range(&g, 0.1, 3)),
+                        off + scale * (y + range(&g, 0.1, 3)), off + scale * (z + range(&g, 0.1, 3)));
+    }
+    ck_assert_int_lt(len, (int)sizeof text);
+    scene_model *s = load(text, (size_t)len);
+    bvh b;
+    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    long kept = 0, all = 0;
+    for (int bundle_i = 0; bundle_i < 200; bundle_i++) {
+        vec3 apex = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
+        vec3 centre = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
+        double reach = scale * (bundle_i % 5 == 0 ? 0 : range(&g, 0, 5));
+        shadow_start from = {apex, unit(&g), 0x1p-42 * (off + 12 * scale) + 1e-300};
+        vec3 n = from.normal;
+        bvh_bundle bundle;
+        bvh_bundle_make(&b, apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach, &bundle, NULL);
+        ck_assert_int_ge(bundle.count, 0);
+        kept += bundle.count;
+        all++;
+        for (int j = 0; j < 40; j++) {
+            double f = j % 2 ? 0.999999 : range(&g, 0, 1);
+            vec3 q = vec_add(centre, vec_scale(unit(&g), f * reach));
+            ray r = ray_shadow_to(&from, q);
+            same_walks(&b, s->prims, &r, &bundle);
+        }
+    }
+    ck_assert_msg(kept < all * b.leaf_count, "%ld nodes kept for %ld bundles of %d leaves", kept, all, b.leaf_count);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
+/* Renders s with the bundles on or off; returns the status. */
+static int render_bundles(const scene_model *s, int bundles, double *pixels, int size, render_stats *stats)
+{
+    renderer r;
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = o.height = size;
+    ck_assert_int_eq(renderer_init(&r, s, &o), STATUS_OK);
+    r.tracer.bundles = bundles;
+    render_target all = {0, 0, size, size, NULL, pixels, 3 * (size_t)size};
+    int status = renderer_region(&r, &all);
+    *stats = r.stats;
+    renderer_free(&r);
+    return status;
+}
+
+/* g rendered at size x size with the bundles on and off: the same status
+ * and bits, the same shadow rays and primitive tests.  Returns 1 when the
+ * bundles changed the node visits (they were made). */
+static long same_renders(const dtgen_scene *g, const char *kind, int index, int size)
+{
+    static double on[3 * 32 * 32], off[3 * 32 * 32];
+    scene_model *s = load(g->text, g->len);
+    render_stats st_on, st_off;
+    ck_assert_int_le(size, 32);
+    memset(on, 0, sizeof on);
+    memset(off, 0, sizeof off);
+    int a = render_bundles(s, 1, on, size, &st_on), b = render_bundles(s, 0, off, size, &st_off);
+    ck_assert_msg(a == b, "%s scene %d: status %d with the bundles, %d without", kind, index, a, b);
+    ck_assert_msg(memcmp(on, off, sizeof on) == 0, "%s scene %d: the images differ:\n%s", kind, index, g->text);
+    ck_assert_msg(st_on.trace.shadow_rays == st_off.trace.shadow_rays &&
+                      st_on.trace.bvh.prims_tested == st_off.trace.bvh.prims_tested,
+                  "%s scene %d: %ld and %ld primitive tests:\n%s", kind, index, st_on.trace.bvh.prims_tested,
+                  st_off.trace.bvh.prims_tested, g->text);
+    scene_free(s);
+    return st_off.trace.bvh.nodes_visited != st_on.trace.bvh.nodes_visited;
+}
+
+/* Random scenes of the generator (every primitive, light and material), as
+ * made and moved far, tiny and huge as in check_shortcuts.c: the same bits,
+ * shadow rays and primitive tests with the bundles on and off, and the
+ * bundles were made in some of them. */
+START_TEST(test_bundle_random_scenes_bit_identical)
+{
+    static dtgen_scene g;
+    static const double scales[4] = {1, 1e-6, 1e-6, 1e6}, offsets[4][3] = {
+        {1e7, -3e6, 7e6}, {-6e6, 1e7, 2e6}, {0, 0, 0}, {3e7, 0, -1e7}};
+    int used = 0;
+    for (int k = 0; k < 25; k++) {
+        int index = 5000 + _i * 25 + k;
+        if (_i < 4)
+            dtgen_make(&g, (uint64_t)index, DTGEN_ANY, "tests/obj");
+        else
+            dtgen_make_placed(&g, (uint64_t)index, DTGEN_ANY, "tests/obj", scales[_i % 4], offsets[_i % 4]);
+        used += same_renders(&g, _i < 4 ? "generated" : "placed", index, 24);
+    }
+    ck_assert_int_gt(used, 0);
+}
+END_TEST
+
+Suite *suite_bundle(void)
+{
+    Suite *s = suite_create("bundle");
+    TCase *tc = tcase_create("bundle");
+    tcase_set_timeout(tc, 20);
+    tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
+    tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_loop_test(tc, test_bundle_random_scenes_bit_identical, 0, 8);
+    suite_add_tcase(s, tc);
+    return s;
+}
