@@ -416,7 +416,10 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
         add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, &bundle, sum, st);
 }
 
-static direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
+/* Out of line ([REL-STACK-1]): the light loop's bundle (its node list) and
+ * samples are done with before the mirrored and transmitted rays recurse,
+ * so they stay off the recursion's frame. */
+static TRACE_OUTLINE direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
 {
     direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
     for (int i = 0; i < t->scene->light_count; i++) {
