@@ -41,6 +41,19 @@ int main(void)
         before += block[k] != -7;
     printf("status %d (RF_OK is %d); floats changed before the buffer: %d (pixels[-1] = %g)\n", (int)st, (int)RF_OK,
            before, pixels[-1]);
+    double *dblock = malloc(64 * sizeof *dblock);
+    if (!dblock)
+        return 2;
+    for (int k = 0; k < 64; k++)
+        dblock[k] = -7;
+    rf_status dst = rf_render_region_double(r, 0, 0, 4, 2, dblock + 16, SIZE_MAX / 2);
+    int dbefore = 0;
+    for (int k = 0; k < 16; k++)
+        dbefore += dblock[k] != -7;
+    printf("double: status %d; doubles changed before the buffer: %d\n", (int)dst, dbefore);
+    free(dblock);
+    before += dbefore;
+    st = st == RF_OK ? st : dst;
     free(block);
     rf_renderer_free(r);
     rf_scene_free(s);
