@@ -6,10 +6,11 @@
 # tolerance >= 1 cannot tell any image from black), not "pass".
 # Run from the repository root after nice make -j2 build/refray:
 #   sh tests/attack10/conform_black.sh    # prints the verdict; exit 1 when black passes
+#   SCENE=tests/attack10/disk_occluded_64.scene sh tests/attack10/conform_black.sh
 set -u
 B=${B:-build/refray}
 K=$(mktemp -d)/kit
-"$B" kit -q -o "$K" tests/attack10/disk_light_1sample.scene || exit 2
+"$B" kit -q -o "$K" "${SCENE:-tests/attack10/disk_light_1sample.scene}" || exit 2
 "$B" conform --kit "$K" --format pfm \
     --cmd '{ printf "PF\n%s %s\n-1\n" {width} {height}; head -c $(expr {width} \* {height} \* 12) /dev/zero; } > {out}'
 rc=$?
