@@ -50,23 +50,15 @@ int main(void)
 {
     rf_render_options o;
     const int ints[] = {-1, INT_MIN, 1001, INT_MAX};
-    for (int k = 0; k < 4; k++) {
+    static const char *const names[] = {"max_depth", "width", "samples", "light_samples"};
+    for (int k = 0; k < 16; k++) {
         char what[64];
+        int v = ints[k % 4];
         rf_render_options_init(&o);
-        o.max_depth = ints[k];
-        snprintf(what, sizeof what, "max_depth %d", ints[k]);
-        opts_case(what, o);
-        rf_render_options_init(&o);
-        o.width = ints[k];
-        snprintf(what, sizeof what, "width %d", ints[k]);
-        opts_case(what, o);
-        rf_render_options_init(&o);
-        o.samples = ints[k] > 0 ? 2 : ints[k]; /* over the limit: api_samples.c */
-        snprintf(what, sizeof what, "samples %d", ints[k]);
-        opts_case(what, o);
-        rf_render_options_init(&o);
-        o.light_samples = ints[k];
-        snprintf(what, sizeof what, "light_samples %d", ints[k]);
+        int *field[] = {&o.max_depth, &o.width, &o.samples, &o.light_samples};
+        /* samples over the limit hang: api_samples.c shows them accepted */
+        *field[k / 4] = k / 4 == 2 && v > 0 ? 2 : v;
+        snprintf(what, sizeof what, "%s %d", names[k / 4], v);
         opts_case(what, o);
     }
     rf_render_options_init(&o);
