@@ -998,89 +998,9 @@ int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h)
     return nearest(isect_torus_hits(center, axis, major, minor, r, h, 1), r, h);
 }
 
-/* The box of the two end disks of a cylinder or cone, radii r0 and r1. */
-static void ends_bounds(vec3 from, vec3 to, real r0, real r1, vec3 *lo, vec3 *hi)
-{
-    vec3 a = vec_normalize(vec_sub(to, from)), e0, e1;
-    isect_disk_extent(a, r0, &e0);
-    isect_disk_extent(a, r1, &e1);
-    *lo = vec_min(vec_sub(from, e0), vec_sub(to, e1));
-    *hi = vec_max(vec_add(from, e0), vec_add(to, e1));
-}
-
-/* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
- * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
-static int local_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
-{
-    vec3 c, e;
-    switch (p->kind) {
-    case PRIM_SPHERE:
-        c = p->u.sphere.center;
-        e = vec_splat(p->u.sphere.radius);
-        break;
-    case PRIM_DISK: {
-        vec3 n = vec_normalize(p->u.disk.normal);
-        real rad = p->u.disk.radius;
-        c = p->u.disk.center;
-        e = vec_make(rad * sqrt(fmax(0.0, 1.0 - n.x * n.x)), rad * sqrt(fmax(0.0, 1.0 - n.y * n.y)),
-                     rad * sqrt(fmax(0.0, 1.0 - n.z * n.z)));
-        break;
-    }
-    case PRIM_TRIANGLE:
-        *lo = vec_min(p->u.triangle.p[0], vec_min(p->u.triangle.p[1], p->u.triangle.p[2]));
-        *hi = vec_max(p->u.triangle.p[0], vec_max(p->u.triangle.p[1], p->u.triangle.p[2]));
-        return 1;
-    case PRIM_BOX:
-        *lo = p->u.box.lo;
-        *hi = p->u.box.hi;
-        return 1;
-    case PRIM_CYLINDER:
-        ends_bounds(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius, lo, hi);
-        return 1;
-    case PRIM_CONE:
-        ends_bounds(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], lo, hi);
-        return 1;
-    case PRIM_TORUS:
-        c = p->u.torus.center;
-        isect_torus_extent(p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &e);
-        break;
-    case PRIM_MESH:
-        *lo = vec_splat(INFINITY);
-        *hi = vec_splat(-INFINITY);
-        for (int i = 0; i < p->u.mesh.position_count; i++) {
-            *lo = vec_min(*lo, p->u.mesh.positions[i]);
-            *hi = vec_max(*hi, p->u.mesh.positions[i]);
-        }
-        return p->u.mesh.position_count > 0;
-    default:
-        return 0;
-    }
-    *lo = vec_sub(c, e);
-    *hi = vec_add(c, e);
-    return 1;
-}
-
 int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
-    vec3 l, h;
-    if (!local_bounds(p, &l, &h))
-        return 0;
-    if (p->frame) {
-        vec3 wl = vec_splat(INFINITY), wh = vec_splat(-INFINITY);
-        for (int i = 0; i < 8; i++) {
-            vec3 corner = vec_make(i & 1 ? h.x : l.x, i & 2 ? h.y : l.y, i & 4 ? h.z : l.z);
-            vec3 w = xform_point(&p->frame->to_world, corner);
-            wl = vec_min(wl, w);
-            wh = vec_max(wh, w);
-        }
-        l = wl;
-        h = wh;
-    }
-    if (!vec_is_finite(l) || !vec_is_finite(h))
-        return 0;
-    *lo = l;
-    *hi = h;
-    return 1;
+    return scene_prim_world_box(p, lo, hi);
 }
 
 int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)

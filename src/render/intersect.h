@@ -86,8 +86,8 @@ int isect_prim(const scene_prim *p, ray *r, hit *h);
  * out[i].prim is -1. */
 int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
-/* World-space axis-aligned bounds of a bounded primitive (a transformed one:
- * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
+/* World-space axis-aligned bounds of a bounded primitive: scene_prim_world_box
+ * (a transformed one: its local box's 8 corners mapped).  Returns 0 for a plane, or when the
  * bounds are not finite (such a primitive must be tested unconditionally). */
 int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi);
 

@@ -391,6 +391,15 @@ int scene_prim_contains(const scene_prim *p, vec3 point);
  * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
 
+/* The box around p in its own frame (before the frame it keeps, if any):
+ * 1 with its corners in *lo and *hi, or 0 for the unbounded plane and an
+ * empty mesh.  In prim_box.c. */
+int scene_prim_local_box(const scene_prim *p, vec3 *lo, vec3 *hi);
+/* The box around p in the world: its local box, through the frame p keeps
+ * (the min and max of the eight corners' images), if any.  0 when it has
+ * none or a corner is not finite.  In prim_box.c. */
+int scene_prim_world_box(const scene_prim *p, vec3 *lo, vec3 *hi);
+
 /* [LANG-EXTENT-1] Whether an orthographic camera's view on an image of
  * width x height pixels leaves the scene's extent: the corners eye +-
  * right w/2 +- true_up (w/2) (height/width), where the camera's rays start,
