@@ -11,6 +11,7 @@
 #include "render/intersect.h"
 #include "render/intersect_shapes.h"
 #include "render/isect_common.h"
+#include "render/slab.h"
 #include "base/xform.h"
 
 /* Inlines every call a function makes, recursively, where the body is
@@ -735,7 +736,14 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     if (!p->frame)
         return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
-    local.origin = xform_point(&p->frame->to_local, r->origin);
+    vec3 lo, hi;
+    if (isect_part_padded_bounds(p, 0, &lo, &hi)) {
+        slab_ray s = slab_make(r);
+        slab_box(lo, hi, &s, &local.tmin, &local.tmax);
+        if (!(local.tmin < local.tmax))
+            return 0;
+    }
+    local.origin = scene_frame_local(p->frame, r->origin);
     local.dir = xform_vector(&p->frame->to_local, r->dir);
     int n = local_hits(p, &local, NULL, out, max, bare);
     for (int i = 0; i < n && !bare; i++) {
@@ -1012,6 +1020,26 @@ int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
     *lo = vec_min(v[0], vec_min(v[1], v[2]));
     *hi = vec_max(v[0], vec_max(v[1], v[2]));
     return vec_is_finite(*lo) && vec_is_finite(*hi);
+}
+
+/* Primitive boxes are widened by this fraction of their coordinates' size,
+ * so a hit computed a few ulps outside its true box is still inside. */
+#define BOUNDS_PAD 0x1p-40
+
+static real bounds_pad(real lo, real hi)
+{
+    return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
+}
+
+int isect_part_padded_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
+{
+    vec3 l, h;
+    if (!isect_part_bounds(p, part, &l, &h))
+        return 0;
+    vec3 e = vec_make(bounds_pad(l.x, h.x), bounds_pad(l.y, h.y), bounds_pad(l.z, h.z));
+    *lo = vec_sub(l, e);
+    *hi = vec_add(h, e);
+    return vec_is_finite(vec_scale(vec_add(*lo, *hi), 0.5));
 }
 
 /* fmax(a, b) for magnitudes, a comparison instead of a library call per
@@ -1363,7 +1391,7 @@ static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
     vec3 margin = vec_splat(0.0);
     for (int k = 0; k < 3; k++)
         margin = vec_with(margin, k, offset * vec_length(vec_make(m[k][0], m[k][1], m[k][2])));
-    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, xform_point(&p->frame->to_local, origin), margin);
+    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, scene_frame_local(p->frame, origin), margin);
     return xform_point(&p->frame->to_world, local);
 }
 

@@ -105,6 +105,13 @@ int isect_part_count(const scene_prim *p);
 int isect_part(const scene_prim *p, int part, ray *r, hit *h);
 int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
+/* The box the BVH holds the part in: its bounds widened on each axis by
+ * 2^-40 of the larger of their magnitude and their width, so a hit
+ * computed a few ulps outside the true box is still inside.  0 when they,
+ * or the box's centre (which the build bins), are not finite: the part is
+ * then tested on every ray.  A kept-frame hit outside this box is no hit
+ * ([NUM-FRAME-1]). */
+int isect_part_padded_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
 real isect_part_magnitude(const scene_prim *p, int part);
 /* How many crossings isect_part_all reports, found by the same arithmetic
  * without their points and normals (a shadow ray needs only the count). */

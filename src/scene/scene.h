@@ -386,6 +386,15 @@ int scene_prim_is_solid(const scene_prim *p);
  * keeps one); 0 for anything that is not a solid on its own. */
 int scene_prim_contains(const scene_prim *p, vec3 point);
 
+/* A world point in f's frame, as L^-1 (point - T) (L, T: to_world's linear
+ * part and translation).  to_local's L^-1 point + (-L^-1 T) adds terms of
+ * the size of T that cancel, so a shape far from the origin and smaller
+ * than an ulp of T got a point that had lost every digit of where it is
+ * from the shape (tests/attack9b, finding 1); point - T is exact near T
+ * (Sterbenz) and rounds relative to its own size elsewhere ([NUM-FRAME-1],
+ * spec/numerics.md).  In scene.c. */
+vec3 scene_frame_local(const scene_frame *f, vec3 point);
+
 /* Whether p can shadow itself where N.L > 0: all but the flat ones (plane,
  * disk, triangle), whose shadow rays never meet them again.  A torus or an
  * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
