@@ -736,16 +736,18 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     if (!p->frame)
         return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
+    local.origin = scene_frame_local(p->frame, r->origin);
+    local.dir = xform_vector(&p->frame->to_local, r->dir);
+    int n = local_hits(p, &local, NULL, out, max, bare);
     vec3 lo, hi;
-    if (isect_part_padded_bounds(p, 0, &lo, &hi)) {
+    if (n > 0 && isect_part_padded_bounds(p, 0, &lo, &hi)) {
         slab_ray s = slab_make(r);
         slab_box(lo, hi, &s, &local.tmin, &local.tmax);
         if (!(local.tmin < local.tmax))
             return 0;
+        if (out[0].t <= local.tmin || out[n - 1].t >= local.tmax)
+            n = local_hits(p, &local, NULL, out, max, bare);
     }
-    local.origin = scene_frame_local(p->frame, r->origin);
-    local.dir = xform_vector(&p->frame->to_local, r->dir);
-    int n = local_hits(p, &local, NULL, out, max, bare);
     for (int i = 0; i < n && !bare; i++) {
         out[i].point = xform_point(&p->frame->to_world, out[i].point);
         out[i].normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].normal));
