@@ -728,6 +728,14 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * come back through to_world and normals through the inverse transpose.
  * entering is kept from the local frame: d . n has the same sign in both,
  * since (L^-1 d) . n_local = d . (L^-T n_local).
+ *
+ * [NUM-FRAME-1] The origin goes in as L^-1 (o - T) (scene_frame_local).
+ * It still rounds to ulps of |o - T|, so a shape far smaller than that
+ * distance can be hit by a local ray whose world ray misses its box: a hit
+ * counts only within the world ray's stretch in the padded box the BVH
+ * holds the part in, found by the BVH's own slab test, so the BVH never
+ * culls a hit the exhaustive walk keeps.  The box is made only once there
+ * is a hit; a hit outside it runs the test again on that stretch.
  */
 static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
 {
