@@ -88,10 +88,10 @@ static int box_out(vec3 lo, vec3 hi, extent_fault *f)
  * scale can make a shape of local size 2^499 wider than 2^1000 in the world,
  * where its hit tests' roots pass CROSSING_MAX and are dropped (a closed
  * cone then let light through its wall: tests/attack8, finding 5).  The
- * world box (the box of the images of the local box's eight corners,
+ * world box (the box around the images of the local box's eight corners,
  * scene_prim_world_box, the one the BVH bounds the shape by) holds the
- * shape, so that box within the extent keeps the shape within it.  A
- * corner that is not finite went past every bound on the way. */
+ * shape, so that box within the extent keeps the shape within it.  A box
+ * that is not finite went past every bound on the way. */
 static int world_box_out(const scene_prim *p, extent_fault *f)
 {
     vec3 lo, hi;

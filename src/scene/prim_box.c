@@ -1,7 +1,7 @@
 /*
- * prim_box.c - the box around a primitive in its own frame: the one the
- * extent check maps into the world ([LANG-EXTENT-1], check_extent.c) and
- * the one the render layer's bounds start from (isect_prim_bounds), so the
+ * prim_box.c - the box around a primitive, in its own frame and in the
+ * world: the one the extent check bounds ([LANG-EXTENT-1], check_extent.c)
+ * and the one the BVH holds the primitive in (isect_prim_bounds), so the
  * shape validation bounds is the shape the BVH boxes.
  */
 #include "scene/scene.h"

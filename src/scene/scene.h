@@ -405,8 +405,8 @@ int scene_prim_self_shadows(const scene_prim *p);
  * empty mesh.  In prim_box.c. */
 int scene_prim_local_box(const scene_prim *p, vec3 *lo, vec3 *hi);
 /* The box around p in the world: its local box, through the frame p keeps
- * (the min and max of the eight corners' images), if any.  0 when it has
- * none or a corner is not finite.  In prim_box.c. */
+ * if any (the box around the images of its eight corners, up to a few ulps
+ * of rounding).  0 when it has none or it is not finite.  In prim_box.c. */
 int scene_prim_world_box(const scene_prim *p, vec3 *lo, vec3 *hi);
 
 /* [LANG-EXTENT-1] Whether an orthographic camera's view on an image of
