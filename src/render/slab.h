@@ -32,9 +32,11 @@ static inline slab_ray slab_make(const ray *r)
     slab_ray s;
     s.o = r->origin;
     s.inv = vec_make(slab_inverse(r->dir.x), slab_inverse(r->dir.y), slab_inverse(r->dir.z));
-    s.neg[0] = signbit(s.inv.x) != 0;
-    s.neg[1] = signbit(s.inv.y) != 0;
-    s.neg[2] = signbit(s.inv.z) != 0;
+    /* inv is never 0 or NaN (d is finite), so < 0 is its sign bit; and
+     * Frama-C, which parses this through intersect.c, has no signbit. */
+    s.neg[0] = s.inv.x < 0;
+    s.neg[1] = s.inv.y < 0;
+    s.neg[2] = s.inv.z < 0;
     return s;
 }
 
