@@ -444,18 +444,28 @@ END_TEST
  * [SHADE-SHORTCUT-GATE-1] [SHADE-SHORTCUT-STOP-1] [SHADE-SHORTCUT-BVH-1] [SHADE-SHORTCUT-LOBE-1]
  * [SHADE-SHORTCUT-BLOCKER-1] Random scenes: identical bits with the shortcuts on and off. */
 /* Loads text and renders it with the shortcuts on and off: both render
- * (render() asserts it), to the same bits; the stats of each go back. */
-static void same_both_ways(const char *text, render_stats *st_on, render_stats *st_off)
+ * (render() asserts it), to the same bits; the stats of each go back, and
+ * the image in *keep unless keep is NULL. */
+static void image_both_ways(const char *text, render_stats *st_on, render_stats *st_off, img_buf *keep)
 {
     scene_model *s = load(text);
     img_buf on, off;
     render(s, 0, &on, st_on);
     render(s, 1, &off, st_off);
     ck_assert_int_eq(on.width * on.height, off.width * off.height);
-    ck_assert_int_eq(memcmp(on.rgb, off.rgb, 3 * (size_t)(on.width * on.height) * sizeof on.rgb[0]), 0);
-    img_free(&on);
+    ck_assert_msg(memcmp(on.rgb, off.rgb, 3 * (size_t)(on.width * on.height) * sizeof on.rgb[0]) == 0,
+                  "the shortcuts change the image of\n%s", text);
+    if (keep)
+        *keep = on;
+    else
+        img_free(&on);
     img_free(&off);
     scene_free(s);
+}
+
+static void same_both_ways(const char *text, render_stats *st_on, render_stats *st_off)
+{
+    image_both_ways(text, st_on, st_off, NULL);
 }
 
 /*
@@ -622,6 +632,84 @@ START_TEST(test_shortcuts_full_stack_weightless_crossing_not_refused)
 }
 END_TEST
 
+/* A kept-frame shape (scaled unevenly, turned) 2e-6 across, its centre at
+ * (x, 1.75e-6, 1e-6) and the camera 7.2e-6 from it at the same x:
+ * "%s" is the shape, "%.17g" x twice. */
+static const char far_tiny_frame[] =
+    "image { width 20 height 15 samples 1 max_depth 1 background 0.1 }\n"
+    "camera { perspective eye [%.17g, 3.977874551863094e-06, -5.80152477284702e-06] "
+    "look_at [%.17g, 5e-07, 0.0] up [0, 1, 0] fov 60 }\n"
+    "ambient { color 0.05 }\n"
+    "%s scale [1, 0.5, 1] rotate [80, 62, 0] translate [%.17g, 1.75e-06, 1e-06] material { Kd 0.77 } }\n";
+
+/* [NUM-FRAME-1] [SHADE-SHORTCUT-BVH-1] tests/attack9b, finding 1: the
+ * scene above at x = -1e13 (an ulp there is 2^-9, a thousand times the
+ * shape) against the same at x = 0.  The eye's and the shape's x are the
+ * same double, so o - T, and from it the local ray, is the same in both,
+ * and the images must be the same to the bit; the ellipsoid, at most 2e-6
+ * across seen from 7.2e-6 with fov 60 (8.3e-6 over 15 rows, 0.55e-6 a
+ * pixel), covers between 1 and 36 (6 x 6) pixels.  Before, the local origin
+ * L^-1 o + (-L^-1 T) rounded to the sphere's centre: every ray hit it
+ * without the shortcuts (300 pixels), 140 with them. */
+START_TEST(test_shortcuts_far_tiny_frame)
+{
+    static const char *const shapes[] = {
+        "sphere { center [0, 0, 0] radius 1e-6",
+        "box { from [-1e-6, -1e-6, -1e-6] to [1e-6, 1e-6, 1e-6]",
+        "cylinder { from [0, -1e-6, 0] to [0, 1e-6, 0] radius 1e-6",
+        "cone { from [0, -1e-6, 0] to [0, 1e-6, 0] radii 1e-6 5e-7",
+        "torus { major 1e-6 minor 3e-7",
+    };
+    const double far[] = {-1e13, -3e12, 1e15};
+    char text[1024];
+    render_stats st_on, st_off;
+    for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
+        img_buf at0;
+        snprintf(text, sizeof text, far_tiny_frame, 0.0, 0.0, shapes[k], 0.0);
+        image_both_ways(text, &st_on, &st_off, &at0);
+        int shown = 0;
+        for (int i = 0; i < 300; i++)
+            shown += at0.rgb[3 * i] != 0.1;
+        ck_assert_msg(shown >= 1 && shown <= 36, "%s: %d pixels", shapes[k], shown);
+        for (size_t j = 0; j < sizeof far / sizeof far[0]; j++) {
+            img_buf img;
+            snprintf(text, sizeof text, far_tiny_frame, far[j], far[j], shapes[k], far[j]);
+            image_both_ways(text, &st_on, &st_off, &img);
+            ck_assert_msg(memcmp(img.rgb, at0.rgb, sizeof(double) * 3 * 300) == 0, "%s at x = %g", shapes[k],
+                          far[j]);
+            img_free(&img);
+        }
+        img_free(&at0);
+    }
+}
+END_TEST
+
+/* [NUM-FRAME-1] A kept-frame sphere 2e-6 across at the origin seen by an
+ * orthographic camera 1e8 .. 1e11 away: o - T rounds at an ulp of the
+ * distance (2^-20 .. 2^-16 there, up to 8 times the shape), so the local ray
+ * passes the ellipsoid up to that far from where the world ray does.  The
+ * image is then not the shape's, but the hit is held to the shape's padded
+ * world box by the BVH's own slab test, so the walk with culling and the
+ * exhaustive one agree.  Before, 6 (at 1e10) and 72 (1e11) pixels differed. */
+START_TEST(test_shortcuts_far_camera_frame)
+{
+    const double far[] = {1e8, 1e9, 1e10, 1e11, 3e11};
+    char text[1024];
+    render_stats st_on, st_off;
+    for (size_t j = 0; j < sizeof far / sizeof far[0]; j++) {
+        img_buf img;
+        snprintf(text, sizeof text,
+                 "image { width 20 height 15 samples 1 max_depth 1 background 0.1 }\n"
+                 "camera { orthographic eye [%.17g, 1e-7, 2e-7] look_at [0, 1e-7, 2e-7] up [0, 1, 0] width 6e-6 }\n"
+                 "ambient { color 0.05 }\n"
+                 "sphere { radius 1e-6 scale [1, 0.5, 1] rotate [80, 62, 0] material { Kd 0.77 } }\n",
+                 -far[j]);
+        image_both_ways(text, &st_on, &st_off, &img);
+        img_free(&img);
+    }
+}
+END_TEST
+
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
     for (int k = 0; k < RANDOM_BATCH; k++)
@@ -658,6 +746,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_dark_light_subnormal_distance);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
+    tcase_add_test(tc, test_shortcuts_far_tiny_frame);
+    tcase_add_test(tc, test_shortcuts_far_camera_frame);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);

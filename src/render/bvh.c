@@ -4,19 +4,14 @@
  *
  * Traversal: an explicit stack of BVH_MAX_DEPTH entries, nearest child
  * first, culling by the shrinking tmax (not when b->exhaustive: then every
- * node is entered, so every primitive is tested in the same order).  The slab test is the robust one of
- * Ize ("Robust BVH Ray Traversal", JCGT 2(2), 2013): the exit distance is
- * enlarged by 1 + 4 eps (> 1 + 2 gamma_3) so rounding never culls a box the
- * ray touches, and a NaN from 0 * inf (origin on a slab plane, direction
- * parallel to it) never narrows the interval because the comparisons that
- * update it are false for NaN.
+ * node is entered, so every primitive is tested in the same order).  The
+ * slab test is the robust one of Ize (slab.h).
  */
 #include <float.h>
 #include <string.h>
 #include <assert.h>
 #include "render/bvh.h"
-
-#define EXIT_PAD (4.0 * DBL_EPSILON)
+#include "render/slab.h"
 
 void bvh_free(bvh *b)
 {
@@ -30,47 +25,12 @@ void bvh_free(bvh *b)
     b->mem = m;
 }
 
-/* A ray prepared for slab tests: 1/d with signed infinities for d = +-0. */
-typedef struct slab_ray {
-    vec3 o, inv;
-    int neg[3];
-} slab_ray;
-
-static real inverse(real d) { return d != 0.0 ? 1.0 / d : copysign(INFINITY, d); }
-
-static slab_ray slab_make(const ray *r)
-{
-    slab_ray s;
-    s.o = r->origin;
-    s.inv = vec_make(inverse(r->dir.x), inverse(r->dir.y), inverse(r->dir.z));
-    s.neg[0] = signbit(s.inv.x) != 0;
-    s.neg[1] = signbit(s.inv.y) != 0;
-    s.neg[2] = signbit(s.inv.z) != 0;
-    return s;
-}
-
-/* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
-static inline void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
-{
-    real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
-    /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
-     * (a box wholly to one side of a parallel ray) that would be NaN and
-     * the box would never be culled. */
-    t1 *= 1.0 + copysign(EXIT_PAD, t1);   /* 1 + pad for t1 >= 0, 1 - pad below: no branch */
-    if (t0 > *tn)
-        *tn = t0;
-    if (t1 < *tf)
-        *tf = t1;
-}
-
 /* Whether the ray meets the node's box within [tmin, tmax]; *enter is the
  * entry distance. */
 static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
 {
     real tn = tmin, tf = tmax;
-    slab(nd->lo.x, nd->hi.x, s->o.x, s->inv.x, s->neg[0], &tn, &tf);
-    slab(nd->lo.y, nd->hi.y, s->o.y, s->inv.y, s->neg[1], &tn, &tf);
-    slab(nd->lo.z, nd->hi.z, s->o.z, s->inv.z, s->neg[2], &tn, &tf);
+    slab_box(nd->lo, nd->hi, s, &tn, &tf);
     *enter = tn;
     return tn <= tf;
 }

@@ -34,9 +34,6 @@
  * transformed shape, the cost scale here: leaves of three or four
  * triangles, about half a node per triangle in a large mesh. */
 #define TRIANGLE_COST 0.5
-/* Primitive boxes are widened by this fraction of their coordinates' size,
- * so a hit computed a few ulps outside its true box is still inside. */
-#define BOUNDS_PAD 0x1p-40
 /* The hot records' alignment: a sphere's 4 reals in one cache line. */
 #define HOT_ALIGN 32
 
@@ -139,26 +136,18 @@ static real half_area(vec3 lo, vec3 hi)
     return e.x * e.y + e.y * e.z + e.z * e.x;
 }
 
-static real pad(real lo, real hi)
-{
-    return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
-}
-
 /* The padded box of part `part` of primitive prims[index]; 0 when it has
- * no finite bounds. */
+ * no finite bounds (isect_part_padded_bounds: the box a kept-frame hit is
+ * held to). */
 static int item_of(const scene_prim *p, int index, int part, build_item *out)
 {
-    vec3 lo, hi;
-    if (!isect_part_bounds(p, part, &lo, &hi))
+    if (!isect_part_padded_bounds(p, part, &out->lo, &out->hi))
         return 0;
-    vec3 e = vec_make(pad(lo.x, hi.x), pad(lo.y, hi.y), pad(lo.z, hi.z));
-    out->lo = vec_sub(lo, e);
-    out->hi = vec_add(hi, e);
     out->ref.prim = index;
     out->ref.part = part;
     out->cost = p->kind == PRIM_MESH ? (float)TRIANGLE_COST : 1.0f;
     out->hot = -1;
-    return vec_is_finite(centroid(out));
+    return 1;
 }
 
 /* The binning of a node: per axis, bin = floor((c - lo) * scale), clamped

@@ -11,6 +11,7 @@
 #include "render/intersect.h"
 #include "render/intersect_shapes.h"
 #include "render/isect_common.h"
+#include "render/slab.h"
 #include "base/xform.h"
 
 /* Inlines every call a function makes, recursively, where the body is
@@ -727,6 +728,14 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * come back through to_world and normals through the inverse transpose.
  * entering is kept from the local frame: d . n has the same sign in both,
  * since (L^-1 d) . n_local = d . (L^-T n_local).
+ *
+ * [NUM-FRAME-1] The origin goes in as L^-1 (o - T) (scene_frame_local).
+ * It still rounds to ulps of |o - T|, so a shape far smaller than that
+ * distance can be hit by a local ray whose world ray misses its box: a hit
+ * counts only within the world ray's stretch in the padded box the BVH
+ * holds the part in, found by the BVH's own slab test, so the BVH never
+ * culls a hit the exhaustive walk keeps.  The box is made only once there
+ * is a hit; a hit outside it runs the test again on that stretch.
  */
 static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
 {
@@ -735,9 +744,18 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     if (!p->frame)
         return local_hits(p, r, NULL, out, max, bare);
     ray local = *r;
-    local.origin = xform_point(&p->frame->to_local, r->origin);
+    local.origin = scene_frame_local(p->frame, r->origin);
     local.dir = xform_vector(&p->frame->to_local, r->dir);
     int n = local_hits(p, &local, NULL, out, max, bare);
+    vec3 lo, hi;
+    if (n > 0 && isect_part_padded_bounds(p, 0, &lo, &hi)) {
+        slab_ray s = slab_make(r);
+        slab_box(lo, hi, &s, &local.tmin, &local.tmax);
+        if (!(local.tmin < local.tmax))
+            return 0;
+        if (out[0].t <= local.tmin || out[n - 1].t >= local.tmax)
+            n = local_hits(p, &local, NULL, out, max, bare);
+    }
     for (int i = 0; i < n && !bare; i++) {
         out[i].point = xform_point(&p->frame->to_world, out[i].point);
         out[i].normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].normal));
@@ -998,89 +1016,9 @@ int isect_torus(vec3 center, vec3 axis, real major, real minor, ray *r, hit *h)
     return nearest(isect_torus_hits(center, axis, major, minor, r, h, 1), r, h);
 }
 
-/* The box of the two end disks of a cylinder or cone, radii r0 and r1. */
-static void ends_bounds(vec3 from, vec3 to, real r0, real r1, vec3 *lo, vec3 *hi)
-{
-    vec3 a = vec_normalize(vec_sub(to, from)), e0, e1;
-    isect_disk_extent(a, r0, &e0);
-    isect_disk_extent(a, r1, &e1);
-    *lo = vec_min(vec_sub(from, e0), vec_sub(to, e1));
-    *hi = vec_max(vec_add(from, e0), vec_add(to, e1));
-}
-
-/* Local-frame bounds of a primitive; 0 for the unbounded plane.  A disk of
- * unit normal n spans R sqrt(1 - n_k^2) about its centre along axis k. */
-static int local_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
-{
-    vec3 c, e;
-    switch (p->kind) {
-    case PRIM_SPHERE:
-        c = p->u.sphere.center;
-        e = vec_splat(p->u.sphere.radius);
-        break;
-    case PRIM_DISK: {
-        vec3 n = vec_normalize(p->u.disk.normal);
-        real rad = p->u.disk.radius;
-        c = p->u.disk.center;
-        e = vec_make(rad * sqrt(fmax(0.0, 1.0 - n.x * n.x)), rad * sqrt(fmax(0.0, 1.0 - n.y * n.y)),
-                     rad * sqrt(fmax(0.0, 1.0 - n.z * n.z)));
-        break;
-    }
-    case PRIM_TRIANGLE:
-        *lo = vec_min(p->u.triangle.p[0], vec_min(p->u.triangle.p[1], p->u.triangle.p[2]));
-        *hi = vec_max(p->u.triangle.p[0], vec_max(p->u.triangle.p[1], p->u.triangle.p[2]));
-        return 1;
-    case PRIM_BOX:
-        *lo = p->u.box.lo;
-        *hi = p->u.box.hi;
-        return 1;
-    case PRIM_CYLINDER:
-        ends_bounds(p->u.cylinder.from, p->u.cylinder.to, p->u.cylinder.radius, p->u.cylinder.radius, lo, hi);
-        return 1;
-    case PRIM_CONE:
-        ends_bounds(p->u.cone.from, p->u.cone.to, p->u.cone.radius[0], p->u.cone.radius[1], lo, hi);
-        return 1;
-    case PRIM_TORUS:
-        c = p->u.torus.center;
-        isect_torus_extent(p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &e);
-        break;
-    case PRIM_MESH:
-        *lo = vec_splat(INFINITY);
-        *hi = vec_splat(-INFINITY);
-        for (int i = 0; i < p->u.mesh.position_count; i++) {
-            *lo = vec_min(*lo, p->u.mesh.positions[i]);
-            *hi = vec_max(*hi, p->u.mesh.positions[i]);
-        }
-        return p->u.mesh.position_count > 0;
-    default:
-        return 0;
-    }
-    *lo = vec_sub(c, e);
-    *hi = vec_add(c, e);
-    return 1;
-}
-
 int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi)
 {
-    vec3 l, h;
-    if (!local_bounds(p, &l, &h))
-        return 0;
-    if (p->frame) {
-        vec3 wl = vec_splat(INFINITY), wh = vec_splat(-INFINITY);
-        for (int i = 0; i < 8; i++) {
-            vec3 corner = vec_make(i & 1 ? h.x : l.x, i & 2 ? h.y : l.y, i & 4 ? h.z : l.z);
-            vec3 w = xform_point(&p->frame->to_world, corner);
-            wl = vec_min(wl, w);
-            wh = vec_max(wh, w);
-        }
-        l = wl;
-        h = wh;
-    }
-    if (!vec_is_finite(l) || !vec_is_finite(h))
-        return 0;
-    *lo = l;
-    *hi = h;
-    return 1;
+    return scene_prim_world_box(p, lo, hi);
 }
 
 int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
@@ -1092,6 +1030,26 @@ int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
     *lo = vec_min(v[0], vec_min(v[1], v[2]));
     *hi = vec_max(v[0], vec_max(v[1], v[2]));
     return vec_is_finite(*lo) && vec_is_finite(*hi);
+}
+
+/* Primitive boxes are widened by this fraction of their coordinates' size,
+ * so a hit computed a few ulps outside its true box is still inside. */
+#define BOUNDS_PAD 0x1p-40
+
+static real bounds_pad(real lo, real hi)
+{
+    return BOUNDS_PAD * fmax(fmax(fabs(lo), fabs(hi)), hi - lo);
+}
+
+int isect_part_padded_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi)
+{
+    vec3 l, h;
+    if (!isect_part_bounds(p, part, &l, &h))
+        return 0;
+    vec3 e = vec_make(bounds_pad(l.x, h.x), bounds_pad(l.y, h.y), bounds_pad(l.z, h.z));
+    *lo = vec_sub(l, e);
+    *hi = vec_add(h, e);
+    return vec_is_finite(vec_scale(vec_add(*lo, *hi), 0.5));
 }
 
 /* fmax(a, b) for magnitudes, a comparison instead of a library call per
@@ -1443,7 +1401,7 @@ static vec3 keep_inside(const scene_prim *p, vec3 origin, real offset)
     vec3 margin = vec_splat(0.0);
     for (int k = 0; k < 3; k++)
         margin = vec_with(margin, k, offset * vec_length(vec_make(m[k][0], m[k][1], m[k][2])));
-    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, xform_point(&p->frame->to_local, origin), margin);
+    vec3 local = clamp_inside(p->u.box.lo, p->u.box.hi, scene_frame_local(p->frame, origin), margin);
     return xform_point(&p->frame->to_world, local);
 }
 

@@ -86,8 +86,8 @@ int isect_prim(const scene_prim *p, ray *r, hit *h);
  * out[i].prim is -1. */
 int isect_prim_all(const scene_prim *p, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 
-/* World-space axis-aligned bounds of a bounded primitive (a transformed one:
- * its local box's 8 corners mapped).  Returns 0 for a plane, or when the
+/* World-space axis-aligned bounds of a bounded primitive: scene_prim_world_box
+ * (a transformed one: its local box's 8 corners mapped).  Returns 0 for a plane, or when the
  * bounds are not finite (such a primitive must be tested unconditionally). */
 int isect_prim_bounds(const scene_prim *p, vec3 *lo, vec3 *hi);
 
@@ -105,6 +105,13 @@ int isect_part_count(const scene_prim *p);
 int isect_part(const scene_prim *p, int part, ray *r, hit *h);
 int isect_part_all(const scene_prim *p, int part, const ray *r, hit out[ISECT_MAX_CROSSINGS]);
 int isect_part_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
+/* The box the BVH holds the part in: its bounds widened on each axis by
+ * 2^-40 of the larger of their magnitude and their width, so a hit
+ * computed a few ulps outside the true box is still inside.  0 when they,
+ * or the box's centre (which the build bins), are not finite: the part is
+ * then tested on every ray.  A kept-frame hit outside this box is no hit
+ * ([NUM-FRAME-1]). */
+int isect_part_padded_bounds(const scene_prim *p, int part, vec3 *lo, vec3 *hi);
 real isect_part_magnitude(const scene_prim *p, int part);
 /* How many crossings isect_part_all reports, found by the same arithmetic
  * without their points and normals (a shadow ray needs only the count). */

@@ -54,7 +54,4 @@ int isect_cone_hits(vec3 from, vec3 to, real r0, real r1, int open, const ray *r
     ensures EXACT(\forall integer i; 0 <= i < \result ==> \old(r->tmin) < out[i].t < \old(r->tmax)); */
 int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *r, hit *out, int max);
 
-/* Local bounds: the box around the ring (torus). */
-void isect_torus_extent(vec3 unit_axis, real major, real minor, vec3 *e);
-
 #endif

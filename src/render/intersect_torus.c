@@ -370,11 +370,3 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
         out[i] = h[i];
     return found < max ? found : max;
 }
-
-/* The ring spans major sqrt(1 - a_k^2) about the centre along axis k, and
- * the tube adds minor in every direction. */
-void isect_torus_extent(vec3 a, real major, real minor, vec3 *e)
-{
-    isect_disk_extent(a, major, e);
-    *e = vec_add(*e, vec_splat(minor));
-}

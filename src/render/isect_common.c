@@ -329,10 +329,3 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2])
     return 2;
 }
 
-/* A disk of radius R across the unit axis a spans R sqrt(1 - a_k^2) about
- * its centre along axis k. */
-void isect_disk_extent(vec3 a, real radius, vec3 *e)
-{
-    *e = vec_make(radius * sqrt(fmax(0.0, 1.0 - a.x * a.x)), radius * sqrt(fmax(0.0, 1.0 - a.y * a.y)),
-                  radius * sqrt(fmax(0.0, 1.0 - a.z * a.z)));
-}

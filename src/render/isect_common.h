@@ -76,8 +76,5 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
     ensures h->prim == -1 && h->part == 0 && h->b1 == 0 && h->b2 == 0;
     ensures EXACT(h->entering == (vdot(dir, n) < 0 ? 1 : 0)); */
 void isect_hit_set(hit *h, real t, vec3 p, vec3 n, vec3 dir);
-/* The box around a disk of radius R across the unit axis (cylinder and
- * cone ends, the torus's ring). */
-void isect_disk_extent(vec3 unit_axis, real radius, vec3 *e);
 
 #endif

@@ -84,48 +84,26 @@ static int box_out(vec3 lo, vec3 hi, extent_fault *f)
            size_out((double)(hi.y - lo.y), "height", f) || size_out((double)(hi.z - lo.z), "depth", f);
 }
 
-/* The box in the local frame around a shape that may keep a frame (0 for
- * a plane: it has none).  Local parameters within the extent keep every
- * corner within 2^501. */
-static int local_box(const scene_prim *p, vec3 *lo, vec3 *hi)
-{
-    vec3 a, b;
-    real r;
-    switch (p->kind) {
-    case PRIM_SPHERE: a = b = p->u.sphere.center; r = p->u.sphere.radius; break;
-    case PRIM_DISK: a = b = p->u.disk.center; r = p->u.disk.radius; break;
-    case PRIM_BOX: *lo = p->u.box.lo; *hi = p->u.box.hi; return 1;
-    case PRIM_CYLINDER: a = p->u.cylinder.from; b = p->u.cylinder.to; r = p->u.cylinder.radius; break;
-    case PRIM_CONE:
-        a = p->u.cone.from;
-        b = p->u.cone.to;
-        r = p->u.cone.radius[0] > p->u.cone.radius[1] ? p->u.cone.radius[0] : p->u.cone.radius[1];
-        break;
-    case PRIM_TORUS: a = b = p->u.torus.center; r = p->u.torus.major + p->u.torus.minor; break;
-    default: return 0;
-    }
-    *lo = vec_make((a.x < b.x ? a.x : b.x) - r, (a.y < b.y ? a.y : b.y) - r, (a.z < b.z ? a.z : b.z) - r);
-    *hi = vec_make((a.x > b.x ? a.x : b.x) + r, (a.y > b.y ? a.y : b.y) + r, (a.z > b.z ? a.z : b.z) + r);
-    return 1;
-}
-
 /* A kept frame's matrix is not bounded by the local checks: a non-uniform
  * scale can make a shape of local size 2^499 wider than 2^1000 in the world,
  * where its hit tests' roots pass CROSSING_MAX and are dropped (a closed
  * cone then let light through its wall: tests/attack8, finding 5).  The
- * world images of the local box's eight corners hold the shape's world box,
- * so all of them within the extent keep the shape within it. */
+ * world box (the box around the images of the local box's eight corners,
+ * scene_prim_world_box, the one the BVH bounds the shape by) holds the
+ * shape, so that box within the extent keeps the shape within it.  A box
+ * that is not finite went past every bound on the way. */
 static int world_box_out(const scene_prim *p, extent_fault *f)
 {
     vec3 lo, hi;
-    if (!local_box(p, &lo, &hi))
+    if (!scene_prim_local_box(p, &lo, &hi))
         return 0;
-    for (int corner = 0; corner < 8; corner++) {
-        vec3 c = vec_make(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
-        if (coord_out(xform_point(&p->frame->to_world, c), "world box", f))
-            return 1;
+    if (!scene_prim_world_box(p, &lo, &hi)) {
+        f->what = "world box";
+        f->value = INFINITY;
+        f->coordinate = 1;
+        return 1;
     }
-    return 0;
+    return coord_out(lo, "world box", f) || coord_out(hi, "world box", f);
 }
 
 static int prim_local_out(const scene_prim *p, extent_fault *f)

@@ -105,9 +105,15 @@ static int inside_cone(vec3 from, vec3 to, real r0, real r1, vec3 q)
     return z > 0 && z < len && across < r0 + (r1 - r0) * (z / len);
 }
 
+vec3 scene_frame_local(const scene_frame *f, vec3 point)
+{
+    const double(*w)[4] = f->to_world.m;
+    return xform_vector(&f->to_local, vec_sub(point, vec_make(w[0][3], w[1][3], w[2][3])));
+}
+
 int scene_prim_contains(const scene_prim *p, vec3 point)
 {
-    vec3 q = p->frame ? xform_point(&p->frame->to_local, point) : point;
+    vec3 q = p->frame ? scene_frame_local(p->frame, point) : point;
     if (!scene_prim_is_solid(p))
         return 0;
     switch (p->kind) {

@@ -386,10 +386,28 @@ int scene_prim_is_solid(const scene_prim *p);
  * keeps one); 0 for anything that is not a solid on its own. */
 int scene_prim_contains(const scene_prim *p, vec3 point);
 
+/* A world point in f's frame, as L^-1 (point - T) (L, T: to_world's linear
+ * part and translation).  to_local's L^-1 point + (-L^-1 T) adds terms of
+ * the size of T that cancel, so a shape far from the origin and smaller
+ * than an ulp of T got a point that had lost every digit of where it is
+ * from the shape (tests/attack9b, finding 1); point - T is exact near T
+ * (Sterbenz) and rounds relative to its own size elsewhere ([NUM-FRAME-1],
+ * spec/numerics.md).  In scene.c. */
+vec3 scene_frame_local(const scene_frame *f, vec3 point);
+
 /* Whether p can shadow itself where N.L > 0: all but the flat ones (plane,
  * disk, triangle), whose shadow rays never meet them again.  A torus or an
  * open tube can from outside, any solid from inside ([LANG-FEATURES-2]). */
 int scene_prim_self_shadows(const scene_prim *p);
+
+/* The box around p in its own frame (before the frame it keeps, if any):
+ * 1 with its corners in *lo and *hi, or 0 for the unbounded plane and an
+ * empty mesh.  In prim_box.c. */
+int scene_prim_local_box(const scene_prim *p, vec3 *lo, vec3 *hi);
+/* The box around p in the world: its local box, through the frame p keeps
+ * if any (the box around the images of its eight corners, up to a few ulps
+ * of rounding).  0 when it has none or it is not finite.  In prim_box.c. */
+int scene_prim_world_box(const scene_prim *p, vec3 *lo, vec3 *hi);
 
 /* [LANG-EXTENT-1] Whether an orthographic camera's view on an image of
  * width x height pixels leaves the scene's extent: the corners eye +-

@@ -1,0 +1,65 @@
+/*
+ * slab.h - the slab test of a ray against an axis-aligned box, shared by
+ * the BVH's traversal (bvh.c) and the kept-frame hit's box (intersect.c),
+ * which must cull by the same arithmetic ([NUM-FRAME-1]).
+ *
+ * It is the robust test of Ize ("Robust BVH Ray Traversal", JCGT 2(2),
+ * 2013): the exit distance is enlarged by 1 + 4 eps (> 1 + 2 gamma_3) so
+ * rounding never culls a box the ray touches, and a NaN from 0 * inf
+ * (origin on a slab plane, direction parallel to it) never narrows the
+ * interval because the comparisons that update it are false for NaN.
+ * Every step is monotone in the box's bounds, so a box that holds another
+ * gives an interval that holds the other's.
+ */
+#ifndef REFRAY_SLAB_H
+#define REFRAY_SLAB_H
+
+#include <float.h>
+#include "render/ray.h"
+
+#define SLAB_EXIT_PAD (4.0 * DBL_EPSILON)
+
+/* A ray prepared for slab tests: 1/d with signed infinities for d = +-0. */
+typedef struct slab_ray {
+    vec3 o, inv;
+    int neg[3];
+} slab_ray;
+
+static inline real slab_inverse(real d) { return d != 0.0 ? 1.0 / d : copysign(INFINITY, d); }
+
+static inline slab_ray slab_make(const ray *r)
+{
+    slab_ray s;
+    s.o = r->origin;
+    s.inv = vec_make(slab_inverse(r->dir.x), slab_inverse(r->dir.y), slab_inverse(r->dir.z));
+    /* inv is never 0 or NaN (d is finite), so < 0 is its sign bit; and
+     * Frama-C, which parses this through intersect.c, has no signbit. */
+    s.neg[0] = s.inv.x < 0;
+    s.neg[1] = s.inv.y < 0;
+    s.neg[2] = s.inv.z < 0;
+    return s;
+}
+
+/* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
+static inline void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
+{
+    real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
+    /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
+     * (a box wholly to one side of a parallel ray) that would be NaN and
+     * the box would never be culled. */
+    t1 *= 1.0 + copysign(SLAB_EXIT_PAD, t1);   /* 1 + pad for t1 >= 0, 1 - pad below: no branch */
+    if (t0 > *tn)
+        *tn = t0;
+    if (t1 < *tf)
+        *tf = t1;
+}
+
+/* Narrows [*tn, *tf] to where the ray is within the box [lo, hi]. */
+static inline void slab_box(vec3 lo, vec3 hi, const slab_ray *s, real *tn, real *tf)
+{
+    slab(lo.x, hi.x, s->o.x, s->inv.x, s->neg[0], tn, tf);
+    slab(lo.y, hi.y, s->o.y, s->inv.y, s->neg[1], tn, tf);
+    slab(lo.z, hi.z, s->o.z, s->inv.z, s->neg[2], tn, tf);
+}
+
+#endif
