@@ -494,11 +494,11 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing
  * Why: formed about a far origin, c = |fp|^2 - rho0^2 subtracts two
  * squares of the distance, and |fp| = sqrt(D^2 + h^2) (D the distance along
  * the ray, h the offset across it) has lost h once h^2/2D is below half an
- * ulp of D: at D = 1e8, |h| < 1.2 of 1e-8 ulps, the whole of a unit cone.  The
- * discriminant b^2 - a c then no longer depends on the offset the ray
- * passes the axis at (tests/attack10, cone_ortho_far: the same rows hit
- * and missed at 1e7 and 1e8; cone_false_shadow: rays 0.35 off the side
- * blocked).  The cylinder's perpendicular foot (isect_sphere_roots) forms
+ * ulp of D: at D = 1e7 for |h| < 0.136, at D = 1e8 for |h| < 1.22, the
+ * whole of a unit cone.  The discriminant b^2 - a c then no longer depends
+ * on where the ray passes the axis (tests/attack10, cone_ortho_far: 66 of
+ * 192 pixels wrong at 1e8, a ray missing by 0.01 hit at 1e7;
+ * cone_false_shadow: rays 0.35 off the side blocked).  The cylinder's perpendicular foot (isect_sphere_roots) forms
  * that offset directly; the cone's radius changes along the ray, so it has
  * no such foot, and the origin is moved instead: about o2 every term is of
  * the shape's size, and the roots are the same line's, shifted by tm.
