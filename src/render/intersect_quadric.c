@@ -498,9 +498,10 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing
  * whole of a unit cone.  The discriminant b^2 - a c then no longer depends
  * on where the ray passes the axis (tests/attack10, cone_ortho_far: 66 of
  * 192 pixels wrong at 1e8, a ray missing by 0.01 hit at 1e7;
- * cone_false_shadow: rays 0.35 off the side blocked).  The cylinder's perpendicular foot (isect_sphere_roots) forms
- * that offset directly; the cone's radius changes along the ray, so it has
- * no such foot, and the origin is moved instead: about o2 every term is of
+ * cone_false_shadow: rays 0.35 off the side blocked).  The cylinder's
+ * perpendicular foot (isect_sphere_roots) forms that offset directly; the
+ * cone's radius changes along the ray, so it has no such foot, and the
+ * origin is moved instead: about o2 every term is of
  * the shape's size, and the roots are the same line's, shifted by tm.
  * The point o2 carries the rounding of o + tm d, eps |o| (the sphere's
  * foot carries the same).  near_shape's hold keeps o2 - from within
