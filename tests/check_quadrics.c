@@ -4,6 +4,7 @@
  * hand in the comment next to it, or checked by another route (the distance
  * to the surface computed from its definition). */
 #include <fenv.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -527,6 +528,136 @@ START_TEST(test_cone_apex_subnormal_width)
 }
 END_TEST
 
+/* [NUM-QUADRIC-1] A cone of radius 1 at y = -1 and 0.5 at y = 1 (rho(y) =
+ * 0.75 - y/4) seen from D along -x: the line (D, y, z) - t x^ meets the side
+ * where x^2 + z^2 = rho^2, first at x = sqrt(rho^2 - z^2), t = D - x, and
+ * misses it for |z| > rho.  At y = 0.8 (rho = 0.55): z = 0.5 hits at
+ * x = sqrt(0.0525); z = +-0.56 and 0.9 miss by 0.01 and 0.35.  Before the
+ * origin was moved near the cone (cone_origin), |fp| = sqrt(D^2 + z^2)
+ * rounded to D from D = 1e8 on (z^2/2D below half an ulp of D): c and the
+ * discriminant lost z, and all four rays hit (tests/attack10, finding 1). */
+START_TEST(test_cone_far_origin)
+{
+    static const double dist[] = {10, 1e7, 1e8, 1e10, 1e12};
+    static const double miss_z[] = {0.56, -0.56, 0.9};
+    const double x = sqrt(0.55 * 0.55 - 0.25);
+    for (int open = 0; open <= 1; open++)
+        for (int i = 0; i < 5; i++) {
+            scene_prim c = cone(vec_make(0, -1, 0), 1, vec_make(0, 1, 0), 0.5, open);
+            double d = dist[i];
+            hit h;
+            ray r = make_ray(vec_make(d, 0.8, 0.5), vec_make(-1, 0, 0));
+            ck_assert_msg(isect_prim(&c, &r, &h), "open %d, D = %g: missed", open, d);
+            ck_assert_msg(fabs(h.t - (d - x)) <= 2 * DBL_EPSILON * d, "open %d, D = %g: t = %.17g, expected %.17g",
+                          open, d, h.t, d - x);
+            ck_assert_msg(fabs(h.point.x - x) <= 1e-15 && h.point.y == 0.8 && h.point.z == 0.5,
+                          "open %d, D = %g: point (%.17g, %.17g, %.17g)", open, d, h.point.x, h.point.y, h.point.z);
+            for (int j = 0; j < 3; j++) {
+                r = make_ray(vec_make(d, 0.8, miss_z[j]), vec_make(-1, 0, 0));
+                ck_assert_msg(!isect_prim(&c, &r, &h), "open %d, D = %g, z = %g: hit at t = %.17g", open, d,
+                              miss_z[j], h.t);
+            }
+        }
+}
+END_TEST
+
+/* Renders text with the shortcuts on (no_shortcuts 0) or off (1). */
+static void render_text(const char *text, int no_shortcuts, img_buf *img)
+{
+    scene_model *s = load(text);
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.no_shortcuts = no_shortcuts;
+    render_stats st;
+    ck_assert_int_eq(render_image(s, &o, img, &st), STATUS_OK);
+    scene_free(s);
+}
+
+/* Whether got and want hold the same values: bit for bit, or (as_float)
+ * to the float an image file stores. */
+static void expect_same_image(const img_buf *got, const img_buf *want, int as_float, const char *what)
+{
+    ck_assert_int_eq(got->width, want->width);
+    ck_assert_int_eq(got->height, want->height);
+    int differ = 0, first = -1;
+    for (int i = 0; i < 3 * want->width * want->height; i++) {
+        float fg = (float)got->rgb[i], fw = (float)want->rgb[i];
+        int same = as_float ? memcmp(&fg, &fw, sizeof fg) == 0
+                            : memcmp(&got->rgb[i], &want->rgb[i], sizeof got->rgb[i]) == 0;
+        if (!same) {
+            first = first < 0 ? i : first;
+            differ++;
+        }
+    }
+    ck_assert_msg(differ == 0, "%s: %d of %d values differ, the first (%d) %.17g, expected %.17g", what, differ,
+                  3 * want->width * want->height, first, got->rgb[first], want->rgb[first]);
+}
+
+/* [NUM-QUADRIC-1] [SHADE-SHORTCUT-OFF-1] An orthographic image does not
+ * depend on the eye's distance along the view (the rays are the same
+ * lines, their origins exact on the x axis): the cone seen from 1e8 and
+ * 1e12 is the image seen from 10 to the float an image file holds (the
+ * doubles differ in their last bits: the hit point o + t d, before its
+ * refinement, carries the rounding of the far origin, eps 1e8), and the
+ * shortcuts change no bit.  Before, 66 of 192 pixels differed at 1e8
+ * (holes and hits outside the trapezoid) and the shortcuts changed 48
+ * (tests/attack10, cone_ortho_far.scene). */
+START_TEST(test_cone_far_orthographic_view)
+{
+    static const char *const eyes[] = {"1e8", "1e12"};
+    const char *form = "image { width 16 height 12 }\n"
+                       "camera { orthographic eye [%s, 0, 0] look_at [0, 0, 0] up [0, 1, 0] width 2.6 }\n"
+                       "ambient { color 0.2 }\npoint_light { position [3, 10, 2] power 40 falloff none }\n"
+                       "cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5 %s material { Kd 0.8 } }\n";
+    char text[512];
+    for (int open = 0; open <= 1; open++) {
+        img_buf ref;
+        snprintf(text, sizeof text, form, "10", open ? "open" : "");
+        render_text(text, 0, &ref);
+        for (int e = 0; e < 2; e++) {
+            img_buf on, off;
+            char what[64];
+            snprintf(text, sizeof text, form, eyes[e], open ? "open" : "");
+            render_text(text, 0, &on);
+            render_text(text, 1, &off);
+            snprintf(what, sizeof what, "open %d, eye %s", open, eyes[e]);
+            expect_same_image(&on, &ref, 1, what);
+            snprintf(what, sizeof what, "open %d, eye %s, shortcuts off", open, eyes[e]);
+            expect_same_image(&off, &on, 0, what);
+            img_free(&on);
+            img_free(&off);
+        }
+        img_free(&ref);
+    }
+}
+
+END_TEST
+
+/* A floor 1e8 from the cone, the light 10 beyond it: every shadow ray
+ * passes the axis 0.9 from it at height 0.8, where the radius is 0.55,
+ * missing by 0.35; the floor is lit as without the cone.  Before, 189 of
+ * 192 pixels were in a false shadow (tests/attack10, cone_false_shadow). */
+START_TEST(test_cone_far_no_false_shadow)
+{
+    const char *form = "image { width 16 height 12 }\n"
+                       "camera { orthographic eye [1e8, 10, 0] look_at [1e8, -1.5, 0] up [0, 0, -1] width 4 }\n"
+                       "ambient { color 0.1 }\npoint_light { position [-10, 0.8, 0.9] power 1e8 falloff none }\n"
+                       "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.8 } }\n%s";
+    char text[640];
+    img_buf bare;
+    snprintf(text, sizeof text, form, "");
+    render_text(text, 0, &bare);
+    for (int off = 0; off <= 1; off++) {
+        img_buf with;
+        snprintf(text, sizeof text, form, "cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5 material { Kd 0.8 } }\n");
+        render_text(text, off, &with);
+        expect_same_image(&with, &bare, 0, off ? "shortcuts off" : "shortcuts on");
+        img_free(&with);
+    }
+    img_free(&bare);
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -535,6 +666,9 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_cone_by_hand);
     tcase_add_test(tc, test_cone_steepest);
     tcase_add_test(tc, test_cone_apex_subnormal_width);
+    tcase_add_test(tc, test_cone_far_origin);
+    tcase_add_test(tc, test_cone_far_orthographic_view);
+    tcase_add_test(tc, test_cone_far_no_false_shadow);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);

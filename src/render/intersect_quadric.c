@@ -487,6 +487,51 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing
     return 1;
 }
 
+/* The cone's side equation is formed about o2 = o + tm d, the line's point
+ * nearest the middle of the axis; returns tm, *o2 that point (tm = 0 and
+ * o2 = o for the cylinder, or where the point is not near_shape's).
+ *
+ * Why: formed about a far origin, c = |fp|^2 - rho0^2 subtracts two
+ * squares of the distance, and |fp| = sqrt(D^2 + h^2) (D the distance along
+ * the ray, h the offset across it) has lost h once h^2/2D is below half an
+ * ulp of D: at D = 1e7 for |h| < 0.136, at D = 1e8 for |h| < 1.22, the
+ * whole of a unit cone.  The discriminant b^2 - a c then no longer depends
+ * on where the ray passes the axis (tests/attack10, cone_ortho_far: 66 of
+ * 192 pixels wrong at 1e8, a ray missing by 0.01 hit at 1e7;
+ * cone_false_shadow: rays 0.35 off the side blocked).  The cylinder's
+ * perpendicular foot (isect_sphere_roots) forms that offset directly; the
+ * cone's radius changes along the ray, so it has no such foot, and the
+ * origin is moved instead: about o2 every term is of
+ * the shape's size, and the roots are the same line's, shifted by tm.
+ * The point o2 carries the rounding of o + tm d, eps |o| (the sphere's
+ * foot carries the same).  near_shape's hold keeps o2 - from within
+ * 2^502 a coordinate for Eva (make prove), which sees no relation
+ * between o2 and the shape; a line whose nearest point is outside that
+ * box (2^502 off `from`) misses the shape (within 1.4 2^501 of the
+ * middle) by more than 2^497, and is solved from o as before. */
+/*@ requires \valid_read(s) && \valid_read(r) && \valid(o2) && \separated(o2, s, r);
+    requires vfinite(s->from) && vfinite(s->to) && vfinite(r->origin) && vfinite(r->dir);
+    assigns *o2; */
+static real cone_origin(const quadric *s, const ray *r, vec3 *o2)
+{
+    real tm;
+    *o2 = r->origin;
+    if (!s->cone)
+        return 0;
+    vec3 mid = vec_madd(s->from, vec_sub(s->to, s->from), 0.5);
+    if (!isect_quotient(vec_dot(vec_sub(mid, r->origin), r->dir), vec_length2(r->dir), &tm))
+        return 0;
+    /* a line of a tiny direction: kept from o, so that a crossing's t plus tm
+     * stays within 2^1021 + 2^1019 and o + t d finite (|d| <= 4) */
+    if (!(tm >= -0x1p1019 && tm <= 0x1p1019))
+        return 0;
+    vec3 p = ray_at(r, tm);
+    if (!near_shape(s, &p))
+        return 0;
+    *o2 = p;
+    return tm;
+}
+
 /*@ requires \valid_read(s) && \valid_read(r) && max >= 0 && \valid(out + (0 .. max - 1));
     requires \separated(out + (0 .. max - 1), s, r);
     requires !s->cone ==> s->r0 > 0;   // check_radius
@@ -502,14 +547,18 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
     axial x;
     crossing c[2] = {{0, 0}, {0, 0}};
     hit h[2];
-    axial_of(s->from, s->to, r->origin, r->dir, &x);
+    vec3 o2;
+    real tm = cone_origin(s, r, &o2);
+    axial_of(s->from, s->to, o2, r->dir, &x);
     int n = open ? open_crossings(s, &x, c) : solid_crossings(s, &x, c), kept = 0;
     /*@ loop invariant 0 <= i <= n && 0 <= kept <= i;
         loop invariant EXACT(\forall integer j; 0 <= j < kept ==> r->tmin < h[j].t < r->tmax);
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        kept += crossing_hit(s, &x, r, c[i], &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
+        /* the crossing on the ray from its own origin: |c[i].t| <= 2^1021 and |tm| <= 2^1019 */
+        crossing ci = {c[i].t + tm, c[i].surface};
+        kept += crossing_hit(s, &x, r, ci, &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
     }
     if (kept == 2 && h[1].t < h[0].t) {
         hit swap = h[0];
