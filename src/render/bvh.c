@@ -112,10 +112,20 @@ typedef struct nearest {
     const isect_shear *sh; /* the ray's triangle shear, NULL without triangles */
 } nearest;
 
+static real tie_end(real t_near, real slack)
+{
+    real limit = t_near + (TIE_REL * fabs(t_near) + slack);
+    return limit > t_near ? limit : nextafter(t_near, (real)INFINITY);
+}
+
 static real tie_limit(const nearest *ns)
 {
-    real limit = ns->t_near + (TIE_REL * fabs(ns->t_near) + ns->slack);
-    return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
+    return tie_end(ns->t_near, ns->slack);
+}
+
+real bvh_tie_end(real t_near, vec3 origin)
+{
+    return tie_end(t_near, TIE_REL * vec_max_abs(origin));
 }
 
 /* The tmax that accepts every t <= limit the caller's ray accepts. */

@@ -86,6 +86,8 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int glass;                /* some material has t > 0 (the scene's, in every
+                                 mode): surfaces may touch glass ([NUM-GLASS-3]) */
     int terminator_offset;    /* shadow rays of smooth triangles start at the
                                  lifted point (isect_shadow_point): 1 by
                                  default; 0 only to measure the seed's way
