@@ -303,7 +303,7 @@ static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
+int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats, int *tied)
 {
     nearest ns;
     ns.rr = *r;
@@ -322,6 +322,8 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
         ns.fixed = 1;
         nearest_pass(b, prims, &ns);
     }
+    if (tied)
+        *tied = ns.overflow ? TIE_MAX + 1 : ns.count;
     if (ns.count == 0)
         return 0;
     int w = nearest_winner(&ns);
@@ -337,6 +339,11 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     }
     r->tmax = h->t;
     return 1;
+}
+
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
+{
+    return bvh_intersect_ties(b, prims, r, h, stats, NULL);
 }
 
 int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)

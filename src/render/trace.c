@@ -55,6 +55,56 @@ int trace_solid_id(const scene_model *s, int prim)
     return -1;
 }
 
+/*
+ * [NUM-GLASS-3] The transparent primitives' boxes, padded by 2^-20 of their
+ * size (a hit point lies within a few ulps of its primitive's box): a
+ * point farther than the reach from all of them has no transparent surface
+ * within reach, so its shadow and mirror rays need no start_gather.  Past
+ * GLASS_BOX_MAX of them, or with an unbounded one (a plane), every point
+ * gathers.  Returns 0 when out of memory.
+ */
+enum { GLASS_BOX_MAX = 64 };
+static int glass_boxes_build(tracer *t, const scene_model *s)
+{
+    int n = 0;
+    t->glass_boxes = -1;
+    for (int i = 0; i < s->prim_count; i++)
+        n += s->materials[s->prims[i].material].t > 0;
+    if (n == 0 || n > GLASS_BOX_MAX)
+        return 1;
+    t->glass_box = mem_calloc(&s->mem, 2 * (size_t)n, sizeof *t->glass_box);
+    if (!t->glass_box)
+        return 0;
+    t->glass_alloc = n;
+    n = 0;
+    for (int i = 0; i < s->prim_count; i++) {
+        vec3 lo, hi;
+        if (!(s->materials[s->prims[i].material].t > 0))
+            continue;
+        if (!isect_prim_bounds(&s->prims[i], &lo, &hi))
+            return 1;
+        real size = fmax(fmax(vec_max_abs(lo), vec_max_abs(hi)), vec_max_abs(vec_sub(hi, lo)));
+        t->glass_box[2 * n] = vec_sub(lo, vec_splat(0x1p-20 * size));
+        t->glass_box[2 * n++ + 1] = vec_add(hi, vec_splat(0x1p-20 * size));
+    }
+    t->glass_boxes = n;
+    return 1;
+}
+
+/* Whether a transparent surface may lie within reach of point (glass_box). */
+static int near_glass(const tracer *t, vec3 point, real reach)
+{
+    if (t->glass_boxes < 0)
+        return 1;
+    for (int i = 0; i < t->glass_boxes; i++) {
+        vec3 lo = t->glass_box[2 * i], hi = t->glass_box[2 * i + 1];
+        if (point.x >= lo.x - reach && point.x <= hi.x + reach && point.y >= lo.y - reach &&
+            point.y <= hi.y + reach && point.z >= lo.z - reach && point.z <= hi.z + reach)
+            return 1;
+    }
+    return 0;
+}
+
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
     return tracer_build(t, s, max_depth, light_samples, NULL) == STATUS_OK;
@@ -77,6 +127,8 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
+    if (status == STATUS_OK && t->glass && !glass_boxes_build(t, s))
+        status = STATUS_NO_MEMORY;
     if (status != STATUS_OK) {
         tracer_free(t);
         return status;
@@ -98,6 +150,7 @@ void tracer_no_shortcuts(tracer *t)
     t->shadows = t->specular = t->reflection = t->refraction = 1;
     t->accel.exhaustive = 1;
     t->bundles = 0;
+    t->glass_boxes = -1;
     if (t->scene->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
         memset(&none, 0, sizeof none);
@@ -108,8 +161,11 @@ void tracer_no_shortcuts(tracer *t)
 void tracer_free(tracer *t)
 {
     bvh_free(&t->accel);
-    if (t->scene)
+    if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
+        mem_free(&t->scene->mem, t->glass_box, 2 * (size_t)t->glass_alloc * sizeof *t->glass_box);
+    }
+    t->glass_box = NULL;
     t->lights = NULL;
 }
 
@@ -364,7 +420,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
-        if (through > 0 && t->glass && !(s->m->t > 0))
+        if (through > 0 && t->glass && !(s->m->t > 0) && near_glass(t, s->from.point, 2 * s->from.offset))
             through = shade_shadow_transmission(through, start_transmission(t, s, &r, st));
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
@@ -841,7 +897,10 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
 {
     start_zone z;
-    start_gather(t, s->h, ray_shadow_start(s->prim, s->h).offset, r, &z, st);
+    real offset = ray_shadow_start(s->prim, s->h).offset;
+    if (!near_glass(t, s->h->point, 2 * offset))
+        return 0;
+    start_gather(t, s->h, offset, r, &z, st);
     if (z.first.prim < 0)
         return 0;
     *c = trace_end(t, r, &z.first, depth, media, key, st);
@@ -995,9 +1054,9 @@ static int over_budget(const tracer *t, trace_stats *st)
 /* The nearest hit, in a frame of its own: the BVH walk's stack (BVH_MAX_DEPTH
  * entries, 1.5 KiB) is not needed once the hit is found, so it stays off
  * the recursion's stack ([REL-STACK-1]). */
-static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, trace_stats *st)
+static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int *tied, trace_stats *st)
 {
-    return bvh_intersect_stats(&t->accel, t->scene->prims, nearest, h, &st->bvh);
+    return bvh_intersect_ties(&t->accel, t->scene->prims, nearest, h, &st->bvh, tied);
 }
 
 /*
@@ -1075,8 +1134,10 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     hit h;
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
-    int met = nearest_hit(t, &nearest, &h, st);
-    if (met && t->glass)
+    int tied;
+    int met = nearest_hit(t, &nearest, &h, &tied, st);
+    /* A hit alone in its window was tied with nothing. */
+    if (met && t->glass && tied > 1)
         first_of_tie(t, r, &h, media, st);
     return ray_colour(t, &nearest, met, &h, depth, media, key, st);
 }
