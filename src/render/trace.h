@@ -93,6 +93,7 @@ typedef struct tracer {
                                  there are too many, or the shortcuts are off) */
     int glass_alloc;          /* glass_box's allocated pairs */
     vec3 *glass_box;          /* lo, hi of each */
+    int *glass_prim;          /* the primitive of each */
     int terminator_offset;    /* shadow rays of smooth triangles start at the
                                  lifted point (isect_shadow_point): 1 by
                                  default; 0 only to measure the seed's way
