@@ -43,6 +43,7 @@ typedef struct surface {
     int no_body;     /* Kd = 0: a light adds its highlight alone */
     real lobe_floor; /* V.R at or below it: the lobe is 0 ([SHADE-SHORTCUT-LOBE-2]) */
     shadow_start from; /* where its shadow rays start */
+    int near_glass;  /* opaque, with glass within reach of its shadow rays' start ([NUM-GLASS-3]) */
 } surface;
 
 int trace_solid_id(const scene_model *s, int prim)
@@ -437,7 +438,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     if (t->shadows) {
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
-        if (through > 0 && t->glass && !(s->m->t > 0) && near_glass(t, s->from.point, 2 * s->from.offset))
+        if (through > 0 && s->near_glass)
             through = shade_shadow_transmission(through, start_transmission(t, s, &r, st));
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
@@ -965,6 +966,8 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-18) : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
+    /* Once a point, not once a light sample. */
+    s.near_glass = t->shadows && t->glass && !(s.m->t > 0) && near_glass(t, s.from.point, 2 * s.from.offset);
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
