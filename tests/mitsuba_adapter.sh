@@ -36,7 +36,7 @@ reason_for() {
     lambert_torus*) echo "primitive 0: Mitsuba 3 has no torus shape" ;;
     sphere_shadow_two_lights) echo "light 1: falloff E/(d + d0)^2 with d0 > 0" ;;
     phong_sphere | phong_plane_perspective) echo "material 0: Phong highlight" ;;
-    glass_slab_above | snell_window) echo "material 0: transparency t" ;;
+    glass_slab_above | glass_slab_on_floor | snell_window) echo "material 0: transparency t" ;;
     stacked_sheets) echo "materials 1, 2, 3: transparency t" ;;
     transparent_shadow_depth2) echo "material 1: transparency t" ;;
     ball_lens) echo "lights 0, 1: falloff linear" ;;

@@ -486,6 +486,64 @@ START_TEST(test_stress_nested_glass_index_matched)
 }
 END_TEST
 
+/* ---- glass standing on an opaque surface ---------------------------------- */
+
+START_TEST(test_stress_glass_on_floor_is_the_gap_limit)
+{
+    /* [NUM-GLASS-3] The block 1e-9 above the floor (g) against standing on
+     * it.  Raising the block by g moves every point a pixel's ray meets by
+     * at most g / cos 60 deg = 2g along the camera ray (its rays meet the
+     * top face at least 30 deg above it), and refraction at ior 1.5 keeps
+     * the further points within 4g (tan of the inside angle <= 0.9, of the
+     * outside one <= 1.8); the colour there is Kd (Ia + P S cos / r^2) with
+     * r >= 4 from the light (the top face is 4 below it), whose gradient is
+     * at most Kd P 3 / r^3 = 0.8 * 4 * 3 / 64 = 0.15 a unit, the shadow
+     * factors S (t, t^2) fixed.  So each value moves by at most 0.15 * 4g
+     * per point, four points a path: 3e-9 < 1e-8; no pixel centre lies
+     * within 1e-8 of an edge of the block or of its shadow (the image is a
+     * 32 x 24 grid of generic rays).  Before: 172 pixels off by up to 0.59. */
+    img_buf a = render_stress("glass_on_floor", NULL), b = render_stress("glass_on_floor_gap", NULL);
+    ck_assert_int_eq(a.width, b.width);
+    ck_assert_int_eq(a.height, b.height);
+    for (long i = 0; i < 3 * a.width * a.height; i++)
+        ck_assert_msg(fabs(a.rgb[i] - b.rgb[i]) <= 1e-8, "value %ld (pixel %ld, %ld): %.17g vs %.17g", i,
+                      i / 3 % a.width, i / 3 / a.width, a.rgb[i], b.rgb[i]);
+    img_free(&a);
+    img_free(&b);
+}
+END_TEST
+
+START_TEST(test_stress_glass_on_floor_order_free)
+{
+    /* [NUM-GLASS-3] The coplanar tie of the floor and the block's bottom
+     * face is taken in the gap's limit, not by the lower index: the order
+     * of the two lines changes no bit.  Before: 176 pixels apart. */
+    assert_renders_equal("glass_on_floor_plane_first", "glass_on_floor", 0);
+    assert_renders_equal("glass_on_floor_down_plane_first", "glass_on_floor_down_box_first", 0);
+}
+END_TEST
+
+START_TEST(test_stress_glass_on_floor_lit_through_both_faces)
+{
+    /* [NUM-GLASS-3] Straight down through a clear block (t = 0.5) on a shiny
+     * floor (Kd 0.5, Ks 0.4), a distant light straight down (E = 1, Ia =
+     * 0.2, background 0.6): the floor's shadow ray and its mirror ray each
+     * cross both faces, S = t^2, so C = t^2 (Kd (Ia + S E) + Ks S E + Ks t^2
+     * bg).  A shadow ray that missed the face at the floor gives 0.1525, a
+     * mirror ray that did 0.11125; before: 0 (box first), 0.335 (plane
+     * first). */
+    static const char *const names[] = {"glass_on_floor_down_box_first", "glass_on_floor_down_plane_first"};
+    const double t = 0.5, s = t * t, want = t * t * (0.5 * (0.2 + s) + 0.4 * s + 0.4 * t * t * 0.6);
+    for (int k = 0; k < 2; k++) {
+        img_buf img = render_stress(names[k], NULL);
+        for (long i = 0; i < 3 * img.width * img.height; i++)
+            ck_assert_msg(fabs(img.rgb[i] - want) <= 1e-15, "%s: value %ld is %.17g, want %.17g", names[k], i,
+                          img.rgb[i], want);
+        img_free(&img);
+    }
+}
+END_TEST
+
 /* ---- scale ----------------------------------------------------------- */
 
 START_TEST(test_stress_scale_invariance)
@@ -1333,6 +1391,9 @@ Suite *suite_stability(void)
     tcase_add_test(glass, test_stress_touching_glass_camera_inside);
     tcase_add_test(glass, test_stress_nested_glass_index_matched);
     tcase_add_test(glass, test_stress_camera_inside_nested_glass);
+    tcase_add_test(glass, test_stress_glass_on_floor_is_the_gap_limit);
+    tcase_add_test(glass, test_stress_glass_on_floor_order_free);
+    tcase_add_test(glass, test_stress_glass_on_floor_lit_through_both_faces);
     suite_add_tcase(s, glass);
     TCase *robust = tcase_create("robust methods");
     tcase_set_timeout(robust, 10);

@@ -146,8 +146,11 @@ static int accepts_parts(const scene_model *s, slab_setup *g, char *why, size_t 
         return oracle_refuse(why, n, "glass_slab: the scene must be one box (not rotated) and one plane");
     if (!find_axis(g))
         return oracle_refuse(why, n, "glass_slab: the floor's normal must be a coordinate axis");
-    if (!(g->ground_z < g->bottom))
-        return oracle_refuse(why, n, "glass_slab: the floor must lie below the slab, apart from it");
+    /* [NUM-GLASS-3] A slab standing on the floor (ground_z = bottom) is the
+     * limit of a gap: the floor seen at the exit point B, lit through both
+     * faces; the closed form is the same. */
+    if (!(g->ground_z <= g->bottom))
+        return oracle_refuse(why, n, "glass_slab: the floor must lie below the slab or touch it");
     if (vec_max_component(g->glass->ks) != 0 || !(g->glass->t > 0))
         return oracle_refuse(why, n, "glass_slab: the slab must have Ks = 0 and t > 0");
     if (vec_max_component(g->ground->ks) != 0 || g->ground->t != 0)

@@ -72,10 +72,20 @@ typedef struct nearest {
     const isect_shear *sh; /* the ray's triangle shear, NULL without triangles */
 } nearest;
 
+static real tie_end(real t_near, real slack)
+{
+    real limit = t_near + (TIE_REL * fabs(t_near) + slack);
+    return limit > t_near ? limit : nextafter(t_near, (real)INFINITY);
+}
+
 static real tie_limit(const nearest *ns)
 {
-    real limit = ns->t_near + (TIE_REL * fabs(ns->t_near) + ns->slack);
-    return limit > ns->t_near ? limit : nextafter(ns->t_near, (real)INFINITY);
+    return tie_end(ns->t_near, ns->slack);
+}
+
+real bvh_tie_end(real t_near, vec3 origin)
+{
+    return tie_end(t_near, TIE_REL * vec_max_abs(origin));
 }
 
 /* The tmax that accepts every t <= limit the caller's ray accepts. */
@@ -253,7 +263,7 @@ static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
+int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats, int *tied)
 {
     nearest ns;
     ns.rr = *r;
@@ -272,6 +282,8 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
         ns.fixed = 1;
         nearest_pass(b, prims, &ns);
     }
+    if (tied)
+        *tied = ns.overflow ? TIE_MAX + 1 : ns.count;
     if (ns.count == 0)
         return 0;
     int w = nearest_winner(&ns);
@@ -287,6 +299,11 @@ int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, b
     }
     r->tmax = h->t;
     return 1;
+}
+
+int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)
+{
+    return bvh_intersect_ties(b, prims, r, h, stats, NULL);
 }
 
 int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h)

@@ -99,6 +99,15 @@ void bvh_free(bvh *b);
 int bvh_intersect(const bvh *b, const scene_prim *prims, ray *r, hit *h);
 /* The same, adding to *stats when it is not NULL. */
 int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats);
+/* The same, with the number of hits in the tie window in *tied (1: none
+ * tied with the winner; more than 8: so many that only the winner was
+ * kept); 0 on a miss. */
+int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats, int *tied);
+/* The far end of the tie window of a ray from origin whose least t is
+ * t_near: the hits with t up to it tie, and the lowest index wins.  The
+ * tracer asks it to find the coincident surfaces a nearest hit stood for
+ * (spec/numerics.md [NUM-GLASS-3]). */
+real bvh_tie_end(real t_near, vec3 origin);
 
 /*
  * Calls fn for every surface crossing in (r->tmin, r->tmax) (a solid

@@ -86,6 +86,14 @@ typedef struct tracer {
     /* The passes that run: off when the scene's features say nothing in the
      * scene could use them (scene_features), so their work is left out. */
     int shadows, specular, reflection, refraction;
+    int glass;                /* some material has t > 0 (the scene's, in every
+                                 mode): surfaces may touch glass ([NUM-GLASS-3]) */
+    int glass_boxes;          /* boxes in glass_box: the transparent primitives', padded;
+                                 -1: every point may touch glass (one is unbounded,
+                                 there are too many, or the shortcuts are off) */
+    int glass_alloc;          /* glass_box's allocated pairs */
+    vec3 *glass_box;          /* lo, hi of each */
+    int *glass_prim;          /* the primitive of each */
     int terminator_offset;    /* shadow rays of smooth triangles start at the
                                  lifted point (isect_shadow_point): 1 by
                                  default; 0 only to measure the seed's way
