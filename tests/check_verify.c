@@ -152,10 +152,28 @@ START_TEST(test_verify_never_passes_on_an_unusable_tolerance)
         ck_assert_msg(strncmp(r.reason, VERIFY_INEXACT, strlen(VERIFY_INEXACT)) == 0, "reason: %s", r.reason);
         verify_exact_free(&e);
     }
-    /* Any finite bound is one (1e10: a render of one light sample). */
+    /* Any finite bound is one (1e10: a render of one light sample), but one
+     * of 1 or more passes an image of zeros: the exact render is measured
+     * and REFUSED, not passed (attack 10, finding 7). */
     double (*const good[])(const oracle_view *, int) = {tolerance_zero, tolerance_half, tolerance_one, tolerance_big};
-    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++)
-        ck_assert(verify_tolerance_usable(good[i](&v, 0)));
+    for (size_t i = 0; i < sizeof good / sizeof good[0]; i++) {
+        double tol = good[i](&v, 0);
+        ck_assert(verify_tolerance_usable(tol));
+        verify_exact e;
+        verify_result r;
+        memset(&r, 0, sizeof r);
+        broken.tolerance = good[i];
+        ck_assert_int_eq(verify_exact_build(&broken, &v, &e), 0);
+        int decisive = tol < 1;
+        ck_assert_int_eq(verify_tolerance_decisive(tol), decisive);
+        ck_assert_int_eq(verify_render_compare(s, NULL, &e, &r), decisive ? STATUS_OK : STATUS_FAIL);
+        ck_assert_int_eq(r.verdict, decisive ? VERIFY_PASS : VERIFY_REFUSED);
+        ck_assert(r.measured && r.metrics.compared == (long)v.width * v.height);
+        if (!decisive)
+            ck_assert_msg(strncmp(r.reason, VERIFY_UNBOUNDED, strlen(VERIFY_UNBOUNDED)) == 0, "reason: %s", r.reason);
+        verify_exact_free(&e);
+    }
+    ck_assert(!verify_tolerance_decisive(nextafter(1, 2)) && verify_tolerance_decisive(nextafter(1, 0)));
     scene_free(s);
 }
 END_TEST
@@ -285,7 +303,8 @@ START_TEST(test_verify_sweep_orders_power_law)
     verify_result steps[5];
     memset(steps, 0, sizeof steps);
     for (int i = 0; i < 5; i++) {
-        steps[i].verdict = VERIFY_PASS;
+        steps[i].verdict = i < 2 ? VERIFY_REFUSED : VERIFY_PASS; /* a bound of 1 or more at N = 1, 2 */
+        steps[i].measured = 1;
         steps[i].metrics.peak = 1;
         steps[i].metrics.rms = 0.3 / sw.values[i];
         steps[i].render_seconds = 0.01 * sw.values[i];
@@ -805,6 +824,10 @@ START_TEST(test_cli_verify_jobs)
     ck_assert_int_eq(run_refray(s1, many), 0);
     read_masked(tsv, tsv_one, sizeof tsv_one);
     ck_assert_msg(strstr(tsv_one, "rect_light\tsamples\t4\t") && strstr(tsv_one, "\t#\t#\t"), "%s", tsv_one);
+    /* disk_light at one light sample: bound 5.86, measured, REFUSED, and the
+     * sweep still exits 0 (it measures error against cost). */
+    ck_assert_msg(strstr(tsv_one, "disk_light.scene\tdisk_light\tsamples\t1\t") && strstr(tsv_one, "\trefused\n"),
+                  "%s", tsv_one);
     for (int k = 0; k < 2; k++) {
         a1[3] = jobs[k];
         ck_assert_int_eq(run_refray(a1, many), 66);
