@@ -344,6 +344,12 @@ START_TEST(test_cli_kit_errors)
     cli_refray(r, demo);
     ck_assert_int_eq(r->code, 65);
     ck_assert_msg(strstr(r->err, "no exact image") != NULL, "stderr: %s", r->err);
+    /* One light sample of a disk: a bound of 5.86, which a black image meets
+     * ([VERIFY-UNBOUNDED-1]). */
+    const char *unbounded[] = {"kit", "-q", "-o", dir, "tests/attack10/disk_light_1sample.scene", NULL};
+    cli_refray(r, unbounded);
+    ck_assert_int_eq(r->code, 65);
+    ck_assert_msg(strstr(r->err, "cannot tell the image from black") != NULL, "stderr: %s", r->err);
     const char *missing[] = {"kit", "-q", "-o", dir, "scenes/analytic/nonexistent.scene", NULL};
     cli_refray(r, missing);
     ck_assert_int_eq(r->code, 66);

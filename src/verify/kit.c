@@ -276,7 +276,7 @@ static int build_scene(const char *root, const char *path, const kit_opts *o, ma
                      verify_tolerance_usable(m->relative) ? VERIFY_UNBOUNDED : VERIFY_INEXACT, m->relative);
             verify_exact_free(&e);
             scene_free(s);
-            return STATUS_FAIL;
+            return STATUS_DATA;
         }
         kit_job job = {m->name, s, &e, m};
         status = write_files(root, &job, why, why_size);
