@@ -878,6 +878,15 @@ START_TEST(test_cli_oracle_exit_codes)
     ck_assert_int_eq(run_refray(no_out, out), 64);
     const char *bad_ext[] = {"oracle", f.unknown, "-o", "x.jpg", NULL};
     ck_assert_int_eq(run_refray(bad_ext, out), 64);
+    /* [LANG-EXTENT-1] A size whose orthographic view leaves the extent is
+     * refused as render refuses it, nothing written (attack 10, finding 8);
+     * the scene's own size is fine. */
+    const char *far_view[] = {"oracle", "tests/attack10/oracle_view_extent.scene", "--width", "1", "--height", "16",
+                              "-o", exr, NULL};
+    ck_assert_int_eq(run_refray(far_view, out), 65);
+    ck_assert_int_eq(access(exr, F_OK), -1);
+    ck_assert_int_eq(run_refray((const char *[]){"oracle", far_view[1], "-o", exr, NULL}, out), 0);
+    ck_assert_int_eq(access(exr, F_OK), 0);
     remove_scenes(&f);
 }
 END_TEST
