@@ -385,7 +385,8 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
  * blue; linear) at rgb[(y - y0) * row_stride + 3 * (x - x0)], so row_stride
  * (in floats) is at least 3 * (x1 - x0).  A pixel's value does not depend
  * on the region it is rendered in.  Allocates nothing.  Returns RF_OK;
- * RF_ERR_USAGE for a region outside the image, empty, or a short stride;
+ * RF_ERR_USAGE for a region outside the image, empty, or a short stride
+ * (or one so long that the last row lies PTRDIFF_MAX bytes past rgb);
  * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays, or a
  * ray was inside glass nested deeper than the tracer follows (16 solids;
  * medium_overflows > 0 then), at the pixel of rf_renderer_stats.  After a

@@ -9,6 +9,7 @@
 #include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include <check.h>
 #include "memcheck.h"
@@ -222,6 +223,21 @@ START_TEST(test_api_render_region_refusals)
     ck_assert_int_eq(rf_render_region(r, -1, 0, 2, 1, buf, 12), RF_ERR_USAGE);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 1, buf, 11), RF_ERR_USAGE);
     ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 1, NULL, 12), RF_ERR_USAGE);
+    /* A stride whose second row lies past PTRDIFF_MAX bytes: refused, and
+     * nothing written around the buffer (attack 10, finding 4: SIZE_MAX / 2
+     * floats wrapped the byte address to pixels[-1], and returned RF_OK). */
+    float guard[64];
+    double guard_d[64];
+    static const size_t strides[] = {(size_t)-1 / 2, (size_t)-1 / 4 + 1, (size_t)PTRDIFF_MAX / sizeof(float) + 1,
+                                     (size_t)-1 / 8 + 1};
+    for (size_t i = 0; i < sizeof strides / sizeof strides[0]; i++) {
+        for (int k = 0; k < 64; k++)
+            guard[k] = 7.0f, guard_d[k] = 7.0;
+        ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 2, guard + 32, strides[i]), RF_ERR_USAGE);
+        ck_assert_int_eq(rf_render_region_double(r, 0, 0, 4, 2, guard_d + 32, strides[i]), RF_ERR_USAGE);
+        for (int k = 0; k < 64; k++)
+            ck_assert_msg(guard[k] == 7.0f && guard_d[k] == 7.0, "stride %zu wrote element %d", strides[i], k - 32);
+    }
     rf_renderer_free(r);
     rf_render_options o;
     rf_render_options_init(&o);
@@ -286,6 +302,31 @@ START_TEST(test_api_size_override_limits)
                       o.height);
         ck_assert_int_eq(r != NULL, sizes[i][2]);
         rf_renderer_free(r);
+    }
+    rf_scene_free(s);
+    /* The camera and light samples and the depth too (attack 10, finding 5:
+     * samples INT_MAX, 2^62 camera rays a pixel, was accepted). */
+    rf_load_options_init(&lo);
+    lo.limits.max_samples = 4;
+    lo.limits.max_light_samples = 9;
+    lo.limits.max_depth = 7;
+    s = load(plane_text, &lo);
+    static const int counts[][4] = {
+        /* samples, light_samples, max_depth, made */
+        {4, 9, 7, 1}, {0, 0, 0, 1}, {5, 0, 0, 0}, {0, 10, 0, 0}, {0, 0, 8, 0}, {2147483647, 0, 0, 0},
+        {0, 2147483647, 0, 0},
+    };
+    rf_render_options_init(&o);
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) {
+        o.samples = counts[i][0];
+        o.light_samples = counts[i][1];
+        o.max_depth = counts[i][2];
+        if (counts[i][3]) {
+            rf_renderer *r = NULL;
+            ck_assert_int_eq(rf_renderer_create(s, &o, &r), RF_OK);
+            rf_renderer_free(r);
+        } else
+            assert_not_made(s, &o, RF_ERR_USAGE);
     }
     rf_scene_free(s);
 }

@@ -763,6 +763,48 @@ START_TEST(test_disk_light_small_is_the_point_light)
 }
 END_TEST
 
+
+START_TEST(test_area_parallelogram_mean_against_other_routes)
+{
+    /* [ORACLE-RECT-FAR] The mean over a parallelogram by nested quadrature,
+     * against the corner form (inverse square, a rectangle) and the contour
+     * (linear, any parallelogram) where the light is large enough for them
+     * to keep their digits, and against phi at the centre for a light of
+     * 1e-9 (the mean differs from it by O((size/R)^2) = 1e-19). */
+    area_kernel inv = {1.5, 0, FALLOFF_INVERSE_SQUARE}, lin = {1.5, 0.3, FALLOFF_LINEAR};
+    const double o[2] = {2, 1}, u[2] = {0.4, 0}, v[2] = {0, 0.3};
+    double area = 0.4 * 0.3;
+    ck_assert_rel(area_parallelogram_mean(&inv, o, u, v), area_rect_solid_angle(1.5, 2, 2.4, 1, 1.3) / area, 1e-12);
+    const double poly[4][2] = {{2, 1}, {2.4, 1}, {2.4, 1.3}, {2, 1.3}};
+    ck_assert_rel(area_parallelogram_mean(&lin, o, u, v), area_polygon(&lin, poly, 4) / area, 1e-11);
+    const double su[2] = {0.3, 0.1}, sv[2] = {0.05, 0.2};
+    const double skew[4][2] = {{2, 1}, {2.3, 1.1}, {2.35, 1.3}, {2.05, 1.2}};
+    double skew_area = 0.3 * 0.2 - 0.1 * 0.05;
+    ck_assert_rel(area_parallelogram_mean(&inv, o, su, sv), area_polygon(&inv, skew, 4) / skew_area, 1e-11);
+    ck_assert_rel(area_parallelogram_mean(&lin, o, su, sv), area_polygon(&lin, skew, 4) / skew_area, 1e-11);
+    const double tu[2] = {1e-9, 0}, tv[2] = {0, 1e-9};
+    double centre = hypot(1.5, hypot(2 + 0.5e-9, 1 + 0.5e-9));
+    ck_assert_rel(area_parallelogram_mean(&inv, o, tu, tv), area_phi(&inv, centre), 1e-14);
+    ck_assert_rel(area_parallelogram_mean(&lin, o, tu, tv), area_phi(&lin, centre), 1e-14);
+}
+END_TEST
+
+START_TEST(test_rect_light_small_against_a_long_double_rule)
+{
+    /* Attack 10, finding 3: a square light of edge e at the corner
+     * [-1, 2, -0.75] over the floor point under an orthographic pixel; the
+     * ratio of its exact value to the point light's at that corner (family
+     * plane_point) is E(rect)/E(corner), 1.00000047191 at e = 1e-6 and
+     * 1.0000047191 at 1e-5 by tests/attack10/rect_mean.c (a 24 x 24
+     * Gauss-Legendre rule in long double, printed to 12 digits).  Before,
+     * the corner form gave 0.999898283 and 1.000003848. */
+    img_buf rect = exact_image("tests/attack10/oracle_rect_tiny.scene", 1, 1);
+    img_buf point = exact_image("tests/attack10/oracle_rect_tiny_point.scene", 1, 1);
+    ck_assert_rel(img_pixel(&rect, 0, 0)[0] / img_pixel(&point, 0, 0)[0], 1.00000047191, 1e-11);
+    img_free(&rect);
+    img_free(&point);
+}
+END_TEST
 START_TEST(test_oracle_camera_up_of_any_length)
 {
     /* Attack 9, finding 5: up [0, 1, 1e200] is up [0, 0, 1] to 1e-200, so
@@ -805,6 +847,7 @@ Suite *suite_oracle_area(void)
     tcase_add_test(area, test_area_polygon_linear_against_references);
     tcase_add_test(area, test_area_disk_solid_angle_paxton);
     tcase_add_test(area, test_area_disk_mean_far_against_the_2d_route);
+    tcase_add_test(area, test_area_parallelogram_mean_against_other_routes);
     tcase_add_test(area, test_area_disk_on_axis_closed_forms);
     tcase_add_test(area, test_area_contour_weight_limit_and_slope);
     tcase_add_test(area, test_area_disk_minus_disk_against_polar_route);
@@ -822,6 +865,7 @@ Suite *suite_oracle_area(void)
     tcase_add_test(fam, test_area_tolerance_falls_with_samples);
     tcase_add_test(fam, test_oracle_camera_up_of_any_length);
     tcase_add_loop_test(fam, test_disk_light_small_is_the_point_light, 0, 2);
+    tcase_add_test(fam, test_rect_light_small_against_a_long_double_rule);
     /* Whole renders of up to 1024 light samples a pixel: about 1 s each alone,
      * several times that beside other builds on a shared 2-core machine. */
     tcase_set_timeout(fam, 20);

@@ -75,6 +75,23 @@ START_TEST(test_lambert_cone_by_hand)
     ck_assert_near(exact_at(s, 0, 0.5), 1.05, 1e-14);
     ck_assert_near(exact_at(s, 0.3, 0.5), 0.95, 1e-14);
     scene_free(s);
+    /* The same view from 1e4 and 1e6 away: an orthographic image does not
+     * move (attack 10, finding 6: from 1e3 away every pixel was ambiguous);
+     * the line's start is known to an ulp of the eye's distance. */
+    static const char *const far_eyes[] = {"1e4", "1e6"};
+    for (int i = 0; i < 2; i++) {
+        char text[512];
+        snprintf(text, sizeof text,
+                 "camera { orthographic eye [%s, 0, 0] look_at [0, 0, 0] up [0, 0, 1] width 2 }\n"
+                 "ambient { color 0.1 }\ndistant_light { direction [-1, 0, -1] power 2 }\n"
+                 "cone { from [0, 0, 0] to [0, 0, 1] radii 1 0 material { Kd 0.5 } }\n",
+                 far_eyes[i]);
+        s = load_family("lambert_cone", text);
+        ck_assert_near(exact_at(s, 0, 0.5), 1.05, 1e-9);
+        ck_assert_near(exact_at(s, 0.3, 0.5), 0.95, 1e-9);
+        ck_assert_near(exact_at(s, 0.8, 0.5), 0.1, 0);
+        scene_free(s);
+    }
     s = load_family("lambert_cone",
                     "camera { orthographic eye [0, 0, 10] look_at [0, 0, 0] up [0, 1, 0] width 2 }\n"
                     "ambient { color 0.1 }\ndistant_light { direction [-1, 0, -1] power 2 }\n"

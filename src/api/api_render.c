@@ -2,6 +2,7 @@
  * api_render.c - the public API's rendering: renderers, regions into the
  * caller's float buffer, whole images (refray.h).
  */
+#include <stdint.h>
 #include <string.h>
 #include "api/convert.h"
 #include "base/cancel.h"
@@ -29,13 +30,16 @@ static int on_row(void *ctx, int done, int total)
     return stop_asked(o);
 }
 
-/* [EMBED-API-11] Whether the image size ro overrides keeps to the limits
- * the scene was loaded with, as the scene's own size had to. */
-static int size_fits(const scene_model *s, const render_opts *ro)
+/* [EMBED-API-11] Whether what ro overrides (the image size, the camera and
+ * light samples, the depth) keeps to the limits the scene was loaded with,
+ * as the scene's own statements had to (the refray program refuses the
+ * same overrides: --samples 65 is over --max-samples 64). */
+static int options_fit(const scene_model *s, const render_opts *ro)
 {
     double w = ro->width ? ro->width : s->image.width, h = ro->height ? ro->height : s->image.height;
-    return w <= (double)s->max_image.width && h <= (double)s->max_image.height &&
-           w * h <= (double)s->max_image.pixels;
+    return w <= (double)s->max_render.width && h <= (double)s->max_render.height &&
+           w * h <= (double)s->max_render.pixels && ro->samples <= s->max_render.samples &&
+           ro->light_samples <= s->max_render.light_samples && ro->max_depth <= s->max_render.depth;
 }
 
 rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, rf_renderer **out)
@@ -45,7 +49,7 @@ rf_status rf_renderer_create(const rf_scene *scene, const rf_render_options *o, 
     if (!out)
         return RF_ERR_USAGE;
     *out = NULL;
-    if (!s || !api_render_opts(o, &ro) || !size_fits(s, &ro))
+    if (!s || !api_render_opts(o, &ro) || !options_fit(s, &ro))
         return RF_ERR_USAGE;
     rf_renderer *r = mem_alloc(&s->mem, sizeof *r);
     if (!r)
@@ -84,9 +88,12 @@ static rf_status region(rf_renderer *r, int x0, int y0, int x1, int y1, float *f
     if (x0 < 0 || y0 < 0 || x1 > st->width || y1 > st->height || x0 >= x1 || y0 >= y1 || (!f32 && !f64) ||
         row_stride < 3 * (size_t)(x1 - x0))
         return RF_ERR_USAGE;
-    /* The last row ends (rows - 1) * row_stride + 3 * columns floats in: a
-     * stride so large that this wraps around would write before pixels. */
-    if ((size_t)(y1 - y0 - 1) > ((size_t)-1 - 3 * (size_t)(x1 - x0)) / row_stride)
+    /* The last row ends (rows - 1) * row_stride + 3 * columns elements in.
+     * The bound is in elements a pointer can step over (its byte offset
+     * within PTRDIFF_MAX): a bound in elements alone let the byte address
+     * wrap, and a stride of SIZE_MAX / 2 floats wrote pixels[-1]. */
+    size_t reach = (size_t)PTRDIFF_MAX / (f32 ? sizeof *f32 : sizeof *f64);
+    if ((size_t)(y1 - y0 - 1) > (reach - 3 * (size_t)(x1 - x0)) / row_stride)
         return RF_ERR_USAGE;
     if (stop_asked(&r->options))
         return RF_ERR_CANCELLED;

@@ -158,15 +158,19 @@ int cli_check_render_sizes(const render_opts *r, const scene_limits *lim)
     return cli_check_sizes(r->width, r->height, r->samples, r->light_samples, r->max_depth, lim);
 }
 
+int cli_check_view_size(const scene_model *s, int width, int height)
+{
+    diag d;
+    if (width == s->image.width && height == s->image.height)
+        return 0; /* the scene's own size: the load checked it */
+    diag_init(&d, &s->sources, diag_print, stderr);
+    return scene_check_view(s, width, height, &d) ? 0 : STATUS_DATA;
+}
+
 int cli_check_view(const rf_scene *scene, const render_opts *r)
 {
     const scene_model *s = api_scene(scene);
-    diag d;
-    if (!r->width && !r->height)
-        return 0; /* the scene's own size: the load checked it */
-    diag_init(&d, &s->sources, diag_print, stderr);
-    int w = r->width ? r->width : s->image.width, h = r->height ? r->height : s->image.height;
-    return scene_check_view(s, w, h, &d) ? 0 : STATUS_DATA;
+    return cli_check_view_size(s, r->width ? r->width : s->image.width, r->height ? r->height : s->image.height);
 }
 
 int cli_parse_command(const char *command, const char *help, int argc, char **argv, cli_scene_opts *scene,

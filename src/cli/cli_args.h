@@ -63,6 +63,8 @@ int cli_check_render_sizes(const render_opts *r, const scene_limits *lim);
  * orthographic view (scene_check_view): 0, or STATUS_DATA after the error
  * at the camera's width, before anything is rendered or written. */
 int cli_check_view(const rf_scene *scene, const render_opts *r);
+/* The same for a width and height given whole (refray oracle's view). */
+int cli_check_view_size(const scene_model *s, int width, int height);
 
 /* The options of an image file (--linear --exr-float --exposure
  * --bit-depth --tone) into o; 1 consumed, 0 error reported, -1 not one. */

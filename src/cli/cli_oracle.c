@@ -120,7 +120,12 @@ static int exact_of(const oracle_args *a, const scene_model *s)
     char why[512];
     if (!cli_view_fits(&v, &a->scene.limits, why, sizeof why))
         return cli_usage_error("oracle: %s", why);
-    int status;
+    /* [LANG-EXTENT-1] As render refuses it: an exact image of rays that
+     * start outside the extent is no image refray vouches for (attack 10,
+     * finding 8). */
+    int status = cli_check_view_size(s, v.width, v.height);
+    if (status != 0)
+        return status;
     const oracle_family *f = verify_family(s, &v, &status, why, sizeof why);
     if (!f) {
         cli_error("%s: %s", a->input, why);

@@ -154,11 +154,16 @@ static void print_psnr(double psnr)
         printf(" %8s", "inf");
 }
 
+static const char *verdict_word(verify_verdict v)
+{
+    static const char *const words[] = {"pass", "FAIL", "REFUSED", "ERROR"};
+    return words[v];
+}
+
 static void print_row(const verify_result *r, int w)
 {
-    static const char *const verdicts[] = {"pass", "FAIL", "REFUSED", "ERROR"};
     printf("%-*s  %-*s", w, r->scene, family_width(), r->family[0] ? r->family : "-");
-    if (r->verdict == VERIFY_PASS || r->verdict == VERIFY_FAIL) {
+    if (r->measured) {
         const image_metrics *m = &r->metrics;
         printf(" %7ld %6ld %10.3e %10.3e %10.3e", (long)r->width * r->height, m->excluded, m->max_abs, m->rms,
                m->max_rel);
@@ -169,7 +174,7 @@ static void print_row(const verify_result *r, int w)
         printf(" %7s %6s %10s %10s %10s %8s %6s %9s %9s %9s %12s", "-", "-", "-", "-", "-", "-", "-", "-", "-", "-",
                "-");
     }
-    printf("  %s\n", verdicts[r->verdict]);
+    printf("  %s\n", verdict_word(r->verdict));
     if (r->verdict == VERIFY_FAIL && r->metrics.compared > 0)
         printf("    %s; largest error at pixel (%d, %d)\n", r->reason, r->metrics.worst_x, r->metrics.worst_y);
     else if (r->verdict != VERIFY_PASS)
@@ -233,7 +238,7 @@ static void print_sweep(const verify_sweep *sw, const verify_result *steps, int 
     const verify_result *r = &steps[0];
     printf("%s: family %s%s, sweep %s\n", r->scene, r->family[0] ? r->family : "-",
            r->sampled ? " (sampled)" : " (deterministic)", verify_sweep_name(sw->kind));
-    if (r->verdict == VERIFY_REFUSED || r->verdict == VERIFY_ERROR) {
+    if (!r->measured) {
         printf("    %s\n", r->reason);
         return;
     }
@@ -243,7 +248,7 @@ static void print_sweep(const verify_sweep *sw, const verify_result *steps, int 
         const image_metrics *m = &steps[i].metrics;
         printf("  %7d %10.0f %10.3e %10.3e %10.3e %6ld %9.2e %9.3f %12ld  %s\n", sw->values[i],
                verify_sweep_n(sw, i), m->max_abs, m->rms, m->max_rel, m->over, steps[i].tolerance,
-               steps[i].render_seconds, steps[i].rays, steps[i].verdict == VERIFY_PASS ? "pass" : "FAIL");
+               steps[i].render_seconds, steps[i].rays, verdict_word(steps[i].verdict));
     }
     print_order("N:", vs_n);
     print_order("seconds:", vs_time);

@@ -191,6 +191,7 @@ static int locate(const area_setup *s, oracle_ray r, receiver *rec)
 typedef struct light_view {
     area_kernel k;
     double poly[4][2];       /* rectangle: corners */
+    double edge[2][2];       /* rectangle: its edges U and V */
     double c[2], r;          /* disk: centre, radius */
     int shadowed;            /* 1: the occluder's shadow disk below applies */
     double sc[2], sr;
@@ -219,6 +220,10 @@ static int view_light(const area_setup *s, const receiver *rec, light_view *lv)
                           vec_add(l->position, vec_add(l->edge_u, l->edge_v)), vec_add(l->position, l->edge_v)};
         for (int i = 0; i < 4; i++)
             plane_coords(s, rec->p, corner[i], lv->poly[i]);
+        /* From the edges themselves, not corner differences, which keep only
+         * the digits the corners' distance leaves them. */
+        lv->edge[0][0] = vec_dot(l->edge_u, s->e1), lv->edge[0][1] = vec_dot(l->edge_u, s->e2);
+        lv->edge[1][0] = vec_dot(l->edge_v, s->e1), lv->edge[1][1] = vec_dot(l->edge_v, s->e2);
         return 1;
     }
     plane_coords(s, rec->p, l->position, lv->c);
@@ -263,7 +268,8 @@ static double light_integral(const area_setup *s, const receiver *rec, const lig
 
 /* The mean of phi over the light: a whole disk far from the point by its
  * series (inverse square, d0 = 0) or by quadrature about its centre (the
- * other falloffs), either giving the mean itself: Paxton's form and the
+ * other falloffs), a far rectangle by quadrature over it, each giving the
+ * mean itself: Paxton's form and the
  * contour lose 1e-16 of the disk's whole solid angle, 1e-16/a^2 on the
  * mean (attack 9, finding 4); else the integral over the area. */
 static double light_mean(const area_setup *s, const receiver *rec, const light_view *lv)
@@ -274,6 +280,13 @@ static double light_mean(const area_setup *s, const receiver *rec, const light_v
     if (l->kind == LIGHT_DISK && !lv->shadowed && lv->r <= AREA_DISK_FAR * hypot(lv->k.h, r0))
         return solid_angle ? area_disk_mean_far(lv->k.h, r0, lv->r)
                            : area_disk_mean_far_quadrature(&lv->k, r0, lv->r);
+    if (l->kind == LIGHT_RECTANGLE) {
+        double cx = lv->poly[0][0] + 0.5 * (lv->edge[0][0] + lv->edge[1][0]);
+        double cy = lv->poly[0][1] + 0.5 * (lv->edge[0][1] + lv->edge[1][1]);
+        double size = vec_length(l->edge_u) + vec_length(l->edge_v);
+        if (size <= AREA_DISK_FAR * hypot(lv->k.h, hypot(cx, cy)))
+            return area_parallelogram_mean(&lv->k, lv->poly[0], lv->edge[0], lv->edge[1]);
+    }
     return light_integral(s, rec, lv) / s->area;
 }
 

@@ -260,3 +260,35 @@ double area_disk_solid_angle(double h, double r0, double a)
         return 2 * M_PI - first - M_PI * lambda;
     return M_PI * lambda - first;
 }
+
+typedef struct para_ctx {
+    const area_kernel *k;
+    double ox, oy, ux, uy, vx, vy;   /* corner O, edges U and V, about the foot */
+    double s;                        /* current s */
+} para_ctx;
+
+/* phi at O + s U + t V. */
+static double para_inner(void *ctx, double t)
+{
+    const para_ctx *p = ctx;
+    double x = p->ox + p->s * p->ux + t * p->vx, y = p->oy + p->s * p->uy + t * p->vy;
+    return area_phi(p->k, hypot(p->k->h, hypot(x, y)));
+}
+
+static double para_outer(void *ctx, double s)
+{
+    para_ctx *p = ctx;
+    quad_result res;
+    p->s = s;
+    return quad_interval(para_inner, p, 0, 1, 0, AREA_REL_TOL, &res);
+}
+
+/* The map (s, t) -> O + s U + t V has a constant Jacobian, so the mean over
+ * the parallelogram is the mean over the unit square: a positive integrand,
+ * smooth (d >= h > 0), nothing subtracted and no area divided by. */
+double area_parallelogram_mean(const area_kernel *k, const double *o, const double *u, const double *v)
+{
+    para_ctx p = {k, o[0], o[1], u[0], u[1], v[0], v[1], 0};
+    quad_result res;
+    return quad_interval(para_outer, &p, 0, 1, 0, AREA_REL_TOL, &res);
+}

@@ -85,6 +85,13 @@ double area_disk_mean_far(double h, double r0, double a);
  * used for a <= AREA_DISK_FAR hypot(h, r0) in its place. */
 double area_disk_mean_far_quadrature(const area_kernel *k, double r0, double a);
 
+/* The mean of phi over the parallelogram O + s U + t V (s, t in [0, 1]),
+ * O, U, V in the light's plane about the foot point, for any falloff, by
+ * nested Gauss-Kronrod: the corner form and the contour lose 1e-16 of their
+ * O(1) parts, 1e-16 / area on the mean, so a light within AREA_DISK_FAR of
+ * its distance uses this in their place ([ORACLE-RECT-FAR]). */
+double area_parallelogram_mean(const area_kernel *k, const double *o, const double *u, const double *v);
+
 /* The solid angle of a disk of radius a at distance h whose centre is r0
  * off the perpendicular, in complete elliptic integrals (Paxton 1959). */
 double area_disk_solid_angle(double h, double r0, double a);

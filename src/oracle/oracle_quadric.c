@@ -141,8 +141,15 @@ static vec3 cone_normal(const oracle_frustum *f, vec3 p)
     return unit(vec_sub(vec_scale(u, sqrt(ap.c2)), ap.w));
 }
 
-oracle_chord_kind oracle_line_frustum(const oracle_frustum *f, vec3 o, vec3 d, double *s, vec3 *n)
+/* The line is first restarted at its point nearest the frustum's centre:
+ * the graze tests are relative to the quadric's coefficients, which grow
+ * with |o|, so from a far origin (an orthographic eye 1e3 sizes away) every
+ * line tested as grazing (attack 10, finding 6); s is shifted back. */
+oracle_chord_kind oracle_line_frustum(const oracle_frustum *f, vec3 o_far, vec3 d, double *s, vec3 *n)
 {
+    vec3 centre = vec_add(f->from, vec_scale(f->a, 0.5 * f->len));
+    double restart = vec_dot(vec_sub(centre, o_far), d) / vec_dot(d, d);
+    vec3 o = vec_add(o_far, vec_scale(d, restart));
     double scale = fmax(f->len, fmax(f->r0, f->r1)), margin = ORACLE_EDGE_MARGIN * scale;
     int cylinder = f->r0 == f->r1;
     side_set side;
@@ -185,7 +192,7 @@ oracle_chord_kind oracle_line_frustum(const oracle_frustum *f, vec3 o, vec3 d, d
      * exit together) */
     if (fabs(side.lo[best] - slo) <= margin || hi - lo <= margin)
         return ORACLE_CHORD_GRAZE;
-    *s = lo;
+    *s = lo + restart;
     vec3 p = vec_add(o, vec_scale(d, lo));
     if (side.lo[best] < slo) {
         *n = end == 0 ? vec_neg(f->a) : f->a;

@@ -232,11 +232,12 @@ typedef struct scene_model {
      * from SCENE_KEPT_FIRST bytes to SCENE_KEPT_LAST. */
     arena kept;
     mem mem;                   /* the allocator everything above came from */
-    /* The load's --max-width, --max-height and --max-pixels, which a
-     * renderer's size overrides are held to as the scene's own size was. */
+    /* The load's --max-width, --max-height, --max-pixels, --max-samples,
+     * --max-light-samples and --max-depth, which a renderer's overrides are
+     * held to as the scene's own statements were. */
     struct {
-        long width, height, pixels;
-    } max_image;
+        long width, height, pixels, samples, light_samples, depth;
+    } max_render;
 } scene_model;
 
 /* Limits on what an input may ask for, enforced before allocation. */

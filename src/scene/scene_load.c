@@ -63,9 +63,12 @@ static scene_model *load(const scene_source *root, const scene_load_opts *o, int
     }
     s->mem = m;
     arena_init_growing(&s->kept, &s->mem, SCENE_KEPT_FIRST, SCENE_KEPT_LAST);
-    s->max_image.width = o->limits.max_width;
-    s->max_image.height = o->limits.max_height;
-    s->max_image.pixels = o->limits.max_pixels;
+    s->max_render.width = o->limits.max_width;
+    s->max_render.height = o->limits.max_height;
+    s->max_render.pixels = o->limits.max_pixels;
+    s->max_render.samples = o->limits.max_samples;
+    s->max_render.light_samples = o->limits.max_light_samples;
+    s->max_render.depth = o->limits.max_depth;
     loader_scene_defaults(s);
     loader_init(&L, s, o);
     int file = source_set_add(&s->sources, root->path, root->text, root->len, src_span_none());

@@ -271,12 +271,12 @@ static int build_scene(const char *root, const char *path, const kit_opts *o, ma
     int status = load_exact(path, o, &s, &e, why, why_size);
     if (status == 0) {
         describe(s, &e, m);
-        if (!verify_tolerance_usable(m->relative)) {
-            snprintf(why, why_size, "'%s': %s (its error bound, relative, is %.3g)", path, VERIFY_INEXACT,
-                     m->relative);
+        if (!verify_tolerance_decisive(m->relative)) {
+            snprintf(why, why_size, "'%s': %s (its error bound, relative, is %.3g)", path,
+                     verify_tolerance_usable(m->relative) ? VERIFY_UNBOUNDED : VERIFY_INEXACT, m->relative);
             verify_exact_free(&e);
             scene_free(s);
-            return STATUS_FAIL;
+            return STATUS_DATA;
         }
         kit_job job = {m->name, s, &e, m};
         status = write_files(root, &job, why, why_size);

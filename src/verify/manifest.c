@@ -13,6 +13,7 @@
 #include "base/status.h"
 #include "base/text.h"
 #include "verify/manifest.h"
+#include "verify/verify.h"
 
 #ifndef REFRAY_HAVE_JSON
 #define REFRAY_HAVE_JSON 0
@@ -435,6 +436,8 @@ static int read_tolerance(reader *r, json_t *o, manifest_scene *s)
     if (!json_is_object(tol))
         return bad(r, "is missing or not an object", "tolerance");
     int status = get_number(r, tol, "relative", 0, &s->relative);
+    if (status == 0 && !verify_tolerance_decisive(s->relative))
+        return bad(r, "is 1 or more: " VERIFY_UNBOUNDED, "relative");
     return status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
 }
 

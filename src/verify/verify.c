@@ -106,6 +106,11 @@ int verify_tolerance_usable(double tolerance)
     return isfinite(tolerance) && tolerance >= 0;
 }
 
+int verify_tolerance_decisive(double tolerance)
+{
+    return verify_tolerance_usable(tolerance) && tolerance < 1;
+}
+
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason)
 {
     if (r->scene != path)
@@ -200,7 +205,13 @@ int verify_render_compare(const scene_model *s, const verify_opts *o, const veri
     }
     metrics_compare(&img, &e->image, e->excluded, r->tolerance, &r->metrics);
     img_free(&img);
+    r->measured = 1;
     judge(r);
+    if (r->verdict == VERIFY_PASS && !verify_tolerance_decisive(r->tolerance)) {
+        char why[sizeof r->reason];
+        snprintf(why, sizeof why, "%s (it is %.3g here: use more light samples)", VERIFY_UNBOUNDED, r->tolerance);
+        verify_result_error(r, r->scene, STATUS_FAIL, why);
+    }
     return r->status;
 }
 
@@ -337,7 +348,11 @@ int verify_sweep_run(const scene_model *s, const char *path, const verify_opts *
             return status_worse(worst, status);
         }
         have_exact = 1;
-        worst = status_worse(worst, verify_render_compare(s, &so, &e, &steps[i]));
+        int step = verify_render_compare(s, &so, &e, &steps[i]);
+        /* A step whose bound carries no verdict still measures the error
+         * the sweep is for; it does not fail the sweep. */
+        if (!(steps[i].measured && steps[i].verdict == VERIFY_REFUSED))
+            worst = status_worse(worst, step);
     }
     if (have_exact)
         verify_exact_free(&e);
@@ -351,7 +366,7 @@ static int fit_points(const verify_sweep *sw, const verify_result *steps, int co
     int m = 0;
     for (int i = 0; i < count && i < VERIFY_SWEEP_MAX; i++) {
         const verify_result *r = &steps[i];
-        if (r->verdict != VERIFY_PASS && r->verdict != VERIFY_FAIL)
+        if (!r->measured)
             continue;
         if (!(r->metrics.rms > VERIFY_ROUNDOFF * r->metrics.peak))
             continue;
@@ -368,7 +383,7 @@ static void order_of(const verify_sweep *sw, const verify_result *steps, int cou
     fit_loglog(x, y, m, &o->line);
     int rendered = 0;
     for (int i = 0; i < count; i++)
-        rendered += steps[i].verdict == VERIFY_PASS || steps[i].verdict == VERIFY_FAIL;
+        rendered += steps[i].measured;
     o->meaningful = 0;
     if (rendered == 0)
         snprintf(o->note, sizeof o->note, "not meaningful: no step was rendered");
@@ -404,7 +419,7 @@ void verify_sweep_orders(const verify_sweep *sw, const verify_result *steps, int
  */
 const char *verify_expected_order(const verify_result *r, const verify_sweep *sw)
 {
-    if (r->verdict == VERIFY_REFUSED || r->verdict == VERIFY_ERROR)
+    if (!r->measured)
         return "unknown: the scene was not checked";
     if (!r->sampled)
         return "none: exact at every step (deterministic family)";
@@ -519,7 +534,7 @@ void verify_json_result(FILE *fp, const verify_result *r)
         fputs("null", fp);
     else
         verify_json_string(fp, r->reason);
-    if (r->verdict == VERIFY_PASS || r->verdict == VERIFY_FAIL) {
+    if (r->measured) {
         json_key(fp, "sampled", 0);
         fputs(r->sampled ? "true" : "false", fp);
         json_long(fp, "width", r->width);
@@ -636,9 +651,9 @@ void verify_tsv_sweep(FILE *fp, const verify_sweep *sw, const verify_result *ste
                       const verify_order *vs_n, const verify_order *vs_time)
 {
     for (int i = 0; i < count; i++)
-        if (steps[i].verdict == VERIFY_PASS || steps[i].verdict == VERIFY_FAIL)
+        if (steps[i].measured)
             tsv_step(fp, sw, &steps[i], i);
-    if (count > 0 && (steps[0].verdict == VERIFY_PASS || steps[0].verdict == VERIFY_FAIL)) {
+    if (count > 0 && steps[0].measured) {
         tsv_order(fp, &steps[0], sw, "n", vs_n);
         tsv_order(fp, &steps[0], sw, "seconds", vs_time);
     }

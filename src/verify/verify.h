@@ -58,7 +58,9 @@ typedef struct verify_result {
     int width, height, samples, max_depth;
     int light_samples;        /* the override, 0 for each light's own */
     int sampled;              /* the family converges with the light samples */
-    image_metrics metrics;    /* valid when verdict is PASS or FAIL */
+    image_metrics metrics;    /* valid when measured */
+    int measured;             /* the render was compared: PASS, FAIL, or REFUSED
+                                 for a bound of 1 or more (VERIFY_UNBOUNDED) */
     double tolerance;         /* relative, the family's for this render */
     double render_seconds;    /* wall time of render_image, BVH build included
                                  (the median of opts.runs renders) */
@@ -88,12 +90,20 @@ oracle_view verify_view(const scene_model *s, const verify_opts *o);
  * cannot vouch for (spec/verify.md, "Refusals"). */
 #define VERIFY_INEXACT "the oracle cannot give this scene's image to the stated accuracy"
 
+/* The reason of a render judged against a relative bound of 1 or more: every
+ * value in [0, (1 + tol) exact] is within it, an image of zeros too, so it
+ * is not passed (spec/verify.md, [VERIFY-UNBOUNDED-1]). */
+#define VERIFY_UNBOUNDED "a relative error bound of 1 or more cannot tell the image from black"
+
+/* 1 when a usable tolerance can carry a verdict: below 1. */
+int verify_tolerance_decisive(double tolerance);
+
 /* The message for verify_exact_build's status (0: none). */
 const char *verify_exact_error(int status);
 
 /* 1 when a relative tolerance is a bound at all: finite and not negative.
- * (A bound above 1 is honest for a render of few light samples: verify
- * --sweep samples=1 asks for it.) */
+ * (A bound of 1 or more is honest for a render of few light samples, and
+ * a sweep measures its error, but no verdict rests on it: VERIFY_UNBOUNDED.) */
 int verify_tolerance_usable(double tolerance);
 
 const oracle_family *verify_family(const scene_model *s, const oracle_view *v, int *status, char *why,
