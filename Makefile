@@ -639,12 +639,14 @@ $(TESTBIN): $(TEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(TEST_OBJS) $(LIBRARY) $(ALL_LIBS) $(CHECK_LIBS)
 
-$(GEN)/scene.tab.c $(GEN)/scene.tab.h: grammar/scene.y
+# Grouped targets (&:, GNU make 4.3): one run of bison (of flex) writes both
+# files; as two plain targets, make -j2 ran it twice at once on the same files.
+$(GEN)/scene.tab.c $(GEN)/scene.tab.h &: grammar/scene.y
 	@mkdir -p $(GEN)
 	@echo "  BISON   $<"
 	$(Q)bison -Werror --defines=$(GEN)/scene.tab.h -o $(GEN)/scene.tab.c $<
 
-$(GEN)/scene.lex.c $(GEN)/scene.lex.h: grammar/scene.l
+$(GEN)/scene.lex.c $(GEN)/scene.lex.h &: grammar/scene.l
 	@mkdir -p $(GEN)
 	@echo "  FLEX    $<"
 	$(Q)flex --header-file=$(GEN)/scene.lex.h -o $(GEN)/scene.lex.c $<
