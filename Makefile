@@ -518,19 +518,36 @@ TEST_TIMEOUT := $(if $(filter 1,$(VALGRIND)),40,$(if $(filter 1,$(SANITIZE)),8,$
 KIT_CHECK := $(BUILD)/kit_check
 # With JSON, the exports are checked against spec/scene.schema.json by a
 # validator in Python (tests/json_schema.sh) and the Mitsuba adapter's
-# decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh), on
-# the other core while the suite runs; their report follows the suite's.
-SCHEMA_LOG := $(BUILD)/json-schema.log
+# decisions by its --dry-run, without Mitsuba (tests/mitsuba_adapter.sh).
 # The bench-pov driver is built (not run) in the default configuration, so
 # a change of the difftest code it shares cannot break `make bench-pov` unseen.
+#
+# Each suite runs in a check_refray process of its own, one make job each,
+# so `make -j2 check` keeps two cores busy (make checks one suite at a time
+# without -j); -k runs every suite whatever fails, -Otarget prints each
+# suite's report whole.  The suites are those of the runner (suites.h, the
+# same sed), the slowest first (SUITES_FIRST, measured by their time under
+# SANITIZE=1) so that none starts last and runs alone; a name there that is
+# no suite fails the run (check_refray refuses it).
+SUITE_SED    := s/^Suite \*suite_\([a-z0-9_]*\)(void).*/\1/p
+SUITES       := $(shell sed -n '$(SUITE_SED)' $(TEST_SRCS) | LC_ALL=C sort)
+SUITES_FIRST := json scaling reliability stability faults oracle_area json_memory shortcuts verify badscenes random_scenes kit
+SUITE_RUNS   := $(addprefix test-suite-,$(SUITES_FIRST) $(filter-out $(SUITES_FIRST),$(SUITES)))
+TEST_ENV = REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) GEN_BIN_DIR=$(BUILD) REFRAY_TEST_VALGRIND=$(VALGRIND) \
+           CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT)
+.PHONY: test-run test-schema $(SUITE_RUNS)
+
 test: $(TESTBIN) $(REFRAY) $(REFRAY_LD) $(KIT_CHECK) $(GEN_BINS) $(if $(VARIANT),,$(BENCH_POV))
-	$(Q)rm -f $(SCHEMA_LOG); $(if $(filter 1,$(JSON)),{ { sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && \
-	  sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry; } > $(SCHEMA_LOG) 2>&1; echo "exit $$?" >> $(SCHEMA_LOG); } &) \
-	REFRAY_BIN=$(REFRAY) KIT_CHECK_BIN=$(KIT_CHECK) GEN_BIN_DIR=$(BUILD) REFRAY_TEST_VALGRIND=$(VALGRIND) CK_TIMEOUT_MULTIPLIER=$(TEST_TIMEOUT) \
-	  $(VALGRIND_CMD) $(TESTBIN); rc=$$?; wait; \
-	if [ -f $(SCHEMA_LOG) ]; then cat $(SCHEMA_LOG); tail -n 1 $(SCHEMA_LOG) | grep -qx 'exit 0' || rc=1; fi; \
-	exit $$rc
+	$(Q)$(MAKE) --no-print-directory -k -Otarget test-run
 	$(Q)$(MAKE) --no-print-directory embed
+
+test-run: $(if $(filter 1,$(JSON)),test-schema) $(SUITE_RUNS)
+
+$(SUITE_RUNS): test-suite-%:
+	$(Q)$(TEST_ENV) $(VALGRIND_CMD) $(TESTBIN) $*
+
+test-schema:
+	$(Q)sh tests/json_schema.sh $(REFRAY) $(BUILD)/json-schema && sh tests/mitsuba_adapter.sh $(REFRAY) $(BUILD)/mitsuba-dry
 
 # The library as a host sees it: installed into $(STAGE), the two examples
 # of tests/embed built with pkg-config against it and run, and the symbols
@@ -622,12 +639,14 @@ $(TESTBIN): $(TEST_OBJS) $(LIBRARY)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDFLAGS) -o $@ $(TEST_OBJS) $(LIBRARY) $(ALL_LIBS) $(CHECK_LIBS)
 
-$(GEN)/scene.tab.c $(GEN)/scene.tab.h: grammar/scene.y
+# Grouped targets (&:, GNU make 4.3): one run of bison (of flex) writes both
+# files; as two plain targets, make -j2 ran it twice at once on the same files.
+$(GEN)/scene.tab.c $(GEN)/scene.tab.h &: grammar/scene.y
 	@mkdir -p $(GEN)
 	@echo "  BISON   $<"
 	$(Q)bison -Werror --defines=$(GEN)/scene.tab.h -o $(GEN)/scene.tab.c $<
 
-$(GEN)/scene.lex.c $(GEN)/scene.lex.h: grammar/scene.l
+$(GEN)/scene.lex.c $(GEN)/scene.lex.h &: grammar/scene.l
 	@mkdir -p $(GEN)
 	@echo "  FLEX    $<"
 	$(Q)flex --header-file=$(GEN)/scene.lex.h -o $(GEN)/scene.lex.c $<
@@ -636,7 +655,7 @@ $(GEN)/scene.lex.c $(GEN)/scene.lex.h: grammar/scene.l
 # new test file needs no edit anywhere else.
 $(GEN)/suites.h: $(TEST_SRCS)
 	@mkdir -p $(GEN)
-	$(Q)sed -n 's/^Suite \*suite_\([a-z0-9_]*\)(void).*/SUITE(\1)/p' $(TEST_SRCS) | LC_ALL=C sort > $@.tmp && mv $@.tmp $@
+	$(Q)printf 'SUITE(%s)\n' $(SUITES) > $@.tmp && mv $@.tmp $@
 
 $(BUILD)/obj/gen/%.o: $(GEN)/%.c $(GEN_HDRS)
 	@mkdir -p $(dir $@)
