@@ -603,8 +603,6 @@ static int classify(build_ctx *ctx, const scene_prim *prims, int count, build_it
         if (i % 64 == 0 && cancel_step(ctx->cancel))
             break;
         int parts = isect_part_count(&prims[i]), kept = bounded;
-        if (prims[i].kind == PRIM_MESH || prims[i].kind == PRIM_TRIANGLE)
-            b->triangles = 1;
         for (int k = 0; k < parts; k++)
             bounded += item_of(&prims[i], i, k, &items[bounded]);
         if (bounded - kept == parts) {
