@@ -54,6 +54,33 @@ static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, rea
 #define TIE_REL 0x1p-46
 enum { TIE_MAX = 8 };
 
+/* The ray's triangle shear, made at the first triangle test: most rays of
+ * a scene with a few triangles test none (room.scene's two-triangle mirror:
+ * the shear's divisions for every ray were 3 % of its instructions).  The
+ * same shear, isect_shear_make of the same direction, whenever it is made. */
+typedef struct lazy_shear {
+    const ray *r;
+    int made;
+    isect_shear sh;
+} lazy_shear;
+
+static const isect_shear *shear_get(lazy_shear *z)
+{
+    if (!z->made) {
+        isect_shear_make(z->r, &z->sh);
+        z->made = 1;
+    }
+    return &z->sh;
+}
+
+/* The shear a test of p reads: a mesh's or a world-frame triangle's (the
+ * hot triangles), NULL for any other part, which reads none (intersect.c,
+ * part_hits: a transformed part makes its own for its local ray). */
+static const isect_shear *shear_for(lazy_shear *z, const scene_prim *p)
+{
+    return p->kind == PRIM_MESH || (p->kind == PRIM_TRIANGLE && !p->frame) ? shear_get(z) : NULL;
+}
+
 typedef struct nearest {
     ray rr;
     hit cand[TIE_MAX];  /* the hits within the window of t_near */
@@ -69,7 +96,7 @@ typedef struct nearest {
     real slack;         /* TIE_REL * |origin| */
     real tmax0;         /* the caller's tmax */
     bvh_stats *stats;
-    const isect_shear *sh; /* the ray's triangle shear, NULL without triangles */
+    lazy_shear sh;      /* the ray's triangle shear */
 } nearest;
 
 static real tie_end(real t_near, real slack)
@@ -145,7 +172,7 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
     hit h;
     if (ns->stats)
         ns->stats->prims_tested++;
-    if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, ns->sh, &h))
+    if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, shear_for(&ns->sh, &prims[ref.prim]), &h))
         return;
     h.prim = ref.prim;
     nearest_add(ns, &h, 0);
@@ -173,7 +200,7 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
         }
         return;
     }
-    if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, ns->sh, &h.t))
+    if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, shear_get(&ns->sh), &h.t))
         return;
     h.prim = b->items[i].prim;
     h.part = b->items[i].part;
@@ -190,14 +217,13 @@ static int nearest_winner(const nearest *ns)
     return best;
 }
 
-/* The ray's triangle shear in *sh when the tree holds a triangle, else
- * NULL (nothing would read it). */
-static const isect_shear *shear_of(const bvh *b, const ray *r, isect_shear *sh)
+/* r's shear, not made yet (r must outlast it). */
+static lazy_shear shear_lazy(const ray *r)
 {
-    if (!b->triangles)
-        return NULL;
-    isect_shear_make(r, sh);
-    return sh;
+    lazy_shear z;
+    z.r = r;
+    z.made = 0;
+    return z;
 }
 
 typedef struct stack_entry {
@@ -271,8 +297,7 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
     ns.t_near = ns.tmax0 = r->tmax;
     ns.slack = TIE_REL * vec_max_abs(r->origin);
     ns.stats = stats;
-    isect_shear sh;
-    ns.sh = shear_of(b, r, &sh);
+    ns.sh = shear_lazy(r);
     nearest_pass(b, prims, &ns);
     if (ns.overflow) {
         ns.rr = *r;
@@ -290,7 +315,8 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
     if (ns.deferred[w]) {
         ray at = *r;
         at.tmax = ns.cand_tmax[w];
-        int met = isect_part_sheared(&prims[ns.cand[w].prim], ns.cand[w].part, &at, ns.sh, h);
+        int met = isect_part_sheared(&prims[ns.cand[w].prim], ns.cand[w].part, &at,
+                                     shear_for(&ns.sh, &prims[ns.cand[w].prim]), h);
         assert(met && h->t == ns.cand[w].t);
         (void)met;
         h->prim = ns.cand[w].prim;
@@ -320,7 +346,7 @@ typedef struct walk {
     int (*count_fn)(void *ctx, bvh_ref ref, int crossings);
     void *ctx;
     bvh_stats *stats;
-    const isect_shear *sh;
+    lazy_shear *sh;
 } walk;
 
 static int visit_part(const walk *w, bvh_ref ref)
@@ -329,10 +355,11 @@ static int visit_part(const walk *w, bvh_ref ref)
     if (w->stats)
         w->stats->prims_tested++;
     if (w->count_fn) {
-        int n = isect_part_crossings_sheared(&w->prims[ref.prim], ref.part, w->r, w->sh);
+        const scene_prim *p = &w->prims[ref.prim];
+        int n = isect_part_crossings_sheared(p, ref.part, w->r, shear_for(w->sh, p));
         return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
     }
-    int n = isect_part_all_sheared(&w->prims[ref.prim], ref.part, w->r, w->sh, out);
+    int n = isect_part_all_sheared(&w->prims[ref.prim], ref.part, w->r, shear_for(w->sh, &w->prims[ref.prim]), out);
     for (int i = 0; i < n; i++) {
         out[i].prim = ref.prim;
         int stop = w->fn(w->ctx, &out[i]);
@@ -350,7 +377,8 @@ static int visit_item(const bvh *b, const walk *w, int i)
         return visit_part(w, b->items[i]);
     if (w->stats)
         w->stats->prims_tested++;
-    int n = isect_hot_crossings(hr.code, b->hot_reals + hr.at, w->r, w->sh);
+    int n = isect_hot_crossings(hr.code, b->hot_reals + hr.at, w->r,
+                                ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE ? shear_get(w->sh) : NULL);
     return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
 }
 
@@ -439,8 +467,8 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
-    isect_shear sh;
-    walk w = {prims, r, fn, NULL, ctx, stats, shear_of(b, r, &sh)};
+    lazy_shear sh = shear_lazy(r);
+    walk w = {prims, r, fn, NULL, ctx, stats, &sh};
     return walk_all(b, &w, NULL);
 }
 
@@ -453,8 +481,8 @@ int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
 int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
                      int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
 {
-    isect_shear sh;
-    walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
+    lazy_shear sh = shear_lazy(r);
+    walk w = {prims, r, NULL, fn, ctx, stats, &sh};
     return walk_all(b, &w, NULL);
 }
 
@@ -474,7 +502,7 @@ int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r,
 {
     if (!bundle || bundle->count < 0)
         return bvh_visit_counts(b, prims, r, fn, ctx, stats);
-    isect_shear sh;
-    walk w = {prims, r, NULL, fn, ctx, stats, shear_of(b, r, &sh)};
+    lazy_shear sh = shear_lazy(r);
+    walk w = {prims, r, NULL, fn, ctx, stats, &sh};
     return walk_all(b, &w, bundle);
 }

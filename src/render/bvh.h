@@ -68,8 +68,6 @@ typedef struct bvh {
                           spec/shading.md, [SHADE-SHORTCUT-BVH-1]); 0 after
                           bvh_build */
     int unbounded_cap;
-    int triangles;     /* 1: some part is a triangle (queries make the ray's
-                          triangle shear once, isect_shear_make) */
     bvh_hot *hot;      /* item_count records, beside items */
     real *hot_reals;   /* inside hot_block, aligned to 32 bytes */
     void *hot_block;

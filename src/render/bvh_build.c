@@ -158,10 +158,16 @@ typedef struct binning {
     int bins;
 } binning;
 
+/* c lies in the node's centroid bounds (each centroid made by the same
+ * operations), so x lies in [0, bins] up to a few roundings and its
+ * conversion is defined: the lower clamp tests the integer, not x (a
+ * branch, mispredicted where many centroids share the least coordinate),
+ * and gives what a test of x > 0 gave. */
 static int bin_of(const binning *bn, int axis, real c)
 {
     real x = (c - bn->lo[axis]) * bn->scale[axis];
-    int k = x > 0.0 ? (int)x : 0;
+    int k = (int)x;
+    k = k > 0 ? k : 0;
     return k < bn->bins ? k : bn->bins - 1;
 }
 
@@ -196,45 +202,77 @@ static real coordinate(const vec3 *v, size_t at)
     return *(const real *)(const void *)((const char *)v + at);
 }
 
+/* Adds a run of items (their box, count and summed cost) to a bin. */
+static void bin_add(bin *bk, vec3 lo, vec3 hi, int count, real cost)
+{
+    bk->lo = vmin(bk->lo, lo);
+    bk->hi = vmax(bk->hi, hi);
+    bk->count += count;
+    bk->cost += cost;
+}
+
 /* Every item into its bin on one axis: only that coordinate of the
  * centroid is made (the same operations as centroid's), and no axis is
- * chosen per item.  Each bin takes its items in their order, as when the
- * three axes were binned in one pass: the same bits. */
+ * chosen per item.  A run of items falling into the same bin is gathered
+ * in registers and added to its bin once: updating the bin in memory item
+ * by item made each item wait for the last one's stores (neighbouring
+ * parts share a bin).  The same bits whatever the grouping: a bin's box is
+ * a minimum and a maximum, exact in any order, and its count and cost are
+ * sums of 1 and TRIANGLE_COST, multiples of 1/2 far below 2^52, exact in
+ * any order too. */
 static void bin_axis(build_ctx *ctx, int begin, int end, const binning *bn, int axis)
 {
     bin *bins = ctx->bins[axis];
     size_t off = axis_at[axis];
-    for (int i = begin; i < end; i++) {
-        const build_item *it = &ctx->items[i];
-        real c = (coordinate(&it->lo, off) + coordinate(&it->hi, off)) * 0.5;
-        bin *bk = &bins[bin_of(bn, axis, c)];
-        bk->lo = vmin(bk->lo, it->lo);
-        bk->hi = vmax(bk->hi, it->hi);
-        bk->count++;
-        bk->cost += it->cost;
+    const build_item *it = &ctx->items[begin];
+    if (begin >= end)
+        return;
+    int k = bin_of(bn, axis, (coordinate(&it->lo, off) + coordinate(&it->hi, off)) * 0.5), count = 1;
+    vec3 lo = it->lo, hi = it->hi;
+    real cost = it->cost;
+    for (int i = begin + 1; i < end; i++) {
+        it = &ctx->items[i];
+        int j = bin_of(bn, axis, (coordinate(&it->lo, off) + coordinate(&it->hi, off)) * 0.5);
+        if (j != k) {
+            bin_add(&bins[k], lo, hi, count, cost);
+            k = j;
+            lo = it->lo;
+            hi = it->hi;
+            count = 1;
+            cost = it->cost;
+            continue;
+        }
+        lo = vmin(lo, it->lo);
+        hi = vmax(hi, it->hi);
+        count++;
+        cost += it->cost;
     }
+    bin_add(&bins[k], lo, hi, count, cost);
 }
 
-/* Every item into its bin on each binned axis, an axis at a time.
- * Returns the node's own cost (as a leaf). */
+/* Every item into its bin on each binned axis, an axis at a time (an axis
+ * not binned is neither cleared nor read).  Returns the node's own cost (as
+ * a leaf): the sum of a binned axis's bins, which hold every item once and
+ * sum exactly in any order (bin_axis), so the items need no pass of their
+ * own for it.  Called only when some axis is binned. */
 static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 {
     real total = 0.0;
-    for (int a = 0; a < 3; a++)
+    int summed = -1;
+    for (int a = 0; a < 3; a++) {
+        if (bn->scale[a] == 0.0)
+            continue;
         for (int k = 0; k < bn->bins; k++) {
             ctx->bins[a][k].lo = vec_splat(INFINITY);
             ctx->bins[a][k].hi = vec_splat(-INFINITY);
             ctx->bins[a][k].count = 0;
             ctx->bins[a][k].cost = 0.0;
         }
-    for (int i = begin; i < end; i++)
-        total += ctx->items[i].cost;
-    if (bn->scale[0] != 0.0)
-        bin_axis(ctx, begin, end, bn, 0);
-    if (bn->scale[1] != 0.0)
-        bin_axis(ctx, begin, end, bn, 1);
-    if (bn->scale[2] != 0.0)
-        bin_axis(ctx, begin, end, bn, 2);
+        bin_axis(ctx, begin, end, bn, a);
+        summed = summed < 0 ? a : summed;
+    }
+    for (int k = 0; summed >= 0 && k < bn->bins; k++)
+        total += ctx->bins[summed][k].cost;
     return total;
 }
 
@@ -249,21 +287,21 @@ static real fill_bins(build_ctx *ctx, int begin, int end, const binning *bn)
 static real sah_axis(const build_ctx *ctx, int axis, int nb, int *split)
 {
     const bin *bins = ctx->bins[axis];
-    real right_area[BINS], right_cost[BINS], best = INFINITY, sum = 0.0;
+    real right_area[BINS], right_cost[BINS], best = INFINITY, sum = 0.0, area = 0.0;
     int right_count[BINS], count = 0;
     vec3 lo = vec_splat(INFINITY), hi = vec_splat(-INFINITY);
+    /* The sums carried in registers, not read back from the arrays (a
+     * load waiting on the last store); area starts as half_area of the
+     * empty box, 0, which an empty last bin gives. */
     for (int k = nb - 1; k > 0; k--) {
-        if (bins[k].count == 0 && k < nb - 1) {
-            right_area[k] = right_area[k + 1];
-            right_count[k] = right_count[k + 1];
-            right_cost[k] = right_cost[k + 1];
-            continue;
+        if (bins[k].count != 0) {
+            lo = vmin(lo, bins[k].lo);
+            hi = vmax(hi, bins[k].hi);
+            count += bins[k].count;
+            sum += bins[k].cost;
+            area = half_area(lo, hi);
         }
-        lo = vmin(lo, bins[k].lo);
-        hi = vmax(hi, bins[k].hi);
-        count += bins[k].count;
-        sum += bins[k].cost;
-        right_area[k] = half_area(lo, hi);
+        right_area[k] = area;
         right_count[k] = count;
         right_cost[k] = sum;
     }
@@ -554,8 +592,6 @@ static int classify(build_ctx *ctx, const scene_prim *prims, int count, build_it
         if (i % 64 == 0 && cancel_step(ctx->cancel))
             break;
         int parts = isect_part_count(&prims[i]), kept = bounded;
-        if (prims[i].kind == PRIM_MESH || prims[i].kind == PRIM_TRIANGLE)
-            b->triangles = 1;
         for (int k = 0; k < parts; k++)
             bounded += item_of(&prims[i], i, k, &items[bounded]);
         if (bounded - kept == parts) {
