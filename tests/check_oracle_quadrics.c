@@ -152,13 +152,86 @@ START_TEST(test_lambert_torus_shadow_by_hand)
 }
 END_TEST
 
+
+/* [ORACLE-LAMBERT-TORUS-3] The stock torus scene's view with the
+ * orthographic eye 100 and 1e4 times as far along the same line: the same
+ * lines, so the same image (up to the rounding of the lines' points, an
+ * ulp of the eye's distance), with the same pixels exact.  Before, from 50
+ * times the distance, the ring scan took hits for misses (tests/attack11,
+ * finding 2: 124 of 6912 pixels background, up to 0.537 off). */
+START_TEST(test_lambert_torus_eye_distance)
+{
+    static const char body[] =
+        "image { width 48 height 36 max_depth 1 background [0.05, 0.05, 0.1] }\n"
+        "camera { orthographic eye [%s, %s, %s] look_at [0, 0, 0] up [0, 1, 0] width 3.6 }\n"
+        "ambient { color 0.1 }\ndistant_light { direction [1, -0.4, 0.3] power [1, 0.9, 0.8] }\n"
+        "torus { center [0, 0, 0] axis [0.2, 1, 0.1] major 1 minor 0.35 material { Kd [0.8, 0.5, 0.3] } }\n";
+    static const char *const eyes[][3] = {{"1", "6", "8"}, {"100", "600", "800"}, {"1e4", "6e4", "8e4"}};
+    scene_model *s[3];
+    for (int i = 0; i < 3; i++) {
+        char text[1024], full[1200];
+        snprintf(text, sizeof text, body, eyes[i][0], eyes[i][1], eyes[i][2]);
+        snprintf(full, sizeof full, "oracle lambert_torus\n%s", text);
+        s[i] = load_text(full);
+    }
+    int hits = 0;
+    for (int y = 0; y < 36; y++)
+        for (int x = 0; x < 48; x++) {
+            rgb near, far;
+            oracle_status st = radiance_at(s[0], x + 0.5, y + 0.5, &near);
+            for (int i = 1; i < 3; i++) {
+                ck_assert_int_eq(radiance_at(s[i], x + 0.5, y + 0.5, &far), st);
+                if (st == ORACLE_EXACT)
+                    ck_assert_msg(fabs(far.x - near.x) <= 1e-9 && fabs(far.y - near.y) <= 1e-9 &&
+                                      fabs(far.z - near.z) <= 1e-9,
+                                  "eye %d, pixel (%d, %d): %.17g against %.17g", i, x, y, far.x, near.x);
+            }
+            hits += st == ORACLE_EXACT && near.x != 0.05;
+        }
+    ck_assert_int_gt(hits, 200);
+    for (int i = 0; i < 3; i++)
+        scene_free(s[i]);
+}
+END_TEST
+
+/* [ORACLE-LAMBERT-CONE-3] A cone of radii 1 and 1 - 1e-7 is the cylinder of
+ * radius 1 to O(1e-7): its exact image (family lambert_cone) against the
+ * cylinder's (family lambert_cylinder, another code path), pixel by pixel
+ * where both are exact, to 1e-5.  Before, the apex form lost the line's
+ * offset (the apex 2e7 away) and drew the cone where the background is: up
+ * to 0.96 off (tests/attack11, finding 1). */
+START_TEST(test_lambert_cone_near_a_cylinder)
+{
+    scene_model *cone = load_file("tests/attack11/lambert_cone_taper.scene");
+    scene_model *cyl = load_file("tests/attack11/lambert_cone_taper_cyl.scene");
+    int both = 0, cyl_exact = 0;
+    for (int y = 0; y < 72; y++)
+        for (int x = 0; x < 96; x++) {
+            rgb a, b;
+            int ea = radiance_at(cone, x + 0.5, y + 0.5, &a) == ORACLE_EXACT;
+            int eb = radiance_at(cyl, x + 0.5, y + 0.5, &b) == ORACLE_EXACT;
+            cyl_exact += eb;
+            if (!ea || !eb)
+                continue;
+            both++;
+            ck_assert_msg(fabs(a.x - b.x) <= 1e-5 && fabs(a.y - b.y) <= 1e-5 && fabs(a.z - b.z) <= 1e-5,
+                          "pixel (%d, %d): cone %.9g %.9g %.9g, cylinder %.9g %.9g %.9g", x, y, a.x, a.y, a.z, b.x,
+                          b.y, b.z);
+        }
+    ck_assert_int_ge(both, cyl_exact * 99 / 100);
+    scene_free(cone);
+    scene_free(cyl);
+}
+END_TEST
 Suite *suite_oracle_quadrics(void)
 {
     Suite *s = suite_create("oracle_quadrics");
     TCase *tc = tcase_create("by hand");
     tcase_add_test(tc, test_lambert_cylinder_by_hand);
     tcase_add_test(tc, test_lambert_cone_by_hand);
+    tcase_add_test(tc, test_lambert_cone_near_a_cylinder);
     tcase_add_test(tc, test_lambert_torus_by_hand);
+    tcase_add_test(tc, test_lambert_torus_eye_distance);
     tcase_add_test(tc, test_lambert_torus_shadow_by_hand);
     suite_add_tcase(s, tc);
     return s;
