@@ -18,6 +18,17 @@ static vec3 unit(vec3 v)
     return vec_scale(v, 1 / sqrt(vec_dot(v, v)));
 }
 
+/* The point of the line o + s d nearest c, in *near, and its parameter s:
+ * the frustum's and the ring's tests start there, since their margins are
+ * relative to terms that grow with the distance of the line's start
+ * ([ORACLE-LAMBERT-CONE-2], [ORACLE-LAMBERT-TORUS-3]). */
+static double restart_near(vec3 o, vec3 d, vec3 c, vec3 *near)
+{
+    double s = vec_dot(vec_sub(c, o), d) / vec_dot(d, d);
+    *near = vec_add(o, vec_scale(d, s));
+    return s;
+}
+
 /* ---- frustum ------------------------------------------------------------ */
 
 oracle_frustum oracle_frustum_of(const scene_prim *p)
@@ -153,8 +164,8 @@ static int near_apex(const oracle_frustum *f, vec3 p)
 oracle_chord_kind oracle_line_frustum(const oracle_frustum *f, vec3 o_far, vec3 d, double *s, vec3 *n)
 {
     vec3 centre = vec_add(f->from, vec_scale(f->a, 0.5 * f->len));
-    double restart = vec_dot(vec_sub(centre, o_far), d) / vec_dot(d, d);
-    vec3 o = vec_add(o_far, vec_scale(d, restart));
+    vec3 o;
+    double restart = restart_near(o_far, d, centre, &o);
     double scale = fmax(f->len, fmax(f->r0, f->r1)), margin = ORACLE_EDGE_MARGIN * scale;
     int cylinder = f->r0 == f->r1;
     side_set side;
@@ -410,8 +421,8 @@ static vec3 ring_normal(const oracle_ring *t, vec3 p)
  * for hits (tests/attack11, finding 2); s is shifted back. */
 oracle_chord_kind oracle_line_ring(const oracle_ring *t, vec3 o_far, vec3 d, double *s, vec3 *n)
 {
-    double restart = vec_dot(vec_sub(t->c, o_far), d) / vec_dot(d, d);
-    vec3 o = vec_add(o_far, vec_scale(d, restart));
+    vec3 o;
+    double restart = restart_near(o_far, d, t->c, &o);
     ring_line rl = {t, o, d};
     ring_scan sc;
     double r = t->minor, best = INFINITY, graze_along = INFINITY;
