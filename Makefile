@@ -204,7 +204,9 @@ PUBLIC_LINK_LIBS = $(JSON_LIBS) $(EXR_LIBS) $(PNG_LIBS) $(LDLIBS)
 
 # python3-jsonschema: the schema test of the JSON scene format (tests/json_schema.sh).
 # parallel: GNU parallel, for the test of the recipe in spec/scaling.md.
-DEBS := flex bison check pkg-config parallel $(if $(filter 1,$(PNG)),libpng-dev) \
+# locales: the sources localedef makes a comma-decimal locale from
+# (tests/embed/run.sh, [EMBED-LOCALE-1]).
+DEBS := flex bison check pkg-config parallel locales $(if $(filter 1,$(PNG)),libpng-dev) \
         $(if $(filter 1,$(EXR)),libopenexr-dev) $(if $(filter 1,$(JSON)),libjansson-dev python3-jsonschema) \
         $(if $(findstring clang,$(CC)),clang)
 ifeq ($(M32),1)

@@ -249,7 +249,10 @@ typedef struct rf_scene rf_scene;
  * RF_ERR_CANCELLED or RF_ERR_NO_MEMORY; RF_ERR_USAGE for a JSON scene when
  * the library was built without JSON support.  A JSON text is parsed by
  * jansson, whose own allocations (freed before the call returns) do not go
- * through o->allocator (spec/embedding.md).
+ * through o->allocator (spec/embedding.md).  Numbers are read with the
+ * decimal point '.' whatever locale the caller has set: the load runs in
+ * the C locale on the calling thread only, and gives the caller's locale
+ * back for each callback and on return.
  */
 RF_API rf_status rf_scene_load_memory(const char *name, const char *text, size_t size,
                                       const rf_load_options *o, rf_scene **out);

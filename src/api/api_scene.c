@@ -5,6 +5,7 @@
  */
 #include <string.h>
 #include "api/convert.h"
+#include "io/c_locale.h"
 #include "io/diag_print.h"
 #include "io/scene_file.h"
 
@@ -18,10 +19,19 @@ void rf_load_options_init(rf_load_options *o)
     o->warnings = 1;
 }
 
+/* One load: the caller's options, and its locale for its callbacks
+ * ([EMBED-LOCALE-1]: the loader runs in the C locale, each callback of the
+ * caller in the caller's). */
+typedef struct load_call {
+    const rf_load_options *o;
+    c_locale_scope locale;
+} load_call;
+
 /* A diagnostic record as the caller's callback sees it. */
 static void to_caller(void *user, const diag_record *r)
 {
-    const rf_load_options *o = user;
+    const load_call *call = user;
+    const rf_load_options *o = call->o;
     rf_diagnostic d;
     d.severity = r->level == DIAG_ERROR ? RF_SEVERITY_ERROR : r->level == DIAG_WARNING ? RF_SEVERITY_WARNING
                                                                                        : RF_SEVERITY_NOTE;
@@ -32,7 +42,9 @@ static void to_caller(void *user, const diag_record *r)
     d.source_line = r->source_line;
     d.source_line_length = r->source_line_length;
     d.span_length = r->span_length;
+    c_locale_to_caller(&call->locale);
     o->diagnostic(o->diagnostic_user, &d);
+    c_locale_from_caller(&call->locale);
 }
 
 void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
@@ -55,14 +67,17 @@ void rf_diagnostic_print(void *stream, const rf_diagnostic *d)
 /* The caller's resolver behind the loader's. */
 static int fetch(void *user, const char *from, const char *name, scene_source *out, char *why, size_t why_size)
 {
-    const rf_resolver *r = user;
+    const load_call *call = user;
+    const rf_resolver *r = &call->o->resolver;
     rf_source src;
     memset(&src, 0, sizeof src);
+    c_locale_to_caller(&call->locale);
     rf_status status = r->fetch(r->user, from, name, &src, why, why_size);
+    if (status == RF_OK && !src.text && src.size > 0 && r->release)
+        r->release(r->user, &src);
+    c_locale_from_caller(&call->locale);
     if (status == RF_OK && !src.text && src.size > 0) {
         /* Text that is not there: refused here, before it is read. */
-        if (r->release)
-            r->release(r->user, &src);
         snprintf(why, why_size, "cannot read '%s': the resolver gave %zu bytes of no text", name, src.size);
         return STATUS_DATA;
     }
@@ -78,15 +93,29 @@ static int fetch(void *user, const char *from, const char *name, scene_source *o
 
 static void release(void *user, scene_source *out)
 {
-    const rf_resolver *r = user;
+    const load_call *call = user;
+    const rf_resolver *r = &call->o->resolver;
     rf_source src = {out->path, out->identity, out->text, out->len};
-    if (r->release)
-        r->release(r->user, &src);
+    if (!r->release)
+        return;
+    c_locale_to_caller(&call->locale);
+    r->release(r->user, &src);
+    c_locale_from_caller(&call->locale);
 }
 
-/* The loader's options for the caller's o (NULL: the defaults). */
-static void load_opts(const rf_load_options *o, scene_load_opts *out)
+static int cancel(void *user)
 {
+    const load_call *call = user;
+    c_locale_to_caller(&call->locale);
+    int stop = call->o->cancel(call->o->cancel_user);
+    c_locale_from_caller(&call->locale);
+    return stop;
+}
+
+/* The loader's options for the caller's call->o (NULL: the defaults). */
+static void load_opts(load_call *call, scene_load_opts *out)
+{
+    const rf_load_options *o = call->o;
     scene_load_opts_init(out);
     if (!o)
         return;
@@ -94,16 +123,18 @@ static void load_opts(const rf_load_options *o, scene_load_opts *out)
     out->warnings = o->warnings;
     if (o->diagnostic) {
         out->sink = to_caller;
-        out->sink_user = (void *)o;
+        out->sink_user = call;
     }
     if (o->resolver.fetch) {
         out->resolver.fetch = fetch;
         out->resolver.release = release;
-        out->resolver.user = (void *)&o->resolver;
+        out->resolver.user = call;
     }
     out->mem = api_mem(o->allocator);
-    out->cancel = o->cancel;
-    out->cancel_user = o->cancel_user;
+    if (o->cancel) {
+        out->cancel = cancel;
+        out->cancel_user = call;
+    }
 }
 
 /* The body of both loads: root's text when root is given, else the file at
@@ -113,13 +144,17 @@ static rf_status load(const scene_source *root, const char *path, int bad, const
                       rf_scene **out)
 {
     scene_load_opts lo;
+    load_call call;
     int status;
     if (!out)
         return RF_ERR_USAGE;
     *out = NULL;
     if (bad)
         return RF_ERR_USAGE;
-    load_opts(o, &lo);
+    call.o = o;
+    if (c_locale_enter(&call.locale) != 0)
+        return RF_ERR_NO_MEMORY;
+    load_opts(&call, &lo);
     /* [REL-READ-1] The library reads anywhere unless the host confines it. */
     if (root)
         *out = (rf_scene *)(void *)scene_file_load_source(root, &lo, &status);
@@ -127,6 +162,7 @@ static rf_status load(const scene_source *root, const char *path, int bad, const
         *out = (rf_scene *)(void *)scene_file_load_confined(path, &lo, o->read_dirs, &status);
     else
         *out = (rf_scene *)(void *)scene_file_load_anywhere(path, &lo, &status);
+    c_locale_leave(&call.locale);
     return api_status(status);
 }
 

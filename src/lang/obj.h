@@ -44,8 +44,8 @@
  * that many triangles.  A mesh with no faces is an error.  Triangles whose
  * corners are on one line are not detected here (the caller drops them
  * after its transforms).  Parsing stops early once diag_too_many(d) holds.
- * strtod reads the numbers: the C locale's '.' decimal point is assumed
- * (the library never calls setlocale).  The text is read from memory only:
+ * strtod reads the numbers: the C locale's '.' decimal point, which each
+ * load of the library sets for its thread ([EMBED-LOCALE-1]).  The text is read from memory only:
  * sources->files[file]->text and len. */
 int obj_parse(const source_set *sources, int file, diag *d, long max_triangles, polymesh *out);
 

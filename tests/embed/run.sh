@@ -17,7 +17,7 @@ shared=$(pkg-config --libs refray)
 # The same link line with the archive named instead of -lrefray.
 static=$(pkg-config --static --libs refray | sed 's/-lrefray\( \|$\)/-l:librefray.a\1/')
 mkdir -p "$OUT"
-for prog in render_string render_file; do
+for prog in render_string render_file locale_host; do
     $CC $warn $EXTRA $cflags -o "$OUT/$prog" "tests/embed/$prog.c" $shared
     $CC $warn $EXTRA $cflags -o "$OUT/$prog-static" "tests/embed/$prog.c" $static
 done
@@ -25,6 +25,12 @@ readelf -d "$OUT/render_string" | grep -q 'NEEDED.*librefray\.so\.' || fail "ren
 ! readelf -d "$OUT/render_string-static" | grep -q 'librefray' || fail "render_string-static needs librefray.so"
 
 run() { LD_LIBRARY_PATH="$LIBDIR" "$@"; }
+
+# [EMBED-LOCALE-1] A locale whose decimal point is ',', made here from the
+# locales package's sources (make deps installs it) into a directory of our
+# own: no locale of the system is changed.
+localedef -i de_DE -f UTF-8 "$OUT/locale/de_DE.UTF-8" >/dev/null 2>&1 || true
+[ -d "$OUT/locale/de_DE.UTF-8" ] || fail "localedef could not make de_DE.UTF-8 (is the locales package installed?)"
 
 for kind in "" -static; do
     # (a) a scene in a string, a fixed arena: renders with 1 MiB ...
@@ -57,5 +63,7 @@ for kind in "" -static; do
     err=$(run "$OUT/render_file$kind" tests/no-such.scene "$img" 2>&1 >/dev/null) || rc=$?
     [ "$rc" = 1 ] || fail "render_file$kind on a missing scene: exit $rc"
     case $err in "refray: error: cannot open 'tests/no-such.scene'"*) ;; *) fail "render_file$kind: $err" ;; esac
+    # (c) a host in a locale that writes 0.5 as 0,5 reads the scene's numbers.
+    LOCPATH="$OUT/locale" run "$OUT/locale_host$kind" de_DE.UTF-8 >/dev/null || fail "locale_host$kind: exit $?"
 done
-echo "embed: 2 examples, shared and static, built with pkg-config and run"
+echo "embed: 2 examples and the locale host, shared and static, built with pkg-config and run"
