@@ -29,6 +29,7 @@ run() { LD_LIBRARY_PATH="$LIBDIR" "$@"; }
 # [EMBED-LOCALE-1] A locale whose decimal point is ',', made here from the
 # locales package's sources (make deps installs it) into a directory of our
 # own: no locale of the system is changed.
+mkdir -p "$OUT/locale"
 localedef -i de_DE -f UTF-8 "$OUT/locale/de_DE.UTF-8" >/dev/null 2>&1 || true
 [ -d "$OUT/locale/de_DE.UTF-8" ] || fail "localedef could not make de_DE.UTF-8 (is the locales package installed?)"
 
