@@ -437,7 +437,7 @@ static int read_tolerance(reader *r, json_t *o, manifest_scene *s)
         return bad(r, "is missing or not an object", "tolerance");
     int status = get_number(r, tol, "relative", 0, &s->relative);
     if (status == 0 && !verify_tolerance_decisive(s->relative))
-        return bad(r, "is 1 or more: " VERIFY_UNBOUNDED, "relative");
+        return bad(r, "is 1/2 or more: " VERIFY_UNBOUNDED, "relative");
     return status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
 }
 
