@@ -227,6 +227,60 @@ START_TEST(test_verify_refuses_a_bound_that_passes_a_dim_image)
 }
 END_TEST
 
+/* lambert_cone (scenes/analytic) with its orthographic eye [1, 6, 8] times
+ * %s, and its distant light's power times %s. */
+#define CONE_FAR_BODY                                                                                 \
+    "image { width 48 height 36 samples 1 max_depth 1 background [0.05, 0.05, 0.1] }\n"              \
+    "camera { orthographic eye [1%s, 6%s, 8%s] look_at [0, 0, 0] up [0, 1, 0] width 3.6 }\n"           \
+    "ambient { color 0.1 }\n"                                                                         \
+    "distant_light { direction [0.5, -1, -1.5] power [%s, 0.9, 0.8] }\n"                              \
+    "point_light { position [-4, 3, 3] power 5 falloff linear d0 1 }\n"                               \
+    "cone { from [0, -1, 0] to [0.3, 1, 0.2] radii 1 0.4 material { Kd [0.3, 0.6, 0.8] } }\n"
+
+static scene_model *cone_far(const char *k, const char *power)
+{
+    char text[1024];
+    snprintf(text, sizeof text, CONE_FAR_BODY, k, k, k, power);
+    return load_scene(text, "lambert_cone");
+}
+
+/* [ORACLE-VIEW-ROUNDING-1] The deterministic tolerance is 1e-9 near the
+ * picture and K u D / S (K = 256, u = 2^-53, D = |eye| + |eye - look_at|,
+ * S = the view's width) once that is larger: the right render of an eye
+ * 1e5, 1e7 and 1e9 away passes (before, 1e7 failed: 327 pixels over 1e-9,
+ * attack 11, finding 6), and one with the distant light 1 % too strong
+ * still fails from 1e9. */
+START_TEST(test_verify_tolerance_follows_the_view_rounding)
+{
+    static const char *const far[] = {"", "e3", "e5", "e7", "e9"};
+    for (int i = 0; i < 5; i++) {
+        scene_model *s = cone_far(far[i], "1");
+        verify_result r;
+        ck_assert_int_eq(verify_scene(s, "cone", NULL, &r), 0);
+        ck_assert_msg(r.verdict == VERIFY_PASS, "eye 1%s: %s", far[i], r.reason);
+        double d = 2 * sqrt(101) * pow(10, i == 0 ? 0 : 1 + 2 * i), floor = 256 * 0x1p-53 * d / 3.6;
+        if (i < 2)
+            ck_assert_msg(r.tolerance == 1e-9, "eye 1%s: %g", far[i], r.tolerance);
+        else
+            ck_assert_msg(fabs(r.tolerance - floor) <= 1e-12 * floor, "eye 1%s: %g, not %g", far[i], r.tolerance,
+                          floor);
+        scene_free(s);
+    }
+    scene_model *s = cone_far("e9", "1"), *wrong = cone_far("e9", "1.01");
+    oracle_view v = verify_view(s, NULL);
+    verify_exact e;
+    verify_result r;
+    memset(&r, 0, sizeof r);
+    ck_assert_int_eq(verify_exact_build(oracle_find("lambert_cone"), &v, &e), 0);
+    ck_assert_int_eq(verify_render_compare(wrong, NULL, &e, &r), STATUS_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
+    ck_assert_msg(r.metrics.over > 48 * 36 / 4, "%ld over", r.metrics.over);
+    verify_exact_free(&e);
+    scene_free(wrong);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_verify_exact_refuses_a_negative_or_infinite_radiance)
 {
     oracle_status (*const bad[])(const oracle_view *, double, double, rgb *) = {radiance_neg, radiance_tiny_neg,
@@ -951,6 +1005,7 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_family_refused);
     tcase_add_test(tc, test_verify_never_passes_on_an_unusable_tolerance);
     tcase_add_test(tc, test_verify_refuses_a_bound_that_passes_a_dim_image);
+    tcase_add_test(tc, test_verify_tolerance_follows_the_view_rounding);
     tcase_add_test(tc, test_verify_exact_refuses_a_negative_or_infinite_radiance);
     tcase_add_test(tc, test_verify_family_unknown_and_missing);
     tcase_add_test(tc, test_verify_sweep_parse);
