@@ -422,8 +422,11 @@ static void cell_centre(const area_setup *s, const receiver *rec, const cell_mod
 /* A rectangle's cells are the parallelograms a = U/cols, b = V/rows: reach
  * half the longer diagonal, E|X - EX|^2 = (|a|^2 + |b|^2)/12.  A disk's are
  * images of the squares 1/cols x 1/rows under the concentric map, whose
- * paths stretch by at most 2R sqrt(1 + pi^2/8) (the Frobenius norm of its
- * Jacobian): the square's reach, diameter and moment scaled by it.  The
+ * paths stretch by at most 2R times the largest operator norm of its
+ * Jacobian: J^T J has trace T = 1 + alpha^2 + pi^2/16 <= 1 + pi^2/8 and
+ * determinant pi^2/16, so its largest eigenvalue is at most
+ * (T + sqrt(T^2 - pi^2/4))/2 (1.382^2; the Frobenius norm, sqrt T = 1.495,
+ * was looser): the square's reach, diameter and moment scaled by it.  The
  * disk's tangent frame is the model's (Duff et al. 2017, lightsample.h). */
 static void cell_model_for(const scene_light *l, int samples, cell_model *m)
 {
@@ -437,7 +440,8 @@ static void cell_model_for(const scene_light *l, int samples, cell_model *m)
         m->moment = (vec_length2(a) + vec_length2(b)) / 12;
         return;
     }
-    double lip = 2 * l->radius * sqrt(1 + M_PI * M_PI / 8);
+    double trace = 1 + M_PI * M_PI / 8;
+    double lip = 2 * l->radius * sqrt((trace + sqrt(trace * trace - M_PI * M_PI / 4)) / 2);
     vec3 n = l->normal;
     m->diameter = lip * hypot(w, v);
     m->reach = m->diameter / 2;

@@ -25,6 +25,7 @@
 #include <math.h>
 #include "oracle/optics_util.h"
 #include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 #define BALL_GRAZING 1e-5
 
@@ -181,14 +182,7 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     return through_ball(v, &b, h, h > 0 ? vec_scale(off, 1 / h) : vec_splat(0), out);
 }
 
-static double tolerance(const oracle_view *v, int light_samples)
-{
-    (void)v;
-    (void)light_samples;
-    return OPTICS_TOLERANCE;
-}
-
 const oracle_family oracle_ball_lens = {
     "ball_lens", "a ball lens: refraction in angles, deviation 2(i - r), paraxial focus nR/(2(n-1))", 0,
-    accepts, radiance, tolerance,
+    accepts, radiance, oracle_tolerance_exact,
 };

@@ -28,6 +28,7 @@
 #include <math.h>
 #include "oracle/optics_util.h"
 #include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 typedef struct slab_setup {
     const scene_prim *box, *floor;
@@ -263,14 +264,7 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     return ORACLE_EXACT;
 }
 
-static double tolerance(const oracle_view *v, int light_samples)
-{
-    (void)v;
-    (void)light_samples;
-    return OPTICS_TOLERANCE;
-}
-
 const oracle_family oracle_glass_slab = {
     "glass_slab", "a glass slab's lateral shift d = h sin(theta - theta_t) / cos(theta_t), weight t^2", 0,
-    accepts, radiance, tolerance,
+    accepts, radiance, oracle_tolerance_exact,
 };

@@ -17,7 +17,8 @@
  * is called ambiguous: a critical angle, a silhouette, a lobe's edge. */
 #define OPTICS_MARGIN 1e-9
 
-/* The tolerance of every family here (deterministic: the 1e-9). */
+/* The tolerance of every family here near the picture (deterministic: the
+ * issue's 1e-9; from far, the view's rounding: oracle_tolerance_exact). */
 #define OPTICS_TOLERANCE 1e-9
 
 /* A sample whose exact value moves by more than this (relative) when its

@@ -1,6 +1,7 @@
 /*
  * oracle_util.c - see oracle_util.h.
  */
+#include <float.h>
 #include <math.h>
 #include "oracle/oracle_geom.h"
 #include "oracle/oracle_util.h"
@@ -9,11 +10,21 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
+ * origin and its hit differently, by a few units u = 2^-53 of the largest
+ * coordinate involved, D = |eye| + |eye - look_at|; a ray moved sideways by
+ * delta changes a pixel by at most G delta relative, G the largest relative
+ * slope of the image, which for a picture of width S (the view's, at
+ * look_at) is a small multiple of 1/S.  Hence the floor K u D / S; K is
+ * spec/verify.md's constant, 8 times the largest ratio measured. */
 double oracle_tolerance_exact(const oracle_view *v, int light_samples)
 {
-    (void)v;
+    const scene_camera *c = &v->scene->camera;
+    double dist = vec_length(vec_sub(c->eye, c->look_at));
+    double span = c->kind == CAMERA_ORTHOGRAPHIC ? c->width : 2 * dist * tan(c->fov * M_PI / 360);
+    double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * (vec_length(c->eye) + dist) / span;
     (void)light_samples;
-    return ORACLE_EXACT_TOLERANCE;
+    return span > 0 && floor > ORACLE_EXACT_TOLERANCE ? floor : ORACLE_EXACT_TOLERANCE;
 }
 
 rgb oracle_falloff(rgb power, double d, double d0, scene_falloff falloff)

@@ -29,10 +29,15 @@
 #include "oracle/oracle_geom.h"
 
 #define ORACLE_EXACT_TOLERANCE 1e-9
+/* The constant of the view's rounding floor (spec/verify.md,
+ * [ORACLE-VIEW-ROUNDING-1]). */
+#define ORACLE_VIEW_ROUNDING_K 256
 #define ORACLE_EDGE_MARGIN 1e-6
 #define ORACLE_COS_MARGIN 1e-6
 
-/* The tolerance of every deterministic family: 1e-9 relative (issue 4). */
+/* The tolerance of every deterministic family: 1e-9 relative (issue 4), or
+ * the rounding of the view's rays where that is larger (an eye far from
+ * the picture for its width: [ORACLE-VIEW-ROUNDING-1]). */
 double oracle_tolerance_exact(const oracle_view *v, int light_samples);
 
 /* E/(d+d0), E/(d+d0)^2 or E (slides 15-16), straight from the formula. */

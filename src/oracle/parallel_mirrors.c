@@ -27,6 +27,7 @@
 #include <math.h>
 #include "oracle/optics_util.h"
 #include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 /* The two walls as a slab whose lo wall (wall 0) is the first plane: the
  * axis is the first plane's normal, turned toward the second plane. */
@@ -176,14 +177,7 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     return lit_series(s, &slab, r, v->max_depth, out);
 }
 
-static double tolerance(const oracle_view *v, int light_samples)
-{
-    (void)v;
-    (void)light_samples;
-    return OPTICS_TOLERANCE;
-}
-
 const oracle_family oracle_parallel_mirrors = {
     "parallel_mirrors", "two facing mirrors: the reflection series cut by max_depth, hits by unfolding", 0,
-    accepts, radiance, tolerance,
+    accepts, radiance, oracle_tolerance_exact,
 };

@@ -28,6 +28,7 @@
 #include <math.h>
 #include "oracle/optics_util.h"
 #include "oracle/oracle_geom.h"
+#include "oracle/oracle_util.h"
 
 /* The box, its material and the pair of faces the camera looks at. */
 typedef struct window_setup {
@@ -193,14 +194,7 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     return lit_series(s, &w, r, tir, v->max_depth, out);
 }
 
-static double tolerance(const oracle_view *v, int light_samples)
-{
-    (void)v;
-    (void)light_samples;
-    return OPTICS_TOLERANCE;
-}
-
 const oracle_family oracle_snell_window = {
     "snell_window", "total internal reflection past the critical angle: Snell's window, a series of TIR", 0,
-    accepts, radiance, tolerance,
+    accepts, radiance, oracle_tolerance_exact,
 };

@@ -182,8 +182,11 @@ static void describe(const scene_model *s, const verify_exact *e, manifest_scene
     for (int i = 0; i < s->light_count && m->light_count < MANIFEST_LIGHTS_MAX; i++)
         if (s->lights[i].kind == LIGHT_RECTANGLE || s->lights[i].kind == LIGHT_DISK)
             m->light_samples[m->light_count++] = s->lights[i].samples;
-    m->relative = f->sampled ? fmax(f->tolerance(&e->view, 0), MANIFEST_REL_DETERMINISTIC)
-                             : MANIFEST_REL_DETERMINISTIC;
+    /* The family's own bound where it is the larger (a sampled render's, a
+     * far view's rounding: [ORACLE-VIEW-ROUNDING-1]); one that is no bound
+     * is kept as it is, for build_scene to refuse (fmax would drop a NaN). */
+    double tol = f->tolerance(&e->view, 0);
+    m->relative = verify_tolerance_usable(tol) ? fmax(tol, MANIFEST_REL_DETERMINISTIC) : tol;
     m->peak = peak_of(e);
     m->masked = e->excluded_count;
     m->png16_scale = manifest_png16_scale(m->peak);

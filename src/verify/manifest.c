@@ -163,7 +163,8 @@ static json_t *comparison_json(writer *w)
                     "pixel, skipping the pixels the mask marks (255); a channel c fails when |OUT_c - EXACT_c| > "
                     "relative * |EXACT_c| + absolute (a NaN or infinity fails); the scene passes when no channel "
                     "of a compared pixel fails and at least one pixel is compared"));
-    put(w, o, "relative", json_string("1e-4 for deterministic families; for "
+    put(w, o, "relative", json_string("1e-4 for deterministic families, or the view's rounding where that is "
+                                      "larger (an eye far from the picture for its width); for "
                                       "sampled families (distributed lights) the family's own bound at the "
                                       "scene's light samples, at least 1e-4"));
     put(w, o, "absolute", json_string("one step of a 16-bit PNG written at the scene's png16_scale: "
@@ -437,7 +438,7 @@ static int read_tolerance(reader *r, json_t *o, manifest_scene *s)
         return bad(r, "is missing or not an object", "tolerance");
     int status = get_number(r, tol, "relative", 0, &s->relative);
     if (status == 0 && !verify_tolerance_decisive(s->relative))
-        return bad(r, "is 1 or more: " VERIFY_UNBOUNDED, "relative");
+        return bad(r, "is 1/2 or more: " VERIFY_UNBOUNDED, "relative");
     return status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
 }
 

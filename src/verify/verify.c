@@ -108,7 +108,7 @@ int verify_tolerance_usable(double tolerance)
 
 int verify_tolerance_decisive(double tolerance)
 {
-    return verify_tolerance_usable(tolerance) && tolerance < 1;
+    return verify_tolerance_usable(tolerance) && tolerance < VERIFY_DECISIVE_BELOW;
 }
 
 void verify_result_error(verify_result *r, const char *path, int status, const char *reason)

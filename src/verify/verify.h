@@ -60,7 +60,8 @@ typedef struct verify_result {
     int sampled;              /* the family converges with the light samples */
     image_metrics metrics;    /* valid when measured */
     int measured;             /* the render was compared: PASS, FAIL, or REFUSED
-                                 for a bound of 1 or more (VERIFY_UNBOUNDED) */
+                                 for a bound of VERIFY_DECISIVE_BELOW or more
+                                 (VERIFY_UNBOUNDED) */
     double tolerance;         /* relative, the family's for this render */
     double render_seconds;    /* wall time of render_image, BVH build included
                                  (the median of opts.runs renders) */
@@ -90,19 +91,27 @@ oracle_view verify_view(const scene_model *s, const verify_opts *o);
  * cannot vouch for (spec/verify.md, "Refusals"). */
 #define VERIFY_INEXACT "the oracle cannot give this scene's image to the stated accuracy"
 
-/* The reason of a render judged against a relative bound of 1 or more: every
- * value in [0, (1 + tol) exact] is within it, an image of zeros too, so it
- * is not passed (spec/verify.md, [VERIFY-UNBOUNDED-1]). */
-#define VERIFY_UNBOUNDED "a relative error bound of 1 or more cannot tell the image from black"
+/* A verdict must reject an image scaled by any s with |1 - s| >= 1/2: half
+ * the light and less (black too), and 3/2 and more (a lost or doubled
+ * factor of 2, the smallest factor by which a radiometric formula slips).
+ * s times the exact image is within a relative bound tol at every pixel
+ * exactly when |1 - s| <= tol, so the bound must be below 1/2
+ * (spec/verify.md, [VERIFY-UNBOUNDED-2]). */
+#define VERIFY_DECISIVE_BELOW 0.5
 
-/* 1 when a usable tolerance can carry a verdict: below 1. */
+/* The reason of a render judged against a relative bound of 1/2 or more:
+ * every value in [(1 - tol) exact, (1 + tol) exact] is within it, half the
+ * image too, so it is not passed (spec/verify.md, [VERIFY-UNBOUNDED-2]). */
+#define VERIFY_UNBOUNDED "a relative error bound of 1/2 or more cannot tell the image from one of half its light"
+
+/* 1 when a usable tolerance can carry a verdict: below VERIFY_DECISIVE_BELOW. */
 int verify_tolerance_decisive(double tolerance);
 
 /* The message for verify_exact_build's status (0: none). */
 const char *verify_exact_error(int status);
 
 /* 1 when a relative tolerance is a bound at all: finite and not negative.
- * (A bound of 1 or more is honest for a render of few light samples, and
+ * (A bound of 1/2 or more is honest for a render of few light samples, and
  * a sweep measures its error, but no verdict rests on it: VERIFY_UNBOUNDED.) */
 int verify_tolerance_usable(double tolerance);
 
