@@ -252,7 +252,8 @@ typedef struct rf_scene rf_scene;
  * through o->allocator (spec/embedding.md).  Numbers are read with the
  * decimal point '.' whatever locale the caller has set: the load runs in
  * the C locale on the calling thread only, and gives the caller's locale
- * back for each callback and on return.
+ * back on return and while the diagnostic and resolver callbacks run (the
+ * cancel callback and the allocator run in the C locale).
  */
 RF_API rf_status rf_scene_load_memory(const char *name, const char *text, size_t size,
                                       const rf_load_options *o, rf_scene **out);

@@ -20,8 +20,8 @@ void rf_load_options_init(rf_load_options *o)
 }
 
 /* One load: the caller's options, and its locale for its callbacks
- * ([EMBED-LOCALE-1]: the loader runs in the C locale, each callback of the
- * caller in the caller's). */
+ * ([EMBED-LOCALE-1]: the loader runs in the C locale, the diagnostic and
+ * resolver callbacks in the caller's). */
 typedef struct load_call {
     const rf_load_options *o;
     c_locale_scope locale;
@@ -103,15 +103,6 @@ static void release(void *user, scene_source *out)
     c_locale_from_caller(&call->locale);
 }
 
-static int cancel(void *user)
-{
-    const load_call *call = user;
-    c_locale_to_caller(&call->locale);
-    int stop = call->o->cancel(call->o->cancel_user);
-    c_locale_from_caller(&call->locale);
-    return stop;
-}
-
 /* The loader's options for the caller's call->o (NULL: the defaults). */
 static void load_opts(load_call *call, scene_load_opts *out)
 {
@@ -131,10 +122,8 @@ static void load_opts(load_call *call, scene_load_opts *out)
         out->resolver.user = call;
     }
     out->mem = api_mem(o->allocator);
-    if (o->cancel) {
-        out->cancel = cancel;
-        out->cancel_user = call;
-    }
+    out->cancel = o->cancel;
+    out->cancel_user = o->cancel_user;
 }
 
 /* The body of both loads: root's text when root is given, else the file at

@@ -8,7 +8,7 @@
  * that reads or writes text therefore runs in the C locale, set for the
  * calling thread only (POSIX uselocale), so other threads of the host keep
  * theirs and two loads on two threads do not meet; the caller's locale is
- * back when the call returns, and while a callback of the caller runs
+ * back when the call returns, and while its diagnostic and resolver callbacks run
  * ([EMBED-LOCALE-1], spec/embedding.md).
  */
 #ifndef REFRAY_C_LOCALE_H
