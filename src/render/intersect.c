@@ -928,10 +928,30 @@ static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh
     return hot_triangle(g, code >> 2, r, sh, out);
 }
 
+/* A hot record's box, counted: what box_hits(lo, hi, r, out, max, 1)
+ * returns for max >= 2 (box_slabs' one or two crossings, each counted when
+ * in the interval), with the corners read where the record holds them and
+ * no t stored.  Called through hot_hits, the two corners went by value
+ * through the stack for each of the millions of box tests of a room's
+ * shadow rays (nearly all misses).  Out of line for the reason of
+ * hot_triangle: inlined into the walk it would grow its loop. */
+ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
+{
+    real tt[2];
+    int axis[2];
+    if (!box_slabs(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, tt, axis))
+        return 0;
+    return in_interval(r, tt[0]) + (tt[0] != tt[1] && in_interval(r, tt[1]));
+}
+
 int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
-    return hot_hits(code, g, r, sh, out, ISECT_MAX_CROSSINGS);
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
+        return hot_box_crossings(g, r);
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_TRIANGLE)
+        return hot_triangle(g, code >> 2, r, sh, out);
+    return sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, out, ISECT_MAX_CROSSINGS, 1);
 }
 
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t)
