@@ -19,6 +19,7 @@
 #include "cli_testlib.h"
 #include "io/image_io.h"
 #include "verify/conform.h"
+#include "verify/verify.h"
 
 static char kit_root[64];
 static int kit_status = -1;
@@ -478,6 +479,132 @@ START_TEST(test_kit_check_refuses)
 }
 END_TEST
 
+/* The pixels tests/conform/masked_sphere.scene's outline passes through
+ * (worked in the scene's comment from its camera, not read from a kit). */
+static const int masked_pixels[4][2] = {{4, 0}, {1, 3}, {7, 3}, {4, 6}};
+
+/* A kit of tests/conform/masked_sphere.scene in a new directory work: its
+ * path in kit, the exact image in exact and the mask, checked to mark
+ * the four pixels above and no other. */
+static void masked_kit(const char *work, char *kit, size_t size, img_buf *exact)
+{
+    char path[400], err[512];
+    unsigned char *mask;
+    cli_run *r = malloc(sizeof *r);
+    cli_path(kit, size, work, "kit");
+    const char *args[] = {"kit", "-q", "-o", kit, "tests/conform/masked_sphere.scene", NULL};
+    cli_refray(r, args);
+    ck_assert_msg(r->code == 0, "refray kit: %s", r->err);
+    free(r);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    ck_assert_int_eq(img_read(path, NULL, exact, err, sizeof err), 0);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    ck_assert_int_eq(verify_mask_read(path, exact->width, exact->height, &mask, err, sizeof err), 0);
+    long marked = 0;
+    for (int p = 0; p < exact->width * exact->height; p++)
+        marked += mask[p] != 0;
+    ck_assert_int_eq(marked, 4);
+    for (int i = 0; i < 4; i++)
+        ck_assert(mask[masked_pixels[i][1] * exact->width + masked_pixels[i][0]]);
+    free(mask);
+}
+
+/* img as a PFM of its values as they are: refray's writers make NaN and
+ * infinities finite ([REL-NONFINITE-1]); another renderer's need not.
+ * The scale's sign says the host's byte order. */
+static void write_raw_pfm(const char *path, const img_buf *img)
+{
+    unsigned one = 1;
+    unsigned char little;
+    memcpy(&little, &one, 1);
+    FILE *f = fopen(path, "wb");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "PF\n%d %d\n%s\n", img->width, img->height, little ? "-1.0" : "1.0");
+    for (int y = img->height - 1; y >= 0; y--)
+        for (int x = 0; x < img->width; x++)
+            for (int c = 0; c < 3; c++) {
+                float v = (float)img_pixel(img, x, y)[c];
+                ck_assert_int_eq(fwrite(&v, sizeof v, 1, f), 1);
+            }
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+/* The exit codes of the three judges for the picture at path against the
+ * masked kit: conform (its JSON in r), compare --manifest and kit_check. */
+static void three_judges(const char *kit, const char *path, cli_run *r, int code[3])
+{
+    char cmd[2048], mf[400], exact[400], mask[400];
+    const char *bin = getenv("KIT_CHECK_BIN");
+    ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
+    snprintf(cmd, sizeof cmd, "cp '%s' {out}", path);
+    const char *conform_args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--cmd", cmd, NULL};
+    cli_refray(r, conform_args);
+    code[0] = r->code;
+    cli_run *c = malloc(sizeof *c);
+    const char *compare_args[] = {"compare", path, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), NULL};
+    cli_refray(c, compare_args);
+    code[1] = c->code;
+    free(c);
+    cli_path(exact, sizeof exact, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    cli_path(mask, sizeof mask, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    manifest m;
+    ck_assert_int_eq(manifest_read(mf, &m, cmd, sizeof cmd), 0);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null", bin, exact, mask, m.scenes[0].relative,
+             m.scenes[0].absolute, path);
+    manifest_free(&m);
+    int st = system(cmd);
+    code[2] = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* [KIT-RULE-1] [CONF-MASKED-1] A NaN or an infinity in a pixel the mask
+ * excludes is not judged, by any of the three judges: conform passes the
+ * picture with a note of the values, compare --manifest and kit_check pass
+ * it too.  One more NaN in a pixel the mask does not mark fails it in all
+ * three.  Before, conform counted the non-finite values of the whole image
+ * before it read the mask, and failed the first (attack 12, finding 4:
+ * sh tests/attack12/conform_masked_nan.sh). */
+START_TEST(test_conform_masked_nonfinite)
+{
+    char work[64], kit[128], path[300];
+    img_buf e;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, sizeof work, "maskednan");
+    masked_kit(work, kit, sizeof kit, &e);
+    /* 3 + 3 + 1 values in three masked pixels. */
+    for (int c = 0; c < 3; c++) {
+        img_pixel(&e, 4, 0)[c] = NAN;
+        img_pixel(&e, 1, 3)[c] = HUGE_VAL;
+    }
+    img_pixel(&e, 7, 3)[0] = NAN;
+    write_raw_pfm(cli_path(path, sizeof path, work, "masked.pfm"), &e);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "conform %d, compare %d, kit_check %d\n%s", code[0],
+                  code[1], code[2], r->out);
+    ck_assert_msg(strstr(r->out, "\"note\": \"7 channel values of its image are NaN or infinite in pixels the mask "
+                                 "excludes: not judged\"") && strstr(r->out, "\"compared\": 59,"), "%s", r->out);
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "cp '%s' {out}", path);
+    const char *table[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", cmd, NULL};
+    cli_refray(r, table);
+    ck_assert_msg(r->code == 0 && strstr(r->out, "\n    note: 7 channel values") &&
+                  strstr(r->out, "1 scene: 1 passed, 0 failed, 1 with a note"), "%s", r->out);
+    const char *tap[] = {"conform", "--kit", kit, "--format", "pfm", "--tap", "--cmd", cmd, NULL};
+    cli_refray(r, tap);
+    ck_assert_msg(r->code == 0 && strstr(r->out, "ok 1 - masked_sphere\n# note: 7 channel values"), "%s", r->out);
+    img_pixel(&e, 0, 0)[1] = NAN;
+    write_raw_pfm(path, &e);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "conform %d, compare %d, kit_check %d\n%s", code[0],
+                  code[1], code[2], r->out);
+    expect(r, 1, "nonfinite", "1 channel value of its image is NaN or infinite");
+    ck_assert_msg(strstr(r->out, "\"note\": \"7 channel values"), "%s", r->out);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
 #else
 
 /* conform reads the kit's manifest: a build without jansson says so. */
@@ -555,6 +682,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_report_path_checked_first);
     tcase_add_test(tc, test_kit_check_agrees);
     tcase_add_test(tc, test_kit_check_refuses);
+    tcase_add_test(tc, test_conform_masked_nonfinite);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

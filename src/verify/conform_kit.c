@@ -1,0 +1,70 @@
+/*
+ * conform_kit.c - see conform_kit.h.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "base/status.h"
+#include "io/fileio.h"
+#include "io/image_io.h"
+#include "verify/conform_kit.h"
+#include "verify/verify.h"
+
+/* The exact image: the EXR where listed and readable here, else the PFM. */
+static int read_exact(const char *kit_dir, const manifest_scene *s, img_buf *exact, char *why, size_t why_size)
+{
+    int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
+    char *path = file_join(NULL, kit_dir, s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM]);
+    img_read_opts o = img_read_opts_default();
+    o.width = s->width; /* the manifest's size, checked on the header */
+    o.height = s->height;
+    int status = path ? img_read(path, &o, exact, why, why_size) : STATUS_NO_MEMORY;
+    if (!path)
+        snprintf(why, why_size, "out of memory");
+    free(path);
+    return status;
+}
+
+static int read_mask(const char *kit_dir, const manifest_scene *s, unsigned char **mask, char *why, size_t why_size)
+{
+    const char *rel = s->files[MANIFEST_FILE_MASK_PGM];
+    *mask = NULL;
+    if (!rel[0])
+        return STATUS_OK;
+    char *path = file_join(NULL, kit_dir, rel);
+    int status = path ? verify_mask_read(path, s->width, s->height, mask, why, why_size) : STATUS_NO_MEMORY;
+    if (!path)
+        snprintf(why, why_size, "out of memory");
+    free(path);
+    return status;
+}
+
+int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask, char *why,
+                     size_t why_size)
+{
+    *mask = NULL;
+    int status = read_exact(kit_dir, s, exact, why, why_size);
+    if (status != STATUS_OK)
+        return status;
+    status = read_mask(kit_dir, s, mask, why, why_size);
+    if (status != STATUS_OK)
+        img_free(exact);
+    return status;
+}
+
+int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
+                 image_metrics *m)
+{
+    metrics_compare_abs(out, exact, mask, s->relative, s->absolute, m);
+    return m->over == 0 && m->compared > 0;
+}
+
+void conform_count_nonfinite(const img_buf *img, const unsigned char *mask, long *judged, long *masked)
+{
+    size_t n = (size_t)img->width * (size_t)img->height;
+    *judged = *masked = 0;
+    for (size_t p = 0; p < n; p++)
+        for (int c = 0; c < 3; c++)
+            if (!isfinite(img->rgb[3 * p + c]))
+                ++*(mask && mask[p] ? masked : judged);
+}

@@ -1,0 +1,43 @@
+/*
+ * conform_kit.h - one scene of a conformance kit as the rule of
+ * spec/conformance.md [KIT-RULE-1] reads it, and the rule itself.
+ *
+ * `refray conform` (verify/conform.h) and `refray compare --manifest`
+ * judge a picture with these functions and no other, so the two cannot
+ * disagree; tests/conform/kit_check.c is the same rule in one C99 file
+ * without the library, and the conform suite checks that it counts the
+ * same pixels.  Statuses are those of base/status.h.
+ */
+#ifndef REFRAY_CONFORM_KIT_H
+#define REFRAY_CONFORM_KIT_H
+
+#include <stddef.h>
+#include "image/image.h"
+#include "image/metrics.h"
+#include "verify/manifest.h"
+
+/*
+ * Reads the exact image of scene s of the kit in kit_dir (EXR where the
+ * manifest lists one and this build reads it, else PFM) and its mask
+ * (width x height bytes, non-zero excluded; NULL when the scene has
+ * none).  Returns STATUS_OK; otherwise the reader's status with the reason
+ * in why, and nothing to free.
+ */
+int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask, char *why,
+                     size_t why_size);
+
+/*
+ * [KIT-RULE-1] Judges out against exact (the same size) over the pixels
+ * mask does not mark (mask NULL: every pixel), with s's tolerance: fills m
+ * (metrics_compare_abs) and returns 1 when out passes (no compared pixel
+ * over, a NaN or an infinity over, and at least one pixel compared), else
+ * 0.  A pixel the mask marks is not judged, whatever it holds.
+ */
+int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
+                 image_metrics *m);
+
+/* The channel values of img that are NaN or infinite: in the pixels the
+ * rule judges (*judged) and in those mask marks (*masked). */
+void conform_count_nonfinite(const img_buf *img, const unsigned char *mask, long *judged, long *masked);
+
+#endif
