@@ -605,6 +605,90 @@ START_TEST(test_conform_masked_nonfinite)
 }
 END_TEST
 
+/* The masked kit's manifest with mask_pgm and mask_png kept or dropped
+ * (pgm, png) and masked_pixels set to masked. */
+static void edit_masked(const char *kit, int pgm, int png, long masked)
+{
+    char mf[400], why[512];
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, why, sizeof why), 0);
+    manifest_scene *s = &m.scenes[0];
+    char *keys[2] = {s->files[MANIFEST_FILE_MASK_PGM], s->files[MANIFEST_FILE_MASK_PNG]};
+    int keep[2] = {pgm, png};
+    for (int i = 0; i < 2; i++)
+        if (!keep[i])
+            keys[i][0] = '\0';
+    s->masked = masked;
+    ck_assert_int_eq(manifest_write(mf, &m, why, sizeof why), 0);
+    manifest_free(&m);
+}
+
+/* conform and compare --manifest of the picture at path against the
+ * masked kit: their exit codes, conform's output in r; the renderer's
+ * command leaves ran beside path when it runs. */
+static void conform_and_compare(const char *kit, const char *work, const char *path, cli_run *r, int code[2])
+{
+    char cmd[1024], mf[400], ran[300];
+    snprintf(cmd, sizeof cmd, "touch '%s'; cp '%s' {out}", cli_path(ran, sizeof ran, work, "ran"), path);
+    remove(ran);
+    const char *conform_args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--cmd", cmd, NULL};
+    cli_refray(r, conform_args);
+    code[0] = r->code;
+    ck_assert_msg(r->code == 65 ? !cli_exists(ran) : cli_exists(ran), "conform %d: the renderer %s", r->code,
+                  cli_exists(ran) ? "ran" : "did not run");
+    cli_run *c = malloc(sizeof *c);
+    const char *compare_args[] = {"compare", path, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), NULL};
+    cli_refray(c, compare_args);
+    code[1] = c->code;
+    ck_assert_msg(c->code != 65 || strstr(c->err, "the manifest disagrees with its kit"), "%s", c->err);
+    free(c);
+}
+
+/* [KIT-MASK-1] A manifest that lists its mask as PNG only (mask_pgm null,
+ * which spec/conformance.md 2 allows for any file): conform and compare
+ * read the PNG, and pass a picture that is the exact image with 0.5 in
+ * the four masked pixels (where the exact image holds 0).  A manifest
+ * whose masked_pixels is not what its mask marks, or that names masked
+ * pixels and lists no mask, is refused (65) before any renderer runs.
+ * Before, both read mask_pgm only: with it null they compared every pixel
+ * and failed the picture, and masked_pixels was never read (attack 12,
+ * finding 5: sh tests/attack12/conform_mask_png.sh). */
+START_TEST(test_conform_mask_png_and_count)
+{
+    char work[64], kit[128], path[300];
+    img_buf e;
+    int code[2];
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, sizeof work, "maskpng");
+    masked_kit(work, kit, sizeof kit, &e);
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++)
+            img_pixel(&e, masked_pixels[i][0], masked_pixels[i][1])[c] = 0.5;
+    write_raw_pfm(cli_path(path, sizeof path, work, "picture.pfm"), &e);
+    edit_masked(kit, 0, 1, 4);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0, "PNG mask: conform %d, compare %d\n%s", code[0], code[1], r->out);
+    ck_assert_msg(strstr(r->out, "\"excluded\": 4,"), "%s", r->out);
+    edit_masked(kit, 0, 1, 3);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65, "3 of 4: conform %d, compare %d", code[0], code[1]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': 'masked_pixels' is 3, but its mask "
+                                 "'scenes/masked_sphere/masked_sphere.mask.png' marks 4: the manifest disagrees "
+                                 "with its kit"), "%s", r->err);
+    edit_masked(kit, 0, 0, 4);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65, "no mask: conform %d, compare %d", code[0], code[1]);
+    ck_assert_msg(strstr(r->err, "'masked_pixels' is 4, but it lists no mask"), "%s", r->err);
+    edit_masked(kit, 0, 0, 0);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1, "no mask, none masked: conform %d, compare %d", code[0], code[1]);
+    expect(r, 1, "over", "4 of 63 pixels over");
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
 #else
 
 /* conform reads the kit's manifest: a build without jansson says so. */
@@ -683,6 +767,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_kit_check_agrees);
     tcase_add_test(tc, test_kit_check_refuses);
     tcase_add_test(tc, test_conform_masked_nonfinite);
+    tcase_add_test(tc, test_conform_mask_png_and_count);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

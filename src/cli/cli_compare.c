@@ -253,17 +253,22 @@ static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref
     return status;
 }
 
-/* The mask: --mask, or the kit's; NULL for none.  STATUS_OK or the status. */
+/* The mask: --mask, or the kit's (conform_kit_mask: checked against the
+ * manifest, [KIT-MASK-1]); NULL for none.  STATUS_OK or the status. */
 static int read_mask(const compare_args *a, const compare_kit *kit, const img_buf *ref, unsigned char **mask)
 {
-    char err[512];
-    const char *rel = kit ? kit->scene->files[MANIFEST_FILE_MASK_PGM] : "";
-    char *path = rel[0] ? file_join(NULL, kit->dir, rel) : NULL;
-    const char *use = a->mask ? a->mask : path;
-    int status = use ? verify_mask_read(use, ref->width, ref->height, mask, err, sizeof err) : STATUS_OK;
-    if (status != STATUS_OK)
-        cli_error("%s: %s", use, err);
-    free(path);
+    char err[1024];
+    int status = STATUS_OK;
+    *mask = NULL;
+    if (a->mask) {
+        status = verify_mask_read(a->mask, ref->width, ref->height, mask, err, sizeof err);
+        if (status != STATUS_OK)
+            cli_error("%s: %s", a->mask, err);
+    } else if (kit) {
+        status = conform_kit_mask(kit->dir, kit->scene, ref->width, ref->height, mask, err, sizeof err);
+        if (status != STATUS_OK)
+            cli_error("compare: %s: scene '%s': %s", a->manifest, kit->scene->name, err);
+    }
     return status;
 }
 

@@ -25,17 +25,46 @@ static int read_exact(const char *kit_dir, const manifest_scene *s, img_buf *exa
     return status;
 }
 
-static int read_mask(const char *kit_dir, const manifest_scene *s, unsigned char **mask, char *why, size_t why_size)
+/* The masked_pixels of the manifest against the marks of the mask read
+ * (rel; NULL for none): STATUS_OK or STATUS_DATA. */
+static int check_masked(const manifest_scene *s, const char *rel, const unsigned char *mask, int width, int height,
+                        char *why, size_t why_size)
 {
-    const char *rel = s->files[MANIFEST_FILE_MASK_PGM];
-    *mask = NULL;
-    if (!rel[0])
+    long marked = 0;
+    for (size_t p = 0; mask && p < (size_t)width * (size_t)height; p++)
+        marked += mask[p] != 0;
+    if (marked == s->masked)
         return STATUS_OK;
-    char *path = file_join(NULL, kit_dir, rel);
-    int status = path ? verify_mask_read(path, s->width, s->height, mask, why, why_size) : STATUS_NO_MEMORY;
-    if (!path)
-        snprintf(why, why_size, "out of memory");
-    free(path);
+    if (rel)
+        snprintf(why, why_size, "'masked_pixels' is %ld, but its mask '%s' marks %ld: %s", s->masked, rel, marked,
+                 CONFORM_KIT_DISAGREES);
+    else
+        snprintf(why, why_size, "'masked_pixels' is %ld, but it lists no mask (mask_pgm and mask_png are null): %s",
+                 s->masked, CONFORM_KIT_DISAGREES);
+    return STATUS_DATA;
+}
+
+int conform_kit_mask(const char *kit_dir, const manifest_scene *s, int width, int height, unsigned char **mask,
+                     char *why, size_t why_size)
+{
+    /* The PNG where the PGM is not listed, as the PFM where the EXR is not. */
+    const char *rel = s->files[MANIFEST_FILE_MASK_PGM][0] ? s->files[MANIFEST_FILE_MASK_PGM]
+                                                          : s->files[MANIFEST_FILE_MASK_PNG];
+    *mask = NULL;
+    int status = STATUS_OK;
+    if (rel[0]) {
+        char *path = file_join(NULL, kit_dir, rel);
+        status = path ? verify_mask_read(path, width, height, mask, why, why_size) : STATUS_NO_MEMORY;
+        if (!path)
+            snprintf(why, why_size, "out of memory");
+        free(path);
+    }
+    if (status == STATUS_OK)
+        status = check_masked(s, rel[0] ? rel : NULL, *mask, width, height, why, why_size);
+    if (status != STATUS_OK) {
+        free(*mask);
+        *mask = NULL;
+    }
     return status;
 }
 
@@ -46,7 +75,7 @@ int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exac
     int status = read_exact(kit_dir, s, exact, why, why_size);
     if (status != STATUS_OK)
         return status;
-    status = read_mask(kit_dir, s, mask, why, why_size);
+    status = conform_kit_mask(kit_dir, s, s->width, s->height, mask, why, why_size);
     if (status != STATUS_OK)
         img_free(exact);
     return status;

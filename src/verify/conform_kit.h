@@ -16,12 +16,26 @@
 #include "image/metrics.h"
 #include "verify/manifest.h"
 
+/* The end of the reason of a manifest its kit contradicts (STATUS_DATA:
+ * refused as a malformed manifest is, spec/conformance.md [KIT-MASK-1]). */
+#define CONFORM_KIT_DISAGREES "the manifest disagrees with its kit"
+
+/*
+ * [KIT-MASK-1] Reads the mask of scene s, for an image of width x height:
+ * mask_pgm, else mask_png where only that is listed (NULL when neither
+ * is), and checks that it marks the manifest's masked_pixels.  Returns
+ * STATUS_OK; STATUS_DATA when it marks another count, or when the scene
+ * names masked pixels and lists no mask (CONFORM_KIT_DISAGREES); else the
+ * reader's status; the reason in why, *mask NULL on failure.
+ */
+int conform_kit_mask(const char *kit_dir, const manifest_scene *s, int width, int height, unsigned char **mask,
+                     char *why, size_t why_size);
+
 /*
  * Reads the exact image of scene s of the kit in kit_dir (EXR where the
  * manifest lists one and this build reads it, else PFM) and its mask
- * (width x height bytes, non-zero excluded; NULL when the scene has
- * none).  Returns STATUS_OK; otherwise the reader's status with the reason
- * in why, and nothing to free.
+ * (conform_kit_mask at the manifest's size).  Returns STATUS_OK;
+ * otherwise the status with the reason in why, and nothing to free.
  */
 int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask, char *why,
                      size_t why_size);
