@@ -549,8 +549,8 @@ static void three_judges(const char *kit, const char *path, cli_run *r, int code
     cli_path(mask, sizeof mask, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
     manifest m;
     ck_assert_int_eq(manifest_read(mf, &m, cmd, sizeof cmd), 0);
-    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null", bin, exact, mask, m.scenes[0].relative,
-             m.scenes[0].absolute, path);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null 2>&1", bin, exact, mask,
+             m.scenes[0].relative, m.scenes[0].absolute, path);
     manifest_free(&m);
     int st = system(cmd);
     code[2] = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
@@ -689,6 +689,65 @@ START_TEST(test_conform_mask_png_and_count)
 }
 END_TEST
 
+/* The masked kit's manifest with png16_scale 2^-e and absolute the step
+ * of a 16-bit PNG there, 2^e / 65535 (as [KIT-TOL-1] defines it, so that
+ * only [VERIFY-UNBOUNDED-3] is left to refuse it). */
+static void edit_scale(const char *kit, int e)
+{
+    char mf[400], why[512];
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, why, sizeof why), 0);
+    m.scenes[0].png16_scale = ldexp(1, -e);
+    m.scenes[0].absolute = ldexp(1, e) / 65535;
+    ck_assert_int_eq(manifest_write(mf, &m, why, sizeof why), 0);
+    manifest_free(&m);
+}
+
+/* [VERIFY-UNBOUNDED-3] The masked kit's exact image peaks at 0.87 (the
+ * red of Kd 0.8 under ambient 0.1 and a distant light of 1, at a normal
+ * near the light).  With png16_scale 2^-15 the absolute bound is 0.50:
+ * above half the peak less its relative part, so a picture of half the
+ * light, and a black one, would pass; conform, compare --manifest and
+ * kit_check refuse the tolerance (65, 65, 2) and run nothing.  At
+ * 2^-14 (0.25) it is below, and the three fail a black picture.  Before,
+ * any absolute bound loaded, and conform passed an all-black picture
+ * under absolute 10 (attack 12, finding 6: sh
+ * tests/attack12/conform_abs_unbounded.sh). */
+START_TEST(test_conform_absolute_bound_decides)
+{
+    char work[64], kit[128], path[300], black[300];
+    img_buf e;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, sizeof work, "absbound");
+    masked_kit(work, kit, sizeof kit, &e);
+    for (int i = 0; i < 3 * e.width * e.height; i++)
+        e.rgb[i] = 0;
+    write_raw_pfm(cli_path(black, sizeof black, work, "black.pfm"), &e);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    edit_scale(kit, 15);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-15: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': its tolerance, relative 0.0001 and absolute 0.5, passes a "
+                                 "picture of half the light") && strstr(r->err, "[VERIFY-UNBOUNDED-3]"), "%s", r->err);
+    ck_assert_msg(r->out[0] == '\0', "conform ran a scene: %s", r->out);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-15, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    edit_scale(kit, 14);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-14: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-14, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
 #else
 
 /* conform reads the kit's manifest: a build without jansson says so. */
@@ -768,6 +827,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_kit_check_refuses);
     tcase_add_test(tc, test_conform_masked_nonfinite);
     tcase_add_test(tc, test_conform_mask_png_and_count);
+    tcase_add_test(tc, test_conform_absolute_bound_decides);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

@@ -254,7 +254,9 @@ static int write_map(const compare_args *a, const img_buf *x, const img_buf *ref
 }
 
 /* The mask: --mask, or the kit's (conform_kit_mask: checked against the
- * manifest, [KIT-MASK-1]); NULL for none.  STATUS_OK or the status. */
+ * manifest, [KIT-MASK-1]; and the kit's tolerance checked to carry a
+ * verdict at B, [VERIFY-UNBOUNDED-3]); NULL for none.  STATUS_OK or the
+ * status (*mask NULL then). */
 static int read_mask(const compare_args *a, const compare_kit *kit, const img_buf *ref, unsigned char **mask)
 {
     char err[1024];
@@ -266,8 +268,13 @@ static int read_mask(const compare_args *a, const compare_kit *kit, const img_bu
             cli_error("%s: %s", a->mask, err);
     } else if (kit) {
         status = conform_kit_mask(kit->dir, kit->scene, ref->width, ref->height, mask, err, sizeof err);
-        if (status != STATUS_OK)
+        if (status == STATUS_OK)
+            status = conform_kit_decisive(kit->scene, ref, *mask, err, sizeof err);
+        if (status != STATUS_OK) {
             cli_error("compare: %s: scene '%s': %s", a->manifest, kit->scene->name, err);
+            free(*mask);
+            *mask = NULL;
+        }
     }
     return status;
 }

@@ -76,9 +76,40 @@ int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exac
     if (status != STATUS_OK)
         return status;
     status = conform_kit_mask(kit_dir, s, s->width, s->height, mask, why, why_size);
-    if (status != STATUS_OK)
+    if (status == STATUS_OK)
+        status = conform_kit_decisive(s, exact, *mask, why, why_size);
+    if (status != STATUS_OK) {
         img_free(exact);
+        free(*mask);
+        *mask = NULL;
+    }
     return status;
+}
+
+int conform_bound_decisive(double relative, double absolute, double peak)
+{
+    return relative * peak + absolute < peak / 2;
+}
+
+void conform_bound_reason(double relative, double absolute, double peak, char *why, size_t why_size)
+{
+    snprintf(why, why_size, "its tolerance, relative %.3g and absolute %.3g, passes a picture of half the light of "
+             "the exact image, whose largest value is %.3g: relative * peak + absolute must be below peak / 2 "
+             "(no verdict, spec/verify.md [VERIFY-UNBOUNDED-3])", relative, absolute, peak);
+}
+
+int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const unsigned char *mask, char *why,
+                         size_t why_size)
+{
+    double peak = 0;
+    size_t n = (size_t)exact->width * (size_t)exact->height;
+    for (size_t p = 0; p < n; p++)
+        for (int c = 0; c < 3 && !(mask && mask[p]); c++)
+            peak = fmax(peak, fabs(exact->rgb[3 * p + c]));
+    if (conform_bound_decisive(s->relative, s->absolute, peak))
+        return STATUS_OK;
+    conform_bound_reason(s->relative, s->absolute, peak, why, why_size);
+    return STATUS_DATA;
 }
 
 int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,

@@ -32,10 +32,31 @@ int conform_kit_mask(const char *kit_dir, const manifest_scene *s, int width, in
                      char *why, size_t why_size);
 
 /*
+ * [VERIFY-UNBOUNDED-3] 1 when a verdict under |out - exact| <= relative
+ * |exact| + absolute can tell an image whose largest value is peak from
+ * itself scaled by any s with |1 - s| >= 1/2 (half its light, black, a
+ * doubled one): at the peak such a picture errs by |1 - s| peak >= peak /
+ * 2, so it fails there exactly when relative peak + absolute < peak / 2.
+ * 0 for a black peak: nothing tells black from half of it.
+ */
+int conform_bound_decisive(double relative, double absolute, double peak);
+
+/* The reason of a tolerance conform_bound_decisive refuses, into why. */
+void conform_bound_reason(double relative, double absolute, double peak, char *why, size_t why_size);
+
+/* Checks conform_bound_decisive for s's tolerance at the largest |value|
+ * of exact over the pixels mask leaves (NULL: all).  STATUS_OK, or
+ * STATUS_DATA with the reason in why. */
+int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const unsigned char *mask, char *why,
+                         size_t why_size);
+
+/*
  * Reads the exact image of scene s of the kit in kit_dir (EXR where the
  * manifest lists one and this build reads it, else PFM) and its mask
- * (conform_kit_mask at the manifest's size).  Returns STATUS_OK;
- * otherwise the status with the reason in why, and nothing to free.
+ * (conform_kit_mask at the manifest's size), and checks that the
+ * tolerance can carry a verdict there (conform_kit_decisive).  Returns
+ * STATUS_OK; otherwise the status with the reason in why, and nothing to
+ * free.
  */
 int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask, char *why,
                      size_t why_size);
