@@ -483,14 +483,15 @@ END_TEST
  * (worked in the scene's comment from its camera, not read from a kit). */
 static const int masked_pixels[4][2] = {{4, 0}, {1, 3}, {7, 3}, {4, 6}};
 
-/* A kit of tests/conform/masked_sphere.scene in a new directory work: its
- * path in kit, the exact image in exact and the mask, checked to mark
+/* A kit of tests/conform/masked_sphere.scene in a new directory work
+ * (/tmp/refray-TAG-XXXXXX, 64 bytes): its path in kit, the exact image in exact and the mask, checked to mark
  * the four pixels above and no other. */
-static void masked_kit(const char *work, char *kit, size_t size, img_buf *exact)
+static void masked_kit(const char *tag, char work[64], char *kit, size_t size, img_buf *exact)
 {
     char path[400], err[512];
     unsigned char *mask;
     cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, 64, tag);
     cli_path(kit, size, work, "kit");
     const char *args[] = {"kit", "-q", "-o", kit, "tests/conform/masked_sphere.scene", NULL};
     cli_refray(r, args);
@@ -569,8 +570,7 @@ START_TEST(test_conform_masked_nonfinite)
     img_buf e;
     int code[3];
     cli_run *r = malloc(sizeof *r);
-    cli_scratch(work, sizeof work, "maskednan");
-    masked_kit(work, kit, sizeof kit, &e);
+    masked_kit("maskednan", work, kit, sizeof kit, &e);
     /* 3 + 3 + 1 values in three masked pixels. */
     for (int c = 0; c < 3; c++) {
         img_pixel(&e, 4, 0)[c] = NAN;
@@ -659,8 +659,7 @@ START_TEST(test_conform_mask_png_and_count)
     img_buf e;
     int code[2];
     cli_run *r = malloc(sizeof *r);
-    cli_scratch(work, sizeof work, "maskpng");
-    masked_kit(work, kit, sizeof kit, &e);
+    masked_kit("maskpng", work, kit, sizeof kit, &e);
     for (int i = 0; i < 4; i++)
         for (int c = 0; c < 3; c++)
             img_pixel(&e, masked_pixels[i][0], masked_pixels[i][1])[c] = 0.5;
@@ -719,8 +718,7 @@ START_TEST(test_conform_absolute_bound_decides)
     img_buf e;
     int code[3];
     cli_run *r = malloc(sizeof *r);
-    cli_scratch(work, sizeof work, "absbound");
-    masked_kit(work, kit, sizeof kit, &e);
+    masked_kit("absbound", work, kit, sizeof kit, &e);
     for (int i = 0; i < 3 * e.width * e.height; i++)
         e.rgb[i] = 0;
     write_raw_pfm(cli_path(black, sizeof black, work, "black.pfm"), &e);
