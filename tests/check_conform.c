@@ -19,6 +19,7 @@
 #include "cli_testlib.h"
 #include "io/image_io.h"
 #include "verify/conform.h"
+#include "verify/verify.h"
 
 static char kit_root[64];
 static int kit_status = -1;
@@ -478,6 +479,273 @@ START_TEST(test_kit_check_refuses)
 }
 END_TEST
 
+/* The pixels tests/conform/masked_sphere.scene's outline passes through
+ * (worked in the scene's comment from its camera, not read from a kit). */
+static const int masked_pixels[4][2] = {{4, 0}, {1, 3}, {7, 3}, {4, 6}};
+
+/* A kit of tests/conform/masked_sphere.scene in a new directory work
+ * (/tmp/refray-TAG-XXXXXX, 64 bytes): its path in kit, the exact image in exact and the mask, checked to mark
+ * the four pixels above and no other. */
+static void masked_kit(const char *tag, char work[64], char *kit, size_t size, img_buf *exact)
+{
+    char path[400], err[512];
+    unsigned char *mask;
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, 64, tag);
+    cli_path(kit, size, work, "kit");
+    const char *args[] = {"kit", "-q", "-o", kit, "tests/conform/masked_sphere.scene", NULL};
+    cli_refray(r, args);
+    ck_assert_msg(r->code == 0, "refray kit: %s", r->err);
+    free(r);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    ck_assert_int_eq(img_read(path, NULL, exact, err, sizeof err), 0);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    ck_assert_int_eq(verify_mask_read(path, exact->width, exact->height, &mask, err, sizeof err), 0);
+    long marked = 0;
+    for (int p = 0; p < exact->width * exact->height; p++)
+        marked += mask[p] != 0;
+    ck_assert_int_eq(marked, 4);
+    for (int i = 0; i < 4; i++)
+        ck_assert(mask[masked_pixels[i][1] * exact->width + masked_pixels[i][0]]);
+    free(mask);
+}
+
+/* img as a PFM of its values as they are: refray's writers make NaN and
+ * infinities finite ([REL-NONFINITE-1]); another renderer's need not.
+ * The scale's sign says the host's byte order. */
+static void write_raw_pfm(const char *path, const img_buf *img)
+{
+    unsigned one = 1;
+    unsigned char little;
+    memcpy(&little, &one, 1);
+    FILE *f = fopen(path, "wb");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "PF\n%d %d\n%s\n", img->width, img->height, little ? "-1.0" : "1.0");
+    for (int y = img->height - 1; y >= 0; y--)
+        for (int x = 0; x < img->width; x++)
+            for (int c = 0; c < 3; c++) {
+                float v = (float)img_pixel(img, x, y)[c];
+                ck_assert_int_eq(fwrite(&v, sizeof v, 1, f), 1);
+            }
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+/* The exit codes of the three judges for the picture at path against the
+ * masked kit: conform (its JSON in r), compare --manifest and kit_check. */
+static void three_judges(const char *kit, const char *path, cli_run *r, int code[3])
+{
+    char cmd[2048], mf[400], exact[400], mask[400];
+    const char *bin = getenv("KIT_CHECK_BIN");
+    ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
+    snprintf(cmd, sizeof cmd, "cp '%s' {out}", path);
+    const char *conform_args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--cmd", cmd, NULL};
+    cli_refray(r, conform_args);
+    code[0] = r->code;
+    cli_run *c = malloc(sizeof *c);
+    const char *compare_args[] = {"compare", path, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), NULL};
+    cli_refray(c, compare_args);
+    code[1] = c->code;
+    free(c);
+    cli_path(exact, sizeof exact, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    cli_path(mask, sizeof mask, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    manifest m;
+    ck_assert_int_eq(manifest_read(mf, &m, cmd, sizeof cmd), 0);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null 2>&1", bin, exact, mask,
+             m.scenes[0].relative, m.scenes[0].absolute, path);
+    manifest_free(&m);
+    int st = system(cmd);
+    code[2] = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* [KIT-RULE-1] [CONF-MASKED-1] A NaN or an infinity in a pixel the mask
+ * excludes is not judged, by any of the three judges: conform passes the
+ * picture with a note of the values, compare --manifest and kit_check pass
+ * it too.  One more NaN in a pixel the mask does not mark fails it in all
+ * three.  Before, conform counted the non-finite values of the whole image
+ * before it read the mask, and failed the first (attack 12, finding 4:
+ * sh tests/attack12/conform_masked_nan.sh). */
+START_TEST(test_conform_masked_nonfinite)
+{
+    char work[64], kit[128], path[300];
+    img_buf e;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    masked_kit("maskednan", work, kit, sizeof kit, &e);
+    /* 3 + 3 + 1 values in three masked pixels. */
+    for (int c = 0; c < 3; c++) {
+        img_pixel(&e, 4, 0)[c] = NAN;
+        img_pixel(&e, 1, 3)[c] = HUGE_VAL;
+    }
+    img_pixel(&e, 7, 3)[0] = NAN;
+    write_raw_pfm(cli_path(path, sizeof path, work, "masked.pfm"), &e);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "conform %d, compare %d, kit_check %d\n%s", code[0],
+                  code[1], code[2], r->out);
+    ck_assert_msg(strstr(r->out, "\"note\": \"7 channel values of its image are NaN or infinite in pixels the mask "
+                                 "excludes: not judged\"") && strstr(r->out, "\"compared\": 59,"), "%s", r->out);
+    char cmd[400];
+    snprintf(cmd, sizeof cmd, "cp '%s' {out}", path);
+    const char *table[] = {"conform", "--kit", kit, "--format", "pfm", "--cmd", cmd, NULL};
+    cli_refray(r, table);
+    ck_assert_msg(r->code == 0 && strstr(r->out, "\n    note: 7 channel values") &&
+                  strstr(r->out, "1 scene: 1 passed, 0 failed, 1 with a note"), "%s", r->out);
+    const char *tap[] = {"conform", "--kit", kit, "--format", "pfm", "--tap", "--cmd", cmd, NULL};
+    cli_refray(r, tap);
+    ck_assert_msg(r->code == 0 && strstr(r->out, "ok 1 - masked_sphere\n# note: 7 channel values"), "%s", r->out);
+    img_pixel(&e, 0, 0)[1] = NAN;
+    write_raw_pfm(path, &e);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "conform %d, compare %d, kit_check %d\n%s", code[0],
+                  code[1], code[2], r->out);
+    expect(r, 1, "nonfinite", "1 channel value of its image is NaN or infinite");
+    ck_assert_msg(strstr(r->out, "\"note\": \"7 channel values"), "%s", r->out);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
+/* The masked kit's manifest with mask_pgm and mask_png kept or dropped
+ * (pgm, png) and masked_pixels set to masked. */
+static void edit_masked(const char *kit, int pgm, int png, long masked)
+{
+    char mf[400], why[512];
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, why, sizeof why), 0);
+    manifest_scene *s = &m.scenes[0];
+    char *keys[2] = {s->files[MANIFEST_FILE_MASK_PGM], s->files[MANIFEST_FILE_MASK_PNG]};
+    int keep[2] = {pgm, png};
+    for (int i = 0; i < 2; i++)
+        if (!keep[i])
+            keys[i][0] = '\0';
+    s->masked = masked;
+    ck_assert_int_eq(manifest_write(mf, &m, why, sizeof why), 0);
+    manifest_free(&m);
+}
+
+/* conform and compare --manifest of the picture at path against the
+ * masked kit: their exit codes, conform's output in r; the renderer's
+ * command leaves ran beside path when it runs. */
+static void conform_and_compare(const char *kit, const char *work, const char *path, cli_run *r, int code[2])
+{
+    char cmd[1024], mf[400], ran[300];
+    snprintf(cmd, sizeof cmd, "touch '%s'; cp '%s' {out}", cli_path(ran, sizeof ran, work, "ran"), path);
+    remove(ran);
+    const char *conform_args[] = {"conform", "--kit", kit, "--format", "pfm", "--json", "--cmd", cmd, NULL};
+    cli_refray(r, conform_args);
+    code[0] = r->code;
+    ck_assert_msg(r->code == 65 ? !cli_exists(ran) : cli_exists(ran), "conform %d: the renderer %s", r->code,
+                  cli_exists(ran) ? "ran" : "did not run");
+    cli_run *c = malloc(sizeof *c);
+    const char *compare_args[] = {"compare", path, "--manifest", cli_path(mf, sizeof mf, kit, "manifest.json"), NULL};
+    cli_refray(c, compare_args);
+    code[1] = c->code;
+    ck_assert_msg(c->code != 65 || strstr(c->err, "the manifest disagrees with its kit"), "%s", c->err);
+    free(c);
+}
+
+/* [KIT-MASK-1] A manifest that lists its mask as PNG only (mask_pgm null,
+ * which spec/conformance.md 2 allows for any file): conform and compare
+ * read the PNG, and pass a picture that is the exact image with 0.5 in
+ * the four masked pixels (where the exact image holds 0).  A manifest
+ * whose masked_pixels is not what its mask marks, or that names masked
+ * pixels and lists no mask, is refused (65) before any renderer runs.
+ * Before, both read mask_pgm only: with it null they compared every pixel
+ * and failed the picture, and masked_pixels was never read (attack 12,
+ * finding 5: sh tests/attack12/conform_mask_png.sh). */
+START_TEST(test_conform_mask_png_and_count)
+{
+    char work[64], kit[128], path[300];
+    img_buf e;
+    int code[2];
+    cli_run *r = malloc(sizeof *r);
+    masked_kit("maskpng", work, kit, sizeof kit, &e);
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++)
+            img_pixel(&e, masked_pixels[i][0], masked_pixels[i][1])[c] = 0.5;
+    write_raw_pfm(cli_path(path, sizeof path, work, "picture.pfm"), &e);
+    edit_masked(kit, 0, 1, 4);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0, "PNG mask: conform %d, compare %d\n%s", code[0], code[1], r->out);
+    ck_assert_msg(strstr(r->out, "\"excluded\": 4,"), "%s", r->out);
+    edit_masked(kit, 0, 1, 3);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65, "3 of 4: conform %d, compare %d", code[0], code[1]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': 'masked_pixels' is 3, but its mask "
+                                 "'scenes/masked_sphere/masked_sphere.mask.png' marks 4: the manifest disagrees "
+                                 "with its kit"), "%s", r->err);
+    edit_masked(kit, 0, 0, 4);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65, "no mask: conform %d, compare %d", code[0], code[1]);
+    ck_assert_msg(strstr(r->err, "'masked_pixels' is 4, but it lists no mask"), "%s", r->err);
+    edit_masked(kit, 0, 0, 0);
+    conform_and_compare(kit, work, path, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1, "no mask, none masked: conform %d, compare %d", code[0], code[1]);
+    expect(r, 1, "over", "4 of 63 pixels over");
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
+/* The masked kit's manifest with png16_scale 2^-e and absolute the step
+ * of a 16-bit PNG there, 2^e / 65535 (as [KIT-TOL-1] defines it, so that
+ * only [VERIFY-UNBOUNDED-3] is left to refuse it). */
+static void edit_scale(const char *kit, int e)
+{
+    char mf[400], why[512];
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, why, sizeof why), 0);
+    m.scenes[0].png16_scale = ldexp(1, -e);
+    m.scenes[0].absolute = ldexp(1, e) / 65535;
+    ck_assert_int_eq(manifest_write(mf, &m, why, sizeof why), 0);
+    manifest_free(&m);
+}
+
+/* [VERIFY-UNBOUNDED-3] The masked kit's exact image peaks at 0.87 (the
+ * red of Kd 0.8 under ambient 0.1 and a distant light of 1, at a normal
+ * near the light).  With png16_scale 2^-15 the absolute bound is 0.50:
+ * above half the peak less its relative part, so a picture of half the
+ * light, and a black one, would pass; conform, compare --manifest and
+ * kit_check refuse the tolerance (65, 65, 2) and run nothing.  At
+ * 2^-14 (0.25) it is below, and the three fail a black picture.  Before,
+ * any absolute bound loaded, and conform passed an all-black picture
+ * under absolute 10 (attack 12, finding 6: sh
+ * tests/attack12/conform_abs_unbounded.sh). */
+START_TEST(test_conform_absolute_bound_decides)
+{
+    char work[64], kit[128], path[300], black[300];
+    img_buf e;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    masked_kit("absbound", work, kit, sizeof kit, &e);
+    for (int i = 0; i < 3 * e.width * e.height; i++)
+        e.rgb[i] = 0;
+    write_raw_pfm(cli_path(black, sizeof black, work, "black.pfm"), &e);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    edit_scale(kit, 15);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-15: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': its tolerance, relative 0.0001 and absolute 0.5, passes a "
+                                 "picture of half the light") && strstr(r->err, "[VERIFY-UNBOUNDED-3]"), "%s", r->err);
+    ck_assert_msg(r->out[0] == '\0', "conform ran a scene: %s", r->out);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-15, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    edit_scale(kit, 14);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-14: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-14, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
 #else
 
 /* conform reads the kit's manifest: a build without jansson says so. */
@@ -555,6 +823,9 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_report_path_checked_first);
     tcase_add_test(tc, test_kit_check_agrees);
     tcase_add_test(tc, test_kit_check_refuses);
+    tcase_add_test(tc, test_conform_masked_nonfinite);
+    tcase_add_test(tc, test_conform_mask_png_and_count);
+    tcase_add_test(tc, test_conform_absolute_bound_decides);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

@@ -290,6 +290,70 @@ START_TEST(test_manifest_refuses_a_bound_of_one_half_or_more)
     cli_remove(work);
 }
 END_TEST
+/* [KIT-SCALE-1] png16_scale is a power of two; [KIT-TOL-1] absolute is at
+ * most one 16-bit step at it, 1 / (65535 png16_scale): a manifest that
+ * breaks either is refused, whoever wrote it.  Before, png16_scale 3 and
+ * absolute 10 loaded, and conform passed a black picture under them
+ * (attack 12, finding 6). */
+START_TEST(test_manifest_refuses_a_scale_or_absolute_off_its_definition)
+{
+    /* {png16_scale, absolute, refused}; the sample's first scene has
+     * png16_scale 1/8, whose step is 8 / 65535. */
+    static const struct {
+        double scale, absolute;
+        const char *why;
+    } cases[] = {
+        {3, 1e-5, "'png16_scale' is not a power of two"},
+        {0.75, 1e-5, "'png16_scale' is not a power of two"},
+        {0.125, 10, "'absolute' is more than one step of a 16-bit PNG"},
+        {0.125, 8 / 65535.0 * (1 + 1e-9), "'absolute' is more than one step"},
+        {0.125, 8 / 65535.0, NULL},
+        {0x1p-40, 0x1p40 / 65535, NULL},
+        {0.125, 0, NULL},
+    };
+    char work[64], path[300], why[512];
+    cli_scratch(work, sizeof work, "manifest");
+    cli_path(path, sizeof path, work, "manifest.json");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        manifest m, back;
+        sample_manifest(&m);
+        m.scenes[0].png16_scale = cases[i].scale;
+        m.scenes[0].absolute = cases[i].absolute;
+        ck_assert_int_eq(manifest_write(path, &m, why, sizeof why), 0);
+        why[0] = '\0';
+        int status = manifest_read(path, &back, why, sizeof why);
+        if (cases[i].why) {
+            ck_assert_msg(status == STATUS_DATA && strstr(why, "scenes[0] ('first'): ") && strstr(why, cases[i].why),
+                          "case %zu: status %d, %s", i, status, why);
+        } else {
+            ck_assert_msg(status == 0, "case %zu: %s", i, why);
+            manifest_free(&back);
+        }
+        manifest_free(&m);
+    }
+    cli_remove(work);
+}
+END_TEST
+
+/* [VERIFY-UNBOUNDED-3] A scene whose exact image is black: no tolerance
+ * tells a picture from half of it, so `refray kit` refuses it (65) rather
+ * than write a manifest no verdict can rest on. */
+START_TEST(test_cli_kit_refuses_a_black_image)
+{
+    char work[64], dir[300];
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, sizeof work, "kitblack");
+    const char *args[] = {"kit", "-q", "-o", cli_path(dir, sizeof dir, work, "k"), "tests/conform/black.scene", NULL};
+    cli_refray(r, args);
+    ck_assert_int_eq(r->code, 65);
+    ck_assert_msg(strstr(r->err, "passes a picture of half the light of the exact image, whose largest value is 0") &&
+                  strstr(r->err, "[VERIFY-UNBOUNDED-3]"), "stderr: %s", r->err);
+    ck_assert_int_eq(cli_entries(work), 0);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
 /* Writes text as work/name and reads it as a manifest: the status, and
  * the message in why. */
 static int read_text_manifest(const char *work, const char *text, char *why, size_t size)
@@ -540,6 +604,8 @@ Suite *suite_kit(void)
     tcase_add_test(tc, test_manifest_round_trip);
     tcase_add_test(tc, test_manifest_read_errors);
     tcase_add_test(tc, test_manifest_refuses_a_bound_of_one_half_or_more);
+    tcase_add_test(tc, test_manifest_refuses_a_scale_or_absolute_off_its_definition);
+    tcase_add_test(tc, test_cli_kit_refuses_a_black_image);
     tcase_add_test(tc, test_cli_kit_errors);
     tcase_add_test(tc, test_cli_compare_manifest);
 #else

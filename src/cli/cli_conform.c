@@ -45,8 +45,9 @@ static const char conform_help[] =
     "  --junit FILE          also write JUnit XML (atomically)\n"
     "  --markdown FILE       also write the table as Markdown (atomically)\n"
     "  --keep                keep each scene's working directory (printed)\n"
-    "exit: 0 every scene passed; 1 some failed; 64 usage; 65 a malformed manifest;\n"
-    "66 no kit; 74 a report or working directory could not be written; 130 stopped.\n";
+    "exit: 0 every scene passed; 1 some failed; 64 usage; 65 a malformed manifest, or\n"
+    "one its kit contradicts; 66 no kit, or a file of it missing; 74 a report or working\n"
+    "directory could not be written; 130 stopped.\n";
 
 typedef struct conform_args {
     const char *kit, *cmd, *format, *junit, *markdown;
@@ -233,6 +234,27 @@ static int select_scenes(const conform_args *a, const manifest *m, const manifes
     return 0;
 }
 
+/* [KIT-MASK-1] The kit's files of each chosen scene, read and checked
+ * against the manifest before any renderer runs: a manifest its kit
+ * contradicts is refused (65) as a malformed one is, not found out scene by
+ * scene after the renders.  STATUS_OK, or the status after the message. */
+static int check_kit(const conform_args *a, const char *kit_dir, const manifest_scene **scenes, int count)
+{
+    for (int i = 0; i < count; i++) {
+        img_buf exact;
+        unsigned char *mask;
+        char why[1024];
+        int status = conform_kit_read(kit_dir, scenes[i], &exact, &mask, why, sizeof why);
+        if (status != STATUS_OK) {
+            cli_error("conform: %s/manifest.json: scene '%s': %s", a->kit, scenes[i]->name, why);
+            return status;
+        }
+        img_free(&exact);
+        free(mask);
+    }
+    return STATUS_OK;
+}
+
 /* The report files, --junit then --markdown: fp NULL when not asked. */
 enum { REPORT_FILES = 2 };
 
@@ -325,6 +347,8 @@ static int run_kit(const conform_args *a, const char *kit_dir, const manifest *m
     int count = 0, status = scenes && results ? select_scenes(a, m, scenes, &count) : STATUS_NO_MEMORY;
     const char *tmp = getenv("TMPDIR");
     file_out reports[REPORT_FILES];
+    if (status == 0)
+        status = check_kit(a, kit_dir, scenes, count);
     if (status == 0)
         status = open_reports(a, reports);
     else

@@ -171,33 +171,6 @@ static int png_bit_depth(const char *path)
     return n == sizeof head && memcmp(head, "\x89PNG", 4) == 0 ? head[24] : 0;
 }
 
-/* The kit's exact image and mask of s: 0, or a reason in r. */
-static int read_exact(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask,
-                      conform_result *r)
-{
-    char err[600];
-    int exr = s->files[MANIFEST_FILE_EXACT_EXR][0] && img_format_available(IMG_FORMAT_EXR);
-    const char *rel = s->files[exr ? MANIFEST_FILE_EXACT_EXR : MANIFEST_FILE_EXACT_PFM];
-    char *path = file_join(NULL, kit_dir, rel);
-    img_read_opts o = img_read_opts_default();
-    o.width = s->width; /* the manifest's size, checked on the header */
-    o.height = s->height;
-    int status = path ? img_read(path, &o, exact, err, sizeof err) : STATUS_NO_MEMORY;
-    free(path);
-    const char *mrel = s->files[MANIFEST_FILE_MASK_PGM];
-    *mask = NULL;
-    if (status == STATUS_OK && mrel[0]) {
-        char *mpath = file_join(NULL, kit_dir, mrel);
-        status = mpath ? verify_mask_read(mpath, s->width, s->height, mask, err, sizeof err) : STATUS_NO_MEMORY;
-        free(mpath);
-    }
-    if (status == STATUS_OK)
-        return 0;
-    img_free(exact);
-    set(r, CONFORM_ERROR, "the kit is damaged: %s", status == STATUS_NO_MEMORY ? "out of memory" : err);
-    return -1;
-}
-
 /* Up to 6 names of what the renderer left beside {out}, for the reason
  * when {out} is not there (an extension added, another name chosen). */
 static void left_beside(const char *out_path, char *buf, size_t size)
@@ -267,14 +240,13 @@ static int read_picture(const char *out_path, const manifest_scene *s, img_buf *
         return -1;
     }
     img_scale(img, r->scale);
-    long bad = img_count_nonfinite(img);
-    if (bad > 0) {
-        set(r, CONFORM_NONFINITE, "%ld channel value%s of its image %s NaN or infinite", bad, bad == 1 ? "" : "s",
-            bad == 1 ? "is" : "are");
-        img_free(img);
-        return -1;
-    }
     return 0;
+}
+
+/* "3 channel values of its image are", "1 channel value ... is". */
+static const char *values_are(long n)
+{
+    return n == 1 ? "channel value of its image is" : "channel values of its image are";
 }
 
 /* The reason of a picture over its tolerance, with the worst pixel. */
@@ -294,26 +266,48 @@ static void over_reason(const img_buf *img, const img_buf *exact, const char *ou
         depth && depth < 16 ? "; the output is a PNG of fewer than 16 bits, too coarse for the tolerance" : "");
 }
 
+/* [KIT-RULE-1] judges only the pixels the mask leaves: a NaN or an
+ * infinity there fails the picture, one in a pixel the mask excludes is
+ * noted and not judged (a renderer may well write NaN on the silhouettes
+ * and terminators a kit masks). */
+static void judge(const img_buf *img, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
+                  const char *out_path, conform_result *r)
+{
+    long bad, masked;
+    conform_count_nonfinite(img, mask, &bad, &masked);
+    if (masked > 0)
+        snprintf(r->note, sizeof r->note, "%ld %s NaN or infinite in pixels the mask excludes: not judged", masked,
+                 values_are(masked));
+    if (bad > 0) {
+        set(r, CONFORM_NONFINITE, "%ld %s NaN or infinite", bad, values_are(bad));
+        return;
+    }
+    r->compared = 1;
+    if (conform_rule(img, exact, mask, s, &r->metrics))
+        set(r, CONFORM_PASS, "%s", "");
+    else
+        over_reason(img, exact, out_path, r);
+}
+
 void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out_path, const conform_adjust *a,
                    conform_result *r)
 {
     img_buf img, exact;
     unsigned char *mask;
+    char why[600];
     r->relative = s->relative;
     r->absolute = s->absolute;
     r->downsample = conform_downsample_of(a, s);
     r->scale = conform_scale_of(a, s);
     if (read_picture(out_path, s, &img, r) != 0)
         return;
-    if (read_exact(kit_dir, s, &exact, &mask, r) == 0) {
-        metrics_compare_abs(&img, &exact, mask, s->relative, s->absolute, &r->metrics);
-        r->compared = 1;
-        if (r->metrics.over > 0 || r->metrics.compared == 0)
-            over_reason(&img, &exact, out_path, r);
-        else
-            set(r, CONFORM_PASS, "%s", "");
+    int status = conform_kit_read(kit_dir, s, &exact, &mask, why, sizeof why);
+    if (status == STATUS_OK) {
+        judge(&img, &exact, mask, s, out_path, r);
         img_free(&exact);
         free(mask);
+    } else {
+        set(r, CONFORM_ERROR, "the kit is damaged: %s", why);
     }
     img_free(&img);
 }

@@ -5,10 +5,10 @@
  * For each scene of the manifest the renderer's command line is expanded
  * (placeholders replaced by shell-quoted values) and run by /bin/sh in a
  * fresh directory with a time limit (io/proc.h); its picture is read,
- * brought to the exact image's terms (image/adjust.h) and compared under
- * the scene's tolerance and mask (metrics_compare_abs).  Whatever the
- * renderer does - crash, hang, exit non-zero, write nothing, garbage or the
- * wrong size - is a failed scene with a reason, never an error of ours.
+ * brought to the exact image's terms (image/adjust.h) and judged by the
+ * kit's rule (conform_rule, verify/conform_kit.h).  Whatever the renderer
+ * does - crash, hang, exit non-zero, write nothing, garbage or the wrong
+ * size - is a failed scene with a reason, never an error of ours.
  */
 #ifndef REFRAY_CONFORM_H
 #define REFRAY_CONFORM_H
@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include "io/proc.h"
 #include "image/metrics.h"
+#include "verify/conform_kit.h"
 #include "verify/manifest.h"
 
 /* The value of --downsample or --scale that says "each scene's own, from
@@ -58,6 +59,7 @@ typedef struct conform_result {
     const manifest_scene *scene;
     conform_outcome outcome;
     char reason[1024];
+    char note[256];             /* what a pass or failure leaves unjudged ("": nothing) */
     int ran;                    /* the command was started; proc is valid */
     proc_result proc;
     int compared;               /* metrics are valid */
@@ -111,8 +113,9 @@ int conform_template_ok(const char *tmpl, char *why, size_t why_size);
 
 /*
  * Checks the picture at out_path (written by the renderer) against scene
- * s of the kit in kit_dir: read, size, downsample, scale, finite values,
- * tolerance.  Fills r's outcome, reason, metrics and tolerance.
+ * s of the kit in kit_dir: read, size, downsample, scale, finite values
+ * of the pixels the mask leaves, tolerance.  Fills r's outcome, reason,
+ * note, metrics and tolerance.
  */
 void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out_path, const conform_adjust *a,
                    conform_result *r);

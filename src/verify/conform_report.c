@@ -29,6 +29,8 @@ const char *conform_short_reason(const conform_result *r, char *buf, size_t size
 {
     if (r->outcome == CONFORM_OVER && r->compared && r->metrics.compared > 0)
         snprintf(buf, size, "%ld of %ld pixels over the tolerance", r->metrics.over, r->metrics.compared);
+    else if (r->outcome == CONFORM_PASS && r->note[0])
+        snprintf(buf, size, "note: %s", r->note);
     else
         snprintf(buf, size, "%s", r->reason);
     return buf;
@@ -79,6 +81,8 @@ void conform_text_row(FILE *fp, const conform_result *r)
     fprintf(fp, " %13s %7s  %s\n", over, secs, verdict(r));
     if (r->outcome != CONFORM_PASS)
         fprintf(fp, "    %s\n", r->reason);
+    if (r->note[0])
+        fprintf(fp, "    note: %s\n", r->note);
     if (show_stderr(r)) {
         fputs("    stderr (last lines):\n", fp);
         for (const char *p = r->stderr_tail; *p;) {
@@ -96,8 +100,14 @@ void conform_text_row(FILE *fp, const conform_result *r)
 void conform_text_summary(FILE *fp, const conform_report *rep)
 {
     int passed = conform_passed(rep);
-    fprintf(fp, "%d scene%s: %d passed, %d failed (%.1f s)\n", rep->count, rep->count == 1 ? "" : "s", passed,
-            rep->count - passed, rep->seconds);
+    int noted = 0;
+    for (int i = 0; i < rep->count; i++)
+        noted += rep->results[i].note[0] != '\0';
+    fprintf(fp, "%d scene%s: %d passed, %d failed", rep->count, rep->count == 1 ? "" : "s", passed,
+            rep->count - passed);
+    if (noted)
+        fprintf(fp, ", %d with a note (below the row)", noted);
+    fprintf(fp, " (%.1f s)\n", rep->seconds);
 }
 
 /* ---- TAP ---- */
@@ -149,6 +159,9 @@ void conform_tap_row(FILE *fp, int number, const conform_result *r)
         }
         fputs("\n  ...\n", fp);
     }
+    /* After the YAML block, which must follow its test line. */
+    if (r->note[0])
+        fprintf(fp, "# note: %s\n", r->note);
     fflush(fp);
 }
 
@@ -329,6 +342,7 @@ static json_t *result_json(jw *w, const conform_result *r)
     put(w, o, "verdict", str(r->outcome == CONFORM_PASS ? "pass" : "fail"));
     put(w, o, "outcome", str(conform_outcome_name(r->outcome)));
     put(w, o, "reason", str(r->outcome == CONFORM_PASS ? NULL : r->reason));
+    put(w, o, "note", str(r->note[0] ? r->note : NULL));
     put(w, o, "exit_status", r->ran && r->proc.exited ? json_integer(r->proc.exit_code) : json_null());
     put(w, o, "signal", str(r->ran && r->proc.signaled ? proc_signal_name(r->proc.term_signal, sig, sizeof sig)
                                                        : NULL));

@@ -23,6 +23,7 @@
 #include "io/scene_file.h"
 #include "export/export_pov.h"
 #include "io/image_io.h"
+#include "verify/conform_kit.h"
 #include "verify/kit.h"
 #include "verify/verify.h"
 
@@ -274,9 +275,18 @@ static int build_scene(const char *root, const char *path, const kit_opts *o, ma
     int status = load_exact(path, o, &s, &e, why, why_size);
     if (status == 0) {
         describe(s, &e, m);
-        if (!verify_tolerance_decisive(m->relative)) {
-            snprintf(why, why_size, "'%s': %s (its error bound, relative, is %.3g)", path,
-                     verify_tolerance_usable(m->relative) ? VERIFY_UNBOUNDED : VERIFY_INEXACT, m->relative);
+        /* The relative bound alone, for its own reason; then with the
+         * absolute one at the peak ([VERIFY-UNBOUNDED-3]: a black image
+         * has no verdict either). */
+        int relative_ok = verify_tolerance_decisive(m->relative);
+        if (!relative_ok || !conform_bound_decisive(m->relative, m->absolute, m->peak)) {
+            char reason[400];
+            conform_bound_reason(m->relative, m->absolute, m->peak, reason, sizeof reason);
+            if (relative_ok)
+                snprintf(why, why_size, "'%s': %s", path, reason);
+            else
+                snprintf(why, why_size, "'%s': %s (its error bound, relative, is %.3g)", path,
+                         verify_tolerance_usable(m->relative) ? VERIFY_UNBOUNDED : VERIFY_INEXACT, m->relative);
             verify_exact_free(&e);
             scene_free(s);
             return STATUS_DATA;

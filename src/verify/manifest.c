@@ -442,6 +442,24 @@ static int read_tolerance(reader *r, json_t *o, manifest_scene *s)
     return status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
 }
 
+/* [KIT-SCALE-1] png16_scale is a power of two, and [KIT-TOL-1] absolute
+ * is at most one 16-bit step at it: a larger one is no longer the kit's
+ * bound (a smaller one is only stricter).  The slack of 1e-12 lets the
+ * step through written with fewer than 17 digits. */
+static int check_scale(reader *r, const manifest_scene *s)
+{
+    int e;
+    if (frexp(s->png16_scale, &e) != 0.5)
+        return bad(r, "is not a power of two ([KIT-SCALE-1])", "png16_scale");
+    if (s->absolute > manifest_png16_step(s->png16_scale) * (1 + 1e-12)) {
+        char what[256];
+        snprintf(what, sizeof what, "is more than one step of a 16-bit PNG at png16_scale, 1 / (65535 * %.17g) = "
+                 "%.17g ([KIT-TOL-1])", s->png16_scale, manifest_png16_step(s->png16_scale));
+        return bad(r, what, "absolute");
+    }
+    return 0;
+}
+
 static int read_scene(reader *r, json_t *o, manifest_scene *s)
 {
     if (!json_is_object(o))
@@ -469,7 +487,7 @@ static int read_scene(reader *r, json_t *o, manifest_scene *s)
         (status = read_notes(r, o, s)))
         return status;
     s->masked = masked;
-    return 0;
+    return check_scale(r, s);
 }
 
 static int read_root(reader *r, json_t *root, manifest *m)

@@ -12,8 +12,11 @@
  * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
  * number; masked pixels (mask byte non-zero) are skipped.  Prints
  * "N of M pixels over"; exit 0 when none is over and at least one pixel
- * was compared, 1 when some are, 2 when a file cannot be read or a
- * tolerance is not a finite number >= 0.
+ * was compared, 1 when some are, 2 when a file cannot be read, a
+ * tolerance is not a finite number >= 0, or the two carry no verdict:
+ * RELATIVE * PEAK + ABSOLUTE is not below PEAK / 2, PEAK the largest
+ * |exact| of the compared pixels, so that a picture of half the light
+ * (or black) would pass (spec/verify.md [VERIFY-UNBOUNDED-3]).
  */
 #include <math.h>
 #include <stdio.h>
@@ -161,6 +164,20 @@ int main(int argc, char **argv)
     unsigned char *mask = read_pgm(argv[2], exact.width, exact.height);
     if (!mask) {
         fprintf(stderr, "kit_check: %s is not a %ldx%ld binary PGM\n", argv[2], exact.width, exact.height);
+        free(exact.rgb);
+        free(mine.rgb);
+        return 2;
+    }
+    /* A picture of half the light errs by exact / 2: it must fail at the
+     * peak, where that is largest. */
+    double peak = 0;
+    for (size_t p = 0; p < (size_t)exact.width * (size_t)exact.height; p++)
+        for (int c = 0; c < 3 && !mask[p]; c++)
+            peak = fmax(peak, fabs(exact.rgb[3 * p + (size_t)c]));
+    if (!(rel * peak + abs_tol < peak / 2)) {
+        fprintf(stderr, "kit_check: RELATIVE %g and ABSOLUTE %g pass a picture of half the light of the exact "
+                "image (its peak is %g): no verdict\n", rel, abs_tol, peak);
+        free(mask);
         free(exact.rgb);
         free(mine.rgb);
         return 2;
