@@ -468,10 +468,10 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *h; */
-static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
+static int crossing_hit(const quadric *s, const axial *x, const ray *r, vec3 o2, real tm, crossing c, hit *h)
 {
-    vec3 p = ray_at(r, c.t), n;
-    real t = c.t;
+    vec3 p = vec_madd(o2, r->dir, c.t), n;
+    real t = c.t + tm;
     h->t = t;   /* written on every path (Eva: the caller reads it after a 0 too) */
     if (!near_shape(s, &p))
         return 0;
@@ -591,9 +591,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        /* the crossing on the ray from its own origin: |c[i].t| <= 2^1021 and |tm| <= 2^1019 */
-        crossing ci = {c[i].t + tm, c[i].surface};
-        kept += crossing_hit(s, &x, r, ci, &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
+        kept += crossing_hit(s, &x, r, o2, tm, c[i], &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
     }
     if (kept == 2 && h[1].t < h[0].t) {
         hit swap = h[0];
