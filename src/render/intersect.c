@@ -736,9 +736,12 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * line, not off it: a point of the line placed near the shape, and the
  * solve run from there, has only that point's own error.
  *
- * local_start_of places it.  The direction is scaled by a power of two to
- * a largest component in [1/2, 1) when it is past 2^64 or below 2^-64
- * (exact: t scales back by the same power).  Then, while the origin is
+ * local_start_of places it, only for a local direction longer than 2^20
+ * (max norm): a frame stretching a ray's direction that much squashes the
+ * shape across it; any other frame is solved as before, unchanged, at the
+ * cost of one test.  The direction is scaled by a power of two to a
+ * largest component in [1/2, 1) when it is past 2^64 (exact: t scales
+ * back by the same power).  Then, while the origin is
  * more than 2^20 radii of the shape's local ball from its centre, the
  * origin steps to the line's point nearest that centre, less twice the
  * ball's radius and 2^-44 (|t| + reach) (reach = (|o| + |c|) / |d|, max
@@ -747,7 +750,7 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * distance by about 2^-43, so 32 steps come from 2^1023 radii.  The solve
  * runs on the line from the start, t from 0, and its crossings are
  * shifted and scaled back and held to the ray's interval.  A nearer origin
- * and an ordinary direction are solved as before, unchanged.
+ * is solved as before.
  */
 enum { START_STEPS = 32 };
 
@@ -797,45 +800,48 @@ static int local_ball(const scene_prim *p, vec3 *c, real *rho)
     }
 }
 
-static local_start local_start_of(const scene_prim *p, const ray *local)
+/* Whether the ray starts elsewhere (*s), for a direction past 2^20. */
+static int local_start_of(const scene_prim *p, const ray *local, local_start *s)
 {
-    local_start s = {0, 1, 0, local->origin, local->dir};
     vec3 c;
     real rho, dm = vec_max_abs(local->dir);
-    if (!local_ball(p, &c, &rho) || !(dm > 0))
-        return s;
-    if (dm > 0x1p64 || dm < 0x1p-64) {
+    if (!local_ball(p, &c, &rho))
+        return 0;
+    s->on = 0;
+    s->scale = 1;
+    s->t0 = 0;
+    s->origin = local->origin;
+    s->dir = local->dir;
+    if (dm > 0x1p64) {
         int e;
         frexp(dm, &e);
-        s.on = 1;
-        s.scale = ldexp(1.0, -e);
-        s.dir = vec_scale(local->dir, s.scale);
-        dm = vec_max_abs(s.dir);
+        s->on = 1;
+        s->scale = ldexp(1.0, -e);
+        s->dir = vec_scale(local->dir, s->scale);
+        dm = vec_max_abs(s->dir);
     }
-    /*@ loop assigns k, s; */
     for (int k = 0; k < START_STEPS; k++) {
-        vec3 f = vec_sub(c, s.origin);
+        vec3 f = vec_sub(c, s->origin);
         real tm;
-        if (!(vec_max_abs(f) > 0x1p20 * rho) || !isect_quotient(vec_dot(f, s.dir), vec_length2(s.dir), &tm))
+        if (!(vec_max_abs(f) > 0x1p20 * rho) || !isect_quotient(vec_dot(f, s->dir), vec_length2(s->dir), &tm))
             break;
-        real reach = (vec_max_abs(s.origin) + vec_max_abs(c)) / dm;
+        real reach = (vec_max_abs(s->origin) + vec_max_abs(c)) / dm;
         real step = tm - 2 * rho / dm - 0x1p-44 * (fabs(tm) + reach);
-        if (!(k ? step > 0 : step * s.scale > local->tmin))
+        if (!(k ? step > 0 : step * s->scale > local->tmin))
             break;
-        s.on = 1;
-        s.t0 += step;
-        s.origin = vec_madd(s.origin, s.dir, step);
+        s->on = 1;
+        s->t0 += step;
+        s->origin = vec_madd(s->origin, s->dir, step);
     }
-    return s;
+    return s->on;
 }
 
 /* local_hits on the local ray, from its start: the crossings in the ray's
  * own t, held to its interval (the start's solve keeps every crossing
- * ahead of it, so none in the interval is crowded out). */
+ * ahead of it, so none in the interval is crowded out).  Out of line: the
+ * rare case. */
 static int start_hits(const scene_prim *p, const ray *local, const local_start *s, hit *out, int max, int bare)
 {
-    if (!s->on)
-        return local_hits(p, local, NULL, out, max, bare);
     real from = s->t0 > 0 ? 0 : local->tmin / s->scale;
     ray near = {s->origin, s->dir, from < 0x1p1000 ? from : 0x1p1000, INFINITY};
     hit all[ISECT_MAX_CROSSINGS];
@@ -882,8 +888,9 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     ray local = *r;
     local.origin = scene_frame_local(p->frame, r->origin);
     local.dir = xform_vector(&p->frame->to_local, r->dir);
-    local_start start = local_start_of(p, &local);
-    int n = start_hits(p, &local, &start, out, max, bare);
+    local_start start;
+    start.on = vec_max_abs(local.dir) > 0x1p20 && local_start_of(p, &local, &start);
+    int n = start.on ? start_hits(p, &local, &start, out, max, bare) : local_hits(p, &local, NULL, out, max, bare);
     vec3 lo, hi;
     if (n > 0 && isect_part_padded_bounds(p, 0, &lo, &hi)) {
         slab_ray s = slab_make(r);
@@ -895,7 +902,7 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
         local.tmin = wide_n > r->tmin ? wide_n : r->tmin;
         local.tmax = wide_f < r->tmax ? wide_f : r->tmax;
         if (out[0].t <= local.tmin || out[n - 1].t >= local.tmax)
-            n = start_hits(p, &local, &start, out, max, bare);
+            n = start.on ? start_hits(p, &local, &start, out, max, bare) : local_hits(p, &local, NULL, out, max, bare);
         for (int i = 0; i < n; i++)
             out[i].t = out[i].t < tn ? tn : out[i].t > tf ? tf : out[i].t;
     }
