@@ -487,7 +487,7 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, vec3 o2,
     return 1;
 }
 
-/* A flat cone's point of the line nearest the middle of its axis, when
+/* [NUM-QUADRIC-2] A flat cone's point of the line nearest the middle of its axis, when
  * heights count |k| times as much as lengths across the axis (|k| > 1: the
  * radius changes faster than the height): tm minimises |fp + t dp|^2 +
  * k^2 (z0 + t dz - len/2)^2, both terms times mu^2 (k is k mu here; |k| and
