@@ -838,8 +838,8 @@ static int local_start_of(const scene_prim *p, const ray *local, local_start *s)
 
 /* local_hits on the local ray, from its start: the crossings in the ray's
  * own t, held to its interval (the start's solve keeps every crossing
- * ahead of it, so none in the interval is crowded out).  Out of line: the
- * rare case. */
+ * ahead of it, so none in the interval is crowded out).  Only for a ray
+ * that starts elsewhere: prim_hits calls local_hits itself otherwise. */
 static int start_hits(const scene_prim *p, const ray *local, const local_start *s, hit *out, int max, int bare)
 {
     real from = s->t0 > 0 ? 0 : local->tmin / s->scale;
