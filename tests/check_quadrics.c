@@ -658,6 +658,120 @@ START_TEST(test_cone_far_no_false_shadow)
 }
 END_TEST
 
+/* Whether every value of got is within rel |want| of want's. */
+static void expect_close_image(const img_buf *got, const img_buf *want, double rel, const char *what)
+{
+    ck_assert_int_eq(got->width, want->width);
+    ck_assert_int_eq(got->height, want->height);
+    int over = 0, first = -1;
+    for (int i = 0; i < 3 * want->width * want->height; i++)
+        if (!(fabs(got->rgb[i] - want->rgb[i]) <= rel * fabs(want->rgb[i]))) {
+            first = first < 0 ? i : first;
+            over++;
+        }
+    ck_assert_msg(over == 0, "%s: %d of %d values over %g, the first (%d) %.17g, expected %.17g", what, over,
+                  3 * want->width * want->height, rel, first, got->rgb[first], want->rgb[first]);
+}
+
+/* [NUM-QUADRIC-1] tests/attack11, finding 3: a closed and an open cone of
+ * height 1 and radius R, seen from above by an orthographic eye 10 R away,
+ * cover what their base disk covers (the apex projects inside it) with a
+ * normal within atan(1/R) of the disk's: each channel is within Kd power
+ * atan(1/R) <= 2.1/R of the disk's image, under 2.5/R of its value (a lit
+ * channel is at least 0.85), so 4/R relative holds it; and the shortcuts
+ * change no bit.  Before (main aebfd84), R = 1e8: 36 pixels differed from
+ * the disk, up to 1.89 (the sky drawn lit), 38 with the shortcuts off; R =
+ * 5e7 the shortcuts-off image alone (40 pixels). */
+START_TEST(test_cone_flat_wide)
+{
+    static const double radii[] = {5e7, 1e8, 1e10, 1e12};
+    const char *form = "image { width 16 height 12 max_depth 2 background [0.1, 0.1, 0.2] }\n"
+                       "camera { orthographic eye [%.17g, %.17g, 0] look_at [0, 0, 0] up [0, 1, 0] width %.17g }\n"
+                       "ambient { color 0.2 }\ndistant_light { direction [-0.5, -1, 0.2] power 3 }\n"
+                       "%s { %s [0, -0.5, 0] %s %.17g %s material { Kd [0.7, 0.5, 0.3] } }\n";
+    char text[640], what[64];
+    for (size_t i = 0; i < sizeof radii / sizeof radii[0]; i++) {
+        double r = radii[i];
+        img_buf disk;
+        snprintf(text, sizeof text, form, 6 * r, 8 * r, 3 * r, "disk", "center", "normal [0, 1, 0] radius", r, "");
+        render_text(text, 0, &disk);
+        for (int open = 0; open <= 1; open++) {
+            img_buf on, off;
+            snprintf(text, sizeof text, form, 6 * r, 8 * r, 3 * r, "cone", "from", "to [0, 0.5, 0] radii", r,
+                     open ? "0 open" : "0");
+            render_text(text, 0, &on);
+            render_text(text, 1, &off);
+            snprintf(what, sizeof what, "R %g, open %d", r, open);
+            expect_close_image(&on, &disk, 4 / r, what);
+            snprintf(what, sizeof what, "R %g, open %d, shortcuts off", r, open);
+            expect_same_image(&off, &on, 0, what);
+            img_free(&on);
+            img_free(&off);
+        }
+        img_free(&disk);
+    }
+}
+END_TEST
+
+/* A shape squashed by a kept frame (scale [1, s, 1] rotate [0, 30, 0]) at
+ * the origin, seen from 10 above: "%s" the shape, "%.17g" s. */
+static const char squashed[] = "image { width 16 height 12 }\n"
+                               "camera { eye [0, 10, 0.001] look_at [0, 0, 0] fov 20 }\n"
+                               "ambient { color 0.2 }\npoint_light { position [3, 10, 2] power 40 falloff none }\n"
+                               "%s scale [1, %.17g, 1] rotate [0, 30, 0] material { Kd 0.8 } }\n";
+
+/* [NUM-FRAME-2] [NUM-FRAME-3] tests/attack10, finding 2.  At s = 1e-10 a
+ * squashed sphere, cylinder and cone (radius 1 at the bottom) and the disk
+ * of radius 1 (whose frame leaves it as it is) are the flat disk of radius 1
+ * seen from above: the same silhouette, normals vertical to 1e-10, the
+ * image the disk without a frame gives (to the float an image file holds).
+ * Squashed further, to 1e-20, 1e-160 and 1e-300, every shape (these, a box
+ * and a torus) gives its image at 1e-10, with the shortcuts on and off.
+ * Before (main aebfd84): the disk at 1e-10 drawn with holes (its box has
+ * no thickness: the frame's gate culled its hits), the sphere at 1e-20
+ * with 58 of 68 pixels wrong, at 1e-160 and past nothing drawn; the torus
+ * at 1e-20 nothing. */
+START_TEST(test_frame_squashed_shapes)
+{
+    static const char *const shapes[] = {
+        "sphere { center [0, 0, 0] radius 1",
+        "cylinder { from [0, -1, 0] to [0, 1, 0] radius 1",
+        "cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5",
+        "disk { center [0, 0, 0] normal [0, 1, 0] radius 1",
+        "box { from [-0.7, -1, -0.7] to [0.7, 1, 0.7]",
+        "torus { center [0, 0, 0] axis [0, 1, 0] major 0.8 minor 0.4",
+    };
+    static const double squash[] = {1e-20, 1e-160, 1e-300};
+    char text[640], what[96];
+    img_buf flat;
+    render_text("image { width 16 height 12 }\ncamera { eye [0, 10, 0.001] look_at [0, 0, 0] fov 20 }\n"
+                "ambient { color 0.2 }\npoint_light { position [3, 10, 2] power 40 falloff none }\n"
+                "disk { center [0, 0, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n",
+                0, &flat);
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++) {
+        img_buf ref;
+        snprintf(text, sizeof text, squashed, shapes[i], 1e-10);
+        render_text(text, 0, &ref);
+        if (i < 4)
+            expect_same_image(&ref, &flat, 1, shapes[i]);
+        for (size_t j = 0; j < sizeof squash / sizeof squash[0]; j++) {
+            img_buf on, off;
+            snprintf(text, sizeof text, squashed, shapes[i], squash[j]);
+            render_text(text, 0, &on);
+            render_text(text, 1, &off);
+            snprintf(what, sizeof what, "%.40s, s %g", shapes[i], squash[j]);
+            expect_same_image(&on, &ref, 1, what);
+            snprintf(what, sizeof what, "%.40s, s %g, shortcuts off", shapes[i], squash[j]);
+            expect_same_image(&off, &on, 0, what);
+            img_free(&on);
+            img_free(&off);
+        }
+        img_free(&ref);
+    }
+    img_free(&flat);
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -669,6 +783,8 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_cone_far_origin);
     tcase_add_test(tc, test_cone_far_orthographic_view);
     tcase_add_test(tc, test_cone_far_no_false_shadow);
+    tcase_add_test(tc, test_cone_flat_wide);
+    tcase_add_test(tc, test_frame_squashed_shapes);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);

@@ -725,6 +725,138 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
 }
 
 /*
+ * [NUM-FRAME-2] A kept frame that squashes a shape puts the local ray's
+ * origin far from it in local units though near it in the world: a sphere
+ * scaled by [1, s, 1] seen from 10 above has its local origin 10/s radii
+ * away and its local direction 1/s long.  A local solve forms its points
+ * o + t d with an error of eps |o| (local units), 1e5 radii at s = 1e-20:
+ * the sphere's perpendicular foot and the torus's bounding sphere lose the
+ * line and draw holes or nothing, and past s = 1e-154 |d|^2 overflows.
+ * That error lies along d's huge component, so it moves a point along the
+ * line, not off it: a point of the line placed near the shape, and the
+ * solve run from there, has only that point's own error.
+ *
+ * local_start_of places it, only for a local direction longer than 2^20
+ * (max norm): a frame stretching a ray's direction that much squashes the
+ * shape across it; any other frame is solved as before, unchanged, at the
+ * cost of one test.  The direction is scaled by a power of two to a
+ * largest component in [1/2, 1) when it is past 2^64 (exact: t scales
+ * back by the same power).  Then, while the origin is
+ * more than 2^20 radii of the shape's local ball from its centre, the
+ * origin steps to the line's point nearest that centre, less twice the
+ * ball's radius and 2^-44 (|t| + reach) (reach = (|o| + |c|) / |d|, max
+ * norms: over 200 times the rounding of o + t d and of the foot's t), so
+ * that every crossing after tmin stays ahead of it; each step shrinks the
+ * distance by about 2^-43, so 32 steps come from 2^1023 radii.  The solve
+ * runs on the line from the start, t from 0, and its crossings are
+ * shifted and scaled back and held to the ray's interval.  A nearer origin
+ * is solved as before.
+ */
+enum { START_STEPS = 32 };
+
+typedef struct local_start {
+    int on;          /* 0: solved on the local ray as it is */
+    real scale;      /* t on the ray = scale (t0 + t from the start) */
+    real t0;
+    vec3 origin;     /* o + scale t0 d, local */
+    vec3 dir;        /* d scale */
+} local_start;
+
+/* A ball holding the shape in its own frame (sums of extents: no square
+ * root); 0 for a shape without one (a plane). */
+static int local_ball(const scene_prim *p, vec3 *c, real *rho)
+{
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        *c = p->u.sphere.center;
+        *rho = p->u.sphere.radius;
+        return 1;
+    case PRIM_DISK:
+        *c = p->u.disk.center;
+        *rho = p->u.disk.radius;
+        return 1;
+    case PRIM_TORUS:
+        *c = p->u.torus.center;
+        *rho = p->u.torus.major + p->u.torus.minor;
+        return 1;
+    case PRIM_BOX: {
+        vec3 e = vec_scale(vec_sub(p->u.box.hi, p->u.box.lo), 0.5);
+        *c = vec_add(p->u.box.lo, e);
+        *rho = fabs(e.x) + fabs(e.y) + fabs(e.z);
+        return 1;
+    }
+    case PRIM_CYLINDER:
+    case PRIM_CONE: {
+        int cone = p->kind == PRIM_CONE;
+        vec3 from = cone ? p->u.cone.from : p->u.cylinder.from, to = cone ? p->u.cone.to : p->u.cylinder.to;
+        real r = cone ? fmax(p->u.cone.radius[0], p->u.cone.radius[1]) : p->u.cylinder.radius;
+        vec3 e = vec_scale(vec_sub(to, from), 0.5);
+        *c = vec_add(from, e);
+        *rho = fabs(e.x) + fabs(e.y) + fabs(e.z) + r;
+        return 1;
+    }
+    default:
+        return 0;
+    }
+}
+
+/* Whether the ray starts elsewhere (*s), for a direction past 2^20. */
+static int local_start_of(const scene_prim *p, const ray *local, local_start *s)
+{
+    vec3 c;
+    real rho, dm = vec_max_abs(local->dir);
+    if (!local_ball(p, &c, &rho))
+        return 0;
+    s->on = 0;
+    s->scale = 1;
+    s->t0 = 0;
+    s->origin = local->origin;
+    s->dir = local->dir;
+    if (dm > 0x1p64) {
+        int e;
+        frexp(dm, &e);
+        s->on = 1;
+        s->scale = ldexp(1.0, -e);
+        s->dir = vec_scale(local->dir, s->scale);
+        dm = vec_max_abs(s->dir);
+    }
+    for (int k = 0; k < START_STEPS; k++) {
+        vec3 f = vec_sub(c, s->origin);
+        real tm;
+        if (!(vec_max_abs(f) > 0x1p20 * rho) || !isect_quotient(vec_dot(f, s->dir), vec_length2(s->dir), &tm))
+            break;
+        real reach = (vec_max_abs(s->origin) + vec_max_abs(c)) / dm;
+        real step = tm - 2 * rho / dm - 0x1p-44 * (fabs(tm) + reach);
+        if (!(k ? step > 0 : step * s->scale > local->tmin))
+            break;
+        s->on = 1;
+        s->t0 += step;
+        s->origin = vec_madd(s->origin, s->dir, step);
+    }
+    return s->on;
+}
+
+/* local_hits on the local ray, from its start: the crossings in the ray's
+ * own t, held to its interval (the start's solve keeps every crossing
+ * ahead of it, so none in the interval is crowded out).  Only for a ray
+ * that starts elsewhere: prim_hits calls local_hits itself otherwise. */
+static int start_hits(const scene_prim *p, const ray *local, const local_start *s, hit *out, int max, int bare)
+{
+    real from = s->t0 > 0 ? 0 : local->tmin / s->scale;
+    ray near = {s->origin, s->dir, from < 0x1p1000 ? from : 0x1p1000, INFINITY};
+    hit all[ISECT_MAX_CROSSINGS];
+    int n = local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, bare), kept = 0;
+    for (int i = 0; i < n && kept < max; i++) {
+        real t = s->scale * (s->t0 + all[i].t);
+        if (t > local->tmin && t < local->tmax) {
+            out[kept] = all[i];
+            out[kept++].t = t;
+        }
+    }
+    return kept;
+}
+
+/*
  * A primitive with a local frame: the ray goes in through to_local (its
  * direction is not renormalised, so t is the same in both frames), points
  * come back through to_world and normals through the inverse transpose.
@@ -738,7 +870,15 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * holds the part in, found by the BVH's own slab test, so the BVH never
  * culls a hit the exhaustive walk keeps.  The box is made only once there
  * is a hit; a hit outside it runs the test again on that stretch.
+ * [NUM-FRAME-3] The stretch is widened by FRAME_GATE_PAD of its ends for
+ * the test and the hits are then clamped into it: a shape thinner than
+ * the rounding of t (a disk in an axis plane, whose box has no thickness;
+ * a shape squashed below eps |t|) has its hits on the stretch's ends to
+ * rounding, where the slab's entry (not enlarged) and the hit's own t
+ * fall either side.  Clamped, a hit is still within the box's stretch,
+ * which is all the BVH's culling asks.
  */
+#define FRAME_GATE_PAD (16 * DBL_EPSILON)
 static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int bare)
 {
     if (p->kind == PRIM_MESH)
@@ -748,15 +888,23 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     ray local = *r;
     local.origin = scene_frame_local(p->frame, r->origin);
     local.dir = xform_vector(&p->frame->to_local, r->dir);
-    int n = local_hits(p, &local, NULL, out, max, bare);
+    local_start start;
+    start.on = vec_max_abs(local.dir) > 0x1p20 && local_start_of(p, &local, &start);
+    int n = start.on ? start_hits(p, &local, &start, out, max, bare) : local_hits(p, &local, NULL, out, max, bare);
     vec3 lo, hi;
     if (n > 0 && isect_part_padded_bounds(p, 0, &lo, &hi)) {
         slab_ray s = slab_make(r);
-        slab_box(lo, hi, &s, &local.tmin, &local.tmax);
-        if (!(local.tmin < local.tmax))
+        real tn = r->tmin, tf = r->tmax;
+        slab_box(lo, hi, &s, &tn, &tf);
+        if (!(tn < tf))
             return 0;
+        real wide_n = tn - FRAME_GATE_PAD * fabs(tn), wide_f = tf + FRAME_GATE_PAD * fabs(tf);
+        local.tmin = wide_n > r->tmin ? wide_n : r->tmin;
+        local.tmax = wide_f < r->tmax ? wide_f : r->tmax;
         if (out[0].t <= local.tmin || out[n - 1].t >= local.tmax)
-            n = local_hits(p, &local, NULL, out, max, bare);
+            n = start.on ? start_hits(p, &local, &start, out, max, bare) : local_hits(p, &local, NULL, out, max, bare);
+        for (int i = 0; i < n; i++)
+            out[i].t = out[i].t < tn ? tn : out[i].t > tf ? tf : out[i].t;
     }
     for (int i = 0; i < n && !bare; i++) {
         out[i].point = xform_point(&p->frame->to_world, out[i].point);

@@ -468,10 +468,10 @@ static vec3 side_normal(const quadric *s, vec3 a, vec3 p)
 /*@ requires \valid_read(s) && \valid_read(x) && \valid_read(r) && \valid(h) && \separated(h, s, x, r);
     requires !s->cone ==> s->r0 > 0;
     assigns *h; */
-static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing c, hit *h)
+static int crossing_hit(const quadric *s, const axial *x, const ray *r, vec3 o2, real tm, crossing c, hit *h)
 {
-    vec3 p = ray_at(r, c.t), n;
-    real t = c.t;
+    vec3 p = vec_madd(o2, r->dir, c.t), n;
+    real t = c.t + tm;
     h->t = t;   /* written on every path (Eva: the caller reads it after a 0 too) */
     if (!near_shape(s, &p))
         return 0;
@@ -487,9 +487,39 @@ static int crossing_hit(const quadric *s, const axial *x, const ray *r, crossing
     return 1;
 }
 
+/* [NUM-QUADRIC-2] A flat cone's point of the line nearest the middle of its axis, when
+ * heights count |k| times as much as lengths across the axis (|k| > 1: the
+ * radius changes faster than the height): tm minimises |fp + t dp|^2 +
+ * k^2 (z0 + t dz - len/2)^2, both terms times mu^2 (k is k mu here; |k| and
+ * mu <= 1/4, so nothing overflows).  The Euclidean nearest point of a line
+ * passing h from the middle can be h off it in height, where the double
+ * cone's radius rho0 is about |k| h: the equation's b^2 and a c there are of
+ * order (k dz rho0)^2 and their difference, the discriminant, of order
+ * (k dz fp)^2, lost to rounding once (fp / (k h))^2 falls below eps: from
+ * |k| of about 1e8 for a line passing the rim (a cone 1e8 wide and 1 high,
+ * tests/attack11, finding 3).  The weighted point is within h_k of the axis
+ * and h_k / |k| of the middle's height, h_k the line's weighted distance
+ * from the middle, which for a line meeting the shape is at most
+ * max(r0, r1) + |k| len / 2 <= 1.5 max(r0, r1): rho0 and every term are then
+ * of the shape's size.  0 where the quotient is held (den 0: no direction). */
+/*@ requires \valid_read(s) && \valid_read(r) && \valid(tm) && \separated(tm, s, r);
+    requires vfinite(s->from) && vfinite(s->to) && vfinite(r->origin) && vfinite(r->dir);
+    assigns *tm; */
+static int flat_cone_middle(const quadric *s, const ray *r, real *tm)
+{
+    axial x;
+    axial_of(s->from, s->to, r->origin, r->dir, &x);
+    real m2 = s->mu * s->mu, k2 = s->k * s->k;
+    real num = k2 * ((0.5 * x.len - x.z0) * x.dz) - m2 * vec_dot(x.fp, x.dp);
+    real den = k2 * (x.dz * x.dz) + m2 * vec_length2(x.dp);
+    *tm = 0;
+    return isect_quotient(num, den, tm);
+}
+
 /* The cone's side equation is formed about o2 = o + tm d, the line's point
- * nearest the middle of the axis; returns tm, *o2 that point (tm = 0 and
- * o2 = o for the cylinder, or where the point is not near_shape's).
+ * nearest the middle of the axis (a flat cone's: flat_cone_middle); returns
+ * tm, *o2 that point (tm = 0 and o2 = o for the cylinder, or where the point
+ * is not near_shape's).
  *
  * Why: formed about a far origin, c = |fp|^2 - rho0^2 subtracts two
  * squares of the distance, and |fp| = sqrt(D^2 + h^2) (D the distance along
@@ -518,9 +548,14 @@ static real cone_origin(const quadric *s, const ray *r, vec3 *o2)
     *o2 = r->origin;
     if (!s->cone)
         return 0;
-    vec3 mid = vec_madd(s->from, vec_sub(s->to, s->from), 0.5);
-    if (!isect_quotient(vec_dot(vec_sub(mid, r->origin), r->dir), vec_length2(r->dir), &tm))
-        return 0;
+    if (s->k > s->mu || s->k < -s->mu) {
+        if (!flat_cone_middle(s, r, &tm))
+            return 0;
+    } else {
+        vec3 mid = vec_madd(s->from, vec_sub(s->to, s->from), 0.5);
+        if (!isect_quotient(vec_dot(vec_sub(mid, r->origin), r->dir), vec_length2(r->dir), &tm))
+            return 0;
+    }
     /* a line of a tiny direction: kept from o, so that a crossing's t plus tm
      * stays within 2^1021 + 2^1019 and o + t d finite (|d| <= 4) */
     if (!(tm >= -0x1p1019 && tm <= 0x1p1019))
@@ -556,9 +591,7 @@ static int quadric_hits(const quadric *s, int open, const ray *r, hit *out, int 
         loop assigns i, kept, h[0 .. 1];
         loop variant n - i; */
     for (int i = 0; i < n; i++) {
-        /* the crossing on the ray from its own origin: |c[i].t| <= 2^1021 and |tm| <= 2^1019 */
-        crossing ci = {c[i].t + tm, c[i].surface};
-        kept += crossing_hit(s, &x, r, ci, &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
+        kept += crossing_hit(s, &x, r, o2, tm, c[i], &h[kept]) && h[kept].t > r->tmin && h[kept].t < r->tmax;
     }
     if (kept == 2 && h[1].t < h[0].t) {
         hit swap = h[0];
