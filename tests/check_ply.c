@@ -118,7 +118,6 @@ static const struct {
     {"element vertex 1\nproperty float x y\n",
      "m.ply:4:1: error: expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'"},
     {"element vertex 1\nproperty float x\nproperty double x\n", "m.ply:5:17: error: a second property 'x'"},
-    {"element face 1\n", "m.ply:3:9: error: element 'face' must come after element 'vertex'"},
     {"element vertex 1\nelement vertex 1\n", "m.ply:4:9: error: a second element 'vertex'"},
     {"element vertex 1\nproperty list float int x\n", "m.ply:4:15: error: a list's count must have an integer type"},
     {"element vertex 0\nmaterial 3\n", "m.ply:4:1: error: unknown PLY header keyword 'material'"},
@@ -215,6 +214,69 @@ START_TEST(test_ply_binary_both_orders)
         ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
         run_free(&r);
     }
+}
+END_TEST
+
+/* [MESH-PLY-2] PLY puts no order on elements: faces before the vertices
+ * (with an element of its own between) give the mesh the same file with
+ * the vertices first gives, in ASCII (a square cut into 0 1 2 and 0 2 3)
+ * and in binary (the triangle above with its face element moved ahead);
+ * an index is checked against every vertex, and data after the last
+ * element still warn (tests/attack12 finding 10: "element 'face' must come
+ * after element 'vertex'"). */
+START_TEST(test_ply_faces_first)
+{
+    char line[512], buf[512];
+    static const char *const faces_first =
+        HEAD "element face 2\nproperty list uchar int vertex_indices\nelement extra 1\nproperty float e\n"
+             "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+             "3 0 1 2\n3 0 2 3\n7\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+    run r;
+    run_parse(&r, faces_first);
+    ck_assert_msg(r.ok == 1, "%s", r.log);
+    ck_assert_uint_eq(r.log_size, 0);
+    ck_assert_int_eq(r.mesh.position_count, 4);
+    ck_assert_vec_near(r.mesh.positions[2], vec_make(1, 1, 0), 0);
+    ck_assert_vec_near(r.mesh.positions[3], vec_make(0, 1, 0), 0);
+    ck_assert_int_eq(r.mesh.triangle_count, 2);
+    ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
+    ck_assert(r.mesh.tri[1][0] == 0 && r.mesh.tri[1][1] == 2 && r.mesh.tri[1][2] == 3);
+    run_free(&r);
+
+    snprintf(buf, sizeof buf, "%s9\n", faces_first);
+    run_parse(&r, buf);
+    ck_assert_int_eq(r.ok, 1);
+    ck_assert_str_eq(first_line(&r, line, sizeof line), "m.ply:19:1: warning: data after the last element ignored ('9')");
+    run_free(&r);
+
+    run_parse(&r, HEAD "element face 1\nproperty list uchar int vertex_indices\n"
+                       "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+                       "3 0 1 3\n0 0 0\n1 0 0\n0 1 0\n");
+    ck_assert_int_eq(r.ok, 0);
+    ck_assert_str_eq(first_line(&r, line, sizeof line),
+                     "m.ply:10:7: error: element 'face' 0: vertex index 3 is out of range (3 vertices)");
+    run_free(&r);
+
+    /* Binary: the header's two element blocks swapped, the face's 13 bytes
+     * moved ahead of the vertices' 36. */
+    size_t n = binary_triangle(buf, 0, 0), body = n - 49;
+    char moved[512];
+    static const char vertex_block[] = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    static const char face_block[] = "element face 1\nproperty list uchar int vertex_indices\n";
+    char *v = strstr(buf, vertex_block);
+    ck_assert_ptr_nonnull(v);
+    size_t at = (size_t)(v - buf), vn = strlen(vertex_block), fn = strlen(face_block);
+    memcpy(moved, buf, at);
+    memcpy(moved + at, face_block, fn);
+    memcpy(moved + at + fn, vertex_block, vn);
+    memcpy(moved + at + fn + vn, buf + at + vn + fn, body - (at + vn + fn));
+    memcpy(moved + body, buf + body + 36, 13);
+    memcpy(moved + body + 13, buf + body, 36);
+    run_parse_len(&r, moved, n, 10);
+    ck_assert_msg(r.ok == 1, "%s", r.log);
+    ck_assert_vec_near(r.mesh.positions[2], vec_make(0.25, 1, -3), 0);
+    ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
+    run_free(&r);
 }
 END_TEST
 
@@ -378,6 +440,7 @@ Suite *suite_ply(void)
     tcase_add_loop_test(tc, test_ply_errors, 0, (int)(sizeof ascii_errors / sizeof ascii_errors[0]));
     tcase_add_test(tc, test_ply_trailing_data_warns);
     tcase_add_test(tc, test_ply_binary_both_orders);
+    tcase_add_test(tc, test_ply_faces_first);
     tcase_add_test(tc, test_ply_binary_truncated);
     tcase_add_test(tc, test_ply_triangle_limit);
     tcase_add_test(tc, test_ply_is_ply);
