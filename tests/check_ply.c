@@ -217,6 +217,27 @@ START_TEST(test_ply_binary_both_orders)
 }
 END_TEST
 
+/* binary_triangle (little-endian) with the face element ahead of the
+ * vertex element ([MESH-PLY-2]): the header's two element blocks swapped,
+ * the face's 13 bytes moved ahead of the vertices' 36. */
+static size_t binary_faces_first(char *out)
+{
+    char buf[512];
+    static const char vertex_block[] = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    static const char face_block[] = "element face 1\nproperty list uchar int vertex_indices\n";
+    size_t n = binary_triangle(buf, 0, 0), body = n - 49;
+    char *v = strstr(buf, vertex_block);
+    ck_assert_ptr_nonnull(v);
+    size_t at = (size_t)(v - buf), vn = strlen(vertex_block), fn = strlen(face_block);
+    memcpy(out, buf, at);
+    memcpy(out + at, face_block, fn);
+    memcpy(out + at + fn, vertex_block, vn);
+    memcpy(out + at + fn + vn, buf + at + vn + fn, body - (at + vn + fn));
+    memcpy(out + body, buf + body + 36, 13);
+    memcpy(out + body + 13, buf + body, 36);
+    return n;
+}
+
 /* [MESH-PLY-2] PLY puts no order on elements: faces before the vertices
  * (with an element of its own between) give the mesh the same file with
  * the vertices first gives, in ASCII (a square cut into 0 1 2 and 0 2 3)
@@ -257,22 +278,8 @@ START_TEST(test_ply_faces_first)
                      "m.ply:10:7: error: element 'face' 0: vertex index 3 is out of range (3 vertices)");
     run_free(&r);
 
-    /* Binary: the header's two element blocks swapped, the face's 13 bytes
-     * moved ahead of the vertices' 36. */
-    size_t n = binary_triangle(buf, 0, 0), body = n - 49;
     char moved[512];
-    static const char vertex_block[] = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
-    static const char face_block[] = "element face 1\nproperty list uchar int vertex_indices\n";
-    char *v = strstr(buf, vertex_block);
-    ck_assert_ptr_nonnull(v);
-    size_t at = (size_t)(v - buf), vn = strlen(vertex_block), fn = strlen(face_block);
-    memcpy(moved, buf, at);
-    memcpy(moved + at, face_block, fn);
-    memcpy(moved + at + fn, vertex_block, vn);
-    memcpy(moved + at + fn + vn, buf + at + vn + fn, body - (at + vn + fn));
-    memcpy(moved + body, buf + body + 36, 13);
-    memcpy(moved + body + 13, buf + body, 36);
-    run_parse_len(&r, moved, n, 10);
+    run_parse_len(&r, moved, binary_faces_first(moved), 10);
     ck_assert_msg(r.ok == 1, "%s", r.log);
     ck_assert_vec_near(r.mesh.positions[2], vec_make(0.25, 1, -3), 0);
     ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
@@ -326,20 +333,23 @@ END_TEST
 START_TEST(test_ply_mutations_are_safe)
 {
     char buf[512], copy[512];
-    size_t n = binary_triangle(buf, 0, 0);
     static const unsigned char values[] = {0, 1, 0x7f, 0x80, 0xff, '\n', ' '};
-    for (size_t i = 0; i < n; i++)
-        for (size_t v = 0; v < sizeof values; v++) {
-            memcpy(copy, buf, n);
-            copy[i] = (char)values[v];
-            run r;
-            run_parse_len(&r, copy, n, 10);
-            ck_assert_int_eq(r.ok, r.d.errors == 0);
-            for (int t = 0; t < r.mesh.triangle_count; t++)
-                for (int k = 0; k < 3; k++)
-                    ck_assert(r.mesh.tri[t][k] >= 0 && r.mesh.tri[t][k] < r.mesh.position_count);
-            run_free(&r);
-        }
+    /* The vertices first, and the faces first (read in two passes). */
+    for (int layout = 0; layout < 2; layout++) {
+        size_t n = layout ? binary_faces_first(buf) : binary_triangle(buf, 0, 0);
+        for (size_t i = 0; i < n; i++)
+            for (size_t v = 0; v < sizeof values; v++) {
+                memcpy(copy, buf, n);
+                copy[i] = (char)values[v];
+                run r;
+                run_parse_len(&r, copy, n, 10);
+                ck_assert_int_eq(r.ok, r.d.errors == 0);
+                for (int t = 0; t < r.mesh.triangle_count; t++)
+                    for (int k = 0; k < 3; k++)
+                        ck_assert(r.mesh.tri[t][k] >= 0 && r.mesh.tri[t][k] < r.mesh.position_count);
+                run_free(&r);
+            }
+    }
 }
 END_TEST
 
