@@ -778,6 +778,30 @@ START_TEST(test_cli_export_stdout)
 }
 END_TEST
 
+/* [JSON-OUT-1] -o - is standard output too, for both targets, as for
+ * render and as the help says (tests/attack12 finding 8: a file named
+ * "-" in the working directory, nothing on stdout). */
+START_TEST(test_cli_export_dash_is_stdout)
+{
+    char dir[] = "/tmp/refray-export-XXXXXX", scene[256];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    snprintf(scene, sizeof scene, "%s/a.scene", dir);
+    write_text(scene, scene_ortho);
+    for (int json = 0; json < 1 + scene_json_available(); json++) {
+        const char *argv[] = {"refray", "export", scene, "--to", json ? "json" : "pov", "-o", "-", NULL};
+        run_result r;
+        run_refray(argv, &r);
+        int stray = access("-", F_OK) == 0;
+        unlink("-");
+        ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
+        ck_assert_msg(!stray, "--to %s -o - wrote a file named '-'", argv[4]);
+        const char *head = json ? "{" : "// POV-Ray 3.7 scene written by `refray export --to pov`";
+        ck_assert_msg(strncmp(r.out, head, strlen(head)) == 0, "stdout: '%.80s'", r.out);
+    }
+    remove_dir(dir);
+}
+END_TEST
+
 /* -o writes the file and nothing to stdout; a refused scene exits 65
  * with the reason and writes nothing; a wrong target is a usage error. */
 START_TEST(test_cli_export_file_and_refusal)
@@ -847,6 +871,7 @@ Suite *suite_export(void)
     tcase_add_test(file, test_pov_export_file_atomic);
     tcase_add_test(file, test_pov_export_file_failures);
     tcase_add_test(file, test_cli_export_stdout);
+    tcase_add_test(file, test_cli_export_dash_is_stdout);
     tcase_add_test(file, test_cli_export_file_and_refusal);
     suite_add_tcase(s, file);
     return s;

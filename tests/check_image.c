@@ -22,6 +22,7 @@
 #include <time.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include "testlib.h"
 #include "io/image_io.h"
@@ -413,6 +414,68 @@ START_TEST(test_img_read_pfm_variants)
     put_str(path, "PF\n100000 100000\n-1.0\n");
     ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
     ck_assert_msg(strstr(err, "over --max-pixels 67108864") != NULL, "%s", err);
+    tmpdir_remove(&d);
+}
+END_TEST
+
+/* kit_check (tests/conform/kit_check.c, $KIT_CHECK_BIN) on these files:
+ * its exit status and first line. */
+static int kit_check(const tmpdir *d, const char *exact, const char *mine, char *line, size_t size)
+{
+    const char *bin = getenv("KIT_CHECK_BIN");
+    char cmd[1200], out[256];
+    ck_assert_msg(bin && access(bin, X_OK) == 0, "no kit_check at $KIT_CHECK_BIN (make test builds it)");
+    in_dir(out, sizeof out, d, "kit_check.txt");
+    snprintf(cmd, sizeof cmd, "'%s' '%s/%s' '%s/mask.pgm' 0 0 '%s/%s' >'%s' 2>&1", bin, d->path, exact, d->path,
+             d->path, mine, out);
+    int st = system(cmd);
+    FILE *f = fopen(out, "r");
+    ck_assert_ptr_nonnull(f);
+    if (!fgets(line, (int)size, f))
+        line[0] = '\0';
+    fclose(f);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* [KIT-PFM-1] A PFM's pixel data are its last bytes: a header whose lines
+ * end in CR LF (a writer in text mode) or with blank lines after it is read
+ * right, by img_read (compare, conform) and by kit_check alike; bytes
+ * after the pixels are a size that does not fit, refused by both
+ * (tests/attack12 finding 11: read one byte off, 45 values NaN).  The
+ * pixels, 1x1 little-endian: 1.0 (3F800000), 2.0 (40000000), 0.5
+ * (3F000000). */
+START_TEST(test_img_read_pfm_crlf)
+{
+    static const char px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
+    static const char *const heads[] = {"PF\n1 1\n-1.0\n", "PF\r\n1 1\r\n-1.0\r\n", "PF\n1 1\n-1.0\r\n\r\n\n"};
+    tmpdir d;
+    char path[256], err[256], buf[64], line[200];
+    img_buf img;
+    tmpdir_make(&d);
+    in_dir(path, sizeof path, &d, "mask.pgm");
+    put_file(path, "P5\n1 1\n255\n\0", 12);
+    for (size_t k = 0; k < sizeof heads / sizeof heads[0]; k++) {
+        size_t n = strlen(heads[k]);
+        memcpy(buf, heads[k], n);
+        memcpy(buf + n, px, 12);
+        in_dir(path, sizeof path, &d, k == 0 ? "exact.pfm" : "v.pfm");
+        put_file(path, buf, n + 12);
+        ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "header %zu: %s", k, err);
+        ck_assert_msg(img.rgb[0] == 1.0 && img.rgb[1] == 2.0 && img.rgb[2] == 0.5, "header %zu: %g %g %g", k,
+                      img.rgb[0], img.rgb[1], img.rgb[2]);
+        img_free(&img);
+        int st = kit_check(&d, "exact.pfm", k == 0 ? "exact.pfm" : "v.pfm", line, sizeof line);
+        ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "header %zu: kit_check %d: %s", k, st,
+                      line);
+    }
+    /* Four bytes after the pixels: a size the header does not give. */
+    memcpy(buf, heads[0], 12);
+    memcpy(buf + 12, px, 12);
+    memcpy(buf + 24, "\0\0\0\0", 4);
+    put_file(path, buf, 28);
+    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
+    ck_assert_msg(strstr(err, "4 bytes longer than its header") != NULL, "%s", err);
+    ck_assert_int_eq(kit_check(&d, "exact.pfm", "v.pfm", line, sizeof line), 2);
     tmpdir_remove(&d);
 }
 END_TEST
@@ -1088,6 +1151,7 @@ Suite *suite_image(void)
     tcase_add_test(fmt, test_img_write_read_pfm_bit_exact);
     tcase_add_test(fmt, test_img_write_pfm_counts_nonfinite_and_clamped);
     tcase_add_test(fmt, test_img_read_pfm_variants);
+    tcase_add_test(fmt, test_img_read_pfm_crlf);
     tcase_add_test(fmt, test_img_read_short_raster_allocates_nothing);
     tcase_add_test(fmt, test_img_write_ppm_bytes);
     tcase_add_test(fmt, test_img_write_read_ppm);

@@ -118,7 +118,6 @@ static const struct {
     {"element vertex 1\nproperty float x y\n",
      "m.ply:4:1: error: expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'"},
     {"element vertex 1\nproperty float x\nproperty double x\n", "m.ply:5:17: error: a second property 'x'"},
-    {"element face 1\n", "m.ply:3:9: error: element 'face' must come after element 'vertex'"},
     {"element vertex 1\nelement vertex 1\n", "m.ply:4:9: error: a second element 'vertex'"},
     {"element vertex 1\nproperty list float int x\n", "m.ply:4:15: error: a list's count must have an integer type"},
     {"element vertex 0\nmaterial 3\n", "m.ply:4:1: error: unknown PLY header keyword 'material'"},
@@ -218,6 +217,76 @@ START_TEST(test_ply_binary_both_orders)
 }
 END_TEST
 
+/* binary_triangle (little-endian) with the face element ahead of the
+ * vertex element ([MESH-PLY-2]): the header's two element blocks swapped,
+ * the face's 13 bytes moved ahead of the vertices' 36. */
+static size_t binary_faces_first(char *out)
+{
+    char buf[512];
+    static const char vertex_block[] = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    static const char face_block[] = "element face 1\nproperty list uchar int vertex_indices\n";
+    size_t n = binary_triangle(buf, 0, 0), body = n - 49;
+    char *v = strstr(buf, vertex_block);
+    ck_assert_ptr_nonnull(v);
+    size_t at = (size_t)(v - buf), vn = strlen(vertex_block), fn = strlen(face_block);
+    memcpy(out, buf, at);
+    memcpy(out + at, face_block, fn);
+    memcpy(out + at + fn, vertex_block, vn);
+    memcpy(out + at + fn + vn, buf + at + vn + fn, body - (at + vn + fn));
+    memcpy(out + body, buf + body + 36, 13);
+    memcpy(out + body + 13, buf + body, 36);
+    return n;
+}
+
+/* [MESH-PLY-2] PLY puts no order on elements: faces before the vertices
+ * (with an element of its own between) give the mesh the same file with
+ * the vertices first gives, in ASCII (a square cut into 0 1 2 and 0 2 3)
+ * and in binary (the triangle above with its face element moved ahead);
+ * an index is checked against every vertex, and data after the last
+ * element still warn (tests/attack12 finding 10: "element 'face' must come
+ * after element 'vertex'"). */
+START_TEST(test_ply_faces_first)
+{
+    char line[512], buf[512];
+    static const char *const faces_first =
+        HEAD "element face 2\nproperty list uchar int vertex_indices\nelement extra 1\nproperty float e\n"
+             "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+             "3 0 1 2\n3 0 2 3\n7\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+    run r;
+    run_parse(&r, faces_first);
+    ck_assert_msg(r.ok == 1, "%s", r.log);
+    ck_assert_uint_eq(r.log_size, 0);
+    ck_assert_int_eq(r.mesh.position_count, 4);
+    ck_assert_vec_near(r.mesh.positions[2], vec_make(1, 1, 0), 0);
+    ck_assert_vec_near(r.mesh.positions[3], vec_make(0, 1, 0), 0);
+    ck_assert_int_eq(r.mesh.triangle_count, 2);
+    ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
+    ck_assert(r.mesh.tri[1][0] == 0 && r.mesh.tri[1][1] == 2 && r.mesh.tri[1][2] == 3);
+    run_free(&r);
+
+    snprintf(buf, sizeof buf, "%s9\n", faces_first);
+    run_parse(&r, buf);
+    ck_assert_int_eq(r.ok, 1);
+    ck_assert_str_eq(first_line(&r, line, sizeof line), "m.ply:19:1: warning: data after the last element ignored ('9')");
+    run_free(&r);
+
+    run_parse(&r, HEAD "element face 1\nproperty list uchar int vertex_indices\n"
+                       "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+                       "3 0 1 3\n0 0 0\n1 0 0\n0 1 0\n");
+    ck_assert_int_eq(r.ok, 0);
+    ck_assert_str_eq(first_line(&r, line, sizeof line),
+                     "m.ply:10:7: error: element 'face' 0: vertex index 3 is out of range (3 vertices)");
+    run_free(&r);
+
+    char moved[512];
+    run_parse_len(&r, moved, binary_faces_first(moved), 10);
+    ck_assert_msg(r.ok == 1, "%s", r.log);
+    ck_assert_vec_near(r.mesh.positions[2], vec_make(0.25, 1, -3), 0);
+    ck_assert(r.mesh.tri[0][0] == 0 && r.mesh.tri[0][1] == 1 && r.mesh.tri[0][2] == 2);
+    run_free(&r);
+}
+END_TEST
+
 START_TEST(test_ply_binary_truncated)
 {
     /* Cut inside the last index, and inside the last vertex's z: the
@@ -264,20 +333,23 @@ END_TEST
 START_TEST(test_ply_mutations_are_safe)
 {
     char buf[512], copy[512];
-    size_t n = binary_triangle(buf, 0, 0);
     static const unsigned char values[] = {0, 1, 0x7f, 0x80, 0xff, '\n', ' '};
-    for (size_t i = 0; i < n; i++)
-        for (size_t v = 0; v < sizeof values; v++) {
-            memcpy(copy, buf, n);
-            copy[i] = (char)values[v];
-            run r;
-            run_parse_len(&r, copy, n, 10);
-            ck_assert_int_eq(r.ok, r.d.errors == 0);
-            for (int t = 0; t < r.mesh.triangle_count; t++)
-                for (int k = 0; k < 3; k++)
-                    ck_assert(r.mesh.tri[t][k] >= 0 && r.mesh.tri[t][k] < r.mesh.position_count);
-            run_free(&r);
-        }
+    /* The vertices first, and the faces first (read in two passes). */
+    for (int layout = 0; layout < 2; layout++) {
+        size_t n = layout ? binary_faces_first(buf) : binary_triangle(buf, 0, 0);
+        for (size_t i = 0; i < n; i++)
+            for (size_t v = 0; v < sizeof values; v++) {
+                memcpy(copy, buf, n);
+                copy[i] = (char)values[v];
+                run r;
+                run_parse_len(&r, copy, n, 10);
+                ck_assert_int_eq(r.ok, r.d.errors == 0);
+                for (int t = 0; t < r.mesh.triangle_count; t++)
+                    for (int k = 0; k < 3; k++)
+                        ck_assert(r.mesh.tri[t][k] >= 0 && r.mesh.tri[t][k] < r.mesh.position_count);
+                run_free(&r);
+            }
+    }
 }
 END_TEST
 
@@ -378,6 +450,7 @@ Suite *suite_ply(void)
     tcase_add_loop_test(tc, test_ply_errors, 0, (int)(sizeof ascii_errors / sizeof ascii_errors[0]));
     tcase_add_test(tc, test_ply_trailing_data_warns);
     tcase_add_test(tc, test_ply_binary_both_orders);
+    tcase_add_test(tc, test_ply_faces_first);
     tcase_add_test(tc, test_ply_binary_truncated);
     tcase_add_test(tc, test_ply_triangle_limit);
     tcase_add_test(tc, test_ply_is_ply);

@@ -15,6 +15,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -840,6 +841,30 @@ START_TEST(test_scaling_resume)
 }
 END_TEST
 
+/* Sets the last double of the sidecar at path (the last pixel's blue) to
+ * a value a render could write that is far from the one there: a changed
+ * byte that neither the length nor the value check can see. */
+static void change_last_value(const char *path)
+{
+    FILE *f = fopen(path, "r+b");
+    unsigned char le[8];
+    ck_assert_ptr_nonnull(f);
+    ck_assert_int_eq(fseek(f, -8, SEEK_END), 0);
+    ck_assert_int_eq(fread(le, 1, 8, f), 8);
+    uint64_t bits = 0;
+    for (int i = 7; i >= 0; i--)
+        bits = bits << 8 | le[i];
+    double v;
+    memcpy(&v, &bits, sizeof v);
+    v = v < 0.5 ? 0.75 : 0.125;
+    memcpy(&bits, &v, sizeof bits);
+    for (int i = 0; i < 8; i++)
+        le[i] = (unsigned char)(bits >> (8 * i));
+    ck_assert_int_eq(fseek(f, -8, SEEK_END), 0);
+    ck_assert_int_eq(fwrite(le, 1, 8, f), 8);
+    ck_assert_int_eq(fclose(f), 0);
+}
+
 /* The whole tile sidecars of dir (a checkpoint), not the temporary files
  * of their writes; the first one's path into path. */
 static int sidecars(const char *dir, char *path, size_t size)
@@ -861,7 +886,8 @@ static int sidecars(const char *dir, char *path, size_t size)
  * way: refray itself killed by SIGKILL (a power cut: nothing of it runs
  * after), or one of its workers killed (exit 70).  The finished tiles stay;
  * after the parent's death its workers are gone too.  The same command
- * then resumes from them (a tile damaged meanwhile is rendered again, with
+ * then resumes from them (a tile damaged meanwhile, cut short or one of
+ * its values changed (tests/attack12 finding 3), is rendered again, with
  * a warning), writes the bytes of an uninterrupted render, and removes the
  * checkpoint with the temporary files of the cut writes. */
 START_TEST(test_scaling_resume_after_kill)
@@ -903,16 +929,16 @@ START_TEST(test_scaling_resume_after_kill)
         kept = sidecars(ck, side, sizeof side);
         /* 80 rows, 2 workers: min(80, max(64, 4 x 2)) = 64 bands. */
         ck_assert_msg(kept >= 2 && kept < 64, "%d tiles kept", kept);
-        if (k == 0) {
+        if (k == 0)
             ck_assert_int_eq(truncate(side, 40), 0);
-            kept--;
-        }
+        else
+            change_last_value(side);
+        kept--;
         cli_refray(&r, args);
         ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
         snprintf(note, sizeof note, "%d of 64 tiles are done", kept);
         ASSERT_ERR_HAS(&r, note);
-        if (k == 0)
-            ASSERT_ERR_HAS(&r, "rendering that tile again");
+        ASSERT_ERR_HAS(&r, "rendering that tile again");
         ck_assert(!cli_exists(ck));
         same_bytes(plain, out);
         ck_assert_int_eq(files_with(dir, ".refray-tmp-"), 0);
@@ -980,6 +1006,56 @@ static void whole_render(const char *dir, const char *name, char *path, size_t s
 {
     render_to(cli_path(path, size, dir, name), NULL, NULL);
 }
+
+/* [SCALE-RESUME-4] The checkpoint removes its own files by exact name and
+ * nothing else (tests/attack12 finding 2: every tile-* and
+ * refray-checkpoint* name went, the user's files and the output among
+ * them, after exit 0); an output named as one of its files is refused
+ * before rendering (64), and a directory without a manifest holding a
+ * file named as one of its tiles is refused (65), each leaving DIR as it
+ * was. */
+START_TEST(test_scaling_checkpoint_leaves_others)
+{
+    static const char *const theirs[] = {"tile-0.exr", "tile-1.pfm", "tile-1.pfm.tile", "tile-notes.txt",
+                                         "refray-checkpoint-notes.md", "tile-00000.pfm.bak", "tile-000001.pfm"};
+    char dir[64], ck[300], out[340], path[340], plain[300];
+    size_t n = sizeof theirs / sizeof theirs[0];
+    cli_scratch(dir, sizeof dir, "scale");
+    cli_path(ck, sizeof ck, dir, "ck");
+    ck_assert_int_eq(mkdir(ck, 0777), 0);
+    for (size_t k = 0; k < n; k++)
+        write_text(cli_path(path, sizeof path, ck, theirs[k]), "mine\n");
+    whole_render(dir, "plain.pfm", plain, sizeof plain);
+    /* The output itself named like a tile, in the checkpoint: kept. */
+    const char *extra[] = {"-q", "--checkpoint", ck, "-o", cli_path(out, sizeof out, ck, "tile-final.pfm"), NULL};
+    render(0, extra);
+    same_bytes(plain, out);
+    for (size_t k = 0; k < n; k++)
+        ck_assert_msg(cli_exists(cli_path(path, sizeof path, ck, theirs[k])), "%s was removed", theirs[k]);
+    ck_assert_int_eq(cli_entries(ck), (int)n + 1);
+    ck_assert_int_eq(unlink(out), 0);
+
+    /* An output the checkpoint would write and remove: 64, nothing made. */
+    static const char *const clashes[] = {"tile-00003.pfm", "tile-00000.pfm"};
+    for (size_t k = 0; k < sizeof clashes / sizeof clashes[0]; k++) {
+        char other[360];
+        snprintf(other, sizeof other, "%s/../ck/%s", ck, clashes[k]);
+        const char *clash[] = {"-q", "--checkpoint", ck, "-o", other, NULL};
+        cli_run *r = render(64, clash);
+        ASSERT_ERR_HAS(r, "a name the checkpoint");
+        ck_assert_int_eq(cli_entries(ck), (int)n);
+    }
+
+    /* A tile's name there without a manifest: someone else's file. */
+    write_text(cli_path(path, sizeof path, ck, "tile-00002.pfm"), "mine\n");
+    const char *fresh[] = {"-q", "--checkpoint", ck, "-o", cli_path(out, sizeof out, dir, "out.pfm"), NULL};
+    cli_run *r = render(65, fresh);
+    ASSERT_ERR_HAS(r, "a name the checkpoint writes, but no checkpoint manifest");
+    ck_assert_int_eq(cli_entries(ck), (int)n + 1);
+    ck_assert(!cli_exists(out));
+    cli_remove(dir);
+}
+END_TEST
 
 /* [SCALE-PARALLEL-1] The GNU parallel recipe of spec/scaling.md,
  * examples/scaling/parallel-tiles.sh, renders 5 tiles on this machine and
@@ -1128,6 +1204,7 @@ Suite *suite_scaling(void)
     tcase_add_test(runs, test_scaling_resume);
     tcase_add_test(runs, test_scaling_resume_after_kill);
     tcase_add_test(runs, test_scaling_checkpoint_of_another_render);
+    tcase_add_test(runs, test_scaling_checkpoint_leaves_others);
     tcase_add_test(runs, test_scaling_gnu_parallel);
     tcase_add_test(runs, test_scaling_slurm_array_task);
     suite_add_tcase(s, runs);

@@ -13,11 +13,14 @@
  * DIR are finished ones; they are ordinary tiles that refray merge reads.
  */
 #include <dirent.h>
+#include <ctype.h>
 #include <errno.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include "base/status.h"
 #include "cli/cli_args.h"
@@ -46,6 +49,74 @@ static const char *tile_path(const cli_tiles *t, int b, char *buf, size_t size)
     char name[32];
     snprintf(name, sizeof name, "tile-%05d.pfm", b);
     return in_dir(t, name, buf, size);
+}
+
+/* 1 when name is one the checkpoint writes, by exact name: the manifest,
+ * or the tile of a band below `bands` or its sidecar ([SCALE-RESUME-4]).
+ * Nothing else in DIR is touched, whatever its name. */
+static int own_name(const char *name, int bands)
+{
+    char want[48];
+    if (strcmp(name, manifest_name) == 0)
+        return 1;
+    if (strncmp(name, "tile-", 5) != 0 || !isdigit((unsigned char)name[5]))
+        return 0;
+    long b = strtol(name + 5, NULL, 10);
+    if (b < 0 || b >= bands)
+        return 0;
+    snprintf(want, sizeof want, "tile-%05ld.pfm", b);
+    size_t n = strlen(want);
+    return strncmp(name, want, n) == 0 && (name[n] == '\0' || strcmp(name + n, ".tile") == 0);
+}
+
+/* 1 when path names the same directory as t->checkpoint. */
+static int in_checkpoint_dir(const cli_tiles *t, const char *path)
+{
+    struct stat a, b;
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    return stat(dir, &a) == 0 && stat(t->checkpoint, &b) == 0 && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+/* The output must not be a file the checkpoint writes and removes
+ * ([SCALE-RESUME-4]): refused before anything is rendered. */
+static int check_output(const cli_tiles *t)
+{
+    if (!t->output || strcmp(t->output, "-") == 0 || !in_checkpoint_dir(t, t->output))
+        return STATUS_OK;
+    const char *slash = strrchr(t->output, '/'), *name = slash ? slash + 1 : t->output;
+    if (!own_name(name, INT_MAX) && file_temp_owner(name) < 0)
+        return STATUS_OK;
+    cli_error("the output '%s' is a name the checkpoint '%s' writes and removes (its manifest, its tiles "
+              "tile-NNNNN.pfm and their sidecars): name the output otherwise or give another directory",
+              t->output, t->checkpoint);
+    return STATUS_USAGE;
+}
+
+/* A new checkpoint (no manifest yet) in a directory that already holds a
+ * file named as one of its tiles: that file is someone else's, and the
+ * checkpoint would read it and, at the end, remove it. */
+static int check_fresh(const cli_tiles *t)
+{
+    char path[4096];
+    for (int b = 0; b < t->bands; b++) {
+        for (int side = 0; side < 2; side++) {
+            char name[40];
+            snprintf(name, sizeof name, "tile-%05d.pfm%s", b, side ? ".tile" : "");
+            in_dir(t, name, path, sizeof path);
+            if (access(path, F_OK) == 0) {
+                cli_error("the directory '%s' holds '%s', a name the checkpoint writes, but no checkpoint "
+                          "manifest (spec/scaling.md): give another directory to --checkpoint",
+                          t->checkpoint, path);
+                return STATUS_DATA;
+            }
+        }
+    }
+    return STATUS_OK;
 }
 
 static int write_manifest(const cli_tiles *t, const char *path)
@@ -138,15 +209,17 @@ int cli_checkpoint_open(cli_tiles *t, unsigned char *done)
 {
     char path[4096], why[600], *text = NULL;
     size_t len = 0;
-    int rc = file_make_dirs(t->checkpoint, why, sizeof why);
-    if (rc != STATUS_OK) {
+    int rc = check_output(t);
+    if (rc != STATUS_OK)
+        return rc;
+    if ((rc = file_make_dirs(t->checkpoint, why, sizeof why)) != STATUS_OK) {
         cli_error("checkpoint: %s", why);
         return rc;
     }
     in_dir(t, manifest_name, path, sizeof path);
     rc = file_read_all(path, 4096, NULL, &text, &len, why, sizeof why);
     if (rc == STATUS_NO_INPUT && access(path, F_OK) != 0)
-        return write_manifest(t, path);
+        return (rc = check_fresh(t)) != STATUS_OK ? rc : write_manifest(t, path);
     if (rc == STATUS_OK)
         rc = check_manifest(t, path, text);
     else if (rc == STATUS_DATA)
@@ -176,16 +249,16 @@ int cli_checkpoint_save(const cli_tiles *t, int b, char *why, size_t why_size)
     return rc;
 }
 
-/* refray's own names in the directory: the manifest, the tiles, and the
- * temporary files of writes that were cut short. */
-/* The manifest, a tile, or the temporary of a write cut short: a worker
- * killed while it wrote a tile (io/atomic.h), whose process is gone. */
-static int ours(const char *name)
+/* The manifest, a tile of one of the t's bands or its sidecar, by exact
+ * name, or the temporary of a write cut short (io/atomic.h's name, which
+ * no other program writes): a worker killed while it wrote a tile, whose
+ * process is gone. */
+static int ours(const cli_tiles *t, const char *name)
 {
     long pid = file_temp_owner(name);
     if (pid > 0)
         return pid == (long)getpid() || (kill((pid_t)pid, 0) != 0 && errno == ESRCH);
-    return strncmp(name, manifest_name, sizeof manifest_name - 1) == 0 || strncmp(name, "tile-", 5) == 0;
+    return own_name(name, t->bands);
 }
 
 void cli_tiles_checkpoint_clear(const cli_tiles *t)
@@ -193,7 +266,7 @@ void cli_tiles_checkpoint_clear(const cli_tiles *t)
     char path[4096];
     DIR *d = opendir(t->checkpoint);
     for (struct dirent *e; d && (e = readdir(d)) != NULL;)
-        if (ours(e->d_name))
+        if (ours(t, e->d_name))
             unlink(in_dir(t, e->d_name, path, sizeof path));
     if (d)
         closedir(d);

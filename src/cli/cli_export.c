@@ -35,7 +35,7 @@ static const char export_help[] =
     "is refused (exit 65) with the reason.\n"
     "options:\n"
     "  --to pov|json       the target\n"
-    "  -o, --output OUT    write OUT atomically (default: stdout)\n"
+    "  -o, --output OUT    write OUT atomically (default, or OUT -: stdout)\n"
     "json:\n"
     "  --mesh-files DIR    meshes as OBJ files DIR/STEM.meshI.obj instead of inline\n"
     "                      arrays; DIR is relative to OUT's directory, as the\n"
@@ -99,6 +99,9 @@ static int parse_args(export_args *a, int argc, char **argv)
         return cli_usage_error("export: %s applies to --to pov", a->pov_only);
     if (!json && a->mesh_dir)
         return cli_usage_error("export: --mesh-files applies to --to json");
+    /* "-" is standard output, as for render (spec/json.md [JSON-OUT-1]). */
+    if (a->output && strcmp(a->output, "-") == 0)
+        a->output = NULL;
     return 0;
 }
 

@@ -75,6 +75,7 @@ static int render_region(const render_args *a, const rf_scene *scene, cli_tiles 
     t->pixels = rf_image_pixels(img);
     t->jobs = a->jobs ? a->jobs : pool_cpu_count();
     t->checkpoint = a->checkpoint;
+    t->output = a->output;
     t->quiet = a->quiet;
     t->read = img_read_opts_default();
     t->read.max_pixels = a->scene.limits.max_pixels;

@@ -19,6 +19,7 @@ typedef struct cli_tiles {
     double *pixels;          /* the region's pixels: 3 doubles a pixel, rows from the top */
     int jobs;                /* worker processes; 1: in this process */
     const char *checkpoint;  /* the directory, or NULL */
+    const char *output;      /* the output file, or "-": never one of the checkpoint's */
     int quiet;               /* no progress bar, no notes */
     int bands;               /* out: the bands of the split */
     rf_render_stats stats;   /* out: summed over the workers; seconds: wall time */

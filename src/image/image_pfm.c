@@ -15,7 +15,9 @@
  *
  * In both headers the tokens are separated by white space (and '#'
  * comments in PPM, which we also accept in PFM), and exactly one white
- * character separates the last token from the raster.
+ * character separates the last token from the raster in PPM.  A PFM's
+ * raster is its last bytes, found from the file's size, with only white
+ * space (CR LF too) between the header and them (raster_fits).
  */
 #include <errno.h>
 #include <limits.h>
@@ -108,8 +110,14 @@ static int make_target(const img_read_opts *o, int w, int h, img_buf *out, char 
 /* The raster's bytes, rows x bytes_per_row, fit in what the file holds
  * after the header: a header of 16384 x 16384 on a 1 KB file must not
  * allocate gigabytes before the first row comes up short.  A stream that
- * cannot seek (a pipe) is read as it comes. */
-static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, char *err, size_t errlen)
+ * cannot seek (a pipe) is read as it comes.
+ *
+ * With `last` (PFM, [IMG-PFM-1]) the raster is the file's last bytes:
+ * what lies between the header's separator and them must be white space,
+ * which is skipped, so a header whose lines end in CR LF (a text-mode
+ * writer) is read right; anything else there is a file whose size does
+ * not fit its header, refused rather than read some bytes off. */
+static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, int last, char *err, size_t errlen)
 {
     long here = ftell(fp);
     if (here < 0 || fseek(fp, 0, SEEK_END) != 0) {
@@ -121,6 +129,19 @@ static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, char *err, size
         return img_error(err, errlen, STATUS_IO, "cannot seek back in the file: %s", strerror(errno));
     if (end >= here && (size_t)(end - here) / bytes_per_row < (size_t)rows)
         return img_error(err, errlen, STATUS_DATA, "file is truncated (the pixel data ends early)");
+    if (!last || end < here)
+        return STATUS_OK;
+    size_t extra = (size_t)(end - here) - (size_t)rows * bytes_per_row;
+    for (size_t i = 0; i < extra; i++) {
+        int c = fgetc(fp);
+        if (c == EOF)
+            return read_failed(fp, err, errlen);
+        if (!is_white(c))
+            return img_error(err, errlen, STATUS_DATA, "the file is %zu bytes longer than its header and the "
+                             "%d rows of %zu bytes of pixel data it announces, and they are not white space after "
+                             "the header (bytes after the pixels, or a wrong size)", extra, rows,
+                             bytes_per_row);
+    }
     return STATUS_OK;
 }
 
@@ -219,7 +240,7 @@ int img_pfm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size
     if (rc == STATUS_OK)
         rc = read_pfm_scale(fp, &little, err, errlen);
     if (rc == STATUS_OK)
-        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, 4 * (size_t)nch * (size_t)w, err, errlen);
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, 4 * (size_t)nch * (size_t)w, 1, err, errlen);
     if (rc == STATUS_OK)
         rc = make_target(o, w, h, out, err, errlen);
     if (rc != STATUS_OK || o->header_only)
@@ -288,7 +309,7 @@ int img_ppm_read(FILE *fp, const img_read_opts *o, img_buf *out, char *err, size
     if (rc == STATUS_OK && maxval < 0)
         rc = img_error(err, errlen, STATUS_DATA, "bad maxval in the PPM header (1 to 65535)");
     if (rc == STATUS_OK)
-        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, (maxval < 256 ? 3 : 6) * (size_t)w, err, errlen);
+        rc = o->header_only ? STATUS_OK : raster_fits(fp, h, (maxval < 256 ? 3 : 6) * (size_t)w, 0, err, errlen);
     if (rc == STATUS_OK)
         rc = make_target(o, w, h, out, err, errlen);
     if (rc != STATUS_OK || o->header_only)

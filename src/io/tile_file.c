@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "base/hash.h"
 #include "image/image_file.h"
 #include "io/fileio.h"
 #include "io/image_io.h"
@@ -62,17 +63,31 @@ static void put_le64(unsigned char *p, uint64_t v)
         p[i] = (unsigned char)(v >> (8 * i));
 }
 
+/* The FNV-1a hash of the n values as the sidecar holds them (little-endian
+ * doubles): one changed byte always changes it, since each step of FNV-1a
+ * is a bijection of the state. */
+static uint64_t pixels_check(const double *v, size_t n)
+{
+    uint64_t h = HASH_FNV_START, bits;
+    for (size_t i = 0; i < n; i++) {
+        memcpy(&bits, &v[i], sizeof bits);
+        h = hash_u64(h, bits);
+    }
+    return h;
+}
+
 static int fill_sidecar(FILE *fp, void *ctx)
 {
     tile_fill *f = ctx;
     const tile_rect *r = &f->t->region;
-    char key[17];
+    char key[17], check[17];
+    size_t n = 3 * (size_t)f->px->width * (size_t)f->px->height;
     tile_key_text(f->t->key, key);
-    if (fprintf(fp, "refray-tile 1\nimage %d %d\nregion %d %d %d %d\nkey %s\npixels f64le\n", f->t->width,
-                f->t->height, r->x0, r->y0, r->x1, r->y1, key) < 0)
+    tile_key_text(pixels_check(f->px->rgb, n), check);
+    if (fprintf(fp, "refray-tile 2\nimage %d %d\nregion %d %d %d %d\nkey %s\npixels f64le fnv1a64 %s\n",
+                f->t->width, f->t->height, r->x0, r->y0, r->x1, r->y1, key, check) < 0)
         return STATUS_IO;
     unsigned char b[8];
-    size_t n = 3 * (size_t)f->px->width * (size_t)f->px->height;
     for (size_t i = 0; i < n; i++) {
         uint64_t bits;
         memcpy(&bits, &f->px->rgb[i], sizeof bits);
@@ -119,17 +134,24 @@ static int read_error(char *why, size_t why_size, int code, const char *path, co
     return code;
 }
 
-/* The five header lines into *t; 1 when they are exactly the format's. */
-static int parse_header(FILE *fp, tile_info *t)
+/* The five header lines into *t and the pixels' checksum into *check: 1
+ * when they are exactly the format's, -1 for the first layout (no
+ * checksum), 0 for anything else. */
+static int parse_header(FILE *fp, tile_info *t, uint64_t *check)
 {
     char line[5][128], key[17];
     int n = -1;
     tile_rect *r = &t->region;
     for (int i = 0; i < 5; i++)
         if (!fgets(line[i], sizeof line[i], fp))
-            return 0;
-    if (strcmp(line[0], "refray-tile 1\n") != 0 || strcmp(line[4], "pixels f64le\n") != 0)
+            return i > 0 && strcmp(line[0], "refray-tile 1\n") == 0 ? -1 : 0;
+    if (strcmp(line[0], "refray-tile 1\n") == 0)
+        return -1;
+    if (strcmp(line[0], "refray-tile 2\n") != 0 ||
+        sscanf(line[4], "pixels f64le fnv1a64 %16[0-9a-f]%n", key, &n) != 1 || strcmp(line[4] + n, "\n") != 0 ||
+        !tile_key_parse(key, check))
         return 0;
+    n = -1;
     if (sscanf(line[1], "image %d %d%n", &t->width, &t->height, &n) != 2 || strcmp(line[1] + n, "\n") != 0)
         return 0;
     n = -1;
@@ -151,8 +173,10 @@ static uint64_t get_le64(const unsigned char *p)
 }
 
 /* The region's doubles after the header, into a new *px. */
-static int read_doubles(FILE *fp, const char *path, const tile_info *t, img_buf *px, char *why, size_t why_size)
+static int read_doubles(FILE *fp, const char *path, const tile_info *t, uint64_t check, img_buf *px, char *why,
+                        size_t why_size)
 {
+    uint64_t h = HASH_FNV_START;
     const tile_rect *r = &t->region;
     int rc = img_create(px, r->x1 - r->x0, r->y1 - r->y0);
     if (rc != STATUS_OK)
@@ -167,6 +191,7 @@ static int read_doubles(FILE *fp, const char *path, const tile_info *t, img_buf 
                             ferror(fp) ? strerror(errno) : "the tile's pixels end early");
             break;
         }
+        h = hash_bytes(h, buf, 8 * row);
         for (size_t i = 0; rc == STATUS_OK && i < row; i++) {
             uint64_t bits = get_le64(buf + 8 * i);
             double *v = img_pixel(px, 0, y) + i;
@@ -182,6 +207,11 @@ static int read_doubles(FILE *fp, const char *path, const tile_info *t, img_buf 
             }
         }
     }
+    /* After the value checks, which name a pixel: a changed byte that
+     * still reads as a value a render writes is caught here. */
+    if (rc == STATUS_OK && h != check)
+        rc = read_error(why, why_size, STATUS_DATA, path, "its pixels do not match their checksum (a byte was "
+                        "changed: damaged)");
     free(buf);
     if (rc != STATUS_OK)
         img_free(px);
@@ -194,7 +224,12 @@ static int read_sidecar(FILE *fp, const char *path, const img_read_opts *o, tile
 {
     char reason[200];
     struct stat sb;
-    if (!parse_header(fp, t))
+    uint64_t check = 0;
+    int layout = parse_header(fp, t, &check);
+    if (layout < 0)
+        return read_error(why, why_size, STATUS_DATA, path, "a sidecar of the first layout (refray-tile 1), "
+                          "without the checksum of its pixels this refray checks: render the tile again");
+    if (layout == 0)
         return read_error(why, why_size, STATUS_DATA, path, "not a refray tile sidecar (its header is not "
                           "the five lines of spec/scaling.md)");
     if (img_check_header(t->width, t->height, o, reason, sizeof reason) != STATUS_OK ||
@@ -205,7 +240,7 @@ static int read_sidecar(FILE *fp, const char *path, const img_read_opts *o, tile
     if (header < 0 || fstat(fileno(fp), &sb) != 0 || (double)sb.st_size != want)
         return read_error(why, why_size, STATUS_DATA, path, "its length does not match its region (damaged or "
                           "cut short)");
-    return px ? read_doubles(fp, path, t, px, why, why_size) : STATUS_OK;
+    return px ? read_doubles(fp, path, t, check, px, why, why_size) : STATUS_OK;
 }
 
 int tile_file_read(const char *path, const img_read_opts *o, tile_info *t, img_buf *px, char *why, size_t why_size)

@@ -6,13 +6,14 @@
  *   .exr  OpenEXR with the region as data window (image_file.h)
  *   .pfm  the region as a PFM (float, for viewers) and the sidecar
  *         NAME.pfm.tile: five text lines
- *             refray-tile 1
+ *             refray-tile 2
  *             image W H
  *             region X0 Y0 X1 Y1
  *             key 16-HEX-DIGITS
- *             pixels f64le
+ *             pixels f64le fnv1a64 16-HEX-DIGITS
  *         then the region's values as little-endian IEEE doubles, R G B
- *         per pixel, rows from the top; nothing after them.  A merge
+ *         per pixel, rows from the top; nothing after them; the hex digits
+ *         are the FNV-1a hash of those bytes ([TILE-FILE-4]).  A merge
  *         reads the sidecar only.
  * PNG and PPM are no tile formats: they hold display codes.
  */

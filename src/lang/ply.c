@@ -239,10 +239,6 @@ static int header_element(reader *r, const src_span *w, int n, src_span line)
         diag_report(r->d, DIAG_ERROR, w[1], "a second element '%s'", q.s);
         return 0;
     }
-    if (e->kind == E_FACE && r->vertex_element < 0) {
-        diag_report(r->d, DIAG_ERROR, w[1], "element 'face' must come after element 'vertex'");
-        return 0;
-    }
     if (seen)
         *seen = r->element_count;
     r->element_count++;
@@ -704,24 +700,47 @@ static int read_face(reader *r, const element *e, long long index)
     return 0;
 }
 
-static int read_instance(reader *r, const element *e, long long index)
+/* Reads past instance index of e, every value checked as it is framed. */
+static int skip_instance(reader *r, const element *e, long long index)
 {
-    if (e->kind == E_VERTEX)
-        return read_vertex(r, e, index);
-    if (e->kind == E_FACE)
-        return read_face(r, e, index);
     for (int i = 0; i < e->prop_count; i++)
         if (!skip_property(r, e, index, &e->props[i]))
             return 0;
     return 1;
 }
 
+/* The instances of e from r->pos: read into the mesh, or (skip) framed
+ * and read past. */
+static void read_element(reader *r, const element *e, int skip)
+{
+    for (long long i = 0; i < e->count && !r->failed && !diag_too_many(r->d); i++) {
+        if (skip || e->kind == E_OTHER)
+            skip_instance(r, e, i);
+        else if (e->kind == E_VERTEX)
+            read_vertex(r, e, i);
+        else
+            read_face(r, e, i);
+    }
+}
+
 static void parse_body(reader *r)
 {
+    /* PLY puts no order on elements ([MESH-PLY-2]).  Faces whose vertices
+     * come later are framed where they stand (binary data can be found
+     * only so) and read once the vertices are in, each index then checked
+     * against all of them. */
+    int later = r->face_element < r->vertex_element;
+    size_t faces_at = 0;
     for (int k = 0; k < r->element_count && !r->failed; k++) {
-        const element *e = &r->elements[k];
-        for (long long i = 0; i < e->count && !r->failed && !diag_too_many(r->d); i++)
-            read_instance(r, e, i);
+        if (k == r->face_element)
+            faces_at = r->pos;
+        read_element(r, &r->elements[k], later && k == r->face_element);
+    }
+    if (later && !r->failed) {
+        size_t end = r->pos;
+        r->pos = faces_at;
+        read_element(r, &r->elements[r->face_element], 0);
+        r->pos = end;
     }
     if (r->failed || r->fmt != F_ASCII)
         return;

@@ -15,11 +15,11 @@
  * int16 uint16 int32 uint32 float32 float64.  The element `vertex` must
  * have properties x, y, z and may have nx, ny, nz (all three); the element
  * `face` must have a list vertex_indices (or vertex_index) of integer type.
- * `vertex` must come before `face`.  Every other element and property is
- * read past and ignored.  ASCII data are whitespace-separated numbers;
- * binary data are packed, with the header's byte order.  A face of fewer
- * than 3 corners has no area and is counted as such; polygons are cut as
- * OBJ ones are (polygon.h).
+ * The elements may come in any order (faces before vertices too).  Every
+ * other element and property is read past and ignored.  ASCII data are
+ * whitespace-separated numbers; binary data are packed, with the header's
+ * byte order.  A face of fewer than 3 corners has no area and is counted
+ * as such; polygons are cut as OBJ ones are (polygon.h).
  *
  * Errors: a header mistake points at its token (file:line:col); a mistake
  * in ASCII data at the offending number, naming the element, its number

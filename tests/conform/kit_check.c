@@ -51,6 +51,28 @@ static int little_endian_host(void)
     return first == 1;
 }
 
+/* PFM's pixel data are the file's last bytes: what lies between the
+ * header's last token and them must be white space (a header whose lines
+ * end in CR LF, from a writer in text mode), else the file's size does
+ * not fit its header and it is refused, never read some bytes off.  A
+ * stream that cannot seek is read as it comes. */
+static int seek_raster(FILE *f, size_t raster)
+{
+    long here = ftell(f), end;
+    if (here < 0 || fseek(f, 0, SEEK_END) != 0 || (end = ftell(f)) < 0) {
+        clearerr(f);
+        return here < 0 || fseek(f, here, SEEK_SET) == 0;
+    }
+    if (end < here || (size_t)(end - here) < raster || fseek(f, here, SEEK_SET) != 0)
+        return 0;
+    for (size_t extra = (size_t)(end - here) - raster; extra > 0; extra--) {
+        int c = fgetc(f);
+        if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
+            return 0;
+    }
+    return 1;
+}
+
 /* PF (colour) or Pf (grey) of either byte order; PFM stores rows from the
  * bottom, so they are turned over here. */
 static int read_pfm(const char *path, picture *p)
@@ -77,6 +99,10 @@ static int read_pfm(const char *path, picture *p)
     int channels = kind[1] == 'F' ? 3 : 1;
     int swap = (strtod(scale, NULL) < 0) != little_endian_host();
     size_t pixels = (size_t)p->width * (size_t)p->height;
+    if (!seek_raster(f, 4 * (size_t)channels * pixels)) {
+        fclose(f);
+        return 0;
+    }
     p->rgb = malloc(3 * pixels * sizeof *p->rgb);
     for (long row = p->height - 1; p->rgb && row >= 0; row--) {
         for (long x = 0; x < p->width; x++) {

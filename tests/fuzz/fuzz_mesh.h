@@ -39,16 +39,14 @@ static inline int fuzz_mesh(const uint8_t *data, size_t size, fuzz_reader read)
     source_set set;
     diag d;
     polymesh m;
-    FILE *sink = fopen("/dev/null", "w");
-    source_set_init(&set);
+    source_set_init(&set, NULL);
     int file = source_set_add(&set, "fuzz.mesh", (const char *)data, size, src_span_none());
-    if (file < 0 || !sink) {
+    if (file < 0) {
         source_set_free(&set);
-        if (sink)
-            fclose(sink);
         return 0;
     }
-    diag_init(&d, &set, sink);
+    /* Messages counted, not delivered. */
+    diag_init(&d, &set, NULL, NULL);
     d.max_errors = 8;
     int ok = read(&set, file, &d, 2000, &m);
     if (ok != (d.errors == 0) || (!ok && (m.tri || m.positions || m.triangle_count)))
@@ -63,12 +61,11 @@ static inline int fuzz_mesh(const uint8_t *data, size_t size, fuzz_reader read)
         g.tri = m.tri;
         g.tri_count = m.triangle_count;
         unsigned char open[2000];
-        if (mesh_topo_analyse(&g, &topo, open) && topo.closed != (topo.open_edges == 0 && topo.crowded_edges == 0))
+        if (mesh_topo_analyse(&g, NULL, &topo, open) && topo.closed != (topo.open_edges == 0 && topo.crowded_edges == 0))
             __builtin_trap();
     }
     polymesh_free(&m);
     source_set_free(&set);
-    fclose(sink);
     return 0;
 }
 
