@@ -76,3 +76,8 @@ TRACE_OUTLINE void glass_first_of_tie(const tracer *t, const ray *r, hit *h, con
     if (kinds == 3)
         *h = f.h[best];
 }
+
+int glass_contact_meets(const glass_contact *c, vec3 dir)
+{
+    return vec_dot(dir, c->side) < 0;
+}

@@ -40,6 +40,25 @@ typedef struct start_zone {
 void glass_start_gather(const tracer *t, const hit *h, real offset, const ray *r, start_zone *z, trace_stats *st);
 
 /*
+ * The opaque surface a glass point touches, known where a mirror ray from
+ * an opaque point met that glass at its start (glass_start_gather): the
+ * opaque hit and its normal on the side the mirror ray left it (the
+ * zone's side), where the glass lies in the limit of a gap.  Rays the
+ * glass point spawns back across that side, its mirror ray and its shadow
+ * rays toward a light beyond the opaque surface, meet the surface at
+ * distance 0 instead of starting past it.
+ */
+typedef struct glass_contact {
+    const hit *opaque;
+    vec3 side;
+} glass_contact;
+
+/* Whether a ray along dir from the glass point meets the opaque surface of
+ * c at its start: dir goes back across c->side (the opaque surface taken
+ * as its tangent plane there). */
+int glass_contact_meets(const glass_contact *c, vec3 dir);
+
+/*
  * [NUM-GLASS-3] The surface a ray meets first among those tied with its
  * nearest hit h (bvh.c's window, where the lowest index wins), taken in
  * the limit of a gap between opaque and transparent ones

@@ -38,7 +38,9 @@ typedef struct surface {
     int no_body;     /* Kd = 0: a light adds its highlight alone */
     real lobe_floor; /* V.R at or below it: the lobe is 0 ([SHADE-SHORTCUT-LOBE-2]) */
     shadow_start from; /* where its shadow rays start */
-    int near_glass;  /* opaque, with glass within reach of its shadow rays' start ([NUM-GLASS-3]) */
+    int near_glass;  /* its shadow rays' start may touch what their walk misses ([NUM-GLASS-3]): opaque,
+                        with glass within reach; glass, with a touch */
+    const glass_contact *touch; /* glass met at a mirror ray's start: the opaque surface there (NULL: none) */
 } surface;
 
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
@@ -197,10 +199,14 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, const 
     return w.carried;
 }
 
-/* [NUM-GLASS-3] What the transparent surfaces at the start of the shadow
- * ray from s let through that its walk misses (glass_start_gather). */
-static real start_transmission(const tracer *t, const surface *s, const ray *shadow, trace_stats *st)
+/* [NUM-GLASS-3] What the surfaces at the start of the shadow ray toward l
+ * from s let through that its walk misses: at an opaque point the
+ * transparent ones there (glass_start_gather), at a glass point the opaque
+ * surface it touches (s->touch), 0 toward it. */
+static real start_transmission(const tracer *t, const surface *s, const ray *shadow, vec3 l, trace_stats *st)
 {
+    if (s->touch)
+        return glass_contact_meets(s->touch, l) ? 0 : 1;
     start_zone z;
     glass_start_gather(t, s->shadow_from, s->from.offset, shadow, &z, st);
     return z.carried;
@@ -273,7 +279,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
         if (through > 0 && s->near_glass)
-            through = shade_shadow_transmission(through, start_transmission(t, s, &r, st));
+            through = shade_shadow_transmission(through, start_transmission(t, s, &r, l, st));
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -494,7 +500,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
 }
 
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
-                     trace_stats *st);
+                     const glass_contact *touch, trace_stats *st);
 
 /*
  * The transmitted ray: straight on through a sheet, bent by Snell's law
@@ -521,7 +527,8 @@ static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ra
     rgb c;
     if (refracts) {
         st->refraction_rays++;
-        c = end.prim >= 0 ? trace_end(t, &r, &end, depth + 1, &next, key, st) : trace_ray(t, &r, depth + 1, &next, key, st);
+        c = end.prim >= 0 ? trace_end(t, &r, &end, depth + 1, &next, key, NULL, st)
+                          : trace_ray(t, &r, depth + 1, &next, key, st);
         c = vec_scale(c, through);
     } else {
         /* Totally reflected, the ray stays in `media`: `next` is not used. */
@@ -547,7 +554,22 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
     glass_start_gather(t, s->h, offset, r, &z, st);
     if (z.first.prim < 0)
         return 0;
-    *c = trace_end(t, r, &z.first, depth, media, key, st);
+    glass_contact touch = {s->h, z.side};
+    *c = trace_end(t, r, &z.first, depth, media, key, &touch, st);
+    return 1;
+}
+
+/* [NUM-GLASS-3] The mirror ray r from the glass point of s that a mirror
+ * ray from the opaque surface s->touch met at its start: in the limit of a
+ * gap the glass lies off that surface, so a ray back toward it meets it at
+ * distance 0 (its colour in *c, and 1).  Out of line as mirror_meets_glass. */
+static TRACE_OUTLINE int mirror_meets_opaque(const tracer *t, const surface *s, const ray *r, int depth,
+                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
+{
+    if (!glass_contact_meets(s->touch, r->dir))
+        return 0;
+    hit end = *s->touch->opaque;
+    *c = trace_end(t, r, &end, depth, media, key, NULL, st);
     return 1;
 }
 
@@ -558,14 +580,19 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
     st->reflection_rays++;
     long overflow_before = st->medium_overflow;
     rgb c;
-    if (!(t->glass && !(s->m->t > 0) && mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c)))
+    int met = 0;
+    if (s->touch)
+        met = mirror_meets_opaque(t, s, &r, depth + 1, media, key, st, &c);
+    else if (t->glass && !(s->m->t > 0))
+        met = mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c);
+    if (!met)
         c = trace_ray(t, &r, depth + 1, media, key, st);
     forget_overflow(st, overflow_before, weightless);
     return c;
 }
 
 static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const medium_stack *media, uint64_t key,
-                 trace_stats *st)
+                 const glass_contact *touch, trace_stats *st)
 {
     surface s;
     hit lifted;
@@ -593,7 +620,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     /* Once a point, not once a light sample. */
-    s.near_glass = t->shadows && t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset);
+    s.touch = touch;
+    s.near_glass =
+        t->shadows && (touch || (t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset)));
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
@@ -707,14 +736,14 @@ static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int 
 
 /* The colour of ray r given its nearest hit h (met), or the background. */
 static rgb ray_colour(const tracer *t, const ray *r, int met, const hit *h, int depth, const medium_stack *media,
-                      uint64_t key, trace_stats *st)
+                      uint64_t key, const glass_contact *touch, trace_stats *st)
 {
     rgb c = t->scene->image.background;
     path_note(st, met ? (uint64_t)h->prim + 5 : 0);
     if (met && st->record_path)
         path_note(st, piece_of(&t->scene->prims[h->prim], h));
     if (met)
-        c = shade(t, r, h, depth, media, key, st);
+        c = shade(t, r, h, depth, media, key, touch, st);
     if (!vec_is_finite(c)) {
         st->nonfinite++;
         c = vec_splat(0);
@@ -727,14 +756,14 @@ static rgb ray_colour(const tracer *t, const ray *r, int met, const hit *h, int 
  * from an opaque point the glass there.  That surface is its hit, seen
  * along r.  Here, not in glass_touch.c: it is a step of the recursion. */
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
-                     trace_stats *st)
+                     const glass_contact *touch, trace_stats *st)
 {
     ray at = *r;
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
     at.tmin = at.tmax = end->t = 0;
     end->entering = vec_dot(r->dir, end->normal) < 0;
-    return ray_colour(t, &at, 1, end, depth, media, key, st);
+    return ray_colour(t, &at, 1, end, depth, media, key, touch, st);
 }
 
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
@@ -748,5 +777,5 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     /* A hit alone in its window was tied with nothing. */
     if (met && t->glass && tied > 1)
         glass_first_of_tie(t, r, &h, media, st);
-    return ray_colour(t, &nearest, met, &h, depth, media, key, st);
+    return ray_colour(t, &nearest, met, &h, depth, media, key, NULL, st);
 }
