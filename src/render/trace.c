@@ -18,18 +18,13 @@
 #include <string.h>
 #include "render/intersect.h"
 #include "base/sampler.h"
+#include "render/glass_near.h"
+#include "render/glass_touch.h"
+#include "render/interface.h"
+#include "render/medium.h"
 #include "render/shade.h"
 #include "render/trace.h"
 #include "base/xform.h"
-
-/* [REL-STACK-1] Not inlined into the recursion's frame (trace_ray, shade,
- * mirrored): only an inlining hint, the code computed is the same.  gcc and
- * clang (which defines __GNUC__) know the attribute; Frama-C need not. */
-#if defined(__GNUC__) && !defined(__FRAMAC__)
-#define TRACE_OUTLINE __attribute__((noinline))
-#else
-#define TRACE_OUTLINE
-#endif
 
 /* What shade() knows about the point it shades. */
 typedef struct surface {
@@ -43,83 +38,10 @@ typedef struct surface {
     int no_body;     /* Kd = 0: a light adds its highlight alone */
     real lobe_floor; /* V.R at or below it: the lobe is 0 ([SHADE-SHORTCUT-LOBE-2]) */
     shadow_start from; /* where its shadow rays start */
-    int near_glass;  /* opaque, with glass within reach of its shadow rays' start ([NUM-GLASS-3]) */
+    int near_glass;  /* its shadow rays' start may touch what their walk misses ([NUM-GLASS-3]): opaque,
+                        with glass within reach; glass, with a touch */
+    const glass_contact *touch; /* glass met at a mirror ray's start: the opaque surface there (NULL: none) */
 } surface;
-
-int trace_solid_id(const scene_model *s, int prim)
-{
-    const scene_prim *p = &s->prims[prim];
-    if (scene_prim_is_solid(p))
-        return prim;
-    if (p->kind == PRIM_MESH && p->u.mesh.closed)
-        return prim;
-    return -1;
-}
-
-/*
- * [NUM-GLASS-3] The transparent primitives' boxes, padded by 2^-20 of their
- * size (a hit point lies within a few ulps of its primitive's box): a
- * point farther than the reach from all of them has no transparent surface
- * within reach, so its shadow and mirror rays need no start_gather.  Past
- * GLASS_BOX_MAX of them, or with an unbounded one (a plane), every point
- * gathers.  Returns 0 when out of memory.
- */
-enum { GLASS_BOX_MAX = 64 };
-static int glass_boxes_build(tracer *t, const scene_model *s)
-{
-    int n = 0;
-    t->glass_boxes = -1;
-    for (int i = 0; i < s->prim_count; i++)
-        n += s->materials[s->prims[i].material].t > 0;
-    if (n == 0 || n > GLASS_BOX_MAX)
-        return 1;
-    t->glass_box = mem_calloc(&s->mem, 2 * (size_t)n, sizeof *t->glass_box);
-    t->glass_prim = mem_calloc(&s->mem, (size_t)n, sizeof *t->glass_prim);
-    t->glass_alloc = n;
-    if (!t->glass_box || !t->glass_prim)
-        return 0;
-    n = 0;
-    for (int i = 0; i < s->prim_count; i++) {
-        vec3 lo, hi;
-        if (!(s->materials[s->prims[i].material].t > 0))
-            continue;
-        if (!isect_prim_bounds(&s->prims[i], &lo, &hi))
-            return 1;
-        real size = fmax(fmax(vec_max_abs(lo), vec_max_abs(hi)), vec_max_abs(vec_sub(hi, lo)));
-        t->glass_prim[n] = i;
-        t->glass_box[2 * n] = vec_sub(lo, vec_splat(0x1p-20 * size));
-        t->glass_box[2 * n++ + 1] = vec_add(hi, vec_splat(0x1p-20 * size));
-    }
-    t->glass_boxes = n;
-    return 1;
-}
-
-/* Whether the surface of sphere p may pass within reach (each coordinate)
- * of point: within sqrt(3) reach in length, and its hit points lie within
- * 2^-20 of its size of it (a few ulps); 2 reach and that pad cover both. */
-static int near_sphere(const scene_prim *p, vec3 point, real reach)
-{
-    vec3 c = p->u.sphere.center;
-    real r = p->u.sphere.radius, pad = 2 * reach + 0x1p-20 * (vec_max_abs(c) + r);
-    return fabs(vec_length(vec_sub(point, c)) - r) <= pad;
-}
-
-/* Whether a transparent surface may lie within reach of point (glass_box;
- * a sphere kept in the world frame by its distance from the centre). */
-static int near_glass(const tracer *t, vec3 point, real reach)
-{
-    if (t->glass_boxes < 0)
-        return 1;
-    for (int i = 0; i < t->glass_boxes; i++) {
-        vec3 lo = t->glass_box[2 * i], hi = t->glass_box[2 * i + 1];
-        const scene_prim *p = &t->scene->prims[t->glass_prim[i]];
-        if (point.x >= lo.x - reach && point.x <= hi.x + reach && point.y >= lo.y - reach &&
-            point.y <= hi.y + reach && point.z >= lo.z - reach && point.z <= hi.z + reach &&
-            (p->kind != PRIM_SPHERE || p->frame || near_sphere(p, point, reach)))
-            return 1;
-    }
-    return 0;
-}
 
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
@@ -143,7 +65,7 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
-    if (status == STATUS_OK && t->glass && !glass_boxes_build(t, s))
+    if (status == STATUS_OK && t->glass && !glass_near_build(t, s))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK) {
         tracer_free(t);
@@ -179,11 +101,8 @@ void tracer_free(tracer *t)
     bvh_free(&t->accel);
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
-        mem_free(&t->scene->mem, t->glass_box, 2 * (size_t)t->glass_alloc * sizeof *t->glass_box);
-        mem_free(&t->scene->mem, t->glass_prim, (size_t)t->glass_alloc * sizeof *t->glass_prim);
+        glass_near_free(t);
     }
-    t->glass_box = NULL;
-    t->glass_prim = NULL;
     t->lights = NULL;
 }
 
@@ -280,95 +199,16 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, const 
     return w.carried;
 }
 
-/* Whether hit a comes before b in the tie-break of coplanar surfaces: the
- * lower primitive index, then the lower part (bvh.c's order). */
-static int lower_index(const hit *a, const hit *b)
+/* [NUM-GLASS-3] What the surfaces at the start of the shadow ray toward l
+ * from s let through that its walk misses: at an opaque point the
+ * transparent ones there (glass_start_gather), at a glass point the opaque
+ * surface it touches (s->touch), 0 toward it. */
+static real start_transmission(const tracer *t, const surface *s, const ray *shadow, vec3 l, trace_stats *st)
 {
-    return a->prim != b->prim ? a->prim < b->prim : a->part < b->part;
-}
-
-/* The transparency of the surface h is on. */
-static real t_of(const scene_model *sc, const hit *h)
-{
-    return sc->materials[sc->prims[h->prim].material].t;
-}
-
-/*
- * [NUM-GLASS-3] The transparent surfaces a ray spawned from an opaque point
- * crosses within reach of it (twice the spawn offset) that the ray's own
- * walk does not see: the ray starts off the surface by the offset (a shadow
- * ray past tmin = offset besides), and a glass block standing on the floor
- * has its bottom face at the floor point itself.  In the limit of a gap the
- * ray from the floor crosses that face first: a shadow ray is let through
- * by both of the block's faces (t^2), a mirror ray meets the face.  Opaque
- * surfaces there stay one with the point ([NUM-SPAWN-2]), as does a solid
- * left there (it lies on the other side).  A crossing is taken on the line
- * through the point, within the reach; the walk (from point + offset side)
- * meets the same surface, taken as its tangent plane with normal m turned
- * so that dir.m < 0, at s - offset (side.m)/(dir.m) for the line's
- * parameter s, so that crossing is left to it when that passes its tmin.
- * A closed mesh's winding is not trusted (trace.c): its crossings count
- * whichever way they go.
- */
-typedef struct start_zone {
-    const scene_model *scene;
-    const hit *self;
-    vec3 point, side, dir;   /* the point, its normal on the ray's side, the ray's direction */
-    real offset, tmin, reach, back;
-    real carried;            /* the product of the t of the crossings */
-    hit first;               /* the lowest index among them (prim -1: none) */
-} start_zone;
-
-static int start_crossing(void *ctx, const hit *h)
-{
-    start_zone *z = ctx;
-    const scene_prim *p = &z->scene->prims[h->prim];
-    real tc = t_of(z->scene, h);
-    if (!(tc > 0) || (h->prim == z->self->prim && h->part == z->self->part))
-        return 0;
-    if (!(vec_max_abs(vec_sub(h->point, z->point)) <= z->reach) || (scene_prim_is_solid(p) && !h->entering))
-        return 0;
-    vec3 m = h->normal;
-    real dm = vec_dot(z->dir, m);
-    if (dm > 0) {
-        m = vec_neg(m);
-        dm = -dm;
-    }
-    /* s - offset (side.m)/(dm) > tmin, times dm < 0 */
-    if ((h->t - z->back) * dm < z->tmin * dm + z->offset * vec_dot(z->side, m))
-        return 0;
-    z->carried = shade_shadow_transmission(z->carried, tc);
-    if (z->first.prim < 0 || lower_index(h, &z->first))
-        z->first = *h;
-    return 0;
-}
-
-/* Fills z for the ray r spawned from the opaque point h, offset as its
- * spawn was. */
-static void start_gather(const tracer *t, const hit *h, real offset, const ray *r, start_zone *z, trace_stats *st)
-{
-    vec3 n = h->normal;
-    z->scene = t->scene;
-    z->self = h;
-    z->point = h->point;
-    z->side = vec_dot(vec_sub(r->origin, z->point), n) >= 0 ? n : vec_neg(n);
-    z->dir = r->dir;
-    z->offset = offset;
-    z->tmin = r->tmin;
-    z->reach = 2 * z->offset;
-    z->back = 2 * z->reach;
-    z->carried = 1;
-    z->first.prim = -1;
-    if (!(r->tmax > r->tmin))
-        return;
-    ray line = {vec_sub(z->point, vec_scale(z->dir, z->back)), z->dir, 0, 2 * z->back};
-    bvh_visit_stats(&t->accel, t->scene->prims, &line, start_crossing, z, &st->bvh);
-}
-
-static real start_transmission(const tracer *t, const surface *s, const ray *shadow, trace_stats *st)
-{
+    if (s->touch)
+        return glass_contact_meets(s->touch, l) ? 0 : 1;
     start_zone z;
-    start_gather(t, s->shadow_from, s->from.offset, shadow, &z, st);
+    glass_start_gather(t, s->shadow_from, s->from.offset, shadow, &z, st);
     return z.carried;
 }
 
@@ -439,7 +279,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
         if (through > 0 && s->near_glass)
-            through = shade_shadow_transmission(through, start_transmission(t, s, &r, st));
+            through = shade_shadow_transmission(through, start_transmission(t, s, &r, l, st));
         path_note(st, bits_of(through));
         if (through == 0 && !t->no_shortcuts)
             return;
@@ -601,214 +441,6 @@ static TRACE_OUTLINE direct_sum direct_light(const tracer *t, const surface *s, 
     return sum;
 }
 
-static real top_ior(const medium_stack *media)
-{
-    return media->count > 0 ? media->ior[media->count - 1] : 1.0;
-}
-
-static void media_push(medium_stack *media, int solid, real ior, trace_stats *st)
-{
-    if (media->count == MEDIUM_MAX) {
-        st->medium_overflow++;
-        return;
-    }
-    media->solid[media->count] = solid;
-    media->ior[media->count++] = ior;
-}
-
-/* Leaving a solid takes it off the stack wherever it is (solids may overlap). */
-static void media_remove(medium_stack *media, int solid)
-{
-    for (int i = media->count - 1; i >= 0; i--) {
-        if (media->solid[i] != solid)
-            continue;
-        memmove(&media->solid[i], &media->solid[i + 1], (size_t)(media->count - 1 - i) * sizeof media->solid[0]);
-        memmove(&media->ior[i], &media->ior[i + 1], (size_t)(media->count - 1 - i) * sizeof media->ior[0]);
-        media->count--;
-        return;
-    }
-}
-
-static int media_find(const medium_stack *media, int solid)
-{
-    for (int i = media->count - 1; i >= 0; i--)
-        if (media->solid[i] == solid)
-            return i;
-    return -1;
-}
-
-/*
- * One interface: the surface hit and every other surface crossed within the
- * spawn offset of it.  Two glass boxes sharing a face are two coincident
- * surfaces; the transmitted ray is spawned past both at once, so leaving
- * one and entering the other must be one boundary n1 -> n2, not
- * n1 -> air -> n2 with the second crossing never seen (spec/numerics.md,
- * "Coincident surfaces").
- */
-enum { INTERFACE_MAX = 8 };
-typedef struct interface {
-    const scene_model *scene;
-    const hit *self;     /* the hit being shaded: h[0] */
-    real reach;          /* a crossing whose point is this close belongs to it */
-    int count;
-    hit h[INTERFACE_MAX];
-    /* The product of the t of every crossing besides the hit, in the walk's
-     * order, those past INTERFACE_MAX included: a ninth coincident surface
-     * that is opaque still stops the ray.  The solids among those not kept
-     * are counted: the medium stack cannot follow them. */
-    real through;
-    int solids_lost;
-    const scene_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
-    const hit *spawn_hit;
-} interface;
-
-static int gather_crossing(void *ctx, const hit *h)
-{
-    interface *f = ctx;
-    if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
-        return 0;
-    if (!(vec_max_abs(vec_sub(h->point, f->self->point)) <= f->reach))
-        return 0;
-    const scene_prim *p = &f->scene->prims[h->prim];
-    f->through = shade_shadow_transmission(f->through, f->scene->materials[p->material].t);
-    if (f->count < INTERFACE_MAX)
-        f->h[f->count++] = *h;
-    else
-        f->solids_lost += trace_solid_id(f->scene, h->prim) >= 0;
-    return 0;
-}
-
-/* Sets where the ray past f is spawned: from the crossing of largest
- * magnitude, prim's hit f->self first. */
-static void interface_spawn(const tracer *t, const scene_prim *prim, interface *f)
-{
-    f->spawn_prim = prim;
-    f->spawn_hit = f->self;
-    for (int k = 1; k < f->count; k++) {
-        const scene_prim *p = &t->scene->prims[f->h[k].prim];
-        if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
-            f->spawn_prim = p;
-            f->spawn_hit = &f->h[k];
-        }
-    }
-}
-
-/* Fills f with the hit h on prim and the crossings of the incoming ray
- * within reach: twice the spawn offset, the distance a spawned ray jumps. */
-static void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, const ray *in, interface *f,
-                             trace_stats *st)
-{
-    /* Comparisons, not fmax calls: of these (never NaN, never -0) they
-     * take the same value. */
-    real m = isect_part_magnitude(prim, h->part), at = vec_max_abs(h->point);
-    m = m > at ? m : at;
-    ray r = *in;
-    f->scene = t->scene;
-    f->self = h;
-    f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
-    f->through = 1;
-    f->solids_lost = 0;
-    f->count = 1;
-    f->h[0] = *h;
-    /* The crossings' t may differ from the hit's by the rounding of t itself,
-     * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
-    r.tmax = h->t + f->reach + 0x1p-40 * fabs(h->t);
-    bvh_visit_stats(&t->accel, t->scene->prims, &r, gather_crossing, f, &st->bvh);
-    interface_spawn(t, prim, f);
-}
-
-/* What crossing k of the interface does to the medium stack: 1 enters its
- * solid, -1 leaves it, 0 nothing (a sheet).  A sphere or box says which by
- * its outward normal.  A closed mesh is toggled by an odd number of its
- * crossings here (on its first one; the others do nothing): entered when it
- * was not on the stack before, left when it was.  Its winding is not
- * trusted (a file may wind it inward, or inconsistently). */
-static int crossing_effect(const scene_model *sc, const interface *f, const medium_stack *before, int k)
-{
-    int solid = trace_solid_id(sc, f->h[k].prim), odd = 0;
-    if (solid < 0)
-        return 0;
-    if (sc->prims[f->h[k].prim].kind != PRIM_MESH)
-        return f->h[k].entering ? 1 : -1;
-    for (int j = 0; j < f->count; j++) {
-        if (trace_solid_id(sc, f->h[j].prim) != solid)
-            continue;
-        if (j < k)
-            return 0;
-        odd ^= 1;
-    }
-    return !odd ? 0 : media_find(before, solid) >= 0 ? -1 : 1;
-}
-
-/* Crossing the interface: every solid left comes off the stack, then every
- * solid entered goes on (once).  Returns the number of solid crossings (the
- * product of the t of the crossings besides the hit is f->through). */
-static int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
-                           trace_stats *st)
-{
-    const scene_model *sc = t->scene;
-    int solids = 0;
-    for (int k = 0; k < f->count; k++) {
-        solids += trace_solid_id(sc, f->h[k].prim) >= 0;
-        if (crossing_effect(sc, f, before, k) < 0)
-            media_remove(next, trace_solid_id(sc, f->h[k].prim));
-    }
-    for (int k = 0; k < f->count; k++) {
-        int solid = trace_solid_id(sc, f->h[k].prim);
-        if (crossing_effect(sc, f, before, k) > 0 && media_find(next, solid) < 0)
-            media_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
-    }
-    return solids;
-}
-
-/*
- * [NUM-GLASS-3] Where crossing k lies against an opaque surface it
- * coincides with, in the limit of a gap between them: 0 before it (a
- * transparent solid left: its inside is on the side the ray comes from;
- * a transparent sheet, taken on that side), 1 the opaque one, 2 past it (a
- * transparent solid entered).
- */
-static int gap_order(const scene_model *sc, const interface *f, const medium_stack *before, int k)
-{
-    if (!(t_of(sc, &f->h[k]) > 0))
-        return 1;
-    return crossing_effect(sc, f, before, k) > 0 ? 2 : 0;
-}
-
-/*
- * [NUM-GLASS-3] An opaque surface in the interface is where the transmitted
- * ray ends, not a filter of t = 0: the ray leaves what lies before it and
- * meets it at distance 0.  Finds the opaque crossing (the lowest index if
- * several), copies it to *end and keeps in f the crossings before it (the
- * hit itself always), f->through the product of their t.  Returns 0, f
- * unchanged, when f holds no opaque crossing or lost some crossings past
- * INTERFACE_MAX (then [NUM-GLASS-1]'s product stands).
- */
-static int interface_end(const tracer *t, interface *f, const medium_stack *before, hit *end)
-{
-    const scene_model *sc = t->scene;
-    int stop = -1, order[INTERFACE_MAX], kept = 1;
-    if (f->count == INTERFACE_MAX)
-        return 0;
-    for (int k = 1; k < f->count; k++) {
-        order[k] = gap_order(sc, f, before, k);
-        if (order[k] == 1 && (stop < 0 || lower_index(&f->h[k], &f->h[stop])))
-            stop = k;
-    }
-    if (stop < 0)
-        return 0;
-    *end = f->h[stop];
-    f->through = 1;
-    for (int k = 1; k < f->count; k++)
-        if (order[k] == 0) {
-            f->through = shade_shadow_transmission(f->through, t_of(sc, &f->h[k]));
-            f->h[kept++] = f->h[k];
-        }
-    f->count = kept;
-    interface_spawn(t, &sc->prims[f->self->prim], f);
-    return 1;
-}
-
 /* With the shortcuts off a ray of weight 0 (Ks = 0, or t = 0 on the
  * interface) is traced too, and its colour, finite, is multiplied by 0.
  * A medium stack overflow inside it (or in a stack no ray goes on with)
@@ -854,10 +486,10 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
     vec3 dir = in->dir;
     *refracts = 1;
     if (solids > 0) {
-        int solid = trace_solid_id(t->scene, s->h->prim);
+        int solid = medium_solid_id(t->scene, s->h->prim);
         int left = solid >= 0 && s->prim->kind != PRIM_MESH && !s->h->entering;
-        real n1 = left && media_find(media, solid) < 0 ? s->m->ior : top_ior(media);
-        *refracts = shade_refract(in->dir, s->n, n1, top_ior(next), &dir);
+        real n1 = left && medium_find(media, solid) < 0 ? s->m->ior : medium_top_ior(media);
+        *refracts = shade_refract(in->dir, s->n, n1, medium_top_ior(next), &dir);
     }
     /* Totally reflected, the ray stays in the glass and never meets the
      * opaque surface. */
@@ -868,7 +500,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
 }
 
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
-                     trace_stats *st);
+                     const glass_contact *touch, trace_stats *st);
 
 /*
  * The transmitted ray: straight on through a sheet, bent by Snell's law
@@ -895,7 +527,8 @@ static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ra
     rgb c;
     if (refracts) {
         st->refraction_rays++;
-        c = end.prim >= 0 ? trace_end(t, &r, &end, depth + 1, &next, key, st) : trace_ray(t, &r, depth + 1, &next, key, st);
+        c = end.prim >= 0 ? trace_end(t, &r, &end, depth + 1, &next, key, NULL, st)
+                          : trace_ray(t, &r, depth + 1, &next, key, st);
         c = vec_scale(c, through);
     } else {
         /* Totally reflected, the ray stays in `media`: `next` is not used. */
@@ -916,12 +549,27 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
 {
     start_zone z;
     real offset = ray_shadow_start(s->prim, s->h).offset;
-    if (!near_glass(t, s->h->point, 2 * offset))
+    if (!glass_near(t, s->h->point, 2 * offset))
         return 0;
-    start_gather(t, s->h, offset, r, &z, st);
+    glass_start_gather(t, s->h, offset, r, &z, st);
     if (z.first.prim < 0)
         return 0;
-    *c = trace_end(t, r, &z.first, depth, media, key, st);
+    glass_contact touch = {s->h, z.side};
+    *c = trace_end(t, r, &z.first, depth, media, key, &touch, st);
+    return 1;
+}
+
+/* [NUM-GLASS-3] The mirror ray r from the glass point of s that a mirror
+ * ray from the opaque surface s->touch met at its start: in the limit of a
+ * gap the glass lies off that surface, so a ray back toward it meets it at
+ * distance 0 (its colour in *c, and 1).  Out of line as mirror_meets_glass. */
+static TRACE_OUTLINE int mirror_meets_opaque(const tracer *t, const surface *s, const ray *r, int depth,
+                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
+{
+    if (!glass_contact_meets(s->touch, r->dir))
+        return 0;
+    hit end = *s->touch->opaque;
+    *c = trace_end(t, r, &end, depth, media, key, NULL, st);
     return 1;
 }
 
@@ -932,14 +580,19 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
     st->reflection_rays++;
     long overflow_before = st->medium_overflow;
     rgb c;
-    if (!(t->glass && !(s->m->t > 0) && mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c)))
+    int met = 0;
+    if (s->touch)
+        met = mirror_meets_opaque(t, s, &r, depth + 1, media, key, st, &c);
+    else if (t->glass && !(s->m->t > 0))
+        met = mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c);
+    if (!met)
         c = trace_ray(t, &r, depth + 1, media, key, st);
     forget_overflow(st, overflow_before, weightless);
     return c;
 }
 
 static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const medium_stack *media, uint64_t key,
-                 trace_stats *st)
+                 const glass_contact *touch, trace_stats *st)
 {
     surface s;
     hit lifted;
@@ -967,7 +620,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     /* Once a point, not once a light sample. */
-    s.near_glass = t->shadows && t->glass && !(s.m->t > 0) && near_glass(t, s.from.point, 2 * s.from.offset);
+    s.touch = touch;
+    s.near_glass =
+        t->shadows && (touch || (t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset)));
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
@@ -995,7 +650,7 @@ typedef struct probe {
 static int probe_crossing(void *ctx, const hit *h)
 {
     probe *pr = ctx;
-    int solid = trace_solid_id(pr->scene, h->prim), k = 0;
+    int solid = medium_solid_id(pr->scene, h->prim), k = 0;
     if (solid < 0 || !(pr->scene->materials[pr->scene->prims[h->prim].material].t > 0))
         return 0;
     while (k < pr->count && pr->solid[k] != solid)
@@ -1054,7 +709,7 @@ void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats 
         if (best < 0)
             return;
         const scene_prim *p = &t->scene->prims[pr.prim[best]];
-        media_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
+        medium_push(out, pr.solid[best], t->scene->materials[p->material].ior, st);
         pr.crossings[best] = -1;
     }
 }
@@ -1079,53 +734,16 @@ static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int 
     return bvh_intersect_ties(&t->accel, t->scene->prims, nearest, h, &st->bvh, tied);
 }
 
-/*
- * [NUM-GLASS-3] The surface a ray meets first among those tied with its
- * nearest hit h (bvh.c's window, where the lowest index wins), taken in
- * the limit of a gap between opaque and transparent ones (gap_order): a
- * ray down through a glass block standing on the floor meets the block's
- * bottom face before the floor whichever of the two the file declares
- * first.  Where the tied surfaces are not both opaque and transparent, h
- * stays ([NUM-COPLANAR-1], [NUM-GLASS-1]).  Out of line: the interface is
- * not needed once the winner is known ([REL-STACK-1]).
- */
-static TRACE_OUTLINE void first_of_tie(const tracer *t, const ray *r, hit *h, const medium_stack *media,
-                                       trace_stats *st)
-{
-    const scene_model *sc = t->scene;
-    interface f;
-    hit self = *h;
-    interface_gather(t, &sc->prims[h->prim], &self, r, &f, st);
-    real near = h->t;
-    for (int k = 1; k < f.count; k++)
-        if (f.h[k].t > r->tmin && f.h[k].t < near)
-            near = f.h[k].t;
-    real end = bvh_tie_end(near, r->origin);
-    int best = 0, best_order = gap_order(sc, &f, media, 0), kinds = 1 << (best_order == 1);
-    for (int k = 1; k < f.count; k++) {
-        if (!(f.h[k].t > r->tmin && f.h[k].t <= end))
-            continue;
-        int order = gap_order(sc, &f, media, k);
-        kinds |= 1 << (order == 1);
-        if (order < best_order || (order == best_order && lower_index(&f.h[k], &f.h[best]))) {
-            best = k;
-            best_order = order;
-        }
-    }
-    if (kinds == 3)
-        *h = f.h[best];
-}
-
 /* The colour of ray r given its nearest hit h (met), or the background. */
 static rgb ray_colour(const tracer *t, const ray *r, int met, const hit *h, int depth, const medium_stack *media,
-                      uint64_t key, trace_stats *st)
+                      uint64_t key, const glass_contact *touch, trace_stats *st)
 {
     rgb c = t->scene->image.background;
     path_note(st, met ? (uint64_t)h->prim + 5 : 0);
     if (met && st->record_path)
         path_note(st, piece_of(&t->scene->prims[h->prim], h));
     if (met)
-        c = shade(t, r, h, depth, media, key, st);
+        c = shade(t, r, h, depth, media, key, touch, st);
     if (!vec_is_finite(c)) {
         st->nonfinite++;
         c = vec_splat(0);
@@ -1136,16 +754,16 @@ static rgb ray_colour(const tracer *t, const ray *r, int met, const hit *h, int 
 /* [NUM-GLASS-3] The ray r (spawned) meets the surface `end` at distance
  * 0: a transmitted ray the opaque surface of its interface, a mirror ray
  * from an opaque point the glass there.  That surface is its hit, seen
- * along r. */
+ * along r.  Here, not in glass_touch.c: it is a step of the recursion. */
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
-                     trace_stats *st)
+                     const glass_contact *touch, trace_stats *st)
 {
     ray at = *r;
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
     at.tmin = at.tmax = end->t = 0;
     end->entering = vec_dot(r->dir, end->normal) < 0;
-    return ray_colour(t, &at, 1, end, depth, media, key, st);
+    return ray_colour(t, &at, 1, end, depth, media, key, touch, st);
 }
 
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
@@ -1158,6 +776,6 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     int met = nearest_hit(t, &nearest, &h, &tied, st);
     /* A hit alone in its window was tied with nothing. */
     if (met && t->glass && tied > 1)
-        first_of_tie(t, r, &h, media, st);
-    return ray_colour(t, &nearest, met, &h, depth, media, key, st);
+        glass_first_of_tie(t, r, &h, media, st);
+    return ray_colour(t, &nearest, met, &h, depth, media, key, NULL, st);
 }

@@ -17,6 +17,15 @@
 #include "render/ray.h"
 #include "scene/scene.h"
 
+/* [REL-STACK-1] Not inlined into the recursion's frame (trace_ray, shade,
+ * mirrored): only an inlining hint, the code computed is the same.  gcc and
+ * clang (which defines __GNUC__) know the attribute; Frama-C need not. */
+#if defined(__GNUC__) && !defined(__FRAMAC__)
+#define TRACE_OUTLINE __attribute__((noinline))
+#else
+#define TRACE_OUTLINE
+#endif
+
 enum { TRACE_BLOCKERS = 8 };
 
 typedef struct trace_stats {
@@ -160,11 +169,5 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
  * Nesting order: the solid the probe leaves first is the innermost.  Empty
  * when the tracer has no refraction pass. */
 void trace_media_at(const tracer *t, vec3 point, medium_stack *out, trace_stats *st);
-
-/* Identity of the solid a primitive is (sphere, box, closed cylinder or
- * cone, torus, closed mesh: its index), or -1 for a sheet (plane, disk,
- * lone triangle, open cylinder or cone, a mesh that is not closed), which
- * has no inside. */
-int trace_solid_id(const scene_model *s, int prim);
 
 #endif

@@ -1,0 +1,146 @@
+/*
+ * interface.c - the crossings a transmitted ray makes at once where
+ * surfaces coincide (interface.h), what they do to the medium stack, and
+ * where an opaque one among them ends the ray ([NUM-GLASS-3]).
+ */
+#include <math.h>
+#include "render/interface.h"
+#include "render/intersect.h"
+#include "render/medium.h"
+#include "render/shade.h"
+
+int interface_hit_before(const hit *a, const hit *b)
+{
+    return a->prim != b->prim ? a->prim < b->prim : a->part < b->part;
+}
+
+real interface_hit_t(const scene_model *sc, const hit *h)
+{
+    return sc->materials[sc->prims[h->prim].material].t;
+}
+
+static int gather_crossing(void *ctx, const hit *h)
+{
+    interface *f = ctx;
+    if (h->prim == f->self->prim && h->part == f->self->part && h->entering == f->self->entering)
+        return 0;
+    if (!(vec_max_abs(vec_sub(h->point, f->self->point)) <= f->reach))
+        return 0;
+    const scene_prim *p = &f->scene->prims[h->prim];
+    f->through = shade_shadow_transmission(f->through, f->scene->materials[p->material].t);
+    if (f->count < INTERFACE_MAX)
+        f->h[f->count++] = *h;
+    else
+        f->solids_lost += medium_solid_id(f->scene, h->prim) >= 0;
+    return 0;
+}
+
+/* Sets where the ray past f is spawned: from the crossing of largest
+ * magnitude, prim's hit f->self first. */
+static void interface_spawn(const tracer *t, const scene_prim *prim, interface *f)
+{
+    f->spawn_prim = prim;
+    f->spawn_hit = f->self;
+    for (int k = 1; k < f->count; k++) {
+        const scene_prim *p = &t->scene->prims[f->h[k].prim];
+        if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
+            f->spawn_prim = p;
+            f->spawn_hit = &f->h[k];
+        }
+    }
+}
+
+void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, const ray *in, interface *f,
+                      trace_stats *st)
+{
+    /* Comparisons, not fmax calls: of these (never NaN, never -0) they
+     * take the same value. */
+    real m = isect_part_magnitude(prim, h->part), at = vec_max_abs(h->point);
+    m = m > at ? m : at;
+    ray r = *in;
+    f->scene = t->scene;
+    f->self = h;
+    f->reach = 2 * (SPAWN_REL * m + SPAWN_ABS);
+    f->through = 1;
+    f->solids_lost = 0;
+    f->count = 1;
+    f->h[0] = *h;
+    /* The crossings' t may differ from the hit's by the rounding of t itself,
+     * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
+    r.tmax = h->t + f->reach + 0x1p-40 * fabs(h->t);
+    bvh_visit_stats(&t->accel, t->scene->prims, &r, gather_crossing, f, &st->bvh);
+    interface_spawn(t, prim, f);
+}
+
+/* What crossing k of the interface does to the medium stack: 1 enters its
+ * solid, -1 leaves it, 0 nothing (a sheet).  A sphere or box says which by
+ * its outward normal.  A closed mesh is toggled by an odd number of its
+ * crossings here (on its first one; the others do nothing): entered when it
+ * was not on the stack before, left when it was.  Its winding is not
+ * trusted (a file may wind it inward, or inconsistently). */
+static int crossing_effect(const scene_model *sc, const interface *f, const medium_stack *before, int k)
+{
+    int solid = medium_solid_id(sc, f->h[k].prim), odd = 0;
+    if (solid < 0)
+        return 0;
+    if (sc->prims[f->h[k].prim].kind != PRIM_MESH)
+        return f->h[k].entering ? 1 : -1;
+    for (int j = 0; j < f->count; j++) {
+        if (medium_solid_id(sc, f->h[j].prim) != solid)
+            continue;
+        if (j < k)
+            return 0;
+        odd ^= 1;
+    }
+    return !odd ? 0 : medium_find(before, solid) >= 0 ? -1 : 1;
+}
+
+int interface_cross(const tracer *t, const interface *f, const medium_stack *before, medium_stack *next,
+                    trace_stats *st)
+{
+    const scene_model *sc = t->scene;
+    int solids = 0;
+    for (int k = 0; k < f->count; k++) {
+        solids += medium_solid_id(sc, f->h[k].prim) >= 0;
+        if (crossing_effect(sc, f, before, k) < 0)
+            medium_remove(next, medium_solid_id(sc, f->h[k].prim));
+    }
+    for (int k = 0; k < f->count; k++) {
+        int solid = medium_solid_id(sc, f->h[k].prim);
+        if (crossing_effect(sc, f, before, k) > 0 && medium_find(next, solid) < 0)
+            medium_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
+    }
+    return solids;
+}
+
+int interface_gap_order(const scene_model *sc, const interface *f, const medium_stack *before, int k)
+{
+    if (!(interface_hit_t(sc, &f->h[k]) > 0))
+        return 1;
+    return crossing_effect(sc, f, before, k) > 0 ? 2 : 0;
+}
+
+int interface_end(const tracer *t, interface *f, const medium_stack *before, hit *end)
+{
+    const scene_model *sc = t->scene;
+    int stop = -1, order[INTERFACE_MAX], kept = 1;
+    if (f->count == INTERFACE_MAX)
+        return 0;
+    for (int k = 1; k < f->count; k++) {
+        order[k] = interface_gap_order(sc, f, before, k);
+        if (order[k] == 1 && (stop < 0 || interface_hit_before(&f->h[k], &f->h[stop])))
+            stop = k;
+    }
+    if (stop < 0)
+        return 0;
+    *end = f->h[stop];
+    f->through = 1;
+    for (int k = 1; k < f->count; k++)
+        if (order[k] == 0) {
+            f->through = shade_shadow_transmission(f->through, interface_hit_t(sc, &f->h[k]));
+            f->h[kept++] = f->h[k];
+        }
+    f->count = kept;
+    interface_spawn(t, &sc->prims[f->self->prim], f);
+    return 1;
+}
