@@ -5,7 +5,7 @@
 # whether --no-shortcuts is byte-identical.
 B=${B:-build/refray}
 S=$1; shift
-T=${TMPDIR:-/tmp}/gap2.$$
+T=$(dirname "$S")/.gap2.$$
 sed "1s/^let g = 0\$/let g = 1e-9/" "$S" > $T.g1.scene
 sed "1s/^let g = 0\$/let g = 2e-9/" "$S" > $T.g2.scene
 nice $B render "$S" -q -o $T.t.pfm "$@" || echo "render exit $?"

@@ -30,7 +30,7 @@ for sh in sphere cylinder disk; do
     disk) s='disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
     esac
     line="$sh:"
-    for e in 1e-10 1e-14 1e-20 1e-50 1e-100 1e-160 1e-300; do
+    for e in ${ES:-1e-7 1e-10 1e-14 1e-20 1e-50 1e-100 1e-160 1e-300}; do
         { head; echo "$s scale [1, $e, 1] rotate [0, 30, 0] translate [0, 1, 0] material { Kd 0.8 } }"; } > $T/x.scene
         nice $B render $T/x.scene -q -o $T/x.pfm || exit 2
         nice $B render $T/x.scene -q --no-shortcuts -o $T/n.pfm || exit 2
