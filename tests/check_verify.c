@@ -282,6 +282,49 @@ START_TEST(test_verify_tolerance_follows_the_view_rounding)
 }
 END_TEST
 
+/* lambert_sphere (scenes/analytic) with look_at at %s on the line of sight
+ * and its distant light's power times %s. */
+#define SPHERE_LOOK_BODY                                                                              \
+    "image { width 96 height 72 samples 2 max_depth 1 background [0.05, 0.05, 0.1] }\n"              \
+    "camera { orthographic eye [0, 0, 10] look_at [0, 0, %s] up [0, 1, 0] width 3.2 }\n"            \
+    "ambient { color 0.1 }\n"                                                                         \
+    "distant_light { direction [1, -1, -2] power [%s, 0.9, 0.8] }\n"                                  \
+    "sphere { center [0, 0, 0] radius 1.2 material { Kd [0.8, 0.5, 0.3] } }\n"
+
+static scene_model *sphere_look(const char *look_z, const char *power)
+{
+    char text[1024];
+    snprintf(text, sizeof text, SPHERE_LOOK_BODY, look_z, power);
+    return load_scene(text, "lambert_sphere");
+}
+
+/* [ORACLE-VIEW-ROUNDING-2] look_at may sit anywhere on the line of sight
+ * without changing a ray; at -5e13 the floor K u D / S reads 0.444 and a
+ * picture with 0.6 of the light in its red passed (attack 13, finding 1:
+ * sh tests/attack13/view_rounding_look_at.sh).  The floor is held to 1e-3:
+ * the render still passes, and the render with the light's red at 0.99 of
+ * it fails (the red of a lit pixel is off by about 1 %, ten times the cap). */
+START_TEST(test_verify_view_floor_is_capped)
+{
+    scene_model *s = sphere_look("-5e13", "1"), *dim = sphere_look("-5e13", "0.99");
+    verify_result r;
+    double floor = 256 * 0x1p-53 * (10 + (5e13 + 10)) / 3.2;
+    ck_assert_msg(floor > 0.4, "the uncapped floor is %g", floor);
+    ck_assert_int_eq(verify_scene(s, "sphere", NULL, &r), 0);
+    ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
+    ck_assert_msg(r.tolerance == 1e-3, "%g", r.tolerance);
+    oracle_view v = verify_view(s, NULL);
+    verify_exact e;
+    memset(&r, 0, sizeof r);
+    ck_assert_int_eq(verify_exact_build(oracle_find("lambert_sphere"), &v, &e), 0);
+    ck_assert_int_eq(verify_render_compare(dim, NULL, &e, &r), STATUS_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
+    verify_exact_free(&e);
+    scene_free(dim);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_verify_exact_refuses_a_negative_or_infinite_radiance)
 {
     oracle_status (*const bad[])(const oracle_view *, double, double, rgb *) = {radiance_neg, radiance_tiny_neg,
@@ -1007,6 +1050,7 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_never_passes_on_an_unusable_tolerance);
     tcase_add_test(tc, test_verify_refuses_a_bound_that_passes_a_dim_image);
     tcase_add_test(tc, test_verify_tolerance_follows_the_view_rounding);
+    tcase_add_test(tc, test_verify_view_floor_is_capped);
     tcase_add_test(tc, test_verify_exact_refuses_a_negative_or_infinite_radiance);
     tcase_add_test(tc, test_verify_family_unknown_and_missing);
     tcase_add_test(tc, test_verify_sweep_parse);

@@ -24,7 +24,9 @@ double oracle_tolerance_exact(const oracle_view *v, int light_samples)
     double span = c->kind == CAMERA_ORTHOGRAPHIC ? c->width : 2 * dist * tan(c->fov * M_PI / 360);
     double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * (vec_length(c->eye) + dist) / span;
     (void)light_samples;
-    return span > 0 && floor > ORACLE_EXACT_TOLERANCE ? floor : ORACLE_EXACT_TOLERANCE;
+    if (!(span > 0 && floor > ORACLE_EXACT_TOLERANCE))
+        return ORACLE_EXACT_TOLERANCE;
+    return floor < ORACLE_VIEW_ROUNDING_MAX ? floor : ORACLE_VIEW_ROUNDING_MAX;
 }
 
 rgb oracle_falloff(rgb power, double d, double d0, scene_falloff falloff)

@@ -32,6 +32,10 @@
 /* The constant of the view's rounding floor (spec/verify.md,
  * [ORACLE-VIEW-ROUNDING-1]). */
 #define ORACLE_VIEW_ROUNDING_K 256
+/* The most the floor may loosen a verdict ([ORACLE-VIEW-ROUNDING-2]): the
+ * floor is read from the eye and look_at, and a scene may put look_at
+ * anywhere on the line of sight without changing a ray. */
+#define ORACLE_VIEW_ROUNDING_MAX 1e-3
 #define ORACLE_EDGE_MARGIN 1e-6
 #define ORACLE_COS_MARGIN 1e-6
 
