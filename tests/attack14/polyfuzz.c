@@ -2,7 +2,8 @@
  * each pixel judged by an even-odd point-in-polygon test of its centre.
  *
  *   polyfuzz REFRAY DIR SEED COUNT [EXTRA]    (EXTRA 0: extra corners on edges
- *   only; 1: repeated corners only; default both)
+ *   only; 1: repeated corners only; default both; POLYFUZZ_REVERSE set:
+ *   each face written clockwise)
  *
  * The scene is tests/attack14/poly.scene's (ambient 0.5 x Kd 1, background
  * 0, orthographic, 64 x 64 over [-1, 5]^2): a pixel is 0.5 exactly when its
@@ -88,26 +89,26 @@ int main(int argc, char **argv)
         /* extra corners: on an edge (its midpoint, snapped), or a corner repeated */
         int extra = (int)rnd(4);
         for (int e = 0; e < extra && n < MAXC - 2; e++) {
-            int at = (int)rnd((unsigned)n), kind = mode < 0 ? (int)rnd(2) : mode;
+            int at = (int)rnd((unsigned)n), kind = mode < 0 ? (int)rnd(2) : mode, nx = (at + 1) % n;
+            double cx = x[at], cy = y[at];
+            if (kind == 0) {
+                cx = (double)(long)((x[at] + x[nx]) * 2 + 0.5) / 4;
+                cy = (double)(long)((y[at] + y[nx]) * 2 + 0.5) / 4;
+                /* only a corner strictly inside an edge: snapping may land it on an end */
+                if ((cx == x[at] && cy == y[at]) || (cx == x[nx] && cy == y[nx]))
+                    continue;
+            }
             memmove(x + at + 2, x + at + 1, (size_t)(n - at - 1) * sizeof *x);
             memmove(y + at + 2, y + at + 1, (size_t)(n - at - 1) * sizeof *y);
+            x[at + 1] = cx, y[at + 1] = cy;
             n++;
-            int nx = (at + 2) % n;
-            if (kind == 0)
-                x[at + 1] = (double)(long)((x[at] + x[nx]) * 2 + 0.5) / 4,
-                y[at + 1] = (double)(long)((y[at] + y[nx]) * 2 + 0.5) / 4;
-            else
-                x[at + 1] = x[at], y[at + 1] = y[at];
-            /* a midpoint snapped off a diagonal would change the shape: skip it */
-            if (kind == 0 && x[at] != x[nx] && y[at] != y[nx])
-                x[at + 1] = x[at], y[at + 1] = y[at];
         }
         FILE *o = fopen(obj, "w");
         for (int i = 0; i < n; i++)
             fprintf(o, "v %.17g %.17g 0\n", x[i], y[i]);
         fprintf(o, "f");
         for (int i = 0; i < n; i++)
-            fprintf(o, " %d", i + 1);
+            fprintf(o, " %d", getenv("POLYFUZZ_REVERSE") ? n - i : i + 1);
         fprintf(o, "\n");
         fclose(o);
         snprintf(cmd, sizeof cmd, "'%s' render '%s' -q -W -o '%s' 2>/dev/null", argv[1], scn, pfm);
