@@ -11,7 +11,7 @@ D=$(mktemp -d)
 trap 'rm -rf "$D"' EXIT
 cp $A/*.obj "$D/"
 status=0
-for pair in L_repeat:L_ref comb_repeat:comb_ref keyhole:keyhole_ref keyhole2:keyhole_ref star:star_ref uu:uu_ref; do
+for pair in L_repeat:L_ref comb_repeat:comb_ref spike:square_ref keyhole:keyhole_ref keyhole2:keyhole_ref star:star_ref uu:uu_ref; do
     m=${pair%%:*} ref=${pair#*:}
     for x in $m $ref; do
         sed "s/MESH/$x.obj/" $A/poly.scene > "$D/$x.scene"
