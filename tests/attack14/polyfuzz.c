@@ -2,7 +2,8 @@
  * each pixel judged by an even-odd point-in-polygon test of its centre.
  *
  *   polyfuzz REFRAY DIR SEED COUNT [EXTRA]    (EXTRA 0: extra corners on edges
- *   only; 1: repeated corners only; default both; POLYFUZZ_REVERSE set:
+ *   only; 1: repeated corners only; 2: star-shaped polygons of 5 to 44 corners,
+ *   one in each of n equal sectors, at random radii, instead; default both; POLYFUZZ_REVERSE set:
  *   each face written clockwise)
  *
  * The scene is tests/attack14/poly.scene's (ambient 0.5 x Kd 1, background
@@ -16,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <math.h>
 
 enum { W = 64, MAXC = 256 };
 
@@ -86,8 +88,19 @@ int main(int argc, char **argv)
         /* the column edges at multiples of 4/c: keep them off pixel centres by snapping to quarters */
         for (int i = 0; i < n; i++)
             x[i] = (double)(long)(x[i] * 4 + 0.5) / 4;
+        if (mode == 2) {
+            /* a star-shaped polygon about (2, 2): corner i at an angle in the i-th of n
+             * equal sectors (so no gap reaches pi and the polygon is simple), radius random */
+            n = 5 + (int)rnd(40);
+            for (int i = 0; i < n; i++) {
+                double a = (i + 0.9 * rnd(1000000) / 1000000) * (6.283185307179586 / n);
+                double r = 0.2 + rnd(1000000) * (2.6 / 1000000);
+                x[i] = 2 + r * cos(a);
+                y[i] = 2 + r * sin(a);
+            }
+        }
         /* extra corners: on an edge (its midpoint, snapped), or a corner repeated */
-        int extra = (int)rnd(4);
+        int extra = mode == 2 ? 0 : (int)rnd(4);
         for (int e = 0; e < extra && n < MAXC - 2; e++) {
             int at = (int)rnd((unsigned)n), kind = mode < 0 ? (int)rnd(2) : mode, nx = (at + 1) % n;
             double cx = x[at], cy = y[at];

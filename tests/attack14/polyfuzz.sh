@@ -5,5 +5,5 @@
 set -u
 D=$(mktemp -d)
 trap 'rm -rf "$D"' EXIT
-cc -std=c99 -O1 tests/attack14/polyfuzz.c -o "$D/polyfuzz" || exit 2
+cc -std=c99 -O1 tests/attack14/polyfuzz.c -lm -o "$D/polyfuzz" || exit 2
 "$D/polyfuzz" "$PWD/${REFRAY:-build/refray}" "$D" "${1:-3}" "${2:-100}" "${3:-1}"
