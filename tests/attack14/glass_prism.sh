@@ -3,14 +3,9 @@
 # (L_prism.obj) and once with two corners of each L face written twice
 # (L_prism_repeat.obj), the same solid.  The two pictures must be equal.
 #   sh tests/attack14/glass_prism.sh     # exit 1 while they differ
-set -u
-R=${REFRAY:-build/refray}
-A=tests/attack14
-D=$(mktemp -d)
-trap 'rm -rf "$D"' EXIT
-cp $A/L_prism.obj $A/L_prism_repeat.obj "$D/"
+. tests/attack14/lib.sh
 for m in L_prism L_prism_repeat; do
-    sed "s/MESH/$m.obj/" $A/glass_prism.scene > "$D/$m.scene"
+    mesh_scene glass_prism.scene $m
     "$R" check "$D/$m.scene" 2>/dev/null | sed -n 2p | sed "s|$D/||"
     "$R" render "$D/$m.scene" -q -o "$D/$m.pfm" 2> "$D/$m.err" || { cat "$D/$m.err"; exit 2; }
 done

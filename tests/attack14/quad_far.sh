@@ -4,14 +4,9 @@
 # The two files describe the same surface, so the two pictures must agree
 # (or both be refused for the same reason).
 #   sh tests/attack14/quad_far.sh     # exit 1 while the quad alone is refused
-set -u
-R=${REFRAY:-build/refray}
-A=tests/attack14
-D=$(mktemp -d)
-trap 'rm -rf "$D"' EXIT
-cp $A/quad_far.obj $A/quad_far_tris.obj "$D/"
+. tests/attack14/lib.sh
 for m in quad_far quad_far_tris; do
-    sed "s/MESH/$m.obj/" $A/quad_far.scene > "$D/$m.scene"
+    mesh_scene quad_far.scene $m
     if "$R" render "$D/$m.scene" -q -o "$D/$m.pfm" 2> "$D/$m.err"; then
         echo "$m.obj: rendered"
     else
