@@ -6,7 +6,7 @@
 #   sh tests/attack14/poly.sh      # exit 1 when a polygon's picture differs
 . tests/attack14/lib.sh
 status=0
-for pair in L_repeat:L_ref comb_repeat:comb_ref spike:square_ref keyhole:keyhole_ref keyhole2:keyhole_ref star:star_ref uu:uu_ref; do
+for pair in L_repeat:L_ref comb_repeat:comb_ref spike:square_ref pinch:pinch_ref keyhole:keyhole_ref keyhole2:keyhole_ref star:star_ref uu:uu_ref; do
     m=${pair%%:*} ref=${pair#*:}
     for x in $m $ref; do
         mesh_scene poly.scene $x
