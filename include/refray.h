@@ -394,7 +394,8 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
  * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays, or a
  * ray was inside glass nested deeper than the tracer follows (16 solids;
  * medium_overflows > 0 then), at the pixel of rf_renderer_stats.  After a
- * failure the region is partly written.
+ * failure the region is partly written; the renderer stays usable, and a
+ * later call (after RF_ERR_CANCELLED too) renders as a fresh renderer does.
  */
 RF_API rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *rgb,
                                   size_t row_stride);

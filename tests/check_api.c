@@ -563,6 +563,54 @@ START_TEST(test_api_progress_and_cancel)
 }
 END_TEST
 
+/* A poll that says stop on its k-th call, and go on after. */
+typedef struct stop_once {
+    long calls, stop_at;
+} stop_once;
+
+static int stop_on_call(void *user)
+{
+    stop_once *s = user;
+    return ++s->calls == s->stop_at;
+}
+
+/* [EMBED-API-3] A region stopped anywhere (between rows or inside one, by
+ * the ray poll) leaves the renderer whole: the next region, with a cancel
+ * that says go on, is the fresh renderer's to the bit.  The image is 4x3 of
+ * 12 pixels of the lit plane; the ray poll asks at the first ray and then
+ * every 256 steps (a pixel is 256 camera rays), so stops on calls 1 to 3
+ * land at the first ray and inside the first row. */
+START_TEST(test_api_cancelled_renderer_renders_again)
+{
+    rf_scene *s = load(plane_text, NULL);
+    float again[36];
+    for (long k = 1; k <= 3; k++) {
+        stop_once st = {0, 0};
+        rf_render_options o;
+        rf_render_options_init(&o);
+        o.cancel = stop_on_call;
+        o.user = &st;
+        o.samples = 16;
+        rf_renderer *r = renderer(s, &o);
+        st.calls = 0;
+        st.stop_at = k;
+        float buf[36];
+        ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, buf, 12), RF_ERR_CANCELLED);
+        ck_assert_int_eq(st.calls, k);
+        memset(again, 0, sizeof again);
+        ck_assert_int_eq(rf_render_region(r, 0, 0, 4, 3, again, 12), RF_OK);
+        rf_renderer_free(r);
+        st.stop_at = 0;
+        rf_renderer *rs = renderer(s, &o);
+        float ref[36];
+        ck_assert_int_eq(rf_render_region(rs, 0, 0, 4, 3, ref, 12), RF_OK);
+        rf_renderer_free(rs);
+        ck_assert_int_eq(memcmp(again, ref, sizeof ref), 0);
+    }
+    rf_scene_free(s);
+}
+END_TEST
+
 typedef struct collected {
     int count;
     char text[8][160];
@@ -1012,6 +1060,7 @@ Suite *suite_api(void)
     tcase_add_test(tc, test_api_fingerprint);
     tcase_add_test(tc, test_api_no_shortcuts);
     tcase_add_test(tc, test_api_progress_and_cancel);
+    tcase_add_test(tc, test_api_cancelled_renderer_renders_again);
     tcase_add_test(tc, test_api_diagnostics_and_resolver);
     tcase_add_test(tc, test_api_diagnostic_print);
     tcase_add_test(tc, test_api_json_scenes);

@@ -186,6 +186,11 @@ int renderer_region(renderer *r, const render_target *target)
     int rows = target->y1 - target->y0, status = STATUS_OK;
     double start = render_clock();
     stats->trace.tree_overflow = 0;
+    /* A stop ends one region, not the renderer: a host that cancelled a
+     * region and asks again gets a fresh renderer's pixels, wherever the
+     * earlier stop landed ([EMBED-API-3]).  The poll is reset in place, as
+     * the tracer holds its address. */
+    r->cancel = cancel_poll_make(opts->cancel, opts->cancel_ctx);
     stats->trace.cancel = &r->cancel;
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
         for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
