@@ -301,6 +301,11 @@ START_TEST(test_tile_file_refusals)
     expect_refusal(exr, REFRAY_HAVE_EXR ? STATUS_NO_INPUT : STATUS_USAGE, REFRAY_HAVE_EXR ? "No such" : "EXR=0");
     cli_path(exr, sizeof exr, dir, "t.png");
     expect_refusal(exr, STATUS_USAGE, "display codes");
+    /* A tile's sidecar, as a glob lists it beside the tile (attack 14,
+     * finding 5: refused as PNG and PPM before). */
+    expect_refusal(side, STATUS_USAGE, "is the sidecar of the tile");
+    cli_path(exr, sizeof exr, dir, "t.txt");
+    expect_refusal(exr, STATUS_USAGE, "a tile is .exr or .pfm, not");
     /* A value no render writes, over the first double of a whole sidecar
      * (tests/attack9 finding 7: merged as 0, 0 and -1 before). */
     static const double damaged[] = {-1, HUGE_VAL, -HUGE_VAL, NAN, -DBL_MIN};

@@ -27,8 +27,19 @@ int tile_file_format_ok(const char *path, char *why, size_t why_size)
     }
     if (f == IMG_FORMAT_EXR || f == IMG_FORMAT_PFM)
         return 1;
-    snprintf(why, why_size, "a tile is .exr or .pfm, not '%s': PNG and PPM hold display codes, not the "
-             "linear values a merge needs", path);
+    /* A glob such as tiles/tile-* lists each tile's sidecar beside it: name
+     * it as what it is, not as a picture format it is not. */
+    size_t n = strlen(path), k = sizeof sidecar_suffix - 1;
+    if (n > k && strcmp(path + n - k, sidecar_suffix) == 0) {
+        snprintf(why, why_size, "'%s' is the sidecar of the tile '%.*s': give the tile, whose sidecar is "
+                 "read beside it", path, (int)(n - k), path);
+        return 0;
+    }
+    if (f == IMG_FORMAT_PNG || f == IMG_FORMAT_PPM)
+        snprintf(why, why_size, "a tile is .exr or .pfm, not '%s': PNG and PPM hold display codes, not the "
+                 "linear values a merge needs", path);
+    else
+        snprintf(why, why_size, "a tile is .exr or .pfm, not '%s'", path);
     return 0;
 }
 
