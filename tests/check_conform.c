@@ -209,6 +209,37 @@ START_TEST(test_conform_refray_render_passes)
 }
 END_TEST
 
+/* refray's own default EXR holds half floats, whose relative step (up to
+ * 2^-11) is coarser than the kit's 1e-4: the verdict fails and says why,
+ * as it does for an 8-bit PNG (attack 14, finding 6: no reason before);
+ * the same render as 32-bit floats passes. */
+START_TEST(test_conform_half_exr_says_why)
+{
+    if (!REFRAY_HAVE_EXR)
+        return;
+    char cmd[512], kit[128], cwd[256];
+    cli_run *r = malloc(sizeof *r);
+    const char *bin = cli_refray_bin();
+    ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+    snprintf(kit, sizeof kit, "%s/kit", kit_root);
+    ck_assert_int_eq(kit_status, 0);
+    for (int as_float = 0; as_float <= 1; as_float++) {
+        snprintf(cmd, sizeof cmd, "%s%s%s render -q %s{scene} -o {out}", bin[0] == '/' ? "" : cwd,
+                 bin[0] == '/' ? "" : "/", bin, as_float ? "--exr-float " : "");
+        const char *args[] = {"conform", "--kit", kit, "--format", "exr", "--cmd", cmd, NULL};
+        cli_refray(r, args);
+        if (as_float) {
+            ck_assert_msg(r->code == 0, "exit %d\n%s\n%s", r->code, r->out, r->err);
+            ck_assert_ptr_null(strstr(r->out, "half float"));
+        } else {
+            ck_assert_msg(r->code != 0, "half floats passed a 1e-4 kit:\n%s", r->out);
+            ck_assert_msg(strstr(r->out, "every value of the output is a half float") != NULL, "stdout: %s", r->out);
+        }
+    }
+    free(r);
+}
+END_TEST
+
 /* [KIT-ADJUST-1] A renderer that draws the exact image 2 x 2 larger and 4
  * times as bright passes with --downsample 2 --scale 0.25 (powers of two:
  * exact in float) and fails on its size without them. */
@@ -816,6 +847,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_command_not_found);
     tcase_add_test(tc, test_conform_exact_copy_passes);
     tcase_add_test(tc, test_conform_refray_render_passes);
+    tcase_add_test(tc, test_conform_half_exr_says_why);
     tcase_add_test(tc, test_conform_downsample_and_scale);
     tcase_add_test(tc, test_conform_missing_input);
     tcase_add_test(tc, test_conform_reports);

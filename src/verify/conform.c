@@ -194,8 +194,32 @@ static void left_beside(const char *out_path, char *buf, size_t size)
     free(dir);
 }
 
-/* Reads the picture and brings it to the exact image's size and units. */
-static int read_picture(const char *out_path, const manifest_scene *s, img_buf *img, conform_result *r)
+/* Whether every finite value of img is a binary16 value: 0, a subnormal
+ * half (a multiple of 2^-24 below 2^-14), or a normal one of at most 11
+ * significant bits up to 65504.  A failing picture that is so was most
+ * likely written as half floats, whose relative step (up to 2^-11) is
+ * coarser than a kit's tolerance: the verdict says so, as it does for an
+ * 8-bit PNG (attack 14, finding 6). */
+static int on_half_grid(const img_buf *img)
+{
+    size_t n = 3 * (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++) {
+        double v = fabs(img->rgb[i]);
+        if (!isfinite(v) || v == 0)
+            continue;
+        if (v > 65504)
+            return 0;
+        double units = v < 0x1p-14 ? ldexp(v, 24) : ldexp(v, 10 - ilogb(v));
+        if (units != floor(units))
+            return 0;
+    }
+    return 1;
+}
+
+/* Reads the picture and brings it to the exact image's size and units;
+ * *half: the file's values were all half floats (before averaging and
+ * scaling, which move them off the grid). */
+static int read_picture(const char *out_path, const manifest_scene *s, img_buf *img, int *half, conform_result *r)
 {
     char err[600];
     struct stat sb;
@@ -230,6 +254,7 @@ static int read_picture(const char *out_path, const manifest_scene *s, img_buf *
         set(r, CONFORM_UNREADABLE, "its output is not a readable image: %s", err);
         return -1;
     }
+    *half = on_half_grid(&raw);
     status = k == 1 ? STATUS_OK : img_downsample(&raw, k, img);
     if (k == 1)
         *img = raw;
@@ -250,7 +275,7 @@ static const char *values_are(long n)
 }
 
 /* The reason of a picture over its tolerance, with the worst pixel. */
-static void over_reason(const img_buf *img, const img_buf *exact, const char *out_path, conform_result *r)
+static void over_reason(const img_buf *img, const img_buf *exact, const char *out_path, int half, conform_result *r)
 {
     const image_metrics *m = &r->metrics;
     if (m->compared == 0) {
@@ -259,11 +284,16 @@ static void over_reason(const img_buf *img, const img_buf *exact, const char *ou
     }
     const double *a = img_pixel(img, m->worst_x, m->worst_y), *b = img_pixel(exact, m->worst_x, m->worst_y);
     int depth = png_bit_depth(out_path);
+    const char *coarse = depth && depth < 16 ? "; the output is a PNG of fewer than 16 bits, too coarse for the tolerance"
+                         : half && r->relative < 0x1p-11
+                             ? "; every value of the output is a half float (11 significant bits, a relative step up "
+                               "to 4.9e-4), too coarse for the tolerance: write 32-bit floats (refray: --exr-float)"
+                             : "";
     set(r, CONFORM_OVER,
         "%ld of %ld pixels over |out - exact| <= %.3g |exact| + %.3g; largest error at (%d, %d): "
         "out (%.6g, %.6g, %.6g), exact (%.6g, %.6g, %.6g)%s",
         m->over, m->compared, r->relative, r->absolute, m->worst_x, m->worst_y, a[0], a[1], a[2], b[0], b[1], b[2],
-        depth && depth < 16 ? "; the output is a PNG of fewer than 16 bits, too coarse for the tolerance" : "");
+        coarse);
 }
 
 /* [KIT-RULE-1] judges only the pixels the mask leaves: a NaN or an
@@ -271,7 +301,7 @@ static void over_reason(const img_buf *img, const img_buf *exact, const char *ou
  * noted and not judged (a renderer may well write NaN on the silhouettes
  * and terminators a kit masks). */
 static void judge(const img_buf *img, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
-                  const char *out_path, conform_result *r)
+                  const char *out_path, int half, conform_result *r)
 {
     long bad, masked;
     conform_count_nonfinite(img, mask, &bad, &masked);
@@ -286,7 +316,7 @@ static void judge(const img_buf *img, const img_buf *exact, const unsigned char 
     if (conform_rule(img, exact, mask, s, &r->metrics))
         set(r, CONFORM_PASS, "%s", "");
     else
-        over_reason(img, exact, out_path, r);
+        over_reason(img, exact, out_path, half, r);
 }
 
 void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out_path, const conform_adjust *a,
@@ -299,11 +329,12 @@ void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out
     r->absolute = s->absolute;
     r->downsample = conform_downsample_of(a, s);
     r->scale = conform_scale_of(a, s);
-    if (read_picture(out_path, s, &img, r) != 0)
+    int half;
+    if (read_picture(out_path, s, &img, &half, r) != 0)
         return;
     int status = conform_kit_read(kit_dir, s, &exact, &mask, why, sizeof why);
     if (status == STATUS_OK) {
-        judge(&img, &exact, mask, s, out_path, r);
+        judge(&img, &exact, mask, s, out_path, half, r);
         img_free(&exact);
         free(mask);
     } else {
