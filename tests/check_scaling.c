@@ -948,6 +948,75 @@ START_TEST(test_scaling_resume_after_kill)
 }
 END_TEST
 
+/* Counts the times needle is in text. */
+static int occurrences(const char *text, const char *needle)
+{
+    int n = 0;
+    for (const char *p = text; (p = strstr(p, needle)) != NULL; p += strlen(needle))
+        n++;
+    return n;
+}
+
+/* [SCALE-RESUME-5] Two renders of the same command at once with one
+ * --checkpoint DIR (tests/attack13 finding 5): B loads A's tiles, renders
+ * the rest, writes its output and removes DIR while A is still rendering;
+ * A then cannot save its next band.  Before, A gave up with exit 74 and
+ * its finished image ("nothing written"); now both write the bytes of an
+ * uninterrupted render, A after one warning.  The interleaving is made,
+ * not waited for: A is stopped (SIGSTOP) with a band still to save and no
+ * write of its in flight, B runs whole, then A goes on. */
+START_TEST(test_scaling_checkpoint_shared_by_two)
+{
+    char dir[64], ck[300], plain[300], a_out[300], b_out[300];
+    static cli_run r;
+    cli_scratch(dir, sizeof dir, "scale");
+    cli_path(ck, sizeof ck, dir, "ck");
+    const char *whole[] = {"-q", "-o", cli_path(plain, sizeof plain, dir, "plain.pfm"), NULL}, *args[64];
+    render_args(args, SLOW, whole);
+    cli_refray(&r, args);
+    ck_assert_int_eq(r.code, 0);
+    const char *a_extra[] = {"--jobs", "2", "-q", "--checkpoint", ck, "-o",
+                             cli_path(a_out, sizeof a_out, dir, "a.pfm"), NULL};
+    render_args(args, SLOW, a_extra);
+    pid_t pid = spawn(dir, args, 0);
+    int kept = 0, stopped = 0;
+    for (int i = 0; i < (int)(4000 * slowness()) && !stopped; i++) {
+        nap_ms(5);
+        if (!cli_exists(ck) || sidecars(ck, NULL, 0) < 1)
+            continue;
+        ck_assert_int_eq(kill(pid, SIGSTOP), 0);
+        nap_ms(20);
+        kept = sidecars(ck, NULL, 0);
+        /* A write cut by the stop would keep DIR from going. */
+        stopped = files_with(ck, ".refray-tmp-") == 0;
+        if (!stopped)
+            ck_assert_int_eq(kill(pid, SIGCONT), 0);
+    }
+    ck_assert_msg(stopped, "A never stopped between two saves");
+    /* 80 rows, 2 workers: 64 bands; A has at least one band to save. */
+    ck_assert_msg(kept >= 1 && kept < 64, "%d tiles kept", kept);
+
+    const char *b_extra[] = {"--jobs", "2", "--checkpoint", ck, "-o", cli_path(b_out, sizeof b_out, dir, "b.pfm"),
+                             NULL};
+    render_args(args, SLOW, b_extra);
+    cli_refray(&r, args);
+    ck_assert_msg(r.code == 0, "B: exit %d: %s", r.code, r.err);
+    ASSERT_ERR_HAS(&r, "resuming from");
+    ck_assert(!cli_exists(ck));
+    same_bytes(plain, b_out);
+
+    ck_assert_int_eq(kill(pid, SIGCONT), 0);
+    finish(dir, pid, &r);
+    ck_assert_msg(r.code == 0, "A: exit %d: %s", r.code, r.err);
+    ck_assert_msg(occurrences(r.err, "warning: cannot save a tile into the checkpoint") == 1, "%s", r.err);
+    ASSERT_ERR_HAS(&r, "rendering on without the checkpoint");
+    same_bytes(plain, a_out);
+    ck_assert(!cli_exists(ck));
+    ck_assert_int_eq(files_with(dir, ".refray-tmp-"), 0);
+    cli_remove(dir);
+}
+END_TEST
+
 static void write_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "wb");
@@ -1203,6 +1272,7 @@ Suite *suite_scaling(void)
     tcase_add_test(runs, test_scaling_one_progress_bar);
     tcase_add_test(runs, test_scaling_resume);
     tcase_add_test(runs, test_scaling_resume_after_kill);
+    tcase_add_test(runs, test_scaling_checkpoint_shared_by_two);
     tcase_add_test(runs, test_scaling_checkpoint_of_another_render);
     tcase_add_test(runs, test_scaling_checkpoint_leaves_others);
     tcase_add_test(runs, test_scaling_gnu_parallel);

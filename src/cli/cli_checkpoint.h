@@ -16,7 +16,8 @@
 int cli_checkpoint_open(cli_tiles *t, unsigned char *done);
 
 /* Saves band b of t->pixels into the checkpoint: STATUS_OK, or the
- * status with the reason in why. */
+ * status with the reason in why (the caller goes on rendering:
+ * [SCALE-RESUME-5]). */
 int cli_checkpoint_save(const cli_tiles *t, int b, char *why, size_t why_size);
 
 /* Removes what the checkpoint of t holds, once the output is written:

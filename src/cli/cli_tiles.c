@@ -145,10 +145,24 @@ static int message(void *ctx, int k, const void *data, size_t len)
     return STATUS_INTERNAL;
 }
 
+/* A band that cannot be saved gives up the checkpoint, not the render
+ * ([SCALE-RESUME-5]): its pixels are in memory and the output still
+ * comes; one warning, and no more saves, since what stopped this one (DIR
+ * removed by another render of the same command, a full disk, a changed
+ * permission) stops the next. */
 static int done(void *ctx, int k)
 {
     tiles_run *run = ctx;
-    return run->t->checkpoint ? cli_checkpoint_save(run->t, run->pending[k], run->why, sizeof run->why) : STATUS_OK;
+    cli_tiles *t = run->t;
+    char why[700];
+    if (!t->checkpoint || t->checkpoint_lost)
+        return STATUS_OK;
+    if (cli_checkpoint_save(t, run->pending[k], why, sizeof why) != STATUS_OK) {
+        t->checkpoint_lost = 1;
+        cli_note(cli_progress_break(&run->bar), "warning: %s; rendering on without the checkpoint (the output is "
+                 "still written; the tiles from here on are not kept)", why);
+    }
+    return STATUS_OK;
 }
 
 /* The bands to render, from done[]; their rows already done into *rows. */

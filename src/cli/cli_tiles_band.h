@@ -25,6 +25,7 @@ typedef struct cli_tiles {
     rf_render_stats stats;   /* out: summed over the workers; seconds: wall time */
     int overflow_x, overflow_y; /* out after STATUS_DATA: the pixel */
     int overflow_medium;        /* 1: glass nested too deep there, not a ray tree */
+    int checkpoint_lost;        /* out: a band could not be saved, so no more were ([SCALE-RESUME-5]) */
     img_read_opts read;         /* checkpoint tiles: the render's --max-pixels */
 } cli_tiles;
 

@@ -81,6 +81,12 @@ static void where(const scene_model *s, src_span sp, char *buf, size_t size)
     snprintf(buf, size, "%.200s:%d", f->path, line);
 }
 
+/* "file:line" of primitive p, a mesh's where its statement is. */
+static void prim_where(const scene_model *s, const scene_prim *p, char *buf, size_t size)
+{
+    where(s, p->mesh >= 0 ? s->meshes[p->mesh].where : p->where, buf, size);
+}
+
 /* ---- Falloff as POV-Ray fading ---- */
 
 /* A light's falloff as colour * 2 / (1 + (d / distance)^power). */
@@ -321,20 +327,44 @@ static void check_shadow_tolerance(const scene_model *s, pov_notes *n)
         char at[256], at_other[256];
         if (!(s->materials[p->material].t > 0))
             continue;
-        where(s, mesh ? s->meshes[p->mesh].where : p->where, at, sizeof at);
+        prim_where(s, p, at, sizeof at);
         int edges = mesh || (scene_prim_is_solid(p) && p->kind != PRIM_SPHERE && p->kind != PRIM_TORUS);
         const char *kind = mesh ? "mesh" : scene_prim_name(p->kind);
         if (edges)
             add_note(n, "transparent %s at %s has edges: POV-Ray ignores a shadow-ray crossing within 1e-3 of the "
                      "shaded point (SHADOW_TOLERANCE), so inside it, next to an edge, the adjacent face does not "
                      "shadow in POV-Ray and lets t through in refray", kind, at);
-        else if (scene_prim_is_solid(p) && (other = pov_far_near_solid(s, i, POV_SHADOW_TOLERANCE)) >= 0) {
+        else if (scene_prim_is_solid(p) && (other = pov_far_near_solid(s, i, POV_SHADOW_TOLERANCE, 0)) >= 0) {
             const scene_prim *q = &s->prims[other];
-            where(s, q->mesh >= 0 ? s->meshes[q->mesh].where : q->where, at_other, sizeof at_other);
+            prim_where(s, q, at_other, sizeof at_other);
             add_note(n, "transparent %s at %s cuts or comes within 1e-3 of the surface at %s: POV-Ray ignores a "
                      "shadow-ray crossing within 1e-3 of the one before it (SHADOW_TOLERANCE), so a shadow ray "
                      "that leaves it next to that surface passes that surface in POV-Ray", kind, at, at_other);
         }
+    }
+}
+
+/* [XCHK-MAP-CONTACT-1] A transparent surface touching an opaque one:
+ * refray takes the contact as the limit of a gap between them
+ * ([NUM-GLASS-3]), POV-Ray by its own tolerances (a shape drops a hit
+ * nearer than 1e-6 along a ray, a shadow ray a crossing within 1e-3), so
+ * the rays that reach the contact differ (tests/attack12 finding 7).
+ * Conservative: any transparent primitive within 1e-3 of an opaque one,
+ * by the sphere's own surface or by bounding boxes, lights or none. */
+static void check_glass_contact(const scene_model *s, pov_notes *n)
+{
+    for (int i = 0; i < s->prim_count; i++) {
+        const scene_prim *p = &s->prims[i];
+        char at[256], at_other[256];
+        int other;
+        if (!(s->materials[p->material].t > 0) || (other = pov_far_near_solid(s, i, POV_SHADOW_TOLERANCE, 1)) < 0)
+            continue;
+        prim_where(s, p, at, sizeof at);
+        prim_where(s, &s->prims[other], at_other, sizeof at_other);
+        add_note(n, "transparent %s at %s touches or comes within 1e-3 of the opaque surface at %s: refray takes "
+                 "the contact as the limit of a gap ([NUM-GLASS-3]), POV-Ray by its tolerances (hits within 1e-6 "
+                 "along a ray, shadow crossings within 1e-3 dropped), so rays that reach the contact differ",
+                 p->kind == PRIM_MESH ? "mesh" : scene_prim_name(p->kind), at, at_other);
     }
 }
 
@@ -381,6 +411,7 @@ int pov_export_check(const scene_model *s, const pov_opts *o, pov_notes *notes)
     for (int i = 0; i < s->mesh_count; i++)
         check_mesh(s, &s->meshes[i], o, notes);
     check_shadow_tolerance(s, notes);
+    check_glass_contact(s, notes);
     check_far(s, notes);
     if (s->image.max_depth > POV_MAX_TRACE_LEVEL)
         add_note(notes, "max_depth %d is over POV-Ray's limit: max_trace_level %d (they differ only for paths "

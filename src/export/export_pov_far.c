@@ -250,18 +250,32 @@ static int ball_near(const scene_prim *a, const scene_prim *b, double gap)
     return isect_prim_bounds(b, &lo, &hi) && ball_near_box(c, r, lo, hi, gap);
 }
 
-int pov_far_near_solid(const scene_model *s, int solid, double gap)
+/* Whether plane a comes within gap of primitive b: another plane unless
+ * they are parallel and farther apart, a bounded one by its box. */
+static int plane_near(const scene_prim *a, const scene_prim *b, double gap)
+{
+    vec3 lo, hi, n = a->u.plane.normal;
+    if (b->kind != PRIM_PLANE)
+        return isect_prim_bounds(b, &lo, &hi) && plane_near_box(a, lo, hi, gap);
+    vec3 cross = vec_cross(n, b->u.plane.normal);
+    return vec_dot(cross, cross) > 0 || fabs(vec_dot(n, vec_sub(b->u.plane.point, a->u.plane.point))) <= gap;
+}
+
+int pov_far_near_solid(const scene_model *s, int solid, double gap, int opaque_only)
 {
     const scene_prim *a = &s->prims[solid];
     vec3 alo, ahi, blo, bhi;
-    if (!isect_prim_bounds(a, &alo, &ahi))
+    int bounded = isect_prim_bounds(a, &alo, &ahi);
+    if (!bounded && a->kind != PRIM_PLANE)
         return -1;
     for (int i = 0; i < s->prim_count; i++) {
         const scene_prim *b = &s->prims[i];
         int near;
-        if (i == solid)
+        if (i == solid || (opaque_only && s->materials[b->material].t > 0))
             continue;
-        if (a->kind == PRIM_SPHERE && !a->frame)
+        if (!bounded)
+            near = plane_near(a, b, gap);
+        else if (a->kind == PRIM_SPHERE && !a->frame)
             near = ball_near(a, b, gap);
         else if (b->kind == PRIM_PLANE)
             near = plane_near_box(b, alo, ahi, gap);

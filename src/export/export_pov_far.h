@@ -60,10 +60,12 @@ double pov_far_shadow_reach(const scene_model *s, const pov_bounds *b, const sce
  * transparent crossing before it is not counted. */
 #define POV_SHADOW_TOLERANCE 1e-3
 
-/* The first primitive other than solid (an index into s->prims) whose
- * surface may come within gap of solid's (they cut or touch), or -1.  For
- * an untransformed sphere exact against planes and untransformed spheres;
- * otherwise bounding boxes stand in, so it errs toward finding one. */
-int pov_far_near_solid(const scene_model *s, int solid, double gap);
+/* The first primitive other than solid (an index into s->prims; an opaque
+ * one when opaque_only) whose surface may come within gap of solid's
+ * (they cut or touch), or -1.  For an untransformed sphere exact against
+ * planes and untransformed spheres; otherwise bounding boxes stand in (a
+ * plane for solid: every plane not parallel to it), so it errs toward
+ * finding one. */
+int pov_far_near_solid(const scene_model *s, int solid, double gap, int opaque_only);
 
 #endif
