@@ -707,11 +707,17 @@ static void edit_scale(const char *kit, int e)
  * near the light).  With png16_scale 2^-15 the absolute bound is 0.50:
  * above half the peak less its relative part, so a picture of half the
  * light, and a black one, would pass; conform, compare --manifest and
- * kit_check refuse the tolerance (65, 65, 2) and run nothing.  At
- * 2^-14 (0.25) it is below, and the three fail a black picture.  Before,
+ * kit_check refuse the tolerance (65, 65, 2) and run nothing.  Before,
  * any absolute bound loaded, and conform passed an all-black picture
  * under absolute 10 (attack 12, finding 6: sh
- * tests/attack12/conform_abs_unbounded.sh). */
+ * tests/attack12/conform_abs_unbounded.sh).
+ * [VERIFY-UNBOUNDED-4] At 2^-14 the absolute bound, 0.25, is below half the
+ * peak but passes black wherever the exact image is below 0.25: more
+ * than 2^-14 of the peak (0.87 / 16384 = 5.3e-5), the three refuse it too
+ * (before, they failed the black picture and passed a picture black
+ * below 0.4 under absolute 0.4, attack 13, finding 2).  At the kit's own
+ * scale, 2^-1 (0.87 in (0.4, 0.8] x 2: absolute 2 / 65535 = 3.1e-5), the
+ * three fail the black picture and pass the exact one. */
 START_TEST(test_conform_absolute_bound_decides)
 {
     char work[64], kit[128], path[300], black[300];
@@ -735,10 +741,20 @@ START_TEST(test_conform_absolute_bound_decides)
                   code[1], code[2]);
     edit_scale(kit, 14);
     three_judges(kit, black, r, code);
-    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-14: conform %d, compare %d, kit_check %d",
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-14: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': its absolute tolerance 0.25 passes black wherever") &&
+                  strstr(r->err, "[VERIFY-UNBOUNDED-4]"), "%s", r->err);
+    ck_assert_msg(r->out[0] == '\0', "conform ran a scene: %s", r->out);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-14, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    edit_scale(kit, 1);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-1: conform %d, compare %d, kit_check %d",
                   code[0], code[1], code[2]);
     three_judges(kit, path, r, code);
-    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-14, the exact image: %d %d %d", code[0],
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-1, the exact image: %d %d %d", code[0],
                   code[1], code[2]);
     img_free(&e);
     cli_remove(work);

@@ -16,7 +16,9 @@
  * tolerance is not a finite number >= 0, or the two carry no verdict:
  * RELATIVE * PEAK + ABSOLUTE is not below PEAK / 2, PEAK the largest
  * |exact| of the compared pixels, so that a picture of half the light
- * (or black) would pass (spec/verify.md [VERIFY-UNBOUNDED-3]).
+ * (or black) would pass (spec/verify.md [VERIFY-UNBOUNDED-3]), or ABSOLUTE
+ * is more than PEAK / 16384, so that black would pass wherever the exact
+ * image is dimmer than it ([VERIFY-UNBOUNDED-4]).
  */
 #include <math.h>
 #include <stdio.h>
@@ -200,9 +202,20 @@ int main(int argc, char **argv)
     for (size_t p = 0; p < (size_t)exact.width * (size_t)exact.height; p++)
         for (int c = 0; c < 3 && !mask[p]; c++)
             peak = fmax(peak, fabs(exact.rgb[3 * p + (size_t)c]));
+    int status = 0;
     if (!(rel * peak + abs_tol < peak / 2)) {
         fprintf(stderr, "kit_check: RELATIVE %g and ABSOLUTE %g pass a picture of half the light of the exact "
                 "image (its peak is %g): no verdict\n", rel, abs_tol, peak);
+        status = 2;
+    } else if (!(abs_tol <= peak / 16384)) {
+        /* An ABSOLUTE checked at the peak alone passes black wherever the
+         * exact image is dimmer than it (spec/verify.md
+         * [VERIFY-UNBOUNDED-4]); the kit's own is below 2^-14 of the peak. */
+        fprintf(stderr, "kit_check: ABSOLUTE %g passes black wherever the exact image is dimmer than that: it "
+                "must be at most 2^-14 of its peak %g\n", abs_tol, peak);
+        status = 2;
+    }
+    if (status) {
         free(mask);
         free(exact.rgb);
         free(mine.rgb);
