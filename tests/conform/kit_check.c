@@ -10,9 +10,10 @@
  * EXACT.pfm and MASK.pgm are the scene's files in the kit; RELATIVE and
  * ABSOLUTE are its manifest's "tolerance" numbers.  A channel fails when
  * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
- * number; masked pixels (mask byte non-zero) are skipped.  Prints
+ * number; masked pixels (mask byte 255) are skipped.  Prints
  * "N of M pixels over"; exit 0 when none is over and at least one pixel
- * was compared, 1 when some are, 2 when a file cannot be read, a
+ * was compared, 1 when some are, 2 when a file cannot be read (a mask
+ * byte other than 0 and 255 included), a
  * tolerance is not a finite number >= 0, or the two carry no verdict:
  * RELATIVE * PEAK + ABSOLUTE is not below PEAK / 2, PEAK the largest
  * |exact| of the compared pixels, so that a picture of half the light
@@ -130,23 +131,35 @@ static int read_pfm(const char *path, picture *p)
     return p->rgb != NULL;
 }
 
-/* Binary PGM (P5, maxval < 256): the mask's bytes, rows from the top. */
-static unsigned char *read_pgm(const char *path, long width, long height)
+/* The kit's mask: a binary PGM of the image's size whose bytes are 0 (the
+ * pixel is judged) or maxval (255: skipped), nothing between, so that no
+ * reader can take a grey byte another way (spec/verify.md
+ * [VERIFY-MASK-1]).  NULL with *why set when it is not. */
+static unsigned char *read_pgm(const char *path, long width, long height, const char **why)
 {
     char magic[32], w[32], h[32], maxval[32];
     FILE *f = fopen(path, "rb");
+    *why = "cannot be opened";
     if (!f)
         return NULL;
     unsigned char *mask = NULL;
+    long top = 0;
+    *why = "is not a binary PGM of the image's size";
     if (token(f, magic, sizeof magic) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
         token(f, maxval, sizeof maxval) && strcmp(magic, "P5") == 0 && strtol(w, NULL, 10) == width &&
-        strtol(h, NULL, 10) == height && strtol(maxval, NULL, 10) < 256) {
+        strtol(h, NULL, 10) == height && (top = strtol(maxval, NULL, 10)) >= 1 && top < 256) {
         size_t n = (size_t)width * (size_t)height;
         mask = malloc(n);
         if (mask && fread(mask, 1, n, f) != n) {
             free(mask);
             mask = NULL;
         }
+        for (size_t p = 0; mask && p < n; p++)
+            if (mask[p] != 0 && mask[p] != top) {
+                *why = "holds a byte other than 0 and its maxval (255): a mask is black or white only";
+                free(mask);
+                mask = NULL;
+            }
     }
     fclose(f);
     return mask;
@@ -189,9 +202,10 @@ int main(int argc, char **argv)
         free(mine.rgb);
         return 1;
     }
-    unsigned char *mask = read_pgm(argv[2], exact.width, exact.height);
+    const char *why;
+    unsigned char *mask = read_pgm(argv[2], exact.width, exact.height, &why);
     if (!mask) {
-        fprintf(stderr, "kit_check: %s is not a %ldx%ld binary PGM\n", argv[2], exact.width, exact.height);
+        fprintf(stderr, "kit_check: %s %s (%ldx%ld)\n", argv[2], why, exact.width, exact.height);
         free(exact.rgb);
         free(mine.rgb);
         return 2;
