@@ -54,11 +54,12 @@ static int little_endian_host(void)
     return first == 1;
 }
 
-/* PFM's pixel data are the file's last bytes: what lies between the
- * header's last token and them must be white space (a header whose lines
- * end in CR LF, from a writer in text mode), else the file's size does
- * not fit its header and it is refused, never read some bytes off.  A
- * stream that cannot seek is read as it comes. */
+/* PFM's pixel data are the file's last bytes: between the header's last
+ * token with its separator and them there may be only the LF of a CR LF
+ * (the separator read was the CR: a header from a writer in text mode),
+ * else the file's size does not fit its header and it is refused, never
+ * read some bytes off (a white-space byte first in the pixels must not
+ * pass for a separator).  A stream that cannot seek is read as it comes. */
 static int seek_raster(FILE *f, size_t raster)
 {
     long here = ftell(f), end;
@@ -66,14 +67,12 @@ static int seek_raster(FILE *f, size_t raster)
         clearerr(f);
         return here < 0 || fseek(f, here, SEEK_SET) == 0;
     }
-    if (end < here || (size_t)(end - here) < raster || fseek(f, here, SEEK_SET) != 0)
+    if (end < here || (size_t)(end - here) < raster)
         return 0;
-    for (size_t extra = (size_t)(end - here) - raster; extra > 0; extra--) {
-        int c = fgetc(f);
-        if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
-            return 0;
-    }
-    return 1;
+    size_t extra = (size_t)(end - here) - raster;
+    if (extra == 0)
+        return fseek(f, here, SEEK_SET) == 0;
+    return extra == 1 && here > 0 && fseek(f, here - 1, SEEK_SET) == 0 && fgetc(f) == '\r' && fgetc(f) == '\n';
 }
 
 /* PF (colour) or Pf (grey) of either byte order; PFM stores rows from the
