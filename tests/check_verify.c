@@ -326,7 +326,10 @@ static scene_model *sphere_far(const char *look_z, const char *z)
  * attack 13, finding 1).  The plane seen in perspective: D = |eye| + 0 +
  * the eye's height = sqrt(52) + 4, S at that height 8 tan 25 deg = 3.73,
  * D / S = 3.0 and 256 u D / S = 8.5e-14 < 1e-9: 1e-9 with look_at at the
- * origin and 2^-43 of the way there (before: 0.268). */
+ * origin, 2^-43 of the way there (before: 0.268) and about 5e12 times as
+ * far (the same direction to 2e-13)
+ * (before: refused, "point light 1 lies in the plane": the margins'
+ * length scale read look_at's 3e13), no pixel excluded in any. */
 START_TEST(test_verify_view_floor_ignores_look_at)
 {
     static const char *const look[] = {"-1", "-1e8", "-5e13"};
@@ -340,8 +343,9 @@ START_TEST(test_verify_view_floor_ignores_look_at)
                       floor);
         scene_free(s);
     }
-    static const char *const plane_look[] = {"[0, 0, 0]", "[0, 3.9999999999995453, 5.9999999999993179]"};
-    for (int i = 0; i < 2; i++) {
+    static const char *const plane_look[] = {"[0, 0, 0]", "[0, 3.9999999999995453, 5.9999999999993179]",
+                                             "[0, -2e13, -3e13]"};
+    for (int i = 0; i < 3; i++) {
         char text[1024];
         snprintf(text, sizeof text, PLANE_LOOK_BODY, plane_look[i]);
         scene_model *s = load_scene(text, "phong_plane");
@@ -349,6 +353,7 @@ START_TEST(test_verify_view_floor_ignores_look_at)
         ck_assert_int_eq(verify_scene(s, "plane", NULL, &r), 0);
         ck_assert_msg(r.verdict == VERIFY_PASS, "look_at %s: %s", plane_look[i], r.reason);
         ck_assert_msg(r.tolerance == 1e-9, "look_at %s: %g", plane_look[i], r.tolerance);
+        ck_assert_msg(r.metrics.excluded == 0, "look_at %s: %ld excluded", plane_look[i], r.metrics.excluded);
         scene_free(s);
     }
 }

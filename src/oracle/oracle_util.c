@@ -339,7 +339,7 @@ double oracle_tolerance_exact(const oracle_view *v, int light_samples)
 
 double oracle_scene_scale(const scene_model *s)
 {
-    double scale = grow(grow(1, s->camera.eye, 0), s->camera.look_at, 0);
+    double scale = grow(1, s->camera.eye, 0);
     for (int i = 0; i < s->prim_count; i++) {
         const scene_prim *p = &s->prims[i];
         if (p->kind == PRIM_SPHERE)

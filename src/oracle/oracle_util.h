@@ -163,8 +163,10 @@ vec3 oracle_mirror_point(vec3 p0, vec3 n, vec3 eye, vec3 light);
  * points): the point whose direction to the light is the mirror of V. */
 vec3 oracle_mirror_point_ortho(vec3 p0, vec3 n, vec3 f, vec3 light);
 
-/* The largest coordinate magnitude of the scene's camera, primitives and
- * point lights (at least 1): the length scale of absolute margins. */
+/* The largest coordinate magnitude of the scene's eye, primitives and
+ * point lights (at least 1): the length scale of absolute margins.  Not
+ * look_at, which names a direction only (a far one made every margin
+ * huge: [ORACLE-VIEW-ROUNDING-2]). */
 double oracle_scene_scale(const scene_model *s);
 
 /* The material of primitive i. */
