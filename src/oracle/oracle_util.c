@@ -317,20 +317,28 @@ static void view_reach(const scene_model *s, double *coord, double *far, double 
 
 /* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
  * origin and its hit differently, by a few units u = 2^-53 of the sizes
- * the hit is made of, D = |eye| + the hits' largest coordinate + their
- * farthest distance; a hit moved sideways by delta changes a pixel by at
- * most G delta relative, G the largest relative slope of the picture,
- * which for a picture of world width S where the geometry is (the
- * orthographic width; a perspective view's width at the nearest hit, where
- * S is smallest) is a small multiple of 1/S.  Hence the floor K u D / S;
- * K is spec/verify.md's constant, 8 times the largest ratio measured. */
+ * the hit is made of, D = |eye| + the hit's coordinates + its distance;
+ * a hit moved sideways by delta changes a pixel by at most G delta
+ * relative, G the largest relative slope of the picture, which for a
+ * picture of world width S at the hit is a small multiple of 1/S.  Hence
+ * the floor K u D / S; K is spec/verify.md's constant, 8 times the largest
+ * ratio measured.  Orthographic: S is the width at every distance, so the
+ * farthest hit and the largest coordinate bound D / S; perspective: D / S
+ * falls with the hit's distance, so the nearest hit bounds it. */
 double oracle_tolerance_exact(const oracle_view *v, int light_samples)
 {
     const scene_camera *c = &v->scene->camera;
     double coord, far, near;
     view_reach(v->scene, &coord, &far, &near);
-    double span = c->kind == CAMERA_ORTHOGRAPHIC ? c->width : 2 * near * tan(c->fov * M_PI / 360);
-    double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * (vec_length(c->eye) + coord + far) / span;
+    double eye = vec_length(c->eye), span, d;
+    if (c->kind == CAMERA_ORTHOGRAPHIC) {
+        span = c->width;
+        d = eye + coord + far;
+    } else { /* at the nearest hit, whose coordinates are within eye + near */
+        span = 2 * near * tan(c->fov * M_PI / 360);
+        d = eye + fmin(coord, eye + near) + near;
+    }
+    double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * d / span;
     (void)light_samples;
     if (!(span > 0 && span < HUGE_VAL && floor > ORACLE_EXACT_TOLERANCE))
         return ORACLE_EXACT_TOLERANCE;
