@@ -231,6 +231,59 @@ START_TEST(test_verify_mask_read_round_trip)
 }
 END_TEST
 
+/* [VERIFY-MASK-1] A mask is black or white only: a PGM byte other than 0
+ * and its maxval (1, 128, 254 of 255; 1 of maxval 2), and an image pixel
+ * that is grey (0.5), off white (0.99) or coloured (1, 0, 0), is refused
+ * with the reason, not read as a mark or not (before: a PGM byte over half
+ * the maxval marked, an image value over 0.5; attack 13, finding 4).  0 and
+ * maxval 2 read as they are. */
+START_TEST(test_verify_mask_read_refuses_grey)
+{
+    tmpdir t;
+    char path[128], err[256];
+    unsigned char *back;
+    static const char *const pgm[] = {"P5\n4 3\n255\n", "P5\n4 3\n2\n"};
+    static const int bytes[][2] = {{0, 1}, {0, 128}, {0, 254}, {1, 1}, {1, 2}};
+    tmp_make(&t);
+    tmp_file(&t, "m.pgm", path, sizeof path);
+    for (size_t k = 0; k < sizeof bytes / sizeof bytes[0]; k++) {
+        FILE *f = fopen(path, "wb");
+        ck_assert_ptr_nonnull(f);
+        fputs(pgm[bytes[k][0]], f);
+        for (int p = 0; p < W * H; p++)
+            fputc(p == 6 ? bytes[k][1] : 0, f);
+        ck_assert_int_eq(fclose(f), 0);
+        int st = verify_mask_read(path, W, H, &back, err, sizeof err);
+        if (bytes[k][0] == 1 && bytes[k][1] == 2) {
+            ck_assert_int_eq(st, 0);
+            for (int p = 0; p < W * H; p++)
+                ck_assert_int_eq(back[p], p == 6);
+            free(back);
+            continue;
+        }
+        ck_assert_msg(st == STATUS_DATA, "byte %d: %d", bytes[k][1], st);
+        ck_assert_ptr_null(back);
+        ck_assert_msg(strstr(err, MASK_NOT_BINARY) && strstr(err, "pixel (2, 1)"), "message: %s", err);
+    }
+    static const double px[][3] = {{0.5, 0.5, 0.5}, {0.99, 0.99, 0.99}, {1, 0, 0}};
+    static const char *const names[] = {"m.pfm", "m.png"};
+    for (int n = 0; n < 2; n++)
+        for (size_t k = 0; k < sizeof px / sizeof px[0]; k++) {
+            img_buf img;
+            ck_assert_int_eq(img_create(&img, W, H), 0);
+            for (int c = 0; c < 3; c++)
+                img_pixel(&img, 2, 1)[c] = px[k][c];
+            tmp_file(&t, names[n], path, sizeof path);
+            ck_assert_int_eq(img_write(path, &img, NULL, err, sizeof err), 0);
+            img_free(&img);
+            ck_assert_int_eq(verify_mask_read(path, W, H, &back, err, sizeof err), STATUS_DATA);
+            ck_assert_ptr_null(back);
+            ck_assert_msg(strstr(err, MASK_NOT_BINARY) && strstr(err, "pixel (2, 1)"), "%s: %s", names[n], err);
+        }
+    tmp_remove(&t);
+}
+END_TEST
+
 static const char *refray_bin(void)
 {
     const char *bin = getenv("REFRAY_BIN");
@@ -392,6 +445,7 @@ Suite *suite_compare(void)
     tcase_add_test(tc, test_verify_abs_diff_raw);
     tcase_add_test(tc, test_verify_mask_write_pgm_bytes);
     tcase_add_test(tc, test_verify_mask_read_round_trip);
+    tcase_add_test(tc, test_verify_mask_read_refuses_grey);
     tcase_add_test(tc, test_cli_compare_json_and_exit);
     tcase_add_test(tc, test_cli_compare_errors);
     tcase_add_test(tc, test_cli_compare_diff_and_mask);

@@ -738,11 +738,17 @@ static void edit_scale(const char *kit, int e)
  * near the light).  With png16_scale 2^-15 the absolute bound is 0.50:
  * above half the peak less its relative part, so a picture of half the
  * light, and a black one, would pass; conform, compare --manifest and
- * kit_check refuse the tolerance (65, 65, 2) and run nothing.  At
- * 2^-14 (0.25) it is below, and the three fail a black picture.  Before,
+ * kit_check refuse the tolerance (65, 65, 2) and run nothing.  Before,
  * any absolute bound loaded, and conform passed an all-black picture
  * under absolute 10 (attack 12, finding 6: sh
- * tests/attack12/conform_abs_unbounded.sh). */
+ * tests/attack12/conform_abs_unbounded.sh).
+ * [VERIFY-UNBOUNDED-4] At 2^-14 the absolute bound, 0.25, is below half the
+ * peak but passes black wherever the exact image is below 0.25: more
+ * than 2^-14 of the peak (0.87 / 16384 = 5.3e-5), the three refuse it too
+ * (before, they failed the black picture and passed a picture black
+ * below 0.4 under absolute 0.4, attack 13, finding 2).  At the kit's own
+ * scale, 2^-1 (0.87 in (0.4, 0.8] x 2: absolute 2 / 65535 = 3.1e-5), the
+ * three fail the black picture and pass the exact one. */
 START_TEST(test_conform_absolute_bound_decides)
 {
     char work[64], kit[128], path[300], black[300];
@@ -766,11 +772,81 @@ START_TEST(test_conform_absolute_bound_decides)
                   code[1], code[2]);
     edit_scale(kit, 14);
     three_judges(kit, black, r, code);
-    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-14: conform %d, compare %d, kit_check %d",
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-14: conform %d, compare %d, kit_check %d",
+                  code[0], code[1], code[2]);
+    ck_assert_msg(strstr(r->err, "scene 'masked_sphere': its absolute tolerance 0.25 passes black wherever") &&
+                  strstr(r->err, "[VERIFY-UNBOUNDED-4]"), "%s", r->err);
+    ck_assert_msg(r->out[0] == '\0', "conform ran a scene: %s", r->out);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "2^-14, the exact image: %d %d %d", code[0],
+                  code[1], code[2]);
+    edit_scale(kit, 1);
+    three_judges(kit, black, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "2^-1: conform %d, compare %d, kit_check %d",
                   code[0], code[1], code[2]);
     three_judges(kit, path, r, code);
-    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-14, the exact image: %d %d %d", code[0],
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-1, the exact image: %d %d %d", code[0],
                   code[1], code[2]);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
+/* Sets byte v at pixel (x, y) of the PGM at path (header "P5\nW H\n255\n",
+ * as refray writes it). */
+static void poke_pgm(const char *path, int x, int y, int width, int v)
+{
+    FILE *f = fopen(path, "r+b");
+    ck_assert_ptr_nonnull(f);
+    int c, lines = 0;
+    long at = 0;
+    while (lines < 3 && (c = fgetc(f)) != EOF)
+        lines += c == '\n', at++;
+    ck_assert_int_eq(lines, 3);
+    ck_assert_int_eq(fseek(f, at + (long)y * width + x, SEEK_SET), 0);
+    ck_assert_int_eq(fputc(v, f), v);
+    ck_assert_int_eq(fclose(f), 0);
+}
+
+/* [VERIFY-MASK-1] A mask is black (0) or white (255) only: a byte between,
+ * in a judged pixel (100) or a masked one (254), is refused by conform,
+ * compare --manifest and kit_check (65, 65, 2) with the reason; so is a
+ * grey pixel (0.5) of the PNG mask read where mask_pgm is null (conform
+ * and compare; kit_check reads the PGM).  Before, kit_check took any
+ * non-zero byte as a mark and the other two a byte over 127, so a byte
+ * 100 in a pixel holding NaN passed kit_check and failed the others
+ * (attack 13, finding 4: sh tests/attack13/mask_gray.sh). */
+START_TEST(test_conform_mask_grey_refused)
+{
+    char work[64], kit[128], path[300], mask[400], png[400], err[512];
+    img_buf e, m;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    masked_kit("maskgrey", work, kit, sizeof kit, &e);
+    cli_path(path, sizeof path, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
+    cli_path(mask, sizeof mask, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "as written: %d %d %d", code[0], code[1], code[2]);
+    static const int grey[2][3] = {{0, 0, 100}, {4, 0, 254}};
+    for (int i = 0; i < 2; i++) {
+        poke_pgm(mask, grey[i][0], grey[i][1], e.width, grey[i][2]);
+        three_judges(kit, path, r, code);
+        ck_assert_msg(code[0] == 65 && code[1] == 65 && code[2] == 2, "byte %d: conform %d, compare %d, kit_check %d",
+                      grey[i][2], code[0], code[1], code[2]);
+        ck_assert_msg(strstr(r->err, MASK_NOT_BINARY) != NULL, "%s", r->err);
+        poke_pgm(mask, grey[i][0], grey[i][1], e.width, i == 0 ? 0 : 255);
+    }
+    edit_masked(kit, 0, 1, 4);
+    cli_path(png, sizeof png, kit, "scenes/masked_sphere/masked_sphere.mask.png");
+    ck_assert_int_eq(img_read(png, NULL, &m, err, sizeof err), 0);
+    for (int c = 0; c < 3; c++)
+        img_pixel(&m, 2, 2)[c] = 0.5;
+    ck_assert_int_eq(img_write(png, &m, NULL, err, sizeof err), 0);
+    three_judges(kit, path, r, code);
+    ck_assert_msg(code[0] == 65 && code[1] == 65, "PNG grey: conform %d, compare %d", code[0], code[1]);
+    ck_assert_msg(strstr(r->err, MASK_NOT_BINARY) != NULL, "%s", r->err);
+    img_free(&m);
     img_free(&e);
     cli_remove(work);
     free(r);
@@ -858,6 +934,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_masked_nonfinite);
     tcase_add_test(tc, test_conform_mask_png_and_count);
     tcase_add_test(tc, test_conform_absolute_bound_decides);
+    tcase_add_test(tc, test_conform_mask_grey_refused);
 #else
     tcase_add_test(tc, test_conform_needs_json);
 #endif

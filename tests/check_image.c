@@ -438,16 +438,21 @@ static int kit_check(const tmpdir *d, const char *exact, const char *mine, char 
 }
 
 /* [KIT-PFM-1] A PFM's pixel data are its last bytes: a header whose lines
- * end in CR LF (a writer in text mode) or with blank lines after it is read
- * right, by img_read (compare, conform) and by kit_check alike; bytes
- * after the pixels are a size that does not fit, refused by both
- * (tests/attack12 finding 11: read one byte off, 45 values NaN).  The
- * pixels, 1x1 little-endian: 1.0 (3F800000), 2.0 (40000000), 0.5
- * (3F000000). */
+ * end in CR LF (a writer in text mode) is read right, by img_read
+ * (compare, conform) and by kit_check alike; any other bytes between the
+ * header and the pixels, or after them, are a size that does not fit,
+ * refused by both (tests/attack12 finding 11: read one byte off, 45
+ * values NaN).  The pixels, 1x1 little-endian: 1.0 (3F800000), 2.0
+ * (40000000), 0.5 (3F000000).  Refused: four bytes after the pixels
+ * ("4 bytes longer"); blank lines after a header ending in LF; one new
+ * line after pixels whose first byte is itself a new line (1.0 with low
+ * byte 0A; before, taken for the header's separator and every float read
+ * one byte off, attack 13, finding 6), "1 byte longer"; a CR ending the
+ * header followed by a space. */
 START_TEST(test_img_read_pfm_crlf)
 {
     static const char px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
-    static const char *const heads[] = {"PF\n1 1\n-1.0\n", "PF\r\n1 1\r\n-1.0\r\n", "PF\n1 1\n-1.0\r\n\r\n\n"};
+    static const char *const heads[] = {"PF\n1 1\n-1.0\n", "PF\r\n1 1\r\n-1.0\r\n"};
     tmpdir d;
     char path[256], err[256], buf[64], line[200];
     img_buf img;
@@ -468,14 +473,24 @@ START_TEST(test_img_read_pfm_crlf)
         ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "header %zu: kit_check %d: %s", k, st,
                       line);
     }
-    /* Four bytes after the pixels: a size the header does not give. */
-    memcpy(buf, heads[0], 12);
-    memcpy(buf + 12, px, 12);
-    memcpy(buf + 24, "\0\0\0\0", 4);
-    put_file(path, buf, 28);
-    ck_assert_int_eq(img_read(path, NULL, &img, err, sizeof err), STATUS_DATA);
-    ck_assert_msg(strstr(err, "4 bytes longer than its header") != NULL, "%s", err);
-    ck_assert_int_eq(kit_check(&d, "exact.pfm", "v.pfm", line, sizeof line), 2);
+    static const struct {
+        const char *bytes;
+        size_t n;
+        const char *why;
+    } bad[] = {
+        {"PF\n1 1\n-1.0\n\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F\0\0\0\0", 28, "4 bytes longer than its header"},
+        {"PF\n1 1\n-1.0\r\n\r\n\n\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F", 28, "4 bytes longer than its header"},
+        {"PF\n1 1\n-1.0\n\n\0\x80\x3F\0\0\0\x40\0\0\0\x3F\n", 25, "1 byte longer than its header"},
+        {"PF\n1 1\n-1.0\r \0\0\x80\x3F\0\0\0\x40\0\0\0\x3F", 25, "1 byte longer than its header"},
+    };
+    in_dir(path, sizeof path, &d, "v.pfm");
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        put_file(path, bad[k].bytes, bad[k].n);
+        ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == STATUS_DATA, "case %zu read", k);
+        ck_assert_msg(strstr(err, bad[k].why) != NULL, "case %zu: %s", k, err);
+        ck_assert_msg(kit_check(&d, "exact.pfm", "v.pfm", line, sizeof line) == 2, "case %zu: kit_check: %s", k,
+                      line);
+    }
     tmpdir_remove(&d);
 }
 END_TEST

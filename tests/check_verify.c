@@ -246,11 +246,14 @@ static scene_model *cone_far(const char *k, const char *power)
 }
 
 /* [ORACLE-VIEW-ROUNDING-1] The deterministic tolerance is 1e-9 near the
- * picture and K u D / S (K = 256, u = 2^-53, D = |eye| + |eye - look_at|,
- * S = the view's width) once that is larger: the right render of an eye
- * 1e5, 1e7 and 1e9 away passes (before, 1e7 failed: 327 pixels over 1e-9,
- * attack 11, finding 6), and one with the distant light 1 % too strong
- * still fails from 1e9. */
+ * picture and K u D / S (K = 256, u = 2^-53, D = |eye| + the geometry's
+ * largest |coordinate| + the eye's distance to its far side, S = the view's
+ * width) once that is larger: the right render of an eye 1e5, 1e7 and 1e9
+ * away passes (before, 1e7 failed: 327 pixels over 1e-9, attack 11,
+ * finding 6), and one with the distant light 1 % too strong still fails
+ * from 1e9.  The cone's box is the box of its end disks: every coordinate
+ * within 2 (from [0, -1, 0] with radius 1), every corner within
+ * |(1.3, 2, 1.2)| < 2.7 of the origin, so D is 2 |eye| within -2.7 .. +4.7. */
 START_TEST(test_verify_tolerance_follows_the_view_rounding)
 {
     static const char *const far[] = {"", "e3", "e5", "e7", "e9"};
@@ -263,8 +266,9 @@ START_TEST(test_verify_tolerance_follows_the_view_rounding)
         if (i < 2)
             ck_assert_msg(r.tolerance == 1e-9, "eye 1%s: %g", far[i], r.tolerance);
         else
-            ck_assert_msg(fabs(r.tolerance - floor) <= 1e-12 * floor, "eye 1%s: %g, not %g", far[i], r.tolerance,
-                          floor);
+            ck_assert_msg(r.tolerance >= floor - 256 * 0x1p-53 * 2.7 / 3.6 &&
+                              r.tolerance <= floor + 256 * 0x1p-53 * 4.7 / 3.6,
+                          "eye 1%s: %g, not %g", far[i], r.tolerance, floor);
         scene_free(s);
     }
     scene_model *s = cone_far("e9", "1"), *wrong = cone_far("e9", "1.01");
@@ -282,34 +286,113 @@ START_TEST(test_verify_tolerance_follows_the_view_rounding)
 }
 END_TEST
 
-/* lambert_sphere (scenes/analytic) with look_at at %s on the line of sight
- * and its distant light's power times %s. */
-#define SPHERE_LOOK_BODY                                                                              \
-    "image { width 96 height 72 samples 2 max_depth 1 background [0.05, 0.05, 0.1] }\n"              \
-    "camera { orthographic eye [0, 0, 10] look_at [0, 0, %s] up [0, 1, 0] width 3.2 }\n"            \
+/* lambert_sphere with the eye at the origin, look_at at [0, 0, %s], the
+ * sphere at [0, 0, -%s] and its distant light's red %s; 48 x 36, one
+ * sample. */
+#define SPHERE_FAR_BODY                                                                               \
+    "image { width 48 height 36 samples 1 max_depth 1 background [0.05, 0.05, 0.1] }\n"              \
+    "camera { orthographic eye [0, 0, 0] look_at [0, 0, %s] up [0, 1, 0] width 3.2 }\n"              \
     "ambient { color 0.1 }\n"                                                                         \
     "distant_light { direction [1, -1, -2] power [%s, 0.9, 0.8] }\n"                                  \
-    "sphere { center [0, 0, 0] radius 1.2 material { Kd [0.8, 0.5, 0.3] } }\n"
+    "sphere { center [0, 0, -%s] radius 1.2 material { Kd [0.8, 0.5, 0.3] } }\n"
 
-static scene_model *sphere_look(const char *look_z, const char *power)
+static scene_model *sphere_far_power(const char *look_z, const char *z, const char *red)
 {
     char text[1024];
-    snprintf(text, sizeof text, SPHERE_LOOK_BODY, look_z, power);
+    snprintf(text, sizeof text, SPHERE_FAR_BODY, look_z, red, z);
     return load_scene(text, "lambert_sphere");
 }
 
-/* [ORACLE-VIEW-ROUNDING-2] look_at may sit anywhere on the line of sight
- * without changing a ray; at -5e13 the floor K u D / S reads 0.444 and a
- * picture with 0.6 of the light in its red passed (attack 13, finding 1:
- * sh tests/attack13/view_rounding_look_at.sh).  The floor is held to 1e-3:
- * the render still passes, and the render with the light's red at 0.99 of
- * it fails (the red of a lit pixel is off by about 1 %, ten times the cap). */
+static scene_model *sphere_far(const char *look_z, const char *z)
+{
+    return sphere_far_power(look_z, z, "1");
+}
+
+/* phong_plane_perspective (scenes/analytic) with look_at at %s. */
+#define PLANE_LOOK_BODY                                                                               \
+    "image { width 41 height 31 samples 1 max_depth 1 background [0.3, 0.5, 0.8] }\n"                \
+    "camera { perspective eye [0, 4, 6] look_at %s up [0, 1, 0] fov 50 }\n"                          \
+    "ambient { color 0.1 }\n"                                                                         \
+    "point_light { position [0, 2, -3] power 13 d0 0 falloff inverse_square }\n"                     \
+    "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd [0.4, 0.4, 0.4] Ks 0.5 n 80 } }\n"
+
+/* [ORACLE-VIEW-ROUNDING-1] look_at names a direction only: moved along the
+ * line of sight it changes no ray, and the floor does not move either.
+ * The sphere 1e8 away: D = |eye| + largest |coordinate| + distance to the
+ * far corner = 0 + (1e8 + 1.2) + sqrt((1e8 + 1.2)^2 + 2 * 1.2^2), which is
+ * 2e8 + 2.4 to 1e-16 relative, S = 3.2, so the floor is 256 u (2e8 + 2.4) /
+ * 3.2 = 80 u (2e8 + 2.4) = 1.776e-6 for look_at 1, 1e8 and 5e13 away
+ * (before: 1e-9, 1.78e-6 and 1e-3, the first failing the render's 2.5e-8,
+ * attack 13, finding 1).  The plane seen in perspective: D = |eye| + 0 +
+ * the eye's height = sqrt(52) + 4, S at that height 8 tan 25 deg = 3.73,
+ * D / S = 3.0 and 256 u D / S = 8.5e-14 < 1e-9: 1e-9 with look_at at the
+ * origin, 2^-43 of the way there (before: 0.268) and about 5e12 times as
+ * far (the same direction to 2e-13)
+ * (before: refused, "point light 1 lies in the plane": the margins'
+ * length scale read look_at's 3e13), no pixel excluded in any. */
+START_TEST(test_verify_view_floor_ignores_look_at)
+{
+    static const char *const look[] = {"-1", "-1e8", "-5e13"};
+    double floor = 80 * 0x1p-53 * (2e8 + 2.4);
+    for (int i = 0; i < 3; i++) {
+        scene_model *s = sphere_far(look[i], "1e8");
+        verify_result r;
+        ck_assert_int_eq(verify_scene(s, "sphere", NULL, &r), 0);
+        ck_assert_msg(r.verdict == VERIFY_PASS, "look_at %s: %s", look[i], r.reason);
+        ck_assert_msg(fabs(r.tolerance - floor) <= 1e-12 * floor, "look_at %s: %g, not %g", look[i], r.tolerance,
+                      floor);
+        scene_free(s);
+    }
+    static const char *const plane_look[] = {"[0, 0, 0]", "[0, 3.9999999999995453, 5.9999999999993179]",
+                                             "[0, -2e13, -3e13]"};
+    for (int i = 0; i < 3; i++) {
+        char text[1024];
+        snprintf(text, sizeof text, PLANE_LOOK_BODY, plane_look[i]);
+        scene_model *s = load_scene(text, "phong_plane");
+        verify_result r;
+        ck_assert_int_eq(verify_scene(s, "plane", NULL, &r), 0);
+        ck_assert_msg(r.verdict == VERIFY_PASS, "look_at %s: %s", plane_look[i], r.reason);
+        ck_assert_msg(r.tolerance == 1e-9, "look_at %s: %g", plane_look[i], r.tolerance);
+        ck_assert_msg(r.metrics.excluded == 0, "look_at %s: %ld excluded", plane_look[i], r.metrics.excluded);
+        scene_free(s);
+    }
+}
+END_TEST
+
+/* [ORACLE-VIEW-ROUNDING-1] The floor follows the distance of what the rays
+ * reach, with look_at held 1 away: the sphere Z away gives D = 2 Z + 2.4 (as
+ * above) and the floor 80 u (2 Z + 2.4): 1.78e-8, 1.78e-7, 1.78e-6 for
+ * Z = 1e6, 1e7, 1e8, ten times per step, and the render passes at each
+ * (before: 1e-9 throughout, and from 1e7 on the render's own rounding
+ * failed it). */
+START_TEST(test_verify_view_floor_follows_the_geometry)
+{
+    static const char *const z[] = {"1e6", "1e7", "1e8"};
+    for (int i = 0; i < 3; i++) {
+        scene_model *s = sphere_far("-1", z[i]);
+        verify_result r;
+        double floor = 80 * 0x1p-53 * (2 * pow(10, 6 + i) + 2.4);
+        ck_assert_int_eq(verify_scene(s, "sphere", NULL, &r), 0);
+        ck_assert_msg(r.verdict == VERIFY_PASS, "sphere %s away: %s", z[i], r.reason);
+        ck_assert_msg(fabs(r.tolerance - floor) <= 1e-12 * floor, "sphere %s away: %g, not %g", z[i], r.tolerance,
+                      floor);
+        scene_free(s);
+    }
+}
+END_TEST
+
+/* [ORACLE-VIEW-ROUNDING-2] The floor is held to 1e-3: the sphere 1e11
+ * away reads 80 u (2e11 + 2.4) = 1.78e-3 (as above), the render passes
+ * at 1e-3 and the render with the light's red at 0.99 of it fails (the red
+ * of a lit pixel is off by about 1 %, ten times the cap).  Before the
+ * floor was read from the geometry, look_at 5e13 along the stock view
+ * read 0.444 and passed a picture of 0.6 times the right one (attack 13,
+ * finding 1). */
 START_TEST(test_verify_view_floor_is_capped)
 {
-    scene_model *s = sphere_look("-5e13", "1"), *dim = sphere_look("-5e13", "0.99");
+    scene_model *s = sphere_far("-1", "1e11"), *dim = sphere_far_power("-1", "1e11", "0.99");
     verify_result r;
-    double floor = 256 * 0x1p-53 * (10 + (5e13 + 10)) / 3.2;
-    ck_assert_msg(floor > 0.4, "the uncapped floor is %g", floor);
+    ck_assert_msg(80 * 0x1p-53 * (2e11 + 2.4) > 1.7e-3, "the uncapped floor");
     ck_assert_int_eq(verify_scene(s, "sphere", NULL, &r), 0);
     ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
     ck_assert_msg(r.tolerance == 1e-3, "%g", r.tolerance);
@@ -1051,6 +1134,8 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_refuses_a_bound_that_passes_a_dim_image);
     tcase_add_test(tc, test_verify_tolerance_follows_the_view_rounding);
     tcase_add_test(tc, test_verify_view_floor_is_capped);
+    tcase_add_test(tc, test_verify_view_floor_ignores_look_at);
+    tcase_add_test(tc, test_verify_view_floor_follows_the_geometry);
     tcase_add_test(tc, test_verify_exact_refuses_a_negative_or_infinite_radiance);
     tcase_add_test(tc, test_verify_family_unknown_and_missing);
     tcase_add_test(tc, test_verify_sweep_parse);

@@ -16,8 +16,8 @@
  * In both headers the tokens are separated by white space (and '#'
  * comments in PPM, which we also accept in PFM), and exactly one white
  * character separates the last token from the raster in PPM.  A PFM's
- * raster is its last bytes, found from the file's size, with only white
- * space (CR LF too) between the header and them (raster_fits).
+ * raster is its last bytes, found from the file's size, with nothing
+ * between the header and them but the LF of a CR LF (raster_fits).
  */
 #include <errno.h>
 #include <limits.h>
@@ -113,10 +113,9 @@ static int make_target(const img_read_opts *o, int w, int h, img_buf *out, char 
  * cannot seek (a pipe) is read as it comes.
  *
  * With `last` (PFM, [IMG-PFM-1]) the raster is the file's last bytes:
- * what lies between the header's separator and them must be white space,
- * which is skipped, so a header whose lines end in CR LF (a text-mode
- * writer) is read right; anything else there is a file whose size does
- * not fit its header, refused rather than read some bytes off. */
+ * between the header's separator and them there may be only the LF of a
+ * CR LF (a text-mode writer's header); anything else there is a file whose
+ * size does not fit its header, refused rather than read some bytes off. */
 static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, int last, char *err, size_t errlen)
 {
     long here = ftell(fp);
@@ -132,17 +131,24 @@ static int raster_fits(FILE *fp, int rows, size_t bytes_per_row, int last, char 
     if (!last || end < here)
         return STATUS_OK;
     size_t extra = (size_t)(end - here) - (size_t)rows * bytes_per_row;
-    for (size_t i = 0; i < extra; i++) {
-        int c = fgetc(fp);
+    if (extra == 0)
+        return STATUS_OK;
+    /* Only the LF of a CR LF line end: the separator read must be the CR.
+     * Any other white space would let a file one byte too long whose first
+     * pixel byte happens to be a white-space value be read one byte off. */
+    int sep = EOF, c = EOF;
+    if (extra == 1 && here > 0 && fseek(fp, here - 1, SEEK_SET) == 0) {
+        sep = fgetc(fp);
+        c = sep == EOF ? EOF : fgetc(fp);
         if (c == EOF)
             return read_failed(fp, err, errlen);
-        if (!is_white(c))
-            return img_error(err, errlen, STATUS_DATA, "the file is %zu bytes longer than its header and the "
-                             "%d rows of %zu bytes of pixel data it announces, and they are not white space after "
-                             "the header (bytes after the pixels, or a wrong size)", extra, rows,
-                             bytes_per_row);
     }
-    return STATUS_OK;
+    if (sep == '\r' && c == '\n')
+        return STATUS_OK;
+    return img_error(err, errlen, STATUS_DATA, "the file is %zu byte%s longer than its header and the %d rows of %zu "
+                     "bytes of pixel data it announces, and they are not the LF of a CR LF ending the header "
+                     "(bytes after the pixels, or a wrong size)", extra, extra == 1 ? "" : "s", rows,
+                     bytes_per_row);
 }
 
 /* ---- PFM ---- */

@@ -10,25 +10,6 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
- * origin and its hit differently, by a few units u = 2^-53 of the largest
- * coordinate involved, D = |eye| + |eye - look_at|; a ray moved sideways by
- * delta changes a pixel by at most G delta relative, G the largest relative
- * slope of the image, which for a picture of width S (the view's, at
- * look_at) is a small multiple of 1/S.  Hence the floor K u D / S; K is
- * spec/verify.md's constant, 8 times the largest ratio measured. */
-double oracle_tolerance_exact(const oracle_view *v, int light_samples)
-{
-    const scene_camera *c = &v->scene->camera;
-    double dist = vec_length(vec_sub(c->eye, c->look_at));
-    double span = c->kind == CAMERA_ORTHOGRAPHIC ? c->width : 2 * dist * tan(c->fov * M_PI / 360);
-    double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * (vec_length(c->eye) + dist) / span;
-    (void)light_samples;
-    if (!(span > 0 && floor > ORACLE_EXACT_TOLERANCE))
-        return ORACLE_EXACT_TOLERANCE;
-    return floor < ORACLE_VIEW_ROUNDING_MAX ? floor : ORACLE_VIEW_ROUNDING_MAX;
-}
-
 rgb oracle_falloff(rgb power, double d, double d0, scene_falloff falloff)
 {
     double s = d + d0;
@@ -290,9 +271,83 @@ static double grow(double scale, vec3 p, double extra)
     return fmax(scale, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))) + extra);
 }
 
+/* What the view's rays reach (spec/verify.md, [ORACLE-VIEW-ROUNDING-1]):
+ * the largest |coordinate| of a hit (*coord), the farthest and the nearest
+ * distance from the eye to a hit (*far, *near), read from the world boxes
+ * of the bounded primitives and from the planes, never from look_at.  An
+ * eye inside the boxes' union sees its nearest hit no nearer than the
+ * union's nearest face, as far as this bound goes; a plane contributes its
+ * distance from the eye and its point nearest the origin. */
+static void view_reach(const scene_model *s, double *coord, double *far, double *near)
+{
+    vec3 eye = s->camera.eye, lo = vec_splat(HUGE_VAL), hi = vec_splat(-HUGE_VAL);
+    int bounded = 0;
+    *coord = 0;
+    *far = 0;
+    *near = HUGE_VAL;
+    for (int i = 0; i < s->prim_count; i++) {
+        const scene_prim *p = &s->prims[i];
+        vec3 plo, phi;
+        if (p->kind == PRIM_PLANE) {
+            vec3 n = vec_normalize(p->u.plane.normal);
+            double off = vec_dot(n, p->u.plane.point), d = fabs(vec_dot(n, vec_sub(eye, p->u.plane.point)));
+            *coord = grow(*coord, vec_scale(n, off), 0);
+            *far = fmax(*far, d);
+            *near = fmin(*near, d);
+        } else if (scene_prim_world_box(p, &plo, &phi)) {
+            lo = vec_min(lo, plo);
+            hi = vec_max(hi, phi);
+            bounded = 1;
+        }
+    }
+    if (!bounded)
+        return;
+    *coord = grow(grow(*coord, lo, 0), hi, 0);
+    for (int c = 0; c < 8; c++) {
+        vec3 corner = vec_make(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+        *far = fmax(*far, vec_length(vec_sub(corner, eye)));
+    }
+    vec3 below = vec_sub(lo, eye), above = vec_sub(eye, hi);
+    vec3 out = vec_max(vec_max(below, above), vec_splat(0));
+    double outside = vec_length(out);
+    if (outside == 0)
+        outside = fmin(fmin(fmin(-below.x, -below.y), -below.z), fmin(fmin(-above.x, -above.y), -above.z));
+    *near = fmin(*near, outside);
+}
+
+/* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
+ * origin and its hit differently, by a few units u = 2^-53 of the sizes
+ * the hit is made of, D = |eye| + the hit's coordinates + its distance;
+ * a hit moved sideways by delta changes a pixel by at most G delta
+ * relative, G the largest relative slope of the picture, which for a
+ * picture of world width S at the hit is a small multiple of 1/S.  Hence
+ * the floor K u D / S; K is spec/verify.md's constant, 8 times the largest
+ * ratio measured.  Orthographic: S is the width at every distance, so the
+ * farthest hit and the largest coordinate bound D / S; perspective: D / S
+ * falls with the hit's distance, so the nearest hit bounds it. */
+double oracle_tolerance_exact(const oracle_view *v, int light_samples)
+{
+    const scene_camera *c = &v->scene->camera;
+    double coord, far, near;
+    view_reach(v->scene, &coord, &far, &near);
+    double eye = vec_length(c->eye), span, d;
+    if (c->kind == CAMERA_ORTHOGRAPHIC) {
+        span = c->width;
+        d = eye + coord + far;
+    } else { /* at the nearest hit, whose coordinates are within eye + near */
+        span = 2 * near * tan(c->fov * M_PI / 360);
+        d = eye + fmin(coord, eye + near) + near;
+    }
+    double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * d / span;
+    (void)light_samples;
+    if (!(span > 0 && span < HUGE_VAL && floor > ORACLE_EXACT_TOLERANCE))
+        return ORACLE_EXACT_TOLERANCE;
+    return floor < ORACLE_VIEW_ROUNDING_MAX ? floor : ORACLE_VIEW_ROUNDING_MAX;
+}
+
 double oracle_scene_scale(const scene_model *s)
 {
-    double scale = grow(grow(1, s->camera.eye, 0), s->camera.look_at, 0);
+    double scale = grow(1, s->camera.eye, 0);
     for (int i = 0; i < s->prim_count; i++) {
         const scene_prim *p = &s->prims[i];
         if (p->kind == PRIM_SPHERE)

@@ -32,16 +32,16 @@
 /* The constant of the view's rounding floor (spec/verify.md,
  * [ORACLE-VIEW-ROUNDING-1]). */
 #define ORACLE_VIEW_ROUNDING_K 256
-/* The most the floor may loosen a verdict ([ORACLE-VIEW-ROUNDING-2]): the
- * floor is read from the eye and look_at, and a scene may put look_at
- * anywhere on the line of sight without changing a ray. */
+/* The most the floor may loosen a verdict, whatever the view
+ * ([ORACLE-VIEW-ROUNDING-2]). */
 #define ORACLE_VIEW_ROUNDING_MAX 1e-3
 #define ORACLE_EDGE_MARGIN 1e-6
 #define ORACLE_COS_MARGIN 1e-6
 
 /* The tolerance of every deterministic family: 1e-9 relative (issue 4), or
- * the rounding of the view's rays where that is larger (an eye far from
- * the picture for its width: [ORACLE-VIEW-ROUNDING-1]). */
+ * the rounding of the view's rays where that is larger (an eye or geometry
+ * far away for the picture's width: [ORACLE-VIEW-ROUNDING-1]), read from
+ * the eye and the geometry, never from look_at. */
 double oracle_tolerance_exact(const oracle_view *v, int light_samples);
 
 /* E/(d+d0), E/(d+d0)^2 or E (slides 15-16), straight from the formula. */
@@ -163,8 +163,10 @@ vec3 oracle_mirror_point(vec3 p0, vec3 n, vec3 eye, vec3 light);
  * points): the point whose direction to the light is the mirror of V. */
 vec3 oracle_mirror_point_ortho(vec3 p0, vec3 n, vec3 f, vec3 light);
 
-/* The largest coordinate magnitude of the scene's camera, primitives and
- * point lights (at least 1): the length scale of absolute margins. */
+/* The largest coordinate magnitude of the scene's eye, primitives and
+ * point lights (at least 1): the length scale of absolute margins.  Not
+ * look_at, which names a direction only (a far one made every margin
+ * huge: [ORACLE-VIEW-ROUNDING-2]). */
 double oracle_scene_scale(const scene_model *s);
 
 /* The material of primitive i. */

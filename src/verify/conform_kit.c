@@ -88,14 +88,19 @@ int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exac
 
 int conform_bound_decisive(double relative, double absolute, double peak)
 {
-    return relative * peak + absolute < peak / 2;
+    return relative * peak + absolute < peak / 2 && absolute <= CONFORM_ABSOLUTE_OF_PEAK * peak;
 }
 
 void conform_bound_reason(double relative, double absolute, double peak, char *why, size_t why_size)
 {
-    snprintf(why, why_size, "its tolerance, relative %.3g and absolute %.3g, passes a picture of half the light of "
-             "the exact image, whose largest value is %.3g: relative * peak + absolute must be below peak / 2 "
-             "(no verdict, spec/verify.md [VERIFY-UNBOUNDED-3])", relative, absolute, peak);
+    if (!(relative * peak + absolute < peak / 2))
+        snprintf(why, why_size, "its tolerance, relative %.3g and absolute %.3g, passes a picture of half the light "
+                 "of the exact image, whose largest value is %.3g: relative * peak + absolute must be below peak / 2 "
+                 "(no verdict, spec/verify.md [VERIFY-UNBOUNDED-3])", relative, absolute, peak);
+    else
+        snprintf(why, why_size, "its absolute tolerance %.3g passes black wherever the exact image is dimmer than "
+                 "that, and its largest value is %.3g: absolute must be at most 2^-14 of it, %.3g (spec/verify.md "
+                 "[VERIFY-UNBOUNDED-4])", absolute, peak, CONFORM_ABSOLUTE_OF_PEAK * peak);
 }
 
 int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const unsigned char *mask, char *why,

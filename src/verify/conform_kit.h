@@ -31,13 +31,21 @@
 int conform_kit_mask(const char *kit_dir, const manifest_scene *s, int width, int height, unsigned char **mask,
                      char *why, size_t why_size);
 
+/* [VERIFY-UNBOUNDED-4] The largest absolute tolerance, as a fraction of
+ * the peak: the kit's own, one 16-bit step at the scale that puts the
+ * peak above 0.4, is at most 1 / (0.4 * 65535) = 2^-14.68 of it. */
+#define CONFORM_ABSOLUTE_OF_PEAK 0x1p-14
+
 /*
  * [VERIFY-UNBOUNDED-3] 1 when a verdict under |out - exact| <= relative
  * |exact| + absolute can tell an image whose largest value is peak from
  * itself scaled by any s with |1 - s| >= 1/2 (half its light, black, a
  * doubled one): at the peak such a picture errs by |1 - s| peak >= peak /
  * 2, so it fails there exactly when relative peak + absolute < peak / 2.
- * 0 for a black peak: nothing tells black from half of it.
+ * 0 for a black peak: nothing tells black from half of it.  And
+ * [VERIFY-UNBOUNDED-4]: 0 when absolute exceeds CONFORM_ABSOLUTE_OF_PEAK
+ * peak, which would pass black wherever the exact image is dimmer than
+ * absolute (a bound checked at the peak alone does not see them).
  */
 int conform_bound_decisive(double relative, double absolute, double peak);
 

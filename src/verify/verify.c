@@ -834,9 +834,21 @@ static int pgm_read(FILE *fp, int width, int height, unsigned char *mask, char *
         int c = fgetc(fp);
         if (c == EOF)
             return img_error(err, errlen, STATUS_DATA, "the PGM ends after %zu of %zu pixels", p, n);
-        mask[p] = 2 * c > maxval;
+        /* A byte between would be a mark to one reader and not to another
+         * (kit_check.c once took any non-zero byte): none is read. */
+        if (c != 0 && c != maxval)
+            return img_error(err, errlen, STATUS_DATA, MASK_NOT_BINARY " (pixel (%zu, %zu) is %d; maxval %ld)",
+                             p % (size_t)width, p / (size_t)width, c, maxval);
+        mask[p] = c == maxval;
     }
     return STATUS_OK;
+}
+
+/* A mask image's value: 0 black, 1 white, -1 neither (a band finer than
+ * any 16-bit step, for the rounding of decoding). */
+static int mask_level(double v)
+{
+    return v <= 1e-6 && v >= 0 ? 0 : v >= 1 - 1e-6 && v <= 1 + 1e-6 ? 1 : -1;
 }
 
 static int mask_from_image(const char *path, int width, int height, unsigned char *mask, char *err,
@@ -851,8 +863,14 @@ static int mask_from_image(const char *path, int width, int height, unsigned cha
     if (status != STATUS_OK)
         return status;
     size_t n = (size_t)width * (size_t)height;
-    for (size_t p = 0; status == STATUS_OK && p < n; p++)
-        mask[p] = img.rgb[3 * p] > 0.5 || img.rgb[3 * p + 1] > 0.5 || img.rgb[3 * p + 2] > 0.5;
+    for (size_t p = 0; status == STATUS_OK && p < n; p++) {
+        const double *v = &img.rgb[3 * p];
+        int level = mask_level(v[0]);
+        if (level < 0 || mask_level(v[1]) != level || mask_level(v[2]) != level)
+            status = img_error(err, errlen, STATUS_DATA, MASK_NOT_BINARY " (pixel (%zu, %zu) is %g %g %g)",
+                               p % (size_t)width, p / (size_t)width, v[0], v[1], v[2]);
+        mask[p] = level == 1;
+    }
     img_free(&img);
     return status;
 }

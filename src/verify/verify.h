@@ -272,11 +272,17 @@ int verify_abs_diff(const img_buf *a, const img_buf *b, const unsigned char *mas
 int verify_mask_write(const char *path, const unsigned char *mask, int width, int height, char *err,
                       size_t errlen);
 
+/* The reason of a mask with a value other than black and white. */
+#define MASK_NOT_BINARY "a mask is black (0: judged) or white (maxval, 255: excluded) only, nothing between"
+
 /*
  * Reads a mask of width x height from path (.pgm: binary P5, maxval <= 255;
- * others through img_read): a pixel is excluded when any of its values is
- * above half the range.  *mask is malloc'd.  Returns 0, or an IMG_ code
- * with the reason in err (STATUS_DATA for a size other than width x height).
+ * others through img_read): a pixel is excluded when it is white (maxval;
+ * 1 in every channel), judged when black (0), and any other value is
+ * refused (STATUS_DATA, MASK_NOT_BINARY), so that no reader can take a
+ * grey byte another way (spec/verify.md [VERIFY-MASK-1]).  *mask is
+ * malloc'd.  Returns 0, or an IMG_ code with the reason in err (STATUS_DATA
+ * for a size other than width x height).
  */
 int verify_mask_read(const char *path, int width, int height, unsigned char **mask, char *err, size_t errlen);
 

@@ -10,13 +10,16 @@
  * EXACT.pfm and MASK.pgm are the scene's files in the kit; RELATIVE and
  * ABSOLUTE are its manifest's "tolerance" numbers.  A channel fails when
  * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
- * number; masked pixels (mask byte non-zero) are skipped.  Prints
+ * number; masked pixels (mask byte 255) are skipped.  Prints
  * "N of M pixels over"; exit 0 when none is over and at least one pixel
- * was compared, 1 when some are, 2 when a file cannot be read, a
+ * was compared, 1 when some are, 2 when a file cannot be read (a mask
+ * byte other than 0 and 255 included), a
  * tolerance is not a finite number >= 0, or the two carry no verdict:
  * RELATIVE * PEAK + ABSOLUTE is not below PEAK / 2, PEAK the largest
  * |exact| of the compared pixels, so that a picture of half the light
- * (or black) would pass (spec/verify.md [VERIFY-UNBOUNDED-3]).
+ * (or black) would pass (spec/verify.md [VERIFY-UNBOUNDED-3]), or ABSOLUTE
+ * is more than PEAK / 16384, so that black would pass wherever the exact
+ * image is dimmer than it ([VERIFY-UNBOUNDED-4]).
  */
 #include <math.h>
 #include <stdio.h>
@@ -51,11 +54,12 @@ static int little_endian_host(void)
     return first == 1;
 }
 
-/* PFM's pixel data are the file's last bytes: what lies between the
- * header's last token and them must be white space (a header whose lines
- * end in CR LF, from a writer in text mode), else the file's size does
- * not fit its header and it is refused, never read some bytes off.  A
- * stream that cannot seek is read as it comes. */
+/* PFM's pixel data are the file's last bytes: between the header's last
+ * token with its separator and them there may be only the LF of a CR LF
+ * (the separator read was the CR: a header from a writer in text mode),
+ * else the file's size does not fit its header and it is refused, never
+ * read some bytes off (a white-space byte first in the pixels must not
+ * pass for a separator).  A stream that cannot seek is read as it comes. */
 static int seek_raster(FILE *f, size_t raster)
 {
     long here = ftell(f), end;
@@ -63,14 +67,12 @@ static int seek_raster(FILE *f, size_t raster)
         clearerr(f);
         return here < 0 || fseek(f, here, SEEK_SET) == 0;
     }
-    if (end < here || (size_t)(end - here) < raster || fseek(f, here, SEEK_SET) != 0)
+    if (end < here || (size_t)(end - here) < raster)
         return 0;
-    for (size_t extra = (size_t)(end - here) - raster; extra > 0; extra--) {
-        int c = fgetc(f);
-        if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
-            return 0;
-    }
-    return 1;
+    size_t extra = (size_t)(end - here) - raster;
+    if (extra == 0)
+        return fseek(f, here, SEEK_SET) == 0;
+    return extra == 1 && here > 0 && fseek(f, here - 1, SEEK_SET) == 0 && fgetc(f) == '\r' && fgetc(f) == '\n';
 }
 
 /* PF (colour) or Pf (grey) of either byte order; PFM stores rows from the
@@ -128,23 +130,35 @@ static int read_pfm(const char *path, picture *p)
     return p->rgb != NULL;
 }
 
-/* Binary PGM (P5, maxval < 256): the mask's bytes, rows from the top. */
-static unsigned char *read_pgm(const char *path, long width, long height)
+/* The kit's mask: a binary PGM of the image's size whose bytes are 0 (the
+ * pixel is judged) or maxval (255: skipped), nothing between, so that no
+ * reader can take a grey byte another way (spec/verify.md
+ * [VERIFY-MASK-1]).  NULL with *why set when it is not. */
+static unsigned char *read_pgm(const char *path, long width, long height, const char **why)
 {
     char magic[32], w[32], h[32], maxval[32];
     FILE *f = fopen(path, "rb");
+    *why = "cannot be opened";
     if (!f)
         return NULL;
     unsigned char *mask = NULL;
+    long top = 0;
+    *why = "is not a binary PGM of the image's size";
     if (token(f, magic, sizeof magic) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
         token(f, maxval, sizeof maxval) && strcmp(magic, "P5") == 0 && strtol(w, NULL, 10) == width &&
-        strtol(h, NULL, 10) == height && strtol(maxval, NULL, 10) < 256) {
+        strtol(h, NULL, 10) == height && (top = strtol(maxval, NULL, 10)) >= 1 && top < 256) {
         size_t n = (size_t)width * (size_t)height;
         mask = malloc(n);
         if (mask && fread(mask, 1, n, f) != n) {
             free(mask);
             mask = NULL;
         }
+        for (size_t p = 0; mask && p < n; p++)
+            if (mask[p] != 0 && mask[p] != top) {
+                *why = "holds a byte other than 0 and its maxval (255): a mask is black or white only";
+                free(mask);
+                mask = NULL;
+            }
     }
     fclose(f);
     return mask;
@@ -187,9 +201,10 @@ int main(int argc, char **argv)
         free(mine.rgb);
         return 1;
     }
-    unsigned char *mask = read_pgm(argv[2], exact.width, exact.height);
+    const char *why;
+    unsigned char *mask = read_pgm(argv[2], exact.width, exact.height, &why);
     if (!mask) {
-        fprintf(stderr, "kit_check: %s is not a %ldx%ld binary PGM\n", argv[2], exact.width, exact.height);
+        fprintf(stderr, "kit_check: %s %s (%ldx%ld)\n", argv[2], why, exact.width, exact.height);
         free(exact.rgb);
         free(mine.rgb);
         return 2;
@@ -200,9 +215,20 @@ int main(int argc, char **argv)
     for (size_t p = 0; p < (size_t)exact.width * (size_t)exact.height; p++)
         for (int c = 0; c < 3 && !mask[p]; c++)
             peak = fmax(peak, fabs(exact.rgb[3 * p + (size_t)c]));
+    int status = 0;
     if (!(rel * peak + abs_tol < peak / 2)) {
         fprintf(stderr, "kit_check: RELATIVE %g and ABSOLUTE %g pass a picture of half the light of the exact "
                 "image (its peak is %g): no verdict\n", rel, abs_tol, peak);
+        status = 2;
+    } else if (!(abs_tol <= peak / 16384)) {
+        /* An ABSOLUTE checked at the peak alone passes black wherever the
+         * exact image is dimmer than it (spec/verify.md
+         * [VERIFY-UNBOUNDED-4]); the kit's own is below 2^-14 of the peak. */
+        fprintf(stderr, "kit_check: ABSOLUTE %g passes black wherever the exact image is dimmer than that: it "
+                "must be at most 2^-14 of its peak %g\n", abs_tol, peak);
+        status = 2;
+    }
+    if (status) {
         free(mask);
         free(exact.rgb);
         free(mine.rgb);
