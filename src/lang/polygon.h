@@ -42,7 +42,8 @@ enum {
 typedef struct polygon_work {
     double *x, *y;     /* projected corners */
     int *next, *prev;  /* the corners still in the polygon, as a ring */
-    int cap;           /* corners of room: the four arrays are one block */
+    int *aux;          /* sorted corners, then the ring's corners marked */
+    int cap;           /* corners of room: the five arrays are one block */
     long budget;       /* steps left */
     mem mem;
 } polygon_work;
