@@ -230,11 +230,13 @@ START_TEST(test_polygon_scale_free)
 {
     /* [MESH-POLY-4] tests/attack14/quad_far.obj: the unit square written
      * in units of 1e160 (its cross products would pass 1e308) or 1e-170
-     * (they would fall under the smallest double) has the area it has at
-     * size 1: 2 triangles, the same corners; the L of 4 triangles too. */
+     * (they would fall under the smallest double), down to 1e-310 (a
+     * subnormal, where 2^-e itself would pass the largest double), has the
+     * area it has at size 1: 2 triangles, the same corners; the L of 4
+     * triangles too. */
     static const vec3 quad[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     static const vec3 l[6] = {{2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}, {0, 0, 0}, {2, 0, 0}};
-    static const double units[4] = {1e160, 1e-170, 1e300, 1e-300};
+    static const double units[5] = {1e160, 1e-170, 1e300, 1e-300, 1e-310};
     polygon_work w;
     polygon_work_init(&w, NULL);
     int want[4][3], got[4][3], flags;
@@ -242,7 +244,7 @@ START_TEST(test_polygon_scale_free)
         const vec3 *face = shape ? l : quad;
         int n = shape ? 6 : 4, count = polygon_triangulate(face, n, &w, want, &flags);
         ck_assert_int_eq(count, n - 2);
-        for (int u = 0; u < 4; u++) {
+        for (int u = 0; u < 5; u++) {
             vec3 at[6];
             for (int i = 0; i < n; i++)
                 at[i] = vec_add(vec_make(3 * units[u], -units[u], 0), vec_scale(face[i], units[u]));

@@ -82,28 +82,37 @@ static double max_abs(vec3 d)
     return fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
 }
 
-/* The power of two that brings the largest coordinate of c_i - c_0 into
- * [1/2, 1): 0 when every corner is at c_0 or a difference is not finite. */
-static double unit_scale(const vec3 *at, int n)
+/* The exponent e of the power of two 2^e that holds the largest
+ * coordinate of c_i - c_0 in [2^(e-1), 2^e); 0 with *ok 0 when every
+ * corner is at c_0 or a difference is not finite. */
+static int unit_exponent(const vec3 *at, int n, int *ok)
 {
     double m = 0;
+    int e = 0;
     for (int i = 1; i < n; i++)
         m = fmax(m, max_abs(vec_sub(at[i], at[0])));
-    if (!(m > 0) || !isfinite(m))
-        return 0;
-    int e;
-    frexp(m, &e);
-    return ldexp(1, -e);
+    *ok = m > 0 && isfinite(m);
+    if (*ok)
+        frexp(m, &e);
+    return e;
+}
+
+/* c_i - c_0 divided by 2^e: exact, and by ldexp rather than a product
+ * with 2^-e, which is not a double for e above 1023 or below -1021. */
+static vec3 scaled_offset(const vec3 *at, int i, int e)
+{
+    vec3 d = vec_sub(at[i], at[0]);
+    return vec_make(ldexp(d.x, -e), ldexp(d.y, -e), ldexp(d.z, -e));
 }
 
 /* Newell's normal, sum of (c_i - c_0) x (c_i+1 - c_0) with the differences
- * scaled by s: twice the vector area times s^2, exact in direction for a
+ * divided by 2^e: twice the vector area over 4^e, exact in direction for a
  * planar polygon, and free of overflow and underflow at any scale. */
-static vec3 newell_normal(const vec3 *at, int n, double s)
+static vec3 newell_normal(const vec3 *at, int n, int e)
 {
     vec3 sum = vec_splat(0);
     for (int i = 1; i + 1 < n; i++)
-        sum = vec_add(sum, vec_cross(vec_scale(vec_sub(at[i], at[0]), s), vec_scale(vec_sub(at[i + 1], at[0]), s)));
+        sum = vec_add(sum, vec_cross(scaled_offset(at, i, e), scaled_offset(at, i + 1, e)));
     return sum;
 }
 
@@ -124,9 +133,9 @@ static int nonplanar(const vec3 *at, int n, vec3 u)
     return (dmax - dmin) / 2 > POLYGON_PLANAR_TOL * size;
 }
 
-/* Projects the corners, scaled by s, by dropping axis k of the normal n,
+/* Projects the corners, divided by 2^e, by dropping axis k of the normal n,
  * ordered so that the polygon winds counter-clockwise in the plane. */
-static void project(const vec3 *at, int n, vec3 normal, double s, polygon_work *w)
+static void project(const vec3 *at, int n, vec3 normal, int e, polygon_work *w)
 {
     vec3 a = vec_make(fabs(normal.x), fabs(normal.y), fabs(normal.z));
     int k = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
@@ -137,7 +146,7 @@ static void project(const vec3 *at, int n, vec3 normal, double s, polygon_work *
         i2 = t;
     }
     for (int i = 0; i < n; i++) {
-        vec3 d = vec_scale(vec_sub(at[i], at[0]), s);
+        vec3 d = scaled_offset(at, i, e);
         w->x[i] = vec_component(d, i1);
         w->y[i] = vec_component(d, i2);
     }
@@ -449,9 +458,11 @@ static int clip(polygon_work *w, int b, int left, int weak, int (*out)[3], int *
         }
         if (!ear && !weak) {
             /* A full round without a classic ear: the polygon touches
-             * itself somewhere.  The weak test is right there too. */
+             * itself somewhere.  The weak test is right there too, on a
+             * ring settled again (a cut may have left a spike). */
             weak = 1;
             misses = 0;
+            b = settle(w, b, &left, left);
             continue;
         }
         if (!ear) {
@@ -481,10 +492,10 @@ int polygon_triangulate(const vec3 *at, int n, polygon_work *w, int (*out)[3], i
             out[0][i] = i;
         return 1;
     }
-    double s = unit_scale(at, n);
-    vec3 normal = newell_normal(at, n, s);
+    int ok, e = unit_exponent(at, n, &ok);
+    vec3 normal = newell_normal(at, n, e);
     double len = vec_length(normal);
-    if (!(s > 0) || !(len > 0) || !isfinite(len)) {
+    if (!ok || !(len > 0) || !isfinite(len)) {
         *flags = POLYGON_NO_AREA;
         return 0;
     }
@@ -492,7 +503,7 @@ int polygon_triangulate(const vec3 *at, int n, polygon_work *w, int (*out)[3], i
         *flags |= POLYGON_NONPLANAR;
     if (!reserve(w, n))
         return -1;
-    project(at, n, normal, s, w);
+    project(at, n, normal, e, w);
     int left = make_ring(w, n), first = 0;
     if (left < 3) {
         *flags |= POLYGON_NO_AREA;
