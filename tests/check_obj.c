@@ -445,23 +445,14 @@ START_TEST(test_obj_parse_hostile_sizes)
 }
 END_TEST
 
-/* splitmix64 of a counter: a reproducible stream without hidden state. */
-static uint64_t mix(uint64_t x)
-{
-    x += 0x9e3779b97f4a7c15u;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
-    return x ^ (x >> 31);
-}
-
 static size_t random_obj(uint64_t seed, char *buf, size_t cap)
 {
     static const char *const pieces[] = {"v", "vn", "vt", "f", "l", " ", " ", "\t", "1", "2", "-1",
                                          "0", "3", "/", "//", "\n", "\n", "\r\n", "\r", "\\",
                                          "#", ".5", "e9", "1e400", "x", "\0", "-"};
-    size_t n = 0, count = mix(seed) % 60;
+    size_t n = 0, count = test_mix(seed) % 60;
     for (size_t i = 0; i < count; i++) {
-        const char *p = pieces[mix(seed * 131 + i + 1) % (sizeof pieces / sizeof pieces[0])];
+        const char *p = pieces[test_mix(seed * 131 + i + 1) % (sizeof pieces / sizeof pieces[0])];
         size_t len = *p ? strlen(p) : 1;
         if (n + len > cap)
             break;

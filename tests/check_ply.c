@@ -100,6 +100,35 @@ START_TEST(test_ply_normals_and_polygons)
 }
 END_TEST
 
+START_TEST(test_ply_repeated_corners)
+{
+    /* [MESH-POLY-2] The L of tests/attack14 finding 1 as a PLY face with
+     * its corners 2 and 4 given twice in a row, "8 0 1 2 2 3 4 4 5": the
+     * hexagon's 4 triangles, each wound as the face and with its centroid
+     * in the L, of total area 4 x 1 + 2 x 0.75 = 5.5; nothing fanned or
+     * dropped (before: 3 triangles, fanned). */
+    run r;
+    run_parse(&r, HEAD "element vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                       "0 0 0\n4 0 0\n4 1 0\n2 1 0\n2 1.75 0\n0 1.75 0\n8 0 1 2 2 3 4 4 5\n");
+    ck_assert_msg(r.ok == 1, "%s", r.log);
+    ck_assert_int_eq(r.mesh.triangle_count, 4);
+    ck_assert_int_eq(r.mesh.fanned.count, 0);
+    ck_assert_int_eq(r.mesh.no_area.count, 0);
+    double area = 0;
+    for (int k = 0; k < 4; k++) {
+        const int *t = r.mesh.tri[k];
+        vec3 a = r.mesh.positions[t[0]], b = r.mesh.positions[t[1]], c = r.mesh.positions[t[2]];
+        vec3 n = vec_cross(vec_sub(b, a), vec_sub(c, a)), g = vec_scale(vec_add(a, vec_add(b, c)), 1.0 / 3);
+        ck_assert(n.z > 0);
+        ck_assert_msg(g.x < 2 || g.y < 1, "triangle %d lies in the notch of the L", k);
+        area += n.z / 2;
+    }
+    ck_assert_near(area, 5.5, 0);
+    run_free(&r);
+}
+END_TEST
+
 /* Header and ASCII data errors: input (after HEAD unless it starts with
  * "ply"), the first diagnostic. */
 static const struct {
@@ -447,6 +476,7 @@ Suite *suite_ply(void)
     tcase_add_test(tc, test_ply_ascii_triangle);
     tcase_add_test(tc, test_ply_header_forms);
     tcase_add_test(tc, test_ply_normals_and_polygons);
+    tcase_add_test(tc, test_ply_repeated_corners);
     tcase_add_loop_test(tc, test_ply_errors, 0, (int)(sizeof ascii_errors / sizeof ascii_errors[0]));
     tcase_add_test(tc, test_ply_trailing_data_warns);
     tcase_add_test(tc, test_ply_binary_both_orders);

@@ -6,6 +6,7 @@
 
 #include <check.h>
 #include <math.h>
+#include <stdint.h>
 #include "base/vec.h"
 
 /* |got - want| <= tol, with the values in the failure message. */
@@ -34,5 +35,14 @@
         ck_assert_near(ck_gv_.y, ck_wv_.y, tol);                                            \
         ck_assert_near(ck_gv_.z, ck_wv_.z, tol);                                            \
     } while (0)
+
+/* splitmix64 of a counter: a reproducible stream without hidden state. */
+static inline uint64_t test_mix(uint64_t x)
+{
+    x += 0x9e3779b97f4a7c15u;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
+    return x ^ (x >> 31);
+}
 
 #endif

@@ -7,16 +7,21 @@
  * dropping the normal's largest axis (exact: no coordinate is rounded), and
  * an ear (a corner that turns the polygon's way and whose triangle with its
  * two neighbours holds no other corner) is cut off until three corners are
- * left.  The triangles keep the polygon's winding, cover it exactly when it
- * is simple (convex or not), and use only its own edges and diagonals, so a
- * corner lying on an edge (a T-junction seen from the neighbour) stays a
- * corner of some triangle.
+ * left.  Corners that add no area (at the place of the one before, or the
+ * tip of a spike out and back) are left out first ([MESH-POLY-2]); a
+ * polygon through one place twice gets a stricter ear test ([MESH-POLY-3]);
+ * the tests are scale-free ([MESH-POLY-4]).  The triangles keep the
+ * polygon's winding, cover its region exactly when it does not cross
+ * itself (convex or not, touching itself or not), and use only its own
+ * edges and diagonals, so a corner lying on an edge (a T-junction seen from
+ * the neighbour) stays a corner of some triangle.
  *
  * What is found on the way comes back as flags: no area (every corner on
- * one line, or the corners repeat: the face gives no triangle), not planar
- * (a corner farther than POLYGON_PLANAR_TOL of the polygon's size from its
- * plane), fanned (not a simple polygon, so no ear was left, or over the
- * work budget: cut as the fan (c0, ck, ck+1) instead).
+ * one line, or fewer than 3 places once the repeats are out: the face
+ * gives no triangle), not planar (a corner farther than POLYGON_PLANAR_TOL
+ * of the polygon's size from its plane), fanned (the polygon crosses
+ * itself, so no ear was left, or over the work budget: cut as the fan
+ * (c0, ck, ck+1) instead).
  */
 #ifndef REFRAY_POLYGON_H
 #define REFRAY_POLYGON_H
@@ -42,7 +47,8 @@ enum {
 typedef struct polygon_work {
     double *x, *y;     /* projected corners */
     int *next, *prev;  /* the corners still in the polygon, as a ring */
-    int cap;           /* corners of room: the four arrays are one block */
+    int *aux;          /* sorted corners, then the ring's corners marked */
+    int cap;           /* corners of room: the five arrays are one block */
     long budget;       /* steps left */
     mem mem;
 } polygon_work;
