@@ -196,6 +196,64 @@ static side_eq cone_equation(const quadric *s, const axial *x)
     return e;
 }
 
+/* [NUM-FRAME-4] The cylinder's side across its axis: isect_sphere_roots on
+ * dp, scaled by 2^300 while it is below 2^-300 in every coordinate (at
+ * most three times: from 2^-1074 to 2^-174; exact, a power of two; held
+ * first only for Eva, which keeps no bound between a vector and its
+ * coordinates' comparisons).  A line within 2^-300 of the axis's direction
+ * (a kept frame squashing the cylinder along its axis: the local
+ * direction's part along it 1/s times its part across) has a = |dp|^2
+ * below 2^-600, subnormal from 2^-511 on: its bits are lost, and a (R -
+ * |l|) under the square root rounds to 0, a "graze" at the foot 2^530
+ * away, so the cylinder squashed to 1e-160 .. 5e-162 and seen obliquely
+ * had holes (tests/attack13, finding 3; at 1e-170 a was 0 and the line
+ * decided as the axis's direction, inside by c, rightly).  Scaled, the
+ * roots are the same line's in t / m: scaled back, and held to the
+ * unbounded end SPAN_FAR past 2^1020 (a crossing past CROSSING_MAX is
+ * none).  Any other line is solved as before; dp = 0 too (a = 0). */
+/*@ requires \valid(dp) && \valid(m) && \separated(dp, m);
+    requires 1 <= *m <= 0x1p600;
+    assigns *dp, *m;
+    ensures *m == \old(*m) || *m == \old(*m) * 0x1p300; */
+static void across_step(vec3 *dp, real *m)
+{
+    if (fabs(dp->x) < 0x1p-300 && fabs(dp->y) < 0x1p-300 && fabs(dp->z) < 0x1p-300) {
+        *dp = vec_scale(vec_held(*dp, 0x1p-300), 0x1p300);
+        *m *= 0x1p300;
+    }
+}
+
+/*@ requires \is_finite(t) && 1 <= m <= 0x1p900;
+    assigns \nothing;
+    ensures \is_finite(\result); */
+static real root_unscaled(real t, real m)
+{
+    real lim = 0x1p1020 / m;
+    return t > lim ? SPAN_FAR : t < -lim ? -SPAN_FAR : t * m;
+}
+
+/*@ requires \valid(t + (0 .. 1)) && \valid(a) && \separated(t + (0 .. 1), a);
+    requires vfinite(fp) && vfinite(dp) && \is_finite(r) && r > 0;
+    assigns t[0 .. 1], *a;
+    ensures 0 <= \result <= 2; */
+static int cylinder_roots(vec3 fp, vec3 dp, real r, real t[2], real *a)
+{
+    real m = 1;
+    across_step(&dp, &m);
+    across_step(&dp, &m);
+    across_step(&dp, &m);
+    *a = vec_length2(dp);
+    t[0] = t[1] = 0;
+    if (!(*a > 0))
+        return 0;
+    int n = isect_sphere_roots(fp, dp, r, t);
+    if (m > 1) {
+        t[0] = root_unscaled(t[0], m);
+        t[1] = root_unscaled(t[1], m);
+    }
+    return n;
+}
+
 /* The roots of the side's equation, increasing; their number (0 to 2).
  * *all: the equation holds nowhere or everywhere without roots (a = 0, a
  * cylinder's axis direction): set to 1 when the line is inside throughout. */
@@ -207,10 +265,9 @@ static side_eq cone_equation(const quadric *s, const axial *x)
 static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
 {
     if (!s->cone) {
-        eq->a = vec_length2(x->dp);
         eq->b = 0;
         eq->c = vec_length(x->fp) - s->r0;
-        return eq->a > 0 ? isect_sphere_roots(x->fp, x->dp, s->r0, t) : 0;
+        return cylinder_roots(x->fp, x->dp, s->r0, t, &eq->a);
     }
     *eq = cone_equation(s, x);
     if (eq->a == 0) {
