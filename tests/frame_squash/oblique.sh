@@ -6,8 +6,8 @@
 # shiny floor at y = -1.5, lit from above, from three eyes (oblique, low from
 # the other side, steep), with shadow and mirror rays through the shape.
 # Expected (geometry, not refray's render of the shape): squashed along y,
-# the cylinder, both cones (radius 1 at the bottom, 0.5 or 1.0000001 at the
-# top), the sphere and the disk are the unit disk in y = 0 to s (silhouette
+# the cylinder, the cones (radius 1 at the bottom, 0.5, 1.0000001 or 1 at
+# the top), the sphere and the disk are the unit disk in y = 0 to s (silhouette
 # from every direction, normals vertical to s), the box the square of its
 # section (two triangles); the cylinder along x squashed along x the unit
 # disk across x (`x-cylinder`, turned about x: turned about y after that
@@ -32,6 +32,7 @@ shape() { # NAME: the squashed shape's text up to its transform, "|", the flat o
     case $1 in
     cylinder) echo 'cylinder { from [0, -1, 0] to [0, 1, 0] radius 1|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
     cone) echo 'cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
+    cone-equal) echo 'cone { from [0, -1, 0] to [0, 1, 0] radii 1 1|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
     cone-upright) echo 'cone { from [0, -1, 0] to [0, 1, 0] radii 1 1.0000001|disk { center [0, 0, 0] normal [0, 1, 0] radius 1.0000001' ;;
     sphere) echo 'sphere { center [0, 0, 0] radius 1|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
     disk) echo 'disk { center [0, 0, 0] normal [0, 1, 0] radius 1|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
@@ -42,7 +43,7 @@ shape() { # NAME: the squashed shape's text up to its transform, "|", the flat o
 fail=0
 echo "shape, eye: pixels over 1e-6 of the flat shape at s = S..., * : --no-shortcuts differs"
 for eye in "[2.5, 3.2, -4]" "[-3, 1.2, 2.5]" "[0.6, 7, -1.5]"; do
-    for sh in cylinder cone cone-upright sphere disk box x-cylinder; do
+    for sh in cylinder cone cone-upright cone-equal sphere disk box x-cylinder; do
         t=$(shape $sh)
         squashed=${t%%|*} flat=${t#*|} turn="rotate [0, 30, 0]"
         [ $sh = x-cylinder ] && turn="rotate [30, 0, 0]"
