@@ -848,6 +848,55 @@ START_TEST(test_frame_squashed_oblique)
 }
 END_TEST
 
+/* [NUM-FRAME-5] A shape turned and then squashed (`rotate R scale [1, s,
+ * 1]`: along no axis of its own frame), over a shiny floor, lit, seen
+ * obliquely: to s it is its outline seen along y, flat in y = 0 with
+ * vertical normals (geometry): the sphere turned two ways the unit disk,
+ * the box [-0.7, 0.7] x [-1, 1] x [-0.7, 0.7] turned 30 degrees about z
+ * the rectangle |x| <= 0.7 cos 30 + sin 30, |z| <= 0.7 (two triangles).
+ * The image is the flat shape's to 1e-6 (the world points come back
+ * through the frame), the same with the shortcuts off.  Before (main
+ * 5100e81): from s = 1e-12 on, 48 to 198 of 768 pixels off, at 1e-20 and
+ * past the shape drawn nowhere (tests/frame_squash/turned.sh). */
+START_TEST(test_frame_squashed_turned)
+{
+    static const char *const shapes[] = {
+        "sphere { center [0, 0, 0] radius 1 rotate [0, 0, 30]",
+        "sphere { center [0, 0, 0] radius 1 rotate [40, 0, 25]",
+        "box { from [-0.7, -1, -0.7] to [0.7, 1, 0.7] rotate [0, 0, 30]",
+    };
+    static const double squash[] = {1e-12, 1e-20, 1e-160, 1e-300};
+    const char *lit = "image { width 32 height 24 max_depth 3 }\n"
+                      "camera { eye [2.5, 3.2, -4] look_at [0, 0, 0] fov 45 }\nambient { color 0.2 }\n"
+                      "point_light { position [0.8, 6, 0.5] power 40 falloff none }\n"
+                      "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }\n";
+    const double hx = 0.7 * sqrt(0.75) + 0.5; /* cos 30 = sqrt(3) / 2, sin 30 = 1/2 */
+    char text[1024], what[96];
+    img_buf disk, rect, on, off;
+    snprintf(text, sizeof text, "%sdisk { center [0, 0, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n", lit);
+    render_text(text, 0, &disk);
+    snprintf(text, sizeof text,
+             "%striangle { vertices [%.17g, 0, -0.7] [%.17g, 0, -0.7] [%.17g, 0, 0.7] material { Kd 0.8 } }\n"
+             "triangle { vertices [%.17g, 0, -0.7] [%.17g, 0, 0.7] [%.17g, 0, 0.7] material { Kd 0.8 } }\n",
+             lit, -hx, hx, hx, -hx, hx, -hx);
+    render_text(text, 0, &rect);
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
+        for (size_t j = 0; j < sizeof squash / sizeof squash[0]; j++) {
+            snprintf(text, sizeof text, "%s%s scale [1, %.17g, 1] material { Kd 0.8 } }\n", lit, shapes[i],
+                     squash[j]);
+            render_text(text, 0, &on);
+            render_text(text, 1, &off);
+            snprintf(what, sizeof what, "%.60s, s %g", shapes[i], squash[j]);
+            expect_close_image(&on, i < 2 ? &disk : &rect, 1e-6, what);
+            expect_same_image(&off, &on, 0, what);
+            img_free(&on);
+            img_free(&off);
+        }
+    img_free(&disk);
+    img_free(&rect);
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -862,6 +911,7 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_cone_flat_wide);
     tcase_add_test(tc, test_frame_squashed_shapes);
     tcase_add_test(tc, test_frame_squashed_oblique);
+    tcase_add_test(tc, test_frame_squashed_turned);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);
