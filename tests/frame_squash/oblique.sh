@@ -21,13 +21,7 @@ refray=${1:-build/refray}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 . "$(dirname "$0")/../sweep_mark.sh"
-head() { # EYE
-    echo "image { width 32 height 24 max_depth 3 }"
-    echo "camera { eye $1 look_at [0, 0, 0] fov 45 }"
-    echo "ambient { color 0.2 }"
-    echo "point_light { position [0.8, 6, 0.5] power 40 falloff none }"
-    echo "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }"
-}
+. "$(dirname "$0")/lit.sh"
 shape() { # NAME: the squashed shape's text up to its transform, "|", the flat one's
     case $1 in
     cylinder) echo 'cylinder { from [0, -1, 0] to [0, 1, 0] radius 1|disk { center [0, 0, 0] normal [0, 1, 0] radius 1' ;;
@@ -40,28 +34,23 @@ shape() { # NAME: the squashed shape's text up to its transform, "|", the flat o
     x-cylinder) echo 'cylinder { from [-1, 0, 0] to [1, 0, 0] radius 1|disk { center [0, 0, 0] normal [1, 0, 0] radius 1' ;;
     esac
 }
+turn() { [ "$1" = x-cylinder ] && echo "rotate [30, 0, 0]" || echo "rotate [0, 30, 0]"; }
+flat_of() { # NAME
+    t=$(shape "$1")
+    echo "${t#*|} $(turn "$1") material { Kd 0.8 } }"
+    [ "$1" = box ] && echo "triangle { vertices [-0.7, 0, -0.7] [0.7, 0, 0.7] [-0.7, 0, 0.7] rotate [0, 30, 0] material { Kd 0.8 } }"
+    return 0
+}
+squashed_of() { # NAME S
+    t=$(shape "$1")
+    [ "$1" = x-cylinder ] && scale="[$2, 1, 1]" || scale="[1, $2, 1]"
+    echo "${t%%|*} scale $scale $(turn "$1") material { Kd 0.8 } }"
+}
 fail=0
 echo "shape, eye: pixels over 1e-6 of the flat shape at s = S..., * : --no-shortcuts differs"
 for eye in "[2.5, 3.2, -4]" "[-3, 1.2, 2.5]" "[0.6, 7, -1.5]"; do
     for sh in cylinder cone cone-upright cone-equal sphere disk box x-cylinder; do
-        t=$(shape $sh)
-        squashed=${t%%|*} flat=${t#*|} turn="rotate [0, 30, 0]"
-        [ $sh = x-cylinder ] && turn="rotate [30, 0, 0]"
-        { head "$eye"; echo "$flat $turn material { Kd 0.8 } }"
-          [ $sh = box ] && echo "triangle { vertices [-0.7, 0, -0.7] [0.7, 0, 0.7] [-0.7, 0, 0.7] rotate [0, 30, 0] material { Kd 0.8 } }"
-        } >"$tmp/flat.scene"
-        "$refray" render "$tmp/flat.scene" -q -o "$tmp/flat.pfm" || exit 1
-        line="$sh $eye:"
-        for s in 1e-10 1e-150 1e-155 1e-160 1e-161 3e-161 1e-162 1.5e-162 2e-162 3e-162 5e-162 1e-163 1e-170 1e-300; do
-            scale="[1, $s, 1]"
-            [ $sh = x-cylinder ] && scale="[$s, 1, 1]"
-            { head "$eye"; echo "$squashed scale $scale $turn material { Kd 0.8 } }"; } >"$tmp/x.scene"
-            "$refray" render "$tmp/x.scene" -q -o "$tmp/x.pfm" || exit 1
-            "$refray" render "$tmp/x.scene" -q --no-shortcuts -o "$tmp/xn.pfm" || exit 1
-            n=$("$refray" compare "$tmp/x.pfm" "$tmp/flat.pfm" --tolerance 1e-6 | sed -n 's/^over: *\([0-9]*\).*/\1/p')
-            mark "${n:-0}" "$tmp/x.pfm" "$tmp/xn.pfm"
-        done
-        echo "$line"
+        row $sh "$eye" 1e-10 1e-150 1e-155 1e-160 1e-161 3e-161 1e-162 1.5e-162 2e-162 3e-162 5e-162 1e-163 1e-170 1e-300
     done
 done
 [ $fail = 0 ] && echo "frame squash oblique sweep: ok" || echo "frame squash oblique sweep: FAIL"

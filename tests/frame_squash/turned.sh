@@ -19,13 +19,7 @@ refray=${1:-build/refray}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 . "$(dirname "$0")/../sweep_mark.sh"
-head() { # EYE
-    echo "image { width 32 height 24 max_depth 3 }"
-    echo "camera { eye $1 look_at [0, 0, 0] fov 45 }"
-    echo "ambient { color 0.2 }"
-    echo "point_light { position [0.8, 6, 0.5] power 40 falloff none }"
-    echo "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }"
-}
+. "$(dirname "$0")/lit.sh"
 quad() { # X Z: the rectangle |x| <= X, |z| <= Z in y = 0, two triangles
     echo "triangle { vertices [-$1, 0, -$2] [$1, 0, -$2] [$1, 0, $2] material { Kd 0.8 } }"
     echo "triangle { vertices [-$1, 0, -$2] [$1, 0, $2] [-$1, 0, $2] material { Kd 0.8 } }"
@@ -40,29 +34,20 @@ shape() { # NAME: the shape's text with its turn
     torus) echo 'torus { center [0, 0, 0] axis [0, 1, 0] major 0.8 minor 0.4 rotate [20, 0, 30]' ;;
     esac
 }
-flat() { # NAME
+squashed_of() { echo "$(shape "$1") scale [1, $2, 1] material { Kd 0.8 } }"; }
+flat_of() { # NAME
     case $1 in
     sphere-*) echo 'disk { center [0, 0, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }' ;;
     box) quad 1.1062177826491071 0.7 ;;
     cylinder) quad 1 1 ;;
-    *) echo "$(shape $1) scale [1, 1e-10, 1] material { Kd 0.8 } }" ;;
+    *) squashed_of "$1" 1e-10 ;;
     esac
 }
 fail=0
 echo "shape, eye: pixels over 1e-6 of the flat shape at s = S..., * : --no-shortcuts differs"
 for eye in "[2.5, 3.2, -4]" "[-3, 1.2, 2.5]" "[0.6, 7, -1.5]"; do
     for sh in sphere-z sphere-xz box cylinder cone torus; do
-        { head "$eye"; flat $sh; } >"$tmp/flat.scene"
-        "$refray" render "$tmp/flat.scene" -q -o "$tmp/flat.pfm" || exit 1
-        line="$sh $eye:"
-        for s in 1e-10 1e-12 1e-14 1e-16 1e-20 1e-50 1e-100 1e-150 1e-160 1e-162 1e-200 1e-300; do
-            { head "$eye"; echo "$(shape $sh) scale [1, $s, 1] material { Kd 0.8 } }"; } >"$tmp/x.scene"
-            "$refray" render "$tmp/x.scene" -q -o "$tmp/x.pfm" || exit 1
-            "$refray" render "$tmp/x.scene" -q --no-shortcuts -o "$tmp/xn.pfm" || exit 1
-            n=$("$refray" compare "$tmp/x.pfm" "$tmp/flat.pfm" --tolerance 1e-6 | sed -n 's/^over: *\([0-9]*\).*/\1/p')
-            mark "${n:-0}" "$tmp/x.pfm" "$tmp/xn.pfm"
-        done
-        echo "$line"
+        row $sh "$eye" 1e-10 1e-12 1e-14 1e-16 1e-20 1e-50 1e-100 1e-150 1e-160 1e-162 1e-200 1e-300
     done
 done
 [ $fail = 0 ] && echo "frame squash turned sweep: ok" || echo "frame squash turned sweep: FAIL"
