@@ -772,6 +772,133 @@ START_TEST(test_frame_squashed_shapes)
 }
 END_TEST
 
+/* text rendered with the shortcuts on and off: its image is want's to rel
+ * relative (0: to the float an image file holds), and the two the same to
+ * the bit. */
+static void expect_flat_image(const char *text, const img_buf *want, double rel, const char *what)
+{
+    img_buf on, off;
+    render_text(text, 0, &on);
+    render_text(text, 1, &off);
+    if (rel > 0)
+        expect_close_image(&on, want, rel, what);
+    else
+        expect_same_image(&on, want, 1, what);
+    expect_same_image(&off, &on, 0, what);
+    img_free(&on);
+    img_free(&off);
+}
+
+/* [NUM-FRAME-4] tests/attack13, finding 3.  A closed cylinder squashed
+ * along its axis to s = 1.5e-162 .. 5e-162 and seen obliquely (eye [2.5,
+ * 3.2, -4]) is, to s, the unit disk in y = 0: its silhouette from any
+ * direction, every visible point lit Kd Ia (ambient only), so its image is
+ * the disk's without a frame, bit for bit as a float (geometry, not a
+ * render of the cylinder); the same for the cones (the side slanting and
+ * nearly upright) and the sphere, from 1e-150 to 1e-170.  With a light and
+ * a shiny floor under the shape lifted to y = 1 and turned, the floor's
+ * shadow and mirror rays cross it: the image is the lifted disk's to 1e-6
+ * (the world points come back through the frame).
+ * And without a frame: a cylinder whose axis leans 2e-162 off the vertical,
+ * seen straight down, is the disk of its top cap.  Before (main 5100e81):
+ * the cylinder at 1.5e-162 .. 5e-162 had 6 to 13 of 68 pixels background
+ * (|dp|^2 subnormal made every crossing of the side a graze), its shadow
+ * missed on 3 floor pixels at 1e-160 and 12 at 1e-161, and the leaning one
+ * had 28 holes at 2e-162. */
+START_TEST(test_frame_squashed_oblique)
+{
+    static const char *const shapes[] = {
+        "cylinder { from [0, -1, 0] to [0, 1, 0] radius 1",
+        "cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5",
+        "cone { from [0, -1, 0] to [0, 1, 0] radii 1 1.0000001",
+        "sphere { center [0, 0, 0] radius 1",
+    };
+    static const double squash[] = {1e-150, 1e-160, 1e-161, 1.5e-162, 2e-162, 3e-162, 5e-162, 1e-170};
+    const char *view = "image { width 32 height 24 }\ncamera { eye [2.5, 3.2, -4] look_at [0, 0.6, 0] fov 50 }\n"
+                       "ambient { color 0.2 }\n";
+    const char *lit = "image { width 32 height 24 max_depth 3 }\n"
+                      "camera { eye [2.5, 3.2, -4] look_at [0, 0.6, 0] fov 50 }\nambient { color 0.2 }\n"
+                      "point_light { position [0.8, 6, 0.5] power 40 falloff none }\n"
+                      "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }\n";
+    char text[1024], what[96];
+    img_buf flat, flat_lit, flat_down, on;
+    snprintf(text, sizeof text, "%sdisk { center [0, 0, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n",
+             view);
+    render_text(text, 0, &flat);
+    snprintf(text, sizeof text, "%sdisk { center [0, 1, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n", lit);
+    render_text(text, 0, &flat_lit);
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
+        for (size_t j = 0; j < sizeof squash / sizeof squash[0]; j++) {
+            snprintf(text, sizeof text, "%s%s scale [1, %.17g, 1] material { Kd 0.8 } }\n", view, shapes[i],
+                     squash[j]);
+            snprintf(what, sizeof what, "%.40s, s %g", shapes[i], squash[j]);
+            expect_flat_image(text, &flat, 0, what);
+            snprintf(text, sizeof text, "%s%s scale [1, %.17g, 1] rotate [0, 30, 0] translate [0, 1, 0] "
+                     "material { Kd 0.8 } }\n", lit, shapes[i], squash[j]);
+            snprintf(what, sizeof what, "%.40s, s %g, lit over a floor", shapes[i], squash[j]);
+            expect_flat_image(text, &flat_lit, 1e-6, what);
+        }
+    const char *down = "image { width 16 height 12 }\n"
+                       "camera { orthographic eye [0, 10, 0] look_at [0, 0, 0] up [0, 0, 1] width 3 }\n"
+                       "ambient { color 0.2 }\n";
+    snprintf(text, sizeof text, "%sdisk { center [0, 1, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n",
+             down);
+    render_text(text, 0, &flat_down);
+    snprintf(text, sizeof text, "%scylinder { from [0, -1, 0] to [4e-162, 1, 0] radius 1 material { Kd 0.8 } }\n",
+             down);
+    render_text(text, 0, &on);
+    expect_same_image(&on, &flat_down, 1, "a cylinder leaning 2e-162");
+    img_free(&on);
+    img_free(&flat);
+    img_free(&flat_lit);
+    img_free(&flat_down);
+}
+END_TEST
+
+/* [NUM-FRAME-5] A shape turned and then squashed (`rotate R scale [1, s,
+ * 1]`: along no axis of its own frame), over a shiny floor, lit, seen
+ * obliquely: to s it is its outline seen along y, flat in y = 0 with
+ * vertical normals (geometry): the sphere turned two ways the unit disk,
+ * the box [-0.7, 0.7] x [-1, 1] x [-0.7, 0.7] turned 30 degrees about z
+ * the rectangle |x| <= 0.7 cos 30 + sin 30, |z| <= 0.7 (two triangles).
+ * The image is the flat shape's to 1e-6 (the world points come back
+ * through the frame), the same with the shortcuts off.  Before (main
+ * 5100e81): from s = 1e-12 on, 48 to 198 of 768 pixels off, at 1e-20 and
+ * past the shape drawn nowhere (tests/frame_squash/turned.sh). */
+START_TEST(test_frame_squashed_turned)
+{
+    static const char *const shapes[] = {
+        "sphere { center [0, 0, 0] radius 1 rotate [0, 0, 30]",
+        "sphere { center [0, 0, 0] radius 1 rotate [40, 0, 25]",
+        "box { from [-0.7, -1, -0.7] to [0.7, 1, 0.7] rotate [0, 0, 30]",
+    };
+    static const double squash[] = {1e-12, 1e-20, 1e-160, 1e-300};
+    const char *lit = "image { width 32 height 24 max_depth 3 }\n"
+                      "camera { eye [2.5, 3.2, -4] look_at [0, 0, 0] fov 45 }\nambient { color 0.2 }\n"
+                      "point_light { position [0.8, 6, 0.5] power 40 falloff none }\n"
+                      "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }\n";
+    const double hx = 0.7 * sqrt(0.75) + 0.5; /* cos 30 = sqrt(3) / 2, sin 30 = 1/2 */
+    char text[1024], what[96];
+    img_buf disk, rect;
+    snprintf(text, sizeof text, "%sdisk { center [0, 0, 0] normal [0, 1, 0] radius 1 material { Kd 0.8 } }\n", lit);
+    render_text(text, 0, &disk);
+    snprintf(text, sizeof text,
+             "%striangle { vertices [%.17g, 0, -0.7] [%.17g, 0, -0.7] [%.17g, 0, 0.7] material { Kd 0.8 } }\n"
+             "triangle { vertices [%.17g, 0, -0.7] [%.17g, 0, 0.7] [%.17g, 0, 0.7] material { Kd 0.8 } }\n",
+             lit, -hx, hx, hx, -hx, hx, -hx);
+    render_text(text, 0, &rect);
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
+        for (size_t j = 0; j < sizeof squash / sizeof squash[0]; j++) {
+            snprintf(text, sizeof text, "%s%s scale [1, %.17g, 1] material { Kd 0.8 } }\n", lit, shapes[i],
+                     squash[j]);
+            snprintf(what, sizeof what, "%.60s, s %g", shapes[i], squash[j]);
+            expect_flat_image(text, i < 2 ? &disk : &rect, 1e-6, what);
+        }
+    img_free(&disk);
+    img_free(&rect);
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -785,6 +912,8 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_cone_far_no_false_shadow);
     tcase_add_test(tc, test_cone_flat_wide);
     tcase_add_test(tc, test_frame_squashed_shapes);
+    tcase_add_test(tc, test_frame_squashed_oblique);
+    tcase_add_test(tc, test_frame_squashed_turned);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);

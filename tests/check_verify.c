@@ -286,6 +286,29 @@ START_TEST(test_verify_tolerance_follows_the_view_rounding)
 }
 END_TEST
 
+/* [NUM-TORUS-2] lambert_torus_edge (scenes/analytic) with its orthographic
+ * eye 1e9 times as far on the same line: the oracle's analytic image (not
+ * the renderer's hit test) passes under the view's floor.  Before (main
+ * 5100e81): 2 pixels over, 0.47 relative, the renderer missing the torus
+ * where a ray enters it near the outer equator (the bounding sphere's
+ * chord, rounded to eps |t| at t = 1e10, cut the root off). */
+START_TEST(test_verify_torus_edge_from_afar)
+{
+    scene_model *s = load_scene("image { width 96 height 48 samples 2 max_depth 1 background [0.05, 0.05, 0.1] }\n"
+                                "camera { orthographic eye [0, 874900000, 10000000000] look_at [0, 0, 0] "
+                                "up [0, 1, 0] width 3 }\n"
+                                "ambient { color 0.05 }\n"
+                                "distant_light { direction [0.3, -1, -0.2] power 0.6 }\n"
+                                "distant_light { direction [-1, -0.15, -0.4] power 0.8 }\n"
+                                "torus { center [0, 0, 0] axis [0, 1, 0] major 1 minor 0.3 material { Kd 0.8 } }\n",
+                                "lambert_torus");
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "torus_edge", NULL, &r), 0);
+    ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
+    scene_free(s);
+}
+END_TEST
+
 /* lambert_sphere with the eye at the origin, look_at at [0, 0, %s], the
  * sphere at [0, 0, -%s] and its distant light's red %s; 48 x 36, one
  * sample. */
@@ -1133,6 +1156,7 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_never_passes_on_an_unusable_tolerance);
     tcase_add_test(tc, test_verify_refuses_a_bound_that_passes_a_dim_image);
     tcase_add_test(tc, test_verify_tolerance_follows_the_view_rounding);
+    tcase_add_test(tc, test_verify_torus_edge_from_afar);
     tcase_add_test(tc, test_verify_view_floor_is_capped);
     tcase_add_test(tc, test_verify_view_floor_ignores_look_at);
     tcase_add_test(tc, test_verify_view_floor_follows_the_geometry);

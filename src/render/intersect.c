@@ -751,6 +751,20 @@ static int local_hits(const scene_prim *p, const ray *r, const isect_shear *sh, 
  * runs on the line from the start, t from 0, and its crossings are
  * shifted and scaled back and held to the ray's interval.  A nearer origin
  * is solved as before.
+ *
+ * [NUM-FRAME-5] Each step is taken on the world line, q = (o - T) + t d,
+ * and the start's local point formed anew as L^-1 q, not stepped in the
+ * local frame.  A squash along no local axis (rotate, then scale
+ * [1, s, 1]) gives L^-1 (o - T) coordinates of about 10/s in two or three
+ * local axes at once, each rounded by eps 10/s on its own: off the line,
+ * not along it, and a local step keeps that error (the turned box drew
+ * nothing from s = 1e-16).  In the world, q's rounding is eps |q| across
+ * the squash (no more than the world line's own, [NUM-FRAME-1]) and
+ * eps |q_s| along it, which L^-1 makes eps |q_s| / s along the squashed
+ * axis: the local direction's own, to s |d across| / |d along|, so along
+ * the line; within 2^-44 reach in t (reach is about |q_s| / |d_s| there).
+ * A q near the shape has local coordinates of the shape's size, rounded
+ * to the shape's ulps.
  */
 enum { START_STEPS = 32 };
 
@@ -801,9 +815,10 @@ static int local_ball(const scene_prim *p, vec3 *c, real *rho)
 }
 
 /* Whether the ray starts elsewhere (*s), for a direction past 2^20. */
-static int local_start_of(const scene_prim *p, const ray *local, local_start *s)
+static int local_start_of(const scene_prim *p, const ray *r, const ray *local, local_start *s)
 {
-    vec3 c;
+    const double(*w)[4] = p->frame->to_world.m;
+    vec3 c, q = vec_sub(r->origin, vec_make(w[0][3], w[1][3], w[2][3]));
     real rho, dm = vec_max_abs(local->dir);
     if (!local_ball(p, &c, &rho))
         return 0;
@@ -831,7 +846,8 @@ static int local_start_of(const scene_prim *p, const ray *local, local_start *s)
             break;
         s->on = 1;
         s->t0 += step;
-        s->origin = vec_madd(s->origin, s->dir, step);
+        q = vec_madd(q, r->dir, step * s->scale);
+        s->origin = xform_vector(&p->frame->to_local, q);
     }
     return s->on;
 }
@@ -889,7 +905,7 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
     local.origin = scene_frame_local(p->frame, r->origin);
     local.dir = xform_vector(&p->frame->to_local, r->dir);
     local_start start;
-    start.on = vec_max_abs(local.dir) > 0x1p20 && local_start_of(p, &local, &start);
+    start.on = vec_max_abs(local.dir) > 0x1p20 && local_start_of(p, r, &local, &start);
     int n = start.on ? start_hits(p, &local, &start, out, max, bare) : local_hits(p, &local, NULL, out, max, bare);
     vec3 lo, hi;
     if (n > 0 && isect_part_padded_bounds(p, 0, &lo, &hi)) {

@@ -196,6 +196,72 @@ static side_eq cone_equation(const quadric *s, const axial *x)
     return e;
 }
 
+/* [NUM-FRAME-4] The cylinder's side across its axis: isect_sphere_roots on
+ * dp, scaled by 2^300 while it is below 2^-300 in every coordinate (at
+ * most three times: from 2^-1074 to 2^-174; exact, a power of two; held
+ * first only for Eva, which keeps no bound between a vector and its
+ * coordinates' comparisons).  A line within 2^-300 of the axis's direction
+ * (a kept frame squashing the cylinder along its axis: the local
+ * direction's part along it 1/s times its part across) has a = |dp|^2
+ * below 2^-600, subnormal from 2^-511 on: its bits are lost, and a (R -
+ * |l|) under the square root rounds to 0, a "graze" at the foot 2^530
+ * away, so the cylinder squashed to 1e-160 .. 5e-162 and seen obliquely
+ * had holes (tests/attack13, finding 3; at 1e-170 a was 0 and the line
+ * decided as the axis's direction, inside by c, rightly).  Scaled, the
+ * roots are the same line's in t 2^-300k: scaled back, and held to the
+ * unbounded end SPAN_FAR past 2^1020 (a crossing past CROSSING_MAX is
+ * none).  Any other line is solved as before; dp = 0 too (a = 0). */
+/*@ requires \valid(dp);
+    assigns *dp;
+    ensures \result == 0 || \result == 1; */
+static int across_step(vec3 *dp)
+{
+    if (!(fabs(dp->x) < 0x1p-300 && fabs(dp->y) < 0x1p-300 && fabs(dp->z) < 0x1p-300))
+        return 0;
+    *dp = vec_scale(vec_held(*dp, 0x1p-300), 0x1p300);
+    return 1;
+}
+
+/* One across_step undone on a root: t 2^300, held to SPAN_FAR past 2^1020
+ * (after k steps t 2^300k past 2^1020 at the last: the product grows). */
+/*@ requires \is_finite(t);
+    assigns \nothing;
+    ensures \is_finite(\result); */
+static real root_unscaled(real t)
+{
+    return t > 0x1p720 ? SPAN_FAR : t < -0x1p720 ? -SPAN_FAR : t * 0x1p300;
+}
+
+/*@ requires \valid(t + (0 .. 1)) && \valid(a) && \separated(t + (0 .. 1), a);
+    requires vfinite(fp) && vfinite(dp) && \is_finite(r) && r > 0;
+    assigns t[0 .. 1], *a;
+    ensures 0 <= \result <= 2; */
+static int cylinder_roots(vec3 fp, vec3 dp, real r, real t[2], real *a)
+{
+    int k = across_step(&dp);
+    k += k ? across_step(&dp) : 0;
+    k += k > 1 ? across_step(&dp) : 0;
+    *a = vec_length2(dp);
+    t[0] = t[1] = 0;
+    if (!(*a > 0))
+        return 0;
+    int n = isect_sphere_roots(fp, dp, r, t);
+    /* unrolled for Eva (k <= 3) */
+    if (k > 0) {
+        t[0] = root_unscaled(t[0]);
+        t[1] = root_unscaled(t[1]);
+    }
+    if (k > 1) {
+        t[0] = root_unscaled(t[0]);
+        t[1] = root_unscaled(t[1]);
+    }
+    if (k > 2) {
+        t[0] = root_unscaled(t[0]);
+        t[1] = root_unscaled(t[1]);
+    }
+    return n;
+}
+
 /* The roots of the side's equation, increasing; their number (0 to 2).
  * *all: the equation holds nowhere or everywhere without roots (a = 0, a
  * cylinder's axis direction): set to 1 when the line is inside throughout. */
@@ -207,10 +273,9 @@ static side_eq cone_equation(const quadric *s, const axial *x)
 static int side_roots(const quadric *s, const axial *x, real t[2], side_eq *eq)
 {
     if (!s->cone) {
-        eq->a = vec_length2(x->dp);
         eq->b = 0;
         eq->c = vec_length(x->fp) - s->r0;
-        return eq->a > 0 ? isect_sphere_roots(x->fp, x->dp, s->r0, t) : 0;
+        return cylinder_roots(x->fp, x->dp, s->r0, t, &eq->a);
     }
     *eq = cone_equation(s, x);
     if (eq->a == 0) {

@@ -315,8 +315,14 @@ int isect_torus_hits(vec3 center, vec3 axis, real major, real minor, const ray *
     /* The torus touches its bounding sphere along the outer equator: a ray
      * entering there has a root at the chord's very end, which rounding may
      * put just outside.  Outside the sphere the quartic is positive (no
-     * point of the torus is there), so a margin adds no root. */
-    half += 0x1p-20;
+     * point of the torus is there), so a margin adds no root.
+     * [NUM-TORUS-2] From a far origin the chord's ends carry the rounding
+     * of t, a few eps |t|: the margin is 2^-44 |tm| dl / scale (256 eps |tm|
+     * in the chord's units) where that is past 2^-20 (a torus seen from
+     * 2^24 sizes away; nearer, 2^-20 as before), and at most 1. */
+    real far;
+    isect_quotient(fabs(tm) * dl, 0x1p44 * scale, &far);
+    half += far > 1 ? 1 : far > 0x1p-20 ? far : 0x1p-20;
     int n = poly_roots(c, DEGREE, -half, half, u), found = 0;
     hit h[ROOTS_MAX] = {0};
     /*@ loop invariant 0 <= i <= n && 0 <= found <= i;

@@ -58,7 +58,7 @@ ISECT_FCT=ray_at,nearest,isect_cylinder,isect_cone,isect_torus,isect_quotient,he
 # the entry points and the helpers they call (their assigns clauses);
 # torus_distance and torus_quartic since round 9, whose calls of hypot
 # have their bounds from in_range (spec/proofs.md, "Round 9").
-SHAPES_FCT=held,vec_held,in_range,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,cone_origin,discriminant,cone_equation,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_distance,torus_polish,torus_quartic,isect_torus_hits
+SHAPES_FCT=held,vec_held,in_range,axis_length,axial_of,slope_step,cone_slope,far_quotient,box_held,near_shape,cone_origin,discriminant,cone_equation,across_step,root_unscaled,cylinder_roots,side_roots,side_span,slab,solid_crossings,open_crossings,side_refine,side_normal,crossing_hit,quadric_hits,isect_cylinder_hits,isect_cone_hits,poly_eval,poly_derive,monotone_root,poly_roots,torus_distance,torus_polish,torus_quartic,isect_torus_hits
 
 # What the shapes' Eva runs (eva_quadric.c) use by contract: proved by the
 # quotient and sphere runs and eva_vec.c.

@@ -1,0 +1,29 @@
+# Sourced by oblique.sh and turned.sh (after sweep_mark.sh, with refray and
+# tmp set): the lit setting over a shiny floor at y = -1.5 seen from EYE,
+# and one row of a sweep.
+head() { # EYE
+    echo "image { width 32 height 24 max_depth 3 }"
+    echo "camera { eye $1 look_at [0, 0, 0] fov 45 }"
+    echo "ambient { color 0.2 }"
+    echo "point_light { position [0.8, 6, 0.5] power 40 falloff none }"
+    echo "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }"
+}
+# row NAME EYE S...: prints "NAME EYE:" and, for each S, the pixels of the
+# scene `squashed_of NAME S` writes over 1e-6 relative of `flat_of NAME`'s
+# (refray compare --tolerance), starred where --no-shortcuts differs by a
+# byte (mark).  The caller defines squashed_of and flat_of.
+row() {
+    name=$1 eye=$2
+    shift 2
+    { head "$eye"; flat_of "$name"; } >"$tmp/flat.scene"
+    "$refray" render "$tmp/flat.scene" -q -o "$tmp/flat.pfm" || exit 1
+    line="$name $eye:"
+    for s in "$@"; do
+        { head "$eye"; squashed_of "$name" "$s"; } >"$tmp/x.scene"
+        "$refray" render "$tmp/x.scene" -q -o "$tmp/x.pfm" || exit 1
+        "$refray" render "$tmp/x.scene" -q --no-shortcuts -o "$tmp/xn.pfm" || exit 1
+        n=$("$refray" compare "$tmp/x.pfm" "$tmp/flat.pfm" --tolerance 1e-6 | sed -n 's/^over: *\([0-9]*\).*/\1/p')
+        mark "${n:-0}" "$tmp/x.pfm" "$tmp/xn.pfm"
+    done
+    echo "$line"
+}
