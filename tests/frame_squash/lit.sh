@@ -1,6 +1,10 @@
-# Sourced by oblique.sh and turned.sh (after sweep_mark.sh, with refray and
-# tmp set): the lit setting over a shiny floor at y = -1.5 seen from EYE,
-# and one row of a sweep.
+# Sourced by oblique.sh and turned.sh: refray (the caller's $1), a
+# temporary folder, mark (sweep_mark.sh), the lit setting over a shiny floor
+# at y = -1.5 seen from EYE, and one row of a sweep.
+refray=${1:-build/refray}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/../sweep_mark.sh"
 head() { # EYE
     echo "image { width 32 height 24 max_depth 3 }"
     echo "camera { eye $1 look_at [0, 0, 0] fov 45 }"

@@ -17,10 +17,6 @@
 # with --no-shortcuts byte for byte.  Exits 1 on any departure.
 #   sh tests/frame_squash/oblique.sh [REFRAY]
 set -u
-refray=${1:-build/refray}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/../sweep_mark.sh"
 . "$(dirname "$0")/lit.sh"
 shape() { # NAME: the squashed shape's text up to its transform, "|", the flat one's
     case $1 in

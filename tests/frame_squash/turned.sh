@@ -15,10 +15,6 @@
 # from 1e-10 to 1e-300.  Exits 1 on any departure.
 #   sh tests/frame_squash/turned.sh [REFRAY]
 set -u
-refray=${1:-build/refray}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/../sweep_mark.sh"
 . "$(dirname "$0")/lit.sh"
 quad() { # X Z: the rectangle |x| <= X, |z| <= Z in y = 0, two triangles
     echo "triangle { vertices [-$1, 0, -$2] [$1, 0, -$2] [$1, 0, $2] material { Kd 0.8 } }"
