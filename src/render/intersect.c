@@ -1076,17 +1076,40 @@ static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh
     return hot_triangle(g, code >> 2, r, sh, out);
 }
 
+/* Whether the ray leaves behind both planes of the box [lo, hi] (g: lo,
+ * then hi) on axis k: its origin at or past both (lo <= hi or not) and its
+ * direction away from them.  Then box_slabs returns 0: say d_k > 0 and
+ * o_k >= l, h; l - o and h - o are <= 0 (a rounded difference keeps the
+ * sign), so both of isect_quotient's results are <= 0 (a quotient of a
+ * number <= 0 by d_k > 0 is -m, +0 or -2^1020), the exit tt[1] falls to
+ * at most 0 on that axis and, with tmin >= 0 ([NUM-FINITE-1], tested by
+ * the caller), `tt[1] <= r->tmin` returns 0 there, unless an earlier axis
+ * returned 0 first; d_k < 0 with o_k <= l, h is the mirror image. */
+static inline int box_axis_behind(real o, real d, real l, real h)
+{
+    if (d > 0.0)
+        return o >= l && o >= h;
+    return d < 0.0 && o <= l && o <= h;
+}
+
 /* A hot record's box, counted: what box_hits(lo, hi, r, out, max, 1)
  * returns for max >= 2 (box_slabs' one or two crossings, each counted when
  * in the interval), with the corners read where the record holds them and
  * no t stored.  Called through hot_hits, the two corners went by value
  * through the stack for each of the millions of box tests of a room's
  * shadow rays (nearly all misses).  Out of line for the reason of
- * hot_triangle: inlined into the walk it would grow its loop. */
+ * hot_triangle: inlined into the walk it would grow its loop.  A shadow
+ * ray leaving the box it starts on (room.scene's floor and walls) is told
+ * by box_axis_behind without box_slabs' divisions; a ray with tmin < 0 or
+ * NaN, which no tracer makes, goes to box_slabs. */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
 {
     real tt[2];
     int axis[2];
+    if (r->tmin >= 0.0 &&
+        (box_axis_behind(r->origin.x, r->dir.x, g[0], g[3]) || box_axis_behind(r->origin.y, r->dir.y, g[1], g[4]) ||
+         box_axis_behind(r->origin.z, r->dir.z, g[2], g[5])))
+        return 0;
     if (!box_slabs(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, tt, axis))
         return 0;
     return in_interval(r, tt[0]) + (tt[0] != tt[1] && in_interval(r, tt[1]));
