@@ -685,6 +685,56 @@ START_TEST(test_isect_box_tmin_tmax)
 }
 END_TEST
 
+/* A box's hot record counts what the box itself counts (isect_part_crossings,
+ * through box_hits), also where hot_box_crossings tells a ray that leaves
+ * an axis's two planes behind without box_slabs.  By hand on [0, 1]^3: from
+ * the top face's middle going up, nothing (the start, t = 0, is outside
+ * (0, inf)); going down, the bottom at t = 1; from y = 2 down, t = 1 and
+ * 2; from y = 1.5 up with tmin = -2, t = -1.5 and -0.5 (the quick answer
+ * holds only for tmin >= 0).  Then 20000 rays whose origins sit on a
+ * box's planes, an ulp off them or anywhere, with direction components 0,
+ * -0 or random, and intervals starting at 0, -0, past 0 or below. */
+START_TEST(test_isect_hot_box_crossings_match_the_box)
+{
+    real g[ISECT_HOT_REALS];
+    int reals;
+    scene_prim bx = prim_box(vec_make(0, 0, 0), vec_make(1, 1, 1));
+    int code = isect_hot_make(&bx, 0, g, &reals);
+    ck_assert_int_eq(ISECT_HOT_KIND(code), ISECT_HOT_BOX);
+    ray r = make_ray(vec_make(0.5, 1, 0.5), vec_make(0, 1, 0));
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 0);
+    r.dir = vec_make(0, -1, 0);
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    r.origin.y = 2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 2);
+    r = make_ray(vec_make(0.5, 1.5, 0.5), vec_make(0, 1, 0));
+    r.tmin = -2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 2);
+    rng s = {91, 0};
+    for (int i = 0; i < 20000; i++) {
+        double lo[3], hi[3], o[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            lo[k] = 4 * rng_uniform(&s) - 2;
+            hi[k] = lo[k] + 0.01 + 2 * rng_uniform(&s);
+            double pick = rng_uniform(&s), c = pick < 0.5 ? (pick < 0.25 ? lo[k] : hi[k]) : 6 * rng_uniform(&s) - 3;
+            double side = rng_uniform(&s);
+            o[k] = side < 0.2 ? nextafter(c, -HUGE_VAL) : side < 0.4 ? nextafter(c, HUGE_VAL) : c;
+            double w = rng_uniform(&s);
+            d[k] = w < 0.15 ? 0.0 : w < 0.25 ? -0.0 : 2 * rng_uniform(&s) - 1;
+        }
+        if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+            d[i % 3] = 1;
+        bx = prim_box(vec_make(lo[0], lo[1], lo[2]), vec_make(hi[0], hi[1], hi[2]));
+        code = isect_hot_make(&bx, 0, g, &reals);
+        r = make_ray(vec_make(o[0], o[1], o[2]), vec_make(d[0], d[1], d[2]));
+        double w = rng_uniform(&s);
+        r.tmin = w < 0.3 ? 0.0 : w < 0.4 ? -0.0 : w < 0.8 ? 1e-3 * rng_uniform(&s) : -rng_uniform(&s);
+        r.tmax = rng_uniform(&s) < 0.5 ? HUGE_VAL : r.tmin + 4 * rng_uniform(&s);
+        ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+    }
+}
+END_TEST
+
 /* ---- transformed primitives ---- */
 
 START_TEST(test_isect_prim_ellipsoid)
@@ -1113,6 +1163,7 @@ Suite *suite_intersect(void)
     tcase_add_test(box, test_isect_box_axis_parallel_on_slab_plane);
     tcase_add_test(box, test_isect_box_edge_touch_is_one_hit);
     tcase_add_test(box, test_isect_box_tmin_tmax);
+    tcase_add_test(box, test_isect_hot_box_crossings_match_the_box);
     suite_add_tcase(s, box);
     TCase *xf = tcase_create("transformed");
     tcase_add_test(xf, test_isect_prim_ellipsoid);
