@@ -686,14 +686,19 @@ START_TEST(test_isect_box_tmin_tmax)
 END_TEST
 
 /* A box's hot record counts what the box itself counts (isect_part_crossings,
- * through box_hits), also where hot_box_crossings tells a ray that leaves
- * an axis's two planes behind without box_slabs.  By hand on [0, 1]^3: from
+ * through box_hits), also where hot_box_crossings finds the segment apart
+ * from one of the box's slabs without box_slabs.  By hand on [0, 1]^3: from
  * the top face's middle going up, nothing (the start, t = 0, is outside
  * (0, inf)); going down, the bottom at t = 1; from y = 2 down, t = 1 and
  * 2; from y = 1.5 up with tmin = -2, t = -1.5 and -0.5 (the quick answer
- * holds only for tmin >= 0).  Then 20000 rays whose origins sit on a
- * box's planes, an ulp off them or anywhere, with direction components 0,
- * -0 or random, and intervals starting at 0, -0, past 0 or below. */
+ * holds only for tmin >= 0); from y = -2 up, tmax at the entry t = 2
+ * (open: nothing) and an ulp past it (the entry); a ray along y at 2^-1021
+ * whose crossings are held at 2^1020, inside tmax = 1.5 2^1020.  Then 20000 rays from
+ * below a box (or above it, going down) with tmax an ulp either side of the rounded entry (where
+ * tmax d_y rounded can equal lo_y - o_y though the entry is inside), and
+ * 20000 rays whose origins sit on a box's planes, an ulp off them or
+ * anywhere, with direction components 0, -0 or random, and intervals
+ * starting at 0, -0, past 0 or below. */
 START_TEST(test_isect_hot_box_crossings_match_the_box)
 {
     real g[ISECT_HOT_REALS];
@@ -710,7 +715,33 @@ START_TEST(test_isect_hot_box_crossings_match_the_box)
     r = make_ray(vec_make(0.5, 1.5, 0.5), vec_make(0, 1, 0));
     r.tmin = -2;
     ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 2);
+    r = make_ray(vec_make(0.5, -2, 0.5), vec_make(0, 1, 0));
+    r.tmax = 2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 0);
+    r.tmax = nextafter(2.0, 3.0);
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    /* Along y at 2^-1021 from y = -1: both crossings (2^1021, 2^1022) are
+     * held at 2^1020 (isect_quotient), one crossing inside tmax = 1.5 2^1020,
+     * though tmax d_y rounded (0.75) lies short of the box. */
+    r = make_ray(vec_make(0.5, -1, 0.5), vec_make(0, 0x1p-1021, 0));
+    r.tmax = 0x1.8p1020;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    ck_assert_int_eq(isect_part_crossings(&bx, 0, &r), 1);
     rng s = {91, 0};
+    for (int i = 0; i < 20000; i++) {
+        double l = 4 * rng_uniform(&s) - 2, dy = 0.01 + rng_uniform(&s);
+        bx = prim_box(vec_make(-1, l, -1), vec_make(1, l + 1, 1));
+        code = isect_hot_make(&bx, 0, g, &reals);
+        /* Half of them from above, down. */
+        double face = i % 2 ? l + 1 : l, away = (i % 2 ? 1 : -1) * (3 * rng_uniform(&s) + 1e-3);
+        r = make_ray(vec_make(0.5, face + away, 0.5), vec_make(0, i % 2 ? -dy : dy, 0));
+        double entry = (face - r.origin.y) / r.dir.y;
+        double ends[3] = {nextafter(entry, -HUGE_VAL), entry, nextafter(entry, HUGE_VAL)};
+        for (int k = 0; k < 3; k++) {
+            r.tmax = ends[k];
+            ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+        }
+    }
     for (int i = 0; i < 20000; i++) {
         double lo[3], hi[3], o[3], d[3];
         for (int k = 0; k < 3; k++) {
