@@ -685,6 +685,19 @@ START_TEST(test_isect_box_tmin_tmax)
 }
 END_TEST
 
+/* The hot record's nearest hit (isect_hot_hit, the nearest walk's) is
+ * isect_box's: whether it hits, its t and the ray's tmax after. */
+static void assert_hot_box_hit_matches(int code, const real *g, const scene_prim *bx, const ray *r)
+{
+    ray r1 = *r, r2 = *r;
+    hit h1, h2;
+    int met = isect_hot_hit(code, g, &r1, &h1);
+    ck_assert_int_eq(met, isect_box(bx->u.box.lo, bx->u.box.hi, &r2, &h2));
+    ck_assert(r1.tmax == r2.tmax);
+    if (met)
+        ck_assert(h1.t == h2.t);
+}
+
 /* A box's hot record counts what the box itself counts (isect_part_crossings,
  * through box_hits), also where hot_box_crossings finds the segment apart
  * from one of the box's slabs without box_slabs.  By hand on [0, 1]^3: from
@@ -698,7 +711,8 @@ END_TEST
  * tmax d_y rounded can equal lo_y - o_y though the entry is inside), and
  * 20000 rays whose origins sit on a box's planes, an ulp off them or
  * anywhere, with direction components 0, -0 or random, and intervals
- * starting at 0, -0, past 0 or below. */
+ * starting at 0, -0, past 0 or below; for the random ones the nearest hit
+ * (isect_hot_hit) too. */
 START_TEST(test_isect_hot_box_crossings_match_the_box)
 {
     real g[ISECT_HOT_REALS];
@@ -740,6 +754,7 @@ START_TEST(test_isect_hot_box_crossings_match_the_box)
         for (int k = 0; k < 3; k++) {
             r.tmax = ends[k];
             ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+            assert_hot_box_hit_matches(code, g, &bx, &r);
         }
     }
     for (int i = 0; i < 20000; i++) {
@@ -762,6 +777,7 @@ START_TEST(test_isect_hot_box_crossings_match_the_box)
         r.tmin = w < 0.3 ? 0.0 : w < 0.4 ? -0.0 : w < 0.8 ? 1e-3 * rng_uniform(&s) : -rng_uniform(&s);
         r.tmax = rng_uniform(&s) < 0.5 ? HUGE_VAL : r.tmin + 4 * rng_uniform(&s);
         ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+        assert_hot_box_hit_matches(code, g, &bx, &r);
     }
 }
 END_TEST

@@ -1104,6 +1104,18 @@ static inline int box_axis_apart(real o, real d, real l, real h, real end)
     return d < 0.0 && ((a >= 0.0 && b >= 0.0) || (a < p && b < p));
 }
 
+/* Whether the segment lies apart from one of the box's slabs (g: lo, then
+ * hi): box_slabs would return 0.  A ray with tmin < 0 or NaN, which no
+ * tracer makes, is left to box_slabs. */
+static inline int box_segment_apart(const real *g, const ray *r)
+{
+    real end = r->tmax <= 0x1p1020 ? r->tmax : HUGE_VAL;
+    return r->tmin >= 0.0 &&
+           (box_axis_apart(r->origin.x, r->dir.x, g[0], g[3], end) ||
+            box_axis_apart(r->origin.y, r->dir.y, g[1], g[4], end) ||
+            box_axis_apart(r->origin.z, r->dir.z, g[2], g[5], end));
+}
+
 /* A hot record's box, counted: what box_hits(lo, hi, r, out, max, 1)
  * returns for max >= 2 (box_slabs' one or two crossings, each counted when
  * in the interval), with the corners read where the record holds them and
@@ -1111,17 +1123,12 @@ static inline int box_axis_apart(real o, real d, real l, real h, real end)
  * through the stack for each of the millions of box tests of a room's
  * shadow rays (nearly all misses).  Out of line for the reason of
  * hot_triangle: inlined into the walk it would grow its loop.  A segment
- * apart from one of the box's slabs (box_axis_apart) counts 0 at once; a
- * ray with tmin < 0 or NaN, which no tracer makes, goes to box_slabs. */
+ * apart from one of the box's slabs counts 0 at once. */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
 {
     real tt[2];
     int axis[2];
-    real end = r->tmax <= 0x1p1020 ? r->tmax : HUGE_VAL;
-    if (r->tmin >= 0.0 &&
-        (box_axis_apart(r->origin.x, r->dir.x, g[0], g[3], end) ||
-         box_axis_apart(r->origin.y, r->dir.y, g[1], g[4], end) ||
-         box_axis_apart(r->origin.z, r->dir.z, g[2], g[5], end)))
+    if (box_segment_apart(g, r))
         return 0;
     if (!box_slabs(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, tt, axis))
         return 0;
@@ -1163,7 +1170,7 @@ int isect_hot_hit(int code, const real *g, ray *r, hit *h)
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
         return nearest(sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, h, 1, 0), r, h);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
-        return nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
+        return !box_segment_apart(g, r) && nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
     return -1;
 }
 
