@@ -1170,7 +1170,7 @@ int isect_hot_hit(int code, const real *g, ray *r, hit *h)
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
         return nearest(sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, h, 1, 0), r, h);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
-        return !box_segment_apart(g, r) && nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
+        return nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
     return -1;
 }
 
