@@ -685,6 +685,103 @@ START_TEST(test_isect_box_tmin_tmax)
 }
 END_TEST
 
+/* The hot record's nearest hit (isect_hot_hit, the nearest walk's) is
+ * isect_box's: whether it hits, its t and the ray's tmax after. */
+static void assert_hot_box_hit_matches(int code, const real *g, const scene_prim *bx, const ray *r)
+{
+    ray r1 = *r, r2 = *r;
+    hit h1, h2;
+    int met = isect_hot_hit(code, g, &r1, &h1);
+    ck_assert_int_eq(met, isect_box(bx->u.box.lo, bx->u.box.hi, &r2, &h2));
+    ck_assert(r1.tmax == r2.tmax);
+    if (met)
+        ck_assert(h1.t == h2.t);
+}
+
+/* A box's hot record counts what the box itself counts (isect_part_crossings,
+ * through box_hits), also where hot_box_crossings finds the segment apart
+ * from one of the box's slabs without box_slabs.  By hand on [0, 1]^3: from
+ * the top face's middle going up, nothing (the start, t = 0, is outside
+ * (0, inf)); going down, the bottom at t = 1; from y = 2 down, t = 1 and
+ * 2; from y = 1.5 up with tmin = -2, t = -1.5 and -0.5 (the quick answer
+ * holds only for tmin >= 0); from y = -2 up, tmax at the entry t = 2
+ * (open: nothing) and an ulp past it (the entry); a ray along y at 2^-1021
+ * whose crossings are held at 2^1020, inside tmax = 1.5 2^1020.  Then 20000 rays from
+ * below a box (or above it, going down) with tmax an ulp either side of the rounded entry (where
+ * tmax d_y rounded can equal lo_y - o_y though the entry is inside), and
+ * 20000 rays whose origins sit on a box's planes, an ulp off them or
+ * anywhere, with direction components 0, -0 or random, and intervals
+ * starting at 0, -0, past 0 or below; for the random ones the nearest hit
+ * (isect_hot_hit) too. */
+START_TEST(test_isect_hot_box_crossings_match_the_box)
+{
+    real g[ISECT_HOT_REALS];
+    int reals;
+    scene_prim bx = prim_box(vec_make(0, 0, 0), vec_make(1, 1, 1));
+    int code = isect_hot_make(&bx, 0, g, &reals);
+    ck_assert_int_eq(ISECT_HOT_KIND(code), ISECT_HOT_BOX);
+    ray r = make_ray(vec_make(0.5, 1, 0.5), vec_make(0, 1, 0));
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 0);
+    r.dir = vec_make(0, -1, 0);
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    r.origin.y = 2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 2);
+    r = make_ray(vec_make(0.5, 1.5, 0.5), vec_make(0, 1, 0));
+    r.tmin = -2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 2);
+    r = make_ray(vec_make(0.5, -2, 0.5), vec_make(0, 1, 0));
+    r.tmax = 2;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 0);
+    r.tmax = nextafter(2.0, 3.0);
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    /* Along y at 2^-1021 from y = -1: both crossings (2^1021, 2^1022) are
+     * held at 2^1020 (isect_quotient), one crossing inside tmax = 1.5 2^1020,
+     * though tmax d_y rounded (0.75) lies short of the box. */
+    r = make_ray(vec_make(0.5, -1, 0.5), vec_make(0, 0x1p-1021, 0));
+    r.tmax = 0x1.8p1020;
+    ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), 1);
+    ck_assert_int_eq(isect_part_crossings(&bx, 0, &r), 1);
+    rng s = {91, 0};
+    for (int i = 0; i < 20000; i++) {
+        double l = 4 * rng_uniform(&s) - 2, dy = 0.01 + rng_uniform(&s);
+        bx = prim_box(vec_make(-1, l, -1), vec_make(1, l + 1, 1));
+        code = isect_hot_make(&bx, 0, g, &reals);
+        /* Half of them from above, down. */
+        double face = i % 2 ? l + 1 : l, away = (i % 2 ? 1 : -1) * (3 * rng_uniform(&s) + 1e-3);
+        r = make_ray(vec_make(0.5, face + away, 0.5), vec_make(0, i % 2 ? -dy : dy, 0));
+        double entry = (face - r.origin.y) / r.dir.y;
+        double ends[3] = {nextafter(entry, -HUGE_VAL), entry, nextafter(entry, HUGE_VAL)};
+        for (int k = 0; k < 3; k++) {
+            r.tmax = ends[k];
+            ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+            assert_hot_box_hit_matches(code, g, &bx, &r);
+        }
+    }
+    for (int i = 0; i < 20000; i++) {
+        double lo[3], hi[3], o[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            lo[k] = 4 * rng_uniform(&s) - 2;
+            hi[k] = lo[k] + 0.01 + 2 * rng_uniform(&s);
+            double pick = rng_uniform(&s), c = pick < 0.5 ? (pick < 0.25 ? lo[k] : hi[k]) : 6 * rng_uniform(&s) - 3;
+            double side = rng_uniform(&s);
+            o[k] = side < 0.2 ? nextafter(c, -HUGE_VAL) : side < 0.4 ? nextafter(c, HUGE_VAL) : c;
+            double w = rng_uniform(&s);
+            d[k] = w < 0.15 ? 0.0 : w < 0.25 ? -0.0 : 2 * rng_uniform(&s) - 1;
+        }
+        if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+            d[i % 3] = 1;
+        bx = prim_box(vec_make(lo[0], lo[1], lo[2]), vec_make(hi[0], hi[1], hi[2]));
+        code = isect_hot_make(&bx, 0, g, &reals);
+        r = make_ray(vec_make(o[0], o[1], o[2]), vec_make(d[0], d[1], d[2]));
+        double w = rng_uniform(&s);
+        r.tmin = w < 0.3 ? 0.0 : w < 0.4 ? -0.0 : w < 0.8 ? 1e-3 * rng_uniform(&s) : -rng_uniform(&s);
+        r.tmax = rng_uniform(&s) < 0.5 ? HUGE_VAL : r.tmin + 4 * rng_uniform(&s);
+        ck_assert_int_eq(isect_hot_crossings(code, g, &r, NULL), isect_part_crossings(&bx, 0, &r));
+        assert_hot_box_hit_matches(code, g, &bx, &r);
+    }
+}
+END_TEST
+
 /* ---- transformed primitives ---- */
 
 START_TEST(test_isect_prim_ellipsoid)
@@ -1113,6 +1210,7 @@ Suite *suite_intersect(void)
     tcase_add_test(box, test_isect_box_axis_parallel_on_slab_plane);
     tcase_add_test(box, test_isect_box_edge_touch_is_one_hit);
     tcase_add_test(box, test_isect_box_tmin_tmax);
+    tcase_add_test(box, test_isect_hot_box_crossings_match_the_box);
     suite_add_tcase(s, box);
     TCase *xf = tcase_create("transformed");
     tcase_add_test(xf, test_isect_prim_ellipsoid);

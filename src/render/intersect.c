@@ -1092,17 +1092,60 @@ static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh
     return hot_triangle(g, code >> 2, r, sh, out);
 }
 
+/* Whether the ray's segment lies wholly on one side of the box's slab
+ * [lo, hi] (g: lo, then hi; lo <= hi or not) on one axis, so that
+ * box_slabs returns 0 there (or at an earlier axis).  Say d > 0 (d < 0 is
+ * the mirror image) and a = l - o, b = h - o, rounded as box_slabs rounds
+ * them (a rounded difference keeps its sign):
+ * - behind: a, b <= 0.  Both of isect_quotient's results are then <= 0 (a
+ *   number <= 0 over d > 0 gives -m, +0 or -2^1020), so the exit tt[1]
+ *   falls to at most 0 at this axis, and `tt[1] <= r->tmin` returns 0 for
+ *   tmin >= 0 ([NUM-FINITE-1]; the caller tests it).
+ * - beyond: a, b > p = end d rounded, end = tmax <= 2^1020.  Rounding to
+ *   nearest moves end d by at most half the gap between p and the double
+ *   next to it on the side of end d, so a > p gives a > end d exactly,
+ *   a / d > end, and the quotient, rounded (monotone) or held at 2^1020,
+ *   is >= end; so the entry tt[0] rises to at least tmax here and
+ *   `tt[0] >= r->tmax` returns 0.  With end = +Inf (tmax past 2^1020, where
+ *   a held quotient could fall short of it) p is +Inf and nothing is
+ *   beyond.
+ * A shadow ray leaving the box it starts on (room.scene's floor and walls)
+ * is behind, one ending at a light below the ceiling is short of the
+ * ceiling's box: told without box_slabs' divisions. */
+static inline int box_axis_apart(real o, real d, real l, real h, real end)
+{
+    real a = l - o, b = h - o, p = end * d;
+    if (d > 0.0)
+        return (a <= 0.0 && b <= 0.0) || (a > p && b > p);
+    return d < 0.0 && ((a >= 0.0 && b >= 0.0) || (a < p && b < p));
+}
+
+/* Whether the segment lies apart from one of the box's slabs (g: lo, then
+ * hi): box_slabs would return 0.  A ray with tmin < 0 or NaN, which no
+ * tracer makes, is left to box_slabs. */
+static inline int box_segment_apart(const real *g, const ray *r)
+{
+    real end = r->tmax <= 0x1p1020 ? r->tmax : HUGE_VAL;
+    return r->tmin >= 0.0 &&
+           (box_axis_apart(r->origin.x, r->dir.x, g[0], g[3], end) ||
+            box_axis_apart(r->origin.y, r->dir.y, g[1], g[4], end) ||
+            box_axis_apart(r->origin.z, r->dir.z, g[2], g[5], end));
+}
+
 /* A hot record's box, counted: what box_hits(lo, hi, r, out, max, 1)
  * returns for max >= 2 (box_slabs' one or two crossings, each counted when
  * in the interval), with the corners read where the record holds them and
  * no t stored.  Called through hot_hits, the two corners went by value
  * through the stack for each of the millions of box tests of a room's
  * shadow rays (nearly all misses).  Out of line for the reason of
- * hot_triangle: inlined into the walk it would grow its loop. */
+ * hot_triangle: inlined into the walk it would grow its loop.  A segment
+ * apart from one of the box's slabs counts 0 at once. */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
 {
     real tt[2];
     int axis[2];
+    if (box_segment_apart(g, r))
+        return 0;
     if (!box_slabs(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, tt, axis))
         return 0;
     return in_interval(r, tt[0]) + (tt[0] != tt[1] && in_interval(r, tt[1]));
