@@ -5,7 +5,7 @@
 # scale ([KIT-TOL-1]), within [VERIFY-UNBOUNDED-4]'s 2^-14 of the peak
 # (0.066).  The same absolute judges PFM and EXR, which hold those values:
 # a renderer writing every value below 0.031 as 0 (87 % of the pixels
-# black) passes conform --format pfm, and kit_check.c.  No manifest edited.
+# black) passes conform --format pfm, kit_check.c and compare --manifest.  No manifest edited.
 # Exit 1 when the black picture passes either judge.
 #   sh tests/attack15/conform_hdr_dark.sh
 set -u
@@ -27,4 +27,7 @@ E=$D/kit/scenes/plane_point_hdr
 nice ${KIT_CHECK:-build/kit_check} $E/plane_point_hdr.exact.pfm $E/plane_point_hdr.mask.pgm "$rel" "$abs" $D/dark.pfm; k=$?
 echo "kit_check exit $k"
 [ $k = 0 ] && bad=1
+nice $R compare $D/dark.pfm --manifest $D/kit/manifest.json --scene plane_point_hdr > $D/cmp.txt; c=$?
+echo "compare --manifest exit $c: $(grep "^over\|pixels over" $D/cmp.txt | head -1)"
+[ $c = 0 ] && bad=1
 exit $bad
