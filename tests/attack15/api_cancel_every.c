@@ -4,8 +4,9 @@
  * the second region must be the fresh renderer's, byte for byte, and so
  * must a third, smaller region asked after it ([EMBED-API-3]: a stop ends
  * the region, not the renderer).  Exit 1 when one differs.
- *   cc -std=c99 -Iinclude tests/attack15/api_cancel_every.c build/lib/librefray.a \
- *      $(pkg-config --libs libpng OpenEXR) -lm -o /tmp/ace && /tmp/ace */
+ *   nice make -j2 build/lib/librefray.a
+ *   cc -std=c99 -Iinclude tests/attack15/api_cancel_every.c build/lib/librefray.a -ljansson \
+ *      $(pkg-config --libs OpenEXR libpng) -lm -lpthread -lstdc++ -o /tmp/ace && /tmp/ace */
 #include <stdio.h>
 #include <string.h>
 #include <refray.h>

@@ -9,7 +9,7 @@
 # Exit 1 when the black picture passes either judge.
 #   sh tests/attack15/conform_hdr_dark.sh
 set -u
-R=$(pwd)/${B:-build/refray}
+R=${B:-$(pwd)/build/refray}
 D=$(mktemp -d)
 trap 'rm -rf "$D"' EXIT
 cc -std=c99 -O2 -o $D/clip tests/attack13/pfmclip.c || exit 2
