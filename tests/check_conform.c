@@ -561,9 +561,10 @@ static void write_raw_pfm(const char *path, const img_buf *img)
     ck_assert_int_eq(fclose(f), 0);
 }
 
-/* The exit codes of the three judges for the picture at path against the
- * masked kit: conform (its JSON in r), compare --manifest and kit_check. */
-static void three_judges(const char *kit, const char *path, cli_run *r, int code[3])
+/* The exit codes of the three judges for the picture at path against
+ * scene name, the first of the kit: conform (its JSON in r), compare
+ * --manifest and kit_check. */
+static void three_judges_of(const char *kit, const char *name, const char *path, cli_run *r, int code[3])
 {
     char cmd[2048], mf[400], exact[400], mask[400];
     const char *bin = getenv("KIT_CHECK_BIN");
@@ -577,8 +578,10 @@ static void three_judges(const char *kit, const char *path, cli_run *r, int code
     cli_refray(c, compare_args);
     code[1] = c->code;
     free(c);
-    cli_path(exact, sizeof exact, kit, "scenes/masked_sphere/masked_sphere.exact.pfm");
-    cli_path(mask, sizeof mask, kit, "scenes/masked_sphere/masked_sphere.mask.pgm");
+    snprintf(cmd, sizeof cmd, "scenes/%s/%s.exact.pfm", name, name);
+    cli_path(exact, sizeof exact, kit, cmd);
+    snprintf(cmd, sizeof cmd, "scenes/%s/%s.mask.pgm", name, name);
+    cli_path(mask, sizeof mask, kit, cmd);
     manifest m;
     ck_assert_int_eq(manifest_read(mf, &m, cmd, sizeof cmd), 0);
     snprintf(cmd, sizeof cmd, "'%s' '%s' '%s' %.17g %.17g '%s' >/dev/null 2>&1", bin, exact, mask,
@@ -586,6 +589,12 @@ static void three_judges(const char *kit, const char *path, cli_run *r, int code
     manifest_free(&m);
     int st = system(cmd);
     code[2] = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* three_judges_of the masked kit's scene. */
+static void three_judges(const char *kit, const char *path, cli_run *r, int code[3])
+{
+    three_judges_of(kit, "masked_sphere", path, r, code);
 }
 
 /* [KIT-RULE-1] [CONF-MASKED-1] A NaN or an infinity in a pixel the mask
@@ -719,16 +728,17 @@ START_TEST(test_conform_mask_png_and_count)
 }
 END_TEST
 
-/* The masked kit's manifest with png16_scale 2^-e and absolute the step
- * of a 16-bit PNG there, 2^e / 65535 (as [KIT-TOL-1] defines it, so that
- * only [VERIFY-UNBOUNDED-3] is left to refuse it). */
+/* The masked kit's manifest with png16_scale 2^-e and absolute (and
+ * absolute_png) the step of a 16-bit PNG there, 2^e / 65535 (at most
+ * what [KIT-TOL-1] allows, so that only [VERIFY-UNBOUNDED-3] is left to
+ * refuse it). */
 static void edit_scale(const char *kit, int e)
 {
     char mf[400], why[512];
     manifest m;
     ck_assert_int_eq(manifest_read(cli_path(mf, sizeof mf, kit, "manifest.json"), &m, why, sizeof why), 0);
     m.scenes[0].png16_scale = ldexp(1, -e);
-    m.scenes[0].absolute = ldexp(1, e) / 65535;
+    m.scenes[0].absolute = m.scenes[0].absolute_png = ldexp(1, e) / 65535;
     ck_assert_int_eq(manifest_write(mf, &m, why, sizeof why), 0);
     manifest_free(&m);
 }
@@ -787,6 +797,54 @@ START_TEST(test_conform_absolute_bound_decides)
     three_judges(kit, path, r, code);
     ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "2^-1, the exact image: %d %d %d", code[0],
                   code[1], code[2]);
+    img_free(&e);
+    cli_remove(work);
+    free(r);
+}
+END_TEST
+
+/* [KIT-TOL-1] The kit of a scene with one bright spot (hdr_spot.scene:
+ * peak 1084, most of the plane 0.012 .. 0.04) has png16_scale 2^-11,
+ * whose 16-bit step 2048 / 65535 = 0.031 is above most of the image.  That
+ * step is a PNG's absolute (absolute_png); a float picture, which holds
+ * those values, is judged with 2^-20 of the peak (absolute).  A PFM whose
+ * every value below 0.031 is black, most pixels 100 % off, fails the
+ * three judges; the exact image passes them.  Before, absolute was the
+ * step for every format and the three passed the black picture (attack
+ * 15, finding 1: sh tests/attack15/conform_hdr_dark.sh). */
+START_TEST(test_conform_float_absolute_is_not_the_png_step)
+{
+    char work[64], kit[128], path[400], dark[300], why[512];
+    img_buf e;
+    int code[3];
+    cli_run *r = malloc(sizeof *r);
+    cli_scratch(work, sizeof work, "hdrspot");
+    cli_path(kit, sizeof kit, work, "kit");
+    const char *args[] = {"kit", "-q", "-o", kit, "tests/conform/hdr_spot.scene", NULL};
+    cli_refray(r, args);
+    ck_assert_msg(r->code == 0, "refray kit: %s", r->err);
+    manifest m;
+    ck_assert_int_eq(manifest_read(cli_path(path, sizeof path, kit, "manifest.json"), &m, why, sizeof why), 0);
+    const manifest_scene *s = &m.scenes[0];
+    ck_assert(s->png16_scale == 0x1p-11 && s->absolute_png == 2048 / 65535.0);
+    ck_assert_msg(s->peak > 1000 && s->absolute == 0x1p-20 * s->peak, "peak %g, absolute %g", s->peak, s->absolute);
+    manifest_free(&m);
+    cli_path(path, sizeof path, kit, "scenes/hdr_spot/hdr_spot.exact.pfm");
+    ck_assert_int_eq(img_read(path, NULL, &e, why, sizeof why), 0);
+    long dimmed = 0;
+    for (int i = 0; i < 3 * e.width * e.height; i++)
+        if (e.rgb[i] < 0.031) {
+            e.rgb[i] = 0;
+            dimmed++;
+        }
+    ck_assert_msg(dimmed > 3 * e.width * e.height / 2, "%ld values below 0.031", dimmed);
+    write_raw_pfm(cli_path(dark, sizeof dark, work, "dark.pfm"), &e);
+    three_judges_of(kit, "hdr_spot", dark, r, code);
+    ck_assert_msg(code[0] == 1 && code[1] == 1 && code[2] == 1, "the dark picture: conform %d, compare %d, "
+                  "kit_check %d", code[0], code[1], code[2]);
+    three_judges_of(kit, "hdr_spot", path, r, code);
+    ck_assert_msg(code[0] == 0 && code[1] == 0 && code[2] == 0, "the exact image: conform %d, compare %d, "
+                  "kit_check %d", code[0], code[1], code[2]);
     img_free(&e);
     cli_remove(work);
     free(r);
@@ -934,6 +992,7 @@ Suite *suite_conform(void)
     tcase_add_test(tc, test_conform_masked_nonfinite);
     tcase_add_test(tc, test_conform_mask_png_and_count);
     tcase_add_test(tc, test_conform_absolute_bound_decides);
+    tcase_add_test(tc, test_conform_float_absolute_is_not_the_png_step);
     tcase_add_test(tc, test_conform_mask_grey_refused);
 #else
     tcase_add_test(tc, test_conform_needs_json);

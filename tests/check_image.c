@@ -495,6 +495,52 @@ START_TEST(test_img_read_pfm_crlf)
 }
 END_TEST
 
+/* [KIT-PFM-1] The scale token, read by img_read and kit_check alike: a
+ * finite non-zero number read whole, its sign the byte order.  Read by
+ * both: -1.0, -1.0e0, -0x1p0, a token of 40 characters.  Refused by both
+ * (refray: "bad scale in the PFM header"): infinities, a value that
+ * overflows or underflows to 0, trailing characters, NaN, zeros.  Before,
+ * kit_check took the sign alone and judged all of them (attack 15,
+ * finding 5: sh tests/attack15/pfm_scale_agree.sh). */
+START_TEST(test_pfm_scale_token_both_readers)
+{
+    static const char px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
+    static const char *const read[] = {"-1.0", "-1.0e0", "-0x1p0", "-1.000000000000000000000000000000000000"};
+    static const char *const refused[] = {"-inf", "inf", "-1e999", "-1e-999", "-1.0x", "-nan", "nan", "0", "-0",
+                                          "-"};
+    tmpdir d;
+    char path[256], err[256], buf[128], line[200];
+    img_buf img;
+    tmpdir_make(&d);
+    in_dir(path, sizeof path, &d, "mask.pgm");
+    put_file(path, "P5\n1 1\n255\n\0", 12);
+    for (int pass = 0; pass < 2; pass++) {
+        size_t count = pass ? sizeof refused / sizeof refused[0] : sizeof read / sizeof read[0];
+        for (size_t k = 0; k < count; k++) {
+            const char *token = pass ? refused[k] : read[k];
+            int n = snprintf(buf, sizeof buf, "PF\n1 1\n%s\n", token);
+            memcpy(buf + n, px, 12);
+            in_dir(path, sizeof path, &d, pass == 0 && k == 0 ? "exact.pfm" : "v.pfm");
+            put_file(path, buf, (size_t)n + 12);
+            int status = img_read(path, NULL, &img, err, sizeof err);
+            int st = kit_check(&d, "exact.pfm", pass == 0 && k == 0 ? "exact.pfm" : "v.pfm", line, sizeof line);
+            if (pass == 0) {
+                ck_assert_msg(status == 0 && img.rgb[0] == 1.0 && img.rgb[1] == 2.0 && img.rgb[2] == 0.5,
+                              "scale %s: refray %d: %s", token, status, err);
+                img_free(&img);
+                ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "scale %s: kit_check %d: %s",
+                              token, st, line);
+            } else {
+                ck_assert_msg(status == STATUS_DATA && strstr(err, "bad scale"), "scale %s: refray %d: %s", token,
+                              status, err);
+                ck_assert_msg(st == 2, "scale %s: kit_check %d: %s", token, st, line);
+            }
+        }
+    }
+    tmpdir_remove(&d);
+}
+END_TEST
+
 /* A header that claims more pixels than the file holds is refused before
  * the image is allocated: 16384 x 16384 (under IMG_MAX_PIXELS) on a 1 KB
  * file made `refray conform` allocate and clear 6.3 GB and spend 39 s of
@@ -1167,6 +1213,7 @@ Suite *suite_image(void)
     tcase_add_test(fmt, test_img_write_pfm_counts_nonfinite_and_clamped);
     tcase_add_test(fmt, test_img_read_pfm_variants);
     tcase_add_test(fmt, test_img_read_pfm_crlf);
+    tcase_add_test(fmt, test_pfm_scale_token_both_readers);
     tcase_add_test(fmt, test_img_read_short_raster_allocates_nothing);
     tcase_add_test(fmt, test_img_write_ppm_bytes);
     tcase_add_test(fmt, test_img_write_read_ppm);

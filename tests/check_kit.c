@@ -177,7 +177,8 @@ START_TEST(test_kit_manifest_numbers)
         double scaled = s->peak * s->png16_scale;
         ck_assert_msg(frexp(s->png16_scale, &e) == 0.5 && scaled > 0.4 && scaled <= 0.8, "scale %g, peak %g",
                       s->png16_scale, s->peak);
-        ck_assert(s->absolute == 1.0 / (65535.0 * s->png16_scale));
+        ck_assert(s->absolute_png == 1.0 / (65535.0 * s->png16_scale));
+        ck_assert(s->absolute == 0x1p-20 * s->peak); /* a float picture's: [KIT-TOL-1] */
     }
     ck_assert(!m.scenes[0].sampled && m.scenes[0].relative == 1e-4 && m.scenes[0].light_count == 0);
     ck_assert_str_eq(m.scenes[1].family, "disk_light");
@@ -211,7 +212,7 @@ static void sample_manifest(manifest *m)
     snprintf(a->missing[MANIFEST_FILE_POV], MANIFEST_TEXT_LEN, "refused: because\nof a line");
     a->width = 3, a->height = 2, a->samples = 4, a->max_depth = 9, a->sampled = 1;
     a->light_count = 2, a->light_samples[0] = 1, a->light_samples[1] = 1000;
-    a->relative = 1.0 / 3, a->absolute = 1e-300, a->peak = 0.1, a->masked = 5, a->png16_scale = 0.125;
+    a->relative = 1.0 / 3, a->absolute = 1e-300, a->absolute_png = 2e-300, a->peak = 0.1, a->masked = 5, a->png16_scale = 0.125;
     a->expected_order = -0.75;
     snprintf(a->order_note, sizeof a->order_note, "note");
     ck_assert_int_eq(manifest_add_note(a, "tab\there"), 0);
@@ -220,7 +221,7 @@ static void sample_manifest(manifest *m)
     snprintf(b->family, sizeof b->family, "f");
     snprintf(b->files[MANIFEST_FILE_EXACT_EXR], MANIFEST_PATH_LEN, "e.exr");
     b->width = b->height = b->samples = b->max_depth = 1;
-    b->relative = 1e-4, b->absolute = 1.0 / 65535, b->peak = 0, b->png16_scale = 1;
+    b->relative = 1e-4, b->absolute = b->absolute_png = 1.0 / 65535, b->peak = 0, b->png16_scale = 1;
 }
 
 START_TEST(test_manifest_round_trip)
@@ -248,7 +249,8 @@ START_TEST(test_manifest_round_trip)
         for (int k = 0; k < x->light_count; k++)
             ck_assert_int_eq(x->light_samples[k], y->light_samples[k]);
         /* Bit for bit: 17 significant digits. */
-        ck_assert(x->relative == y->relative && x->absolute == y->absolute && x->peak == y->peak &&
+        ck_assert(x->relative == y->relative && x->absolute == y->absolute && x->absolute_png == y->absolute_png &&
+                  x->peak == y->peak &&
                   x->png16_scale == y->png16_scale && x->expected_order == y->expected_order);
         ck_assert_str_eq(x->order_note, y->order_note);
         ck_assert_int_eq(x->note_count, y->note_count);
@@ -290,26 +292,29 @@ START_TEST(test_manifest_refuses_a_bound_of_one_half_or_more)
     cli_remove(work);
 }
 END_TEST
-/* [KIT-SCALE-1] png16_scale is a power of two; [KIT-TOL-1] absolute is at
- * most one 16-bit step at it, 1 / (65535 png16_scale): a manifest that
- * breaks either is refused, whoever wrote it.  Before, png16_scale 3 and
+/* [KIT-SCALE-1] png16_scale is a power of two; [KIT-TOL-1] absolute_png
+ * is at most one 16-bit step at it, 1 / (65535 png16_scale), and absolute
+ * (a float picture's) at most absolute_png: a manifest that breaks any is
+ * refused, whoever wrote it.  Before, png16_scale 3 and
  * absolute 10 loaded, and conform passed a black picture under them
  * (attack 12, finding 6). */
 START_TEST(test_manifest_refuses_a_scale_or_absolute_off_its_definition)
 {
-    /* {png16_scale, absolute, refused}; the sample's first scene has
-     * png16_scale 1/8, whose step is 8 / 65535. */
+    /* {png16_scale, absolute_png, absolute, refused}; the sample's first
+     * scene has png16_scale 1/8, whose step is 8 / 65535. */
     static const struct {
-        double scale, absolute;
+        double scale, absolute_png, absolute;
         const char *why;
     } cases[] = {
-        {3, 1e-5, "'png16_scale' is not a power of two"},
-        {0.75, 1e-5, "'png16_scale' is not a power of two"},
-        {0.125, 10, "'absolute' is more than one step of a 16-bit PNG"},
-        {0.125, 8 / 65535.0 * (1 + 1e-9), "'absolute' is more than one step"},
-        {0.125, 8 / 65535.0, NULL},
-        {0x1p-40, 0x1p40 / 65535, NULL},
-        {0.125, 0, NULL},
+        {3, 1e-5, 0, "'png16_scale' is not a power of two"},
+        {0.75, 1e-5, 0, "'png16_scale' is not a power of two"},
+        {0.125, 10, 0, "'absolute_png' is more than one step of a 16-bit PNG"},
+        {0.125, 8 / 65535.0 * (1 + 1e-9), 0, "'absolute_png' is more than one step"},
+        {0.125, 8 / 65535.0, 8 / 65535.0 * (1 + 1e-9), "'absolute' is more than absolute_png"},
+        {0.125, 8 / 65535.0, 8 / 65535.0, NULL},
+        {0.125, 8 / 65535.0, 1e-7, NULL},
+        {0x1p-40, 0x1p40 / 65535, 0, NULL},
+        {0.125, 0, 0, NULL},
     };
     char work[64], path[300], why[512];
     cli_scratch(work, sizeof work, "manifest");
@@ -318,6 +323,7 @@ START_TEST(test_manifest_refuses_a_scale_or_absolute_off_its_definition)
         manifest m, back;
         sample_manifest(&m);
         m.scenes[0].png16_scale = cases[i].scale;
+        m.scenes[0].absolute_png = cases[i].absolute_png;
         m.scenes[0].absolute = cases[i].absolute;
         ck_assert_int_eq(manifest_write(path, &m, why, sizeof why), 0);
         why[0] = '\0';

@@ -206,7 +206,8 @@ static void print_text(const compare_args *a, const compare_kit *kit, const img_
         printf("PSNR:     inf (the images are equal)\n");
     if (kit)
         printf("over:     %ld pixel%s over |A - B| <= %.3g |B| + %.3g (scene %s of %s)\n", m->over,
-               m->over == 1 ? "" : "s", kit->scene->relative, kit->scene->absolute, kit->scene->name, a->manifest);
+               m->over == 1 ? "" : "s", kit->scene->relative, conform_absolute(kit->scene, conform_picture_quantized(a->a)),
+               kit->scene->name, a->manifest);
     else if (a->has_tolerance)
         printf("over:     %ld pixel%s over the relative tolerance %.3g\n", m->over, m->over == 1 ? "" : "s",
                a->tolerance);
@@ -224,7 +225,7 @@ static void print_json(const compare_args *a, const compare_kit *kit, const imag
     verify_json_metrics(stdout, m, kit ? kit->scene->relative : a->has_tolerance ? a->tolerance : NAN);
     if (kit) {
         fputs(", \"tolerance_absolute\": ", stdout);
-        verify_json_number(stdout, kit->scene->absolute);
+        verify_json_number(stdout, conform_absolute(kit->scene, conform_picture_quantized(a->a)));
         fputs(", \"scene\": ", stdout);
         verify_json_string(stdout, kit->scene->name);
     }
@@ -289,7 +290,7 @@ static int compare_images(const compare_args *a, const compare_kit *kit, const i
     image_metrics m;
     int pass = 0;
     if (kit)
-        pass = conform_rule(x, ref, mask, kit->scene, &m);
+        pass = conform_rule(x, ref, mask, kit->scene, conform_picture_quantized(a->a), &m);
     else
         metrics_compare(x, ref, mask, a->has_tolerance ? a->tolerance : 0, &m);
     status = a->diff ? write_map(a, x, ref, mask) : STATUS_OK;

@@ -313,7 +313,9 @@ static void judge(const img_buf *img, const img_buf *exact, const unsigned char 
         return;
     }
     r->compared = 1;
-    if (conform_rule(img, exact, mask, s, &r->metrics))
+    int quantized = conform_picture_quantized(out_path);
+    r->absolute = conform_absolute(s, quantized);
+    if (conform_rule(img, exact, mask, s, quantized, &r->metrics))
         set(r, CONFORM_PASS, "%s", "");
     else
         over_reason(img, exact, out_path, half, r);
@@ -326,7 +328,7 @@ void conform_judge(const char *kit_dir, const manifest_scene *s, const char *out
     unsigned char *mask;
     char why[600];
     r->relative = s->relative;
-    r->absolute = s->absolute;
+    r->absolute = conform_absolute(s, conform_picture_quantized(out_path));
     r->downsample = conform_downsample_of(a, s);
     r->scale = conform_scale_of(a, s);
     int half;
@@ -478,7 +480,7 @@ void conform_run_scene(const conform_run *run, const manifest_scene *s, conform_
     memset(r, 0, sizeof *r);
     r->scene = s;
     r->relative = s->relative;
-    r->absolute = s->absolute;
+    r->absolute = conform_absolute(s, strcmp(run->format, "png") == 0);
     r->downsample = conform_downsample_of(&run->adjust, s);
     r->scale = conform_scale_of(&run->adjust, s);
     char *dir = make_workdir(run, s, r);

@@ -111,16 +111,28 @@ int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const un
     for (size_t p = 0; p < n; p++)
         for (int c = 0; c < 3 && !(mask && mask[p]); c++)
             peak = fmax(peak, fabs(exact->rgb[3 * p + c]));
-    if (conform_bound_decisive(s->relative, s->absolute, peak))
+    double absolute = fmax(s->absolute, s->absolute_png);
+    if (conform_bound_decisive(s->relative, absolute, peak))
         return STATUS_OK;
-    conform_bound_reason(s->relative, s->absolute, peak, why, why_size);
+    conform_bound_reason(s->relative, absolute, peak, why, why_size);
     return STATUS_DATA;
 }
 
-int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
-                 image_metrics *m)
+int conform_picture_quantized(const char *path)
 {
-    metrics_compare_abs(out, exact, mask, s->relative, s->absolute, m);
+    img_format f = img_format_from_path(path);
+    return f == IMG_FORMAT_PNG || f == IMG_FORMAT_PPM;
+}
+
+double conform_absolute(const manifest_scene *s, int quantized)
+{
+    return quantized ? s->absolute_png : s->absolute;
+}
+
+int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
+                 int quantized, image_metrics *m)
+{
+    metrics_compare_abs(out, exact, mask, s->relative, conform_absolute(s, quantized), m);
     return m->over == 0 && m->compared > 0;
 }
 

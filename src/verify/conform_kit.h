@@ -52,7 +52,8 @@ int conform_bound_decisive(double relative, double absolute, double peak);
 /* The reason of a tolerance conform_bound_decisive refuses, into why. */
 void conform_bound_reason(double relative, double absolute, double peak, char *why, size_t why_size);
 
-/* Checks conform_bound_decisive for s's tolerance at the largest |value|
+/* Checks conform_bound_decisive for s's tolerance (the larger absolute,
+ * absolute_png) at the largest |value|
  * of exact over the pixels mask leaves (NULL: all).  STATUS_OK, or
  * STATUS_DATA with the reason in why. */
 int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const unsigned char *mask, char *why,
@@ -69,15 +70,24 @@ int conform_kit_decisive(const manifest_scene *s, const img_buf *exact, const un
 int conform_kit_read(const char *kit_dir, const manifest_scene *s, img_buf *exact, unsigned char **mask, char *why,
                      size_t why_size);
 
+/* [KIT-TOL-1] 1 when the picture at path is read from integers (PNG,
+ * PPM, by its extension as img_read reads it): judged with absolute_png,
+ * the 16-bit step; a float picture (PFM, EXR) with absolute. */
+int conform_picture_quantized(const char *path);
+
+/* The absolute tolerance of s for a picture quantized or not. */
+double conform_absolute(const manifest_scene *s, int quantized);
+
 /*
  * [KIT-RULE-1] Judges out against exact (the same size) over the pixels
- * mask does not mark (mask NULL: every pixel), with s's tolerance: fills m
+ * mask does not mark (mask NULL: every pixel), with s's tolerance for a
+ * picture quantized or not (conform_absolute): fills m
  * (metrics_compare_abs) and returns 1 when out passes (no compared pixel
  * over, a NaN or an infinity over, and at least one pixel compared), else
  * 0.  A pixel the mask marks is not judged, whatever it holds.
  */
 int conform_rule(const img_buf *out, const img_buf *exact, const unsigned char *mask, const manifest_scene *s,
-                 image_metrics *m);
+                 int quantized, image_metrics *m);
 
 /* The channel values of img that are NaN or infinite: in the pixels the
  * rule judges (*judged) and in those mask marks (*masked). */

@@ -191,7 +191,8 @@ static void describe(const scene_model *s, const verify_exact *e, manifest_scene
     m->peak = peak_of(e);
     m->masked = e->excluded_count;
     m->png16_scale = manifest_png16_scale(m->peak);
-    m->absolute = manifest_png16_step(m->png16_scale);
+    m->absolute_png = manifest_png16_step(m->png16_scale);
+    m->absolute = MANIFEST_ABS_FLOAT_OF_PEAK * m->peak;
     if (f->sampled)
         expected_order(m);
 }
@@ -279,9 +280,9 @@ static int build_scene(const char *root, const char *path, const kit_opts *o, ma
          * absolute one at the peak ([VERIFY-UNBOUNDED-3]: a black image
          * has no verdict either). */
         int relative_ok = verify_tolerance_decisive(m->relative);
-        if (!relative_ok || !conform_bound_decisive(m->relative, m->absolute, m->peak)) {
+        if (!relative_ok || !conform_bound_decisive(m->relative, m->absolute_png, m->peak)) {
             char reason[400];
-            conform_bound_reason(m->relative, m->absolute, m->peak, reason, sizeof reason);
+            conform_bound_reason(m->relative, m->absolute_png, m->peak, reason, sizeof reason);
             if (relative_ok)
                 snprintf(why, why_size, "'%s': %s", path, reason);
             else

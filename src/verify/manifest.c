@@ -167,8 +167,10 @@ static json_t *comparison_json(writer *w)
                                       "larger (an eye far from the picture for its width); for "
                                       "sampled families (distributed lights) the family's own bound at the "
                                       "scene's light samples, at least 1e-4"));
-    put(w, o, "absolute", json_string("one step of a 16-bit PNG written at the scene's png16_scale: "
-                                      "1 / (65535 * png16_scale), in the exact image's units"));
+    put(w, o, "absolute", json_string("for a float picture (PFM, EXR): 2^-20 of the peak, the rounding of a "
+                                      "single precision value near black; for a PNG or PPM picture "
+                                      "absolute_png instead, one step of a 16-bit PNG written at the scene's "
+                                      "png16_scale: 1 / (65535 * png16_scale), in the exact image's units"));
     put(w, o, "reported", json_string("max_abs = max |OUT - EXACT|; rms = sqrt(mean (OUT - EXACT)^2) over all "
                                       "channels of the compared pixels; max_rel = max |OUT - EXACT| / |EXACT| "
                                       "over channels with |EXACT| > 1e-12 * peak"));
@@ -228,6 +230,7 @@ static json_t *scene_json(writer *w, const manifest_scene *s)
     put(w, o, "metric", json_string("channel_rel_abs"));
     put(w, tol, "relative", json_real(s->relative));
     put(w, tol, "absolute", json_real(s->absolute));
+    put(w, tol, "absolute_png", json_real(s->absolute_png));
     put(w, o, "tolerance", tol);
     put(w, o, "peak", json_real(s->peak));
     put(w, o, "masked_pixels", json_integer(s->masked));
@@ -439,24 +442,35 @@ static int read_tolerance(reader *r, json_t *o, manifest_scene *s)
     int status = get_number(r, tol, "relative", 0, &s->relative);
     if (status == 0 && !verify_tolerance_decisive(s->relative))
         return bad(r, "is 1/2 or more: " VERIFY_UNBOUNDED, "relative");
-    return status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
+    status = status ? status : get_number(r, tol, "absolute", 0, &s->absolute);
+    /* A kit written before absolute_png judged every format with its one
+     * absolute, the PNG step: read so, it is judged as it was. */
+    s->absolute_png = s->absolute;
+    if (status == 0 && json_object_get(tol, "absolute_png"))
+        status = get_number(r, tol, "absolute_png", 0, &s->absolute_png);
+    return status;
 }
 
-/* [KIT-SCALE-1] png16_scale is a power of two, and [KIT-TOL-1] absolute
- * is at most one 16-bit step at it: a larger one is no longer the kit's
- * bound (a smaller one is only stricter).  The slack of 1e-12 lets the
- * step through written with fewer than 17 digits. */
+/* [KIT-SCALE-1] png16_scale is a power of two, and [KIT-TOL-1]
+ * absolute_png is at most one 16-bit step at it: a larger one is no
+ * longer the kit's bound (a smaller one is only stricter), and absolute,
+ * a float picture's, is at most absolute_png (a float holds more than 16
+ * bits).  The slack of 1e-12 lets the step through written with fewer
+ * than 17 digits. */
 static int check_scale(reader *r, const manifest_scene *s)
 {
     int e;
     if (frexp(s->png16_scale, &e) != 0.5)
         return bad(r, "is not a power of two ([KIT-SCALE-1])", "png16_scale");
-    if (s->absolute > manifest_png16_step(s->png16_scale) * (1 + 1e-12)) {
+    if (s->absolute_png > manifest_png16_step(s->png16_scale) * (1 + 1e-12)) {
         char what[256];
         snprintf(what, sizeof what, "is more than one step of a 16-bit PNG at png16_scale, 1 / (65535 * %.17g) = "
                  "%.17g ([KIT-TOL-1])", s->png16_scale, manifest_png16_step(s->png16_scale));
-        return bad(r, what, "absolute");
+        return bad(r, what, "absolute_png");
     }
+    if (s->absolute > s->absolute_png)
+        return bad(r, "is more than absolute_png: a float picture is judged no looser than a PNG ([KIT-TOL-1])",
+                   "absolute");
     return 0;
 }
 

@@ -55,6 +55,7 @@ typedef struct manifest_scene {
     int light_count;                   /* distributed lights, in scene order */
     int light_samples[MANIFEST_LIGHTS_MAX];
     double relative, absolute;         /* the tolerance: |out - exact| <= relative |exact| + absolute */
+    double absolute_png;               /* absolute's place for a PNG or PPM picture ([KIT-TOL-1]) */
     double peak;                       /* largest exact value over the compared pixels */
     long masked;                       /* pixels excluded */
     double png16_scale;                /* the power of two that puts peak in (0.4, 0.8] */
@@ -88,8 +89,14 @@ const manifest_scene *manifest_find(const manifest *m, const char *name);
 double manifest_png16_scale(double peak);
 
 /* One step of a 16-bit PNG written at scale s, in the image's units:
- * 1 / (65535 s), the absolute part of every tolerance. */
+ * 1 / (65535 s), the absolute part of the tolerance of a PNG picture. */
 double manifest_png16_step(double scale);
+
+/* [KIT-TOL-1] The absolute part of the tolerance of a float picture (PFM,
+ * EXR), as a fraction of the peak: 16 units of single precision's 2^-24
+ * at the peak, the rounding a float renderer's near-black value carries
+ * where terms up to the peak cancel. */
+#define MANIFEST_ABS_FLOAT_OF_PEAK 0x1p-20
 
 /* Frees what m holds (m itself is the caller's). */
 void manifest_free(manifest *m);

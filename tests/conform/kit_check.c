@@ -8,7 +8,8 @@
  *     kit_check EXACT.pfm MASK.pgm RELATIVE ABSOLUTE MINE.pfm
  *
  * EXACT.pfm and MASK.pgm are the scene's files in the kit; RELATIVE and
- * ABSOLUTE are its manifest's "tolerance" numbers.  A channel fails when
+ * ABSOLUTE are its manifest's "tolerance" numbers "relative" and
+ * "absolute" (a float picture's; "absolute_png" is a PNG's).  A channel fails when
  * |mine - exact| > RELATIVE * |exact| + ABSOLUTE, or when it is not a
  * number; masked pixels (mask byte 255) are skipped.  Prints
  * "N of M pixels over"; exit 0 when none is over and at least one pixel
@@ -79,12 +80,16 @@ static int seek_raster(FILE *f, size_t raster)
  * bottom, so they are turned over here. */
 static int read_pfm(const char *path, picture *p)
 {
-    char kind[32], w[32], h[32], scale[32];
+    char kind[32], w[32], h[32], scale[64], *end = scale; /* 64: refray's token size */
     FILE *f = fopen(path, "rb");
     if (!f)
         return 0;
     int ok = token(f, kind, sizeof kind) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
              token(f, scale, sizeof scale) && (strcmp(kind, "PF") == 0 || strcmp(kind, "Pf") == 0);
+    /* The scale as refray reads it ([KIT-PFM-1]): a finite non-zero
+     * number, the token read whole; its sign is the byte order. */
+    double sc = ok ? strtod(scale, &end) : 0;
+    ok = ok && sc != 0 && isfinite(sc) && *end == '\0';
     p->width = ok ? strtol(w, NULL, 10) : 0;
     p->height = ok ? strtol(h, NULL, 10) : 0;
     if (!ok || p->width < 1 || p->height < 1 || p->width > 65536 || p->height > 65536) {
@@ -99,7 +104,7 @@ static int read_pfm(const char *path, picture *p)
         return 0;
     }
     int channels = kind[1] == 'F' ? 3 : 1;
-    int swap = (strtod(scale, NULL) < 0) != little_endian_host();
+    int swap = (sc < 0) != little_endian_host();
     size_t pixels = (size_t)p->width * (size_t)p->height;
     if (!seek_raster(f, 4 * (size_t)channels * pixels)) {
         fclose(f);
