@@ -437,6 +437,19 @@ static int kit_check(const tmpdir *d, const char *exact, const char *mine, char 
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+/* The pixels of the 1x1 PFMs below, little-endian: 1.0 (3F800000), 2.0
+ * (40000000), 0.5 (3F000000). */
+static const char pfm_1x1_px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
+
+/* A fresh d with the all-judged 1x1 mask kit_check is given. */
+static void pfm_1x1_dir(tmpdir *d)
+{
+    char path[256];
+    tmpdir_make(d);
+    in_dir(path, sizeof path, d, "mask.pgm");
+    put_file(path, "P5\n1 1\n255\n\0", 12);
+}
+
 /* [KIT-PFM-1] A PFM's pixel data are its last bytes: a header whose lines
  * end in CR LF (a writer in text mode) is read right, by img_read
  * (compare, conform) and by kit_check alike; any other bytes between the
@@ -451,18 +464,15 @@ static int kit_check(const tmpdir *d, const char *exact, const char *mine, char 
  * header followed by a space. */
 START_TEST(test_img_read_pfm_crlf)
 {
-    static const char px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
     static const char *const heads[] = {"PF\n1 1\n-1.0\n", "PF\r\n1 1\r\n-1.0\r\n"};
     tmpdir d;
     char path[256], err[256], buf[64], line[200];
     img_buf img;
-    tmpdir_make(&d);
-    in_dir(path, sizeof path, &d, "mask.pgm");
-    put_file(path, "P5\n1 1\n255\n\0", 12);
+    pfm_1x1_dir(&d);
     for (size_t k = 0; k < sizeof heads / sizeof heads[0]; k++) {
         size_t n = strlen(heads[k]);
         memcpy(buf, heads[k], n);
-        memcpy(buf + n, px, 12);
+        memcpy(buf + n, pfm_1x1_px, 12);
         in_dir(path, sizeof path, &d, k == 0 ? "exact.pfm" : "v.pfm");
         put_file(path, buf, n + 12);
         ck_assert_msg(img_read(path, NULL, &img, err, sizeof err) == 0, "header %zu: %s", k, err);
@@ -504,37 +514,37 @@ END_TEST
  * finding 5: sh tests/attack15/pfm_scale_agree.sh). */
 START_TEST(test_pfm_scale_token_both_readers)
 {
-    static const char px[] = "\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F";
-    static const char *const read[] = {"-1.0", "-1.0e0", "-0x1p0", "-1.000000000000000000000000000000000000"};
-    static const char *const refused[] = {"-inf", "inf", "-1e999", "-1e-999", "-1.0x", "-nan", "nan", "0", "-0",
-                                          "-"};
+    static const struct {
+        const char *token;
+        int read;
+    } cases[] = {
+        {"-inf", 0}, {"inf", 0}, {"-1e999", 0}, {"-1e-999", 0}, {"-1.0x", 0}, {"-nan", 0}, {"nan", 0}, {"0", 0},
+        {"-0", 0}, {"-", 0}, {"-1.0", 1}, {"-1.0e0", 1}, {"-0x1p0", 1}, {"-1.000000000000000000000000000000000000", 1},
+    };
     tmpdir d;
     char path[256], err[256], buf[128], line[200];
     img_buf img;
-    tmpdir_make(&d);
-    in_dir(path, sizeof path, &d, "mask.pgm");
-    put_file(path, "P5\n1 1\n255\n\0", 12);
-    for (int pass = 0; pass < 2; pass++) {
-        size_t count = pass ? sizeof refused / sizeof refused[0] : sizeof read / sizeof read[0];
-        for (size_t k = 0; k < count; k++) {
-            const char *token = pass ? refused[k] : read[k];
-            int n = snprintf(buf, sizeof buf, "PF\n1 1\n%s\n", token);
-            memcpy(buf + n, px, 12);
-            in_dir(path, sizeof path, &d, pass == 0 && k == 0 ? "exact.pfm" : "v.pfm");
-            put_file(path, buf, (size_t)n + 12);
-            int status = img_read(path, NULL, &img, err, sizeof err);
-            int st = kit_check(&d, "exact.pfm", pass == 0 && k == 0 ? "exact.pfm" : "v.pfm", line, sizeof line);
-            if (pass == 0) {
-                ck_assert_msg(status == 0 && img.rgb[0] == 1.0 && img.rgb[1] == 2.0 && img.rgb[2] == 0.5,
-                              "scale %s: refray %d: %s", token, status, err);
-                img_free(&img);
-                ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "scale %s: kit_check %d: %s",
-                              token, st, line);
-            } else {
-                ck_assert_msg(status == STATUS_DATA && strstr(err, "bad scale"), "scale %s: refray %d: %s", token,
-                              status, err);
-                ck_assert_msg(st == 2, "scale %s: kit_check %d: %s", token, st, line);
-            }
+    pfm_1x1_dir(&d);
+    for (size_t k = 0; k <= sizeof cases / sizeof cases[0]; k++) {
+        /* First the exact image kit_check is given, with the scale -1.0. */
+        const char *token = k ? cases[k - 1].token : "-1.0";
+        int n = snprintf(buf, sizeof buf, "PF\n1 1\n%s\n", token);
+        memcpy(buf + n, pfm_1x1_px, 12);
+        put_file(in_dir(path, sizeof path, &d, k ? "v.pfm" : "exact.pfm"), buf, (size_t)n + 12);
+        if (k == 0)
+            continue;
+        int status = img_read(path, NULL, &img, err, sizeof err);
+        int st = kit_check(&d, "exact.pfm", "v.pfm", line, sizeof line);
+        if (cases[k - 1].read) {
+            ck_assert_msg(status == 0 && img.rgb[0] == 1.0 && img.rgb[1] == 2.0 && img.rgb[2] == 0.5,
+                          "scale %s: refray %d: %s", token, status, err);
+            img_free(&img);
+            ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "scale %s: kit_check %d: %s", token,
+                          st, line);
+        } else {
+            ck_assert_msg(status == STATUS_DATA && strstr(err, "bad scale"), "scale %s: refray %d: %s", token,
+                          status, err);
+            ck_assert_msg(st == 2, "scale %s: kit_check %d: %s", token, st, line);
         }
     }
     tmpdir_remove(&d);

@@ -212,7 +212,8 @@ static void sample_manifest(manifest *m)
     snprintf(a->missing[MANIFEST_FILE_POV], MANIFEST_TEXT_LEN, "refused: because\nof a line");
     a->width = 3, a->height = 2, a->samples = 4, a->max_depth = 9, a->sampled = 1;
     a->light_count = 2, a->light_samples[0] = 1, a->light_samples[1] = 1000;
-    a->relative = 1.0 / 3, a->absolute = 1e-300, a->absolute_png = 2e-300, a->peak = 0.1, a->masked = 5, a->png16_scale = 0.125;
+    a->relative = 1.0 / 3, a->absolute = 1e-300, a->absolute_png = 2e-300, a->peak = 0.1, a->masked = 5;
+    a->png16_scale = 0.125;
     a->expected_order = -0.75;
     snprintf(a->order_note, sizeof a->order_note, "note");
     ck_assert_int_eq(manifest_add_note(a, "tab\there"), 0);

@@ -206,8 +206,8 @@ static void print_text(const compare_args *a, const compare_kit *kit, const img_
         printf("PSNR:     inf (the images are equal)\n");
     if (kit)
         printf("over:     %ld pixel%s over |A - B| <= %.3g |B| + %.3g (scene %s of %s)\n", m->over,
-               m->over == 1 ? "" : "s", kit->scene->relative, conform_absolute(kit->scene, conform_picture_quantized(a->a)),
-               kit->scene->name, a->manifest);
+               m->over == 1 ? "" : "s", kit->scene->relative,
+               conform_absolute(kit->scene, conform_picture_quantized(a->a)), kit->scene->name, a->manifest);
     else if (a->has_tolerance)
         printf("over:     %ld pixel%s over the relative tolerance %.3g\n", m->over, m->over == 1 ? "" : "s",
                a->tolerance);
