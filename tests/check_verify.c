@@ -407,6 +407,22 @@ START_TEST(test_verify_view_floor_follows_the_geometry)
 }
 END_TEST
 
+/* The render of `wrong` fails against the exact image of s by family; frees
+ * both. */
+static void assert_exact_fails(scene_model *s, const char *family, scene_model *wrong)
+{
+    oracle_view v = verify_view(s, NULL);
+    verify_exact e;
+    verify_result r;
+    memset(&r, 0, sizeof r);
+    ck_assert_int_eq(verify_exact_build(oracle_find(family), &v, &e), 0);
+    ck_assert_int_eq(verify_render_compare(wrong, NULL, &e, &r), STATUS_FAIL);
+    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
+    verify_exact_free(&e);
+    scene_free(wrong);
+    scene_free(s);
+}
+
 /* [ORACLE-VIEW-ROUNDING-2] The floor is held to 1e-3: the sphere 1e11
  * away reads 80 u (2e11 + 2.4) = 1.78e-3 (as above), the render passes
  * at 1e-3 and the render with the light's red at 0.99 of it fails (the red
@@ -422,15 +438,7 @@ START_TEST(test_verify_view_floor_is_capped)
     ck_assert_int_eq(verify_scene(s, "sphere", NULL, &r), 0);
     ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
     ck_assert_msg(r.tolerance == 1e-3, "%g", r.tolerance);
-    oracle_view v = verify_view(s, NULL);
-    verify_exact e;
-    memset(&r, 0, sizeof r);
-    ck_assert_int_eq(verify_exact_build(oracle_find("lambert_sphere"), &v, &e), 0);
-    ck_assert_int_eq(verify_render_compare(dim, NULL, &e, &r), STATUS_FAIL);
-    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
-    verify_exact_free(&e);
-    scene_free(dim);
-    scene_free(s);
+    assert_exact_fails(s, "lambert_sphere", dim);
 }
 END_TEST
 
@@ -470,15 +478,7 @@ START_TEST(test_verify_view_floor_counts_the_spawn_offset)
     ck_assert_int_eq(verify_scene(s, "sheets", NULL, &r), 0);
     ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
     ck_assert_msg(r.tolerance >= spawn && r.tolerance <= spawn + 2e-10, "%g, not %g + 1.5e-10", r.tolerance, spawn);
-    oracle_view v = verify_view(s, NULL);
-    verify_exact e;
-    memset(&r, 0, sizeof r);
-    ck_assert_int_eq(verify_exact_build(oracle_find("stacked_sheets"), &v, &e), 0);
-    ck_assert_int_eq(verify_render_compare(dim, NULL, &e, &r), STATUS_FAIL);
-    ck_assert_int_eq(r.verdict, VERIFY_FAIL);
-    verify_exact_free(&e);
-    scene_free(dim);
-    scene_free(s);
+    assert_exact_fails(s, "stacked_sheets", dim);
 }
 END_TEST
 
