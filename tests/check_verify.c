@@ -295,6 +295,34 @@ END_TEST
  * 5100e81): 2 pixels over, 0.47 relative, the renderer missing the torus
  * where a ray enters it near the outer equator (the bounding sphere's
  * chord, rounded to eps |t| at t = 1e10, cut the root off). */
+/* [ORACLE-LAMBERT-TORUS margins] lambert_torus (scenes/analytic) four times
+ * as wide at four times the pixels, its orthographic eye 1e10 times as far
+ * on the same line (1e11 away): the floor 256 u D / S, D about 2 |eye| =
+ * 2.02e11 and S = 14.4, is 3.97e-4, under the cap.  The render loses two
+ * outline samples there (a torus sample read as background, 0.58
+ * relative); they lie within the view's rounding of the outline, which the
+ * oracle's margin now counts (256 u |origin| = 2.9e-3 wide), so they are
+ * excluded, a handful of pixels of 110592, and the rest pass.  Before: 2
+ * pixels over, FAIL (attack 15, finding 3). */
+START_TEST(test_verify_torus_outline_from_afar)
+{
+    scene_model *s = load_scene("image { width 384 height 288 samples 2 max_depth 1 background [0.05, 0.05, 0.1] }\n"
+                                "camera { orthographic eye [1e10, 6e10, 8e10] look_at [0, 0, 0] "
+                                "up [0, 1, 0] width 14.4 }\n"
+                                "ambient { color 0.1 }\n"
+                                "distant_light { direction [1, -0.4, 0.3] power [1, 0.9, 0.8] }\n"
+                                "torus { center [0, 0, 0] axis [0.2, 1, 0.1] major 1 minor 0.35 "
+                                "material { Kd [0.8, 0.5, 0.3] } }\n",
+                                "lambert_torus");
+    verify_result r;
+    ck_assert_int_eq(verify_scene(s, "torus", NULL, &r), 0);
+    ck_assert_msg(r.verdict == VERIFY_PASS, "%s", r.reason);
+    ck_assert_msg(r.tolerance < 1e-3, "%g", r.tolerance);
+    ck_assert_msg(r.metrics.excluded <= 384 * 288 / 500, "%ld excluded", r.metrics.excluded);
+    scene_free(s);
+}
+END_TEST
+
 START_TEST(test_verify_torus_edge_from_afar)
 {
     scene_model *s = load_scene("image { width 96 height 48 samples 2 max_depth 1 background [0.05, 0.05, 0.1] }\n"
@@ -1208,6 +1236,7 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_refuses_a_bound_that_passes_a_dim_image);
     tcase_add_test(tc, test_verify_tolerance_follows_the_view_rounding);
     tcase_add_test(tc, test_verify_torus_edge_from_afar);
+    tcase_add_test(tc, test_verify_torus_outline_from_afar);
     tcase_add_test(tc, test_verify_view_floor_is_capped);
     tcase_add_test(tc, test_verify_view_floor_ignores_look_at);
     tcase_add_test(tc, test_verify_view_floor_follows_the_geometry);
