@@ -3,6 +3,7 @@
  * spec/analytic.md (sections `lambert_cylinder`, `lambert_cone`,
  * `lambert_torus`).
  */
+#include <float.h>
 #include <math.h>
 #include "oracle/oracle_quadric.h"
 #include "oracle/oracle_geom.h"
@@ -425,13 +426,19 @@ oracle_chord_kind oracle_line_ring(const oracle_ring *t, vec3 o_far, vec3 d, dou
     double restart = restart_near(o_far, d, t->c, &o);
     ring_line rl = {t, o, d};
     ring_scan sc;
-    double r = t->minor, best = INFINITY, graze_along = INFINITY;
+    /* The outline's margin widens by the view's rounding: a render's ray
+     * from an origin of size |o_far| lies a few u |o_far| aside, and its hit
+     * test rounds at that size too; the floor of [ORACLE-VIEW-ROUNDING-1]
+     * admits K u of it (from an eye 1e11 away the render lost samples 8 to
+     * 128 u |o_far| inside the outline: tests/attack15/torus_far.sh). */
+    double r = t->minor, best = INFINITY, graze_along = INFINITY,
+           margin = ORACLE_EDGE_MARGIN * r + ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * vec_length(o_far);
     int graze = 0;
     ring_minima(&rl, &sc);
     for (int i = 0; i < sc.count; i++) {
         double along, d2;
         ring_line_at(&rl, sc.theta[i], &along, &d2);
-        if (fabs(sqrt(d2) - r) <= ORACLE_EDGE_MARGIN * r) {
+        if (fabs(sqrt(d2) - r) <= margin) {
             graze = 1;
             graze_along = fmin(graze_along, along);
         } else if (d2 < r * r) {

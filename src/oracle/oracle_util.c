@@ -271,6 +271,16 @@ static double grow(double scale, vec3 p, double extra)
     return fmax(scale, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))) + extra);
 }
 
+/* The distance from p to the box [lo, hi], inside it to its nearest face
+ * (exact for a box; for another primitive a proxy, as for an eye inside
+ * the boxes in view_reach). */
+static double box_distance(vec3 p, vec3 lo, vec3 hi)
+{
+    vec3 below = vec_sub(lo, p), above = vec_sub(p, hi);
+    double outside = vec_length(vec_max(vec_max(below, above), vec_splat(0)));
+    return outside > 0 ? outside : -vec_max_component(vec_max(below, above));
+}
+
 /* What the view's rays reach (spec/verify.md, [ORACLE-VIEW-ROUNDING-1]):
  * the largest |coordinate| of a hit (*coord), the farthest and the nearest
  * distance from the eye to a hit (*far, *near), read from the world boxes
@@ -307,12 +317,57 @@ static void view_reach(const scene_model *s, double *coord, double *far, double 
         vec3 corner = vec_make(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
         *far = fmax(*far, vec_length(vec_sub(corner, eye)));
     }
-    vec3 below = vec_sub(lo, eye), above = vec_sub(eye, hi);
-    vec3 out = vec_max(vec_max(below, above), vec_splat(0));
-    double outside = vec_length(out);
-    if (outside == 0)
-        outside = fmin(fmin(fmin(-below.x, -below.y), -below.z), fmin(fmin(-above.x, -above.y), -above.z));
-    *near = fmin(*near, outside);
+    *near = fmin(*near, box_distance(eye, lo, hi));
+}
+
+/* 1 when some ray leaves a surface for another surface: a reflective or
+ * transparent material and a depth that traces it. */
+static int traces_onward(const scene_model *s)
+{
+    if (s->image.max_depth < 2)
+        return 0;
+    for (int i = 0; i < s->material_count; i++) {
+        const scene_material *m = &s->materials[i];
+        if (m->t > 0 || vec_max_component(m->ks) > 0)
+            return 1;
+    }
+    return 0;
+}
+
+/* The shortest way a secondary ray travels to what it samples
+ * ([ORACLE-VIEW-ROUNDING-3]): from the geometry to a point light (a
+ * plane's distance, or a world box's, which outside it is no farther than
+ * its primitive) and, when rays go on to other surfaces, the size of the
+ * bounded primitives' union.  A shadow ray to a distant light samples a
+ * direction, which the offset does not turn.  HUGE_VAL when nothing is
+ * sampled at a finite distance. */
+static double spawn_reach(const scene_model *s)
+{
+    vec3 lo = vec_splat(HUGE_VAL), hi = vec_splat(-HUGE_VAL);
+    double reach = HUGE_VAL;
+    int bounded = 0;
+    for (int i = 0; i < s->prim_count; i++) {
+        const scene_prim *p = &s->prims[i];
+        vec3 plo, phi;
+        int box = p->kind != PRIM_PLANE && scene_prim_world_box(p, &plo, &phi);
+        if (box) {
+            lo = vec_min(lo, plo);
+            hi = vec_max(hi, phi);
+            bounded = 1;
+        }
+        for (int j = 0; j < s->light_count; j++) {
+            vec3 l = s->lights[j].position;
+            if (s->lights[j].kind != LIGHT_POINT)
+                continue;
+            if (p->kind == PRIM_PLANE)
+                reach = fmin(reach, fabs(vec_dot(vec_normalize(p->u.plane.normal), vec_sub(l, p->u.plane.point))));
+            else if (box)
+                reach = fmin(reach, box_distance(l, plo, phi));
+        }
+    }
+    if (bounded && traces_onward(s))
+        reach = fmin(reach, vec_length(vec_sub(hi, lo)));
+    return reach;
 }
 
 /* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
@@ -340,7 +395,13 @@ double oracle_tolerance_exact(const oracle_view *v, int light_samples)
     }
     double floor = ORACLE_VIEW_ROUNDING_K * DBL_EPSILON / 2 * d / span;
     (void)light_samples;
-    if (!(span > 0 && span < HUGE_VAL && floor > ORACLE_EXACT_TOLERANCE))
+    if (!(span > 0 && span < HUGE_VAL))
+        floor = 0;
+    /* [ORACLE-VIEW-ROUNDING-3]: the render's secondary rays leave a hit
+     * ORACLE_SPAWN_REL of its coordinates (at most coord) off it, which
+     * moves what they sample, reach away, by that much. */
+    floor += ORACLE_SPAWN_K * ORACLE_SPAWN_REL * coord / spawn_reach(v->scene);
+    if (!(floor > ORACLE_EXACT_TOLERANCE))
         return ORACLE_EXACT_TOLERANCE;
     return floor < ORACLE_VIEW_ROUNDING_MAX ? floor : ORACLE_VIEW_ROUNDING_MAX;
 }

@@ -35,6 +35,12 @@
 /* The most the floor may loosen a verdict, whatever the view
  * ([ORACLE-VIEW-ROUNDING-2]). */
 #define ORACLE_VIEW_ROUNDING_MAX 1e-3
+/* The render's offset of a secondary ray's origin, relative to the hit's
+ * coordinates (spec/numerics.md, [NUM-SPAWN-1]: 2^-42), and the shading's
+ * relative change per unit of that offset over the distance to what the
+ * ray samples, with margin ([ORACLE-VIEW-ROUNDING-3]). */
+#define ORACLE_SPAWN_REL 0x1p-42
+#define ORACLE_SPAWN_K 8
 #define ORACLE_EDGE_MARGIN 1e-6
 #define ORACLE_COS_MARGIN 1e-6
 
