@@ -24,6 +24,10 @@
 #include "testlib.h"
 #include "verify/verify.h"
 
+#ifndef REFRAY_HAVE_PNG
+#define REFRAY_HAVE_PNG 0
+#endif
+
 enum { W = 4, H = 3, OUT_MAX = 16384 };
 
 static void known_pair(img_buf *a, img_buf *b)
@@ -267,7 +271,8 @@ START_TEST(test_verify_mask_read_refuses_grey)
     }
     static const double px[][3] = {{0.5, 0.5, 0.5}, {0.99, 0.99, 0.99}, {1, 0, 0}};
     static const char *const names[] = {"m.pfm", "m.png"};
-    for (int n = 0; n < 2; n++)
+    /* A build without libpng writes no PNG: its mask is a PFM only. */
+    for (int n = 0; n < (REFRAY_HAVE_PNG ? 2 : 1); n++)
         for (size_t k = 0; k < sizeof px / sizeof px[0]; k++) {
             img_buf img;
             ck_assert_int_eq(img_create(&img, W, H), 0);
