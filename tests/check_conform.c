@@ -21,6 +21,10 @@
 #include "verify/conform.h"
 #include "verify/verify.h"
 
+#ifndef REFRAY_HAVE_EXR
+#define REFRAY_HAVE_EXR 0
+#endif
+
 static char kit_root[64];
 static int kit_status = -1;
 
