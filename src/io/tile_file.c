@@ -31,8 +31,8 @@ int tile_file_format_ok(const char *path, char *why, size_t why_size)
      * it as what it is, not as a picture format it is not. */
     size_t n = strlen(path), k = sizeof sidecar_suffix - 1;
     if (n > k && strcmp(path + n - k, sidecar_suffix) == 0) {
-        snprintf(why, why_size, "'%s' is the sidecar of the tile '%.*s': give the tile, whose sidecar is "
-                 "read beside it", path, (int)(n - k), path);
+        snprintf(why, why_size, "'%.4096s' is the sidecar of the tile named without its '.tile': give the tile, "
+                 "whose sidecar is read beside it", path);
         return 0;
     }
     if (f == IMG_FORMAT_PNG || f == IMG_FORMAT_PPM)
