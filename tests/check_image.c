@@ -26,6 +26,7 @@
 #include <unistd.h>
 #include "testlib.h"
 #include "io/image_io.h"
+#include "verify/verify.h"
 
 #ifndef REFRAY_HAVE_PNG
 #define REFRAY_HAVE_PNG 0
@@ -545,6 +546,90 @@ START_TEST(test_pfm_scale_token_both_readers)
             ck_assert_msg(status == STATUS_DATA && strstr(err, "bad scale"), "scale %s: refray %d: %s", token,
                           status, err);
             ck_assert_msg(st == 2, "scale %s: kit_check %d: %s", token, st, line);
+        }
+    }
+    tmpdir_remove(&d);
+}
+END_TEST
+
+/* [KIT-PFM-1] The header's tokens, read by img_read and kit_check alike:
+ * six white-space bytes (space, tab, LF, CR, VT, FF), '#' comments to the
+ * end of the line, a width and height each a whole decimal token of at
+ * most 23 characters; the mask's header as verify_mask_read reads it
+ * ("P5" its first two bytes, '#' comments, space, tab, CR and LF).  Before
+ * (attack 16, finding 5), kit_check knew four white bytes and no comment
+ * and took "1x" and a 24-digit "1" for 1: it refused pictures refray reads
+ * and read pictures refray refuses, and read a mask refray refuses (a
+ * space before "P5") while refusing one refray reads (a comment). */
+START_TEST(test_pfm_header_tokens_both_readers)
+{
+    static const struct {
+        const char *head;
+        int read;
+    } cases[] = {
+        {"PF\v1 1\f-1.0\n", 1},
+        {"PF\n# a comment\n1 1\n-1.0\n", 1},
+        {"PF\n1 1 # a comment\n-1.0\n", 1},
+        {"PF\n00000000000000000000001 1\n-1.0\n", 1},
+        {"PF\n+1 1\n-1.0\n", 1},
+        {"PF\n1x 1\n-1.0\n", 0},
+        {"PF\n1 0x1\n-1.0\n", 0},
+        {"PF\n000000000000000000000001 1\n-1.0\n", 0},
+        {"PF#\n1 1\n-1.0\n", 0},
+        {"PFF\n1 1\n-1.0\n", 0},
+        {"PF\n0 1\n-1.0\n", 0},
+    };
+    tmpdir d;
+    char path[256], err[256], buf[128], line[200];
+    img_buf img;
+    pfm_1x1_dir(&d);
+    put_file(in_dir(path, sizeof path, &d, "exact.pfm"), "PF\n1 1\n-1.0\n\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F", 24);
+    in_dir(path, sizeof path, &d, "v.pfm");
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        size_t n = strlen(cases[k].head);
+        memcpy(buf, cases[k].head, n);
+        memcpy(buf + n, pfm_1x1_px, 12);
+        put_file(path, buf, n + 12);
+        int status = img_read(path, NULL, &img, err, sizeof err);
+        int st = kit_check(&d, "exact.pfm", "v.pfm", line, sizeof line);
+        if (cases[k].read) {
+            ck_assert_msg(status == 0 && img.rgb[0] == 1.0 && img.rgb[1] == 2.0 && img.rgb[2] == 0.5,
+                          "case %zu: refray %d: %s", k, status, err);
+            img_free(&img);
+            ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "case %zu: kit_check %d: %s", k, st,
+                          line);
+        } else {
+            ck_assert_msg(status == STATUS_DATA, "case %zu: refray read it", k);
+            ck_assert_msg(st == 2, "case %zu: kit_check %d: %s", k, st, line);
+        }
+    }
+    static const struct {
+        const char *bytes;
+        size_t n;
+        int read;
+    } masks[] = {
+        {"P5\n# a comment\n1 1\n255\n\0", 24, 1},
+        {"P5 1 1 255 \0", 12, 1},
+        {" P5\n1 1\n255\n\0", 13, 0},
+        {"P5\v1 1\n255\n\0", 12, 0},
+        {"P5\n1 1\n256\n\0", 12, 0},
+        {"P5\n1 2\n255\n\0\0", 13, 0},
+    };
+    in_dir(path, sizeof path, &d, "exact.pfm");
+    put_file(path, "PF\n1 1\n-1.0\n\0\0\x80\x3F\0\0\0\x40\0\0\0\x3F", 24);
+    for (size_t k = 0; k < sizeof masks / sizeof masks[0]; k++) {
+        unsigned char *mask = NULL;
+        put_file(in_dir(path, sizeof path, &d, "mask.pgm"), masks[k].bytes, masks[k].n);
+        int status = verify_mask_read(path, 1, 1, &mask, err, sizeof err);
+        free(mask);
+        int st = kit_check(&d, "exact.pfm", "exact.pfm", line, sizeof line);
+        if (masks[k].read) {
+            ck_assert_msg(status == 0, "mask %zu: refray: %s", k, err);
+            ck_assert_msg(st == 0 && strcmp(line, "0 of 1 pixels over\n") == 0, "mask %zu: kit_check %d: %s", k, st,
+                          line);
+        } else {
+            ck_assert_msg(status == STATUS_DATA, "mask %zu: refray read it", k);
+            ck_assert_msg(st == 2, "mask %zu: kit_check %d: %s", k, st, line);
         }
     }
     tmpdir_remove(&d);
@@ -1224,6 +1309,7 @@ Suite *suite_image(void)
     tcase_add_test(fmt, test_img_read_pfm_variants);
     tcase_add_test(fmt, test_img_read_pfm_crlf);
     tcase_add_test(fmt, test_pfm_scale_token_both_readers);
+    tcase_add_test(fmt, test_pfm_header_tokens_both_readers);
     tcase_add_test(fmt, test_img_read_short_raster_allocates_nothing);
     tcase_add_test(fmt, test_img_write_ppm_bytes);
     tcase_add_test(fmt, test_img_write_read_ppm);

@@ -32,19 +32,43 @@ typedef struct picture {
     float *rgb;         /* 3 per pixel, rows from the top */
 } picture;
 
-/* A PFM header token: whitespace-separated, at most 31 bytes. */
+static int is_white(int c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* A PFM header token as refray reads one ([KIT-PFM-1]): white space and
+ * '#' comments (to the end of the line) skipped, then the non-white bytes,
+ * the white byte after them consumed.  A token that does not fit size - 1
+ * bytes is refused, not cut: refray refuses it, and a cut token could read
+ * as another number. */
 static int token(FILE *f, char *buf, size_t size)
 {
-    int c;
+    int c = fgetc(f);
+    for (;;) {
+        while (is_white(c))
+            c = fgetc(f);
+        if (c != '#')
+            break;
+        while (c != EOF && c != '\n')
+            c = fgetc(f);
+    }
     size_t n = 0;
-    while ((c = fgetc(f)) != EOF && (c == ' ' || c == '\t' || c == '\n' || c == '\r'))
-        ;
-    while (c != EOF && c != ' ' && c != '\t' && c != '\n' && c != '\r' && n + 1 < size) {
+    for (; c != EOF && !is_white(c); c = fgetc(f)) {
+        if (n + 1 >= size)
+            return 0;
         buf[n++] = (char)c;
-        c = fgetc(f);
     }
     buf[n] = '\0';
-    return n > 0 && (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+    return n > 0;
+}
+
+/* A width or height: the whole token a decimal number in [1, INT_MAX]. */
+static long dimension(const char *s)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    return end != s && *end == '\0' && v >= 1 && v <= 2147483647L ? v : -1;
 }
 
 static int little_endian_host(void)
@@ -80,26 +104,23 @@ static int seek_raster(FILE *f, size_t raster)
  * bottom, so they are turned over here. */
 static int read_pfm(const char *path, picture *p)
 {
-    char kind[32], w[32], h[32], scale[64], *end = scale; /* 64: refray's token size */
+    /* refray's token sizes: a longer token is refused by both. */
+    char kind[4], w[24], h[24], scale[64], *end = scale;
     FILE *f = fopen(path, "rb");
     if (!f)
         return 0;
-    int ok = token(f, kind, sizeof kind) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
-             token(f, scale, sizeof scale) && (strcmp(kind, "PF") == 0 || strcmp(kind, "Pf") == 0);
+    int ok = token(f, kind, sizeof kind) && (strcmp(kind, "PF") == 0 || strcmp(kind, "Pf") == 0) &&
+             token(f, w, sizeof w) && token(f, h, sizeof h) && token(f, scale, sizeof scale);
     /* The scale as refray reads it ([KIT-PFM-1]): a finite non-zero
      * number, the token read whole; its sign is the byte order. */
     double sc = ok ? strtod(scale, &end) : 0;
     ok = ok && sc != 0 && isfinite(sc) && *end == '\0';
-    p->width = ok ? strtol(w, NULL, 10) : 0;
-    p->height = ok ? strtol(h, NULL, 10) : 0;
-    if (!ok || p->width < 1 || p->height < 1 || p->width > 65536 || p->height > 65536) {
-        fclose(f);
-        return 0;
-    }
-    /* At most 2^28 pixels (refray's own bound): 65536 x 65536 pixels of 12
-     * bytes wrapped a 32-bit size_t into a small allocation, and asked a
-     * 64-bit host for 51 GB before the short file was noticed. */
-    if (p->width > (1L << 28) / p->height) {
+    p->width = ok ? dimension(w) : -1;
+    p->height = ok ? dimension(h) : -1;
+    /* At most 2^26 pixels, refray's default --max-pixels: a 65536 x 65536
+     * header on a short file must not wrap a 32-bit size_t or ask for
+     * 51 GB before the file is found short. */
+    if (p->width < 1 || p->height < 1 || p->width > (64L * 1024 * 1024) / p->height) {
         fclose(f);
         return 0;
     }
@@ -135,23 +156,46 @@ static int read_pfm(const char *path, picture *p)
     return p->rgb != NULL;
 }
 
+/* One whole number of the mask's header as refray reads it (verify.c's
+ * pgm_number): space, tab, CR and LF and '#' comments before it, at most
+ * the digits that keep it under 10^9, and one of those four white bytes
+ * after it, consumed. */
+static int pgm_number(FILE *f, long *out)
+{
+    int c = fgetc(f);
+    for (;;) {
+        if (c == '#')
+            while (c != '\n' && c != EOF)
+                c = fgetc(f);
+        else if (c == ' ' || c == '\t' || c == '\n' || c == '\r')
+            c = fgetc(f);
+        else
+            break;
+    }
+    long v = 0;
+    int digits = 0;
+    for (; c >= '0' && c <= '9' && v < 100000000; c = fgetc(f), digits++)
+        v = 10 * v + (c - '0');
+    *out = v;
+    return digits > 0 && (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+}
+
 /* The kit's mask: a binary PGM of the image's size whose bytes are 0 (the
  * pixel is judged) or maxval (255: skipped), nothing between, so that no
  * reader can take a grey byte another way (spec/verify.md
- * [VERIFY-MASK-1]).  NULL with *why set when it is not. */
+ * [VERIFY-MASK-1]); "P5" its first two bytes.  NULL with *why set when
+ * it is not. */
 static unsigned char *read_pgm(const char *path, long width, long height, const char **why)
 {
-    char magic[32], w[32], h[32], maxval[32];
     FILE *f = fopen(path, "rb");
     *why = "cannot be opened";
     if (!f)
         return NULL;
     unsigned char *mask = NULL;
-    long top = 0;
+    long w = 0, h = 0, top = 0;
     *why = "is not a binary PGM of the image's size";
-    if (token(f, magic, sizeof magic) && token(f, w, sizeof w) && token(f, h, sizeof h) &&
-        token(f, maxval, sizeof maxval) && strcmp(magic, "P5") == 0 && strtol(w, NULL, 10) == width &&
-        strtol(h, NULL, 10) == height && (top = strtol(maxval, NULL, 10)) >= 1 && top < 256) {
+    if (fgetc(f) == 'P' && fgetc(f) == '5' && pgm_number(f, &w) && pgm_number(f, &h) && pgm_number(f, &top) &&
+        w == width && h == height && top >= 1 && top < 256) {
         size_t n = (size_t)width * (size_t)height;
         mask = malloc(n);
         if (mask && fread(mask, 1, n, f) != n) {
