@@ -22,13 +22,14 @@
  * about ten. */
 #define SURFACE_ROUNDING 256
 
-/* What a sliver's normal may turn by, relative: a triangle whose normal
- * is at most 2^-20 of its edges' product is taken as its edges, so the
- * normal that remains is within 2^20 units of rounding of its direction,
- * 2^-33, and the plane's distance within 2^-32 of q's distance from a
- * corner ([ORACLE-VIEW-ROUNDING-3]). */
+/* A triangle whose normal (the cross product of two edges) is at most
+ * 2^-20 of its longest edge squared is taken as its edges: a sliver. The
+ * cross product's components round by at most 2 u |e1| |e2| each, so the
+ * normal of the others turns by at most 4 u longest^2 / |n| <= 2^-31
+ * (taken as 16 u longest^2 / |n|), and the plane's distance moves by that
+ * times q's distance from a corner. */
 #define SLIVER 0x1p-20
-#define SLIVER_TURN 0x1p-32
+#define NORMAL_TURN 16
 
 static double max_abs(vec3 v)
 {
@@ -67,7 +68,8 @@ double oracle_triangle_distance(vec3 q, vec3 a, vec3 b, vec3 c)
     if (!inside)
         return edges;
     double plane = fabs(vec_dot(n, vec_sub(q, a))) / nl;
-    return fmin(edges, plane - SLIVER_TURN * vec_length(vec_sub(q, a)));
+    double turn = NORMAL_TURN * (DBL_EPSILON / 2) * longest * longest / nl;
+    return fmin(edges, plane - turn * vec_length(vec_sub(q, a)));
 }
 
 /* (h, rho) of q about the axis through o along the unit a. */
@@ -148,9 +150,10 @@ static double own_distance(const scene_prim *p, vec3 q)
     }
 }
 
-/* sqrt of Gershgorin's bound of the largest eigenvalue of M^T M, M the
- * linear part of x: at least M's largest singular value, the most it
- * stretches a length (exact for a rotation or an axis scale). */
+/* sqrt of Gershgorin's bound of the largest eigenvalue of M M^T (which
+ * has M^T M's), M the linear part of x: at least M's largest singular
+ * value, the most it stretches a length; exact for a turn, an axis scale,
+ * and the inverse of a turn after an axis scale (M M^T diagonal). */
 static double stretch_bound(const xform *x)
 {
     double most = 0;
@@ -159,7 +162,7 @@ static double stretch_bound(const xform *x)
         for (int j = 0; j < 3; j++) {
             double g = 0;
             for (int k = 0; k < 3; k++)
-                g += x->m[k][i] * x->m[k][j];
+                g += x->m[i][k] * x->m[j][k];
             row += fabs(g);
         }
         most = fmax(most, row);
