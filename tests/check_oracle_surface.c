@@ -413,7 +413,8 @@ START_TEST(test_surface_distance_is_a_lower_bound)
         move(&p, &st, shift);
         vec3 q = vec_add(shift, random_point(k + 77, 1.8));
         double got = oracle_surface_distance(&p, q), want = sampled_distance(&p, q);
-        ck_assert_msg(got <= want + 8 * DBL_EPSILON * vec_max_abs(q), "shape %d, point %llu: %.17g above the sampled %.17g", i, (unsigned long long)k,
+        double allowed = want + 8 * DBL_EPSILON * vec_max_abs(q);
+        ck_assert_msg(got <= allowed, "shape %d, point %llu: %.17g above the sampled %.17g", i, (unsigned long long)k,
                       got, want);
     }
 }

@@ -46,7 +46,8 @@ double oracle_segment_distance(vec3 q, vec3 a, vec3 b)
 
 static double edges_distance(vec3 q, vec3 a, vec3 b, vec3 c)
 {
-    return fmin(oracle_segment_distance(q, a, b), fmin(oracle_segment_distance(q, b, c), oracle_segment_distance(q, c, a)));
+    return fmin(oracle_segment_distance(q, a, b),
+                fmin(oracle_segment_distance(q, b, c), oracle_segment_distance(q, c, a)));
 }
 
 /* The projection of q falls inside the triangle when q sees each edge
