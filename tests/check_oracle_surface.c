@@ -365,37 +365,41 @@ static void move(scene_prim *p, shape_store *st, vec3 shift)
         ck_assert(xform_invert(&st->frame.to_world, &st->frame.to_local));
         return;
     }
+    vec3 *at[4];
+    int n = 0;
     switch (p->kind) {
     case PRIM_SPHERE:
-        p->u.sphere.center = vec_add(p->u.sphere.center, shift);
+        at[n++] = &p->u.sphere.center;
         break;
     case PRIM_DISK:
-        p->u.disk.center = vec_add(p->u.disk.center, shift);
+        at[n++] = &p->u.disk.center;
         break;
     case PRIM_TRIANGLE:
         for (int k = 0; k < 3; k++)
-            p->u.triangle.p[k] = vec_add(p->u.triangle.p[k], shift);
+            at[n++] = &p->u.triangle.p[k];
         break;
     case PRIM_BOX:
-        p->u.box.lo = vec_add(p->u.box.lo, shift);
-        p->u.box.hi = vec_add(p->u.box.hi, shift);
+        at[n++] = &p->u.box.lo;
+        at[n++] = &p->u.box.hi;
         break;
     case PRIM_CYLINDER:
-        p->u.cylinder.from = vec_add(p->u.cylinder.from, shift);
-        p->u.cylinder.to = vec_add(p->u.cylinder.to, shift);
+        at[n++] = &p->u.cylinder.from;
+        at[n++] = &p->u.cylinder.to;
         break;
     case PRIM_CONE:
-        p->u.cone.from = vec_add(p->u.cone.from, shift);
-        p->u.cone.to = vec_add(p->u.cone.to, shift);
+        at[n++] = &p->u.cone.from;
+        at[n++] = &p->u.cone.to;
         break;
     case PRIM_TORUS:
-        p->u.torus.center = vec_add(p->u.torus.center, shift);
+        at[n++] = &p->u.torus.center;
         break;
     default:
         for (int k = 0; k < 4; k++)
-            st->corners[k] = vec_add(st->corners[k], shift);
+            at[n++] = &st->corners[k];
         break;
     }
+    for (int k = 0; k < n; k++)
+        *at[k] = vec_add(*at[k], shift);
 }
 
 /* The property the tolerance rests on, for every shape above from 300
