@@ -510,6 +510,57 @@ START_TEST(test_verify_view_floor_counts_the_spawn_offset)
 }
 END_TEST
 
+/* scenes/analytic/transparent_shadow.scene moved by [T, 0, T], its light
+ * 0.8 (1 + 2.8e-5) from the glass ball's centre along (1, -1, -1): 2.24e-5
+ * outside the ball, and 0.338 inside the ball's box from its nearest face;
+ * inverse square, d0 0, of the given power. */
+static scene_model *ball_near_light(double t, double power)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "image { width 192 height 144 samples 2 max_depth 4 background [0.3, 0.5, 0.8] }\n"
+             "camera { perspective eye [%.17g, 3, %.17g] look_at [%.17g, 0.6, %.17g] up [0, 1, 0] fov 55 }\n"
+             "ambient { color 0.1 }\n"
+             "point_light { position [%.17g, 0.538106, %.17g] power %.17g d0 0 falloff inverse_square }\n"
+             "plane { point [%.17g, 0, %.17g] normal [0, 1, 0] material { Kd [0.7, 0.7, 0.6] } }\n"
+             "sphere { center [%.17g, 1, %.17g] radius 0.8 material { Kd [0.5, 0.4, 0.3] t 0.6 ior 1 } }\n",
+             t, t + 5, t, t, t + 0.461894, t - 0.461894, power, t, t, t, t);
+    return load_scene(text, "transparent_shadow");
+}
+
+/* [ORACLE-VIEW-ROUNDING-3] L is the distance to each surface, not to the
+ * world box: the transmitted rays through the ball land on its far side
+ * 2^-42 (1e4 + 0.8) = 2.3e-9 aside, a little way from the light, where the
+ * inverse square changes fast: the render's 1.35e-7 relative.  The box's
+ * nearest face, 0.338 away, gave 8 * 2^-42 * 10000.8 / 0.338 = 5.4e-8 and
+ * failed the right render (1 pixel over, on 23aaeed); the ball's surface,
+ * sqrt(3) 0.461894 - 0.8 = 2.24e-5 away, gives 7.6e-4 (and the view's own
+ * rounding 256 u D / S, D <= 14142 + 10000.8 + 5.4, S >= 2 * 4 tan(27.5
+ * deg): at most 2e-10).  Moved by 1e5 the term passes the cap of
+ * [ORACLE-VIEW-ROUNDING-2] and is held at 1e-3 (before, 5.4e-7: FAIL).  A
+ * light 1 % dimmer fails at both. */
+START_TEST(test_verify_view_floor_counts_a_light_near_a_surface)
+{
+    static const double shift[] = {1e4, 1e5};
+    for (int i = 0; i < 2; i++) {
+        double t = shift[i];
+        scene_model *s = ball_near_light(t, 0.05), *dim = ball_near_light(t, 0.0495);
+        vec3 light = s->lights[0].position, centre = vec_make(t, 1, t);
+        double spawn = 8 * 0x1p-42 * (t + 0.8) / (vec_length(vec_sub(light, centre)) - 0.8);
+        verify_result r;
+        ck_assert_int_eq(verify_scene(s, "ball", NULL, &r), 0);
+        ck_assert_msg(r.verdict == VERIFY_PASS, "%g: %s", t, r.reason);
+        if (spawn < 1e-3)
+            ck_assert_msg(r.tolerance >= spawn && r.tolerance <= spawn * (1 + 1e-4) + 2e-10, "%g, not %g", r.tolerance,
+                          spawn);
+        else
+            ck_assert_msg(r.tolerance == 1e-3, "%g: %g, not the cap", t, r.tolerance);
+        ck_assert_msg(r.metrics.max_rel > 1e-8 * t / 1e4, "%g: max rel %g", t, r.metrics.max_rel);
+        assert_exact_fails(s, "transparent_shadow", dim);
+    }
+}
+END_TEST
+
 START_TEST(test_verify_exact_refuses_a_negative_or_infinite_radiance)
 {
     oracle_status (*const bad[])(const oracle_view *, double, double, rgb *) = {radiance_neg, radiance_tiny_neg,
@@ -1240,6 +1291,7 @@ Suite *suite_verify(void)
     tcase_add_test(tc, test_verify_view_floor_ignores_look_at);
     tcase_add_test(tc, test_verify_view_floor_follows_the_geometry);
     tcase_add_test(tc, test_verify_view_floor_counts_the_spawn_offset);
+    tcase_add_test(tc, test_verify_view_floor_counts_a_light_near_a_surface);
     tcase_add_test(tc, test_verify_exact_refuses_a_negative_or_infinite_radiance);
     tcase_add_test(tc, test_verify_family_unknown_and_missing);
     tcase_add_test(tc, test_verify_sweep_parse);

@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include "oracle/oracle_geom.h"
+#include "oracle/oracle_surface.h"
 #include "oracle/oracle_util.h"
 
 #ifndef M_PI
@@ -271,16 +272,6 @@ static double grow(double scale, vec3 p, double extra)
     return fmax(scale, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))) + extra);
 }
 
-/* The distance from p to the box [lo, hi], inside it to its nearest face
- * (exact for a box; for another primitive a proxy, as for an eye inside
- * the boxes in view_reach). */
-static double box_distance(vec3 p, vec3 lo, vec3 hi)
-{
-    vec3 below = vec_sub(lo, p), above = vec_sub(p, hi);
-    double outside = vec_length(vec_max(vec_max(below, above), vec_splat(0)));
-    return outside > 0 ? outside : -vec_max_component(vec_max(below, above));
-}
-
 /* What the view's rays reach (spec/verify.md, [ORACLE-VIEW-ROUNDING-1]):
  * the largest |coordinate| of a hit (*coord), the farthest and the nearest
  * distance from the eye to a hit (*far, *near), read from the world boxes
@@ -317,7 +308,7 @@ static void view_reach(const scene_model *s, double *coord, double *far, double 
         vec3 corner = vec_make(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
         *far = fmax(*far, vec_length(vec_sub(corner, eye)));
     }
-    *near = fmin(*near, box_distance(eye, lo, hi));
+    *near = fmin(*near, oracle_box_distance(eye, lo, hi));
 }
 
 /* 1 when some ray leaves a surface for another surface: a reflective or
@@ -335,10 +326,11 @@ static int traces_onward(const scene_model *s)
 }
 
 /* The shortest way a secondary ray travels to what it samples
- * ([ORACLE-VIEW-ROUNDING-3]): from the geometry to a point light (a
- * plane's distance, or a world box's, which outside it is no farther than
- * its primitive) and, when rays go on to other surfaces, the size of the
- * bounded primitives' union.  A shadow ray to a distant light samples a
+ * ([ORACLE-VIEW-ROUNDING-3]): from the geometry to a point light (a lower
+ * bound of the distance to each surface: a world box's nearest face is no
+ * bound from inside the box, where a light may lie just off a sphere)
+ * and, when rays go on to other surfaces, the size of the bounded
+ * primitives' union.  A shadow ray to a distant light samples a
  * direction, which the offset does not turn.  HUGE_VAL when nothing is
  * sampled at a finite distance. */
 static double spawn_reach(const scene_model *s)
@@ -355,15 +347,9 @@ static double spawn_reach(const scene_model *s)
             hi = vec_max(hi, phi);
             bounded = 1;
         }
-        for (int j = 0; j < s->light_count; j++) {
-            vec3 l = s->lights[j].position;
-            if (s->lights[j].kind != LIGHT_POINT)
-                continue;
-            if (p->kind == PRIM_PLANE)
-                reach = fmin(reach, fabs(vec_dot(vec_normalize(p->u.plane.normal), vec_sub(l, p->u.plane.point))));
-            else if (box)
-                reach = fmin(reach, box_distance(l, plo, phi));
-        }
+        for (int j = 0; j < s->light_count; j++)
+            if (s->lights[j].kind == LIGHT_POINT)
+                reach = fmin(reach, oracle_surface_distance(p, s->lights[j].position));
     }
     if (bounded && traces_onward(s))
         reach = fmin(reach, vec_length(vec_sub(hi, lo)));
