@@ -873,6 +873,40 @@ static int start_hits(const scene_prim *p, const ray *local, const local_start *
 }
 
 /*
+ * [NUM-FRAME-6] A frame that stretches a shape across its own axes (turned,
+ * then scaled unevenly: `rotate R scale [S, 1, 1]`) has a spread
+ * | |L| |L^-1| | of about S: the local line, L^-1 (o - T) + t L^-1 d, is
+ * rounded by eps |L^-1| |o - T| in each local coordinate on its own, and L
+ * takes that back to the world S times larger, across the line.  The local
+ * solve's t is still good (the shift is across the line, along the surface
+ * where it meets it: spec/numerics.md 2.17c), so past a spread of 2^10 the
+ * point is taken on the world line at that t, within the world line's own
+ * rounding, instead of through L (which moved it up to 2^-52 S |o - T| off
+ * the line: the lit pixels of a sphere stretched 1e12 off by 4e-5).  Any
+ * other frame keeps L x + T, bit for bit.
+ */
+#define FRAME_SPREAD_MAX 0x1p10
+static real frame_spread(const scene_frame *f)
+{
+    real worst = 0;
+    for (int i = 0; i < 3; i++) {
+        real row = 0;
+        for (int k = 0; k < 3; k++)
+            for (int j = 0; j < 3; j++)
+                row += fabs(f->to_world.m[i][j]) * fabs(f->to_local.m[j][k]);
+        worst = row > worst ? row : worst;
+    }
+    return worst;
+}
+
+static vec3 frame_world_point(const scene_prim *p, const ray *r, const hit *h, real spread)
+{
+    if (!(spread > FRAME_SPREAD_MAX))
+        return xform_point(&p->frame->to_world, h->point);
+    return vec_madd(r->origin, r->dir, h->t);
+}
+
+/*
  * A primitive with a local frame: the ray goes in through to_local (its
  * direction is not renormalised, so t is the same in both frames), points
  * come back through to_world and normals through the inverse transpose.
@@ -922,8 +956,9 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
         for (int i = 0; i < n; i++)
             out[i].t = out[i].t < tn ? tn : out[i].t > tf ? tf : out[i].t;
     }
+    real spread = n > 0 && !bare ? frame_spread(p->frame) : 0;
     for (int i = 0; i < n && !bare; i++) {
-        out[i].point = xform_point(&p->frame->to_world, out[i].point);
+        out[i].point = frame_world_point(p, r, &out[i], spread);
         out[i].normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].normal));
         out[i].shading_normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].shading_normal));
     }

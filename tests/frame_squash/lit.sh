@@ -1,7 +1,9 @@
 # Sourced by oblique.sh and turned.sh: refray (the caller's $1), a
 # temporary folder, mark (sweep_mark.sh), the lit setting over a shiny floor
-# at y = -1.5 seen from EYE, and one row of a sweep.
+# at y = -1.5 seen from EYE, and one row of a sweep.  The light is at $light
+# (set before sourcing; by default above the shape, [0.8, 6, 0.5]).
 refray=${1:-build/refray}
+light=${light:-[0.8, 6, 0.5]}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 . "$(dirname "$0")/../sweep_mark.sh"
@@ -9,7 +11,7 @@ head() { # EYE
     echo "image { width 32 height 24 max_depth 3 }"
     echo "camera { eye $1 look_at [0, 0, 0] fov 45 }"
     echo "ambient { color 0.2 }"
-    echo "point_light { position [0.8, 6, 0.5] power 40 falloff none }"
+    echo "point_light { position $light power 40 falloff none }"
     echo "plane { point [0, -1.5, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.4 n 20 } }"
 }
 # row NAME EYE S...: prints "NAME EYE:" and, for each S, the pixels of the
