@@ -903,7 +903,22 @@ static vec3 frame_world_point(const scene_prim *p, const ray *r, const hit *h, r
 {
     if (!(spread > FRAME_SPREAD_MAX))
         return xform_point(&p->frame->to_world, h->point);
-    return vec_madd(r->origin, r->dir, h->t);
+    const double(*w)[4] = p->frame->to_world.m;
+    vec3 T = vec_make(w[0][3], w[1][3], w[2][3]), q = vec_madd(vec_sub(r->origin, T), r->dir, h->t);
+    real dm = vec_max_abs(r->dir), m = 0x1p-20 * (fabs(h->t) + vec_max_abs(vec_sub(r->origin, T)) / dm);
+    vec3 back = vec_madd(q, r->dir, -m), dl = xform_vector(&p->frame->to_local, r->dir);
+    int e;
+    frexp(vec_max_abs(dl), &e);
+    ray near = {xform_vector(&p->frame->to_local, back), vec_scale(dl, ldexp(1.0, -e)), 0, INFINITY};
+    hit all[ISECT_MAX_CROSSINGS];
+    int n = dm > 0 && m > 0 && m < INFINITY ? local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, 0) : 0;
+    real best = m;
+    for (int i = 0; i < n; i++) {
+        real s = ldexp(all[i].t, -e) - m;
+        if (all[i].entering == h->entering && fabs(s) < fabs(best))
+            best = s;
+    }
+    return vec_add(best < m ? vec_madd(q, r->dir, best) : q, T);
 }
 
 /*
