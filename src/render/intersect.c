@@ -884,6 +884,14 @@ static int start_hits(const scene_prim *p, const ray *local, const local_start *
  * rounding, instead of through L (which moved it up to 2^-52 S |o - T| off
  * the line: the lit pixels of a sphere stretched 1e12 off by 4e-5).  Any
  * other frame keeps L x + T, bit for bit.
+ *
+ * That t is the crossing of a line eps |L^-1| |o - T| off the world one,
+ * so the point is as far off the surface, which grows with the eye's
+ * distance (past the spawn offset from about 500 sizes away).  It is
+ * pulled back by the shape's own solve from b, a point of the line a
+ * margin m before it: L^-1 b rounds to the shape's size at the hit, not
+ * to the eye's distance, and the crossing there with the hit's entering
+ * and within m of it moves the point along d.  The hit keeps its t.
  */
 #define FRAME_SPREAD_MAX 0x1p10
 static real frame_spread(const scene_frame *f)
@@ -909,7 +917,8 @@ static vec3 frame_world_point(const scene_prim *p, const ray *r, const hit *h, r
     vec3 back = vec_madd(q, r->dir, -m), dl = xform_vector(&p->frame->to_local, r->dir);
     int e;
     frexp(vec_max_abs(dl), &e);
-    ray near = {xform_vector(&p->frame->to_local, back), vec_scale(dl, ldexp(1.0, -e)), 0, INFINITY};
+    ray near = {xform_vector(&p->frame->to_local, back), vec_make(ldexp(dl.x, -e), ldexp(dl.y, -e), ldexp(dl.z, -e)),
+                0, INFINITY};
     hit all[ISECT_MAX_CROSSINGS];
     int n = dm > 0 && m > 0 && m < INFINITY ? local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, 0) : 0;
     real best = m;
