@@ -24,11 +24,8 @@ light="[3, 6, -2]"
 . "$(dirname "$0")/lit.sh"
 shape() { # NAME: the shape's text with its turn, "|", its stretch
     case $1 in
-    sphere-z) echo 'sphere { center [0, 0, 0] radius 1 rotate [0, 0, 30]|[S, 1, 1]' ;;
-    sphere-xz) echo 'sphere { center [0, 0, 0] radius 1 rotate [40, 0, 25]|[S, 1, 1]' ;;
     cylinder) echo 'cylinder { from [-1, 0, 0] to [1, 0, 0] radius 1 rotate [30, 0, 0]|[1, 1, S]' ;;
-    cone) echo 'cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5 rotate [0, 0, 30]|[S, 1, 1]' ;;
-    torus) echo 'torus { center [0, 0, 0] axis [0, 1, 0] major 0.8 minor 0.4 rotate [20, 0, 30]|[S, 1, 1]' ;;
+    *) echo "$(turned "$1")|[S, 1, 1]" ;;
     esac
 }
 squashed_of() { # NAME S
