@@ -896,12 +896,13 @@ static int start_hits(const scene_prim *p, const ray *local, const local_start *
 #define FRAME_SPREAD_MAX 0x1p10
 static real frame_spread(const scene_frame *f)
 {
-    real worst = 0;
+    /* Row i of |L| |L^-1| sums to sum_j |L_ij| (row j of |L^-1| summed). */
+    real inverse_rows[3], worst = 0;
+    for (int j = 0; j < 3; j++)
+        inverse_rows[j] = fabs(f->to_local.m[j][0]) + fabs(f->to_local.m[j][1]) + fabs(f->to_local.m[j][2]);
     for (int i = 0; i < 3; i++) {
-        real row = 0;
-        for (int k = 0; k < 3; k++)
-            for (int j = 0; j < 3; j++)
-                row += fabs(f->to_world.m[i][j]) * fabs(f->to_local.m[j][k]);
+        const double *l = f->to_world.m[i];
+        real row = fabs(l[0]) * inverse_rows[0] + fabs(l[1]) * inverse_rows[1] + fabs(l[2]) * inverse_rows[2];
         worst = row > worst ? row : worst;
     }
     return worst;
