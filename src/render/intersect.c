@@ -918,13 +918,13 @@ static vec3 frame_world_point(const scene_prim *p, const ray *r, const hit *h, r
     vec3 back = vec_madd(q, r->dir, -m), dl = xform_vector(&p->frame->to_local, r->dir);
     int e;
     frexp(vec_max_abs(dl), &e);
-    ray near = {xform_vector(&p->frame->to_local, back), vec_make(ldexp(dl.x, -e), ldexp(dl.y, -e), ldexp(dl.z, -e)),
-                0, INFINITY};
+    real k = ldexp(1.0, e > -1000 ? -e : 0); /* a power of two: exact */
+    ray near = {xform_vector(&p->frame->to_local, back), vec_scale(dl, k), 0, INFINITY};
     hit all[ISECT_MAX_CROSSINGS];
-    int n = dm > 0 && m > 0 && m < INFINITY ? local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, 0) : 0;
+    int n = dm > 0 && m > 0 && m < INFINITY && e > -1000 ? local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, 0) : 0;
     real best = m;
     for (int i = 0; i < n; i++) {
-        real s = ldexp(all[i].t, -e) - m;
+        real s = all[i].t * k - m;
         if (all[i].entering == h->entering && fabs(s) < fabs(best))
             best = s;
     }
