@@ -899,6 +899,83 @@ START_TEST(test_frame_squashed_turned)
 }
 END_TEST
 
+/* [NUM-FRAME-6] Shapes turned and then stretched 1e12 (`rotate R scale
+ * [S, 1, 1]`: along no axis of their own frame, spread about S), hit by
+ * rays from eyes 5 and 5e4 away aimed at points of their surface where the
+ * views see them.  Geometry, not refray's solve: the unit sphere so turned
+ * and stretched along x is x^2 / S^2 + y^2 + z^2 = 1, within |x| <= 3 the
+ * unit cylinder about x to 5e-24; the cylinder |x| <= 1 of radius 1 about x,
+ * turned about x and stretched along z, is y^2 + z^2 / S^2 <= 1, |x| <= 1,
+ * within |z| <= 3 the plank |x| <= 1, |y| <= 1.  Each crossing's point P
+ * (with its o, t, d; T = 0) must be on the world line to 7 u (|o| + |t d| +
+ * |P|) (max norms, u = 2^-53: the rounding of (o - T) + t d, the pull's
+ * step and + T, spec/numerics.md 2.17c) and on the surface to 16 eps |P|
+ * (the pull's local solve from a point of the line near P: its local
+ * origin rounds by 3 u |L^-1| |P - T|, under 4 u here, and L^-T of the
+ * local normal is within 1e-11 of unit length).  Before (23aaeed) the point
+ * came through L: up to about 2e-5 |o| off the line (eps S |o - T|). */
+START_TEST(test_frame_stretched_turned)
+{
+    static const char *const shapes[] = {
+        "sphere { center [0, 0, 0] radius 1 rotate [40, 0, 25] scale [1e12, 1, 1] }\n",
+        "sphere { center [0, 0, 0] radius 1 rotate [0, 0, 30] scale [1e12, 1, 1] }\n",
+        "cylinder { from [-1, 0, 0] to [1, 0, 0] radius 1 rotate [30, 0, 0] scale [1, 1, 1e12] }\n",
+    };
+    static const double eyes[][3] = {{2.5, 3.2, -4}, {-3, 1.2, 2.5}, {0.6, 7, -1.5}, {0, 3e4, -4e4}};
+    const long double S = 1e12L, u = 0x1p-53L;
+    for (int k = 0; k < 3; k++) {
+        scene_model *s = load(shapes[k]);
+        const scene_prim *p = &s->prims[0];
+        ck_assert(p->frame != NULL);
+        int crossings = 0;
+        for (int e = 0; e < 4; e++)
+            for (int a = 0; a < 7; a++)
+                for (int b = 0; b < 16; b++) {
+                    /* the target: on the ellipsoid x = -3 .. 3 round the axis; on
+                     * the plank z = -3 .. 3 across its faces x = +-1 and y = +-1,
+                     * 0.1 in from their edges */
+                    double v = -3 + a, ang = b * (2 * 3.14159265358979 / 16), c = cos(ang), sn = sin(ang);
+                    double w = -0.9 + 0.6 * (b / 4), side = b % 2 ? 1 : -1;
+                    vec3 target = k < 2 ? vec_make(v, c, sn) : b % 4 < 2 ? vec_make(side, w, v) : vec_make(w, side, v);
+                    vec3 o = vec_make(eyes[e][0], eyes[e][1], eyes[e][2]);
+                    ray r = make_ray(o, vec_sub(target, o));
+                    hit out[ISECT_MAX_CROSSINGS];
+                    int n = isect_prim_all(p, &r, out);
+                    ck_assert_msg(n > 0, "shape %d, eye %d: no hit aimed at (%g, %g, %g)", k, e, target.x,
+                                  target.y, target.z);
+                    for (int i = 0; i < n; i++, crossings++) {
+                        long double P[3] = {out[i].point.x, out[i].point.y, out[i].point.z};
+                        long double O[3] = {o.x, o.y, o.z}, D[3] = {r.dir.x, r.dir.y, r.dir.z}, t = out[i].t;
+                        long double v3[3], mo = 0, md = 0, mp = 0;
+                        for (int j = 0; j < 3; j++) {
+                            v3[j] = P[j] - O[j];
+                            mo = fmaxl(mo, fabsl(O[j]));
+                            md = fmaxl(md, fabsl(D[j]));
+                            mp = fmaxl(mp, fabsl(P[j]));
+                        }
+                        long double cx = v3[1] * D[2] - v3[2] * D[1], cy = v3[2] * D[0] - v3[0] * D[2],
+                                    cz = v3[0] * D[1] - v3[1] * D[0];
+                        long double off = sqrtl(cx * cx + cy * cy + cz * cz) / sqrtl(D[0] * D[0] + D[1] * D[1] + D[2] * D[2]);
+                        long double line = 7 * u * (mo + fabsl(t) * md + mp) * sqrtl(3);
+                        ck_assert_msg(off <= line, "shape %d, eye %d, crossing %d: %Lg off the line, over %Lg", k, e,
+                                      i, off, line);
+                        long double dist;
+                        if (k < 2)
+                            dist = fabsl(sqrtl(P[0] * P[0] / (S * S) + P[1] * P[1] + P[2] * P[2]) - 1);
+                        else
+                            dist = fminl(fabsl(fabsl(P[1]) - sqrtl(1 - P[2] * P[2] / (S * S))), fabsl(fabsl(P[0]) - 1));
+                        ck_assert_msg(dist <= 32 * u * mp, "shape %d, eye %d, crossing %d: %Lg off the surface, over %Lg",
+                                      k, e, i, dist, 32 * u * mp);
+                        if (k == 2)
+                            ck_assert(fabsl(P[0]) <= 1 + 32 * u && fabsl(P[1]) <= 1 + 32 * u);
+                    }
+                }
+        ck_assert_int_gt(crossings, 4 * 7 * 16);
+        scene_free(s);
+    }
+}
+END_TEST
+
 Suite *suite_quadrics(void)
 {
     Suite *s = suite_create("quadrics");
@@ -914,6 +991,7 @@ Suite *suite_quadrics(void)
     tcase_add_test(tc, test_frame_squashed_shapes);
     tcase_add_test(tc, test_frame_squashed_oblique);
     tcase_add_test(tc, test_frame_squashed_turned);
+    tcase_add_test(tc, test_frame_stretched_turned);
     tcase_add_test(tc, test_torus_by_hand);
     tcase_add_test(tc, test_torus_thin_far);
     tcase_add_test(tc, test_torus_far_tiny_forms_no_infinity);

@@ -873,6 +873,65 @@ static int start_hits(const scene_prim *p, const ray *local, const local_start *
 }
 
 /*
+ * [NUM-FRAME-6] A frame that stretches a shape across its own axes (turned,
+ * then scaled unevenly: `rotate R scale [S, 1, 1]`) has a spread
+ * | |L| |L^-1| | of about S: the local line, L^-1 (o - T) + t L^-1 d, is
+ * rounded by eps |L^-1| |o - T| in each local coordinate on its own, and L
+ * takes that back to the world S times larger, across the line.  The local
+ * solve's t is still good (the shift is across the line, along the surface
+ * where it meets it: spec/numerics.md 2.17c), so past a spread of 2^10 the
+ * point is taken on the world line at that t, within the world line's own
+ * rounding, instead of through L (which moved it up to 2^-52 S |o - T| off
+ * the line: the lit pixels of a sphere stretched 1e12 off by 4e-5).  Any
+ * other frame keeps L x + T, bit for bit.
+ *
+ * That t is the crossing of a line eps |L^-1| |o - T| off the world one,
+ * so the point is as far off the surface, which grows with the eye's
+ * distance (past the spawn offset from about 500 sizes away).  It is
+ * pulled back by the shape's own solve from b, a point of the line a
+ * margin m before it: L^-1 b rounds to the shape's size at the hit, not
+ * to the eye's distance, and the crossing there with the hit's entering
+ * and within m of it moves the point along d.  The hit keeps its t.
+ */
+#define FRAME_SPREAD_MAX 0x1p10
+static real frame_spread(const scene_frame *f)
+{
+    /* Row i of |L| |L^-1| sums to sum_j |L_ij| (row j of |L^-1| summed). */
+    real inverse_rows[3], worst = 0;
+    for (int j = 0; j < 3; j++)
+        inverse_rows[j] = fabs(f->to_local.m[j][0]) + fabs(f->to_local.m[j][1]) + fabs(f->to_local.m[j][2]);
+    for (int i = 0; i < 3; i++) {
+        const double *l = f->to_world.m[i];
+        real row = fabs(l[0]) * inverse_rows[0] + fabs(l[1]) * inverse_rows[1] + fabs(l[2]) * inverse_rows[2];
+        worst = row > worst ? row : worst;
+    }
+    return worst;
+}
+
+static vec3 frame_world_point(const scene_prim *p, const ray *r, const hit *h, real spread)
+{
+    if (!(spread > FRAME_SPREAD_MAX))
+        return xform_point(&p->frame->to_world, h->point);
+    const double(*w)[4] = p->frame->to_world.m;
+    vec3 T = vec_make(w[0][3], w[1][3], w[2][3]), q = vec_madd(vec_sub(r->origin, T), r->dir, h->t);
+    real dm = vec_max_abs(r->dir), m = 0x1p-20 * (fabs(h->t) + vec_max_abs(vec_sub(r->origin, T)) / dm);
+    vec3 back = vec_madd(q, r->dir, -m), dl = xform_vector(&p->frame->to_local, r->dir);
+    int e;
+    frexp(vec_max_abs(dl), &e);
+    real k = ldexp(1.0, e > -1000 ? -e : 0); /* a power of two: exact */
+    ray near = {xform_vector(&p->frame->to_local, back), vec_scale(dl, k), 0, INFINITY};
+    hit all[ISECT_MAX_CROSSINGS];
+    int n = dm > 0 && m > 0 && m < INFINITY && e > -1000 ? local_hits(p, &near, NULL, all, ISECT_MAX_CROSSINGS, 0) : 0;
+    real best = m;
+    for (int i = 0; i < n; i++) {
+        real s = all[i].t * k - m;
+        if (all[i].entering == h->entering && fabs(s) < fabs(best))
+            best = s;
+    }
+    return vec_add(best < m ? vec_madd(q, r->dir, best) : q, T);
+}
+
+/*
  * A primitive with a local frame: the ray goes in through to_local (its
  * direction is not renormalised, so t is the same in both frames), points
  * come back through to_world and normals through the inverse transpose.
@@ -922,8 +981,9 @@ static int prim_hits(const scene_prim *p, const ray *r, hit *out, int max, int b
         for (int i = 0; i < n; i++)
             out[i].t = out[i].t < tn ? tn : out[i].t > tf ? tf : out[i].t;
     }
+    real spread = n > 0 && !bare ? frame_spread(p->frame) : 0;
     for (int i = 0; i < n && !bare; i++) {
-        out[i].point = xform_point(&p->frame->to_world, out[i].point);
+        out[i].point = frame_world_point(p, r, &out[i], spread);
         out[i].normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].normal));
         out[i].shading_normal = vec_normalize(xform_normal(&p->frame->to_local, out[i].shading_normal));
     }

@@ -22,12 +22,9 @@ quad() { # X Z: the rectangle |x| <= X, |z| <= Z in y = 0, two triangles
 }
 shape() { # NAME: the shape's text with its turn
     case $1 in
-    sphere-z) echo 'sphere { center [0, 0, 0] radius 1 rotate [0, 0, 30]' ;;
-    sphere-xz) echo 'sphere { center [0, 0, 0] radius 1 rotate [40, 0, 25]' ;;
     box) echo 'box { from [-0.7, -1, -0.7] to [0.7, 1, 0.7] rotate [0, 0, 30]' ;;
     cylinder) echo 'cylinder { from [0, -1, 0] to [0, 1, 0] radius 1 rotate [0, 0, 90]' ;;
-    cone) echo 'cone { from [0, -1, 0] to [0, 1, 0] radii 1 0.5 rotate [0, 0, 30]' ;;
-    torus) echo 'torus { center [0, 0, 0] axis [0, 1, 0] major 0.8 minor 0.4 rotate [20, 0, 30]' ;;
+    *) turned "$1" ;;
     esac
 }
 squashed_of() { echo "$(shape "$1") scale [1, $2, 1] material { Kd 0.8 } }"; }
