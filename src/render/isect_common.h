@@ -80,9 +80,10 @@ int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
  * spheres' boxes while moving away from them. */
 static inline int isect_sphere_moving_away(vec3 f, real radius, const ray *r)
 {
+    if (!(vec_dot(f, r->dir) > 0.0 && r->tmin >= 0.0))
+        return 0;
     real rr = radius * radius, f2 = vec_length2(f);
-    if (!(r->tmin >= 0.0 && vec_dot(f, r->dir) > 0.0 && rr >= 0x1p-1000 &&
-          f2 > rr * (1.0 + 4.0 * REAL_EPSILON)))
+    if (!(rr >= 0x1p-1000 && f2 > rr * (1.0 + 4.0 * REAL_EPSILON)))
         return 0;
     if (!(f2 > 4.0 * radius * radius))
         return 1;
