@@ -328,6 +328,7 @@ static int moving_away_case(const scene_prim *s, const ray *r)
     return away;
 }
 
+/* [NUM-SPHERE-2]: a miss told without the roots is a miss of the roots. */
 START_TEST(test_isect_sphere_moving_away_matches_the_roots)
 {
     /* By hand, the unit sphere: from (2,0,0) along +x it is behind; along
