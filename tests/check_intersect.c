@@ -6,6 +6,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/intersect.h"
+#include "render/isect_common.h"
 #include "base/xform.h"
 
 /* Counter-based generator: the value is a hash (splitmix64's finaliser) of
@@ -290,6 +291,125 @@ START_TEST(test_isect_sphere_huge_sphere_close_up)
         worst = fmax(worst, sphere_hit_error(vec_make(0, 0, 0), radius, eye, vec_scale(u, radius)));
     }
     ck_assert_msg(worst <= 8 * DBL_EPSILON * radius, "worst error %g", worst);
+}
+END_TEST
+
+/* Whether the hot record of sphere s answers as s's own test (isect_part,
+ * the roots with no shortcut) on r: the count, and the nearest hit's bits. */
+static void assert_hot_sphere_matches(const scene_prim *s, const ray *r)
+{
+    real g[ISECT_HOT_REALS];
+    int reals, code = isect_hot_make(s, 0, g, &reals);
+    ck_assert_int_eq(ISECT_HOT_KIND(code), ISECT_HOT_SPHERE);
+    ck_assert_int_eq(isect_hot_crossings(code, g, r, NULL), isect_part_crossings(s, 0, r));
+    ray a = *r, b = *r;
+    hit ha, hb;
+    int na = isect_hot_hit(code, g, &a, &ha), nb = isect_part(s, 0, &b, &hb);
+    ck_assert_int_eq(na, nb);
+    if (na)
+        ck_assert(memcmp(&ha.t, &hb.t, sizeof ha.t) == 0 && memcmp(&a.tmax, &b.tmax, sizeof a.tmax) == 0);
+}
+
+/* Checks isect_sphere_moving_away on r against s's full test; returns 1
+ * when it told a miss. */
+static int moving_away_case(const scene_prim *s, const ray *r)
+{
+    vec3 c = s->u.sphere.center;
+    real radius = s->u.sphere.radius;
+    int away = isect_sphere_moving_away(vec_sub(r->origin, c), radius, r);
+    if (away) {
+        real t[2];
+        int n = isect_sphere_roots(vec_sub(r->origin, c), r->dir, radius, t);
+        for (int i = 0; i < n; i++)
+            ck_assert_msg(!(t[i] > 0.0), "root %a of a ray told moving away", t[i]);
+        ck_assert_int_eq(isect_part_crossings(s, 0, r), 0);
+    }
+    assert_hot_sphere_matches(s, r);
+    return away;
+}
+
+/* [NUM-SPHERE-2]: a miss told without the roots is a miss of the roots. */
+START_TEST(test_isect_sphere_moving_away_matches_the_roots)
+{
+    /* By hand, the unit sphere: from (2,0,0) along +x it is behind; along
+     * -x ahead; along y (f.d = 0), on the surface, an ulp outside or inside
+     * it, or with tmin < 0 (the crossings behind count) left to the roots. */
+    scene_prim s = prim_sphere(vec_make(0, 0, 0), 1);
+    ray r = make_ray(vec_make(2, 0, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(moving_away_case(&s, &r), 1);
+    r.dir = vec_make(-1, 0, 0);
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    r.dir = vec_make(0, 1, 0);
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    r = make_ray(vec_make(1, 0, 0), vec_make(1, 0.5, 0));
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    r.origin.x = nextafter(1.0, 2.0);
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    r.origin.x = nextafter(1.0, 0.0);
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    r.origin.x = 1 + 1e-9;
+    ck_assert_int_eq(moving_away_case(&s, &r), 1);
+    r = make_ray(vec_make(2, 0, 0), vec_make(1, 0, 0));
+    r.tmin = -4;
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    ck_assert_int_eq(isect_part_crossings(&s, 0, &r), 2);
+    /* Inside, moving away from the centre: the exit is ahead. */
+    r = make_ray(vec_make(0.5, 0, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    ck_assert_int_eq(isect_part_crossings(&s, 0, &r), 1);
+    /* Far from the world's origin: |o| past 2^23 |f| is left to the roots
+     * (the refinement's slack reaches 1e-9 |o|). */
+    s = prim_sphere(vec_make(1e12, 0, 0), 1e-3);
+    r = make_ray(vec_make(1e12 + 0.5, 0, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(moving_away_case(&s, &r), 0);
+    s = prim_sphere(vec_make(1e3, 0, 0), 1);
+    r = make_ray(vec_make(1e3 + 3, 0, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(moving_away_case(&s, &r), 1);
+
+    rng g = {1607, 0};
+    int told = 0, told_far = 0, told_near = 0;
+    for (int i = 0; i < 60000; i++) {
+        double scale = pow(10.0, 8 * rng_uniform(&g) - 4);
+        double spread = rng_uniform(&g) < 0.2 ? pow(10.0, 12 * rng_uniform(&g)) : 3.0;
+        vec3 c = vec_scale(vec_make(2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1),
+                           spread * scale);
+        double radius = scale * (0.05 + rng_uniform(&g));
+        s = prim_sphere(c, radius);
+        vec3 n = rng_unit(&g), o;
+        double where = rng_uniform(&g);
+        int kind = i % 5;
+        /* On the surface (rounded), an ulp or a spawn offset off it, or
+         * out to a million radii. */
+        if (kind == 0)
+            o = vec_madd(c, n, radius);
+        else if (kind == 1) {
+            o = vec_madd(c, n, radius);
+            o = vec_make(nextafter(o.x, o.x + n.x), nextafter(o.y, o.y + n.y), nextafter(o.z, o.z + n.z));
+        } else if (kind == 2)
+            o = vec_madd(c, n, radius * (1 + 1e-9 * (where - 0.5)));
+        else
+            o = vec_madd(c, n, radius * (1 + pow(10.0, 6 * where)));
+        /* Away along the normal, tangent, or tangent tipped by a little. */
+        vec3 t = vec_normalize(vec_cross(n, rng_unit(&g)));
+        double tip = rng_uniform(&g), lean = pow(10.0, -12 * rng_uniform(&g));
+        vec3 d = tip < 0.2 ? n : tip < 0.4 ? t : tip < 0.7 ? vec_madd(t, n, lean) : tip < 0.85 ? vec_madd(t, n, -lean)
+               : rng_unit(&g);
+        d = vec_scale(d, 0.25 + 3.75 * rng_uniform(&g));
+        r = make_ray(o, d);
+        double w = rng_uniform(&g);
+        r.tmin = w < 0.4 ? 0.0 : w < 0.5 ? -0.0 : w < 0.9 ? 1e-9 * scale * rng_uniform(&g) : -scale * rng_uniform(&g);
+        if (rng_uniform(&g) < 0.3)
+            r.tmax = r.tmin + 4 * scale * rng_uniform(&g);
+        int away = moving_away_case(&s, &r);
+        told += away;
+        if (away && vec_length2(vec_sub(o, c)) > 4 * radius * radius)
+            told_far++;
+        else if (away)
+            told_near++;
+    }
+    /* The rays reach every branch. */
+    ck_assert_msg(told > 10000 && told_far > 3000 && told_near > 3000, "told %d: %d far, %d near", told, told_far,
+                  told_near);
 }
 END_TEST
 
@@ -1187,6 +1307,7 @@ Suite *suite_intersect(void)
     tcase_add_test(sphere, test_isect_sphere_respects_tmin_tmax);
     tcase_add_test(sphere, test_isect_sphere_small_sphere_far_away);
     tcase_add_test(sphere, test_isect_sphere_huge_sphere_close_up);
+    tcase_add_test(sphere, test_isect_sphere_moving_away_matches_the_roots);
     suite_add_tcase(s, sphere);
     TCase *sheet = tcase_create("plane_disk");
     tcase_add_test(sheet, test_isect_plane_hit_by_hand);

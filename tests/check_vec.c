@@ -1,7 +1,11 @@
-/* Tests of src/base/vec.h: the identities every other module leans on. */
+/* Tests of src/base/vec.h: the identities every other module leans on;
+ * and of base/next_up.h. */
 #include <float.h>
+#include <stdint.h>
+#include <string.h>
 #include "testlib.h"
 #include "base/vec.h"
+#include "base/next_up.h"
 
 START_TEST(test_vec_cross_is_orthogonal_and_right_handed)
 {
@@ -52,6 +56,55 @@ START_TEST(test_vec_madd_and_mul)
 }
 END_TEST
 
+/* a and b the same real: equal with the same sign, or both NaN. */
+static int same_real(real a, real b)
+{
+    return (a != a && b != b) || (a == b && signbit(a) == signbit(b));
+}
+
+static void assert_next_up(real x)
+{
+    real got = real_next_up(x), want = nextafter(x, (real)INFINITY);
+    ck_assert_msg(same_real(got, want), "real_next_up(%La) = %La, nextafter %La", (long double)x, (long double)got,
+                  (long double)want);
+}
+
+START_TEST(test_real_next_up_is_nextafter_toward_infinity)
+{
+    /* The ends of each range, either sign: zeros, the least subnormal and
+     * the largest, the least normal, 1, the largest double, infinities;
+     * every power of two and the doubles either side of it. */
+    const double edges[] = {0.0, 0x1p-1074, 0x1.ffffffffffffep-1023, 0x1.fffffffffffffp-1023, DBL_MIN, 1.0, DBL_MAX,
+                            HUGE_VAL};
+    for (int i = 0; i < (int)(sizeof edges / sizeof edges[0]); i++) {
+        assert_next_up(edges[i]);
+        assert_next_up(-edges[i]);
+    }
+    ck_assert(real_next_up(DBL_MAX) == HUGE_VAL || sizeof(real) > sizeof(double));
+    ck_assert(same_real(real_next_up(-0x1p-1074), -0.0) || sizeof(real) > sizeof(double));
+    ck_assert(same_real(real_next_up(-0.0), 0x1p-1074) || sizeof(real) > sizeof(double));
+    for (int e = -1074; e <= 1023; e++) {
+        double p = ldexp(1.0, e);
+        double around[3] = {nextafter(p, 0.0), p, nextafter(p, HUGE_VAL)};
+        for (int k = 0; k < 3; k++) {
+            assert_next_up(around[k]);
+            assert_next_up(-around[k]);
+        }
+    }
+    /* A NaN stays a NaN. */
+    ck_assert(isnan(real_next_up((real)NAN)));
+    /* Random bit patterns: every exponent, subnormals and NaNs among them. */
+    uint64_t z = 0x243f6a8885a308d3u;
+    for (int i = 0; i < 1000000; i++) {
+        z = z * 6364136223846793005u + 1442695040888963407u;
+        uint64_t bits = z ^ (z >> 29);
+        double x;
+        memcpy(&x, &bits, sizeof x);
+        assert_next_up(x);
+    }
+}
+END_TEST
+
 Suite *suite_vec(void)
 {
     Suite *s = suite_create("vec");
@@ -61,6 +114,7 @@ Suite *suite_vec(void)
     tcase_add_test(tc, test_vec_length_fast_exact_and_falls_back_at_the_ends);
     tcase_add_test(tc, test_vec_normalize_gives_unit_length_or_zero);
     tcase_add_test(tc, test_vec_madd_and_mul);
+    tcase_add_test(tc, test_real_next_up_is_nextafter_toward_infinity);
     suite_add_tcase(s, tc);
     return s;
 }

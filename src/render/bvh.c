@@ -12,6 +12,7 @@
 #include <assert.h>
 #include "render/bvh.h"
 #include "render/slab.h"
+#include "base/next_up.h"
 
 void bvh_free(bvh *b)
 {
@@ -113,7 +114,7 @@ typedef struct nearest {
 static real tie_end(real t_near, real slack)
 {
     real limit = t_near + (TIE_REL * fabs(t_near) + slack);
-    return limit > t_near ? limit : nextafter(t_near, (real)INFINITY);
+    return limit > t_near ? limit : real_next_up(t_near);
 }
 
 static real tie_limit(const nearest *ns)
@@ -129,7 +130,7 @@ real bvh_tie_end(real t_near, vec3 origin)
 /* The tmax that accepts every t <= limit the caller's ray accepts. */
 static real window_tmax(const nearest *ns, real limit)
 {
-    real past = nextafter(limit, (real)INFINITY);
+    real past = real_next_up(limit);
     return past < ns->tmax0 ? past : ns->tmax0;
 }
 

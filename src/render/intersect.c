@@ -1142,11 +1142,25 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_triangle(const real *g, int inclu
     return 1;
 }
 
+/* A hot record's sphere: sphere_hits, with the miss of a ray moving away
+ * from it told first (isect_sphere_moving_away).  Only the hot records: the
+ * scene_prim's test (isect_part, isect_sphere) stays the full one the
+ * tests hold this to.  Out of line, with sphere_hits flattened into it:
+ * inlined into the walks the test grew their loops (mesh.scene, without a
+ * sphere, +0.7 % instructions). */
+ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere(const real *g, const ray *r, hit *out, int max, int bare)
+{
+    vec3 c = vec_make(g[0], g[1], g[2]);
+    if (isect_sphere_moving_away(vec_sub(r->origin, c), g[3], r))
+        return 0;
+    return sphere_hits(c, g[3], r, out, max, bare);
+}
+
 /* The record's crossings, bare (up to max). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
-        return sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, out, max, 1);
+        return hot_sphere(g, r, out, max, 1);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
         return box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, out, max, 1);
     return hot_triangle(g, code >> 2, r, sh, out);
@@ -1218,7 +1232,7 @@ int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear
         return hot_box_crossings(g, r);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_TRIANGLE)
         return hot_triangle(g, code >> 2, r, sh, out);
-    return sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, out, ISECT_MAX_CROSSINGS, 1);
+    return hot_sphere(g, r, out, ISECT_MAX_CROSSINGS, 1);
 }
 
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t)
@@ -1244,7 +1258,7 @@ static int nearest(int found, ray *r, const hit *h);
 int isect_hot_hit(int code, const real *g, ray *r, hit *h)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
-        return nearest(sphere_hits(vec_make(g[0], g[1], g[2]), g[3], r, h, 1, 0), r, h);
+        return nearest(hot_sphere(g, r, h, 1, 0), r, h);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
         return nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
     return -1;

@@ -66,6 +66,30 @@ int isect_quotient(real num, real den, real *q);
     ensures EXACT(\result >= 1 && \abs(t[0]) < 0x1p1020 ==> vdist2(f, d, t[0]) == radius * radius);
     ensures EXACT(\result == 2 && \abs(t[1]) < 0x1p1020 ==> vdist2(f, d, t[1]) == radius * radius); */
 int isect_sphere_roots(vec3 f, vec3 d, real radius, real t[2]);
+
+/* Whether sphere_hits (intersect.c) would keep no crossing of the sphere
+ * of centre o - f for r, told without the roots ([NUM-SPHERE-2],
+ * spec/numerics.md 2.1a): tmin >= 0, the origin outside by a margin that
+ * survives isect_sphere_roots' rounding (|f| rounded > R, so c >= 0) and
+ * f.d > 0 (so q < 0): both roots are then <= 0.  When the origin is far
+ * (sphere_hits refines, |f|^2 > 4 R^2 as it rounds it), both roots are
+ * below -|f|/(4|d|), and with |o| <= 2^23 |f| sphere_root_possible's
+ * slack cannot lift them to tmin.  R^2 >= 2^-1000 keeps |f| in
+ * vec_length_fast's range of sqrt(f.f), the f2 computed here.  A ray
+ * leaving a sphere, or a shadow ray leaving a neighbour, meets many
+ * spheres' boxes while moving away from them. */
+static inline int isect_sphere_moving_away(vec3 f, real radius, const ray *r)
+{
+    if (!(vec_dot(f, r->dir) > 0.0 && r->tmin >= 0.0))
+        return 0;
+    real rr = radius * radius, f2 = vec_length2(f);
+    if (!(rr >= 0x1p-1000 && f2 > rr * (1.0 + 4.0 * REAL_EPSILON)))
+        return 0;
+    if (!(f2 > 4.0 * radius * radius))
+        return 1;
+    real m = vec_max_abs(r->origin);
+    return m * m <= 0x1p46 * f2;
+}
 /* Fills a hit: prim -1, part 0, no barycentrics, shading normal = n,
  * entering = dir . n < 0. */
 /*@ requires \valid(h);
