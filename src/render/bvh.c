@@ -189,7 +189,8 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
     nearest_add(ns, &h, 0);
 }
 
-/* Item i of the tree: by its hot record when it has one. */
+/* Item i of the tree, not a triangle's record: by its hot record when it
+ * has one. */
 static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims, int i)
 {
     bvh_hot hr = b->hot[i];
@@ -201,21 +202,85 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
         ns->stats->prims_tested++;
     hit h = {0};
     /* A sphere or box makes its full hit at once, as isect_part (a winner
-     * made again would cost a second test); only a triangle defers it. */
+     * made again would cost a second test); a triangle's record does not
+     * come here (visit_hits' runs: its hit is deferred). */
     ray at = ns->rr;
     int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &at, &h);
-    if (met >= 0) {
-        if (met) {
-            h.prim = b->items[i].prim;
-            nearest_add(ns, &h, 0);
-        }
-        return;
+    assert(met >= 0);
+    if (met > 0) {
+        h.prim = b->items[i].prim;
+        nearest_add(ns, &h, 0);
     }
-    if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, shear_get(&ns->sh), &h.t))
-        return;
-    h.prim = b->items[i].prim;
-    h.part = b->items[i].part;
-    nearest_add(ns, &h, 1);
+}
+
+/*
+ * A leaf's items [i, end), in order: each run of consecutive triangle
+ * records is tested by isect_hot_triangle_run, which hands over its
+ * crossed records one at a time (run_hit(ctx, item, t)), and every other
+ * item goes to other(ctx, item), which counts its own test.  Both walks
+ * share it: the nearest walk, whose run_hit shrinks the ray's tmax (so
+ * the run goes on from the next record with the ray as it is then, and *r
+ * is read again), and the count walk.  The records are tested in the
+ * order, and with the rays, that one call per item gave.  Stops at the
+ * first nonzero answer of a callback and returns it.  Inline, with the
+ * callbacks constant at each call.
+ */
+static inline int visit_hits(const bvh *b, int i, int end, const ray *r, lazy_shear *z, bvh_stats *stats,
+                             int (*run_hit)(void *ctx, int item, real t), int (*other)(void *ctx, int item),
+                             void *ctx)
+{
+    while (i < end) {
+        if (ISECT_HOT_KIND(b->hot[i].code) != ISECT_HOT_TRIANGLE) {
+            int stop = other(ctx, i++);
+            if (stop)
+                return stop;
+            continue;
+        }
+        int j = i + 1;
+        while (j < end && ISECT_HOT_KIND(b->hot[j].code) == ISECT_HOT_TRIANGLE)
+            j++;
+        const isect_shear *sh = shear_get(z);
+        while (i < j) {
+            real t;
+            int k = i + isect_hot_triangle_run(b->hot + i, j - i, b->hot_reals, r, sh, &t);
+            if (stats)
+                stats->prims_tested += (k < j ? k + 1 : j) - i;
+            if (k == j)
+                break;
+            int stop = run_hit(ctx, k, t);
+            if (stop)
+                return stop;
+            i = k + 1;
+        }
+        i = j;
+    }
+    return 0;
+}
+
+/* The nearest walk's leaf: visit_hits' callbacks.  A triangle crossed is
+ * a deferred candidate (see nearest). */
+typedef struct nearest_leaf {
+    nearest *ns;
+    const bvh *b;
+    const scene_prim *prims;
+} nearest_leaf;
+
+static int nearest_run_hit(void *ctx, int item, real t)
+{
+    const nearest_leaf *l = ctx;
+    hit h = {0};
+    h.t = t;
+    h.prim = l->b->items[item].prim;
+    h.part = l->b->items[item].part;
+    nearest_add(l->ns, &h, 1);
+    return 0;
+}
+
+static int nearest_other(void *ctx, int item)
+{
+    const nearest_leaf *l = ctx;
+    nearest_test_item(l->ns, l->b, l->prims, item);
+    return 0;
 }
 
 /* The lowest-index candidate: the nearest hit (see above). */
@@ -276,8 +341,9 @@ static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
         if (nd->count > 0) {
-            for (int i = nd->first; i < nd->first + nd->count; i++)
-                nearest_test_item(ns, b, prims, i);
+            nearest_leaf l = {ns, b, prims};
+            visit_hits(b, nd->first, nd->first + nd->count, &ns->rr, &ns->sh, ns->stats, nearest_run_hit,
+                       nearest_other, &l);
             node = -1;
         } else {
             node = descend(b, node, &s, ns, stack, &sp);
@@ -380,17 +446,32 @@ static int visit_part(const walk *w, bvh_ref ref)
     return 0;
 }
 
-/* Item i of the tree: a count walk uses its hot record when it has one. */
-static int visit_item(const bvh *b, const walk *w, int i)
+/* The count walk's leaf: visit_hits' callbacks, ctx the walk.  A
+ * triangle's record crossed counts 1 (isect_hot_crossings); any other item
+ * is counted by its hot record when it has one. */
+typedef struct walk_leaf {
+    const walk *w;
+    const bvh *b;
+} walk_leaf;
+
+static int count_run_hit(void *ctx, int item, real t)
 {
-    bvh_hot hr = b->hot[i];
-    if (!w->count_fn || hr.code == ISECT_HOT_NONE)
-        return visit_part(w, b->items[i]);
+    const walk_leaf *l = ctx;
+    (void)t;
+    return l->w->count_fn(l->w->ctx, l->b->items[item], 1);
+}
+
+static int count_other(void *ctx, int item)
+{
+    const walk_leaf *l = ctx;
+    const walk *w = l->w;
+    bvh_hot hr = l->b->hot[item];
+    if (hr.code == ISECT_HOT_NONE)
+        return visit_part(w, l->b->items[item]);
     if (w->stats)
         w->stats->prims_tested++;
-    int n = isect_hot_crossings(hr.code, b->hot_reals + hr.at, w->r,
-                                ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE ? shear_get(w->sh) : NULL);
-    return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
+    int n = isect_hot_crossings(hr.code, l->b->hot_reals + hr.at, w->r, NULL);
+    return n > 0 ? w->count_fn(w->ctx, l->b->items[item], n) : 0;
 }
 
 /* Depth-first over every node below each of start[0..starts-1] (itself
@@ -433,9 +514,15 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                     node = a + 1;
                     continue;
                 }
+            } else if (w->count_fn) {
+                walk_leaf l = {w, b};
+                int stop = visit_hits(b, nd->first, nd->first + nd->count, w->r, w->sh, w->stats, count_run_hit,
+                                      count_other, &l);
+                if (stop)
+                    return stop;
             } else {
                 for (int i = nd->first; i < nd->first + nd->count; i++) {
-                    int stop = visit_item(b, w, i);
+                    int stop = visit_part(w, b->items[i]);
                     if (stop)
                         return stop;
                 }
