@@ -426,11 +426,10 @@ typedef struct walk {
     lazy_shear *sh;
 } walk;
 
-static int visit_part(const walk *w, bvh_ref ref)
+/* A part's crossings, to fn or counted, its test not counted in stats. */
+static int visit_part_uncounted(const walk *w, bvh_ref ref)
 {
     hit out[ISECT_MAX_CROSSINGS];
-    if (w->stats)
-        w->stats->prims_tested++;
     if (w->count_fn) {
         const scene_prim *p = &w->prims[ref.prim];
         int n = isect_part_crossings_sheared(p, ref.part, w->r, shear_for(w->sh, p));
@@ -446,27 +445,38 @@ static int visit_part(const walk *w, bvh_ref ref)
     return 0;
 }
 
-/* The count walk's leaf: visit_hits' callbacks, ctx the walk.  A
- * triangle's record crossed counts 1 (isect_hot_crossings); any other item
- * is counted by its hot record when it has one. */
+static int visit_part(const walk *w, bvh_ref ref)
+{
+    if (w->stats)
+        w->stats->prims_tested++;
+    return visit_part_uncounted(w, ref);
+}
+
+/* The walks' leaf: visit_hits' callbacks.  A triangle's record crossed
+ * counts 1 (isect_hot_crossings); for fn its one crossing is made by the
+ * part's own test, which finds it as the record did (intersect.h: the
+ * same bits), and a record not crossed has none to report.  Any other
+ * item is counted by its hot record when it has one. */
 typedef struct walk_leaf {
     const walk *w;
     const bvh *b;
 } walk_leaf;
 
-static int count_run_hit(void *ctx, int item, real t)
+static int walk_run_hit(void *ctx, int item, real t)
 {
     const walk_leaf *l = ctx;
     (void)t;
+    if (!l->w->count_fn)
+        return visit_part_uncounted(l->w, l->b->items[item]);
     return l->w->count_fn(l->w->ctx, l->b->items[item], 1);
 }
 
-static int count_other(void *ctx, int item)
+static int walk_other(void *ctx, int item)
 {
     const walk_leaf *l = ctx;
     const walk *w = l->w;
     bvh_hot hr = l->b->hot[item];
-    if (hr.code == ISECT_HOT_NONE)
+    if (!w->count_fn || hr.code == ISECT_HOT_NONE)
         return visit_part(w, l->b->items[item]);
     if (w->stats)
         w->stats->prims_tested++;
@@ -514,18 +524,12 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                     node = a + 1;
                     continue;
                 }
-            } else if (w->count_fn) {
+            } else {
                 walk_leaf l = {w, b};
-                int stop = visit_hits(b, nd->first, nd->first + nd->count, w->r, w->sh, w->stats, count_run_hit,
-                                      count_other, &l);
+                int stop = visit_hits(b, nd->first, nd->first + nd->count, w->r, w->sh, w->stats, walk_run_hit,
+                                      walk_other, &l);
                 if (stop)
                     return stop;
-            } else {
-                for (int i = nd->first; i < nd->first + nd->count; i++) {
-                    int stop = visit_part(w, b->items[i]);
-                    if (stop)
-                        return stop;
-                }
             }
             if (sp == 0)
                 break;
