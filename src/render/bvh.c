@@ -236,23 +236,17 @@ static inline int visit_hits(const bvh *b, int i, int end, const ray *r, lazy_sh
                 return stop;
             continue;
         }
-        int j = i + 1;
-        while (j < end && ISECT_HOT_KIND(b->hot[j].code) == ISECT_HOT_TRIANGLE)
-            j++;
-        const isect_shear *sh = shear_get(z);
-        while (i < j) {
-            real t;
-            int k = i + isect_hot_triangle_run(b->hot + i, j - i, b->hot_reals, r, sh, &t);
-            if (stats)
-                stats->prims_tested += (k < j ? k + 1 : j) - i;
-            if (k == j)
-                break;
+        real t;
+        int k = i + isect_hot_triangle_run(b->hot + i, end - i, b->hot_reals, r, shear_get(z), &t);
+        int met = k < end && ISECT_HOT_KIND(b->hot[k].code) == ISECT_HOT_TRIANGLE;
+        if (stats)
+            stats->prims_tested += k + met - i;
+        if (met) {
             int stop = run_hit(ctx, k, t);
             if (stop)
                 return stop;
-            i = k + 1;
         }
-        i = j;
+        i = k + met;
     }
     return 0;
 }

@@ -1095,7 +1095,8 @@ static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, con
     sh.kx = kx;
     sh.ky = ky;
     sh.kz = kz;
-    for (int i = 0; i < n; i++) {
+    int i;
+    for (i = 0; i < n && ISECT_HOT_KIND(hot[i].code) == ISECT_HOT_TRIANGLE; i++) {
         const real *g = reals + hot[i].at;
         vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
         tri_bary s;
@@ -1104,7 +1105,7 @@ static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, con
             return i;
         }
     }
-    return n;
+    return i;
 }
 
 /* Out of line for hot_triangle's reason; called once per run, not per
@@ -1112,8 +1113,12 @@ static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, con
 ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, int n, const real *reals,
                                                            const ray *r, const isect_shear *sh, real *t)
 {
-    if (sh->dz == 0.0)
-        return n;   /* triangle_solve's first answer, for every record */
+    if (sh->dz == 0.0) {
+        int i = 0;  /* triangle_solve's first answer, for every record */
+        while (i < n && ISECT_HOT_KIND(hot[i].code) == ISECT_HOT_TRIANGLE)
+            i++;
+        return i;
+    }
     switch (sh->kz * 3 + sh->kx) {
     case 0 * 3 + 1:
         return triangle_run(hot, n, reals, r, *sh, 1, 2, 0, t);
