@@ -217,13 +217,14 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
  * A leaf's items [i, end), in order: each run of consecutive triangle
  * records is tested by isect_hot_triangle_run, which hands over its
  * crossed records one at a time (run_hit(ctx, item, t)), and every other
- * item goes to other(ctx, item), which counts its own test.  Both walks
- * share it: the nearest walk, whose run_hit shrinks the ray's tmax (so
+ * item goes to other(ctx, item), which counts its own test.  Every walk
+ * shares it: the nearest walk, whose run_hit shrinks the ray's tmax (so
  * the run goes on from the next record with the ray as it is then, and *r
- * is read again), and the count walk.  The records are tested in the
- * order, and with the rays, that one call per item gave.  Stops at the
- * first nonzero answer of a callback and returns it.  Inline, with the
- * callbacks constant at each call.
+ * is read again), and the crossing walks of bvh_visit and
+ * bvh_visit_counts.  The records are tested in the order, and with the
+ * rays, that one call per item gave.  Stops at the first nonzero answer
+ * of a callback and returns it.  Inline, with the callbacks constant at
+ * each call.
  */
 static inline int visit_hits(const bvh *b, int i, int end, const ray *r, lazy_shear *z, bvh_stats *stats,
                              int (*run_hit)(void *ctx, int item, real t), int (*other)(void *ctx, int item),
