@@ -190,7 +190,8 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
     nearest_add(ns, &h, 0);
 }
 
-/* Item i of the tree: by its hot record when it has one. */
+/* Item i of the tree, not a triangle's record: by its hot record when it
+ * has one. */
 static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims, int i)
 {
     bvh_hot hr = b->hot[i];
@@ -202,21 +203,80 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
         ns->stats->prims_tested++;
     hit h = {0};
     /* A sphere or box makes its full hit at once, as isect_part (a winner
-     * made again would cost a second test); only a triangle defers it. */
+     * made again would cost a second test); a triangle's record does not
+     * come here (visit_hits' runs: its hit is deferred). */
     ray at = ns->rr;
     int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &at, &h);
-    if (met >= 0) {
-        if (met) {
-            h.prim = b->items[i].prim;
-            nearest_add(ns, &h, 0);
-        }
-        return;
+    assert(met >= 0);
+    if (met > 0) {
+        h.prim = b->items[i].prim;
+        nearest_add(ns, &h, 0);
     }
-    if (!isect_hot_nearest(hr.code, b->hot_reals + hr.at, &ns->rr, shear_get(&ns->sh), &h.t))
-        return;
-    h.prim = b->items[i].prim;
-    h.part = b->items[i].part;
-    nearest_add(ns, &h, 1);
+}
+
+/*
+ * A leaf's items [i, end), in order: each run of consecutive triangle
+ * records is tested by isect_hot_triangle_run, which hands over its
+ * crossed records one at a time (run_hit(ctx, item, t)), and every other
+ * item goes to other(ctx, item), which counts its own test.  Every walk
+ * shares it: the nearest walk, whose run_hit shrinks the ray's tmax (so
+ * the run goes on from the next record with the ray as it is then, and *r
+ * is read again), and the crossing walks of bvh_visit and
+ * bvh_visit_counts.  The records are tested in the order, and with the
+ * rays, that one call per item gave.  Stops at the first nonzero answer
+ * of a callback and returns it.  Inline, with the callbacks constant at
+ * each call.
+ */
+static inline int visit_hits(const bvh *b, int i, int end, const ray *r, lazy_shear *z, bvh_stats *stats,
+                             int (*run_hit)(void *ctx, int item, real t), int (*other)(void *ctx, int item),
+                             void *ctx)
+{
+    while (i < end) {
+        if (ISECT_HOT_KIND(b->hot[i].code) != ISECT_HOT_TRIANGLE) {
+            int stop = other(ctx, i++);
+            if (stop)
+                return stop;
+            continue;
+        }
+        real t;
+        int k = i + isect_hot_triangle_run(b->hot + i, end - i, b->hot_reals, r, shear_get(z), &t);
+        int met = k < end && ISECT_HOT_KIND(b->hot[k].code) == ISECT_HOT_TRIANGLE;
+        if (stats)
+            stats->prims_tested += k + met - i;
+        if (met) {
+            int stop = run_hit(ctx, k, t);
+            if (stop)
+                return stop;
+        }
+        i = k + met;
+    }
+    return 0;
+}
+
+/* The nearest walk's leaf: visit_hits' callbacks.  A triangle crossed is
+ * a deferred candidate (see nearest). */
+typedef struct nearest_leaf {
+    nearest *ns;
+    const bvh *b;
+    const scene_prim *prims;
+} nearest_leaf;
+
+static int nearest_run_hit(void *ctx, int item, real t)
+{
+    const nearest_leaf *l = ctx;
+    hit h = {0};
+    h.t = t;
+    h.prim = l->b->items[item].prim;
+    h.part = l->b->items[item].part;
+    nearest_add(l->ns, &h, 1);
+    return 0;
+}
+
+static int nearest_other(void *ctx, int item)
+{
+    const nearest_leaf *l = ctx;
+    nearest_test_item(l->ns, l->b, l->prims, item);
+    return 0;
 }
 
 /* The lowest-index candidate: the nearest hit (see above). */
@@ -277,8 +337,9 @@ static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
         if (nd->count > 0) {
-            for (int i = nd->first; i < nd->first + nd->count; i++)
-                nearest_test_item(ns, b, prims, i);
+            nearest_leaf l = {ns, b, prims};
+            visit_hits(b, nd->first, nd->first + nd->count, &ns->rr, &ns->sh, ns->stats, nearest_run_hit,
+                       nearest_other, &l);
             node = -1;
         } else {
             node = descend(b, node, &s, ns, stack, &sp);
@@ -361,11 +422,10 @@ typedef struct walk {
     lazy_shear *sh;
 } walk;
 
-static int visit_part(const walk *w, bvh_ref ref)
+/* A part's crossings, to fn or counted, its test not counted in stats. */
+static int visit_part_uncounted(const walk *w, bvh_ref ref)
 {
     hit out[ISECT_MAX_CROSSINGS];
-    if (w->stats)
-        w->stats->prims_tested++;
     if (w->count_fn) {
         const scene_prim *p = &w->prims[ref.prim];
         int n = isect_part_crossings_sheared(p, ref.part, w->r, shear_for(w->sh, p));
@@ -381,17 +441,43 @@ static int visit_part(const walk *w, bvh_ref ref)
     return 0;
 }
 
-/* Item i of the tree: a count walk uses its hot record when it has one. */
-static int visit_item(const bvh *b, const walk *w, int i)
+static int visit_part(const walk *w, bvh_ref ref)
 {
-    bvh_hot hr = b->hot[i];
-    if (!w->count_fn || hr.code == ISECT_HOT_NONE)
-        return visit_part(w, b->items[i]);
     if (w->stats)
         w->stats->prims_tested++;
-    int n = isect_hot_crossings(hr.code, b->hot_reals + hr.at, w->r,
-                                ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE ? shear_get(w->sh) : NULL);
-    return n > 0 ? w->count_fn(w->ctx, b->items[i], n) : 0;
+    return visit_part_uncounted(w, ref);
+}
+
+/* The walks' leaf: visit_hits' callbacks.  A triangle's record crossed
+ * counts 1 (isect_hot_crossings); for fn its one crossing is made by the
+ * part's own test, which finds it as the record did (intersect.h: the
+ * same bits), and a record not crossed has none to report.  Any other
+ * item is counted by its hot record when it has one. */
+typedef struct walk_leaf {
+    const walk *w;
+    const bvh *b;
+} walk_leaf;
+
+static int walk_run_hit(void *ctx, int item, real t)
+{
+    const walk_leaf *l = ctx;
+    (void)t;
+    if (!l->w->count_fn)
+        return visit_part_uncounted(l->w, l->b->items[item]);
+    return l->w->count_fn(l->w->ctx, l->b->items[item], 1);
+}
+
+static int walk_other(void *ctx, int item)
+{
+    const walk_leaf *l = ctx;
+    const walk *w = l->w;
+    bvh_hot hr = l->b->hot[item];
+    if (!w->count_fn || hr.code == ISECT_HOT_NONE)
+        return visit_part(w, l->b->items[item]);
+    if (w->stats)
+        w->stats->prims_tested++;
+    int n = isect_hot_crossings(hr.code, l->b->hot_reals + hr.at, w->r, NULL);
+    return n > 0 ? w->count_fn(w->ctx, l->b->items[item], n) : 0;
 }
 
 /* Depth-first over every node below each of start[0..starts-1] (itself
@@ -435,11 +521,11 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                     continue;
                 }
             } else {
-                for (int i = nd->first; i < nd->first + nd->count; i++) {
-                    int stop = visit_item(b, w, i);
-                    if (stop)
-                        return stop;
-                }
+                walk_leaf l = {w, b};
+                int stop = visit_hits(b, nd->first, nd->first + nd->count, w->r, w->sh, w->stats, walk_run_hit,
+                                      walk_other, &l);
+                if (stop)
+                    return stop;
             }
             if (sp == 0)
                 break;

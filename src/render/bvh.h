@@ -44,14 +44,6 @@ typedef struct bvh_ref {
     int part;          /* which part of it (intersect.h) */
 } bvh_ref;
 
-/* Item i's hot record (intersect.h): its code, and where its reals start
- * in bvh.hot_reals.  The reals lie in the parts' order (the primitives'),
- * each record aligned to 32 bytes (a sphere's in one cache line). */
-typedef struct bvh_hot {
-    int code;          /* ISECT_HOT_NONE: test through the scene_prim */
-    int at;
-} bvh_hot;
-
 typedef struct bvh {
     bvh_node *nodes;   /* nodes[0] is the root; NULL when nothing is bounded */
     int node_count;
@@ -68,7 +60,10 @@ typedef struct bvh {
                           spec/shading.md, [SHADE-SHORTCUT-BVH-1]); 0 after
                           bvh_build */
     int unbounded_cap;
-    bvh_hot *hot;      /* item_count records, beside items */
+    bvh_hot *hot;      /* item_count records, beside items (intersect.h): the
+                          reals lie in the parts' order (the primitives'), each
+                          record aligned to 32 bytes (a sphere's in one cache
+                          line) */
     real *hot_reals;   /* inside hot_block, aligned to 32 bytes */
     void *hot_block;
     size_t hot_block_bytes;

@@ -1156,6 +1156,59 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere(const real *g, const ray *
     return sphere_hits(c, g[3], r, out, max, bare);
 }
 
+/* A run for one permutation of the axes, given as constants at each call
+ * below: triangle_solve's switch on the permutation folds away, and the
+ * shear, the origin and the interval stay in registers over the run,
+ * where a call of hot_triangle per record made its prologue, its switch
+ * and its loads again each time.  triangle_solve itself is unchanged (the
+ * function Eva analyses); inlined, it does the same operations in the same
+ * order, so each record's answer is hot_triangle's to the bit. */
+static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, const ray *r, isect_shear sh, int kx,
+                               int ky, int kz, real *t)
+{
+    sh.kx = kx;
+    sh.ky = ky;
+    sh.kz = kz;
+    int i;
+    for (i = 0; i < n && ISECT_HOT_KIND(hot[i].code) == ISECT_HOT_TRIANGLE; i++) {
+        const real *g = reals + hot[i].at;
+        vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
+        tri_bary s;
+        if (triangle_solve(v, hot[i].code >> 2, r, &sh, &s) && in_interval(r, s.t)) {
+            *t = s.t;
+            return i;
+        }
+    }
+    return i;
+}
+
+/* Out of line for hot_triangle's reason; called once per run, not per
+ * record.  The cases are triangle_solve's: (kz, kx) gives ky. */
+ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, int n, const real *reals,
+                                                           const ray *r, const isect_shear *sh, real *t)
+{
+    if (sh->dz == 0.0) {
+        int i = 0;  /* triangle_solve's first answer, for every record */
+        while (i < n && ISECT_HOT_KIND(hot[i].code) == ISECT_HOT_TRIANGLE)
+            i++;
+        return i;
+    }
+    switch (sh->kz * 3 + sh->kx) {
+    case 0 * 3 + 1:
+        return triangle_run(hot, n, reals, r, *sh, 1, 2, 0, t);
+    case 0 * 3 + 2:
+        return triangle_run(hot, n, reals, r, *sh, 2, 1, 0, t);
+    case 1 * 3 + 2:
+        return triangle_run(hot, n, reals, r, *sh, 2, 0, 1, t);
+    case 1 * 3 + 0:
+        return triangle_run(hot, n, reals, r, *sh, 0, 2, 1, t);
+    case 2 * 3 + 0:
+        return triangle_run(hot, n, reals, r, *sh, 0, 1, 2, t);
+    default:
+        return triangle_run(hot, n, reals, r, *sh, 1, 0, 2, t);
+    }
+}
+
 /* The record's crossings, bare (up to max). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {

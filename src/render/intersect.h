@@ -170,6 +170,23 @@ int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *
  * vertex normals) for a full hit. */
 int isect_hot_hit(int code, const real *g, ray *r, hit *h);
 
+/* Where a record is kept (the BVH's items, bvh.h): its code, and where its
+ * reals start in an array of them. */
+typedef struct bvh_hot {
+    int code;          /* ISECT_HOT_NONE: test through the scene_prim */
+    int at;
+} bvh_hot;
+/* The run of triangle records at the start of hot[0..n-1] (those of kind
+ * ISECT_HOT_TRIANGLE up to the first of another kind; each one's reals at
+ * reals + hot[i].at), tested in order with one ray: returns the index of
+ * the first that isect_hot_nearest finds crossed, its t in *t; else the
+ * index where the run ends (the first record of another kind, or n).  sh:
+ * r's shear.  The same tests as isect_hot_nearest (and
+ * isect_hot_crossings: a triangle's count is 0 or 1) of each record in
+ * turn, with the ray's permutation chosen once for the run. */
+int isect_hot_triangle_run(const bvh_hot *hot, int n, const real *reals, const ray *r, const isect_shear *sh,
+                           real *t);
+
 /* Where shadow rays from a hit should start: for a triangle with vertex
  * normals the hit point lifted toward the curved surface those normals
  * describe (Hanika's shadow terminator offset, spec/shading.md
