@@ -661,6 +661,13 @@ START_TEST(test_bvh_deterministic_and_well_formed)
 }
 END_TEST
 
+/* The union of two boxes, in real (fmin would go through double). */
+static void box_join(vec3 *lo, vec3 *hi, vec3 l, vec3 h)
+{
+    *lo = vec_make(l.x < lo->x ? l.x : lo->x, l.y < lo->y ? l.y : lo->y, l.z < lo->z ? l.z : lo->z);
+    *hi = vec_make(h.x > hi->x ? h.x : hi->x, h.y > hi->y ? h.y : hi->y, h.z > hi->z ? h.z : hi->z);
+}
+
 /* The exact union of the padded boxes of node k's parts into *lo, *hi
  * (recomputed from the parts, not read from the tree), asserting on the
  * way that every node's stored box is that union to the bit. */
@@ -673,15 +680,13 @@ static void exact_box(const bvh *b, const scene_prim *prims, int k, vec3 *lo, ve
         for (int i = nd->first; i < nd->first + nd->count; i++) {
             vec3 plo, phi;
             ck_assert(isect_part_padded_bounds(&prims[b->items[i].prim], b->items[i].part, &plo, &phi));
-            *lo = vec_make(fmin(lo->x, plo.x), fmin(lo->y, plo.y), fmin(lo->z, plo.z));
-            *hi = vec_make(fmax(hi->x, phi.x), fmax(hi->y, phi.y), fmax(hi->z, phi.z));
+            box_join(lo, hi, plo, phi);
         }
     } else {
         for (int c = 0; c < 2; c++) {
             vec3 klo, khi;
             exact_box(b, prims, nd->first + c, &klo, &khi);
-            *lo = vec_make(fmin(lo->x, klo.x), fmin(lo->y, klo.y), fmin(lo->z, klo.z));
-            *hi = vec_make(fmax(hi->x, khi.x), fmax(hi->y, khi.y), fmax(hi->z, khi.z));
+            box_join(lo, hi, klo, khi);
         }
     }
     ck_assert_msg(nd->lo.x == lo->x && nd->lo.y == lo->y && nd->lo.z == lo->z && nd->hi.x == hi->x &&
