@@ -661,6 +661,60 @@ START_TEST(test_bvh_deterministic_and_well_formed)
 }
 END_TEST
 
+/* The union of two boxes, in real (fmin would go through double). */
+static void box_join(vec3 *lo, vec3 *hi, vec3 l, vec3 h)
+{
+    *lo = vec_make(l.x < lo->x ? l.x : lo->x, l.y < lo->y ? l.y : lo->y, l.z < lo->z ? l.z : lo->z);
+    *hi = vec_make(h.x > hi->x ? h.x : hi->x, h.y > hi->y ? h.y : hi->y, h.z > hi->z ? h.z : hi->z);
+}
+
+/* The exact union of the padded boxes of node k's parts into *lo, *hi
+ * (recomputed from the parts, not read from the tree), asserting on the
+ * way that every node's stored box is that union to the bit. */
+static void exact_box(const bvh *b, const scene_prim *prims, int k, vec3 *lo, vec3 *hi)
+{
+    const bvh_node *nd = &b->nodes[k];
+    *lo = vec_splat(INFINITY);
+    *hi = vec_splat(-INFINITY);
+    if (nd->count > 0) {
+        for (int i = nd->first; i < nd->first + nd->count; i++) {
+            vec3 plo, phi;
+            ck_assert(isect_part_padded_bounds(&prims[b->items[i].prim], b->items[i].part, &plo, &phi));
+            box_join(lo, hi, plo, phi);
+        }
+    } else {
+        for (int c = 0; c < 2; c++) {
+            vec3 klo, khi;
+            exact_box(b, prims, nd->first + c, &klo, &khi);
+            box_join(lo, hi, klo, khi);
+        }
+    }
+    ck_assert_msg(nd->lo.x == lo->x && nd->lo.y == lo->y && nd->lo.z == lo->z && nd->hi.x == hi->x &&
+                      nd->hi.y == hi->y && nd->hi.z == hi->z,
+                  "node %d's box is not the union of its parts' boxes", k);
+}
+
+START_TEST(test_bvh_boxes_exact_past_one_axis)
+{
+    /* 9000 parts: the nodes above 4096 parts are binned along one axis,
+     * those below along all three (bin_axes), and a child's box comes
+     * from the bins; each must be exactly its parts' union, so no bin
+     * may lose or gain a part on any axis. */
+    int n = 9000;
+    scene_frame *frames;
+    scene_prim *prims = random_scene(900, n, 0, &frames);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n, NULL));
+    ck_assert_int_eq(b.unbounded_count, 0);
+    ck_assert_int_gt(b.node_count, 1);
+    vec3 lo, hi;
+    exact_box(&b, prims, 0, &lo, &hi);
+    bvh_free(&b);
+    free(prims);
+    free(frames);
+}
+END_TEST
+
 START_TEST(test_bvh_skewed_distribution_depth_bounded)
 {
     /* 600 spheres at x = 1.5^-k, radius a tenth of that: each SAH split
@@ -767,6 +821,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_tie_window_end_order_free);
     tcase_add_test(tc, test_bvh_two_parts_split_by_hand);
     tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
+    tcase_add_test(tc, test_bvh_boxes_exact_past_one_axis);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
     suite_add_tcase(s, tc);

@@ -80,13 +80,25 @@ int name_index_add(name_index *x, int entry)
     return 1;
 }
 
+/* strcmp(a, b) == 0 without the library call: the names of a scene are
+ * short (loop variables, materials), and a find is nearly always a hit,
+ * so the call, not the bytes, was most of a comparison's cost. */
+static int same_name(const char *a, const char *b)
+{
+    while (*a && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
 int name_index_find(name_index *x, const char *name)
 {
     if (!x->bucket_count)
         return -1;
     for (int i = x->heads[hash(name) & (unsigned)(x->bucket_count - 1)]; i >= 0; i = x->next[i]) {
         x->comparisons++;
-        if (strcmp(x->name_of(x->ctx, i), name) == 0)
+        if (same_name(x->name_of(x->ctx, i), name))
             return i;
     }
     return -1;
