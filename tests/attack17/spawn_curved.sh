@@ -28,17 +28,7 @@ bad=0
 for p in "$@"; do
     t=${p%%:*} size=
     case $p in *:*x*) wh=${p#*:}; size="--width ${wh%x*} --height ${wh#*x}" ;; esac
-    awk -v t="$t" '
-    function move(key,   s, v, a) {
-        if (!match($0, key " \\[[^]]*\\]"))
-            return
-        s = substr($0, RSTART, RLENGTH); v = substr(s, length(key) + 3, length(s) - length(key) - 3)
-        split(v, a, ",")
-        $0 = substr($0, 1, RSTART - 1) sprintf("%s [%.17g, %.17g, %.17g]", key, a[1] + t, a[2], a[3] + t) \
-             substr($0, RSTART + RLENGTH)
-    }
-    { move("eye"); move("look_at"); move("point"); move("center"); print }' \
-        scenes/analytic/transparent_shadow_depth2.scene > "$D/s.scene"
+    awk -v t="$t" -f tests/attack17/shift.awk scenes/analytic/transparent_shadow_depth2.scene > "$D/s.scene"
     v=$(nice $B verify "$D/s.scene" $size)
     echo "T=$t ${size:-100x75}: $(echo "$v" | awk 'NR == 2 {print "max rel " $7 ", over " $9 ", tolerance " $10 ", " $NF}')"
     echo "$v" | awk 'NR == 2 { exit $NF != "FAIL" }' && bad=1

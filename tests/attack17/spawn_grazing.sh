@@ -24,16 +24,8 @@ trap 'rm -rf "$D"' EXIT
 bad=0
 for p in "$@"; do
     y=${p%%:*} t=${p#*:}
-    sed "s/eye \[0, 3, 5\]/eye [0, $y, 9]/" scenes/analytic/transparent_shadow.scene | awk -v t="$t" '
-    function move(key,   s, v, a) {
-        if (!match($0, key " \\[[^]]*\\]"))
-            return
-        s = substr($0, RSTART, RLENGTH); v = substr(s, length(key) + 3, length(s) - length(key) - 3)
-        split(v, a, ",")
-        $0 = substr($0, 1, RSTART - 1) sprintf("%s [%.17g, %.17g, %.17g]", key, a[1] + t, a[2], a[3] + t) \
-             substr($0, RSTART + RLENGTH)
-    }
-    { move("eye"); move("look_at"); move("position"); move("point"); move("center"); print }' > "$D/s.scene"
+    sed "s/eye \[0, 3, 5\]/eye [0, $y, 9]/" scenes/analytic/transparent_shadow.scene |
+        awk -v t="$t" -f tests/attack17/shift.awk > "$D/s.scene"
     grep -q "eye \[" "$D/s.scene" || { echo "scene not as expected"; exit 2; }
     v=$(nice $B verify "$D/s.scene" --width 400 --height 300)
     echo "eye y $y, T=$t: $(echo "$v" | awk 'NR == 2 {print "max rel " $7 ", over " $9 ", tolerance " $10 ", " $NF}')"
