@@ -274,6 +274,17 @@ START_TEST(test_isect_hot_triangle_run_matches_each_triangle)
 }
 END_TEST
 
+/* From (0, 0, -1) along +z, over [0, +Inf). */
+static ray up_the_z_axis(void)
+{
+    ray r;
+    r.origin = vec_make(0, 0, -1);
+    r.dir = vec_make(0, 0, 1);
+    r.tmin = 0.0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
 /* The run's quick miss (triangle_apart) at its edges, by hand: a ray along
  * +z from (0, 0, -1), the sheared corners the vertices' (x, y) exactly.
  * Corners on one side of x = 0 (or y = 0) strictly: no crossing; one of
@@ -293,11 +304,7 @@ START_TEST(test_isect_hot_triangle_run_corners_on_the_ray)
         {0x1p-40, 0, 1, 0, 0x1p-40, 1}, /* x > 0 by a hair: apart */
     };
     static const int crossed_with_all_inclusive[] = {0, 0, 0, 1, 1, 1, 1, 0};
-    ray r;
-    r.origin = vec_make(0, 0, -1);
-    r.dir = vec_make(0, 0, 1);
-    r.tmin = 0.0;
-    r.tmax = HUGE_VAL;
+    ray r = up_the_z_axis();
     isect_shear sh;
     isect_shear_make(&r, &sh);
     int crossed = 0;
@@ -330,11 +337,7 @@ START_TEST(test_isect_hot_triangle_run_empty_and_zero_direction)
     run_set s;
     s.n = 0;
     add(&s, vec_make(-1, -1, 0), vec_make(1, -1, 0), vec_make(0, 1, 0), 7);
-    ray r;
-    r.origin = vec_make(0, 0, -1);
-    r.dir = vec_make(0, 0, 1);
-    r.tmin = 0.0;
-    r.tmax = HUGE_VAL;
+    ray r = up_the_z_axis();
     isect_shear sh;
     isect_shear_make(&r, &sh);
     real t = -1.0;
