@@ -274,6 +274,62 @@ START_TEST(test_isect_hot_triangle_run_matches_each_triangle)
 }
 END_TEST
 
+/* From (0, 0, -1) along +z, over [0, +Inf). */
+static ray up_the_z_axis(void)
+{
+    ray r;
+    r.origin = vec_make(0, 0, -1);
+    r.dir = vec_make(0, 0, 1);
+    r.tmin = 0.0;
+    r.tmax = HUGE_VAL;
+    return r;
+}
+
+/* The run's quick miss (triangle_apart) at its edges, by hand: a ray along
+ * +z from (0, 0, -1), the sheared corners the vertices' (x, y) exactly.
+ * Corners on one side of x = 0 (or y = 0) strictly: no crossing; one of
+ * them at 0 (the origin on a vertex or an edge): the inclusive edges
+ * decide, crossed at t = 1 when the edges through it are inclusive, and
+ * the same as the record tested alone (isect_hot_nearest). */
+START_TEST(test_isect_hot_triangle_run_corners_on_the_ray)
+{
+    static const double tri[][6] = {
+        {1, 0, 2, 0, 1, 1},     /* x > 0: apart */
+        {-1, 1, -2, 0, -1, -1}, /* x < 0, wound the other way: apart */
+        {-1, 1, 1, 1, 0, 2},    /* y > 0: apart */
+        {0, 0, 1, 0, 0, 1},     /* a corner on the ray, the rest x, y >= 0 */
+        {0, -1, 1, 0, 0, 1},    /* an edge on the ray (x = 0), the rest x > 0 */
+        {0, -1, 0, 1, -1, 0},   /* the same, x < 0, wound the other way */
+        {0, 1, -1, -1, 1, -1},  /* the ray inside, corners of both signs */
+        {0x1p-40, 0, 1, 0, 0x1p-40, 1}, /* x > 0 by a hair: apart */
+    };
+    static const int crossed_with_all_inclusive[] = {0, 0, 0, 1, 1, 1, 1, 0};
+    ray r = up_the_z_axis();
+    isect_shear sh;
+    isect_shear_make(&r, &sh);
+    int crossed = 0;
+    for (int k = 0; k < (int)(sizeof tri / sizeof tri[0]); k++) {
+        for (int inclusive = 0; inclusive < 8; inclusive++) {
+            run_set s;
+            s.n = 0;
+            const double *p = tri[k];
+            add(&s, vec_make(p[0], p[1], 0), vec_make(p[2], p[3], 0), vec_make(p[4], p[5], 0), inclusive);
+            real t = -1.0, ta;
+            int in_run = isect_hot_triangle_run(s.hot, 1, s.reals, &r, &sh, &t) == 0;
+            int alone = isect_hot_nearest(s.hot[0].code, s.reals, &r, &sh, &ta);
+            ck_assert_msg(in_run == alone, "triangle %d, inclusive %d: run %d, alone %d", k, inclusive, in_run, alone);
+            if (inclusive == 7)
+                ck_assert_msg(in_run == crossed_with_all_inclusive[k], "triangle %d: crossed %d", k, in_run);
+            if (in_run) {
+                ck_assert(t == 1.0 && ta == 1.0);
+                crossed++;
+            }
+        }
+    }
+    ck_assert_int_gt(crossed, 4);
+}
+END_TEST
+
 /* The edges of the run: none to test, a zero direction (no record is
  * crossed), one record, a record of another kind ending it. */
 START_TEST(test_isect_hot_triangle_run_empty_and_zero_direction)
@@ -281,11 +337,7 @@ START_TEST(test_isect_hot_triangle_run_empty_and_zero_direction)
     run_set s;
     s.n = 0;
     add(&s, vec_make(-1, -1, 0), vec_make(1, -1, 0), vec_make(0, 1, 0), 7);
-    ray r;
-    r.origin = vec_make(0, 0, -1);
-    r.dir = vec_make(0, 0, 1);
-    r.tmin = 0.0;
-    r.tmax = HUGE_VAL;
+    ray r = up_the_z_axis();
     isect_shear sh;
     isect_shear_make(&r, &sh);
     real t = -1.0;
@@ -311,6 +363,7 @@ Suite *suite_tri_run(void)
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, test_isect_hot_triangle_run_matches_each_triangle);
     tcase_add_test(tc, test_isect_hot_triangle_run_empty_and_zero_direction);
+    tcase_add_test(tc, test_isect_hot_triangle_run_corners_on_the_ray);
     suite_add_tcase(s, tc);
     return s;
 }

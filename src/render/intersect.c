@@ -1156,6 +1156,40 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere(const real *g, const ray *
     return sphere_hits(c, g[3], r, out, max, bare);
 }
 
+/* triangle_corner's x (k = kx, s = sx) or y (ky, sy) alone: the same operations. */
+static inline real triangle_corner_at(vec3 v, vec3 o, real s, int k, int kz)
+{
+    real z = vec_component(v, kz) - vec_component(o, kz);
+    return vec_component(v, k) - vec_component(o, k) - s * z;
+}
+
+/* Whether the ray passes the triangle by in the sheared plane: its three
+ * corners (rounded as triangle_solve rounds them, the same operations) all
+ * on one side of x = 0, or of y = 0, strictly.  triangle_solve then
+ * answers no crossing: its edge functions have the exact signs of those of
+ * the rounded corners (a nonzero rounded difference of two rounded products
+ * has the exact sign, a zero one is told by the remainders), and the
+ * origin, strictly apart from the three corners, is no convex combination
+ * of them; so, for det != 0, some weight e_i / det is < 0 and, as they sum
+ * to 1, another > 0: e_i of both strict signs, rejected.  For det == 0 the
+ * e_i sum to 0: both signs again, or all three 0 (det rounds to 0,
+ * rejected).  One side strictly: a corner at 0 can leave the origin on an
+ * edge, where the tie rule decides.  x0 x1 > 0 and x0 x2 > 0 say it in
+ * fewer instructions than six comparisons: a rounded product keeps its
+ * exact sign, or is 0 on underflow (then no quick miss), and is no larger
+ * than the edge functions' own products.  x first, then y: y's corners
+ * are not made for a triangle x tells apart. */
+static inline int triangle_apart(const vec3 v[3], vec3 o, real sx, real sy, int kx, int ky, int kz)
+{
+    real x0 = triangle_corner_at(v[0], o, sx, kx, kz), x1 = triangle_corner_at(v[1], o, sx, kx, kz),
+         x2 = triangle_corner_at(v[2], o, sx, kx, kz);
+    if (x0 * x1 > 0.0 && x0 * x2 > 0.0)
+        return 1;
+    real y0 = triangle_corner_at(v[0], o, sy, ky, kz), y1 = triangle_corner_at(v[1], o, sy, ky, kz),
+         y2 = triangle_corner_at(v[2], o, sy, ky, kz);
+    return y0 * y1 > 0.0 && y0 * y2 > 0.0;
+}
+
 /* A run for one permutation of the axes, given as constants at each call
  * below: triangle_solve's switch on the permutation folds away, and the
  * shear, the origin and the interval stay in registers over the run,
@@ -1174,6 +1208,8 @@ static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, con
         const real *g = reals + hot[i].at;
         vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
         tri_bary s;
+        if (triangle_apart(v, r->origin, sh.sx, sh.sy, kx, ky, kz))
+            continue;
         if (triangle_solve(v, hot[i].code >> 2, r, &sh, &s) && in_interval(r, s.t)) {
             *t = s.t;
             return i;
