@@ -510,22 +510,31 @@ START_TEST(test_verify_view_floor_counts_the_spawn_offset)
 }
 END_TEST
 
+/* scenes/analytic/transparent_shadow.scene moved by [t, 0, t] at w x h, its
+ * eye at [0, eye_y, eye_z] and its point light at light (both before the
+ * move), of the given power and light_tail (d0 and falloff). */
+static scene_model *ball_moved(double t, int w, int h, double eye_y, double eye_z, vec3 light, double power,
+                               const char *light_tail)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "image { width %d height %d samples 2 max_depth 4 background [0.3, 0.5, 0.8] }\n"
+             "camera { perspective eye [%.17g, %.17g, %.17g] look_at [%.17g, 0.6, %.17g] up [0, 1, 0] fov 55 }\n"
+             "ambient { color 0.1 }\n"
+             "point_light { position [%.17g, %.17g, %.17g] power %.17g %s }\n"
+             "plane { point [%.17g, 0, %.17g] normal [0, 1, 0] material { Kd [0.7, 0.7, 0.6] } }\n"
+             "sphere { center [%.17g, 1, %.17g] radius 0.8 material { Kd [0.5, 0.4, 0.3] t 0.6 ior 1 } }\n",
+             w, h, t, eye_y, t + eye_z, t, t, t + light.x, light.y, t + light.z, power, light_tail, t, t, t, t);
+    return load_scene(text, "transparent_shadow");
+}
+
 /* scenes/analytic/transparent_shadow.scene moved by [T, 0, T], its light
  * 0.8 (1 + 2.8e-5) from the glass ball's centre along (1, -1, -1): 2.24e-5
  * outside the ball, and 0.338 inside the ball's box from its nearest face;
  * inverse square, d0 0, of the given power. */
 static scene_model *ball_near_light(double t, double power)
 {
-    char text[1024];
-    snprintf(text, sizeof text,
-             "image { width 192 height 144 samples 2 max_depth 4 background [0.3, 0.5, 0.8] }\n"
-             "camera { perspective eye [%.17g, 3, %.17g] look_at [%.17g, 0.6, %.17g] up [0, 1, 0] fov 55 }\n"
-             "ambient { color 0.1 }\n"
-             "point_light { position [%.17g, 0.538106, %.17g] power %.17g d0 0 falloff inverse_square }\n"
-             "plane { point [%.17g, 0, %.17g] normal [0, 1, 0] material { Kd [0.7, 0.7, 0.6] } }\n"
-             "sphere { center [%.17g, 1, %.17g] radius 0.8 material { Kd [0.5, 0.4, 0.3] t 0.6 ior 1 } }\n",
-             t, t + 5, t, t, t + 0.461894, t - 0.461894, power, t, t, t, t);
-    return load_scene(text, "transparent_shadow");
+    return ball_moved(t, 192, 144, 3, 5, vec_make(0.461894, 0.538106, -0.461894), power, "d0 0 falloff inverse_square");
 }
 
 /* [ORACLE-VIEW-ROUNDING-3] L is the distance to each surface, not to the
@@ -579,22 +588,6 @@ static scene_model *ball_depth2_moved(double t, int w, int h, double power)
     return load_scene(text, "transparent_shadow");
 }
 
-/* scenes/analytic/transparent_shadow.scene with its eye lowered to
- * [0, 0.1, 9], moved by [t, 0, t], its point light of the given power. */
-static scene_model *ball_low_eye_moved(double t, double power)
-{
-    char text[1024];
-    snprintf(text, sizeof text,
-             "image { width 400 height 300 samples 2 max_depth 4 background [0.3, 0.5, 0.8] }\n"
-             "camera { perspective eye [%.17g, 0.1, %.17g] look_at [%.17g, 0.6, %.17g] up [0, 1, 0] fov 55 }\n"
-             "ambient { color 0.1 }\n"
-             "point_light { position [%.17g, 4, %.17g] power %.17g d0 1 falloff linear }\n"
-             "plane { point [%.17g, 0, %.17g] normal [0, 1, 0] material { Kd [0.7, 0.7, 0.6] } }\n"
-             "sphere { center [%.17g, 1, %.17g] radius 0.8 material { Kd [0.5, 0.4, 0.3] t 0.6 ior 1 } }\n",
-             t, t + 9, t, t, t + 2, t - 1.5, power, t, t, t, t);
-    return load_scene(text, "transparent_shadow");
-}
-
 /* [ORACLE-VIEW-ROUNDING-4] A secondary hit on a curved surface: the ball's
  * far side P2 (radius 0.9) slides by the spawn offset 2^-42 (1e4 + 1.2)
  * over the cosine of the chord's angle there, turning its normal by that
@@ -623,7 +616,9 @@ START_TEST(test_verify_spawn_slip_on_a_curved_surface)
         ck_assert_msg(r.metrics.excluded < (long)w * h / 50, "%dx%d: %ld excluded", w, h, r.metrics.excluded);
         assert_exact_fails(s, "transparent_shadow", dim);
     }
-    scene_model *s = ball_low_eye_moved(1e3, 20), *dim = ball_low_eye_moved(1e3, 19.8);
+    vec3 lamp = vec_make(2, 4, -1.5);
+    scene_model *s = ball_moved(1e3, 400, 300, 0.1, 9, lamp, 20, "d0 1 falloff linear");
+    scene_model *dim = ball_moved(1e3, 400, 300, 0.1, 9, lamp, 19.8, "d0 1 falloff linear");
     verify_result r;
     ck_assert_int_eq(verify_scene(s, "low eye", NULL, &r), 0);
     ck_assert_msg(r.verdict == VERIFY_PASS, "low eye: %s", r.reason);
