@@ -193,3 +193,35 @@ double oracle_surface_distance(const scene_prim *p, vec3 q)
     double local = (own_distance(p, ql) - lunit * (max_abs(ql) + fmax(max_abs(llo), max_abs(lhi)))) / shrink;
     return fmax(0, fmax(local, box_outside(q, lo, hi) - unit * scale));
 }
+
+/* Local radii: a cylinder's and a cone's circles (a cone's meridian is
+ * straight, its other principal radius rho / cos(half angle) >= rho); a
+ * torus's tube, and its parallels, |major / cos v + minor| >= major - minor.
+ * A frame A bends a unit-speed curve of curvature k into one of curvature
+ * |Ag' x Ag''| / |Ag'|^3 <= s_max^2 k / s_min^3, and every principal radius
+ * is a normal section's. */
+double oracle_curvature_radius(const scene_prim *p)
+{
+    double r;
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        r = p->u.sphere.radius;
+        break;
+    case PRIM_CYLINDER:
+        r = p->u.cylinder.radius;
+        break;
+    case PRIM_CONE:
+        r = fmin(p->u.cone.radius[0], p->u.cone.radius[1]);
+        break;
+    case PRIM_TORUS:
+        r = fmin(p->u.torus.minor, p->u.torus.major - p->u.torus.minor);
+        break;
+    default:
+        return HUGE_VAL;
+    }
+    if (p->frame) {
+        double s_min = 1 / stretch_bound(&p->frame->to_local), s_max = stretch_bound(&p->frame->to_world);
+        r *= s_min * s_min * s_min / (s_max * s_max);
+    }
+    return fmax(0, r * (1 - 0x1p-40));
+}

@@ -36,4 +36,12 @@ double oracle_box_distance(vec3 q, vec3 lo, vec3 hi);
  * meet (an empty mesh). */
 double oracle_surface_distance(const scene_prim *p, vec3 q);
 
+/* A lower bound of the smallest radius of curvature of p's surface in the
+ * world ([ORACLE-VIEW-ROUNDING-4]): a sphere's, a cylinder's or a cone's
+ * radius (0 at a cone's apex), a torus's min(minor, major - minor), a
+ * frame's local radius times s_min^3 / s_max^2; HUGE_VAL for a flat
+ * primitive (plane, disk, box, triangle, mesh: their creases are edges,
+ * which the families' edge margins handle). */
+double oracle_curvature_radius(const scene_prim *p);
+
 #endif

@@ -356,6 +356,18 @@ static double spawn_reach(const scene_model *s)
     return reach;
 }
 
+/* The smallest radius of curvature a secondary ray can meet
+ * ([ORACLE-VIEW-ROUNDING-4]); HUGE_VAL when no ray goes on to a surface or
+ * every surface is flat. */
+static double spawn_curvature_radius(const scene_model *s)
+{
+    double radius = HUGE_VAL;
+    if (traces_onward(s))
+        for (int i = 0; i < s->prim_count; i++)
+            radius = fmin(radius, oracle_curvature_radius(&s->prims[i]));
+    return radius;
+}
+
 /* [ORACLE-VIEW-ROUNDING-1] (spec/verify.md): the two codes round a ray's
  * origin and its hit differently, by a few units u = 2^-53 of the sizes
  * the hit is made of, D = |eye| + the hit's coordinates + its distance;
@@ -387,6 +399,9 @@ double oracle_tolerance_exact(const oracle_view *v, int light_samples)
      * ORACLE_SPAWN_REL of its coordinates (at most coord) off it, which
      * moves what they sample, reach away, by that much. */
     floor += ORACLE_SPAWN_K * ORACLE_SPAWN_REL * coord / spawn_reach(v->scene);
+    /* [ORACLE-VIEW-ROUNDING-4]: that offset slides a secondary hit on a
+     * curved surface, turning its normal by offset / radius. */
+    floor += ORACLE_SPAWN_CURVE_K * ORACLE_SPAWN_REL * coord / spawn_curvature_radius(v->scene);
     if (!(floor > ORACLE_EXACT_TOLERANCE))
         return ORACLE_EXACT_TOLERANCE;
     return floor < ORACLE_VIEW_ROUNDING_MAX ? floor : ORACLE_VIEW_ROUNDING_MAX;

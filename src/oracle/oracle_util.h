@@ -41,6 +41,10 @@
  * ray samples, with margin ([ORACLE-VIEW-ROUNDING-3]). */
 #define ORACLE_SPAWN_REL 0x1p-42
 #define ORACLE_SPAWN_K 8
+/* The same per unit of that offset over the smallest radius of curvature
+ * a secondary ray may meet, the normal there turning by offset / radius
+ * ([ORACLE-VIEW-ROUNDING-4]). */
+#define ORACLE_SPAWN_CURVE_K 32
 #define ORACLE_EDGE_MARGIN 1e-6
 #define ORACLE_COS_MARGIN 1e-6
 

@@ -21,6 +21,7 @@
  */
 #include <math.h>
 #include "oracle/oracle.h"
+#include "oracle/optics_util.h"
 #include "oracle/oracle_util.h"
 
 #define FAMILY "transparent_shadow"
@@ -123,6 +124,39 @@ static oracle_status through_sphere(const oracle_view *v, const pair *pr, const 
     return ORACLE_EXACT;
 }
 
+/* [ORACLE-VIEW-ROUNDING-4]: the tracer's spawn offsets at P1 and P2
+ * (optics_spawn_offset, along the normals) shift the line it follows
+ * through the sphere and past it; where the chord or the plane beyond
+ * meets that line at a grazing angle the hits slide by offset / cos, which
+ * no constant bounds.  The line shifted by twice the offsets, each way
+ * along both normals, must keep the pixel within the tolerance, else the
+ * pixel is ambiguous. */
+static oracle_status stable_under_slip(const oracle_view *v, const pair *pr, const oracle_pair_view *pv, rgb c)
+{
+    const scene_prim *sphere = &pr->scene->prims[pr->sphere];
+    const scene_prim *plane = &pr->scene->prims[pr->plane];
+    vec3 centre = sphere->u.sphere.center;
+    double r = sphere->u.sphere.radius;
+    double slip = 2 * optics_spawn_offset(optics_max_abs(centre) + r, centre);
+    double tolerance = oracle_tolerance_exact(v, 0);
+    vec3 n1 = oracle_chord_normal(&pv->chord, pv->ray.dir, r, 0);
+    vec3 n2 = oracle_chord_normal(&pv->chord, pv->ray.dir, r, 1);
+    for (int k = 0; k < 4; k++) {
+        vec3 w = vec_add(vec_scale(n1, k & 1 ? slip : -slip), vec_scale(n2, k & 2 ? slip : -slip));
+        oracle_pair_view moved = *pv;
+        rgb shifted;
+        moved.ray.origin = vec_add(pv->ray.origin, w);
+        if (oracle_line_sphere(moved.ray.origin, moved.ray.dir, centre, r, &moved.chord) != ORACLE_CHORD_HIT)
+            return ORACLE_AMBIGUOUS;
+        moved.plane_s = HUGE_VAL;
+        moved.plane_ok = oracle_line_plane(moved.ray.origin, moved.ray.dir, plane->u.plane.point,
+                                           plane->u.plane.normal, &moved.plane_s);
+        if (through_sphere(v, pr, &moved, &shifted) != ORACLE_EXACT || !optics_close(c, shifted, tolerance))
+            return ORACLE_AMBIGUOUS;
+    }
+    return ORACLE_EXACT;
+}
+
 static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out)
 {
     pair pr = pair_of(v->scene);
@@ -136,7 +170,9 @@ static oracle_status radiance(const oracle_view *v, double x, double y, rgb *out
     }
     if (sees == ORACLE_SEES_PLANE)
         return plane_colour(&pr, &pv, 0, out);
-    return through_sphere(v, &pr, &pv, out);
+    if (through_sphere(v, &pr, &pv, out) != ORACLE_EXACT)
+        return ORACLE_AMBIGUOUS;
+    return v->max_depth > 1 ? stable_under_slip(v, &pr, &pv, *out) : ORACLE_EXACT;
 }
 
 const oracle_family oracle_transparent_shadow = {

@@ -16,6 +16,7 @@
 # The pixels near the ball's outline (a grazing chord P1 P2) are worse: at
 # 1000x750 the error is 3.4e-7 at T = 1e4 (56 times the term) and verify
 # FAILs from T = 30 (1.05e-9, 1 pixel; T = 100: 3.4e-9, 26 pixels).
+# Status: fixed ([ORACLE-VIEW-ROUNDING-4], spec/verify.md): exits 0.
 # Exit 1 while verify FAILs at some T (default 1e3, 1e4 and 100 at
 # 1000x750), 0 when every one passes.
 #   sh tests/attack17/spawn_curved.sh [T[:WxH]...]

@@ -14,6 +14,7 @@
 # the ball meeting the floor at a grazing angle meets it delta / sin(angle)
 # aside (likely the mechanism: the failures need the low eye), so the lit
 # point moves far more than the term allows.
+# Status: fixed ([ORACLE-VIEW-ROUNDING-4], spec/verify.md): exits 0.
 # Exit 1 while verify FAILs at some case (default 0.1:1e3 and 0.4:1e3).
 #   sh tests/attack17/spawn_grazing.sh [EYE_Y:T...]
 set -u
