@@ -551,6 +551,27 @@ static int new_pair(build_ctx *ctx)
     return b->node_count - 2;
 }
 
+/*
+ * [BVH-CULL-PAD-1] How far a node's box reaches past its parts' padded
+ * boxes, the same on every axis.  A part's box is padded per axis by 2^-40
+ * of that axis's coordinates (isect_part_padded_bounds), but a hit test's
+ * rounding is relative to the largest coordinate of the part and of the
+ * point (its t is a difference of coordinates of that size): a triangle
+ * lying in the plane y = 0 with corners 1e8 away has a box of no
+ * thickness in y, and its t is off by about 1e8 eps.  A ray spawned 1e-12
+ * under it was found to cross it by the exhaustive walk (t = 7e-9) and
+ * culled by the box.  2^-40 of the node's largest magnitude on every axis
+ * holds each part's box padded by 2^-40 of its own (a part's coordinates
+ * are within its node's); the tree's shape is chosen from the unwidened
+ * boxes, so only what is culled changes (spec/numerics.md).
+ */
+static real cull_pad(const range *r)
+{
+    real m = vec_max_abs(r->lo), n = vec_max_abs(r->hi), s = vec_max_abs(vec_sub(r->hi, r->lo));
+    m = m > n ? m : n;
+    return 0x1p-40 * (m > s ? m : s);
+}
+
 /* Fills node (already allocated) for items[begin..end) of bounds *r and its
  * subtree.  The two children of a node are allocated together, side by
  * side, so a traversal step that tests both reads adjacent memory.  The
@@ -559,8 +580,9 @@ static void build_node(build_ctx *ctx, int node, int begin, int end, int depth, 
 {
     bvh *b = ctx->b;
     range kids[2];
-    b->nodes[node].lo = r->lo;
-    b->nodes[node].hi = r->hi;
+    real pad = cull_pad(r);
+    b->nodes[node].lo = vec_sub(r->lo, vec_splat(pad));
+    b->nodes[node].hi = vec_add(r->hi, vec_splat(pad));
     if (depth > b->depth)
         b->depth = depth;
     /* A stopped build still ends as a valid tree: the rest become leaves
