@@ -728,7 +728,7 @@ END_TEST
 START_TEST(test_shortcuts_flat_huge_triangle_in_plane)
 {
     const char *const sizes[] = {"1e6", "1e8", "1e10", "1e12"};
-    const char *const kinds[] = {"t 0.5 ior 1.3", "Ks 0.3"};
+    const char *const kinds[] = {"t 0.5 ior 1.3", "Ks 0.2"};
     char text[1024];
     render_stats st_on, st_off;
     for (size_t j = 0; j < sizeof sizes / sizeof sizes[0]; j++)
