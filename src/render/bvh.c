@@ -592,11 +592,12 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
  * nodes alone.  A box that holds another gets through the slab test
  * whenever the inner one does (each slab bound is a rounded product of a
  * rounded difference, monotone in the plane's coordinate; a NaN bound
- * narrows nothing), and a child's box lies inside its parent's (both are
- * min and max of the parts' boxes), so the whole walk reaches a node
- * exactly when the node's own box passes.  The nodes left out are ones no
- * ray of the bundle passes, and the kept ones come in depth-first order:
- * the same parts are tested in the same order.
+ * narrows nothing), and a child's box lies inside its parent's (each is
+ * its parts' union widened by 2^-40 of its largest magnitude, and the
+ * parent's union and magnitude are the larger: bvh_build.c), so the
+ * whole walk reaches a node exactly when the node's own box passes.  The
+ * nodes left out are ones no ray of the bundle passes, and the kept ones
+ * come in depth-first order: the same parts are tested in the same order.
  */
 int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
                             int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)

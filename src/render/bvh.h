@@ -33,7 +33,9 @@
 #define BVH_MEDIAN_DEPTH 64
 
 typedef struct bvh_node {
-    vec3 lo, hi;       /* bounds of everything below */
+    vec3 lo, hi;       /* bounds of everything below, widened on every
+                          axis by 2^-40 of the largest magnitude
+                          ([BVH-CULL-PAD-1], bvh_build.c) */
     int first;         /* leaf: first slot in bvh.items; inner: the first child
                           (the second is first + 1) */
     int count;         /* leaf: number of parts (>= 1); inner: 0 */
