@@ -793,7 +793,10 @@ static double gather_reach(double m)
  * glass block A (magnitude 1e6 + x0, so a reach of about 2^-41 of that) is
  * hit at P on its face x = x0; a glass ball B, 0.3 reach across, sits on
  * the ray before P, its crossings 0.875 and 0.625 reach (max norm) from P
- * and its box ending 0.6 reach before it.  The gather of A's crossing must
+ * and its box ending 0.6 reach before it; a second ball beside it, off the
+ * ray, puts both in a leaf of their own (the tree keeps two parts in one
+ * leaf), whose box the walk leaves out when it starts past it (near the
+ * origin: at 1e7 the boxes' padding, 2^-40 of 1e7, passes P).  The gather of A's crossing must
  * hold both of B's (3 crossings), with the shortcuts as without, for
  * directions of length 1e-3, 1 and 1e3 (the start is in t: D |d|_max is a
  * distance), near the origin and at 1e7.  Fails with D = 0, with
@@ -812,8 +815,10 @@ START_TEST(test_shortcuts_gather_finds_crossings_before_the_hit)
                      "image { width 4 height 3 }\n"
                      "camera { perspective eye [%.17g, 0, -5] look_at [%.17g, 0, 0] up [0, 1, 0] fov 60 }\n"
                      "box { from [%.17g, -1e6, -1e6] to [%.17g, 1e6, 1e6] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                     "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n"
                      "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n",
-                     x0 - 1, x0 - 1, x0, x0 + 1e6, c.x, c.y, c.z, 0.15 * reach);
+                     x0 - 1, x0 - 1, x0, x0 + 1e6, c.x, c.y, c.z, 0.15 * reach, c.x, c.y, c.z + 0.5 * reach,
+                     0.15 * reach);
             ray r = {vec_sub(p, vec_scale(u, 10)), vec_scale(u, scale[j]), 0, INFINITY};
             ck_assert_msg(gather_both_ways(text, r, 0) == 3, "offset %g, scale %g:\n%s", x0, scale[j], text);
         }
