@@ -898,6 +898,38 @@ START_TEST(test_shortcuts_gather_touching_glass_both_ways)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-GATHER-2] A lone glass ball grazed.  Of radius 1e-3 at
+ * x = 1e7 (an ulp there is 2^-29, the reach about 4.5e-6), rays one ulp
+ * inside its tangent (along y, and tilted in the y-z plane) cross it along
+ * a chord of 2 sqrt(2e-3 2^-29) = 3.9e-6, within reach: each crossing's
+ * gather must hold the other (2), with the shortcuts as without.  A ray
+ * through it a quarter of its radius from the centre gathers 1 (the other
+ * crossing 1.9 radii away), and rays exactly tangent to a ball of radius
+ * 1 at the origin gather the same both ways.  Fails with gather_self_apart
+ * taking every sphere's other crossing as apart.
+ */
+START_TEST(test_shortcuts_gather_grazed_ball)
+{
+    char text[512];
+    const double x0s[] = {1e7, 0}, rads[] = {1e-3, 1};
+    for (int k = 0; k < 2; k++) {
+        double x0 = x0s[k], rad = rads[k], x = k ? x0 + rad : nextafter(x0 + rad, 0);
+        snprintf(text, sizeof text,
+                 "image { width 4 height 3 }\n"
+                 "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+                 "sphere { center [%.17g, 0, 0] radius %.17g material { Kd 0 t 0.9 ior 1.5 } }\n",
+                 x0, rad);
+        ray along = {vec_make(x, -5 * rad, 0), vec_make(0, 1, 0), 0, INFINITY};
+        ray tilted = {vec_make(x, -3 * rad, -4 * rad), vec_make(0, 0.6, 0.8), 0, INFINITY};
+        ray through = {vec_make(x0 + 0.25 * rad, -5 * rad, 0), vec_make(0, 1, 0), 0, INFINITY};
+        int na = gather_both_ways(text, along, 0), nt = gather_both_ways(text, tilted, 0);
+        ck_assert_msg(k ? na >= 1 && nt >= 1 : na == 2 && nt == 2, "%d, %d gathered:\n%s", na, nt, text);
+        ck_assert_msg(gather_both_ways(text, through, 0) == 1, "through:\n%s", text);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] The touching glass
  * above rendered, near the origin and at 1e7: the same bits with the
  * shortcuts on and off, and fewer primitive tests with them on. */
@@ -962,6 +994,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_gather_finds_crossings_before_the_hit);
     tcase_add_test(tc, test_shortcuts_gather_touching_glass_both_ways);
     tcase_add_test(tc, test_shortcuts_gather_images_both_ways);
+    tcase_add_test(tc, test_shortcuts_gather_grazed_ball);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);

@@ -131,3 +131,32 @@ int gather_alone(const tracer *t, const hit *h, real reach)
     }
     return 1;
 }
+
+/*
+ * A hit on a sphere in the world frame whose ray is far from tangent: its
+ * other crossing (the one of the other side, which alone the gather would
+ * keep) lies more than reach from it.  Both points lie within
+ * 2^-20 (|c| + R) of the sphere (glass_near's premise) and within
+ * 2^-20 (|t| |d| + |o|) of the ray ([SHADE-SHORTCUT-GATHER-1]; the other
+ * one's t is below tmax = t_h + reach + 2^-40 |t_h|), both below R / 1024
+ * here.  Along the ray (unit u, s from the foot of the centre), d.n >=
+ * |d| |n| / 4 puts the hit at |s_h| >= 0.245 R, and the chord then at
+ * |s| >= 0.24 R for any point that near the sphere; a crossing's side is
+ * the sign of d.n at its point, that of its s, so the other crossing is at
+ * s of the other sign: at least 0.48 R away, 0.27 R in the max norm, more
+ * than reach for R > 8 reach.
+ */
+int gather_self_apart(const tracer *t, const hit *h, const ray *r, real reach)
+{
+    const scene_prim *p = &t->scene->prims[h->prim];
+    if (t->no_shortcuts || p->kind != PRIM_SPHERE || p->frame)
+        return 0;
+    vec3 c = p->u.sphere.center, n = vec_sub(h->point, c);
+    real radius = p->u.sphere.radius, dm = vec_max_abs(r->dir);
+    real size = vec_max_abs(c) + radius + (fabs(h->t) + reach) * dm + vec_max_abs(r->origin);
+    /* d.n >= |d| |n| / 4 on d and n scaled to a largest component of 1:
+     * squares of 1 to 3, neither overflow nor underflow (a NaN says no). */
+    vec3 u = vec_scale(r->dir, 1 / dm), v = vec_scale(n, 1 / vec_max_abs(n));
+    real dn = vec_dot(u, v);
+    return radius > 8 * (reach + 0x1p-12 * size) && 16 * dn * dn >= vec_length2(u) * vec_length2(v);
+}

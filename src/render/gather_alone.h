@@ -29,4 +29,9 @@ void gather_alone_free(tracer *t);
  * of h's point: 0 whenever that is not known, and with the shortcuts off. */
 int gather_alone(const tracer *t, const hit *h, real reach);
 
+/* Whether the crossings of h's own part that interface_gather would keep
+ * besides h (those of the other side) are surely out of reach: a sphere
+ * in the world frame crossed far from tangent.  0 with the shortcuts off. */
+int gather_self_apart(const tracer *t, const hit *h, const ray *r, real reach);
+
 #endif

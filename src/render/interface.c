@@ -68,10 +68,13 @@ static real gather_from(const tracer *t, const hit *h, const ray *r, real reach)
 
 /* [SHADE-SHORTCUT-GATHER-2] The walk on a primitive alone would report
  * within reach only the crossings of the hit's own part, found by the same
- * test of the same ray: they are all it gathers. */
+ * test of the same ray: they are all it gathers, and none besides h where
+ * they are surely apart (then f holds h alone already). */
 static void gather_self(const tracer *t, const hit *h, const ray *r, interface *f, trace_stats *st)
 {
     hit out[ISECT_MAX_CROSSINGS];
+    if (gather_self_apart(t, h, r, f->reach))
+        return;
     int n = isect_part_all(&t->scene->prims[h->prim], h->part, r, out);
     st->bvh.prims_tested++;
     for (int i = 0; i < n; i++) {
