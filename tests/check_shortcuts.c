@@ -906,8 +906,10 @@ END_TEST
  * gather must hold the other (2), with the shortcuts as without.  A ray
  * through it a quarter of its radius from the centre gathers 1 (the other
  * crossing 1.9 radii away), and rays exactly tangent to a ball of radius
- * 1 at the origin gather the same both ways.  Fails with gather_self_apart
- * taking every sphere's other crossing as apart.
+ * 1 at the origin gather the same both ways.  A ball smaller than the
+ * reach, crossed far from tangent, gathers 2.  Fails with gather_self_apart
+ * taking every sphere's other crossing as apart, and with its bound on the
+ * radius dropped (the small ball).
  */
 START_TEST(test_shortcuts_gather_grazed_ball)
 {
@@ -927,6 +929,15 @@ START_TEST(test_shortcuts_gather_grazed_ball)
         ck_assert_msg(k ? na >= 1 && nt >= 1 : na == 2 && nt == 2, "%d, %d gathered:\n%s", na, nt, text);
         ck_assert_msg(gather_both_ways(text, through, 0) == 1, "through:\n%s", text);
     }
+    /* Of radius 1e-6 at 1e7 the ball is smaller than the reach: a ray a
+     * quarter radius off its centre crosses it along a chord of
+     * 2 sqrt(1 - 1/16) 1e-6 = 1.9e-6, far from tangent, yet within reach. */
+    snprintf(text, sizeof text,
+             "image { width 4 height 3 }\n"
+             "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+             "sphere { center [1e7, 0, 0] radius 1e-6 material { Kd 0 t 0.9 ior 1.5 } }\n");
+    ray small = {vec_make(1e7 + 0.25e-6, -5e-6, 0), vec_make(0, 1, 0), 0, INFINITY};
+    ck_assert_msg(gather_both_ways(text, small, 0) == 2, "small:\n%s", text);
 }
 END_TEST
 
