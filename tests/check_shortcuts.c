@@ -14,6 +14,7 @@
 #include "cli_testlib.h"
 #include "difftest/gen.h"
 #include "io/scene_file.h"
+#include "render/interface.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
@@ -747,6 +748,250 @@ START_TEST(test_shortcuts_flat_huge_triangle_in_plane)
 }
 END_TEST
 
+/* Every crossing of a ray, in the walk's order. */
+typedef struct gather_crossings {
+    int n;
+    hit h[32];
+} gather_crossings;
+
+static int gather_collect(void *ctx, const hit *h)
+{
+    gather_crossings *c = ctx;
+    if (c->n < 32)
+        c->h[c->n++] = *h;
+    return 0;
+}
+
+static int same_hit(const hit *a, const hit *b)
+{
+    return a->prim == b->prim && a->part == b->part && a->entering == b->entering &&
+           memcmp(&a->t, &b->t, sizeof a->t) == 0 && memcmp(&a->point, &b->point, sizeof a->point) == 0;
+}
+
+/*
+ * [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] Every crossing of r
+ * taken as the hit being shaded: interface_gather with the shortcuts on
+ * gathers the same crossings (prim, part, side, t and point to the bit),
+ * in the same order, with the same product of t, as with them off.
+ * Returns the count gathered for the first crossing of primitive self.
+ */
+static int gather_both_ways(const char *text, ray r, int self)
+{
+    scene_model *s = load(text);
+    tracer on, off;
+    ck_assert(tracer_init(&on, s, 0, 0));
+    ck_assert(tracer_init(&off, s, 0, 0));
+    tracer_no_shortcuts(&off);
+    gather_crossings c;
+    c.n = 0;
+    bvh_visit(&off.accel, s->prims, &r, gather_collect, &c);
+    int count = -1;
+    for (int k = 0; k < c.n; k++) {
+        interface a, b;
+        trace_stats sa, sb;
+        memset(&sa, 0, sizeof sa);
+        memset(&sb, 0, sizeof sb);
+        interface_gather(&on, &s->prims[c.h[k].prim], &c.h[k], &r, &a, &sa);
+        interface_gather(&off, &s->prims[c.h[k].prim], &c.h[k], &r, &b, &sb);
+        ck_assert_msg(a.count == b.count, "crossing %d of prim %d: %d gathered against %d\n%s", k, c.h[k].prim,
+                      a.count, b.count, text);
+        ck_assert(memcmp(&a.through, &b.through, sizeof a.through) == 0);
+        for (int j = 0; j < a.count; j++)
+            ck_assert_msg(same_hit(&a.h[j], &b.h[j]), "crossing %d: gathered hit %d differs\n%s", k, j, text);
+        if (count < 0 && c.h[k].prim == self)
+            count = a.count;
+    }
+    tracer_free(&on);
+    tracer_free(&off);
+    scene_free(s);
+    return count;
+}
+
+/* The interface's reach for a hit on a primitive of magnitude m at a point
+ * of magnitude at most m (interface.h: twice the spawn offset,
+ * intersect.h's SPAWN_REL m + SPAWN_ABS). */
+static double gather_reach(double m)
+{
+    return 2 * (0x1p-42 * m + 1e-300);
+}
+
+/*
+ * [SHADE-SHORTCUT-GATHER-1] The walk's start, t_h - D, must lie before every
+ * crossing within reach of the hit, however far along the ray it is.  A
+ * glass block A (magnitude 1e6 + x0, so a reach of about 2^-41 of that) is
+ * hit at P on its face x = x0; a glass ball B, 0.3 reach across, sits on
+ * the ray before P, its crossings 0.875 and 0.625 reach (max norm) from P
+ * and its box ending 0.6 reach before it; a second ball beside it, off the
+ * ray, puts both in a leaf of their own (the tree keeps two parts in one
+ * leaf), whose box the walk leaves out when it starts past it (near the
+ * origin: at 1e7 the boxes' padding, 2^-40 of 1e7, passes P).  The gather of A's crossing must
+ * hold both of B's (3 crossings), with the shortcuts as without, for
+ * directions of length 1e-3, 1 and 1e3 (the start is in t: D |d|_max is a
+ * distance), near the origin and at 1e7.  Fails with D = 0, with
+ * D = reach / |d|_max / 2, and with D = reach (not divided by |d|_max).
+ */
+START_TEST(test_shortcuts_gather_finds_crossings_before_the_hit)
+{
+    const double scale[] = {1e-3, 1, 1e3}, offset[] = {0, 1e7};
+    char text[1024];
+    for (size_t i = 0; i < sizeof offset / sizeof offset[0]; i++)
+        for (size_t j = 0; j < sizeof scale / sizeof scale[0]; j++) {
+            double x0 = offset[i], reach = gather_reach(x0 + 1e6);
+            vec3 u = vec_make(1, 0.6, 0.3), p = vec_make(x0, 0.5, 0.25);
+            vec3 c = vec_sub(p, vec_scale(u, 0.75 * reach));
+            snprintf(text, sizeof text,
+                     "image { width 4 height 3 }\n"
+                     "camera { perspective eye [%.17g, 0, -5] look_at [%.17g, 0, 0] up [0, 1, 0] fov 60 }\n"
+                     "box { from [%.17g, -1e6, -1e6] to [%.17g, 1e6, 1e6] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                     "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n"
+                     "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n",
+                     x0 - 1, x0 - 1, x0, x0 + 1e6, c.x, c.y, c.z, 0.15 * reach, c.x, c.y, c.z + 0.5 * reach,
+                     0.15 * reach);
+            ray r = {vec_sub(p, vec_scale(u, 10)), vec_scale(u, scale[j]), 0, INFINITY};
+            ck_assert_msg(gather_both_ways(text, r, 0) == 3, "offset %g, scale %g:\n%s", x0, scale[j], text);
+        }
+}
+END_TEST
+
+/* The touching glass of the tests below, its x moved by x0. */
+static void touching_glass(char *out, size_t size, int k, double x0)
+{
+    switch (k) {
+    case 0: /* two boxes sharing a face */
+        snprintf(out, size,
+                 "box { from [%.17g, -1, -1] to [%.17g, 1, 1] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                 "box { from [%.17g, -1, -1] to [%.17g, 1, 1] material { Kd 0 t 0.8 ior 1.3 } }\n",
+                 x0 - 1, x0, x0, x0 + 1);
+        break;
+    case 1: /* two disks (sheets) lying on a box's face */
+        snprintf(out, size,
+                 "box { from [%.17g, -1, -1] to [%.17g, 1, 1] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                 "disk { center [%.17g, 0.1, 0] normal [1, 0, 0] radius 0.5 material { Kd 0 t 0.7 } }\n"
+                 "disk { center [%.17g, -0.1, 0.05] normal [-1, 0, 0] radius 0.6 material { Kd 0 t 0.6 } }\n",
+                 x0 - 1, x0, x0, x0);
+        break;
+    case 2: /* a ball touching a box */
+        snprintf(out, size,
+                 "box { from [%.17g, -1, -1] to [%.17g, 1, 1] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                 "sphere { center [%.17g, 0, 0] radius 0.5 material { Kd 0 Ks 0.2 t 0.8 ior 1.3 } }\n",
+                 x0 - 1, x0, x0 + 0.5);
+        break;
+    case 3: /* an ellipsoid (a kept frame) touching a box */
+        snprintf(out, size,
+                 "box { from [%.17g, -1, -1] to [%.17g, 1, 1] material { Kd 0 t 0.9 ior 1.5 } }\n"
+                 "sphere { radius 1 scale [0.5, 1, 0.7] rotate [0, 0, 30] rotate [0, 0, -30] "
+                 "translate [%.17g, 0, 0] material { Kd 0 t 0.8 ior 1.3 } }\n",
+                 x0 - 1, x0, x0 + 0.5);
+        break;
+    default: /* a ball inside a ball, apart, under a floor plane that touches the outer one */
+        snprintf(out, size,
+                 "sphere { center [%.17g, 0, 0] radius 1 material { Kd 0 Ks 0.1 t 0.9 ior 1.5 } }\n"
+                 "sphere { center [%.17g, 0.45, 0.26] radius 0.3 material { Kd 0 t 1 ior 1 } }\n"
+                 "plane { point [0, -1, 0] normal [0, 1, 0] material { Kd 0.8 } }\n",
+                 x0 + 1, x0 + 1.3);
+        break;
+    }
+}
+enum { TOUCHING_GLASS = 5 };
+
+/*
+ * [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] Touching glass
+ * (touching_glass) crossed through the contact at x0 by a tilted ray of
+ * length 1e-3, 1 and 1e3, near the origin and at 1e7: the gathers agree
+ * with the shortcuts on and off, and the second primitive's first crossing
+ * (at the contact, or for the nested balls the inner one's, apart) gathers
+ * the surfaces there: the two boxes 2, the disks and the box 3, the ball or
+ * ellipsoid and the box 2, the inner ball 1.  Fails with gather_alone
+ * taking every hit on an eligible primitive as alone (the disks, the ball
+ * and the ellipsoid lose the box's crossing).
+ */
+START_TEST(test_shortcuts_gather_touching_glass_both_ways)
+{
+    const int expect[TOUCHING_GLASS] = {2, 3, 2, 2, 1};
+    const double scale[] = {1e-3, 1, 1e3}, offset[] = {0, 1e7};
+    char shapes[768], text[1024];
+    for (int k = 0; k < TOUCHING_GLASS; k++)
+        for (size_t i = 0; i < sizeof offset / sizeof offset[0]; i++)
+            for (size_t j = 0; j < sizeof scale / sizeof scale[0]; j++) {
+                touching_glass(shapes, sizeof shapes, k, offset[i]);
+                snprintf(text, sizeof text,
+                         "image { width 4 height 3 }\n"
+                         "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n%s",
+                         shapes);
+                vec3 u = vec_make(1, 0.35, 0.2), p = vec_make(offset[i], 0, 0);
+                ray r = {vec_sub(p, vec_scale(u, 3)), vec_scale(u, scale[j]), 0, INFINITY};
+                int n = gather_both_ways(text, r, 1);
+                ck_assert_msg(n == expect[k], "%d gathered, %d expected:\n%s", n, expect[k], text);
+            }
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-GATHER-2] A lone glass ball grazed.  Of radius 1e-3 at
+ * x = 1e7 (an ulp there is 2^-29, the reach about 4.5e-6), rays one ulp
+ * inside its tangent (along y, and tilted in the y-z plane) cross it along
+ * a chord of 2 sqrt(2e-3 2^-29) = 3.9e-6, within reach: each crossing's
+ * gather must hold the other (2), with the shortcuts as without.  A ray
+ * through it a quarter of its radius from the centre gathers 1 (the other
+ * crossing 1.9 radii away), and rays exactly tangent to a ball of radius
+ * 1 at the origin gather the same both ways.  A ball smaller than the
+ * reach, crossed far from tangent, gathers 2.  Fails with gather_self_apart
+ * taking every sphere's other crossing as apart, and with its bound on the
+ * radius dropped (the small ball).
+ */
+START_TEST(test_shortcuts_gather_grazed_ball)
+{
+    char text[512];
+    const double x0s[] = {1e7, 0}, rads[] = {1e-3, 1};
+    for (int k = 0; k < 2; k++) {
+        double x0 = x0s[k], rad = rads[k], x = k ? x0 + rad : nextafter(x0 + rad, 0);
+        snprintf(text, sizeof text,
+                 "image { width 4 height 3 }\n"
+                 "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+                 "sphere { center [%.17g, 0, 0] radius %.17g material { Kd 0 t 0.9 ior 1.5 } }\n",
+                 x0, rad);
+        ray along = {vec_make(x, -5 * rad, 0), vec_make(0, 1, 0), 0, INFINITY};
+        ray tilted = {vec_make(x, -3 * rad, -4 * rad), vec_make(0, 0.6, 0.8), 0, INFINITY};
+        ray through = {vec_make(x0 + 0.25 * rad, -5 * rad, 0), vec_make(0, 1, 0), 0, INFINITY};
+        int na = gather_both_ways(text, along, 0), nt = gather_both_ways(text, tilted, 0);
+        ck_assert_msg(k ? na >= 1 && nt >= 1 : na == 2 && nt == 2, "%d, %d gathered:\n%s", na, nt, text);
+        ck_assert_msg(gather_both_ways(text, through, 0) == 1, "through:\n%s", text);
+    }
+    /* Of radius 1e-6 at 1e7 the ball is smaller than the reach: a ray a
+     * quarter radius off its centre crosses it along a chord of
+     * 2 sqrt(1 - 1/16) 1e-6 = 1.9e-6, far from tangent, yet within reach. */
+    snprintf(text, sizeof text,
+             "image { width 4 height 3 }\n"
+             "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+             "sphere { center [1e7, 0, 0] radius 1e-6 material { Kd 0 t 0.9 ior 1.5 } }\n");
+    ray small = {vec_make(1e7 + 0.25e-6, -5e-6, 0), vec_make(0, 1, 0), 0, INFINITY};
+    ck_assert_msg(gather_both_ways(text, small, 0) == 2, "small:\n%s", text);
+}
+END_TEST
+
+/* [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] The touching glass
+ * above rendered, near the origin and at 1e7: the same bits with the
+ * shortcuts on and off, and fewer primitive tests with them on. */
+START_TEST(test_shortcuts_gather_images_both_ways)
+{
+    const double offset[] = {0, 1e7};
+    char shapes[768], text[2048];
+    for (int k = 0; k < TOUCHING_GLASS; k++)
+        for (size_t i = 0; i < sizeof offset / sizeof offset[0]; i++) {
+            render_stats on, off;
+            touching_glass(shapes, sizeof shapes, k, offset[i]);
+            snprintf(text, sizeof text,
+                     "image { width 24 height 18 samples 1 max_depth 8 background [0.2, 0.3, 0.4] }\n"
+                     "camera { perspective eye [%.17g, 0.7, 4] look_at [%.17g, 0, 0] up [0, 1, 0] fov 50 }\n"
+                     "point_light { position [3, 5, 4] power 30 }\n"
+                     "ambient { color 0.1 }\n%s",
+                     offset[i] + 0.4, offset[i], shapes);
+            same_both_ways(text, &on, &off);
+            ck_assert_msg(on.trace.bvh.prims_tested < off.trace.bvh.prims_tested, "%s", text);
+        }
+}
+END_TEST
+
 START_TEST(test_shortcuts_random_scenes_bit_identical)
 {
     for (int k = 0; k < RANDOM_BATCH; k++)
@@ -786,6 +1031,10 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_far_tiny_frame);
     tcase_add_test(tc, test_shortcuts_far_camera_frame);
     tcase_add_test(tc, test_shortcuts_flat_huge_triangle_in_plane);
+    tcase_add_test(tc, test_shortcuts_gather_finds_crossings_before_the_hit);
+    tcase_add_test(tc, test_shortcuts_gather_touching_glass_both_ways);
+    tcase_add_test(tc, test_shortcuts_gather_images_both_ways);
+    tcase_add_test(tc, test_shortcuts_gather_grazed_ball);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);

@@ -420,6 +420,7 @@ typedef struct walk {
     void *ctx;
     bvh_stats *stats;
     lazy_shear *sh;
+    real node_tmin; /* the nodes' slab tests start here (>= r->tmin) */
 } walk;
 
 /* A part's crossings, to fn or counted, its test not counted in stats. */
@@ -490,7 +491,7 @@ static int walk_other(void *ctx, int item)
 static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const int *start, int starts)
 {
     int stack[BVH_MAX_DEPTH];
-    real tmin = w->r->tmin, tmax = w->r->tmax, enter;
+    real tmin = w->node_tmin, tmax = w->r->tmax, enter;
     /* A copy: through the pointer each test would load it again, the
      * callback being opaque to the compiler. */
     const slab_ray copy = *sr, *s = &copy;
@@ -568,8 +569,17 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
 {
+    return bvh_visit_window(b, prims, r, r->tmin, fn, ctx, stats);
+}
+
+/* [SHADE-SHORTCUT-GATHER-1] Only the nodes change: every part tested
+ * gets the ray r itself, so it reports the same crossings, bit for bit, in
+ * the same order; a box the ray meets only before node_tmin is left out. */
+int bvh_visit_window(const bvh *b, const scene_prim *prims, const ray *r, real node_tmin,
+                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats)
+{
     lazy_shear sh = shear_lazy(r);
-    walk w = {prims, r, fn, NULL, ctx, stats, &sh};
+    walk w = {prims, r, fn, NULL, ctx, stats, &sh, node_tmin > r->tmin ? node_tmin : r->tmin};
     return walk_all(b, &w, NULL);
 }
 
@@ -583,7 +593,7 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
                      int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats)
 {
     lazy_shear sh = shear_lazy(r);
-    walk w = {prims, r, NULL, fn, ctx, stats, &sh};
+    walk w = {prims, r, NULL, fn, ctx, stats, &sh, r->tmin};
     return walk_all(b, &w, NULL);
 }
 
@@ -605,6 +615,6 @@ int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r,
     if (!bundle || bundle->count < 0)
         return bvh_visit_counts(b, prims, r, fn, ctx, stats);
     lazy_shear sh = shear_lazy(r);
-    walk w = {prims, r, NULL, fn, ctx, stats, &sh};
+    walk w = {prims, r, NULL, fn, ctx, stats, &sh, r->tmin};
     return walk_all(b, &w, bundle);
 }

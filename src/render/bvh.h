@@ -115,6 +115,13 @@ int bvh_visit(const bvh *b, const scene_prim *prims, const ray *r,
               int (*fn)(void *ctx, const hit *h), void *ctx);
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,
                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats);
+/* bvh_visit_stats whose walk enters only the boxes the ray meets within
+ * [node_tmin, r->tmax] (node_tmin below r->tmin counts as r->tmin); the parts
+ * in them are tested with r itself.  Every crossing in (r->tmin, r->tmax)
+ * whose part's box the ray meets past node_tmin is reported, as
+ * bvh_visit_stats reports it ([SHADE-SHORTCUT-GATHER-1]). */
+int bvh_visit_window(const bvh *b, const scene_prim *prims, const ray *r, real node_tmin,
+                     int (*fn)(void *ctx, const hit *h), void *ctx, bvh_stats *stats);
 /* The same walk for callers that need only which part is crossed and how
  * often (shadow rays): fn(ctx, ref, n) once for each part with n >= 1
  * crossings (isect_part_crossings), in the order bvh_visit reports them,

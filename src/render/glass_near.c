@@ -40,10 +40,9 @@ int glass_near_build(tracer *t, const scene_model *s)
     return 1;
 }
 
-/* Whether the surface of sphere p may pass within reach (each coordinate)
- * of point: within sqrt(3) reach in length, and its hit points lie within
+/* Within sqrt(3) reach in length, and the sphere's hit points lie within
  * 2^-20 of its size of it (a few ulps); 2 reach and that pad cover both. */
-static int near_sphere(const scene_prim *p, vec3 point, real reach)
+int glass_near_sphere(const scene_prim *p, vec3 point, real reach)
 {
     vec3 c = p->u.sphere.center;
     real r = p->u.sphere.radius, pad = 2 * reach + 0x1p-20 * (vec_max_abs(c) + r);
@@ -61,7 +60,7 @@ int glass_near(const tracer *t, vec3 point, real reach)
         const scene_prim *p = &t->scene->prims[t->glass_prim[i]];
         if (point.x >= lo.x - reach && point.x <= hi.x + reach && point.y >= lo.y - reach &&
             point.y <= hi.y + reach && point.z >= lo.z - reach && point.z <= hi.z + reach &&
-            (p->kind != PRIM_SPHERE || p->frame || near_sphere(p, point, reach)))
+            (p->kind != PRIM_SPHERE || p->frame || glass_near_sphere(p, point, reach)))
             return 1;
     }
     return 0;

@@ -17,6 +17,10 @@
 int glass_near_build(tracer *t, const scene_model *s);
 void glass_near_free(tracer *t);
 
+/* Whether the surface of sphere p (in the world frame) may pass within
+ * reach (each coordinate) of point: 1 whenever it is not known not to. */
+int glass_near_sphere(const scene_prim *p, vec3 point, real reach);
+
 /* Whether a transparent surface may lie within reach of point (each
  * coordinate): 1 whenever it is not known to lie farther. */
 int glass_near(const tracer *t, vec3 point, real reach);

@@ -5,6 +5,7 @@
  */
 #include <math.h>
 #include "render/interface.h"
+#include "render/gather_alone.h"
 #include "render/intersect.h"
 #include "render/medium.h"
 #include "render/shade.h"
@@ -50,6 +51,38 @@ static void interface_spawn(const tracer *t, const scene_prim *prim, interface *
     }
 }
 
+/*
+ * [SHADE-SHORTCUT-GATHER-1] Where the gather's walk may start: no crossing
+ * whose point lies within reach of the hit has t at or below
+ * t_h - D, D |d|_max = 2 reach + 2^-17 (|t_h| |d|_max + |o|_max + |p|_max +
+ * frame_shift) (spec/shading.md has the argument: a hit point lies within
+ * 2^-20 (|t| |d|_max + |o - T|_max) of o + t d, T its frame's translation).
+ * NaN or below the ray's own tmin: the ray's tmin (bvh_visit_window).
+ */
+static real gather_from(const tracer *t, const hit *h, const ray *r, real reach)
+{
+    real dm = vec_max_abs(r->dir), at = fabs(h->t);
+    real spread = at * dm + vec_max_abs(r->origin) + vec_max_abs(h->point) + t->frame_shift;
+    return h->t - (2 * reach + 0x1p-17 * spread) / dm;
+}
+
+/* [SHADE-SHORTCUT-GATHER-2] The walk on a primitive alone would report
+ * within reach only the crossings of the hit's own part, found by the same
+ * test of the same ray: they are all it gathers, and none besides h where
+ * they are surely apart (then f holds h alone already). */
+static void gather_self(const tracer *t, const hit *h, const ray *r, interface *f, trace_stats *st)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    if (gather_self_apart(t, h, r, f->reach))
+        return;
+    int n = isect_part_all(&t->scene->prims[h->prim], h->part, r, out);
+    st->bvh.prims_tested++;
+    for (int i = 0; i < n; i++) {
+        out[i].prim = h->prim;
+        gather_crossing(f, &out[i]);
+    }
+}
+
 void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, const ray *in, interface *f,
                       trace_stats *st)
 {
@@ -68,7 +101,11 @@ void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, con
     /* The crossings' t may differ from the hit's by the rounding of t itself,
      * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
     r.tmax = h->t + f->reach + 0x1p-40 * fabs(h->t);
-    bvh_visit_stats(&t->accel, t->scene->prims, &r, gather_crossing, f, &st->bvh);
+    if (gather_alone(t, h, f->reach))
+        gather_self(t, h, &r, f, st);
+    else
+        bvh_visit_window(&t->accel, t->scene->prims, &r, t->no_shortcuts ? r.tmin : gather_from(t, h, &r, f->reach),
+                         gather_crossing, f, &st->bvh);
     interface_spawn(t, prim, f);
 }
 

@@ -18,6 +18,7 @@
 #include <string.h>
 #include "render/intersect.h"
 #include "base/sampler.h"
+#include "render/gather_alone.h"
 #include "render/glass_near.h"
 #include "render/glass_touch.h"
 #include "render/interface.h"
@@ -62,10 +63,13 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
     t->glass = s->features.refraction;
     t->terminator_offset = 1;
     t->bundles = 1;
+    for (int i = 0; i < s->prim_count; i++)
+        for (int k = 0; k < 3 && s->prims[i].frame; k++)
+            t->frame_shift = fmax(t->frame_shift, fabs(s->prims[i].frame->to_world.m[k][3]));
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
-    if (status == STATUS_OK && t->glass && !glass_near_build(t, s))
+    if (status == STATUS_OK && t->glass && (!glass_near_build(t, s) || !gather_alone_build(t, s)))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK) {
         tracer_free(t);
@@ -102,6 +106,7 @@ void tracer_free(tracer *t)
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
         glass_near_free(t);
+        gather_alone_free(t);
     }
     t->lights = NULL;
 }

@@ -103,10 +103,18 @@ typedef struct tracer {
     int glass_alloc;          /* glass_box's allocated pairs */
     vec3 *glass_box;          /* lo, hi of each */
     int *glass_prim;          /* the primitive of each */
+    int *gather_span;         /* per primitive: first neighbour in gather_near and
+                                 their count, -1 when its hits are never taken
+                                 as alone ([SHADE-SHORTCUT-GATHER-2]); NULL: none */
+    struct gather_near *gather_near;
+    int gather_alloc;         /* gather_near's allocated entries */
     int terminator_offset;    /* shadow rays of smooth triangles start at the
                                  lifted point (isect_shadow_point): 1 by
                                  default; 0 only to measure the seed's way
                                  (spec/shading.md [SHADE-TERMINATOR-1]) */
+    real frame_shift;         /* the largest |translation| (max norm) of a primitive's
+                                 frame, 0 without one: bounds how far a hit point
+                                 may lie off its ray ([SHADE-SHORTCUT-GATHER-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
     int bundles;              /* shadow rays toward a distributed light walk
                                  only the nodes their bundle may reach
