@@ -6,6 +6,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/bvh.h"
+#include "render/slab.h"
 #include "base/xform.h"
 
 /* Counter-based generator: splitmix64's finaliser of seed and counter. */
@@ -811,6 +812,74 @@ START_TEST(test_bvh_skewed_distribution_depth_bounded)
 }
 END_TEST
 
+/* slab_box_meets against slab_box's interval, and by hand where the exit's
+ * pad decides.  The hand cases: direction (1, 1, 1) (1/d = 1) from the
+ * origin, so each slab's t is its plane's coordinate; the pad makes an exit
+ * e into e (1 + 2^-50) for e >= 0 and e (1 - 2^-50) below 0. */
+static int meets_by_hand(vec3 lo, vec3 hi, real tmin, real tmax)
+{
+    ray r = {vec_make(0, 0, 0), vec_make(1, 1, 1), tmin, tmax};
+    slab_ray s = slab_make(&r);
+    real enter;
+    return slab_box_meets(lo, hi, &s, tmin, tmax, &enter);
+}
+
+START_TEST(test_slab_box_meets_is_slab_box)
+{
+    /* Entry 1 + 2^-52 (y), exit 1 (x): met only through the pad, 1 + 2^-50. */
+    ck_assert_int_eq(meets_by_hand(vec_make(0, 1 + 0x1p-52, 0), vec_make(1, 2, 2), -10, 10), 1);
+    /* Exit 1 (x) against an entry 1 + 2^-49: past the pad. */
+    ck_assert_int_eq(meets_by_hand(vec_make(0, 1 + 0x1p-49, 0), vec_make(1, 2, 2), -10, 10), 0);
+    /* Behind the origin: exit -1 padded toward 0, to -1 + 2^-50, holds the
+     * entry -1 + 2^-52; a pad of 1 + 2^-50 for it would not. */
+    ck_assert_int_eq(meets_by_hand(vec_make(-2, -1 + 0x1p-52, -2), vec_make(-1, 0, 0), -10, 10), 1);
+    ck_assert_int_eq(meets_by_hand(vec_make(-2, -1 + 0x1p-51, -2), vec_make(-1, 0, 0), -10, 10), 1);
+    ck_assert_int_eq(meets_by_hand(vec_make(-2, -1 + 0x1p-49, -2), vec_make(-1, 0, 0), -10, 10), 0);
+    /* tmax is not padded: an entry one ulp past it misses. */
+    ck_assert_int_eq(meets_by_hand(vec_make(1 + 0x1p-51, 0, 0), vec_make(5, 5, 5), 0, 1 + 0x1p-52), 0);
+    ck_assert_int_eq(meets_by_hand(vec_make(1 + 0x1p-52, 0, 0), vec_make(5, 5, 5), 0, 1 + 0x1p-52), 1);
+
+    /* Random boxes and rays, with zero direction components, origins on
+     * slab planes (0 * inf = NaN), boxes behind the origin and infinite
+     * tmax: the same answer as slab_box's interval and its entry's bits. */
+    rng g = {16, 0};
+    for (int i = 0; i < 200000; i++) {
+        vec3 a = rng_box(&g, -4, 4), b = rng_box(&g, -4, 4);
+        vec3 lo = vec_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+        vec3 hi = vec_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+        ray r = {rng_box(&g, -6, 6), rng_unit(&g), 0, 0};
+        int k = (int)(rng_uniform(&g) * 8);
+        if (k & 1)
+            r.dir.x = 0;
+        if (k & 2)
+            r.origin.y = rng_uniform(&g) < 0.5 ? lo.y : hi.y;
+        if (k & 4)
+            r.dir.y = rng_uniform(&g) < 0.5 ? 0.0 : -0.0;
+        r.tmin = rng_uniform(&g) < 0.25 ? -rng_range(&g, 0, 8) : rng_range(&g, 0, 2) * (rng_uniform(&g) < 0.5);
+        r.tmax = rng_uniform(&g) < 0.2 ? INFINITY : r.tmin + rng_range(&g, 0, 12);
+        /* Exits near an entry, where the pad decides: a box edge moved to
+         * an other axis's plane along the ray, nudged by a few ulps. */
+        if (rng_uniform(&g) < 0.3 && r.dir.x != 0 && r.dir.z != 0) {
+            real t = (lo.z - r.origin.z) / r.dir.z;
+            real x = r.origin.x + t * r.dir.x;
+            int ulps = (int)(rng_uniform(&g) * 9) - 4;
+            x = x + ulps * 0x1p-52 * fabs(x);
+            if (r.dir.x > 0 && x > lo.x)
+                hi.x = x;
+            else if (r.dir.x < 0 && x < hi.x)
+                lo.x = x;
+        }
+        slab_ray s = slab_make(&r);
+        real tn = r.tmin, tf = r.tmax, enter;
+        slab_box(lo, hi, &s, &tn, &tf);
+        int want = tn <= tf, got = slab_box_meets(lo, hi, &s, r.tmin, r.tmax, &enter);
+        ck_assert_msg(got == want, "case %d: %d, slab_box %d", i, got, want);
+        ck_assert_msg(memcmp(&enter, &tn, sizeof enter) == 0 || (enter != enter && tn != tn),
+                      "case %d: entry %.17g vs %.17g", i, (double)enter, (double)tn);
+    }
+}
+END_TEST
+
 START_TEST(test_bvh_grid_100k_visits_few_nodes)
 {
     /* A 100 x 100 x 10 grid of unit-spaced spheres (100 000).  A ray down
@@ -882,6 +951,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_boxes_exact_past_one_axis);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
+    tcase_add_test(tc, test_slab_box_meets_is_slab_box);
     suite_add_tcase(s, tc);
     return s;
 }

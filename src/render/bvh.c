@@ -30,10 +30,7 @@ void bvh_free(bvh *b)
  * entry distance. */
 static inline int node_hit(const bvh_node *nd, const slab_ray *s, real tmin, real tmax, real *enter)
 {
-    real tn = tmin, tf = tmax;
-    slab_box(nd->lo, nd->hi, s, &tn, &tf);
-    *enter = tn;
-    return tn <= tf;
+    return slab_box_meets(nd->lo, nd->hi, s, tmin, tmax, enter);
 }
 
 /*

@@ -62,4 +62,43 @@ static inline void slab_box(vec3 lo, vec3 hi, const slab_ray *s, real *tn, real 
     slab(lo.z, hi.z, s->o.z, s->inv.z, s->neg[2], tn, tf);
 }
 
+
+/* One slab's entry and unscaled exit: slab's t0 and t1 before the pad. */
+static inline void slab_ends(real lo, real hi, real o, real inv, int neg, real *t0, real *t1)
+{
+    *t0 = ((neg ? hi : lo) - o) * inv;
+    *t1 = ((neg ? lo : hi) - o) * inv;
+}
+
+/*
+ * Whether slab_box narrows [tmin, tmax] to a nonempty interval, and its
+ * entry in *enter: the same answer and the same entry to the bit, with
+ * the exit's pad applied once, to the least unscaled exit, not to each.
+ * The pad, pad(t) = t (1 + copysign(SLAB_EXIT_PAD, t)) rounded, is
+ * non-decreasing in t (a rounded product by a positive constant on either
+ * side of 0, at most -0 below it and at least +0 above), so the least of
+ * the padded exits is the pad of the least exit (equal as values; a zero's
+ * sign does not change a comparison).  A NaN exit narrows nothing in
+ * either form: it never passes `<`, and the least starts at +inf, whose
+ * pad is +inf.  The BVH's walks read only the entry and the answer, and
+ * so save the pad's four operations on two of the three axes.
+ */
+static inline int slab_box_meets(vec3 lo, vec3 hi, const slab_ray *s, real tmin, real tmax, real *enter)
+{
+    real x0, x1, y0, y1, z0, z1;
+    slab_ends(lo.x, hi.x, s->o.x, s->inv.x, s->neg[0], &x0, &x1);
+    slab_ends(lo.y, hi.y, s->o.y, s->inv.y, s->neg[1], &y0, &y1);
+    slab_ends(lo.z, hi.z, s->o.z, s->inv.z, s->neg[2], &z0, &z1);
+    real tn = tmin, least = INFINITY;
+    tn = x0 > tn ? x0 : tn;
+    tn = y0 > tn ? y0 : tn;
+    tn = z0 > tn ? z0 : tn;
+    least = x1 < least ? x1 : least;
+    least = y1 < least ? y1 : least;
+    least = z1 < least ? z1 : least;
+    least *= 1.0 + copysign(SLAB_EXIT_PAD, least);
+    *enter = tn;
+    return tn <= (least < tmax ? least : tmax);
+}
+
 #endif
