@@ -488,7 +488,7 @@ START_TEST(test_bvh_flat_huge_triangle_not_culled)
         crossed += mb && hb.prim == 1;
         ck_assert_int_eq(me, mb);
         ck_assert_msg(m == mb, "ray %d: the walk %s, testing every primitive %s (t %.17g)", i,
-                      m ? "hits" : "misses", mb ? "hits" : "misses", mb ? hb.t : 0.0);
+                      m ? "hits" : "misses", mb ? "hits" : "misses", mb ? (double)hb.t : 0.0);
         if (mb) {
             ck_assert_int_eq(h.prim, hb.prim);
             ck_assert_int_eq(he.prim, hb.prim);

@@ -321,7 +321,7 @@ static int moving_away_case(const scene_prim *s, const ray *r)
         real t[2];
         int n = isect_sphere_roots(vec_sub(r->origin, c), r->dir, radius, t);
         for (int i = 0; i < n; i++)
-            ck_assert_msg(!(t[i] > 0.0), "root %a of a ray told moving away", t[i]);
+            ck_assert_msg(!(t[i] > 0.0), "root %a of a ray told moving away", (double)t[i]);
         ck_assert_int_eq(isect_part_crossings(s, 0, r), 0);
     }
     assert_hot_sphere_matches(s, r);
