@@ -37,6 +37,8 @@ static const char lights_scene[] =
     "distributed_light { disk [0.5, 3, -0.25] [0.3, -1, 0.2] 0.75 samples 7 power 3 }\n"
     "distributed_light { rectangle [-1, 4, -1] [2, 0, 0.5] [0, 0.25, 2] samples 12 power [1, 2, 3] }\n"
     "distributed_light { disk [0, 1, 3] [0, 0, -1] 1.5 samples 16 falloff inverse_square }\n"
+    /* past the tracer's TRACE_MIXED_SAMPLES (64): counters mixed per sample */
+    "distributed_light { rectangle [1, 5, 0.5] [-0.5, 0, 0.25] [0, -0.5, 1] samples 70 power 0.5 }\n"
     "sphere { radius 0.5 material { Ks 0.5 t 0.5 ior 1.5 } }\n"
     "plane { }\n";
 
@@ -247,7 +249,7 @@ START_TEST(test_json_light_samples_match_renderer)
                                           path, j);
                 }
     }
-    ck_assert_int_eq(checked, 4 * 9 * 4 * (7 + 12 + 16));
+    ck_assert_int_eq(checked, 4 * 9 * 4 * (7 + 12 + 16 + 70));
     json_decref(doc);
     scene_free(s);
 }

@@ -30,10 +30,19 @@ static inline uint64_t sampler_mix(uint64_t z)
     return z ^ (z >> SAMPLER_SHIFT3);
 }
 
+/* sampler_key with its counter already mixed (sampler_mix(counter)): the
+ * counter's half depends on the counter alone, so a caller that extends
+ * many keys by the same counters (the samples of a distributed light) can
+ * mix those once. */
+static inline uint64_t sampler_key_mixed(uint64_t key, uint64_t mixed_counter)
+{
+    return sampler_mix(key ^ mixed_counter);
+}
+
 /* A key extended by one more counter. */
 static inline uint64_t sampler_key(uint64_t key, uint64_t counter)
 {
-    return sampler_mix(key ^ sampler_mix(counter));
+    return sampler_key_mixed(key, sampler_mix(counter));
 }
 
 /* A double in [0, 1): the top 53 bits of the mixed key. */

@@ -237,7 +237,8 @@ static real lobe_cosine(vec3 v, vec3 r, real c, real *rel)
  * |c_lo| <= 2^-53 h); where it has, the product is 0 whatever the
  * correction, so capping the exponent at 709 changes nothing and keeps
  * exp finite: 0 * Inf would be NaN.  Rounding never puts the lobe above 1,
- * and the final fmin says so to the analyser.
+ * and the final comparison says so to the analyser (a comparison, not fmin,
+ * a libm call per lobe on x86-64; p >= DBL_MIN is no NaN, where the two agree).
  */
 /*@ requires vfinite(v) && DOUBLES(vbounded(v, 1024));
     requires vfinite(r) && DOUBLES(vbounded(r, 1024));
@@ -262,7 +263,7 @@ real shade_phong_lobe(vec3 v, vec3 r, real shininess)
     real p = pow(c_hi, shininess);
     if (rel != 0)
         p *= exp(fmin(shininess * rel, 709));
-    return p >= DBL_MIN ? fmin(p, 1.0) : 0.0;
+    return p >= DBL_MIN ? (p < 1.0 ? p : 1.0) : 0.0;
 }
 
 /*@ requires vin(ks, 0, 1);

@@ -389,6 +389,8 @@ light_setup trace_light_setup(const scene_light *light, int samples)
     if (light->kind == LIGHT_DISK)
         light_frame(light->normal, &setup.t1, &setup.t2);
     light_ball(light, &setup);
+    for (int c = 0; c < 2 * TRACE_MIXED_SAMPLES; c++)
+        setup.mixed[c] = sampler_mix((uint64_t)c);
     return setup;
 }
 
@@ -396,8 +398,16 @@ light_setup trace_light_setup(const scene_light *light, int samples)
  * sampler_key(key, TRACE_KEY_LIGHT + index), the same for every sample. */
 static vec3 light_point_keyed(const scene_light *light, const light_setup *setup, uint64_t light_key, int j)
 {
-    double u1 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j));
-    double u2 = sampler_uniform(sampler_key(light_key, 2 * (uint64_t)j + 1));
+    uint64_t c1, c2;   /* sampler_mix of the counters 2j, 2j + 1: sampler_key's own */
+    if (j < TRACE_MIXED_SAMPLES) {
+        c1 = setup->mixed[2 * j];
+        c2 = setup->mixed[2 * j + 1];
+    } else {
+        c1 = sampler_mix(2 * (uint64_t)j);
+        c2 = sampler_mix(2 * (uint64_t)j + 1);
+    }
+    double u1 = sampler_uniform(sampler_key_mixed(light_key, c1));
+    double u2 = sampler_uniform(sampler_key_mixed(light_key, c2));
     double a, b;   /* the sample's place in the light's unit square: model data, double */
     light_cell_point(setup->grid, j, u1, u2, &a, &b);
     return light_point(light, setup->t1, setup->t2, a, b);
