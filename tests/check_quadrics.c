@@ -368,7 +368,7 @@ START_TEST(test_quadric_spawn_no_self_hit)
                 ray s = ray_spawn_hit(&shapes[k], &h, d);
                 hit h2;
                 if (isect_prim(&shapes[k], &s, &h2))
-                    ck_assert_msg(h2.t > 1e-6, "shape %d: a spawned ray met its own surface at t = %g", k, h2.t);
+                    ck_assert_msg(h2.t > 1e-6, "shape %d: a spawned ray met its own surface at t = %g", k, (double)h2.t);
             }
         }
 }
@@ -413,7 +413,7 @@ START_TEST(test_torus_transparent_shadow)
     static const double want[] = {0.125, 0.125, 0.5, 0.5, 0.125};
     for (int i = 0; i < 5; i++) {
         rgb c = trace_one(s, vec_make(x[i], 0.1, 0.01), vec_make(0, -1, 0), &st);
-        ck_assert_msg(fabs(c.x - want[i]) < 1e-12, "x = %g: %.17g, expected %g", x[i], c.x, want[i]);
+        ck_assert_msg(fabs(c.x - want[i]) < 1e-12, "x = %g: %.17g, expected %g", x[i], (double)c.x, want[i]);
     }
     scene_free(s);
     s = load("material clear { Kd 0 t 0.5 ior 1 }\n"
@@ -421,7 +421,7 @@ START_TEST(test_torus_transparent_shadow)
              "plane { point [-5, 0, 0] normal [1, 0, 0] material { Kd 0.5 } }\n"
              "point_light { position [5, 0, 0] falloff none }\n");
     rgb c = trace_one(s, vec_make(-4.9, 0, 0), vec_make(-1, 0, 0), &st);
-    ck_assert_msg(fabs(c.x - 0.5 * 0.0625) < 1e-12, "%.17g", c.x);
+    ck_assert_msg(fabs(c.x - 0.5 * 0.0625) < 1e-12, "%.17g", (double)c.x);
     scene_free(s);
 }
 END_TEST
@@ -438,7 +438,7 @@ START_TEST(test_torus_shadows_itself)
     ck_assert(s->features.shadows);
     trace_stats st;
     rgb c = trace_one(s, vec_make(0, 0, 0), vec_make(1, 0, 0), &st);
-    ck_assert_msg(fabs(c.x - 0.1) < 1e-15, "%.17g", c.x);
+    ck_assert_msg(fabs(c.x - 0.1) < 1e-15, "%.17g", (double)c.x);
     ck_assert_int_eq(st.shadow_rays, 1);
     scene_free(s);
     /* Lit from above, a point on the tube's top (N = +y): Kd (Ia + E). */
@@ -446,7 +446,7 @@ START_TEST(test_torus_shadows_itself)
              "torus { axis [0, 1, 0] major 2 minor 0.5 material { Kd 0.5 } }\n"
              "distant_light { direction [0, -1, 0] }\n");
     c = trace_one(s, vec_make(2, 5, 0), vec_make(0, -1, 0), &st);
-    ck_assert_msg(fabs(c.x - 0.6) < 1e-15, "%.17g", c.x);
+    ck_assert_msg(fabs(c.x - 0.6) < 1e-15, "%.17g", (double)c.x);
     scene_free(s);
 }
 END_TEST
@@ -464,7 +464,7 @@ START_TEST(test_quadric_glass)
                        "cylinder { from [20, 0, 0] to [20, 0, 5] open material { Kd 0 t 1 ior 1.7 } }\n");
     trace_stats st;
     rgb c = trace_one(s, vec_make(0.3, 0.2, 5), vec_make(0, 0, -1), &st);
-    ck_assert_msg(fabs(c.x - 0.64) < 1e-12, "%.17g", c.x);
+    ck_assert_msg(fabs(c.x - 0.64) < 1e-12, "%.17g", (double)c.x);
     ck_assert_int_eq(st.refraction_rays, 2);
     tracer t;
     medium_stack m;
@@ -549,13 +549,14 @@ START_TEST(test_cone_far_origin)
             ray r = make_ray(vec_make(d, 0.8, 0.5), vec_make(-1, 0, 0));
             ck_assert_msg(isect_prim(&c, &r, &h), "open %d, D = %g: missed", open, d);
             ck_assert_msg(fabs(h.t - (d - x)) <= 2 * DBL_EPSILON * d, "open %d, D = %g: t = %.17g, expected %.17g",
-                          open, d, h.t, d - x);
+                          open, d, (double)h.t, d - x);
             ck_assert_msg(fabs(h.point.x - x) <= 1e-15 && h.point.y == 0.8 && h.point.z == 0.5,
-                          "open %d, D = %g: point (%.17g, %.17g, %.17g)", open, d, h.point.x, h.point.y, h.point.z);
+                          "open %d, D = %g: point (%.17g, %.17g, %.17g)", open, d, (double)h.point.x, (double)h.point.y,
+                              (double)h.point.z);
             for (int j = 0; j < 3; j++) {
                 r = make_ray(vec_make(d, 0.8, miss_z[j]), vec_make(-1, 0, 0));
                 ck_assert_msg(!isect_prim(&c, &r, &h), "open %d, D = %g, z = %g: hit at t = %.17g", open, d,
-                              miss_z[j], h.t);
+                              miss_z[j], (double)h.t);
             }
         }
 }
@@ -941,8 +942,8 @@ START_TEST(test_frame_stretched_turned)
                     ray r = make_ray(o, vec_sub(target, o));
                     hit out[ISECT_MAX_CROSSINGS];
                     int n = isect_prim_all(p, &r, out);
-                    ck_assert_msg(n > 0, "shape %d, eye %d: no hit aimed at (%g, %g, %g)", k, e, target.x,
-                                  target.y, target.z);
+                    ck_assert_msg(n > 0, "shape %d, eye %d: no hit aimed at (%g, %g, %g)", k, e, (double)target.x,
+                                  (double)target.y, (double)target.z);
                     for (int i = 0; i < n; i++, crossings++) {
                         long double P[3] = {out[i].point.x, out[i].point.y, out[i].point.z};
                         long double O[3] = {o.x, o.y, o.z}, D[3] = {r.dir.x, r.dir.y, r.dir.z}, t = out[i].t;

@@ -52,8 +52,8 @@ START_TEST(test_saturating_div)
         {0x1p1022, 0x1p-1, 0x1p1023},      /* 2^1023 exactly, e > s 2^1022 */
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        ck_assert_msg(saturating_div(cases[i].e, cases[i].s) == cases[i].want, "case %zu: %a / %a gave %a, want %a",
-                      i, cases[i].e, cases[i].s, saturating_div(cases[i].e, cases[i].s), cases[i].want);
+        ck_assert_msg(saturating_div(cases[i].e, cases[i].s) == cases[i].want, "case %zu: %a / %a gave %La, want %a",
+                      i, cases[i].e, cases[i].s, (long double)saturating_div(cases[i].e, cases[i].s), cases[i].want);
     /* Not exact: the correctly rounded third, 0x1.5555555555555p-2. */
     ck_assert(saturating_div(1.0, 3.0) == 0x1.5555555555555p-2);
 }
@@ -77,8 +77,8 @@ START_TEST(test_saturating_add)
         {DBL_MAX, DBL_MAX, DBL_MAX},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        ck_assert_msg(saturating_add(cases[i].a, cases[i].b) == cases[i].want, "case %zu: %a + %a gave %a, want %a",
-                      i, cases[i].a, cases[i].b, saturating_add(cases[i].a, cases[i].b), cases[i].want);
+        ck_assert_msg(saturating_add(cases[i].a, cases[i].b) == cases[i].want, "case %zu: %a + %a gave %La, want %a",
+                      i, cases[i].a, cases[i].b, (long double)saturating_add(cases[i].a, cases[i].b), cases[i].want);
         ck_assert(saturating_add(cases[i].b, cases[i].a) == cases[i].want);   /* symmetric */
     }
 }
@@ -95,17 +95,20 @@ START_TEST(test_scale_indices)
         {DBL_MAX, 1.0}, {3e-300, 1e-300}, {1e300, 1e-300}, {1.0, DBL_MAX}, {0x1p-1022, 0x1.8p-1022},
     };
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
-        double n1 = pairs[i][0], n2 = pairs[i][1], s1 = -1, s2 = -1;
+        /* In real, not double: the long double build's scale_indices
+         * scales in long double, where 1e-300 / 2^997 does not underflow. */
+        real n1 = pairs[i][0], n2 = pairs[i][1], s1 = -1, s2 = -1;
         int e;
-        double frac = frexp(n1 > n2 ? n1 : n2, &e);
-        double m = scale_indices(n1, n2, &s1, &s2);
+        real frac = frexp(n1 > n2 ? n1 : n2, &e);
+        real m = scale_indices(n1, n2, &s1, &s2);
         ck_assert_msg(m == frac && s1 == ldexp(n1, -e) && s2 == ldexp(n2, -e),
-                      "case %zu (%a, %a): got %a, %a, %a; want %a, %a, %a", i, n1, n2, m, s1, s2, frac,
-                      ldexp(n1, -e), ldexp(n2, -e));
+                      "case %zu (%La, %La): got %La, %La, %La; want %La, %La, %La", i, (long double)n1,
+                      (long double)n2, (long double)m, (long double)s1, (long double)s2, (long double)frac,
+                      (long double)ldexp(n1, -e), (long double)ldexp(n2, -e));
         ck_assert(m >= 0.5 && m < 1.0);
     }
     /* Hand-worked: 1.5 and 1 scaled by 2^-1. */
-    double s1, s2;
+    real s1, s2;
     ck_assert(scale_indices(1.5, 1.0, &s1, &s2) == 0.75 && s1 == 0.75 && s2 == 0.5);
 }
 END_TEST

@@ -490,7 +490,7 @@ START_TEST(test_shortcuts_dark_light_ball_holds_samples)
     for (int li = 0; li < 2; li++) {
         light_setup setup = trace_light_setup(&s->lights[li], 64);
         ck_assert_msg(setup.reach >= expect[li] && setup.reach <= expect[li] * (1 + 0x1p-20), "light %d: reach %.17g",
-                      li, setup.reach);
+                      li, (double)setup.reach);
         /* One assertion on the farthest sample, not one per sample: under
          * Check's fork mode a passed assertion is a message to the parent,
          * and 2.6 M of them took 27 s of the sanitizer build's run.  A NaN
@@ -508,7 +508,7 @@ START_TEST(test_shortcuts_dark_light_ball_holds_samples)
                 }
             }
         ck_assert_msg(far <= setup.reach, "light %d key %d sample %d: %.17g from the centre, reach %.17g", li, far_key,
-                      far_j, far, setup.reach);
+                      far_j, far, (double)setup.reach);
         /* The samples reach out to the rim: the ball is not loose by much. */
         ck_assert_msg(far > 0.95 * expect[li], "light %d: farthest sample %.17g", li, far);
     }
@@ -845,8 +845,8 @@ START_TEST(test_shortcuts_gather_finds_crossings_before_the_hit)
                      "box { from [%.17g, -1e6, -1e6] to [%.17g, 1e6, 1e6] material { Kd 0 t 0.9 ior 1.5 } }\n"
                      "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n"
                      "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n",
-                     x0 - 1, x0 - 1, x0, x0 + 1e6, c.x, c.y, c.z, 0.15 * reach, c.x, c.y, c.z + 0.5 * reach,
-                     0.15 * reach);
+                     x0 - 1, x0 - 1, x0, x0 + 1e6, (double)c.x, (double)c.y, (double)c.z, 0.15 * reach, (double)c.x,
+                     (double)c.y, (double)(c.z + 0.5 * reach), 0.15 * reach);
             ray r = {vec_sub(p, vec_scale(u, 10)), vec_scale(u, scale[j]), 0, INFINITY};
             ck_assert_msg(gather_both_ways(text, r, 0) == 3, "offset %g, scale %g:\n%s", x0, scale[j], text);
         }

@@ -83,7 +83,8 @@ START_TEST(test_spawn_near_target_direction_is_unit)
     double above = nextafter(SPAWN_ABS, 1);
     ray r = ray_spawn_to(vec_make(0, 0, 0), n, vec_make(0, above, 0));
     ck_assert(r.origin.x == 0 && r.origin.y == SPAWN_ABS && r.origin.z == 0);
-    ck_assert_msg(r.dir.x == 0 && r.dir.y == 1 && r.dir.z == 0, "dir (%g, %g, %g)", r.dir.x, r.dir.y, r.dir.z);
+    ck_assert_msg(r.dir.x == 0 && r.dir.y == 1 && r.dir.z == 0, "dir (%g, %g, %g)", (double)r.dir.x, (double)r.dir.y,
+                  (double)r.dir.z);
     ck_assert(r.tmin == SPAWN_ABS);
     ck_assert(r.tmax > 0 && r.tmax <= above - SPAWN_ABS);
     shadow_start st;
@@ -92,7 +93,8 @@ START_TEST(test_spawn_near_target_direction_is_unit)
     st.offset = SPAWN_ABS;
     ray s = ray_shadow_to(&st, vec_make(0x1p-1074, SPAWN_ABS, 0));
     ck_assert(s.origin.y == SPAWN_ABS);
-    ck_assert_msg(s.dir.x == 1 && s.dir.y == 0 && s.dir.z == 0, "dir (%g, %g, %g)", s.dir.x, s.dir.y, s.dir.z);
+    ck_assert_msg(s.dir.x == 1 && s.dir.y == 0 && s.dir.z == 0, "dir (%g, %g, %g)", (double)s.dir.x, (double)s.dir.y,
+                  (double)s.dir.z);
     ck_assert(s.tmax > 0 && s.tmax <= 0x1p-1074);
     /* Both unit (and finite: NaN fails every comparison). */
     ck_assert(r.dir.x * r.dir.x + r.dir.y * r.dir.y + r.dir.z * r.dir.z == 1);

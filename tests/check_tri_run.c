@@ -137,11 +137,11 @@ static int assert_run(const run_set *s, int first, int n, const ray *r, const is
     /* Plain tests, ck_abort_msg on failure: in a forked suite each
      * ck_assert writes to a pipe, most of the run's time at this count. */
     if (k_run != k_each)
-        ck_abort_msg("run from %d of %d: record %d, one by one %d (dir %a %a %a)", first, n, k_run, k_each, r->dir.x,
-                     r->dir.y, r->dir.z);
+        ck_abort_msg("run from %d of %d: record %d, one by one %d (dir %a %a %a)", first, n, k_run, k_each,
+                     (double)r->dir.x, (double)r->dir.y, (double)r->dir.z);
     if (k_run < n && ISECT_HOT_KIND(s->hot[first + k_run].code) == ISECT_HOT_TRIANGLE &&
         memcmp(&t_run, &t_each, sizeof t_run) != 0)
-        ck_abort_msg("t %a, one by one %a", t_run, t_each);
+        ck_abort_msg("t %La, one by one %La", (long double)t_run, (long double)t_each);
     return k_run;
 }
 

@@ -524,7 +524,8 @@ static scene_model *ball_moved(double t, int w, int h, double eye_y, double eye_
              "point_light { position [%.17g, %.17g, %.17g] power %.17g %s }\n"
              "plane { point [%.17g, 0, %.17g] normal [0, 1, 0] material { Kd [0.7, 0.7, 0.6] } }\n"
              "sphere { center [%.17g, 1, %.17g] radius 0.8 material { Kd [0.5, 0.4, 0.3] t 0.6 ior 1 } }\n",
-             w, h, t, eye_y, t + eye_z, t, t, t + light.x, light.y, t + light.z, power, light_tail, t, t, t, t);
+             w, h, t, eye_y, t + eye_z, t, t, (double)(t + light.x), (double)light.y, (double)(t + light.z), power,
+             light_tail, t, t, t, t);
     return load_scene(text, "transparent_shadow");
 }
 
