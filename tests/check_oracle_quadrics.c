@@ -184,7 +184,8 @@ START_TEST(test_lambert_torus_eye_distance)
                 if (st == ORACLE_EXACT)
                     ck_assert_msg(fabs(far.x - near.x) <= 1e-9 && fabs(far.y - near.y) <= 1e-9 &&
                                       fabs(far.z - near.z) <= 1e-9,
-                                  "eye %d, pixel (%d, %d): %.17g against %.17g", i, x, y, (double)far.x, (double)near.x);
+                                  "eye %d, pixel (%d, %d): %.17g against %.17g", i, x, y, (double)far.x,
+                                  (double)near.x);
             }
             hits += st == ORACLE_EXACT && near.x != 0.05;
         }
@@ -215,8 +216,8 @@ START_TEST(test_lambert_cone_near_a_cylinder)
                 continue;
             both++;
             ck_assert_msg(fabs(a.x - b.x) <= 1e-5 && fabs(a.y - b.y) <= 1e-5 && fabs(a.z - b.z) <= 1e-5,
-                          "pixel (%d, %d): cone %.9g %.9g %.9g, cylinder %.9g %.9g %.9g", x, y, (double)a.x, (double)a.y,
-                          (double)a.z, (double)b.x, (double)b.y, (double)b.z);
+                          "pixel (%d, %d): cone %.9g %.9g %.9g, cylinder %.9g %.9g %.9g", x, y, (double)a.x,
+                          (double)a.y, (double)a.z, (double)b.x, (double)b.y, (double)b.z);
         }
     ck_assert_int_ge(both, cyl_exact * 99 / 100);
     scene_free(cone);

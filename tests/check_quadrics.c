@@ -368,7 +368,8 @@ START_TEST(test_quadric_spawn_no_self_hit)
                 ray s = ray_spawn_hit(&shapes[k], &h, d);
                 hit h2;
                 if (isect_prim(&shapes[k], &s, &h2))
-                    ck_assert_msg(h2.t > 1e-6, "shape %d: a spawned ray met its own surface at t = %g", k, (double)h2.t);
+                    ck_assert_msg(h2.t > 1e-6, "shape %d: a spawned ray met its own surface at t = %g", k,
+                                  (double)h2.t);
             }
         }
 }
