@@ -211,7 +211,7 @@ static int check_nearest_agrees(const bvh *b, const scene_prim *prims, int count
         ck_assert_int_eq(h.prim, hb.prim);
         ck_assert_msg(h.t == hb.t, "ray %d: t %.17g vs %.17g", i, (double)h.t, (double)hb.t);
         ck_assert(r.tmax == rb.tmax);
-        ck_assert(memcmp(&h.point, &hb.point, sizeof h.point) == 0);
+        ck_assert(same_vec_bits(h.point, hb.point));
         ck_assert_int_eq(h.entering, hb.entering);
     }
     return hits;
@@ -874,7 +874,7 @@ START_TEST(test_slab_box_meets_is_slab_box)
         slab_box(lo, hi, &s, &tn, &tf);
         int want = tn <= tf, got = slab_box_meets(lo, hi, &s, r.tmin, r.tmax, &enter);
         ck_assert_msg(got == want, "case %d: %d, slab_box %d", i, got, want);
-        ck_assert_msg(memcmp(&enter, &tn, sizeof enter) == 0 || (enter != enter && tn != tn),
+        ck_assert_msg(same_real_bits(enter, tn) || (enter != enter && tn != tn),
                       "case %d: entry %.17g vs %.17g", i, (double)enter, (double)tn);
     }
 }

@@ -140,7 +140,7 @@ START_TEST(test_trace_path_only_when_asked)
         on.record_path = 1;
         ray r = camera_ray(&s->camera, 10, 10, x, 0.37 * x + 1);
         rgb a = trace_ray(&t, &r, 1, &t.eye_media, 0, &off), b = trace_ray(&t, &r, 1, &t.eye_media, 0, &on);
-        ck_assert(memcmp(&a, &b, sizeof a) == 0);
+        ck_assert(same_vec_bits(a, b));
         ck_assert(off.path == 12345);
         ck_assert(on.path != 12345);
     }

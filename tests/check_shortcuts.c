@@ -397,7 +397,7 @@ START_TEST(test_shortcuts_open_ray_clears_the_blocker)
     rgb second = render_pixel(&t, 1, 1, 1, 0, 0, &st);
     ck_assert_int_eq(st.shadow_rays, 2);
     ck_assert_int_eq(st.bvh.prims_tested - tested, tested - 1);
-    ck_assert(first.x > 0 && memcmp(&first, &second, sizeof first) == 0);
+    ck_assert(first.x > 0 && same_vec_bits(first, second));
     tracer_free(&t);
     scene_free(s);
 }
@@ -765,7 +765,7 @@ static int gather_collect(void *ctx, const hit *h)
 static int same_hit(const hit *a, const hit *b)
 {
     return a->prim == b->prim && a->part == b->part && a->entering == b->entering &&
-           memcmp(&a->t, &b->t, sizeof a->t) == 0 && memcmp(&a->point, &b->point, sizeof a->point) == 0;
+           same_real_bits(a->t, b->t) && same_vec_bits(a->point, b->point);
 }
 
 /*
@@ -795,7 +795,7 @@ static int gather_both_ways(const char *text, ray r, int self)
         interface_gather(&off, &s->prims[c.h[k].prim], &c.h[k], &r, &b, &sb);
         ck_assert_msg(a.count == b.count, "crossing %d of prim %d: %d gathered against %d\n%s", k, c.h[k].prim,
                       a.count, b.count, text);
-        ck_assert(memcmp(&a.through, &b.through, sizeof a.through) == 0);
+        ck_assert(same_real_bits(a.through, b.through));
         for (int j = 0; j < a.count; j++)
             ck_assert_msg(same_hit(&a.h[j], &b.h[j]), "crossing %d: gathered hit %d differs\n%s", k, j, text);
         if (count < 0 && c.h[k].prim == self)

@@ -140,7 +140,7 @@ static int assert_run(const run_set *s, int first, int n, const ray *r, const is
         ck_abort_msg("run from %d of %d: record %d, one by one %d (dir %a %a %a)", first, n, k_run, k_each,
                      (double)r->dir.x, (double)r->dir.y, (double)r->dir.z);
     if (k_run < n && ISECT_HOT_KIND(s->hot[first + k_run].code) == ISECT_HOT_TRIANGLE &&
-        memcmp(&t_run, &t_each, sizeof t_run) != 0)
+        !same_real_bits(t_run, t_each))
         ck_abort_msg("t %La, one by one %La", (long double)t_run, (long double)t_each);
     return k_run;
 }

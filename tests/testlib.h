@@ -7,6 +7,7 @@
 #include <check.h>
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 #include "base/vec.h"
 
 /* |got - want| <= tol, with the values in the failure message. */
@@ -35,6 +36,32 @@
         ck_assert_near(ck_gv_.y, ck_wv_.y, tol);                                            \
         ck_assert_near(ck_gv_.z, ck_wv_.z, tol);                                            \
     } while (0)
+
+/* a and b the same real to the bit.  The long double build's x87 real
+ * holds 10 bytes of value in a slot of 16, and a store leaves the other 6 as
+ * they were, so memcmp there compares garbage: its value and sign are
+ * compared instead (NaN payloads alike). */
+static inline int same_real_bits(real a, real b)
+{
+#ifdef REFRAY_LONG_DOUBLE
+    return (a != a && b != b) || (a == b && signbit(a) == signbit(b));
+#else
+    return memcmp(&a, &b, sizeof a) == 0;
+#endif
+}
+
+static inline int same_vec_bits(vec3 a, vec3 b)
+{
+    return same_real_bits(a.x, b.x) && same_real_bits(a.y, b.y) && same_real_bits(a.z, b.z);
+}
+
+static inline int same_vecs_bits(const vec3 *a, const vec3 *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!same_vec_bits(a[i], b[i]))
+            return 0;
+    return 1;
+}
 
 /* splitmix64 of a counter: a reproducible stream without hidden state. */
 static inline uint64_t test_mix(uint64_t x)
