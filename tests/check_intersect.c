@@ -343,9 +343,9 @@ START_TEST(test_isect_sphere_moving_away_matches_the_roots)
     ck_assert_int_eq(moving_away_case(&s, &r), 0);
     r = make_ray(vec_make(1, 0, 0), vec_make(1, 0.5, 0));
     ck_assert_int_eq(moving_away_case(&s, &r), 0);
-    r.origin.x = nextafter(1.0, 2.0);
+    r.origin.x = nextafter((real)1, (real)2);   /* the ulp of real, not of double */
     ck_assert_int_eq(moving_away_case(&s, &r), 0);
-    r.origin.x = nextafter(1.0, 0.0);
+    r.origin.x = nextafter((real)1, (real)0);
     ck_assert_int_eq(moving_away_case(&s, &r), 0);
     r.origin.x = 1 + 1e-9;
     ck_assert_int_eq(moving_away_case(&s, &r), 1);
