@@ -82,13 +82,18 @@ static inline void slab_ends(real lo, real hi, real o, real inv, int neg, real *
  * either form: it never passes `<`, and the least starts at +inf, whose
  * pad is +inf.  The BVH's walks read only the entry and the answer, and
  * so save the pad's four operations on two of the three axes.
+ * slab_box_meets_neg takes the neg flags as arguments: the same
+ * selections, so the same bits; a walk that passes them as constants
+ * (bvh.c, one copy of the nearest walk per octant) has no choice left to
+ * make per node.
  */
-static inline int slab_box_meets(vec3 lo, vec3 hi, const slab_ray *s, real tmin, real tmax, real *enter)
+static inline int slab_box_meets_neg(vec3 lo, vec3 hi, const slab_ray *s, int nx, int ny, int nz, real tmin,
+                                     real tmax, real *enter)
 {
     real x0, x1, y0, y1, z0, z1;
-    slab_ends(lo.x, hi.x, s->o.x, s->inv.x, s->neg[0], &x0, &x1);
-    slab_ends(lo.y, hi.y, s->o.y, s->inv.y, s->neg[1], &y0, &y1);
-    slab_ends(lo.z, hi.z, s->o.z, s->inv.z, s->neg[2], &z0, &z1);
+    slab_ends(lo.x, hi.x, s->o.x, s->inv.x, nx, &x0, &x1);
+    slab_ends(lo.y, hi.y, s->o.y, s->inv.y, ny, &y0, &y1);
+    slab_ends(lo.z, hi.z, s->o.z, s->inv.z, nz, &z0, &z1);
     real tn = tmin, least = INFINITY;
     tn = x0 > tn ? x0 : tn;
     tn = y0 > tn ? y0 : tn;
@@ -99,6 +104,17 @@ static inline int slab_box_meets(vec3 lo, vec3 hi, const slab_ray *s, real tmin,
     least *= 1.0 + copysign(SLAB_EXIT_PAD, least);
     *enter = tn;
     return tn <= (least < tmax ? least : tmax);
+}
+
+/* The ray's octant: bit k is neg[k]. */
+static inline int slab_octant(const slab_ray *s)
+{
+    return s->neg[0] | s->neg[1] << 1 | s->neg[2] << 2;
+}
+
+static inline int slab_box_meets(vec3 lo, vec3 hi, const slab_ray *s, real tmin, real tmax, real *enter)
+{
+    return slab_box_meets_neg(lo, hi, s, s->neg[0], s->neg[1], s->neg[2], tmin, tmax, enter);
 }
 
 #endif
