@@ -14,6 +14,7 @@ function tr(x, y, z) { return sprintf(" translate %s", v(x * S + T, y * S, z * S
 BEGIN {
     srand(seed)
     T = pick("0 0 0 1e2 1e4 1e6 1e8")
+    if (Tf != "") T = Tf
     S = pick("1 1 1 1e-3 1e3 0.1 10")
     sc = (S == 1 ? "" : " scale " S)
     printf "image { width 20 height 15 max_depth %d background [0.3, 0.5, 0.8] }\n", pick("3 5 8 16")
