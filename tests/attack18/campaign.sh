@@ -10,7 +10,7 @@ mkdir -p "$D"
 bad=0 n=0
 s=$1
 while [ "$s" -le "$2" ]; do
-    cp scenes/stress/glass_cube.obj "$D/"; awk -v seed="$s" -v Tf="${TF:-}" -f tests/attack18/${GEN:-gen}.awk > "$D/$s.scene"
+    cp scenes/stress/glass_cube.obj "$D/"; awk -v seed="$s" -v Tf="${TF:-}" -f tests/attack18/common.awk -f tests/attack18/${GEN:-gen}.awk > "$D/$s.scene"
     timeout 20 nice $B render "$D/$s.scene" -q -o "$D/on.pfm" 2>/dev/null; e1=$?
     timeout 20 nice $B render "$D/$s.scene" -q --no-shortcuts -o "$D/off.pfm" 2>/dev/null; e2=$?
     n=$((n + 1))

@@ -1,14 +1,7 @@
 # gen.awk - a random glass-heavy scene for the shortcut on/off comparison
 # (attack 18): touching and coincident transparent parts, frames, far
-# translations, many samples.  awk -v seed=N -f gen.awk
-function r(a, b) { return a + (b - a) * rand() }
-function ri(a, b) { return a + int((b - a + 1) * rand()) }
-function pick(s,   n, a) { n = split(s, a, " "); return a[ri(1, n)] }
-function mat() {
-    if (rand() < 0.8) return sprintf("material { Kd %.3g Ks %.3g n %d t %.3g ior %s }", r(0, 0.3), r(0, 0.4), ri(1, 80), r(0.3, 1), pick("1 1.5 1.33 2.4 1.0001"))
-    return sprintf("material { Kd %.3g Ks %.3g n 20 }", r(0.2, 0.8), r(0, 0.5))
-}
-function v(x, y, z) { return sprintf("[%.17g, %.17g, %.17g]", x, y, z) }
+# translations, many samples.  awk -v seed=N -f common.awk -f gen.awk
+function mat() { return material(0.8, "1 1.5 1.33 2.4 1.0001", 0.8, 0.5) }
 function frame(   s) {
     s = ""
     if (rand() < 0.3) s = s " scale " (rand() < 0.5 ? pick("2 0.5 1e-3 1e3 1e-6 3") : v(r(0.2, 3), r(0.2, 3), r(0.2, 3)))

@@ -1,15 +1,8 @@
 # gen2.awk - a random scene of touching transparent parts in kept frames
 # (uneven scale, turns), meshes, planes and disks on faces along x, y, z
 # and tilted, opaque floors; everything moved by T.  awk -v seed=N -v
-# root=REPO -f gen2.awk
-function r(a, b) { return a + (b - a) * rand() }
-function ri(a, b) { return a + int((b - a + 1) * rand()) }
-function pick(s,   n, a) { n = split(s, a, " "); return a[ri(1, n)] }
-function mat() {
-    if (rand() < 0.75) return sprintf("material { Kd %.3g Ks %.3g n %d t %.3g ior %s }", r(0, 0.3), r(0, 0.4), ri(1, 80), r(0.3, 1), pick("1 1.5 1.33 2.4"))
-    return sprintf("material { Kd %.3g Ks %.3g n 20 }", r(0.2, 0.6), r(0, 0.4))
-}
-function v(x, y, z) { return sprintf("[%.17g, %.17g, %.17g]", x, y, z) }
+# Tf=T -f common.awk -f gen2.awk (Tf: T fixed)
+function mat() { return material(0.75, "1 1.5 1.33 2.4", 0.6, 0.4) }
 function tr(x, y, z) { return sprintf(" translate %s", v(x * S + T, y * S, z * S)) }
 BEGIN {
     srand(seed)
