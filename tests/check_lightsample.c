@@ -4,6 +4,8 @@
 #include <math.h>
 #include "testlib.h"
 #include "render/lightsample.h"
+#include "base/sampler.h"
+#include "base/sampler_counters.h"
 
 START_TEST(test_light_grid_for_is_the_squarest_factorisation)
 {
@@ -63,6 +65,20 @@ START_TEST(test_light_frame_is_orthonormal_and_right_handed)
 }
 END_TEST
 
+/* The constant table of mixed counters is sampler_mix at each counter; its
+ * first entry is also SplitMix64's published first output for the seed 0
+ * (Steele, Lea, Flood 2014; the reference generator's next() from state 0),
+ * a value from outside this code. */
+START_TEST(test_sampler_mixed_counter_table_is_sampler_mix)
+{
+    ck_assert(sampler_mixed_counter[0] == 0xe220a8397b1dcdafULL);
+    int wrong = 0;
+    for (int c = 0; c < SAMPLER_MIXED_COUNTERS; c++)
+        wrong += sampler_mixed_counter[c] != sampler_mix((uint64_t)c);
+    ck_assert_int_eq(wrong, 0);
+}
+END_TEST
+
 Suite *suite_lightsample(void)
 {
     Suite *s = suite_create("lightsample");
@@ -71,6 +87,7 @@ Suite *suite_lightsample(void)
     tcase_add_test(tc, test_light_cell_point_stays_in_its_cell);
     tcase_add_test(tc, test_light_concentric_maps_onto_the_disk);
     tcase_add_test(tc, test_light_frame_is_orthonormal_and_right_handed);
+    tcase_add_test(tc, test_sampler_mixed_counter_table_is_sampler_mix);
     suite_add_tcase(s, tc);
     return s;
 }

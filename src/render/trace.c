@@ -18,6 +18,7 @@
 #include <string.h>
 #include "render/intersect.h"
 #include "base/sampler.h"
+#include "base/sampler_counters.h"
 #include "render/gather_alone.h"
 #include "render/glass_near.h"
 #include "render/glass_touch.h"
@@ -389,8 +390,6 @@ light_setup trace_light_setup(const scene_light *light, int samples)
     if (light->kind == LIGHT_DISK)
         light_frame(light->normal, &setup.t1, &setup.t2);
     light_ball(light, &setup);
-    for (int c = 0; c < 2 * TRACE_MIXED_SAMPLES; c++)
-        setup.mixed[c] = sampler_mix((uint64_t)c);
     return setup;
 }
 
@@ -399,9 +398,9 @@ light_setup trace_light_setup(const scene_light *light, int samples)
 static vec3 light_point_keyed(const scene_light *light, const light_setup *setup, uint64_t light_key, int j)
 {
     uint64_t c1, c2;   /* sampler_mix of the counters 2j, 2j + 1: sampler_key's own */
-    if (j < TRACE_MIXED_SAMPLES) {
-        c1 = setup->mixed[2 * j];
-        c2 = setup->mixed[2 * j + 1];
+    if (j < SAMPLER_MIXED_COUNTERS / 2) {
+        c1 = sampler_mixed_counter[2 * j];
+        c2 = sampler_mixed_counter[2 * j + 1];
     } else {
         c1 = sampler_mix(2 * (uint64_t)j);
         c2 = sampler_mix(2 * (uint64_t)j + 1);

@@ -62,8 +62,6 @@ typedef struct trace_stats {
     bvh_ref blocker[TRACE_BLOCKERS];
 } trace_stats;
 
-enum { TRACE_MIXED_SAMPLES = 64 };
-
 /* Per-light data computed once: the stratification and a disk's frame. */
 typedef struct light_setup {
     int samples;        /* point sources this render uses for the light */
@@ -75,10 +73,6 @@ typedef struct light_setup {
      * ([SHADE-SHORTCUT-DARK-1]). */
     vec3 centre;
     real reach;
-    /* sampler_mix(c) of the sample keys' counters c = 2j, 2j + 1 of the
-     * first TRACE_MIXED_SAMPLES samples j: the same for every shaded
-     * point, so mixed once here (light_point_keyed). */
-    uint64_t mixed[2 * TRACE_MIXED_SAMPLES];
 } light_setup;
 
 /* The transparent solids a ray is inside, innermost last (nested glass).
