@@ -236,9 +236,13 @@ static real lobe_cosine(vec3 v, vec3 r, real c, real *rel)
  * pow(c_hi, n) has not underflowed to 0 (n <= 745 / h there and
  * |c_lo| <= 2^-53 h); where it has, the product is 0 whatever the
  * correction, so capping the exponent at 709 changes nothing and keeps
- * exp finite: 0 * Inf would be NaN.  Rounding never puts the lobe above 1,
- * and the final comparison says so to the analyser (a comparison, not fmin,
- * a libm call per lobe on x86-64; p >= DBL_MIN is no NaN, where the two agree).
+ * exp finite: 0 * Inf would be NaN.  The cap is a comparison, not fmin (a
+ * libm call per lobe on x86-64): x < 709 ? x : 709 is fmin(x, 709) for
+ * every double x, as a NaN fails the test and gets 709, fmin's answer, and
+ * 709 is no zero, so no -0/+0 tie arises (here x is finite anyway: n
+ * finite, |rel| <= 1/2).  Rounding never puts the lobe above
+ * 1, and the final comparison says so to the analyser (again a comparison,
+ * not fmin; p >= DBL_MIN is no NaN, where the two agree).
  */
 /*@ requires vfinite(v) && DOUBLES(vbounded(v, 1024));
     requires vfinite(r) && DOUBLES(vbounded(r, 1024));
@@ -261,8 +265,10 @@ real shade_phong_lobe(vec3 v, vec3 r, real shininess)
     real c_hi = lobe_cosine(v, r, c, &rel);
     /* Subnormal results (below 2.2e-308) are invisible and slow: flush. */
     real p = pow(c_hi, shininess);
-    if (rel != 0)
-        p *= exp(fmin(shininess * rel, 709));
+    if (rel != 0) {
+        real x = shininess * rel;
+        p *= exp(x < 709 ? x : 709);
+    }
     return p >= DBL_MIN ? (p < 1.0 ? p : 1.0) : 0.0;
 }
 
