@@ -14,16 +14,10 @@
  * the gather walks the tree as with the shortcut off, the same crossings. */
 enum { GATHER_ALONE_MAX = 64, GATHER_NEAR_MAX = 8, GATHER_BUILD_WORK = 1 << 18 };
 
-/* The box of p padded by 2^-20 of its size, as glass_near pads it: a hit
- * point of p lies within a few ulps of its box.  0 for a plane. */
+/* glass_near's padded box, finite: a plane or an infinite size is no box. */
 static int padded_box(const scene_prim *p, vec3 *lo, vec3 *hi, real *size)
 {
-    if (!isect_prim_bounds(p, lo, hi))
-        return 0;
-    *size = fmax(fmax(vec_max_abs(*lo), vec_max_abs(*hi)), vec_max_abs(vec_sub(*hi, *lo)));
-    *lo = vec_sub(*lo, vec_splat(0x1p-20 * *size));
-    *hi = vec_add(*hi, vec_splat(0x1p-20 * *size));
-    return *size < INFINITY;
+    return glass_near_padded_box(p, lo, hi, size) && *size < INFINITY;
 }
 
 /* Whether every point of the box [lo, hi] (size its magnitude) is farther

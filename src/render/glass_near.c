@@ -11,6 +11,16 @@
  * point lies within a few ulps of its primitive's box).
  */
 enum { GLASS_BOX_MAX = 64 };
+
+int glass_near_padded_box(const scene_prim *p, vec3 *lo, vec3 *hi, real *size)
+{
+    if (!isect_prim_bounds(p, lo, hi))
+        return 0;
+    *size = fmax(fmax(vec_max_abs(*lo), vec_max_abs(*hi)), vec_max_abs(vec_sub(*hi, *lo)));
+    *lo = vec_sub(*lo, vec_splat(0x1p-20 * *size));
+    *hi = vec_add(*hi, vec_splat(0x1p-20 * *size));
+    return 1;
+}
 int glass_near_build(tracer *t, const scene_model *s)
 {
     int n = 0;
@@ -29,12 +39,12 @@ int glass_near_build(tracer *t, const scene_model *s)
         vec3 lo, hi;
         if (!(s->materials[s->prims[i].material].t > 0))
             continue;
-        if (!isect_prim_bounds(&s->prims[i], &lo, &hi))
+        real size;
+        if (!glass_near_padded_box(&s->prims[i], &lo, &hi, &size))
             return 1;
-        real size = fmax(fmax(vec_max_abs(lo), vec_max_abs(hi)), vec_max_abs(vec_sub(hi, lo)));
         t->glass_prim[n] = i;
-        t->glass_box[2 * n] = vec_sub(lo, vec_splat(0x1p-20 * size));
-        t->glass_box[2 * n++ + 1] = vec_add(hi, vec_splat(0x1p-20 * size));
+        t->glass_box[2 * n] = lo;
+        t->glass_box[2 * n++ + 1] = hi;
     }
     t->glass_boxes = n;
     return 1;

@@ -17,6 +17,11 @@
 int glass_near_build(tracer *t, const scene_model *s);
 void glass_near_free(tracer *t);
 
+/* The box of p padded by 2^-20 of its size (*size, the largest of its
+ * corners' and sides' magnitudes): a hit point of p lies within a few ulps
+ * of its box.  0, nothing set past lo and hi, for an unbounded p (a plane). */
+int glass_near_padded_box(const scene_prim *p, vec3 *lo, vec3 *hi, real *size);
+
 /* Whether the surface of sphere p (in the world frame) may pass within
  * reach (each coordinate) of point: 1 whenever it is not known not to. */
 int glass_near_sphere(const scene_prim *p, vec3 point, real reach);

@@ -40,10 +40,18 @@ static inline slab_ray slab_make(const ray *r)
     return s;
 }
 
+/* One slab's entry and unscaled exit. */
+static inline void slab_ends(real lo, real hi, real o, real inv, int neg, real *t0, real *t1)
+{
+    *t0 = ((neg ? hi : lo) - o) * inv;
+    *t1 = ((neg ? lo : hi) - o) * inv;
+}
+
 /* Narrows [*tn, *tf] by one slab; NaN leaves it unchanged (see the top). */
 static inline void slab(real lo, real hi, real o, real inv, int neg, real *tn, real *tf)
 {
-    real t0 = ((neg ? hi : lo) - o) * inv, t1 = ((neg ? lo : hi) - o) * inv;
+    real t0, t1;
+    slab_ends(lo, hi, o, inv, neg, &t0, &t1);
     /* Enlarge the exit by scaling, not by adding |t1| * pad: for t1 = -inf
      * (a box wholly to one side of a parallel ray) that would be NaN and
      * the box would never be culled. */
@@ -62,13 +70,6 @@ static inline void slab_box(vec3 lo, vec3 hi, const slab_ray *s, real *tn, real 
     slab(lo.z, hi.z, s->o.z, s->inv.z, s->neg[2], tn, tf);
 }
 
-
-/* One slab's entry and unscaled exit: slab's t0 and t1 before the pad. */
-static inline void slab_ends(real lo, real hi, real o, real inv, int neg, real *t0, real *t1)
-{
-    *t0 = ((neg ? hi : lo) - o) * inv;
-    *t1 = ((neg ? lo : hi) - o) * inv;
-}
 
 /*
  * Whether slab_box narrows [tmin, tmax] to a nonempty interval, and its
