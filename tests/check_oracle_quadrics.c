@@ -152,6 +152,29 @@ START_TEST(test_lambert_torus_shadow_by_hand)
 }
 END_TEST
 
+/* [ORACLE-LAMBERT-TORUS-2] A half-line from the inner wall through a point
+ * of the core circle on the far side (angle 2 to 4 rad from +x) runs through
+ * the middle of the tube there, 0 from its core, 0.5 inside its surface:
+ * shadowed, every one.  Before, the squared distance |w|^2 - along^2
+ * cancelled to a rounding error below 0 on most of them (129 of these 200
+ * in the double build, 196 in the long double one, which also lost the
+ * hand-worked line toward -x above), whose NaN root counted as clear. */
+START_TEST(test_lambert_torus_lines_through_the_core_are_shadowed)
+{
+    scene_model *s = load_text("torus { axis [0, 0, 1] major 2 minor 0.5 }\n");
+    oracle_ring t = oracle_ring_of(&s->prims[0]);
+    vec3 p = vec_make(1.5, 0, 0);
+    int clear = 0;
+    for (int i = 0; i < 200; i++) {
+        double phi = 2 + 2.0 * i / 200;
+        vec3 core = vec_make(2 * cos(phi), 2 * sin(phi), 0);
+        clear += oracle_ring_blocks(&t, p, vec_normalize(vec_sub(core, p))) != 1;
+    }
+    ck_assert_msg(clear == 0, "%d of 200 lines clear", clear);
+    scene_free(s);
+}
+END_TEST
+
 
 /* [ORACLE-LAMBERT-TORUS-3] The stock torus scene's view with the
  * orthographic eye 100 and 1e4 times as far along the same line: the same
@@ -234,6 +257,7 @@ Suite *suite_oracle_quadrics(void)
     tcase_add_test(tc, test_lambert_torus_by_hand);
     tcase_add_test(tc, test_lambert_torus_eye_distance);
     tcase_add_test(tc, test_lambert_torus_shadow_by_hand);
+    tcase_add_test(tc, test_lambert_torus_lines_through_the_core_are_shadowed);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -895,6 +895,13 @@ START_TEST(test_stress_watertight_mesh)
 }
 END_TEST
 
+/* The point a fraction f of the way from a to b, a and b themselves at the
+ * ends: a probe through an edge's end must pass through the vertex exactly. */
+static vec3 along_edge(vec3 a, vec3 b, double f)
+{
+    return f == 1 ? b : vec_add(a, vec_scale(vec_sub(b, a), f));
+}
+
 START_TEST(test_stress_thin_triangles)
 {
     scene_model *s = load_stress("thin_triangles");
@@ -904,17 +911,30 @@ START_TEST(test_stress_thin_triangles)
     memset(&w, 0, sizeof w);
     /* The strip's diagonal (0,0,0)-(1,1e-8,0) and the fan's 63 inner spokes
      * and apex (the fan is moved by -0.5 in y), each ray straight down and
-     * leaning. */
+     * leaning.  The ends are the meshes' own vertices, not recomputed: the
+     * OBJ files hold cos and sin of the spokes' angles to 17 digits, which the
+     * long double build reads to 64 bits, up to half a double's ulp from the
+     * double the probe computed (before, 64 rays through the outer ends of
+     * the spokes, on the fan's rim, passed just outside it there). */
+    const scene_trimesh *strip = &s->meshes[0].geom, *fan = &s->meshes[1].geom;
+    ck_assert_int_eq(strip->position_count, 4);
+    ck_assert_int_eq(fan->position_count, 66);
+    vec3 diagonal[2] = {strip->positions[0], strip->positions[2]};
+    ck_assert(diagonal[0].x == 0 && diagonal[0].y == 0 && diagonal[1].x == 1 && fabs(diagonal[1].y - 1e-8) < 1e-23);
     for (int k = 0; k <= 1000; k++) {
         double f = k / 1000.0;
-        vec3 p = vec_make(f, f * 1e-8, 0);
+        vec3 p = along_edge(diagonal[0], diagonal[1], f);
         sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0, k > 0 && k < 1000 ? 1 : 0);
         sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0.3, -0.2, 1))), &w, 0, k > 0 && k < 1000 ? 1 : 0);
     }
+    vec3 apex = fan->positions[0];
+    ck_assert(apex.x == 0 && apex.y == -0.5);
     for (int spoke = 1; spoke < 64; spoke++)
         for (int k = 0; k <= 64; k++) {
             double f = k / 64.0, a = spoke * 1e-8;
-            vec3 p = vec_make(f * cos(a), f * sin(a) - 0.5, 0);
+            vec3 end = fan->positions[spoke + 1];
+            ck_assert(fabs(end.x - cos(a)) < 1e-15 && fabs(end.y - (sin(a) - 0.5)) < 1e-15);
+            vec3 p = along_edge(apex, end, f);
             sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(0, 0, 1))), &w, 0, k > 0 && k < 64 ? 1 : 0);
             sweep_ray(&t, s, ray_through(p, vec_add(p, vec_make(-0.1, 0.4, 1))), &w, 0, k > 0 && k < 64 ? 1 : 0);
         }

@@ -259,7 +259,12 @@ static void ring_line_at(const ring_line *rl, double theta, double *along, doubl
 {
     vec3 w = vec_sub(ring_point(rl->t, theta), rl->o);
     *along = vec_dot(w, rl->d);
-    *dist2 = vec_dot(w, w) - *along * *along;
+    /* |w|^2 - along^2 cancels to a rounding error of |w|^2 where the line
+     * passes through the core circle: below 0 there (-1e-15 for the line
+     * through the far tube's core from the inner wall), and its NaN root
+     * made oracle_ring_blocks call such a line clear.  0 is within that
+     * error of the true value. */
+    *dist2 = fmax(vec_dot(w, w) - *along * *along, 0);
 }
 
 static double ring_dist2(const ring_line *rl, double theta)
