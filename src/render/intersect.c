@@ -453,7 +453,7 @@ static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a
     // (triangle_solve's Eva driver takes that box)
     ensures EXACT(sh->sx * sh->dz == vcomp(r->dir, sh->kx) && sh->sy * sh->dz == vcomp(r->dir, sh->ky));
     ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
-void isect_shear_make(const ray *r, isect_shear *sh)
+ISECT_FLATTEN void isect_shear_make(const ray *r, isect_shear *sh)
 {
     vec3 d = r->dir;
     real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
