@@ -1055,9 +1055,20 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
     return isect_part_crossings_sheared(p, part, r, NULL);
 }
 
+/* plane_t's answer.  A ray that starts on one side of the plane and moves
+ * away from it (num = n.(p0 - o) and dn = n.d, plane_t's own doubles, of
+ * opposite signs as `< 0` tells them) is told without the quotient: there
+ * isect_quotient either fails or gives -m, m = |num|/|dn| >= 0 (held at
+ * 2^1020), a t <= 0 (a zero num too: -0), which in_interval rejects for
+ * tmin >= 0; dn == 0 (either sign of zero: num < 0 then) is plane_t's first
+ * miss.  Shadow rays from a floor toward a light above it (mesh.scene:
+ * each one's floor test) are such rays. */
 int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;
+    real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
+    if (r->tmin >= 0.0 && (num < 0.0) != (dn < 0.0))
+        return 0;
     return plane_t(point, normal, r, &t);
 }
 
