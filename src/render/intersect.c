@@ -1063,7 +1063,7 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
  * tmin >= 0; dn == 0 (either sign of zero: num < 0 then) is plane_t's first
  * miss.  Shadow rays from a floor toward a light above it (mesh.scene:
  * each one's floor test) are such rays. */
-int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
+ISECT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;
     real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
