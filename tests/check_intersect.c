@@ -1257,6 +1257,24 @@ START_TEST(test_isect_plane_crossings_match_full_hits)
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
     r = make_ray(vec_make(0, 1, 0), vec_make(1, 0, 0));
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    /* Moving away from the plane: the crossing is behind the origin, at
+     * t = -1 from y = 1 going up, and t = -0 from the plane itself going
+     * down: no crossing for tmin = 0, one where tmin < 0 lets t in. */
+    r = make_ray(vec_make(0, 1, 0), vec_make(0, 1, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r.tmin = -2;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
+    r.tmin = -0.5;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r = make_ray(vec_make(0, 0, 0), vec_make(0, -1, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r.tmin = -1;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
+    /* From the plane upward: t = +0, no crossing for tmin = 0 either. */
+    r = make_ray(vec_make(0, 0, 0), vec_make(0, 1, 0));
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 0);
+    r.tmin = -1;
+    ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
     /* Moved up to y = 5 by its transform: above the ray going down from
      * y = 1, met by the one going up at t = 4. */
     scene_frame p_frame;

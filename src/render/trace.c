@@ -394,8 +394,12 @@ light_setup trace_light_setup(const scene_light *light, int samples)
 }
 
 /* Sample j of a light whose key at this hit is light_key:
- * sampler_key(key, TRACE_KEY_LIGHT + index), the same for every sample. */
-static vec3 light_point_keyed(const scene_light *light, const light_setup *setup, uint64_t light_key, int j)
+ * sampler_key(key, TRACE_KEY_LIGHT + index), the same for every sample.
+ * Flattened (light_point inlined: it was a call a sample, t1 and t2 passed
+ * by value) and kept out of add_source's loop; only inlining, the same
+ * operations. */
+TRACE_FLATTEN TRACE_OUTLINE static vec3 light_point_keyed(const scene_light *light, const light_setup *setup,
+                                                  uint64_t light_key, int j)
 {
     uint64_t c1, c2;   /* sampler_mix of the counters 2j, 2j + 1: sampler_key's own */
     if (j < SAMPLER_MIXED_COUNTERS / 2) {

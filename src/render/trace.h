@@ -22,8 +22,10 @@
  * clang (which defines __GNUC__) know the attribute; Frama-C need not. */
 #if defined(__GNUC__) && !defined(__FRAMAC__)
 #define TRACE_OUTLINE __attribute__((noinline))
+#define TRACE_FLATTEN __attribute__((flatten))
 #else
 #define TRACE_OUTLINE
+#define TRACE_FLATTEN
 #endif
 
 enum { TRACE_BLOCKERS = 8 };
