@@ -201,8 +201,23 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
 static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
 {
     hit h;
+    const scene_prim *p = &prims[ref.prim];
     if (ns->stats)
         ns->stats->prims_tested++;
+    /* A plane without a transform (unbounded: tested first, on every ray)
+     * is a deferred candidate as a triangle is: its t alone, by the
+     * plane_t its full test makes, and its point and normal only once it
+     * has won (a ray that meets something before it, the floor behind a
+     * ball, makes none). */
+    if (p->kind == PRIM_PLANE && !p->frame) {
+        hit d = {0};
+        if (!isect_plane_nearest(p->u.plane.point, p->u.plane.normal, &ns->rr, &d.t))
+            return;
+        d.prim = ref.prim;
+        d.part = ref.part;
+        nearest_add(ns, &d, 1);
+        return;
+    }
     if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, shear_for(&ns->sh, &prims[ref.prim]), &h))
         return;
     h.prim = ref.prim;
