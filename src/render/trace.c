@@ -68,7 +68,8 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         for (int k = 0; k < 3 && s->prims[i].frame; k++)
             t->frame_shift = fmax(t->frame_shift, fabs(s->prims[i].frame->to_world.m[k][3]));
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
-    int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+    t->lobe_floors = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->lobe_floors);
+    int status = t->lights && t->lobe_floors ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
     if (status == STATUS_OK && t->glass && (!glass_near_build(t, s) || !gather_alone_build(t, s)))
         status = STATUS_NO_MEMORY;
@@ -76,6 +77,15 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         tracer_free(t);
         return status;
     }
+    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
+     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
+     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
+     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
+     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md).  A function
+     * of n alone, so once a material here, not once a shaded point in shade
+     * (an exp2 call a glass hit): the same double. */
+    for (int i = 0; i < s->material_count; i++)
+        t->lobe_floors[i] = s->materials[i].n > 0 ? exp2(-1030 / s->materials[i].n) * (1 - 0x1p-18) : 0;
     for (int i = 0; i < s->light_count; i++)
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
@@ -106,10 +116,12 @@ void tracer_free(tracer *t)
     bvh_free(&t->accel);
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
+        mem_free(&t->scene->mem, t->lobe_floors, (size_t)t->scene->material_count * sizeof *t->lobe_floors);
         glass_near_free(t);
         gather_alone_free(t);
     }
     t->lights = NULL;
+    t->lobe_floors = NULL;
 }
 
 /* Folds v into st->path (FNV-1a over 64-bit words) when the caller asked
@@ -625,12 +637,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
     s.highlight = t->specular && (ks || t->no_shortcuts);
     s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
-    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
-     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
-     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
-     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
-     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md). */
-    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-18) : 0;
+    /* The floor of [SHADE-SHORTCUT-LOBE-2]: tracer_build made it (a function
+     * of n alone, the same double). */
+    s.lobe_floor = s.no_body && s.highlight ? t->lobe_floors[s.prim->material] : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     /* Once a point, not once a light sample. */

@@ -90,6 +90,8 @@ typedef struct tracer {
     const scene_model *scene;
     bvh accel;
     light_setup *lights;
+    real *lobe_floors;        /* per material: shade's V.R floor of a Kd = 0 surface's lobe
+                                 ([SHADE-SHORTCUT-LOBE-2]), made once, not per shaded point */
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
