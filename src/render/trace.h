@@ -118,6 +118,8 @@ typedef struct tracer {
                                  frame, 0 without one: bounds how far a hit point
                                  may lie off its ray ([SHADE-SHORTCUT-GATHER-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
+    int keyed;                /* a distributed light: a ray's key picks its samples
+                                 (direct_light), so two rays' keys matter */
     int bundles;              /* shadow rays toward a distributed light walk
                                  only the nodes their bundle may reach
                                  ([SHADE-SHORTCUT-BUNDLE-1]): 1 by default,
