@@ -653,7 +653,10 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
         met = mirror_meets_opaque(t, s, &r, depth + 1, media, key, st, &c);
     else if (t->glass && !(s->m->t > 0))
         met = mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c);
-    if (!met) {
+    if (!met && (t->keyed || !(s->m->t > 0))) {
+        c = trace_ray(t, &r, depth + 1, media, key, st);
+    } else if (!met) {
+        /* Kept for the totally reflected ray (glass, no key read). */
         long tree = st->tree_rays, overflow = st->medium_overflow, nonfinite = st->nonfinite;
         c = trace_ray(t, &r, depth + 1, media, key, st);
         m->traced = 1;
