@@ -1237,6 +1237,15 @@ START_TEST(test_isect_prim_magnitude)
 }
 END_TEST
 
+/* A random plane through [-2, 2]^3 and a ray from there, tmin 0 or a
+ * little above (the plane tests' random cases). */
+static void random_plane_ray(rng *g, scene_prim *p, ray *r)
+{
+    *p = prim_plane(vec_make(4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2), rng_unit(g));
+    *r = make_ray(vec_make(4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2), rng_unit(g));
+    r->tmin = rng_uniform(g) < 0.5 ? 0 : 1e-3 * rng_uniform(g);
+}
+
 /* The count of a plane's crossings (isect_part_crossings: the shadow
  * walk's, which goes to plane_t at once for a plane in the world frame)
  * is the number of full hits (isect_prim_all: through plane_point): by
@@ -1270,11 +1279,7 @@ START_TEST(test_isect_plane_crossings_match_full_hits)
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
     rng g = {77, 0};
     for (int i = 0; i < 2000; i++) {
-        p = prim_plane(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                       rng_unit(&g));
-        r = make_ray(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                     rng_unit(&g));
-        r.tmin = rng_uniform(&g) < 0.5 ? 0 : 1e-3 * rng_uniform(&g);
+        random_plane_ray(&g, &p, &r);
         int full = isect_prim_all(&p, &r, out);
         ck_assert_int_eq(isect_part_crossings(&p, 0, &r), full);
         if (!full)
@@ -1316,11 +1321,7 @@ START_TEST(test_isect_plane_nearest_is_isect_part)
     rng g = {78, 0};
     int met = 0;
     for (int i = 0; i < 2000; i++) {
-        p = prim_plane(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                       rng_unit(&g));
-        r = make_ray(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                     rng_unit(&g));
-        r.tmin = rng_uniform(&g) < 0.5 ? 0 : 1e-3 * rng_uniform(&g);
+        random_plane_ray(&g, &p, &r);
         ray full = r;
         hit h;
         int want = isect_part(&p, 0, &full, &h);
