@@ -1237,6 +1237,15 @@ START_TEST(test_isect_prim_magnitude)
 }
 END_TEST
 
+/* A random plane through [-2, 2]^3 and a ray from there, tmin 0 or a
+ * little above (the plane tests' random cases). */
+static void random_plane_ray(rng *g, scene_prim *p, ray *r)
+{
+    *p = prim_plane(vec_make(4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2), rng_unit(g));
+    *r = make_ray(vec_make(4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2, 4 * rng_uniform(g) - 2), rng_unit(g));
+    r->tmin = rng_uniform(g) < 0.5 ? 0 : 1e-3 * rng_uniform(g);
+}
+
 /* The count of a plane's crossings (isect_part_crossings: the shadow
  * walk's, which goes to plane_t at once for a plane in the world frame)
  * is the number of full hits (isect_prim_all: through plane_point): by
@@ -1288,11 +1297,7 @@ START_TEST(test_isect_plane_crossings_match_full_hits)
     ck_assert_int_eq(isect_part_crossings(&p, 0, &r), 1);
     rng g = {77, 0};
     for (int i = 0; i < 2000; i++) {
-        p = prim_plane(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                       rng_unit(&g));
-        r = make_ray(vec_make(4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2, 4 * rng_uniform(&g) - 2),
-                     rng_unit(&g));
-        r.tmin = rng_uniform(&g) < 0.5 ? 0 : 1e-3 * rng_uniform(&g);
+        random_plane_ray(&g, &p, &r);
         int full = isect_prim_all(&p, &r, out);
         ck_assert_int_eq(isect_part_crossings(&p, 0, &r), full);
         if (!full)
@@ -1313,6 +1318,49 @@ START_TEST(test_isect_plane_crossings_match_full_hits)
 }
 END_TEST
 
+
+/* isect_plane_nearest (the nearest walk's deferred plane: its t alone) is
+ * isect_part's test: by hand on y = 0 from (0, 1, 0) straight down, t = 1,
+ * refused with the interval closed onto it; then for 2000 random planes
+ * and rays the same answer and the same t, to the bit, as isect_part's
+ * full hit on a copy of the ray, also with tmax at that t (no hit) and
+ * just past it (the hit). */
+START_TEST(test_isect_plane_nearest_is_isect_part)
+{
+    scene_prim p = prim_plane(vec_make(0, 0, 0), vec_make(0, 1, 0));
+    ray r = make_ray(vec_make(0, 1, 0), vec_make(0, -1, 0));
+    real t = -1;
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 1);
+    ck_assert(t == 1);
+    r.tmax = 1;
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 0);
+    r = make_ray(vec_make(0, 1, 0), vec_make(1, 0, 0));
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 0);
+    rng g = {78, 0};
+    int met = 0;
+    for (int i = 0; i < 2000; i++) {
+        random_plane_ray(&g, &p, &r);
+        ray full = r;
+        hit h;
+        int want = isect_part(&p, 0, &full, &h);
+        ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), want);
+        if (!want)
+            continue;
+        met++;
+        ck_assert(memcmp(&t, &h.t, sizeof t) == 0);
+        real ends[2] = {h.t, nextafter(h.t, (real)HUGE_VAL)};
+        for (int k = 0; k < 2; k++) {
+            r.tmax = ends[k];
+            full = r;
+            want = isect_part(&p, 0, &full, &h);
+            ck_assert_int_eq(want, k);
+            ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), want);
+            ck_assert(!want || memcmp(&t, &h.t, sizeof t) == 0);
+        }
+    }
+    ck_assert_msg(met > 500, "only %d rays met their plane", met);
+}
+END_TEST
 Suite *suite_intersect(void)
 {
     Suite *s = suite_create("intersect");
@@ -1332,6 +1380,7 @@ Suite *suite_intersect(void)
     TCase *sheet = tcase_create("plane_disk");
     tcase_add_test(sheet, test_isect_plane_hit_by_hand);
     tcase_add_test(sheet, test_isect_plane_crossings_match_full_hits);
+    tcase_add_test(sheet, test_isect_plane_nearest_is_isect_part);
     tcase_add_test(sheet, test_isect_plane_parallel_and_behind_miss);
     tcase_add_test(sheet, test_isect_plane_point_on_plane_from_far);
     tcase_add_test(sheet, test_isect_disk_radius_inclusive);

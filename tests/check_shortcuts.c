@@ -403,6 +403,89 @@ START_TEST(test_shortcuts_open_ray_clears_the_blocker)
 }
 END_TEST
 
+
+/* Renders pixel (0, 0) of s's 1x1 image with the ray-tree hash on or off
+ * (it turns [SHADE-SHORTCUT-TIR-1] off); the rays traced in *rays. */
+static rgb tir_pixel(const scene_model *s, int record_path, long *rays)
+{
+    tracer t;
+    trace_stats st;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    memset(&st, 0, sizeof st);
+    st.record_path = record_path;
+    rgb c = render_pixel(&t, 1, 1, 1, 0, 0, &st);
+    *rays = st.camera_rays + st.shadow_rays + st.reflection_rays + st.refraction_rays + st.tir_rays;
+    tracer_free(&t);
+    return c;
+}
+
+/* [SHADE-SHORTCUT-TIR-1] A camera inside a glass ball (ior 1.5, Ks 0.5)
+ * near its wall, looking along it: its ray meets the wall at sin 0.9 >
+ * 1/1.5, totally reflected, and so do the rays after it round the ball.
+ * Under a point light the totally reflected ray is the mirror ray, traced
+ * once: the same colour to the bit as with the shortcut off (the ray-tree
+ * hash on), with fewer rays.  Under a rectangle light (one sample) the
+ * keys of the two rays pick their samples: both are traced, the same rays
+ * either way. */
+START_TEST(test_shortcuts_tir_traced_once_as_the_mirror_ray)
+{
+    static const char *const lights[] = {"point_light { position [0, 0.5, 0.2] power 1 }\n",
+                                         "distributed_light { rectangle [0, 0.5, 0.2] [0.1, 0, 0] [0, 0, 0.1] power 1 samples 1 }\n"};
+    for (int k = 0; k < 2; k++) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "image { width 1 height 1 max_depth 6 }\n"
+                 "camera { perspective eye [0.9, 0, 0] look_at [0.9, 0, 1] up [0, 1, 0] fov 1 }\n%s"
+                 "sphere { center [0, 0, 0] radius 1 material { Kd 0 Ks 0.5 n 20 t 0.5 ior 1.5 } }\n"
+                 "sphere { center [0, 0.3, 0] radius 0.2 material { Kd 0.7 } }\n",
+                 lights[k]);
+        scene_model *s = load(text);
+        long on, off;
+        rgb with = tir_pixel(s, 0, &on), without = tir_pixel(s, 1, &off);
+        ck_assert_msg(same_vec_bits(with, without), "light %d: the colours differ", k);
+        ck_assert_msg(with.x > 0, "light %d: nothing seen", k);
+        if (k == 0)
+            ck_assert_msg(on < off, "point light: %ld rays with the shortcut, %ld without", on, off);
+        else
+            ck_assert_msg(on == off, "rectangle light: %ld rays with the shortcut, %ld without", on, off);
+        scene_free(s);
+    }
+}
+END_TEST
+
+/* [SHADE-SHORTCUT-LOBE-2] The floor tracer_build makes once a material
+ * (shade's, once a shaded point before): a cosine whose power n is 0 to the
+ * lobe, at most 2^-1030 (pow's result times the lobe's correction below
+ * DBL_MIN), and not far below it: at least 2^-1031, so few samples whose
+ * lobe is 0 still send their shadow ray.  A shininess of 0 has no such
+ * cosine: 0. */
+START_TEST(test_shortcuts_lobe_floor_once_a_material)
+{
+    scene_model *s = load("camera { perspective eye [0, 0, 5] look_at [0, 0, 0] up [0, 1, 0] fov 40 }\n"
+                          "point_light { position [0, 4, 4] power 1 }\n"
+                          "sphere { center [-2, 0, 0] radius 0.5 material { Kd 0 Ks 0.5 n 300 t 0.5 ior 1.5 } }\n"
+                          "sphere { center [0, 0, 0] radius 0.5 material { Kd 0 Ks 0.5 n 0 t 0.5 ior 1.5 } }\n"
+                          "sphere { center [2, 0, 0] radius 0.5 material { Kd 0.5 Ks 0.5 n 1 } }\n"
+                          "sphere { center [0, 2, 0] radius 0.5 material { Kd 0 Ks 0.5 n 70000 } }\n");
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    int checked = 0;
+    for (int i = 0; i < s->material_count; i++) {
+        real n = s->materials[i].n, f = t.lobe_floors[i];
+        if (n == 0) {
+            ck_assert(f == 0);
+            continue;
+        }
+        real p = pow(f, n);
+        ck_assert_msg(f > 0 && f < 1 && p <= 0x1p-1030 && p >= 0x1p-1031, "n %g: floor %.17g, floor^n %g", (double)n,
+                      (double)f, (double)p);
+        checked++;
+    }
+    ck_assert_int_ge(checked, 3);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
 /*
  * [SHADE-SHORTCUT-LOBE-1] [SHADE-SHORTCUT-LOBE-2] A glass ball (Kd 0) over
  * a floor under a 16-sample area light, for shininess 0, 1, 30, 1000 and
@@ -1018,6 +1101,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_sphere_is_dark);
     tcase_add_test(tc, test_shortcuts_lone_glass_sphere_shadows_itself);
     tcase_add_test(tc, test_shortcuts_off_does_all_the_work);
+    tcase_add_test(tc, test_shortcuts_lobe_floor_once_a_material);
+    tcase_add_test(tc, test_shortcuts_tir_traced_once_as_the_mirror_ray);
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);

@@ -201,8 +201,23 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
 static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
 {
     hit h;
+    const scene_prim *p = &prims[ref.prim];
     if (ns->stats)
         ns->stats->prims_tested++;
+    /* A plane without a transform (unbounded: tested first, on every ray)
+     * is a deferred candidate as a triangle is: its t alone, by the
+     * plane_t its full test makes, and its point and normal only once it
+     * has won (a ray that meets something before it, the floor behind a
+     * ball, makes none). */
+    if (p->kind == PRIM_PLANE && !p->frame) {
+        hit d; /* deferred, as nearest_run_hit's */
+        if (!isect_plane_nearest(p->u.plane.point, p->u.plane.normal, &ns->rr, &d.t))
+            return;
+        d.prim = ref.prim;
+        d.part = ref.part;
+        nearest_add(ns, &d, 1);
+        return;
+    }
     if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, shear_for(&ns->sh, &prims[ref.prim]), &h))
         return;
     h.prim = ref.prim;
@@ -220,7 +235,7 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
     }
     if (ns->stats)
         ns->stats->prims_tested++;
-    hit h = {0};
+    hit h; /* a hit fills every field (isect_hit_set), a miss is not read */
     /* A sphere or box makes its full hit at once, as isect_part (a winner
      * made again would cost a second test); a triangle's record does not
      * come here (visit_hits' runs: its hit is deferred). */
@@ -283,7 +298,7 @@ typedef struct nearest_leaf {
 static int nearest_run_hit(void *ctx, int item, real t)
 {
     const nearest_leaf *l = ctx;
-    hit h = {0};
+    hit h; /* deferred: t, prim and part are all a candidate is read for */
     h.t = t;
     h.prim = l->b->items[item].prim;
     h.part = l->b->items[item].part;

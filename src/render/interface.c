@@ -136,17 +136,19 @@ int interface_cross(const tracer *t, const interface *f, const medium_stack *bef
                     trace_stats *st)
 {
     const scene_model *sc = t->scene;
-    int solids = 0;
+    /* Each crossing's solid and effect once: the effect reads f and
+     * `before` alone, which the removals from `next` leave as they are. */
+    int solids = 0, solid[INTERFACE_MAX], effect[INTERFACE_MAX];
     for (int k = 0; k < f->count; k++) {
-        solids += medium_solid_id(sc, f->h[k].prim) >= 0;
-        if (crossing_effect(sc, f, before, k) < 0)
-            medium_remove(next, medium_solid_id(sc, f->h[k].prim));
+        solid[k] = medium_solid_id(sc, f->h[k].prim);
+        effect[k] = crossing_effect(sc, f, before, k);
+        solids += solid[k] >= 0;
+        if (effect[k] < 0)
+            medium_remove(next, solid[k]);
     }
-    for (int k = 0; k < f->count; k++) {
-        int solid = medium_solid_id(sc, f->h[k].prim);
-        if (crossing_effect(sc, f, before, k) > 0 && medium_find(next, solid) < 0)
-            medium_push(next, solid, sc->materials[sc->prims[f->h[k].prim].material].ior, st);
-    }
+    for (int k = 0; k < f->count; k++)
+        if (effect[k] > 0 && medium_find(next, solid[k]) < 0)
+            medium_push(next, solid[k], sc->materials[sc->prims[f->h[k].prim].material].ior, st);
     return solids;
 }
 

@@ -1075,6 +1075,11 @@ ISECT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
     return plane_t(point, normal, r, &t);
 }
 
+int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
+{
+    return plane_t(point, normal, r, t);
+}
+
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];

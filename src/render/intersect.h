@@ -135,6 +135,9 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
 /* isect_part_crossings of a plane without a transform (point, unit
  * normal): 0 or 1. */
 int isect_plane_crossings(vec3 point, vec3 normal, const ray *r);
+/* The same test, its t in *t when it returns 1: the t isect_part gives
+ * the plane on the same ray (plane_t, the one computation both make). */
+int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t);
 
 /*
  * Hot records: what the hit test of a sphere without a transform (centre,

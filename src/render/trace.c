@@ -68,7 +68,8 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         for (int k = 0; k < 3 && s->prims[i].frame; k++)
             t->frame_shift = fmax(t->frame_shift, fabs(s->prims[i].frame->to_world.m[k][3]));
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
-    int status = t->lights ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+    t->lobe_floors = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->lobe_floors);
+    int status = t->lights && t->lobe_floors ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
                            : STATUS_NO_MEMORY;
     if (status == STATUS_OK && t->glass && (!glass_near_build(t, s) || !gather_alone_build(t, s)))
         status = STATUS_NO_MEMORY;
@@ -76,6 +77,17 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         tracer_free(t);
         return status;
     }
+    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
+     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
+     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
+     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
+     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md).  A function
+     * of n alone, so once a material here, not once a shaded point in shade
+     * (an exp2 call a glass hit): the same double. */
+    for (int i = 0; i < s->material_count; i++)
+        t->lobe_floors[i] = s->materials[i].n > 0 ? exp2(-1030 / s->materials[i].n) * (1 - 0x1p-18) : 0;
+    for (int i = 0; i < s->light_count; i++)
+        t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
     for (int i = 0; i < s->light_count; i++)
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
@@ -106,10 +118,12 @@ void tracer_free(tracer *t)
     bvh_free(&t->accel);
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
+        mem_free(&t->scene->mem, t->lobe_floors, (size_t)t->scene->material_count * sizeof *t->lobe_floors);
         glass_near_free(t);
         gather_alone_free(t);
     }
     t->lights = NULL;
+    t->lobe_floors = NULL;
 }
 
 /* Folds v into st->path (FNV-1a over 64-bit words) when the caller asked
@@ -520,6 +534,43 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
                      const glass_contact *touch, trace_stats *st);
 
+/* The mirror ray of a shaded point as `mirrored` traced it, for
+ * [SHADE-SHORTCUT-TIR-1]: its ray, its colour, and what its tree added to
+ * the counters that decide whether a render is refused. */
+typedef struct mirror_trace {
+    int traced;          /* 1: by trace_ray itself (no contact at its start) */
+    ray r;
+    rgb c;
+    long tree_rays, medium_overflow, nonfinite;
+} mirror_trace;
+
+/*
+ * [SHADE-SHORTCUT-TIR-1] The totally reflected ray r is the mirror ray of
+ * the same point when their bits are equal (shade_refract mirrors as
+ * shade_mirror does, both spawn from the hit when the interface is the
+ * hit alone), and both go on with the same depth and media.  trace_ray is
+ * then the same function of the same arguments but the key, which only a
+ * distributed light's samples read (t->keyed), and the trace_stats, whose
+ * blocker hints change no value ([SHADE-SHORTCUT-BLOCKER-1]): so its
+ * colour is the mirror ray's, to the bit.  Taken only where its tree
+ * added nothing to the counters that refuse a render (medium_overflow,
+ * nonfinite) and its ray count, added again, keeps within the budget:
+ * then tracing it again would have added the same and no more.  Not with
+ * the ray-tree hash (record_path), which would miss the second tree, nor
+ * with the shortcuts off.  Returns 1 with the colour in *c.
+ */
+static int tir_is_mirror(const tracer *t, const ray *r, const mirror_trace *m, trace_stats *st, rgb *c)
+{
+    if (!m->traced || t->no_shortcuts || t->keyed || st->record_path || st->tree_overflow ||
+        m->medium_overflow != 0 || m->nonfinite != 0 || memcmp(r, &m->r, sizeof *r) != 0)
+        return 0;
+    if (t->max_tree_rays > 0 && st->tree_rays + m->tree_rays > t->max_tree_rays)
+        return 0;
+    st->tree_rays += m->tree_rays;
+    *c = m->c;
+    return 1;
+}
+
 /*
  * The transmitted ray: straight on through a sheet, bent by Snell's law
  * where the interface changes the medium (n1 the medium before, the top of
@@ -529,7 +580,8 @@ static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const m
  * which only a transmitted bounce then pays for.
  */
 static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth,
-                                     const medium_stack *media, uint64_t key, trace_stats *st)
+                                     const medium_stack *media, uint64_t key, const mirror_trace *mirror,
+                                     trace_stats *st)
 {
     medium_stack next = *media;
     /* An overflow of `next` (the stack past the interface) matters only
@@ -552,7 +604,9 @@ static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ra
         /* Totally reflected, the ray stays in `media`: `next` is not used. */
         st->medium_overflow = overflow_before;
         st->tir_rays++;
-        c = vec_scale(trace_ray(t, &r, depth + 1, media, key, st), through);
+        if (!tir_is_mirror(t, &r, mirror, st, &c))
+            c = trace_ray(t, &r, depth + 1, media, key, st);
+        c = vec_scale(c, through);
     }
     forget_overflow(st, overflow_before, through == 0 || s->m->t == 0);
     return c;
@@ -592,7 +646,7 @@ static TRACE_OUTLINE int mirror_meets_opaque(const tracer *t, const surface *s, 
 }
 
 static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
-                    uint64_t key, int weightless, trace_stats *st)
+                    uint64_t key, int weightless, mirror_trace *m, trace_stats *st)
 {
     ray r = ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
     st->reflection_rays++;
@@ -603,8 +657,19 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
         met = mirror_meets_opaque(t, s, &r, depth + 1, media, key, st, &c);
     else if (t->glass && !(s->m->t > 0))
         met = mirror_meets_glass(t, s, &r, depth + 1, media, key, st, &c);
-    if (!met)
+    if (!met && (t->keyed || !(s->m->t > 0))) {
         c = trace_ray(t, &r, depth + 1, media, key, st);
+    } else if (!met) {
+        /* Kept for the totally reflected ray (glass, no key read). */
+        long tree = st->tree_rays, overflow = st->medium_overflow, nonfinite = st->nonfinite;
+        c = trace_ray(t, &r, depth + 1, media, key, st);
+        m->traced = 1;
+        m->r = r;
+        m->c = c;
+        m->tree_rays = st->tree_rays - tree;
+        m->medium_overflow = st->medium_overflow - overflow;
+        m->nonfinite = st->nonfinite - nonfinite;
+    }
     forget_overflow(st, overflow_before, weightless);
     return c;
 }
@@ -629,12 +694,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
     s.highlight = t->specular && (ks || t->no_shortcuts);
     s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
-    /* A cosine c_hi with c_hi^n <= 2^-1030 makes pow's result, times the
-     * lobe's correction (within 2e-4 of 1 there), less than DBL_MIN: the lobe
-     * flushes it to 0.  c_hi is V.R or 1 - h, which for unit V and R (|.|^2
-     * within 2^-20 of 1, vunit) is at most V.R (1 + 2^-19); the factor
-     * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md). */
-    s.lobe_floor = s.no_body && s.highlight && s.m->n > 0 ? exp2(-1030 / s.m->n) * (1 - 0x1p-18) : 0;
+    /* The floor of [SHADE-SHORTCUT-LOBE-2]: tracer_build made it (a function
+     * of n alone, the same double). */
+    s.lobe_floor = s.no_body && s.highlight ? t->lobe_floors[s.prim->material] : 0;
     if (t->shadows)
         s.from = ray_shadow_start(s.prim, s.shadow_from);
     /* Once a point, not once a light sample. */
@@ -643,12 +705,14 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
         t->shadows && (touch || (t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset)));
     direct_sum sum = direct_light(t, &s, key, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
+    mirror_trace m;
+    m.traced = 0;
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
         if (t->reflection && (ks || t->no_shortcuts))
-            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), !ks, st);
+            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), !ks, &m, st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
-            through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), st);
+            through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), &m, st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }

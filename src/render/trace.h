@@ -92,6 +92,8 @@ typedef struct tracer {
     const scene_model *scene;
     bvh accel;
     light_setup *lights;
+    real *lobe_floors;        /* per material: shade's V.R floor of a Kd = 0 surface's lobe
+                                 ([SHADE-SHORTCUT-LOBE-2]), made once, not per shaded point */
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the
@@ -118,6 +120,8 @@ typedef struct tracer {
                                  frame, 0 without one: bounds how far a hit point
                                  may lie off its ray ([SHADE-SHORTCUT-GATHER-1]) */
     int no_shortcuts;         /* every shortcut off: tracer_no_shortcuts */
+    int keyed;                /* a distributed light: a ray's key picks its samples
+                                 (direct_light), so two rays' keys matter */
     int bundles;              /* shadow rays toward a distributed light walk
                                  only the nodes their bundle may reach
                                  ([SHADE-SHORTCUT-BUNDLE-1]): 1 by default,
