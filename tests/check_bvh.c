@@ -212,6 +212,8 @@ static int check_nearest_agrees(const bvh *b, const scene_prim *prims, int count
         ck_assert_msg(h.t == hb.t, "ray %d: t %.17g vs %.17g", i, (double)h.t, (double)hb.t);
         ck_assert(r.tmax == rb.tmax);
         ck_assert(same_vec_bits(h.point, hb.point));
+        ck_assert(same_vec_bits(h.normal, hb.normal));
+        ck_assert(same_vec_bits(h.shading_normal, hb.shading_normal));
         ck_assert_int_eq(h.entering, hb.entering);
     }
     return hits;

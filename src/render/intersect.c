@@ -1055,6 +1055,11 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
     return isect_part_crossings_sheared(p, part, r, NULL);
 }
 
+int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
+{
+    return plane_t(point, normal, r, t);
+}
+
 int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;

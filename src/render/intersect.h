@@ -135,6 +135,9 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
 /* isect_part_crossings of a plane without a transform (point, unit
  * normal): 0 or 1. */
 int isect_plane_crossings(vec3 point, vec3 normal, const ray *r);
+/* The same plane's crossing in (r->tmin, r->tmax) and its t, as isect_part
+ * finds them (plane_hits' plane_t, before the point is made): 0 or 1. */
+int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t);
 
 /*
  * Hot records: what the hit test of a sphere without a transform (centre,
