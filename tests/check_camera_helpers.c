@@ -3,16 +3,19 @@
  * contract make prove checks (spec/proofs.md, "Rays and lights": the screen
  * point right*(sx*half) + true_up*(sy*half*aspect) of the pinhole formula,
  * camera.h).  It is static, so this file compiles camera.c itself with the
- * exported camera_ray renamed; a new exported name in camera.c that is not
- * renamed here fails the link (two definitions), loudly.
+ * exported camera_ray and camera_half renamed; a new exported name in
+ * camera.c that is not renamed here fails the link (two definitions),
+ * loudly.
  *
  * Expected values are worked by hand with a basis of short binary
  * fractions (0.6 and 0.8 times powers of two round as 0.6 and 0.8 do), so
  * each product and sum below is the one the formula gives.
  */
 #define camera_ray helpers_camera_ray
+#define camera_half helpers_camera_half
 #include "render/camera.c"
 #undef camera_ray
+#undef camera_half
 
 #include <string.h>
 #include "testlib.h"

@@ -88,7 +88,8 @@ static uint64_t path_at(const tracer *t, double x, double y)
     trace_stats st;
     memset(&st, 0, sizeof st);
     st.record_path = 1;
-    ray r = camera_ray(&t->scene->camera, t->scene->image.width, t->scene->image.height, x, y);
+    const scene_camera *cam = &t->scene->camera;
+    ray r = camera_ray(cam, camera_half(cam), t->scene->image.width, t->scene->image.height, x, y);
     (void)trace_ray(t, &r, 1, &t->eye_media, 0, &st);
     return st.path;
 }
@@ -138,7 +139,7 @@ START_TEST(test_trace_path_only_when_asked)
         off.path = 12345;
         on.path = 12345;
         on.record_path = 1;
-        ray r = camera_ray(&s->camera, 10, 10, x, 0.37 * x + 1);
+        ray r = camera_ray(&s->camera, camera_half(&s->camera), 10, 10, x, 0.37 * x + 1);
         rgb a = trace_ray(&t, &r, 1, &t.eye_media, 0, &off), b = trace_ray(&t, &r, 1, &t.eye_media, 0, &on);
         ck_assert(same_vec_bits(a, b));
         ck_assert(off.path == 12345);

@@ -304,7 +304,7 @@ START_TEST(test_json_camera_rays_match_renderer)
                         double x = i + (a + 0.5) / k, y = j + (b + 0.5) / k;
                         vec3 o, d;
                         export_ray(cam, w, h, x, y, &o, &d);
-                        ray want = camera_ray(&s->camera, w, h, x, y);
+                        ray want = camera_ray(&s->camera, camera_half(&s->camera), w, h, x, y);
                         ck_assert_msg(same_bits(o, want.origin) && same_bits(d, want.dir),
                                       "scene %d: pixel (%d, %d) sample (%d, %d)", sc, i, j, a, b);
                     }

@@ -645,7 +645,7 @@ START_TEST(test_stress_coplanar_disk_on_plane)
     int plane_inside = 0, inside = 0;
     for (int j = 0; j < 256; j++)
         for (int i = 0; i < 256; i++) {
-            ray r = camera_ray(&s->camera, 256, 256, i + 0.5, j + 0.5), rd = r;
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), 256, 256, i + 0.5, j + 0.5), rd = r;
             hit h, hd;
             if (!isect_prim(disk, &rd, &hd))
                 continue;
@@ -693,7 +693,7 @@ static naive_report naive_sphere_report(const char *name, ld tol)
             int want = exact_sphere(lv_of(p->u.sphere.center), p->u.sphere.radius, o, d, &n, &margin);
             if (fabsq(margin) < 1e-6)
                 continue;
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5), rr = r;
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, i + 0.5, j + 0.5), rr = r;
             real t;
             hit h;
             int got = naive_sphere(p->u.sphere.center, p->u.sphere.radius, &r, &t);
@@ -754,7 +754,7 @@ START_TEST(test_stress_concentric_gap_does_not_leak)
     ck_assert(tracer_init(&t, s, 0, 0));
     for (int j = 0; j < img.height; j++)
         for (int i = 0; i < img.width; i++) {
-            ray r = camera_ray(&s->camera, img.width, img.height, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), img.width, img.height, i + 0.5, j + 0.5);
             hit h;
             if (!bvh_intersect(&t.accel, s->prims, &r, &h) || h.prim != 0)
                 continue;
@@ -783,7 +783,7 @@ START_TEST(test_stress_naive_spawn_self_hits_far_from_origin)
     int self = 0, tried = 0;
     for (int j = 0; j < s->image.height; j++)
         for (int i = 0; i < s->image.width; i++) {
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, i + 0.5, j + 0.5);
             hit h, h2;
             if (!isect_prim(p, &r, &h) || !(vec_dot(h.normal, l) > 0))
                 continue;
@@ -960,7 +960,7 @@ START_TEST(test_stress_surface_starts_no_self_hit)
     int hits = 0;
     for (int j = 0; j < s->image.height; j++)
         for (int i = 0; i < s->image.width; i++) {
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, i + 0.5, j + 0.5);
             hit h;
             if (!bvh_intersect(&t.accel, s->prims, &r, &h))
                 continue;
@@ -1168,7 +1168,7 @@ START_TEST(test_stress_torus_edge_on_hole_far)
     int hits = 0;
     for (int j = 0; j < s->image.height; j++)
         for (int i = 0; i < s->image.width; i++) {
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, i + 0.5, j + 0.5);
             hit h;
             if (!isect_prim(p, &r, &h))
                 continue;
@@ -1206,7 +1206,7 @@ START_TEST(test_stress_naive_torus_fails_where_refray_holds)
             int want = exact_shape(p, o, d, &n, &margin);
             if (fabsq(margin) < 1e-6)
                 continue;
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, i + 0.5, j + 0.5);
             real t;
             tried++;
             int got = naive_torus(p->u.torus.center, p->u.torus.axis, p->u.torus.major, p->u.torus.minor, &r, &t);

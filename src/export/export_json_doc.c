@@ -94,7 +94,7 @@ static json_t *screen(export_json_build *b, const scene_model *s)
     set_real(b, out, "aspect", (double)((real)im->height / (real)im->width));
     set_real(b, out, "half", (double)half);
     double x = render_sample_offset(im->samples, 0);
-    ray r = camera_ray(cam, im->width, im->height, x, x);
+    ray r = camera_ray(cam, camera_half(cam), im->width, im->height, x, x);
     export_json_set(b, example, "point", json_pack("[ff]", x, x));
     set_vec(b, example, "origin", r.origin);
     set_vec(b, example, "direction", r.dir);

@@ -141,9 +141,10 @@ static double plane_distance(const scene_prim *p, vec3 o, vec3 d)
 static void each_camera_ray(const scene_model *s, void (*visit)(void *ctx, const ray *r), void *ctx)
 {
     int width, height, k = pov_render_size(s, &width, &height);
+    real half = camera_half(&s->camera);
     for (int j = 0; j < height; j++)
         for (int i = 0; i < width; i++) {
-            ray r = camera_ray(&s->camera, s->image.width, s->image.height, (i + 0.5) / k, (j + 0.5) / k);
+            ray r = camera_ray(&s->camera, half, s->image.width, s->image.height, (i + 0.5) / k, (j + 0.5) / k);
             visit(ctx, &r);
         }
 }

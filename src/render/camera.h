@@ -11,11 +11,20 @@
 #include "scene/scene.h"
 
 /*
+ * The half-width of a perspective camera's screen at distance 1,
+ * tan(fov/2); 0 for an orthographic camera, whose rays do not read it.
+ * Made once per image (a tracer keeps it: tracer.camera_half), not per
+ * camera ray.
+ */
+real camera_half(const scene_camera *cam);
+
+/*
  * The camera ray through image point (x, y) of a width x height image.
  * Perspective: from the eye, through the point of a screen at distance 1
- * whose half-width is tan(fov/2).  Orthographic: parallel to forward, from
- * the point of a width-wide rectangle centred on the eye.
+ * whose half-width is half, which must be camera_half(cam).  Orthographic:
+ * parallel to forward, from the point of a width-wide rectangle centred on
+ * the eye.
  */
-ray camera_ray(const scene_camera *cam, int width, int height, real x, real y);
+ray camera_ray(const scene_camera *cam, real half, int width, int height, real x, real y);
 
 #endif

@@ -38,7 +38,7 @@ rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, tr
     for (int b = 0; b < k; b++) {
         for (int a = 0; a < k; a++) {
             real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
-            ray r = camera_ray(&t->scene->camera, width, height, x, y);
+            ray r = camera_ray(&t->scene->camera, t->camera_half, width, height, x, y);
             medium_stack media = t->eye_media;
             if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
                 trace_media_at(t, r.origin, &media, st);

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render/intersect.h"
+#include "render/camera.h"
 #include "base/sampler.h"
 #include "base/sampler_counters.h"
 #include "render/gather_alone.h"
@@ -90,6 +91,7 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
     for (int i = 0; i < s->light_count; i++)
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
+    t->camera_half = camera_half(&s->camera);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
         memset(&none, 0, sizeof none);

@@ -126,6 +126,7 @@ typedef struct tracer {
                                  only the nodes their bundle may reach
                                  ([SHADE-SHORTCUT-BUNDLE-1]): 1 by default,
                                  0 with the shortcuts off or to compare */
+    real camera_half;         /* camera_half(&scene->camera), once per tracer */
     medium_stack eye_media;   /* what a perspective camera's eye is inside */
     long eye_overflow;        /* eye_media lost solids (each camera ray counts them) */
 } tracer;

@@ -165,7 +165,7 @@ static uint64_t path_at(const tracer *t, double x, double y)
     const scene_model *s = t->scene;
     memset(&st, 0, sizeof st);
     st.record_path = 1;
-    ray r = camera_ray(&s->camera, s->image.width, s->image.height, x, y);
+    ray r = camera_ray(&s->camera, camera_half(&s->camera), s->image.width, s->image.height, x, y);
     medium_stack media = t->eye_media;
     if (s->camera.kind == CAMERA_ORTHOGRAPHIC)
         trace_media_at(t, r.origin, &media, &st);

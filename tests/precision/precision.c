@@ -76,7 +76,7 @@ static void sphere_scene(const char *name)
     double off[2] = {0, 0};
     for (int j = 0; j < h; j++)
         for (int i = 0; i < w; i++) {
-            ray r = camera_ray(&s->camera, w, h, i + 0.5, j + 0.5), rr = r;
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), w, h, i + 0.5, j + 0.5), rr = r;
             quad want, margin;
             int ref = sphere_ref(p->u.sphere.center, p->u.sphere.radius, &r, &want, &margin);
             if (margin < 1e-6)
@@ -118,7 +118,7 @@ static void shape_scene(const char *name)
     double off[2] = {0, 0};
     for (int j = 0; j < h; j++)
         for (int i = 0; i < w; i++) {
-            ray r = camera_ray(&s->camera, w, h, i + 0.5, j + 0.5), rr = r;
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), w, h, i + 0.5, j + 0.5), rr = r;
             quad want, margin, cosine;
             int ref = torus ? qtorus_ref(&qt, &r, &want, &margin, &cosine) : qcone_ref(&qc, &r, &want, &margin, &cosine);
             if (margin < 1e-6)
@@ -159,7 +159,7 @@ static void spawn_scene(const char *name, double eps, int count_leaks)
     int w = s->image.width * 4, h = s->image.height * 4;
     for (int j = 0; j < h; j++)
         for (int i = 0; i < w; i++) {
-            ray r = camera_ray(&s->camera, w, h, i + 0.5, j + 0.5);
+            ray r = camera_ray(&s->camera, camera_half(&s->camera), w, h, i + 0.5, j + 0.5);
             hit hh, h2;
             if (!bvh_intersect(&t.accel, s->prims, &r, &hh) || hh.prim != 0)
                 continue;

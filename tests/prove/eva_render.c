@@ -159,12 +159,12 @@ static void camera(void)
     cam.fov = any(0x1p-1074, 0x1.67fffffffffffp+7);   /* (0, 180): the double below 180 */
     cam.width = 0;
     int w = Frama_C_int_interval(1, 1000000000), h = Frama_C_int_interval(1, 1000000000);
-    eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
+    eva_render_ray = camera_ray(&cam, camera_half(&cam), w, h, any(0, 1e9), any(0, 1e9));
     /* Orthographic: eye and width within the scene's extent (2^500). */
     cam.kind = CAMERA_ORTHOGRAPHIC;
     cam.eye = any_vec(-0x1p500, 0x1p500);
     cam.width = any(0x1p-1074, 0x1p500);
-    eva_render_ray = camera_ray(&cam, w, h, any(0, 1e9), any(0, 1e9));
+    eva_render_ray = camera_ray(&cam, camera_half(&cam), w, h, any(0, 1e9), any(0, 1e9));
 }
 
 static void lights(void)
