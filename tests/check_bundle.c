@@ -42,6 +42,19 @@ static int record(void *ctx, bvh_ref ref, int crossings)
 
 /* r walked whole and through the bundle: the same crossings in the same
  * order and the same primitive tests.  Returns the primitive tests. */
+/* The bundle's rays: from within slack of apex toward the ball (centre,
+ * reach), aimed at its cube. */
+static bvh_bundle_rays ball_rays(vec3 apex, double slack, vec3 centre, double reach)
+{
+    bvh_bundle_rays rays;
+    memset(&rays, 0, sizeof rays);
+    rays.apex = apex;
+    rays.slack = slack;
+    rays.lo = vec_sub(centre, vec_splat(reach));
+    rays.hi = vec_add(centre, vec_splat(reach));
+    return rays;
+}
+
 static long same_walks(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle)
 {
     events whole, part;
@@ -93,7 +106,8 @@ START_TEST(test_bundle_keeps_a_box_the_slab_test_lets_through)
         ck_assert_int_eq(e.count, 0);   /* the sphere itself is missed */
         grazed++;
         bvh_bundle bundle;
-        bvh_bundle_make(&b, from.point, from.offset, q, 0, &bundle, NULL);
+        bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_eq(bundle.count, 1);
         ck_assert_int_eq(same_walks(&b, s->prims, &r, &bundle), 1);
     }
@@ -163,7 +177,8 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
         shadow_start from = {apex, unit(&g), 0x1p-42 * (off + 12 * scale) + 1e-300};
         vec3 n = from.normal;
         bvh_bundle bundle;
-        bvh_bundle_make(&b, apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach, &bundle, NULL);
+        bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_ge(bundle.count, 0);
         kept += bundle.count;
         all++;
