@@ -602,7 +602,8 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
         return 0;
     static const int root = 0;
     slab_ray s = slab_make(w->r);
-    return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL, bundle ? bundle->count : 1);
+    return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
+                         bundle ? bundle->count : 1);
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,

@@ -144,8 +144,9 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
  * box) that no ray of the bundle crosses is left out too: a leaf with none
  * left is not kept, and a leaf with some left is kept as the runs of its
  * parts between them, each a node of the bundle's own (runs) with the
- * leaf's box; past BVH_BUNDLE_RUNS of those, the leaf is kept whole.  Where the list would pass
- * BVH_BUNDLE_MAX, the nodes still pending are kept whole.
+ * leaf's box; past BVH_BUNDLE_RUNS of those, the leaf is kept whole.
+ * Where the list would pass BVH_BUNDLE_MAX, the nodes still pending are
+ * kept whole.
  */
 enum { BVH_BUNDLE_MAX = 24, BVH_BUNDLE_RUNS = 16, BVH_BUNDLE_UNMADE = -2 };
 typedef struct bvh_bundle_rays {
@@ -158,8 +159,8 @@ typedef struct bvh_bundle_rays {
 typedef struct bvh_bundle {
     int count;         /* entries in node[]; -1: none (walk the whole tree),
                           BVH_BUNDLE_UNMADE: not made yet */
-    int node[BVH_BUNDLE_MAX + BVH_MAX_DEPTH + BVH_BUNDLE_RUNS]; /* a node of the tree, or
-                          ~i for runs[i] */
+    /* a node of the tree, or ~i for runs[i] */
+    int node[BVH_BUNDLE_MAX + BVH_MAX_DEPTH + BVH_BUNDLE_RUNS];
     int run_count;
     bvh_node runs[BVH_BUNDLE_RUNS];
 } bvh_bundle;
@@ -169,7 +170,8 @@ typedef struct bvh_bundle {
  * some axis. */
 void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out, bvh_stats *stats);
 /* bvh_visit_counts for a ray of the bundle: the same calls of fn in the
- * same order, from the kept nodes' subtrees and runs alone (bundle NULL or count < 0: bvh_visit_counts). */
+ * same order, from the kept nodes' subtrees and runs alone (bundle NULL
+ * or count < 0: bvh_visit_counts). */
 int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
                             int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats);
 

@@ -74,8 +74,8 @@ typedef struct light_setup {
     vec3 centre;
     real reach;
     /* A box holding every sample point too, axis by axis (lo <= hi; only
-     * where reach >= 0): the rectangle's own, or the disk's, never wider
-     * than the ball ([SHADE-SHORTCUT-BUNDLE-1] aims the bundles at it). */
+     * where reach >= 0): the rectangle's own, or the disk's
+     * ([SHADE-SHORTCUT-BUNDLE-1] aims the bundles at it). */
     vec3 box_lo, box_hi;
 } light_setup;
 
