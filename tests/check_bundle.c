@@ -238,6 +238,18 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/* A scene of prims (the text of its primitives) under a camera, and its
+ * tree in *b. */
+static scene_model *load_built(const char *prims, bvh *b)
+{
+    static char text[1024];
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 10] look_at [0, 0, 0] }\n%s",
+                       prims);
+    ck_assert(len > 0 && len < (int)sizeof text);
+    scene_model *s = load(text, (size_t)len);
+    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
+    return s;
+}
 
 /*
  * A box part near the margin: its leaf's box is the part's own widened by
@@ -251,12 +263,8 @@ END_TEST
  */
 START_TEST(test_bundle_keeps_a_box_part_its_test_counts)
 {
-    const char *text = "image { width 1 height 1 }\n"
-                       "camera { eye [0, 0, 10] look_at [0, 0, 0] }\n"
-                       "box { from [1, 1, -1] to [2, 3, 1] material { Kd 0.5 t 0.5 } }\n";
-    scene_model *s = load(text, strlen(text));
     bvh b;
-    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    scene_model *s = load_built("box { from [1, 1, -1] to [2, 3, 1] material { Kd 0.5 t 0.5 } }\n", &b);
     ck_assert_int_eq(b.node_count, 1);
     ck_assert_int_eq(ISECT_HOT_KIND(b.hot[0].code), ISECT_HOT_BOX);
     shadow_start from = {vec_make(0, 0, 0), vec_make(0, 0, 1), 1e-300};
@@ -298,12 +306,8 @@ END_TEST
  */
 START_TEST(test_bundle_behind_needs_the_gap)
 {
-    const char *text = "image { width 1 height 1 }\n"
-                       "camera { eye [0, 0, 10] look_at [0, 0, 0] }\n"
-                       "box { from [0, -1, 0] to [1, 0, 1] material { Kd 0.5 t 0.5 } }\n";
-    scene_model *s = load(text, strlen(text));
     bvh b;
-    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    scene_model *s = load_built("box { from [0, -1, 0] to [1, 0, 1] material { Kd 0.5 t 0.5 } }\n", &b);
     shadow_start from = {vec_make(-1, 0, 0.5), vec_make(1, 0, 0), 0x1p-42};
     const double above[3] = {0, 0x1p-52, 0x1p-20};
     for (int c = 0; c < 3; c++) {
