@@ -35,11 +35,10 @@
  * accepts t only between the quotients (l_a - O_a) / d_a and
  * (h_a - O_a) / d_a, each a rounded division of a rounded difference (a
  * quotient held at 2^1020 bounds nothing a ray with 0 <= tmin < t < tmax
- * < 2^402 can reach, magnitudes being under 2^400), or, for d_a = 0, with
- * O_a in [l_a, h_a].  That is
- * within the slab test's 8 eps, and the part's box lies in the root box,
- * so the same test with the same margin leaves out only a part no ray of
- * the bundle crosses.  And one more case the hull cannot see: a box behind
+ * < 2^402, magnitudes under 2^400, reaches), or, for d_a = 0, with O_a in
+ * [l_a, h_a].  That is within the slab test's 8 eps, and the part's box
+ * lies in the root box, so the same test with the same margin leaves out
+ * only a part no ray of the bundle crosses.  And one more case the hull cannot see: a box behind
  * every ray (`box_segment_apart`'s first case), for an exact origin O (the
  * point's own box, which the apex touches): on some axis O_a >= l_a,
  * O_a >= h_a, and every target's q_a >= L_a >= O_a + g (or the mirror
