@@ -38,14 +38,14 @@
  * < 2^402, magnitudes under 2^400, reaches), or, for d_a = 0, with O_a in
  * [l_a, h_a].  That is within the slab test's 8 eps, and the part's box
  * lies in the root box, so the same test with the same margin leaves out
- * only a part no ray of the bundle crosses.  And one more case the hull cannot see: a box behind
- * every ray (`box_segment_apart`'s first case), for an exact origin O (the
- * point's own box, which the apex touches): on some axis O_a >= l_a,
- * O_a >= h_a, and every target's q_a >= L_a >= O_a + g (or the mirror
+ * only a part no ray of the bundle crosses.  And one more case the hull cannot
+ * see: a box behind every ray (`box_segment_apart`'s first case), for an exact
+ * origin O (the point's own box, which the apex touches): on some axis O_a >=
+ * l_a, O_a >= h_a, and every target's q_a >= L_a >= O_a + g (or the mirror
  * image), g = 2^-40 S + 2^-1000.  Then each ray's l_a - O_a and h_a - O_a
- * round to <= 0, its d_a = (q_a - O_a) rounded times the rounded 1/|q - O|
- * is > 0 (at least g / (2 S) before rounding: no underflow), and tmin > 0,
- * so box_axis_apart answers 1 and the part counts 0 crossings.
+ * round to <= 0, its d_a = (q_a - O_a) rounded times the rounded 1/|q - O| is
+ * > 0 (at least g / (2 S) before rounding: no underflow), and tmin > 0, so
+ * box_axis_apart answers 1 and the part counts 0 crossings.
  */
 #include <assert.h>
 #include "render/bvh.h"
