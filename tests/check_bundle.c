@@ -13,6 +13,7 @@
 #include "io/scene_file.h"
 #include "render/bvh.h"
 #include "render/render.h"
+#include "render/trace.h"
 #include "scene/scene.h"
 
 static scene_model *load(const char *text, size_t len)
@@ -391,6 +392,66 @@ START_TEST(test_bundle_light_box_holds_every_sample)
 }
 END_TEST
 
+/* u along the plane normal to n (flat), or u itself. */
+static vec3 flat_to(vec3 u, vec3 n, int flat)
+{
+    return flat ? vec_sub(u, vec_scale(n, vec_dot(u, n))) : u;
+}
+
+/*
+ * The side of a point's normal plane a light lies on (trace_light_side):
+ * where it says 1 or -1, every shadow ray toward every sample starts at
+ * ray_shadow_origin of +n or -n.  Random points and normals (near the
+ * origin and at 1e7), rectangles and disks placed across the plane, just
+ * off it (2^-30 to 2^-10 of the size) and well off it, each either way.
+ * Deciding by the nearer corner of the light's box (the mutation "most >
+ * tol") fails here.
+ */
+START_TEST(test_bundle_light_side_gives_every_ray_its_origin)
+{
+    rng g = {11};
+    int decided = 0, open = 0;
+    for (int i = 0; i < 400; i++) {
+        double off = i % 2 ? 1e7 : 0;
+        shadow_start from = {vec_add(vec_splat(off), vec_make(range(&g, -5, 5), range(&g, -5, 5), range(&g, -5, 5))),
+                             unit(&g), 0x1p-42 * (off + 5) + 1e-300};
+        scene_light light;
+        memset(&light, 0, sizeof light);
+        light.kind = i % 4 < 2 ? LIGHT_RECTANGLE : LIGHT_DISK;
+        double h = (i / 4 % 2 ? -1 : 1) * (i / 8 % 3 == 0 ? 0 : i / 8 % 3 == 1 ? range(&g, 0x1p-30, 0x1p-10) : 2);
+        /* Half the lights parallel to the plane (edges along it, a disk
+         * facing along n, n along an axis), so that h alone sets their
+         * side. */
+        int flat = i / 24 % 2;
+        if (flat)   /* along an axis: the light's box is then as flat as the light */
+            from.normal = with_axis(vec_splat(0), i % 3, i / 3 % 2 ? 1 : -1);
+        vec3 n = from.normal, across = flat_to(unit(&g), n, flat);
+        light.position = vec_add(from.point, vec_add(vec_scale(n, h), vec_scale(across, range(&g, 0, 1))));
+        light.edge_u = vec_scale(flat_to(unit(&g), n, flat), range(&g, 0.01, 2));
+        light.edge_v = vec_scale(flat_to(unit(&g), n, flat), range(&g, 0.01, 2));
+        light.normal = flat ? n : unit(&g);
+        light.radius = range(&g, 0.01, 2);
+        light.samples = 16;
+        light_setup setup = trace_light_setup(&light, light.samples);
+        ck_assert(setup.reach >= 0);
+        int side = trace_light_side(&from, &setup);
+        decided += side != 0;
+        open += side == 0;
+        if (side == 0)
+            continue;
+        vec3 o = ray_shadow_origin(&from, side > 0 ? from.normal : vec_neg(from.normal));
+        for (uint64_t key = 0; key < 10; key++)
+            for (int j = 0; j < light.samples; j++) {
+                ray r = ray_shadow_to(&from, trace_light_point(&light, &setup, 0, key, j));
+                ck_assert_msg(r.origin.x == o.x && r.origin.y == o.y && r.origin.z == o.z,
+                              "case %d, side %d: sample %d starts elsewhere", i, side, j);
+            }
+    }
+    ck_assert_int_gt(decided, 0);
+    ck_assert_int_gt(open, 0);
+}
+END_TEST
+
 /* Renders s with the bundles on or off; returns the status. */
 static int render_bundles(const scene_model *s, int bundles, double *pixels, int size, render_stats *stats)
 {
@@ -407,27 +468,73 @@ static int render_bundles(const scene_model *s, int bundles, double *pixels, int
     return status;
 }
 
-/* g rendered at size x size with the bundles on and off: the same status
- * and bits, the same shadow rays and no more primitive tests with them.  Returns 1 when the
- * bundles changed the node visits (they were made). */
-static long same_renders(const dtgen_scene *g, const char *kind, int index, int size)
+/* The scene text rendered at size x size with the bundles on and off: the
+ * same status and bits, the same shadow rays and no more primitive tests
+ * with them.  Returns 1 when the bundles changed the node visits (they were
+ * made); tests (not NULL) gets the primitive tests with and without. */
+static long same_renders_of(const char *text, size_t len, const char *kind, int index, int size, long *tests)
 {
     static double on[3 * 32 * 32], off[3 * 32 * 32];
-    scene_model *s = load(g->text, g->len);
+    scene_model *s = load(text, len);
     render_stats st_on, st_off;
     ck_assert_int_le(size, 32);
     memset(on, 0, sizeof on);
     memset(off, 0, sizeof off);
     int a = render_bundles(s, 1, on, size, &st_on), b = render_bundles(s, 0, off, size, &st_off);
     ck_assert_msg(a == b, "%s scene %d: status %d with the bundles, %d without", kind, index, a, b);
-    ck_assert_msg(memcmp(on, off, sizeof on) == 0, "%s scene %d: the images differ:\n%s", kind, index, g->text);
+    ck_assert_msg(memcmp(on, off, sizeof on) == 0, "%s scene %d: the images differ:\n%s", kind, index, text);
     ck_assert_msg(st_on.trace.shadow_rays == st_off.trace.shadow_rays &&
                       st_on.trace.bvh.prims_tested <= st_off.trace.bvh.prims_tested,
                   "%s scene %d: %ld and %ld primitive tests:\n%s", kind, index, st_on.trace.bvh.prims_tested,
-                  st_off.trace.bvh.prims_tested, g->text);
+                  st_off.trace.bvh.prims_tested, text);
+    if (tests) {
+        tests[0] = st_on.trace.bvh.prims_tested;
+        tests[1] = st_off.trace.bvh.prims_tested;
+    }
     scene_free(s);
     return st_off.trace.bvh.nodes_visited != st_on.trace.bvh.nodes_visited;
 }
+
+static long same_renders(const dtgen_scene *g, const char *kind, int index, int size)
+{
+    return same_renders_of(g->text, g->len, kind, index, size, NULL);
+}
+
+/*
+ * Lights flush with the room's surfaces, where the bundles' tests are at
+ * their edges: a rectangle in the ceiling's plane (its box straddles the
+ * ceiling's face, so no ceiling point knows its origin, and the ceiling is
+ * within the margin of every hull), a disk in the left wall's plane, and
+ * the room of scenes/bench/room.scene with its own light: the same bits
+ * with the bundles on and off, and fewer primitive tests with them.
+ */
+START_TEST(test_bundle_flush_lights_bit_identical)
+{
+    static const char *lights[3] = {
+        "distributed_light { rectangle [-0.35, 2, -0.35] [0.7, 0, 0] [0, 0, 0.7] power 2.5 samples 9 }\n",
+        "distributed_light { disk [-1, 1, 0] [1, 0, 0] 0.4 power 2 samples 9 }\n",
+        "distributed_light { rectangle [-0.35, 1.95, -0.35] [0.7, 0, 0] [0, 0, 0.7] power 2.5 samples 9 }\n"};
+    static char text[4096];
+    int len = snprintf(text, sizeof text,
+                       "image { width 24 height 24 max_depth 4 }\n"
+                       "camera { perspective eye [0, 1, 3.6] look_at [0, 1, 0] up [0, 1, 0] fov 45 }\n"
+                       "%s"
+                       "material white { Kd 0.75 Ks 0.05 n 20 }\n"
+                       "material glass { Kd 0 Ks 0.05 n 400 t 0.93 ior 1.5 }\n"
+                       "box { from [-1.1, -0.1, -1.1] to [1.1, 0, 1.2] material white }\n"
+                       "box { from [-1.1, 2, -1.1] to [1.1, 2.1, 1.2] material white }\n"
+                       "box { from [-1.1, 0, -1.1] to [1.1, 2, -1] material white }\n"
+                       "box { from [-1.1, 0, -1] to [-1, 2, 1.2] material white }\n"
+                       "box { from [1, 0, -1] to [1.1, 2, 1.2] material white }\n"
+                       "sphere { center [0.3, 0.4, 0.1] radius 0.4 material glass }\n"
+                       "box { from [-0.75, 0, -0.6] to [-0.25, 0.7, -0.1] material white rotate [0, 20, 0] }\n",
+                       lights[_i]);
+    ck_assert(len > 0 && len < (int)sizeof text);
+    long tests[2];
+    ck_assert(same_renders_of(text, (size_t)len, "flush", _i, 24, tests));
+    ck_assert_msg(tests[0] < tests[1], "%ld primitive tests with the bundles, %ld without", tests[0], tests[1]);
+}
+END_TEST
 
 /* Random scenes of the generator (every primitive, light and material), as
  * made and moved far, tiny and huge as in check_shortcuts.c: the same bits,
@@ -461,6 +568,8 @@ Suite *suite_bundle(void)
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
     tcase_add_test(tc, test_bundle_light_box_holds_every_sample);
+    tcase_add_test(tc, test_bundle_light_side_gives_every_ray_its_origin);
+    tcase_add_loop_test(tc, test_bundle_flush_lights_bit_identical, 0, 3);
     tcase_add_loop_test(tc, test_bundle_random_scenes_bit_identical, 0, 8);
     suite_add_tcase(s, tc);
     return s;

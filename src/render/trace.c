@@ -247,7 +247,7 @@ static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
  * unit normal) makes vec_dot(-n, n) < 0, so ray_shadow_origin(-n) gives
  * the origin of the -1 side.  Magnitudes past 2^400: 0.
  */
-static int light_side(const shadow_start *from, const light_setup *setup)
+int trace_light_side(const shadow_start *from, const light_setup *setup)
 {
     vec3 p = from->point, n = from->normal, lo = setup->box_lo, hi = setup->box_hi;
     real size = sum_abs(p) + sum_abs(lo) + sum_abs(hi), nsum = sum_abs(n);
@@ -275,7 +275,7 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
         rays.lo = setup->reach >= 0 ? setup->box_lo : vec_splat(1);
         rays.hi = setup->reach >= 0 ? setup->box_hi : vec_splat(-1);   /* lo > hi: no bundle */
         rays.exact = 0;
-        int side = setup->reach >= 0 ? light_side(&s->from, setup) : 0;
+        int side = setup->reach >= 0 ? trace_light_side(&s->from, setup) : 0;
         if (side != 0) {
             rays.exact = 1;
             rays.origin = ray_shadow_origin(&s->from, side > 0 ? n : vec_neg(n));

@@ -160,6 +160,12 @@ light_setup trace_light_setup(const scene_light *light, int samples);
  * for bit. */
 vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j);
 
+/* The side of from's normal every sample of the light lies on, as
+ * spawn_origin decides it for ray_shadow_to(from, sample): 1 (the origin
+ * moved along +normal for every sample), -1 (along -normal for every one),
+ * 0 (not known).  setup->reach must be >= 0 (its box known). */
+int trace_light_side(const shadow_start *from, const light_setup *setup);
+
 /* Turns off every shortcut that leaves out work a scene does not need
  * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
  * mirror and transmitted rays while depth < max_depth, every light gets its
