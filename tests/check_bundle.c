@@ -13,6 +13,7 @@
 #include "io/scene_file.h"
 #include "render/bvh.h"
 #include "render/render.h"
+#include "render/trace.h"
 #include "scene/scene.h"
 
 static scene_model *load(const char *text, size_t len)
@@ -40,21 +41,44 @@ static int record(void *ctx, bvh_ref ref, int crossings)
     return 0;
 }
 
+/* The bundle's rays: from within slack of apex toward the ball (centre,
+ * reach), aimed at its cube. */
+static bvh_bundle_rays ball_rays(vec3 apex, double slack, vec3 centre, double reach)
+{
+    bvh_bundle_rays rays;
+    memset(&rays, 0, sizeof rays);
+    rays.apex = apex;
+    rays.slack = slack;
+    rays.lo = vec_sub(centre, vec_splat(reach));
+    rays.hi = vec_add(centre, vec_splat(reach));
+    return rays;
+}
+
 /* r walked whole and through the bundle: the same crossings in the same
- * order and the same primitive tests.  Returns the primitive tests. */
-static long same_walks(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle)
+ * order, and no more primitive tests by the bundle's walk (it leaves out
+ * the box parts no ray of it crosses).  Returns the primitive tests of
+ * the whole walk; *tested (not NULL) adds the bundle's. */
+static long same_walks_counted(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
+                               long *tested)
 {
     events whole, part;
     bvh_stats sw = {0, 0}, sp = {0, 0};
     whole.count = part.count = 0;
     bvh_visit_counts(b, prims, r, record, &whole, &sw);
     bvh_visit_counts_bundle(b, prims, r, bundle, record, &part, &sp);
-    ck_assert_msg(sw.prims_tested == sp.prims_tested, "%ld primitive tests by the whole walk, %ld by the bundle's",
+    ck_assert_msg(sp.prims_tested <= sw.prims_tested, "%ld primitive tests by the whole walk, %ld by the bundle's",
                   sw.prims_tested, sp.prims_tested);
+    if (tested)
+        *tested += sp.prims_tested;
     ck_assert_int_eq(whole.count, part.count);
     for (int i = 0; i < whole.count; i++)
         ck_assert(whole.prim[i] == part.prim[i] && whole.part[i] == part.part[i] && whole.n[i] == part.n[i]);
     return sw.prims_tested;
+}
+
+static long same_walks(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle)
+{
+    return same_walks_counted(b, prims, r, bundle, NULL);
 }
 
 /*
@@ -93,7 +117,8 @@ START_TEST(test_bundle_keeps_a_box_the_slab_test_lets_through)
         ck_assert_int_eq(e.count, 0);   /* the sphere itself is missed */
         grazed++;
         bvh_bundle bundle;
-        bvh_bundle_make(&b, from.point, from.offset, q, 0, &bundle, NULL);
+        bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_eq(bundle.count, 1);
         ck_assert_int_eq(same_walks(&b, s->prims, &r, &bundle), 1);
     }
@@ -126,6 +151,12 @@ static vec3 unit(rng *g)
     return vec_make(r * cos(a), r * sin(a), z);
 }
 
+/* a with its coordinate on axis k set to v. */
+static vec3 with_axis(vec3 a, int k, double v)
+{
+    return vec_make(k == 0 ? v : a.x, k == 1 ? v : a.y, k == 2 ? v : a.z);
+}
+
 /*
  * Random bundles over 60 spheres and 20 boxes in a cube of side 20 (and
  * the same scaled by 1e-6 and moved to 1e7): apex anywhere, balls of
@@ -155,28 +186,269 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
     scene_model *s = load(text, (size_t)len);
     bvh b;
     ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
-    long kept = 0, all = 0;
+    long kept = 0, all = 0, exact = 0, whole = 0, tested = 0;
     for (int bundle_i = 0; bundle_i < 200; bundle_i++) {
         vec3 apex = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
         vec3 centre = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
         double reach = scale * (bundle_i % 5 == 0 ? 0 : range(&g, 0, 5));
         shadow_start from = {apex, unit(&g), 0x1p-42 * (off + 12 * scale) + 1e-300};
+        if (bundle_i % 2) {
+            /* On a face of a box, its normal outward, as a shaded point
+             * of it (box_face_hit puts the face's coordinate exactly). */
+            const scene_prim *p = &s->prims[60 + bundle_i % 20];
+            int a = bundle_i % 3, out = bundle_i / 3 % 2;
+            vec3 lo = p->u.box.lo, hi = p->u.box.hi;
+            vec3 in = vec_add(lo, vec_mul(vec_sub(hi, lo), vec_make(uniform(&g), uniform(&g), uniform(&g))));
+            from.point = with_axis(in, a, vec_component(out ? hi : lo, a));
+            from.normal = with_axis(vec_splat(0), a, out ? 1 : -1);
+            apex = from.point;
+        }
         vec3 n = from.normal;
         bvh_bundle bundle;
-        bvh_bundle_make(&b, apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach, &bundle, NULL);
+        bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        /* Where every ray below starts at the same one of the two origins,
+         * the bundle is told so (the behind test). */
+        ray r[40];
+        vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
+        int ups = 0, downs = 0;
+        for (int j = 0; j < 40; j++) {
+            double f = j % 2 ? 0.999999 : range(&g, 0, 1);
+            r[j] = ray_shadow_to(&from, vec_add(centre, vec_scale(unit(&g), f * reach)));
+            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+        }
+        rays.exact = ups == 40 || downs == 40;
+        rays.origin = ups == 40 ? up : down;
+        exact += rays.exact;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_ge(bundle.count, 0);
         kept += bundle.count;
         all++;
-        for (int j = 0; j < 40; j++) {
-            double f = j % 2 ? 0.999999 : range(&g, 0, 1);
-            vec3 q = vec_add(centre, vec_scale(unit(&g), f * reach));
+        for (int j = 0; j < 40; j++)
+            whole += same_walks_counted(&b, s->prims, &r[j], &bundle, &tested);
+    }
+    ck_assert_msg(kept < all * b.leaf_count, "%ld nodes kept for %ld bundles of %d leaves", kept, all, b.leaf_count);
+    /* Some bundles knew their origin, and some box parts were left out (not
+     * at 1e7 with a scene 2e-5 across: there the margin, 2^-40 of the
+     * magnitudes, is wider than the scene). */
+    ck_assert_int_gt(exact, 0);
+    ck_assert_msg(_i % 2 || tested < whole, "%ld primitive tests by the bundles, %ld by the whole walks", tested,
+                  whole);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
+/* A scene of prims (the text of its primitives) under a camera, and its
+ * tree in *b. */
+static scene_model *load_built(const char *prims, bvh *b)
+{
+    static char text[1024];
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 10] look_at [0, 0, 0] }\n%s",
+                       prims);
+    ck_assert(len > 0 && len < (int)sizeof text);
+    scene_model *s = load(text, (size_t)len);
+    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
+    return s;
+}
+
+/*
+ * A box part near the margin: its leaf's box is the part's own widened by
+ * 2^-40 of its magnitude ([BVH-CULL-PAD-1]), so the tree lets every ray
+ * below through and only the test of the part itself can leave it out.
+ * Rays from the origin pass k ulps left of the box's corner (lo.x, hi.y):
+ * the exact segment misses the box, but box_slabs' rounded quotients
+ * count a crossing for some k.  The bundle of each such ray (apex its
+ * start, the box of its one target) must keep the part; with the hull
+ * test's margin 0 it is left out and the walks differ.
+ */
+START_TEST(test_bundle_keeps_a_box_part_its_test_counts)
+{
+    bvh b;
+    scene_model *s = load_built("box { from [1, 1, -1] to [2, 3, 1] material { Kd 0.5 t 0.5 } }\n", &b);
+    ck_assert_int_eq(b.node_count, 1);
+    ck_assert_int_eq(ISECT_HOT_KIND(b.hot[0].code), ISECT_HOT_BOX);
+    shadow_start from = {vec_make(0, 0, 0), vec_make(0, 0, 1), 1e-300};
+    int grazed = 0;
+    for (int m = 0; m < 40; m++) {
+        double x = 1;
+        for (int k = 1; k <= 8; k++) {
+            x = nextafter(x, -INFINITY);
+            /* through (x, 3): left of the corner (1, 3) */
+            vec3 q = vec_make((1.25 + 0.173 * m) * x, (1.25 + 0.173 * m) * 3, 0);
             ray r = ray_shadow_to(&from, q);
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r, record, &e, NULL);
+            if (e.count == 0)
+                continue;
+            grazed++;
+            bvh_bundle bundle;
+            bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+            bvh_bundle_make(&b, &rays, &bundle, NULL);
+            ck_assert_int_eq(bundle.count, 1);
             same_walks(&b, s->prims, &r, &bundle);
         }
     }
-    ck_assert_msg(kept < all * b.leaf_count, "%ld nodes kept for %ld bundles of %d leaves", kept, all, b.leaf_count);
+    /* box_slabs counts a crossing for a segment that misses the box. */
+    ck_assert_int_gt(grazed, 0);
     bvh_free(&b);
     scene_free(s);
+}
+END_TEST
+
+/*
+ * The behind test's gap.  Rays start exactly on the top plane of a box
+ * (their origin y = hi.y = 0: a horizontal normal) and run to targets at
+ * that same height, along the face: d_y = 0, and box_slabs counts the
+ * crossings of the closed slab.  A target box whose low y is the origin's
+ * passes a gap of 0 but not the test's: the part must be kept.  One ulp
+ * above and beyond the gap (a whole 2^-20 above), each ray leaves the box
+ * behind and counts nothing, and the part may go.
+ */
+START_TEST(test_bundle_behind_needs_the_gap)
+{
+    bvh b;
+    scene_model *s = load_built("box { from [0, -1, 0] to [1, 0, 1] material { Kd 0.5 t 0.5 } }\n", &b);
+    shadow_start from = {vec_make(-1, 0, 0.5), vec_make(1, 0, 0), 0x1p-42};
+    const double above[3] = {0, 0x1p-52, 0x1p-20};
+    for (int c = 0; c < 3; c++) {
+        vec3 q = vec_make(3, above[c], 0.5);
+        bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+        rays.exact = 1;
+        rays.origin = ray_shadow_origin(&from, from.normal);
+        ray r = ray_shadow_to(&from, q);
+        ck_assert(r.origin.x == rays.origin.x && r.origin.y == 0 && r.origin.z == rays.origin.z);
+        events e = {0};
+        bvh_visit_counts(&b, s->prims, &r, record, &e, NULL);
+        ck_assert_int_eq(e.count, c == 0 ? 1 : 0);   /* along the face: its entry and exit */
+        bvh_bundle bundle;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        same_walks(&b, s->prims, &r, &bundle);
+        if (c == 2)
+            ck_assert_int_eq(bundle.count, 0);   /* behind every ray: left out */
+    }
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
+/* Whether p lies in [lo, hi] on every axis. */
+static int inside_box(vec3 p, vec3 lo, vec3 hi)
+{
+    return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
+}
+
+/* Whether a is within 2^-30 of b on every axis. */
+static int near(vec3 a, vec3 b)
+{
+    return fabs(a.x - b.x) <= 0x1p-30 && fabs(a.y - b.y) <= 0x1p-30 && fabs(a.z - b.z) <= 0x1p-30;
+}
+
+/*
+ * The light's box (light_setup.box_lo, box_hi): every sample point of
+ * random rectangles and disks (any orientation, near the origin and moved
+ * to 1e7) lies in it, for many keys; and for the room's rectangle under
+ * the ceiling (y = 1.95, x and z from -0.35 to 0.35) and a disk facing
+ * down it is that flat box within 2^-30, which bundles need to tell the
+ * ceiling at y = 2 from the light.
+ */
+START_TEST(test_bundle_light_box_holds_every_sample)
+{
+    rng g = {7};
+    for (int i = 0; i < 200; i++) {
+        scene_light light;
+        memset(&light, 0, sizeof light);
+        double off = i % 2 ? 1e7 : 0;
+        light.kind = i % 4 < 2 ? LIGHT_RECTANGLE : LIGHT_DISK;
+        light.position = vec_add(vec_splat(off), vec_make(range(&g, -5, 5), range(&g, -5, 5), range(&g, -5, 5)));
+        light.edge_u = vec_scale(unit(&g), range(&g, 0.01, 3));
+        light.edge_v = vec_scale(unit(&g), range(&g, 0.01, 3));
+        light.normal = unit(&g);
+        light.radius = range(&g, 0.01, 3);
+        light.samples = 1 + i % 40;
+        light_setup setup = trace_light_setup(&light, light.samples);
+        ck_assert(setup.reach >= 0);
+        for (uint64_t key = 0; key < 20; key++)
+            for (int j = 0; j < light.samples; j++) {
+                vec3 p = trace_light_point(&light, &setup, 0, key * 7919 + (uint64_t)i, j);
+                ck_assert_msg(inside_box(p, setup.box_lo, setup.box_hi), "light %d, sample %d outside its box", i, j);
+            }
+    }
+    scene_light room;
+    memset(&room, 0, sizeof room);
+    room.kind = LIGHT_RECTANGLE;
+    room.position = vec_make(-0.35, 1.95, -0.35);
+    room.edge_u = vec_make(0.7, 0, 0);
+    room.edge_v = vec_make(0, 0, 0.7);
+    room.samples = 49;
+    light_setup setup = trace_light_setup(&room, 49);
+    ck_assert(near(setup.box_lo, vec_make(-0.35, 1.95, -0.35)) && near(setup.box_hi, vec_make(0.35, 1.95, 0.35)));
+    room.kind = LIGHT_DISK;
+    room.position = vec_make(0, 1.95, 0);
+    room.normal = vec_make(0, -1, 0);
+    room.radius = 0.5;
+    setup = trace_light_setup(&room, 49);
+    ck_assert(near(setup.box_lo, vec_make(-0.5, 1.95, -0.5)) && near(setup.box_hi, vec_make(0.5, 1.95, 0.5)));
+}
+END_TEST
+
+/* u along the plane normal to n (flat), or u itself. */
+static vec3 flat_to(vec3 u, vec3 n, int flat)
+{
+    return flat ? vec_sub(u, vec_scale(n, vec_dot(u, n))) : u;
+}
+
+/*
+ * The side of a point's normal plane a light lies on (trace_light_side):
+ * where it says 1 or -1, every shadow ray toward every sample starts at
+ * ray_shadow_origin of +n or -n.  Random points and normals (near the
+ * origin and at 1e7), rectangles and disks placed across the plane, just
+ * off it (2^-30 to 2^-10 of the size) and well off it, each either way.
+ * Deciding by the nearer corner of the light's box (the mutation "most >
+ * tol") fails here.
+ */
+START_TEST(test_bundle_light_side_gives_every_ray_its_origin)
+{
+    rng g = {11};
+    int decided = 0, open = 0;
+    for (int i = 0; i < 400; i++) {
+        double off = i % 2 ? 1e7 : 0;
+        shadow_start from = {vec_add(vec_splat(off), vec_make(range(&g, -5, 5), range(&g, -5, 5), range(&g, -5, 5))),
+                             unit(&g), 0x1p-42 * (off + 5) + 1e-300};
+        scene_light light;
+        memset(&light, 0, sizeof light);
+        light.kind = i % 4 < 2 ? LIGHT_RECTANGLE : LIGHT_DISK;
+        double h = (i / 4 % 2 ? -1 : 1) * (i / 8 % 3 == 0 ? 0 : i / 8 % 3 == 1 ? range(&g, 0x1p-30, 0x1p-10) : 2);
+        /* Half the lights parallel to the plane (edges along it, a disk
+         * facing along n, n along an axis), so that h alone sets their
+         * side. */
+        int flat = i / 24 % 2;
+        if (flat)   /* along an axis: the light's box is then as flat as the light */
+            from.normal = with_axis(vec_splat(0), i % 3, i / 3 % 2 ? 1 : -1);
+        vec3 n = from.normal, across = flat_to(unit(&g), n, flat);
+        light.position = vec_add(from.point, vec_add(vec_scale(n, h), vec_scale(across, range(&g, 0, 1))));
+        light.edge_u = vec_scale(flat_to(unit(&g), n, flat), range(&g, 0.01, 2));
+        light.edge_v = vec_scale(flat_to(unit(&g), n, flat), range(&g, 0.01, 2));
+        light.normal = flat ? n : unit(&g);
+        light.radius = range(&g, 0.01, 2);
+        light.samples = 16;
+        light_setup setup = trace_light_setup(&light, light.samples);
+        ck_assert(setup.reach >= 0);
+        int side = trace_light_side(&from, &setup);
+        decided += side != 0;
+        open += side == 0;
+        if (side == 0)
+            continue;
+        vec3 o = ray_shadow_origin(&from, side > 0 ? from.normal : vec_neg(from.normal));
+        for (uint64_t key = 0; key < 10; key++)
+            for (int j = 0; j < light.samples; j++) {
+                ray r = ray_shadow_to(&from, trace_light_point(&light, &setup, 0, key, j));
+                ck_assert_msg(r.origin.x == o.x && r.origin.y == o.y && r.origin.z == o.z,
+                              "case %d, side %d: sample %d starts elsewhere", i, side, j);
+            }
+    }
+    ck_assert_int_gt(decided, 0);
+    ck_assert_int_gt(open, 0);
 }
 END_TEST
 
@@ -196,27 +468,73 @@ static int render_bundles(const scene_model *s, int bundles, double *pixels, int
     return status;
 }
 
-/* g rendered at size x size with the bundles on and off: the same status
- * and bits, the same shadow rays and primitive tests.  Returns 1 when the
- * bundles changed the node visits (they were made). */
-static long same_renders(const dtgen_scene *g, const char *kind, int index, int size)
+/* The scene text rendered at size x size with the bundles on and off: the
+ * same status and bits, the same shadow rays and no more primitive tests
+ * with them.  Returns 1 when the bundles changed the node visits (they were
+ * made); tests (not NULL) gets the primitive tests with and without. */
+static long same_renders_of(const char *text, size_t len, const char *kind, int index, int size, long *tests)
 {
     static double on[3 * 32 * 32], off[3 * 32 * 32];
-    scene_model *s = load(g->text, g->len);
+    scene_model *s = load(text, len);
     render_stats st_on, st_off;
     ck_assert_int_le(size, 32);
     memset(on, 0, sizeof on);
     memset(off, 0, sizeof off);
     int a = render_bundles(s, 1, on, size, &st_on), b = render_bundles(s, 0, off, size, &st_off);
     ck_assert_msg(a == b, "%s scene %d: status %d with the bundles, %d without", kind, index, a, b);
-    ck_assert_msg(memcmp(on, off, sizeof on) == 0, "%s scene %d: the images differ:\n%s", kind, index, g->text);
+    ck_assert_msg(memcmp(on, off, sizeof on) == 0, "%s scene %d: the images differ:\n%s", kind, index, text);
     ck_assert_msg(st_on.trace.shadow_rays == st_off.trace.shadow_rays &&
-                      st_on.trace.bvh.prims_tested == st_off.trace.bvh.prims_tested,
+                      st_on.trace.bvh.prims_tested <= st_off.trace.bvh.prims_tested,
                   "%s scene %d: %ld and %ld primitive tests:\n%s", kind, index, st_on.trace.bvh.prims_tested,
-                  st_off.trace.bvh.prims_tested, g->text);
+                  st_off.trace.bvh.prims_tested, text);
+    if (tests) {
+        tests[0] = st_on.trace.bvh.prims_tested;
+        tests[1] = st_off.trace.bvh.prims_tested;
+    }
     scene_free(s);
     return st_off.trace.bvh.nodes_visited != st_on.trace.bvh.nodes_visited;
 }
+
+static long same_renders(const dtgen_scene *g, const char *kind, int index, int size)
+{
+    return same_renders_of(g->text, g->len, kind, index, size, NULL);
+}
+
+/*
+ * Lights flush with the room's surfaces, where the bundles' tests are at
+ * their edges: a rectangle in the ceiling's plane (its box straddles the
+ * ceiling's face, so no ceiling point knows its origin, and the ceiling is
+ * within the margin of every hull), a disk in the left wall's plane, and
+ * the room of scenes/bench/room.scene with its own light: the same bits
+ * with the bundles on and off, and fewer primitive tests with them.
+ */
+START_TEST(test_bundle_flush_lights_bit_identical)
+{
+    static const char *lights[3] = {
+        "distributed_light { rectangle [-0.35, 2, -0.35] [0.7, 0, 0] [0, 0, 0.7] power 2.5 samples 9 }\n",
+        "distributed_light { disk [-1, 1, 0] [1, 0, 0] 0.4 power 2 samples 9 }\n",
+        "distributed_light { rectangle [-0.35, 1.95, -0.35] [0.7, 0, 0] [0, 0, 0.7] power 2.5 samples 9 }\n"};
+    static char text[4096];
+    int len = snprintf(text, sizeof text,
+                       "image { width 24 height 24 max_depth 4 }\n"
+                       "camera { perspective eye [0, 1, 3.6] look_at [0, 1, 0] up [0, 1, 0] fov 45 }\n"
+                       "%s"
+                       "material white { Kd 0.75 Ks 0.05 n 20 }\n"
+                       "material glass { Kd 0 Ks 0.05 n 400 t 0.93 ior 1.5 }\n"
+                       "box { from [-1.1, -0.1, -1.1] to [1.1, 0, 1.2] material white }\n"
+                       "box { from [-1.1, 2, -1.1] to [1.1, 2.1, 1.2] material white }\n"
+                       "box { from [-1.1, 0, -1.1] to [1.1, 2, -1] material white }\n"
+                       "box { from [-1.1, 0, -1] to [-1, 2, 1.2] material white }\n"
+                       "box { from [1, 0, -1] to [1.1, 2, 1.2] material white }\n"
+                       "sphere { center [0.3, 0.4, 0.1] radius 0.4 material glass }\n"
+                       "box { from [-0.75, 0, -0.6] to [-0.25, 0.7, -0.1] material white rotate [0, 20, 0] }\n",
+                       lights[_i]);
+    ck_assert(len > 0 && len < (int)sizeof text);
+    long tests[2];
+    ck_assert(same_renders_of(text, (size_t)len, "flush", _i, 24, tests));
+    ck_assert_msg(tests[0] < tests[1], "%ld primitive tests with the bundles, %ld without", tests[0], tests[1]);
+}
+END_TEST
 
 /* Random scenes of the generator (every primitive, light and material), as
  * made and moved far, tiny and huge as in check_shortcuts.c: the same bits,
@@ -247,6 +565,11 @@ Suite *suite_bundle(void)
     tcase_set_timeout(tc, 20);
     tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
+    tcase_add_test(tc, test_bundle_behind_needs_the_gap);
+    tcase_add_test(tc, test_bundle_light_box_holds_every_sample);
+    tcase_add_test(tc, test_bundle_light_side_gives_every_ray_its_origin);
+    tcase_add_loop_test(tc, test_bundle_flush_lights_bit_identical, 0, 3);
     tcase_add_loop_test(tc, test_bundle_random_scenes_bit_identical, 0, 8);
     suite_add_tcase(s, tc);
     return s;

@@ -538,8 +538,11 @@ static int walk_other(void *ctx, int item)
  * so their loads overlap) and only those met are entered; the stack holds
  * at most one pending sibling per level.  One loop for the whole list, not
  * a call per start: a bundle keeps about two nodes per shadow ray, and each
- * call copied the slab ray and saved its registers again. */
-static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const int *start, int starts)
+ * call copied the slab ray and saved its registers again.  A start below 0
+ * is ~i, the bundle's own node runs[i]: a run of a kept leaf's parts, with
+ * the leaf's box (bvh_bundle_make). */
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const int *start, const bvh_node *runs,
+                         int starts)
 {
     int stack[BVH_MAX_DEPTH];
     real tmin = w->node_tmin, tmax = w->r->tmax, enter;
@@ -547,13 +550,13 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
      * callback being opaque to the compiler. */
     const slab_ray copy = *sr, *s = &copy;
     for (int k = 0; k < starts; k++) {
-        int node = start[k], sp = 0;
+        int sp = 0;
+        const bvh_node *nd = start[k] >= 0 ? &b->nodes[start[k]] : &runs[~start[k]];
         if (w->stats)
             w->stats->nodes_visited++;
-        if (!node_hit_any(&b->nodes[node], s, tmin, tmax, &enter) && !b->exhaustive)
+        if (!node_hit_any(nd, s, tmin, tmax, &enter) && !b->exhaustive)
             continue;
         for (;;) {
-            const bvh_node *nd = &b->nodes[node];
             if (nd->count == 0) {
                 int a = nd->first;
                 int ha = node_hit_any(&b->nodes[a], s, tmin, tmax, &enter) || b->exhaustive;
@@ -565,11 +568,11 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                         assert(sp < BVH_MAX_DEPTH);
                         stack[sp++] = a + 1;
                     }
-                    node = a;
+                    nd = &b->nodes[a];
                     continue;
                 }
                 if (hc) {
-                    node = a + 1;
+                    nd = &b->nodes[a + 1];
                     continue;
                 }
             } else {
@@ -581,7 +584,7 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
             }
             if (sp == 0)
                 break;
-            node = stack[--sp];
+            nd = &b->nodes[stack[--sp]];
         }
     }
     return 0;
@@ -614,7 +617,8 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
         return 0;
     static const int root = 0;
     slab_ray s = slab_make(w->r);
-    return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->count : 1);
+    return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
+                         bundle ? bundle->count : 1);
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,

@@ -133,28 +133,45 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
  * Bundles of shadow rays (spec/shading.md, [SHADE-SHORTCUT-BUNDLE-1]): the
  * rays from one shaded point toward the samples of one distributed light.
  * Every such ray starts within `slack` (each coordinate) of `apex` and is
- * aimed at a point of the ball (centre, reach) as spawn_to_by aims it
- * (ray_shadow_to: unit direction, tmin > 0, tmax short of the target).
+ * aimed at a point of the box [lo, hi] as spawn_to_by aims it
+ * (ray_shadow_to: unit direction, tmin > 0, tmax short of the target);
+ * where `exact` is 1, every one starts at `origin` itself (the one origin
+ * spawn_origin gives for every target of the box).
  * bvh_bundle_make walks the tree once with a test of the bundle's hull and
  * keeps, in depth-first order, the nodes it may touch: a node left out is
  * one whose box every ray of the bundle fails by the walk's own slab test,
- * and so is every node below it.  Where the list would pass
- * BVH_BUNDLE_MAX, the nodes still pending are kept whole.
+ * and so is every node below it.  In a kept leaf, a box's record (a hot
+ * box) that no ray of the bundle crosses is left out too: a leaf with none
+ * left is not kept, and a leaf with some left is kept as the runs of its
+ * parts between them, each a node of the bundle's own (runs) with the
+ * leaf's box; past BVH_BUNDLE_RUNS of those, the leaf is kept whole.
+ * Where the list would pass BVH_BUNDLE_MAX, the nodes still pending are
+ * kept whole.
  */
-enum { BVH_BUNDLE_MAX = 24, BVH_BUNDLE_UNMADE = -2 };
+enum { BVH_BUNDLE_MAX = 24, BVH_BUNDLE_RUNS = 16, BVH_BUNDLE_UNMADE = -2 };
+typedef struct bvh_bundle_rays {
+    vec3 apex;
+    real slack;
+    vec3 lo, hi;
+    int exact;
+    vec3 origin;
+} bvh_bundle_rays;
 typedef struct bvh_bundle {
     int count;         /* entries in node[]; -1: none (walk the whole tree),
                           BVH_BUNDLE_UNMADE: not made yet */
-    int node[BVH_BUNDLE_MAX + BVH_MAX_DEPTH];
+    /* a node of the tree, or ~i for runs[i] */
+    int node[BVH_BUNDLE_MAX + BVH_MAX_DEPTH + BVH_BUNDLE_RUNS];
+    int run_count;
+    bvh_node runs[BVH_BUNDLE_RUNS];
 } bvh_bundle;
 
 /* Fills *out for the rays described above; count -1 when the tree is
- * exhaustive, or a magnitude passes 2^400 or is not finite, or reach < 0. */
-void bvh_bundle_make(const bvh *b, vec3 apex, real slack, vec3 centre, real reach, bvh_bundle *out,
-                     bvh_stats *stats);
+ * exhaustive, or a magnitude passes 2^400 or is not finite, or lo > hi on
+ * some axis. */
+void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out, bvh_stats *stats);
 /* bvh_visit_counts for a ray of the bundle: the same calls of fn in the
- * same order, from the kept nodes' subtrees alone (bundle NULL or count
- * < 0: bvh_visit_counts). */
+ * same order, from the kept nodes' subtrees and runs alone (bundle NULL
+ * or count < 0: bvh_visit_counts). */
 int bvh_visit_counts_bundle(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle,
                             int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats);
 

@@ -1,18 +1,18 @@
 /*
- * bvh_bundle.c - the nodes a bundle of shadow rays may reach
- * (spec/shading.md, [SHADE-SHORTCUT-BUNDLE-1]; bvh.c walks them).
+ * bvh_bundle.c - the nodes a bundle of shadow rays may reach, and the box
+ * parts in them it cannot cross (spec/shading.md, [SHADE-SHORTCUT-BUNDLE-1];
+ * bvh.c walks them).
  *
  * The hull.  A ray of the bundle runs from its origin O (within `slack` of
- * the apex P) toward a target q in the ball (C, R).  The points of the
- * segments from P to the ball are P + s (C - P) + s u, s in [0, 1],
- * |u| <= R, so on each axis a point of the hull at parameter s lies
- * within s R of P_a + s D_a (D = C - P): the hull sits inside the cone of
- * cubes
- *     lo_a - m <= P_a + s D_a + s R  and  P_a + s D_a - s R <= hi_a + m
+ * the apex P) toward a target q in the box [L, H].  The points of the
+ * segments from P to the box are P + s (q - P), s in [0, 1], so on each
+ * axis a point of the hull at parameter s lies between P_a + s (L_a - P_a)
+ * and P_a + s (H_a - P_a): the hull sits inside the cone of boxes
+ *     lo_a - m <= P_a + s (H_a - P_a)  and  P_a + s (L_a - P_a) <= hi_a + m
  * for a box [lo, hi] it meets within m.  Each is one bound on s (its slope
- * D_a + R or D_a - R, by the slab test's device: a reciprocal made once,
- * signed infinities for a zero slope, a NaN bound narrowing nothing), and a
- * box is left out when the bounds leave no s in [0, 1].
+ * H_a - P_a or L_a - P_a, by the slab test's device: a reciprocal made
+ * once, signed infinities for a zero slope, a NaN bound narrowing nothing),
+ * and a box is left out when the bounds leave no s in [0, 1].
  *
  * The margin m.  Where the walk's slab test lets a box through, the ray's
  * exact point O + t d at the t it found lies within 8 eps |lo - O| of the
@@ -22,12 +22,30 @@
  * 4 eps |q - O| of a point O + mu (q - O), mu in [0, 1) (d is q - O
  * rounded and scaled by the rounded 1/|q - O|, tmax < |q - O|), and
  * O + mu (q - O) within |O - P| <= slack (1 + 2^-50) + 2^-52 |P| of the
- * hull's point P + mu (q - P).  This test's own rounding (D_a, the slopes,
+ * hull's point P + mu (q - P).  This test's own rounding (the slopes,
  * their reciprocals, the bounds) moves a bound by 2^-49 of S in place or
- * by a subnormal's 2^-1074 in s.  S, the sum of the magnitudes of P, C,
- * R, slack and the tree's root box, bounds every coordinate involved, so
+ * by a subnormal's 2^-1074 in s.  S, the sum of the magnitudes of P, L,
+ * H, slack and the tree's root box, bounds every coordinate involved, so
  * m = 2^-40 S + 2 slack + 2^-1000 covers all of it with room to spare: a
  * box this test leaves out, no ray of the bundle lets through.
+ *
+ * A box part (a hot box record: hot_box_crossings, intersect.c) crossed at
+ * t puts the ray's exact point O + t d within 2 eps |c - O| + 2^-1074 of
+ * the box on every axis, c the nearer corner's coordinate: box_slabs
+ * accepts t only between the quotients (l_a - O_a) / d_a and
+ * (h_a - O_a) / d_a, each a rounded division of a rounded difference (a
+ * quotient held at 2^1020 bounds nothing a ray with 0 <= tmin < t < tmax
+ * < 2^402, magnitudes under 2^400, reaches), or, for d_a = 0, with O_a in
+ * [l_a, h_a].  That is within the slab test's 8 eps, and the part's box
+ * lies in the root box, so the same test with the same margin leaves out
+ * only a part no ray of the bundle crosses.  And one more case the hull cannot
+ * see: a box behind every ray (`box_segment_apart`'s first case), for an exact
+ * origin O (the point's own box, which the apex touches): on some axis O_a >=
+ * l_a, O_a >= h_a, and every target's q_a >= L_a >= O_a + g (or the mirror
+ * image), g = 2^-40 S + 2^-1000.  Then each ray's l_a - O_a and h_a - O_a
+ * round to <= 0, its d_a = (q_a - O_a) rounded times the rounded 1/|q - O| is
+ * > 0 (at least g / (2 S) before rounding: no underflow), and tmin > 0, so
+ * box_axis_apart answers 1 and the part counts 0 crossings.
  */
 #include <assert.h>
 #include "render/bvh.h"
@@ -37,9 +55,10 @@
  * below. */
 typedef struct bundle_cone {
     vec3 apex;
-    real inv_lo[3], inv_hi[3];   /* 1 / (D_a + R), 1 / (D_a - R) */
+    real inv_lo[3], inv_hi[3];   /* 1 / (H_a - P_a), 1 / (L_a - P_a) */
     int lo_below[3], hi_below[3];
     real margin;
+    real gap;                    /* g of the behind test */
 } bundle_cone;
 
 static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
@@ -56,11 +75,11 @@ static void narrow(real bound, int below, real *sn, real *sf)
     }
 }
 
-/* Whether some s in [0, 1] meets every bound of the box (m included). */
-static int cone_meets(const bundle_cone *c, const bvh_node *nd)
+/* Whether some s in [0, 1] meets every bound of the box [lo, hi] (m
+ * included). */
+static int cone_meets(const bundle_cone *c, const real lo[3], const real hi[3])
 {
     real sn = 0, sf = 1;
-    const real lo[3] = {nd->lo.x, nd->lo.y, nd->lo.z}, hi[3] = {nd->hi.x, nd->hi.y, nd->hi.z};
     const real p[3] = {c->apex.x, c->apex.y, c->apex.z};
     for (int a = 0; a < 3; a++) {
         narrow(((lo[a] - p[a]) - c->margin) * c->inv_lo[a], c->lo_below[a], &sn, &sf);
@@ -69,53 +88,125 @@ static int cone_meets(const bundle_cone *c, const bvh_node *nd)
     return sn <= sf;
 }
 
-static int cone_make(const bvh *b, vec3 apex, real slack, vec3 centre, real reach, bundle_cone *c)
+static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
 {
-    real size = sum_abs(apex) + sum_abs(centre) + reach + slack + sum_abs(b->nodes[0].lo) + sum_abs(b->nodes[0].hi);
-    if (!(reach >= 0 && slack >= 0 && size < 0x1p400))
+    const real lo[3] = {nd->lo.x, nd->lo.y, nd->lo.z}, hi[3] = {nd->hi.x, nd->hi.y, nd->hi.z};
+    return cone_meets(c, lo, hi);
+}
+
+static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
+{
+    real size = sum_abs(rays->apex) + sum_abs(rays->lo) + sum_abs(rays->hi) + rays->slack +
+                sum_abs(b->nodes[0].lo) + sum_abs(b->nodes[0].hi);
+    if (!(rays->slack >= 0 && size < 0x1p400 && rays->lo.x <= rays->hi.x && rays->lo.y <= rays->hi.y &&
+          rays->lo.z <= rays->hi.z))
         return 0;
-    vec3 d = vec_sub(centre, apex);
-    const real da[3] = {d.x, d.y, d.z};
-    c->apex = apex;
-    c->margin = 0x1p-40 * size + 2 * slack + 0x1p-1000;
+    const real p[3] = {rays->apex.x, rays->apex.y, rays->apex.z};
+    const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
+    c->apex = rays->apex;
+    c->margin = 0x1p-40 * size + 2 * rays->slack + 0x1p-1000;
+    c->gap = 0x1p-40 * size + 0x1p-1000;
     for (int a = 0; a < 3; a++) {
-        /* s (D_a + R) >= lo_a - m - P_a bounds s from below where the slope
-         * is positive (+0 too: its infinite reciprocal then says whether
-         * the bound holds at all), from above where it is negative. */
-        c->inv_lo[a] = reciprocal(da[a] + reach);
+        /* s (H_a - P_a) >= lo_a - m - P_a bounds s from below where the
+         * slope is positive (+0 too: its infinite reciprocal then says
+         * whether the bound holds at all), from above where it is
+         * negative. */
+        c->inv_lo[a] = reciprocal(th[a] - p[a]);
         c->lo_below[a] = !signbit(c->inv_lo[a]);
-        /* s (D_a - R) <= hi_a + m - P_a: the other way round. */
-        c->inv_hi[a] = reciprocal(da[a] - reach);
+        /* s (L_a - P_a) <= hi_a + m - P_a: the other way round. */
+        c->inv_hi[a] = reciprocal(tl[a] - p[a]);
         c->hi_below[a] = signbit(c->inv_hi[a]) != 0;
     }
     return 1;
 }
 
-void bvh_bundle_make(const bvh *b, vec3 apex, real slack, vec3 centre, real reach, bvh_bundle *out,
-                     bvh_stats *stats)
+/* Whether every ray of the bundle leaves the box [l, h] behind on some
+ * axis (see the top: the exact origin, the gap to every target). */
+static int box_behind(const bundle_cone *c, const bvh_bundle_rays *rays, const real l[3], const real h[3])
+{
+    const real o[3] = {rays->origin.x, rays->origin.y, rays->origin.z};
+    const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
+    if (!rays->exact)
+        return 0;
+    for (int a = 0; a < 3; a++) {
+        if (o[a] >= l[a] && o[a] >= h[a] && tl[a] - o[a] >= c->gap)
+            return 1;
+        if (o[a] <= l[a] && o[a] <= h[a] && th[a] - o[a] <= -c->gap)
+            return 1;
+    }
+    return 0;
+}
+
+/* The parts of leaf nd that no ray of the bundle crosses: box records the
+ * hull misses or that lie behind every ray. */
+static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
+{
+    unsigned skip = 0;
+    for (int i = 0; i < nd->count && i < 32; i++) {
+        bvh_hot hr = b->hot[nd->first + i];
+        if (ISECT_HOT_KIND(hr.code) != ISECT_HOT_BOX)
+            continue;
+        const real *g = b->hot_reals + hr.at;
+        if (!cone_meets(c, g, g + 3) || box_behind(c, rays, g, g + 3))
+            skip |= 1u << i;
+    }
+    return skip;
+}
+
+/* Keeps leaf `node`: whole, or as the runs of its parts leaf_skip leaves
+ * (each a node of out->runs with the leaf's box, in order), or not at all
+ * where it leaves none.  Past BVH_BUNDLE_RUNS runs in all: whole. */
+static void keep_leaf(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, int node, bvh_bundle *out)
+{
+    const bvh_node *nd = &b->nodes[node];
+    unsigned skip = leaf_skip(b, c, rays, nd);
+    int runs = 0, n = nd->count < 32 ? nd->count : 32;
+    for (int i = 0; i < n; i++)
+        runs += !(skip >> i & 1u) && (i == 0 || skip >> (i - 1) & 1u);
+    if (skip == 0 || nd->count > 32 || out->run_count + runs > BVH_BUNDLE_RUNS) {
+        out->node[out->count++] = node;
+        return;
+    }
+    for (int i = 0; i < n;) {
+        int j = i;
+        while (j < n && !(skip >> j & 1u))
+            j++;
+        if (j > i) {
+            bvh_node *run = &out->runs[out->run_count];
+            *run = *nd;
+            run->first = nd->first + i;
+            run->count = j - i;
+            out->node[out->count++] = ~out->run_count++;
+        }
+        i = j + 1;
+    }
+}
+
+void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out, bvh_stats *stats)
 {
     bundle_cone c;
     int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
     out->count = -1;
-    if (b->exhaustive || b->node_count == 0 || !cone_make(b, apex, slack, centre, reach, &c))
+    if (b->exhaustive || b->node_count == 0 || !cone_make(b, rays, &c))
         return;
-    out->count = 0;
+    out->count = out->run_count = 0;
     if (stats)
         stats->nodes_visited++;
-    if (!cone_meets(&c, &b->nodes[0]))
+    if (!cone_meets_node(&c, &b->nodes[0]))
         return;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
-        if (out->count + sp + 1 >= BVH_BUNDLE_MAX || nd->count > 0) {
-            /* A leaf, or the list is full: kept whole, then the pending
-             * siblings in the order the walk would take them. */
+        if (nd->count > 0) {
+            keep_leaf(b, &c, rays, node, out);
+        } else if (out->count + sp + 1 >= BVH_BUNDLE_MAX) {
+            /* The list is full: kept whole, then the pending siblings in
+             * the order the walk would take them. */
             out->node[out->count++] = node;
-            if (nd->count == 0)
-                while (sp > 0)
-                    out->node[out->count++] = stack[--sp];
+            while (sp > 0)
+                out->node[out->count++] = stack[--sp];
         } else {
             int a = nd->first;
-            int ha = cone_meets(&c, &b->nodes[a]), hc = cone_meets(&c, &b->nodes[a + 1]);
+            int ha = cone_meets_node(&c, &b->nodes[a]), hc = cone_meets_node(&c, &b->nodes[a + 1]);
             if (stats)
                 stats->nodes_visited += 2;
             if (ha || hc) {

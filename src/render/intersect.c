@@ -1953,6 +1953,11 @@ ray ray_shadow_to(const shadow_start *st, vec3 target)
     return spawn_to_by(st->point, st->normal, target, st->offset);
 }
 
+vec3 ray_shadow_origin(const shadow_start *st, vec3 toward)
+{
+    return spawn_origin(st->point, st->normal, toward, st->offset);
+}
+
 /*@ requires \valid_read(st);
     requires vfinite(st->point);
     requires vfinite(st->normal) && vbounded(st->normal, 4);

@@ -252,6 +252,11 @@ typedef struct shadow_start {
 } shadow_start;
 shadow_start ray_shadow_start(const scene_prim *p, const hit *h);
 ray ray_shadow_to(const shadow_start *st, vec3 target);
+/* The origin of ray_shadow_to(st, target) for every target whose
+ * vec_dot(target - st->point, st->normal), rounded, is >= 0 when
+ * vec_dot(toward, st->normal) is, < 0 when it is: spawn_origin decides by
+ * that sign alone. */
+vec3 ray_shadow_origin(const shadow_start *st, vec3 toward);
 ray ray_shadow_along(const shadow_start *st, vec3 dir);
 
 #endif

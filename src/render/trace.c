@@ -247,14 +247,56 @@ typedef struct direct_sum {
  * the point, and is aimed at a sample inside the light's ball
  * ([SHADE-SHORTCUT-DARK-1]).
  */
+static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
+
+/*
+ * The side of the point's normal n every sample of the light lies on, as
+ * spawn_origin sees it (the sign of vec_dot(q - P, n), each rounded): 1
+ * (>= 0 for every sample), -1 (< 0 for every one), 0 (not known).  Over
+ * the light's box [L, H] the least value of (q - P).n is
+ * sum_a n_a ((n_a >= 0 ? L_a : H_a) - P_a), the greatest the other
+ * corner's.  Every |q_a - P_a| is at most S = the sum of the magnitudes of
+ * P, L and H, so the rounding of q - P and of the dot product moves
+ * spawn_origin's value by at most 4 eps N S (N = |n_x| + |n_y| + |n_z|),
+ * and the rounding of this bound by as much: a bound past 2^-40 N S +
+ * 2^-1000 decides (the term covers subnormal rounding).  |n|^2 >= 1/2 (a
+ * unit normal) makes vec_dot(-n, n) < 0, so ray_shadow_origin(-n) gives
+ * the origin of the -1 side.  Magnitudes past 2^400: 0.
+ */
+int trace_light_side(const shadow_start *from, const light_setup *setup)
+{
+    vec3 p = from->point, n = from->normal, lo = setup->box_lo, hi = setup->box_hi;
+    real size = sum_abs(p) + sum_abs(lo) + sum_abs(hi), nsum = sum_abs(n);
+    if (!(size < 0x1p400 && nsum < 16 && vec_length2(n) >= 0.5))
+        return 0;
+    const real pa[3] = {p.x, p.y, p.z}, na[3] = {n.x, n.y, n.z};
+    const real la[3] = {lo.x, lo.y, lo.z}, ha[3] = {hi.x, hi.y, hi.z};
+    real least = 0, most = 0, tol = 0x1p-40 * nsum * size + 0x1p-1000;
+    for (int a = 0; a < 3; a++) {
+        least += na[a] * ((na[a] >= 0 ? la[a] : ha[a]) - pa[a]);
+        most += na[a] * ((na[a] >= 0 ? ha[a] : la[a]) - pa[a]);
+    }
+    return least > tol ? 1 : most < -tol ? -1 : 0;
+}
+
 static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const scene_light *light,
                                       bvh_bundle *bundle, trace_stats *st)
 {
     if (bundle && bundle->count == BVH_BUNDLE_UNMADE) {
         const light_setup *setup = &t->lights[light - t->scene->lights];
         vec3 n = s->from.normal;
-        bvh_bundle_make(&t->accel, s->from.point, s->from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)),
-                        setup->centre, setup->reach, bundle, &st->bvh);
+        bvh_bundle_rays rays;
+        rays.apex = s->from.point;
+        rays.slack = s->from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
+        rays.lo = setup->reach >= 0 ? setup->box_lo : vec_splat(1);
+        rays.hi = setup->reach >= 0 ? setup->box_hi : vec_splat(-1);   /* lo > hi: no bundle */
+        rays.exact = 0;
+        int side = setup->reach >= 0 ? trace_light_side(&s->from, setup) : 0;
+        if (side != 0) {
+            rays.exact = 1;
+            rays.origin = ray_shadow_origin(&s->from, side > 0 ? n : vec_neg(n));
+        }
+        bvh_bundle_make(&t->accel, &rays, bundle, &st->bvh);
     }
     return bundle;
 }
@@ -319,6 +361,48 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
 }
 
 /*
+ * The box of light_ball's samples, axis by axis ([SHADE-SHORTCUT-BUNDLE-1]).
+ * A rectangle's point is position + (s edge_u + t edge_v), s, t in [0, 1),
+ * so its coordinate a lies between position_a plus the negative parts of
+ * the edges' and position_a plus their positive parts; a disk's is
+ * position_a + t1_a (x r) + t2_a (y r) with x^2 + y^2 <= 1 (a few ulps
+ * more), within r (|t1_a| + |t2_a|) of position_a, and within the ball's
+ * r sqrt(spread) (light_ball) too.  The rounding of the point (a few ulps
+ * of size) and of these bounds is covered as the ball's is: the factor
+ * 2^-30 of the half-width and the term 2^-40 4 size.  Called with size <
+ * 2^400, a finite ball.
+ */
+static void light_box(const scene_light *light, light_setup *setup, real size)
+{
+    real lo[3], hi[3];
+    const real p[3] = {light->position.x, light->position.y, light->position.z};
+    if (light->kind == LIGHT_RECTANGLE) {
+        const real u[3] = {light->edge_u.x, light->edge_u.y, light->edge_u.z};
+        const real v[3] = {light->edge_v.x, light->edge_v.y, light->edge_v.z};
+        for (int a = 0; a < 3; a++) {
+            real below = (u[a] < 0 ? u[a] : 0) + (v[a] < 0 ? v[a] : 0);
+            real above = (u[a] > 0 ? u[a] : 0) + (v[a] > 0 ? v[a] : 0);
+            real pad = 0x1p-30 * (above - below) + 0x1p-40 * 4 * size;
+            lo[a] = (p[a] + below) - pad;
+            hi[a] = (p[a] + above) + pad;
+        }
+    } else {
+        const real t1[3] = {setup->t1.x, setup->t1.y, setup->t1.z}, t2[3] = {setup->t2.x, setup->t2.y, setup->t2.z};
+        real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
+        real ball = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
+        for (int a = 0; a < 3; a++) {
+            real w = fabs(t1[a]) + fabs(t2[a]);
+            w = light->radius * (w < ball ? w : ball);
+            real pad = 0x1p-30 * w + 0x1p-40 * 4 * size;
+            lo[a] = (p[a] - w) - pad;
+            hi[a] = (p[a] + w) + pad;
+        }
+    }
+    setup->box_lo = vec_make(lo[0], lo[1], lo[2]);
+    setup->box_hi = vec_make(hi[0], hi[1], hi[2]);
+}
+
+/*
  * [SHADE-SHORTCUT-DARK-1] The ball around a distributed light that holds
  * every point light_point returns.  A disk's point is position + t1 (x r) +
  * t2 (y r) with x^2 + y^2 <= 1 (+ a few ulps: r cos, r sin of libm), so
@@ -352,6 +436,8 @@ static void light_ball(const scene_light *light, light_setup *setup)
     setup->reach = setup->reach * (1 + 0x1p-30) + 0x1p-40 * 4 * size;
     if (!(size < 0x1p400 && setup->reach < 0x1p400))
         setup->reach = -1;
+    else
+        light_box(light, setup, size);
 }
 
 /*

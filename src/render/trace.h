@@ -75,6 +75,10 @@ typedef struct light_setup {
      * ([SHADE-SHORTCUT-DARK-1]). */
     vec3 centre;
     real reach;
+    /* A box holding every sample point too, axis by axis (lo <= hi; only
+     * where reach >= 0): the rectangle's own, or the disk's
+     * ([SHADE-SHORTCUT-BUNDLE-1] aims the bundles at it). */
+    vec3 box_lo, box_hi;
 } light_setup;
 
 /* The transparent solids a ray is inside, innermost last (nested glass).
@@ -162,6 +166,12 @@ light_setup trace_light_setup(const scene_light *light, int samples);
  * for a hit of a ray with key `key`: the point the tracer shades with, bit
  * for bit. */
 vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j);
+
+/* The side of from's normal every sample of the light lies on, as
+ * spawn_origin decides it for ray_shadow_to(from, sample): 1 (the origin
+ * moved along +normal for every sample), -1 (along -normal for every one),
+ * 0 (not known).  setup->reach must be >= 0 (its box known). */
+int trace_light_side(const shadow_start *from, const light_setup *setup);
 
 /* Turns off every shortcut that leaves out work a scene does not need
  * (spec/shading.md, "Shortcuts"): every pass runs, every surface sends its
