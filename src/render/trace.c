@@ -623,14 +623,23 @@ static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const m
                      const glass_contact *touch, trace_stats *st);
 
 /* The mirror ray of a shaded point as `mirrored` traced it, for
- * [SHADE-SHORTCUT-TIR-1]: its ray, its colour, and what its tree added to
- * the counters that decide whether a render is refused. */
+ * [SHADE-SHORTCUT-TIR-1]: its colour and what its tree added to the
+ * counters.  Not the ray itself: it lives in shade's frame, which every
+ * bounce of the recursion holds ([REL-STACK-1]), and tir_is_mirror makes
+ * the ray again from the same arguments (the same pure functions, the
+ * same bits). */
 typedef struct mirror_trace {
     int traced;          /* 1: by trace_ray itself (no contact at its start) */
-    ray r;
+    int clean;           /* 1: its tree added nothing to medium_overflow and nonfinite */
+    long tree_rays;
     rgb c;
-    long tree_rays, medium_overflow, nonfinite;
 } mirror_trace;
+
+/* The mirror ray of the point of s for the incoming ray in. */
+static ray mirror_ray(const surface *s, const ray *in)
+{
+    return ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
+}
 
 /*
  * [SHADE-SHORTCUT-TIR-1] The totally reflected ray r is the mirror ray of
@@ -645,12 +654,17 @@ typedef struct mirror_trace {
  * nonfinite) and its ray count, added again, keeps within the budget:
  * then tracing it again would have added the same and no more.  Not with
  * the ray-tree hash (record_path), which would miss the second tree, nor
- * with the shortcuts off.  Returns 1 with the colour in *c.
+ * with the shortcuts off.  Returns 1 with the colour in *c.  Out of line:
+ * the mirror ray made again stays off the frame of `transmitted`, which a
+ * chain of total reflections holds once a bounce ([REL-STACK-1]).
  */
-static int tir_is_mirror(const tracer *t, const ray *r, const mirror_trace *m, trace_stats *st, rgb *c)
+static TRACE_OUTLINE int tir_is_mirror(const tracer *t, const surface *s, const ray *in, const ray *r,
+                                       const mirror_trace *m, trace_stats *st, rgb *c)
 {
-    if (!m->traced || t->no_shortcuts || t->keyed || st->record_path || st->tree_overflow ||
-        m->medium_overflow != 0 || m->nonfinite != 0 || memcmp(r, &m->r, sizeof *r) != 0)
+    if (!m->traced || t->no_shortcuts || t->keyed || st->record_path || st->tree_overflow || !m->clean)
+        return 0;
+    ray mirror = mirror_ray(s, in);
+    if (memcmp(r, &mirror, sizeof *r) != 0)
         return 0;
     if (t->max_tree_rays > 0 && st->tree_rays + m->tree_rays > t->max_tree_rays)
         return 0;
@@ -692,7 +706,7 @@ static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ra
         /* Totally reflected, the ray stays in `media`: `next` is not used. */
         st->medium_overflow = overflow_before;
         st->tir_rays++;
-        if (!tir_is_mirror(t, &r, mirror, st, &c))
+        if (!tir_is_mirror(t, s, in, &r, mirror, st, &c))
             c = trace_ray(t, &r, depth + 1, media, key, st);
         c = vec_scale(c, through);
     }
@@ -736,7 +750,7 @@ static TRACE_OUTLINE int mirror_meets_opaque(const tracer *t, const surface *s, 
 static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth, const medium_stack *media,
                     uint64_t key, int weightless, mirror_trace *m, trace_stats *st)
 {
-    ray r = ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
+    ray r = mirror_ray(s, in);
     st->reflection_rays++;
     long overflow_before = st->medium_overflow;
     rgb c;
@@ -752,11 +766,9 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
         long tree = st->tree_rays, overflow = st->medium_overflow, nonfinite = st->nonfinite;
         c = trace_ray(t, &r, depth + 1, media, key, st);
         m->traced = 1;
-        m->r = r;
-        m->c = c;
+        m->clean = st->medium_overflow == overflow && st->nonfinite == nonfinite;
         m->tree_rays = st->tree_rays - tree;
-        m->medium_overflow = st->medium_overflow - overflow;
-        m->nonfinite = st->nonfinite - nonfinite;
+        m->c = c;
     }
     forget_overflow(st, overflow_before, weightless);
     return c;
