@@ -324,6 +324,12 @@ static inline real vec_max_abs(vec3 v)
     return m > z ? m : z;
 }
 
+/* The 1-norm, |v_x| + |v_y| + |v_z| (summed in that order): a bound on
+ * every coordinate involved in a rounding argument (the bundles' margins,
+ * a light's side of a normal, a plane's pad). */
+/*@ assigns \nothing; */
+static inline real vec_sum_abs(vec3 v) { return fabs(v.x) + fabs(v.y) + fabs(v.z); }
+
 /*@ requires !\is_NaN(a.x) && !\is_NaN(a.y) && !\is_NaN(a.z);
     assigns \nothing;
     ensures EXACT(\result == \max(a.x, \max(a.y, a.z))); */

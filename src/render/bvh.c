@@ -218,7 +218,7 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
         nearest_add(ns, &d, 1);
         return;
     }
-    if (!isect_part_sheared(&prims[ref.prim], ref.part, &ns->rr, shear_for(&ns->sh, &prims[ref.prim]), &h))
+    if (!isect_part_sheared(p, ref.part, &ns->rr, shear_for(&ns->sh, p), &h))
         return;
     h.prim = ref.prim;
     nearest_add(ns, &h, 0);

@@ -61,8 +61,6 @@ typedef struct bundle_cone {
     real gap;                    /* g of the behind test */
 } bundle_cone;
 
-static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
-
 static real reciprocal(real k) { return k != 0.0 ? 1.0 / k : copysign(INFINITY, k); }
 
 static void narrow(real bound, int below, real *sn, real *sf)
@@ -96,8 +94,8 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
 
 static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
 {
-    real size = sum_abs(rays->apex) + sum_abs(rays->lo) + sum_abs(rays->hi) + rays->slack +
-                sum_abs(b->nodes[0].lo) + sum_abs(b->nodes[0].hi);
+    real size = vec_sum_abs(rays->apex) + vec_sum_abs(rays->lo) + vec_sum_abs(rays->hi) + rays->slack +
+                vec_sum_abs(b->nodes[0].lo) + vec_sum_abs(b->nodes[0].hi);
     if (!(rays->slack >= 0 && size < 0x1p400 && rays->lo.x <= rays->hi.x && rays->lo.y <= rays->hi.y &&
           rays->lo.z <= rays->hi.z))
         return 0;

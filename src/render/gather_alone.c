@@ -26,7 +26,7 @@ static int padded_box(const scene_prim *p, vec3 *lo, vec3 *hi, real *size)
 static int off_plane(vec3 n, vec3 p0, vec3 lo, vec3 hi, real size, real reach)
 {
     vec3 c = vec_scale(vec_add(lo, hi), 0.5), e = vec_scale(vec_sub(hi, lo), 0.5);
-    real n1 = fabs(n.x) + fabs(n.y) + fabs(n.z);
+    real n1 = vec_sum_abs(n);
     real half = fabs(n.x) * e.x + fabs(n.y) * e.y + fabs(n.z) * e.z;
     real pad = n1 * (2 * reach + 0x1p-20 * (vec_max_abs(p0) + size + reach));
     return fabs(vec_dot(n, vec_sub(c, p0))) - half > 2 * pad;

@@ -240,16 +240,6 @@ typedef struct direct_sum {
 } direct_sum;
 
 /*
- * [SHADE-SHORTCUT-BUNDLE-1] The nodes of the tree the shadow rays from this
- * point toward a distributed light may reach, made at its first shadow ray
- * (bvh_bundle_make): each ray starts at one of the two origins spawn_origin
- * makes, within offset * max |n_a| <= offset (|n_x| + |n_y| + |n_z|) of
- * the point, and is aimed at a sample inside the light's ball
- * ([SHADE-SHORTCUT-DARK-1]).
- */
-static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
-
-/*
  * The side of the point's normal n every sample of the light lies on, as
  * spawn_origin sees it (the sign of vec_dot(q - P, n), each rounded): 1
  * (>= 0 for every sample), -1 (< 0 for every one), 0 (not known).  Over
@@ -266,7 +256,7 @@ static real sum_abs(vec3 a) { return fabs(a.x) + fabs(a.y) + fabs(a.z); }
 int trace_light_side(const shadow_start *from, const light_setup *setup)
 {
     vec3 p = from->point, n = from->normal, lo = setup->box_lo, hi = setup->box_hi;
-    real size = sum_abs(p) + sum_abs(lo) + sum_abs(hi), nsum = sum_abs(n);
+    real size = vec_sum_abs(p) + vec_sum_abs(lo) + vec_sum_abs(hi), nsum = vec_sum_abs(n);
     if (!(size < 0x1p400 && nsum < 16 && vec_length2(n) >= 0.5))
         return 0;
     const real pa[3] = {p.x, p.y, p.z}, na[3] = {n.x, n.y, n.z};
@@ -279,6 +269,14 @@ int trace_light_side(const shadow_start *from, const light_setup *setup)
     return least > tol ? 1 : most < -tol ? -1 : 0;
 }
 
+/*
+ * [SHADE-SHORTCUT-BUNDLE-1] The nodes of the tree the shadow rays from this
+ * point toward a distributed light may reach, made at its first shadow ray
+ * (bvh_bundle_make): each ray starts at one of the two origins spawn_origin
+ * makes, within offset * max |n_a| <= offset (|n_x| + |n_y| + |n_z|) of
+ * the point (at exactly one of them where trace_light_side names its
+ * side), and is aimed at a sample inside the light's box (light_box).
+ */
 static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const scene_light *light,
                                       bvh_bundle *bundle, trace_stats *st)
 {
@@ -287,7 +285,7 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
         vec3 n = s->from.normal;
         bvh_bundle_rays rays;
         rays.apex = s->from.point;
-        rays.slack = s->from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
+        rays.slack = s->from.offset * vec_sum_abs(n);
         rays.lo = setup->reach >= 0 ? setup->box_lo : vec_splat(1);
         rays.hi = setup->reach >= 0 ? setup->box_hi : vec_splat(-1);   /* lo > hi: no bundle */
         rays.exact = 0;
@@ -367,12 +365,12 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
  * the edges' and position_a plus their positive parts; a disk's is
  * position_a + t1_a (x r) + t2_a (y r) with x^2 + y^2 <= 1 (a few ulps
  * more), within r (|t1_a| + |t2_a|) of position_a, and within the ball's
- * r sqrt(spread) (light_ball) too.  The rounding of the point (a few ulps
- * of size) and of these bounds is covered as the ball's is: the factor
- * 2^-30 of the half-width and the term 2^-40 4 size.  Called with size <
- * 2^400, a finite ball.
+ * r sqrt(spread) (light_ball: spread_root is its sqrt(spread)) too.  The
+ * rounding of the point (a few ulps of size) and of these bounds is
+ * covered as the ball's is: the factor 2^-30 of the half-width and the
+ * term 2^-40 4 size.  Called with size < 2^400, a finite ball.
  */
-static void light_box(const scene_light *light, light_setup *setup, real size)
+static void light_box(const scene_light *light, light_setup *setup, real size, real spread_root)
 {
     real lo[3], hi[3];
     const real p[3] = {light->position.x, light->position.y, light->position.z};
@@ -388,11 +386,9 @@ static void light_box(const scene_light *light, light_setup *setup, real size)
         }
     } else {
         const real t1[3] = {setup->t1.x, setup->t1.y, setup->t1.z}, t2[3] = {setup->t2.x, setup->t2.y, setup->t2.z};
-        real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
-        real ball = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
         for (int a = 0; a < 3; a++) {
             real w = fabs(t1[a]) + fabs(t2[a]);
-            w = light->radius * (w < ball ? w : ball);
+            w = light->radius * (w < spread_root ? w : spread_root);
             real pad = 0x1p-30 * w + 0x1p-40 * 4 * size;
             lo[a] = (p[a] - w) - pad;
             hi[a] = (p[a] + w) + pad;
@@ -414,14 +410,14 @@ static void light_box(const scene_light *light, light_setup *setup, real size)
  */
 static void light_ball(const scene_light *light, light_setup *setup)
 {
-    real size;
+    real size, spread_root = 0;
     setup->reach = -1;
     if (light->kind == LIGHT_DISK) {
         real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
-        real spread = (t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2));
+        spread_root = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
         size = vec_max_abs(light->position) + light->radius;
         setup->centre = light->position;
-        setup->reach = light->radius * sqrt(spread);
+        setup->reach = light->radius * spread_root;
     } else if (light->kind == LIGHT_RECTANGLE) {
         vec3 across = vec_add(light->edge_u, light->edge_v), along = vec_sub(light->edge_u, light->edge_v);
         /* The scaled length: a squared length below 2^-1022 is subnormal
@@ -437,7 +433,7 @@ static void light_ball(const scene_light *light, light_setup *setup)
     if (!(size < 0x1p400 && setup->reach < 0x1p400))
         setup->reach = -1;
     else
-        light_box(light, setup, size);
+        light_box(light, setup, size, spread_root);
 }
 
 /*
