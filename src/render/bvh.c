@@ -12,6 +12,7 @@
 #include <assert.h>
 #include "render/bvh.h"
 #include "render/slab.h"
+#include "render/slab_pair.h"
 #include "base/next_up.h"
 
 void bvh_free(bvh *b)
@@ -337,15 +338,63 @@ typedef struct stack_entry {
     real enter;
 } stack_entry;
 
+/* The ray of a walk: the slab ray, and where SSE2 tests both children of
+ * a node at once (slab_pair.h), its pair form. */
+typedef struct walk_ray {
+    slab_ray s;
+#ifdef SLAB_PAIR_SSE2
+    slab_pair_ray p;
+#endif
+} walk_ray;
+
+static inline void walk_ray_make(const ray *r, walk_ray *w)
+{
+    w->s = slab_make(r);
+#ifdef SLAB_PAIR_SSE2
+    slab_pair_make(&w->s, &w->p);
+#endif
+}
+
+/* Whether the ray meets node a (bit 0) and a + 1 (bit 1), their entries in
+ * *ta and *tc: node_hit of each.  oct as node_hit's. */
+static inline int children_hit(const bvh_node *a, const walk_ray *w, int oct, real tmin, real tmax, real *ta,
+                               real *tc)
+{
+#ifdef SLAB_PAIR_SSE2
+#define SLAB_PAIR_NEAR(k) ((oct >> (k)) & 1 ? slab_pair_hi_at(k) : slab_pair_lo_at(k))
+#define SLAB_PAIR_FAR(k) ((oct >> (k)) & 1 ? slab_pair_lo_at(k) : slab_pair_hi_at(k))
+    return slab_pair_meets(a, &w->p, SLAB_PAIR_NEAR(0), SLAB_PAIR_FAR(0), SLAB_PAIR_NEAR(1), SLAB_PAIR_FAR(1),
+                           SLAB_PAIR_NEAR(2), SLAB_PAIR_FAR(2), tmin, tmax, ta, tc);
+#undef SLAB_PAIR_NEAR
+#undef SLAB_PAIR_FAR
+#else
+    return node_hit(a, &w->s, oct, tmin, tmax, ta) | node_hit(a + 1, &w->s, oct, tmin, tmax, tc) << 1;
+#endif
+}
+
+/* children_hit for the walk made once for all octants (node_hit_any). */
+static inline int children_hit_any(const bvh_node *a, const walk_ray *w, real tmin, real tmax)
+{
+    real ta, tc;
+#ifdef SLAB_PAIR_SSE2
+    const slab_pair_ray *p = &w->p;
+    return slab_pair_meets(a, p, p->near_at[0], p->far_at[0], p->near_at[1], p->far_at[1], p->near_at[2],
+                           p->far_at[2], tmin, tmax, &ta, &tc);
+#else
+    return node_hit_any(a, &w->s, tmin, tmax, &ta) | node_hit_any(a + 1, &w->s, tmin, tmax, &tc) << 1;
+#endif
+}
+
 /* Among the children of an inner node that the ray meets, goes to the
  * nearer and pushes the other; returns the next node or -1. */
-static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const slab_ray *s, int oct, nearest *ns,
+static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray *s, int oct, nearest *ns,
                                            stack_entry *stack, int *sp)
 {
     int a = b->nodes[node].first, c = a + 1;
     real ta, tc;
-    int ha = node_hit(&b->nodes[a], s, oct, ns->rr.tmin, ns->rr.tmax, &ta) || b->exhaustive;
-    int hc = node_hit(&b->nodes[c], s, oct, ns->rr.tmin, ns->rr.tmax, &tc) || b->exhaustive;
+    int met = children_hit(&b->nodes[a], s, oct, ns->rr.tmin, ns->rr.tmax, &ta, &tc);
+    int ha = (met & 1) || b->exhaustive;
+    int hc = (met & 2) || b->exhaustive;
     if (ns->stats)
         ns->stats->nodes_visited += 2;
     if (ha && hc) {
@@ -359,15 +408,15 @@ static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const slab_ray
 }
 
 static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scene_prim *prims, nearest *ns,
-                                                        const slab_ray *sr, int oct)
+                                                        const walk_ray *sr, int oct)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
     real enter;
-    const slab_ray copy = *sr, *s = &copy;
+    const walk_ray copy = *sr, *s = &copy;
     if (ns->stats)
         ns->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
+    if (!node_hit(&b->nodes[0], &s->s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
         return;
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
@@ -392,8 +441,9 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
 /* One copy of the walk per octant (BVH_OCTANT_COPY). */
 static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
-    slab_ray s = slab_make(&ns->rr);
-    switch (slab_octant(&s)) {
+    walk_ray s;
+    walk_ray_make(&ns->rr, &s);
+    switch (slab_octant(&s.s)) {
     case 0: traverse_nearest_oct(b, prims, ns, &s, 0); break;
     case 1: traverse_nearest_oct(b, prims, ns, &s, 1); break;
     case 2: traverse_nearest_oct(b, prims, ns, &s, 2); break;
@@ -541,26 +591,27 @@ static int walk_other(void *ctx, int item)
  * call copied the slab ray and saved its registers again.  A start below 0
  * is ~i, the bundle's own node runs[i]: a run of a kept leaf's parts, with
  * the leaf's box (bvh_bundle_make). */
-static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const int *start, const bvh_node *runs,
+static int traverse_from(const bvh *b, const walk *w, const walk_ray *sr, const int *start, const bvh_node *runs,
                          int starts)
 {
     int stack[BVH_MAX_DEPTH];
     real tmin = w->node_tmin, tmax = w->r->tmax, enter;
     /* A copy: through the pointer each test would load it again, the
      * callback being opaque to the compiler. */
-    const slab_ray copy = *sr, *s = &copy;
+    const walk_ray copy = *sr, *s = &copy;
     for (int k = 0; k < starts; k++) {
         int sp = 0;
         const bvh_node *nd = start[k] >= 0 ? &b->nodes[start[k]] : &runs[~start[k]];
         if (w->stats)
             w->stats->nodes_visited++;
-        if (!node_hit_any(nd, s, tmin, tmax, &enter) && !b->exhaustive)
+        if (!node_hit_any(nd, &s->s, tmin, tmax, &enter) && !b->exhaustive)
             continue;
         for (;;) {
             if (nd->count == 0) {
                 int a = nd->first;
-                int ha = node_hit_any(&b->nodes[a], s, tmin, tmax, &enter) || b->exhaustive;
-                int hc = node_hit_any(&b->nodes[a + 1], s, tmin, tmax, &enter) || b->exhaustive;
+                int met = children_hit_any(&b->nodes[a], s, tmin, tmax);
+                int ha = (met & 1) || b->exhaustive;
+                int hc = (met & 2) || b->exhaustive;
                 if (w->stats)
                     w->stats->nodes_visited += 2;
                 if (ha) {
@@ -616,7 +667,8 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
     static const int root = 0;
-    slab_ray s = slab_make(w->r);
+    walk_ray s;
+    walk_ray_make(w->r, &s);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
                          bundle ? bundle->count : 1);
 }
