@@ -7,6 +7,7 @@
 #include "testlib.h"
 #include "render/bvh.h"
 #include "render/slab.h"
+#include "render/slab_pair.h"
 #include "base/xform.h"
 
 /* Counter-based generator: splitmix64's finaliser of seed and counter. */
@@ -817,6 +818,48 @@ END_TEST
  * pad decides.  The hand cases: direction (1, 1, 1) (1/d = 1) from the
  * origin, so each slab's t is its plane's coordinate; the pad makes an exit
  * e into e (1 + 2^-50) for e >= 0 and e (1 - 2^-50) below 0. */
+/* A random box in [-4, 4]^3. */
+static void slab_case_box(rng *g, vec3 *lo, vec3 *hi)
+{
+    vec3 a = rng_box(g, -4, 4), b = rng_box(g, -4, 4);
+    *lo = vec_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
+    *hi = vec_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
+}
+
+/* A random ray for the box [lo, hi]: at times with zero direction
+ * components (+0 or -0), its origin on a y plane of the box (0 * inf =
+ * NaN), tmin below 0 and tmax infinite. */
+static void slab_case_ray(rng *g, vec3 lo, vec3 hi, ray *r)
+{
+    r->origin = rng_box(g, -6, 6);
+    r->dir = rng_unit(g);
+    int k = (int)(rng_uniform(g) * 8);
+    if (k & 1)
+        r->dir.x = 0;
+    if (k & 2)
+        r->origin.y = rng_uniform(g) < 0.5 ? lo.y : hi.y;
+    if (k & 4)
+        r->dir.y = rng_uniform(g) < 0.5 ? 0.0 : -0.0;
+    r->tmin = rng_uniform(g) < 0.25 ? -rng_range(g, 0, 8) : rng_range(g, 0, 2) * (rng_uniform(g) < 0.5);
+    r->tmax = rng_uniform(g) < 0.2 ? INFINITY : r->tmin + rng_range(g, 0, 12);
+}
+
+/* Exits near an entry, where the pad decides: a box edge moved to an
+ * other axis's plane along the ray, nudged by a few ulps. */
+static void slab_case_nudge(rng *g, const ray *r, vec3 *lo, vec3 *hi)
+{
+    if (rng_uniform(g) < 0.3 && r->dir.x != 0 && r->dir.z != 0) {
+        real t = (lo->z - r->origin.z) / r->dir.z;
+        real x = r->origin.x + t * r->dir.x;
+        int ulps = (int)(rng_uniform(g) * 9) - 4;
+        x = x + ulps * 0x1p-52 * fabs(x);
+        if (r->dir.x > 0 && x > lo->x)
+            hi->x = x;
+        else if (r->dir.x < 0 && x < hi->x)
+            lo->x = x;
+    }
+}
+
 static int meets_by_hand(vec3 lo, vec3 hi, real tmin, real tmax)
 {
     ray r = {vec_make(0, 0, 0), vec_make(1, 1, 1), tmin, tmax};
@@ -845,31 +888,11 @@ START_TEST(test_slab_box_meets_is_slab_box)
      * tmax: the same answer as slab_box's interval and its entry's bits. */
     rng g = {16, 0};
     for (int i = 0; i < 200000; i++) {
-        vec3 a = rng_box(&g, -4, 4), b = rng_box(&g, -4, 4);
-        vec3 lo = vec_make(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z));
-        vec3 hi = vec_make(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z));
-        ray r = {rng_box(&g, -6, 6), rng_unit(&g), 0, 0};
-        int k = (int)(rng_uniform(&g) * 8);
-        if (k & 1)
-            r.dir.x = 0;
-        if (k & 2)
-            r.origin.y = rng_uniform(&g) < 0.5 ? lo.y : hi.y;
-        if (k & 4)
-            r.dir.y = rng_uniform(&g) < 0.5 ? 0.0 : -0.0;
-        r.tmin = rng_uniform(&g) < 0.25 ? -rng_range(&g, 0, 8) : rng_range(&g, 0, 2) * (rng_uniform(&g) < 0.5);
-        r.tmax = rng_uniform(&g) < 0.2 ? INFINITY : r.tmin + rng_range(&g, 0, 12);
-        /* Exits near an entry, where the pad decides: a box edge moved to
-         * an other axis's plane along the ray, nudged by a few ulps. */
-        if (rng_uniform(&g) < 0.3 && r.dir.x != 0 && r.dir.z != 0) {
-            real t = (lo.z - r.origin.z) / r.dir.z;
-            real x = r.origin.x + t * r.dir.x;
-            int ulps = (int)(rng_uniform(&g) * 9) - 4;
-            x = x + ulps * 0x1p-52 * fabs(x);
-            if (r.dir.x > 0 && x > lo.x)
-                hi.x = x;
-            else if (r.dir.x < 0 && x < hi.x)
-                lo.x = x;
-        }
+        vec3 lo, hi;
+        ray r;
+        slab_case_box(&g, &lo, &hi);
+        slab_case_ray(&g, lo, hi, &r);
+        slab_case_nudge(&g, &r, &lo, &hi);
         slab_ray s = slab_make(&r);
         real tn = r.tmin, tf = r.tmax, enter;
         slab_box(lo, hi, &s, &tn, &tf);
@@ -878,6 +901,83 @@ START_TEST(test_slab_box_meets_is_slab_box)
         ck_assert_msg(same_real_bits(enter, tn) || (enter != enter && tn != tn),
                       "case %d: entry %.17g vs %.17g", i, (double)enter, (double)tn);
     }
+}
+END_TEST
+
+#ifdef SLAB_PAIR_SSE2
+/* slab_pair_meets for two nodes and a ray: its mask against slab_box's
+ * interval for each box, its entries' bits against slab_box's. */
+static void check_pair(const bvh_node nodes[2], const ray *r, int i)
+{
+    slab_ray s = slab_make(r);
+    slab_pair_ray p;
+    slab_pair_make(&s, &p);
+    real ta, tc;
+    int got = slab_pair_meets(nodes, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
+                              p.far_at[2], r->tmin, r->tmax, &ta, &tc);
+    for (int k = 0; k < 2; k++) {
+        real tn = r->tmin, tf = r->tmax, enter = k ? tc : ta;
+        slab_box(nodes[k].lo, nodes[k].hi, &s, &tn, &tf);
+        ck_assert_msg(((got >> k) & 1) == (tn <= tf), "case %d, node %d: %d, slab_box %d", i, k, (got >> k) & 1,
+                      tn <= tf);
+        ck_assert_msg(same_real_bits(enter, tn), "case %d, node %d: entry %.17g vs %.17g", i, k, (double)enter,
+                      (double)tn);
+    }
+}
+#endif
+
+START_TEST(test_slab_pair_meets_is_slab_box)
+{
+#ifdef SLAB_PAIR_SSE2
+    /* By hand, the ray (0,0,0) + t (1,1,1): node 0 met only through the
+     * pad (entry 1 + 2^-52, exit 1), node 1 past it (entry 1 + 2^-49); and
+     * swapped, so that each lane is seen both ways. */
+    bvh_node n[2] = {{vec_make(0, 1 + 0x1p-52, 0), vec_make(1, 2, 2), 0, 1},
+                     {vec_make(0, 1 + 0x1p-49, 0), vec_make(1, 2, 2), 0, 1}};
+    ray r = {vec_make(0, 0, 0), vec_make(1, 1, 1), -10, 10};
+    slab_ray s = slab_make(&r);
+    slab_pair_ray p;
+    slab_pair_make(&s, &p);
+    real ta, tc;
+    ck_assert_int_eq(slab_pair_meets(n, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
+                                     p.far_at[2], -10, 10, &ta, &tc), 1);
+    ck_assert(ta == 1 + 0x1p-52 && tc == 1 + 0x1p-49);
+    bvh_node m[2] = {n[1], n[0]};
+    ck_assert_int_eq(slab_pair_meets(m, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
+                                     p.far_at[2], -10, 10, &ta, &tc), 2);
+    /* Behind the origin: exit -1 padded toward 0 holds the entry
+     * -1 + 2^-51 (node 0), not -1 + 2^-49 (node 1). */
+    bvh_node b[2] = {{vec_make(-2, -1 + 0x1p-51, -2), vec_make(-1, 0, 0), 0, 1},
+                     {vec_make(-2, -1 + 0x1p-49, -2), vec_make(-1, 0, 0), 0, 1}};
+    ck_assert_int_eq(slab_pair_meets(b, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
+                                     p.far_at[2], -10, 10, &ta, &tc), 1);
+
+    /* Random pairs as test_slab_box_meets_is_slab_box's boxes: the ray made
+     * for node 0 (its origin on one of node 0's planes at times), node 1
+     * nudged to the ray's entry into it, or with the origin on its plane. */
+    rng g = {18, 0};
+    for (int i = 0; i < 200000; i++) {
+        bvh_node nodes[2];
+        ray q;
+        for (int k = 0; k < 2; k++) {
+            slab_case_box(&g, &nodes[k].lo, &nodes[k].hi);
+            nodes[k].first = 0;
+            nodes[k].count = 1;
+        }
+        slab_case_ray(&g, nodes[0].lo, nodes[0].hi, &q);
+        slab_case_nudge(&g, &q, &nodes[1].lo, &nodes[1].hi);
+        if (rng_uniform(&g) < 0.25)
+            nodes[1].hi.y = q.origin.y < nodes[1].lo.y ? nodes[1].lo.y : q.origin.y;
+        if (rng_uniform(&g) < 0.5) {
+            bvh_node t = nodes[0];
+            nodes[0] = nodes[1];
+            nodes[1] = t;
+        }
+        check_pair(nodes, &q, i);
+    }
+#else
+    ck_assert_msg(1, "no SSE2: the walks test each child by slab_box_meets_neg");
+#endif
 }
 END_TEST
 
@@ -953,6 +1053,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
     tcase_add_test(tc, test_slab_box_meets_is_slab_box);
+    tcase_add_test(tc, test_slab_pair_meets_is_slab_box);
     suite_add_tcase(s, tc);
     return s;
 }
