@@ -905,16 +905,28 @@ START_TEST(test_slab_box_meets_is_slab_box)
 END_TEST
 
 #ifdef SLAB_PAIR_SSE2
-/* slab_pair_meets for two nodes and a ray: its mask against slab_box's
+/* slab_pair_meets of the pair form of s, with the offsets of its neg
+ * flags. */
+static int pair_meets(const bvh_node nodes[2], const slab_ray *s, real tmin, real tmax, real *ta, real *tc)
+{
+    slab_pair_ray p;
+    slab_pair_make(s, &p);
+    return slab_pair_meets(nodes, &p, slab_pair_near_at(0, s->neg[0]), slab_pair_far_at(0, s->neg[0]),
+                           slab_pair_near_at(1, s->neg[1]), slab_pair_far_at(1, s->neg[1]),
+                           slab_pair_near_at(2, s->neg[2]), slab_pair_far_at(2, s->neg[2]), tmin, tmax, ta, tc);
+}
+
+/* slab_pair_meets (and slab_pair_meets_slab, which must agree with it to
+ * the bit) for two nodes and a ray: its mask against slab_box's
  * interval for each box, its entries' bits against slab_box's. */
 static void check_pair(const bvh_node nodes[2], const ray *r, int i)
 {
     slab_ray s = slab_make(r);
-    slab_pair_ray p;
-    slab_pair_make(&s, &p);
-    real ta, tc;
-    int got = slab_pair_meets(nodes, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
-                              p.far_at[2], r->tmin, r->tmax, &ta, &tc);
+    real ta, tc, sa, sc;
+    int got = pair_meets(nodes, &s, r->tmin, r->tmax, &ta, &tc);
+    int from_slab = slab_pair_meets_slab(nodes, &s, r->tmin, r->tmax, &sa, &sc);
+    ck_assert_msg(from_slab == got && same_real_bits(sa, ta) && same_real_bits(sc, tc),
+                  "case %d: slab_pair_meets_slab %d, slab_pair_meets %d", i, from_slab, got);
     for (int k = 0; k < 2; k++) {
         real tn = r->tmin, tf = r->tmax, enter = k ? tc : ta;
         slab_box(nodes[k].lo, nodes[k].hi, &s, &tn, &tf);
@@ -936,21 +948,19 @@ START_TEST(test_slab_pair_meets_is_slab_box)
                      {vec_make(0, 1 + 0x1p-49, 0), vec_make(1, 2, 2), 0, 1}};
     ray r = {vec_make(0, 0, 0), vec_make(1, 1, 1), -10, 10};
     slab_ray s = slab_make(&r);
-    slab_pair_ray p;
-    slab_pair_make(&s, &p);
     real ta, tc;
-    ck_assert_int_eq(slab_pair_meets(n, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
-                                     p.far_at[2], -10, 10, &ta, &tc), 1);
+    ck_assert_int_eq(pair_meets(n, &s, -10, 10, &ta, &tc), 1);
     ck_assert(ta == 1 + 0x1p-52 && tc == 1 + 0x1p-49);
+    ck_assert_int_eq(slab_pair_meets_slab(n, &s, -10, 10, &ta, &tc), 1);
     bvh_node m[2] = {n[1], n[0]};
-    ck_assert_int_eq(slab_pair_meets(m, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
-                                     p.far_at[2], -10, 10, &ta, &tc), 2);
+    ck_assert_int_eq(pair_meets(m, &s, -10, 10, &ta, &tc), 2);
+    ck_assert_int_eq(slab_pair_meets_slab(m, &s, -10, 10, &ta, &tc), 2);
     /* Behind the origin: exit -1 padded toward 0 holds the entry
      * -1 + 2^-51 (node 0), not -1 + 2^-49 (node 1). */
     bvh_node b[2] = {{vec_make(-2, -1 + 0x1p-51, -2), vec_make(-1, 0, 0), 0, 1},
                      {vec_make(-2, -1 + 0x1p-49, -2), vec_make(-1, 0, 0), 0, 1}};
-    ck_assert_int_eq(slab_pair_meets(b, &p, p.near_at[0], p.far_at[0], p.near_at[1], p.far_at[1], p.near_at[2],
-                                     p.far_at[2], -10, 10, &ta, &tc), 1);
+    ck_assert_int_eq(pair_meets(b, &s, -10, 10, &ta, &tc), 1);
+    ck_assert_int_eq(slab_pair_meets_slab(b, &s, -10, 10, &ta, &tc), 1);
 
     /* Random pairs as test_slab_box_meets_is_slab_box's boxes: the ray made
      * for node 0 (its origin on one of node 0's planes at times), node 1

@@ -338,8 +338,12 @@ typedef struct stack_entry {
     real enter;
 } stack_entry;
 
-/* The ray of a walk: the slab ray, and where SSE2 tests both children of
- * a node at once (slab_pair.h), its pair form. */
+/* The slab ray of the nearest walk, and where SSE2 tests both children
+ * of a node at once its pair form (slab_pair.h), made once the root is
+ * met.  The shadow walks (traverse_from) keep the test of one node: made
+ * for every shadow ray, or at its first inner node, the pair form cost
+ * demo.scene 5 % and 1.6 % more instructions (a bundle's walk starts
+ * from kept nodes, many of them leaves). */
 typedef struct walk_ray {
     slab_ray s;
 #ifdef SLAB_PAIR_SSE2
@@ -347,41 +351,19 @@ typedef struct walk_ray {
 #endif
 } walk_ray;
 
-static inline void walk_ray_make(const ray *r, walk_ray *w)
-{
-    w->s = slab_make(r);
-#ifdef SLAB_PAIR_SSE2
-    slab_pair_make(&w->s, &w->p);
-#endif
-}
-
 /* Whether the ray meets node a (bit 0) and a + 1 (bit 1), their entries in
- * *ta and *tc: node_hit of each.  oct as node_hit's. */
-static inline int children_hit(const bvh_node *a, const walk_ray *w, int oct, real tmin, real tmax, real *ta,
-                               real *tc)
+ * *ta and *tc: node_hit of each.  oct as node_hit's, a constant in each
+ * copy of the walk: the pair test's offsets fold. */
+static inline BVH_OCTANT_COPY int children_hit(const bvh_node *a, const walk_ray *w, int oct, real tmin, real tmax,
+                                               real *ta, real *tc)
 {
 #ifdef SLAB_PAIR_SSE2
-#define SLAB_PAIR_NEAR(k) ((oct >> (k)) & 1 ? slab_pair_hi_at(k) : slab_pair_lo_at(k))
-#define SLAB_PAIR_FAR(k) ((oct >> (k)) & 1 ? slab_pair_lo_at(k) : slab_pair_hi_at(k))
-    return slab_pair_meets(a, &w->p, SLAB_PAIR_NEAR(0), SLAB_PAIR_FAR(0), SLAB_PAIR_NEAR(1), SLAB_PAIR_FAR(1),
-                           SLAB_PAIR_NEAR(2), SLAB_PAIR_FAR(2), tmin, tmax, ta, tc);
-#undef SLAB_PAIR_NEAR
-#undef SLAB_PAIR_FAR
+    int nx = oct & 1, ny = (oct >> 1) & 1, nz = (oct >> 2) & 1;
+    return slab_pair_meets(a, &w->p, slab_pair_near_at(0, nx), slab_pair_far_at(0, nx), slab_pair_near_at(1, ny),
+                           slab_pair_far_at(1, ny), slab_pair_near_at(2, nz), slab_pair_far_at(2, nz), tmin, tmax, ta,
+                           tc);
 #else
     return node_hit(a, &w->s, oct, tmin, tmax, ta) | node_hit(a + 1, &w->s, oct, tmin, tmax, tc) << 1;
-#endif
-}
-
-/* children_hit for the walk made once for all octants (node_hit_any). */
-static inline int children_hit_any(const bvh_node *a, const walk_ray *w, real tmin, real tmax)
-{
-    real ta, tc;
-#ifdef SLAB_PAIR_SSE2
-    const slab_pair_ray *p = &w->p;
-    return slab_pair_meets(a, p, p->near_at[0], p->far_at[0], p->near_at[1], p->far_at[1], p->near_at[2],
-                           p->far_at[2], tmin, tmax, &ta, &tc);
-#else
-    return node_hit_any(a, &w->s, tmin, tmax, &ta) | node_hit_any(a + 1, &w->s, tmin, tmax, &tc) << 1;
 #endif
 }
 
@@ -408,16 +390,20 @@ static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray
 }
 
 static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scene_prim *prims, nearest *ns,
-                                                        const walk_ray *sr, int oct)
+                                                        const slab_ray *sr, int oct)
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
     real enter;
-    const walk_ray copy = *sr, *s = &copy;
+    walk_ray w, *s = &w;
+    w.s = *sr;
     if (ns->stats)
         ns->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], &s->s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
+    if (!node_hit(&b->nodes[0], &w.s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
         return;
+#ifdef SLAB_PAIR_SSE2
+    slab_pair_make(&w.s, &w.p);
+#endif
     for (;;) {
         const bvh_node *nd = &b->nodes[node];
         if (nd->count > 0) {
@@ -441,9 +427,8 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
 /* One copy of the walk per octant (BVH_OCTANT_COPY). */
 static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
-    walk_ray s;
-    walk_ray_make(&ns->rr, &s);
-    switch (slab_octant(&s.s)) {
+    slab_ray s = slab_make(&ns->rr);
+    switch (slab_octant(&s)) {
     case 0: traverse_nearest_oct(b, prims, ns, &s, 0); break;
     case 1: traverse_nearest_oct(b, prims, ns, &s, 1); break;
     case 2: traverse_nearest_oct(b, prims, ns, &s, 2); break;
@@ -582,6 +567,20 @@ static int walk_other(void *ctx, int item)
     return n > 0 ? w->count_fn(w->ctx, l->b->items[item], n) : 0;
 }
 
+#ifdef SLAB_PAIR_SSE2
+/* The pair test for traverse_from, out of line: inlined, it grew the
+ * walk's loop, which a bundle's walk (many starts, few inner nodes) runs
+ * through far more often than it descends (demo.scene +1.4 %). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int children_meet_any(const bvh_node *a, const slab_ray *s, real tmin, real tmax)
+{
+    real ta, tc;
+    return slab_pair_meets_slab(a, s, tmin, tmax, &ta, &tc);
+}
+#endif
+
 /* Depth-first over every node below each of start[0..starts-1] (itself
  * included) that the ray meets, the starts in turn, the first child first.
  * Both children of an inner node are tested together (adjacent in memory,
@@ -591,25 +590,30 @@ static int walk_other(void *ctx, int item)
  * call copied the slab ray and saved its registers again.  A start below 0
  * is ~i, the bundle's own node runs[i]: a run of a kept leaf's parts, with
  * the leaf's box (bvh_bundle_make). */
-static int traverse_from(const bvh *b, const walk *w, const walk_ray *sr, const int *start, const bvh_node *runs,
+static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const int *start, const bvh_node *runs,
                          int starts)
 {
     int stack[BVH_MAX_DEPTH];
     real tmin = w->node_tmin, tmax = w->r->tmax, enter;
     /* A copy: through the pointer each test would load it again, the
      * callback being opaque to the compiler. */
-    const walk_ray copy = *sr, *s = &copy;
+    const slab_ray copy = *sr, *s = &copy;
     for (int k = 0; k < starts; k++) {
         int sp = 0;
         const bvh_node *nd = start[k] >= 0 ? &b->nodes[start[k]] : &runs[~start[k]];
         if (w->stats)
             w->stats->nodes_visited++;
-        if (!node_hit_any(nd, &s->s, tmin, tmax, &enter) && !b->exhaustive)
+        if (!node_hit_any(nd, s, tmin, tmax, &enter) && !b->exhaustive)
             continue;
         for (;;) {
             if (nd->count == 0) {
                 int a = nd->first;
-                int met = children_hit_any(&b->nodes[a], s, tmin, tmax);
+#ifdef SLAB_PAIR_SSE2
+                int met = children_meet_any(&b->nodes[a], s, tmin, tmax);
+#else
+                int met = node_hit_any(&b->nodes[a], s, tmin, tmax, &enter) |
+                          node_hit_any(&b->nodes[a + 1], s, tmin, tmax, &enter) << 1;
+#endif
                 int ha = (met & 1) || b->exhaustive;
                 int hc = (met & 2) || b->exhaustive;
                 if (w->stats)
@@ -667,8 +671,7 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
     static const int root = 0;
-    walk_ray s;
-    walk_ray_make(w->r, &s);
+    slab_ray s = slab_make(w->r);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
                          bundle ? bundle->count : 1);
 }

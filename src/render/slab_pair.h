@@ -28,12 +28,13 @@
 #define SLAB_PAIR_SSE2 1
 #include <emmintrin.h>
 
-/* A ray prepared for pair tests: origin and 1/d in both lanes, and per
- * axis the byte offsets in a bvh_node of its near and far bound (hi for a
- * negative direction, as slab_ends chooses). */
+/* Inlined at every call, so that a walk's constant offsets fold (gcc and
+ * clang, the compilers that define __SSE2__, know the attribute). */
+#define SLAB_PAIR_INLINE __attribute__((always_inline))
+
+/* A ray prepared for pair tests: origin and 1/d in both lanes. */
 typedef struct slab_pair_ray {
     __m128d o[3], inv[3];
-    size_t near_at[3], far_at[3];
 } slab_pair_ray;
 
 /* +inf, the sign bit, the pad and 1 in both lanes, each an aligned load
@@ -41,14 +42,27 @@ typedef struct slab_pair_ray {
 static const double slab_pair_k[4][2] __attribute__((aligned(16))) = {
     {INFINITY, INFINITY}, {-0.0, -0.0}, {SLAB_EXIT_PAD, SLAB_EXIT_PAD}, {1.0, 1.0}};
 
-static inline size_t slab_pair_lo_at(int axis)
+/* The byte offsets in a bvh_node of an axis's lower and upper bound. */
+static inline SLAB_PAIR_INLINE size_t slab_pair_lo_at(int axis)
 {
     return offsetof(bvh_node, lo) + (size_t)axis * sizeof(real);
 }
 
-static inline size_t slab_pair_hi_at(int axis)
+static inline SLAB_PAIR_INLINE size_t slab_pair_hi_at(int axis)
 {
     return offsetof(bvh_node, hi) + (size_t)axis * sizeof(real);
+}
+
+/* The offset of an axis's near bound for a ray whose neg flag is neg (hi
+ * for a negative direction, as slab_ends chooses), or of its far one. */
+static inline SLAB_PAIR_INLINE size_t slab_pair_near_at(int axis, int neg)
+{
+    return neg ? slab_pair_hi_at(axis) : slab_pair_lo_at(axis);
+}
+
+static inline SLAB_PAIR_INLINE size_t slab_pair_far_at(int axis, int neg)
+{
+    return neg ? slab_pair_lo_at(axis) : slab_pair_hi_at(axis);
 }
 
 static inline void slab_pair_make(const slab_ray *s, slab_pair_ray *p)
@@ -57,14 +71,12 @@ static inline void slab_pair_make(const slab_ray *s, slab_pair_ray *p)
     for (int k = 0; k < 3; k++) {
         p->o[k] = _mm_set1_pd(o[k]);
         p->inv[k] = _mm_set1_pd(inv[k]);
-        p->near_at[k] = s->neg[k] ? slab_pair_hi_at(k) : slab_pair_lo_at(k);
-        p->far_at[k] = s->neg[k] ? slab_pair_lo_at(k) : slab_pair_hi_at(k);
     }
 }
 
 /* The bound at byte offset `at` of node a in the low lane, of a + 1 in the
  * high one. */
-static inline __m128d slab_pair_load(const bvh_node *a, size_t at)
+static inline SLAB_PAIR_INLINE __m128d slab_pair_load(const bvh_node *a, size_t at)
 {
     const char *p = (const char *)(const void *)a + at;
     return _mm_loadh_pd(_mm_load_sd((const double *)(const void *)p),
@@ -73,7 +85,7 @@ static inline __m128d slab_pair_load(const bvh_node *a, size_t at)
 
 /* One axis: its entry into the running maximum *tn, its exit into the
  * running least *least. */
-static inline void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_at, __m128d o, __m128d inv,
+static inline SLAB_PAIR_INLINE void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_at, __m128d o, __m128d inv,
                                   __m128d *tn, __m128d *least)
 {
     __m128d t0 = _mm_mul_pd(_mm_sub_pd(slab_pair_load(a, near_at), o), inv);
@@ -82,26 +94,49 @@ static inline void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_
     *least = _mm_min_pd(t1, *least);
 }
 
-/*
- * Whether the ray meets node a (bit 0) and node a + 1 (bit 1) within
- * [tmin, tmax], with their entries in *ta and *tc: slab_box_meets_neg of
- * each.  The offsets are the ray's own (slab_pair_make), or constants
- * where the walk is made once per octant.  Written out axis by axis (a
- * loop over the axes was kept as one, its offsets in memory).
- */
-static inline int slab_pair_meets(const bvh_node *a, const slab_pair_ray *s, size_t nx, size_t fx, size_t ny,
-                                  size_t fy, size_t nz, size_t fz, real tmin, real tmax, real *ta, real *tc)
+/* The pad of the least exits, the cap by tmax and the answer (the scalar
+ * test's last lines, slab_box_meets_neg); the entries to *ta and *tc. */
+static inline SLAB_PAIR_INLINE int slab_pair_end(__m128d tn, __m128d least, real tmax, real *ta, real *tc)
 {
-    __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);
-    slab_pair_axis(a, nx, fx, s->o[0], s->inv[0], &tn, &least);
-    slab_pair_axis(a, ny, fy, s->o[1], s->inv[1], &tn, &least);
-    slab_pair_axis(a, nz, fz, s->o[2], s->inv[2], &tn, &least);
     __m128d pad = _mm_or_pd(_mm_and_pd(least, _mm_load_pd(slab_pair_k[1])), _mm_load_pd(slab_pair_k[2]));
     least = _mm_mul_pd(least, _mm_add_pd(_mm_load_pd(slab_pair_k[3]), pad));
     __m128d met = _mm_cmple_pd(tn, _mm_min_pd(least, _mm_set1_pd(tmax)));
     _mm_storel_pd(ta, tn);
     _mm_storeh_pd(tc, tn);
     return _mm_movemask_pd(met);
+}
+
+/*
+ * Whether the ray meets node a (bit 0) and node a + 1 (bit 1) within
+ * [tmin, tmax], with their entries in *ta and *tc: slab_box_meets_neg of
+ * each.  The offsets are slab_pair_near_at's and slab_pair_far_at's for
+ * the ray's neg flags: constants where the walk is made once per octant.  Written out axis by axis (a
+ * loop over the axes was kept as one, its offsets in memory).
+ */
+static inline SLAB_PAIR_INLINE int slab_pair_meets(const bvh_node *a, const slab_pair_ray *s, size_t nx, size_t fx, size_t ny,
+                                  size_t fy, size_t nz, size_t fz, real tmin, real tmax, real *ta, real *tc)
+{
+    __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);
+    slab_pair_axis(a, nx, fx, s->o[0], s->inv[0], &tn, &least);
+    slab_pair_axis(a, ny, fy, s->o[1], s->inv[1], &tn, &least);
+    slab_pair_axis(a, nz, fz, s->o[2], s->inv[2], &tn, &least);
+    return slab_pair_end(tn, least, tmax, ta, tc);
+}
+
+/* slab_pair_meets from the slab ray itself, its lanes and offsets formed
+ * at the call: no pair form made per ray (a shadow walk that tests few
+ * inner nodes). */
+static inline SLAB_PAIR_INLINE int slab_pair_meets_slab(const bvh_node *a, const slab_ray *s, real tmin, real tmax,
+                                                        real *ta, real *tc)
+{
+    __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);
+    slab_pair_axis(a, slab_pair_near_at(0, s->neg[0]), slab_pair_far_at(0, s->neg[0]), _mm_set1_pd(s->o.x),
+                   _mm_set1_pd(s->inv.x), &tn, &least);
+    slab_pair_axis(a, slab_pair_near_at(1, s->neg[1]), slab_pair_far_at(1, s->neg[1]), _mm_set1_pd(s->o.y),
+                   _mm_set1_pd(s->inv.y), &tn, &least);
+    slab_pair_axis(a, slab_pair_near_at(2, s->neg[2]), slab_pair_far_at(2, s->neg[2]), _mm_set1_pd(s->o.z),
+                   _mm_set1_pd(s->inv.z), &tn, &least);
+    return slab_pair_end(tn, least, tmax, ta, tc);
 }
 #endif
 
