@@ -183,9 +183,13 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
     int kept = 0;
     for (int i = 0; i < ns->count; i++)
         if (ns->cand[i].t <= limit) {
-            ns->deferred[kept] = ns->deferred[i];
-            ns->cand_tmax[kept] = ns->cand_tmax[i];
-            ns->cand[kept++] = ns->cand[i];
+            /* Kept in place (most often) is not copied onto itself. */
+            if (kept != i) {
+                ns->deferred[kept] = ns->deferred[i];
+                ns->cand_tmax[kept] = ns->cand_tmax[i];
+                ns->cand[kept] = ns->cand[i];
+            }
+            kept++;
         }
     if (h->t <= limit) {
         if (kept < TIE_MAX) {
@@ -240,8 +244,12 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
     /* A sphere or box makes its full hit at once, as isect_part (a winner
      * made again would cost a second test); a triangle's record does not
      * come here (visit_hits' runs: its hit is deferred). */
-    ray at = ns->rr;
-    int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &at, &h);
+    /* The walk's own ray, not a copy (8 reals a test): the test shrinks
+     * only its tmax, to the hit's t, and nearest_add reads the tmax it
+     * had (the deferred candidates' cand_tmax), put back first. */
+    real tmax = ns->rr.tmax;
+    int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &ns->rr, &h);
+    ns->rr.tmax = tmax;
     assert(met >= 0);
     if (met > 0) {
         h.prim = b->items[i].prim;
