@@ -375,6 +375,24 @@ static inline BVH_OCTANT_COPY int children_hit(const bvh_node *a, const walk_ray
 #endif
 }
 
+/*
+ * Whether the walks may leave out the test of the root's own box: when it
+ * is an inner node they go on only to the children that pass their own
+ * tests, and a child passes only where the root would have.  A child's box
+ * lies inside its parent's (each is its parts' union widened by 2^-40 of
+ * its largest magnitude, and the parent's union and magnitude are the
+ * larger: bvh_build.c), the slab test is monotone in the box's bounds
+ * (slab.h) and in tmax, which only falls during a walk, and a NaN bound
+ * narrows nothing: so a ray that fails the root fails both children, and
+ * the same nodes are entered, the same parts tested in the same order.
+ * With the tree exhaustive the root's answer was never read.  Only the
+ * count of boxes tested (bvh_stats) is one less.
+ */
+static inline int root_decides_nothing(const bvh *b)
+{
+    return b->nodes[0].count == 0;
+}
+
 /* Among the children of an inner node that the ray meets, goes to the
  * nearer and pushes the other; returns the next node or -1. */
 static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray *s, int oct, nearest *ns,
@@ -405,10 +423,13 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
     real enter;
     walk_ray w, *s = &w;
     w.s = *sr;
-    if (ns->stats)
-        ns->stats->nodes_visited++;
-    if (!node_hit(&b->nodes[0], &w.s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
-        return;
+    /* An inner root is not tested (root_decides_nothing); a leaf is. */
+    if (!root_decides_nothing(b)) {
+        if (ns->stats)
+            ns->stats->nodes_visited++;
+        if (!node_hit(&b->nodes[0], &w.s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
+            return;
+    }
 #ifdef SLAB_PAIR_SSE2
     slab_pair_make(&w.s, &w.p);
 #endif
@@ -609,10 +630,14 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
     for (int k = 0; k < starts; k++) {
         int sp = 0;
         const bvh_node *nd = start[k] >= 0 ? &b->nodes[start[k]] : &runs[~start[k]];
-        if (w->stats)
-            w->stats->nodes_visited++;
-        if (!node_hit_any(nd, s, tmin, tmax, &enter) && !b->exhaustive)
-            continue;
+        /* The root, when inner, is not tested (root_decides_nothing); a
+         * bundle's kept node is: its parents were not. */
+        if (start[k] != 0 || !root_decides_nothing(b)) {
+            if (w->stats)
+                w->stats->nodes_visited++;
+            if (!node_hit_any(nd, s, tmin, tmax, &enter) && !b->exhaustive)
+                continue;
+        }
         for (;;) {
             if (nd->count == 0) {
                 int a = nd->first;
