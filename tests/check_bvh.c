@@ -991,6 +991,47 @@ START_TEST(test_slab_pair_meets_is_slab_box)
 }
 END_TEST
 
+/* The walks leave out the test of an inner root (root_decides_nothing in
+ * bvh.c) and test a leaf root: boxes tested, counted by hand. */
+START_TEST(test_bvh_inner_root_not_tested)
+{
+    scene_prim two[2] = {prim_sphere(vec_make(-5, 0, 0), 1), prim_sphere(vec_make(5, 0, 0), 1)};
+    bvh b;
+    ck_assert(bvh_build(&b, two, 2, NULL));
+    ck_assert_int_eq(b.node_count, 3);
+    ck_assert_int_eq(b.nodes[0].count, 0);
+    hit h;
+    /* Past both: the root's two children tested, nothing else. */
+    bvh_stats st = {0, 0};
+    ray r = {{0, 10, 0}, {0, 1, 0}, 0.0, HUGE_VAL};
+    ck_assert(!bvh_intersect_stats(&b, two, &r, &h, &st));
+    ck_assert_int_eq(st.nodes_visited, 2);
+    ck_assert_int_eq(st.prims_tested, 0);
+    bvh_stats vs = {0, 0};
+    long crossings = 0;
+    ck_assert_int_eq(bvh_visit_stats(&b, two, &r, count_crossings, &crossings, &vs), 0);
+    ck_assert_int_eq(vs.nodes_visited, 2);
+    ck_assert_int_eq(crossings, 0);
+    /* Into the ball at x = 5: both children, the ball tested and hit. */
+    bvh_stats in = {0, 0};
+    ray q = {{5, 10, 0}, {0, -1, 0}, 0.0, HUGE_VAL};
+    ck_assert(bvh_intersect_stats(&b, two, &q, &h, &in));
+    ck_assert_int_eq(h.prim, 1);
+    ck_assert_int_eq(in.nodes_visited, 2);
+    ck_assert_int_eq(in.prims_tested, 1);
+    bvh_free(&b);
+    /* One ball: the root is a leaf, tested, and culls the ray. */
+    ck_assert(bvh_build(&b, two, 1, NULL));
+    ck_assert_int_eq(b.nodes[0].count, 1);
+    bvh_stats one = {0, 0};
+    ray o = {{0, 10, 0}, {0, 1, 0}, 0.0, HUGE_VAL};
+    ck_assert(!bvh_intersect_stats(&b, two, &o, &h, &one));
+    ck_assert_int_eq(one.nodes_visited, 1);
+    ck_assert_int_eq(one.prims_tested, 0);
+    bvh_free(&b);
+}
+END_TEST
+
 START_TEST(test_bvh_grid_100k_visits_few_nodes)
 {
     /* A 100 x 100 x 10 grid of unit-spaced spheres (100 000).  A ray down
@@ -1062,6 +1103,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_boxes_exact_past_one_axis);
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
+    tcase_add_test(tc, test_bvh_inner_root_not_tested);
     tcase_add_test(tc, test_slab_box_meets_is_slab_box);
     tcase_add_test(tc, test_slab_pair_meets_is_slab_box);
     suite_add_tcase(s, tc);
