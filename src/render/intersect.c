@@ -1509,11 +1509,16 @@ static real triangle_magnitude(const vec3 v[3])
     return larger(vec_max_abs(v[0]), larger(vec_max_abs(v[1]), vec_max_abs(v[2])));
 }
 
+static inline real sphere_magnitude(const scene_prim *p)
+{
+    return vec_max_abs(p->u.sphere.center) + p->u.sphere.radius;
+}
+
 static real local_magnitude(const scene_prim *p)
 {
     switch (p->kind) {
     case PRIM_SPHERE:
-        return vec_max_abs(p->u.sphere.center) + p->u.sphere.radius;
+        return sphere_magnitude(p);
     case PRIM_PLANE:
         return vec_max_abs(p->u.plane.point);
     case PRIM_TRIANGLE:
@@ -1565,6 +1570,10 @@ real isect_prim_magnitude(const scene_prim *p)
 real isect_part_magnitude(const scene_prim *p, int part)
 {
     vec3 v[3], n[3];
+    /* A sphere in the world frame, the glass balls' every spawn: local_magnitude's
+     * value, without its switch and isect_prim_magnitude's frame test. */
+    if (p->kind == PRIM_SPHERE && !p->frame)
+        return sphere_magnitude(p);
     if (p->kind != PRIM_MESH)
         return isect_prim_magnitude(p);
     mesh_corners(&p->u.mesh, part, v, n);
