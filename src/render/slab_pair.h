@@ -11,11 +11,12 @@
  * least * (1 + copysign(pad, least)) (copysign of a positive constant is
  * its OR with the sign bit), the cap by tmax and the comparison `<=`.
  * SSE2's packed double operations round each lane as the scalar ones do
- * (the scalar code is SSE2 too: x86-64, and M32's -mfpmath=sse), so every
- * entry and answer is the scalar test's to the bit.  Only where real is
- * double and SSE2 is there (not the long double build, not Frama-C, which
- * never parses bvh.c but is kept off all the same): elsewhere the scalar
- * test of each child, as before.
+ * (the scalar code is SSE2 too on x86-64), so every entry and answer is
+ * the scalar test's to the bit.  Only on x86-64 with real a double: its
+ * ABI aligns the stack for the pair form's 16-byte lanes, which an i386
+ * caller of the library need not do (M32 keeps the scalar test); not the
+ * long double build, not Frama-C (which never parses bvh.c, kept off all
+ * the same).  Elsewhere the scalar test of each child, as before.
  */
 #ifndef REFRAY_SLAB_PAIR_H
 #define REFRAY_SLAB_PAIR_H
@@ -24,12 +25,13 @@
 #include "render/bvh.h"
 #include "render/slab.h"
 
-#if defined(__SSE2__) && !defined(REFRAY_LONG_DOUBLE) && !defined(__FRAMAC__)
+#if defined(__SSE2__) && defined(__x86_64__) && !defined(REFRAY_LONG_DOUBLE) && !defined(__FRAMAC__)
 #define SLAB_PAIR_SSE2 1
 #include <emmintrin.h>
 
 /* Inlined at every call, so that a walk's constant offsets fold (gcc and
- * clang, the compilers that define __SSE2__, know the attribute). */
+ * clang, the compilers that define __SSE2__ and __x86_64__, know the
+ * attribute). */
 #define SLAB_PAIR_INLINE __attribute__((always_inline))
 
 /* A ray prepared for pair tests: origin and 1/d in both lanes. */
