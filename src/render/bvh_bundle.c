@@ -59,6 +59,10 @@ typedef struct bundle_cone {
     int lo_below[3], hi_below[3];
     real margin;
     real gap;                    /* g of the behind test */
+    /* tri: every ray's triangle shear (isect_shear_make) has the axes kx,
+     * ky, kz and sx in [sx[0], sx[1]], sy in [sy[0], sy[1]] (shear_bounds) */
+    int tri, kx, ky, kz;
+    real sx[2], sy[2];
 } bundle_cone;
 
 static real reciprocal(real k) { return k != 0.0 ? 1.0 / k : copysign(INFINITY, k); }
@@ -92,6 +96,96 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
     return cone_meets(c, lo, hi);
 }
 
+/* Whether the three corners' sheared coordinate on axis k (isect_corner_at,
+ * the watertight test's own operations for the bundle's one origin) is of
+ * one strict sign for every s in [s_lo, s_hi].  For a corner, with
+ * a = v_k - o_k and z = v_kz - o_kz the same doubles for every ray, the
+ * rounded s z is monotone in s (rounding is monotone; increasing for
+ * z >= 0, decreasing for z <= 0) and the rounded a - p monotone in p, so
+ * the coordinate is monotone in s: of one strict sign at both ends, it has
+ * that sign at every s between them. */
+static int corners_apart(const real *g, vec3 o, real s_lo, real s_hi, int k, int kz)
+{
+    int above = 0, below = 0;
+    for (int i = 0; i < 3; i++) {
+        vec3 v = vec_make(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
+        real a = isect_corner_at(v, o, s_lo, k, kz), b = isect_corner_at(v, o, s_hi, k, kz);
+        above += a > 0 && b > 0;
+        below += a < 0 && b < 0;
+    }
+    return above == 3 || below == 3;
+}
+
+/* Whether every ray of the bundle (one origin, c->tri) has its triangle
+ * test of g answer no crossing: its three sheared corners all strictly on
+ * one side of x = 0 (or of y = 0), the run's quick miss's premise
+ * (intersect.c, triangle_apart: the watertight test then answers no
+ * crossing, the corners being the ones it rounds). */
+static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
+{
+    return corners_apart(g, o, c->sx[0], c->sx[1], c->kx, c->kz) ||
+           corners_apart(g, o, c->sy[0], c->sy[1], c->ky, c->kz);
+}
+
+/* The least and greatest of p / q over p in [p0, p1], q in [q0, q1] (q of
+ * one strict sign, so the quotient is monotone in each: its extremes are at
+ * the corners), widened by m = 2^-40 (|least| + |greatest|) + 2^-1000. */
+static void ratio_bounds(real p0, real p1, real q0, real q1, real out[2])
+{
+    real a = p0 / q0, b = p0 / q1, c = p1 / q0, d = p1 / q1;
+    real lo = a < b ? a : b, hi = a > b ? a : b;
+    lo = c < lo ? c : lo;
+    lo = d < lo ? d : lo;
+    hi = c > hi ? c : hi;
+    hi = d > hi ? d : hi;
+    real m = 0x1p-40 * (fabs(lo) + fabs(hi)) + 0x1p-1000;
+    out[0] = lo - m;
+    out[1] = hi + m;
+}
+
+/* Where every ray starts at rays->origin (exact), the axes and the bounds
+ * of its shear, c->tri = 1 when found.  A ray toward a target q in [L, H]
+ * has dir = D c' rounded per axis, D = q - O rounded (each D_a between
+ * L_a - O_a and H_a - O_a rounded: rounding is monotone) and one factor
+ * c' > 0 for every axis (unit_toward: the rounded 1 / |D|, or a division
+ * by |D|).  Where |D_k| >= 2^-400 on the whole box and exceeds every other
+ * |D_j| by the factor 1 + 2^-30, the rounded |dir_k| exceeds the others
+ * (each is |D_a| c' within a relative eps, and |D| is normal), so
+ * isect_shear_make takes kz = k, dz of D_k's sign, and (kx, ky) as
+ * shear_set turns them; its sx is dir_kx / dz rounded (shear_ratio: the
+ * magnitudes' quotient, signed), which is D_kx / D_kz within a relative 4
+ * eps, plus 2^-1074 where dir_kx is subnormal; ratio_bounds' margin covers
+ * both, as |sx| <= 1. */
+static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
+{
+    const real o[3] = {rays->origin.x, rays->origin.y, rays->origin.z};
+    const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
+    real dl[3], dh[3], least[3], most[3];
+    c->tri = 0;
+    if (!rays->exact)
+        return;
+    for (int a = 0; a < 3; a++) {
+        dl[a] = tl[a] - o[a];
+        dh[a] = th[a] - o[a];
+        least[a] = dl[a] > 0 ? dl[a] : dh[a] < 0 ? -dh[a] : 0;
+        most[a] = fabs(dl[a]) > fabs(dh[a]) ? fabs(dl[a]) : fabs(dh[a]);
+    }
+    for (int k = 0; k < 3; k++) {
+        int j1 = (k + 1) % 3, j2 = (k + 2) % 3;
+        real over = (1 + 0x1p-30) * (most[j1] > most[j2] ? most[j1] : most[j2]);
+        if (!(least[k] >= 0x1p-400 && least[k] > over))
+            continue;
+        int turn = dh[k] < 0;
+        c->kz = k;
+        c->kx = turn ? j2 : j1;
+        c->ky = turn ? j1 : j2;
+        ratio_bounds(dl[c->kx], dh[c->kx], dl[k], dh[k], c->sx);
+        ratio_bounds(dl[c->ky], dh[c->ky], dl[k], dh[k], c->sy);
+        c->tri = 1;
+        return;
+    }
+}
+
 static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
 {
     real size = vec_sum_abs(rays->apex) + vec_sum_abs(rays->lo) + vec_sum_abs(rays->hi) + rays->slack +
@@ -115,6 +209,7 @@ static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
         c->inv_hi[a] = reciprocal(tl[a] - p[a]);
         c->hi_below[a] = signbit(c->inv_hi[a]) != 0;
     }
+    shear_bounds(rays, c);
     return 1;
 }
 
@@ -136,12 +231,18 @@ static int box_behind(const bundle_cone *c, const bvh_bundle_rays *rays, const r
 }
 
 /* The parts of leaf nd that no ray of the bundle crosses: box records the
- * hull misses or that lie behind every ray. */
+ * hull misses or that lie behind every ray, and triangle records every ray
+ * passes by. */
 static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
 {
     unsigned skip = 0;
     for (int i = 0; i < nd->count && i < 32; i++) {
         bvh_hot hr = b->hot[nd->first + i];
+        if (ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE) {
+            if (c->tri && triangle_passed_by(c, rays->origin, b->hot_reals + hr.at))
+                skip |= 1u << i;
+            continue;
+        }
         if (ISECT_HOT_KIND(hr.code) != ISECT_HOT_BOX)
             continue;
         const real *g = b->hot_reals + hr.at;
