@@ -59,8 +59,9 @@ typedef struct bundle_cone {
     int lo_below[3], hi_below[3];
     real margin;
     real gap;                    /* g of the behind test */
-    /* tri: every ray's triangle shear (isect_shear_make) has the axes kx,
-     * ky, kz and sx in [sx[0], sx[1]], sy in [sy[0], sy[1]] (shear_bounds) */
+    /* tri 1: every ray's triangle shear (isect_shear_make) has the axes kx,
+     * ky, kz and sx in [sx[0], sx[1]], sy in [sy[0], sy[1]] (shear_bounds);
+     * 0: not known; -1: not looked at yet */
     int tri, kx, ky, kz;
     real sx[2], sy[2];
 } bundle_cone;
@@ -209,7 +210,7 @@ static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
         c->inv_hi[a] = reciprocal(tl[a] - p[a]);
         c->hi_below[a] = signbit(c->inv_hi[a]) != 0;
     }
-    shear_bounds(rays, c);
+    c->tri = -1;   /* shear_bounds at the first triangle: most bundles meet none */
     return 1;
 }
 
@@ -233,12 +234,14 @@ static int box_behind(const bundle_cone *c, const bvh_bundle_rays *rays, const r
 /* The parts of leaf nd that no ray of the bundle crosses: box records the
  * hull misses or that lie behind every ray, and triangle records every ray
  * passes by. */
-static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
+static unsigned leaf_skip(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
 {
     unsigned skip = 0;
     for (int i = 0; i < nd->count && i < 32; i++) {
         bvh_hot hr = b->hot[nd->first + i];
         if (ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE) {
+            if (c->tri < 0)
+                shear_bounds(rays, c);
             if (c->tri && triangle_passed_by(c, rays->origin, b->hot_reals + hr.at))
                 skip |= 1u << i;
             continue;
@@ -255,7 +258,7 @@ static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_r
 /* Keeps leaf `node`: whole, or as the runs of its parts leaf_skip leaves
  * (each a node of out->runs with the leaf's box, in order), or not at all
  * where it leaves none.  Past BVH_BUNDLE_RUNS runs in all: whole. */
-static void keep_leaf(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, int node, bvh_bundle *out)
+static void keep_leaf(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays, int node, bvh_bundle *out)
 {
     const bvh_node *nd = &b->nodes[node];
     unsigned skip = leaf_skip(b, c, rays, nd);
