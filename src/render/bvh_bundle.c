@@ -97,35 +97,58 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
     return cone_meets(c, lo, hi);
 }
 
-/* Whether the three corners' sheared coordinate on axis k (isect_corner_at,
- * the watertight test's own operations for the bundle's one origin) is of
- * one strict sign for every s in [s_lo, s_hi].  For a corner, with
- * a = v_k - o_k and z = v_kz - o_kz the same doubles for every ray, the
- * rounded s z is monotone in s (rounding is monotone; increasing for
- * z >= 0, decreasing for z <= 0) and the rounded a - p monotone in p, so
- * the coordinate is monotone in s: of one strict sign at both ends, it has
- * that sign at every s between them. */
-static int corners_apart(const real *g, vec3 o, real s_lo, real s_hi, int k, int kz)
+/* The box each corner of g keeps in the sheared plane over the bundle:
+ * its x (isect_corner_at, the watertight test's own operations for the
+ * bundle's one origin) between x[0][i] and x[1][i], its y likewise.  For
+ * a corner, with a = v_k - o_k and z = v_kz - o_kz the same doubles for
+ * every ray, the rounded s z is monotone in s (rounding is monotone;
+ * increasing for z >= 0, decreasing for z <= 0) and the rounded a - p
+ * monotone in p, so the coordinate is monotone in s: between its values at
+ * the two bounds of s. */
+static void corner_boxes(const bundle_cone *c, vec3 o, const real *g, real x[2][3], real y[2][3])
+{
+    for (int i = 0; i < 3; i++) {
+        vec3 v = vec_make(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
+        real a = isect_corner_at(v, o, c->sx[0], c->kx, c->kz), b = isect_corner_at(v, o, c->sx[1], c->kx, c->kz);
+        x[0][i] = a < b ? a : b;
+        x[1][i] = a < b ? b : a;
+        a = isect_corner_at(v, o, c->sy[0], c->ky, c->kz);
+        b = isect_corner_at(v, o, c->sy[1], c->ky, c->kz);
+        y[0][i] = a < b ? a : b;
+        y[1][i] = a < b ? b : a;
+    }
+}
+
+/* Whether the three boxes lie strictly on one side of the line p x + q y = 0
+ * (p, q in {0, +-1, +-2}: the products exact, and a rounded sum of two has
+ * the exact sum's sign): the least of p x + q y over a box is at the
+ * corner the signs of p and q pick. */
+static int boxes_apart(real x[2][3], real y[2][3], real p, real q)
 {
     int above = 0, below = 0;
     for (int i = 0; i < 3; i++) {
-        vec3 v = vec_make(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
-        real a = isect_corner_at(v, o, s_lo, k, kz), b = isect_corner_at(v, o, s_hi, k, kz);
-        above += a > 0 && b > 0;
-        below += a < 0 && b < 0;
+        real least = p * x[p < 0][i] + q * y[q < 0][i], most = p * x[p >= 0][i] + q * y[q >= 0][i];
+        above += least > 0;
+        below += most < 0;
     }
     return above == 3 || below == 3;
 }
 
 /* Whether every ray of the bundle (one origin, c->tri) has its triangle
- * test of g answer no crossing: its three sheared corners all strictly on
- * one side of x = 0 (or of y = 0), the run's quick miss's premise
- * (intersect.c, triangle_apart: the watertight test then answers no
- * crossing, the corners being the ones it rounds). */
+ * test of g answer no crossing: its three sheared corners strictly on one
+ * side of a line through the origin.  The origin is then no point of the
+ * closed triangle of the rounded corners, and triangle_solve, whose edge
+ * functions have the exact signs of those corners' (intersect.c,
+ * triangle_apart, where the line is x = 0 or y = 0), answers no crossing. */
 static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
 {
-    return corners_apart(g, o, c->sx[0], c->sx[1], c->kx, c->kz) ||
-           corners_apart(g, o, c->sy[0], c->sy[1], c->ky, c->kz);
+    static const real dirs[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, 2}, {2, 1}, {1, -2}, {2, -1}};
+    real x[2][3], y[2][3];
+    corner_boxes(c, o, g, x, y);
+    for (int k = 0; k < 8; k++)
+        if (boxes_apart(x, y, dirs[k][0], dirs[k][1]))
+            return 1;
+    return 0;
 }
 
 /* The least and greatest of p / q over p in [p0, p1], q in [q0, q1] (q of
