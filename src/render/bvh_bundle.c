@@ -59,11 +59,11 @@ typedef struct bundle_cone {
     int lo_below[3], hi_below[3];
     real margin;
     real gap;                    /* g of the behind test */
-    /* tri 1: every ray's triangle shear (isect_shear_make) has the axes kx,
-     * ky, kz and sx in [sx[0], sx[1]], sy in [sy[0], sy[1]] (shear_bounds);
-     * 0: not known; -1: not looked at yet */
-    int tri, kx, ky, kz;
-    real sx[2], sy[2];
+    /* tri 1: every ray's triangle shear (isect_shear_make) is one of
+     * perm[0 .. perms - 1]'s: its axes, and sx, sy within their bounds
+     * (shear_bounds); 0: not known; -1: not looked at yet */
+    int tri, perms;
+    isect_shear perm[3][2];   /* the axes, and sx, sy: their least, their greatest */
 } bundle_cone;
 
 static real reciprocal(real k) { return k != 0.0 ? 1.0 / k : copysign(INFINITY, k); }
@@ -105,15 +105,16 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
  * increasing for z >= 0, decreasing for z <= 0) and the rounded a - p
  * monotone in p, so the coordinate is monotone in s: between its values at
  * the two bounds of s. */
-static void corner_boxes(const bundle_cone *c, vec3 o, const real *g, real x[2][3], real y[2][3])
+static void corner_boxes(const isect_shear sh[2], vec3 o, const real *g, real x[2][3], real y[2][3])
 {
+    int kx = sh[0].kx, ky = sh[0].ky, kz = sh[0].kz;
     for (int i = 0; i < 3; i++) {
         vec3 v = vec_make(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
-        real a = isect_corner_at(v, o, c->sx[0], c->kx, c->kz), b = isect_corner_at(v, o, c->sx[1], c->kx, c->kz);
+        real a = isect_corner_at(v, o, sh[0].sx, kx, kz), b = isect_corner_at(v, o, sh[1].sx, kx, kz);
         x[0][i] = a < b ? a : b;
         x[1][i] = a < b ? b : a;
-        a = isect_corner_at(v, o, c->sy[0], c->ky, c->kz);
-        b = isect_corner_at(v, o, c->sy[1], c->ky, c->kz);
+        a = isect_corner_at(v, o, sh[0].sy, ky, kz);
+        b = isect_corner_at(v, o, sh[1].sy, ky, kz);
         y[0][i] = a < b ? a : b;
         y[1][i] = a < b ? b : a;
     }
@@ -125,36 +126,43 @@ static void corner_boxes(const bundle_cone *c, vec3 o, const real *g, real x[2][
  * corner the signs of p and q pick. */
 static int boxes_apart(real x[2][3], real y[2][3], real p, real q)
 {
-    int above = 0, below = 0;
+    int side = 0;
     for (int i = 0; i < 3; i++) {
         real least = p * x[p < 0][i] + q * y[q < 0][i], most = p * x[p >= 0][i] + q * y[q >= 0][i];
-        above += least > 0;
-        below += most < 0;
+        int here = least > 0 ? 1 : most < 0 ? -1 : 0;
+        if (here == 0 || (i > 0 && here != side))
+            return 0;
+        side = here;
     }
-    return above == 3 || below == 3;
+    return 1;
 }
 
 /* Whether every ray of the bundle (one origin, c->tri) has its triangle
- * test of g answer no crossing: its three sheared corners strictly on one
- * side of a line through the origin.  The origin is then no point of the
+ * test of g answer no crossing: under each shear it may have, its three
+ * sheared corners strictly on one side of a line through the origin.  The origin is then no point of the
  * closed triangle of the rounded corners, and triangle_solve, whose edge
  * functions have the exact signs of those corners' (intersect.c,
  * triangle_apart, where the line is x = 0 or y = 0), answers no crossing. */
 static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
 {
     static const real dirs[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, 2}, {2, 1}, {1, -2}, {2, -1}};
-    real x[2][3], y[2][3];
-    corner_boxes(c, o, g, x, y);
-    for (int k = 0; k < 8; k++)
-        if (boxes_apart(x, y, dirs[k][0], dirs[k][1]))
-            return 1;
-    return 0;
+    for (int p = 0; p < c->perms; p++) {
+        real x[2][3], y[2][3];
+        int apart = 0;
+        corner_boxes(c->perm[p], o, g, x, y);
+        for (int k = 0; k < 8 && !apart; k++)
+            apart = boxes_apart(x, y, dirs[k][0], dirs[k][1]);
+        if (!apart)
+            return 0;
+    }
+    return 1;
 }
 
 /* The least and greatest of p / q over p in [p0, p1], q in [q0, q1] (q of
  * one strict sign, so the quotient is monotone in each: its extremes are at
- * the corners), widened by m = 2^-40 (|least| + |greatest|) + 2^-1000. */
-static void ratio_bounds(real p0, real p1, real q0, real q1, real out[2])
+ * the corners), widened by m = 2^-40 (|least| + |greatest|) + 2^-1000, and
+ * held to [-1, 1] (a shear's sx, sy are: isect_shear_make). */
+static void ratio_bounds(real p0, real p1, real q0, real q1, real *least, real *most)
 {
     real a = p0 / q0, b = p0 / q1, c = p1 / q0, d = p1 / q1;
     real lo = a < b ? a : b, hi = a > b ? a : b;
@@ -163,29 +171,33 @@ static void ratio_bounds(real p0, real p1, real q0, real q1, real out[2])
     hi = c > hi ? c : hi;
     hi = d > hi ? d : hi;
     real m = 0x1p-40 * (fabs(lo) + fabs(hi)) + 0x1p-1000;
-    out[0] = lo - m;
-    out[1] = hi + m;
+    lo -= m;
+    hi += m;
+    *least = lo > -1 ? lo : -1;
+    *most = hi < 1 ? hi : 1;
 }
 
-/* Where every ray starts at rays->origin (exact), the axes and the bounds
- * of its shear, c->tri = 1 when found.  A ray toward a target q in [L, H]
- * has dir = D c' rounded per axis, D = q - O rounded (each D_a between
- * L_a - O_a and H_a - O_a rounded: rounding is monotone) and one factor
- * c' > 0 for every axis (unit_toward: the rounded 1 / |D|, or a division
- * by |D|).  Where |D_k| >= 2^-400 on the whole box and exceeds every other
- * |D_j| by the factor 1 + 2^-30, the rounded |dir_k| exceeds the others
- * (each is |D_a| c' within a relative eps, and |D| is normal), so
- * isect_shear_make takes kz = k, dz of D_k's sign, and (kx, ky) as
- * shear_set turns them; its sx is dir_kx / dz rounded (shear_ratio: the
- * magnitudes' quotient, signed), which is D_kx / D_kz within a relative 4
- * eps, plus 2^-1074 where dir_kx is subnormal; ratio_bounds' margin covers
- * both, as |sx| <= 1. */
+/* Where every ray starts at rays->origin (exact), the shears its rays may
+ * have: c->tri = 1 when found.  A ray toward a target q in [L, H] has dir =
+ * D c' rounded per axis, D = q - O rounded (each D_a between L_a - O_a and
+ * H_a - O_a rounded: rounding is monotone) and one factor c' > 0 for every
+ * axis (unit_toward: the rounded 1 / |D|, or a division by |D|).  Axis j
+ * is never the shear's kz where another axis's least |D_a| over the box
+ * exceeds j's greatest by the factor 1 + 2^-30 (the rounded |dir_a| then
+ * exceeds |dir_j|: each is |D_a| c' within a relative eps, and |D| is
+ * normal below).  Every other axis k must have D_k of one strict sign,
+ * |D_k| >= 2^-400, on the whole box; a ray with kz = k then has dz of D_k's
+ * sign, (kx, ky) as shear_set turns them, and sx = dir_kx / dz rounded
+ * (shear_ratio: the magnitudes' quotient, signed), which is D_kx / D_kz
+ * within a relative 4 eps, plus 2^-1074 where dir_kx is subnormal;
+ * ratio_bounds' margin covers both, as |sx| <= 1.  sy likewise. */
 static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
 {
     const real o[3] = {rays->origin.x, rays->origin.y, rays->origin.z};
     const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
     real dl[3], dh[3], least[3], most[3];
     c->tri = 0;
+    c->perms = 0;
     if (!rays->exact)
         return;
     for (int a = 0; a < 3; a++) {
@@ -196,18 +208,20 @@ static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
     }
     for (int k = 0; k < 3; k++) {
         int j1 = (k + 1) % 3, j2 = (k + 2) % 3;
-        real over = (1 + 0x1p-30) * (most[j1] > most[j2] ? most[j1] : most[j2]);
-        if (!(least[k] >= 0x1p-400 && least[k] > over))
-            continue;
+        real over = (1 + 0x1p-30) * most[k];
+        if (least[j1] > over || least[j2] > over)
+            continue;   /* never the largest */
+        if (!(least[k] >= 0x1p-400))
+            return;
         int turn = dh[k] < 0;
-        c->kz = k;
-        c->kx = turn ? j2 : j1;
-        c->ky = turn ? j1 : j2;
-        ratio_bounds(dl[c->kx], dh[c->kx], dl[k], dh[k], c->sx);
-        ratio_bounds(dl[c->ky], dh[c->ky], dl[k], dh[k], c->sy);
-        c->tri = 1;
-        return;
+        isect_shear *sh = c->perm[c->perms++];
+        sh[0].kz = sh[1].kz = k;
+        sh[0].kx = sh[1].kx = turn ? j2 : j1;
+        sh[0].ky = sh[1].ky = turn ? j1 : j2;
+        ratio_bounds(dl[sh[0].kx], dh[sh[0].kx], dl[k], dh[k], &sh[0].sx, &sh[1].sx);
+        ratio_bounds(dl[sh[0].ky], dh[sh[0].ky], dl[k], dh[k], &sh[0].sy, &sh[1].sy);
     }
+    c->tri = c->perms > 0;
 }
 
 static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
