@@ -239,6 +239,103 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/*
+ * Triangles left out of a bundle (bvh_bundle.c, triangle_passed_by): 80
+ * random triangles in a cube of side 20 (and the same scaled by 1e-6 and
+ * moved to 1e7), bundles from random points (and from points on a
+ * triangle, its normal the point's) toward random boxes, some far (one
+ * axis of D = q - O dominant, one shear for every ray) and some near (the
+ * box across the diagonals: two or three axes may be the largest).  Each
+ * ray starts at the one origin the bundle is told of, and is aimed at a
+ * corner of the box (the least and greatest sx, sy are a corner's), the
+ * middle of an edge or a random point of it: its whole walk and bundle walk
+ * report the same crossings in the same order, and triangles are left out.
+ */
+START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
+{
+    static char text[32768];
+    rng g = {(uint64_t)_i + 101};
+    double scale = _i % 2 ? 1e-6 : 1, off = _i % 2 ? 1e7 : 0;
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    vec3 corner[80][3];
+    for (int i = 0; i < 80; i++) {
+        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
+        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
+        for (int k = 0; k < 3; k++) {
+            vec3 v = vec_add(c, vec_scale(unit(&g), range(&g, 0.3, 3)));
+            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
+            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
+                            corner[i][k].y, corner[i][k].z);
+        }
+        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
+    }
+    ck_assert_int_lt(len, (int)sizeof text);
+    scene_model *s = load(text, (size_t)len);
+    bvh b;
+    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    long exact = 0, whole = 0, tested = 0, crossed = 0, untold = 0;
+    for (int bundle_i = 0; bundle_i < 300; bundle_i++) {
+        vec3 apex = vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12));
+        double far = bundle_i % 3 ? range(&g, 2, 30) : range(&g, 0.5, 3);
+        vec3 centre = vec_add(apex, vec_scale(unit(&g), far));
+        double reach = bundle_i % 7 == 0 ? 0 : range(&g, 0, bundle_i % 3 ? 2 : 1.5);
+        apex = vec_add(vec_splat(off), vec_scale(apex, scale));
+        centre = vec_add(vec_splat(off), vec_scale(centre, scale));
+        reach *= scale;
+        vec3 n = unit(&g);
+        if (bundle_i % 2) {
+            /* On a triangle, as a shaded point of it. */
+            const vec3 *v = corner[bundle_i % 80];
+            double u = uniform(&g), w = uniform(&g) * (1 - u);
+            apex = vec_add(vec_add(vec_scale(v[0], 1 - u - w), vec_scale(v[1], u)), vec_scale(v[2], w));
+            n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
+        }
+        shadow_start from = {apex, n, 0x1p-42 * (off + 12 * scale) + 1e-300};
+        bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        vec3 lo = rays.lo, hi = rays.hi;
+        ray r[64];
+        vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
+        int ups = 0, downs = 0;
+        for (int j = 0; j < 64; j++) {
+            /* corners (j < 8), middles of edges and faces, random points */
+            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
+                           : j < 32 ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
+                                    : vec_make(uniform(&g), uniform(&g), uniform(&g));
+            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
+                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
+            ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
+            r[j] = ray_shadow_to(&from, q);
+            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+        }
+        if (ups != 64 && downs != 64)
+            continue;
+        /* The same bundle not told its origin: the hull's nodes alone. */
+        bvh_bundle bundle, hull;
+        bvh_bundle_make(&b, &rays, &hull, NULL);
+        rays.exact = 1;
+        rays.origin = ups == 64 ? up : down;
+        exact++;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        ck_assert_int_ge(bundle.count, 0);
+        for (int j = 0; j < 64; j++) {
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
+            crossed += e.count;
+            whole += same_walks_counted(&b, s->prims, &r[j], &bundle, &tested);
+            same_walks_counted(&b, s->prims, &r[j], &hull, &untold);
+        }
+    }
+    ck_assert_int_gt(exact, 100);
+    ck_assert_int_gt(crossed, 0);
+    /* Told their origin, the bundles leave triangles out. */
+    ck_assert_msg(tested < untold, "%ld primitive tests by the bundles, %ld untold, %ld by the whole walks", tested,
+                  untold, whole);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
 /* A scene of prims (the text of its primitives) under a camera, and its
  * tree in *b. */
 static scene_model *load_built(const char *prims, bvh *b)
@@ -565,6 +662,7 @@ Suite *suite_bundle(void)
     tcase_set_timeout(tc, 20);
     tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
     tcase_add_test(tc, test_bundle_light_box_holds_every_sample);
