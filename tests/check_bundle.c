@@ -340,7 +340,7 @@ END_TEST
  * tree in *b. */
 static scene_model *load_built(const char *prims, bvh *b)
 {
-    static char text[1024];
+    static char text[4096];
     int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 10] look_at [0, 0, 0] }\n%s",
                        prims);
     ck_assert(len > 0 && len < (int)sizeof text);
@@ -390,6 +390,60 @@ START_TEST(test_bundle_keeps_a_box_part_its_test_counts)
     ck_assert_int_gt(grazed, 0);
     bvh_free(&b);
     scene_free(s);
+}
+END_TEST
+
+/*
+ * The shear bounds' margin.  A ray from just above (0, 0, 0) toward q
+ * passes exactly through the common corner V of a fan of six lone
+ * triangles: V = (sx 5, sy 5, 5) rounded, sx and sy the ray's own shear, so
+ * V's sheared x and y are 0 for this ray, and each triangle, whose edges
+ * are all inclusive, counts a crossing.  The bundle of that one ray (a box of
+ * reach 0 at q) bounds sx by q's D_x / D_z, which is not the ray's sx
+ * (rounded from the unit direction) for every q: without the margin the
+ * bounds can leave V a hair on one side for the bundle, and the
+ * triangles beyond it out (shear_bounds' margin 0: this test fails).
+ */
+START_TEST(test_bundle_keeps_a_triangle_through_its_corner)
+{
+    rng g = {7};
+    int differ = 0;
+    for (int k = 0; k < 200; k++) {
+        shadow_start from = {vec_make(0, 0, 0), vec_make(0, 0, 1), 1e-300};
+        vec3 q = vec_make(range(&g, -3, 3), range(&g, -3, 3), range(&g, 8, 12));
+        ray r = ray_shadow_to(&from, q);
+        isect_shear sh;
+        isect_shear_make(&r, &sh);
+        ck_assert(sh.kz == 2 && sh.kx == 0 && sh.ky == 1 && r.origin.x == 0 && r.origin.y == 0);
+        vec3 v = vec_make(sh.sx * 5, sh.sy * 5, 5);
+        differ += sh.sx != (q.x - r.origin.x) / (q.z - r.origin.z) || sh.sy != (q.y - r.origin.y) / (q.z - r.origin.z);
+        char prims[2048];
+        int len = 0;
+        double turn = range(&g, 0, 1);
+        for (int i = 0; i < 6; i++) {
+            double a0 = 6.283185307179586 * (i + turn) / 6, a1 = 6.283185307179586 * (i + 1 + turn) / 6;
+            len += snprintf(prims + len, sizeof prims - (size_t)len,
+                            "triangle { vertices [%.17g, %.17g, %.17g] [%.17g, %.17g, %.17g] [%.17g, %.17g, %.17g] "
+                            "material { Kd 0.5 t 0.5 } }\n",
+                            v.x, v.y, v.z, v.x + cos(a0), v.y + sin(a0), v.z + 0.2 * cos(3 * a0), v.x + cos(a1),
+                            v.y + sin(a1), v.z + 0.2 * cos(3 * a1));
+        }
+        bvh b;
+        scene_model *s = load_built(prims, &b);
+        events e = {0};
+        bvh_visit_counts(&b, s->prims, &r, record, &e, NULL);
+        ck_assert_int_eq(e.count, 6);   /* a lone triangle's edges and corners are its own: each counts */
+        bvh_bundle bundle;
+        bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+        rays.exact = 1;
+        rays.origin = r.origin;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        same_walks(&b, s->prims, &r, &bundle);
+        bvh_free(&b);
+        scene_free(s);
+    }
+    /* Some rays' shears are not their targets' quotients. */
+    ck_assert_int_gt(differ, 0);
 }
 END_TEST
 
@@ -665,6 +719,7 @@ Suite *suite_bundle(void)
     tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
+    tcase_add_test(tc, test_bundle_keeps_a_triangle_through_its_corner);
     tcase_add_test(tc, test_bundle_light_box_holds_every_sample);
     tcase_add_test(tc, test_bundle_light_side_gives_every_ray_its_origin);
     tcase_add_loop_test(tc, test_bundle_flush_lights_bit_identical, 0, 3);
