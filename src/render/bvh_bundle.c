@@ -46,6 +46,12 @@
  * round to <= 0, its d_a = (q_a - O_a) rounded times the rounded 1/|q - O| is
  * > 0 (at least g / (2 S) before rounding: no underflow), and tmin > 0, so
  * box_axis_apart answers 1 and the part counts 0 crossings.
+ *
+ * A triangle part, for an exact origin, is left out where every ray of the
+ * bundle passes it by in its sheared plane (triangle_passed_by: the shears
+ * the rays may have, shear_bounds; each corner's box over them,
+ * corner_boxes; a line through the origin with the three boxes strictly on
+ * one side, boxes_apart).
  */
 #include <assert.h>
 #include "render/bvh.h"
