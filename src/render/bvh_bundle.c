@@ -124,13 +124,16 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
 static void corner_boxes(const isect_shear sh[2], vec3 o, const real *g, real x[2][3], real y[2][3])
 {
     int kx = sh[0].kx, ky = sh[0].ky, kz = sh[0].kz;
+    const real oa[3] = {o.x, o.y, o.z};
     for (int i = 0; i < 3; i++) {
-        vec3 v = vec_make(g[3 * i], g[3 * i + 1], g[3 * i + 2]);
-        real a = isect_corner_at(v, o, sh[0].sx, kx, kz), b = isect_corner_at(v, o, sh[1].sx, kx, kz);
+        /* isect_corner_at's differences, once for the four shears */
+        const real *v = g + 3 * i;
+        real z = v[kz] - oa[kz], ax = v[kx] - oa[kx], ay = v[ky] - oa[ky];
+        real a = isect_corner_of(ax, z, sh[0].sx), b = isect_corner_of(ax, z, sh[1].sx);
         x[0][i] = a < b ? a : b;
         x[1][i] = a < b ? b : a;
-        a = isect_corner_at(v, o, sh[0].sy, ky, kz);
-        b = isect_corner_at(v, o, sh[1].sy, ky, kz);
+        a = isect_corner_of(ay, z, sh[0].sy);
+        b = isect_corner_of(ay, z, sh[1].sy);
         y[0][i] = a < b ? a : b;
         y[1][i] = a < b ? b : a;
     }
@@ -140,7 +143,7 @@ static void corner_boxes(const isect_shear sh[2], vec3 o, const real *g, real x[
  * (p, q in {0, +-1, +-2}: the products exact, and a rounded sum of two has
  * the exact sum's sign): the least of p x + q y over a box is at the
  * corner the signs of p and q pick. */
-static int boxes_apart(real x[2][3], real y[2][3], real p, real q)
+static inline int boxes_apart(real x[2][3], real y[2][3], real p, real q)
 {
     int side = 0;
     for (int i = 0; i < 3; i++) {
@@ -161,14 +164,13 @@ static int boxes_apart(real x[2][3], real y[2][3], real p, real q)
  * triangle_apart, where the line is x = 0 or y = 0), answers no crossing. */
 BUNDLE_OUTLINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
 {
-    static const real dirs[8][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}, {1, 2}, {2, 1}, {1, -2}, {2, -1}};
     for (int p = 0; p < c->perms; p++) {
         real x[2][3], y[2][3];
-        int apart = 0;
         corner_boxes(c->perm[p], o, g, x, y);
-        for (int k = 0; k < 8 && !apart; k++)
-            apart = boxes_apart(x, y, dirs[k][0], dirs[k][1]);
-        if (!apart)
+        /* the lines one by one, p and q constants in each inlined test */
+        if (!(boxes_apart(x, y, 1, 0) || boxes_apart(x, y, 0, 1) || boxes_apart(x, y, 1, 1) ||
+              boxes_apart(x, y, 1, -1) || boxes_apart(x, y, 1, 2) || boxes_apart(x, y, 2, 1) ||
+              boxes_apart(x, y, 1, -2) || boxes_apart(x, y, 2, -1)))
             return 0;
     }
     return 1;
