@@ -24,6 +24,15 @@ static scene_model *load(const char *text, size_t len)
     return s;
 }
 
+/* The scene text (len of its size used), loaded, and its tree in *b. */
+static scene_model *load_tree(const char *text, int len, size_t size, bvh *b)
+{
+    ck_assert_int_lt(len, (int)size);
+    scene_model *s = load(text, (size_t)len);
+    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
+    return s;
+}
+
 /* The crossings a walk reported, in order. */
 enum { EVENTS_MAX = 512 };
 typedef struct events {
@@ -182,10 +191,8 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
                         off + scale * x, off + scale * y, off + scale * z, off + scale * (x + range(&g, 0.1, 3)),
                         off + scale * (y + range(&g, 0.1, 3)), off + scale * (z + range(&g, 0.1, 3)));
     }
-    ck_assert_int_lt(len, (int)sizeof text);
-    scene_model *s = load(text, (size_t)len);
     bvh b;
-    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    scene_model *s = load_tree(text, len, sizeof text, &b);
     long kept = 0, all = 0, exact = 0, whole = 0, tested = 0;
     for (int bundle_i = 0; bundle_i < 200; bundle_i++) {
         vec3 apex = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
@@ -269,10 +276,8 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
         }
         len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
     }
-    ck_assert_int_lt(len, (int)sizeof text);
-    scene_model *s = load(text, (size_t)len);
     bvh b;
-    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    scene_model *s = load_tree(text, len, sizeof text, &b);
     long exact = 0, whole = 0, tested = 0, crossed = 0, untold = 0;
     for (int bundle_i = 0; bundle_i < 300; bundle_i++) {
         vec3 apex = vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12));
@@ -343,10 +348,8 @@ static scene_model *load_built(const char *prims, bvh *b)
     static char text[4096];
     int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 10] look_at [0, 0, 0] }\n%s",
                        prims);
-    ck_assert(len > 0 && len < (int)sizeof text);
-    scene_model *s = load(text, (size_t)len);
-    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
-    return s;
+    ck_assert(len > 0);
+    return load_tree(text, len, sizeof text, b);
 }
 
 /*
