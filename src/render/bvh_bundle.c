@@ -158,10 +158,11 @@ static inline int boxes_apart(real x[2][3], real y[2][3], real p, real q)
 
 /* Whether every ray of the bundle (one origin, c->tri) has its triangle
  * test of g answer no crossing: under each shear it may have, its three
- * sheared corners strictly on one side of a line through the origin.  The origin is then no point of the
- * closed triangle of the rounded corners, and triangle_solve, whose edge
- * functions have the exact signs of those corners' (intersect.c,
- * triangle_apart, where the line is x = 0 or y = 0), answers no crossing. */
+ * sheared corners strictly on one side of a line through the origin.  The
+ * origin is then no point of the closed triangle of the rounded corners,
+ * and triangle_solve, whose edge functions have the exact signs of those
+ * corners' (intersect.c, triangle_apart, where the line is x = 0 or
+ * y = 0), answers no crossing. */
 BUNDLE_OUTLINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
 {
     for (int p = 0; p < c->perms; p++) {
