@@ -24,6 +24,15 @@ static scene_model *load(const char *text, size_t len)
     return s;
 }
 
+/* The scene text (len of its size used), loaded, and its tree in *b. */
+static scene_model *load_tree(const char *text, int len, size_t size, bvh *b)
+{
+    ck_assert_int_lt(len, (int)size);
+    scene_model *s = load(text, (size_t)len);
+    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
+    return s;
+}
+
 /* The crossings a walk reported, in order. */
 enum { EVENTS_MAX = 512 };
 typedef struct events {
@@ -182,10 +191,8 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
                         off + scale * x, off + scale * y, off + scale * z, off + scale * (x + range(&g, 0.1, 3)),
                         off + scale * (y + range(&g, 0.1, 3)), off + scale * (z + range(&g, 0.1, 3)));
     }
-    ck_assert_int_lt(len, (int)sizeof text);
-    scene_model *s = load(text, (size_t)len);
     bvh b;
-    ck_assert(bvh_build(&b, s->prims, s->prim_count, NULL));
+    scene_model *s = load_tree(text, len, sizeof text, &b);
     long kept = 0, all = 0, exact = 0, whole = 0, tested = 0;
     for (int bundle_i = 0; bundle_i < 200; bundle_i++) {
         vec3 apex = vec_add(vec_splat(off), vec_scale(vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12)), scale));
@@ -239,17 +246,110 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/*
+ * Triangles left out of a bundle (bvh_bundle.c, triangle_passed_by): 80
+ * random triangles in a cube of side 20 (and the same scaled by 1e-6 and
+ * moved to 1e7), bundles from random points (and from points on a
+ * triangle, its normal the point's) toward random boxes, some far (one
+ * axis of D = q - O dominant, one shear for every ray) and some near (the
+ * box across the diagonals: two or three axes may be the largest).  Each
+ * ray starts at the one origin the bundle is told of, and is aimed at a
+ * corner of the box (the least and greatest sx, sy are a corner's), the
+ * middle of an edge or a random point of it: its whole walk and bundle walk
+ * report the same crossings in the same order, and triangles are left out.
+ */
+START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
+{
+    static char text[32768];
+    rng g = {(uint64_t)_i + 101};
+    double scale = _i % 2 ? 1e-6 : 1, off = _i % 2 ? 1e7 : 0;
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    vec3 corner[80][3];
+    for (int i = 0; i < 80; i++) {
+        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
+        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
+        for (int k = 0; k < 3; k++) {
+            vec3 v = vec_add(c, vec_scale(unit(&g), range(&g, 0.3, 3)));
+            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
+            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
+                            corner[i][k].y, corner[i][k].z);
+        }
+        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
+    }
+    bvh b;
+    scene_model *s = load_tree(text, len, sizeof text, &b);
+    long exact = 0, whole = 0, tested = 0, crossed = 0, untold = 0;
+    for (int bundle_i = 0; bundle_i < 300; bundle_i++) {
+        vec3 apex = vec_make(range(&g, -12, 12), range(&g, -12, 12), range(&g, -12, 12));
+        double far = bundle_i % 3 ? range(&g, 2, 30) : range(&g, 0.5, 3);
+        vec3 centre = vec_add(apex, vec_scale(unit(&g), far));
+        double reach = bundle_i % 7 == 0 ? 0 : range(&g, 0, bundle_i % 3 ? 2 : 1.5);
+        apex = vec_add(vec_splat(off), vec_scale(apex, scale));
+        centre = vec_add(vec_splat(off), vec_scale(centre, scale));
+        reach *= scale;
+        vec3 n = unit(&g);
+        if (bundle_i % 2) {
+            /* On a triangle, as a shaded point of it. */
+            const vec3 *v = corner[bundle_i % 80];
+            double u = uniform(&g), w = uniform(&g) * (1 - u);
+            apex = vec_add(vec_add(vec_scale(v[0], 1 - u - w), vec_scale(v[1], u)), vec_scale(v[2], w));
+            n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
+        }
+        shadow_start from = {apex, n, 0x1p-42 * (off + 12 * scale) + 1e-300};
+        bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        vec3 lo = rays.lo, hi = rays.hi;
+        ray r[64];
+        vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
+        int ups = 0, downs = 0;
+        for (int j = 0; j < 64; j++) {
+            /* corners (j < 8), middles of edges and faces, random points */
+            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
+                           : j < 32 ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
+                                    : vec_make(uniform(&g), uniform(&g), uniform(&g));
+            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
+                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
+            ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
+            r[j] = ray_shadow_to(&from, q);
+            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+        }
+        if (ups != 64 && downs != 64)
+            continue;
+        /* The same bundle not told its origin: the hull's nodes alone. */
+        bvh_bundle bundle, hull;
+        bvh_bundle_make(&b, &rays, &hull, NULL);
+        rays.exact = 1;
+        rays.origin = ups == 64 ? up : down;
+        exact++;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        ck_assert_int_ge(bundle.count, 0);
+        for (int j = 0; j < 64; j++) {
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
+            crossed += e.count;
+            whole += same_walks_counted(&b, s->prims, &r[j], &bundle, &tested);
+            same_walks_counted(&b, s->prims, &r[j], &hull, &untold);
+        }
+    }
+    ck_assert_int_gt(exact, 100);
+    ck_assert_int_gt(crossed, 0);
+    /* Told their origin, the bundles leave triangles out. */
+    ck_assert_msg(tested < untold, "%ld primitive tests by the bundles, %ld untold, %ld by the whole walks", tested,
+                  untold, whole);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
 /* A scene of prims (the text of its primitives) under a camera, and its
  * tree in *b. */
 static scene_model *load_built(const char *prims, bvh *b)
 {
-    static char text[1024];
+    static char text[4096];
     int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 10] look_at [0, 0, 0] }\n%s",
                        prims);
-    ck_assert(len > 0 && len < (int)sizeof text);
-    scene_model *s = load(text, (size_t)len);
-    ck_assert(bvh_build(b, s->prims, s->prim_count, NULL));
-    return s;
+    ck_assert(len > 0);
+    return load_tree(text, len, sizeof text, b);
 }
 
 /*
@@ -293,6 +393,60 @@ START_TEST(test_bundle_keeps_a_box_part_its_test_counts)
     ck_assert_int_gt(grazed, 0);
     bvh_free(&b);
     scene_free(s);
+}
+END_TEST
+
+/*
+ * The shear bounds' margin.  A ray from just above (0, 0, 0) toward q
+ * passes exactly through the common corner V of a fan of six lone
+ * triangles: V = (sx 5, sy 5, 5) rounded, sx and sy the ray's own shear, so
+ * V's sheared x and y are 0 for this ray, and each triangle, whose edges
+ * are all inclusive, counts a crossing.  The bundle of that one ray (a box of
+ * reach 0 at q) bounds sx by q's D_x / D_z, which is not the ray's sx
+ * (rounded from the unit direction) for every q: without the margin the
+ * bounds can leave V a hair on one side for the bundle, and the
+ * triangles beyond it out (shear_bounds' margin 0: this test fails).
+ */
+START_TEST(test_bundle_keeps_a_triangle_through_its_corner)
+{
+    rng g = {7};
+    int differ = 0;
+    for (int k = 0; k < 200; k++) {
+        shadow_start from = {vec_make(0, 0, 0), vec_make(0, 0, 1), 1e-300};
+        vec3 q = vec_make(range(&g, -3, 3), range(&g, -3, 3), range(&g, 8, 12));
+        ray r = ray_shadow_to(&from, q);
+        isect_shear sh;
+        isect_shear_make(&r, &sh);
+        ck_assert(sh.kz == 2 && sh.kx == 0 && sh.ky == 1 && r.origin.x == 0 && r.origin.y == 0);
+        vec3 v = vec_make(sh.sx * 5, sh.sy * 5, 5);
+        differ += sh.sx != (q.x - r.origin.x) / (q.z - r.origin.z) || sh.sy != (q.y - r.origin.y) / (q.z - r.origin.z);
+        char prims[2048];
+        int len = 0;
+        double turn = range(&g, 0, 1);
+        for (int i = 0; i < 6; i++) {
+            double a0 = 6.283185307179586 * (i + turn) / 6, a1 = 6.283185307179586 * (i + 1 + turn) / 6;
+            len += snprintf(prims + len, sizeof prims - (size_t)len,
+                            "triangle { vertices [%.17g, %.17g, %.17g] [%.17g, %.17g, %.17g] [%.17g, %.17g, %.17g] "
+                            "material { Kd 0.5 t 0.5 } }\n",
+                            v.x, v.y, v.z, v.x + cos(a0), v.y + sin(a0), v.z + 0.2 * cos(3 * a0), v.x + cos(a1),
+                            v.y + sin(a1), v.z + 0.2 * cos(3 * a1));
+        }
+        bvh b;
+        scene_model *s = load_built(prims, &b);
+        events e = {0};
+        bvh_visit_counts(&b, s->prims, &r, record, &e, NULL);
+        ck_assert_int_eq(e.count, 6);   /* a lone triangle's edges and corners are its own: each counts */
+        bvh_bundle bundle;
+        bvh_bundle_rays rays = ball_rays(from.point, from.offset, q, 0);
+        rays.exact = 1;
+        rays.origin = r.origin;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        same_walks(&b, s->prims, &r, &bundle);
+        bvh_free(&b);
+        scene_free(s);
+    }
+    /* Some rays' shears are not their targets' quotients. */
+    ck_assert_int_gt(differ, 0);
 }
 END_TEST
 
@@ -565,8 +719,10 @@ Suite *suite_bundle(void)
     tcase_set_timeout(tc, 20);
     tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
+    tcase_add_test(tc, test_bundle_keeps_a_triangle_through_its_corner);
     tcase_add_test(tc, test_bundle_light_box_holds_every_sample);
     tcase_add_test(tc, test_bundle_light_side_gives_every_ray_its_origin);
     tcase_add_loop_test(tc, test_bundle_flush_lights_bit_identical, 0, 3);

@@ -141,7 +141,9 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
  * keeps, in depth-first order, the nodes it may touch: a node left out is
  * one whose box every ray of the bundle fails by the walk's own slab test,
  * and so is every node below it.  In a kept leaf, a box's record (a hot
- * box) that no ray of the bundle crosses is left out too: a leaf with none
+ * box) that no ray of the bundle crosses is left out too, and, where the
+ * rays start at `origin` itself, a triangle's record every ray passes by
+ * (bvh_bundle.c, triangle_passed_by): a leaf with none
  * left is not kept, and a leaf with some left is kept as the runs of its
  * parts between them, each a node of the bundle's own (runs) with the
  * leaf's box; past BVH_BUNDLE_RUNS of those, the leaf is kept whole.

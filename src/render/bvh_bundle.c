@@ -46,9 +46,25 @@
  * round to <= 0, its d_a = (q_a - O_a) rounded times the rounded 1/|q - O| is
  * > 0 (at least g / (2 S) before rounding: no underflow), and tmin > 0, so
  * box_axis_apart answers 1 and the part counts 0 crossings.
+ *
+ * A triangle part, for an exact origin, is left out where every ray of the
+ * bundle passes it by in its sheared plane (triangle_passed_by: the shears
+ * the rays may have, shear_bounds; each corner's box over them,
+ * corner_boxes; a line through the origin with the three boxes strictly on
+ * one side, boxes_apart).
  */
 #include <assert.h>
 #include "render/bvh.h"
+
+/* The triangles' tests, made at a bundle's making only, kept out of line:
+ * inlined, they grew the shadow rays' own code (add_source, into which the
+ * link-time optimiser inlines bvh_bundle_make), demo.scene +0.8 %
+ * instructions without a triangle. */
+#if defined(__GNUC__) && !defined(__FRAMAC__)
+#define BUNDLE_OUTLINE __attribute__((noinline))
+#else
+#define BUNDLE_OUTLINE
+#endif
 
 /* Each bound of s a node's box gives on one axis: the plane's offset from
  * the apex times the reciprocal of its slope, and whether it bounds s from
@@ -59,6 +75,11 @@ typedef struct bundle_cone {
     int lo_below[3], hi_below[3];
     real margin;
     real gap;                    /* g of the behind test */
+    /* tri 1: every ray's triangle shear (isect_shear_make) is one of
+     * perm[0 .. perms - 1]'s: its axes, and sx, sy within their bounds
+     * (shear_bounds); 0: not known; -1: not looked at yet */
+    int tri, perms;
+    isect_shear perm[3][2];   /* the axes, and sx, sy: their least, their greatest */
 } bundle_cone;
 
 static real reciprocal(real k) { return k != 0.0 ? 1.0 / k : copysign(INFINITY, k); }
@@ -92,6 +113,136 @@ static int cone_meets_node(const bundle_cone *c, const bvh_node *nd)
     return cone_meets(c, lo, hi);
 }
 
+/* The box each corner of g keeps in the sheared plane over the bundle:
+ * its x (isect_corner_at, the watertight test's own operations for the
+ * bundle's one origin) between x[0][i] and x[1][i], its y likewise.  For
+ * a corner, with a = v_k - o_k and z = v_kz - o_kz the same doubles for
+ * every ray, the rounded s z is monotone in s (rounding is monotone;
+ * increasing for z >= 0, decreasing for z <= 0) and the rounded a - p
+ * monotone in p, so the coordinate is monotone in s: between its values at
+ * the two bounds of s. */
+static void corner_boxes(const isect_shear sh[2], vec3 o, const real *g, real x[2][3], real y[2][3])
+{
+    int kx = sh[0].kx, ky = sh[0].ky, kz = sh[0].kz;
+    const real oa[3] = {o.x, o.y, o.z};
+    for (int i = 0; i < 3; i++) {
+        /* isect_corner_at's differences, once for the four shears */
+        const real *v = g + 3 * i;
+        real z = v[kz] - oa[kz], ax = v[kx] - oa[kx], ay = v[ky] - oa[ky];
+        real a = isect_corner_of(ax, z, sh[0].sx), b = isect_corner_of(ax, z, sh[1].sx);
+        x[0][i] = a < b ? a : b;
+        x[1][i] = a < b ? b : a;
+        a = isect_corner_of(ay, z, sh[0].sy);
+        b = isect_corner_of(ay, z, sh[1].sy);
+        y[0][i] = a < b ? a : b;
+        y[1][i] = a < b ? b : a;
+    }
+}
+
+/* Whether the three boxes lie strictly on one side of the line p x + q y = 0
+ * (p, q in {0, +-1, +-2}: the products exact, and a rounded sum of two has
+ * the exact sum's sign): the least of p x + q y over a box is at the
+ * corner the signs of p and q pick. */
+static inline int boxes_apart(real x[2][3], real y[2][3], real p, real q)
+{
+    int side = 0;
+    for (int i = 0; i < 3; i++) {
+        real least = p * x[p < 0][i] + q * y[q < 0][i], most = p * x[p >= 0][i] + q * y[q >= 0][i];
+        int here = least > 0 ? 1 : most < 0 ? -1 : 0;
+        if (here == 0 || (i > 0 && here != side))
+            return 0;
+        side = here;
+    }
+    return 1;
+}
+
+/* Whether every ray of the bundle (one origin, c->tri) has its triangle
+ * test of g answer no crossing: under each shear it may have, its three
+ * sheared corners strictly on one side of a line through the origin.  The
+ * origin is then no point of the closed triangle of the rounded corners,
+ * and triangle_solve, whose edge functions have the exact signs of those
+ * corners' (intersect.c, triangle_apart, where the line is x = 0 or
+ * y = 0), answers no crossing. */
+BUNDLE_OUTLINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
+{
+    for (int p = 0; p < c->perms; p++) {
+        real x[2][3], y[2][3];
+        corner_boxes(c->perm[p], o, g, x, y);
+        /* the lines one by one, p and q constants in each inlined test */
+        if (!(boxes_apart(x, y, 1, 0) || boxes_apart(x, y, 0, 1) || boxes_apart(x, y, 1, 1) ||
+              boxes_apart(x, y, 1, -1) || boxes_apart(x, y, 1, 2) || boxes_apart(x, y, 2, 1) ||
+              boxes_apart(x, y, 1, -2) || boxes_apart(x, y, 2, -1)))
+            return 0;
+    }
+    return 1;
+}
+
+/* The least and greatest of p / q over p in [p0, p1], q in [q0, q1] (q of
+ * one strict sign, so the quotient is monotone in each: its extremes are at
+ * the corners), widened by m = 2^-40 (|least| + |greatest|) + 2^-1000, and
+ * held to [-1, 1] (a shear's sx, sy are: isect_shear_make). */
+static void ratio_bounds(real p0, real p1, real q0, real q1, real *least, real *most)
+{
+    real a = p0 / q0, b = p0 / q1, c = p1 / q0, d = p1 / q1;
+    real lo = a < b ? a : b, hi = a > b ? a : b;
+    lo = c < lo ? c : lo;
+    lo = d < lo ? d : lo;
+    hi = c > hi ? c : hi;
+    hi = d > hi ? d : hi;
+    real m = 0x1p-40 * (fabs(lo) + fabs(hi)) + 0x1p-1000;
+    lo -= m;
+    hi += m;
+    *least = lo > -1 ? lo : -1;
+    *most = hi < 1 ? hi : 1;
+}
+
+/* Where every ray starts at rays->origin (exact), the shears its rays may
+ * have: c->tri = 1 when found.  A ray toward a target q in [L, H] has dir =
+ * D c' rounded per axis, D = q - O rounded (each D_a between L_a - O_a and
+ * H_a - O_a rounded: rounding is monotone) and one factor c' > 0 for every
+ * axis (unit_toward: the rounded 1 / |D|, or a division by |D|).  Axis j
+ * is never the shear's kz where another axis's least |D_a| over the box
+ * exceeds j's greatest by the factor 1 + 2^-30 (the rounded |dir_a| then
+ * exceeds |dir_j|: each is |D_a| c' within a relative eps, and |D| is
+ * normal below).  Every other axis k must have D_k of one strict sign,
+ * |D_k| >= 2^-400, on the whole box; a ray with kz = k then has dz of D_k's
+ * sign, (kx, ky) as shear_set turns them, and sx = dir_kx / dz rounded
+ * (shear_ratio: the magnitudes' quotient, signed), which is D_kx / D_kz
+ * within a relative 4 eps, plus 2^-1074 where dir_kx is subnormal;
+ * ratio_bounds' margin covers both, as |sx| <= 1.  sy likewise. */
+BUNDLE_OUTLINE static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
+{
+    const real o[3] = {rays->origin.x, rays->origin.y, rays->origin.z};
+    const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
+    real dl[3], dh[3], least[3], most[3];
+    c->tri = 0;
+    c->perms = 0;
+    if (!rays->exact)
+        return;
+    for (int a = 0; a < 3; a++) {
+        dl[a] = tl[a] - o[a];
+        dh[a] = th[a] - o[a];
+        least[a] = dl[a] > 0 ? dl[a] : dh[a] < 0 ? -dh[a] : 0;
+        most[a] = fabs(dl[a]) > fabs(dh[a]) ? fabs(dl[a]) : fabs(dh[a]);
+    }
+    for (int k = 0; k < 3; k++) {
+        int j1 = (k + 1) % 3, j2 = (k + 2) % 3;
+        real over = (1 + 0x1p-30) * most[k];
+        if (least[j1] > over || least[j2] > over)
+            continue;   /* never the largest */
+        if (!(least[k] >= 0x1p-400))
+            return;
+        int turn = dh[k] < 0;
+        isect_shear *sh = c->perm[c->perms++];
+        sh[0].kz = sh[1].kz = k;
+        sh[0].kx = sh[1].kx = turn ? j2 : j1;
+        sh[0].ky = sh[1].ky = turn ? j1 : j2;
+        ratio_bounds(dl[sh[0].kx], dh[sh[0].kx], dl[k], dh[k], &sh[0].sx, &sh[1].sx);
+        ratio_bounds(dl[sh[0].ky], dh[sh[0].ky], dl[k], dh[k], &sh[0].sy, &sh[1].sy);
+    }
+    c->tri = c->perms > 0;
+}
+
 static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
 {
     real size = vec_sum_abs(rays->apex) + vec_sum_abs(rays->lo) + vec_sum_abs(rays->hi) + rays->slack +
@@ -115,6 +266,7 @@ static int cone_make(const bvh *b, const bvh_bundle_rays *rays, bundle_cone *c)
         c->inv_hi[a] = reciprocal(tl[a] - p[a]);
         c->hi_below[a] = signbit(c->inv_hi[a]) != 0;
     }
+    c->tri = -1;   /* shear_bounds at the first triangle: most bundles meet none */
     return 1;
 }
 
@@ -136,12 +288,20 @@ static int box_behind(const bundle_cone *c, const bvh_bundle_rays *rays, const r
 }
 
 /* The parts of leaf nd that no ray of the bundle crosses: box records the
- * hull misses or that lie behind every ray. */
-static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
+ * hull misses or that lie behind every ray, and triangle records every ray
+ * passes by. */
+static unsigned leaf_skip(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays, const bvh_node *nd)
 {
     unsigned skip = 0;
     for (int i = 0; i < nd->count && i < 32; i++) {
         bvh_hot hr = b->hot[nd->first + i];
+        if (ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE) {
+            if (c->tri < 0)
+                shear_bounds(rays, c);
+            if (c->tri && triangle_passed_by(c, rays->origin, b->hot_reals + hr.at))
+                skip |= 1u << i;
+            continue;
+        }
         if (ISECT_HOT_KIND(hr.code) != ISECT_HOT_BOX)
             continue;
         const real *g = b->hot_reals + hr.at;
@@ -154,7 +314,7 @@ static unsigned leaf_skip(const bvh *b, const bundle_cone *c, const bvh_bundle_r
 /* Keeps leaf `node`: whole, or as the runs of its parts leaf_skip leaves
  * (each a node of out->runs with the leaf's box, in order), or not at all
  * where it leaves none.  Past BVH_BUNDLE_RUNS runs in all: whole. */
-static void keep_leaf(const bvh *b, const bundle_cone *c, const bvh_bundle_rays *rays, int node, bvh_bundle *out)
+static void keep_leaf(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays, int node, bvh_bundle *out)
 {
     const bvh_node *nd = &b->nodes[node];
     unsigned skip = leaf_skip(b, c, rays, nd);

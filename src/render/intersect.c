@@ -1190,15 +1190,8 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const 
     return hot_sphere(g, r, out, max, 1);
 }
 
-/* triangle_corner's x (k = kx, s = sx) or y (ky, sy) alone: the same operations. */
-static inline real triangle_corner_at(vec3 v, vec3 o, real s, int k, int kz)
-{
-    real z = vec_component(v, kz) - vec_component(o, kz);
-    return vec_component(v, k) - vec_component(o, k) - s * z;
-}
-
 /* Whether the ray passes the triangle by in the sheared plane: its three
- * corners (rounded as triangle_solve rounds them, the same operations) all
+ * corners (isect_corner_at: triangle_corner's x or y alone, the same operations) all
  * on one side of x = 0, or of y = 0, strictly.  triangle_solve then
  * answers no crossing: its edge functions have the exact signs of those of
  * the rounded corners (a nonzero rounded difference of two rounded products
@@ -1215,12 +1208,12 @@ static inline real triangle_corner_at(vec3 v, vec3 o, real s, int k, int kz)
  * are not made for a triangle x tells apart. */
 static inline int triangle_apart(const vec3 v[3], vec3 o, real sx, real sy, int kx, int ky, int kz)
 {
-    real x0 = triangle_corner_at(v[0], o, sx, kx, kz), x1 = triangle_corner_at(v[1], o, sx, kx, kz),
-         x2 = triangle_corner_at(v[2], o, sx, kx, kz);
+    real x0 = isect_corner_at(v[0], o, sx, kx, kz), x1 = isect_corner_at(v[1], o, sx, kx, kz),
+         x2 = isect_corner_at(v[2], o, sx, kx, kz);
     if (x0 * x1 > 0.0 && x0 * x2 > 0.0)
         return 1;
-    real y0 = triangle_corner_at(v[0], o, sy, ky, kz), y1 = triangle_corner_at(v[1], o, sy, ky, kz),
-         y2 = triangle_corner_at(v[2], o, sy, ky, kz);
+    real y0 = isect_corner_at(v[0], o, sy, ky, kz), y1 = isect_corner_at(v[1], o, sy, ky, kz),
+         y2 = isect_corner_at(v[2], o, sy, ky, kz);
     return y0 * y1 > 0.0 && y0 * y2 > 0.0;
 }
 

@@ -128,6 +128,17 @@ typedef struct isect_shear {
     int kx, ky, kz;
 } isect_shear;
 void isect_shear_make(const ray *r, isect_shear *sh);
+/* A triangle corner's sheared x (k = kx, s = sx) or y (ky, sy) for the
+ * origin o, as the watertight test rounds it: (v_k - o_k) - s (v_kz - o_kz)
+ * (isect_corner_of of a = v_k - o_k and z = v_kz - o_kz rounded).  The
+ * run's quick miss (intersect.c, triangle_apart) and a bundle's triangles
+ * left out (bvh_bundle.c) make it by this one text. */
+static inline real isect_corner_of(real a, real z, real s) { return a - s * z; }
+static inline real isect_corner_at(vec3 v, vec3 o, real s, int k, int kz)
+{
+    real z = vec_component(v, kz) - vec_component(o, kz);
+    return isect_corner_of(vec_component(v, k) - vec_component(o, k), z, s);
+}
 int isect_part_sheared(const scene_prim *p, int part, ray *r, const isect_shear *sh, hit *h);
 int isect_part_all_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh,
                            hit out[ISECT_MAX_CROSSINGS]);
