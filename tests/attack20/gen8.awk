@@ -20,7 +20,7 @@ BEGIN {
     for (i = 0; i < nl; i++) {
         px = pick("0 0.5 1 -1 0.25") * S; py = pick("1 2 3 0.75 1.5") * S; pz = pick("0 0.5 -0.5 0.25") * S
         k = pick("flat flat slant point disk any")
-        if (k == "flat") printf "distributed_light { rectangle %s %s %s power %g samples %s }\n", v(px, py, pz), pick("[" S ",0,0] [" 0.5 * S ",0,0] [0,0," S "]"), pick("[0,0," S "] [0,0," 0.25 * S "] [" S ",0,0]"), 10 * S * S, pick("1 4 9 16 17")
+        if (k == "flat") printf "distributed_light { rectangle %s %s %s power %g samples %s }\n", v(px, py, pz), (fa = rand() < 0.5) ? pick("[" S ",0,0] [" 0.5 * S ",0,0]") : pick("[0,0," S "] [0," 0.25 * S ",0]"), fa ? pick("[0,0," S "] [0,0," 0.25 * S "] [0," S ",0]") : "[" S ",0,0]", 10 * S * S, pick("1 4 9 16 17")
         else if (k == "slant") printf "distributed_light { rectangle %s %s %s power %g samples %s }\n", v(px, py, pz), v(S, 0, pick("1 -1") * S), v(0, 0.5 * S, 0), 10 * S * S, pick("4 9 16")
         else if (k == "point") printf "distributed_light { rectangle %s %s %s power %g samples %s }\n", v(px, py, pz), v(1e-9 * S, 0, 0), v(0, 0, 1e-9 * S), 10 * S * S, pick("1 4 9")
         else if (k == "disk") printf "distributed_light { disk %s %s %g power %g samples %s }\n", v(px, py, pz), pick("[0,-1,0] [1,-1,0.3] [1,0,1] [0,0,1]"), pick("0.25 0.5 1e-6 1") * S, 10 * S * S, pick("1 4 9 16 17")
@@ -35,7 +35,12 @@ BEGIN {
         sc = pick("1 1 0.5 2 -1 0.25")
         if (k == "tri") {
             m = ri(1, 12)
-            for (a = 0; a < m; a++) printf "triangle { vertices %s %s %s %s }\n", v((x + ri(-2, 2) * 0.25) * S, (y + ri(0, 4) * 0.25) * S, (z + ri(-2, 2) * 0.25) * S), v((x + ri(-2, 2) * 0.25) * S, (y + ri(-1, 4) * 0.25) * S, (z + 0.5) * S), v((x + 0.5) * S, (y + ri(0, 4) * 0.25) * S, (z + ri(-2, 2) * 0.25) * S), mm()
+            for (a = 0; a < m; a++) {
+                a0 = ri(-2, 2); a1 = ri(0, 4); a2 = ri(-2, 2); b0 = ri(-2, 2); b1 = ri(-1, 4); b2 = 2; c0 = 2; c1 = ri(0, 4); c2 = ri(-2, 2)
+                u0 = b0 - a0; u1 = b1 - a1; u2 = b2 - a2; w0 = c0 - a0; w1 = c1 - a1; w2 = c2 - a2
+                if (u1 * w2 - u2 * w1 == 0 && u2 * w0 - u0 * w2 == 0 && u0 * w1 - u1 * w0 == 0) continue   # no area: refused
+                printf "triangle { vertices %s %s %s %s }\n", v((x + a0 * 0.25) * S, (y + a1 * 0.25) * S, (z + a2 * 0.25) * S), v((x + b0 * 0.25) * S, (y + b1 * 0.25) * S, (z + b2 * 0.25) * S), v((x + c0 * 0.25) * S, (y + c1 * 0.25) * S, (z + c2 * 0.25) * S), mm()
+            }
             continue
         }
         f = k == "octa" ? "octa.obj" : k == "fan" ? "fan.obj" : k == "sheet" ? "sheet.obj" : k == "cube" ? "glass_cube.obj" : "geosphere.obj"
