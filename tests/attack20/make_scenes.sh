@@ -38,3 +38,23 @@ done
 done
 done
 done
+# The shading points on a mesh floor (sheet.obj, twice as dense as the
+# pixels), lights at the horizon: the rays graze the floor's own triangles,
+# the origin just above their plane.
+for S in 1 1e-6 1e6; do
+for h in 0.01 1e-9 0.5; do
+for t in 0 0.5; do
+    f="$d/floor_h${h}_t${t}_S${S}.scene"
+    a() { awk -v S=$S -v h=$h "BEGIN{printf $1}"; }
+    {
+        echo "# attack 20: shadow rays grazing a lattice mesh floor toward lights at the horizon"
+        echo "image { width 16 height 16 max_depth 2 background 0.2 }"
+        echo "camera { orthographic eye [$(a '"%.17g, %.17g, %.17g", 0.125 * S, 5 * S, 0.125 * S')] look_at [$(a '"%.17g, 0, %.17g", 0.125 * S, 0.125 * S')] up [0, 0, -1] width $(a '"%.17g", 4 * S')}"
+        echo "distributed_light { rectangle [$(a '"%.17g, %.17g, %.17g", 3 * S, h * S, -1 * S')] [0, 0, $(a '"%.17g", 2 * S')] [0, $(a '"%.17g", h * S')] , 0] power $(a '"%.17g", 10 * S * S')] samples 9 }" | sed 's/\] , 0\]/, 0]/; s/power \([^]]*\)\] samples/power \1 samples/'
+        echo "distributed_light { disk [$(a '"%.17g, %.17g, %.17g", -3 * S, h * S, 3 * S')] [1, 0, -1] $(a '"%.17g", 0.25 * S')] power $(a '"%.17g", 10 * S * S')] samples 4 }" | sed 's/\] power/ power/; s/power \([^]]*\)\] samples/power \1 samples/'
+        echo "mesh { file \"sheet.obj\" material { Kd 0.8 t $t ior 1 } scale $(a '"%.17g", 4 * S') }"
+        echo "mesh { file \"octa.obj\" material { Kd 0.3 t $t ior 1 } scale $S translate [$(a '"%.17g, %.17g, %.17g", S, 0.25 * S, 0')] }"
+    } > "$f"
+done
+done
+done
