@@ -346,6 +346,7 @@ int main(int argc, char **argv)
     char spath[512];
     snprintf(spath, sizeof spath, "%s/f.scene", dir);
     long rays_n = 0, bad = 0, bundles = 0, skipped = 0, exacts = 0, off_origin = 0, tris_left = 0;
+    long full = 0, runs_full = 0;
     static const double Ts[] = {0, 0, 0, 1e3, 1e6, 1e8, -3e7, 0.5};
     static const double Ss[] = {1, 1, 1, 1e-6, 1e-3, 1e5, 3, 1e-300, 1e300, 1e-150, 1e150, 0x1p-1000};
     for (int sc = 0; sc < scenes; sc++) {
@@ -357,7 +358,7 @@ int main(int argc, char **argv)
         int nl = RI(1, 2);
         for (int i = 0; i < nl; i++)
             light();
-        int nt = RI(0, 40);
+        int nt = U() < 0.2 ? RI(100, 600) : RI(0, 40);   /* many: the list and the runs fill */
         for (int i = 0; i < nt; i++) {
             double c[9];
             for (int j = 0; j < 9; j++) c[j] = L4(-8, 8);
@@ -446,6 +447,8 @@ int main(int argc, char **argv)
                 bundles++;
                 if (bundle.count < 0)
                     continue;
+                full += bundle.count >= BVH_BUNDLE_MAX;
+                runs_full += bundle.run_count >= BVH_BUNDLE_RUNS - 2;
                 enum { R = 40 };
                 uint64_t key = (uint64_t)(U() * 0x1p53);
                 for (int j = 0; j < R; j++) {
@@ -497,5 +500,6 @@ int main(int argc, char **argv)
     }
     printf("tri_fuzz: %d scenes, %ld bundles (%ld exact), %ld rays, %ld part tests saved, %ld off-origin, %ld differ\n",
            scenes, bundles, exacts, rays_n, skipped, off_origin, bad);
+    printf("  bundles with a full list: %ld, with 14 or more runs: %ld\n", full, runs_full);
     return bad != 0 || off_origin != 0;
 }
