@@ -24,31 +24,9 @@
 #include "render/intersect.h"
 #include "scene/scene.h"
 
-static uint64_t st = 0x2545F4914F6CDD1Du;
-static double U(void)
-{
-    uint64_t z = (st += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
-static int RI(int lo, int hi) { return lo + (int)((hi - lo + 1) * U()); }
-static double pick(const double *a, int n) { return a[RI(0, n - 1)]; }
-static double L4(int lo, int hi) { return RI(lo, hi) * 0.25; }
-
-enum { EV = 4096 };
-typedef struct events { int count, prim[EV], part[EV], n[EV]; } events;
-static int record(void *ctx, bvh_ref ref, int crossings)
-{
-    events *e = ctx;
-    if (e->count < EV) {
-        e->prim[e->count] = ref.prim;
-        e->part[e->count] = ref.part;
-        e->n[e->count] = crossings;
-    }
-    e->count++;
-    return 0;
-}
+#define FUZZ_SEED 0x2545F4914F6CDD1Du
+#define FUZZ_EVENTS
+#include "fuzz_common.h"
 
 static char text[1 << 18];
 static int len;
@@ -161,9 +139,7 @@ int main(int argc, char **argv)
             hits += f1;
             int ok = f1 == f2 && (!f1 || (same_bits(h1.t, h2.t) && h1.prim == h2.prim && h1.part == h2.part &&
                                           same_bits(r1.tmax, r2.tmax)));
-            ok = ok && e1.count == e2.count;
-            for (int i = 0; ok && i < e1.count && i < EV; i++)
-                ok = e1.prim[i] == e2.prim[i] && e1.part[i] == e2.part[i] && e1.n[i] == e2.n[i];
+            ok = ok && same_events(&e1, &e2);
             if (!ok) {
                 if (bad < 5) {
                     printf("DIFFER scene %d ray %d: culling %d (t %a prim %d), exhaustive %d (t %a prim %d); crossings %d/%d\n", sc, k,

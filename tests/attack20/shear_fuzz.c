@@ -13,26 +13,11 @@
  *      build/librefray-internal.a -ljansson -lm && /tmp/sf 1000000
  */
 #include "render/bvh_bundle.c"
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static uint64_t st = 0x853C49E6748FEA9Bu;
-static double U(void)
-{
-    uint64_t z = (st += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
-static int RI(int lo, int hi) { return lo + (int)((hi - lo + 1) * U()); }
-static double nudge(double x, int k)
-{
-    for (; k > 0; k--) x = nextafter(x, INFINITY);
-    for (; k < 0; k++) x = nextafter(x, -INFINITY);
-    return x;
-}
+#define FUZZ_SEED 0x853C49E6748FEA9Bu
+#include "fuzz_common.h"
 
 int main(int argc, char **argv)
 {

@@ -29,37 +29,26 @@
 #include "render/trace.h"
 #include "scene/scene.h"
 
-static uint64_t st = 0x9E3779B97F4A7C15u;
-static double U(void)
-{
-    uint64_t z = (st += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
-static int RI(int lo, int hi) { return lo + (int)((hi - lo + 1) * U()); }
-static double pick(const double *a, int n) { return a[RI(0, n - 1)]; }
-static double L4(int lo, int hi) { return RI(lo, hi) * 0.25; }
-
-enum { EV = 4096 };
-typedef struct events { int count, prim[EV], part[EV], n[EV]; } events;
-static int record(void *ctx, bvh_ref ref, int crossings)
-{
-    events *e = ctx;
-    if (e->count < EV) {
-        e->prim[e->count] = ref.prim;
-        e->part[e->count] = ref.part;
-        e->n[e->count] = crossings;
-    }
-    e->count++;
-    return 0;
-}
+#define FUZZ_EVENTS
+#include "fuzz_common.h"
 
 static double T, S;
 static char text[1 << 18];
 static int len;
 #define ADD(...) (len += snprintf(text + len, sizeof text - (size_t)len, __VA_ARGS__))
 static double W(double x) { return T + S * x; }
+
+/* One ray: the bundle walk against the whole one; 1 where they agree. */
+static int walks_agree(const bvh *b, const scene_prim *prims, const ray *r, const bvh_bundle *bundle, long *skipped)
+{
+    static events whole, part;
+    bvh_stats sw = {0, 0}, sp = {0, 0};
+    whole.count = part.count = 0;
+    bvh_visit_counts(b, prims, r, record, &whole, &sw);
+    bvh_visit_counts_bundle(b, prims, r, bundle, record, &part, &sp);
+    *skipped += sw.prims_tested - sp.prims_tested;
+    return same_events(&whole, &part);
+}
 
 static const char *dir;
 
@@ -137,13 +126,6 @@ static void light(void)
     }
     ADD("distributed_light { rectangle [%.17g,%.17g,%.17g] [%.17g,%.17g,%.17g] [%.17g,%.17g,%.17g] power 1 samples %d }\n",
         W(px), W(py), W(pz), S * u[0], S * u[1], S * u[2], S * v[0], S * v[1], S * v[2], RI(1, 17));
-}
-
-static double nudge(double x, int k)
-{
-    for (; k > 0; k--) x = nextafter(x, INFINITY);
-    for (; k < 0; k++) x = nextafter(x, -INFINITY);
-    return x;
 }
 
 static vec3 nudge3(vec3 v, int k)
@@ -285,20 +267,10 @@ static int one_tangent(int sc, long *rays_n, long *bad, long *bundles, long *ski
         }
         if (!(r.tmax > 0))
             continue;
-        static events whole, part;
-        bvh_stats sw = {0, 0}, sp = {0, 0};
-        whole.count = part.count = 0;
-        bvh_visit_counts(&b, s->prims, &r, record, &whole, &sw);
-        bvh_visit_counts_bundle(&b, s->prims, &r, &bundle, record, &part, &sp);
         (*rays_n)++;
-        *skipped += sw.prims_tested - sp.prims_tested;
-        int same = whole.count == part.count;
-        for (int i = 0; same && i < whole.count && i < EV; i++)
-            same = whole.prim[i] == part.prim[i] && whole.part[i] == part.part[i] && whole.n[i] == part.n[i];
-        if (!same) {
+        if (!walks_agree(&b, s->prims, &r, &bundle, skipped)) {
             if (*bad < 5) {
-                printf("DIFFER tangent scene %d (T %g S %g) ray %d: whole %d events, bundle %d\n", sc, T, S, j, whole.count,
-                       part.count);
+                printf("DIFFER tangent scene %d (T %g S %g) ray %d\n", sc, T, S, j);
                 printf("  point %a %a %a normal %a %a %a offset %a side %d\n  target %a %a %a\n", from.point.x,
                        from.point.y, from.point.z, n.x, n.y, n.z, from.offset, side, q[j].x, q[j].y, q[j].z);
                 FILE *keep = fopen(spath, "w");
@@ -467,20 +439,10 @@ int main(int argc, char **argv)
                     }
                     if (!(r.tmax > 0))
                         continue;
-                    static events whole, part;
-                    bvh_stats sw = {0, 0}, sp = {0, 0};
-                    whole.count = part.count = 0;
-                    bvh_visit_counts(&b, s->prims, &r, record, &whole, &sw);
-                    bvh_visit_counts_bundle(&b, s->prims, &r, &bundle, record, &part, &sp);
                     rays_n++;
-                    skipped += sw.prims_tested - sp.prims_tested;
-                    int same = whole.count == part.count;
-                    for (int i = 0; same && i < whole.count && i < EV; i++)
-                        same = whole.prim[i] == part.prim[i] && whole.part[i] == part.part[i] && whole.n[i] == part.n[i];
-                    if (!same) {
+                    if (!walks_agree(&b, s->prims, &r, &bundle, &skipped)) {
                         if (bad < 5) {
-                            printf("DIFFER scene %d (T %g S %g) light %d bundle %d ray %d: whole %d events, bundle %d\n", sc,
-                                   T, S, li, k, j, whole.count, part.count);
+                            printf("DIFFER scene %d (T %g S %g) light %d bundle %d ray %d\n", sc, T, S, li, k, j);
                             printf("  point %a %a %a normal %a %a %a offset %a exact %d\n  target %a %a %a\n", from.point.x,
                                    from.point.y, from.point.z, n.x, n.y, n.z, from.offset, rays.exact, q.x, q.y, q.z);
                             char keep[600];
