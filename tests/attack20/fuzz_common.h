@@ -9,6 +9,8 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <string.h>
 
 #ifndef FUZZ_SEED
 #define FUZZ_SEED 0x9E3779B97F4A7C15u
@@ -57,6 +59,32 @@ static inline int same_events(const events *a, const events *b)
     for (int i = 0; same && i < a->count && i < EV; i++)
         same = a->prim[i] == b->prim[i] && a->part[i] == b->part[i] && a->n[i] == b->n[i];
     return same;
+}
+
+/* The bundle of rays from `from` toward the box [lo, hi], as light_bundle
+ * makes it (not exact: the caller says where it is). */
+static inline bvh_bundle_rays bundle_rays_toward(const shadow_start *from, vec3 lo, vec3 hi)
+{
+    bvh_bundle_rays rays;
+    vec3 n = from->normal;
+    memset(&rays, 0, sizeof rays);
+    rays.apex = from->point;
+    rays.slack = from->offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
+    rays.lo = lo;
+    rays.hi = hi;
+    return rays;
+}
+
+/* A scene that showed a difference, kept as DIR/badK.scene. */
+static inline void keep_text(const char *dir, long k, const char *text, int len)
+{
+    char keep[600];
+    snprintf(keep, sizeof keep, "%s/bad%ld.scene", dir, k);
+    FILE *f = fopen(keep, "w");
+    if (f) {
+        fwrite(text, 1, (size_t)len, f);
+        fclose(f);
+    }
 }
 #endif
 

@@ -146,11 +146,7 @@ int main(int argc, char **argv)
                            f1, h1.t, h1.prim, f2, h2.t, h2.prim, e1.count, e2.count);
                     printf("  origin %a %a %a dir %a %a %a tmin %a tmax %a\n", r.origin.x, r.origin.y, r.origin.z, r.dir.x,
                            r.dir.y, r.dir.z, r.tmin, r.tmax);
-                    char keep[600];
-                    snprintf(keep, sizeof keep, "%s/bad%ld.scene", dir, bad);
-                    FILE *f = fopen(keep, "w");
-                    fwrite(text, 1, (size_t)len, f);
-                    fclose(f);
+                    keep_text(dir, bad, text, len);
                 }
                 bad++;
             }

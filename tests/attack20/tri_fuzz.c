@@ -248,12 +248,7 @@ static int one_tangent(int sc, long *rays_n, long *bad, long *bundles, long *ski
         return 0;
     }
     vec3 n = from.normal;
-    bvh_bundle_rays rays;
-    memset(&rays, 0, sizeof rays);
-    rays.apex = from.point;
-    rays.slack = from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
-    rays.lo = lo;
-    rays.hi = hi;
+    bvh_bundle_rays rays = bundle_rays_toward(&from, lo, hi);
     rays.exact = side != 0;
     rays.origin = O;
     bvh_bundle bundle;
@@ -403,12 +398,7 @@ int main(int argc, char **argv)
                     from = ray_shadow_start(&s->prims[0], &h);
                 }
                 vec3 n = from.normal;
-                bvh_bundle_rays rays;
-                memset(&rays, 0, sizeof rays);
-                rays.apex = from.point;
-                rays.slack = from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
-                rays.lo = setup.box_lo;
-                rays.hi = setup.box_hi;
+                bvh_bundle_rays rays = bundle_rays_toward(&from, setup.box_lo, setup.box_hi);
                 int side = trace_light_side(&from, &setup);
                 rays.exact = side != 0;
                 if (side)
@@ -445,11 +435,7 @@ int main(int argc, char **argv)
                             printf("DIFFER scene %d (T %g S %g) light %d bundle %d ray %d\n", sc, T, S, li, k, j);
                             printf("  point %a %a %a normal %a %a %a offset %a exact %d\n  target %a %a %a\n", from.point.x,
                                    from.point.y, from.point.z, n.x, n.y, n.z, from.offset, rays.exact, q.x, q.y, q.z);
-                            char keep[600];
-                            snprintf(keep, sizeof keep, "%s/bad%ld.scene", dir, bad);
-                            FILE *f = fopen(keep, "w");
-                            fwrite(text, 1, (size_t)len, f);
-                            fclose(f);
+                            keep_text(dir, bad, text, len);
                         }
                         bad++;
                     }
