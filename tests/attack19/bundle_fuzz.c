@@ -127,11 +127,8 @@ int main(int argc, char **argv)
             }
             rays.exact = ups == R || downs == R;
             rays.origin = ups == R ? up : down;
-            exacts += rays.exact;
             bvh_bundle bundle;
-            bvh_bundle_make(&b, &rays, &bundle, NULL);
-            bundles++;
-            if (bundle.count < 0)
+            if (!bundle_counted(&b, &rays, &bundle, &bundles, &exacts))
                 continue;
             for (int j = 0; j < R; j++) {
                 if (!(r[j].tmax > 0))

@@ -75,6 +75,15 @@ static inline bvh_bundle_rays bundle_rays_toward(const shadow_start *from, vec3 
     return rays;
 }
 
+/* bvh_bundle_make, counted: 1 where it made a list (count >= 0). */
+static inline int bundle_counted(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out, long *bundles, long *exacts)
+{
+    *exacts += rays->exact;
+    bvh_bundle_make(b, rays, out, NULL);
+    (*bundles)++;
+    return out->count >= 0;
+}
+
 /* A scene that showed a difference, kept as DIR/badK.scene. */
 static inline void keep_text(const char *dir, long k, const char *text, int len)
 {

@@ -12,7 +12,7 @@ function mm() {
 BEGIN {
     srand(seed)
     S = pick("1 1 1 1 1e-3 1e3 1e6 1e-6")
-    printf "image { width %d height %d max_depth %d background [0.3, 0.5, 0.8] }\n", pick("16 17 12"), pick("12 13 9"), pick("1 2 3")
+    image(pick("16 17 12"), pick("12 13 9"), pick("1 2 3"))
     ex = r(-3, 3) * S; ey = r(0.5, 4) * S; ez = r(3, 7) * S
     printf "camera { perspective eye %s look_at %s up [0, 1, 0] fov %s }\n", v(ex, ey, ez), v(0, 0.5 * S, 0), pick("40 60 90")
     print "ambient { color 0.05 }"

@@ -403,11 +403,8 @@ int main(int argc, char **argv)
                 rays.exact = side != 0;
                 if (side)
                     rays.origin = ray_shadow_origin(&from, side > 0 ? n : vec_neg(n));
-                exacts += rays.exact;
                 bvh_bundle bundle;
-                bvh_bundle_make(&b, &rays, &bundle, NULL);
-                bundles++;
-                if (bundle.count < 0)
+                if (!bundle_counted(&b, &rays, &bundle, &bundles, &exacts))
                     continue;
                 full += bundle.count >= BVH_BUNDLE_MAX;
                 runs_full += bundle.run_count >= BVH_BUNDLE_RUNS - 2;
