@@ -25,30 +25,8 @@
 #include "render/intersect.h"
 #include "scene/scene.h"
 
-static uint64_t st = 0x9E3779B97F4A7C15u;
-static double U(void)
-{
-    uint64_t z = (st += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return (double)((z ^ (z >> 31)) >> 11) * 0x1p-53;
-}
-static int RI(int lo, int hi) { return lo + (int)((hi - lo + 1) * U()); }
-static double pick(const double *a, int n) { return a[RI(0, n - 1)]; }
-
-enum { EV = 4096 };
-typedef struct events { int count, prim[EV], part[EV], n[EV]; } events;
-static int record(void *ctx, bvh_ref ref, int crossings)
-{
-    events *e = ctx;
-    if (e->count < EV) {
-        e->prim[e->count] = ref.prim;
-        e->part[e->count] = ref.part;
-        e->n[e->count] = crossings;
-    }
-    e->count++;
-    return 0;
-}
+#define FUZZ_EVENTS
+#include "../attack20/fuzz_common.h"
 
 static vec3 lat(double T, double S, double x, double y, double z) { return vec_make(T + S * x, T + S * y, T + S * z); }
 
@@ -130,12 +108,7 @@ int main(int argc, char **argv)
             if (U() < 0.1) { x0 *= 1e3; y0 = 2e3; }
             vec3 tlo = lat(T, S, x0, y0, z0), thi = lat(T, S, x0 + dx, y0 + dy, z0 + dz);
             vec3 n = from.normal;
-            bvh_bundle_rays rays;
-            memset(&rays, 0, sizeof rays);
-            rays.apex = from.point;
-            rays.slack = from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z));
-            rays.lo = tlo;
-            rays.hi = thi;
+            bvh_bundle_rays rays = bundle_rays_toward(&from, tlo, thi);
             enum { R = 48 };
             ray r[R];
             vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
@@ -154,11 +127,8 @@ int main(int argc, char **argv)
             }
             rays.exact = ups == R || downs == R;
             rays.origin = ups == R ? up : down;
-            exacts += rays.exact;
             bvh_bundle bundle;
-            bvh_bundle_make(&b, &rays, &bundle, NULL);
-            bundles++;
-            if (bundle.count < 0)
+            if (!bundle_counted(&b, &rays, &bundle, &bundles, &exacts))
                 continue;
             for (int j = 0; j < R; j++) {
                 if (!(r[j].tmax > 0))
@@ -170,9 +140,7 @@ int main(int argc, char **argv)
                 bvh_visit_counts_bundle(&b, s->prims, &r[j], &bundle, record, &part, &sp);
                 rays_n++;
                 skipped += sw.prims_tested - sp.prims_tested;
-                int same = whole.count == part.count;
-                for (int i = 0; same && i < whole.count && i < EV; i++)
-                    same = whole.prim[i] == part.prim[i] && whole.part[i] == part.part[i] && whole.n[i] == part.n[i];
+                int same = same_events(&whole, &part);
                 if (!same) {
                     if (bad < 5) {
                         printf("DIFFER scene %d (T %g S %g) bundle %d ray %d: whole %d events, bundle %d\n", sc, T, S, k,
