@@ -35,6 +35,8 @@ typedef struct surface {
     const scene_prim *prim;
     const hit *h;
     const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
+    real magnitude;  /* isect_part_magnitude of h's part: found once a point, for its shadow rays'
+                        start, its mirror ray and its transmitted ray */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
     int highlight;   /* the Phong lobe is evaluated: Ks > 0 (or no shortcuts) */
@@ -587,7 +589,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
 {
     interface f;
     long overflow_before = st->medium_overflow;
-    interface_gather(t, s->prim, s->h, in, &f, st);
+    interface_gather(t, s->prim, s->h, s->magnitude, in, &f, st);
     end->prim = interface_end(t, &f, media, end) ? end->prim : -1;
     int solids = interface_cross(t, &f, media, next, st);
     *through = f.through;
@@ -611,7 +613,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
      * opaque surface. */
     if (!*refracts)
         end->prim = -1;
-    *r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    *r = ray_spawn_hit_sized(f.spawn_prim, f.spawn_hit, dir, f.spawn_magnitude);
     return 1;
 }
 
@@ -634,7 +636,7 @@ typedef struct mirror_trace {
 /* The mirror ray of the point of s for the incoming ray in. */
 static ray mirror_ray(const surface *s, const ray *in)
 {
-    return ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
+    return ray_spawn_hit_sized(s->prim, s->h, shade_mirror(in->dir, s->n), s->magnitude);
 }
 
 /*
@@ -718,7 +720,7 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
 {
     start_zone z;
-    real offset = ray_shadow_start(s->prim, s->h).offset;
+    real offset = ray_shadow_start_sized(s->h, s->magnitude).offset;
     if (!glass_near(t, s->h->point, 2 * offset))
         return 0;
     glass_start_gather(t, s->h, offset, r, &z, st);
@@ -778,6 +780,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.prim = &t->scene->prims[h->prim];
     s.m = &t->scene->materials[s.prim->material];
     s.h = s.shadow_from = h;
+    s.magnitude = isect_part_magnitude(s.prim, h->part);
     if (t->terminator_offset && t->shadows && isect_smooth(s.prim)) {
         lifted = *h;
         lifted.point = isect_shadow_point(s.prim, h);
@@ -794,7 +797,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
      * of n alone, the same double). */
     s.lobe_floor = s.no_body && s.highlight ? t->lobe_floors[s.prim->material] : 0;
     if (t->shadows)
-        s.from = ray_shadow_start(s.prim, s.shadow_from);
+        s.from = ray_shadow_start_sized(s.shadow_from, s.magnitude);
     /* Once a point, not once a light sample. */
     s.touch = touch;
     s.near_glass =
