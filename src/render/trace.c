@@ -72,8 +72,10 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
             t->frame_shift = fmax(t->frame_shift, fabs(s->prims[i].frame->to_world.m[k][3]));
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     t->lobe_floors = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->lobe_floors);
-    int status = t->lights && t->lobe_floors ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
-                           : STATUS_NO_MEMORY;
+    t->material_terms = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->material_terms);
+    int status = t->lights && t->lobe_floors && t->material_terms
+                     ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+                     : STATUS_NO_MEMORY;
     if (status == STATUS_OK && t->glass && (!glass_near_build(t, s) || !gather_alone_build(t, s)))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK) {
@@ -89,6 +91,13 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
      * (an exp2 call a glass hit): the same double. */
     for (int i = 0; i < s->material_count; i++)
         t->lobe_floors[i] = s->materials[i].n > 0 ? exp2(-1030 / s->materials[i].n) * (1 - 0x1p-18) : 0;
+    /* Ks and Kd are in [0, 1] ([LANG-MAT-1]): vec_max_component(Ks) > 0 and
+     * vec_max_component(Kd) == 0, which shade reads at every point. */
+    for (int i = 0; i < s->material_count; i++) {
+        rgb ks = s->materials[i].ks, kd = s->materials[i].kd;
+        t->material_terms[i] = (ks.x > 0 || ks.y > 0 || ks.z > 0 ? TRACE_KS : 0) |
+                               (kd.x > 0 || kd.y > 0 || kd.z > 0 ? 0 : TRACE_NO_BODY);
+    }
     for (int i = 0; i < s->light_count; i++)
         t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
     for (int i = 0; i < s->light_count; i++)
@@ -123,11 +132,13 @@ void tracer_free(tracer *t)
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
         mem_free(&t->scene->mem, t->lobe_floors, (size_t)t->scene->material_count * sizeof *t->lobe_floors);
+        mem_free(&t->scene->mem, t->material_terms, (size_t)t->scene->material_count * sizeof *t->material_terms);
         glass_near_free(t);
         gather_alone_free(t);
     }
     t->lights = NULL;
     t->lobe_floors = NULL;
+    t->material_terms = NULL;
 }
 
 /* Folds v into st->path (FNV-1a over 64-bit words) when the caller asked
@@ -788,11 +799,11 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
-    /* Ks is in [0, 1] ([LANG-MAT-1]): these are vec_max_component(Ks) > 0. */
-    int ks = s.m->ks.x > 0 || s.m->ks.y > 0 || s.m->ks.z > 0;
+    /* Ks > 0 and Kd = 0: tracer_build found them once a material. */
+    int terms = t->material_terms[s.prim->material], ks = (terms & TRACE_KS) != 0;
     /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
     s.highlight = t->specular && (ks || t->no_shortcuts);
-    s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
+    s.no_body = (terms & TRACE_NO_BODY) != 0;
     /* The floor of [SHADE-SHORTCUT-LOBE-2]: tracer_build made it (a function
      * of n alone, the same double). */
     s.lobe_floor = s.no_body && s.highlight ? t->lobe_floors[s.prim->material] : 0;
