@@ -312,9 +312,11 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
     return bundle;
 }
 
-/* One point source at pos (distant: at infinity along -direction); bundle:
- * the distributed light's (NULL for the others). */
-static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
+/* One point source at *at (distant: at infinity along -direction) of power
+ * *emits; bundle: the distributed light's (NULL for the others).  The point
+ * and power by address: by value they were six doubles copied onto the
+ * stack a sample. */
+static void add_source(const tracer *t, const surface *s, const scene_light *light, const vec3 *at, const rgb *emits,
                        bvh_bundle *bundle, direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -323,7 +325,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     if (light->kind == LIGHT_DISTANT) {
         l = vec_neg(light->direction);
     } else {
-        vec3 to = vec_sub(pos, s->h->point);
+        vec3 to = vec_sub(*at, s->h->point);
         d = vec_length_fast(to);
         if (!(d > 0)) {
             st->lights_on_surface++;
@@ -351,7 +353,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
      * function, so computing it after changes no bit). */
     real through = 1;
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
+        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, *at);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
         if (through > 0 && s->near_glass)
             through = shade_shadow_transmission(through, start_transmission(t, s, &r, l, st));
@@ -359,7 +361,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         if (through == 0 && !t->no_shortcuts)
             return;
     }
-    rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
+    rgb intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
     if (t->shadows)
         intensity = vec_scale(intensity, through);
     if (s->highlight) {
@@ -550,8 +552,10 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     }
     bvh_bundle bundle;
     bundle.count = t->bundles ? BVH_BUNDLE_UNMADE : -1;
-    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
-        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, &bundle, sum, st);
+    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++) {
+        vec3 at = light_point_keyed(light, setup, light_key, j);
+        add_source(t, s, light, &at, &setup->power, &bundle, sum, st);
+    }
 }
 
 /* Out of line ([REL-STACK-1]): the light loop's bundle (its node list) and
@@ -563,7 +567,7 @@ static TRACE_OUTLINE direct_sum direct_light(const tracer *t, const surface *s, 
     for (int i = 0; i < t->scene->light_count; i++) {
         const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
-            add_source(t, s, light, light->position, light->power, NULL, &sum, st);
+            add_source(t, s, light, &light->position, &light->power, NULL, &sum, st);
         else
             add_distributed(t, s, i, key, &sum, st);
     }
