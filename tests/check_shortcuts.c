@@ -486,6 +486,29 @@ START_TEST(test_shortcuts_lobe_floor_once_a_material)
     scene_free(s);
 }
 END_TEST
+/* The terms tracer_build finds once a material (shade's, once a shaded point
+ * before): TRACE_KS where a channel of Ks is above 0, TRACE_NO_BODY where
+ * every channel of Kd is 0; expected by hand, sphere by sphere. */
+START_TEST(test_shortcuts_material_terms_once_a_material)
+{
+    scene_model *s = load("camera { perspective eye [0, 0, 5] look_at [0, 0, 0] up [0, 1, 0] fov 40 }\n"
+                          "point_light { position [0, 4, 4] power 1 }\n"
+                          "sphere { center [-2, 0, 0] radius 0.5 material { Kd 0 Ks 0 t 0.5 ior 1.5 } }\n"
+                          "sphere { center [0, 0, 0] radius 0.5 material { Kd [0, 0, 0.1] Ks [0, 0.2, 0] } }\n"
+                          "sphere { center [2, 0, 0] radius 0.5 material { Kd 0.5 Ks 0 } }\n"
+                          "sphere { center [0, 2, 0] radius 0.5 material { Kd 0 Ks [0, 0, 0.3] n 30 } }\n");
+    static const int expected[4] = {TRACE_NO_BODY, TRACE_KS, 0, TRACE_KS | TRACE_NO_BODY};
+    tracer t;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    ck_assert_int_eq(s->prim_count, 4);
+    for (int k = 0; k < 4; k++) {
+        ck_assert(s->prims[k].kind == PRIM_SPHERE && s->prims[k].u.sphere.center.x == (k == 3 ? 0 : 2 * k - 2));
+        ck_assert_int_eq(t.material_terms[s->prims[k].material], expected[k]);
+    }
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
 /*
  * [SHADE-SHORTCUT-LOBE-1] [SHADE-SHORTCUT-LOBE-2] A glass ball (Kd 0) over
  * a floor under a 16-sample area light, for shininess 0, 1, 30, 1000 and
@@ -874,11 +897,16 @@ static int gather_both_ways(const char *text, ray r, int self)
         trace_stats sa, sb;
         memset(&sa, 0, sizeof sa);
         memset(&sb, 0, sizeof sb);
-        interface_gather(&on, &s->prims[c.h[k].prim], &c.h[k], &r, &a, &sa);
-        interface_gather(&off, &s->prims[c.h[k].prim], &c.h[k], &r, &b, &sb);
+        const scene_prim *p = &s->prims[c.h[k].prim];
+        real m = isect_part_magnitude(p, c.h[k].part);
+        interface_gather(&on, p, &c.h[k], m, &r, &a, &sa);
+        interface_gather(&off, p, &c.h[k], m, &r, &b, &sb);
         ck_assert_msg(a.count == b.count, "crossing %d of prim %d: %d gathered against %d\n%s", k, c.h[k].prim,
                       a.count, b.count, text);
         ck_assert(same_real_bits(a.through, b.through));
+        /* The spawn's magnitude kept beside it (interface_spawn) is its own. */
+        ck_assert(same_real_bits(a.spawn_magnitude, isect_part_magnitude(a.spawn_prim, a.spawn_hit->part)));
+        ck_assert(same_real_bits(b.spawn_magnitude, isect_part_magnitude(b.spawn_prim, b.spawn_hit->part)));
         for (int j = 0; j < a.count; j++)
             ck_assert_msg(same_hit(&a.h[j], &b.h[j]), "crossing %d: gathered hit %d differs\n%s", k, j, text);
         if (count < 0 && c.h[k].prim == self)
@@ -1102,6 +1130,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_lone_glass_sphere_shadows_itself);
     tcase_add_test(tc, test_shortcuts_off_does_all_the_work);
     tcase_add_test(tc, test_shortcuts_lobe_floor_once_a_material);
+    tcase_add_test(tc, test_shortcuts_material_terms_once_a_material);
     tcase_add_test(tc, test_shortcuts_tir_traced_once_as_the_mirror_ray);
     tcase_add_test(tc, test_shortcuts_bvh_exhaustive_tests_everything);
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);

@@ -14,6 +14,7 @@
 #include "render/render.h"
 #include "io/scene_file.h"
 #include "scene/scene.h"
+#include "render/medium.h"
 #include "render/trace.h"
 
 static scene_model *load(const char *text)
@@ -475,6 +476,40 @@ START_TEST(test_render_image_refuses_nine_coincident_glass_solids)
 }
 END_TEST
 
+/* medium_remove takes out the named solid wherever it lies, the ones above
+ * it moving down one place in order; the top alone, and a solid the stack
+ * does not hold, leave the rest as they were.  Expected stacks by hand. */
+START_TEST(test_medium_remove_keeps_the_order)
+{
+    trace_stats st;
+    medium_stack m;
+    memset(&st, 0, sizeof st);
+    m.count = 0;
+    for (int k = 0; k < 4; k++)
+        medium_push(&m, 10 + k, 1.25 + k, &st);   /* solids 10 11 12 13, iors 1.25 .. 4.25 */
+    medium_remove(&m, 13);                          /* the top */
+    ck_assert_int_eq(m.count, 3);
+    ck_assert_int_eq(m.solid[2], 12);
+    ck_assert(medium_top_ior(&m) == 3.25);
+    medium_remove(&m, 11);                          /* a middle one: 12 moves down */
+    ck_assert_int_eq(m.count, 2);
+    ck_assert_int_eq(m.solid[0], 10);
+    ck_assert_int_eq(m.solid[1], 12);
+    ck_assert(m.ior[0] == 1.25 && m.ior[1] == 3.25);
+    medium_remove(&m, 99);                          /* not held */
+    ck_assert_int_eq(m.count, 2);
+    medium_remove(&m, 10);                          /* the bottom */
+    ck_assert_int_eq(m.count, 1);
+    ck_assert_int_eq(m.solid[0], 12);
+    ck_assert(m.ior[0] == 3.25);
+    ck_assert_int_eq(medium_find(&m, 12), 0);
+    ck_assert_int_eq(medium_find(&m, 10), -1);
+    medium_remove(&m, 12);
+    ck_assert_int_eq(m.count, 0);
+    ck_assert(medium_top_ior(&m) == 1.0);
+}
+END_TEST
+
 Suite *suite_trace(void)
 {
     Suite *s = suite_create("trace");
@@ -495,6 +530,7 @@ Suite *suite_trace(void)
     tcase_add_test(rays, test_trace_transparent_sheet_blends_front_and_back);
     tcase_add_test(rays, test_trace_ior_one_glass_passes_rays_straight);
     tcase_add_test(rays, test_trace_glass_sphere_on_axis_is_not_bent);
+    tcase_add_test(rays, test_medium_remove_keeps_the_order);
     suite_add_tcase(s, rays);
     TCase *whole = tcase_create("whole renders");
     tcase_add_test(whole, test_trace_renders_are_bit_identical);

@@ -56,7 +56,8 @@ TRACE_OUTLINE void glass_first_of_tie(const tracer *t, const ray *r, hit *h, con
     const scene_model *sc = t->scene;
     interface f;
     hit self = *h;
-    interface_gather(t, &sc->prims[h->prim], &self, r, &f, st);
+    const scene_prim *p = &sc->prims[h->prim];
+    interface_gather(t, p, &self, isect_part_magnitude(p, h->part), r, &f, st);
     real near = h->t;
     for (int k = 1; k < f.count; k++)
         if (f.h[k].t > r->tmin && f.h[k].t < near)

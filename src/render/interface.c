@@ -38,15 +38,18 @@ static int gather_crossing(void *ctx, const hit *h)
 
 /* Sets where the ray past f is spawned: from the crossing of largest
  * magnitude, prim's hit f->self first. */
-static void interface_spawn(const tracer *t, const scene_prim *prim, interface *f)
+static void interface_spawn(const tracer *t, const scene_prim *prim, real magnitude, interface *f)
 {
     f->spawn_prim = prim;
     f->spawn_hit = f->self;
+    f->spawn_magnitude = magnitude;
     for (int k = 1; k < f->count; k++) {
         const scene_prim *p = &t->scene->prims[f->h[k].prim];
-        if (isect_part_magnitude(p, f->h[k].part) > isect_part_magnitude(f->spawn_prim, f->spawn_hit->part)) {
+        real m = isect_part_magnitude(p, f->h[k].part);
+        if (m > f->spawn_magnitude) {
             f->spawn_prim = p;
             f->spawn_hit = &f->h[k];
+            f->spawn_magnitude = m;
         }
     }
 }
@@ -83,12 +86,12 @@ static void gather_self(const tracer *t, const hit *h, const ray *r, interface *
     }
 }
 
-void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, const ray *in, interface *f,
-                      trace_stats *st)
+void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, real magnitude, const ray *in,
+                      interface *f, trace_stats *st)
 {
     /* Comparisons, not fmax calls: of these (never NaN, never -0) they
      * take the same value. */
-    real m = isect_part_magnitude(prim, h->part), at = vec_max_abs(h->point);
+    real m = magnitude, at = vec_max_abs(h->point);
     m = m > at ? m : at;
     ray r = *in;
     f->scene = t->scene;
@@ -106,7 +109,7 @@ void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, con
     else
         bvh_visit_window(&t->accel, t->scene->prims, &r, t->no_shortcuts ? r.tmin : gather_from(t, h, &r, f->reach),
                          gather_crossing, f, &st->bvh);
-    interface_spawn(t, prim, f);
+    interface_spawn(t, prim, magnitude, f);
 }
 
 /* What crossing k of the interface does to the medium stack: 1 enters its
@@ -180,6 +183,7 @@ int interface_end(const tracer *t, interface *f, const medium_stack *before, hit
             f->h[kept++] = f->h[k];
         }
     f->count = kept;
-    interface_spawn(t, &sc->prims[f->self->prim], f);
+    const scene_prim *self = &sc->prims[f->self->prim];
+    interface_spawn(t, self, isect_part_magnitude(self, f->self->part), f);
     return 1;
 }

@@ -27,12 +27,14 @@ typedef struct interface {
     int solids_lost;
     const scene_prim *spawn_prim; /* the crossing of largest magnitude: spawn from it */
     const hit *spawn_hit;
+    real spawn_magnitude;         /* isect_part_magnitude of spawn_hit's part */
 } interface;
 
 /* Fills f with the hit h on prim and the crossings of the incoming ray in
- * within reach: twice the spawn offset, the distance a spawned ray jumps. */
-void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, const ray *in, interface *f,
-                      trace_stats *st);
+ * within reach: twice the spawn offset, the distance a spawned ray jumps.
+ * magnitude: isect_part_magnitude(prim, h->part), which the caller has. */
+void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, real magnitude, const ray *in,
+                      interface *f, trace_stats *st);
 
 /* Crossing the interface: every solid left comes off the stack (next, a
  * copy of before), then every solid entered goes on (once).  Returns the

@@ -1899,7 +1899,28 @@ static vec3 off_the_edges(const scene_prim *p, const hit *h, real offset)
     ensures EXACT(\result.tmin == 0); */
 ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
 {
-    real m = isect_part_magnitude(p, h->part);
+    return ray_spawn_hit_sized(p, h, dir, isect_part_magnitude(p, h->part));
+}
+
+/* ray_spawn_hit with m, isect_part_magnitude(p, h->part), given: the
+ * tracer finds it once a shaded point for its shadow rays' start, its
+ * mirror ray and its transmitted ray (about 36 instructions a call on a
+ * sphere).  The contract is ray_spawn_hit's, with m as that one's
+ * (isect_part_magnitude's ensures). */
+/*@ requires \valid_read(p) && \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    // a closed mesh's and a box's hit: within the extent ([LANG-EXTENT-1], check_extent.c: 2^502)
+    requires p->kind == PRIM_BOX || p->kind == PRIM_MESH ==> DOUBLES(vbounded(h->point, 0x1p1019));
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    requires vfinite(dir) && vbounded(dir, 4);                  // a unit direction (shade_mirror, shade_refract of unit ones), as ray_spawn's
+    requires (\is_finite(m) && m >= 0) || \is_plus_infinity(m); // isect_part_magnitude's
+    assigns \nothing;
+    ensures !(p->kind == PRIM_BOX && p->frame != \null) ==> vfinite(\result.origin);
+    ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
+    ensures EXACT(veq(\result.dir, dir));
+    ensures EXACT(\result.tmin == 0); */
+ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
+{
     vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
     ray r = spawn(from, h->normal, dir, m, 0);
     if (p->kind == PRIM_BOX && vec_dot(dir, h->normal) < 0)
@@ -1958,10 +1979,25 @@ ray ray_spawn_hit_to(const scene_prim *p, const hit *h, vec3 target)
     ensures EXACT(vbounded(h->point, 0x1p1022) ==> \result.offset <= 0x1p983); */
 shadow_start ray_shadow_start(const scene_prim *p, const hit *h)
 {
+    return ray_shadow_start_sized(h, isect_part_magnitude(p, h->part));
+}
+
+/* ray_shadow_start with m, isect_part_magnitude(p, h->part), given (as
+ * ray_spawn_hit_sized). */
+/*@ requires \valid_read(h);
+    requires vfinite(h->point);                                 // a hit's point (isect_*)
+    requires vfinite(h->normal) && vbounded(h->normal, 4);      // [LANG-VALID-2]: unit normals (isect_*)
+    requires (\is_finite(m) && m >= 0) || \is_plus_infinity(m); // isect_part_magnitude's
+    assigns \nothing;
+    ensures EXACT(veq(\result.point, h->point) && veq(\result.normal, h->normal));
+    ensures \is_finite(\result.offset) && \result.offset >= SPAWN_ABS && DOUBLES(\result.offset <= 0x1p983);
+    ensures EXACT(vbounded(h->point, 0x1p1022) ==> \result.offset <= 0x1p983); */
+shadow_start ray_shadow_start_sized(const hit *h, real m)
+{
     shadow_start st;
     st.point = h->point;
     st.normal = h->normal;
-    st.offset = spawn_offset(h->point, isect_part_magnitude(p, h->part));
+    st.offset = spawn_offset(h->point, m);
     return st;
 }
 

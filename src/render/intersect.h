@@ -245,6 +245,9 @@ ray ray_spawn_to(vec3 point, vec3 geometric_normal, vec3 target);
  * the point).  A ray into a box starts inside it on every axis (see
  * intersect.c, keep_inside). */
 ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir);
+/* The same with m = isect_part_magnitude(p, h->part) given: a shaded point
+ * finds it once for its shadow rays, its mirror ray and its transmitted ray. */
+ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m);
 /* Shadow rays: from h->point toward a target point, or toward a distant
  * light (the shadow rays' tmin, the offset over |dir|, and tmax =
  * HUGE_VAL). */
@@ -262,6 +265,7 @@ typedef struct shadow_start {
     real offset;
 } shadow_start;
 shadow_start ray_shadow_start(const scene_prim *p, const hit *h);
+shadow_start ray_shadow_start_sized(const hit *h, real m);   /* m as ray_spawn_hit_sized's */
 ray ray_shadow_to(const shadow_start *st, vec3 target);
 /* The origin of ray_shadow_to(st, target) for every target whose
  * vec_dot(target - st->point, st->normal), rounded, is >= 0 when

@@ -25,8 +25,12 @@ void medium_remove(medium_stack *media, int solid)
     for (int i = media->count - 1; i >= 0; i--) {
         if (media->solid[i] != solid)
             continue;
-        memmove(&media->solid[i], &media->solid[i + 1], (size_t)(media->count - 1 - i) * sizeof media->solid[0]);
-        memmove(&media->ior[i], &media->ior[i + 1], (size_t)(media->count - 1 - i) * sizeof media->ior[0]);
+        /* The top, where a ray leaves the solid it is in, has nothing above
+         * it to move down: no two calls of memmove for 0 bytes. */
+        if (i < media->count - 1) {
+            memmove(&media->solid[i], &media->solid[i + 1], (size_t)(media->count - 1 - i) * sizeof media->solid[0]);
+            memmove(&media->ior[i], &media->ior[i + 1], (size_t)(media->count - 1 - i) * sizeof media->ior[0]);
+        }
         media->count--;
         return;
     }

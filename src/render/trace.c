@@ -35,6 +35,8 @@ typedef struct surface {
     const scene_prim *prim;
     const hit *h;
     const hit *shadow_from;  /* h, or a copy at the lifted point (smooth triangles) */
+    real magnitude;  /* isect_part_magnitude of h's part: found once a point, for its shadow rays'
+                        start, its mirror ray and its transmitted ray */
     vec3 v;          /* unit, toward where the ray came from */
     vec3 n;          /* shading normal turned toward v */
     int highlight;   /* the Phong lobe is evaluated: Ks > 0 (or no shortcuts) */
@@ -70,8 +72,10 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
             t->frame_shift = fmax(t->frame_shift, fabs(s->prims[i].frame->to_world.m[k][3]));
     t->lights = mem_calloc(&s->mem, (size_t)s->light_count, sizeof *t->lights);
     t->lobe_floors = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->lobe_floors);
-    int status = t->lights && t->lobe_floors ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
-                           : STATUS_NO_MEMORY;
+    t->material_terms = mem_calloc(&s->mem, (size_t)s->material_count, sizeof *t->material_terms);
+    int status = t->lights && t->lobe_floors && t->material_terms
+                     ? bvh_build_polled(&t->accel, s->prims, s->prim_count, &s->mem, cancel)
+                     : STATUS_NO_MEMORY;
     if (status == STATUS_OK && t->glass && (!glass_near_build(t, s) || !gather_alone_build(t, s)))
         status = STATUS_NO_MEMORY;
     if (status != STATUS_OK) {
@@ -87,6 +91,13 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
      * (an exp2 call a glass hit): the same double. */
     for (int i = 0; i < s->material_count; i++)
         t->lobe_floors[i] = s->materials[i].n > 0 ? exp2(-1030 / s->materials[i].n) * (1 - 0x1p-18) : 0;
+    /* Ks and Kd are in [0, 1] ([LANG-MAT-1]): vec_max_component(Ks) > 0 and
+     * vec_max_component(Kd) == 0, which shade reads at every point. */
+    for (int i = 0; i < s->material_count; i++) {
+        rgb ks = s->materials[i].ks, kd = s->materials[i].kd;
+        t->material_terms[i] = (ks.x > 0 || ks.y > 0 || ks.z > 0 ? TRACE_KS : 0) |
+                               (kd.x > 0 || kd.y > 0 || kd.z > 0 ? 0 : TRACE_NO_BODY);
+    }
     for (int i = 0; i < s->light_count; i++)
         t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
     for (int i = 0; i < s->light_count; i++)
@@ -121,11 +132,13 @@ void tracer_free(tracer *t)
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
         mem_free(&t->scene->mem, t->lobe_floors, (size_t)t->scene->material_count * sizeof *t->lobe_floors);
+        mem_free(&t->scene->mem, t->material_terms, (size_t)t->scene->material_count * sizeof *t->material_terms);
         glass_near_free(t);
         gather_alone_free(t);
     }
     t->lights = NULL;
     t->lobe_floors = NULL;
+    t->material_terms = NULL;
 }
 
 /* Folds v into st->path (FNV-1a over 64-bit words) when the caller asked
@@ -299,9 +312,11 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
     return bundle;
 }
 
-/* One point source at pos (distant: at infinity along -direction); bundle:
- * the distributed light's (NULL for the others). */
-static void add_source(const tracer *t, const surface *s, const scene_light *light, vec3 pos, rgb power,
+/* One point source at *at (distant: at infinity along -direction) of power
+ * *emits; bundle: the distributed light's (NULL for the others).  The point
+ * and power by address: by value they were six doubles copied onto the
+ * stack a sample. */
+static void add_source(const tracer *t, const surface *s, const scene_light *light, const vec3 *at, const rgb *emits,
                        bvh_bundle *bundle, direct_sum *sum, trace_stats *st)
 {
     vec3 l;
@@ -310,7 +325,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
     if (light->kind == LIGHT_DISTANT) {
         l = vec_neg(light->direction);
     } else {
-        vec3 to = vec_sub(pos, s->h->point);
+        vec3 to = vec_sub(*at, s->h->point);
         d = vec_length_fast(to);
         if (!(d > 0)) {
             st->lights_on_surface++;
@@ -338,7 +353,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
      * function, so computing it after changes no bit). */
     real through = 1;
     if (t->shadows) {
-        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, pos);
+        ray r = light->kind == LIGHT_DISTANT ? ray_shadow_along(&s->from, l) : ray_shadow_to(&s->from, *at);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);
         if (through > 0 && s->near_glass)
             through = shade_shadow_transmission(through, start_transmission(t, s, &r, l, st));
@@ -346,7 +361,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         if (through == 0 && !t->no_shortcuts)
             return;
     }
-    rgb intensity = light->kind == LIGHT_DISTANT ? power : shade_falloff(power, d, light->d0, light->falloff);
+    rgb intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
     if (t->shadows)
         intensity = vec_scale(intensity, through);
     if (s->highlight) {
@@ -537,8 +552,10 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     }
     bvh_bundle bundle;
     bundle.count = t->bundles ? BVH_BUNDLE_UNMADE : -1;
-    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
-        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, &bundle, sum, st);
+    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++) {
+        vec3 at = light_point_keyed(light, setup, light_key, j);
+        add_source(t, s, light, &at, &setup->power, &bundle, sum, st);
+    }
 }
 
 /* Out of line ([REL-STACK-1]): the light loop's bundle (its node list) and
@@ -550,7 +567,7 @@ static TRACE_OUTLINE direct_sum direct_light(const tracer *t, const surface *s, 
     for (int i = 0; i < t->scene->light_count; i++) {
         const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
-            add_source(t, s, light, light->position, light->power, NULL, &sum, st);
+            add_source(t, s, light, &light->position, &light->power, NULL, &sum, st);
         else
             add_distributed(t, s, i, key, &sum, st);
     }
@@ -587,7 +604,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
 {
     interface f;
     long overflow_before = st->medium_overflow;
-    interface_gather(t, s->prim, s->h, in, &f, st);
+    interface_gather(t, s->prim, s->h, s->magnitude, in, &f, st);
     end->prim = interface_end(t, &f, media, end) ? end->prim : -1;
     int solids = interface_cross(t, &f, media, next, st);
     *through = f.through;
@@ -611,7 +628,7 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
      * opaque surface. */
     if (!*refracts)
         end->prim = -1;
-    *r = ray_spawn_hit(f.spawn_prim, f.spawn_hit, dir);
+    *r = ray_spawn_hit_sized(f.spawn_prim, f.spawn_hit, dir, f.spawn_magnitude);
     return 1;
 }
 
@@ -634,7 +651,7 @@ typedef struct mirror_trace {
 /* The mirror ray of the point of s for the incoming ray in. */
 static ray mirror_ray(const surface *s, const ray *in)
 {
-    return ray_spawn_hit(s->prim, s->h, shade_mirror(in->dir, s->n));
+    return ray_spawn_hit_sized(s->prim, s->h, shade_mirror(in->dir, s->n), s->magnitude);
 }
 
 /*
@@ -718,7 +735,7 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
 {
     start_zone z;
-    real offset = ray_shadow_start(s->prim, s->h).offset;
+    real offset = ray_shadow_start_sized(s->h, s->magnitude).offset;
     if (!glass_near(t, s->h->point, 2 * offset))
         return 0;
     glass_start_gather(t, s->h, offset, r, &z, st);
@@ -778,6 +795,7 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.prim = &t->scene->prims[h->prim];
     s.m = &t->scene->materials[s.prim->material];
     s.h = s.shadow_from = h;
+    s.magnitude = isect_part_magnitude(s.prim, h->part);
     if (t->terminator_offset && t->shadows && isect_smooth(s.prim)) {
         lifted = *h;
         lifted.point = isect_shadow_point(s.prim, h);
@@ -785,16 +803,16 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     }
     s.v = vec_neg(in->dir);
     s.n = shade_face_forward(h->shading_normal, s.v);
-    /* Ks is in [0, 1] ([LANG-MAT-1]): these are vec_max_component(Ks) > 0. */
-    int ks = s.m->ks.x > 0 || s.m->ks.y > 0 || s.m->ks.z > 0;
+    /* Ks > 0 and Kd = 0: tracer_build found them once a material. */
+    int terms = t->material_terms[s.prim->material], ks = (terms & TRACE_KS) != 0;
     /* [SHADE-SHORTCUT-LOBE-1] Ks = 0 makes the highlight 0 * I * lobe = 0. */
     s.highlight = t->specular && (ks || t->no_shortcuts);
-    s.no_body = !(s.m->kd.x > 0 || s.m->kd.y > 0 || s.m->kd.z > 0);
+    s.no_body = (terms & TRACE_NO_BODY) != 0;
     /* The floor of [SHADE-SHORTCUT-LOBE-2]: tracer_build made it (a function
      * of n alone, the same double). */
     s.lobe_floor = s.no_body && s.highlight ? t->lobe_floors[s.prim->material] : 0;
     if (t->shadows)
-        s.from = ray_shadow_start(s.prim, s.shadow_from);
+        s.from = ray_shadow_start_sized(s.shadow_from, s.magnitude);
     /* Once a point, not once a light sample. */
     s.touch = touch;
     s.near_glass =

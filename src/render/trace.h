@@ -92,12 +92,17 @@ typedef struct medium_stack {
     real ior[MEDIUM_MAX];
 } medium_stack;
 
+/* The bits of tracer.material_terms. */
+enum { TRACE_KS = 1, TRACE_NO_BODY = 2 };
+
 typedef struct tracer {
     const scene_model *scene;
     bvh accel;
     light_setup *lights;
     real *lobe_floors;        /* per material: shade's V.R floor of a Kd = 0 surface's lobe
                                  ([SHADE-SHORTCUT-LOBE-2]), made once, not per shaded point */
+    int *material_terms;      /* per material: TRACE_KS (Ks > 0) and TRACE_NO_BODY (Kd = 0), once, not
+                                 per shaded point */
     int max_depth;
     long max_tree_rays;       /* 0: no limit */
     /* The passes that run: off when the scene's features say nothing in the

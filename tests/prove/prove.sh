@@ -327,7 +327,7 @@ fi
 # hit tests of intersect.c have their own run).
 wp_fcts() {   # the functions proved in each file: file|functions
     cat <<LIST
-$src/render/intersect.c|spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by,ray_spawn_hit_shadow,ray_spawn_hit_to,ray_shadow_start,ray_spawn_hit
+$src/render/intersect.c|spawn_offset,offset_coord,spawn_origin,shadow_tmin,spawn_by,spawn,ray_spawn,ray_shadow_along,unit_toward,spawn_to_by,ray_spawn_hit_shadow,ray_spawn_hit_to,ray_shadow_start_sized,ray_shadow_start,ray_spawn_hit_sized,ray_spawn_hit
 $src/render/camera.c|screen_offset,camera_half,camera_ray
 $src/render/lightsample.c|light_grid_for,light_cell_point,light_concentric,light_frame
 LIST
