@@ -545,8 +545,17 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     }
     bvh_bundle bundle;
     bundle.count = t->bundles ? BVH_BUNDLE_UNMADE : -1;
-    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++)
-        add_source(t, s, light, light_point_keyed(light, setup, light_key, j), setup->power, &bundle, sum, st);
+    /* Sample j + 1's point is made before sample j is added: its chain
+     * (keys, concentric map, sincos), independent of sample j's shadow walk,
+     * runs beside it instead of stalling the next sample's start.  A pure
+     * function of (light, j): the same points, added in the same order. */
+    vec3 next = setup->samples > 0 ? light_point_keyed(light, setup, light_key, 0) : vec_splat(0);
+    for (int j = 0; j < setup->samples && !cancel_step(st->cancel); j++) {
+        vec3 pos = next;
+        if (j + 1 < setup->samples)
+            next = light_point_keyed(light, setup, light_key, j + 1);
+        add_source(t, s, light, pos, setup->power, &bundle, sum, st);
+    }
 }
 
 /* Out of line ([REL-STACK-1]): the light loop's bundle (its node list) and
