@@ -15,3 +15,9 @@ function transform(k) {
 }
 function glassy(kd, ks, n, t, ior) { return sprintf("material { Kd %s Ks %s n %s t %s ior %s }", kd, ks, n, t, ior) }
 function image(w, h, depth) { printf "image { width %d height %d max_depth %d background [0.3, 0.5, 0.8] }\n", w, h, depth }
+# A material, glass with probability pg (its Ks, t and ior picked from the
+# lists given), else opaque (Kd, Ks, n picked): the generators' one form.
+function mixed_material(pg, gks, gt, gior, kd, ks, n) {
+    if (rand() < pg) return sprintf("material { Kd 0.2 Ks %s n 30 t %s ior %s }", pick(gks), pick(gt), pick(gior))
+    return sprintf("material { Kd %s Ks %s n %s }", pick(kd), pick(ks), pick(n))
+}

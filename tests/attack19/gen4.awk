@@ -3,10 +3,7 @@
 # boxes grazing the light, turned and scaled boxes (kept frames), huge and
 # tiny boxes, far lights, transparent boxes, leaves full of boxes.
 # awk -v seed=N -f ../attack18/common.awk -f common19.awk -f gen4.awk
-function bm() {
-    if (rand() < 0.25) return sprintf("material { Kd 0.2 Ks %s n 30 t %s ior %s }", pick("0 0.3"), pick("0.5 1 0.9"), pick("1 1.5"))
-    return sprintf("material { Kd %s Ks %s n %s }", pick("0.8 0.5 0"), pick("0 0.2"), pick("20 1 1e4"))
-}
+function bm() { return mixed_material(0.25, "0 0.3", "0.5 1 0.9", "1 1.5", "0.8 0.5 0", "0 0.2", "20 1 1e4") }
 BEGIN {
     srand(seed)
     S = pick("1 1 1 1 1e-3 1e3 1e6 1e-6")

@@ -5,10 +5,7 @@
 # edges on the lights' lattice; rectangle lights flat on an axis, slanted
 # (|dx| = |dz|), point-like, and disks; everything scaled 1e-6 .. 1e6.
 # awk -v seed=N -f ../attack18/common.awk -f ../attack19/common19.awk -f gen8.awk
-function mm() {
-    if (rand() < 0.35) return sprintf("material { Kd 0.2 Ks %s n 30 t %s ior %s }", pick("0 0.3"), pick("0.5 1 0.9"), pick("1 1 1.5"))
-    return sprintf("material { Kd %s Ks %s n %s }", pick("0.8 0.5"), pick("0 0.2"), pick("20 1"))
-}
+function mm() { return mixed_material(0.35, "0 0.3", "0.5 1 0.9", "1 1 1.5", "0.8 0.5", "0 0.2", "20 1") }
 BEGIN {
     srand(seed)
     S = pick("1 1 1 1 1e-3 1e3 1e6 1e-6")
