@@ -601,6 +601,19 @@ static void forget_overflow(trace_stats *st, long overflow_before, int harmless)
         st->medium_overflow = overflow_before;
 }
 
+/* *r copied field by field: the loads then match the stores of a ray made
+ * by ray_spawn_hit_sized (each vec3 as 16 + 8 bytes, then the interval),
+ * where a whole-struct copy read 16-byte blocks straddling them, which the
+ * store buffer cannot forward (spec/performance.md, "Eighteenth round:
+ * stalls, glass and grids").  The same bits. */
+static void ray_copy(ray *to, const ray *r)
+{
+    to->origin = r->origin;
+    to->dir = r->dir;
+    to->tmin = r->tmin;
+    to->tmax = r->tmax;
+}
+
 /*
  * The transmitted ray: straight on through a sheet, bent by Snell's law
  * where the interface changes the medium (n1 the medium before, the top of
@@ -643,7 +656,8 @@ static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const
      * opaque surface. */
     if (!*refracts)
         end->prim = -1;
-    *r = ray_spawn_hit_sized(f.spawn_prim, f.spawn_hit, dir, f.spawn_magnitude);
+    ray spawned = ray_spawn_hit_sized(f.spawn_prim, f.spawn_hit, dir, f.spawn_magnitude);
+    ray_copy(r, &spawned);
     return 1;
 }
 
@@ -969,7 +983,8 @@ static rgb ray_colour(const tracer *t, const ray *r, int met, const hit *h, int 
 static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const medium_stack *media, uint64_t key,
                      const glass_contact *touch, trace_stats *st)
 {
-    ray at = *r;
+    ray at;
+    ray_copy(&at, r);
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
     at.tmin = at.tmax = end->t = 0;
@@ -979,8 +994,9 @@ static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const m
 
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
 {
-    ray nearest = *r;
+    ray nearest;
     hit h;
+    ray_copy(&nearest, r);
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
     int tied;
