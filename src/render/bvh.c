@@ -162,6 +162,23 @@ static int hit_order(const hit *a, const hit *b)
     return (a->part > b->part) - (a->part < b->part);
 }
 
+/* *h copied field by field: its ints are stored 4 bytes at a time by the
+ * hit tests, and a whole-struct copy read prim and part in one 16-byte load
+ * the store buffer could not forward (spec/performance.md, "Eighteenth
+ * round: stalls, glass and grids").  The same values. */
+static void hit_copy(hit *to, const hit *h)
+{
+    to->t = h->t;
+    to->point = h->point;
+    to->normal = h->normal;
+    to->shading_normal = h->shading_normal;
+    to->prim = h->prim;
+    to->part = h->part;
+    to->entering = h->entering;
+    to->b1 = h->b1;
+    to->b2 = h->b2;
+}
+
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
 static void nearest_add(nearest *ns, const hit *h, int deferred)
@@ -195,7 +212,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
         if (kept < TIE_MAX) {
             ns->deferred[kept] = deferred;
             ns->cand_tmax[kept] = tmax;
-            ns->cand[kept++] = *h;
+            hit_copy(&ns->cand[kept++], h);
         } else
             ns->overflow = 1;
     }

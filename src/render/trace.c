@@ -575,18 +575,22 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
 
 /* Out of line ([REL-STACK-1]): the light loop's bundle (its node list) and
  * samples are done with before the mirrored and transmitted rays recurse,
- * so they stay off the recursion's frame. */
-static TRACE_OUTLINE direct_sum direct_light(const tracer *t, const surface *s, uint64_t key, trace_stats *st)
+ * so they stay off the recursion's frame.  The sum by address, added to in
+ * place: returned by value it was copied in 16-byte blocks straddling
+ * add_source's 16 + 8-byte stores of each colour (a failed store
+ * forwarding at every shaded point). */
+static TRACE_OUTLINE void direct_light(const tracer *t, const surface *s, uint64_t key, direct_sum *sum,
+                                       trace_stats *st)
 {
-    direct_sum sum = {shade_ambient(s->m->kd, t->scene->ambient), vec_splat(0)};
+    sum->body = shade_ambient(s->m->kd, t->scene->ambient);
+    sum->highlight = vec_splat(0);
     for (int i = 0; i < t->scene->light_count; i++) {
         const scene_light *light = &t->scene->lights[i];
         if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
-            add_source(t, s, light, &light->position, &light->power, NULL, &sum, st);
+            add_source(t, s, light, &light->position, &light->power, NULL, sum, st);
         else
-            add_distributed(t, s, i, key, &sum, st);
+            add_distributed(t, s, i, key, sum, st);
     }
-    return sum;
 }
 
 /* With the shortcuts off a ray of weight 0 (Ks = 0, or t = 0 on the
@@ -846,7 +850,8 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.touch = touch;
     s.near_glass =
         t->shadows && (touch || (t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset)));
-    direct_sum sum = direct_light(t, &s, key, st);
+    direct_sum sum;
+    direct_light(t, &s, key, &sum, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     mirror_trace m;
     m.traced = 0;
