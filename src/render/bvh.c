@@ -11,6 +11,7 @@
 #include <string.h>
 #include <assert.h>
 #include "render/bvh.h"
+#include "render/ray_copy.h"
 #include "render/slab.h"
 #include "render/slab_pair.h"
 #include "base/next_up.h"
@@ -162,23 +163,6 @@ static int hit_order(const hit *a, const hit *b)
     return (a->part > b->part) - (a->part < b->part);
 }
 
-/* *h copied field by field: its ints are stored 4 bytes at a time by the
- * hit tests, and a whole-struct copy read prim and part in one 16-byte load
- * the store buffer could not forward (spec/performance.md, "Eighteenth
- * round: stalls, glass and grids").  The same values. */
-static void hit_copy(hit *to, const hit *h)
-{
-    to->t = h->t;
-    to->point = h->point;
-    to->normal = h->normal;
-    to->shading_normal = h->shading_normal;
-    to->prim = h->prim;
-    to->part = h->part;
-    to->entering = h->entering;
-    to->b1 = h->b1;
-    to->b2 = h->b2;
-}
-
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
 static void nearest_add(nearest *ns, const hit *h, int deferred)
@@ -204,7 +188,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
             if (kept != i) {
                 ns->deferred[kept] = ns->deferred[i];
                 ns->cand_tmax[kept] = ns->cand_tmax[i];
-                ns->cand[kept] = ns->cand[i];
+                hit_copy(&ns->cand[kept], &ns->cand[i]);
             }
             kept++;
         }
@@ -497,7 +481,7 @@ static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
 int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats, int *tied)
 {
     nearest ns;
-    ns.rr = *r;
+    ray_copy(&ns.rr, r);
     ns.count = ns.overflow = ns.fixed = 0;
     ns.t_near = ns.tmax0 = r->tmax;
     ns.slack = TIE_REL * vec_max_abs(r->origin);
@@ -505,7 +489,7 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
     ns.sh = shear_lazy(r);
     nearest_pass(b, prims, &ns);
     if (ns.overflow) {
-        ns.rr = *r;
+        ray_copy(&ns.rr, r);
         ns.t_near = tie_limit(&ns);
         ns.rr.tmax = window_tmax(&ns, ns.t_near);
         ns.count = 0;
@@ -518,7 +502,8 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
         return 0;
     int w = nearest_winner(&ns);
     if (ns.deferred[w]) {
-        ray at = *r;
+        ray at;
+        ray_copy(&at, r);
         at.tmax = ns.cand_tmax[w];
         int met = isect_part_sheared(&prims[ns.cand[w].prim], ns.cand[w].part, &at,
                                      shear_for(&ns.sh, &prims[ns.cand[w].prim]), h);
@@ -526,7 +511,7 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
         (void)met;
         h->prim = ns.cand[w].prim;
     } else {
-        *h = ns.cand[w];
+        hit_copy(h, &ns.cand[w]);
     }
     r->tmax = h->t;
     return 1;

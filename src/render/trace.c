@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render/intersect.h"
+#include "render/ray_copy.h"
 #include "render/camera.h"
 #include "base/sampler.h"
 #include "base/sampler_counters.h"
@@ -603,19 +604,6 @@ static void forget_overflow(trace_stats *st, long overflow_before, int harmless)
 {
     if (harmless)
         st->medium_overflow = overflow_before;
-}
-
-/* *r copied field by field: the loads then match the stores of a ray made
- * by ray_spawn_hit_sized (each vec3 as 16 + 8 bytes, then the interval),
- * where a whole-struct copy read 16-byte blocks straddling them, which the
- * store buffer cannot forward (spec/performance.md, "Eighteenth round:
- * stalls, glass and grids").  The same bits. */
-static void ray_copy(ray *to, const ray *r)
-{
-    to->origin = r->origin;
-    to->dir = r->dir;
-    to->tmin = r->tmin;
-    to->tmax = r->tmax;
 }
 
 /*
