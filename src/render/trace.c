@@ -567,9 +567,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     bundle.count = t->bundles ? BVH_BUNDLE_UNMADE : -1;
     /* The points first, LIGHT_POINT_BATCH at a time, then their samples.
      * A disk's point calls libm's sincos, which saves the rounding mode
-     * (stmxcsr: it waits for the instructions before it); made between two
-     * samples' shadow walks, it waited for the walk (perf annotate: a third
-     * of sincos's time, about 4 % of mesh.scene's).  Back to back they wait
+     * (stmxcsr); made between two samples' shadow walks, a third of sincos's
+     * time (perf annotate, about 3.5 % of mesh.scene's) sat just after it,
+     * waiting, as it seems, for the walk before it.  Back to back they wait
      * only for each other.  light_point_keyed is a pure function of
      * (light, setup, key, j): the same points, added in the same order, and
      * cancel_step is asked before each sample as before; a cancelled batch
