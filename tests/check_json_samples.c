@@ -50,6 +50,15 @@ static const char pixel_scene[] =
     "distributed_light { rectangle [-1, 2, -1.25] [2, 0, 0] [0, 0.5, 2.5] samples 6 power 8 falloff none }\n"
     "plane { material { Kd 1 } }\n";
 
+/* The same with 150 samples: past add_distributed's batch of 64 points
+ * (two whole batches and part of a third) and the tracer's 64 premixed
+ * counters. */
+static const char pixel_scene_many[] =
+    "image { width 8 height 6 samples 2 max_depth 1 }\n"
+    "camera { orthographic eye [0.1, 5, 0.2] look_at [0.1, 0, 0.2] up [0, 0, -1] width 4 }\n"
+    "distributed_light { rectangle [-1, 2, -1.25] [2, 0, 0] [0, 0.5, 2.5] samples 150 power 8 falloff none }\n"
+    "plane { material { Kd 1 } }\n";
+
 typedef struct rule {
     uint64_t gamma, mul1, mul2, salt, light, mirror, transmitted;
     int shift1, shift2, shift3;
@@ -319,9 +328,9 @@ END_TEST
  * the sum over the light's samples of Kd E/N max(0, N.L): computed here
  * from the export (camera rays meet the plane y = 0; N = +y), it matches
  * the renderer to rounding, so the renderer uses these samples and keys. */
-START_TEST(test_json_pixel_from_export)
+static void pixel_from_export(const char *text)
 {
-    scene_model *s = load(pixel_scene);
+    scene_model *s = load(text);
     json_t *doc = testjson_export(s), *cam = testjson_at(doc, "camera"), *l = testjson_at(doc, "lights/0");
     rule r = read_rule(doc);
     img_buf img;
@@ -348,6 +357,19 @@ START_TEST(test_json_pixel_from_export)
     json_decref(doc);
     scene_free(s);
 }
+
+START_TEST(test_json_pixel_from_export)
+{
+    pixel_from_export(pixel_scene);
+}
+END_TEST
+
+/* Each batch of points is the samples' own: a batch that reused the first
+ * one's points or went past the light's samples would fail here. */
+START_TEST(test_json_pixel_from_export_many_samples)
+{
+    pixel_from_export(pixel_scene_many);
+}
 END_TEST
 
 #endif
@@ -361,6 +383,7 @@ Suite *suite_json_samples(void)
     tcase_add_test(tc, test_json_light_samples_match_renderer);
     tcase_add_test(tc, test_json_camera_rays_match_renderer);
     tcase_add_test(tc, test_json_pixel_from_export);
+    tcase_add_test(tc, test_json_pixel_from_export_many_samples);
 #endif
     suite_add_tcase(s, tc);
     return s;
