@@ -90,19 +90,18 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
      * 1 - 2^-18 covers that and exp2's rounding (spec/shading.md).  A function
      * of n alone, so once a material here, not once a shaded point in shade
      * (an exp2 call a glass hit): the same double. */
-    for (int i = 0; i < s->material_count; i++)
-        t->lobe_floors[i] = s->materials[i].n > 0 ? exp2(-1030 / s->materials[i].n) * (1 - 0x1p-18) : 0;
-    /* Ks and Kd are in [0, 1] ([LANG-MAT-1]): vec_max_component(Ks) > 0 and
-     * vec_max_component(Kd) == 0, which shade reads at every point. */
+    /* With it, what shade reads of a material at every point: Ks > 0 and
+     * Kd = 0 (vec_max_component, Ks and Kd in [0, 1]: [LANG-MAT-1]). */
     for (int i = 0; i < s->material_count; i++) {
-        rgb ks = s->materials[i].ks, kd = s->materials[i].kd;
-        t->material_terms[i] = (ks.x > 0 || ks.y > 0 || ks.z > 0 ? TRACE_KS : 0) |
-                               (kd.x > 0 || kd.y > 0 || kd.z > 0 ? 0 : TRACE_NO_BODY);
+        const scene_material *m = &s->materials[i];
+        t->lobe_floors[i] = m->n > 0 ? exp2(-1030 / m->n) * (1 - 0x1p-18) : 0;
+        t->material_terms[i] = (vec_max_component(m->ks) > 0 ? TRACE_KS : 0) |
+                               (vec_max_component(m->kd) > 0 ? 0 : TRACE_NO_BODY);
     }
-    for (int i = 0; i < s->light_count; i++)
+    for (int i = 0; i < s->light_count; i++) {
         t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
-    for (int i = 0; i < s->light_count; i++)
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
+    }
     t->camera_half = camera_half(&s->camera);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
