@@ -385,7 +385,17 @@ static real scale_indices(real n1, real n2, real *s1, real *s2)
      * powers of two, and cheaper. */
     static const real down[10] = {0x1p-512, 0x1p-256, 0x1p-128, 0x1p-64, 0x1p-32, 0x1p-16, 0x1p-8, 0x1p-4,
                                   0x1p-2, 0x1p-1};
-    real m = fmax(n1, n2), a = n1, b = n2;
+    /* The larger by a comparison, not fmax (a call into libm): both are
+     * positive and finite, so the same double. */
+    real m = n1 > n2 ? n1 : n2, a = n1, b = n2;
+    /* The larger index in [1, 2) (air 1, water 1.33, glass 1.5, a dense
+     * flint 1.9: most pairs of a scene): no step below applies but the one
+     * halving, so these are its three products, without the loops. */
+    if (m >= 1 && m < 2) {
+        *s1 = a * 0.5;
+        *s2 = b * 0.5;
+        return m * 0.5;
+    }
     /*@ loop unroll 10;
         loop invariant 0 <= i <= 10;
         loop invariant EXACT(m > 0 && a > 0 && b > 0);
