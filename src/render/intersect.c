@@ -26,9 +26,11 @@
 #if defined(__GNUC__) && !defined(__FRAMAC__)
 #define ISECT_FLATTEN __attribute__((flatten))
 #define ISECT_OUT_OF_LINE __attribute__((noinline))
+#define ISECT_IN_LINE __attribute__((always_inline))
 #else
 #define ISECT_FLATTEN
 #define ISECT_OUT_OF_LINE
+#define ISECT_IN_LINE
 #endif
 
 /*@ requires \valid_read(r);
@@ -1659,7 +1661,7 @@ static real offset_coord(real p, real step)
     assigns \nothing;
     ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z);
     ensures EXACT(vbounded(point, 0x1p1022) && offset <= 0x1p983 ==> is_spawned(\result, point, normal, toward, offset)); */
-static vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
+ISECT_IN_LINE static inline vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
 {
     real s = vec_dot(toward, normal) >= 0.0 ? offset : -offset;
     return vec_make(offset_coord(point.x, normal.x * s), offset_coord(point.y, normal.y * s),
