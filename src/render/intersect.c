@@ -1633,8 +1633,12 @@ vec3 isect_shadow_point(const scene_prim *p, const hit *h)
     ensures EXACT(vbounded(point, 0x1p1022) ==> \result <= 0x1p983); */
 static real spawn_offset(vec3 point, real magnitude)
 {
-    real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX;
-    return SPAWN_REL * fmax(m, vec_max_abs(point)) + SPAWN_ABS;
+    real m = magnitude <= DBL_MAX ? magnitude : DBL_MAX, at = vec_max_abs(point);
+    /* The larger by a comparison, not fmax (a call into libm), fmax's value:
+     * m is never NaN, a NaN `at` (a point the contract excludes) gives m as
+     * fmax does, and where the two are equal (0 and -0 at most differ) the
+     * product with SPAWN_REL plus SPAWN_ABS is the same double. */
+    return SPAWN_REL * (at > m ? at : m) + SPAWN_ABS;
 }
 
 /* p + step without forming an infinity: a coordinate at or past 2^1023 (a
