@@ -821,6 +821,14 @@ static rgb mirrored(const tracer *t, const surface *s, const ray *in, int depth,
     return c;
 }
 
+/* The key of a mirror or transmitted ray: only a distributed light's samples
+ * read a key (add_distributed; t->keyed says the scene has one), so without
+ * one the key is passed on as it is, its mix not made at every point. */
+static uint64_t child_key(const tracer *t, uint64_t key, uint64_t which)
+{
+    return t->keyed ? sampler_key(key, which) : key;
+}
+
 static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const medium_stack *media, uint64_t key,
                  const glass_contact *touch, trace_stats *st)
 {
@@ -859,9 +867,9 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     /* [SHADE-SHORTCUT-RAYS-1] A ray whose weight (Ks, t) is 0 adds 0. */
     if (depth < t->max_depth) {
         if (t->reflection && (ks || t->no_shortcuts))
-            mirror = mirrored(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_MIRROR), !ks, &m, st);
+            mirror = mirrored(t, &s, in, depth, media, child_key(t, key, TRACE_KEY_MIRROR), !ks, &m, st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
-            through = transmitted(t, &s, in, depth, media, sampler_key(key, TRACE_KEY_REFRACT), &m, st);
+            through = transmitted(t, &s, in, depth, media, child_key(t, key, TRACE_KEY_REFRACT), &m, st);
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }
