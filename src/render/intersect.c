@@ -1110,6 +1110,15 @@ int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
     return plane_t(point, normal, r, t);
 }
 
+/* A world-frame sphere's count (sphere_hits, bare 2), out of line:
+ * inlined, its copy of sphere_hits grew the shadow walk that calls
+ * isect_part_crossings_sheared (mesh.scene, without a sphere, +0.08 %). */
+ISECT_FLATTEN ISECT_OUT_OF_LINE static int sphere_count(const scene_prim *p, const ray *r)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, ISECT_MAX_CROSSINGS, 2);
+}
+
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
@@ -1118,7 +1127,7 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
     if (p->kind == PRIM_PLANE && !p->frame)
         return isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r);
     if (p->kind == PRIM_SPHERE && !p->frame)
-        return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, ISECT_MAX_CROSSINGS, 2);
+        return sphere_count(p, r);
     return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 1);
 }
 
@@ -1207,12 +1216,15 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
     return sphere_hits(c, g[3], r, out, max, bare);
 }
 
-/* Three copies, each with its max and bare constant: the nearest walk's
- * full hit, the bare ones of isect_hot_nearest and the crossings' count
- * (a shadow ray's: hot_sphere_count, bare 2), so that
- * none carries another's branches, nor a bare hit the point it does
+/* Two copies, each with its max and bare constant: the nearest walk's
+ * full hit and the crossings' bare ones (a shadow ray's count), so that
+ * neither carries the other's branches, nor a bare hit the point it does
  * not write (one copy with both passed at run time: nested_glass at
- * 120x80 1.8 % and demo 1.1 % more instructions in all). */
+ * 120x80 1.8 % and demo 1.1 % more instructions in all).  With max 2
+ * (isect_hot_crossings: gcc's clone has it constant) hot_sphere_bare is a
+ * count and writes no t (sphere_hits' bare 2); isect_hot_nearest's max 1
+ * writes it.  A third copy for the count changed the frame of the shadow
+ * walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
 {
     return hot_sphere(g, r, out, 1, 0);
@@ -1220,12 +1232,7 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, con
 
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const ray *r, hit *out, int max)
 {
-    return hot_sphere(g, r, out, max, 1);
-}
-
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_count(const real *g, const ray *r)
-{
-    return hot_sphere(g, r, NULL, ISECT_MAX_CROSSINGS, 2);
+    return hot_sphere(g, r, out, max, max == ISECT_MAX_CROSSINGS ? 2 : 1);
 }
 
 /* Whether the ray passes the triangle by in the sheared plane: its three
@@ -1386,7 +1393,7 @@ int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear
         return hot_box_crossings(g, r);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_TRIANGLE)
         return hot_triangle(g, code >> 2, r, sh, out);
-    return hot_sphere_count(g, r);
+    return hot_sphere_bare(g, r, out, ISECT_MAX_CROSSINGS);
 }
 
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t)
