@@ -1317,7 +1317,8 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, i
     }
 }
 
-/* The record's crossings, bare (up to max). */
+/* The record's crossings, bare (up to max; a sphere's with max 2 is a count
+ * and writes no t: hot_sphere_bare). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
