@@ -413,6 +413,68 @@ START_TEST(test_isect_sphere_moving_away_matches_the_roots)
 }
 END_TEST
 
+/* [NUM-SPHERE-3]: a sphere's count (isect_part_crossings, a hot record's
+ * isect_hot_crossings), which takes a far origin's root clear of the
+ * interval's ends unrefined, against the full hits (isect_part_all: every
+ * root refined), on intervals whose ends fall between a root and its
+ * refinement, at a refined root, or far from both. */
+START_TEST(test_isect_sphere_count_matches_the_refined_roots)
+{
+    rng g = {1919, 0};
+    int between = 0, clear = 0;
+    for (int i = 0; i < 40000; i++) {
+        double scale = pow(10.0, 8 * rng_uniform(&g) - 4);
+        double spread = pow(10.0, 12 * rng_uniform(&g));
+        vec3 c = vec_scale(rng_unit(&g), spread * scale);
+        double radius = scale * (0.05 + rng_uniform(&g));
+        scene_prim s = prim_sphere(c, radius);
+        /* A far origin (|f| > 2R), aimed at a point of the sphere's
+         * silhouette disk: anywhere on it, or a graze to 1e-12 of R. */
+        vec3 n = rng_unit(&g), side = vec_normalize(vec_cross(n, rng_unit(&g)));
+        double away = radius * (2.5 + pow(10.0, 6 * rng_uniform(&g)));
+        double w = rng_uniform(&g);
+        double off = w < 0.5 ? sqrt(rng_uniform(&g)) : 1 - pow(10.0, -12 * rng_uniform(&g));
+        vec3 o = vec_madd(c, n, away), aim = vec_madd(c, side, radius * off);
+        vec3 d = vec_scale(vec_normalize(vec_sub(aim, o)), 0.25 + 3.75 * rng_uniform(&g));
+        ray r = make_ray(o, d);
+        hit full[ISECT_MAX_CROSSINGS];
+        real u[2];
+        int nu = isect_sphere_roots(vec_sub(o, c), d, radius, u);
+        int nf = isect_part_all(&s, 0, &r, full);
+        if (nu != 2 || nf != 2)
+            continue;
+        /* Where the ends go: past both roots, at a root's refined t or its
+         * unrefined one (whichever is larger, so that exactly one of the two
+         * is inside where they differ), or anywhere near the sphere. */
+        int k = i % 6;
+        real t0 = full[0].t, t1 = full[1].t;
+        if (k == 1)
+            r.tmax = u[1] > t1 ? u[1] : t1;
+        else if (k == 2)
+            r.tmin = u[0] < t0 ? u[0] : t0;
+        else if (k == 3)
+            r.tmax = t1;
+        else if (k == 4)
+            r.tmin = t0;
+        else if (k == 5) {
+            r.tmin = t0 * rng_uniform(&g);
+            r.tmax = t0 + (t1 - t0) * 3 * rng_uniform(&g);
+        }
+        int expect = isect_part_all(&s, 0, &r, full);
+        int unrefined = (u[0] > r.tmin && u[0] < r.tmax) + (u[1] > r.tmin && u[1] < r.tmax);
+        between += unrefined != expect;
+        clear += k == 0;
+        ck_assert_int_eq(isect_part_crossings(&s, 0, &r), expect);
+        real gr[ISECT_HOT_REALS];
+        int reals, code = isect_hot_make(&s, 0, gr, &reals);
+        ck_assert_int_eq(isect_hot_crossings(code, gr, &r, NULL), expect);
+    }
+    /* Enough rays on which counting the unrefined roots would be wrong,
+     * and enough with both roots clear of the ends. */
+    ck_assert_msg(between > 1000 && clear > 5000, "between %d, clear %d", between, clear);
+}
+END_TEST
+
 /* ---- plane ---- */
 
 START_TEST(test_isect_plane_hit_by_hand)
@@ -1376,6 +1438,7 @@ Suite *suite_intersect(void)
     tcase_add_test(sphere, test_isect_sphere_small_sphere_far_away);
     tcase_add_test(sphere, test_isect_sphere_huge_sphere_close_up);
     tcase_add_test(sphere, test_isect_sphere_moving_away_matches_the_roots);
+    tcase_add_test(sphere, test_isect_sphere_count_matches_the_refined_roots);
     suite_add_tcase(s, sphere);
     TCase *sheet = tcase_create("plane_disk");
     tcase_add_test(sheet, test_isect_plane_hit_by_hand);

@@ -89,8 +89,32 @@ static int sphere_root_possible(const ray *r, real reach, real t)
     return t + slack > r->tmin && t - slack < r->tmax;
 }
 
+/* Whether a root t of a far origin's first solve (sphere_hits, |f| > 2R)
+ * surely stays in (tmin, tmax) after sphere_refine, so that a count can
+ * take it without refining ([NUM-SPHERE-3], spec/numerics.md 2.1b).  The
+ * refine moves t by a root of isect_sphere_roots(f2, d, R), f2 = o + t d - c
+ * rounded as sphere_refine rounds it; every such root (held or not) is at
+ * most (|f2| + R)(1 + 2^-18) / |d| in magnitude for |f2| <= 4R and
+ * R >= 2^-400, grazes included, and n1 = |f2|_1 >= |f2| (1 - 2 eps),
+ * |d|_max <= |d|: so t clear of both ends by (n1 + R)(1 + 2^-14) / |d|_max,
+ * with 2^-40 |t| for the rounding of t + step, counts as it would refined.
+ * The bound is of the step's magnitude, not of the refine's small move, so
+ * it asks a sphere to keep about a diameter from the segment's ends. */
+static int sphere_root_clear(vec3 center, real radius, const ray *r, real t)
+{
+    vec3 f2 = vec_sub(ray_at(r, t), center);
+    real n1 = vec_sum_abs(f2), dm = vec_max_abs(r->dir);
+    if (!(radius >= 0x1p-400 && n1 <= 4.0 * radius))
+        return 0;
+    real m = (n1 + radius) * (1.0 + 0x1p-14) + 0x1p-40 * fabs(t) * dm;
+    return (t - r->tmin) * dm > m && (r->tmax - t) * dm > m;
+}
+
 /* bare: only each hit's t (and a mesh triangle's part) is written: a
- * shadow ray needs no more; the same for every shape below. */
+ * shadow ray needs no more; the same for every shape below.  For the
+ * sphere, bare 2 is a count (isect_part_crossings, isect_hot_crossings):
+ * nothing is written, and a root clear of the interval's ends is counted
+ * unrefined (sphere_root_clear). */
 ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max,
                                       int bare)
 {
@@ -107,13 +131,19 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
         if (refine) {
             if (!sphere_root_possible(r, reach, ti))
                 continue;
+            if (bare == 2 && sphere_root_clear(center, radius, r, ti)) {
+                found++;
+                continue;
+            }
             ti = sphere_refine(center, radius, r, ti, i == 1, &p);
         } else {
             p = ray_at(r, ti);
         }
         if (!in_interval(r, ti))
             continue;
-        if (bare)
+        if (bare == 2)
+            found++;
+        else if (bare)
             out[found++].t = ti;
         else
             isect_hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
@@ -1082,6 +1112,15 @@ int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
     return plane_t(point, normal, r, t);
 }
 
+/* A world-frame sphere's count (sphere_hits, bare 2), out of line:
+ * inlined, its copy of sphere_hits grew the shadow walk that calls
+ * isect_part_crossings_sheared (mesh.scene, without a sphere, +0.08 %). */
+ISECT_FLATTEN ISECT_OUT_OF_LINE static int sphere_count(const scene_prim *p, const ray *r)
+{
+    hit out[ISECT_MAX_CROSSINGS];
+    return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, ISECT_MAX_CROSSINGS, 2);
+}
+
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
@@ -1089,6 +1128,8 @@ int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, co
      * plane_hits' bare count, without the dispatch through part_hits. */
     if (p->kind == PRIM_PLANE && !p->frame)
         return isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r);
+    if (p->kind == PRIM_SPHERE && !p->frame)
+        return sphere_count(p, r);
     return part_hits(p, part, r, sh, out, ISECT_MAX_CROSSINGS, 1);
 }
 
@@ -1181,7 +1222,11 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
  * full hit and the crossings' bare ones (a shadow ray's count), so that
  * neither carries the other's branches, nor a bare hit the point it does
  * not write (one copy with both passed at run time: nested_glass at
- * 120x80 1.8 % and demo 1.1 % more instructions in all). */
+ * 120x80 1.8 % and demo 1.1 % more instructions in all).  With max 2
+ * (isect_hot_crossings: gcc's clone has it constant) hot_sphere_bare is a
+ * count and writes no t (sphere_hits' bare 2); isect_hot_nearest's max 1
+ * writes it.  A third copy for the count changed the frame of the shadow
+ * walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
 {
     return hot_sphere(g, r, out, 1, 0);
@@ -1189,7 +1234,7 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, con
 
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const ray *r, hit *out, int max)
 {
-    return hot_sphere(g, r, out, max, 1);
+    return hot_sphere(g, r, out, max, max == ISECT_MAX_CROSSINGS ? 2 : 1);
 }
 
 /* Whether the ray passes the triangle by in the sheared plane: its three
@@ -1274,7 +1319,8 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, i
     }
 }
 
-/* The record's crossings, bare (up to max). */
+/* The record's crossings, bare (up to max; a sphere's with max 2 is a count
+ * and writes no t: hot_sphere_bare). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
