@@ -341,6 +341,87 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-BEHIND-1] Bundles from points of a triangle, as a glass
+ * point's shadow rays start: the point's weights rounded (an ulp or so off
+ * the plane), pushed off by the spawn offset 2^-42 of the size, by a few
+ * ulps, or by nothing (offset 1e-300, tmin about that): there a ray
+ * leaving the triangle may have a computed t of either sign, and only the
+ * margins keep the triangle in the bundle.  Targets on the normal's side
+ * or the other, some nearly in the plane.  Each ray's bundle walk must
+ * report what its whole walk reports; the counts assert that rays crossing
+ * their own triangle occur and that triangles are left out.
+ */
+START_TEST(test_bundle_rays_leaving_a_triangle)
+{
+    static char text[16384];
+    rng g = {(uint64_t)_i + 907};
+    double size = _i % 2 ? 1e-3 : 1;
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    vec3 corner[40][3];
+    for (int i = 0; i < 40; i++) {
+        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
+        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
+        for (int k = 0; k < 3; k++) {
+            corner[i][k] = vec_scale(vec_add(c, vec_scale(unit(&g), range(&g, 0.5, 2))), size);
+            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
+                            corner[i][k].y, corner[i][k].z);
+        }
+        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
+    }
+    bvh b;
+    scene_model *s = load_tree(text, len, sizeof text, &b);
+    long exact = 0, tested = 0, untold = 0, own = 0;
+    for (int bundle_i = 0; bundle_i < 400; bundle_i++) {
+        const vec3 *v = corner[bundle_i % 40];
+        double u = uniform(&g), w = uniform(&g) * (1 - u);
+        vec3 apex = vec_add(vec_add(vec_scale(v[0], 1 - u - w), vec_scale(v[1], u)), vec_scale(v[2], w));
+        vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
+        int how = bundle_i / 40 % 3;
+        double offset = how == 0 ? 0x1p-42 * 12 * size : how == 1 ? 0x1p-50 * size : 1e-300;
+        vec3 side = vec_scale(n, bundle_i % 2 ? 1 : -1), across = unit(&g);
+        across = vec_normalize(vec_sub(across, vec_scale(n, vec_dot(across, n))));
+        double lift = bundle_i % 5 == 0 ? range(&g, 1e-9, 1e-3) : range(&g, 0.05, 2);
+        vec3 centre = vec_add(apex, vec_scale(vec_add(vec_scale(side, lift), across), range(&g, 3, 10) * size));
+        double reach = range(&g, 0, 0.5) * lift * size;
+        shadow_start from = {apex, n, offset};
+        bvh_bundle_rays rays = ball_rays(apex, offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        vec3 lo = rays.lo, hi = rays.hi, up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
+        ray r[24];
+        int ups = 0, downs = 0;
+        for (int j = 0; j < 24; j++) {
+            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1) : vec_make(uniform(&g), uniform(&g), uniform(&g));
+            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
+                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
+            r[j] = ray_shadow_to(&from, q);
+            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+        }
+        if (ups != 24 && downs != 24)
+            continue;
+        bvh_bundle bundle, hull;
+        bvh_bundle_make(&b, &rays, &hull, NULL);
+        rays.exact = 1;
+        rays.origin = ups == 24 ? up : down;
+        exact++;
+        bvh_bundle_make(&b, &rays, &bundle, NULL);
+        for (int j = 0; j < 24; j++) {
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
+            for (int k = 0; k < e.count; k++)
+                own += e.prim[k] == bundle_i % 40;
+            same_walks_counted(&b, s->prims, &r[j], &bundle, &tested);
+            same_walks_counted(&b, s->prims, &r[j], &hull, &untold);
+        }
+    }
+    ck_assert_int_gt(exact, 200);
+    ck_assert_int_gt(own, 0);
+    ck_assert_msg(tested < untold, "%ld primitive tests by the bundles, %ld untold", tested, untold);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
 /* A scene of prims (the text of its primitives) under a camera, and its
  * tree in *b. */
 static scene_model *load_built(const char *prims, bvh *b)
@@ -720,6 +801,7 @@ Suite *suite_bundle(void)
     tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
     tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_loop_test(tc, test_bundle_rays_leaving_a_triangle, 0, 2);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
     tcase_add_test(tc, test_bundle_keeps_a_triangle_through_its_corner);
