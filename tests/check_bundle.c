@@ -246,6 +246,29 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/* n shadow rays from `from` toward the box [lo, hi]: its corners (j < 8),
+ * the middles of its edges and faces (j < mids), random points.  Returns
+ * whether they all start at one of spawn_origin's two origins, that one
+ * in *origin. */
+static int aim_at_box(const shadow_start *from, vec3 lo, vec3 hi, rng *g, ray *r, int n, int mids, vec3 *origin)
+{
+    vec3 up = ray_shadow_origin(from, from->normal), down = ray_shadow_origin(from, vec_neg(from->normal));
+    int ups = 0, downs = 0;
+    for (int j = 0; j < n; j++) {
+        vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
+                       : j < mids ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
+                                  : vec_make(uniform(g), uniform(g), uniform(g));
+        vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
+                          f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
+        ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
+        r[j] = ray_shadow_to(from, q);
+        ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+        downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+    }
+    *origin = ups == n ? up : down;
+    return ups == n || downs == n;
+}
+
 /*
  * Triangles left out of a bundle (bvh_bundle.c, triangle_passed_by): 80
  * random triangles in a cube of side 20 (and the same scaled by 1e-6 and
@@ -297,29 +320,15 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
         }
         shadow_start from = {apex, n, 0x1p-42 * (off + 12 * scale) + 1e-300};
         bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
-        vec3 lo = rays.lo, hi = rays.hi;
         ray r[64];
-        vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
-        int ups = 0, downs = 0;
-        for (int j = 0; j < 64; j++) {
-            /* corners (j < 8), middles of edges and faces, random points */
-            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
-                           : j < 32 ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
-                                    : vec_make(uniform(&g), uniform(&g), uniform(&g));
-            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
-                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
-            ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
-            r[j] = ray_shadow_to(&from, q);
-            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
-            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
-        }
-        if (ups != 64 && downs != 64)
+        vec3 origin;
+        if (!aim_at_box(&from, rays.lo, rays.hi, &g, r, 64, 32, &origin))
             continue;
         /* The same bundle not told its origin: the hull's nodes alone. */
         bvh_bundle bundle, hull;
         bvh_bundle_make(&b, &rays, &hull, NULL);
         rays.exact = 1;
-        rays.origin = ups == 64 ? up : down;
+        rays.origin = origin;
         exact++;
         bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_ge(bundle.count, 0);
@@ -386,23 +395,14 @@ START_TEST(test_bundle_rays_leaving_a_triangle)
         double reach = range(&g, 0, 0.5) * lift * size;
         shadow_start from = {apex, n, offset};
         bvh_bundle_rays rays = ball_rays(apex, offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
-        vec3 lo = rays.lo, hi = rays.hi, up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
         ray r[24];
-        int ups = 0, downs = 0;
-        for (int j = 0; j < 24; j++) {
-            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1) : vec_make(uniform(&g), uniform(&g), uniform(&g));
-            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
-                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
-            r[j] = ray_shadow_to(&from, q);
-            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
-            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
-        }
-        if (ups != 24 && downs != 24)
+        vec3 origin;
+        if (!aim_at_box(&from, rays.lo, rays.hi, &g, r, 24, 8, &origin))
             continue;
         bvh_bundle bundle, hull;
         bvh_bundle_make(&b, &rays, &hull, NULL);
         rays.exact = 1;
-        rays.origin = ups == 24 ? up : down;
+        rays.origin = origin;
         exact++;
         bvh_bundle_make(&b, &rays, &bundle, NULL);
         for (int j = 0; j < 24; j++) {
