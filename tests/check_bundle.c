@@ -246,12 +246,37 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
-/* n shadow rays from `from` toward the box [lo, hi]: its corners (j < 8),
- * the middles of its edges and faces (j < mids), random points.  Returns
- * whether they all start at one of spawn_origin's two origins, that one
- * in *origin. */
-static int aim_at_box(const shadow_start *from, vec3 lo, vec3 hi, rng *g, ray *r, int n, int mids, vec3 *origin)
+/* The text of a scene of n random triangles, each around a centre in the
+ * cube of side 20 with corners r0 to r1 away, scaled by scale and moved
+ * by off (in corner[]); their material lets light through.  Returns the
+ * text's length. */
+static int triangles_text(rng *g, int n, double r0, double r1, double scale, double off, vec3 (*corner)[3], char *text,
+                          size_t size)
 {
+    int len = snprintf(text, size, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    for (int i = 0; i < n; i++) {
+        vec3 c = vec_make(range(g, -10, 10), range(g, -10, 10), range(g, -10, 10));
+        len += snprintf(text + len, size - (size_t)len, "triangle { vertices");
+        for (int k = 0; k < 3; k++) {
+            vec3 v = vec_add(c, vec_scale(unit(g), range(g, r0, r1)));
+            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
+            len += snprintf(text + len, size - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x, corner[i][k].y,
+                            corner[i][k].z);
+        }
+        len += snprintf(text + len, size - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
+    }
+    return len;
+}
+
+/* n shadow rays from `from` toward the box [lo, hi] of rays: its corners
+ * (j < 8), the middles of its edges and faces (j < mids), random points.
+ * Where they all start at one of spawn_origin's two origins: the bundle
+ * told it in *told, the same not told it (the hull's nodes alone) in
+ * *untold, and 1. */
+static int aim_at_box(const shadow_start *from, bvh_bundle_rays rays, const bvh *b, rng *g, ray *r, int n, int mids,
+                      bvh_bundle *told, bvh_bundle *untold)
+{
+    vec3 lo = rays.lo, hi = rays.hi;
     vec3 up = ray_shadow_origin(from, from->normal), down = ray_shadow_origin(from, vec_neg(from->normal));
     int ups = 0, downs = 0;
     for (int j = 0; j < n; j++) {
@@ -265,8 +290,13 @@ static int aim_at_box(const shadow_start *from, vec3 lo, vec3 hi, rng *g, ray *r
         ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
         downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
     }
-    *origin = ups == n ? up : down;
-    return ups == n || downs == n;
+    if (ups != n && downs != n)
+        return 0;
+    bvh_bundle_make(b, &rays, untold, NULL);
+    rays.exact = 1;
+    rays.origin = ups == n ? up : down;
+    bvh_bundle_make(b, &rays, told, NULL);
+    return 1;
 }
 
 /*
@@ -286,19 +316,8 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
     static char text[32768];
     rng g = {(uint64_t)_i + 101};
     double scale = _i % 2 ? 1e-6 : 1, off = _i % 2 ? 1e7 : 0;
-    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
     vec3 corner[80][3];
-    for (int i = 0; i < 80; i++) {
-        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
-        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
-        for (int k = 0; k < 3; k++) {
-            vec3 v = vec_add(c, vec_scale(unit(&g), range(&g, 0.3, 3)));
-            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
-            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
-                            corner[i][k].y, corner[i][k].z);
-        }
-        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
-    }
+    int len = triangles_text(&g, 80, 0.3, 3, scale, off, corner, text, sizeof text);
     bvh b;
     scene_model *s = load_tree(text, len, sizeof text, &b);
     long exact = 0, whole = 0, tested = 0, crossed = 0, untold = 0;
@@ -321,16 +340,10 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
         shadow_start from = {apex, n, 0x1p-42 * (off + 12 * scale) + 1e-300};
         bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
         ray r[64];
-        vec3 origin;
-        if (!aim_at_box(&from, rays.lo, rays.hi, &g, r, 64, 32, &origin))
-            continue;
-        /* The same bundle not told its origin: the hull's nodes alone. */
         bvh_bundle bundle, hull;
-        bvh_bundle_make(&b, &rays, &hull, NULL);
-        rays.exact = 1;
-        rays.origin = origin;
+        if (!aim_at_box(&from, rays, &b, &g, r, 64, 32, &bundle, &hull))
+            continue;
         exact++;
-        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_ge(bundle.count, 0);
         for (int j = 0; j < 64; j++) {
             events e = {0};
@@ -366,18 +379,8 @@ START_TEST(test_bundle_rays_leaving_a_triangle)
     static char text[16384];
     rng g = {(uint64_t)_i + 907};
     double size = _i % 2 ? 1e-3 : 1;
-    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
     vec3 corner[40][3];
-    for (int i = 0; i < 40; i++) {
-        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
-        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
-        for (int k = 0; k < 3; k++) {
-            corner[i][k] = vec_scale(vec_add(c, vec_scale(unit(&g), range(&g, 0.5, 2))), size);
-            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
-                            corner[i][k].y, corner[i][k].z);
-        }
-        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
-    }
+    int len = triangles_text(&g, 40, 0.5, 2, size, 0, corner, text, sizeof text);
     bvh b;
     scene_model *s = load_tree(text, len, sizeof text, &b);
     long exact = 0, tested = 0, untold = 0, own = 0;
@@ -396,15 +399,10 @@ START_TEST(test_bundle_rays_leaving_a_triangle)
         shadow_start from = {apex, n, offset};
         bvh_bundle_rays rays = ball_rays(apex, offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
         ray r[24];
-        vec3 origin;
-        if (!aim_at_box(&from, rays.lo, rays.hi, &g, r, 24, 8, &origin))
-            continue;
         bvh_bundle bundle, hull;
-        bvh_bundle_make(&b, &rays, &hull, NULL);
-        rays.exact = 1;
-        rays.origin = origin;
+        if (!aim_at_box(&from, rays, &b, &g, r, 24, 8, &bundle, &hull))
+            continue;
         exact++;
-        bvh_bundle_make(&b, &rays, &bundle, NULL);
         for (int j = 0; j < 24; j++) {
             events e = {0};
             bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
