@@ -51,7 +51,9 @@
  * bundle passes it by in its sheared plane (triangle_passed_by: the shears
  * the rays may have, shear_bounds; each corner's box over them,
  * corner_boxes; a line through the origin with the three boxes strictly on
- * one side, boxes_apart).
+ * one side, boxes_apart).  And one where every ray's computed t is at or
+ * below -0 (triangle_left_behind, [SHADE-SHORTCUT-BEHIND-1]): the triangle a
+ * glass point's shadow rays leave.
  */
 #include <assert.h>
 #include "render/bvh.h"
