@@ -246,6 +246,59 @@ START_TEST(test_bundle_random_bundles_agree_with_the_whole_walk)
 }
 END_TEST
 
+/* The text of a scene of n random triangles, each around a centre in the
+ * cube of side 20 with corners r0 to r1 away, scaled by scale and moved
+ * by off (in corner[]); their material lets light through.  Returns the
+ * text's length. */
+static int triangles_text(rng *g, int n, double r0, double r1, double scale, double off, vec3 (*corner)[3], char *text,
+                          size_t size)
+{
+    int len = snprintf(text, size, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    for (int i = 0; i < n; i++) {
+        vec3 c = vec_make(range(g, -10, 10), range(g, -10, 10), range(g, -10, 10));
+        len += snprintf(text + len, size - (size_t)len, "triangle { vertices");
+        for (int k = 0; k < 3; k++) {
+            vec3 v = vec_add(c, vec_scale(unit(g), range(g, r0, r1)));
+            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
+            len += snprintf(text + len, size - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x, corner[i][k].y,
+                            corner[i][k].z);
+        }
+        len += snprintf(text + len, size - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
+    }
+    return len;
+}
+
+/* n shadow rays from `from` toward the box [lo, hi] of rays: its corners
+ * (j < 8), the middles of its edges and faces (j < mids), random points.
+ * Where they all start at one of spawn_origin's two origins: the bundle
+ * told it in *told, the same not told it (the hull's nodes alone) in
+ * *untold, and 1. */
+static int aim_at_box(const shadow_start *from, bvh_bundle_rays rays, const bvh *b, rng *g, ray *r, int n, int mids,
+                      bvh_bundle *told, bvh_bundle *untold)
+{
+    vec3 lo = rays.lo, hi = rays.hi;
+    vec3 up = ray_shadow_origin(from, from->normal), down = ray_shadow_origin(from, vec_neg(from->normal));
+    int ups = 0, downs = 0;
+    for (int j = 0; j < n; j++) {
+        vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
+                       : j < mids ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
+                                  : vec_make(uniform(g), uniform(g), uniform(g));
+        vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
+                          f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
+        ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
+        r[j] = ray_shadow_to(from, q);
+        ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
+        downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
+    }
+    if (ups != n && downs != n)
+        return 0;
+    bvh_bundle_make(b, &rays, untold, NULL);
+    rays.exact = 1;
+    rays.origin = ups == n ? up : down;
+    bvh_bundle_make(b, &rays, told, NULL);
+    return 1;
+}
+
 /*
  * Triangles left out of a bundle (bvh_bundle.c, triangle_passed_by): 80
  * random triangles in a cube of side 20 (and the same scaled by 1e-6 and
@@ -263,19 +316,8 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
     static char text[32768];
     rng g = {(uint64_t)_i + 101};
     double scale = _i % 2 ? 1e-6 : 1, off = _i % 2 ? 1e7 : 0;
-    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
     vec3 corner[80][3];
-    for (int i = 0; i < 80; i++) {
-        vec3 c = vec_make(range(&g, -10, 10), range(&g, -10, 10), range(&g, -10, 10));
-        len += snprintf(text + len, sizeof text - (size_t)len, "triangle { vertices");
-        for (int k = 0; k < 3; k++) {
-            vec3 v = vec_add(c, vec_scale(unit(&g), range(&g, 0.3, 3)));
-            corner[i][k] = vec_add(vec_splat(off), vec_scale(v, scale));
-            len += snprintf(text + len, sizeof text - (size_t)len, " [%.17g, %.17g, %.17g]", corner[i][k].x,
-                            corner[i][k].y, corner[i][k].z);
-        }
-        len += snprintf(text + len, sizeof text - (size_t)len, " material { Kd 0.5 t 0.5 } }\n");
-    }
+    int len = triangles_text(&g, 80, 0.3, 3, scale, off, corner, text, sizeof text);
     bvh b;
     scene_model *s = load_tree(text, len, sizeof text, &b);
     long exact = 0, whole = 0, tested = 0, crossed = 0, untold = 0;
@@ -297,31 +339,11 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
         }
         shadow_start from = {apex, n, 0x1p-42 * (off + 12 * scale) + 1e-300};
         bvh_bundle_rays rays = ball_rays(apex, from.offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
-        vec3 lo = rays.lo, hi = rays.hi;
         ray r[64];
-        vec3 up = ray_shadow_origin(&from, n), down = ray_shadow_origin(&from, vec_neg(n));
-        int ups = 0, downs = 0;
-        for (int j = 0; j < 64; j++) {
-            /* corners (j < 8), middles of edges and faces, random points */
-            vec3 f = j < 8 ? vec_make(j & 1, j >> 1 & 1, j >> 2 & 1)
-                           : j < 32 ? vec_make((double)(j % 3) / 2, (double)(j / 3 % 3) / 2, (double)(j / 9 % 3) / 2)
-                                    : vec_make(uniform(&g), uniform(&g), uniform(&g));
-            vec3 q = vec_make(f.x == 1 ? hi.x : lo.x + f.x * (hi.x - lo.x), f.y == 1 ? hi.y : lo.y + f.y * (hi.y - lo.y),
-                              f.z == 1 ? hi.z : lo.z + f.z * (hi.z - lo.z));
-            ck_assert(q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y && q.z >= lo.z && q.z <= hi.z);
-            r[j] = ray_shadow_to(&from, q);
-            ups += r[j].origin.x == up.x && r[j].origin.y == up.y && r[j].origin.z == up.z;
-            downs += r[j].origin.x == down.x && r[j].origin.y == down.y && r[j].origin.z == down.z;
-        }
-        if (ups != 64 && downs != 64)
-            continue;
-        /* The same bundle not told its origin: the hull's nodes alone. */
         bvh_bundle bundle, hull;
-        bvh_bundle_make(&b, &rays, &hull, NULL);
-        rays.exact = 1;
-        rays.origin = ups == 64 ? up : down;
+        if (!aim_at_box(&from, rays, &b, &g, r, 64, 32, &bundle, &hull))
+            continue;
         exact++;
-        bvh_bundle_make(&b, &rays, &bundle, NULL);
         ck_assert_int_ge(bundle.count, 0);
         for (int j = 0; j < 64; j++) {
             events e = {0};
@@ -336,6 +358,63 @@ START_TEST(test_bundle_random_triangles_agree_with_the_whole_walk)
     /* Told their origin, the bundles leave triangles out. */
     ck_assert_msg(tested < untold, "%ld primitive tests by the bundles, %ld untold, %ld by the whole walks", tested,
                   untold, whole);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-BEHIND-1] Bundles from points of a triangle, as a glass
+ * point's shadow rays start: the point's weights rounded (an ulp or so off
+ * the plane), pushed off by the spawn offset 2^-42 of the size, by a few
+ * ulps, or by nothing (offset 1e-300, tmin about that): there a ray
+ * leaving the triangle may have a computed t of either sign, and only the
+ * margins keep the triangle in the bundle.  Targets on the normal's side
+ * or the other, some nearly in the plane.  Each ray's bundle walk must
+ * report what its whole walk reports; the counts assert that rays crossing
+ * their own triangle occur and that triangles are left out.
+ */
+START_TEST(test_bundle_rays_leaving_a_triangle)
+{
+    static char text[16384];
+    rng g = {(uint64_t)_i + 907};
+    double size = _i % 2 ? 1e-3 : 1;
+    vec3 corner[40][3];
+    int len = triangles_text(&g, 40, 0.5, 2, size, 0, corner, text, sizeof text);
+    bvh b;
+    scene_model *s = load_tree(text, len, sizeof text, &b);
+    long exact = 0, tested = 0, untold = 0, own = 0;
+    for (int bundle_i = 0; bundle_i < 400; bundle_i++) {
+        const vec3 *v = corner[bundle_i % 40];
+        double u = uniform(&g), w = uniform(&g) * (1 - u);
+        vec3 apex = vec_add(vec_add(vec_scale(v[0], 1 - u - w), vec_scale(v[1], u)), vec_scale(v[2], w));
+        vec3 n = vec_normalize(vec_cross(vec_sub(v[1], v[0]), vec_sub(v[2], v[0])));
+        int how = bundle_i / 40 % 3;
+        double offset = how == 0 ? 0x1p-42 * 12 * size : how == 1 ? 0x1p-50 * size : 1e-300;
+        vec3 side = vec_scale(n, bundle_i % 2 ? 1 : -1), across = unit(&g);
+        across = vec_normalize(vec_sub(across, vec_scale(n, vec_dot(across, n))));
+        double lift = bundle_i % 5 == 0 ? range(&g, 1e-9, 1e-3) : range(&g, 0.05, 2);
+        vec3 centre = vec_add(apex, vec_scale(vec_add(vec_scale(side, lift), across), range(&g, 3, 10) * size));
+        double reach = range(&g, 0, 0.5) * lift * size;
+        shadow_start from = {apex, n, offset};
+        bvh_bundle_rays rays = ball_rays(apex, offset * (fabs(n.x) + fabs(n.y) + fabs(n.z)), centre, reach);
+        ray r[24];
+        bvh_bundle bundle, hull;
+        if (!aim_at_box(&from, rays, &b, &g, r, 24, 8, &bundle, &hull))
+            continue;
+        exact++;
+        for (int j = 0; j < 24; j++) {
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
+            for (int k = 0; k < e.count; k++)
+                own += e.prim[k] == bundle_i % 40;
+            same_walks_counted(&b, s->prims, &r[j], &bundle, &tested);
+            same_walks_counted(&b, s->prims, &r[j], &hull, &untold);
+        }
+    }
+    ck_assert_int_gt(exact, 200);
+    ck_assert_int_gt(own, 0);
+    ck_assert_msg(tested < untold, "%ld primitive tests by the bundles, %ld untold", tested, untold);
     bvh_free(&b);
     scene_free(s);
 }
@@ -720,6 +799,7 @@ Suite *suite_bundle(void)
     tcase_add_test(tc, test_bundle_keeps_a_box_the_slab_test_lets_through);
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
     tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
+    tcase_add_loop_test(tc, test_bundle_rays_leaving_a_triangle, 0, 2);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
     tcase_add_test(tc, test_bundle_keeps_a_triangle_through_its_corner);

@@ -51,7 +51,9 @@
  * bundle passes it by in its sheared plane (triangle_passed_by: the shears
  * the rays may have, shear_bounds; each corner's box over them,
  * corner_boxes; a line through the origin with the three boxes strictly on
- * one side, boxes_apart).
+ * one side, boxes_apart).  And one where every ray's computed t is at or
+ * below -0 (triangle_left_behind, [SHADE-SHORTCUT-BEHIND-1]): the triangle a
+ * glass point's shadow rays leave.
  */
 #include <assert.h>
 #include "render/bvh.h"
@@ -177,6 +179,82 @@ BUNDLE_OUTLINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const
     return 1;
 }
 
+/* The least and greatest rounded product of a in [a0, a1] and b in [b0,
+ * b1]: the exact product's extremes are at the corners, and rounding is
+ * monotone. */
+static void product_bounds(real a0, real a1, real b0, real b1, real *lo, real *hi)
+{
+    real p = a0 * b0, q = a0 * b1, r = a1 * b0, s = a1 * b1;
+    real l = p < q ? p : q, h = p < q ? q : p;
+    l = r < l ? r : l;
+    h = r > h ? r : h;
+    *lo = s < l ? s : l;
+    *hi = s > h ? s : h;
+}
+
+/* Edge function i (triangle_solve's e_i = x_q y_p - y_q x_p, p = i + 1,
+ * q = i + 2) of every ray, from the corners' boxes: monotone rounding. */
+static void edge_bounds(real x[2][3], real y[2][3], int i, real *lo, real *hi)
+{
+    int p = (i + 1) % 3, q = (i + 2) % 3;
+    real al, ah, bl, bh;
+    product_bounds(x[0][q], x[1][q], y[0][p], y[1][p], &al, &ah);
+    product_bounds(y[0][q], y[1][q], x[0][p], x[1][p], &bl, &bh);
+    *lo = al - bh;
+    *hi = ah - bl;
+}
+
+/*
+ * [SHADE-SHORTCUT-BEHIND-1] Whether every ray of the bundle (one origin O,
+ * c->tri) has triangle_solve's t for g at or below -0, below its tmin > 0:
+ * mostly the triangle a glass point's shadow rays leave.  Per shear: the
+ * corners' differences a_i, b_i, z_i from O on the axes kx, ky, kz (the same
+ * doubles for every ray), R their largest magnitude; every ray's e_i of one
+ * strict sign sigma and |det| >= dmin >= 2^-16 (edge_bounds); its dz of the
+ * sign tau shear_bounds found.  For such a ray, with m = max |z_i|, t <= -0
+ * where sigma tau P < -fl((2^-48 m + 2^-1000) |det|), P = (e0 z0 + e1 z1) +
+ * e2 z2 as rounded (spec/numerics.md [NUM-TRI-BEHIND-1]); and every ray's P
+ * is within 2^-44 R^3 + 2^-1000 of the exact determinant of the rows (a_i,
+ * b_i, z_i), which the shear leaves unchanged, so within twice that of p0,
+ * the same sum at sx = sy = 0.  Hence the test on p0 with the margin at
+ * the greatest |det| and the two error terms doubled (they cover the
+ * rounding of this sum).  R < 2^300: no product overflows.
+ */
+BUNDLE_OUTLINE static int triangle_left_behind(const bundle_cone *c, vec3 o, const real *g)
+{
+    const real oa[3] = {o.x, o.y, o.z};
+    for (int k = 0; k < c->perms; k++) {
+        const isect_shear *sh = c->perm[k];
+        real a[3], b[3], z[3], r = 0, m = 0, x[2][3], y[2][3], lo[3], hi[3];
+        for (int i = 0; i < 3; i++) {
+            a[i] = g[3 * i + sh[0].kx] - oa[sh[0].kx];
+            b[i] = g[3 * i + sh[0].ky] - oa[sh[0].ky];
+            z[i] = g[3 * i + sh[0].kz] - oa[sh[0].kz];
+            m = fabs(z[i]) > m ? fabs(z[i]) : m;
+            r = fabs(a[i]) > r ? fabs(a[i]) : r;
+            r = fabs(b[i]) > r ? fabs(b[i]) : r;
+        }
+        r = m > r ? m : r;
+        if (!(r < 0x1p300))
+            return 0;
+        corner_boxes(sh, o, g, x, y);
+        for (int i = 0; i < 3; i++)
+            edge_bounds(x, y, i, &lo[i], &hi[i]);
+        int sigma = lo[0] > 0 && lo[1] > 0 && lo[2] > 0 ? 1 : hi[0] < 0 && hi[1] < 0 && hi[2] < 0 ? -1 : 0;
+        real dlo = lo[0] + lo[1] + lo[2], dhi = hi[0] + hi[1] + hi[2];
+        real dmin = sigma > 0 ? dlo : -dhi, dmax = sigma > 0 ? dhi : -dlo;
+        if (sigma == 0 || !(dmin >= 0x1p-16))
+            return 0;
+        real e0 = a[2] * b[1] - b[2] * a[1], e1 = a[0] * b[2] - b[0] * a[2], e2 = a[1] * b[0] - b[1] * a[0];
+        real p0 = e0 * z[0] + e1 * z[1] + e2 * z[2];
+        real sp = (sigma > 0) == (sh[0].dz > 0) ? p0 : -p0;
+        real need = (0x1p-48 * m + 0x1p-1000) * dmax + (0x1p-42 * (r * r * r) + 0x1p-998);
+        if (!(sp < -need))
+            return 0;
+    }
+    return 1;
+}
+
 /* The least and greatest of p / q over p in [p0, p1], q in [q0, q1] (q of
  * one strict sign, so the quotient is monotone in each: its extremes are at
  * the corners), widened by m = 2^-40 (|least| + |greatest|) + 2^-1000, and
@@ -235,6 +313,7 @@ BUNDLE_OUTLINE static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone
         int turn = dh[k] < 0;
         isect_shear *sh = c->perm[c->perms++];
         sh[0].kz = sh[1].kz = k;
+        sh[0].dz = sh[1].dz = turn ? -1 : 1;   /* the sign of every such ray's dz */
         sh[0].kx = sh[1].kx = turn ? j2 : j1;
         sh[0].ky = sh[1].ky = turn ? j1 : j2;
         ratio_bounds(dl[sh[0].kx], dh[sh[0].kx], dl[k], dh[k], &sh[0].sx, &sh[1].sx);
@@ -298,7 +377,8 @@ static unsigned leaf_skip(const bvh *b, bundle_cone *c, const bvh_bundle_rays *r
         if (ISECT_HOT_KIND(hr.code) == ISECT_HOT_TRIANGLE) {
             if (c->tri < 0)
                 shear_bounds(rays, c);
-            if (c->tri && triangle_passed_by(c, rays->origin, b->hot_reals + hr.at))
+            if (c->tri && (triangle_passed_by(c, rays->origin, b->hot_reals + hr.at) ||
+                           triangle_left_behind(c, rays->origin, b->hot_reals + hr.at)))
                 skip |= 1u << i;
             continue;
         }
