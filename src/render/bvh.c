@@ -456,9 +456,10 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
 }
 
 #ifdef SLAB_PAIR_SSE2
-/* The 4-wide walk's stack: each wide level pushes at most three of its
- * slots, and the wide tree is at most half as deep as the binary one. */
-enum { WIDE_STACK = 3 * (BVH_MAX_DEPTH / 2 + 1) };
+/* The 4-wide walks' stack: each wide node pushes at most three of its
+ * slots, and a path of wide nodes is no longer than the binary one
+ * (every slot lies at least a level below its node: bvh_wide.c). */
+enum { WIDE_STACK = 3 * BVH_MAX_DEPTH };
 
 typedef struct wide_entry {
     int first;         /* a wide node, or a leaf's first item */
@@ -694,7 +695,7 @@ static int walk_run_hit(void *ctx, int item, real t)
     return l->w->count_fn(l->w->ctx, l->b->items[item], 1);
 }
 
-static int walk_other(void *ctx, int item)
+static inline BVH_OCTANT_COPY int walk_other(void *ctx, int item)
 {
     const walk_leaf *l = ctx;
     const walk *w = l->w;
@@ -805,8 +806,9 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static int traverse_wide_all(const bvh *b, const walk *w, const slab_ray *sr)
+static int traverse_wide_all(const bvh *b, const walk *w)
 {
+    const slab_ray s = slab_make(w->r), *sr = &s;
     wide_entry stack[WIDE_STACK];
     int sp = 0;
     slab_pair_ray p;
@@ -876,12 +878,12 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     }
     if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
-    static const int root = 0;
-    slab_ray s = slab_make(w->r);
 #ifdef SLAB_PAIR_SSE2
     if (!bundle && b->wide && !b->exhaustive)
-        return traverse_wide_all(b, w, &s);
+        return traverse_wide_all(b, w);
 #endif
+    static const int root = 0;
+    slab_ray s = slab_make(w->r);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
                          bundle ? bundle->count : 1);
 }

@@ -21,18 +21,50 @@
 
 enum { WIDE_ALIGN = 64 };
 
+/* The surface area of n's box, up to a factor 2: the chance a ray through
+ * its parent meets it. */
+static real box_area(const bvh_node *n)
+{
+    vec3 e = vec_sub(n->hi, n->lo);
+    return e.x * (e.y + e.z) + e.y * e.z;
+}
+
+/* The slots of binary inner node n's wide node in kids[], their number
+ * returned: its two children, then, while fewer than four, the inner
+ * slot of the largest box replaced by its own two children in its place
+ * (so the slots stay in depth-first order).  Full nodes make the tree
+ * shallow: opening only grandchildren left half the nodes of the sphere
+ * grids with two slots (two leaves). */
+static int wide_kids(const bvh *b, int n, int kids[4])
+{
+    int slots = 2;
+    kids[0] = b->nodes[n].first;
+    kids[1] = kids[0] + 1;
+    while (slots < 4) {
+        int open = -1;
+        for (int j = 0; j < slots; j++)
+            if (b->nodes[kids[j]].count == 0 &&
+                (open < 0 || box_area(&b->nodes[kids[j]]) > box_area(&b->nodes[kids[open]])))
+                open = j;
+        if (open < 0)
+            break;
+        int first = b->nodes[kids[open]].first;
+        for (int j = slots; j > open + 1; j--)
+            kids[j] = kids[j - 1];
+        kids[open] = first;
+        kids[open + 1] = first + 1;
+        slots++;
+    }
+    return slots;
+}
+
 /* The wide nodes needed below binary inner node n (itself included). */
 static int wide_count_below(const bvh *b, int n)
 {
-    int total = 1;
-    for (int c = 0; c < 2; c++) {
-        const bvh_node *kid = &b->nodes[b->nodes[n].first + c];
-        if (kid->count > 0)
-            continue;
-        for (int g = 0; g < 2; g++)
-            if (b->nodes[kid->first + g].count == 0)
-                total += wide_count_below(b, kid->first + g);
-    }
+    int kids[4], slots = wide_kids(b, n, kids), total = 1;
+    for (int j = 0; j < slots; j++)
+        if (b->nodes[kids[j]].count == 0)
+            total += wide_count_below(b, kids[j]);
     return total;
 }
 
@@ -61,16 +93,7 @@ static void wide_fill(bvh *b, int n, int *next)
 {
     int at = (*next)++;
     bvh_wide_node *w = &b->wide[at];
-    int kids[4], slots = 0;
-    for (int c = 0; c < 2; c++) {
-        int kid = b->nodes[n].first + c;
-        if (b->nodes[kid].count > 0) {
-            kids[slots++] = kid;
-        } else {
-            kids[slots++] = b->nodes[kid].first;
-            kids[slots++] = b->nodes[kid].first + 1;
-        }
-    }
+    int kids[4], slots = wide_kids(b, n, kids);
     memset(w, 0, sizeof *w);
     for (int j = slots; j < 4; j++)
         for (int k = 0; k < 3; k++) {
