@@ -1121,11 +1121,11 @@ static void wide_leaves(const bvh *b, int k, int *firsts, int *n)
  * On builds without SSE2's pair test there is no wide form. */
 START_TEST(test_bvh_wide_walks_as_binary)
 {
-    int n = 1500;
-    scene_frame *frames;
-    scene_prim *prims = random_scene(1901, n, 2, &frames);
     bvh b;
-    ck_assert(bvh_build(&b, prims, n + 2, NULL));
+    scene_frame *frames;
+    const int n = 1500;
+    scene_prim *prims = random_scene(1901, n, 2, &frames);
+    ck_assert(bvh_build(&b, prims, n + 2, NULL) == 1);
 #ifdef SLAB_PAIR_SSE2
     ck_assert_ptr_nonnull(b.wide);
 #endif
