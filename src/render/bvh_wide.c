@@ -19,6 +19,7 @@
 #include "render/bvh.h"
 #include "render/slab_pair.h"
 
+#ifdef SLAB_PAIR_SSE2
 enum { WIDE_ALIGN = 64 };
 
 /* The surface area of n's box, up to a factor 2: the chance a ray through
@@ -109,7 +110,6 @@ static void wide_fill(bvh *b, int n, int *next)
 
 void bvh_wide_build(bvh *b)
 {
-#ifdef SLAB_PAIR_SSE2
     if (b->node_count < 3 || b->nodes[0].count > 0)
         return;
     int count = wide_count_below(b, 0);
@@ -123,7 +123,11 @@ void bvh_wide_build(bvh *b)
     b->wide_count = count;
     int next = 0;
     wide_fill(b, 0, &next);
-#else
-    (void)b;
-#endif
 }
+#else
+/* Without the pair test the nearest walk reads the binary tree alone. */
+void bvh_wide_build(bvh *b)
+{
+    (void)b;
+}
+#endif
