@@ -1083,101 +1083,6 @@ START_TEST(test_bvh_grid_100k_visits_few_nodes)
 }
 END_TEST
 
-/* The shadow walk's calls in order, for comparing two walks. */
-typedef struct call_log {
-    int prim[512], part[512], crossings[512];
-    int n;
-} call_log;
-
-static int log_call(void *ctx, bvh_ref ref, int crossings)
-{
-    call_log *l = ctx;
-    ck_assert_int_lt(l->n, 512);
-    l->prim[l->n] = ref.prim;
-    l->part[l->n] = ref.part;
-    l->crossings[l->n++] = crossings;
-    return 0;
-}
-
-/* Leaves of the 4-wide tree below wide node k, slots in order, appended to
- * firsts[] (their first items). */
-static void wide_leaves(const bvh *b, int k, int *firsts, int *n)
-{
-    const bvh_wide_node *w = &b->wide[k];
-    ck_assert(w->slots >= 2 && w->slots <= 4);
-    for (int j = 0; j < w->slots; j++) {
-        if (w->count[j] > 0)
-            firsts[(*n)++] = w->first[j];
-        else
-            wide_leaves(b, w->first[j], firsts, n);
-    }
-}
-
-/* [BVH-TIE-ORDER-1] The 4-wide form (bvh_wide.c) changes neither answer:
- * the nearest hit to the bit and the shadow walk's calls in the same order
- * as the binary walk's (b.wide set aside: the walk of the binary tree,
- * which the other tests check against brute force), and its leaves, in
- * depth-first slot order, are the binary tree's leaves in item order.
- * On builds without SSE2's pair test there is no wide form. */
-START_TEST(test_bvh_wide_walks_as_binary)
-{
-    bvh b;
-    scene_frame *frames;
-    const int n = 1500;
-    scene_prim *prims = random_scene(1901, n, 2, &frames);
-    ck_assert(bvh_build(&b, prims, n + 2, NULL) == 1);
-#ifdef SLAB_PAIR_SSE2
-    ck_assert_ptr_nonnull(b.wide);
-#endif
-    bvh_wide_node *wide = b.wide;
-    if (wide) {
-        int *firsts = malloc((size_t)b.leaf_count * sizeof *firsts), leaves = 0, item = 0;
-        ck_assert_ptr_nonnull(firsts);
-        wide_leaves(&b, 0, firsts, &leaves);
-        ck_assert_int_eq(leaves, b.leaf_count);
-        for (int i = 0; i < b.node_count; i++)
-            if (b.nodes[i].count > 0)
-                item += b.nodes[i].count;
-        ck_assert_int_eq(item, b.item_count);
-        for (int i = 1; i < leaves; i++)
-            ck_assert_int_lt(firsts[i - 1], firsts[i]);
-        free(firsts);
-    }
-    rng g = {1902, 0};
-    for (int i = 0; i < 4000; i++) {
-        ray r = random_ray(&g, prims, n + 2, i);
-        if (i % 2)
-            r.tmax = 0.5 + 20 * rng_uniform(&g);
-        ray rw = r, rb = r;
-        hit hw, hb;
-        static call_log lw, lb;
-        lw.n = lb.n = 0;
-        b.wide = wide;
-        int fw = bvh_intersect(&b, prims, &rw, &hw);
-        bvh_visit_counts(&b, prims, &r, log_call, &lw, NULL);
-        b.wide = NULL;
-        int fb = bvh_intersect(&b, prims, &rb, &hb);
-        bvh_visit_counts(&b, prims, &r, log_call, &lb, NULL);
-        ck_assert_int_eq(fw, fb);
-        ck_assert(rw.tmax == rb.tmax);
-        if (fw)
-            ck_assert_msg(hw.prim == hb.prim && hw.part == hb.part && hw.t == hb.t && same_vec_bits(hw.point, hb.point) &&
-                              same_vec_bits(hw.normal, hb.normal),
-                          "ray %d: prim %d t %.17g, binary prim %d t %.17g", i, hw.prim, (double)hw.t, hb.prim,
-                          (double)hb.t);
-        ck_assert_int_eq(lw.n, lb.n);
-        int same = 1;
-        for (int k = 0; k < lw.n; k++)
-            same &= lw.prim[k] == lb.prim[k] && lw.part[k] == lb.part[k] && lw.crossings[k] == lb.crossings[k];
-        ck_assert_msg(same, "ray %d: the shadow walk's calls differ in order", i);
-    }
-    b.wide = wide;
-    bvh_free(&b);
-    free(prims);
-    free(frames);
-}
-END_TEST
-
 Suite *suite_bvh(void)
 {
     Suite *s = suite_create("bvh");
@@ -1199,7 +1104,6 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
     tcase_add_test(tc, test_bvh_inner_root_not_tested);
-    tcase_add_test(tc, test_bvh_wide_walks_as_binary);
     tcase_add_test(tc, test_slab_box_meets_is_slab_box);
     tcase_add_test(tc, test_slab_pair_meets_is_slab_box);
     suite_add_tcase(s, tc);

@@ -24,7 +24,6 @@ void bvh_free(bvh *b)
     mem_free(&m, b->unbounded, (size_t)b->unbounded_cap * sizeof *b->unbounded);
     mem_free(&m, b->hot, (size_t)b->item_count * sizeof *b->hot);
     mem_free(&m, b->hot_block, b->hot_block_bytes);
-    mem_free(&m, b->wide_block, b->wide_block_bytes);
     memset(b, 0, sizeof *b);
     b->mem = m;
 }
@@ -455,119 +454,10 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
     }
 }
 
-#ifdef SLAB_PAIR_SSE2
-/* The 4-wide walks' stack: each wide node pushes at most three of its
- * slots, and a path of wide nodes is no longer than the binary one
- * (every slot lies at least a level below its node: bvh_wide.c). */
-enum { WIDE_STACK = 3 * BVH_MAX_DEPTH };
-
-typedef struct wide_entry {
-    int first;         /* a wide node, or a leaf's first item */
-    int count;         /* leaf: its parts; inner: 0 */
-    real enter;
-} wide_entry;
-
-/* The slots met, nearest last: their indices in ord[], their number
- * returned.  Insertion by entry (at most four). */
-static inline int wide_order(int met, const real t[4], int ord[4])
-{
-    int n = 0;
-    for (int j = 0; j < 4; j++) {
-        if (!(met >> j & 1))
-            continue;
-        int i = n++;
-        while (i > 0 && t[ord[i - 1]] < t[j]) {
-            ord[i] = ord[i - 1];
-            i--;
-        }
-        ord[i] = j;
-    }
-    return n;
-}
-
-/*
- * The nearest walk over the 4-wide tree (bvh_wide.c), never exhaustive:
- * the slots a node's ray meets are entered nearest first, the rest pushed
- * with their entries and skipped when popped beyond the shrunk tmax, as
- * the binary walk does.  Which nodes are entered and in what order differ
- * from the binary walk; the hit does not ([BVH-TIE-ORDER-1]: every hit
- * within the window is kept whatever came before, and no node that holds
- * one is culled, tmax staying past the window).
- */
-static inline BVH_OCTANT_COPY void traverse_wide_oct(const bvh *b, const scene_prim *prims, nearest *ns,
-                                                     const slab_ray *sr, int oct)
-{
-    wide_entry stack[WIDE_STACK];
-    int sp = 0;
-    slab_pair_ray p;
-    slab_pair_make(sr, &p);
-    nearest_leaf l = {ns, b, prims};
-    wide_entry go = {0, 0, 0.0};
-    for (;;) {
-        if (go.count > 0) {
-            visit_hits(b, go.first, go.first + go.count, &ns->rr, &ns->sh, ns->stats, nearest_run_hit,
-                       nearest_other, &l);
-        } else {
-            const bvh_wide_node *w = &b->wide[go.first];
-            real t[4];
-            int ord[4];
-            int met = slab_quad_meets(w, &p, slab_quad_near_at(0, oct & 1), slab_quad_far_at(0, oct & 1),
-                                      slab_quad_near_at(1, (oct >> 1) & 1), slab_quad_far_at(1, (oct >> 1) & 1),
-                                      slab_quad_near_at(2, (oct >> 2) & 1), slab_quad_far_at(2, (oct >> 2) & 1),
-                                      ns->rr.tmin, ns->rr.tmax, t);
-            if (ns->stats)
-                ns->stats->nodes_visited += w->slots;
-            int n = wide_order(met, t, ord);
-            if (n > 0) {
-                for (int i = 0; i < n - 1; i++) {
-                    assert(sp < WIDE_STACK);
-                    stack[sp].first = w->first[ord[i]];
-                    stack[sp].count = w->count[ord[i]];
-                    stack[sp++].enter = t[ord[i]];
-                }
-                go.first = w->first[ord[n - 1]];
-                go.count = w->count[ord[n - 1]];
-                continue;
-            }
-        }
-        do {
-            if (sp == 0)
-                return;
-            go = stack[--sp];
-        } while (go.enter > ns->rr.tmax);
-    }
-}
-
-/* One copy per octant, out of line: its stack (WIDE_STACK entries) is not
- * to join a caller's frame on the tracer's recursion. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void traverse_wide(const bvh *b, const scene_prim *prims, nearest *ns, const slab_ray *s)
-{
-    switch (slab_octant(s)) {
-    case 0: traverse_wide_oct(b, prims, ns, s, 0); break;
-    case 1: traverse_wide_oct(b, prims, ns, s, 1); break;
-    case 2: traverse_wide_oct(b, prims, ns, s, 2); break;
-    case 3: traverse_wide_oct(b, prims, ns, s, 3); break;
-    case 4: traverse_wide_oct(b, prims, ns, s, 4); break;
-    case 5: traverse_wide_oct(b, prims, ns, s, 5); break;
-    case 6: traverse_wide_oct(b, prims, ns, s, 6); break;
-    default: traverse_wide_oct(b, prims, ns, s, 7); break;
-    }
-}
-#endif
-
 /* One copy of the walk per octant (BVH_OCTANT_COPY). */
 static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     slab_ray s = slab_make(&ns->rr);
-#ifdef SLAB_PAIR_SSE2
-    if (b->wide && !b->exhaustive) {
-        traverse_wide(b, prims, ns, &s);
-        return;
-    }
-#endif
     switch (slab_octant(&s)) {
     case 0: traverse_nearest_oct(b, prims, ns, &s, 0); break;
     case 1: traverse_nearest_oct(b, prims, ns, &s, 1); break;
@@ -695,7 +585,7 @@ static int walk_run_hit(void *ctx, int item, real t)
     return l->w->count_fn(l->w->ctx, l->b->items[item], 1);
 }
 
-static inline BVH_OCTANT_COPY int walk_other(void *ctx, int item)
+static int walk_other(void *ctx, int item)
 {
     const walk_leaf *l = ctx;
     const walk *w = l->w;
@@ -790,69 +680,6 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
     return 0;
 }
 
-#ifdef SLAB_PAIR_SSE2
-/*
- * traverse_from from the root over the 4-wide tree (bvh_wide.c): the
- * same parts tested in the same order.  A slot's box is a node of the
- * binary tree, and the binary walk reaches a node exactly when its box
- * and its ancestors' pass; an ancestor passes whenever the node does (its
- * box holds the node's, the slab test is monotone and the window [tmin,
- * tmax] is the same for every box of a shadow walk: bvh.c,
- * root_decides_nothing), so the slots met are the binary walk's nodes
- * reached, and taken in slot order (depth-first, bvh_wide.c) they come in
- * the binary walk's order.  Out of line: inlined into walk_all beside
- * traverse_from, it would grow the callers' code for every shadow ray.
- */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int traverse_wide_all(const bvh *b, const walk *w)
-{
-    const slab_ray s = slab_make(w->r), *sr = &s;
-    wide_entry stack[WIDE_STACK];
-    int sp = 0;
-    slab_pair_ray p;
-    slab_pair_make(sr, &p);
-    const size_t nx = slab_quad_near_at(0, sr->neg[0]), fx = slab_quad_far_at(0, sr->neg[0]);
-    const size_t ny = slab_quad_near_at(1, sr->neg[1]), fy = slab_quad_far_at(1, sr->neg[1]);
-    const size_t nz = slab_quad_near_at(2, sr->neg[2]), fz = slab_quad_far_at(2, sr->neg[2]);
-    real tmin = w->node_tmin, tmax = w->r->tmax;
-    walk_leaf l = {w, b};
-    wide_entry go = {0, 0, 0.0};
-    for (;;) {
-        if (go.count > 0) {
-            int stop = visit_hits(b, go.first, go.first + go.count, w->r, w->sh, w->stats, walk_run_hit, walk_other,
-                                  &l);
-            if (stop)
-                return stop;
-        } else {
-            const bvh_wide_node *nd = &b->wide[go.first];
-            real t[4];
-            int met = slab_quad_meets(nd, &p, nx, fx, ny, fy, nz, fz, tmin, tmax, t);
-            if (w->stats)
-                w->stats->nodes_visited += nd->slots;
-            if (met) {
-                int j = 0;
-                while (!(met >> j & 1))
-                    j++;
-                for (int k = 3; k > j; k--)
-                    if (met >> k & 1) {
-                        assert(sp < WIDE_STACK);
-                        stack[sp].first = nd->first[k];
-                        stack[sp++].count = nd->count[k];
-                    }
-                go.first = nd->first[j];
-                go.count = nd->count[j];
-                continue;
-            }
-        }
-        if (sp == 0)
-            return 0;
-        go = stack[--sp];
-    }
-}
-#endif
-
 /* An unbounded part (every walk tests it): a plane in the world frame is
  * counted by isect_plane_crossings at once, as isect_part_crossings would
  * count it, without visit_part's frame for hits. */
@@ -878,10 +705,6 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     }
     if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
-#ifdef SLAB_PAIR_SSE2
-    if (!bundle && b->wide && !b->exhaustive)
-        return traverse_wide_all(b, w);
-#endif
     static const int root = 0;
     slab_ray s = slab_make(w->r);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,

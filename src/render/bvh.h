@@ -41,23 +41,6 @@ typedef struct bvh_node {
     int count;         /* leaf: number of parts (>= 1); inner: 0 */
 } bvh_node;
 
-/* The tree collapsed to nodes of up to four children (bvh_wide.c), which
- * the nearest walk reads where SSE2 tests two boxes at once
- * (slab_pair.h): the children's boxes side by side, axis by axis, so each
- * level costs two pair tests and one dependent load instead of two
- * levels' worth.  A child slot is an inner node of the binary tree's
- * grandchildren or a leaf (count > 0: the parts items[first ..
- * first + count)); an unused slot has the empty box lo = +inf, hi = -inf,
- * which no ray meets (its exits are all -inf, never NaN). */
-typedef struct bvh_wide_node {
-    real lo[3][4];     /* lo[axis][slot] */
-    real hi[3][4];
-    int first[4];      /* inner: index in bvh.wide; leaf: first item */
-    int count[4];      /* leaf: parts (>= 1); inner or unused: 0 */
-    int slots;         /* slots in use (2 to 4), counted as boxes tested */
-    int pad[7];        /* to 256 bytes: four whole cache lines */
-} bvh_wide_node;
-
 typedef struct bvh_ref {
     int prim;          /* index into the prims array */
     int part;          /* which part of it (intersect.h) */
@@ -86,11 +69,6 @@ typedef struct bvh {
     real *hot_reals;   /* inside hot_block, aligned to 32 bytes */
     void *hot_block;
     size_t hot_block_bytes;
-    bvh_wide_node *wide; /* the 4-wide form (NULL: none, the binary walk);
-                          wide[0] is the root */
-    int wide_count;
-    void *wide_block;  /* where wide lies, aligned to 64 bytes */
-    size_t wide_block_bytes;
     mem mem;           /* where the arrays live */
 } bvh;
 
@@ -109,10 +87,6 @@ int bvh_build(bvh *b, const scene_prim *prims, int count, const mem *m);
  * STATUS_OK, STATUS_NO_MEMORY or STATUS_CANCELLED (then *b is empty). */
 int bvh_build_polled(bvh *b, const scene_prim *prims, int count, const mem *m, cancel_poll *cancel);
 void bvh_free(bvh *b);
-/* Makes b->wide from the finished binary tree where the nearest walk reads
- * it (SSE2, bvh.c), when the root is inner; leaves it NULL otherwise and
- * when out of memory (the binary walk then serves: the same hits). */
-void bvh_wide_build(bvh *b);
 
 /* The nearest hit in (r->tmin, r->tmax), ties resolved as above: shrinks
  * r->tmax to its t, fills *h including h->prim and h->part, returns 1 on a

@@ -725,7 +725,6 @@ static int build_tree(build_ctx *ctx)
         b->nodes = fit;
         b->node_cap = b->node_count;
     }
-    bvh_wide_build(b);
     return 1;
 }
 

@@ -87,21 +87,13 @@ static inline SLAB_PAIR_INLINE __m128d slab_pair_load(const bvh_node *a, size_t 
 
 /* One axis: its entry into the running maximum *tn, its exit into the
  * running least *least. */
-static inline SLAB_PAIR_INLINE void slab_pair_axis_of(__m128d near, __m128d far, __m128d o, __m128d inv, __m128d *tn,
-                                                      __m128d *least)
-{
-    __m128d t0 = _mm_mul_pd(_mm_sub_pd(near, o), inv);
-    __m128d t1 = _mm_mul_pd(_mm_sub_pd(far, o), inv);
-    *tn = _mm_max_pd(t0, *tn);
-    *least = _mm_min_pd(t1, *least);
-}
-
-/* slab_pair_axis_of with the bounds at near_at and far_at of nodes a and
- * a + 1. */
 static inline SLAB_PAIR_INLINE void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_at, __m128d o, __m128d inv,
                                   __m128d *tn, __m128d *least)
 {
-    slab_pair_axis_of(slab_pair_load(a, near_at), slab_pair_load(a, far_at), o, inv, tn, least);
+    __m128d t0 = _mm_mul_pd(_mm_sub_pd(slab_pair_load(a, near_at), o), inv);
+    __m128d t1 = _mm_mul_pd(_mm_sub_pd(slab_pair_load(a, far_at), o), inv);
+    *tn = _mm_max_pd(t0, *tn);
+    *least = _mm_min_pd(t1, *least);
 }
 
 /* The pad of the least exits, the cap by tmax and the answer (the scalar
@@ -147,53 +139,6 @@ static inline SLAB_PAIR_INLINE int slab_pair_meets_slab(const bvh_node *a, const
     slab_pair_axis(a, slab_pair_near_at(2, s->neg[2]), slab_pair_far_at(2, s->neg[2]), _mm_set1_pd(s->o.z),
                    _mm_set1_pd(s->inv.z), &tn, &least);
     return slab_pair_end(tn, least, tmax, ta, tc);
-}
-
-/* The byte offsets in a bvh_wide_node of an axis's near bounds for a ray
- * whose neg flag is neg (hi for a negative direction, as slab_ends
- * chooses), and of its far ones. */
-static inline SLAB_PAIR_INLINE size_t slab_quad_near_at(int axis, int neg)
-{
-    return (neg ? offsetof(bvh_wide_node, hi) : offsetof(bvh_wide_node, lo)) + (size_t)axis * 4 * sizeof(real);
-}
-
-static inline SLAB_PAIR_INLINE size_t slab_quad_far_at(int axis, int neg)
-{
-    return slab_quad_near_at(axis, !neg);
-}
-
-/* The two slots' bounds from slot h at byte offset at of w. */
-static inline SLAB_PAIR_INLINE __m128d slab_quad_load(const bvh_wide_node *w, size_t at, int h)
-{
-    return _mm_load_pd((const double *)(const void *)((const char *)(const void *)w + at) + h);
-}
-
-/* Slots h and h + 1 of slab_quad_meets. */
-static inline SLAB_PAIR_INLINE int slab_quad_half(const bvh_wide_node *w, const slab_pair_ray *s, size_t nx, size_t fx,
-                                                  size_t ny, size_t fy, size_t nz, size_t fz, int h, real tmin,
-                                                  real tmax, real t[4])
-{
-    __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);
-    slab_pair_axis_of(slab_quad_load(w, nx, h), slab_quad_load(w, fx, h), s->o[0], s->inv[0], &tn, &least);
-    slab_pair_axis_of(slab_quad_load(w, ny, h), slab_quad_load(w, fy, h), s->o[1], s->inv[1], &tn, &least);
-    slab_pair_axis_of(slab_quad_load(w, nz, h), slab_quad_load(w, fz, h), s->o[2], s->inv[2], &tn, &least);
-    return slab_pair_end(tn, least, tmax, &t[h], &t[h + 1]) << h;
-}
-
-/*
- * Whether the ray meets each slot of a 4-wide node (bit j: slot j) within
- * [tmin, tmax], slot j's entry in t[j]: slab_box_meets_neg of each slot's
- * box, by two pair tests (slots 0 and 1, then 2 and 3).  The offsets are
- * slab_quad_near_at's and slab_quad_far_at's for the ray's neg flags:
- * constants where the walk is made once per octant.  Written out, as
- * slab_pair_meets is.
- */
-static inline SLAB_PAIR_INLINE int slab_quad_meets(const bvh_wide_node *w, const slab_pair_ray *s, size_t nx,
-                                                   size_t fx, size_t ny, size_t fy, size_t nz, size_t fz, real tmin,
-                                                   real tmax, real t[4])
-{
-    return slab_quad_half(w, s, nx, fx, ny, fy, nz, fz, 0, tmin, tmax, t) |
-           slab_quad_half(w, s, nx, fx, ny, fy, nz, fz, 2, tmin, tmax, t);
 }
 #endif
 
