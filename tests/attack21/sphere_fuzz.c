@@ -14,7 +14,10 @@
  * tmin negative or -inf, tmax +inf.  Exit 1 on a difference.  From the
  * repository root after `make build/refray`:
  *   cc -std=c99 -O2 -ffp-contract=off -Isrc -Ibuild/gen -o /tmp/sf \
- *      tests/attack21/sphere_fuzz.c build/librefray-internal.a -ljansson -lm && /tmp/sf 1000000 [SEED]
+ *      tests/attack21/sphere_fuzz.c build/librefray-internal.a -ljansson -lm && /tmp/sf 1000000 [SEED [SPAN [DSPAN]]]
+ * (SPAN: scales 2^-SPAN .. 2^SPAN, default 300; 480 reaches overflow and
+ * the radius floor 2^-400 of sphere_root_clear; DSPAN: |d| 10^-DSPAN ..
+ * 10^DSPAN, default 30)
  */
 #include <math.h>
 #include <stdint.h>
@@ -60,9 +63,11 @@ int main(int argc, char **argv)
     long n = argc > 1 ? atol(argv[1]) : 100000;
     if (argc > 2)
         st = strtoull(argv[2], NULL, 10) * 0x9E3779B97F4A7C15u + 1;
+    int span = argc > 3 ? atoi(argv[3]) : 300;   /* scales 2^-span .. 2^span */
+    double dspan = argc > 4 ? atof(argv[4]) : 30;   /* |d| 10^-dspan .. 10^dspan */
     long cases = 0, two = 0, between = 0, bad_part = 0, bad_hot = 0, graze = 0;
     for (long i = 0; i < n; i++) {
-        double s = ldexp(1.0, RI(-300, 300));
+        double s = ldexp(1.0, RI(-span, span));
         double spread = pow(10.0, (U() < 0.2 ? 17 : 15) * U());
         vec3 c = vec_scale(unit(), spread * s);
         if (U() < 0.2)
@@ -83,7 +88,7 @@ int main(int argc, char **argv)
         if (w >= 0.4)
             graze++;
         vec3 o = vec_madd(c, nrm, away), aim = vec_madd(c, side, radius * off);
-        vec3 d = vec_scale(vec_normalize(vec_sub(aim, o)), pow(10.0, 60 * U() - 30));
+        vec3 d = vec_scale(vec_normalize(vec_sub(aim, o)), pow(10.0, dspan * (2 * U() - 1)));
         if (U() < 0.1) {
             /* an axis ray: the sphere put on it */
             int ax = RI(0, 2);
