@@ -24,22 +24,13 @@ T=$(mktemp -d)
 cat > "$T/r.c" <<'EOC'
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 #include "render/intersect.h"
 #include "scene/scene.h"
 static int differs(vec3 c, double radius, vec3 o, vec3 d, double tmin, double tmax)
 {
-    scene_prim p;
-    memset(&p, 0, sizeof p);
-    p.kind = PRIM_SPHERE;
-    p.mesh = -1;
-    p.u.sphere.center = c;
-    p.u.sphere.radius = radius;
-    ray r;
-    r.origin = o;
-    r.dir = d;
-    r.tmin = tmin;
-    r.tmax = tmax;
+    scene_prim p = {0};
+    p.kind = PRIM_SPHERE, p.mesh = -1, p.u.sphere.center = c, p.u.sphere.radius = radius;
+    ray r = {o, d, tmin, tmax};
     hit full[ISECT_MAX_CROSSINGS];
     real g[ISECT_HOT_REALS];
     int reals, code = isect_hot_make(&p, 0, g, &reals);
