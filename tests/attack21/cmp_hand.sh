@@ -1,0 +1,26 @@
+#!/bin/sh
+# cmp_hand.sh [OPTION...] - renders attack 21's hand scenes (make_scenes.sh)
+# with build/refray (B), with and without --no-shortcuts, and with the old
+# binary (OLD, default /tmp/old-main/build/refray), the OPTIONs given to
+# all three; prints each scene whose images or exit codes differ and exits
+# 1 if any does.  Run from the repository root after `make build/refray`.
+set -u
+B=${B:-build/refray}
+OLD=${OLD:-/tmp/old-main/build/refray}
+D=$(mktemp -d)
+sh tests/attack21/make_scenes.sh "$D/s"
+n=0 bad=0
+for f in "$D"/s/*.scene; do
+    n=$((n + 1))
+    timeout 120 nice $B render "$f" -q "$@" -o "$D/on.pfm" >/dev/null 2>&1; e1=$?
+    timeout 120 nice $B render "$f" -q --no-shortcuts "$@" -o "$D/off.pfm" >/dev/null 2>&1; e2=$?
+    timeout 120 nice $OLD render "$f" -q "$@" -o "$D/old.pfm" >/dev/null 2>&1; e3=$?
+    msg=""
+    [ $e1 = $e2 ] && [ $e1 = $e3 ] || msg="exit $e1 $e2 old $e3"
+    if [ $e1 = 0 ] && [ $e2 = 0 ]; then cmp -s "$D/on.pfm" "$D/off.pfm" || msg="$msg on/off differ"; fi
+    if [ $e1 = 0 ] && [ $e3 = 0 ]; then cmp -s "$D/on.pfm" "$D/old.pfm" || msg="$msg new/old differ"; fi
+    [ -n "$msg" ] && { echo "$(basename "$f"): $msg"; bad=1; }
+done
+echo "cmp_hand: $n scenes $*"
+rm -rf "$D"
+exit $bad
