@@ -94,8 +94,8 @@ static int sphere_root_possible(const ray *r, real reach, real t)
  * take it without refining ([NUM-SPHERE-3], spec/numerics.md 2.1b).  The
  * refine moves t by a root of isect_sphere_roots(f2, d, R), f2 = o + t d - c
  * rounded as sphere_refine rounds it; every such root (held or not) is at
- * most (|f2| + R)(1 + 2^-18) / |d| in magnitude for |f2| <= 4R and
- * R >= 2^-400, grazes included, and n1 = |f2|_1 >= |f2| (1 - 2 eps),
+ * most (|f2| + R)(1 + 2^-18) / |d| in magnitude for |f2| <= 4R,
+ * R >= 2^-400 and |d|_max in [2^-100, 2^100], grazes included, and n1 = |f2|_1 >= |f2| (1 - 2 eps),
  * |d|_max <= |d|: so t clear of both ends by (n1 + R)(1 + 2^-14) / |d|_max,
  * with 2^-40 |t| for the rounding of t + step, counts as it would refined.
  * The bound is of the step's magnitude, not of the refine's small move, so
@@ -104,7 +104,10 @@ static int sphere_root_clear(vec3 center, real radius, const ray *r, real t)
 {
     vec3 f2 = vec_sub(ray_at(r, t), center);
     real n1 = vec_sum_abs(f2), dm = vec_max_abs(r->dir);
-    if (!(radius >= 0x1p-400 && n1 <= 4.0 * radius))
+    /* |d|_max in [2^-100, 2^100]: a = d.d and a gap stay normal or, at a
+     * graze, negligibly far from it; outside it the second solve's roots
+     * can pass the bound (attack 21, sphere_count_extreme_dir.sh). */
+    if (!(radius >= 0x1p-400 && n1 <= 4.0 * radius && dm >= 0x1p-100 && dm <= 0x1p100))
         return 0;
     real m = (n1 + radius) * (1.0 + 0x1p-14) + 0x1p-40 * fabs(t) * dm;
     return (t - r->tmin) * dm > m && (r->tmax - t) * dm > m;
