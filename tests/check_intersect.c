@@ -475,6 +475,38 @@ START_TEST(test_isect_sphere_count_matches_the_refined_roots)
 }
 END_TEST
 
+/* Attack 21's two directions far from unit length ([NUM-SPHERE-3]'s range
+ * of |d|_max): with |d| = 2^-401 a gap went subnormal, with |d| about 2^455
+ * it overflowed, and the count took 2 where the refined roots give 1.  The
+ * expected count is the refined roots' (isect_part_all), not a number. */
+START_TEST(test_isect_sphere_count_far_from_unit_directions)
+{
+    static const struct { double c[3], radius, o[3], d[3], tmin, tmax; } cases[] = {
+        {{0x1.949dfee56af26p-212, 0x1.05f824ef4fbcdp-212, 0x1.0feca4124e21bp-210}, 0x1.835201fe39a9ap-267,
+         {0x1.949dfee56af26p-212, 0x1.05f824ef4fbcep-212, 0x1.0feca4124e21bp-210},
+         {0, -0x1.4b408044980edp-401, 0}, 0x1.ec127f4a9c4bap+135, 0x1.10aa02af846bp+137},
+        {{-0x1.3c5c4f6186a6ap+164, -0x1.f9f3e7ccbc9a7p+169, -0x1.42a530dce2811p+168}, 0x1.1abe55e61fb61p+116,
+         {-0x1.3c5c4f6534876p+164, -0x1.f9f3e7cc6bd57p+169, -0x1.42a530dd063d2p+168},
+         {0x1.44ee5cafaf5edp+453, -0x1.bdd39e366f833p+454, 0x1.8a7dcff56142p+452}, -HUGE_VAL, HUGE_VAL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        scene_prim s = prim_sphere(vec_make(cases[i].c[0], cases[i].c[1], cases[i].c[2]), cases[i].radius);
+        ray r = make_ray(vec_make(cases[i].o[0], cases[i].o[1], cases[i].o[2]),
+                         vec_make(cases[i].d[0], cases[i].d[1], cases[i].d[2]));
+        r.tmin = cases[i].tmin;
+        r.tmax = cases[i].tmax;
+        hit full[ISECT_MAX_CROSSINGS];
+        int expect = isect_part_all(&s, 0, &r, full);
+        ck_assert_int_eq(expect, 1);
+        ck_assert_int_eq(isect_part_crossings(&s, 0, &r), expect);
+        real gr[ISECT_HOT_REALS];
+        int reals, code = isect_hot_make(&s, 0, gr, &reals);
+        if (r.tmin >= 0)   /* a hot record's walk never has a negative tmin */
+            ck_assert_int_eq(isect_hot_crossings(code, gr, &r, NULL), expect);
+    }
+}
+END_TEST
+
 /* ---- plane ---- */
 
 START_TEST(test_isect_plane_hit_by_hand)
@@ -1439,6 +1471,7 @@ Suite *suite_intersect(void)
     tcase_add_test(sphere, test_isect_sphere_huge_sphere_close_up);
     tcase_add_test(sphere, test_isect_sphere_moving_away_matches_the_roots);
     tcase_add_test(sphere, test_isect_sphere_count_matches_the_refined_roots);
+    tcase_add_test(sphere, test_isect_sphere_count_far_from_unit_directions);
     suite_add_tcase(s, sphere);
     TCase *sheet = tcase_create("plane_disk");
     tcase_add_test(sheet, test_isect_plane_hit_by_hand);
