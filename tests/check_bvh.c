@@ -991,6 +991,23 @@ START_TEST(test_slab_pair_meets_is_slab_box)
 }
 END_TEST
 
+/* For a ray that meets no part: the boxes and the parts each walk tests
+ * (the nearest one and bvh_visit_stats'), which must be nodes and parts. */
+static void check_miss_counts(const bvh *b, const scene_prim *prims, const ray *r, long nodes, long parts)
+{
+    hit h;
+    ray q = *r;
+    bvh_stats st = {0, 0}, vs = {0, 0};
+    long crossings = 0;
+    ck_assert(!bvh_intersect_stats(b, prims, &q, &h, &st));
+    ck_assert_int_eq(st.nodes_visited, nodes);
+    ck_assert_int_eq(st.prims_tested, parts);
+    ck_assert_int_eq(bvh_visit_stats(b, prims, r, count_crossings, &crossings, &vs), 0);
+    ck_assert_int_eq(crossings, 0);
+    ck_assert_int_eq(vs.nodes_visited, nodes);
+    ck_assert_int_eq(vs.prims_tested, parts);
+}
+
 /* The walks leave out the test of an inner root (root_decides_nothing in
  * bvh.c) and test a leaf root: boxes tested, counted by hand. */
 START_TEST(test_bvh_inner_root_not_tested)
@@ -1002,16 +1019,8 @@ START_TEST(test_bvh_inner_root_not_tested)
     ck_assert_int_eq(b.nodes[0].count, 0);
     hit h;
     /* Past both: the root's two children tested, nothing else. */
-    bvh_stats st = {0, 0};
     ray r = {{0, 10, 0}, {0, 1, 0}, 0.0, HUGE_VAL};
-    ck_assert(!bvh_intersect_stats(&b, two, &r, &h, &st));
-    ck_assert_int_eq(st.nodes_visited, 2);
-    ck_assert_int_eq(st.prims_tested, 0);
-    bvh_stats vs = {0, 0};
-    long crossings = 0;
-    ck_assert_int_eq(bvh_visit_stats(&b, two, &r, count_crossings, &crossings, &vs), 0);
-    ck_assert_int_eq(vs.nodes_visited, 2);
-    ck_assert_int_eq(crossings, 0);
+    check_miss_counts(&b, two, &r, 2, 0);
     /* Into the ball at x = 5: both children, the ball tested and hit. */
     bvh_stats in = {0, 0};
     ray q = {{5, 10, 0}, {0, -1, 0}, 0.0, HUGE_VAL};
@@ -1048,18 +1057,8 @@ START_TEST(test_bvh_unmet_sibling_not_entered)
     ck_assert(bvh_build(&b, row, 4, NULL));
     ck_assert_int_eq(b.node_count, 7);
     ck_assert_int_eq(b.leaf_count, 4);
-    hit h;
     ray r = {{-15.9, 10, 0.9}, {0, -1, 0}, 0.0, HUGE_VAL};
-    bvh_stats st = {0, 0};
-    ck_assert(!bvh_intersect_stats(&b, row, &r, &h, &st));
-    ck_assert_int_eq(st.nodes_visited, 4);
-    ck_assert_int_eq(st.prims_tested, 1);
-    bvh_stats vs = {0, 0};
-    long crossings = 0;
-    ck_assert_int_eq(bvh_visit_stats(&b, row, &r, count_crossings, &crossings, &vs), 0);
-    ck_assert_int_eq(crossings, 0);
-    ck_assert_int_eq(vs.nodes_visited, 4);
-    ck_assert_int_eq(vs.prims_tested, 1);
+    check_miss_counts(&b, row, &r, 4, 1);
     bvh_free(&b);
 }
 END_TEST
