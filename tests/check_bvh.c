@@ -991,6 +991,23 @@ START_TEST(test_slab_pair_meets_is_slab_box)
 }
 END_TEST
 
+/* For a ray that meets no part: the boxes and the parts each walk tests
+ * (the nearest one and bvh_visit_stats'), which must be nodes and parts. */
+static void check_miss_counts(const bvh *b, const scene_prim *prims, const ray *r, long nodes, long parts)
+{
+    hit h;
+    ray q = *r;
+    bvh_stats st = {0, 0}, vs = {0, 0};
+    long crossings = 0;
+    ck_assert(!bvh_intersect_stats(b, prims, &q, &h, &st));
+    ck_assert_int_eq(st.nodes_visited, nodes);
+    ck_assert_int_eq(st.prims_tested, parts);
+    ck_assert_int_eq(bvh_visit_stats(b, prims, r, count_crossings, &crossings, &vs), 0);
+    ck_assert_int_eq(crossings, 0);
+    ck_assert_int_eq(vs.nodes_visited, nodes);
+    ck_assert_int_eq(vs.prims_tested, parts);
+}
+
 /* The walks leave out the test of an inner root (root_decides_nothing in
  * bvh.c) and test a leaf root: boxes tested, counted by hand. */
 START_TEST(test_bvh_inner_root_not_tested)
@@ -1002,16 +1019,8 @@ START_TEST(test_bvh_inner_root_not_tested)
     ck_assert_int_eq(b.nodes[0].count, 0);
     hit h;
     /* Past both: the root's two children tested, nothing else. */
-    bvh_stats st = {0, 0};
     ray r = {{0, 10, 0}, {0, 1, 0}, 0.0, HUGE_VAL};
-    ck_assert(!bvh_intersect_stats(&b, two, &r, &h, &st));
-    ck_assert_int_eq(st.nodes_visited, 2);
-    ck_assert_int_eq(st.prims_tested, 0);
-    bvh_stats vs = {0, 0};
-    long crossings = 0;
-    ck_assert_int_eq(bvh_visit_stats(&b, two, &r, count_crossings, &crossings, &vs), 0);
-    ck_assert_int_eq(vs.nodes_visited, 2);
-    ck_assert_int_eq(crossings, 0);
+    check_miss_counts(&b, two, &r, 2, 0);
     /* Into the ball at x = 5: both children, the ball tested and hit. */
     bvh_stats in = {0, 0};
     ray q = {{5, 10, 0}, {0, -1, 0}, 0.0, HUGE_VAL};
@@ -1032,6 +1041,27 @@ START_TEST(test_bvh_inner_root_not_tested)
 }
 END_TEST
 
+
+/* The walks enter only the children the ray meets: the sibling both walks
+ * write to their stack at every inner node is kept only when met (bvh.c,
+ * descend and traverse_from).  Four balls in a row, a ray down through the
+ * corner of the first one's box that misses the ball: tmax stays +inf, and
+ * an unmet sibling's entry (+inf, the ray being parallel to its x slab)
+ * would pass the pop's `enter <= tmax`.  Counted by hand: the root's two
+ * children and the first inner node's two, one ball tested. */
+START_TEST(test_bvh_unmet_sibling_not_entered)
+{
+    scene_prim row[4] = {prim_sphere(vec_make(-15, 0, 0), 1), prim_sphere(vec_make(-5, 0, 0), 1),
+                         prim_sphere(vec_make(5, 0, 0), 1), prim_sphere(vec_make(15, 0, 0), 1)};
+    bvh b;
+    ck_assert(bvh_build(&b, row, 4, NULL));
+    ck_assert_int_eq(b.node_count, 7);
+    ck_assert_int_eq(b.leaf_count, 4);
+    ray r = {{-15.9, 10, 0.9}, {0, -1, 0}, 0.0, HUGE_VAL};
+    check_miss_counts(&b, row, &r, 4, 1);
+    bvh_free(&b);
+}
+END_TEST
 START_TEST(test_bvh_grid_100k_visits_few_nodes)
 {
     /* A 100 x 100 x 10 grid of unit-spaced spheres (100 000).  A ray down
@@ -1104,6 +1134,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_skewed_distribution_depth_bounded);
     tcase_add_test(tc, test_bvh_grid_100k_visits_few_nodes);
     tcase_add_test(tc, test_bvh_inner_root_not_tested);
+    tcase_add_test(tc, test_bvh_unmet_sibling_not_entered);
     tcase_add_test(tc, test_slab_box_meets_is_slab_box);
     tcase_add_test(tc, test_slab_pair_meets_is_slab_box);
     suite_add_tcase(s, tc);

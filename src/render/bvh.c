@@ -395,25 +395,35 @@ static inline int root_decides_nothing(const bvh *b)
 }
 
 /* Among the children of an inner node that the ray meets, goes to the
- * nearer and pushes the other; returns the next node or -1. */
+ * nearer and pushes the other; returns the next node or -1.  all is 3 when
+ * the tree is exhaustive (both met), else 0.  Where child a is met, the
+ * next node stays a branch (predicted, the next node's loads start before
+ * the slab test ends: a select there took 1.30 of the time, an earlier
+ * round),
+ * but whether c is pushed too is a count (the far child written always):
+ * the "both met" branch was grid1k's most mispredicted (spec/performance.md,
+ * "Nineteenth round: walks' branches"). */
 static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray *s, int oct, nearest *ns,
-                                           stack_entry *stack, int *sp)
+                                           stack_entry *stack, int *sp, int all)
 {
     int a = b->nodes[node].first, c = a + 1;
     real ta, tc;
-    int met = children_hit(&b->nodes[a], s, oct, ns->rr.tmin, ns->rr.tmax, &ta, &tc);
-    int ha = (met & 1) || b->exhaustive;
-    int hc = (met & 2) || b->exhaustive;
+    int met = children_hit(&b->nodes[a], s, oct, ns->rr.tmin, ns->rr.tmax, &ta, &tc) | all;
     if (ns->stats)
         ns->stats->nodes_visited += 2;
-    if (ha && hc) {
-        int far = tc < ta ? a : c;
-        assert(*sp < BVH_MAX_DEPTH);
-        stack[*sp].node = far;
-        stack[(*sp)++].enter = far == a ? ta : tc;
-        return far == a ? c : a;
+    assert(*sp < BVH_MAX_DEPTH);
+    if (met & 1) {
+        if ((met >> 1) & (tc < ta)) {
+            stack[*sp].node = a;
+            stack[(*sp)++].enter = ta;
+            return c;
+        }
+        stack[*sp].node = c;
+        stack[*sp].enter = tc;
+        *sp += met >> 1;
+        return a;
     }
-    return ha ? a : hc ? c : -1;
+    return met ? c : -1;
 }
 
 static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scene_prim *prims, nearest *ns,
@@ -421,6 +431,7 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
 {
     stack_entry stack[BVH_MAX_DEPTH];
     int sp = 0, node = 0;
+    const int all = b->exhaustive ? 3 : 0; /* exhaustive: both children met */
     real enter;
     walk_ray w, *s = &w;
     w.s = *sr;
@@ -442,7 +453,7 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
                        nearest_other, &l);
             node = -1;
         } else {
-            node = descend(b, node, s, oct, ns, stack, &sp);
+            node = descend(b, node, s, oct, ns, stack, &sp, all);
         }
         while (node < 0) {
             if (sp == 0)
@@ -626,6 +637,7 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
 {
     int stack[BVH_MAX_DEPTH];
     real tmin = w->node_tmin, tmax = w->r->tmax, enter;
+    const int all = b->exhaustive ? 3 : 0; /* exhaustive: both children met */
     /* A copy: through the pointer each test would load it again, the
      * callback being opaque to the compiler. */
     const slab_ray copy = *sr, *s = &copy;
@@ -649,19 +661,19 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                 int met = node_hit_any(&b->nodes[a], s, tmin, tmax, &enter) |
                           node_hit_any(&b->nodes[a + 1], s, tmin, tmax, &enter) << 1;
 #endif
-                int ha = (met & 1) || b->exhaustive;
-                int hc = (met & 2) || b->exhaustive;
+                met |= all;
                 if (w->stats)
                     w->stats->nodes_visited += 2;
-                if (ha) {
-                    if (hc) {
-                        assert(sp < BVH_MAX_DEPTH);
-                        stack[sp++] = a + 1;
-                    }
+                if (met & 1) {
+                    /* The sibling written always, kept when met: a count, not a
+                     * branch (grid1k: its branch mispredicted 219 k of 1.68 M). */
+                    assert(sp < BVH_MAX_DEPTH);
+                    stack[sp] = a + 1;
+                    sp += met >> 1;
                     nd = &b->nodes[a];
                     continue;
                 }
-                if (hc) {
+                if (met & 2) {
                     nd = &b->nodes[a + 1];
                     continue;
                 }
