@@ -4,7 +4,8 @@
  * Each shape has one routine `SHAPE_hits(..., const ray *r, hit *out, int max)`
  * that writes up to max accepted hits (t in (tmin, tmax)) in increasing t
  * and returns how many.  The nearest-hit entry points call it with max 1,
- * the all-crossings one with max 2, so both always agree on every t.
+ * the all-crossings ones with max ISECT_MAX_CROSSINGS, so both always agree
+ * on every t.
  * Nothing here allocates or keeps state.
  */
 #include <float.h>
