@@ -478,7 +478,8 @@ END_TEST
 /* Attack 21's two directions far from unit length ([NUM-SPHERE-3]'s range
  * of |d|_max): with |d| = 2^-401 a gap went subnormal, with |d| about 2^455
  * it overflowed, and the count took 2 where the refined roots give 1.  The
- * expected count is the refined roots' (isect_part_all), not a number. */
+ * expected count is the refined roots' (isect_part_all); that it is 1 is
+ * asserted so that each case still tells the two counts apart. */
 START_TEST(test_isect_sphere_count_far_from_unit_directions)
 {
     static const struct { double c[3], radius, o[3], d[3], tmin, tmax; } cases[] = {

@@ -4,7 +4,8 @@
  * Each shape has one routine `SHAPE_hits(..., const ray *r, hit *out, int max)`
  * that writes up to max accepted hits (t in (tmin, tmax)) in increasing t
  * and returns how many.  The nearest-hit entry points call it with max 1,
- * the all-crossings one with max 2, so both always agree on every t.
+ * the all-crossings ones with max ISECT_MAX_CROSSINGS, so both always agree
+ * on every t.
  * Nothing here allocates or keeps state.
  */
 #include <float.h>
@@ -94,9 +95,10 @@ static int sphere_root_possible(const ray *r, real reach, real t)
  * take it without refining ([NUM-SPHERE-3], spec/numerics.md 2.1b).  The
  * refine moves t by a root of isect_sphere_roots(f2, d, R), f2 = o + t d - c
  * rounded as sphere_refine rounds it; every such root (held or not) is at
- * most (|f2| + R)(1 + 2^-18) / |d| in magnitude for |f2| <= 4R,
- * R >= 2^-400 and |d|_max in [2^-100, 2^100], grazes included, and n1 = |f2|_1 >= |f2| (1 - 2 eps),
- * |d|_max <= |d|: so t clear of both ends by (n1 + R)(1 + 2^-14) / |d|_max,
+ * most (|f2| + R)(1 + 2^-18) / |d| in magnitude for |f2| <= 4R, R >= 2^-400
+ * and |d|_max in [2^-100, 2^100], grazes included; n1 = |f2|_1 >= |f2| (1 -
+ * 2 eps) and |d|_max <= |d|: so t clear of both ends by (n1 + R)(1 +
+ * 2^-14) / |d|_max,
  * with 2^-40 |t| for the rounding of t + step, counts as it would refined.
  * The bound is of the step's magnitude, not of the refine's small move, so
  * it asks a sphere to keep about a diameter from the segment's ends. */
@@ -1225,11 +1227,11 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
  * full hit and the crossings' bare ones (a shadow ray's count), so that
  * neither carries the other's branches, nor a bare hit the point it does
  * not write (one copy with both passed at run time: nested_glass at
- * 120x80 1.8 % and demo 1.1 % more instructions in all).  With max 2
- * (isect_hot_crossings: gcc's clone has it constant) hot_sphere_bare is a
- * count and writes no t (sphere_hits' bare 2); isect_hot_nearest's max 1
- * writes it.  A third copy for the count changed the frame of the shadow
- * walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
+ * 120x80 1.8 % and demo 1.1 % more instructions in all).  With max
+ * ISECT_MAX_CROSSINGS (isect_hot_crossings: gcc's clone has it constant)
+ * hot_sphere_bare is a count and writes no t (sphere_hits' bare 2);
+ * hot_hits' max 1 writes it.  A third copy for the count changed the
+ * frame of the shadow walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
 {
     return hot_sphere(g, r, out, 1, 0);
@@ -1322,8 +1324,9 @@ ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, i
     }
 }
 
-/* The record's crossings, bare (up to max; a sphere's with max 2 is a count
- * and writes no t: hot_sphere_bare). */
+/* The record's crossings, bare (up to max; isect_hot_nearest passes 1, so
+ * a sphere's t is written: hot_sphere_bare counts only at
+ * ISECT_MAX_CROSSINGS). */
 static int hot_hits(int code, const real *g, const ray *r, const isect_shear *sh, hit *out, int max)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
