@@ -223,20 +223,25 @@ static void edge_bounds(real x[2][3], real y[2][3], int i, real *lo, real *hi)
 BUNDLE_OUTLINE static int triangle_left_behind(const bundle_cone *c, vec3 o, const real *g)
 {
     const real oa[3] = {o.x, o.y, o.z};
+    /* The corners' differences from O on every axis, and R, are the same
+     * for every shear: made once. */
+    real diff[3][3], r = 0;
+    for (int i = 0; i < 3; i++)
+        for (int axis = 0; axis < 3; axis++) {
+            diff[i][axis] = g[3 * i + axis] - oa[axis];
+            r = fabs(diff[i][axis]) > r ? fabs(diff[i][axis]) : r;
+        }
+    if (!(r < 0x1p300))
+        return 0;
     for (int k = 0; k < c->perms; k++) {
         const isect_shear *sh = c->perm[k];
-        real a[3], b[3], z[3], r = 0, m = 0, x[2][3], y[2][3], lo[3], hi[3];
+        real a[3], b[3], z[3], m = 0, x[2][3], y[2][3], lo[3], hi[3];
         for (int i = 0; i < 3; i++) {
-            a[i] = g[3 * i + sh[0].kx] - oa[sh[0].kx];
-            b[i] = g[3 * i + sh[0].ky] - oa[sh[0].ky];
-            z[i] = g[3 * i + sh[0].kz] - oa[sh[0].kz];
+            a[i] = diff[i][sh[0].kx];
+            b[i] = diff[i][sh[0].ky];
+            z[i] = diff[i][sh[0].kz];
             m = fabs(z[i]) > m ? fabs(z[i]) : m;
-            r = fabs(a[i]) > r ? fabs(a[i]) : r;
-            r = fabs(b[i]) > r ? fabs(b[i]) : r;
         }
-        r = m > r ? m : r;
-        if (!(r < 0x1p300))
-            return 0;
         corner_boxes(sh, o, g, x, y);
         for (int i = 0; i < 3; i++)
             edge_bounds(x, y, i, &lo[i], &hi[i]);
