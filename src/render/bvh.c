@@ -125,8 +125,8 @@ typedef struct nearest {
      * part), by the scene_prim's test on the ray as it was then (tmax
      * included), which gives the same bits; an item i >= 0 (a sphere's:
      * t, point, prim and part, its normal the costly rest), by
-     * isect_hot_complete with item i's record.  The tie rule reads t,
-     * prim and part alone. */
+     * isect_hot_complete of its t and point with item i's record.
+     * The tie rule reads t, prim and part alone. */
     int rest[TIE_MAX];
     real cand_tmax[TIE_MAX];
     int count;
@@ -264,7 +264,7 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
     assert(met >= 0);
     if (met > 0) {
         h.prim = b->items[i].prim;
-        nearest_add(ns, &h, i);
+        nearest_add(ns, &h, ISECT_HOT_KIND(hr.code) == ISECT_HOT_SPHERE ? i : REST_NONE);
     }
 }
 
@@ -355,12 +355,13 @@ static void winner_hit(const bvh *b, const scene_prim *prims, nearest *ns, int w
         int met = isect_part_sheared(&prims[c->prim], c->part, &at, shear_for(&ns->sh, &prims[c->prim]), h);
         assert(met && h->t == c->t);
         (void)met;
+    } else if (ns->rest[w] >= 0) {
+        bvh_hot hr = b->hot[ns->rest[w]];
+        h->t = c->t;
+        h->point = c->point;
+        isect_hot_complete(hr.code, b->hot_reals + hr.at, r->dir, h);
     } else {
         hit_copy(h, c);
-        if (ns->rest[w] >= 0) {
-            bvh_hot hr = b->hot[ns->rest[w]];
-            isect_hot_complete(hr.code, b->hot_reals + hr.at, r->dir, h);
-        }
     }
     h->prim = c->prim;
 }
