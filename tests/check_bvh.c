@@ -622,6 +622,46 @@ START_TEST(test_bvh_tie_window_end_order_free)
 }
 END_TEST
 
+START_TEST(test_bvh_moved_candidate_keeps_its_normal)
+{
+    /* [BVH-TIE-ORDER-1] with spheres, whose normal the walk makes only for
+     * the winner (bvh.c, nearest.rest): three unit spheres on the x axis,
+     * met from (0, 0.6, 0) along x at t about 3.2, where the window is
+     * 2^-46 (3.2 + 0.6), 122 ulps of t (off the axis, so that the normal
+     * tells the centres apart).  X's centre lies 43 ulps of 4 (86 of t)
+     * beyond Y's, Z's 24 (48 of t) before: tested X, Y, Z (a leaf of
+     * three, in index order), X is dropped when Z comes, Y is kept and
+     * moves down, and the lower index of Y and Z wins.  Every order of
+     * indices, each against brute force (isect_prim of each sphere): the
+     * winner's normal must be made from its own centre. */
+    static const int shift[3] = {43, 0, -24}; /* X, Y, Z in units of 2^-50 */
+    static const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (int k = 0; k < 12; k++) {
+        /* k >= 6: the mirror image (x -> -x), so that the walk tests X
+         * first whichever way a leaf orders them. */
+        real side = k < 6 ? 1.0 : -1.0;
+        scene_prim prims[3];
+        for (int i = 0; i < 3; i++)
+            prims[order[k % 6][i]] = prim_sphere(vec_make(side * (4.0 + shift[i] * 0x1p-50), 0, 0), 1.0);
+        bvh b;
+        ck_assert(bvh_build(&b, prims, 3, NULL));
+        ray r = {{0, 0.6, 0}, {side, 0, 0}, 0.0, HUGE_VAL}, rb = r;
+        hit h, hb;
+        ck_assert(brute_nearest(prims, 3, &rb, &hb));
+        /* X lies past Z's window, so Y or Z wins, by index. */
+        ck_assert_int_eq(hb.prim, order[k % 6][1] < order[k % 6][2] ? order[k % 6][1] : order[k % 6][2]);
+        ck_assert(bvh_intersect(&b, prims, &r, &h));
+        ck_assert_int_eq(h.prim, hb.prim);
+        ck_assert(h.t == hb.t && same_vec_bits(h.point, hb.point));
+        ck_assert_msg(same_vec_bits(h.normal, hb.normal) && same_vec_bits(h.shading_normal, hb.shading_normal),
+                      "order %d: normal (%a, %a, %a), brute force (%a, %a, %a)", k, h.normal.x, h.normal.y,
+                      h.normal.z, hb.normal.x, hb.normal.y, hb.normal.z);
+        ck_assert_int_eq(h.entering, hb.entering);
+        bvh_free(&b);
+    }
+}
+END_TEST
+
 START_TEST(test_bvh_two_parts_split_by_hand)
 {
     /* The SAH of a node of two parts, worked by hand ([BVH-BUILD-PAIR-1]):
@@ -1128,6 +1168,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_one_prim_and_planes_only);
     tcase_add_test(tc, test_bvh_identical_prims_tie_to_lowest_index);
     tcase_add_test(tc, test_bvh_tie_window_end_order_free);
+    tcase_add_test(tc, test_bvh_moved_candidate_keeps_its_normal);
     tcase_add_test(tc, test_bvh_two_parts_split_by_hand);
     tcase_add_test(tc, test_bvh_deterministic_and_well_formed);
     tcase_add_test(tc, test_bvh_boxes_exact_past_one_axis);

@@ -75,6 +75,9 @@ static inline int node_hit_any(const bvh_node *nd, const slab_ray *s, real tmin,
  */
 #define TIE_REL 0x1p-46
 enum { TIE_MAX = 8 };
+/* nearest.rest: a candidate made whole, or made again (an item >= 0
+ * otherwise). */
+enum { REST_NONE = -1, REST_RETEST = -2 };
 
 /* The ray's triangle shear, made at the first triangle test: most rays of
  * a scene with a few triangles test none (room.scene's two-triangle mirror:
@@ -117,10 +120,14 @@ static const isect_shear *shear_for(lazy_shear *z, const scene_prim *p)
 typedef struct nearest {
     ray rr;
     hit cand[TIE_MAX];  /* the hits within the window of t_near */
-    /* A candidate found by its hot record has only t, prim and part: its
-     * full hit is made once it has won, by the scene_prim's test on the
-     * ray as it was then (tmax included), which gives the same bits. */
-    int deferred[TIE_MAX];
+    /* How a candidate's full hit is made once it has won: REST_NONE, it
+     * is whole; REST_RETEST (a triangle's or plane's: only t, prim and
+     * part), by the scene_prim's test on the ray as it was then (tmax
+     * included), which gives the same bits; an item i >= 0 (a sphere's:
+     * t, point, prim and part, its normal the costly rest), by
+     * isect_hot_complete of its t and point with item i's record.
+     * The tie rule reads t, prim and part alone. */
+    int rest[TIE_MAX];
     real cand_tmax[TIE_MAX];
     int count;
     int overflow;       /* more than TIE_MAX candidates at once */
@@ -165,13 +172,13 @@ static int hit_order(const hit *a, const hit *b)
 
 /* Adds h to the candidates and drops those now beyond the window.  In the
  * second pass only the lowest index counts. */
-static void nearest_add(nearest *ns, const hit *h, int deferred)
+static void nearest_add(nearest *ns, const hit *h, int rest)
 {
     real tmax = ns->rr.tmax;
     if (ns->fixed) {
         if (ns->count == 0 || hit_order(h, &ns->cand[0]) < 0) {
             ns->cand[0] = *h;
-            ns->deferred[0] = deferred;
+            ns->rest[0] = rest;
             ns->cand_tmax[0] = tmax;
         }
         ns->count = 1;
@@ -186,7 +193,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
         if (ns->cand[i].t <= limit) {
             /* Kept in place (most often) is not copied onto itself. */
             if (kept != i) {
-                ns->deferred[kept] = ns->deferred[i];
+                ns->rest[kept] = ns->rest[i];
                 ns->cand_tmax[kept] = ns->cand_tmax[i];
                 hit_copy(&ns->cand[kept], &ns->cand[i]);
             }
@@ -194,7 +201,7 @@ static void nearest_add(nearest *ns, const hit *h, int deferred)
         }
     if (h->t <= limit) {
         if (kept < TIE_MAX) {
-            ns->deferred[kept] = deferred;
+            ns->rest[kept] = rest;
             ns->cand_tmax[kept] = tmax;
             hit_copy(&ns->cand[kept++], h);
         } else
@@ -221,13 +228,13 @@ static void nearest_test(nearest *ns, const scene_prim *prims, bvh_ref ref)
             return;
         d.prim = ref.prim;
         d.part = ref.part;
-        nearest_add(ns, &d, 1);
+        nearest_add(ns, &d, REST_RETEST);
         return;
     }
     if (!isect_part_sheared(p, ref.part, &ns->rr, shear_for(&ns->sh, p), &h))
         return;
     h.prim = ref.prim;
-    nearest_add(ns, &h, 0);
+    nearest_add(ns, &h, REST_NONE);
 }
 
 /* Item i of the tree, not a triangle's record: by its hot record when it
@@ -241,20 +248,23 @@ static void nearest_test_item(nearest *ns, const bvh *b, const scene_prim *prims
     }
     if (ns->stats)
         ns->stats->prims_tested++;
-    hit h; /* a hit fills every field (isect_hit_set), a miss is not read */
-    /* A sphere or box makes its full hit at once, as isect_part (a winner
-     * made again would cost a second test); a triangle's record does not
-     * come here (visit_hits' runs: its hit is deferred). */
+    hit h; /* a candidate (isect_hot_candidate), a miss is not read */
+    /* A box makes its full hit at once, as isect_part (a winner made
+     * again would cost a second test), a sphere all of it but the normal,
+     * made once it has won from the point kept (a nearer hit found later
+     * makes it needless: for 30 % of nested_glass's sphere hits); a
+     * triangle's record does not come here (visit_hits' runs: its hit is
+     * deferred). */
     /* The walk's own ray, not a copy (8 reals a test): the test shrinks
      * only its tmax, to the hit's t, and nearest_add reads the tmax it
      * had (the deferred candidates' cand_tmax), put back first. */
     real tmax = ns->rr.tmax;
-    int met = isect_hot_hit(hr.code, b->hot_reals + hr.at, &ns->rr, &h);
+    int met = isect_hot_candidate(hr.code, b->hot_reals + hr.at, &ns->rr, &h);
     ns->rr.tmax = tmax;
     assert(met >= 0);
     if (met > 0) {
         h.prim = b->items[i].prim;
-        nearest_add(ns, &h, 0);
+        nearest_add(ns, &h, ISECT_HOT_KIND(hr.code) == ISECT_HOT_SPHERE ? i : REST_NONE);
     }
 }
 
@@ -312,7 +322,7 @@ static int nearest_run_hit(void *ctx, int item, real t)
     h.t = t;
     h.prim = l->b->items[item].prim;
     h.part = l->b->items[item].part;
-    nearest_add(l->ns, &h, 1);
+    nearest_add(l->ns, &h, REST_RETEST);
     return 0;
 }
 
@@ -331,6 +341,29 @@ static int nearest_winner(const nearest *ns)
         if (hit_order(&ns->cand[i], &ns->cand[best]) < 0)
             best = i;
     return best;
+}
+
+/* Candidate w made whole in *h (see nearest.rest); r: the caller's ray,
+ * whose direction the walk's copy has. */
+static void winner_hit(const bvh *b, const scene_prim *prims, nearest *ns, int w, const ray *r, hit *h)
+{
+    const hit *c = &ns->cand[w];
+    if (ns->rest[w] == REST_RETEST) {
+        ray at;
+        ray_copy(&at, r);
+        at.tmax = ns->cand_tmax[w];
+        int met = isect_part_sheared(&prims[c->prim], c->part, &at, shear_for(&ns->sh, &prims[c->prim]), h);
+        assert(met && h->t == c->t);
+        (void)met;
+    } else if (ns->rest[w] >= 0) {
+        bvh_hot hr = b->hot[ns->rest[w]];
+        h->t = c->t;
+        h->point = c->point;
+        isect_hot_complete(hr.code, b->hot_reals + hr.at, r->dir, h);
+    } else {
+        hit_copy(h, c);
+    }
+    h->prim = c->prim;
 }
 
 /* r's shear, not made yet (r must outlast it). */
@@ -511,19 +544,7 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
         *tied = ns.overflow ? TIE_MAX + 1 : ns.count;
     if (ns.count == 0)
         return 0;
-    int w = nearest_winner(&ns);
-    if (ns.deferred[w]) {
-        ray at;
-        ray_copy(&at, r);
-        at.tmax = ns.cand_tmax[w];
-        int met = isect_part_sheared(&prims[ns.cand[w].prim], ns.cand[w].part, &at,
-                                     shear_for(&ns.sh, &prims[ns.cand[w].prim]), h);
-        assert(met && h->t == ns.cand[w].t);
-        (void)met;
-        h->prim = ns.cand[w].prim;
-    } else {
-        hit_copy(h, &ns.cand[w]);
-    }
+    winner_hit(b, prims, &ns, nearest_winner(&ns), r, h);
     r->tmax = h->t;
     return 1;
 }

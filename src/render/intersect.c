@@ -115,11 +115,32 @@ static int sphere_root_clear(vec3 center, real radius, const ray *r, real t)
     return (t - r->tmin) * dm > m && (r->tmax - t) * dm > m;
 }
 
+/* A sphere's full hit at t, point p: the one place its normal is made, so
+ * a hit completed later (isect_hot_complete) has the bits of one made at
+ * once. */
+static inline void sphere_normal_set(hit *h, real t, vec3 p, vec3 center, vec3 dir)
+{
+    isect_hit_set(h, t, p, vec_normalize(vec_sub(p, center)), dir);
+}
+
+/* What a nearest walk's candidate keeps of a sphere's hit until it has
+ * won: its t, read by the walk, and its point, which the normal is made
+ * from (sphere_refine's or ray_at's, not to be made again); part 0, read
+ * by the tie rule. */
+static inline void sphere_point_set(hit *h, real t, vec3 p)
+{
+    h->t = t;
+    h->point = p;
+    h->part = 0;
+}
+
 /* bare: only each hit's t (and a mesh triangle's part) is written: a
  * shadow ray needs no more; the same for every shape below.  For the
  * sphere, bare 2 is a count (isect_part_crossings, isect_hot_crossings):
  * nothing is written, and a root clear of the interval's ends is counted
- * unrefined (sphere_root_clear). */
+ * unrefined (sphere_root_clear); bare 3 writes t, the point and part 0,
+ * not the normal (isect_hot_candidate: sphere_normal_set makes the rest
+ * from that point once the hit has won). */
 ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max,
                                       int bare)
 {
@@ -148,10 +169,12 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
             continue;
         if (bare == 2)
             found++;
+        else if (bare == 3)
+            sphere_point_set(&out[found++], ti, p);
         else if (bare)
             out[found++].t = ti;
         else
-            isect_hit_set(&out[found++], ti, p, vec_normalize(vec_sub(p, center)), r->dir);
+            sphere_normal_set(&out[found++], ti, p, center, r->dir);
     }
     return found;
 }
@@ -1224,7 +1247,8 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
 }
 
 /* Two copies, each with its max and bare constant: the nearest walk's
- * full hit and the crossings' bare ones (a shadow ray's count), so that
+ * candidate (t and point: its normal waits for the win) and the
+ * crossings' bare ones (a shadow ray's count), so that
  * neither carries the other's branches, nor a bare hit the point it does
  * not write (one copy with both passed at run time: nested_glass at
  * 120x80 1.8 % and demo 1.1 % more instructions in all).  With max
@@ -1234,7 +1258,7 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
  * frame of the shadow walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
 {
-    return hot_sphere(g, r, out, 1, 0);
+    return hot_sphere(g, r, out, 1, 3);
 }
 
 ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const ray *r, hit *out, int max)
@@ -1425,13 +1449,27 @@ int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *
     ensures found == 0 ==> r->tmax == \old(r->tmax); */
 static int nearest(int found, ray *r, const hit *h);
 
-int isect_hot_hit(int code, const real *g, ray *r, hit *h)
+int isect_hot_candidate(int code, const real *g, ray *r, hit *h)
 {
     if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
         return nearest(hot_sphere_nearest(g, r, h), r, h);
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
         return nearest(box_hits(vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), r, h, 1, 0), r, h);
     return -1;
+}
+
+void isect_hot_complete(int code, const real *g, vec3 dir, hit *h)
+{
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE)
+        sphere_normal_set(h, h->t, h->point, vec_make(g[0], g[1], g[2]), dir);
+}
+
+int isect_hot_hit(int code, const real *g, ray *r, hit *h)
+{
+    int met = isect_hot_candidate(code, g, r, h);
+    if (met > 0)
+        isect_hot_complete(code, g, r->dir, h);
+    return met;
 }
 
 static int nearest(int found, ray *r, const hit *h)

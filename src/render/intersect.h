@@ -183,6 +183,14 @@ int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *
  * shrunk); returns -1 for a triangle's, which needs the scene_prim (its
  * vertex normals) for a full hit. */
 int isect_hot_hit(int code, const real *g, ray *r, hit *h);
+/* isect_hot_hit in two halves, for the nearest walk, where a candidate
+ * may lose to a nearer one: the candidate has the t, point, part and tmax of
+ * isect_hot_hit (a box's hit is whole), a sphere's normal, shading normal,
+ * entering, prim and weights not yet written; isect_hot_complete(code, g,
+ * r->dir, h) on it then gives isect_hot_hit's hit, the same bits (prim -1),
+ * reading only h's t and point (a sphere's; a box's hit it leaves as it is). */
+int isect_hot_candidate(int code, const real *g, ray *r, hit *h);
+void isect_hot_complete(int code, const real *g, vec3 dir, hit *h);
 
 /* Where a record is kept (the BVH's items, bvh.h): its code, and where its
  * reals start in an array of them. */
