@@ -79,6 +79,9 @@ typedef struct light_setup {
      * where reach >= 0): the rectangle's own, or the disk's
      * ([SHADE-SHORTCUT-BUNDLE-1] aims the bundles at it). */
     vec3 box_lo, box_hi;
+    /* A distant light: |L| = vec_length(-direction), the length its shadow
+     * rays' tmin divides by (ray_shadow_along's shadow_tmin), made once. */
+    real along_length;
 } light_setup;
 
 /* The transparent solids a ray is inside, innermost last (nested glass).
