@@ -170,6 +170,10 @@ void tracer_free(tracer *t);
  * render that gives it `samples` sources: tracer_init's per-light data. */
 light_setup trace_light_setup(const scene_light *light, int samples);
 
+/* ray_shadow_along(from, l), the same bits, with length = vec_length(l)
+ * given (a distant light's: light_setup.along_length). */
+ray trace_shadow_along(const shadow_start *from, vec3 l, real length);
+
 /* Where sample j of the light at index `index` of the scene's lights sits
  * for a hit of a ray with key `key`: the point the tracer shades with, bit
  * for bit. */
