@@ -510,6 +510,41 @@ START_TEST(test_medium_remove_keeps_the_order)
 }
 END_TEST
 
+/* add_source's shadow ray toward a distant light, trace_shadow_along with
+ * the light's setup (along_length made once), is the proved
+ * ray_shadow_along's to the bit: random points from 2^-20 to 2^20, unit
+ * normals, magnitudes and directions.  tmin is offset / |L|, so the count
+ * of rays whose tmin is not the offset itself shows the division ran. */
+START_TEST(test_trace_shadow_along_is_ray_shadow_along)
+{
+    int divided = 0;
+    for (uint64_t i = 0; i < 4000; i++) {
+        real u[10];
+        for (int k = 0; k < 10; k++)
+            u[k] = (real)(test_mix(10 * i + (uint64_t)k) >> 11) * 0x1p-52 - 1;   /* [-1, 1) */
+        vec3 dir = vec_make(u[0], u[1], u[2]), n = vec_make(u[6], u[7], u[8]);
+        if (vec_length2(dir) < 0.01 || vec_length2(n) < 0.01)
+            continue;
+        scene_light light;
+        memset(&light, 0, sizeof light);
+        light.kind = LIGHT_DISTANT;
+        light.direction = vec_normalize(dir);
+        hit h;
+        memset(&h, 0, sizeof h);
+        h.point = vec_scale(vec_make(u[3], u[4], u[5]), ldexp(1, (int)(i % 41) - 20));
+        h.normal = vec_normalize(n);
+        shadow_start st = ray_shadow_start_sized(&h, fabs(u[9]) * 100);
+        vec3 l = vec_neg(light.direction);
+        light_setup setup = trace_light_setup(&light, 1);
+        ray a = trace_shadow_along(&st, l, setup.along_length), b = ray_shadow_along(&st, l);
+        ck_assert(same_vec_bits(a.origin, b.origin) && same_vec_bits(a.dir, b.dir));
+        ck_assert(same_real_bits(a.tmin, b.tmin) && same_real_bits(a.tmax, b.tmax));
+        divided += a.tmin != st.offset;
+    }
+    ck_assert_int_gt(divided, 100);
+}
+END_TEST
+
 Suite *suite_trace(void)
 {
     Suite *s = suite_create("trace");
@@ -531,6 +566,7 @@ Suite *suite_trace(void)
     tcase_add_test(rays, test_trace_ior_one_glass_passes_rays_straight);
     tcase_add_test(rays, test_trace_glass_sphere_on_axis_is_not_bent);
     tcase_add_test(rays, test_medium_remove_keeps_the_order);
+    tcase_add_test(rays, test_trace_shadow_along_is_ray_shadow_along);
     suite_add_tcase(s, rays);
     TCase *whole = tcase_create("whole renders");
     tcase_add_test(whole, test_trace_renders_are_bit_identical);
