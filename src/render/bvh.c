@@ -10,6 +10,7 @@
 #include <float.h>
 #include <string.h>
 #include <assert.h>
+#include "base/inline_hint.h"
 #include "render/bvh.h"
 #include "render/ray_copy.h"
 #include "render/slab.h"
@@ -30,7 +31,7 @@ void bvh_free(bvh *b)
 
 /* Whether the ray meets the node's box within [tmin, tmax]; *enter is the
  * entry distance.  oct is slab_octant(s), a constant in each copy of a
- * walk (BVH_OCTANT_COPY below). */
+ * walk (HINT_IN_LINE below). */
 static inline int node_hit(const bvh_node *nd, const slab_ray *s, int oct, real tmin, real tmax, real *enter)
 {
     return slab_box_meets_neg(nd->lo, nd->hi, s, oct & 1, (oct >> 1) & 1, (oct >> 2) & 1, tmin, tmax, enter);
@@ -51,11 +52,6 @@ static inline int node_hit_any(const bvh_node *nd, const slab_ray *s, real tmin,
  * again per node) fold away.  The arithmetic is slab_box_meets' own, the
  * same bits.  Only an inlining demand; Frama-C need not know it.
  */
-#if defined(__GNUC__) && !defined(__FRAMAC__)
-#define BVH_OCTANT_COPY __attribute__((always_inline))
-#else
-#define BVH_OCTANT_COPY
-#endif
 
 /*
  * The running nearest hit, with coplanar ties.  Two surfaces in one plane
@@ -93,10 +89,7 @@ typedef struct lazy_shear {
  * was inlined too (at each triangle test of the walks), its divisions and
  * registers grew the walk's loop for every item (traverse_from of mesh at
  * 40x30: 518 M -> 575 M instructions, tenth round). */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static void shear_make_now(lazy_shear *z)
+HINT_OUT_OF_LINE static void shear_make_now(lazy_shear *z)
 {
     isect_shear_make(z->r, &z->sh);
     z->made = 1;
@@ -396,7 +389,7 @@ typedef struct walk_ray {
 /* Whether the ray meets node a (bit 0) and a + 1 (bit 1), their entries in
  * *ta and *tc: node_hit of each.  oct as node_hit's, a constant in each
  * copy of the walk: the pair test's offsets fold. */
-static inline BVH_OCTANT_COPY int children_hit(const bvh_node *a, const walk_ray *w, int oct, real tmin, real tmax,
+static inline HINT_IN_LINE int children_hit(const bvh_node *a, const walk_ray *w, int oct, real tmin, real tmax,
                                                real *ta, real *tc)
 {
 #ifdef SLAB_PAIR_SSE2
@@ -436,7 +429,7 @@ static inline int root_decides_nothing(const bvh *b)
  * but whether c is pushed too is a count (the far child written always):
  * the "both met" branch was grid1k's most mispredicted (spec/performance.md,
  * "Nineteenth round: walks' branches"). */
-static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray *s, int oct, nearest *ns,
+static inline HINT_IN_LINE int descend(const bvh *b, int node, const walk_ray *s, int oct, nearest *ns,
                                            stack_entry *stack, int *sp, int all)
 {
     int a = b->nodes[node].first, c = a + 1;
@@ -459,7 +452,7 @@ static inline BVH_OCTANT_COPY int descend(const bvh *b, int node, const walk_ray
     return met ? c : -1;
 }
 
-static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scene_prim *prims, nearest *ns,
+static inline HINT_IN_LINE void traverse_nearest_oct(const bvh *b, const scene_prim *prims, nearest *ns,
                                                         const slab_ray *sr, int oct)
 {
     stack_entry stack[BVH_MAX_DEPTH];
@@ -498,7 +491,7 @@ static inline BVH_OCTANT_COPY void traverse_nearest_oct(const bvh *b, const scen
     }
 }
 
-/* One copy of the walk per octant (BVH_OCTANT_COPY). */
+/* One copy of the walk per octant (HINT_IN_LINE). */
 static void traverse_nearest(const bvh *b, const scene_prim *prims, nearest *ns)
 {
     slab_ray s = slab_make(&ns->rr);
@@ -634,10 +627,7 @@ static int walk_other(void *ctx, int item)
 /* The pair test for traverse_from, out of line: inlined, it grew the
  * walk's loop, which a bundle's walk (many starts, few inner nodes) runs
  * through far more often than it descends (demo.scene +1.4 %). */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int children_meet_any(const bvh_node *a, const slab_ray *s, real tmin, real tmax)
+HINT_OUT_OF_LINE static int children_meet_any(const bvh_node *a, const slab_ray *s, real tmin, real tmax)
 {
     real ta, tc;
     return slab_pair_meets_slab(a, s, tmin, tmax, &ta, &tc);

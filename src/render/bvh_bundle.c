@@ -56,17 +56,13 @@
  * glass point's shadow rays leave.
  */
 #include <assert.h>
+#include "base/inline_hint.h"
 #include "render/bvh.h"
 
 /* The triangles' tests, made at a bundle's making only, kept out of line:
  * inlined, they grew the shadow rays' own code (add_source, into which the
  * link-time optimiser inlines bvh_bundle_make), demo.scene +0.8 %
  * instructions without a triangle. */
-#if defined(__GNUC__) && !defined(__FRAMAC__)
-#define BUNDLE_OUTLINE __attribute__((noinline))
-#else
-#define BUNDLE_OUTLINE
-#endif
 
 /* Each bound of s a node's box gives on one axis: the plane's offset from
  * the apex times the reciprocal of its slope, and whether it bounds s from
@@ -165,7 +161,7 @@ static inline int boxes_apart(real x[2][3], real y[2][3], real p, real q)
  * and triangle_solve, whose edge functions have the exact signs of those
  * corners' (intersect.c, triangle_apart, where the line is x = 0 or
  * y = 0), answers no crossing. */
-BUNDLE_OUTLINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
+HINT_OUT_OF_LINE static int triangle_passed_by(const bundle_cone *c, vec3 o, const real *g)
 {
     for (int p = 0; p < c->perms; p++) {
         real x[2][3], y[2][3];
@@ -220,7 +216,7 @@ static void edge_bounds(real x[2][3], real y[2][3], int i, real *lo, real *hi)
  * the greatest |det| and the two error terms doubled (they cover the
  * rounding of this sum).  R < 2^300: no product overflows.
  */
-BUNDLE_OUTLINE static int triangle_left_behind(const bundle_cone *c, vec3 o, const real *g)
+HINT_OUT_OF_LINE static int triangle_left_behind(const bundle_cone *c, vec3 o, const real *g)
 {
     const real oa[3] = {o.x, o.y, o.z};
     /* The corners' differences from O on every axis, and R, are the same
@@ -293,7 +289,7 @@ static void ratio_bounds(real p0, real p1, real q0, real q1, real *least, real *
  * (shear_ratio: the magnitudes' quotient, signed), which is D_kx / D_kz
  * within a relative 4 eps, plus 2^-1074 where dir_kx is subnormal;
  * ratio_bounds' margin covers both, as |sx| <= 1.  sy likewise. */
-BUNDLE_OUTLINE static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
+HINT_OUT_OF_LINE static void shear_bounds(const bvh_bundle_rays *rays, bundle_cone *c)
 {
     const real o[3] = {rays->origin.x, rays->origin.y, rays->origin.z};
     const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};

@@ -4,17 +4,10 @@
  * argument is in spec/shading.md).
  */
 #include <math.h>
+#include "base/inline_hint.h"
 #include "render/gather_alone.h"
 #include "render/glass_near.h"
 #include "render/intersect.h"
-
-/* off_plane in line at the hit's test: out of line its four vectors were
- * copied onto the stack a call (an inlining hint only, the same operations). */
-#if defined(__GNUC__)
-#define GATHER_IN_LINE __attribute__((always_inline))
-#else
-#define GATHER_IN_LINE
-#endif
 
 /* GATHER_BUILD_WORK bounds the build's box constructions, transparent
  * primitives times all primitives: without it 64 glass balls among 300 000
@@ -31,7 +24,7 @@ static int padded_box(const scene_prim *p, vec3 *lo, vec3 *hi, real *size)
 /* Whether every point of the box [lo, hi] (size its magnitude) is farther
  * than 2 reach from the plane n . (x - p0) = 0, with room for the plane's
  * hit points, projected onto it to the rounding of their coordinates. */
-GATHER_IN_LINE static inline int off_plane(vec3 n, vec3 p0, vec3 lo, vec3 hi, real size, real reach)
+HINT_IN_LINE static inline int off_plane(vec3 n, vec3 p0, vec3 lo, vec3 hi, real size, real reach)
 {
     vec3 c = vec_scale(vec_add(lo, hi), 0.5), e = vec_scale(vec_sub(hi, lo), 0.5);
     real n1 = vec_sum_abs(n);

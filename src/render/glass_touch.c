@@ -50,7 +50,7 @@ void glass_start_gather(const tracer *t, const hit *h, real offset, const ray *r
     bvh_visit_stats(&t->accel, t->scene->prims, &line, start_crossing, z, &st->bvh);
 }
 
-TRACE_OUTLINE void glass_first_of_tie(const tracer *t, const ray *r, hit *h, const medium_stack *media,
+HINT_OUT_OF_LINE void glass_first_of_tie(const tracer *t, const ray *r, hit *h, const medium_stack *media,
                                       trace_stats *st)
 {
     const scene_model *sc = t->scene;

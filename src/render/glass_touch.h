@@ -66,7 +66,7 @@ int glass_contact_meets(const glass_contact *c, vec3 dir);
  * floor meets the block's bottom face before the floor whichever of the
  * two the file declares first.  Where the tied surfaces are not both opaque
  * and transparent, h stays ([NUM-COPLANAR-1], [NUM-GLASS-1]).  Out of line
- * (TRACE_OUTLINE): the interface is not needed once the winner is known
+ * (HINT_OUT_OF_LINE): the interface is not needed once the winner is known
  * ([REL-STACK-1]).
  */
 void glass_first_of_tie(const tracer *t, const ray *r, hit *h, const medium_stack *media, trace_stats *st);

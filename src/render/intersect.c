@@ -9,30 +9,20 @@
  * Nothing here allocates or keeps state.
  */
 #include <float.h>
+#include "base/inline_hint.h"
 #include "render/intersect.h"
 #include "render/intersect_shapes.h"
 #include "render/isect_common.h"
 #include "render/slab.h"
 #include "base/xform.h"
 
-/* Inlines every call a function makes, recursively, where the body is
- * visible (with LTO, across files).  For sphere_hits (spec/performance.md,
+/* HINT_FLATTEN (base/inline_hint.h) inlines every call a function makes,
+ * recursively, where the body is visible (with LTO, across files).  For sphere_hits (spec/performance.md,
  * "Sixth round: the build"): left to itself, gcc's LTO keeps
  * isect_sphere_roots a call, and the f it passes by value (24 bytes, on the
  * stack) is stored as three doubles and read back as a 16-byte load, which
  * the store cannot forward.  box_hits, plane_t and plane_point take it too
- * (spec/performance.md, eighth round).  Only an inlining hint: the code
- * computed is the same (-ffp-contract=off), so no bit changes.  gcc and
- * clang (which defines __GNUC__) know the attribute; Frama-C need not see it. */
-#if defined(__GNUC__) && !defined(__FRAMAC__)
-#define ISECT_FLATTEN __attribute__((flatten))
-#define ISECT_OUT_OF_LINE __attribute__((noinline))
-#define ISECT_IN_LINE __attribute__((always_inline))
-#else
-#define ISECT_FLATTEN
-#define ISECT_OUT_OF_LINE
-#define ISECT_IN_LINE
-#endif
+ * (spec/performance.md, eighth round). */
 
 /*@ requires \valid_read(r);
     assigns \nothing;
@@ -141,7 +131,7 @@ static inline void sphere_point_set(hit *h, real t, vec3 p)
  * unrefined (sphere_root_clear); bare 3 writes t, the point and part 0,
  * not the normal (isect_hot_candidate: sphere_normal_set makes the rest
  * from that point once the hit has won). */
-ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max,
+HINT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit *out, int max,
                                       int bare)
 {
     vec3 f = vec_sub(r->origin, center);
@@ -217,7 +207,7 @@ ISECT_FLATTEN static int sphere_hits(vec3 center, real radius, const ray *r, hit
                   n.y * (r->origin.y + *t * r->dir.y - p0.y) + n.z * (r->origin.z + *t * r->dir.z - p0.z) == 0);
     // no hit: parallel, t outside (tmin, tmax), or t past 2^1020, held there (isect_quotient)
     ensures EXACT(\result == 0 ==> vdot(n, r->dir) == 0 || !(r->tmin < *t < r->tmax) || \abs(*t) == 0x1p1020); */
-ISECT_FLATTEN static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
+HINT_FLATTEN static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
 {
     real dn = vec_dot(n, r->dir);
     if (dn == 0.0)
@@ -249,7 +239,7 @@ ISECT_FLATTEN static int plane_t(vec3 p0, vec3 n, const ray *r, real *t)
     requires vunit(n);
     assigns *t, *p;
     ensures \result != 0 ==> r->tmin < *t < r->tmax; */
-ISECT_FLATTEN static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
+HINT_FLATTEN static int plane_point(vec3 p0, vec3 n, const ray *r, real *t, vec3 *p)
 {
     if (!plane_t(p0, n, r, t))
         return 0;
@@ -370,7 +360,7 @@ static void box_face_hit(vec3 lo, vec3 hi, const ray *r, real t, int k, int exit
     isect_hit_set(h, t, p, n, r->dir);
 }
 
-ISECT_FLATTEN static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
+HINT_FLATTEN static int box_hits(vec3 lo, vec3 hi, const ray *r, hit *out, int max, int bare)
 {
     real tt[2];
     int axis[2], found = 0;
@@ -516,7 +506,7 @@ static void shear_set(isect_shear *sh, int kz, real dz, real az, real d1, real a
     // (triangle_solve's Eva driver takes that box)
     ensures EXACT(sh->sx * sh->dz == vcomp(r->dir, sh->kx) && sh->sy * sh->dz == vcomp(r->dir, sh->ky));
     ensures EXACT(-1 <= sh->sx <= 1 && -1 <= sh->sy <= 1); */
-ISECT_FLATTEN void isect_shear_make(const ray *r, isect_shear *sh)
+HINT_FLATTEN void isect_shear_make(const ray *r, isect_shear *sh)
 {
     vec3 d = r->dir;
     real x = fabs(d.x), y = fabs(d.y), z = fabs(d.z);
@@ -1126,7 +1116,7 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
  * tmin >= 0; dn == 0 (either sign of zero: num < 0 then) is plane_t's first
  * miss.  Shadow rays from a floor toward a light above it (mesh.scene:
  * each one's floor test) are such rays. */
-ISECT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
+HINT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;
     real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
@@ -1143,7 +1133,7 @@ int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
 /* A world-frame sphere's count (sphere_hits, bare 2), out of line:
  * inlined, its copy of sphere_hits grew the shadow walk that calls
  * isect_part_crossings_sheared (mesh.scene, without a sphere, +0.08 %). */
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int sphere_count(const scene_prim *p, const ray *r)
+HINT_FLATTEN HINT_OUT_OF_LINE static int sphere_count(const scene_prim *p, const ray *r)
 {
     hit out[ISECT_MAX_CROSSINGS];
     return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, ISECT_MAX_CROSSINGS, 2);
@@ -1222,7 +1212,7 @@ int isect_hot_reals(const scene_prim *p)
  * out, 1).  Kept out of hot_hits: inlined there, its registers and frame
  * were saved and made for every sphere and box test as well (room.scene
  * +1.8 % instructions). */
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_triangle(const real *g, int inclusive, const ray *r, const isect_shear *sh, hit *out)
+HINT_FLATTEN HINT_OUT_OF_LINE static int hot_triangle(const real *g, int inclusive, const ray *r, const isect_shear *sh, hit *out)
 {
     vec3 v[3] = {vec_make(g[0], g[1], g[2]), vec_make(g[3], g[4], g[5]), vec_make(g[6], g[7], g[8])};
     tri_bary s;
@@ -1256,12 +1246,12 @@ static inline int hot_sphere(const real *g, const ray *r, hit *out, int max, int
  * hot_sphere_bare is a count and writes no t (sphere_hits' bare 2);
  * hot_hits' max 1 writes it.  A third copy for the count changed the
  * frame of the shadow walk it is inlined into (mesh.scene, without a sphere, +0.08 %). */
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
+HINT_FLATTEN HINT_OUT_OF_LINE static int hot_sphere_nearest(const real *g, const ray *r, hit *out)
 {
     return hot_sphere(g, r, out, 1, 3);
 }
 
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const ray *r, hit *out, int max)
+HINT_FLATTEN HINT_OUT_OF_LINE static int hot_sphere_bare(const real *g, const ray *r, hit *out, int max)
 {
     return hot_sphere(g, r, out, max, max == ISECT_MAX_CROSSINGS ? 2 : 1);
 }
@@ -1323,7 +1313,7 @@ static inline int triangle_run(const bvh_hot *hot, int n, const real *reals, con
 
 /* Out of line for hot_triangle's reason; called once per run, not per
  * record.  The cases are triangle_solve's: (kz, kx) gives ky. */
-ISECT_FLATTEN ISECT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, int n, const real *reals,
+HINT_FLATTEN HINT_OUT_OF_LINE int isect_hot_triangle_run(const bvh_hot *hot, int n, const real *reals,
                                                            const ray *r, const isect_shear *sh, real *t)
 {
     if (sh->dz == 0.0) {
@@ -1408,7 +1398,7 @@ static inline int box_segment_apart(const real *g, const ray *r)
  * shadow rays (nearly all misses).  Out of line for the reason of
  * hot_triangle: inlined into the walk it would grow its loop.  A segment
  * apart from one of the box's slabs counts 0 at once. */
-ISECT_FLATTEN ISECT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
+HINT_FLATTEN HINT_OUT_OF_LINE static int hot_box_crossings(const real *g, const ray *r)
 {
     real tt[2];
     int axis[2];
@@ -1755,7 +1745,7 @@ static real offset_coord(real p, real step)
     assigns \nothing;
     ensures \is_finite(\result.x) && \is_finite(\result.y) && \is_finite(\result.z);
     ensures EXACT(vbounded(point, 0x1p1022) && offset <= 0x1p983 ==> is_spawned(\result, point, normal, toward, offset)); */
-ISECT_IN_LINE static inline vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
+HINT_IN_LINE static inline vec3 spawn_origin(vec3 point, vec3 normal, vec3 toward, real offset)
 {
     real s = vec_dot(toward, normal) >= 0.0 ? offset : -offset;
     return vec_make(offset_coord(point.x, normal.x * s), offset_coord(point.y, normal.y * s),

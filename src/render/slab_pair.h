@@ -28,11 +28,10 @@
 #if defined(__SSE2__) && defined(__x86_64__) && !defined(REFRAY_LONG_DOUBLE) && !defined(__FRAMAC__)
 #define SLAB_PAIR_SSE2 1
 #include <emmintrin.h>
+#include "base/inline_hint.h"
 
-/* Inlined at every call, so that a walk's constant offsets fold (gcc and
- * clang, the compilers that define __SSE2__ and __x86_64__, know the
- * attribute). */
-#define SLAB_PAIR_INLINE __attribute__((always_inline))
+/* HINT_IN_LINE: inlined at every call, so that a walk's constant offsets
+ * fold. */
 
 /* A ray prepared for pair tests: origin and 1/d in both lanes. */
 typedef struct slab_pair_ray {
@@ -45,24 +44,24 @@ static const double slab_pair_k[4][2] __attribute__((aligned(16))) = {
     {INFINITY, INFINITY}, {-0.0, -0.0}, {SLAB_EXIT_PAD, SLAB_EXIT_PAD}, {1.0, 1.0}};
 
 /* The byte offsets in a bvh_node of an axis's lower and upper bound. */
-static inline SLAB_PAIR_INLINE size_t slab_pair_lo_at(int axis)
+static inline HINT_IN_LINE size_t slab_pair_lo_at(int axis)
 {
     return offsetof(bvh_node, lo) + (size_t)axis * sizeof(real);
 }
 
-static inline SLAB_PAIR_INLINE size_t slab_pair_hi_at(int axis)
+static inline HINT_IN_LINE size_t slab_pair_hi_at(int axis)
 {
     return offsetof(bvh_node, hi) + (size_t)axis * sizeof(real);
 }
 
 /* The offset of an axis's near bound for a ray whose neg flag is neg (hi
  * for a negative direction, as slab_ends chooses), or of its far one. */
-static inline SLAB_PAIR_INLINE size_t slab_pair_near_at(int axis, int neg)
+static inline HINT_IN_LINE size_t slab_pair_near_at(int axis, int neg)
 {
     return neg ? slab_pair_hi_at(axis) : slab_pair_lo_at(axis);
 }
 
-static inline SLAB_PAIR_INLINE size_t slab_pair_far_at(int axis, int neg)
+static inline HINT_IN_LINE size_t slab_pair_far_at(int axis, int neg)
 {
     return neg ? slab_pair_lo_at(axis) : slab_pair_hi_at(axis);
 }
@@ -78,7 +77,7 @@ static inline void slab_pair_make(const slab_ray *s, slab_pair_ray *p)
 
 /* The bound at byte offset `at` of node a in the low lane, of a + 1 in the
  * high one. */
-static inline SLAB_PAIR_INLINE __m128d slab_pair_load(const bvh_node *a, size_t at)
+static inline HINT_IN_LINE __m128d slab_pair_load(const bvh_node *a, size_t at)
 {
     const char *p = (const char *)(const void *)a + at;
     return _mm_loadh_pd(_mm_load_sd((const double *)(const void *)p),
@@ -87,7 +86,7 @@ static inline SLAB_PAIR_INLINE __m128d slab_pair_load(const bvh_node *a, size_t 
 
 /* One axis: its entry into the running maximum *tn, its exit into the
  * running least *least. */
-static inline SLAB_PAIR_INLINE void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_at, __m128d o, __m128d inv,
+static inline HINT_IN_LINE void slab_pair_axis(const bvh_node *a, size_t near_at, size_t far_at, __m128d o, __m128d inv,
                                   __m128d *tn, __m128d *least)
 {
     __m128d t0 = _mm_mul_pd(_mm_sub_pd(slab_pair_load(a, near_at), o), inv);
@@ -98,7 +97,7 @@ static inline SLAB_PAIR_INLINE void slab_pair_axis(const bvh_node *a, size_t nea
 
 /* The pad of the least exits, the cap by tmax and the answer (the scalar
  * test's last lines, slab_box_meets_neg); the entries to *ta and *tc. */
-static inline SLAB_PAIR_INLINE int slab_pair_end(__m128d tn, __m128d least, real tmax, real *ta, real *tc)
+static inline HINT_IN_LINE int slab_pair_end(__m128d tn, __m128d least, real tmax, real *ta, real *tc)
 {
     __m128d pad = _mm_or_pd(_mm_and_pd(least, _mm_load_pd(slab_pair_k[1])), _mm_load_pd(slab_pair_k[2]));
     least = _mm_mul_pd(least, _mm_add_pd(_mm_load_pd(slab_pair_k[3]), pad));
@@ -115,7 +114,7 @@ static inline SLAB_PAIR_INLINE int slab_pair_end(__m128d tn, __m128d least, real
  * the ray's neg flags: constants where the walk is made once per octant.  Written out axis by axis (a
  * loop over the axes was kept as one, its offsets in memory).
  */
-static inline SLAB_PAIR_INLINE int slab_pair_meets(const bvh_node *a, const slab_pair_ray *s, size_t nx, size_t fx, size_t ny,
+static inline HINT_IN_LINE int slab_pair_meets(const bvh_node *a, const slab_pair_ray *s, size_t nx, size_t fx, size_t ny,
                                   size_t fy, size_t nz, size_t fz, real tmin, real tmax, real *ta, real *tc)
 {
     __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);
@@ -128,7 +127,7 @@ static inline SLAB_PAIR_INLINE int slab_pair_meets(const bvh_node *a, const slab
 /* slab_pair_meets from the slab ray itself, its lanes and offsets formed
  * at the call: no pair form made per ray (a shadow walk that tests few
  * inner nodes). */
-static inline SLAB_PAIR_INLINE int slab_pair_meets_slab(const bvh_node *a, const slab_ray *s, real tmin, real tmax,
+static inline HINT_IN_LINE int slab_pair_meets_slab(const bvh_node *a, const slab_ray *s, real tmin, real tmax,
                                                         real *ta, real *tc)
 {
     __m128d tn = _mm_set1_pd(tmin), least = _mm_load_pd(slab_pair_k[0]);

@@ -536,7 +536,7 @@ light_setup trace_light_setup(const scene_light *light, int samples)
  * Flattened (light_point inlined: it was a call a sample, t1 and t2 passed
  * by value) and kept out of add_source's loop; only inlining, the same
  * operations. */
-TRACE_FLATTEN TRACE_OUTLINE static vec3 light_point_keyed(const scene_light *light, const light_setup *setup,
+HINT_FLATTEN HINT_OUT_OF_LINE static vec3 light_point_keyed(const scene_light *light, const light_setup *setup,
                                                   uint64_t light_key, int j)
 {
     uint64_t c1, c2;   /* sampler_mix of the counters 2j, 2j + 1: sampler_key's own */
@@ -610,7 +610,7 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
  * place: returned by value it was copied in 16-byte blocks straddling
  * add_source's 16 + 8-byte stores of each colour (a failed store
  * forwarding at every shaded point). */
-static TRACE_OUTLINE void direct_light(const tracer *t, const surface *s, uint64_t key, direct_sum *sum,
+static HINT_OUT_OF_LINE void direct_light(const tracer *t, const surface *s, uint64_t key, direct_sum *sum,
                                        trace_stats *st)
 {
     sum->body = shade_ambient(s->m->kd, t->scene->ambient);
@@ -648,7 +648,7 @@ static void forget_overflow(trace_stats *st, long overflow_before, int harmless)
  * so they stay off the recursion's stack, which holds a frame a bounce
  * ([REL-STACK-1]).  Returns 0 where [SHADE-SHORTCUT-RAYS-1]'s zero weight
  * leaves the ray out, with the overflow count restored. */
-static TRACE_OUTLINE int transmit_setup(const tracer *t, const surface *s, const ray *in, const medium_stack *media,
+static HINT_OUT_OF_LINE int transmit_setup(const tracer *t, const surface *s, const ray *in, const medium_stack *media,
                                         medium_stack *next, ray *r, real *through, int *refracts, hit *end,
                                         trace_stats *st)
 {
@@ -722,7 +722,7 @@ static ray mirror_ray(const surface *s, const ray *in)
  * the mirror ray made again stays off the frame of `transmitted`, which a
  * chain of total reflections holds once a bounce ([REL-STACK-1]).
  */
-static TRACE_OUTLINE int tir_is_mirror(const tracer *t, const surface *s, const ray *in, const ray *r,
+static HINT_OUT_OF_LINE int tir_is_mirror(const tracer *t, const surface *s, const ray *in, const ray *r,
                                        const mirror_trace *m, trace_stats *st, rgb *c)
 {
     if (!m->traced || t->no_shortcuts || t->keyed || st->record_path || st->tree_overflow || !m->clean)
@@ -742,10 +742,10 @@ static TRACE_OUTLINE int tir_is_mirror(const tracer *t, const surface *s, const 
  * where the interface changes the medium (n1 the medium before, the top of
  * the stack; n2 the one after), or mirrored on total internal reflection.
  * A solid left that the stack does not hold (its overflow) keeps its own
- * ior as n1.  Kept out of shade (TRACE_OUTLINE): `next` is in its frame,
+ * ior as n1.  Kept out of shade (HINT_OUT_OF_LINE): `next` is in its frame,
  * which only a transmitted bounce then pays for.
  */
-static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth,
+static HINT_OUT_OF_LINE rgb transmitted(const tracer *t, const surface *s, const ray *in, int depth,
                                      const medium_stack *media, uint64_t key, const mirror_trace *mirror,
                                      trace_stats *st)
 {
@@ -782,7 +782,7 @@ static TRACE_OUTLINE rgb transmitted(const tracer *t, const surface *s, const ra
  * a transparent surface within reach that its walk would miss (start_zone):
  * its colour in *c, and 1.  Out of line: the zone's hit stays off the
  * recursion's frame of an ordinary mirror bounce ([REL-STACK-1]). */
-static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, const ray *r, int depth,
+static HINT_OUT_OF_LINE int mirror_meets_glass(const tracer *t, const surface *s, const ray *r, int depth,
                                             const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
 {
     start_zone z;
@@ -801,7 +801,7 @@ static TRACE_OUTLINE int mirror_meets_glass(const tracer *t, const surface *s, c
  * ray from the opaque surface s->touch met at its start: in the limit of a
  * gap the glass lies off that surface, so a ray back toward it meets it at
  * distance 0 (its colour in *c, and 1).  Out of line as mirror_meets_glass. */
-static TRACE_OUTLINE int mirror_meets_opaque(const tracer *t, const surface *s, const ray *r, int depth,
+static HINT_OUT_OF_LINE int mirror_meets_opaque(const tracer *t, const surface *s, const ray *r, int depth,
                                              const medium_stack *media, uint64_t key, trace_stats *st, rgb *c)
 {
     if (!glass_contact_meets(s->touch, r->dir))
@@ -985,7 +985,7 @@ static int over_budget(const tracer *t, trace_stats *st)
 /* The nearest hit, in a frame of its own: the BVH walk's stack (BVH_MAX_DEPTH
  * entries, 1.5 KiB) is not needed once the hit is found, so it stays off
  * the recursion's stack ([REL-STACK-1]). */
-static TRACE_OUTLINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int *tied, trace_stats *st)
+static HINT_OUT_OF_LINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int *tied, trace_stats *st)
 {
     return bvh_intersect_ties(&t->accel, t->scene->prims, nearest, h, &st->bvh, tied);
 }

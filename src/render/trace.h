@@ -12,21 +12,14 @@
 #define REFRAY_TRACE_H
 
 #include <stdint.h>
+#include "base/inline_hint.h"
 #include "render/bvh.h"
 #include "render/lightsample.h"
 #include "render/ray.h"
 #include "scene/scene.h"
 
-/* [REL-STACK-1] Not inlined into the recursion's frame (trace_ray, shade,
- * mirrored): only an inlining hint, the code computed is the same.  gcc and
- * clang (which defines __GNUC__) know the attribute; Frama-C need not. */
-#if defined(__GNUC__) && !defined(__FRAMAC__)
-#define TRACE_OUTLINE __attribute__((noinline))
-#define TRACE_FLATTEN __attribute__((flatten))
-#else
-#define TRACE_OUTLINE
-#define TRACE_FLATTEN
-#endif
+/* [REL-STACK-1] HINT_OUT_OF_LINE marks what is kept out of the recursion's
+ * frame (trace_ray, shade, mirrored). */
 
 enum { TRACE_BLOCKERS = 8 };
 
