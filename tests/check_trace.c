@@ -510,12 +510,12 @@ START_TEST(test_medium_remove_keeps_the_order)
 }
 END_TEST
 
-/* add_source's shadow ray toward a distant light, trace_shadow_along with
+/* add_source's shadow ray toward a distant light, ray_shadow_along_sized with
  * the light's setup (along_length made once), is the proved
  * ray_shadow_along's to the bit: random points from 2^-20 to 2^20, unit
  * normals, magnitudes and directions.  tmin is offset / |L|, so the count
  * of rays whose tmin is not the offset itself shows the division ran. */
-START_TEST(test_trace_shadow_along_is_ray_shadow_along)
+START_TEST(test_ray_shadow_along_sized_is_ray_shadow_along)
 {
     int divided = 0;
     for (uint64_t i = 0; i < 4000; i++) {
@@ -536,7 +536,7 @@ START_TEST(test_trace_shadow_along_is_ray_shadow_along)
         shadow_start st = ray_shadow_start_sized(&h, fabs(u[9]) * 100);
         vec3 l = vec_neg(light.direction);
         light_setup setup = trace_light_setup(&light, 1);
-        ray a = trace_shadow_along(&st, l, setup.along_length), b = ray_shadow_along(&st, l);
+        ray a = ray_shadow_along_sized(&st, l, setup.along_length), b = ray_shadow_along(&st, l);
         ck_assert(same_vec_bits(a.origin, b.origin) && same_vec_bits(a.dir, b.dir));
         ck_assert(same_real_bits(a.tmin, b.tmin) && same_real_bits(a.tmax, b.tmax));
         divided += a.tmin != st.offset;
@@ -566,7 +566,7 @@ Suite *suite_trace(void)
     tcase_add_test(rays, test_trace_ior_one_glass_passes_rays_straight);
     tcase_add_test(rays, test_trace_glass_sphere_on_axis_is_not_bent);
     tcase_add_test(rays, test_medium_remove_keeps_the_order);
-    tcase_add_test(rays, test_trace_shadow_along_is_ray_shadow_along);
+    tcase_add_test(rays, test_ray_shadow_along_sized_is_ray_shadow_along);
     suite_add_tcase(s, rays);
     TCase *whole = tcase_create("whole renders");
     tcase_add_test(whole, test_trace_renders_are_bit_identical);

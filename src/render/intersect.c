@@ -2113,3 +2113,16 @@ ray ray_shadow_along(const shadow_start *st, vec3 dir)
 {
     return spawn_by(st->point, st->normal, dir, st->offset, 1);
 }
+
+/* ray_shadow_along with length = vec_length(dir) given: a distant light's
+ * L is the same at every point, so its length is made once a light
+ * (light_setup.along_length), not at every sample (three divisions, a
+ * square root and a product before the walk can start).  spawn_by's ray,
+ * its tmin shadow_tmin's quotient of that length: the same bits
+ * (test_ray_shadow_along_sized_is_ray_shadow_along). */
+ray ray_shadow_along_sized(const shadow_start *st, vec3 dir, real length)
+{
+    ray r = spawn_by(st->point, st->normal, dir, st->offset, 0);
+    r.tmin = length > 0 ? st->offset / length : 0;
+    return r;
+}

@@ -281,5 +281,7 @@ ray ray_shadow_to(const shadow_start *st, vec3 target);
  * that sign alone. */
 vec3 ray_shadow_origin(const shadow_start *st, vec3 toward);
 ray ray_shadow_along(const shadow_start *st, vec3 dir);
+/* ray_shadow_along with length = vec_length(dir) given, the same ray. */
+ray ray_shadow_along_sized(const shadow_start *st, vec3 dir, real length);
 
 #endif

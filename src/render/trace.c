@@ -312,21 +312,6 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
     return bundle;
 }
 
-/* A distant light's L = -direction is the same at every point, so its
- * length is made once (trace_light_setup), not at every sample (three
- * divisions, a square root and a product before the walk can start).
- * spawn_by's fields from the same operations: the origin by
- * ray_shadow_origin (spawn_origin), tmin by shadow_tmin's expression. */
-ray trace_shadow_along(const shadow_start *from, vec3 l, real length)
-{
-    ray r;
-    r.origin = ray_shadow_origin(from, l);
-    r.dir = l;
-    r.tmin = length > 0 ? from->offset / length : 0;
-    r.tmax = HUGE_VAL;
-    return r;
-}
-
 /* One point source at *at (distant: at infinity along -direction) of power
  * *emits; bundle: the distributed light's (NULL for the others).  The point
  * and power by address: by value they were six doubles copied onto the
@@ -374,7 +359,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
          * of mesh.scene's time). */
         ray r;
         if (light->kind == LIGHT_DISTANT)
-            r = trace_shadow_along(&s->from, l, t->lights[light - t->scene->lights].along_length);
+            r = ray_shadow_along_sized(&s->from, l, t->lights[light - t->scene->lights].along_length);
         else
             r = ray_shadow_to(&s->from, *at);
         through = shadow_transmission(t, &r, (int)(light - t->scene->lights), light_bundle(t, s, light, bundle, st), st);

@@ -73,7 +73,7 @@ typedef struct light_setup {
      * ([SHADE-SHORTCUT-BUNDLE-1] aims the bundles at it). */
     vec3 box_lo, box_hi;
     /* A distant light: |L| = vec_length(-direction), the length its shadow
-     * rays' tmin divides by (ray_shadow_along's shadow_tmin), made once. */
+     * rays' tmin divides by (ray_shadow_along_sized), made once. */
     real along_length;
 } light_setup;
 
@@ -162,10 +162,6 @@ void tracer_free(tracer *t);
 /* A distributed light's stratification and (for a disk) frame for a
  * render that gives it `samples` sources: tracer_init's per-light data. */
 light_setup trace_light_setup(const scene_light *light, int samples);
-
-/* ray_shadow_along(from, l), the same bits, with length = vec_length(l)
- * given (a distant light's: light_setup.along_length). */
-ray trace_shadow_along(const shadow_start *from, vec3 l, real length);
 
 /* Where sample j of the light at index `index` of the scene's lights sits
  * for a hit of a ray with key `key`: the point the tracer shades with, bit
