@@ -14,6 +14,7 @@
 #include "render/render.h"
 #include "io/scene_file.h"
 #include "scene/scene.h"
+#include "render/interface.h"
 #include "render/medium.h"
 #include "render/trace.h"
 
@@ -510,6 +511,69 @@ START_TEST(test_medium_remove_keeps_the_order)
 }
 END_TEST
 
+/* The crossing of an interface that holds the hit alone (count 1, the
+ * transmitted ray's usual case, interface_cross's short path): entering a
+ * sphere pushes its ior once, leaving it takes it out wherever it lies, a
+ * sheet changes nothing; a closed mesh is toggled by the stack, not by the
+ * hit's side.  Expected stacks by hand. */
+static int cross_one(const tracer *t, int prim, int entering, const medium_stack *before, medium_stack *next)
+{
+    interface f;
+    trace_stats st;
+    memset(&st, 0, sizeof st);
+    memset(&f, 0, sizeof f);
+    f.scene = t->scene;
+    f.count = 1;
+    f.h[0].prim = prim;
+    f.h[0].entering = entering;
+    f.self = &f.h[0];
+    *next = *before;
+    return interface_cross(t, &f, before, next, &st);
+}
+
+START_TEST(test_interface_cross_one_crossing)
+{
+    /* prims: 0 the sheet, 1 the ball (ior 1.5), 2 the cube (ior 1.25) */
+    scene_model *s = load("plane { point [0, 0, 0] normal [0, 1, 0] material { t 0.5 ior 2 } }\n"
+                          "sphere { center [0, 3, 0] radius 1 material { t 1 ior 1.5 } }\n"
+                          "mesh { file \"tests/obj/cube.obj\" translate [4, 3, 0] material { t 1 ior 1.25 } }\n");
+    tracer t;
+    trace_stats st;
+    medium_stack before, next;
+    memset(&st, 0, sizeof st);
+    ck_assert(tracer_init(&t, s, 0, 0));
+    before.count = 0;
+    medium_push(&before, 7, 1.75, &st);
+    ck_assert_int_eq(cross_one(&t, 1, 1, &before, &next), 1);   /* into the ball */
+    ck_assert_int_eq(next.count, 2);
+    ck_assert_int_eq(next.solid[1], 1);
+    ck_assert(medium_top_ior(&next) == 1.5);
+    before = next;
+    ck_assert_int_eq(cross_one(&t, 1, 1, &before, &next), 1);   /* into it again: held once */
+    ck_assert_int_eq(next.count, 2);
+    medium_push(&before, 9, 1.125, &st);                         /* 7 1 9 */
+    ck_assert_int_eq(cross_one(&t, 1, 0, &before, &next), 1);   /* out of it, 9 moves down */
+    ck_assert_int_eq(next.count, 2);
+    ck_assert_int_eq(next.solid[0], 7);
+    ck_assert_int_eq(next.solid[1], 9);
+    ck_assert(medium_top_ior(&next) == 1.125);
+    before = next;
+    ck_assert_int_eq(cross_one(&t, 1, 0, &before, &next), 1);   /* out of one not held */
+    ck_assert_int_eq(next.count, 2);
+    ck_assert_int_eq(cross_one(&t, 0, 1, &before, &next), 0);   /* the sheet */
+    ck_assert_int_eq(next.count, 2);
+    ck_assert_int_eq(cross_one(&t, 2, 0, &before, &next), 1);   /* the cube, not held: entered */
+    ck_assert_int_eq(next.count, 3);
+    ck_assert(medium_top_ior(&next) == 1.25);
+    before = next;
+    ck_assert_int_eq(cross_one(&t, 2, 1, &before, &next), 1);   /* held: left */
+    ck_assert_int_eq(next.count, 2);
+    ck_assert(medium_top_ior(&next) == 1.125);
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
 /* add_source's shadow ray toward a distant light, ray_shadow_along_sized with
  * the light's setup (along_length made once), is the proved
  * ray_shadow_along's to the bit: random points from 2^-20 to 2^20, unit
@@ -577,6 +641,7 @@ Suite *suite_trace(void)
     tcase_add_test(whole, test_trace_depth_1000_fits_a_small_stack);
     tcase_add_test(whole, test_trace_ninth_coincident_opaque_surface_stops_light);
     tcase_add_test(whole, test_render_image_refuses_nine_coincident_glass_solids);
+    tcase_add_test(whole, test_interface_cross_one_crossing);
     suite_add_tcase(s, whole);
     return s;
 }
