@@ -6,11 +6,9 @@
  * counter-based hash of the pixel and sub-sample, which is deterministic
  * too).
  */
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include "render/camera.h"
-#include "render/light_cells.h"
 #include "render/render.h"
 #include "base/hash.h"
 #include "base/sampler.h"
@@ -92,14 +90,6 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
         tracer_no_shortcuts(&r->tracer);
     if (o && o->facet_shadows)
         r->tracer.terminator_offset = 0;
-    {
-        const char *w = getenv("CELLW");
-        if (!light_cells_init(&r->cells, &r->tracer, w ? atof(w) : 0.5, &scene->mem)) {
-            tracer_free(&r->tracer);
-            return STATUS_NO_MEMORY;
-        }
-        stats->trace.cells = &r->cells;
-    }
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&r->tracer, stats);
@@ -108,7 +98,6 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
 
 void renderer_free(renderer *r)
 {
-    light_cells_free(&r->cells);
     tracer_free(&r->tracer);
 }
 

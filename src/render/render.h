@@ -8,7 +8,6 @@
 
 #include "image/image.h"
 #include "scene/scene.h"
-#include "render/light_cells.h"
 #include "render/trace.h"
 
 typedef struct render_opts {
@@ -65,7 +64,6 @@ typedef struct renderer {
     render_opts opts;
     render_stats stats;
     cancel_poll cancel;     /* opts.cancel, counted; stats.trace.cancel points here */
-    light_cells cells;      /* the point lights' bundles; stats.trace.cells points here */
 } renderer;
 
 /* Builds the tracer for scene with opts (NULL: the scene's settings) and

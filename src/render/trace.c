@@ -18,7 +18,6 @@
 #include <string.h>
 #include "render/intersect.h"
 #include "render/ray_copy.h"
-#include "render/light_cells.h"
 #include "render/camera.h"
 #include "base/sampler.h"
 #include "base/sampler_counters.h"
@@ -294,8 +293,6 @@ int trace_light_side(const shadow_start *from, const light_setup *setup)
 static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const scene_light *light,
                                       bvh_bundle *bundle, trace_stats *st)
 {
-    if (!bundle && light->kind == LIGHT_POINT)   /* [SHADE-SHORTCUT-BUNDLE-2] */
-        return light_cells_bundle(st->cells, t, (int)(light - t->scene->lights), &s->from, &st->bvh);
     if (bundle && bundle->count == BVH_BUNDLE_UNMADE) {
         const light_setup *setup = &t->lights[light - t->scene->lights];
         vec3 n = s->from.normal;

@@ -23,9 +23,6 @@
 
 enum { TRACE_BLOCKERS = 8 };
 
-/* The renderer's cache of point lights' bundles (render/light_cells.h). */
-typedef struct light_cells light_cells;
-
 typedef struct trace_stats {
     long camera_rays;
     long shadow_rays;
@@ -58,10 +55,6 @@ typedef struct trace_stats {
      * the next shadow ray toward that light tests first (spec/shading.md
      * [SHADE-SHORTCUT-BLOCKER-1]); no image depends on it. */
     bvh_ref blocker[TRACE_BLOCKERS];
-    /* The point lights' bundles by cell ([SHADE-SHORTCUT-BUNDLE-2]), owned
-     * by the caller; NULL: every shadow ray toward a point light walks the
-     * whole tree.  No image depends on it. */
-    light_cells *cells;
 } trace_stats;
 
 /* Per-light data computed once: the stratification and a disk's frame. */
