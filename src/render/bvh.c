@@ -515,146 +515,31 @@ static void nearest_pass(const bvh *b, const scene_prim *prims, nearest *ns)
         traverse_nearest(b, prims, ns);
 }
 
-static inline HINT_IN_LINE void nearest_start(nearest *ns, const ray *r, bvh_stats *stats)
-{
-    ray_copy(&ns->rr, r);
-    ns->count = ns->overflow = ns->fixed = 0;
-    ns->t_near = ns->tmax0 = r->tmax;
-    ns->slack = TIE_REL * vec_max_abs(r->origin);
-    ns->stats = stats;
-    ns->sh = shear_lazy(r);
-}
-
-/* The second pass when the first overflowed, and the winner made whole. */
-static inline HINT_IN_LINE int nearest_finish(const bvh *b, const scene_prim *prims, nearest *ns, ray *r, hit *h,
-                                              int *tied)
-{
-    if (ns->overflow) {
-        ray_copy(&ns->rr, r);
-        ns->t_near = tie_limit(ns);
-        ns->rr.tmax = window_tmax(ns, ns->t_near);
-        ns->count = 0;
-        ns->fixed = 1;
-        nearest_pass(b, prims, ns);
-    }
-    if (tied)
-        *tied = ns->overflow ? TIE_MAX + 1 : ns->count;
-    if (ns->count == 0)
-        return 0;
-    winner_hit(b, prims, ns, nearest_winner(ns), r, h);
-    r->tmax = h->t;
-    return 1;
-}
-
 int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats, int *tied)
 {
     nearest ns;
-    nearest_start(&ns, r, stats);
+    ray_copy(&ns.rr, r);
+    ns.count = ns.overflow = ns.fixed = 0;
+    ns.t_near = ns.tmax0 = r->tmax;
+    ns.slack = TIE_REL * vec_max_abs(r->origin);
+    ns.stats = stats;
+    ns.sh = shear_lazy(r);
     nearest_pass(b, prims, &ns);
-    return nearest_finish(b, prims, &ns, r, h, tied);
-}
-
-/*
- * Two rays' walks interleaved: a node of one, then a node of the other,
- * each with its own stack, slab ray and nearest state, so that the core
- * overlaps one ray's chains of loads, divisions and square roots with the
- * other's.  Each ray meets the same nodes and tests the same parts in the
- * same order, with the same tmax, as traverse_nearest_oct gives it alone:
- * a step below is that loop's body, and nothing of one ray is read by the
- * other's steps.
- */
-/* traverse_nearest_oct's start: the root's test; node 0, or -1 (done). */
-static inline HINT_IN_LINE int pair_start(const bvh *b, walk_ray *w, const nearest *ns, const slab_ray *sr, int oct)
-{
-    real enter;
-    w->s = *sr;
-    if (!root_decides_nothing(b)) {
-        if (ns->stats)
-            ns->stats->nodes_visited++;
-        if (!node_hit(&b->nodes[0], &w->s, oct, ns->rr.tmin, ns->rr.tmax, &enter) && !b->exhaustive)
-            return -1;
+    if (ns.overflow) {
+        ray_copy(&ns.rr, r);
+        ns.t_near = tie_limit(&ns);
+        ns.rr.tmax = window_tmax(&ns, ns.t_near);
+        ns.count = 0;
+        ns.fixed = 1;
+        nearest_pass(b, prims, &ns);
     }
-#ifdef SLAB_PAIR_SSE2
-    slab_pair_make(&w->s, &w->p);
-#endif
-    return 0;
-}
-
-/* One pass of traverse_nearest_oct's loop: the node, then the pops; the
- * next node, or -1 (done). */
-static inline HINT_IN_LINE int pair_step(const bvh *b, const scene_prim *prims, nearest *ns, const walk_ray *w,
-                                         int oct, int all, int node, stack_entry *stack, int *sp)
-{
-    const bvh_node *nd = &b->nodes[node];
-    if (nd->count > 0) {
-        nearest_leaf l = {ns, b, prims};
-        visit_hits(b, nd->first, nd->first + nd->count, &ns->rr, &ns->sh, ns->stats, nearest_run_hit, nearest_other,
-                   &l);
-        node = -1;
-    } else {
-        node = descend(b, node, w, oct, ns, stack, sp, all);
-    }
-    while (node < 0 && *sp > 0) {
-        --*sp;
-        if (stack[*sp].enter <= ns->rr.tmax || b->exhaustive)
-            node = stack[*sp].node;
-    }
-    return node;
-}
-
-static inline HINT_IN_LINE void traverse_pair_oct(const bvh *b, const scene_prim *prims, nearest *n0, nearest *n1,
-                                                  const slab_ray *s0, const slab_ray *s1, int oct)
-{
-    stack_entry st0[BVH_MAX_DEPTH], st1[BVH_MAX_DEPTH];
-    walk_ray w0, w1;
-    int sp0 = 0, sp1 = 0;
-    const int all = b->exhaustive ? 3 : 0;
-    int node0 = pair_start(b, &w0, n0, s0, oct);
-    int node1 = pair_start(b, &w1, n1, s1, oct);
-    while (node0 >= 0 && node1 >= 0) {
-        node0 = pair_step(b, prims, n0, &w0, oct, all, node0, st0, &sp0);
-        node1 = pair_step(b, prims, n1, &w1, oct, all, node1, st1, &sp1);
-    }
-    while (node0 >= 0)
-        node0 = pair_step(b, prims, n0, &w0, oct, all, node0, st0, &sp0);
-    while (node1 >= 0)
-        node1 = pair_step(b, prims, n1, &w1, oct, all, node1, st1, &sp1);
-}
-
-/* Rays of one octant walk as a pair (one copy per octant), others alone. */
-static void traverse_pair(const bvh *b, const scene_prim *prims, nearest *n0, nearest *n1)
-{
-    slab_ray s0 = slab_make(&n0->rr), s1 = slab_make(&n1->rr);
-    int oct = slab_octant(&s0);
-    if (oct != slab_octant(&s1)) {
-        traverse_nearest(b, prims, n0);
-        traverse_nearest(b, prims, n1);
-        return;
-    }
-    switch (oct) {
-    case 0: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 0); break;
-    case 1: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 1); break;
-    case 2: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 2); break;
-    case 3: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 3); break;
-    case 4: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 4); break;
-    case 5: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 5); break;
-    case 6: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 6); break;
-    default: traverse_pair_oct(b, prims, n0, n1, &s0, &s1, 7); break;
-    }
-}
-
-int bvh_intersect_pair(const bvh *b, const scene_prim *prims, ray *r[2], hit *h[2], bvh_stats *stats[2], int tied[2])
-{
-    nearest ns[2];
-    nearest_start(&ns[0], r[0], stats[0]);
-    nearest_start(&ns[1], r[1], stats[1]);
-    for (int k = 0; k < 2; k++)
-        for (int i = 0; i < b->unbounded_count; i++)
-            nearest_test(&ns[k], prims, b->unbounded[i]);
-    if (b->node_count > 0)
-        traverse_pair(b, prims, &ns[0], &ns[1]);
-    int met = nearest_finish(b, prims, &ns[0], r[0], h[0], &tied[0]);
-    return met | nearest_finish(b, prims, &ns[1], r[1], h[1], &tied[1]) << 1;
+    if (tied)
+        *tied = ns.overflow ? TIE_MAX + 1 : ns.count;
+    if (ns.count == 0)
+        return 0;
+    winner_hit(b, prims, &ns, nearest_winner(&ns), r, h);
+    r->tmax = h->t;
+    return 1;
 }
 
 int bvh_intersect_stats(const bvh *b, const scene_prim *prims, ray *r, hit *h, bvh_stats *stats)

@@ -103,10 +103,6 @@ int bvh_intersect_ties(const bvh *b, const scene_prim *prims, ray *r, hit *h, bv
  * tracer asks it to find the coincident surfaces a nearest hit stood for
  * (spec/numerics.md [NUM-GLASS-3]). */
 real bvh_tie_end(real t_near, vec3 origin);
-/* bvh_intersect_ties of two rays at once, their walks interleaved (the
- * same hits, bits and counts as two calls): bit k of the answer is whether
- * ray r[k] met anything, in *h[k]. */
-int bvh_intersect_pair(const bvh *b, const scene_prim *prims, ray *r[2], hit *h[2], bvh_stats *stats[2], int tied[2]);
 
 /*
  * Calls fn for every surface crossing in (r->tmin, r->tmax) (a solid

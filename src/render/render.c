@@ -32,55 +32,24 @@ double render_sample_offset(int k, int a)
     return (a + 0.5) / k;
 }
 
-static ray sample_ray(const tracer *t, int width, int height, int k, int i, int j, int a, int b)
-{
-    real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
-    return camera_ray(&t->scene->camera, t->camera_half, width, height, x, y);
-}
-
-/* Sample (a, b) of pixel (i, j) along r: its walk done (f) or not (NULL). */
-static rgb sample_colour(const tracer *t, const ray *r, trace_found *f, int width, int k, int i, int j, int a, int b,
-                         trace_stats *st)
-{
-    medium_stack media = t->eye_media;
-    if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
-        trace_media_at(t, r->origin, &media, st);
-    st->camera_rays++;
-    st->tree_rays = 0;
-    st->medium_overflow += t->eye_overflow;
-    uint64_t key = render_sample_key(width, k, i, j, a, b);
-    return f ? trace_ray_found(t, r, f, &media, key, st) : trace_ray(t, r, 1, &media, key, st);
-}
-
-/* The sub-samples in their order b * k + a, two by two: a pair's nearest
- * hits are found by one interleaved walk (trace_find_pair), then each is
- * traced in turn as trace_ray would, the first wholly before the second. */
 rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, trace_stats *st)
 {
     rgb sum = vec_splat(0);
-    int n = k * k;
-    for (int s = 0; s < n; s += 2) {
-        int a = s % k, b = s / k;
-        ray r = sample_ray(t, width, height, k, i, j, a, b);
-        if (s + 1 == n) {
-            sum = shade_saturate(vec_add(sum, sample_colour(t, &r, NULL, width, k, i, j, a, b, st)));
-            break;
+    for (int b = 0; b < k; b++) {
+        for (int a = 0; a < k; a++) {
+            real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
+            ray r = camera_ray(&t->scene->camera, t->camera_half, width, height, x, y);
+            medium_stack media = t->eye_media;
+            if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
+                trace_media_at(t, r.origin, &media, st);
+            st->camera_rays++;
+            st->tree_rays = 0;
+            st->medium_overflow += t->eye_overflow;
+            rgb c = trace_ray(t, &r, 1, &media, render_sample_key(width, k, i, j, a, b), st);
+            sum = shade_saturate(vec_add(sum, c));
         }
-        int a1 = (s + 1) % k, b1 = (s + 1) / k;
-        ray r1 = sample_ray(t, width, height, k, i, j, a1, b1);
-        trace_found f[2];
-        trace_find_pair(t, &r, &r1, f);
-        sum = shade_saturate(vec_add(sum, sample_colour(t, &r, &f[0], width, k, i, j, a, b, st)));
-        sum = shade_saturate(vec_add(sum, sample_colour(t, &r1, &f[1], width, k, i, j, a1, b1, st)));
     }
     return vec_scale(sum, 1.0 / ((real)k * k));
-}
-
-/* render_pixel with one sample, its walk found. */
-static rgb pixel_found(const tracer *t, const ray *r, trace_found *f, int width, int i, int j, trace_stats *st)
-{
-    rgb sum = shade_saturate(vec_add(vec_splat(0), sample_colour(t, r, f, width, 1, i, j, 0, 0, st)));
-    return vec_scale(sum, 1.0 / ((real)1 * 1));
 }
 
 static void record_setup(const tracer *t, render_stats *stats)
@@ -210,40 +179,6 @@ static void store(const render_target *target, int x, int y, rgb c)
     }
 }
 
-/* Pixel (i, j) of colour c stored; whether the region goes on. */
-static int pixel_done(renderer *r, const render_target *target, int i, int j, rgb c, long media_lost)
-{
-    render_stats *stats = &r->stats;
-    store(target, i, j, c);
-    if (cancel_stopped(&r->cancel))
-        return STATUS_CANCELLED;
-    if (stats->trace.tree_overflow || stats->trace.medium_overflow > media_lost) {
-        stats->overflow_x = i;
-        stats->overflow_y = j;
-        return STATUS_DATA;
-    }
-    return STATUS_OK;
-}
-
-/* Pixels i and i + 1 of row j, one sample each: their camera rays' walks
- * interleaved, then each pixel made and stored in turn as render_pixel
- * would, the second not begun if the first ends the region. */
-static int pixel_pair(renderer *r, const render_target *target, int i, int j)
-{
-    const tracer *t = &r->tracer;
-    render_stats *stats = &r->stats;
-    int w = stats->width, h = stats->height;
-    ray r0 = sample_ray(t, w, h, 1, i, j, 0, 0), r1 = sample_ray(t, w, h, 1, i + 1, j, 0, 0);
-    trace_found f[2];
-    trace_find_pair(t, &r0, &r1, f);
-    long media_lost = stats->trace.medium_overflow;
-    int status = pixel_done(r, target, i, j, pixel_found(t, &r0, &f[0], w, i, j, &stats->trace), media_lost);
-    if (status != STATUS_OK)
-        return status;
-    media_lost = stats->trace.medium_overflow;
-    return pixel_done(r, target, i + 1, j, pixel_found(t, &r1, &f[1], w, i + 1, j, &stats->trace), media_lost);
-}
-
 int renderer_region(renderer *r, const render_target *target)
 {
     render_stats *stats = &r->stats;
@@ -259,13 +194,16 @@ int renderer_region(renderer *r, const render_target *target)
     stats->trace.cancel = &r->cancel;
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
         for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
-            if (stats->samples == 1 && i + 1 < target->x1) {
-                status = pixel_pair(r, target, i++, j);
-                continue;
-            }
             long media_lost = stats->trace.medium_overflow;
             rgb c = render_pixel(&r->tracer, stats->width, stats->height, stats->samples, i, j, &stats->trace);
-            status = pixel_done(r, target, i, j, c, media_lost);
+            store(target, i, j, c);
+            if (cancel_stopped(&r->cancel))
+                status = STATUS_CANCELLED;
+            else if (stats->trace.tree_overflow || stats->trace.medium_overflow > media_lost) {
+                stats->overflow_x = i;
+                stats->overflow_y = j;
+                status = STATUS_DATA;
+            }
         }
         if (status == STATUS_OK && opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))
             status = STATUS_CANCELLED;

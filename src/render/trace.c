@@ -1022,34 +1022,3 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
         glass_first_of_tie(t, r, &h, media, st);
     return ray_colour(t, &nearest, met, &h, depth, media, key, NULL, st);
 }
-
-HINT_OUT_OF_LINE void trace_find_pair(const tracer *t, const ray *r0, const ray *r1, trace_found f[2])
-{
-    ray *r[2] = {&f[0].nearest, &f[1].nearest};
-    hit *h[2] = {&f[0].h, &f[1].h};
-    bvh_stats *bs[2] = {&f[0].bvh, &f[1].bvh};
-    int tied[2];
-    ray_copy(r[0], r0);
-    ray_copy(r[1], r1);
-    memset(bs[0], 0, sizeof *bs[0]);
-    memset(bs[1], 0, sizeof *bs[1]);
-    int met = bvh_intersect_pair(&t->accel, t->scene->prims, r, h, bs, tied);
-    f[0].met = met & 1;
-    f[1].met = met >> 1;
-    f[0].tied = tied[0];
-    f[1].tied = tied[1];
-}
-
-/* trace_ray's steps after its walk, in its order: the budget and the
- * cancel poll first (a ray they stop counts no walk, as in trace_ray). */
-rgb trace_ray_found(const tracer *t, const ray *r, trace_found *f, const medium_stack *media, uint64_t key,
-                    trace_stats *st)
-{
-    if (over_budget(t, st) || cancel_step(st->cancel))
-        return t->scene->image.background;
-    st->bvh.nodes_visited += f->bvh.nodes_visited;
-    st->bvh.prims_tested += f->bvh.prims_tested;
-    if (f->met && t->glass && f->tied > 1)
-        glass_first_of_tie(t, r, &f->h, media, st);
-    return ray_colour(t, &f->nearest, f->met, &f->h, 1, media, key, NULL, st);
-}

@@ -188,19 +188,6 @@ void tracer_no_shortcuts(tracer *t);
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,
               trace_stats *st);
 
-/* Two camera rays' nearest hits, found by one interleaved walk ahead of
- * their tracing (trace_ray_found); the walk changes nothing else. */
-typedef struct trace_found {
-    ray nearest;   /* the ray, its tmax the hit's t */
-    hit h;
-    int met, tied;
-    bvh_stats bvh; /* the walk's counts, added once the ray is traced */
-} trace_found;
-void trace_find_pair(const tracer *t, const ray *r0, const ray *r1, trace_found f[2]);
-/* trace_ray(t, r, 1, media, key, st) for a camera ray whose walk was f's. */
-rgb trace_ray_found(const tracer *t, const ray *r, trace_found *f, const medium_stack *media, uint64_t key,
-                    trace_stats *st);
-
 /* The medium stack of a ray that starts at point: the transparent solids
  * containing it, outermost first (a camera inside glass).  A sphere or box
  * contains the point when it is strictly inside (exact test in its frame); a
