@@ -468,6 +468,20 @@ static void light_ball(const scene_light *light, light_setup *setup)
         light_box(light, setup, size, spread_root);
 }
 
+/* [SHADE-SHORTCUT-DARK-2] What light_cell_dark needs of a shaded point,
+ * made by light_dark where the whole light is not dark: its gap and
+ * dist + reach bound |p - P| for every sample point p (all in the light's
+ * ball), a cell's ball bounds w.(p - P). */
+typedef struct light_view {
+    int some;             /* a cell may be dark: the rest is made */
+    vec3 m;               /* M = 2(N.V)N - V (lobe only) */
+    real n_at, n_u, n_v;  /* N.(position - P), N.t1, N.t2 */
+    real m_at, m_u, m_v;  /* the same of M (lobe only) */
+    real n_len, n_lim;    /* |N|; the N.L test's bound */
+    real m_len, m_lim;    /* |M|; the lobe test's bound */
+    int lobe;             /* Kd = 0 with a highlight: the lobe gate too */
+} light_view;
+
 /*
  * [SHADE-SHORTCUT-DARK-1] Whether every sample of a distributed light is
  * surely skipped at this point by add_source's own gates: N.L <= 0
@@ -484,12 +498,17 @@ static void light_ball(const scene_light *light, light_setup *setup)
  * relative precision: a scene 1e-160 across lost highlight pixels to this
  * shortcut before, test_shortcuts_dark_light_subnormal_distance).  The
  * margin E = 2^-20 covers it, and the rounding of this bound (|D| from the
- * scaled length) many times over.
+ * scaled length) many times over.  Where it returns 0, v->some says whether
+ * a grid cell may still be dark (the ball's least w.(p - P) within a
+ * bound), and then v holds N's and M's bounds for the cells.
  */
-static int light_dark(const surface *s, const light_setup *setup)
+static int light_dark(const surface *s, const light_setup *setup, light_view *v)
 {
     const real e = 0x1p-20;
     vec3 p = s->h->point;
+    v->some = v->lobe = 0;
+    v->m = vec_splat(0);
+    v->m_len = v->m_lim = 0;
     real size = vec_max_abs(p) + vec_max_abs(setup->centre) + setup->reach;
     if (!(setup->reach >= 0 && size < 0x1p400))
         return 0;
@@ -497,64 +516,46 @@ static int light_dark(const surface *s, const light_setup *setup)
     real dist = vec_length(d), gap = dist - setup->reach;
     if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
         return 0;
-    if (vec_dot(d, s->n) + setup->reach * sqrt(vec_length2(s->n)) <= -e * (dist + setup->reach))
+    real dn = vec_dot(d, s->n), spread = setup->reach * sqrt(vec_length2(s->n)), lim = -e * (dist + setup->reach);
+    if (dn + spread <= lim)
         return 1;
+    v->n_len = sqrt(vec_length2(s->n));
+    v->n_lim = lim;
+    v->some = dn - spread <= lim;
     if (!s->no_body)
         return 0;
     if (!s->highlight)
         return 1;
     vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
-    real top = vec_dot(d, m) + setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
-    return top <= floor * (floor >= 0 ? gap : dist + setup->reach);
+    real dm = vec_dot(d, m), m_spread = setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
+    real m_lim = floor * (floor >= 0 ? gap : dist + setup->reach);
+    if (dm + m_spread <= m_lim)
+        return 1;
+    v->lobe = 1;
+    v->m = m;
+    v->m_len = sqrt(vec_length2(m));
+    v->m_lim = m_lim;
+    v->some |= dm - m_spread <= m_lim;
+    return 0;
 }
 
 /*
- * [SHADE-SHORTCUT-DARK-2] light_dark's test for one sample's grid cell:
- * what it needs of the shaded point, made once a point where the whole
- * light is not dark.  Its gap and dist + reach bound |p - P| for every
- * sample point p (all in the light's ball), the cell's ball bounds w.(p - P).
+ * [SHADE-SHORTCUT-DARK-2] The rest of light_cell_dark's view, where some
+ * cell may be dark (v->some): the dot products of N (and M) with the
+ * light's position and frame, once a point.
  */
-typedef struct light_view {
-    real n_at, n_u, n_v;  /* N.(position - P), N.t1, N.t2 */
-    real m_at, m_u, m_v;  /* the same of M = 2(N.V)N - V (lobe only) */
-    real n_len, n_lim;    /* |N|; the N.L test's bound */
-    real m_len, m_lim;    /* |M|; the lobe test's bound */
-    int lobe;             /* Kd = 0 with a highlight: the lobe gate too */
-} light_view;
-
-/* 1 and *v made where light_dark's bounds hold at s and some cell may be
- * dark (the whole ball's least w.(p - P) is within a test's bound); 0
- * otherwise, and no cell is then skipped. */
-static int light_view_make(const surface *s, const scene_light *light, const light_setup *setup, light_view *v)
+static void light_view_fill(const surface *s, const scene_light *light, const light_setup *setup, light_view *v)
 {
-    const real e = 0x1p-20;
-    vec3 p = s->h->point;
-    real size = vec_max_abs(p) + vec_max_abs(setup->centre) + setup->reach;
-    if (!(setup->reach >= 0 && size < 0x1p400))
-        return 0;
-    vec3 d = vec_sub(setup->centre, p), at = vec_sub(light->position, p);
-    real dist = vec_length(d), gap = dist - setup->reach;
-    if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
-        return 0;
-    v->n_len = sqrt(vec_length2(s->n));
-    v->n_lim = -e * (dist + setup->reach);
+    vec3 at = vec_sub(light->position, s->h->point);
     v->n_at = vec_dot(at, s->n);
     v->n_u = vec_dot(setup->t1, s->n);
     v->n_v = vec_dot(setup->t2, s->n);
-    int some = vec_dot(d, s->n) - setup->reach * v->n_len <= v->n_lim;
-    v->lobe = s->no_body && s->highlight;
-    v->m_at = v->m_u = v->m_v = v->m_len = v->m_lim = 0;
+    v->m_at = v->m_u = v->m_v = 0;
     if (v->lobe) {
-        real floor = s->lobe_floor - e;
-        vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
-        v->m_len = sqrt(vec_length2(m));
-        v->m_lim = floor * (floor >= 0 ? gap : dist + setup->reach);
-        v->m_at = vec_dot(at, m);
-        v->m_u = vec_dot(setup->t1, m);
-        v->m_v = vec_dot(setup->t2, m);
-        some |= vec_dot(d, m) - setup->reach * v->m_len <= v->m_lim;
+        v->m_at = vec_dot(at, v->m);
+        v->m_u = vec_dot(setup->t1, v->m);
+        v->m_v = vec_dot(setup->t2, v->m);
     }
-    return some;
 }
 
 /* Whether every point within reach of the cell's centre (and in the
@@ -683,7 +684,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     /* [SHADE-SHORTCUT-DARK-1] Every sample would add nothing and send no
      * shadow ray: none is made.  The ray-tree hash notes each sample's side
      * of the light, so it takes them one by one. */
-    if (!t->no_shortcuts && !st->record_path && light_dark(s, setup)) {
+    light_view view;
+    view.some = 0;
+    if (!t->no_shortcuts && !st->record_path && light_dark(s, setup, &view)) {
         st->light_samples += setup->samples;
         st->dark_lights++;
         cancel_steps(st->cancel, setup->samples);
@@ -703,21 +706,22 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     /* [SHADE-SHORTCUT-DARK-2] A sample whose cell is dark is skipped by
      * add_source's gates wherever in the cell it lies: no point is made
      * for it, and it counts as add_source counts it. */
-    light_view view;
-    int by_cell = !t->no_shortcuts && !st->record_path && setup->cells && light_view_make(s, light, setup, &view);
+    int by_cell = view.some && setup->cells;
+    if (by_cell)
+        light_view_fill(s, light, setup, &view);
     vec3 points[LIGHT_POINT_BATCH];
-    unsigned char dark[LIGHT_POINT_BATCH];
     for (int j0 = 0; j0 < setup->samples; j0 += LIGHT_POINT_BATCH) {
         int n = setup->samples - j0 < LIGHT_POINT_BATCH ? setup->samples - j0 : LIGHT_POINT_BATCH;
-        for (int k = 0; k < n; k++) {
-            dark[k] = by_cell && light_cell_dark(&view, setup->cells[j0 + k], setup->cell_reach);
-            if (!dark[k])
+        uint64_t dark = 0;   /* bit k: sample j0 + k's cell is dark (LIGHT_POINT_BATCH = 64 bits) */
+        for (int k = 0; by_cell && k < n; k++)
+            dark |= (uint64_t)light_cell_dark(&view, setup->cells[j0 + k], setup->cell_reach) << k;
+        for (int k = 0; k < n; k++)
+            if (!(dark >> k & 1))
                 points[k] = light_point_keyed(light, setup, light_key, j0 + k);
-        }
         for (int k = 0; k < n; k++) {
             if (cancel_step(st->cancel))
                 return;
-            if (dark[k]) {
+            if (dark >> k & 1) {
                 st->light_samples++;
                 st->dark_cells++;
             } else
