@@ -623,6 +623,52 @@ START_TEST(test_shortcuts_dark_light_ball_holds_samples)
 END_TEST
 
 /*
+ * [SHADE-SHORTCUT-DARK-2] Each cell's ball (tracer_build's cells and
+ * cell_reach) holds every sample point trace_light_point makes in that
+ * cell: a tilted disk far from the origin, grids of 4 (2x2), 12 (3x4) and
+ * 36 (6x6) samples, 20 000 keys.  The centre is formed here from the
+ * disk's frame, not read back from the cell's test.  A reach of 1.0 for
+ * 1.5 times the half diagonal, or the centre of the next cell, fails.
+ */
+START_TEST(test_shortcuts_dark_cell_ball_holds_samples)
+{
+    static const int counts[] = {4, 12, 36};
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        char text[512];
+        snprintf(text, sizeof text,
+                 "image { width 1 height 1 }\n"
+                 "camera { eye [0, 0, 5] look_at [0, 0, 0] }\n"
+                 "distributed_light { disk [1000.5, -3, 7] [0.3, -1, 0.6] 2.5 power 1 samples %d }\n"
+                 "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n",
+                 counts[c]);
+        scene_model *s = load(text);
+        tracer t;
+        ck_assert(tracer_init(&t, s, 0, 0));
+        const light_setup *setup = &t.lights[0];
+        ck_assert_ptr_nonnull(setup->cells);
+        double worst = 0;   /* the largest distance over reach; a NaN stays */
+        int worst_j = 0;
+        for (uint64_t key = 0; key < 20000; key++)
+            for (int j = 0; j < counts[c]; j++) {
+                vec3 p = trace_light_point(&s->lights[0], setup, 0, key, j);
+                vec3 centre = vec_add(s->lights[0].position, vec_add(vec_scale(setup->t1, setup->cells[j].u),
+                                                                     vec_scale(setup->t2, setup->cells[j].v)));
+                double r = vec_length(vec_sub(p, centre)) / setup->cell_reach;
+                if (worst == worst && !(r <= worst)) {
+                    worst = r;
+                    worst_j = j;
+                }
+            }
+        ck_assert_msg(worst <= 1, "%d samples, cell %d: %.17g of the reach", counts[c], worst_j, worst);
+        /* Not loose by much: the cells' samples come within 0.4 of it. */
+        ck_assert_msg(worst > 0.4, "%d samples: %.17g of the reach", counts[c], worst);
+        tracer_free(&t);
+        scene_free(s);
+    }
+}
+END_TEST
+
+/*
  * [SHADE-SHORTCUT-DARK-1] Whole lights left out at a point: a ball under a
  * disk light and a rectangle light (each large: a ball of reach 0 would
  * leave out samples near the terminator and the highlights' rims), an
@@ -652,6 +698,11 @@ START_TEST(test_shortcuts_dark_lights_both_ways)
         ck_assert_msg(st_on.trace.dark_lights > 0, "%s: no light left out", materials[i]);
         ck_assert_int_eq(st_off.trace.dark_lights, 0);
         ck_assert_int_eq(st_on.trace.light_samples, st_off.trace.light_samples);
+        /* [SHADE-SHORTCUT-DARK-2] The disk's cells on the terminator (Ks 0
+         * with Kd 0 leaves the lights out whole, so none there). */
+        ck_assert_msg(st_on.trace.dark_cells > 0 || i == sizeof materials / sizeof materials[0] - 1,
+                      "%s: no cell left out", materials[i]);
+        ck_assert_int_eq(st_off.trace.dark_cells, 0);
     }
 }
 END_TEST
@@ -1138,6 +1189,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_test(tc, test_shortcuts_dark_light_ball_holds_samples);
+    tcase_add_test(tc, test_shortcuts_dark_cell_ball_holds_samples);
     tcase_add_test(tc, test_shortcuts_dark_lights_both_ways);
     tcase_add_test(tc, test_shortcuts_dark_light_subnormal_distance);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);

@@ -49,6 +49,8 @@ typedef struct surface {
     const glass_contact *touch; /* glass met at a mirror ray's start: the opaque surface there (NULL: none) */
 } surface;
 
+static int light_cells_build(tracer *t, const scene_model *s);
+
 int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_samples)
 {
     return tracer_build(t, s, max_depth, light_samples, NULL) == STATUS_OK;
@@ -102,6 +104,10 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
         t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     }
+    if (!light_cells_build(t, s)) {
+        tracer_free(t);
+        return STATUS_NO_MEMORY;
+    }
     t->camera_half = camera_half(&s->camera);
     if (s->camera.kind == CAMERA_PERSPECTIVE) {
         trace_stats none;
@@ -131,12 +137,15 @@ void tracer_free(tracer *t)
     bvh_free(&t->accel);
     if (t->scene) {
         mem_free(&t->scene->mem, t->lights, (size_t)t->scene->light_count * sizeof *t->lights);
+        mem_free(&t->scene->mem, t->cells, (size_t)t->cell_count * sizeof *t->cells);
         mem_free(&t->scene->mem, t->lobe_floors, (size_t)t->scene->material_count * sizeof *t->lobe_floors);
         mem_free(&t->scene->mem, t->material_terms, (size_t)t->scene->material_count * sizeof *t->material_terms);
         glass_near_free(t);
         gather_alone_free(t);
     }
     t->lights = NULL;
+    t->cells = NULL;
+    t->cell_count = 0;
     t->lobe_floors = NULL;
     t->material_terms = NULL;
 }
@@ -459,6 +468,20 @@ static void light_ball(const scene_light *light, light_setup *setup)
         light_box(light, setup, size, spread_root);
 }
 
+/* [SHADE-SHORTCUT-DARK-2] What light_cell_dark needs of a shaded point,
+ * made by light_dark where the whole light is not dark: its gap and
+ * dist + reach bound |p - P| for every sample point p (all in the light's
+ * ball), a cell's ball bounds w.(p - P). */
+typedef struct light_view {
+    int some;             /* a cell may be dark: the rest is made */
+    vec3 m;               /* M = 2(N.V)N - V (lobe only) */
+    real n_at, n_u, n_v;  /* N.(position - P), N.t1, N.t2 */
+    real m_at, m_u, m_v;  /* the same of M (lobe only) */
+    real n_len, n_lim;    /* |N|; the N.L test's bound */
+    real m_len, m_lim;    /* |M|; the lobe test's bound */
+    int lobe;             /* Kd = 0 with a highlight: the lobe gate too */
+} light_view;
+
 /*
  * [SHADE-SHORTCUT-DARK-1] Whether every sample of a distributed light is
  * surely skipped at this point by add_source's own gates: N.L <= 0
@@ -475,12 +498,17 @@ static void light_ball(const scene_light *light, light_setup *setup)
  * relative precision: a scene 1e-160 across lost highlight pixels to this
  * shortcut before, test_shortcuts_dark_light_subnormal_distance).  The
  * margin E = 2^-20 covers it, and the rounding of this bound (|D| from the
- * scaled length) many times over.
+ * scaled length) many times over.  Where it returns 0, v->some says whether
+ * a grid cell may still be dark (the ball's least w.(p - P) within a
+ * bound), and then v holds N's and M's bounds for the cells.
  */
-static int light_dark(const surface *s, const light_setup *setup)
+static int light_dark(const surface *s, const light_setup *setup, light_view *v)
 {
     const real e = 0x1p-20;
     vec3 p = s->h->point;
+    v->some = v->lobe = 0;
+    v->m = vec_splat(0);
+    v->m_len = v->m_lim = 0;
     real size = vec_max_abs(p) + vec_max_abs(setup->centre) + setup->reach;
     if (!(setup->reach >= 0 && size < 0x1p400))
         return 0;
@@ -488,15 +516,112 @@ static int light_dark(const surface *s, const light_setup *setup)
     real dist = vec_length(d), gap = dist - setup->reach;
     if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
         return 0;
-    if (vec_dot(d, s->n) + setup->reach * sqrt(vec_length2(s->n)) <= -e * (dist + setup->reach))
+    real dn = vec_dot(d, s->n), spread = setup->reach * sqrt(vec_length2(s->n)), lim = -e * (dist + setup->reach);
+    if (dn + spread <= lim)
         return 1;
+    v->n_len = sqrt(vec_length2(s->n));
+    v->n_lim = lim;
+    v->some = dn - spread <= lim;
     if (!s->no_body)
         return 0;
     if (!s->highlight)
         return 1;
     vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
-    real top = vec_dot(d, m) + setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
-    return top <= floor * (floor >= 0 ? gap : dist + setup->reach);
+    real dm = vec_dot(d, m), m_spread = setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
+    real m_lim = floor * (floor >= 0 ? gap : dist + setup->reach);
+    if (dm + m_spread <= m_lim)
+        return 1;
+    v->lobe = 1;
+    v->m = m;
+    v->m_len = sqrt(vec_length2(m));
+    v->m_lim = m_lim;
+    v->some |= dm - m_spread <= m_lim;
+    return 0;
+}
+
+/*
+ * [SHADE-SHORTCUT-DARK-2] The rest of light_cell_dark's view, where some
+ * cell may be dark (v->some): the dot products of N (and M) with the
+ * light's position and frame, once a point.
+ */
+static void light_view_fill(const surface *s, const scene_light *light, const light_setup *setup, light_view *v)
+{
+    vec3 at = vec_sub(light->position, s->h->point);
+    v->n_at = vec_dot(at, s->n);
+    v->n_u = vec_dot(setup->t1, s->n);
+    v->n_v = vec_dot(setup->t2, s->n);
+    v->m_at = v->m_u = v->m_v = 0;
+    if (v->lobe) {
+        v->m_at = vec_dot(at, v->m);
+        v->m_u = vec_dot(setup->t1, v->m);
+        v->m_v = vec_dot(setup->t2, v->m);
+    }
+}
+
+/* Whether every point within reach of the cell's centre (and in the
+ * light's ball) is surely skipped by add_source's N.L or lobe gate at v's
+ * point: w.(C - P) formed as w.(position - P) + u w.t1 + v w.t2. */
+static int light_cell_dark(const light_view *v, light_cell c, real reach)
+{
+    if (v->n_at + c.u * v->n_u + c.v * v->n_v + reach * v->n_len <= v->n_lim)
+        return 1;
+    return v->lobe && v->m_at + c.u * v->m_u + c.v * v->m_v + reach * v->m_len <= v->m_lim;
+}
+
+/*
+ * [SHADE-SHORTCUT-DARK-2] The centre of each sample's grid cell on a disk
+ * light (light_point of the cell's middle) and one reach for all: the
+ * concentric map is 1.5-Lipschitz (spec/shading.md), a cell's (a, b) lie
+ * within sqrt(1/cols^2 + 1/rows^2) of its middle, and |t1 x + t2 y| <=
+ * |(x, y)| spread_root as in light_ball; the factor 1 + 2^-30 and the term
+ * 2^-40 4 size cover the rounding as there.  Only a disk with a ball
+ * (reach >= 0) and at least 4 samples; TRACE_CELLS_MAX centres in all.
+ */
+static int light_cells_wanted(const scene_light *light, const light_setup *setup)
+{
+    return light->kind == LIGHT_DISK && setup->reach >= 0 && setup->samples >= 4 &&
+           setup->samples <= TRACE_CELLS_MAX;
+}
+
+static void light_cells_fill(const scene_light *light, light_setup *setup, light_cell *cells)
+{
+    light_grid g = setup->grid;
+    real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
+    real spread_root = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
+    real size = vec_max_abs(light->position) + light->radius;
+    real half = sqrt(1.0 / ((real)g.cols * g.cols) + 1.0 / ((real)g.rows * g.rows));
+    for (int j = 0; j < setup->samples; j++) {
+        double a, b;
+        light_cell_point(g, j, 0.5, 0.5, &a, &b);
+        double x, y;
+        light_concentric(a, b, &x, &y);
+        cells[j].u = x * light->radius;
+        cells[j].v = y * light->radius;
+    }
+    setup->cells = cells;
+    setup->cell_reach = light->radius * (1.5 * half) * spread_root * (1 + 0x1p-30) + 0x1p-40 * 4 * size;
+}
+
+/* 0: out of memory. */
+static int light_cells_build(tracer *t, const scene_model *s)
+{
+    int total = 0;
+    for (int i = 0; i < s->light_count; i++)
+        if (light_cells_wanted(&s->lights[i], &t->lights[i]) && total + t->lights[i].samples <= TRACE_CELLS_MAX)
+            total += t->lights[i].samples;
+    if (total == 0)
+        return 1;
+    t->cells = mem_calloc(&s->mem, (size_t)total, sizeof *t->cells);
+    if (!t->cells)
+        return 0;
+    t->cell_count = total;
+    int at = 0;
+    for (int i = 0; i < s->light_count; i++)
+        if (light_cells_wanted(&s->lights[i], &t->lights[i]) && at + t->lights[i].samples <= total) {
+            light_cells_fill(&s->lights[i], &t->lights[i], t->cells + at);
+            at += t->lights[i].samples;
+        }
+    return 1;
 }
 
 light_setup trace_light_setup(const scene_light *light, int samples)
@@ -559,7 +684,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     /* [SHADE-SHORTCUT-DARK-1] Every sample would add nothing and send no
      * shadow ray: none is made.  The ray-tree hash notes each sample's side
      * of the light, so it takes them one by one. */
-    if (!t->no_shortcuts && !st->record_path && light_dark(s, setup)) {
+    light_view view;
+    view.some = 0;
+    if (!t->no_shortcuts && !st->record_path && light_dark(s, setup, &view)) {
         st->light_samples += setup->samples;
         st->dark_lights++;
         cancel_steps(st->cancel, setup->samples);
@@ -576,15 +703,29 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
      * (light, setup, key, j): the same points, added in the same order, and
      * cancel_step is asked before each sample as before; a cancelled batch
      * made points it does not use. */
+    /* [SHADE-SHORTCUT-DARK-2] A sample whose cell is dark is skipped by
+     * add_source's gates wherever in the cell it lies: no point is made
+     * for it, and it counts as add_source counts it. */
+    int by_cell = view.some && setup->cells;
+    if (by_cell)
+        light_view_fill(s, light, setup, &view);
     vec3 points[LIGHT_POINT_BATCH];
     for (int j0 = 0; j0 < setup->samples; j0 += LIGHT_POINT_BATCH) {
         int n = setup->samples - j0 < LIGHT_POINT_BATCH ? setup->samples - j0 : LIGHT_POINT_BATCH;
+        uint64_t dark = 0;   /* bit k: sample j0 + k's cell is dark (LIGHT_POINT_BATCH = 64 bits) */
+        for (int k = 0; by_cell && k < n; k++)
+            dark |= (uint64_t)light_cell_dark(&view, setup->cells[j0 + k], setup->cell_reach) << k;
         for (int k = 0; k < n; k++)
-            points[k] = light_point_keyed(light, setup, light_key, j0 + k);
+            if (!(dark >> k & 1))
+                points[k] = light_point_keyed(light, setup, light_key, j0 + k);
         for (int k = 0; k < n; k++) {
             if (cancel_step(st->cancel))
                 return;
-            add_source(t, s, light, &points[k], &setup->power, &bundle, sum, st);
+            if (dark >> k & 1) {
+                st->light_samples++;
+                st->dark_cells++;
+            } else
+                add_source(t, s, light, &points[k], &setup->power, &bundle, sum, st);
         }
     }
 }

@@ -32,6 +32,7 @@ typedef struct trace_stats {
     long light_samples;       /* point-source evaluations, distributed samples each */
     long lights_on_surface;   /* samples skipped: the light sits on the shaded point */
     long dark_lights;
+    long dark_cells;          /* samples not made: their cell is dark ([SHADE-SHORTCUT-DARK-2]) */
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
@@ -57,6 +58,14 @@ typedef struct trace_stats {
     bvh_ref blocker[TRACE_BLOCKERS];
 } trace_stats;
 
+/* The most cell centres of disk lights a tracer keeps ([SHADE-SHORTCUT-DARK-2]). */
+enum { TRACE_CELLS_MAX = 4096 };
+
+/* A grid cell's centre on a disk light: position + u t1 + v t2. */
+typedef struct light_cell {
+    real u, v;
+} light_cell;
+
 /* Per-light data computed once: the stratification and a disk's frame. */
 typedef struct light_setup {
     int samples;        /* point sources this render uses for the light */
@@ -75,6 +84,11 @@ typedef struct light_setup {
     /* A distant light: |L| = vec_length(-direction), the length its shadow
      * rays' tmin divides by (ray_shadow_along_sized), made once. */
     real along_length;
+    /* Sample j's point lies within cell_reach of cells[j], the centre of
+     * its grid cell; NULL for a rectangle, a point light, or past
+     * TRACE_CELLS_MAX: tracer_build's ([SHADE-SHORTCUT-DARK-2]). */
+    const light_cell *cells;
+    real cell_reach;
 } light_setup;
 
 /* The transparent solids a ray is inside, innermost last (nested glass).
@@ -95,6 +109,8 @@ typedef struct tracer {
     const scene_model *scene;
     bvh accel;
     light_setup *lights;
+    light_cell *cells;        /* the disk lights' cell centres, TRACE_CELLS_MAX at most in all */
+    int cell_count;
     real *lobe_floors;        /* per material: shade's V.R floor of a Kd = 0 surface's lobe
                                  ([SHADE-SHORTCUT-LOBE-2]), made once, not per shaded point */
     int *material_terms;      /* per material: TRACE_KS (Ks > 0) and TRACE_NO_BODY (Kd = 0), once, not
