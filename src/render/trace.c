@@ -684,8 +684,9 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     /* [SHADE-SHORTCUT-DARK-1] Every sample would add nothing and send no
      * shadow ray: none is made.  The ray-tree hash notes each sample's side
      * of the light, so it takes them one by one. */
-    light_view view;
-    view.some = 0;
+    /* Whole: it is read only where light_dark set some, which gcc at -O1
+     * and -Os cannot see (maybe-uninitialized under -Werror). */
+    light_view view = {0};
     if (!t->no_shortcuts && !st->record_path && light_dark(s, setup, &view)) {
         st->light_samples += setup->samples;
         st->dark_lights++;
