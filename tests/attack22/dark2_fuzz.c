@@ -3,7 +3,7 @@
  * light_cells_fill, light_view_fill, light_cell_dark) against add_source's
  * own gates, sample by sample.  trace.c is included for its static
  * functions.  For a random disk light (any normal, radius 1e-6 .. 10 of
- * the scale 1e-6 .. 1e6, moved up to 1e12, 4 .. 4096 samples) and a shaded point
+ * the scale 1e-6 .. 1e6 (SPAN), moved up to 1e12, 4 .. 4096 samples) and a shaded point
  * (unit N and V, Kd > 0 or Kd = 0 with a lobe of n 1 .. 1e7) placed so
  * that the plane N.(x - P) = 0 or the lobe's edge cuts the disk (P within
  * 1e-6 .. 10 radii of it, or, a quarter of the cases, just outside the
@@ -19,8 +19,9 @@
  * |p - C_j| over cell_reach seen.  From the repository root after
  * `make build/refray build/librefray-internal.a`:
  *   cc -std=c99 -O2 -ffp-contract=off -Isrc -Ibuild/gen -o /tmp/d2f \
- *      tests/attack22/dark2_fuzz.c build/librefray-internal.a -ljansson -lm && /tmp/d2f 20000 [SEED [FACTOR]]
+ *      tests/attack22/dark2_fuzz.c build/librefray-internal.a -ljansson -lm && /tmp/d2f 20000 [SEED [FACTOR [SPAN]]]
  * FACTOR (default 1) scales cell_reach: a mutant's check (2/3: 1.0 h for 1.5 h).
+ * SPAN (default 6): the scale is 10^-SPAN .. 10^SPAN.
  * -DTRACE_C='"FILE"' includes a patched copy of trace.c in its place (the
  * README's mutants).  Every case also checks the lemma alone: 32 points of
  * random cells against their ball; a point outside it exits 1 too.
@@ -88,10 +89,12 @@ int main(int argc, char **argv)
     rng = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
     /* a mutant's cell reach: the factor 1.5 h replaced by 1.5 h times this */
     double mutant = argc > 3 ? atof(argv[3]) : 1;
+    /* the scale 10^-SPAN .. 10^SPAN (default 6) */
+    int span = argc > 4 ? atoi(argv[4]) : 6;
     long bad = 0, near = 0, outside = 0, lemma = 0, lobe_cells = 0, dark_cells = 0, some = 0, points = 0, scenes_dark = 0;
     double tight = 0;
     for (long c = 0; c < n; c++) {
-        double S = pow(10, RI(-6, 6)) * (U() < 0.5 ? 1 : 1 + U());
+        double S = pow(10, RI(-span, span)) * (U() < 0.5 ? 1 : 1 + U());
         double T = U() < 0.5 ? 0 : pow(10, RI(0, 12)) * (U() < 0.5 ? 1 : -1);
         scene_light light;
         memset(&light, 0, sizeof light);
