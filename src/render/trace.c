@@ -430,6 +430,20 @@ static void light_box(const scene_light *light, light_setup *setup, real size, r
     setup->box_hi = vec_make(hi[0], hi[1], hi[2]);
 }
 
+/* A disk's frame spread: |t1 x + t2 y| <= |(x, y)| disk_spread_root
+ * (light_ball), and the magnitude of its coordinates, the size its
+ * rounding terms scale with. */
+static real disk_spread_root(const light_setup *setup)
+{
+    real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
+    return sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
+}
+
+static real disk_size(const scene_light *light)
+{
+    return vec_max_abs(light->position) + light->radius;
+}
+
 /*
  * [SHADE-SHORTCUT-DARK-1] The ball around a distributed light that holds
  * every point light_point returns.  A disk's point is position + t1 (x r) +
@@ -445,9 +459,8 @@ static void light_ball(const scene_light *light, light_setup *setup)
     real size, spread_root = 0;
     setup->reach = -1;
     if (light->kind == LIGHT_DISK) {
-        real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
-        spread_root = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
-        size = vec_max_abs(light->position) + light->radius;
+        spread_root = disk_spread_root(setup);
+        size = disk_size(light);
         setup->centre = light->position;
         setup->reach = light->radius * spread_root;
     } else if (light->kind == LIGHT_RECTANGLE) {
@@ -500,15 +513,13 @@ typedef struct light_view {
  * margin E = 2^-20 covers it, and the rounding of this bound (|D| from the
  * scaled length) many times over.  Where it returns 0, v->some says whether
  * a grid cell may still be dark (the ball's least w.(p - P) within a
- * bound), and then v holds N's and M's bounds for the cells.
+ * bound), and then v holds N's and M's bounds for the cells; v comes
+ * zeroed (add_distributed's), so a field left unset reads 0.
  */
 static int light_dark(const surface *s, const light_setup *setup, light_view *v)
 {
     const real e = 0x1p-20;
     vec3 p = s->h->point;
-    v->some = v->lobe = 0;
-    v->m = vec_splat(0);
-    v->m_len = v->m_lim = 0;
     real size = vec_max_abs(p) + vec_max_abs(setup->centre) + setup->reach;
     if (!(setup->reach >= 0 && size < 0x1p400))
         return 0;
@@ -586,9 +597,7 @@ static int light_cells_wanted(const scene_light *light, const light_setup *setup
 static void light_cells_fill(const scene_light *light, light_setup *setup, light_cell *cells)
 {
     light_grid g = setup->grid;
-    real t11 = vec_length2(setup->t1), t22 = vec_length2(setup->t2);
-    real spread_root = sqrt((t11 > t22 ? t11 : t22) + fabs(vec_dot(setup->t1, setup->t2)));
-    real size = vec_max_abs(light->position) + light->radius;
+    real spread_root = disk_spread_root(setup), size = disk_size(light);
     real half = sqrt(1.0 / ((real)g.cols * g.cols) + 1.0 / ((real)g.rows * g.rows));
     for (int j = 0; j < setup->samples; j++) {
         double a, b;
@@ -684,8 +693,10 @@ static void add_distributed(const tracer *t, const surface *s, int index, uint64
     /* [SHADE-SHORTCUT-DARK-1] Every sample would add nothing and send no
      * shadow ray: none is made.  The ray-tree hash notes each sample's side
      * of the light, so it takes them one by one. */
-    /* Whole: it is read only where light_dark set some, which gcc at -O1
-     * and -Os cannot see (maybe-uninitialized under -Werror). */
+    /* Zeroed whole, once: light_dark sets only what it finds (and is not
+     * called with the shortcuts off), and gcc at -O1 and -Os cannot see
+     * that the rest is read only where it set some (maybe-uninitialized
+     * under -Werror). */
     light_view view = {0};
     if (!t->no_shortcuts && !st->record_path && light_dark(s, setup, &view)) {
         st->light_samples += setup->samples;
