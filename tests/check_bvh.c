@@ -6,6 +6,7 @@
 #include <string.h>
 #include "testlib.h"
 #include "render/bvh.h"
+#include "render/bvh_beam.h"
 #include "render/slab.h"
 #include "render/slab_pair.h"
 #include "base/xform.h"
@@ -1153,6 +1154,252 @@ START_TEST(test_bvh_grid_100k_visits_few_nodes)
 }
 END_TEST
 
+/* [BVH-BEAM-1] A run of n camera-like rays from o: unit directions about
+ * fwd, spread along side by step each (a row of pixels), all tmin 0 and
+ * tmax +inf.  spread 0 gives n copies of one ray. */
+static void beam_run(rng *g, vec3 o, vec3 fwd, double step, int n, ray *rays)
+{
+    vec3 side = vec_normalize(vec_cross(fwd, rng_unit(g))), up = vec_normalize(vec_cross(side, fwd));
+    double y = rng_range(g, -1, 1) * step * n;
+    for (int i = 0; i < n; i++) {
+        rays[i].origin = o;
+        rays[i].dir = vec_normalize(vec_add(fwd, vec_add(vec_scale(side, (i - 0.5 * n) * step), vec_scale(up, y))));
+        rays[i].tmin = 0;
+        rays[i].tmax = INFINITY;
+    }
+}
+
+/* A box about a point of ray r (sometimes off it, flat, or with a bound on
+ * the origin's own coordinate). */
+static void beam_box(rng *g, const ray *r, vec3 *lo, vec3 *hi)
+{
+    vec3 c = vec_add(r->origin, vec_scale(r->dir, rng_range(g, -2, 20)));
+    c = vec_add(c, vec_scale(rng_unit(g), rng_range(g, 0, 1) * rng_range(g, 0, 1)));
+    vec3 e = rng_box(g, 0, rng_range(g, 1e-3, 1));
+    if (rng_uniform(g) < 0.2)
+        e.y = 0;
+    *lo = vec_sub(c, e);
+    *hi = vec_add(c, e);
+    if (rng_uniform(g) < 0.1)
+        lo->x = r->origin.x;
+    if (rng_uniform(g) < 0.1)
+        hi->z = r->origin.z;
+}
+
+/* Whether the pruned tree of the three-node tree (root, a, a + 1) keeps
+ * child k: the pair form of the beam test read through bvh_beam_prune. */
+static int beam_kept(const bvh_beam_tree *t, const bvh_node *nodes, int k)
+{
+    if (t->count == 3)
+        return 1;
+    return t->count == 1 && t->nodes[0].first == nodes[1 + k].first;
+}
+
+START_TEST(test_bvh_beam_meets_every_box_a_ray_meets)
+{
+    rng g = {2301, 0};
+    ray rays[64];
+    long met = 0, refused = 0, beam_only = 0, runs = 0;
+    for (int i = 0; i < 3000; i++) {
+        int n = 1 + (int)(rng_uniform(&g) * 64);
+        double step = i % 4 == 0 ? 0 : pow(10, rng_range(&g, -5, -1));
+        beam_run(&g, rng_box(&g, -10, 10), rng_unit(&g), step, n, rays);
+        bvh_beam beam;
+        if (!bvh_beam_bounds(rays, n, &beam)) {
+            refused++;
+            continue;
+        }
+        runs++;
+        for (int j = 0; j < 20; j++) {
+            bvh_node nodes[3];
+            beam_box(&g, &rays[(int)(rng_uniform(&g) * n)], &nodes[1].lo, &nodes[1].hi);
+            beam_box(&g, &rays[(int)(rng_uniform(&g) * n)], &nodes[2].lo, &nodes[2].hi);
+            int any[2] = {0, 0}, by_beam[2];
+            for (int k = 0; k < 2; k++) {
+                for (int q = 0; q < n; q++) {
+                    slab_ray sr = slab_make(&rays[q]);
+                    real enter;
+                    any[k] |= slab_box_meets(nodes[1 + k].lo, nodes[1 + k].hi, &sr, 0, INFINITY, &enter);
+                }
+                by_beam[k] = bvh_beam_meets(&beam, nodes[1 + k].lo, nodes[1 + k].hi);
+                ck_assert_msg(!any[k] || by_beam[k], "run %d box %d: a ray meets it, the beam fails it", i, j);
+                met += any[k];
+                beam_only += by_beam[k] && !any[k];
+            }
+            /* The pair form: the children's kept flags are the scalar test's. */
+            nodes[0].lo = vec_min(nodes[1].lo, nodes[2].lo);
+            nodes[0].hi = vec_max(nodes[1].hi, nodes[2].hi);
+            nodes[0].first = 1;
+            nodes[0].count = 0;
+            nodes[1].first = 0;
+            nodes[2].first = 1;
+            nodes[1].count = nodes[2].count = 1;
+            bvh tree;
+            memset(&tree, 0, sizeof tree);
+            tree.nodes = nodes;
+            tree.node_count = 3;
+            bvh_node out[3];
+            bvh_beam_tree t = {out, 3, -1};
+            bvh_beam_prune(&tree, &beam, &t);
+            ck_assert_int_ge(t.count, 0);
+            if (bvh_beam_meets(&beam, nodes[0].lo, nodes[0].hi))
+                for (int k = 0; k < 2; k++)
+                    ck_assert_msg(beam_kept(&t, nodes, k) == by_beam[k], "run %d box %d: child %d kept %d, met %d", i,
+                                  j, k, beam_kept(&t, nodes, k), by_beam[k]);
+        }
+    }
+    /* Not vacuous: rays meet boxes, the beam fails some, runs were made. */
+    ck_assert_int_gt(runs, 2000);
+    ck_assert_int_gt(met, 10000);
+    ck_assert_int_gt(runs * 40 - met - beam_only, 10000);
+    ck_assert_int_lt(refused, 1000);
+}
+END_TEST
+
+/* The beam refuses what [BVH-BEAM-1] does not cover. */
+START_TEST(test_bvh_beam_refuses_other_rays)
+{
+    rng g = {2302, 0};
+    ray rays[4];
+    bvh_beam beam;
+    beam_run(&g, vec_make(1, 2, 3), vec_normalize(vec_make(1, 1, 1)), 1e-3, 4, rays);
+    ck_assert(bvh_beam_bounds(rays, 4, &beam));
+    ck_assert(!bvh_beam_bounds(rays, 0, &beam));
+    ray other[4];
+    memcpy(other, rays, sizeof rays);
+    other[2].origin.y = nextafter(other[2].origin.y, 10);
+    ck_assert(!bvh_beam_bounds(other, 4, &beam));
+    memcpy(other, rays, sizeof rays);
+    other[3].tmin = 1e-9;
+    ck_assert(!bvh_beam_bounds(other, 4, &beam));
+    memcpy(other, rays, sizeof rays);
+    other[1].tmax = 1e9;
+    ck_assert(!bvh_beam_bounds(other, 4, &beam));
+    memcpy(other, rays, sizeof rays);
+    other[1].dir.x = -other[1].dir.x;
+    ck_assert(!bvh_beam_bounds(other, 4, &beam));
+    memcpy(other, rays, sizeof rays);
+    other[0].dir.z = 0;
+    ck_assert(!bvh_beam_bounds(other, 4, &beam));
+}
+END_TEST
+
+/* The whole walk's and the pruned walk's answers for ray r (a copy each):
+ * the same hit, tmax, tie count, to the bit. */
+static void beam_same_nearest(const bvh *b, const bvh_beam_tree *t, const scene_prim *prims, const ray *r, int run,
+                              int q, long *hits)
+{
+    ray rw = *r, rp = *r;
+    hit hw, hp;
+    int tw = -1, tp = -1;
+    int fw = bvh_intersect_ties(b, prims, &rw, &hw, NULL, &tw);
+    int fp = bvh_beam_intersect(b, t, prims, &rp, &hp, NULL, &tp);
+    ck_assert_msg(fw == fp && tw == tp, "run %d ray %d: met %d, tied %d whole; %d, %d pruned", run, q, fw, tw, fp, tp);
+    ck_assert(same_real_bits(rw.tmax, rp.tmax));
+    if (!fw)
+        return;
+    ++*hits;
+    ck_assert_msg(hw.prim == hp.prim && hw.part == hp.part, "run %d ray %d: prim %d.%d whole, %d.%d pruned", run, q,
+                  hw.prim, hw.part, hp.prim, hp.part);
+    ck_assert(same_real_bits(hw.t, hp.t) && same_vec_bits(hw.point, hp.point));
+    ck_assert(same_vec_bits(hw.normal, hp.normal) && same_vec_bits(hw.shading_normal, hp.shading_normal));
+    ck_assert_int_eq(hw.entering, hp.entering);
+}
+
+/* Coplanar parts in y = 5 (a box's top, a triangle and a disk on it) and
+ * ten copies of one triangle (more than the tie window holds: the second
+ * pass), put over prims[at..at + 13). */
+static void beam_ties(scene_prim *prims, int at)
+{
+    prims[at] = prim_blank(PRIM_BOX);
+    prims[at].u.box.lo = vec_make(3, 4, 3);
+    prims[at].u.box.hi = vec_make(7, 5, 7);
+    prims[at + 1] = prim_blank(PRIM_TRIANGLE);
+    prims[at + 1].u.triangle.p[0] = vec_make(2, 5, 2);
+    prims[at + 1].u.triangle.p[1] = vec_make(8, 5, 3);
+    prims[at + 1].u.triangle.p[2] = vec_make(4, 5, 8);
+    prims[at + 2] = prim_blank(PRIM_DISK);
+    prims[at + 2].u.disk.center = vec_make(5, 5, 5);
+    prims[at + 2].u.disk.normal = vec_make(0, 1, 0);
+    prims[at + 2].u.disk.radius = 2;
+    for (int k = 3; k < 13; k++) {
+        prims[at + k] = prim_blank(PRIM_TRIANGLE);
+        prims[at + k].u.triangle.p[0] = vec_make(1, 2, 1);
+        prims[at + k].u.triangle.p[1] = vec_make(9, 3, 2);
+        prims[at + k].u.triangle.p[2] = vec_make(2, 4, 9);
+    }
+}
+
+START_TEST(test_bvh_beam_nearest_is_the_whole_walks)
+{
+    long hits = 0, pruned = 0, smaller = 0;
+    for (int sc = 0; sc < 12; sc++) {
+        scene_frame *frames;
+        int n = 60 + 40 * sc;
+        scene_prim *prims = random_scene(2400 + (uint64_t)sc, n, sc % 3, &frames);
+        beam_ties(prims, n / 2);
+        bvh b;
+        ck_assert(bvh_build(&b, prims, n + sc % 3, NULL));
+        rng g = {2500 + (uint64_t)sc, 0};
+        bvh_node nodes[4096];
+        ray rays[64];
+        for (int run = 0; run < 150; run++) {
+            int m = 1 + (int)(rng_uniform(&g) * 64);
+            vec3 eye = run % 3 == 0 ? rng_box(&g, 0, 10) : rng_box(&g, -8, 18);
+            vec3 aim = run % 5 == 0 ? vec_make(5, 5, 5) : rng_box(&g, 0, 10);
+            if (run % 7 == 0)
+                eye = vec_make(rng_range(&g, 3, 7), 9, rng_range(&g, 3, 7));  /* down onto y = 5 */
+            double step = run % 6 == 0 ? 0 : pow(10, rng_range(&g, -4, -0.5));
+            beam_run(&g, eye, vec_normalize(vec_sub(aim, eye)), step, m, rays);
+            bvh_beam beam;
+            if (!bvh_beam_bounds(rays, m, &beam))
+                continue;
+            bvh_beam_tree t = {nodes, 4096, -1};
+            bvh_beam_prune(&b, &beam, &t);
+            ck_assert_int_ge(t.count, 0);
+            pruned++;
+            smaller += t.count < b.node_count;
+            for (int q = 0; q < m; q++)
+                beam_same_nearest(&b, &t, prims, &rays[q], run, q, &hits);
+        }
+        bvh_free(&b);
+        free(prims);
+        free(frames);
+    }
+    ck_assert_int_gt(pruned, 1000);
+    ck_assert_int_gt(smaller, pruned / 2);
+    ck_assert_int_gt(hits, 20000);
+}
+END_TEST
+
+/* An exhaustive tree and a full buffer make no pruned tree. */
+START_TEST(test_bvh_beam_refused_when_exhaustive_or_full)
+{
+    scene_frame *frames;
+    scene_prim *prims = random_scene(2600, 200, 0, &frames);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, 200, NULL));
+    ray rays[8];
+    rng g = {2601, 0};
+    beam_run(&g, vec_make(-5, 5, 5), vec_normalize(vec_make(1, 0.3, 0.2)), 0.01, 8, rays);
+    bvh_beam beam;
+    ck_assert(bvh_beam_bounds(rays, 8, &beam));
+    bvh_node nodes[1024];
+    bvh_beam_tree t = {nodes, 1024, -1};
+    bvh_beam_prune(&b, &beam, &t);
+    ck_assert_int_gt(t.count, 2);
+    bvh_beam_tree small = {nodes, 2, -1};
+    bvh_beam_prune(&b, &beam, &small);
+    ck_assert_int_eq(small.count, -1);
+    b.exhaustive = 1;
+    bvh_beam_prune(&b, &beam, &t);
+    ck_assert_int_eq(t.count, -1);
+    bvh_free(&b);
+    free(prims);
+    free(frames);
+}
+END_TEST
+
 Suite *suite_bvh(void)
 {
     Suite *s = suite_create("bvh");
@@ -1178,6 +1425,10 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_unmet_sibling_not_entered);
     tcase_add_test(tc, test_slab_box_meets_is_slab_box);
     tcase_add_test(tc, test_slab_pair_meets_is_slab_box);
+    tcase_add_test(tc, test_bvh_beam_meets_every_box_a_ray_meets);
+    tcase_add_test(tc, test_bvh_beam_refuses_other_rays);
+    tcase_add_test(tc, test_bvh_beam_nearest_is_the_whole_walks);
+    tcase_add_test(tc, test_bvh_beam_refused_when_exhaustive_or_full);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -14,6 +14,10 @@
 #include "base/sampler.h"
 #include "render/shade.h"
 
+/* Camera-ray beams: the most pixels of a run, the most rays, the most
+ * nodes of a pruned tree (past it, the run walks the whole tree). */
+enum { RENDER_RUN_PIXELS = 32, RENDER_RUN_RAYS = 256, RENDER_BEAM_NODES = 1024 };
+
 double render_clock(void)
 {
     struct timespec ts;
@@ -32,20 +36,49 @@ double render_sample_offset(int k, int a)
     return (a + 0.5) / k;
 }
 
+/* Camera sample (a, b) of pixel (i, j) with a k x k grid. */
+static ray sample_ray(const tracer *t, int width, int height, int k, int i, int j, int a, int b)
+{
+    real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
+    return camera_ray(&t->scene->camera, t->camera_half, width, height, x, y);
+}
+
+/* The colour of camera ray r, sample (a, b) of pixel (i, j); beam: the
+ * pruned tree of its run, or NULL. */
+static rgb sample_colour(const tracer *t, const ray *r, const bvh_beam_tree *beam, int width, int k, int i, int j,
+                         int a, int b, trace_stats *st)
+{
+    medium_stack media = t->eye_media;
+    if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
+        trace_media_at(t, r->origin, &media, st);
+    st->camera_rays++;
+    st->tree_rays = 0;
+    st->medium_overflow += t->eye_overflow;
+    return trace_camera_ray(t, r, beam, &media, render_sample_key(width, k, i, j, a, b), st);
+}
+
 rgb render_pixel(const tracer *t, int width, int height, int k, int i, int j, trace_stats *st)
 {
     rgb sum = vec_splat(0);
     for (int b = 0; b < k; b++) {
         for (int a = 0; a < k; a++) {
-            real x = i + render_sample_offset(k, a), y = j + render_sample_offset(k, b);
-            ray r = camera_ray(&t->scene->camera, t->camera_half, width, height, x, y);
-            medium_stack media = t->eye_media;
-            if (t->scene->camera.kind == CAMERA_ORTHOGRAPHIC)
-                trace_media_at(t, r.origin, &media, st);
-            st->camera_rays++;
-            st->tree_rays = 0;
-            st->medium_overflow += t->eye_overflow;
-            rgb c = trace_ray(t, &r, 1, &media, render_sample_key(width, k, i, j, a, b), st);
+            ray r = sample_ray(t, width, height, k, i, j, a, b);
+            rgb c = sample_colour(t, &r, NULL, width, k, i, j, a, b, st);
+            sum = shade_saturate(vec_add(sum, c));
+        }
+    }
+    return vec_scale(sum, 1.0 / ((real)k * k));
+}
+
+/* render_pixel from its k x k rays already made (rays, in its order),
+ * their first nearest hits on beam: the same sum in the same order. */
+static rgb pixel_from_rays(const tracer *t, const ray *rays, const bvh_beam_tree *beam, int width, int k, int i, int j,
+                           trace_stats *st)
+{
+    rgb sum = vec_splat(0);
+    for (int b = 0; b < k; b++) {
+        for (int a = 0; a < k; a++) {
+            rgb c = sample_colour(t, &rays[b * k + a], beam, width, k, i, j, a, b, st);
             sum = shade_saturate(vec_add(sum, c));
         }
     }
@@ -98,6 +131,11 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
 
 void renderer_free(renderer *r)
 {
+    const mem *m = &r->tracer.scene->mem;
+    if (r->beam_tried) {
+        mem_free(m, r->run_rays, RENDER_RUN_RAYS * sizeof *r->run_rays);
+        mem_free(m, r->beam_nodes, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
+    }
     tracer_free(&r->tracer);
 }
 
@@ -179,6 +217,72 @@ static void store(const render_target *target, int x, int y, rgb c)
     }
 }
 
+/*
+ * Camera-ray beams ([BVH-BEAM-1]): a row's pixels go in runs of up to
+ * RENDER_RUN_PIXELS (fewer where their k x k rays would pass
+ * RENDER_RUN_RAYS), whose camera rays are made first and whose pruned
+ * tree serves their first nearest hits.  A perspective camera alone (one
+ * eye), and not with the shortcuts off (an exhaustive tree prunes
+ * nothing: bvh_beam_prune refuses it).
+ */
+static int run_pixels(const renderer *r)
+{
+    const tracer *t = &r->tracer;
+    int rays = r->stats.samples * r->stats.samples;
+    if (!r->beam_nodes || t->accel.exhaustive || t->scene->camera.kind == CAMERA_ORTHOGRAPHIC ||
+        rays > RENDER_RUN_RAYS)
+        return 0;
+    int n = RENDER_RUN_RAYS / rays;
+    return n < RENDER_RUN_PIXELS ? n : RENDER_RUN_PIXELS;
+}
+
+/* The buffers of run_pixels, once per renderer; out of memory leaves
+ * them NULL (no beams, the same pixels). */
+static void beam_alloc(renderer *r)
+{
+    const mem *m = &r->tracer.scene->mem;
+    if (r->beam_tried)
+        return;
+    r->beam_tried = 1;
+    r->run_rays = mem_alloc(m, RENDER_RUN_RAYS * sizeof *r->run_rays);
+    r->beam_nodes = mem_alloc(m, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
+    if (!r->run_rays || !r->beam_nodes) {
+        mem_free(m, r->run_rays, RENDER_RUN_RAYS * sizeof *r->run_rays);
+        mem_free(m, r->beam_nodes, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
+        r->run_rays = NULL;
+        r->beam_nodes = NULL;
+    }
+}
+
+/* The camera rays of pixels [i0, i0 + n) of row j, pixel by pixel in
+ * render_pixel's order, and their pruned tree in *tree. */
+static void run_make(renderer *r, int i0, int n, int j, bvh_beam_tree *tree)
+{
+    const tracer *t = &r->tracer;
+    int k = r->stats.samples, at = 0;
+    for (int i = i0; i < i0 + n; i++)
+        for (int b = 0; b < k; b++)
+            for (int a = 0; a < k; a++)
+                r->run_rays[at++] = sample_ray(t, r->stats.width, r->stats.height, k, i, j, a, b);
+    bvh_beam beam;
+    tree->nodes = r->beam_nodes;
+    tree->cap = RENDER_BEAM_NODES;
+    tree->count = -1;
+    if (bvh_beam_bounds(r->run_rays, at, &beam))
+        bvh_beam_prune(&t->accel, &beam, tree);
+}
+
+/* Pixel (i, j): by render_pixel, or from the run's rays made from i0. */
+static rgb region_pixel(renderer *r, int run, int i0, const bvh_beam_tree *tree, int i, int j)
+{
+    render_stats *stats = &r->stats;
+    int k = stats->samples;
+    if (!run)
+        return render_pixel(&r->tracer, stats->width, stats->height, k, i, j, &stats->trace);
+    return pixel_from_rays(&r->tracer, r->run_rays + (size_t)(i - i0) * k * k, tree, stats->width, k, i, j,
+                           &stats->trace);
+}
+
 int renderer_region(renderer *r, const render_target *target)
 {
     render_stats *stats = &r->stats;
@@ -192,10 +296,17 @@ int renderer_region(renderer *r, const render_target *target)
      * the tracer holds its address. */
     r->cancel = cancel_poll_make(opts->cancel, opts->cancel_ctx);
     stats->trace.cancel = &r->cancel;
+    beam_alloc(r);
+    int run = run_pixels(r), i0 = target->x0;
+    bvh_beam_tree tree = {NULL, 0, -1};
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
         for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
             long media_lost = stats->trace.medium_overflow;
-            rgb c = render_pixel(&r->tracer, stats->width, stats->height, stats->samples, i, j, &stats->trace);
+            if (run && (i == target->x0 || i - i0 == run)) {
+                i0 = i;
+                run_make(r, i0, target->x1 - i < run ? target->x1 - i : run, j, &tree);
+            }
+            rgb c = region_pixel(r, run, i0, &tree, i, j);
             store(target, i, j, c);
             if (cancel_stopped(&r->cancel))
                 status = STATUS_CANCELLED;

@@ -1123,9 +1123,10 @@ static int over_budget(const tracer *t, trace_stats *st)
 /* The nearest hit, in a frame of its own: the BVH walk's stack (BVH_MAX_DEPTH
  * entries, 1.5 KiB) is not needed once the hit is found, so it stays off
  * the recursion's stack ([REL-STACK-1]). */
-static HINT_OUT_OF_LINE int nearest_hit(const tracer *t, ray *nearest, hit *h, int *tied, trace_stats *st)
+static HINT_OUT_OF_LINE int nearest_hit(const tracer *t, ray *nearest, const bvh_beam_tree *beam, hit *h, int *tied,
+                                        trace_stats *st)
 {
-    return bvh_intersect_ties(&t->accel, t->scene->prims, nearest, h, &st->bvh, tied);
+    return bvh_beam_intersect(&t->accel, beam, t->scene->prims, nearest, h, &st->bvh, tied);
 }
 
 /* The colour of ray r given its nearest hit h (met), or the background. */
@@ -1161,7 +1162,9 @@ static rgb trace_end(const tracer *t, const ray *r, hit *end, int depth, const m
     return ray_colour(t, &at, 1, end, depth, media, key, touch, st);
 }
 
-rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
+/* trace_ray, its nearest hit found on beam (NULL: the whole tree). */
+static rgb trace_ray_on(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,
+                        const bvh_beam_tree *beam, trace_stats *st)
 {
     ray nearest;
     hit h;
@@ -1169,9 +1172,20 @@ rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *medi
     if (over_budget(t, st) || cancel_step(st->cancel))
         return t->scene->image.background;
     int tied;
-    int met = nearest_hit(t, &nearest, &h, &tied, st);
+    int met = nearest_hit(t, &nearest, beam, &h, &tied, st);
     /* A hit alone in its window was tied with nothing. */
     if (met && t->glass && tied > 1)
         glass_first_of_tie(t, r, &h, media, st);
     return ray_colour(t, &nearest, met, &h, depth, media, key, NULL, st);
+}
+
+rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key, trace_stats *st)
+{
+    return trace_ray_on(t, r, depth, media, key, NULL, st);
+}
+
+rgb trace_camera_ray(const tracer *t, const ray *r, const bvh_beam_tree *beam, const medium_stack *media, uint64_t key,
+                     trace_stats *st)
+{
+    return trace_ray_on(t, r, 1, media, key, beam, st);
 }

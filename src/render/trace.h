@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include "base/inline_hint.h"
 #include "render/bvh.h"
+#include "render/bvh_beam.h"
 #include "render/lightsample.h"
 #include "render/ray.h"
 #include "scene/scene.h"
@@ -203,6 +204,11 @@ void tracer_no_shortcuts(tracer *t);
  * jitter of every light sample below this ray. */
 rgb trace_ray(const tracer *t, const ray *r, int depth, const medium_stack *media, uint64_t key,
               trace_stats *st);
+/* trace_ray at depth 1 for a camera ray of the run beam was pruned for
+ * (bvh_beam.h): its first nearest hit alone is found on the pruned tree,
+ * the same hit to the bit ([BVH-BEAM-1]); beam NULL: trace_ray. */
+rgb trace_camera_ray(const tracer *t, const ray *r, const bvh_beam_tree *beam, const medium_stack *media, uint64_t key,
+                     trace_stats *st);
 
 /* The medium stack of a ray that starts at point: the transparent solids
  * containing it, outermost first (a camera inside glass).  A sphere or box

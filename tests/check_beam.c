@@ -1,0 +1,111 @@
+/*
+ * check_beam.c - camera-ray beams at the render's level (spec/numerics.md
+ * [BVH-BEAM-1]): renderer_region, which walks each run's camera rays on
+ * the run's pruned tree, against render_pixel, which walks the whole
+ * tree, on the same tracer.
+ */
+#include <check.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "testlib.h"
+#include "io/scene_file.h"
+#include "render/render.h"
+
+enum { BEAM_W = 37, BEAM_H = 23 };
+
+/* Renders text at BEAM_W x BEAM_H with k x k samples by renderer_region
+ * and pixel by pixel by render_pixel: the same bits.  Returns the node
+ * visits of the region less those of the pixels. */
+static long region_against_pixels(const char *text, int k, int no_shortcuts)
+{
+    static double img[3 * BEAM_W * BEAM_H];
+    int status;
+    scene_model *s = scene_file_load_text("beam.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert_msg(s != NULL, "scene did not load (status %d)", status);
+    renderer r;
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = BEAM_W;
+    o.height = BEAM_H;
+    o.samples = k;
+    o.no_shortcuts = no_shortcuts;
+    ck_assert_int_eq(renderer_init(&r, s, &o), STATUS_OK);
+    render_target all = {0, 0, BEAM_W, BEAM_H, NULL, img, 3 * (size_t)BEAM_W};
+    ck_assert_int_eq(renderer_region(&r, &all), STATUS_OK);
+    trace_stats st;
+    memset(&st, 0, sizeof st);
+    for (int j = 0; j < BEAM_H; j++)
+        for (int i = 0; i < BEAM_W; i++) {
+            rgb c = render_pixel(&r.tracer, BEAM_W, BEAM_H, k, i, j, &st);
+            const double *at = img + 3 * ((size_t)j * BEAM_W + i);
+            ck_assert_msg(same_real_bits(c.x, at[0]) && same_real_bits(c.y, at[1]) && same_real_bits(c.z, at[2]),
+                          "pixel (%d, %d), %d samples: %.17g %.17g %.17g by region, %.17g %.17g %.17g by pixel", i, j,
+                          k, at[0], at[1], at[2], (double)c.x, (double)c.y, (double)c.z);
+        }
+    ck_assert(st.camera_rays == r.stats.trace.camera_rays && st.shadow_rays == r.stats.trace.shadow_rays);
+    long fewer = st.bvh.nodes_visited - r.stats.trace.bvh.nodes_visited;
+    renderer_free(&r);
+    scene_free(s);
+    return fewer;
+}
+
+/* A grid of balls, glass among them, boxes with a triangle and a disk in
+ * their top faces' plane (coplanar ties), a mirror: camera rays meet
+ * every kind of part, and their first hits start the rest. */
+static const char beam_scene[] =
+    "image { width 40 height 30 samples 1 max_depth 3 }\n"
+    "camera { %s }\n"
+    "ambient { color 0.1 }\n"
+    "point_light { position [5, 15, -2] power 30 d0 1 }\n"
+    "material ball { Kd [0.7, 0.5, 0.3] Ks 0.2 n 30 }\n"
+    "material glass { Kd 0 Ks 0.1 t 0.9 ior 1.5 }\n"
+    "plane { point [0, -1, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.3 } }\n"
+    "for i in 0 .. 5 { for j in 0 .. 5 { for k in 0 .. 2 {\n"
+    "  sphere { center [i * 1.5, k * 1.5, j * 1.5] radius 0.4 material ball } } } }\n"
+    "sphere { center [3.7, 3, 3.7] radius 0.9 material glass }\n"
+    "box { from [1, 3.5, 1] to [2.5, 4, 2.5] material { Kd [0.2, 0.6, 0.2] } }\n"
+    "triangle { vertices [0.5, 4, 0.5] [3, 4, 0.8] [1, 4, 3] material { Kd [0.6, 0.2, 0.2] } }\n"
+    "disk { center [1.7, 4, 1.7] normal [0, 1, 0] radius 0.6 material { Kd [0.2, 0.2, 0.6] } }\n";
+
+static const char *beam_text(const char *camera)
+{
+    static char text[4096];
+    int len = snprintf(text, sizeof text, beam_scene, camera);
+    ck_assert(len > 0 && len < (int)sizeof text);
+    return text;
+}
+
+START_TEST(test_beam_region_is_render_pixel)
+{
+    const char *cam = "perspective eye [4, 7, -5] look_at [4, 1, 4] up [0, 1, 0] fov 60";
+    /* 1, 2 and 9 samples (81 rays a pixel: three pixels a run) and a
+     * square view (rays of a run on both sides of an axis: refused). */
+    ck_assert_int_gt(region_against_pixels(beam_text(cam), 1, 0), 0);
+    ck_assert_int_gt(region_against_pixels(beam_text(cam), 2, 0), 0);
+    ck_assert_int_gt(region_against_pixels(beam_text(cam), 9, 0), 0);
+    const char *head_on = "perspective eye [4, 2, -6] look_at [4, 2, 4] up [0, 1, 0] fov 50";
+    ck_assert_int_gt(region_against_pixels(beam_text(head_on), 1, 0), 0);
+}
+END_TEST
+
+/* No beams without one eye or with the shortcuts off: the same walks. */
+START_TEST(test_beam_none_orthographic_or_no_shortcuts)
+{
+    const char *ortho = "orthographic eye [4, 7, -5] look_at [4, 1, 4] up [0, 1, 0] width 8";
+    ck_assert_int_eq(region_against_pixels(beam_text(ortho), 1, 0), 0);
+    const char *cam = "perspective eye [4, 7, -5] look_at [4, 1, 4] up [0, 1, 0] fov 60";
+    ck_assert_int_eq(region_against_pixels(beam_text(cam), 2, 1), 0);
+}
+END_TEST
+
+Suite *suite_beam(void)
+{
+    Suite *s = suite_create("beam");
+    TCase *tc = tcase_create("beam");
+    tcase_set_timeout(tc, 30);
+    tcase_add_test(tc, test_beam_region_is_render_pixel);
+    tcase_add_test(tc, test_beam_none_orthographic_or_no_shortcuts);
+    suite_add_tcase(s, tc);
+    return s;
+}
