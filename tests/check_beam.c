@@ -24,12 +24,8 @@ static long region_against_pixels(const char *text, int k, int no_shortcuts)
     scene_model *s = scene_file_load_text("beam.scene", text, strlen(text), NULL, stderr, 0, &status);
     ck_assert_msg(s != NULL, "scene did not load (status %d)", status);
     renderer r;
-    render_opts o;
-    memset(&o, 0, sizeof o);
-    o.width = BEAM_W;
-    o.height = BEAM_H;
-    o.samples = k;
-    o.no_shortcuts = no_shortcuts;
+    render_opts o = {0};
+    o.width = BEAM_W, o.height = BEAM_H, o.samples = k, o.no_shortcuts = no_shortcuts;
     ck_assert_int_eq(renderer_init(&r, s, &o), STATUS_OK);
     render_target all = {0, 0, BEAM_W, BEAM_H, NULL, img, 3 * (size_t)BEAM_W};
     ck_assert_int_eq(renderer_region(&r, &all), STATUS_OK);

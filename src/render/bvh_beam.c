@@ -137,6 +137,8 @@ static int keep(prune *p, int x, bvh_node *rec)
     *rec = *nd;
     if (nd->count > 0)
         return 1;
+    if (p->full)
+        return 0; /* given up: no more tests */
     bvh_node ra, rc;
     int met = pair_meets(p, &p->b->nodes[nd->first]);
     int ka = (met & 1) && keep(p, nd->first, &ra), kc = (met & 2) && keep(p, nd->first + 1, &rc);
@@ -161,7 +163,7 @@ static int keep(prune *p, int x, bvh_node *rec)
     return 1;
 }
 
-void bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree)
+int bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree)
 {
     prune p;
     p.b = b;
@@ -171,10 +173,10 @@ void bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree)
     bvh_node root;
     tree->count = -1;
     if (b->exhaustive || tree->cap < 1)
-        return;
+        return 0;
     if (b->node_count == 0) {
         tree->count = 0;
-        return;
+        return 1;
     }
 #ifdef SLAB_PAIR_SSE2
     prune_lanes(&p);
@@ -183,12 +185,13 @@ void bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree)
     int kept = bvh_beam_meets(beam, b->nodes[0].lo, b->nodes[0].hi) && keep(&p, 0, &root);
     if (p.full) {
         tree->count = -1;
-        return;
+        return 0;
     }
     if (kept)
         tree->nodes[0] = root;
     else
         tree->count = 0;
+    return 1;
 }
 
 int bvh_beam_intersect(const bvh *b, const bvh_beam_tree *tree, const scene_prim *prims, ray *r, hit *h,

@@ -38,9 +38,9 @@ int bvh_beam_bounds(const ray *rays, int n, bvh_beam *out);
  * origin, tmin 0 and tmax +inf) passes slab_box_meets_neg on [lo, hi]:
  * 1 whenever one does (it may pass a box no ray meets). */
 int bvh_beam_meets(const bvh_beam *beam, vec3 lo, vec3 hi);
-/* Prunes b for the beam into tree (count as above; < 0 also when b is
- * exhaustive or the nodes kept would pass tree->cap). */
-void bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree);
+/* Prunes b for the beam into tree; returns 1, or 0 when b is exhaustive
+ * or the nodes kept would pass tree->cap (then count is -1). */
+int bvh_beam_prune(const bvh *b, const bvh_beam *beam, bvh_beam_tree *tree);
 /* bvh_intersect_ties for a ray of the beam tree was pruned for, on the
  * pruned tree (tree NULL or count < 0: the whole tree). */
 int bvh_beam_intersect(const bvh *b, const bvh_beam_tree *tree, const scene_prim *prims, ray *r, hit *h,
