@@ -133,8 +133,8 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
 
 void renderer_free(renderer *r)
 {
-    const mem *m = &r->tracer.scene->mem;
     if (r->beam_tried) {
+        const mem *m = &r->tracer.scene->mem;
         mem_free(m, r->run_rays, RENDER_RUN_RAYS * sizeof *r->run_rays);
         mem_free(m, r->beam_nodes, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
     }
