@@ -101,6 +101,25 @@ static void record_setup(const tracer *t, render_stats *stats)
     stats->no_shortcuts = t->no_shortcuts;
 }
 
+/* The buffers of the camera-ray beams (renderer_region), made with the
+ * renderer: a region allocates nothing ([EMBED-MEM-3]).  Out of memory
+ * leaves them NULL (no beams, the same pixels). */
+static void beam_alloc(renderer *r)
+{
+    const mem *m = &r->tracer.scene->mem;
+    if (r->beam_tried)
+        return;
+    r->beam_tried = 1;
+    r->run_rays = mem_alloc(m, RENDER_RUN_RAYS * sizeof *r->run_rays);
+    r->beam_nodes = mem_alloc(m, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
+    if (!r->run_rays || !r->beam_nodes) {
+        mem_free(m, r->run_rays, RENDER_RUN_RAYS * sizeof *r->run_rays);
+        mem_free(m, r->beam_nodes, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
+        r->run_rays = NULL;
+        r->beam_nodes = NULL;
+    }
+}
+
 int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts)
 {
     const render_opts *o = opts;
@@ -128,6 +147,7 @@ int renderer_init(renderer *r, const scene_model *scene, const render_opts *opts
     stats->max_depth = r->tracer.max_depth;
     stats->build_seconds = render_clock() - start;
     record_setup(&r->tracer, stats);
+    beam_alloc(r);
     return STATUS_OK;
 }
 
@@ -238,24 +258,6 @@ static int run_pixels(const renderer *r)
     return n < RENDER_RUN_PIXELS ? n : RENDER_RUN_PIXELS;
 }
 
-/* The buffers of run_pixels, once per renderer; out of memory leaves
- * them NULL (no beams, the same pixels). */
-static void beam_alloc(renderer *r)
-{
-    const mem *m = &r->tracer.scene->mem;
-    if (r->beam_tried)
-        return;
-    r->beam_tried = 1;
-    r->run_rays = mem_alloc(m, RENDER_RUN_RAYS * sizeof *r->run_rays);
-    r->beam_nodes = mem_alloc(m, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
-    if (!r->run_rays || !r->beam_nodes) {
-        mem_free(m, r->run_rays, RENDER_RUN_RAYS * sizeof *r->run_rays);
-        mem_free(m, r->beam_nodes, RENDER_BEAM_NODES * sizeof *r->beam_nodes);
-        r->run_rays = NULL;
-        r->beam_nodes = NULL;
-    }
-}
-
 /* The camera rays of pixels [i0, i0 + n) of row j, pixel by pixel in
  * render_pixel's order, and their pruned tree in *tree.  Returns 0 when
  * the tree would pass RENDER_BEAM_NODES (the rays reach deep into a large
@@ -299,7 +301,6 @@ int renderer_region(renderer *r, const render_target *target)
      * the tracer holds its address. */
     r->cancel = cancel_poll_make(opts->cancel, opts->cancel_ctx);
     stats->trace.cancel = &r->cancel;
-    beam_alloc(r);
     int run = run_pixels(r), i0 = target->x0;
     bvh_beam_tree tree = {NULL, 0, -1};
     for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {

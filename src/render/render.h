@@ -65,8 +65,8 @@ typedef struct renderer {
     render_stats stats;
     cancel_poll cancel;     /* opts.cancel, counted; stats.trace.cancel points here */
     /* Camera-ray beams (bvh_beam.h): a run's camera rays and its pruned
-     * tree, allocated at the first region (NULL: none, or out of memory:
-     * every ray walks the whole tree). */
+     * tree, allocated by renderer_init (NULL: out of memory, every ray
+     * walks the whole tree). */
     ray *run_rays;
     bvh_node *beam_nodes;
     int beam_tried;         /* the allocation was tried */
