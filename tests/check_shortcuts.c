@@ -730,8 +730,10 @@ static vec3 next_unit(uint64_t *state)
  * [SHADE-SHORTCUT-ABSORB-1] trace_lobe_above bounds shade_phong_lobe from
  * above for unit V and R, far from the peak and on it (R within 1e-9 to
  * 0.3 of V: the 1 - h branch with its correction), integral exponents and
- * not, up to 1e6; and it is close (within 1 % for integral n <= 1000 where
- * the lobe is at least 2^-250), so a bound that only holds loosely fails.
+ * not, up to 1e6; and it is close: within 2 exp(n (-ln c - S) + n 2^-17)
+ * of the lobe (S = x + x^2/2 + x^3/3, x = 1 - c: the floor to a power of
+ * 2, the series' tail and the margin) where the lobe is at least 2^-900,
+ * so a bound that only holds loosely fails.
  */
 START_TEST(test_shortcuts_lobe_above_bounds_lobe)
 {
@@ -750,8 +752,10 @@ START_TEST(test_shortcuts_lobe_above_bounds_lobe)
         }
         double c = vec_dot(v, r), lobe = shade_phong_lobe(v, r, n), above = trace_lobe_above(c, n);
         ck_assert_msg(lobe <= above, "n %.17g, V.R %.17g: lobe %.17g above its bound %.17g", n, c, lobe, above);
-        if (n == floor(n) && n <= 1000 && lobe >= 0x1p-250 && above < 1) {
-            ck_assert_msg(above <= lobe * 1.01, "n %.17g, V.R %.17g: bound %.17g, lobe %.17g", n, c, above, lobe);
+        if (c > 0 && c < 1 && lobe >= 0x1p-900 && above < 1) {
+            double x = 1 - c, tail = -log(c) - (x + x * x / 2 + x * x * x / 3);
+            ck_assert_msg(above <= 2.01 * lobe * exp(n * tail + n * 0x1p-17), "n %.17g, V.R %.17g: bound %.17g, lobe %.17g",
+                          n, c, above, lobe);
             close++;
         }
     }
@@ -768,7 +772,7 @@ END_TEST
 START_TEST(test_shortcuts_absorbed_highlights_both_ways)
 {
     static const char *const materials[] = {"Kd 0 Ks 0.06 n 400 t 0.92 ior 1.45",
-                                            "Kd 0 Ks [0.5, 0.02, 0] n 20 t 0.5 ior 1.5",
+                                            "Kd 0 Ks [0.5, 0.02, 0] n 60 t 0.5 ior 1.5",
                                             "Kd 0 Ks [0.2, 0.4, 0.1] n 100.5 t 0.5 ior 1.5",
                                             "Kd 0 Ks 0.3 n 5000 t 0.9 ior 1.3"};
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {

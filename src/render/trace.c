@@ -322,33 +322,31 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
 }
 
 /*
- * [SHADE-SHORTCUT-ABSORB-1] The lobe raises c_hi <= c (1 + 2^-19) <= 1 to
- * the power n >= k = floor(n), so it is at most y^k, y = c (1 + 2^-19).
- * This forms x^m for x = c (1 + 2^-17) and some m <= k by squaring and
- * multiplying (y^k <= y^m, as y < x < 1), each factor and product at
- * least 2^-900 (no subnormal), each rounding a factor 1 - 2^-53 at worst,
- * 3m of them at most counted with the powers they are raised to; so q >=
- * y^m (1 + 2^-18)^m (1 - 3m 2^-53) >= y^k (1 + 2^-19) for 1 <= m < 2^20
- * (q = 1 for m = 0): more than pow's ulp and the correction exp(n c_lo /
- * c_hi) (within 2^-32 of 1 for n < 2^20) together.
+ * [SHADE-SHORTCUT-ABSORB-1] The lobe is pow(c_hi, n) with c_hi <= c (1 +
+ * 2^-19) <= 1, times pow's ulp and the correction exp(n c_lo / c_hi)
+ * (within 2^-32 of 1 for n < 2^20): at most c_hi^n (1 + 2^-31).  With x
+ * = 1 - c, ln c = -(x + x^2/2 + x^3/3 + ...) <= -S, S = x + x^2/2 + x^3/3,
+ * and ln c_hi <= ln c + 2^-19, so the lobe is at most 2^-(w log2(e) -
+ * 2^-30), w = n S - n 2^-19.  z is below that exponent: log2(e) and 1/3
+ * taken low, the factor 1 - 2^-40 more than the roundings of x (none for
+ * c >= 1/2), S and the products, n 2^-18 more than n 2^-19 log2(e) +
+ * 2^-30; so 2^-floor(z) bounds the lobe.  Past 2^-1000 the lobe is below
+ * DBL_MIN, flushed to 0.  No pow, no loop.
  */
 real trace_lobe_above(real c, real n)
 {
-    real x = c * (1 + 0x1p-17), q = 1;
     if (!(c > 0))
         return 0;   /* shade_phong_lobe's own 0 */
-    if (!(x < 1 && x >= 0x1p-300 && n >= 1 && n < 0x1p20))
+    if (!(c < 1 && n >= 1 && n < 0x1p20))
         return 1;
-    for (long e = (long)n;;) {
-        if (e & 1)
-            q *= x;
-        e >>= 1;
-        if (e == 0 || q < 0x1p-300)
-            return q;
-        x *= x;
-        if (x < 0x1p-300)
-            return q * x;
-    }
+    real x = 1 - c, sum = x * (1 + x * (0.5 + x * 0.33333333333333));
+    real z = n * sum * 1.44269504088896 * (1 - 0x1p-40) - n * 0x1p-18;
+    if (!(z >= 1))
+        return 1;
+    uint64_t bits = (uint64_t)(1023 - (z < 1000 ? (int)z : 1000)) << 52;   /* 2^-floor(z), a normal double */
+    real b;
+    memcpy(&b, &bits, sizeof b);
+    return b;
 }
 
 static int sum_has_highlight(const direct_sum *sum)
