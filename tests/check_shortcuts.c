@@ -763,6 +763,19 @@ START_TEST(test_shortcuts_lobe_above_bounds_lobe)
 }
 END_TEST
 
+/* A ball of `material` over a floor under `light`, 40 x 40, max_depth 1, no
+ * ambient: the same bits with the shortcuts on and off. */
+static void ball_both_ways(const char *light, const char *material, render_stats *on, render_stats *off)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "image { width 40 height 40 max_depth 1 }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
+             "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+             "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
+             light, material);
+    same_both_ways(text, on, off);
+}
+
 /*
  * [SHADE-SHORTCUT-ABSORB-1] A glass ball's highlights (Kd 0, no ambient,
  * max_depth 1: its pixels are the highlight sums alone) under a disk light
@@ -776,19 +789,12 @@ START_TEST(test_shortcuts_absorbed_highlights_both_ways)
                                             "Kd 0 Ks [0.2, 0.4, 0.1] n 100.5 t 0.5 ior 1.5",
                                             "Kd 0 Ks 0.3 n 5000 t 0.9 ior 1.3"};
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
-        char text[1024];
-        snprintf(text, sizeof text,
-                 "image { width 40 height 40 max_depth 1 }\n"
-                 "camera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n"
-                 "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
-                 "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
-                 "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
-                 materials[i]);
-        render_stats st_on, st_off;
-        same_both_ways(text, &st_on, &st_off);
-        ck_assert_msg(st_on.trace.absorbed > 0, "%s: no highlight absorbed", materials[i]);
-        ck_assert_int_eq(st_off.trace.absorbed, 0);
-        ck_assert_int_eq(st_on.trace.light_samples, st_off.trace.light_samples);
+        render_stats on, off;
+        ball_both_ways("distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
+                       &on, &off);
+        ck_assert_msg(on.trace.absorbed > 0 && off.trace.absorbed == 0, "%s: %ld samples absorbed, %ld without shortcuts",
+                      materials[i], on.trace.absorbed, off.trace.absorbed);
+        ck_assert_int_eq(on.trace.light_samples, off.trace.light_samples);
     }
 }
 END_TEST
