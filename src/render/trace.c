@@ -344,7 +344,7 @@ real trace_lobe_above(real c, real n)
     if (!(z >= 1))
         return 1;
     uint64_t bits = (uint64_t)(1023 - (z < 1000 ? (int)z : 1000)) << 52;   /* 2^-floor(z), a normal double */
-    real b;
+    double b;   /* double, not real: the bits are a double's (real is long double in the ld build) */
     memcpy(&b, &bits, sizeof b);
     return b;
 }
