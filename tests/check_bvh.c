@@ -375,6 +375,42 @@ START_TEST(test_bvh_visit_counts_match_brute_force)
 }
 END_TEST
 
+/* [SHADE-SHORTCUT-ANY-1] The any-crossing walk finds a crossing exactly
+ * when the counting walk counts one, and names a part that walk counts:
+ * rays of every sort, half of them short (many miss everything), over the
+ * tree and the planes. */
+START_TEST(test_bvh_any_crossing_as_counts)
+{
+    int n = 2000;
+    scene_frame *frames;
+    scene_prim *prims = random_scene(320, n, 2, &frames);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
+    rng g = {321, 0};
+    long met = 0, missed = 0;
+    for (int i = 0; i < 4000; i++) {
+        ray r = random_ray(&g, prims, n + 2, i);
+        if (i % 2)
+            r.tmax = 0.05 + 3 * rng_uniform(&g);
+        static count_list got;
+        memset(&got, 0, sizeof got);
+        bvh_visit_counts(&b, prims, &r, count_into, &got, NULL);
+        bvh_ref found = {-1, 0};
+        int any = bvh_any_crossing(&b, prims, &r, &found, NULL);
+        ck_assert_msg(any == (got.calls > 0), "ray %d: any %d, %ld parts counted", i, any, got.calls);
+        if (any)
+            ck_assert_msg(found.prim >= 0 && got.per_prim[found.prim] > 0, "ray %d: part %d not counted", i,
+                          found.prim);
+        met += any;
+        missed += !any;
+    }
+    ck_assert_msg(met > 500 && missed > 500, "%ld rays met, %ld missed", met, missed);
+    bvh_free(&b);
+    free(prims);
+    free(frames);
+}
+END_TEST
+
 static int stop_with_seven(void *ctx, const hit *h)
 {
     int *calls = ctx;
@@ -1161,6 +1197,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_intersect_matches_brute_force);
     tcase_add_test(tc, test_bvh_visit_matches_brute_force);
     tcase_add_test(tc, test_bvh_visit_counts_match_brute_force);
+    tcase_add_test(tc, test_bvh_any_crossing_as_counts);
     tcase_add_test(tc, test_bvh_visit_stops_early);
     tcase_add_test(tc, test_bvh_parallel_ray_in_flat_box_plane);
     tcase_add_test(tc, test_bvh_flat_huge_triangle_not_culled);

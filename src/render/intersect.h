@@ -176,6 +176,8 @@ int isect_hot_reals(const scene_prim *p);
 /* isect_part_crossings of the record's part (sh: r's shear when the record
  * is a triangle). */
 int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh);
+/* Whether isect_hot_crossings is > 0 (the any-crossing walk's test). */
+int isect_hot_crossed(int code, const real *g, const ray *r, const isect_shear *sh);
 /* The nearest crossing's t in (r->tmin, r->tmax), as isect_part finds it:
  * returns 1 and sets *t, or 0. */
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t);

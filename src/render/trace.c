@@ -208,6 +208,27 @@ static int shadow_crossing(void *ctx, bvh_ref ref, int crossings)
 }
 
 /*
+ * The walk of a shadow ray from the root (no bundle).
+ * [SHADE-SHORTCUT-ANY-1] With every material opaque (no t > 0) and the
+ * shortcuts on, shadow_crossing carries 0 from the first crossing on and
+ * stops there, so the walk's answer is 0 where r crosses some part and 1
+ * where it crosses none, whatever the order of its tests: the
+ * any-crossing walk (bvh_any_crossing, nearer the light first) gives it,
+ * with an opaque part it crossed as the blocker.  Out of line: in
+ * shadow_transmission the branch cost demo.scene's bundle path 0.5 % more
+ * instructions.
+ */
+static HINT_OUT_OF_LINE void shadow_from_root(const tracer *t, const ray *r, shadow_walk *w, trace_stats *st)
+{
+    if (t->glass || t->no_shortcuts) {
+        bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, w, &st->bvh);
+        return;
+    }
+    if (bvh_any_crossing(&t->accel, t->scene->prims, r, &w->opaque, &st->bvh))
+        w->carried = shade_shadow_transmission(w->carried, 0);
+}
+
+/*
  * The fraction of light `light` that reaches the surface along r.
  * [SHADE-SHORTCUT-BLOCKER-1] Neighbouring shadow rays toward one light
  * (the samples of an area light from one point, the rays of the next
@@ -233,7 +254,7 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, const 
     if (bundle && bundle->count >= 0)
         bvh_visit_counts_bundle(&t->accel, t->scene->prims, r, bundle, shadow_crossing, &w, &st->bvh);
     else
-        bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, &w, &st->bvh);
+        shadow_from_root(t, r, &w, st);
     if (w.carried == 0 && w.opaque.prim >= 0) {
         slot->prim = w.opaque.prim + 1;
         slot->part = w.opaque.part;
