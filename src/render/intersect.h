@@ -116,6 +116,9 @@ real isect_part_magnitude(const scene_prim *p, int part);
 /* How many crossings isect_part_all reports, found by the same arithmetic
  * without their points and normals (a shadow ray needs only the count). */
 int isect_part_crossings(const scene_prim *p, int part, const ray *r);
+/* Whether isect_part_crossings is > 0 (a world-frame sphere's stops at its
+ * first crossing: the same answer). */
+int isect_part_crossed(const scene_prim *p, int part, const ray *r);
 
 /* The ray's share of the watertight triangle test (Woop et al.: the axis
  * permutation, dz and the shear sx, sy), which depends on the direction

@@ -249,7 +249,7 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, int hi
     if (hint >= 0 && hint < t->scene->prim_count && slot->part >= 0 &&
         slot->part < isect_part_count(&t->scene->prims[hint]) && !t->no_shortcuts) {
         st->bvh.prims_tested++;
-        if (isect_part_crossings(&t->scene->prims[hint], slot->part, r) > 0)
+        if (isect_part_crossed(&t->scene->prims[hint], slot->part, r))
             return 0;
     }
     if (bundle && bundle->count >= 0)
