@@ -95,8 +95,12 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
      * (an exp2 call a glass hit): the same double. */
     /* With it, what shade reads of a material at every point: Ks > 0 and
      * Kd = 0 (vec_max_component, Ks and Kd in [0, 1]: [LANG-MAT-1]). */
+    /* [SHADE-SHORTCUT-ANY-1] needs every t to be +0: a t of -0 makes the
+     * counting walk carry -0, whose bits the ray-tree hash reads. */
+    t->any_walk = !t->glass;
     for (int i = 0; i < s->material_count; i++) {
         const scene_material *m = &s->materials[i];
+        t->any_walk &= !signbit(m->t);
         t->lobe_floors[i] = m->n > 0 ? exp2(-1030 / m->n) * (1 - 0x1p-18) : 0;
         t->material_terms[i] = (vec_max_component(m->ks) > 0 ? TRACE_KS : 0) |
                                (vec_max_component(m->kd) > 0 ? 0 : TRACE_NO_BODY);
@@ -210,9 +214,9 @@ static int shadow_crossing(void *ctx, bvh_ref ref, int crossings)
 
 /*
  * The walk of a shadow ray from the root (no bundle).
- * [SHADE-SHORTCUT-ANY-1] With every material opaque (no t > 0) and the
- * shortcuts on, shadow_crossing carries 0 from the first crossing on and
- * stops there, so the walk's answer is 0 where r crosses some part and 1
+ * [SHADE-SHORTCUT-ANY-1] With every material opaque (every t +0:
+ * t->any_walk) and the shortcuts on, shadow_crossing carries +0 from the
+ * first crossing on and stops there, so the walk's answer is 0 where r crosses some part and 1
  * where it crosses none, whatever the order of its tests: the
  * any-crossing walk (bvh_any_crossing, nearer the light first) gives it,
  * with an opaque part it crossed as the blocker.  Out of line: in
@@ -221,7 +225,7 @@ static int shadow_crossing(void *ctx, bvh_ref ref, int crossings)
  */
 static HINT_OUT_OF_LINE void shadow_from_root(const tracer *t, const ray *r, shadow_walk *w, trace_stats *st)
 {
-    if (t->glass || t->no_shortcuts) {
+    if (!t->any_walk || t->no_shortcuts) {
         bvh_visit_counts(&t->accel, t->scene->prims, r, shadow_crossing, w, &st->bvh);
         return;
     }

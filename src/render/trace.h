@@ -127,6 +127,9 @@ typedef struct tracer {
     int shadows, specular, reflection, refraction;
     int glass;                /* some material has t > 0 (the scene's, in every
                                  mode): surfaces may touch glass ([NUM-GLASS-3]) */
+    int any_walk;             /* no glass and every material's t +0 (not -0): a shadow
+                                 ray without a bundle may take bvh_any_crossing
+                                 ([SHADE-SHORTCUT-ANY-1]; not with the shortcuts off) */
     int glass_boxes;          /* boxes in glass_box: the transparent primitives', padded;
                                  -1: every point may touch glass (one is unbounded,
                                  there are too many, or the shortcuts are off) */
