@@ -1419,13 +1419,18 @@ START_TEST(test_bvh_beam_refused_when_exhaustive_or_full)
     bvh b;
     ck_assert(bvh_build(&b, prims, 200, NULL));
     ray rays[8];
-    rng g = {2601, 0};
-    beam_run(&g, vec_make(-5, 5, 5), vec_normalize(vec_make(1, 0.3, 0.2)), 0.01, 8, rays);
     bvh_beam beam;
-    ck_assert(bvh_beam_bounds(rays, 8, &beam));
     bvh_node nodes[1024];
     bvh_beam_tree t = {nodes, 1024, -1};
-    bvh_beam_prune(&b, &beam, &t);
+    /* The first run whose tree has an inner node: which run that is
+     * depends on the compiler (the order in which rng_unit's arguments
+     * are drawn), that one exists does not. */
+    for (uint64_t seed = 2601; seed < 2701 && t.count <= 2; seed++) {
+        rng g = {seed, 0};
+        beam_run(&g, vec_make(-5, 5, 5), vec_normalize(vec_make(1, 0.3, 0.2)), 0.01, 8, rays);
+        ck_assert(bvh_beam_bounds(rays, 8, &beam));
+        bvh_beam_prune(&b, &beam, &t);
+    }
     ck_assert_int_gt(t.count, 2);
     bvh_beam_tree small = {nodes, 2, -1};
     bvh_beam_prune(&b, &beam, &small);
