@@ -376,6 +376,45 @@ START_TEST(test_bvh_visit_counts_match_brute_force)
 }
 END_TEST
 
+/* [SHADE-SHORTCUT-ANY-1] r's any-crossing walk against its counting
+ * walk: a crossing found exactly when one is counted, and the part named
+ * one counted.  Returns whether r crosses something. */
+static int any_agrees(const bvh *b, const scene_prim *prims, const ray *r, int i)
+{
+    static count_list got;
+    memset(&got, 0, sizeof got);
+    bvh_visit_counts(b, prims, r, count_into, &got, NULL);
+    bvh_ref found = {-1, 0};
+    int any = bvh_any_crossing(b, prims, r, &found, NULL);
+    ck_assert_msg(any == (got.calls > 0), "ray %d: any %d, %ld parts counted", i, any, got.calls);
+    if (any)
+        ck_assert_msg(found.prim >= 0 && got.per_prim[found.prim] > 0, "ray %d: part %d not counted", i,
+                      found.prim);
+    return any;
+}
+
+/* Rays of every sort, half of them short (many cross nothing), over the
+ * tree and the two planes. */
+START_TEST(test_bvh_any_crossing_as_counts)
+{
+    rng g = {321, 0};
+    scene_frame *frames;
+    int n = 2000, rays = 4000, met = 0;
+    scene_prim *prims = random_scene(320, n, 2, &frames);
+    bvh b;
+    ck_assert(bvh_build(&b, prims, n + 2, NULL));
+    for (int i = 0; i < rays; i++) {
+        ray r = random_ray(&g, prims, n + 2, i);
+        r.tmax = i % 2 ? 0.05 + 3 * rng_uniform(&g) : r.tmax;
+        met += any_agrees(&b, prims, &r, i);
+    }
+    ck_assert_msg(met > 500 && rays - met > 500, "%d rays of %d met", met, rays);
+    bvh_free(&b);
+    free(prims);
+    free(frames);
+}
+END_TEST
+
 static int stop_with_seven(void *ctx, const hit *h)
 {
     int *calls = ctx;
@@ -1408,6 +1447,7 @@ Suite *suite_bvh(void)
     tcase_add_test(tc, test_bvh_intersect_matches_brute_force);
     tcase_add_test(tc, test_bvh_visit_matches_brute_force);
     tcase_add_test(tc, test_bvh_visit_counts_match_brute_force);
+    tcase_add_test(tc, test_bvh_any_crossing_as_counts);
     tcase_add_test(tc, test_bvh_visit_stops_early);
     tcase_add_test(tc, test_bvh_parallel_ray_in_flat_box_plane);
     tcase_add_test(tc, test_bvh_flat_huge_triangle_not_culled);

@@ -302,6 +302,9 @@ static void assert_hot_sphere_matches(const scene_prim *s, const ray *r)
     int reals, code = isect_hot_make(s, 0, g, &reals);
     ck_assert_int_eq(ISECT_HOT_KIND(code), ISECT_HOT_SPHERE);
     ck_assert_int_eq(isect_hot_crossings(code, g, r, NULL), isect_part_crossings(s, 0, r));
+    /* [NUM-SPHERE-ANY-1] */
+    ck_assert_int_eq(isect_hot_crossed(code, g, r, NULL), isect_part_crossings(s, 0, r) > 0);
+    ck_assert_int_eq(isect_part_crossed(s, 0, r), isect_part_crossings(s, 0, r) > 0);
     ray a = *r, b = *r;
     hit ha, hb;
     int na = isect_hot_hit(code, g, &a, &ha), nb = isect_part(s, 0, &b, &hb);
@@ -421,7 +424,7 @@ END_TEST
 START_TEST(test_isect_sphere_count_matches_the_refined_roots)
 {
     rng g = {1919, 0};
-    int between = 0, clear = 0;
+    int between = 0, clear = 0, second_only = 0;
     for (int i = 0; i < 40000; i++) {
         double scale = pow(10.0, 8 * rng_uniform(&g) - 4);
         double spread = pow(10.0, 12 * rng_uniform(&g));
@@ -468,7 +471,13 @@ START_TEST(test_isect_sphere_count_matches_the_refined_roots)
         real gr[ISECT_HOT_REALS];
         int reals, code = isect_hot_make(&s, 0, gr, &reals);
         ck_assert_int_eq(isect_hot_crossings(code, gr, &r, NULL), expect);
+        /* [NUM-SPHERE-ANY-1] The first root taken, or none. */
+        ck_assert_int_eq(isect_part_crossed(&s, 0, &r), expect > 0);
+        ck_assert_int_eq(isect_hot_crossed(code, gr, &r, NULL), expect > 0);
+        int first_out = !(u[0] > r.tmin && u[0] < r.tmax) && !(t0 > r.tmin && t0 < r.tmax);
+        second_only += expect == 1 && first_out;
     }
+    ck_assert_msg(second_only > 1000, "%d rays cross the second root alone", second_only);
     /* Enough rays on which counting the unrefined roots would be wrong,
      * and enough with both roots clear of the ends. */
     ck_assert_msg(between > 1000 && clear > 5000, "between %d, clear %d", between, clear);

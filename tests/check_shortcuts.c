@@ -403,6 +403,46 @@ START_TEST(test_shortcuts_open_ray_clears_the_blocker)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-BLOCKER-1] A camera ray's hit and its mirror ray's hit
+ * keep their own hints.  A 1x1 orthographic view along (0, -1, 1) at a
+ * glossy floor's origin; its mirror ray, along (0, 1, 1), meets the ball W
+ * at (0, 5, 5).  The light at (3, 2, -2): the floor point's shadow ray is
+ * stopped by ball A, halfway, the point on W's by ball B, halfway too.
+ * After the pixel the first kind's slot holds A and the second's B (one
+ * slot for both would hold B alone); the pixel again is stopped by both
+ * hints, with the same value.
+ */
+START_TEST(test_shortcuts_mirror_hit_keeps_its_own_blocker)
+{
+    scene_model *s = load("image { width 1 height 1 max_depth 2 }\n"
+                          "camera { orthographic eye [0, 10, -10] look_at [0, 0, 0] up [0, 1, 0] width 1 }\n"
+                          "point_light { position [3, 2, -2] power 1 }\n"
+                          "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 Ks 0.5 n 10 } }\n"
+                          "sphere { center [0, 5, 5] radius 1 material { Kd 0.5 } }\n"
+                          "sphere { center [1.5, 1, -1] radius 0.3 material { Kd 0.5 } }\n"
+                          "sphere { center [1.5, 3.1464, 1.1464] radius 0.3 material { Kd 0.5 } }\n");
+    tracer t;
+    trace_stats st;
+    ck_assert(tracer_init(&t, s, 0, 0));
+    memset(&st, 0, sizeof st);
+    rgb first = render_pixel(&t, 1, 1, 1, 0, 0, &st);
+    ck_assert_int_eq(st.shadow_rays, 2);
+    ck_assert_int_eq(st.reflection_rays, 1);
+    ck_assert_int_eq(st.blocker[0].prim, 1 + 2);
+    ck_assert_int_eq(st.blocker[TRACE_BLOCKERS].prim, 1 + 3);
+    long tested = st.bvh.prims_tested;
+    rgb second = render_pixel(&t, 1, 1, 1, 0, 0, &st);
+    ck_assert_int_eq(st.shadow_rays, 4);
+    ck_assert_int_eq(st.blocker[0].prim, 1 + 2);
+    ck_assert_int_eq(st.blocker[TRACE_BLOCKERS].prim, 1 + 3);
+    ck_assert(st.bvh.prims_tested - tested < tested);
+    ck_assert(same_vec_bits(first, second));
+    tracer_free(&t);
+    scene_free(s);
+}
+END_TEST
+
 
 /* Renders pixel (0, 0) of s's 1x1 image with the ray-tree hash on or off
  * (it turns [SHADE-SHORTCUT-TIR-1] off); the rays traced in *rays. */
@@ -1187,6 +1227,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_cli_no_shortcuts);
     tcase_add_test(tc, test_shortcuts_blocker_tried_first);
     tcase_add_test(tc, test_shortcuts_open_ray_clears_the_blocker);
+    tcase_add_test(tc, test_shortcuts_mirror_hit_keeps_its_own_blocker);
     tcase_add_test(tc, test_shortcuts_lobe_gate_on_glass);
     tcase_add_test(tc, test_shortcuts_dark_light_ball_holds_samples);
     tcase_add_test(tc, test_shortcuts_dark_cell_ball_holds_samples);

@@ -634,6 +634,22 @@ HINT_OUT_OF_LINE static int children_meet_any(const bvh_node *a, const slab_ray 
 }
 #endif
 
+/* The shadow walks' way down from an inner node whose children a and
+ * a + 1 the ray meets as met says (bit 0: a, bit 1: a + 1): the next node,
+ * a where it is met, else a + 1 where it is, else NULL; a met a + 1 is
+ * pushed beside a.  The sibling written always, kept when met: a count,
+ * not a branch (grid1k: its branch mispredicted 219 k of 1.68 M). */
+static inline HINT_IN_LINE const bvh_node *enter_met(const bvh *b, int a, int met, int *stack, int *sp)
+{
+    if (met & 1) {
+        assert(*sp < BVH_MAX_DEPTH);
+        stack[*sp] = a + 1;
+        *sp += met >> 1;
+        return &b->nodes[a];
+    }
+    return met & 2 ? &b->nodes[a + 1] : NULL;
+}
+
 /* Depth-first over every node below each of start[0..starts-1] (itself
  * included) that the ray meets, the starts in turn, the first child first.
  * Both children of an inner node are tested together (adjacent in memory,
@@ -675,17 +691,9 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
                 met |= all;
                 if (w->stats)
                     w->stats->nodes_visited += 2;
-                if (met & 1) {
-                    /* The sibling written always, kept when met: a count, not a
-                     * branch (grid1k: its branch mispredicted 219 k of 1.68 M). */
-                    assert(sp < BVH_MAX_DEPTH);
-                    stack[sp] = a + 1;
-                    sp += met >> 1;
-                    nd = &b->nodes[a];
-                    continue;
-                }
-                if (met & 2) {
-                    nd = &b->nodes[a + 1];
+                const bvh_node *next = enter_met(b, a, met, stack, &sp);
+                if (next) {
+                    nd = next;
                     continue;
                 }
             } else {
@@ -732,6 +740,138 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     slab_ray s = slab_make(w->r);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,
                          bundle ? bundle->count : 1);
+}
+
+/*
+ * The any-crossing walk (bvh_any_crossing): stops at the first part with a
+ * crossing, so the order of its tests is free, and it takes the nearer
+ * child first where both are met, as the nearest walk does: a blocker near
+ * the shaded point (the ball above it in a grid) is found before the far
+ * subtree is entered.  A part's crossings are counted as bvh_visit_counts
+ * counts them (visit_unbounded, walk_other, walk_run_hit: the same tests
+ * on the same ray), so a part crossed here is one it reports.
+ */
+typedef struct any_leaf {
+    const bvh *b;
+    const scene_prim *prims;
+    const ray *r;
+    lazy_shear *sh;
+    bvh_stats *stats;
+    bvh_ref found;
+} any_leaf;
+
+static int any_found(any_leaf *l, bvh_ref ref)
+{
+    l->found = ref;
+    return 1;
+}
+
+static int any_run_hit(void *ctx, int item, real t)
+{
+    any_leaf *l = ctx;
+    (void)t;
+    return any_found(l, l->b->items[item]);
+}
+
+static int any_other(void *ctx, int item)
+{
+    any_leaf *l = ctx;
+    bvh_hot hr = l->b->hot[item];
+    bvh_ref ref = l->b->items[item];
+    if (l->stats)
+        l->stats->prims_tested++;
+    int crossed;
+    if (hr.code == ISECT_HOT_NONE) {
+        const scene_prim *p = &l->prims[ref.prim];
+        crossed = isect_part_crossings_sheared(p, ref.part, l->r, shear_for(l->sh, p)) > 0;
+    } else {
+        crossed = isect_hot_crossed(hr.code, l->b->hot_reals + hr.at, l->r, NULL);
+    }
+    return crossed ? any_found(l, ref) : 0;
+}
+
+/* The tree's part of the walk for one octant (a constant in each copy, as
+ * traverse_nearest_oct's), the pair form made once. */
+static inline HINT_IN_LINE int any_walk_oct(const bvh *b, any_leaf *l, const slab_ray *sr, int oct)
+{
+    int stack[BVH_MAX_DEPTH], sp = 0;
+    const int all = b->exhaustive ? 3 : 0; /* exhaustive: both children met */
+    real tmin = l->r->tmin, tmax = l->r->tmax, ta, tc;
+    walk_ray w;
+    w.s = *sr;
+    const bvh_node *nd = &b->nodes[0];
+    if (!root_decides_nothing(b)) {
+        if (l->stats)
+            l->stats->nodes_visited++;
+        if (!node_hit(nd, &w.s, oct, tmin, tmax, &ta) && !b->exhaustive)
+            return 0;
+    }
+#ifdef SLAB_PAIR_SSE2
+    slab_pair_make(&w.s, &w.p);
+#endif
+    for (;;) {
+        if (nd->count == 0) {
+            int a = nd->first;
+            int met = children_hit(&b->nodes[a], &w, oct, tmin, tmax, &ta, &tc) | all;
+            if (l->stats)
+                l->stats->nodes_visited += 2;
+            assert(sp < BVH_MAX_DEPTH);
+            if (met == 3 && ta < tc) {
+                stack[sp++] = a;
+                nd = &b->nodes[a + 1];
+                continue;
+            }
+            const bvh_node *next = enter_met(b, a, met, stack, &sp);
+            if (next) {
+                nd = next;
+                continue;
+            }
+        } else if (visit_hits(b, nd->first, nd->first + nd->count, l->r, l->sh, l->stats, any_run_hit, any_other,
+                              l)) {
+            return 1;
+        }
+        if (sp == 0)
+            return 0;
+        nd = &b->nodes[stack[--sp]];
+    }
+}
+
+static int any_walk(const bvh *b, any_leaf *l)
+{
+    slab_ray s = slab_make(l->r);
+    switch (slab_octant(&s)) {
+    case 0: return any_walk_oct(b, l, &s, 0);
+    case 1: return any_walk_oct(b, l, &s, 1);
+    case 2: return any_walk_oct(b, l, &s, 2);
+    case 3: return any_walk_oct(b, l, &s, 3);
+    case 4: return any_walk_oct(b, l, &s, 4);
+    case 5: return any_walk_oct(b, l, &s, 5);
+    case 6: return any_walk_oct(b, l, &s, 6);
+    default: return any_walk_oct(b, l, &s, 7);
+    }
+}
+
+int bvh_any_crossing(const bvh *b, const scene_prim *prims, const ray *r, bvh_ref *found, bvh_stats *stats)
+{
+    lazy_shear sh = shear_lazy(r);
+    any_leaf l = {b, prims, r, &sh, stats, {-1, 0}};
+    for (int i = 0; i < b->unbounded_count; i++) {
+        const scene_prim *p = &prims[b->unbounded[i].prim];
+        if (stats)
+            stats->prims_tested++;
+        int n = p->kind == PRIM_PLANE && !p->frame
+                    ? isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r)
+                    : isect_part_crossings_sheared(p, b->unbounded[i].part, r, shear_for(&sh, p));
+        if (n > 0) {
+            *found = b->unbounded[i];
+            return 1;
+        }
+    }
+    if (b->node_count > 0 && any_walk(b, &l)) {
+        *found = l.found;
+        return 1;
+    }
+    return 0;
 }
 
 int bvh_visit_stats(const bvh *b, const scene_prim *prims, const ray *r,

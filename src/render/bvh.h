@@ -129,6 +129,12 @@ int bvh_visit_window(const bvh *b, const scene_prim *prims, const ray *r, real n
 int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
                      int (*fn)(void *ctx, bvh_ref ref, int crossings), void *ctx, bvh_stats *stats);
 
+/* Whether r crosses some part (a crossing bvh_visit_counts would count):
+ * 1 with that part in *found, else 0.  Which part, when several are
+ * crossed, is not said: the walk stops at the first it finds, nearer
+ * child first. */
+int bvh_any_crossing(const bvh *b, const scene_prim *prims, const ray *r, bvh_ref *found, bvh_stats *stats);
+
 /*
  * Bundles of shadow rays (spec/shading.md, [SHADE-SHORTCUT-BUNDLE-1]): the
  * rays from one shaded point toward the samples of one distributed light.

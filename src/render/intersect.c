@@ -1139,6 +1139,24 @@ HINT_FLATTEN HINT_OUT_OF_LINE static int sphere_count(const scene_prim *p, const
     return sphere_hits(p->u.sphere.center, p->u.sphere.radius, r, out, ISECT_MAX_CROSSINGS, 2);
 }
 
+/* Whether sphere_count is > 0: sphere_hits' count stopped at its first
+ * crossing (max 1).  Each root is taken or not whatever the other's fate
+ * (found is only counted, bare 2 writes nothing), so the first root taken
+ * is the one the full count takes first: 1 exactly where that count is >= 1
+ * ([NUM-SPHERE-ANY-1]).  Out of line as sphere_count. */
+HINT_FLATTEN HINT_OUT_OF_LINE static int sphere_crossed(vec3 center, real radius, const ray *r)
+{
+    hit out[1];
+    return sphere_hits(center, radius, r, out, 1, 2);
+}
+
+int isect_part_crossed(const scene_prim *p, int part, const ray *r)
+{
+    if (p->kind == PRIM_SPHERE && !p->frame)
+        return sphere_crossed(p->u.sphere.center, p->u.sphere.radius, r);
+    return isect_part_crossings_sheared(p, part, r, NULL) > 0;
+}
+
 int isect_part_crossings_sheared(const scene_prim *p, int part, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
@@ -1409,7 +1427,10 @@ HINT_FLATTEN HINT_OUT_OF_LINE static int hot_box_crossings(const real *g, const 
     return in_interval(r, tt[0]) + (tt[0] != tt[1] && in_interval(r, tt[1]));
 }
 
-int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh)
+/* isect_hot_crossings' body, shared with isect_hot_crossed: each exported
+ * form has one caller in the walks (bvh.c), which gcc inlines it into; one
+ * function with two callers went out of line (demo.scene +0.6 %). */
+static inline HINT_IN_LINE int hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh)
 {
     hit out[ISECT_MAX_CROSSINGS];
     if (ISECT_HOT_KIND(code) == ISECT_HOT_BOX)
@@ -1417,6 +1438,20 @@ int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear
     if (ISECT_HOT_KIND(code) == ISECT_HOT_TRIANGLE)
         return hot_triangle(g, code >> 2, r, sh, out);
     return hot_sphere_bare(g, r, out, ISECT_MAX_CROSSINGS);
+}
+
+int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh)
+{
+    return hot_crossings(code, g, r, sh);
+}
+
+int isect_hot_crossed(int code, const real *g, const ray *r, const isect_shear *sh)
+{
+    if (ISECT_HOT_KIND(code) == ISECT_HOT_SPHERE) {
+        vec3 c = vec_make(g[0], g[1], g[2]);
+        return !isect_sphere_moving_away(vec_sub(r->origin, c), g[3], r) && sphere_crossed(c, g[3], r);
+    }
+    return hot_crossings(code, g, r, sh) > 0;
 }
 
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t)

@@ -116,6 +116,9 @@ real isect_part_magnitude(const scene_prim *p, int part);
 /* How many crossings isect_part_all reports, found by the same arithmetic
  * without their points and normals (a shadow ray needs only the count). */
 int isect_part_crossings(const scene_prim *p, int part, const ray *r);
+/* Whether isect_part_crossings is > 0 (a world-frame sphere's stops at its
+ * first crossing: the same answer). */
+int isect_part_crossed(const scene_prim *p, int part, const ray *r);
 
 /* The ray's share of the watertight triangle test (Woop et al.: the axis
  * permutation, dz and the shear sx, sy), which depends on the direction
@@ -176,6 +179,8 @@ int isect_hot_reals(const scene_prim *p);
 /* isect_part_crossings of the record's part (sh: r's shear when the record
  * is a triangle). */
 int isect_hot_crossings(int code, const real *g, const ray *r, const isect_shear *sh);
+/* Whether isect_hot_crossings is > 0 (the any-crossing walk's test). */
+int isect_hot_crossed(int code, const real *g, const ray *r, const isect_shear *sh);
 /* The nearest crossing's t in (r->tmin, r->tmax), as isect_part finds it:
  * returns 1 and sets *t, or 0. */
 int isect_hot_nearest(int code, const real *g, const ray *r, const isect_shear *sh, real *t);
