@@ -16,6 +16,7 @@
 #include "io/scene_file.h"
 #include "render/interface.h"
 #include "render/render.h"
+#include "render/shade.h"
 #include "scene/scene.h"
 
 /* 400 random scenes, 50 to a test: one fork per 50 renders, not per
@@ -747,6 +748,97 @@ START_TEST(test_shortcuts_dark_lights_both_ways)
 }
 END_TEST
 
+/* A uniform double in [0, 1) from a 64-bit xorshift state. */
+static double next_uniform(uint64_t *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    return (double)(*state >> 11) * 0x1p-53;
+}
+
+static vec3 next_unit(uint64_t *state)
+{
+    vec3 a;
+    do
+        a = vec_make(2 * next_uniform(state) - 1, 2 * next_uniform(state) - 1, 2 * next_uniform(state) - 1);
+    while (!(vec_length2(a) > 0.01 && vec_length2(a) <= 1));
+    return vec_normalize(a);
+}
+
+/*
+ * [SHADE-SHORTCUT-ABSORB-1] trace_lobe_above bounds shade_phong_lobe from
+ * above for unit V and R, far from the peak and on it (R within 1e-9 to
+ * 0.3 of V: the 1 - h branch with its correction), integral exponents and
+ * not, up to 1e6; and it is close: within 2 exp(n (-ln c - S) + n 2^-17)
+ * of the lobe (S = x + x^2/2 + x^3/3, x = 1 - c: the floor to a power of
+ * 2, the series' tail and the margin) where the lobe is at least 2^-900,
+ * so a bound that only holds loosely fails.
+ */
+START_TEST(test_shortcuts_lobe_above_bounds_lobe)
+{
+    static const double ns[] = {1, 1.5, 2, 7, 20, 20.5, 200, 400, 1000, 4097.25, 65537, 1e6};
+    uint64_t state = 0x9e3779b97f4a7c15u;
+    long near = 0, close = 0;
+    for (int i = 0; i < 240000; i++) {
+        double n = ns[i % (int)(sizeof ns / sizeof ns[0])];
+        vec3 v = next_unit(&state), r;
+        if (i % 3 == 0) {
+            r = next_unit(&state);
+        } else {
+            double scale = pow(10, -9 + 8.5 * next_uniform(&state));
+            r = vec_normalize(vec_add(v, vec_scale(next_unit(&state), scale)));
+            near++;
+        }
+        double c = vec_dot(v, r), lobe = shade_phong_lobe(v, r, n), above = trace_lobe_above(c, n);
+        ck_assert_msg(lobe <= above, "n %.17g, V.R %.17g: lobe %.17g above its bound %.17g", n, c, lobe, above);
+        if (c > 0 && c < 1 && lobe >= 0x1p-900 && above < 1) {
+            double x = 1 - c, tail = -log(c) - (x + x * x / 2 + x * x * x / 3);
+            ck_assert_msg(above <= 2.01 * lobe * exp(n * tail + n * 0x1p-17), "n %.17g, V.R %.17g: bound %.17g, lobe %.17g",
+                          n, c, above, lobe);
+            close++;
+        }
+    }
+    ck_assert(near > 100000 && close > 10000);
+}
+END_TEST
+
+/* A ball of `material` over a floor under `light`, 40 x 40, max_depth 1, no
+ * ambient: the same bits with the shortcuts on and off. */
+static void ball_both_ways(const char *light, const char *material, render_stats *on, render_stats *off)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "image { width 40 height 40 max_depth 1 }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
+             "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
+             "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
+             light, material);
+    same_both_ways(text, on, off);
+}
+
+/*
+ * [SHADE-SHORTCUT-ABSORB-1] A glass ball's highlights (Kd 0, no ambient,
+ * max_depth 1: its pixels are the highlight sums alone) under a disk light
+ * of 36 samples: the same bits with the shortcuts on and off, and samples
+ * whose highlight the sum absorbs are left without their shadow ray.
+ */
+START_TEST(test_shortcuts_absorbed_highlights_both_ways)
+{
+    static const char *const materials[] = {"Kd 0 Ks 0.06 n 400 t 0.92 ior 1.45",
+                                            "Kd 0 Ks [0.5, 0.02, 0] n 60 t 0.5 ior 1.5",
+                                            "Kd 0 Ks [0.2, 0.4, 0.1] n 100.5 t 0.5 ior 1.5",
+                                            "Kd 0 Ks 0.3 n 5000 t 0.9 ior 1.3"};
+    for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
+        render_stats on, off;
+        ball_both_ways("distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
+                       &on, &off);
+        ck_assert_msg(on.trace.absorbed > 0 && off.trace.absorbed == 0, "%s: %ld samples absorbed, %ld without shortcuts",
+                      materials[i], on.trace.absorbed, off.trace.absorbed);
+        ck_assert_int_eq(on.trace.light_samples, off.trace.light_samples);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-DARK-1] (found by an outside attack) A scene 1e-160
  * across: a mirror-like plane (Kd 0, Ks 1, n 1e6, lobe floor 0.9993) under a
  * disk light of radius 1e-175 near the mirror direction, power 1e300 (its
@@ -1233,6 +1325,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_dark_cell_ball_holds_samples);
     tcase_add_test(tc, test_shortcuts_dark_lights_both_ways);
     tcase_add_test(tc, test_shortcuts_dark_light_subnormal_distance);
+    tcase_add_test(tc, test_shortcuts_lobe_above_bounds_lobe);
+    tcase_add_test(tc, test_shortcuts_absorbed_highlights_both_ways);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_test(tc, test_shortcuts_far_tiny_frame);

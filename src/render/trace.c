@@ -343,6 +343,54 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
     return bundle;
 }
 
+/*
+ * [SHADE-SHORTCUT-ABSORB-1] The lobe is pow(c_hi, n) with c_hi <= c (1 +
+ * 2^-19) <= 1, times pow's ulp and the correction exp(n c_lo / c_hi)
+ * (within 2^-32 of 1 for n < 2^20): at most c_hi^n (1 + 2^-31).  With x
+ * = 1 - c, ln c = -(x + x^2/2 + x^3/3 + ...) <= -S, S = x + x^2/2 + x^3/3,
+ * and ln c_hi <= ln c + 2^-19, so the lobe is at most 2^-(w log2(e) -
+ * 2^-30), w = n S - n 2^-19.  z is below that exponent: log2(e) and 1/3
+ * taken low, the factor 1 - 2^-40 more than the roundings of x (none for
+ * c >= 1/2), S and the products, n 2^-18 more than n 2^-19 log2(e) +
+ * 2^-30; so 2^-floor(z) bounds the lobe.  Past 2^-1000 the lobe is below
+ * DBL_MIN, flushed to 0.  No pow, no loop.
+ */
+real trace_lobe_above(real c, real n)
+{
+    if (!(c > 0))
+        return 0;   /* shade_phong_lobe's own 0 */
+    if (!(c < 1 && n >= 1 && n < 0x1p20))
+        return 1;
+    real x = 1 - c, sum = x * (1 + x * (0.5 + x * 0.33333333333333));
+    real z = n * sum * 1.44269504088896 * (1 - 0x1p-40) - n * 0x1p-18;
+    if (!(z >= 1))
+        return 1;
+    uint64_t bits = (uint64_t)(1023 - (z < 1000 ? (int)z : 1000)) << 52;   /* 2^-floor(z), a normal double */
+    real b;
+    memcpy(&b, &bits, sizeof b);
+    return b;
+}
+
+static int sum_has_highlight(const direct_sum *sum)
+{
+    return sum->highlight.x != 0 || sum->highlight.y != 0 || sum->highlight.z != 0;
+}
+
+/*
+ * [SHADE-SHORTCUT-ABSORB-1] Whether a Kd = 0 sample's highlight, Ks I
+ * lobe with I the unshadowed *intensity times the transmission (in [0, 1])
+ * and lobe <= trace_lobe_above, surely leaves the running sum's bits as they
+ * are: sum + U rounds to sum for U = Ks I trace_lobe_above, so sum + t does for
+ * every t in [0, U] (rounding is monotone, and each product the term is
+ * made of is at most its counterpart in U).
+ */
+static int highlight_absorbed(const surface *s, const rgb *intensity, real c, const direct_sum *sum)
+{
+    rgb u = vec_scale(vec_mul(s->m->ks, *intensity), trace_lobe_above(c, s->m->n));
+    rgb a = vec_add(sum->highlight, u);
+    return a.x == sum->highlight.x && a.y == sum->highlight.y && a.z == sum->highlight.z;
+}
+
 /* One point source at *at (distant: at infinity along -direction) of power
  * *emits; bundle: the distributed light's (NULL for the others).  The point
  * and power by address: by value they were six doubles copied onto the
@@ -377,9 +425,24 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
      * Ks I lobe: a sample whose lobe is surely 0 (V.R, formed as
      * shade_phong_lobe forms it, at or below lobe_floor) adds +0 whatever
      * its shadow ray would find, so it sends none. */
-    if (s->no_body && !t->no_shortcuts &&
-        (!s->highlight || vec_dot(s->v, shade_reflect_about(l, s->n)) <= s->lobe_floor))
-        return;
+    rgb intensity = vec_splat(0);
+    int unlit = 1;   /* intensity not yet made */
+    if (s->no_body && !t->no_shortcuts) {
+        real c = s->highlight ? vec_dot(s->v, shade_reflect_about(l, s->n)) : 0;
+        if (!s->highlight || c <= s->lobe_floor)
+            return;
+        /* [SHADE-SHORTCUT-ABSORB-1] A highlight too small to change the
+         * sum's bits, however lit: no shadow ray.  The falloff is made
+         * here, once; the same pure function as below. */
+        if (!st->record_path && sum_has_highlight(sum)) {
+            intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
+            unlit = 0;
+            if (highlight_absorbed(s, &intensity, c, sum)) {
+                st->absorbed++;
+                return;
+            }
+        }
+    }
     /* The shadow ray first: a blocked sample needs no falloff (a pure
      * function, so computing it after changes no bit). */
     real through = 1;
@@ -401,7 +464,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         if (through == 0 && !t->no_shortcuts)
             return;
     }
-    rgb intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
+    if (unlit)
+        intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
     if (t->shadows)
         intensity = vec_scale(intensity, through);
     if (s->highlight) {

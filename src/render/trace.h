@@ -34,6 +34,8 @@ typedef struct trace_stats {
     long lights_on_surface;   /* samples skipped: the light sits on the shaded point */
     long dark_lights;
     long dark_cells;          /* samples not made: their cell is dark ([SHADE-SHORTCUT-DARK-2]) */
+    long absorbed;            /* samples whose highlight the sum absorbs: no shadow ray
+                                 ([SHADE-SHORTCUT-ABSORB-1]) */
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
@@ -189,6 +191,11 @@ light_setup trace_light_setup(const scene_light *light, int samples);
  * for a hit of a ray with key `key`: the point the tracer shades with, bit
  * for bit. */
 vec3 trace_light_point(const scene_light *light, const light_setup *setup, int index, uint64_t key, int j);
+
+/* An upper bound of shade_phong_lobe(V, R, n) for unit V, R with V.R = c >
+ * 0 (formed as it forms it), made without pow; 1 where it makes none
+ * (n < 1, n >= 2^20, c near 1).  [SHADE-SHORTCUT-ABSORB-1] */
+real trace_lobe_above(real c, real n);
 
 /* The side of from's normal every sample of the light lies on, as
  * spawn_origin decides it for ray_shadow_to(from, sample): 1 (the origin
