@@ -13,7 +13,10 @@
  * exit 1.  Also prints the least ratio bound / lobe seen (how much room).
  *   cc -std=c99 -O2 -ffp-contract=off -Isrc -Ibuild/gen -o /tmp/lobef \
  *      tests/attack23/lobe_fuzz.c build/librefray-internal.a -ljansson -lm
- *   /tmp/lobef CASES [SEED [SKEW]]
+ *   /tmp/lobef CASES [SEED [SKEW [MUTANT]]]
+ * MUTANT (default 0: trace_lobe_above itself) takes a copy of it with one
+ * change, to see that the fuzzer catches it: 1 2^-(floor(z) + 1), 2 no
+ * n 2^-18 term, 3 no factor 1 - 2^-40, 4 the n 2^-18 term as n 2^-30.
  */
 #include <math.h>
 #include <stdint.h>
@@ -39,6 +42,22 @@ static vec3 rnd_unit(void)
         if (vec_length2(a) > 0.01 && vec_length2(a) <= 1)
             return vec_normalize(a);
     }
+}
+
+static int mutant;
+static double lobe_mut(double c, double n)
+{
+    if (!(c > 0))
+        return 0;
+    if (!(c < 1 && n >= 1 && n < 0x1p20))
+        return 1;
+    double x = 1 - c, sum = x * (1 + x * (0.5 + x * 0.33333333333333));
+    double z = n * sum * 1.44269504088896 * (mutant == 3 ? 1 : 1 - 0x1p-40) -
+               (mutant == 2 ? 0 : n * (mutant == 4 ? 0x1p-30 : 0x1p-18));
+    if (!(z >= 1))
+        return 1;
+    int e = (z < 1000 ? (int)z : 1000) + (mutant == 1);
+    return ldexp(1, -e);
 }
 
 static double pick_n(void)
@@ -76,6 +95,7 @@ int main(int argc, char **argv)
     long cases = argc > 1 ? atol(argv[1]) : 100000;
     rng = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
     int skew = argc > 3 ? atoi(argv[3]) : 0;
+    mutant = argc > 4 ? atoi(argv[4]) : 0;
     double least_room = INFINITY;
     long tested = 0, bounded = 0, bad = 0;
     for (long i = 0; i < cases; i++) {
@@ -95,7 +115,7 @@ int main(int argc, char **argv)
         double c = vec_dot(v, r);
         if (!(c > 0))
             continue;
-        double lobe = shade_phong_lobe(v, r, n), bound = trace_lobe_above(c, n);
+        double lobe = shade_phong_lobe(v, r, n), bound = mutant ? lobe_mut(c, n) : trace_lobe_above(c, n);
         tested++;
         if (bound < 1)
             bounded++;
