@@ -113,7 +113,10 @@ static int loop_pass(loader *L, const ast *node, double x)
 
 static int lower_for(loader *L, const ast *node)
 {
-    double from, to;
+    /* Zeroed, though read only where loop_bound set them: gcc -O3 cannot
+     * see that through the `ok &=` below (maybe-uninitialized under
+     * -Werror). */
+    double from = 0, to = 0;
     long count;
     /* Both bounds are checked, so both errors are reported. */
     int ok = loop_bound(L, node->first, &from);

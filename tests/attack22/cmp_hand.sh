@@ -11,7 +11,9 @@ B=${B:-build/refray}
 OLD=${OLD:-/tmp/old-main/build/refray}
 D=$(mktemp -d)
 sh tests/attack22/make_scenes.sh "$D/s"
-counts() { grep -E '^  (rays|light samples):' "$1"; }
+# The shadow rays are left out since the twenty-first round:
+# [SHADE-SHORTCUT-ABSORB-1] sends fewer of them by design.
+counts() { sed -n 's/^  rays: \([0-9]*\) camera, [0-9]* shadow, \(.*\); [0-9]* in all/\1 \2/p; /^  light samples:/p' "$1"; }
 n=0 bad=0
 for f in "$D"/s/*.scene; do
     n=$((n + 1))
