@@ -33,13 +33,16 @@
 #include <stdio.h>
 #include <stdint.h>
 
+#include "base/sampler.h"
+
 static uint64_t rng = 1;
+/* splitmix64: the library's own finaliser, the same sequence as its
+ * spelled-out form had. */
 static uint64_t R64(void)
 {
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    uint64_t z = sampler_mix(rng);
+    rng += SAMPLER_GAMMA;
+    return z;
 }
 static double U(void) { return (R64() >> 11) * 0x1p-53; }
 static int RI(int a, int b) { return a + (int)(U() * (b - a + 1)); }
@@ -188,8 +191,10 @@ int main(int argc, char **argv)
                 outside++;
             }
         }
-        light_view view;
-        view.some = 0;
+        /* Zeroed whole, as add_distributed zeroes it: since 08143cd
+         * light_dark sets only what it finds (with `.some = 0` alone the
+         * rest was stale and the run reported false defects). */
+        light_view view = {0};
         if (light_dark(&s, &setup, &view)) {
             scenes_dark++;
             continue;

@@ -26,13 +26,16 @@
 #include "render/camera.h"
 #include "render/render.h"
 
+#include "base/sampler.h"
+
 static uint64_t rng = 1;
+/* splitmix64: the library's own finaliser, the same sequence as its
+ * spelled-out form had. */
 static uint64_t R64(void)
 {
-    uint64_t z = (rng += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    uint64_t z = sampler_mix(rng);
+    rng += SAMPLER_GAMMA;
+    return z;
 }
 static double U(void) { return (R64() >> 11) * 0x1p-53; }
 

@@ -26,12 +26,15 @@ shift 3
 mkdir -p "$D"
 cp scenes/stress/glass_cube.obj tests/attack20/*.obj scenes/stress/geosphere.obj "$D/"
 dir=tests/attack23
-for d in tests/attack22 tests/attack19 tests/attack20; do [ -f "$dir/$gen.awk" ] || dir=$d; done
+# gen14 is gen12 through an orthographic camera.
+file=$gen ortho=0
+[ "$gen" = gen14 ] && file=gen12 ortho=1
+for d in tests/attack22 tests/attack19 tests/attack20; do [ -f "$dir/$file.awk" ] || dir=$d; done
 counts() { sed -n 's/^  rays: \([0-9]*\) camera, [0-9]* shadow, \(.*\); [0-9]* in all/\1 \2/p; /^  light samples:/p' "$1"; }
 bad=0 n=0
 while [ "$s" -le "$last" ]; do
     f="$D/$gen-$s.scene"
-    awk -v seed="$s" -f tests/attack18/common.awk -f tests/attack19/common19.awk -f "$dir/$gen.awk" > "$f"
+    awk -v seed="$s" -v ortho=$ortho -f tests/attack18/common.awk -f tests/attack19/common19.awk -f "$dir/$file.awk" > "$f"
     timeout 120 nice $B render "$f" -q --stats "$@" -o "$D/on.pfm" >/dev/null 2>"$D/on.st"; e1=$?
     timeout 120 nice $B render "$f" -q --no-shortcuts "$@" -o "$D/off.pfm" >/dev/null 2>&1; e2=$?
     timeout 120 nice $OLD render "$f" -q "$@" -o "$D/old.pfm" >/dev/null 2>&1; e3=$?

@@ -1,4 +1,5 @@
-# gen12.awk - a random scene for [SHADE-SHORTCUT-ANY-1], the blocker hints
+# gen12.awk - (with -v ortho=1: gen14, an orthographic camera of width 2, 4 or 8
+# of the scale) a random scene for [SHADE-SHORTCUT-ANY-1], the blocker hints
 # and [SHADE-SHORTCUT-ABSORB-1] (attack 23): mostly all-opaque scenes (t = 0
 # everywhere, sometimes with an ior; a glass part in one case of five, and
 # then sometimes glass inside glass), Kd = 0 highlight materials (n 1 ..
@@ -26,7 +27,10 @@ BEGIN {
     T = pick("0 0 0 0 1 1e3 1e6 1e9")
     TX = T * pick("1 0 -1"); TY = T * pick("0 1"); TZ = T * pick("1 0 0.5")
     image(pick("16 17 24 33"), pick("12 13 18"), pick("1 2 3 5"))
-    printf "camera { perspective eye %s look_at %s up [0, 1, 0] fov %s }\n", W(r(-3, 3), r(0.5, 4), r(3, 7)), W(0, 0.5, 0), pick("40 60 90")
+    if (ortho)   # gen14: the same scenes through an orthographic camera
+        printf "camera { orthographic eye %s look_at %s up [0, 1, 0] width %s }\n", W(r(-3, 3), r(0.5, 4), r(3, 7)), W(0, 0.5, 0), pick("2 4 8") * S
+    else
+        printf "camera { perspective eye %s look_at %s up [0, 1, 0] fov %s }\n", W(r(-3, 3), r(0.5, 4), r(3, 7)), W(0, 0.5, 0), pick("40 60 90")
     print "ambient { color " pick("0.05 0 0") " }"
     fl = pick("box box plane none")
     if (fl == "box") printf "box { from %s to %s %s }\n", W(-4, -1, -4), W(4, 0, 4), mm()
