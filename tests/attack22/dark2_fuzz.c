@@ -33,18 +33,7 @@
 #include <stdio.h>
 #include <stdint.h>
 
-#include "base/sampler.h"
-
-static uint64_t rng = 1;
-/* splitmix64: the library's own finaliser, the same sequence as its
- * spelled-out form had. */
-static uint64_t R64(void)
-{
-    uint64_t z = sampler_mix(rng);
-    rng += SAMPLER_GAMMA;
-    return z;
-}
-static double U(void) { return (R64() >> 11) * 0x1p-53; }
+#include "../fuzz_rng.h"
 static int RI(int a, int b) { return a + (int)(U() * (b - a + 1)); }
 static vec3 rnd3(void) { return vec_make(2 * U() - 1, 2 * U() - 1, 2 * U() - 1); }
 static vec3 unit3(void)

@@ -26,18 +26,7 @@
 #include "render/camera.h"
 #include "render/render.h"
 
-#include "base/sampler.h"
-
-static uint64_t rng = 1;
-/* splitmix64: the library's own finaliser, the same sequence as its
- * spelled-out form had. */
-static uint64_t R64(void)
-{
-    uint64_t z = sampler_mix(rng);
-    rng += SAMPLER_GAMMA;
-    return z;
-}
-static double U(void) { return (R64() >> 11) * 0x1p-53; }
+#include "../fuzz_rng.h"
 
 static long defects, rays_cmp, runs_pruned;
 

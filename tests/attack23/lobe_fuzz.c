@@ -26,18 +26,7 @@
 #include "render/shade.h"
 #include "render/trace.h"
 
-#include "base/sampler.h"
-
-static uint64_t rng = 1;
-/* splitmix64: the library's own finaliser, the same sequence as its
- * spelled-out form had. */
-static uint64_t R64(void)
-{
-    uint64_t z = sampler_mix(rng);
-    rng += SAMPLER_GAMMA;
-    return z;
-}
-static double U(void) { return (R64() >> 11) * 0x1p-53; }
+#include "../fuzz_rng.h"
 static vec3 rnd_unit(void)
 {
     for (;;) {
