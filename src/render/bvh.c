@@ -566,12 +566,32 @@ typedef struct walk {
 } walk;
 
 /* A part's crossings, to fn or counted, its test not counted in stats. */
+/* The crossings the counting walks count for a part tested by its own
+ * test (no hot record). */
+static int part_crossings(const scene_prim *prims, bvh_ref ref, const ray *r, lazy_shear *sh)
+{
+    const scene_prim *p = &prims[ref.prim];
+    return isect_part_crossings_sheared(p, ref.part, r, shear_for(sh, p));
+}
+
+/* The same for an unbounded part (every walk tests it): a plane in the
+ * world frame is counted by isect_plane_crossings at once, as
+ * isect_part_crossings would count it, without a frame for hits.  One
+ * function for bvh_visit_counts and bvh_any_crossing, whose answers
+ * [SHADE-SHORTCUT-ANY-1] needs to agree. */
+static int unbounded_crossings(const scene_prim *prims, bvh_ref ref, const ray *r, lazy_shear *sh)
+{
+    const scene_prim *p = &prims[ref.prim];
+    if (p->kind == PRIM_PLANE && !p->frame)
+        return isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r);
+    return part_crossings(prims, ref, r, sh);
+}
+
 static int visit_part_uncounted(const walk *w, bvh_ref ref)
 {
     hit out[ISECT_MAX_CROSSINGS];
     if (w->count_fn) {
-        const scene_prim *p = &w->prims[ref.prim];
-        int n = isect_part_crossings_sheared(p, ref.part, w->r, shear_for(w->sh, p));
+        int n = part_crossings(w->prims, ref, w->r, w->sh);
         return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
     }
     int n = isect_part_all_sheared(&w->prims[ref.prim], ref.part, w->r, shear_for(w->sh, &w->prims[ref.prim]), out);
@@ -711,17 +731,14 @@ static int traverse_from(const bvh *b, const walk *w, const slab_ray *sr, const 
     return 0;
 }
 
-/* An unbounded part (every walk tests it): a plane in the world frame is
- * counted by isect_plane_crossings at once, as isect_part_crossings would
- * count it, without visit_part's frame for hits. */
+/* An unbounded part: counted by unbounded_crossings, or its hits made. */
 static int visit_unbounded(const walk *w, bvh_ref ref)
 {
-    const scene_prim *p = &w->prims[ref.prim];
-    if (!w->count_fn || p->kind != PRIM_PLANE || p->frame)
+    if (!w->count_fn)
         return visit_part(w, ref);
     if (w->stats)
         w->stats->prims_tested++;
-    int n = isect_plane_crossings(p->u.plane.point, p->u.plane.normal, w->r);
+    int n = unbounded_crossings(w->prims, ref, w->r, w->sh);
     return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
 }
 
@@ -781,13 +798,8 @@ static int any_other(void *ctx, int item)
     bvh_ref ref = l->b->items[item];
     if (l->stats)
         l->stats->prims_tested++;
-    int crossed;
-    if (hr.code == ISECT_HOT_NONE) {
-        const scene_prim *p = &l->prims[ref.prim];
-        crossed = isect_part_crossings_sheared(p, ref.part, l->r, shear_for(l->sh, p)) > 0;
-    } else {
-        crossed = isect_hot_crossed(hr.code, l->b->hot_reals + hr.at, l->r, NULL);
-    }
+    int crossed = hr.code == ISECT_HOT_NONE ? part_crossings(l->prims, ref, l->r, l->sh) > 0
+                                            : isect_hot_crossed(hr.code, l->b->hot_reals + hr.at, l->r, NULL);
     return crossed ? any_found(l, ref) : 0;
 }
 
@@ -857,13 +869,9 @@ int bvh_any_crossing(const bvh *b, const scene_prim *prims, const ray *r, bvh_re
     lazy_shear sh = shear_lazy(r);
     any_leaf l = {b, prims, r, &sh, stats, {-1, 0}};
     for (int i = 0; i < b->unbounded_count; i++) {
-        const scene_prim *p = &prims[b->unbounded[i].prim];
         if (stats)
             stats->prims_tested++;
-        int n = p->kind == PRIM_PLANE && !p->frame
-                    ? isect_plane_crossings(p->u.plane.point, p->u.plane.normal, r)
-                    : isect_part_crossings_sheared(p, b->unbounded[i].part, r, shear_for(&sh, p));
-        if (n > 0) {
+        if (unbounded_crossings(prims, b->unbounded[i], r, &sh) > 0) {
             *found = b->unbounded[i];
             return 1;
         }

@@ -131,7 +131,7 @@ int bvh_visit_counts(const bvh *b, const scene_prim *prims, const ray *r,
 
 /* Whether r crosses some part (a crossing bvh_visit_counts would count):
  * 1 with that part in *found, else 0.  Which part, when several are
- * crossed, is not said: the walk stops at the first it finds, nearer
+ * crossed, is not said: the walk stops at the first it finds, farther
  * child first. */
 int bvh_any_crossing(const bvh *b, const scene_prim *prims, const ray *r, bvh_ref *found, bvh_stats *stats);
 

@@ -107,8 +107,6 @@ static void record_setup(const tracer *t, render_stats *stats)
 static void beam_alloc(renderer *r)
 {
     const mem *m = &r->tracer.scene->mem;
-    if (r->beam_tried)
-        return;
     r->beam_tried = 1;
     r->run_rays = mem_alloc(m, RENDER_RUN_RAYS * sizeof *r->run_rays);
     r->beam_nodes = mem_alloc(m, RENDER_BEAM_NODES * sizeof *r->beam_nodes);

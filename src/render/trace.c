@@ -375,6 +375,14 @@ real trace_lobe_above(real c, real n)
     return b;
 }
 
+/* A source's intensity at distance d before its shadow: a distant light's
+ * power, a point source's through the falloff (a pure function: made
+ * before or after the shadow ray, the same bits). */
+static rgb source_intensity(const scene_light *light, const rgb *emits, real d)
+{
+    return light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
+}
+
 static int sum_has_highlight(const direct_sum *sum)
 {
     return sum->highlight.x != 0 || sum->highlight.y != 0 || sum->highlight.z != 0;
@@ -430,7 +438,7 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
      * shade_phong_lobe forms it, at or below lobe_floor) adds +0 whatever
      * its shadow ray would find, so it sends none. */
     rgb intensity = vec_splat(0);
-    int unlit = 1;   /* intensity not yet made */
+    int intensity_made = 0;
     if (s->no_body && !t->no_shortcuts) {
         real c = s->highlight ? vec_dot(s->v, shade_reflect_about(l, s->n)) : 0;
         if (!s->highlight || c <= s->lobe_floor)
@@ -439,8 +447,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
          * sum's bits, however lit: no shadow ray.  The falloff is made
          * here, once; the same pure function as below. */
         if (!st->record_path && sum_has_highlight(sum)) {
-            intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
-            unlit = 0;
+            intensity = source_intensity(light, emits, d);
+            intensity_made = 1;
             if (highlight_absorbed(s, &intensity, c, sum)) {
                 st->absorbed++;
                 return;
@@ -468,8 +476,8 @@ static void add_source(const tracer *t, const surface *s, const scene_light *lig
         if (through == 0 && !t->no_shortcuts)
             return;
     }
-    if (unlit)
-        intensity = light->kind == LIGHT_DISTANT ? *emits : shade_falloff(*emits, d, light->d0, light->falloff);
+    if (!intensity_made)
+        intensity = source_intensity(light, emits, d);
     if (t->shadows)
         intensity = vec_scale(intensity, through);
     if (s->highlight) {
