@@ -742,6 +742,32 @@ static int visit_unbounded(const walk *w, bvh_ref ref)
     return n > 0 ? w->count_fn(w->ctx, ref, n) : 0;
 }
 
+/*
+ * [SHADE-SHORTCUT-OPEN-1] A bundle's kept leaves and runs, each of
+ * triangle records alone (bundle->boxed 0), their parts tested in the
+ * list's order without their boxes.  A box test only decides whether the
+ * parts are tested: a box the ray fails holds no t its parts' tests report
+ * ([BVH-CULL-PAD-1]; the exhaustive walk of [SHADE-SHORTCUT-BVH-1] rests
+ * on the same), so such a part reports no crossing and makes no call of
+ * fn; the calls are the boxed walk's, in its order.  The leaves' boxes
+ * failed only about one test in eleven (mesh.scene), and the slab ray's
+ * three divisions and each box's test cost more than the triangles they
+ * kept out, most of which the run's quick miss tells apart.
+ */
+static int walk_open(const bvh *b, const walk *w, const bvh_bundle *bundle)
+{
+    for (int k = 0; k < bundle->count; k++) {
+        int e = bundle->node[k];
+        const bvh_node *nd = e >= 0 ? &b->nodes[e] : &bundle->runs[~e];
+        walk_leaf l = {w, b};
+        int stop = visit_hits(b, nd->first, nd->first + nd->count, w->r, w->sh, w->stats, walk_run_hit, walk_other,
+                              &l);
+        if (stop)
+            return stop;
+    }
+    return 0;
+}
+
 /* The unbounded parts, then the tree: from its root, or (bundle) from the
  * nodes a bundle kept, in their order. */
 static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
@@ -753,6 +779,8 @@ static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
     }
     if (b->node_count == 0 || (bundle && bundle->count == 0))
         return 0;
+    if (bundle && bundle->boxed == 0 && !b->exhaustive)
+        return walk_open(b, w, bundle);
     static const int root = 0;
     slab_ray s = slab_make(w->r);
     return traverse_from(b, w, &s, bundle ? bundle->node : &root, bundle ? bundle->runs : NULL,

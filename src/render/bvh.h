@@ -154,7 +154,9 @@ int bvh_any_crossing(const bvh *b, const scene_prim *prims, const ray *r, bvh_re
  * parts between them, each a node of the bundle's own (runs) with the
  * leaf's box; past BVH_BUNDLE_RUNS of those, the leaf is kept whole.
  * Where the list would pass BVH_BUNDLE_MAX, the nodes still pending are
- * kept whole.
+ * kept whole.  Where every kept node is a leaf or run of triangle records
+ * alone (boxed 0), the walk tests their parts without their boxes
+ * ([SHADE-SHORTCUT-OPEN-1]).
  */
 enum { BVH_BUNDLE_MAX = 24, BVH_BUNDLE_RUNS = 16, BVH_BUNDLE_UNMADE = -2 };
 typedef struct bvh_bundle_rays {
@@ -171,6 +173,9 @@ typedef struct bvh_bundle {
     int node[BVH_BUNDLE_MAX + BVH_MAX_DEPTH + BVH_BUNDLE_RUNS];
     int run_count;
     bvh_node runs[BVH_BUNDLE_RUNS];
+    int boxed;         /* entries other than a leaf or run of triangle
+                          records alone; 0: the walk tests no box
+                          ([SHADE-SHORTCUT-OPEN-1]) */
 } bvh_bundle;
 
 /* Fills *out for the rays described above; count -1 when the tree is

@@ -392,6 +392,24 @@ static unsigned leaf_skip(const bvh *b, bundle_cone *c, const bvh_bundle_rays *r
     return skip;
 }
 
+/* Whether the records [first, first + n) are all triangles' (a leaf or
+ * run of them needs no box test: [SHADE-SHORTCUT-OPEN-1]). */
+static int triangles_alone(const bvh *b, int first, int n)
+{
+    for (int i = first; i < first + n; i++)
+        if (ISECT_HOT_KIND(b->hot[i].code) != ISECT_HOT_TRIANGLE)
+            return 0;
+    return 1;
+}
+
+/* Appends entry (a node, or ~i for runs[i]) to the list; open: a leaf or
+ * run of triangle records alone. */
+static void keep(bvh_bundle *out, int entry, int open)
+{
+    out->boxed += !open;
+    out->node[out->count++] = entry;
+}
+
 /* Keeps leaf `node`: whole, or as the runs of its parts leaf_skip leaves
  * (each a node of out->runs with the leaf's box, in order), or not at all
  * where it leaves none.  Past BVH_BUNDLE_RUNS runs in all: whole. */
@@ -403,7 +421,7 @@ static void keep_leaf(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays,
     for (int i = 0; i < n; i++)
         runs += !(skip >> i & 1u) && (i == 0 || skip >> (i - 1) & 1u);
     if (skip == 0 || nd->count > 32 || out->run_count + runs > BVH_BUNDLE_RUNS) {
-        out->node[out->count++] = node;
+        keep(out, node, triangles_alone(b, nd->first, nd->count));
         return;
     }
     for (int i = 0; i < n;) {
@@ -415,7 +433,7 @@ static void keep_leaf(const bvh *b, bundle_cone *c, const bvh_bundle_rays *rays,
             *run = *nd;
             run->first = nd->first + i;
             run->count = j - i;
-            out->node[out->count++] = ~out->run_count++;
+            keep(out, ~out->run_count++, triangles_alone(b, run->first, run->count));
         }
         i = j + 1;
     }
@@ -428,7 +446,7 @@ void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out,
     out->count = -1;
     if (b->exhaustive || b->node_count == 0 || !cone_make(b, rays, &c))
         return;
-    out->count = out->run_count = 0;
+    out->count = out->run_count = out->boxed = 0;
     if (stats)
         stats->nodes_visited++;
     if (!cone_meets_node(&c, &b->nodes[0]))
@@ -440,9 +458,9 @@ void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out,
         } else if (out->count + sp + 1 >= BVH_BUNDLE_MAX) {
             /* The list is full: kept whole, then the pending siblings in
              * the order the walk would take them. */
-            out->node[out->count++] = node;
+            keep(out, node, 0);
             while (sp > 0)
-                out->node[out->count++] = stack[--sp];
+                keep(out, stack[--sp], 0);
         } else {
             int a = nd->first;
             int ha = cone_meets_node(&c, &b->nodes[a]), hc = cone_meets_node(&c, &b->nodes[a + 1]);
