@@ -808,6 +808,73 @@ START_TEST(test_bundle_random_scenes_bit_identical)
 }
 END_TEST
 
+/*
+ * Planes a bundle passes (bvh_bundle_planes, [SHADE-SHORTCUT-PLANE-1]):
+ * four planes (two of them axis-aligned) and a far sphere (so that there
+ * is a tree), at scale 1, scaled by 1e-6, and moved to 1e4; bundles from
+ * points on a plane (its normal the point's) and from random points,
+ * toward boxes on either side; each ray's bundle walk against its whole
+ * walk.  Asserts that planes were passed and that rays crossed planes.
+ */
+START_TEST(test_bundle_planes_passed_agree_with_the_whole_walk)
+{
+    static char text[4096];
+    rng g = {(uint64_t)_i + 301};
+    double scale = _i == 1 ? 1e-6 : 1, off = _i == 2 ? 1e4 : 0;
+    vec3 pt[4], nm[4];
+    int len = snprintf(text, sizeof text, "image { width 1 height 1 }\ncamera { eye [0, 0, 100] look_at [0, 0, 0] }\n");
+    for (int i = 0; i < 4; i++) {
+        pt[i] = vec_add(vec_scale(vec_make(range(&g, -5, 5), range(&g, -5, 5), range(&g, -5, 5)), scale), vec_splat(off));
+        nm[i] = i < 2 ? with_axis(vec_splat(0), i, 1) : unit(&g);
+        len += snprintf(text + len, sizeof text - (size_t)len,
+                        "plane { point [%.17g, %.17g, %.17g] normal [%.17g, %.17g, %.17g] material { Kd 0.5 t 0.5 } }\n",
+                        pt[i].x, pt[i].y, pt[i].z, nm[i].x, nm[i].y, nm[i].z);
+    }
+    len += snprintf(text + len, sizeof text - (size_t)len,
+                    "sphere { center [%.17g, %.17g, %.17g] radius %.17g material { Kd 0.5 } }\n", off + 90 * scale,
+                    off + 90 * scale, off + 90 * scale, scale);
+    bvh b;
+    scene_model *s = load_tree(text, len, sizeof text, &b);
+    ck_assert_int_eq(b.unbounded_count, 4);
+    int passed = 0, crossed = 0, bundles = 0;
+    for (int k = 0; k < 400; k++) {
+        int on = k % 4;
+        vec3 p = vec_add(vec_scale(vec_make(range(&g, -8, 8), range(&g, -8, 8), range(&g, -8, 8)), scale), vec_splat(off));
+        vec3 n = unit(&g);
+        if (k % 2 == 0) {
+            /* on plane `on`: p moved along its normal onto it (rounded: a hair off) */
+            real h = vec_dot(nm[on], vec_sub(pt[on], p));
+            p = vec_add(p, vec_scale(nm[on], h));
+            n = k % 8 < 4 ? nm[on] : vec_neg(nm[on]);
+        }
+        shadow_start from = {p, n, 1e-9 * scale};
+        vec3 c = vec_add(p, vec_scale(vec_add(vec_scale(n, range(&g, 0.5, 12)), vec_scale(unit(&g), range(&g, 0, 6))),
+                                      scale));
+        bvh_bundle_rays rays = ball_rays(p, from.offset * vec_sum_abs(n), c, range(&g, 0, 3) * scale);
+        ray r[40];
+        bvh_bundle told, untold;
+        if (!aim_at_box(&from, rays, &b, &g, r, 40, 27, &told, &untold))
+            continue;
+        rays.exact = 1;
+        rays.origin = r[0].origin;
+        bvh_bundle_planes(&b, s->prims, &rays, &told);
+        bundles++;
+        passed += told.planes_passed != 0;
+        for (int j = 0; j < 40; j++) {
+            events e = {0};
+            bvh_visit_counts(&b, s->prims, &r[j], record, &e, NULL);
+            crossed += e.count > 0;
+            same_walks(&b, s->prims, &r[j], &told);
+        }
+    }
+    ck_assert_int_gt(bundles, 200);
+    ck_assert_int_gt(passed, 100);
+    ck_assert_int_gt(crossed, 1000);
+    bvh_free(&b);
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_bundle(void)
 {
     Suite *s = suite_create("bundle");
@@ -817,6 +884,7 @@ Suite *suite_bundle(void)
     tcase_add_loop_test(tc, test_bundle_random_bundles_agree_with_the_whole_walk, 0, 4);
     tcase_add_loop_test(tc, test_bundle_random_triangles_agree_with_the_whole_walk, 0, 4);
     tcase_add_loop_test(tc, test_bundle_rays_leaving_a_triangle, 0, 2);
+    tcase_add_loop_test(tc, test_bundle_planes_passed_agree_with_the_whole_walk, 0, 3);
     tcase_add_test(tc, test_bundle_keeps_a_box_part_its_test_counts);
     tcase_add_test(tc, test_bundle_behind_needs_the_gap);
     tcase_add_test(tc, test_bundle_keeps_a_triangle_through_its_corner);

@@ -772,7 +772,10 @@ static int walk_open(const bvh *b, const walk *w, const bvh_bundle *bundle)
  * nodes a bundle kept, in their order. */
 static int walk_all(const bvh *b, const walk *w, const bvh_bundle *bundle)
 {
+    unsigned passed = bundle ? bundle->planes_passed : 0;   /* [SHADE-SHORTCUT-PLANE-1] */
     for (int i = 0; i < b->unbounded_count; i++) {
+        if (i < 32 && passed >> i & 1u)
+            continue;
         int stop = visit_unbounded(w, b->unbounded[i]);
         if (stop)
             return stop;

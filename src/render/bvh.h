@@ -176,12 +176,22 @@ typedef struct bvh_bundle {
     int boxed;         /* entries other than a leaf or run of triangle
                           records alone; 0: the walk tests no box
                           ([SHADE-SHORTCUT-OPEN-1]) */
+    unsigned planes_passed; /* bit i: no ray of the bundle crosses unbounded
+                               part i, a plane (bvh_bundle_planes); 0 from
+                               bvh_bundle_make */
+    int crosses_nothing;    /* 1: nothing kept and every unbounded part
+                               passed: no ray of the bundle crosses a part */
 } bvh_bundle;
 
 /* Fills *out for the rays described above; count -1 when the tree is
  * exhaustive, or a magnitude passes 2^400 or is not finite, or lo > hi on
  * some axis. */
 void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out, bvh_stats *stats);
+/* Marks in out->planes_passed the world-frame planes among the first 32
+ * unbounded parts that no ray of the bundle crosses, where every ray
+ * starts at rays->origin and out was made for rays (count >= 0):
+ * [SHADE-SHORTCUT-PLANE-1]. */
+void bvh_bundle_planes(const bvh *b, const scene_prim *prims, const bvh_bundle_rays *rays, bvh_bundle *out);
 /* bvh_visit_counts for a ray of the bundle: the same calls of fn in the
  * same order, from the kept nodes' subtrees and runs alone (bundle NULL
  * or count < 0: bvh_visit_counts). */

@@ -444,6 +444,8 @@ void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out,
     bundle_cone c;
     int stack[BVH_MAX_DEPTH], sp = 0, node = 0;
     out->count = -1;
+    out->planes_passed = 0;
+    out->crosses_nothing = 0;
     if (b->exhaustive || b->node_count == 0 || !cone_make(b, rays, &c))
         return;
     out->count = out->run_count = out->boxed = 0;
@@ -479,4 +481,50 @@ void bvh_bundle_make(const bvh *b, const bvh_bundle_rays *rays, bvh_bundle *out,
             return;
         node = stack[--sp];
     }
+}
+
+/*
+ * [SHADE-SHORTCUT-PLANE-1] Whether every ray of the bundle (one origin O,
+ * tmin >= 0) is told apart by isect_plane_crossings' first test: num =
+ * n.(p0 - O), the same double for every ray (made here by the same
+ * operations), and dn = n.d of the sign that makes (num < 0) != (dn < 0).
+ * A ray's d is D c' rounded per axis (shear_bounds: D_a between L_a - O_a
+ * and H_a - O_a rounded, c' > 0 one factor), so its rounded dn is within
+ * c' 5 eps sum |n_a| |D_a| (+ 3 2^-1074 for underflow) of c' n.D, and
+ * n.D is at least `least` (the box's corner the signs of n pick, rounded
+ * within 8 eps N S, N = sum |n_a|, S the magnitudes of O, L, H summed).
+ * So least > 2^-40 N S + 2^-1000 makes every ray's dn > 0: c' n.D minus
+ * the errors is at least c' 2^-42 N S >= 2^-45 N (|D| <= 4 S), far above
+ * the underflow's term for N >= 1/2.  `most` < minus as much makes every
+ * dn < 0 likewise.  Such a plane's test answers 0 for every ray, and
+ * makes no call of the callback: the walk leaves it out.
+ */
+static int plane_passed(const scene_prim *p, const bvh_bundle_rays *rays)
+{
+    vec3 o = rays->origin, n = p->u.plane.normal;
+    real num = vec_dot(n, vec_sub(p->u.plane.point, o));
+    real size = vec_sum_abs(o) + vec_sum_abs(rays->lo) + vec_sum_abs(rays->hi), nsum = vec_sum_abs(n);
+    if (!(size < 0x1p400 && nsum >= 0.5 && nsum < 16))
+        return 0;
+    const real oa[3] = {o.x, o.y, o.z}, na[3] = {n.x, n.y, n.z};
+    const real tl[3] = {rays->lo.x, rays->lo.y, rays->lo.z}, th[3] = {rays->hi.x, rays->hi.y, rays->hi.z};
+    real least = 0, most = 0, tol = 0x1p-40 * nsum * size + 0x1p-1000;
+    for (int a = 0; a < 3; a++) {
+        least += na[a] * ((na[a] >= 0 ? tl[a] : th[a]) - oa[a]);
+        most += na[a] * ((na[a] >= 0 ? th[a] : tl[a]) - oa[a]);
+    }
+    return num < 0 ? least > tol : most < -tol;
+}
+
+void bvh_bundle_planes(const bvh *b, const scene_prim *prims, const bvh_bundle_rays *rays, bvh_bundle *out)
+{
+    if (out->count < 0 || !rays->exact)
+        return;
+    for (int i = 0; i < b->unbounded_count && i < 32; i++) {
+        const scene_prim *p = &prims[b->unbounded[i].prim];
+        if (p->kind == PRIM_PLANE && !p->frame && plane_passed(p, rays))
+            out->planes_passed |= 1u << i;
+    }
+    out->crosses_nothing = out->count == 0 && b->unbounded_count <= 32 &&
+                           out->planes_passed == (b->unbounded_count == 32 ? ~0u : (1u << b->unbounded_count) - 1);
 }

@@ -250,6 +250,12 @@ static real shadow_transmission(const tracer *t, const ray *r, int light, int hi
     bvh_ref *slot = &st->blocker[hints + light % TRACE_BLOCKERS];
     int hint = slot->prim - 1;
     st->shadow_rays++;
+    if (bundle && bundle->count == 0 && bundle->crosses_nothing) {
+        /* [SHADE-SHORTCUT-PLANE-1] The hint's test and the walk would
+         * cross nothing: the walk's 1, the slot as it leaves it. */
+        slot->prim = 0;
+        return 1;
+    }
     if (hint >= 0 && hint < t->scene->prim_count && slot->part >= 0 &&
         slot->part < isect_part_count(&t->scene->prims[hint]) && !t->no_shortcuts) {
         st->bvh.prims_tested++;
@@ -343,6 +349,7 @@ static const bvh_bundle *light_bundle(const tracer *t, const surface *s, const s
             rays.origin = ray_shadow_origin(&s->from, side > 0 ? n : vec_neg(n));
         }
         bvh_bundle_make(&t->accel, &rays, bundle, &st->bvh);
+        bvh_bundle_planes(&t->accel, t->scene->prims, &rays, bundle);
     }
     return bundle;
 }
