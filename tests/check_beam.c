@@ -1,7 +1,7 @@
 /*
  * check_beam.c - camera-ray beams at the render's level (spec/numerics.md
- * [BVH-BEAM-1]): renderer_region, which walks each run's camera rays on
- * the run's pruned tree, against render_pixel, which walks the whole
+ * [BVH-BEAM-1]): renderer_region, which walks each tile's camera rays on
+ * the tile's pruned tree, against render_pixel, which walks the whole
  * tree, on the same tracer.
  */
 #include <check.h>
@@ -12,7 +12,8 @@
 #include "io/scene_file.h"
 #include "render/render.h"
 
-enum { BEAM_W = 37, BEAM_H = 23 };
+enum { BEAM_W = 37, BEAM_H = 23, OVERFLOW_RAYS = 5 };
+#define OVERFLOW_BALL "sphere { center [7.5, 2, 3] radius 0.5 material glass }\n"
 
 /* Renders text at BEAM_W x BEAM_H with k x k samples by renderer_region
  * and pixel by pixel by render_pixel: the same bits.  Returns the node
@@ -75,7 +76,7 @@ static const char *beam_text(const char *camera)
 START_TEST(test_beam_region_is_render_pixel)
 {
     const char *cam = "perspective eye [4, 7, -5] look_at [4, 1, 4] up [0, 1, 0] fov 60";
-    /* 1, 2 and 9 samples (81 rays a pixel: three pixels a run) and a
+    /* 1, 2 and 9 samples (81 rays a pixel: tiles of three pixels) and a
      * square view (rays of a run on both sides of an axis: refused). */
     ck_assert_int_gt(region_against_pixels(beam_text(cam), 1, 0), 0);
     ck_assert_int_gt(region_against_pixels(beam_text(cam), 2, 0), 0);
@@ -95,6 +96,61 @@ START_TEST(test_beam_none_orthographic_or_no_shortcuts)
 }
 END_TEST
 
+
+/* Whether pixel (i, j) alone passes r's max_tree_rays, by render_pixel. */
+static int pixel_overflows(const renderer *r, int k, int i, int j)
+{
+    trace_stats st;
+    memset(&st, 0, sizeof st);
+    (void)render_pixel(&r->tracer, BEAM_W, BEAM_H, k, i, j, &st);
+    return st.tree_overflow;
+}
+
+/*
+ * An overflow is reported at the first overflowing pixel in row-major
+ * order, whatever order the beams' tiles make the pixels in: two glass
+ * balls, one seen to the right in the top rows, one to the left below it,
+ * and a limit of rays a pixel that only pixels seeing glass pass.  The
+ * first pixel in row-major order is found by render_pixel pixel by pixel;
+ * the test asserts the scene has teeth (an overflowing pixel left of and
+ * below the first one, which a tile holding both would meet first).
+ */
+START_TEST(test_beam_overflow_is_row_major_first)
+{
+    static double img[3 * BEAM_W * BEAM_H];
+    char text[4096];
+    const char *cam = "perspective eye [4, 7, -5] look_at [4, 1, 4] up [0, 1, 0] fov 60";
+    int n = snprintf(text, sizeof text, "%s%s", beam_text(cam), OVERFLOW_BALL);
+    ck_assert(n > 0 && n < (int)sizeof text);
+    int status;
+    scene_model *s = scene_file_load_text("beam.scene", text, strlen(text), NULL, stderr, 0, &status);
+    ck_assert(s != NULL);
+    for (int k = 1; k <= 2; k++) {
+        renderer r;
+        render_opts o = {0};
+        o.width = BEAM_W, o.height = BEAM_H, o.samples = k, o.max_tree_rays = OVERFLOW_RAYS;
+        ck_assert_int_eq(renderer_init(&r, s, &o), STATUS_OK);
+        int fx = -1, fy = -1, teeth = 0;
+        for (int j = 0; j < BEAM_H; j++)
+            for (int i = 0; i < BEAM_W; i++) {
+                if (!pixel_overflows(&r, k, i, j))
+                    continue;
+                if (fx < 0)
+                    fx = i, fy = j;
+                else if (j > fy && i < 8)
+                    teeth++;
+            }
+        ck_assert_msg(fx >= 0 && teeth > 0, "k %d: first (%d, %d), %d below and left", k, fx, fy, teeth);
+        render_target all = {0, 0, BEAM_W, BEAM_H, NULL, img, 3 * (size_t)BEAM_W};
+        ck_assert_int_eq(renderer_region(&r, &all), STATUS_DATA);
+        ck_assert_msg(r.stats.overflow_x == fx && r.stats.overflow_y == fy, "k %d: (%d, %d) reported, (%d, %d) first", k,
+                      r.stats.overflow_x, r.stats.overflow_y, fx, fy);
+        renderer_free(&r);
+    }
+    scene_free(s);
+}
+END_TEST
+
 Suite *suite_beam(void)
 {
     Suite *s = suite_create("beam");
@@ -102,6 +158,7 @@ Suite *suite_beam(void)
     tcase_set_timeout(tc, 30);
     tcase_add_test(tc, test_beam_region_is_render_pixel);
     tcase_add_test(tc, test_beam_none_orthographic_or_no_shortcuts);
+    tcase_add_test(tc, test_beam_overflow_is_row_major_first);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -14,11 +14,15 @@
 #include "base/sampler.h"
 #include "render/shade.h"
 
-/* Camera-ray beams: the most pixels of a run, the most rays, the most
- * nodes of a pruned tree (past it, the rest of the row walks the whole
- * tree: grid1k's runs of 32 pixels at 800x600 keep 11 on average, none
- * past 64; grid100k's keep 164, and the beams cost it 7 % of its time). */
-enum { RENDER_RUN_PIXELS = 32, RENDER_RUN_RAYS = 256, RENDER_BEAM_NODES = 64 };
+/* Camera-ray beams: a tile of up to RENDER_TILE_WIDTH x RENDER_TILE_ROWS
+ * pixels, the most rays, the most nodes of a pruned tree (past it, the
+ * tile walks the whole tree).  Tiles, not runs of one row: a beam's tree
+ * holds every node along its wedge to infinity, and where that wedge
+ * crosses a deep slab of parts (grid100k: 10 layers seen at a slant) its
+ * length, not its width, sets the tree's size, so rows below add rays
+ * almost for free (grid100k 640x480: runs of 32 x 1 keep about 164 nodes,
+ * tiles of 16 x 16 about 290 for 8 times the rays; grid1k's 12). */
+enum { RENDER_TILE_WIDTH = 16, RENDER_TILE_ROWS = 16, RENDER_RUN_RAYS = 256, RENDER_BEAM_NODES = 1024 };
 
 double render_clock(void)
 {
@@ -238,52 +242,127 @@ static void store(const render_target *target, int x, int y, rgb c)
 }
 
 /*
- * Camera-ray beams ([BVH-BEAM-1]): a row's pixels go in runs of up to
- * RENDER_RUN_PIXELS (fewer where their k x k rays would pass
- * RENDER_RUN_RAYS), whose camera rays are made first and whose pruned
- * tree serves their first nearest hits.  A perspective camera alone (one
- * eye), and not with the shortcuts off (an exhaustive tree prunes
- * nothing: bvh_beam_prune refuses it).
+ * Camera-ray beams ([BVH-BEAM-1]): the region's rows go in bands of up to
+ * RENDER_TILE_ROWS, each band in tiles of up to RENDER_TILE_WIDTH pixels
+ * a row, at most RENDER_RUN_RAYS rays a tile (k x k a pixel); a tile's
+ * camera rays are made first and its pruned tree serves their first
+ * nearest hits.  A pixel's colour is a function of (i, j) alone
+ * (render_pixel: its rays, its sample keys and the const tracer), so the
+ * order the pixels are made in changes no bit.  The number of pixels of a
+ * tile, or 0 for none: a perspective camera alone (one eye), and not with
+ * the shortcuts off (an exhaustive tree prunes nothing: bvh_beam_prune
+ * refuses it).
  */
-static int run_pixels(const renderer *r)
+static int tile_pixels(const renderer *r)
 {
     const tracer *t = &r->tracer;
     int rays = r->stats.samples * r->stats.samples;
     if (!r->beam_nodes || t->accel.exhaustive || t->scene->camera.kind == CAMERA_ORTHOGRAPHIC ||
         rays > RENDER_RUN_RAYS)
         return 0;
-    int n = RENDER_RUN_RAYS / rays;
-    return n < RENDER_RUN_PIXELS ? n : RENDER_RUN_PIXELS;
+    return RENDER_RUN_RAYS / rays;
 }
 
-/* The camera rays of pixels [i0, i0 + n) of row j, pixel by pixel in
- * render_pixel's order, and their pruned tree in *tree.  Returns 0 when
- * the tree would pass RENDER_BEAM_NODES (the rays reach deep into a large
- * scene: its walk and its making would cost more than they save), else 1. */
-static int run_make(renderer *r, int i0, int n, int j, bvh_beam_tree *tree)
+/* A tile: pixels [i0, i1) of rows [j0, j1). */
+typedef struct tile {
+    int i0, i1, j0, j1;
+} tile;
+
+/* The camera rays of tile p, row by row and pixel by pixel in
+ * render_pixel's order, and their pruned tree in *tree (count -1: none,
+ * the whole tree; also past RENDER_BEAM_NODES, where the rays reach deep
+ * into a large scene and the tree would cost more than it saves). */
+static void tile_make(renderer *r, const tile *p, bvh_beam_tree *tree)
 {
     const tracer *t = &r->tracer;
     int k = r->stats.samples, at = 0;
-    for (int i = i0; i < i0 + n; i++)
-        for (int b = 0; b < k; b++)
-            for (int a = 0; a < k; a++)
-                r->run_rays[at++] = sample_ray(t, r->stats.width, r->stats.height, k, i, j, a, b);
+    for (int j = p->j0; j < p->j1; j++)
+        for (int i = p->i0; i < p->i1; i++)
+            for (int b = 0; b < k; b++)
+                for (int a = 0; a < k; a++)
+                    r->run_rays[at++] = sample_ray(t, r->stats.width, r->stats.height, k, i, j, a, b);
     bvh_beam beam;
     tree->nodes = r->beam_nodes;
     tree->cap = RENDER_BEAM_NODES;
     tree->count = -1;
-    return !bvh_beam_bounds(r->run_rays, at, &beam) || bvh_beam_prune(&t->accel, &beam, tree);
+    if (bvh_beam_bounds(r->run_rays, at, &beam))
+        bvh_beam_prune(&t->accel, &beam, tree);
 }
 
-/* Pixel (i, j): by render_pixel, or from the run's rays made from i0. */
-static rgb region_pixel(renderer *r, int run, int i0, const bvh_beam_tree *tree, int i, int j)
+/* Pixel (i, j) stored: by render_pixel (p NULL), or from tile p's rays. */
+static void make_pixel(renderer *r, const render_target *target, const tile *p, const bvh_beam_tree *tree, int i,
+                       int j)
 {
     render_stats *stats = &r->stats;
     int k = stats->samples;
-    if (!run)
-        return render_pixel(&r->tracer, stats->width, stats->height, k, i, j, &stats->trace);
-    return pixel_from_rays(&r->tracer, r->run_rays + (size_t)(i - i0) * k * k, tree, stats->width, k, i, j,
-                           &stats->trace);
+    rgb c;
+    if (!p) {
+        c = render_pixel(&r->tracer, stats->width, stats->height, k, i, j, &stats->trace);
+    } else {
+        size_t at = (size_t)(j - p->j0) * (size_t)(p->i1 - p->i0) + (size_t)(i - p->i0);
+        c = pixel_from_rays(&r->tracer, r->run_rays + at * (size_t)k * (size_t)k, tree, stats->width, k, i, j,
+                            &stats->trace);
+    }
+    store(target, i, j, c);
+}
+
+/* After pixel (i, j): STATUS_CANCELLED when asked to stop, STATUS_DATA
+ * when it overflowed (media_lost: the medium overflows before it), else
+ * STATUS_OK. */
+static int pixel_status(renderer *r, long media_lost)
+{
+    const trace_stats *st = &r->stats.trace;
+    if (cancel_stopped(&r->cancel))
+        return STATUS_CANCELLED;
+    return st->tree_overflow || st->medium_overflow > media_lost ? STATUS_DATA : STATUS_OK;
+}
+
+/* Rows [j0, j1) of target pixel by pixel in row-major order by
+ * render_pixel, stopping at the first pixel that stops or overflows
+ * (where, for an overflow, r->stats says); returns its status. */
+static int rows_by_pixel(renderer *r, const render_target *target, int j0, int j1)
+{
+    for (int j = j0; j < j1; j++) {
+        for (int i = target->x0; i < target->x1; i++) {
+            long media_lost = r->stats.trace.medium_overflow;
+            make_pixel(r, target, NULL, NULL, i, j);
+            int status = pixel_status(r, media_lost);
+            if (status == STATUS_DATA) {
+                r->stats.overflow_x = i;
+                r->stats.overflow_y = j;
+            }
+            if (status != STATUS_OK)
+                return status;
+        }
+    }
+    return STATUS_OK;
+}
+
+/* Rows [j0, j1) of target tile by tile, each tile row-major.  An overflow
+ * is reported at the band's first overflowing pixel in row-major order,
+ * as rows_by_pixel finds it: the band is made again that way (a pixel
+ * overflows or not by itself), so overflow_x, _y are the row-major walk's. */
+static int band_by_tiles(renderer *r, const render_target *target, int j0, int j1, int width)
+{
+    bvh_beam_tree tree = {NULL, 0, -1};
+    for (int i0 = target->x0; i0 < target->x1; i0 += width) {
+        tile p = {i0, target->x1 - i0 < width ? target->x1 : i0 + width, j0, j1};
+        tile_make(r, &p, &tree);
+        for (int j = j0; j < j1; j++) {
+            for (int i = p.i0; i < p.i1; i++) {
+                long media_lost = r->stats.trace.medium_overflow;
+                make_pixel(r, target, &p, &tree, i, j);
+                int status = pixel_status(r, media_lost);
+                if (status == STATUS_DATA) {
+                    r->stats.trace.tree_overflow = 0;
+                    return rows_by_pixel(r, target, j0, j1);
+                }
+                if (status != STATUS_OK)
+                    return status;
+            }
+        }
+    }
+    return STATUS_OK;
 }
 
 int renderer_region(renderer *r, const render_target *target)
@@ -299,29 +378,15 @@ int renderer_region(renderer *r, const render_target *target)
      * the tracer holds its address. */
     r->cancel = cancel_poll_make(opts->cancel, opts->cancel_ctx);
     stats->trace.cancel = &r->cancel;
-    int run = run_pixels(r), i0 = target->x0;
-    bvh_beam_tree tree = {NULL, 0, -1};
-    for (int j = target->y0; j < target->y1 && status == STATUS_OK; j++) {
-        int row_run = run; /* 0 once a run's tree is too large: the rest of the row by render_pixel */
-        for (int i = target->x0; i < target->x1 && status == STATUS_OK; i++) {
-            long media_lost = stats->trace.medium_overflow;
-            if (row_run && (i == target->x0 || i - i0 == row_run)) {
-                i0 = i;
-                if (!run_make(r, i0, target->x1 - i < row_run ? target->x1 - i : row_run, j, &tree))
-                    row_run = 0;
-            }
-            rgb c = region_pixel(r, row_run, i0, &tree, i, j);
-            store(target, i, j, c);
-            if (cancel_stopped(&r->cancel))
+    int n = tile_pixels(r), width = n < RENDER_TILE_WIDTH ? n : RENDER_TILE_WIDTH;
+    int band = n == 0 ? 1 : n / width < RENDER_TILE_ROWS ? n / width : RENDER_TILE_ROWS;
+    for (int j0 = target->y0; j0 < target->y1 && status == STATUS_OK; j0 += band) {
+        int j1 = target->y1 - j0 < band ? target->y1 : j0 + band;
+        status = n == 0 ? rows_by_pixel(r, target, j0, j1) : band_by_tiles(r, target, j0, j1, width);
+        /* Progress per row, once its band is made. */
+        for (int j = j0; j < j1 && status == STATUS_OK; j++)
+            if (opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))
                 status = STATUS_CANCELLED;
-            else if (stats->trace.tree_overflow || stats->trace.medium_overflow > media_lost) {
-                stats->overflow_x = i;
-                stats->overflow_y = j;
-                status = STATUS_DATA;
-            }
-        }
-        if (status == STATUS_OK && opts->progress && opts->progress(opts->progress_ctx, j - target->y0 + 1, rows))
-            status = STATUS_CANCELLED;
     }
     stats->seconds += render_clock() - start;
     return status;

@@ -64,7 +64,7 @@ typedef struct renderer {
     render_opts opts;
     render_stats stats;
     cancel_poll cancel;     /* opts.cancel, counted; stats.trace.cancel points here */
-    /* Camera-ray beams (bvh_beam.h): a run's camera rays and its pruned
+    /* Camera-ray beams (bvh_beam.h): a tile's camera rays and its pruned
      * tree, allocated by renderer_init (NULL: out of memory, every ray
      * walks the whole tree). */
     ray *run_rays;
