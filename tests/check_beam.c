@@ -98,11 +98,14 @@ END_TEST
 
 
 /* Whether pixel (i, j) alone passes r's max_tree_rays, by render_pixel. */
-static int pixel_overflows(const renderer *r, int k, int i, int j)
+/* Whether pixel (i, j) overflows, traced alone; its camera and reflection
+ * rays are added to *rays. */
+static int pixel_overflows(const renderer *r, int k, int i, int j, long *rays)
 {
     trace_stats st;
     memset(&st, 0, sizeof st);
     (void)render_pixel(&r->tracer, BEAM_W, BEAM_H, k, i, j, &st);
+    *rays += st.camera_rays + st.reflection_rays;
     return st.tree_overflow;
 }
 
@@ -113,7 +116,8 @@ static int pixel_overflows(const renderer *r, int k, int i, int j)
  * and a limit of rays a pixel that only pixels seeing glass pass.  The
  * first pixel in row-major order is found by render_pixel pixel by pixel;
  * the test asserts the scene has teeth (an overflowing pixel left of and
- * below the first one, which a tile holding both would meet first).
+ * below the first one, which a tile holding both would meet first), and
+ * that the counts are the row-major pixels' up to the first.
  */
 START_TEST(test_beam_overflow_is_row_major_first)
 {
@@ -131,9 +135,13 @@ START_TEST(test_beam_overflow_is_row_major_first)
         o.width = BEAM_W, o.height = BEAM_H, o.samples = k, o.max_tree_rays = OVERFLOW_RAYS;
         ck_assert_int_eq(renderer_init(&r, s, &o), STATUS_OK);
         int fx = -1, fy = -1, teeth = 0;
+        long rays = 0, rays_to_first = 0;   /* camera and reflection rays, row-major, up to the first overflow */
         for (int j = 0; j < BEAM_H; j++)
             for (int i = 0; i < BEAM_W; i++) {
-                if (!pixel_overflows(&r, k, i, j))
+                int over = pixel_overflows(&r, k, i, j, &rays);
+                if (fx < 0)
+                    rays_to_first = rays;
+                if (!over)
                     continue;
                 if (fx < 0)
                     fx = i, fy = j;
@@ -145,6 +153,12 @@ START_TEST(test_beam_overflow_is_row_major_first)
         ck_assert_int_eq(renderer_region(&r, &all), STATUS_DATA);
         ck_assert_msg(r.stats.overflow_x == fx && r.stats.overflow_y == fy, "k %d: (%d, %d) reported, (%d, %d) first", k,
                       r.stats.overflow_x, r.stats.overflow_y, fx, fy);
+        /* The counts are those of the pixels up to the first, each traced
+         * once: a tile's pixels traced before the band is made again row by
+         * row are not counted twice (attack 24, defect 1). */
+        ck_assert_msg(r.stats.trace.camera_rays + r.stats.trace.reflection_rays == rays_to_first,
+                      "k %d: %ld camera and reflection rays counted, %ld traced up to the first", k,
+                      r.stats.trace.camera_rays + r.stats.trace.reflection_rays, rays_to_first);
         renderer_free(&r);
     }
     scene_free(s);

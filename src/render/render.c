@@ -345,6 +345,10 @@ static int rows_by_pixel(renderer *r, const render_target *target, int j0, int j
 static int band_by_tiles(renderer *r, const render_target *target, int j0, int j1, int width)
 {
     bvh_beam_tree tree = {NULL, 0, -1};
+    /* An overflow makes the band again row by row, from these counts: the
+     * counts and the CLI's message (medium or ray tree) are those of the
+     * pixels up to the row-major first overflow, each traced once. */
+    const trace_stats before = r->stats.trace;
     for (int i0 = target->x0; i0 < target->x1; i0 += width) {
         tile p = {i0, target->x1 - i0 < width ? target->x1 : i0 + width, j0, j1};
         tile_make(r, &p, &tree);
@@ -354,7 +358,7 @@ static int band_by_tiles(renderer *r, const render_target *target, int j0, int j
                 make_pixel(r, target, &p, &tree, i, j);
                 int status = pixel_status(r, media_lost);
                 if (status == STATUS_DATA) {
-                    r->stats.trace.tree_overflow = 0;
+                    r->stats.trace = before;
                     return rows_by_pixel(r, target, j0, j1);
                 }
                 if (status != STATUS_OK)
