@@ -3,7 +3,8 @@
 # scenes/demo.scene and scenes/mesh.scene (perspective) at sizes 1x1, 1x17,
 # 17x1, 15x15, 16x16, 17x17, 31x33, 47x5 with 1, 2, 3, 5, 16 and 17 samples
 # a pixel (tiles 16x16, 16x4, 16x1, 10x1, 1x1, none), rendered whole, with
-# --no-shortcuts, by the old binary, with --jobs 2, and as --region bands
+# --no-shortcuts, by the old binary (16 and 17 samples at 1x1, 1x17 and
+# 17x1 only), with --jobs 2, and as --region bands
 # (one row, one column, a 7-pixel offset) merged by refray merge: all the
 # same bytes.  Exit 1 when any differ.  From the repository root after
 # `make build/refray`.
@@ -15,6 +16,8 @@ for s in scenes/demo.scene scenes/mesh.scene; do
 for wh in "1 1" "1 17" "17 1" "15 15" "16 16" "17 17" "31 33" "47 5"; do
 for k in 1 2 3 5 16 17; do
     set -- $wh; W=$1 H=$2
+    # 16 and 17 samples only on the small images (time)
+    [ $k -ge 16 ] && [ $((W * H)) -gt 17 ] && continue
     o="--width $W --height $H --samples $k"
     n=$((n + 1))
     $B render $s $o -q -o $D/on.pfm 2>/dev/null; e1=$?
