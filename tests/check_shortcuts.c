@@ -1353,6 +1353,34 @@ START_TEST(test_shortcuts_placed_random_scenes_bit_identical)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-PLANE-1] A bundle that keeps no node answers 1 without a
+ * walk only where it passes every plane: a ceiling between the floor and a
+ * rectangle light, a ball off to the side (so the tree has a node the
+ * floor's bundles keep none of).  Every floor point's bundle crosses the
+ * ceiling: the floor stays dark (ambient alone) with the shortcuts on, as
+ * off.  Attack 24 found no test failing with the planes ignored.
+ */
+START_TEST(test_shortcuts_plane_between_floor_and_light)
+{
+    const char *text = "image { width 24 height 18 samples 1 }\n"
+                       "camera { perspective eye [0, 1, 6] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+                       "ambient { color 0.05 }\n"
+                       "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.8 } }\n"
+                       "plane { point [0, 2, 0] normal [0, -1, 0] material { Kd 0.5 } }\n"
+                       "sphere { center [3, 1, -3] radius 0.3 material { Kd 0.5 } }\n"
+                       "distributed_light { rectangle [-0.5, 3, -0.5] [1, 0, 0] [0, 0, 1] power 40 samples 4 }\n";
+    render_stats on, off;
+    img_buf img;
+    image_both_ways(text, &on, &off, &img);
+    /* The bottom row sees the floor: ambient 0.05 times Kd 0.8, no light. */
+    const double *px = img.rgb + 3 * (size_t)(img.width * (img.height - 1) + img.width / 2);
+    ck_assert_msg(px[0] == 0.05 * 0.8, "the floor under the ceiling is %.17g, not ambient alone", px[0]);
+    ck_assert(on.trace.shadow_rays > 0);
+    img_free(&img);
+}
+END_TEST
+
 Suite *suite_shortcuts(void)
 {
     Suite *s = suite_create("shortcuts");
@@ -1389,6 +1417,7 @@ Suite *suite_shortcuts(void)
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
+    tcase_add_test(tc, test_shortcuts_plane_between_floor_and_light);
     tcase_add_loop_test(tc, test_shortcuts_mesh_scenes_bit_identical, 0,
                         (int)(sizeof mesh_scenes / sizeof mesh_scenes[0]));
     suite_add_tcase(s, tc);
