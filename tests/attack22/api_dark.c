@@ -93,14 +93,17 @@ static void run(const rf_scene *scene, int light_samples, int w, int h)
     printf("light_samples %d: pixels %016llx light_samples %ld on_surface %ld nonfinite %ld\n", light_samples,
            fnv(a, n), s.light_samples, s.light_samples_on_surface, s.nonfinite);
     expect(whole(r, b, w, h, 1) == RF_OK && memcmp(a, b, n * sizeof *a) == 0, "second render on one renderer");
-    /* where a stop lands: the pixels written before it (the same count of
-     * polls before each sample as before the round: the same pixels) */
+    /* where a stop lands: the pixels written before it, on stderr, not
+     * compared with the old library's: since attack 24 the camera beams'
+     * tiles make the rows below first, so other pixels are written before
+     * the same poll (the API promises none: a stopped region is partly
+     * written); the render after the stops is compared below */
     for (long at = 3; at <= 3000; at *= 10) {
         calls = 0;
         stop_at = at;
         memset(b, 0, n * sizeof *b);
         rf_status st = whole(r, b, w, h, 1);
-        printf("  a stop at poll %ld: status %d, pixels %016llx\n", at, (int)st, fnv(b, n));
+        fprintf(stderr, "  a stop at poll %ld: status %d, pixels %016llx\n", at, (int)st, fnv(b, n));
     }
     stop_at = 0;
     memset(b, 0, n * sizeof *b);
