@@ -36,6 +36,8 @@ typedef struct trace_stats {
     long dark_cells;          /* samples not made: their cell is dark ([SHADE-SHORTCUT-DARK-2]) */
     long absorbed;            /* samples whose highlight the sum absorbs: no shadow ray
                                  ([SHADE-SHORTCUT-ABSORB-1]) */
+    long hidden_highlights;   /* Kd = 0 points whose light loop is skipped: their highlight
+                                 cannot show ([SHADE-SHORTCUT-HIDDEN-1]) */
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
