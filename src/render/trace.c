@@ -893,54 +893,68 @@ static void light_loop_counted(const tracer *t, trace_stats *st)
 }
 
 /*
+ * [SHADE-SHORTCUT-HIDDEN-1] Every sample point p of the ball (centre P + d,
+ * reach r < |d|) is seen from P within alpha of d's direction, sin alpha =
+ * r / |d|, so its direction makes an angle of at least theta - alpha with
+ * m (cos theta = d.m / (|d| |m|)), and L.m <= |m| cos(max(0, theta -
+ * alpha)).  The margin 2^-20 covers the sample's rounding (light_dark's
+ * argument: below 2^-32 where |d| - r >= 2^-16 of the coordinates' size
+ * and >= 2^-400, which the caller checks) and this bound's (cos alpha and
+ * sin theta are square roots of 1 - x^2: within 2^-26 where x is near 1).
+ * 1 (no bound) for |m| outside [1/2, 2].
+ */
+real trace_ball_cosine_above(vec3 d, real reach, vec3 m)
+{
+    real m_len = sqrt(vec_length2(m)), dist = vec_length(d);
+    if (!(m_len >= 0.5 && m_len <= 2 && dist > reach))
+        return 1;
+    real cos_t = vec_dot(d, m) / (dist * m_len), sin_a = reach / dist;
+    cos_t = cos_t < -1 ? -1 : cos_t > 1 ? 1 : cos_t;
+    real cos_a = sqrt(1 - sin_a * sin_a), sin_t = sqrt(1 - cos_t * cos_t);
+    if (cos_t >= cos_a)
+        return 1;
+    return m_len * (cos_t * cos_a + sin_t * sin_a) + 0x1p-20;
+}
+
+/*
  * [SHADE-SHORTCUT-HIDDEN-1] An upper bound on the highlight one sample of
  * the light adds at a Kd = 0 point, Ks I lobe: +Inf where none is known (a
  * light with no ball, sizes past 2^400, a point nearer the ball than
- * light_dark allows).  A distant light's L is -direction itself: V.R =
- * L.M, and its I is its power.  Every sample point p lies in the
- * ball (centre C, reach r; a point light's: its position, 0), so its
- * direction makes an angle of at least theta - alpha with M = 2(N.V)N - V
- * (cos theta = D.M / (|D| |M|), sin alpha = r / |D|, D = C - P), and V.R =
- * L.M is at most |M| cos(max(0, theta - alpha)); the sample's rounding
- * (light_dark's argument) and this bound's are covered by the margin
- * 2^-20.  trace_lobe_above grows with c, so it bounds the lobe at c_max.
- * The distance is at least gap (1 - 2^-20), and the falloff, rounded,
- * shrinks with the distance below 2^1000 (plain quotients), so I is at
- * most its value there; the shadow's factor is at most 1.
+ * light_dark allows).  V.R = L.M exactly; trace_lobe_above grows with c,
+ * so it bounds the lobe at the cosine's bound.  The distance is at least
+ * gap (1 - 2^-20), and the falloff, rounded, shrinks with the distance
+ * below 2^1000 (plain quotients), so I is at most its value there; the
+ * shadow's factor is at most 1.  A distant light's L is -direction itself
+ * (unit, rounded) and its I its power.
  */
-static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m, real m_len)
+static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m)
 {
     const scene_light *light = &t->scene->lights[index];
     const light_setup *setup = &t->lights[index];
-    const real e = 0x1p-20;
     rgb none = vec_splat(HUGE_VAL);
     int point = light->kind == LIGHT_POINT;
     if (light->kind == LIGHT_DISTANT) {
         vec3 l = vec_neg(light->direction);
         real l2 = vec_length2(l);
-        if (!(m_len >= 0.5 && m_len <= 2 && l2 >= 0.25 && l2 <= 4))
+        if (!(l2 >= 0.25 && l2 <= 4))
             return none;
-        return vec_scale(vec_mul(s->m->ks, light->power), trace_lobe_above(vec_dot(l, m) + e, s->m->n));
+        return vec_scale(vec_mul(s->m->ks, light->power), trace_lobe_above(vec_dot(l, m) + 0x1p-20, s->m->n));
     }
     if (!point && !(setup->reach >= 0))
         return none;
     vec3 centre = point ? light->position : setup->centre, p = s->h->point;
     real reach = point ? 0 : setup->reach;
     real size = vec_max_abs(p) + vec_max_abs(centre) + reach;
-    if (!(size < 0x1p400 && m_len >= 0.5 && m_len <= 2))
+    if (!(size < 0x1p400))
         return none;
     vec3 d = vec_sub(centre, p);
-    real dist = vec_length(d), gap = dist - reach;
+    real gap = vec_length(d) - reach;
     if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
         return none;
-    real cos_t = vec_dot(d, m) / (dist * m_len), sin_a = reach / dist;
-    cos_t = cos_t < -1 ? -1 : cos_t > 1 ? 1 : cos_t;
-    real cos_a = sqrt(1 - sin_a * sin_a), sin_t = sqrt(1 - cos_t * cos_t);
-    real c = cos_t >= cos_a ? 1 : m_len * (cos_t * cos_a + sin_t * sin_a) + e;
-    rgb i = source_intensity(light, point ? &light->power : &setup->power, gap * (1 - e));
+    rgb i = source_intensity(light, point ? &light->power : &setup->power, gap * (1 - 0x1p-20));
     if (!(i.x < 0x1p1000 && i.y < 0x1p1000 && i.z < 0x1p1000))
         return none;
-    return vec_scale(vec_mul(s->m->ks, i), trace_lobe_above(c, s->m->n));
+    return vec_scale(vec_mul(s->m->ks, i), trace_lobe_above(trace_ball_cosine_above(d, reach, m), s->m->n));
 }
 
 /*
@@ -954,10 +968,9 @@ static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m,
 static int highlight_hidden(const tracer *t, const surface *s, rgb body, rgb mirror, rgb through)
 {
     vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
-    real m_len = sqrt(vec_length2(m));
     rgb u = vec_splat(0);
     for (int i = 0; i < t->scene->light_count; i++) {
-        rgb one = highlight_above(t, s, i, m, m_len);
+        rgb one = highlight_above(t, s, i, m);
         u = vec_add(u, vec_scale(one, (real)light_loop_samples(t, i)));
     }
     u = vec_scale(u, 2);

@@ -202,6 +202,13 @@ vec3 trace_light_point(const scene_light *light, const light_setup *setup, int i
  * (n < 1, n >= 2^20, c near 1).  [SHADE-SHORTCUT-ABSORB-1] */
 real trace_lobe_above(real c, real n);
 
+/* An upper bound of V.R, formed as add_source forms it from unit N and V,
+ * for every sample point in the ball of centre P + d and reach `reach` seen
+ * from the point P, with m = 2(N.V)N - V; 1 where it makes none.  Sizes as
+ * light_dark checks them: |d| - reach at least 2^-16 of the coordinates'
+ * size and 2^-400.  [SHADE-SHORTCUT-HIDDEN-1] */
+real trace_ball_cosine_above(vec3 d, real reach, vec3 m);
+
 /* The side of from's normal every sample of the light lies on, as
  * spawn_origin decides it for ray_shadow_to(from, sample): 1 (the origin
  * moved along +normal for every sample), -1 (along -normal for every one),
