@@ -942,19 +942,23 @@ END_TEST
  * on and off, and loops left out (their samples counted).  Among them
  * points whose highlight must show: the disk in a mirror's direction with
  * little to mirror (t 0, a black background) and a weak glass (t 0.05),
- * a highlight on the green and blue channels alone, a light of 36 samples
- * whose one sample's bound is hidden and whose sum's is not.
+ * a highlight on the green and blue channels alone, a disk of radius 0.001
+ * and 64 samples under a lobe of n 20, whose samples' highlights are all
+ * near the bound, so that one sample's bound is hidden where their sum is
+ * not.
  */
 START_TEST(test_shortcuts_hidden_highlights_both_ways)
 {
     static const char *const materials[] = {"Kd 0 Ks 0.06 n 400 t 0.92 ior 1.45",
                                             "Kd 0 Ks [0, 0.3, 0.2] n 200 t 0.6 ior 1.5",
                                             "Kd 0 Ks 0.5 n 40 t 0",
-                                            "Kd 0 Ks 0.9 n 1000 t 0.05 ior 1.3"};
+                                            "Kd 0 Ks 0.9 n 1000 t 0.05 ior 1.3",
+                                            "Kd 0 Ks 0.5 n 20 t 0.5 ior 1.5"};
     static const char *const lights[] = {
         "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }",
         "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
-        "point_light { position [2, 3, 3] power 20 }\ndistant_light { direction [-0.3, -1, -0.2] power 0.4 }"};
+        "point_light { position [2, 3, 3] power 20 }\ndistant_light { direction [-0.3, -1, -0.2] power 0.4 }",
+        "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 0.001 power 9 samples 64 }"};
     long hidden = 0;
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++)
         for (size_t j = 0; j < sizeof lights / sizeof lights[0]; j++) {
