@@ -852,16 +852,17 @@ START_TEST(test_shortcuts_lobe_above_bounds_lobe)
 }
 END_TEST
 
-/* A ball of `material` over a floor under `light`, 40 x 40, max_depth 1, no
- * ambient: the same bits with the shortcuts on and off. */
-static void ball_both_ways(const char *light, const char *material, render_stats *on, render_stats *off)
+/* A ball of `material` over a floor under `light`, 40 x 40, no ambient, a
+ * black background: the same bits with the shortcuts on and off. */
+static void ball_both_ways(int max_depth, const char *light, const char *material, render_stats *on,
+                           render_stats *off)
 {
     char text[1024];
     snprintf(text, sizeof text,
-             "image { width 40 height 40 max_depth 1 }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
+             "image { width 40 height 40 max_depth %d }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
              "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
              "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
-             light, material);
+             max_depth, light, material);
     same_both_ways(text, on, off);
 }
 
@@ -879,7 +880,7 @@ START_TEST(test_shortcuts_absorbed_highlights_both_ways)
                                             "Kd 0 Ks 0.3 n 5000 t 0.9 ior 1.3"};
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
         render_stats on, off;
-        ball_both_ways("distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
+        ball_both_ways(1, "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
                        &on, &off);
         ck_assert_msg(on.trace.absorbed > 0 && off.trace.absorbed == 0, "%s: %ld samples absorbed, %ld without shortcuts",
                       materials[i], on.trace.absorbed, off.trace.absorbed);
@@ -962,15 +963,8 @@ START_TEST(test_shortcuts_hidden_highlights_both_ways)
     long hidden = 0;
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++)
         for (size_t j = 0; j < sizeof lights / sizeof lights[0]; j++) {
-            char text[1024];
             render_stats on, off;
-            snprintf(text, sizeof text,
-                     "image { width 40 height 40 max_depth 3 background [0, 0, 0] }\n"
-                     "camera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
-                     "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd [0.6, 0.5, 0.2] } }\n"
-                     "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
-                     lights[j], materials[i]);
-            same_both_ways(text, &on, &off);
+            ball_both_ways(3, lights[j], materials[i], &on, &off);
             ck_assert_int_eq(off.trace.hidden_highlights, 0);
             hidden += on.trace.hidden_highlights;
         }

@@ -963,9 +963,10 @@ static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m)
  * highlight_above (at least every highlight sum the light loop can make,
  * its roundings included), clamped to DBL_MAX as the sum is, leaves
  * shade_combine where 0 leaves it, on all three channels.  body is the
- * point's Kd Ia, which the loop leaves as it is.
+ * point's Kd Ia, which the loop leaves as it is.  Out of line: its colours
+ * stay off shade's frame, which the recursion holds ([REL-STACK-1]).
  */
-static int highlight_hidden(const tracer *t, const surface *s, rgb body, rgb mirror, rgb through)
+static HINT_OUT_OF_LINE int highlight_hidden(const tracer *t, const surface *s, rgb body, rgb mirror, rgb through)
 {
     vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
     rgb u = vec_splat(0);
