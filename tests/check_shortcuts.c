@@ -852,16 +852,17 @@ START_TEST(test_shortcuts_lobe_above_bounds_lobe)
 }
 END_TEST
 
-/* A ball of `material` over a floor under `light`, 40 x 40, max_depth 1, no
- * ambient: the same bits with the shortcuts on and off. */
-static void ball_both_ways(const char *light, const char *material, render_stats *on, render_stats *off)
+/* A ball of `material` over a floor under `light`, 40 x 40, no ambient, a
+ * black background: the same bits with the shortcuts on and off. */
+static void ball_both_ways(int max_depth, const char *light, const char *material, render_stats *on,
+                           render_stats *off)
 {
     char text[1024];
     snprintf(text, sizeof text,
-             "image { width 40 height 40 max_depth 1 }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
+             "image { width 40 height 40 max_depth %d }\ncamera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n%s\n"
              "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.5 } }\n"
              "sphere { center [0, 1, 0] radius 0.9 material { %s } }\n",
-             light, material);
+             max_depth, light, material);
     same_both_ways(text, on, off);
 }
 
@@ -879,12 +880,108 @@ START_TEST(test_shortcuts_absorbed_highlights_both_ways)
                                             "Kd 0 Ks 0.3 n 5000 t 0.9 ior 1.3"};
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++) {
         render_stats on, off;
-        ball_both_ways("distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
+        ball_both_ways(1, "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }", materials[i],
                        &on, &off);
         ck_assert_msg(on.trace.absorbed > 0 && off.trace.absorbed == 0, "%s: %ld samples absorbed, %ld without shortcuts",
                       materials[i], on.trace.absorbed, off.trace.absorbed);
         ck_assert_int_eq(on.trace.light_samples, off.trace.light_samples);
     }
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] trace_ball_cosine_above bounds V.R, formed as
+ * add_source forms it (L = (p - P) / |p - P|, R = 2(N.L)N - L), for the
+ * points of the ball, the tangent point nearest M's direction (where the
+ * bound is reached) among them, near the origin and 1e4 from it; and it is
+ * tight there, within 2^-19 (the margin 2^-20 and a little).  Fails with
+ * the margin left out, and with the cone's angle added (theta + alpha).
+ */
+START_TEST(test_shortcuts_ball_cosine_above_holds)
+{
+    uint64_t state = 0x243f6a8885a308d3u;
+    int tangent = 0;
+    for (int k = 0; k < 200000; k++) {
+        double far = k % 2 ? 1e4 : 1;
+        vec3 p = vec_scale(next_unit(&state), far * next_uniform(&state));
+        vec3 n = next_unit(&state), v = next_unit(&state);
+        if (vec_dot(n, v) < 0)
+            n = vec_neg(n);
+        vec3 m = vec_sub(vec_scale(n, 2 * vec_dot(n, v)), v), d = vec_scale(next_unit(&state), 1 + 40 * next_uniform(&state));
+        double dist = vec_length(d), reach = dist * 0.9 * next_uniform(&state);
+        double above = trace_ball_cosine_above(d, reach, m);
+        vec3 du = vec_scale(d, 1 / dist), mu = vec_normalize(m), w = vec_sub(mu, vec_scale(du, vec_dot(du, mu)));
+        double sin_a = reach / dist, cos_a = sqrt(1 - sin_a * sin_a);
+        vec3 at[2];
+        int count = 0;
+        at[count++] = vec_add(vec_add(p, d), vec_scale(next_unit(&state), reach * next_uniform(&state)));
+        int open = vec_length2(w) > 1e-20 && vec_dot(du, mu) < cos_a;
+        if (open) {
+            vec3 l = vec_add(vec_scale(du, cos_a), vec_scale(vec_normalize(w), sin_a));
+            at[count++] = vec_add(p, vec_scale(l, dist * cos_a));
+        }
+        for (int j = 0; j < count; j++) {
+            vec3 to = vec_sub(at[j], p);
+            vec3 l = vec_scale(to, 1.0 / vec_length_fast(to));
+            double c = vec_dot(v, shade_reflect_about(l, n));
+            ck_assert_msg(c <= above, "V.R %.17g above its bound %.17g (sample %d, case %d)", c, above, j, k);
+            if (j == 1 && above < 1) {
+                ck_assert_msg(above - c <= 0x1p-19, "bound %.17g loose over V.R %.17g (case %d)", above, c, k);
+                tangent++;
+            }
+        }
+    }
+    ck_assert_int_gt(tangent, 50000);
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] Kd = 0 points whose light loop is left out
+ * where no highlight the loop could make shows in their colour: glass
+ * balls and mirrors over a floor under a disk light of 36 samples (alone,
+ * and with a point and a distant light), the same bits with the shortcuts
+ * on and off, and loops left out (their samples counted).  Among them
+ * points whose highlight must show: the disk in a mirror's direction with
+ * little to mirror (t 0, a black background) and a weak glass (t 0.05),
+ * a highlight on the green and blue channels alone, a disk of radius 0.001
+ * and 64 samples under a lobe of n 20, whose samples' highlights are all
+ * near the bound, so that one sample's bound is hidden where their sum is
+ * not.
+ */
+START_TEST(test_shortcuts_hidden_highlights_both_ways)
+{
+    static const char *const materials[] = {"Kd 0 Ks 0.06 n 400 t 0.92 ior 1.45",
+                                            "Kd 0 Ks [0, 0.3, 0.2] n 200 t 0.6 ior 1.5",
+                                            "Kd 0 Ks 0.5 n 40 t 0",
+                                            "Kd 0 Ks 0.9 n 1000 t 0.05 ior 1.3",
+                                            "Kd 0 Ks 0.5 n 20 t 0.5 ior 1.5"};
+    static const char *const lights[] = {
+        "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }",
+        "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
+        "point_light { position [2, 3, 3] power 20 }\ndistant_light { direction [-0.3, -1, -0.2] power 0.4 }",
+        "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 0.001 power 9 samples 64 }"};
+    long hidden = 0;
+    for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++)
+        for (size_t j = 0; j < sizeof lights / sizeof lights[0]; j++) {
+            render_stats on, off;
+            ball_both_ways(3, lights[j], materials[i], &on, &off);
+            ck_assert_int_eq(off.trace.hidden_highlights, 0);
+            hidden += on.trace.hidden_highlights;
+        }
+    ck_assert_int_gt(hidden, 1000);
+    /* Every ray of weight (Ks, t > 0 everywhere) and no total reflection
+     * shaded with a recursion (max_depth 2): the shortcuts trace the same
+     * points, and the loops left out count their samples. */
+    render_stats on, off;
+    same_both_ways("image { width 40 height 40 max_depth 2 }\n"
+                   "camera { eye [0.3, 1.2, 4] look_at [0, 1, 0] fov 40 }\n"
+                   "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
+                   "point_light { position [2, 3, 3] power 20 }\n"
+                   "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0.6 Ks 0.1 t 0.1 } }\n"
+                   "sphere { center [0, 1, 0] radius 0.9 material { Kd 0 Ks 0.06 n 400 t 0.92 ior 1.45 } }\n",
+                   &on, &off);
+    ck_assert_int_gt(on.trace.hidden_highlights, 100);
+    ck_assert_int_eq(on.trace.light_samples, off.trace.light_samples);
 }
 END_TEST
 
@@ -1405,6 +1502,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_dark_light_subnormal_distance);
     tcase_add_test(tc, test_shortcuts_lobe_above_bounds_lobe);
     tcase_add_test(tc, test_shortcuts_absorbed_highlights_both_ways);
+    tcase_add_test(tc, test_shortcuts_ball_cosine_above_holds);
+    tcase_add_test(tc, test_shortcuts_hidden_highlights_both_ways);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_test(tc, test_shortcuts_far_tiny_frame);

@@ -13,6 +13,7 @@
  *                 reflection t * trace(mirror ray)                     (48, 36)
  *   with the body colour weighted by (1 - t) (slide 37, t = transparency).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -868,6 +869,121 @@ static HINT_OUT_OF_LINE void direct_light(const tracer *t, const surface *s, uin
     }
 }
 
+static int light_distributed(const scene_light *light)
+{
+    return light->kind != LIGHT_POINT && light->kind != LIGHT_DISTANT;
+}
+
+/* The samples direct_light takes of light i: a point or distant light's
+ * one (its setup's count is not its), a distributed light's setup count. */
+static int light_loop_samples(const tracer *t, int i)
+{
+    return light_distributed(&t->scene->lights[i]) ? t->lights[i].samples : 1;
+}
+
+/* The samples a skipped light loop would have counted, and its cancel
+ * steps (a distributed light's samples each, as add_distributed asks). */
+static void light_loop_counted(const tracer *t, trace_stats *st)
+{
+    for (int i = 0; i < t->scene->light_count; i++) {
+        st->light_samples += light_loop_samples(t, i);
+        if (light_distributed(&t->scene->lights[i]))
+            cancel_steps(st->cancel, t->lights[i].samples);
+    }
+}
+
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] Every sample point p of the ball (centre P + d,
+ * reach r < |d|) is seen from P within alpha of d's direction, sin alpha =
+ * r / |d|, so its direction makes an angle of at least theta - alpha with
+ * m (cos theta = d.m / (|d| |m|)), and L.m <= |m| cos(max(0, theta -
+ * alpha)).  The margin 2^-20 covers the sample's rounding (light_dark's
+ * argument: below 2^-32 where |d| - r >= 2^-16 of the coordinates' size
+ * and >= 2^-400, which the caller checks) and this bound's (cos alpha and
+ * sin theta are square roots of 1 - x^2: within 2^-26 where x is near 1).
+ * 1 (no bound) for |m| outside [1/2, 2].
+ */
+real trace_ball_cosine_above(vec3 d, real reach, vec3 m)
+{
+    real m_len = sqrt(vec_length2(m)), dist = vec_length(d);
+    if (!(m_len >= 0.5 && m_len <= 2 && dist > reach))
+        return 1;
+    real cos_t = vec_dot(d, m) / (dist * m_len), sin_a = reach / dist;
+    cos_t = cos_t < -1 ? -1 : cos_t > 1 ? 1 : cos_t;
+    real cos_a = sqrt(1 - sin_a * sin_a), sin_t = sqrt(1 - cos_t * cos_t);
+    if (cos_t >= cos_a)
+        return 1;
+    return m_len * (cos_t * cos_a + sin_t * sin_a) + 0x1p-20;
+}
+
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] An upper bound on the highlight one sample of
+ * the light adds at a Kd = 0 point, Ks I lobe: +Inf where none is known (a
+ * light with no ball, sizes past 2^400, a point nearer the ball than
+ * light_dark allows).  V.R = L.M exactly; trace_lobe_above grows with c,
+ * so it bounds the lobe at the cosine's bound.  The distance is at least
+ * gap (1 - 2^-20), and the falloff, rounded, shrinks with the distance
+ * below 2^1000 (plain quotients), so I is at most its value there; the
+ * shadow's factor is at most 1.  A distant light's L is -direction itself
+ * (unit, rounded) and its I its power.
+ */
+static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m)
+{
+    const scene_light *light = &t->scene->lights[index];
+    const light_setup *setup = &t->lights[index];
+    rgb none = vec_splat(HUGE_VAL);
+    int point = light->kind == LIGHT_POINT;
+    if (light->kind == LIGHT_DISTANT) {
+        vec3 l = vec_neg(light->direction);
+        real l2 = vec_length2(l);
+        if (!(l2 >= 0.25 && l2 <= 4))
+            return none;
+        return vec_scale(vec_mul(s->m->ks, light->power), trace_lobe_above(vec_dot(l, m) + 0x1p-20, s->m->n));
+    }
+    if (!point && !(setup->reach >= 0))
+        return none;
+    vec3 centre = point ? light->position : setup->centre, p = s->h->point;
+    real reach = point ? 0 : setup->reach;
+    real size = vec_max_abs(p) + vec_max_abs(centre) + reach;
+    if (!(size < 0x1p400))
+        return none;
+    vec3 d = vec_sub(centre, p);
+    real gap = vec_length(d) - reach;
+    if (!(gap >= 0x1p-16 * size && gap >= 0x1p-400))
+        return none;
+    rgb i = source_intensity(light, point ? &light->power : &setup->power, gap * (1 - 0x1p-20));
+    if (!(i.x < 0x1p1000 && i.y < 0x1p1000 && i.z < 0x1p1000))
+        return none;
+    return vec_scale(vec_mul(s->m->ks, i), trace_lobe_above(trace_ball_cosine_above(d, reach, m), s->m->n));
+}
+
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] Whether the highlight of a Kd = 0 point cannot
+ * change its colour: U, twice the sum over the lights of samples x
+ * highlight_above (at least every highlight sum the light loop can make,
+ * its roundings included), clamped to DBL_MAX as the sum is, leaves
+ * shade_combine where 0 leaves it, on all three channels.  body is the
+ * point's Kd Ia, which the loop leaves as it is.  Out of line: its colours
+ * stay off shade's frame, which the recursion holds ([REL-STACK-1]).
+ */
+static HINT_OUT_OF_LINE int highlight_hidden(const tracer *t, const surface *s, rgb body, rgb mirror, rgb through)
+{
+    vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
+    rgb u = vec_splat(0);
+    for (int i = 0; i < t->scene->light_count; i++) {
+        rgb one = highlight_above(t, s, i, m);
+        u = vec_add(u, vec_scale(one, (real)light_loop_samples(t, i)));
+    }
+    u = vec_scale(u, 2);
+    if (!(u.x >= 0 && u.y >= 0 && u.z >= 0))
+        return 0;
+    u = vec_make(u.x < DBL_MAX ? u.x : DBL_MAX, u.y < DBL_MAX ? u.y : DBL_MAX, u.z < DBL_MAX ? u.z : DBL_MAX);
+    rgb lo = shade_combine(body, vec_splat(0), s->m->ks, s->m->t, mirror, through);
+    rgb hi = shade_combine(body, u, s->m->ks, s->m->t, mirror, through);
+    return lo.x == hi.x && lo.y == hi.y && lo.z == hi.z;
+}
+
+
 /* With the shortcuts off a ray of weight 0 (Ks = 0, or t = 0 on the
  * interface) is traced too, and its colour, finite, is multiplied by 0.
  * A medium stack overflow inside it (or in a stack no ray goes on with)
@@ -1121,8 +1237,12 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
     s.hints = depth > 1 ? TRACE_BLOCKERS : 0;
     s.near_glass =
         t->shadows && (touch || (t->glass && !(s.m->t > 0) && glass_near(t, s.from.point, 2 * s.from.offset)));
+    /* [SHADE-SHORTCUT-HIDDEN-1] A Kd = 0 point's mirrored and transmitted
+     * colours first: its light loop only where its highlight may show. */
+    int deferred = s.no_body && s.highlight && !t->no_shortcuts && !st->record_path;
     direct_sum sum;
-    direct_light(t, &s, key, &sum, st);
+    if (!deferred)
+        direct_light(t, &s, key, &sum, st);
     rgb mirror = vec_splat(0), through = vec_splat(0);
     mirror_trace m;
     m.traced = 0;
@@ -1132,6 +1252,16 @@ static rgb shade(const tracer *t, const ray *in, const hit *h, int depth, const 
             mirror = mirrored(t, &s, in, depth, media, child_key(t, key, TRACE_KEY_MIRROR), !ks, &m, st);
         if (t->refraction && (s.m->t > 0 || t->no_shortcuts))
             through = transmitted(t, &s, in, depth, media, child_key(t, key, TRACE_KEY_REFRACT), &m, st);
+    }
+    if (deferred) {
+        sum.body = shade_ambient(s.m->kd, t->scene->ambient);
+        if (highlight_hidden(t, &s, sum.body, mirror, through)) {
+            sum.highlight = vec_splat(0);
+            light_loop_counted(t, st);
+            st->hidden_highlights++;
+        } else {
+            direct_light(t, &s, key, &sum, st);
+        }
     }
     return shade_combine(sum.body, sum.highlight, s.m->ks, s.m->t, mirror, through);
 }

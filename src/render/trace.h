@@ -36,6 +36,8 @@ typedef struct trace_stats {
     long dark_cells;          /* samples not made: their cell is dark ([SHADE-SHORTCUT-DARK-2]) */
     long absorbed;            /* samples whose highlight the sum absorbs: no shadow ray
                                  ([SHADE-SHORTCUT-ABSORB-1]) */
+    long hidden_highlights;   /* Kd = 0 points whose light loop is skipped: their highlight
+                                 cannot show ([SHADE-SHORTCUT-HIDDEN-1]) */
     long nonfinite;           /* non-finite results replaced by 0 (must stay 0) */
     long tree_rays;           /* rays below the current camera ray (render_pixel resets it) */
     int tree_overflow;        /* a ray tree passed tracer.max_tree_rays: the render is void */
@@ -199,6 +201,13 @@ vec3 trace_light_point(const scene_light *light, const light_setup *setup, int i
  * 0 (formed as it forms it), made without pow; 1 where it makes none
  * (n < 1, n >= 2^20, c near 1).  [SHADE-SHORTCUT-ABSORB-1] */
 real trace_lobe_above(real c, real n);
+
+/* An upper bound of V.R, formed as add_source forms it from unit N and V,
+ * for every sample point in the ball of centre P + d and reach `reach` seen
+ * from the point P, with m = 2(N.V)N - V; 1 where it makes none.  Sizes as
+ * light_dark checks them: |d| - reach at least 2^-16 of the coordinates'
+ * size and 2^-400.  [SHADE-SHORTCUT-HIDDEN-1] */
+real trace_ball_cosine_above(vec3 d, real reach, vec3 m);
 
 /* The side of from's normal every sample of the light lies on, as
  * spawn_origin decides it for ray_shadow_to(from, sample): 1 (the origin
