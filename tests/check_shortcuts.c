@@ -1478,6 +1478,31 @@ START_TEST(test_shortcuts_plane_between_floor_and_light)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] A light with no bound runs the loop: a Kd 0
+ * mirror over a background of DBL_MAX (the mirrored colour saturates the
+ * point's colour whatever the highlight), seen by one orthographic ray
+ * that hits the origin, where a point light sits.  The sample on the
+ * surface is counted as with the shortcuts off (attack 24h, finding 1: a
+ * bound clamped to DBL_MAX left the loop out and the count at 0).
+ */
+START_TEST(test_shortcuts_hidden_runs_the_loop_without_a_bound)
+{
+    const char *text =
+        "image { width 1 height 1 max_depth 2 background [1.7976931348623157e308, 1.7976931348623157e308, "
+        "1.7976931348623157e308] }\n"
+        "camera { orthographic eye [0, 5, 0] look_at [0, 0, 0] up [0, 0, -1] width 2 }\n"
+        "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 30 } }\n"
+        "sphere { center [-5, 0.5, -8] radius 0.3 material { Kd 0.5 } }\n"
+        "point_light { position [0, 0, 0] power 1 }\n";
+    render_stats on, off;
+    same_both_ways(text, &on, &off);
+    ck_assert_int_eq(off.trace.lights_on_surface, 1);
+    ck_assert_int_eq(on.trace.lights_on_surface, off.trace.lights_on_surface);
+    ck_assert_int_eq(on.trace.light_samples, off.trace.light_samples);
+}
+END_TEST
+
 Suite *suite_shortcuts(void)
 {
     Suite *s = suite_create("shortcuts");
@@ -1504,6 +1529,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_absorbed_highlights_both_ways);
     tcase_add_test(tc, test_shortcuts_ball_cosine_above_holds);
     tcase_add_test(tc, test_shortcuts_hidden_highlights_both_ways);
+    tcase_add_test(tc, test_shortcuts_hidden_runs_the_loop_without_a_bound);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_test(tc, test_shortcuts_far_tiny_frame);

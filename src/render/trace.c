@@ -961,8 +961,8 @@ static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m)
  * [SHADE-SHORTCUT-HIDDEN-1] Whether the highlight of a Kd = 0 point cannot
  * change its colour: U, twice the sum over the lights of samples x
  * highlight_above (at least every highlight sum the light loop can make,
- * its roundings included), clamped to DBL_MAX as the sum is, leaves
- * shade_combine where 0 leaves it, on all three channels.  body is the
+ * its roundings included), finite, leaves shade_combine where 0 leaves
+ * it, on all three channels.  body is the
  * point's Kd Ia, which the loop leaves as it is.  Out of line: its colours
  * stay off shade's frame, which the recursion holds ([REL-STACK-1]).
  */
@@ -975,9 +975,10 @@ static HINT_OUT_OF_LINE int highlight_hidden(const tracer *t, const surface *s, 
         u = vec_add(u, vec_scale(one, (real)light_loop_samples(t, i)));
     }
     u = vec_scale(u, 2);
-    if (!(u.x >= 0 && u.y >= 0 && u.z >= 0))
+    /* No bound (a light's +Inf, or the sum past DBL_MAX): the loop runs,
+     * and counts what it counts (a sample on the surface: attack 24h). */
+    if (!(u.x >= 0 && u.y >= 0 && u.z >= 0 && u.x <= DBL_MAX && u.y <= DBL_MAX && u.z <= DBL_MAX))
         return 0;
-    u = vec_make(u.x < DBL_MAX ? u.x : DBL_MAX, u.y < DBL_MAX ? u.y : DBL_MAX, u.z < DBL_MAX ? u.z : DBL_MAX);
     rgb lo = shade_combine(body, vec_splat(0), s->m->ks, s->m->t, mirror, through);
     rgb hi = shade_combine(body, u, s->m->ks, s->m->t, mirror, through);
     return lo.x == hi.x && lo.y == hi.y && lo.z == hi.z;
