@@ -335,7 +335,8 @@ typedef struct rf_render_options {
                                pixels are the same to the bit and only the
                                work (and the rays counted against
                                max_tree_rays) grows; 0: the shortcuts */
-    /* Called after each row of a region (rows_total: the region's rows). */
+    /* Called for each row of a region, in order, once the band of rows
+     * holding it is made (rows_total: the region's rows). */
     void (*progress)(void *user, int rows_done, int rows_total);
     /* Asked before the first row, after every row (after progress), and
      * every few hundred rays or light samples within a row and steps of
@@ -394,7 +395,8 @@ RF_API void rf_renderer_size(const rf_renderer *r, int *width, int *height);
  * RF_ERR_CANCELLED; RF_ERR_DATA when a ray tree passed max_tree_rays, or a
  * ray was inside glass nested deeper than the tracer follows (16 solids;
  * medium_overflows > 0 then), at the pixel of rf_renderer_stats.  After a
- * failure the region is partly written; the renderer stays usable, and a
+ * failure the region is partly written (which pixels, and what the one a
+ * stop interrupted holds, is not specified); the renderer stays usable, and a
  * later call (after RF_ERR_CANCELLED too) renders as a fresh renderer does.
  */
 RF_API rf_status rf_render_region(rf_renderer *r, int x0, int y0, int x1, int y1, float *rgb,
