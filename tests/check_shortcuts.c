@@ -1503,6 +1503,42 @@ START_TEST(test_shortcuts_hidden_runs_the_loop_without_a_bound)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-HIDDEN-1] The intensity bound is the falloff at the
+ * ball's nearest point: a Kd 0, Ks 1, n 1 mirror floor over a white
+ * background, under lights just above it whose power puts the highlight
+ * near one ulp of the colour (inverse-square falloff, a disk of radius 1
+ * 0.01 above the floor, a 4 x 0.001 rectangle 0.02 above it).  Compared in
+ * double; attack 24h found the falloff taken at the ball's far side
+ * caught by these alone (farside_probe.sh).
+ */
+START_TEST(test_shortcuts_hidden_intensity_at_the_nearest_point)
+{
+    static const char *const lights[] = {
+        "disk [0, 0.01, -0.5] [0, -1, 0] 1 power 1e-17 samples 16 falloff inverse_square",
+        "disk [0, 0.01, -0.5] [0, -1, 0] 1 power 1.8e-17 samples 16 falloff inverse_square",
+        "disk [0, 0.01, -0.5] [0, -1, 0] 1 power 3.2e-17 samples 16 falloff inverse_square",
+        "rectangle [-2, 0.02, -0.5] [4, 0, 0] [0, 0, 0.001] power 1.8e-16 samples 16 falloff inverse_square",
+    };
+    long hidden = 0;
+    for (size_t i = 0; i < sizeof lights / sizeof lights[0]; i++) {
+        char text[1024];
+        int n = snprintf(text, sizeof text,
+                         "image { width 32 height 24 max_depth 2 background [1, 1, 1] }\n"
+                         "camera { perspective eye [0, 1.5, 3] look_at [0, 0, -0.5] up [0, 1, 0] fov 60 }\n"
+                         "plane { point [0, 0, 0] normal [0, 1, 0] material { Kd 0 Ks 1 n 1 t 0 } }\n"
+                         "sphere { center [-5, 0.5, -8] radius 0.3 material { Kd 0.5 } }\n"
+                         "distributed_light { %s }\n",
+                         lights[i]);
+        ck_assert(n > 0 && n < (int)sizeof text);
+        render_stats on, off;
+        same_both_ways(text, &on, &off);
+        hidden += on.trace.hidden_highlights;
+    }
+    ck_assert_msg(hidden > 0, "no light loop left out: the test has no teeth");
+}
+END_TEST
+
 Suite *suite_shortcuts(void)
 {
     Suite *s = suite_create("shortcuts");
@@ -1530,6 +1566,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_ball_cosine_above_holds);
     tcase_add_test(tc, test_shortcuts_hidden_highlights_both_ways);
     tcase_add_test(tc, test_shortcuts_hidden_runs_the_loop_without_a_bound);
+    tcase_add_test(tc, test_shortcuts_hidden_intensity_at_the_nearest_point);
     tcase_add_test(tc, test_shortcuts_off_weightless_ray_overflow_not_refused);
     tcase_add_test(tc, test_shortcuts_full_stack_weightless_crossing_not_refused);
     tcase_add_test(tc, test_shortcuts_far_tiny_frame);
