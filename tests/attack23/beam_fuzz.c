@@ -1,5 +1,6 @@
 /*
- * beam_fuzz.c - attack 23: [BVH-BEAM-1] hit by hit.  For each scene file
+ * beam_fuzz.c - attack 23: [BVH-BEAM-1] hit by hit (with BEAM_FUZZ_TILES
+ * defined, attack 24's tile_fuzz.c: the camera's runs as 2-D tiles).  For each scene file
  * given, its tracer's tree (renderer_init) is walked by runs of rays that
  * share an origin: the camera's own runs (camera_ray of every pixel, runs
  * of 1 .. 32 pixels starting anywhere in the row, k x k samples), and
@@ -119,6 +120,42 @@ static void random_runs(const char *file, const tracer *t, int count)
     }
 }
 
+#ifdef BEAM_FUZZ_TILES
+#define FUZZ_NAME "tile_fuzz"
+/* Tiles as renderer_region makes them ([BVH-BEAM-1] since scale24): k x k
+ * samples (k 1 .. 4), tiles of up to min(256 / k^2, 16) pixels a row and
+ * up to 16 rows, at most 256 rays; first the render's own tiling of the
+ * whole image, then random tiles (any size within the cap, anywhere, cut
+ * at the image's edges). */
+static void tile_check(const char *file, const tracer *t, int w, int h, int k, int i0, int i1, int j0, int j1)
+{
+    static ray rays[256];
+    int at = 0;
+    for (int j = j0; j < j1; j++)
+        for (int x = i0; x < i1; x++)
+            for (int b = 0; b < k; b++)
+                for (int a = 0; a < k; a++)
+                    rays[at++] = camera_ray(&t->scene->camera, t->camera_half, w, h, x + render_sample_offset(k, a),
+                                            j + render_sample_offset(k, b));
+    check_run(file, t, rays, at);
+}
+
+static void camera_runs(const char *file, const tracer *t, int w, int h)
+{
+    int k = 1 + (int)(R64() % 4);
+    int n = 256 / (k * k), width = n < 16 ? n : 16, band = n / width < 16 ? n / width : 16;
+    for (int j0 = 0; j0 < h; j0 += band)
+        for (int i0 = 0; i0 < w; i0 += width)
+            tile_check(file, t, w, h, k, i0, i0 + width < w ? i0 + width : w, j0, j0 + band < h ? j0 + band : h);
+    for (int m = 0; m < 2 * (w + h); m++) {
+        int tw = 1 + (int)(R64() % (unsigned)width), th = 1 + (int)(R64() % (unsigned)(n / tw < 16 ? n / tw : 16));
+        int i0 = (int)(R64() % (unsigned)w), j0 = (int)(R64() % (unsigned)h);
+        tile_check(file, t, w, h, k, i0, i0 + tw < w ? i0 + tw : w, j0, j0 + th < h ? j0 + th : h);
+    }
+}
+
+#else
+#define FUZZ_NAME "beam_fuzz"
 static void camera_runs(const char *file, const tracer *t, int w, int h)
 {
     static ray rays[256];
@@ -143,6 +180,8 @@ static void camera_runs(const char *file, const tracer *t, int w, int h)
     }
 }
 
+#endif
+
 int main(int argc, char **argv)
 {
     rng = argc > 1 ? strtoull(argv[1], NULL, 10) : 1;
@@ -165,7 +204,7 @@ int main(int argc, char **argv)
         renderer_free(&r);
         scene_free(s);
     }
-    printf("beam_fuzz: %d scenes, %ld pruned runs, %ld rays compared, %ld defects\n", files, runs_pruned, rays_cmp,
+    printf("%s: %d scenes, %ld pruned runs, %ld rays compared, %ld defects\n", FUZZ_NAME, files, runs_pruned, rays_cmp,
            defects);
     return defects != 0;
 }

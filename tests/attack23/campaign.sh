@@ -24,14 +24,18 @@ D=${OUT:-$(mktemp -d)}
 gen=$1 s=$2 last=$3
 shift 3
 mkdir -p "$D"
-cp scenes/stress/glass_cube.obj tests/attack20/*.obj scenes/stress/geosphere.obj "$D/"
+cp scenes/models/sphere_12x8.obj scenes/stress/glass_cube.obj tests/attack20/*.obj scenes/stress/geosphere.obj "$D/"
+# GEN_DIRS: folders searched for GEN.awk before this one and the earlier
+# rounds' (attack 24's and 24h's campaign.sh put theirs there).
 dir=tests/attack23
 # gen14 is gen12 through an orthographic camera.
 file=$gen ortho=0
 [ "$gen" = gen14 ] && file=gen12 ortho=1
 for d in tests/attack22 tests/attack19 tests/attack20; do [ -f "$dir/$file.awk" ] || dir=$d; done
+for d in ${GEN_DIRS:-}; do [ -f "$d/$file.awk" ] && dir=$d && break; done
 counts() { sed -n 's/^  rays: \([0-9]*\) camera, [0-9]* shadow, \(.*\); [0-9]* in all/\1 \2/p; /^  light samples:/p' "$1"; }
-bad=0 n=0
+bad=0 n=0 ok=0 fewer=0
+shadows() { sed -n "s/.*camera, \([0-9]*\) shadow.*/\1/p" "$1"; }
 while [ "$s" -le "$last" ]; do
     f="$D/$gen-$s.scene"
     awk -v seed="$s" -v ortho=$ortho -f tests/attack18/common.awk -f tests/attack19/common19.awk -f "$dir/$file.awk" > "$f"
@@ -40,6 +44,7 @@ while [ "$s" -le "$last" ]; do
     timeout 120 nice $OLD render "$f" -q "$@" -o "$D/old.pfm" >/dev/null 2>&1; e3=$?
     timeout 120 nice $BASE render "$f" -q --stats "$@" -o "$D/base.pfm" >/dev/null 2>"$D/base.st"; e4=$?
     n=$((n + 1))
+    if [ $e1 = 0 ] && [ $e4 = 0 ]; then ok=$((ok + 1)); [ "$(shadows "$D/on.st")" = "$(shadows "$D/base.st")" ] || fewer=$((fewer + 1)); fi
     msg=""
     [ $e1 = $e2 ] && [ $e1 = $e3 ] && [ $e1 = $e4 ] || msg="exit $e1 off $e2 old $e3 base $e4"
     if [ $e1 = 0 ] && [ $e2 = 0 ]; then cmp -s "$D/on.pfm" "$D/off.pfm" || msg="$msg on/off differ"; fi
@@ -68,5 +73,5 @@ while [ "$s" -le "$last" ]; do
     fi
     s=$((s + 1))
 done
-echo "campaign $gen: $n scenes $*"
+echo "campaign $gen: $n scenes $*; $ok rendered, $fewer with other shadow-ray counts than BASE"
 exit $bad
