@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <refray.h>
+#include "../fnv_doubles.h"
 
 static const char scene_text[] =
     "image { width 40 height 30 samples 1 max_depth 3 background [0.1, 0.1, 0.1] }\n"
@@ -36,15 +37,6 @@ static int cancel_cb(void *user)
 {
     (void)user;
     return stop_at > 0 && ++calls >= stop_at;
-}
-
-static unsigned long long fnv(const double *p, size_t n)
-{
-    unsigned long long h = 1469598103934665603ull;
-    const unsigned char *b = (const unsigned char *)p;
-    for (size_t i = 0; i < n * sizeof *p; i++)
-        h = (h ^ b[i]) * 1099511628211ull;
-    return h;
 }
 
 static int fails;

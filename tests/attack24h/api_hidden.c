@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <refray.h>
+#include "../fnv_doubles.h"
 
 static const char scene_text[] =
     "image { width 24 height 18 samples 1 max_depth 4 background [0.2, 0.3, 0.5] }\n"
@@ -35,15 +36,6 @@ static int cancel_cb(void *user)
     (void)user;
     calls++;
     return stop_at > 0 && calls >= stop_at;
-}
-
-static unsigned long long fnv(const double *p, size_t n)
-{
-    unsigned long long h = 1469598103934665603ull;
-    const unsigned char *b = (const unsigned char *)p;
-    for (size_t i = 0; i < n * sizeof *p; i++)
-        h = (h ^ b[i]) * 1099511628211ull;
-    return h;
 }
 
 /* Pixels with some channel not 0 (written before the stop). */

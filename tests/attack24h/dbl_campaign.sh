@@ -8,6 +8,7 @@
 # build/librefray-internal.a).  W H: the size (default 32 24).  HAND=0:
 # gen15 alone.
 set -u
+. tests/attack24h/lights.sh
 LIB=${LIB:-build/librefray-internal.a}
 BASELIB=${BASELIB:-/tmp/base24/build/librefray-internal.a}
 D=${OUT:-$(mktemp -d)}
@@ -23,16 +24,7 @@ for nn in 1 30 1000000; do
 for mat in mirror glass; do
 for p in 1e-18 3.2e-18 1e-17 3.2e-17 1e-16 1.8e-16 3.2e-16 1e-15 3.2e-15 1e-13 1e-9; do
     case $mat in mirror) m="Kd 0 Ks 1 n $nn t 0" ;; glass) m="Kd 0 Ks 1 n $nn t 1 ior 1" ;; esac
-    case $lt in
-    point) l="point_light { position [0.3, 1, -0.5] power $p falloff none }" ;;
-    pointlin) l="point_light { position [0.3, 1, -0.5] power $p d0 0 falloff linear }" ;;
-    pointinv) l="point_light { position [0.3, 0.2, -0.5] power $p d0 0 falloff inverse_square }" ;;
-    pointd0) l="point_light { position [0.3, 0.01, -0.5] power $p d0 1 falloff inverse_square }" ;;
-    disk) l="distributed_light { disk [0, 0.01, -0.5] [0, -1, 0] 1 power $p samples 16 falloff inverse_square }" ;;
-    tiny) l="distributed_light { disk [0.2, 1, -0.5] [0, -1, 0] 0.001 power $p samples 64 }" ;;
-    rect) l="distributed_light { rectangle [-2, 0.02, -0.5] [4, 0, 0] [0, 0, 0.001] power $p samples 16 falloff inverse_square }" ;;
-    distant) l="distant_light { direction [0, -0.2, 1] power $p }" ;;
-    esac
+    hidden_light "$lt" "$p"
     k=$((k + 1))
     [ "${3:-}" = nohand ] && continue
     {

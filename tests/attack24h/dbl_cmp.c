@@ -16,15 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <refray.h>
-
-static unsigned long long fnv(const double *p, size_t n)
-{
-    unsigned long long h = 1469598103934665603ull;
-    const unsigned char *b = (const unsigned char *)p;
-    for (size_t i = 0; i < n * sizeof *p; i++)
-        h = (h ^ b[i]) * 1099511628211ull;
-    return h;
-}
+#include "../fnv_doubles.h"
 
 static int render(const rf_scene *scene, int w0, int h0, int off, double **px, int *w, int *h, rf_render_stats *s)
 {

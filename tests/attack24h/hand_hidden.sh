@@ -11,6 +11,7 @@
 # by B on and off, and (unless ONLYB=1) by OLD and BASE with the counts.
 # Exit 1 on a difference.  From the repository root.
 set -u
+. tests/attack24h/lights.sh
 B=${B:-build/refray}
 OLD=${OLD:-/tmp/old-main/build/refray}
 BASE=${BASE:-/tmp/base24/build/refray}
@@ -27,16 +28,7 @@ for p in 1e-18 1.8e-18 3.2e-18 5.6e-18 1e-17 1.8e-17 3.2e-17 5.6e-17 1e-16 1.8e-
     mirror) m="Kd 0 Ks 1 n $nn t 0" ;;
     glass) m="Kd 0 Ks 1 n $nn t 1 ior 1" ;;
     esac
-    case $lt in
-    point) l="point_light { position [0.3, 1, -0.5] power $p falloff none }" ;;
-    pointlin) l="point_light { position [0.3, 1, -0.5] power $p d0 0 falloff linear }" ;;
-    pointinv) l="point_light { position [0.3, 0.2, -0.5] power $p d0 0 falloff inverse_square }" ;;
-    pointd0) l="point_light { position [0.3, 0.01, -0.5] power $p d0 1 falloff inverse_square }" ;;
-    disk) l="distributed_light { disk [0, 0.01, -0.5] [0, -1, 0] 1 power $p samples 16 falloff inverse_square }" ;;
-    tiny) l="distributed_light { disk [0.2, 1, -0.5] [0, -1, 0] 0.001 power $p samples 64 }" ;;
-    rect) l="distributed_light { rectangle [-2, 0.02, -0.5] [4, 0, 0] [0, 0, 0.001] power $p samples 16 falloff inverse_square }" ;;
-    distant) l="distant_light { direction [0, -0.2, 1] power $p }" ;;
-    esac
+    hidden_light "$lt" "$p"
     {
         echo "image { width 32 height 24 max_depth 2 background [1, 1, 1] }"
         echo "camera { perspective eye [0, 1.5, 3] look_at [0, 0, -0.5] up [0, 1, 0] fov 60 }"
