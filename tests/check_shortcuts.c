@@ -957,8 +957,8 @@ START_TEST(test_shortcuts_hidden_highlights_both_ways)
                                             "Kd 0 Ks 0.5 n 20 t 0.5 ior 1.5"};
     static const char *const lights[] = {
         "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }",
-        "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
-        "point_light { position [2, 3, 3] power 20 }\ndistant_light { direction [-0.3, -1, -0.2] power 0.4 }",
+        ("distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 1.5 power 9 samples 36 }\n"
+         "point_light { position [2, 3, 3] power 20 }\ndistant_light { direction [-0.3, -1, -0.2] power 0.4 }"),
         "distributed_light { disk [-0.5, 4, 2] [0.2, -1, -0.3] 0.001 power 9 samples 64 }"};
     long hidden = 0;
     for (size_t i = 0; i < sizeof materials / sizeof materials[0]; i++)
