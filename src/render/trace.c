@@ -58,6 +58,20 @@ int tracer_init(tracer *t, const scene_model *s, int max_depth, int light_sample
     return tracer_build(t, s, max_depth, light_samples, NULL) == STATUS_OK;
 }
 
+/* A distributed light (rectangle, disk): samples, keys, a ball; point and
+ * distant lights are one source each. */
+static int light_distributed(const scene_light *light)
+{
+    return light->kind != LIGHT_POINT && light->kind != LIGHT_DISTANT;
+}
+
+/* The mirror direction of the view about the normal, M = 2 (N.V) N - V:
+ * V.R = L.M for every light direction L ([SHADE-SHORTCUT-DARK-1]). */
+static vec3 view_mirror(const surface *s)
+{
+    return vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
+}
+
 int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_samples, cancel_poll *cancel)
 {
     memset(t, 0, sizeof *t);
@@ -107,7 +121,7 @@ int tracer_build(tracer *t, const scene_model *s, int max_depth, int light_sampl
                                (vec_max_component(m->kd) > 0 ? 0 : TRACE_NO_BODY);
     }
     for (int i = 0; i < s->light_count; i++) {
-        t->keyed |= s->lights[i].kind != LIGHT_POINT && s->lights[i].kind != LIGHT_DISTANT;
+        t->keyed |= light_distributed(&s->lights[i]);
         t->lights[i] = trace_light_setup(&s->lights[i], light_samples > 0 ? light_samples : s->lights[i].samples);
     }
     if (!light_cells_build(t, s)) {
@@ -644,7 +658,7 @@ static int light_dark(const surface *s, const light_setup *setup, light_view *v)
         return 0;
     if (!s->highlight)
         return 1;
-    vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
+    vec3 m = view_mirror(s);
     real dm = vec_dot(d, m), m_spread = setup->reach * sqrt(vec_length2(m)), floor = s->lobe_floor - e;
     real m_lim = floor * (floor >= 0 ? gap : dist + setup->reach);
     if (dm + m_spread <= m_lim)
@@ -862,16 +876,11 @@ static HINT_OUT_OF_LINE void direct_light(const tracer *t, const surface *s, uin
     sum->highlight = vec_splat(0);
     for (int i = 0; i < t->scene->light_count; i++) {
         const scene_light *light = &t->scene->lights[i];
-        if (light->kind == LIGHT_POINT || light->kind == LIGHT_DISTANT)
-            add_source(t, s, light, &light->position, &light->power, NULL, sum, st);
-        else
+        if (light_distributed(light))
             add_distributed(t, s, i, key, sum, st);
+        else
+            add_source(t, s, light, &light->position, &light->power, NULL, sum, st);
     }
-}
-
-static int light_distributed(const scene_light *light)
-{
-    return light->kind != LIGHT_POINT && light->kind != LIGHT_DISTANT;
 }
 
 /* The samples direct_light takes of light i: a point or distant light's
@@ -968,7 +977,7 @@ static rgb highlight_above(const tracer *t, const surface *s, int index, vec3 m)
  */
 static HINT_OUT_OF_LINE int highlight_hidden(const tracer *t, const surface *s, rgb body, rgb mirror, rgb through)
 {
-    vec3 m = vec_sub(vec_scale(s->n, 2 * vec_dot(s->n, s->v)), s->v);
+    vec3 m = view_mirror(s);
     rgb u = vec_splat(0);
     for (int i = 0; i < t->scene->light_count; i++) {
         rgb one = highlight_above(t, s, i, m);
