@@ -1116,17 +1116,26 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
  * tmin >= 0; dn == 0 (either sign of zero: num < 0 then) is plane_t's first
  * miss.  Shadow rays from a floor toward a light above it (mesh.scene:
  * each one's floor test) are such rays. */
+static int plane_moving_away(vec3 point, vec3 normal, const ray *r)
+{
+    real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
+    return r->tmin >= 0.0 && (num < 0.0) != (dn < 0.0);
+}
+
 HINT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;
-    real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
-    if (r->tmin >= 0.0 && (num < 0.0) != (dn < 0.0))
+    if (plane_moving_away(point, normal, r))
         return 0;
     return plane_t(point, normal, r, &t);
 }
 
-int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
+/* The same quick miss (a ray moving away from the plane: plane_t would
+ * answer 0); the miss's *t is not read (bvh.c nearest_test). */
+HINT_FLATTEN int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
 {
+    if (plane_moving_away(point, normal, r))
+        return 0;
     return plane_t(point, normal, r, t);
 }
 
@@ -2040,7 +2049,7 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
     ensures EXACT(veq(\result.dir, dir));
     ensures EXACT(\result.tmin == 0); */
-ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
+HINT_IN_LINE inline ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
 {
     vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
     ray r = spawn(from, h->normal, dir, m, 0);

@@ -23,6 +23,7 @@
 #include <assert.h>
 #include <float.h>
 #include <math.h>
+#include "base/inline_hint.h"
 #include "render/shade.h"
 
 /*@ requires vin(kd, 0, 1);
@@ -682,7 +683,7 @@ rgb shade_local(rgb body, rgb highlight, real t)
     assigns \nothing;
     ensures vcolour(\result);
     ensures EXACT(is_combined(\result, body, highlight, ks, t, mirrored, transmitted)); */
-rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
+HINT_IN_LINE inline rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
 {
     rgb c = shade_local(body, highlight, t);
     c = saturating_sum(c, vec_mul(ks, mirrored));
