@@ -1409,6 +1409,54 @@ START_TEST(test_shortcuts_gather_grazed_ball)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-GATHER-3] World-frame balls nested or apart by more than
+ * their pads and 4 reach are no neighbours of each other: touching_glass's
+ * nested balls (a gap of 0.1 between the shells, the floor touching the
+ * outer one) keep the floor alone as the outer ball's neighbour and
+ * nothing as the inner's.  A ball inside a ball with a gap of 0.3 reach
+ * (max norm) at their contact, and one outside it at the same gap, stay
+ * neighbours: the gather of the inner (or outer) ball's crossing there
+ * holds the other's, 2, with the shortcuts as without.  The first part
+ * fails without the step (2 and 1 neighbours); the second with the slack
+ * dropped (0.3 reach > 0: the pairs taken as apart, 1 gathered against 2)
+ * and with the nested gap taken as R - D + r.
+ */
+START_TEST(test_shortcuts_gather_spheres_apart)
+{
+    char shapes[768], text[1024];
+    touching_glass(shapes, sizeof shapes, 4, 0);
+    snprintf(text, sizeof text,
+             "image { width 4 height 3 }\n"
+             "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n%s",
+             shapes);
+    scene_model *s = load(text);
+    tracer on;
+    ck_assert(tracer_init(&on, s, 0, 0));
+    ck_assert_int_eq(on.gather_span[2 * 0 + 1], 1);
+    ck_assert_int_eq(on.gather_span[2 * 1 + 1], 0);
+    tracer_free(&on);
+    scene_free(s);
+    /* The contact on the x axis at x = 1 (the outer ball of radius 1 at
+     * the origin), the other ball's surface 0.3 reach beyond it, inside
+     * (radius 0.5) or outside (radius 0.25); the ray along x, its first
+     * crossing of the other ball the one at the contact. */
+    const double other[2] = {0.5, 0.25};
+    for (int k = 0; k < 2; k++) {
+        double gap = 0.3 * gather_reach(2), x = k ? 1 + gap + other[k] : 1 - gap - other[k];
+        snprintf(text, sizeof text,
+                 "image { width 4 height 3 }\n"
+                 "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+                 "sphere { center [0, 0, 0] radius 1 material { Kd 0 Ks 0.1 t 0.9 ior 1.5 } }\n"
+                 "sphere { center [%.17g, 0, 0] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n",
+                 x, other[k]);
+        ray r = {vec_make(k ? -3 : 3, 0, 0), vec_make(k ? 1 : -1, 0, 0), 0, INFINITY};
+        int n = gather_both_ways(text, r, 1);
+        ck_assert_msg(n == 2, "%d gathered, 2 expected:\n%s", n, text);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] The touching glass
  * above rendered, near the origin and at 1e7: the same bits with the
  * shortcuts on and off, and fewer primitive tests with them on. */
@@ -1576,6 +1624,7 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_gather_touching_glass_both_ways);
     tcase_add_test(tc, test_shortcuts_gather_images_both_ways);
     tcase_add_test(tc, test_shortcuts_gather_grazed_ball);
+    tcase_add_test(tc, test_shortcuts_gather_spheres_apart);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);
