@@ -1108,7 +1108,7 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
     return isect_part_crossings_sheared(p, part, r, NULL);
 }
 
-/* plane_t's answer.  A ray that starts on one side of the plane and moves
+/* [NUM-PLANE-AWAY-1] plane_t's answer.  A ray that starts on one side of the plane and moves
  * away from it (num = n.(p0 - o) and dn = n.d, plane_t's own doubles, of
  * opposite signs as `< 0` tells them) is told without the quotient: there
  * isect_quotient either fails or gives -m, m = |num|/|dn| >= 0 (held at
@@ -1130,8 +1130,9 @@ HINT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
     return plane_t(point, normal, r, &t);
 }
 
-/* The same quick miss (a ray moving away from the plane: plane_t would
- * answer 0); the miss's *t is not read (bvh.c nearest_test). */
+/* The same quick miss ([NUM-PLANE-AWAY-1]: plane_t would answer 0); the
+ * miss's *t is not read (bvh.c nearest_test).  Flattened as the count:
+ * plane_t's two dot products are the quick miss's. */
 HINT_FLATTEN int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
 {
     if (plane_moving_away(point, normal, r))
@@ -2037,6 +2038,9 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
  * mirror ray and its transmitted ray (about 36 instructions a call on a
  * sphere).  The contract is ray_spawn_hit's, with m as that one's
  * (isect_part_magnitude's ensures). */
+/* In line (HINT_IN_LINE; LTO carries it into trace.c's mirror and
+ * transmitted rays): its direction and ray went through the stack
+ * (spec/performance.md, twenty-third round). */
 /*@ requires \valid_read(p) && \valid_read(h);
     requires vfinite(h->point);                                 // a hit's point (isect_*)
     // a closed mesh's and a box's hit: within the extent ([LANG-EXTENT-1], check_extent.c: 2^502)

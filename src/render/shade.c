@@ -677,6 +677,9 @@ rgb shade_local(rgb body, rgb highlight, real t)
     return saturating_sum(highlight, vec_scale(body, 1.0 - t));
 }
 
+/* In line (HINT_IN_LINE; LTO carries it into trace.c): called out of line
+ * its six colours went through the stack, three calls a glass point
+ * (spec/performance.md, twenty-third round). */
 /*@ requires vcolour(body) && vcolour(highlight) && vcolour(mirrored) && vcolour(transmitted);
     requires vin(ks, 0, 1);
     requires \is_finite(t) && 0 <= t <= 1;
