@@ -2038,7 +2038,7 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
  * mirror ray and its transmitted ray (about 36 instructions a call on a
  * sphere).  The contract is ray_spawn_hit's, with m as that one's
  * (isect_part_magnitude's ensures). */
-/* In line (HINT_IN_LINE; LTO carries it into trace.c's mirror and
+/* In line (HINT_IN_LINE_EXTERN; LTO carries it into trace.c's mirror and
  * transmitted rays): its direction and ray went through the stack
  * (spec/performance.md, twenty-third round). */
 /*@ requires \valid_read(p) && \valid_read(h);
@@ -2053,7 +2053,7 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
     ensures EXACT(veq(\result.dir, dir));
     ensures EXACT(\result.tmin == 0); */
-HINT_IN_LINE inline ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
+HINT_IN_LINE_EXTERN ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
 {
     vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
     ray r = spawn(from, h->normal, dir, m, 0);
