@@ -1448,6 +1448,13 @@ START_TEST(test_isect_plane_nearest_is_isect_part)
     r.tmin = -2;
     ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 1);
     ck_assert(t == -1);
+    /* A tmin in (-1, 0) too (attack 25g, mutant away_tmin_gt_m1: the quick
+     * miss taken for tmin > -1): from y = 0.25 away from the plane with
+     * tmin -0.5, the plane at t = -0.25, inside (tmin, tmax). */
+    r = make_ray(vec_make(0, 0.25, 0), vec_make(0, 1, 0));
+    r.tmin = -0.5;
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 1);
+    ck_assert(t == -0.25);
     rng g = {78, 0};
     int met = 0;
     for (int i = 0; i < 2000; i++) {

@@ -69,6 +69,19 @@ static real gather_from(const tracer *t, const hit *h, const ray *r, real reach)
     return h->t - (2 * reach + 0x1p-17 * spread) / dm;
 }
 
+/* [SHADE-SHORTCUT-GATHER-2]'s guard: a crossing left at o + t d (a graze
+ * sphere_refine cannot refine, a box's slab point) lies off its surface by
+ * the rounding of o + t d, up to E = 2^-40 (|o| + |t| |d| + F) here (F the
+ * frames' spread); the alone test's pads cover E only when it is below
+ * 2^-22 of the hit point's magnitude (spec/shading.md has the argument).
+ * A ray from farther (or a hit at 0) walks the tree.  Comparisons on
+ * finite values; a NaN says no. */
+HINT_IN_LINE static inline int gather_near_origin(const tracer *t, const hit *h, const ray *r)
+{
+    real far = vec_max_abs(r->origin) + fabs(h->t) * vec_max_abs(r->dir) + t->frame_shift;
+    return far <= 0x1p16 * vec_max_abs(h->point);
+}
+
 /* [SHADE-SHORTCUT-GATHER-2] The walk on a primitive alone would report
  * within reach only the crossings of the hit's own part, found by the same
  * test of the same ray: they are all it gathers, and none besides h where
@@ -104,7 +117,7 @@ void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, rea
     /* The crossings' t may differ from the hit's by the rounding of t itself,
      * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
     r.tmax = h->t + f->reach + 0x1p-40 * fabs(h->t);
-    if (gather_alone(t, h, f->reach))
+    if (gather_near_origin(t, h, &r) && gather_alone(t, h, f->reach))
         gather_self(t, h, &r, f, st);
     else
         bvh_visit_window(&t->accel, t->scene->prims, &r, t->no_shortcuts ? r.tmin : gather_from(t, h, &r, f->reach),

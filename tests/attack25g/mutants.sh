@@ -10,7 +10,7 @@ export REFRAY_BIN=${REFRAY_BIN:-$(pwd)/build/refray}
 ONLY=${ONLY:-}
 W=${1:-/tmp/a25g_mut}
 [ -d "$W" ] || { mkdir -p "$W" && git archive HEAD | tar -x -C "$W"; }
-G=src/render/gather_alone.c I=src/render/intersect.c
+G=src/render/gather_alone.c I=src/render/intersect.c F=src/render/interface.c
 run() {  # name file sed-expression
     [ -z "$ONLY" ] || echo " $ONLY " | grep -q " $1 " || return 0
     cp "$W/$2" "$W/$2.orig"
@@ -37,4 +37,5 @@ run slack_no_2m30 $G 's/real slack = 2 \* pads + 0x1p-30 \*/real slack = 2 * pad
 run pad_p_only $G 's/+ 0x1p-20 \* (vec_max_abs(oc) + small)/+ 0 * (vec_max_abs(oc) + small)/'
 run apart_ge $G 's/d - big - small > slack || big - d - small > slack || small - d - big > slack/d - big - small >= slack || big - d - small >= slack || small - d - big >= slack/'
 run away_no_tmin $I 's/return r->tmin >= 0.0 \&\& (num < 0.0) != (dn < 0.0);/return (num < 0.0) != (dn < 0.0);/'
+run no_far_guard $F 's/return far <= 0x1p16 \* vec_max_abs(h->point);/return far == far;/'
 run away_same_sign $I 's/return r->tmin >= 0.0 \&\& (num < 0.0) != (dn < 0.0);/return r->tmin >= 0.0 \&\& (num < 0.0) == (dn < 0.0);/'
