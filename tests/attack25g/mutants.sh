@@ -22,7 +22,7 @@ run() {  # name file sed-expression
         (cd "$W" && CK_RUN_SUITE=$s ./build/check_refray >"$W/$1.$s.log" 2>&1) || k="$k $s($(grep -o '[a-z_]*:[0-9]*:F\|:[a-z_]*:[A-Za-z_]*' "$W/$1.$s.log" | head -3 | tr '\n' ' '))"
     done
     [ -n "$k" ] && echo "$1: KILLED by$k" || echo "$1: SURVIVED"
-    mv "$W/$2.orig" "$W/$2"
+    mv "$W/$2.orig" "$W/$2" && touch "$W/$2"  # newer than the mutant's object
 }
 run slack_halved $G 's/real slack = 2 \* pads/real slack = pads/'
 run slack_no_pads $G 's/real slack = 2 \* pads + /real slack = 0 * pads + 4 * reach + /'
