@@ -1425,7 +1425,8 @@ END_TEST
 
 /* isect_plane_nearest (the nearest walk's deferred plane: its t alone) is
  * isect_part's test: by hand on y = 0 from (0, 1, 0) straight down, t = 1,
- * refused with the interval closed onto it; then for 2000 random planes
+ * refused with the interval closed onto it; a ray moving away, from tmin 0
+ * (no hit) and from tmin -2 (t = -1); then for 2000 random planes
  * and rays the same answer and the same t, to the bit, as isect_part's
  * full hit on a copy of the ray, also with tmax at that t (no hit) and
  * just past it (the hit). */
@@ -1440,6 +1441,20 @@ START_TEST(test_isect_plane_nearest_is_isect_part)
     ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 0);
     r = make_ray(vec_make(0, 1, 0), vec_make(1, 0, 0));
     ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 0);
+    /* Moving away (its quick miss), and the same ray from tmin -2, which
+     * meets the plane behind its origin, at t = -1. */
+    r = make_ray(vec_make(0, 1, 0), vec_make(0, 1, 0));
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 0);
+    r.tmin = -2;
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 1);
+    ck_assert(t == -1);
+    /* A tmin in (-1, 0) too (attack 25g, mutant away_tmin_gt_m1: the quick
+     * miss taken for tmin > -1): from y = 0.25 away from the plane with
+     * tmin -0.5, the plane at t = -0.25, inside (tmin, tmax). */
+    r = make_ray(vec_make(0, 0.25, 0), vec_make(0, 1, 0));
+    r.tmin = -0.5;
+    ck_assert_int_eq(isect_plane_nearest(p.u.plane.point, p.u.plane.normal, &r, &t), 1);
+    ck_assert(t == -0.25);
     rng g = {78, 0};
     int met = 0;
     for (int i = 0; i < 2000; i++) {

@@ -1409,6 +1409,113 @@ START_TEST(test_shortcuts_gather_grazed_ball)
 }
 END_TEST
 
+/*
+ * [SHADE-SHORTCUT-GATHER-3] World-frame balls nested or apart by more than
+ * their pads and 4 reach are no neighbours of each other: touching_glass's
+ * nested balls (a gap of 0.1 between the shells, the floor touching the
+ * outer one) keep the floor alone as the outer ball's neighbour and
+ * nothing as the inner's.  A ball inside a ball with a gap of 0.3 reach
+ * (max norm) at their contact, and one outside it at the same gap, stay
+ * neighbours: the gather of the inner (or outer) ball's crossing there
+ * holds the other's, 2, with the shortcuts as without.  The first part
+ * fails without the step (2 and 1 neighbours); the second with the slack
+ * dropped (0.3 reach > 0: the pairs taken as apart, 1 gathered against 2)
+ * and with the nested gap taken as R - D + r.
+ */
+START_TEST(test_shortcuts_gather_spheres_apart)
+{
+    char shapes[768], text[1024];
+    touching_glass(shapes, sizeof shapes, 4, 0);
+    snprintf(text, sizeof text,
+             "image { width 4 height 3 }\n"
+             "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n%s",
+             shapes);
+    scene_model *s = load(text);
+    tracer on;
+    ck_assert(tracer_init(&on, s, 0, 0));
+    ck_assert_int_eq(on.gather_span[2 * 0 + 1], 1);
+    ck_assert_int_eq(on.gather_span[2 * 1 + 1], 0);
+    tracer_free(&on);
+    scene_free(s);
+    /* The contact on the x axis at x = 1 (the outer ball of radius 1 at
+     * the origin), the other ball's surface 0.3 reach beyond it, inside
+     * (radius 0.5) or outside (radius 0.25); the ray along x, its first
+     * crossing of the other ball the one at the contact. */
+    const double other[2] = {0.5, 0.25};
+    for (int k = 0; k < 2; k++) {
+        double gap = 0.3 * gather_reach(2), x = k ? 1 + gap + other[k] : 1 - gap - other[k];
+        snprintf(text, sizeof text,
+                 "image { width 4 height 3 }\n"
+                 "camera { perspective eye [0, 0, -5] look_at [0, 0, 0] up [0, 1, 0] fov 60 }\n"
+                 "sphere { center [0, 0, 0] radius 1 material { Kd 0 Ks 0.1 t 0.9 ior 1.5 } }\n"
+                 "sphere { center [%.17g, 0, 0] radius %.17g material { Kd 0 t 0.8 ior 1.3 } }\n",
+                 x, other[k]);
+        ray r = {vec_make(k ? -3 : 3, 0, 0), vec_make(k ? 1 : -1, 0, 0), 0, INFINITY};
+        int n = gather_both_ways(text, r, 1);
+        ck_assert_msg(n == 2, "%d gathered, 2 expected:\n%s", n, text);
+    }
+}
+END_TEST
+
+/*
+ * [SHADE-SHORTCUT-GATHER-2] [SHADE-SHORTCUT-GATHER-3] Cameras 1e10 and 7e12
+ * away at the limb of two nearly concentric glass balls (attack 25g,
+ * far_graze.scene and gather3_eligible.scene, the second with nine balls
+ * nested inside, which GATHER-3 leaves out of the lists): sphere_refine's
+ * second solve misses both balls, both crossings stay at o + t d, off both
+ * shells by its rounding, more than the alone test's pads.  The full walk
+ * takes both crossings; so must the shortcuts (gather_near_origin sends
+ * such a ray to the walk).  Fails with the guard dropped (90 of 3072
+ * pixels of the first differ).  And a world-frame ball with a mirrored
+ * twin (scale [-1, 1, 1] keeps its frame) whose local centre is 6 away:
+ * their shells coincide, so GATHER-3 must not compare the local centre
+ * (fails with spheres_apart's frame test dropped).
+ */
+START_TEST(test_shortcuts_gather_far_graze)
+{
+    static const char *const scenes[] = {
+        "image { width 64 height 48 max_depth 4 background [0.3, 0.5, 0.8] }\n"
+        "camera { orthographic width 7.9345703155517583e-06 eye [4504465049.7796335, -7332510264.9271793, "
+        "6074904655.1140699] look_at [-0.00080324987406165348, 0, 0.00059559963314085467] up "
+        "[-0.80327024397708946, 0, 0.5956147371757915] }\n"
+        "ambient { color 0.1 }\n"
+        "point_light { position [3, 6, 4] power 40 }\n"
+        "sphere { center [0, 0, 0] radius 0.001 material { Kd 0 Ks 0.05 n 30 t 0.95 ior 1.5 } }\n"
+        "sphere { center [0, 0, 0] radius 0.00099998474121055603 material { Kd 0 Ks 0.1 n 30 t 0.9 ior 2.4 } }\n",
+        "image { width 96 height 96 max_depth 6 background [0.3, 0.5, 0.8] }\n"
+        "camera { orthographic width 0.00390625 eye [7020318761497.3623, 6502238695131.5713, "
+        "5648572538006.8447] look_at [-0.62587116535642351, 0, 0.77786291224354476] up "
+        "[-0.62687955178729982, 0, 0.7791161836022622] }\n"
+        "ambient { color 0.1 }\n"
+        "point_light { position [3, 6, 4] power 40 }\n"
+        "sphere { center [0, 0, 0] radius 1 material { Kd 0 Ks 0.05 n 30 t 0.95 ior 1.5 } }\n"
+        "sphere { center [1.4305115103721619e-06, 0, 0] radius 0.99999284744244821 "
+        "material { Kd 0 Ks 0.1 n 30 t 0.9 ior 2.4 } }\n"
+        "sphere { center [0, 0, 0] radius 0.49999713897697928 material { Kd 0.5 Ks 0 n 30 } }\n"
+        "sphere { center [-0.3, -0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 } }\n"
+        "sphere { center [0, -0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 t 0.5 ior 1.2 } }\n"
+        "sphere { center [0.3, -0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 } }\n"
+        "sphere { center [-0.3, 0, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 t 0.5 ior 1.2 } }\n"
+        "sphere { center [0, 0, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 } }\n"
+        "sphere { center [0.3, 0, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 t 0.5 ior 1.2 } }\n"
+        "sphere { center [-0.3, 0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 } }\n"
+        "sphere { center [0, 0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 t 0.5 ior 1.2 } }\n"
+        "sphere { center [0.3, 0.3, 0] radius 0.1 material { Kd 0.5 Ks 0.2 n 30 } }\n",
+        "image { width 48 height 32 max_depth 4 background [0.2, 0.25, 0.35] }\n"
+        "camera { perspective eye [-3, 1.5, 5] look_at [-3, 0, 0] up [0, 1, 0] fov 40 }\n"
+        "ambient { color 0.15 }\n"
+        "point_light { position [3, 6, 4] power 40 d0 1 }\n"
+        "plane { point [0, -1, 0] normal [0, 1, 0] material { Kd 0.8 } }\n"
+        "sphere { center [-3, 0, 0] radius 1 material { Kd 0 Ks 0.05 n 300 t 0.95 ior 1.5 } }\n"
+        "sphere { center [3, 0, 0] radius 1 material { Kd 0 Ks 0.05 n 300 t 0.9 ior 1.3 } scale [-1, 1, 1] }\n"
+        "sphere { center [-3, 0, 0] radius 0.5 material { Kd 0 Ks 0.05 n 300 t 0.9 ior 1.9 } }\n"};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        render_stats on, off;
+        same_both_ways(scenes[k], &on, &off);
+    }
+}
+END_TEST
+
 /* [SHADE-SHORTCUT-GATHER-1] [SHADE-SHORTCUT-GATHER-2] The touching glass
  * above rendered, near the origin and at 1e7: the same bits with the
  * shortcuts on and off, and fewer primitive tests with them on. */
@@ -1576,6 +1683,8 @@ Suite *suite_shortcuts(void)
     tcase_add_test(tc, test_shortcuts_gather_touching_glass_both_ways);
     tcase_add_test(tc, test_shortcuts_gather_images_both_ways);
     tcase_add_test(tc, test_shortcuts_gather_grazed_ball);
+    tcase_add_test(tc, test_shortcuts_gather_spheres_apart);
+    tcase_add_test(tc, test_shortcuts_gather_far_graze);
     tcase_add_loop_test(tc, test_shortcuts_random_scenes_bit_identical, 0, RANDOM_BATCHES);
     tcase_add_loop_test(tc, test_shortcuts_placed_random_scenes_bit_identical, 0, 8);
     tcase_add_test(tc, test_shortcuts_camera_inside_opaque_mesh_is_dark);

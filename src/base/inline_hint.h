@@ -10,14 +10,26 @@
 #ifndef REFRAY_INLINE_HINT_H
 #define REFRAY_INLINE_HINT_H
 
+/* HINT_IN_LINE_EXTERN: a function of external linkage that the link-time
+ * optimiser inlines into its callers in other files.  gcc takes
+ * always_inline only beside `inline` (the header's declaration has none, so
+ * the definition stays an external one); clang, which builds without LTO
+ * here, takes it alone, and with `inline` would warn of the static helpers
+ * such a definition calls (-Wstatic-in-inline). */
 #if defined(__GNUC__) && !defined(__FRAMAC__)
 #define HINT_IN_LINE __attribute__((always_inline))
 #define HINT_OUT_OF_LINE __attribute__((noinline))
 #define HINT_FLATTEN __attribute__((flatten))
+#if defined(__clang__)
+#define HINT_IN_LINE_EXTERN __attribute__((always_inline))
+#else
+#define HINT_IN_LINE_EXTERN __attribute__((always_inline)) inline
+#endif
 #else
 #define HINT_IN_LINE
 #define HINT_OUT_OF_LINE
 #define HINT_FLATTEN
+#define HINT_IN_LINE_EXTERN
 #endif
 
 #endif

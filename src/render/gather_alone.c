@@ -41,6 +41,25 @@ static int boxes_apart(vec3 lo, vec3 hi, vec3 olo, vec3 ohi, real reach)
            lo.y - ohi.y > 2 * reach || olo.z - hi.z > 2 * reach || lo.z - ohi.z > 2 * reach;
 }
 
+/* [SHADE-SHORTCUT-GATHER-3] Whether every point within 2^-20 of its size
+ * of sphere p's surface (every hit point on it) lies more than 4 reach
+ * (reach: the largest of a hit on p) from every point within 2^-20 of its
+ * size of sphere o's surface (every crossing of o): the two shells nested
+ * or apart, their gap D - R - r, R - D - r or r - D - R (D the distance of
+ * the centres) larger than twice both pads and 4 reach; 2^-30 of their
+ * magnitudes covers this test's own roundings.  Both in the world frame;
+ * a NaN says no. */
+static int spheres_apart(const scene_prim *p, const scene_prim *o, real reach)
+{
+    if (p->kind != PRIM_SPHERE || p->frame || o->kind != PRIM_SPHERE || o->frame)
+        return 0;
+    vec3 c = p->u.sphere.center, oc = o->u.sphere.center;
+    real big = p->u.sphere.radius, small = o->u.sphere.radius, d = vec_length(vec_sub(c, oc));
+    real pads = 0x1p-20 * (vec_max_abs(c) + big) + 0x1p-20 * (vec_max_abs(oc) + small) + 2 * reach;
+    real slack = 2 * pads + 0x1p-30 * (vec_max_abs(c) + vec_max_abs(oc) + big + small + d);
+    return d - big - small > slack || big - d - small > slack || small - d - big > slack;
+}
+
 /* Prim i's neighbours into near[0..GATHER_NEAR_MAX): the others not apart
  * from its padded box by twice the largest reach of a hit on it.  Returns
  * their count, or -1 when i is not eligible (a mesh, unbounded, a framed
@@ -62,7 +81,7 @@ static int neighbours(const scene_model *s, int i, gather_near *near)
         const scene_prim *o = &s->prims[j];
         gather_near g = {{0, 0, 0}, {0, 0, 0}, 0, j};
         real osize;
-        if (j == i)
+        if (j == i || spheres_apart(p, o, reach))
             continue;
         if (padded_box(o, &g.lo, &g.hi, &osize)) {
             if (boxes_apart(lo, hi, g.lo, g.hi, reach))

@@ -1108,7 +1108,7 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
     return isect_part_crossings_sheared(p, part, r, NULL);
 }
 
-/* plane_t's answer.  A ray that starts on one side of the plane and moves
+/* [NUM-PLANE-AWAY-1] plane_t's answer.  A ray that starts on one side of the plane and moves
  * away from it (num = n.(p0 - o) and dn = n.d, plane_t's own doubles, of
  * opposite signs as `< 0` tells them) is told without the quotient: there
  * isect_quotient either fails or gives -m, m = |num|/|dn| >= 0 (held at
@@ -1116,17 +1116,27 @@ int isect_part_crossings(const scene_prim *p, int part, const ray *r)
  * tmin >= 0; dn == 0 (either sign of zero: num < 0 then) is plane_t's first
  * miss.  Shadow rays from a floor toward a light above it (mesh.scene:
  * each one's floor test) are such rays. */
+static int plane_moving_away(vec3 point, vec3 normal, const ray *r)
+{
+    real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
+    return r->tmin >= 0.0 && (num < 0.0) != (dn < 0.0);
+}
+
 HINT_FLATTEN int isect_plane_crossings(vec3 point, vec3 normal, const ray *r)
 {
     real t;
-    real dn = vec_dot(normal, r->dir), num = vec_dot(normal, vec_sub(point, r->origin));
-    if (r->tmin >= 0.0 && (num < 0.0) != (dn < 0.0))
+    if (plane_moving_away(point, normal, r))
         return 0;
     return plane_t(point, normal, r, &t);
 }
 
-int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
+/* The same quick miss ([NUM-PLANE-AWAY-1]: plane_t would answer 0); the
+ * miss's *t is not read (bvh.c nearest_test).  Flattened as the count:
+ * plane_t's two dot products are the quick miss's. */
+HINT_FLATTEN int isect_plane_nearest(vec3 point, vec3 normal, const ray *r, real *t)
 {
+    if (plane_moving_away(point, normal, r))
+        return 0;
     return plane_t(point, normal, r, t);
 }
 
@@ -2028,6 +2038,9 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
  * mirror ray and its transmitted ray (about 36 instructions a call on a
  * sphere).  The contract is ray_spawn_hit's, with m as that one's
  * (isect_part_magnitude's ensures). */
+/* In line (HINT_IN_LINE_EXTERN; LTO carries it into trace.c's mirror and
+ * transmitted rays): its direction and ray went through the stack
+ * (spec/performance.md, twenty-third round). */
 /*@ requires \valid_read(p) && \valid_read(h);
     requires vfinite(h->point);                                 // a hit's point (isect_*)
     // a closed mesh's and a box's hit: within the extent ([LANG-EXTENT-1], check_extent.c: 2^502)
@@ -2040,7 +2053,7 @@ ray ray_spawn_hit(const scene_prim *p, const hit *h, vec3 dir)
     ensures \is_finite(\result.tmin) && \result.tmin >= 0 && DOUBLES(\is_plus_infinity(\result.tmax));
     ensures EXACT(veq(\result.dir, dir));
     ensures EXACT(\result.tmin == 0); */
-ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
+HINT_IN_LINE_EXTERN ray ray_spawn_hit_sized(const scene_prim *p, const hit *h, vec3 dir, real m)
 {
     vec3 from = p->kind == PRIM_MESH && p->u.mesh.closed ? off_the_edges(p, h, spawn_offset(h->point, m)) : h->point;
     ray r = spawn(from, h->normal, dir, m, 0);

@@ -23,6 +23,7 @@
 #include <assert.h>
 #include <float.h>
 #include <math.h>
+#include "base/inline_hint.h"
 #include "render/shade.h"
 
 /*@ requires vin(kd, 0, 1);
@@ -676,13 +677,16 @@ rgb shade_local(rgb body, rgb highlight, real t)
     return saturating_sum(highlight, vec_scale(body, 1.0 - t));
 }
 
+/* In line (HINT_IN_LINE_EXTERN; LTO carries it into trace.c): called out of line
+ * its six colours went through the stack, three calls a glass point
+ * (spec/performance.md, twenty-third round). */
 /*@ requires vcolour(body) && vcolour(highlight) && vcolour(mirrored) && vcolour(transmitted);
     requires vin(ks, 0, 1);
     requires \is_finite(t) && 0 <= t <= 1;
     assigns \nothing;
     ensures vcolour(\result);
     ensures EXACT(is_combined(\result, body, highlight, ks, t, mirrored, transmitted)); */
-rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
+HINT_IN_LINE_EXTERN rgb shade_combine(rgb body, rgb highlight, rgb ks, real t, rgb mirrored, rgb transmitted)
 {
     rgb c = shade_local(body, highlight, t);
     c = saturating_sum(c, vec_mul(ks, mirrored));

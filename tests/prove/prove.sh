@@ -190,7 +190,7 @@ wp_run() {
         ${slow_fct:+-wp-fct-timeout "$slow_fct"} ${PROVE_WP_PROP:+-wp-prop "$PROVE_WP_PROP"} >"$log" 2>&1
     local rc=$?
     local fns
-    fns=$(grep -ho '^[a-z][a-z0-9_ ]* \**[a-z_][a-z0-9_]*(' "$@" "$src/base/vec.h" |
+    fns=$(grep -ho '^[A-Za-z][A-Za-z0-9_ ]* \**[a-z_][a-z0-9_]*(' "$@" "$src/base/vec.h" |
           sed 's/.*[ *]\([a-z_0-9]*\)($/\1/' | sort -u | tr '\n' ' ')
     awk -v fns="$fns" '
         BEGIN { split(fns, list, " ") }
