@@ -1464,7 +1464,7 @@ END_TEST
  * nested inside, which GATHER-3 leaves out of the lists): sphere_refine's
  * second solve misses both balls, both crossings stay at o + t d, off both
  * shells by its rounding, more than the alone test's pads.  The full walk
- * takes both crossings; so must the shortcuts (gather_near_origin sends
+ * takes both crossings; so must the shortcuts (gather_alone.c origin_near sends
  * such a ray to the walk).  Fails with the guard dropped (90 of 3072
  * pixels of the first differ).  And a world-frame ball with a mirrored
  * twin (scale [-1, 1, 1] keeps its frame) whose local centre is 6 away:

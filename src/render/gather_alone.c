@@ -134,12 +134,25 @@ void gather_alone_free(tracer *t)
     t->gather_alloc = 0;
 }
 
-int gather_alone(const tracer *t, const hit *h, real reach)
+/* The guard on the lists' premise: a crossing left at o + t d (a graze
+ * sphere_refine cannot refine, a box's slab point) lies off its surface by
+ * the rounding of o + t d, up to E = 2^-40 (|o| + |t| |d| + F) (F the
+ * frames' spread); the pads cover E when |o| + |t_h| |d| + F is at most
+ * 2^16 of the hit point's magnitude (spec/shading.md has the argument),
+ * which 2 |o| + F <= 2^15 |p_h| ensures: |t_h d| is |p_h - o| to 2^-20 of
+ * itself.  A ray from farther (or a hit at 0) is not known alone; a NaN
+ * says no. */
+static int origin_near(const tracer *t, const ray *r, vec3 at)
 {
-    if (!t->gather_span || t->no_shortcuts || t->gather_span[2 * h->prim + 1] < 0)
+    return 2 * vec_max_abs(r->origin) + t->frame_shift <= 0x1p15 * vec_max_abs(at);
+}
+
+int gather_alone(const tracer *t, const hit *h, const ray *r, real reach)
+{
+    vec3 at = h->point;
+    if (!t->gather_span || t->no_shortcuts || t->gather_span[2 * h->prim + 1] < 0 || !origin_near(t, r, at))
         return 0;
     const gather_near *g = t->gather_near + t->gather_span[2 * h->prim];
-    vec3 at = h->point;
     for (int k = 0; k < t->gather_span[2 * h->prim + 1]; k++) {
         const scene_prim *o = &t->scene->prims[g[k].prim];
         if (g[k].plane ? !off_plane(g[k].lo, g[k].hi, at, at, vec_max_abs(at), reach)

@@ -26,8 +26,10 @@ int gather_alone_build(tracer *t, const scene_model *s);
 void gather_alone_free(tracer *t);
 
 /* Whether no other primitive has a crossing within reach (each coordinate)
- * of h's point: 0 whenever that is not known, and with the shortcuts off. */
-int gather_alone(const tracer *t, const hit *h, real reach);
+ * of h's point, h found by the ray r: 0 whenever that is not known (a ray
+ * from far away: the lists' premise needs its crossings near their
+ * surfaces), and with the shortcuts off. */
+int gather_alone(const tracer *t, const hit *h, const ray *r, real reach);
 
 /* Whether the crossings of h's own part that interface_gather would keep
  * besides h (those of the other side) are surely out of reach: a sphere

@@ -69,19 +69,6 @@ static real gather_from(const tracer *t, const hit *h, const ray *r, real reach)
     return h->t - (2 * reach + 0x1p-17 * spread) / dm;
 }
 
-/* [SHADE-SHORTCUT-GATHER-2]'s guard: a crossing left at o + t d (a graze
- * sphere_refine cannot refine, a box's slab point) lies off its surface by
- * the rounding of o + t d, up to E = 2^-40 (|o| + |t| |d| + F) here (F the
- * frames' spread); the alone test's pads cover E when |o| + |t_h| |d| + F
- * is at most 2^16 of the hit point's magnitude at (spec/shading.md has the
- * argument), which 2 |o| + F <= 2^15 at ensures: |t_h d| is |p_h - o| to
- * 2^-20 of itself.  A ray from farther (or a hit at 0) walks the tree; a
- * NaN says no. */
-HINT_IN_LINE static inline int gather_near_origin(const tracer *t, const ray *r, real at)
-{
-    return 2 * vec_max_abs(r->origin) + t->frame_shift <= 0x1p15 * at;
-}
-
 /* [SHADE-SHORTCUT-GATHER-2] The walk on a primitive alone would report
  * within reach only the crossings of the hit's own part, found by the same
  * test of the same ray: they are all it gathers, and none besides h where
@@ -117,7 +104,7 @@ void interface_gather(const tracer *t, const scene_prim *prim, const hit *h, rea
     /* The crossings' t may differ from the hit's by the rounding of t itself,
      * which for a far-away origin is more than the reach: 2^-40 |t| covers it. */
     r.tmax = h->t + f->reach + 0x1p-40 * fabs(h->t);
-    if (gather_alone(t, h, f->reach) && gather_near_origin(t, in, at))
+    if (gather_alone(t, h, in, f->reach))
         gather_self(t, h, &r, f, st);
     else
         bvh_visit_window(&t->accel, t->scene->prims, &r, t->no_shortcuts ? r.tmin : gather_from(t, h, &r, f->reach),

@@ -37,5 +37,5 @@ run slack_no_2m30 $G 's/real slack = 2 \* pads + 0x1p-30 \*/real slack = 2 * pad
 run pad_p_only $G 's/+ 0x1p-20 \* (vec_max_abs(oc) + small)/+ 0 * (vec_max_abs(oc) + small)/'
 run apart_ge $G 's/d - big - small > slack || big - d - small > slack || small - d - big > slack/d - big - small >= slack || big - d - small >= slack || small - d - big >= slack/'
 run away_no_tmin $I 's/return r->tmin >= 0.0 \&\& (num < 0.0) != (dn < 0.0);/return (num < 0.0) != (dn < 0.0);/'
-run no_far_guard $F 's/t->frame_shift <= 0x1p15 \* at;/t->frame_shift <= INFINITY + at;/'
+run no_far_guard $G 's/t->frame_shift <= 0x1p15 \* vec_max_abs(at);/t->frame_shift <= INFINITY + vec_max_abs(at);/'
 run away_same_sign $I 's/return r->tmin >= 0.0 \&\& (num < 0.0) != (dn < 0.0);/return r->tmin >= 0.0 \&\& (num < 0.0) == (dn < 0.0);/'
